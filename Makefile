@@ -1,0 +1,137 @@
+# rastrum - build, test and install the C core and the Python package.
+#
+#   make                 build/librastrum.a and build/librastrum.so
+#   make test            C tests, then the Python tests (installs the package)
+#   make demo            render the demo scenes to out/ and print the speed table
+#   make asan            C and Python tests under AddressSanitizer + UBSan
+#   make strict          the core under gcc and clang, -std=c99 -pedantic -Werror
+#   make install         PREFIX=/usr/local DESTDIR= : header, libraries, rastrum.pc
+#   make uninstall       the reverse
+#   make example         the pkg-config example (after make install)
+
+CC      ?= cc
+PYTHON  ?= python3
+PREFIX  ?= /usr/local
+DESTDIR ?=
+LIBDIR  ?= $(PREFIX)/lib
+INCDIR  ?= $(PREFIX)/include
+
+WARN    := -std=c99 -pedantic -Wall -Wextra -Werror -Wshadow -Wdouble-promotion \
+           -Wstrict-prototypes -Wmissing-prototypes -Wcast-align -Wconversion \
+           -Wno-sign-conversion
+CFLAGS  ?= -O2
+ALL_CFLAGS = $(WARN) $(CFLAGS) -Icsrc/include -Icsrc/src
+
+SRC     := $(wildcard csrc/src/*.c)
+HDR     := csrc/include/rastrum.h $(wildcard csrc/src/*.h)
+OBJ     := $(SRC:csrc/src/%.c=build/obj/%.o)
+PIC_OBJ := $(SRC:csrc/src/%.c=build/pic/%.o)
+
+# The soname carries the major version, read from the header.
+VERSION_MAJOR := $(shell sed -n 's/^\#define RAST_VERSION_MAJOR \([0-9]*\)/\1/p' csrc/include/rastrum.h)
+VERSION_MINOR := $(shell sed -n 's/^\#define RAST_VERSION_MINOR \([0-9]*\)/\1/p' csrc/include/rastrum.h)
+VERSION_PATCH := $(shell sed -n 's/^\#define RAST_VERSION_PATCH \([0-9]*\)/\1/p' csrc/include/rastrum.h)
+VERSION := $(VERSION_MAJOR).$(VERSION_MINOR).$(VERSION_PATCH)
+SONAME  := librastrum.so.$(VERSION_MAJOR)
+
+C_TESTS := $(patsubst tests/c/%.c,build/tests/%,$(wildcard tests/c/test_*.c))
+SAN     := -fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer -g
+
+.PHONY: all lib test test-c test-py demo asan asan-c asan-py strict install uninstall example clean
+
+all: lib
+lib: build/librastrum.a build/librastrum.so
+
+build/obj/%.o: csrc/src/%.c $(HDR)
+	@mkdir -p $(@D)
+	$(CC) $(ALL_CFLAGS) -c $< -o $@
+
+build/pic/%.o: csrc/src/%.c $(HDR)
+	@mkdir -p $(@D)
+	$(CC) $(ALL_CFLAGS) -fPIC -fvisibility=hidden -c $< -o $@
+
+build/librastrum.a: $(OBJ)
+	rm -f $@
+	$(AR) rcs $@ $^
+
+build/librastrum.so: $(PIC_OBJ)
+	$(CC) -shared -Wl,-soname,$(SONAME) $^ -o build/librastrum.so.$(VERSION)
+	ln -sf librastrum.so.$(VERSION) build/$(SONAME)
+	ln -sf $(SONAME) $@
+
+build/tests/%: tests/c/%.c build/librastrum.a tests/c/check.h
+	@mkdir -p $(@D)
+	$(CC) $(ALL_CFLAGS) -Wno-conversion -Itests/c $< build/librastrum.a -o $@
+
+# ---- tests -----------------------------------------------------------------
+test: test-c test-py
+
+test-c: $(C_TESTS)
+	@for t in $(C_TESTS); do echo "== $$t"; ./$$t || exit 1; done
+
+test-py:
+	$(PYTHON) -m pip install --quiet '.[test]'
+	$(PYTHON) -m pytest -q tests
+
+# ---- demo (the main job) -----------------------------------------------------
+demo:
+	$(PYTHON) -m pip install --quiet '.[bench]'
+	$(PYTHON) bench/demo.py --out out
+
+# ---- sanitizers --------------------------------------------------------------
+asan: asan-c asan-py
+
+asan-c:
+	@mkdir -p build/asan
+	@for t in $(wildcard tests/c/test_*.c); do \
+	  n=build/asan/$$(basename $$t .c); \
+	  $(CC) $(WARN) -Wno-conversion -O1 $(SAN) -Icsrc/include -Icsrc/src -Itests/c $$t $(SRC) -o $$n || exit 1; \
+	  echo "== $$n (asan+ubsan)"; ./$$n || exit 1; \
+	done
+
+# The Python tests against an extension built with the sanitizers, loaded
+# into an ordinary interpreter with the ASan runtime preloaded.
+asan-py:
+	rm -rf build/asan-py
+	RASTRUM_CFLAGS="$(SAN) -O1" RASTRUM_LDFLAGS="$(SAN)" \
+	  $(PYTHON) setup.py -q build --build-base build/asan-py/tmp --build-lib build/asan-py/lib
+	LD_PRELOAD="$$($(CC) -print-file-name=libasan.so) $$($(CC) -print-file-name=libubsan.so)" \
+	  ASAN_OPTIONS=detect_leaks=0 UBSAN_OPTIONS=halt_on_error=1:print_stacktrace=1 \
+	  RASTRUM_HYPOTHESIS_PROFILE=quick PYTHONPATH=build/asan-py/lib \
+	  $(PYTHON) -m pytest -q -p no:cacheprovider tests
+
+# ---- strict builds -------------------------------------------------------------
+strict:
+	@for cc in gcc clang; do \
+	  if command -v $$cc >/dev/null; then \
+	    for f in $(SRC); do $$cc $(WARN) -O2 -Icsrc/include -Icsrc/src -c $$f -o /dev/null || exit 1; done; \
+	    echo "strict: $$cc ok"; \
+	  else echo "strict: $$cc not installed"; exit 1; fi; \
+	done
+
+# ---- install ----------------------------------------------------------------------
+build/rastrum.pc: rastrum.pc.in csrc/include/rastrum.h
+	@mkdir -p $(@D)
+	sed -e 's|@PREFIX@|$(PREFIX)|' -e 's|@LIBDIR@|$(LIBDIR)|' -e 's|@INCDIR@|$(INCDIR)|' \
+	    -e 's|@VERSION@|$(VERSION)|' $< > $@
+
+install: lib build/rastrum.pc
+	install -d $(DESTDIR)$(INCDIR) $(DESTDIR)$(LIBDIR)/pkgconfig
+	install -m 644 csrc/include/rastrum.h $(DESTDIR)$(INCDIR)/
+	install -m 644 build/librastrum.a $(DESTDIR)$(LIBDIR)/
+	install -m 755 build/librastrum.so.$(VERSION) $(DESTDIR)$(LIBDIR)/
+	ln -sf librastrum.so.$(VERSION) $(DESTDIR)$(LIBDIR)/$(SONAME)
+	ln -sf $(SONAME) $(DESTDIR)$(LIBDIR)/librastrum.so
+	install -m 644 build/rastrum.pc $(DESTDIR)$(LIBDIR)/pkgconfig/
+
+uninstall:
+	rm -f $(DESTDIR)$(INCDIR)/rastrum.h $(DESTDIR)$(LIBDIR)/librastrum.a \
+	      $(DESTDIR)$(LIBDIR)/librastrum.so $(DESTDIR)$(LIBDIR)/$(SONAME) \
+	      $(DESTDIR)$(LIBDIR)/librastrum.so.$(VERSION) $(DESTDIR)$(LIBDIR)/pkgconfig/rastrum.pc
+
+# Build the example through pkg-config, against an installed rastrum.
+example:
+	$(CC) -std=c99 -O2 examples/draw_ppm.c $$(pkg-config --cflags --libs rastrum) -o build/draw_ppm
+
+clean:
+	rm -rf build out python/rastrum/_native.c python/rastrum/_native*.so

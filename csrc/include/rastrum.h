@@ -1,0 +1,294 @@
+/*
+ * rastrum.h - integer-only, exact polygon and triangle fillers.
+ *
+ * This is the one public header. Everything a user of librastrum.a,
+ * librastrum.so or of the csrc/ sources dropped into a firmware build needs
+ * is declared here.
+ *
+ * ---------------------------------------------------------------------------
+ * Conventions (the contract every algorithm keeps; DESIGN.md section 1)
+ * ---------------------------------------------------------------------------
+ *
+ * Space.  x grows to the right, y grows DOWN.  Pixel (i, j) is column i,
+ *         row j and owns the square [i, i+1) x [j, j+1).
+ *
+ * Samples. A pixel is inside a shape iff its sample point is.  The sample of
+ *         pixel (i, j) is (i + o, j + o) with the sample offset o = 1/2
+ *         (RAST_SAMPLE_CENTER, pixel centres, the default of GPUs) or o = 0
+ *         (RAST_SAMPLE_CORNER, integer points, as the textbook and OpenCV).
+ *
+ * Units.  Vertices are fixed-point integers in units of 1/2^S pixel, where
+ *         S = rast_fill_opts.subpixel_bits (0 <= S <= RAST_MAX_SUBPIXEL_BITS).
+ *         Snapping real coordinates to this grid (v_fixed = floor(v*2^S + 1/2))
+ *         is the caller's job and the only approximation: from the fixed-point
+ *         vertices on, every result is exact.
+ *
+ * Range.  |x| and |y| of every vertex must be <= RAST_COORD_MAX (fixed-point
+ *         units, whatever S is; so S = 8 allows +-524287 pixels, S = 0 allows
+ *         +-134217727 pixels).  Inside this range no intermediate product can
+ *         overflow int64_t.  A vertex outside it makes the call return
+ *         RAST_E_RANGE before anything is written.
+ *
+ * Edges.  A ring is closed: its edges are (P_k, P_k+1) with P_n = P_0.
+ *         A non-horizontal edge (x0,y0)->(x1,y1) crosses sample row yc iff
+ *         min(y0,y1) <= yc < max(y0,y1) (top closed, bottom open).
+ *         Horizontal edges never cross.  The crossing abscissa is the exact
+ *         rational X = x0 + (yc - y0)(x1 - x0)/(y1 - y0); its direction is +1
+ *         if y1 > y0, else -1.
+ *
+ * Rules.  The winding number of sample (xc, yc) is the sum of the directions
+ *         of the crossings with X <= xc (spans are left closed, right open).
+ *         The sample is inside iff the winding number is odd
+ *         (RAST_RULE_EVENODD) or non-zero (RAST_RULE_NONZERO).  Even-odd
+ *         ignores orientation; non-zero sums it, so under non-zero a hole
+ *         must run the other way round from its outer ring (the textbook's
+ *         outer rings counter-clockwise, holes clockwise).
+ *
+ * Consequences: polygons sharing an edge never both own a sample and never
+ * both miss one (watertight); results do not depend on the starting vertex,
+ * the ring order, or (even-odd) ring direction; translating the vertices by
+ * whole pixels translates the pixels.
+ *
+ * Memory.  The library never allocates.  Calls that need work memory take a
+ * caller-provided `scratch` buffer (aligned to RAST_SCRATCH_ALIGN) whose size
+ * rast_scratch_size() computes, or RAST_AET_SCRATCH_BOUND() bounds at compile
+ * time.  No global state: every function is thread-safe when its arguments
+ * are not shared for writing.
+ *
+ * Safety. No function writes outside target->clip (itself inside the
+ * target), whatever the geometry.  Bad arguments return a negative
+ * rast_status and write nothing.
+ */
+#ifndef RASTRUM_H
+#define RASTRUM_H
+
+#ifndef RAST_CDEF /* the cffi build preprocesses this header with RAST_CDEF */
+#include <stddef.h>
+#include <stdint.h>
+#endif
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/* RAST_API marks the public symbols; the shared library is built with
+ * -fvisibility=hidden so that nothing else is exported. */
+#ifndef RAST_API
+#if defined(RAST_CDEF)
+#define RAST_API
+#elif defined(__GNUC__) && __GNUC__ >= 4
+#define RAST_API __attribute__((visibility("default")))
+#else
+#define RAST_API
+#endif
+#endif
+
+/* ---- version ------------------------------------------------------------
+ * MAJOR changes break the API or the ABI, MINOR adds to them, PATCH fixes
+ * behaviour without changing them.  The shared library's soname carries
+ * MAJOR (librastrum.so.MAJOR). */
+#define RAST_VERSION_MAJOR 0
+#define RAST_VERSION_MINOR 1
+#define RAST_VERSION_PATCH 0
+#define RAST_VERSION_NUMBER \
+    (RAST_VERSION_MAJOR * 10000 + RAST_VERSION_MINOR * 100 + RAST_VERSION_PATCH)
+
+/* ---- limits ---------------------------------------------------------------
+ * Constants are enumerators so that both C and the cffi layer see them. */
+enum {
+    /* Largest |coordinate| of a vertex, in fixed-point units (1/2^S pixel).
+     * Internally coordinates are doubled (so that a sample at o = 1/2 is an
+     * integer), differences reach 2^29 and a crossing numerator is a sum of
+     * two products below 2^58: comfortably inside int64_t. */
+    RAST_COORD_MAX = 134217727, /* 2^27 - 1 */
+    /* Largest subpixel precision S. */
+    RAST_MAX_SUBPIXEL_BITS = 16,
+    /* Largest target width or height, in pixels. */
+    RAST_MAX_DIM = 1073741823, /* 2^30 - 1 */
+    /* Largest number of vertices in one call (keeps every size in range). */
+    RAST_MAX_POINTS = 16777216, /* 2^24 */
+    /* Alignment, in bytes, that a scratch buffer must have. */
+    RAST_SCRATCH_ALIGN = 8,
+    /* Bytes of scratch per edge and per visible row for the "aet" filler. */
+    RAST_AET_EDGE_BYTES = 48,
+    RAST_AET_ROW_BYTES = 4
+};
+
+/* Scratch bytes that always suffice for the "aet" algorithm with `npoints`
+ * vertices and a clip `height` rows high; usable to size a static array:
+ *     static uint64_t work[RAST_AET_SCRATCH_BOUND(64, 240) / 8]; */
+#define RAST_AET_SCRATCH_BOUND(npoints, height)                  \
+    ((size_t)(npoints) * (RAST_AET_EDGE_BYTES + 4) +             \
+     ((size_t)(height) + 1) * RAST_AET_ROW_BYTES + RAST_SCRATCH_ALIGN)
+
+/* ---- status codes ----------------------------------------------------------
+ * Every function returns one of these (RAST_OK = 0, errors negative), except
+ * the three that return a version or a string.  rast_status_str() gives the
+ * message.  The list lives once, here, as an X-macro. */
+#define RAST_STATUS_LIST(X)                                                    \
+    X(RAST_OK, 0, "ok")                                                        \
+    X(RAST_E_NULL, -1, "a required pointer argument is NULL")                  \
+    X(RAST_E_ARG, -2, "invalid argument")                                      \
+    X(RAST_E_RANGE, -3, "a coordinate is outside +-RAST_COORD_MAX")            \
+    X(RAST_E_SUBPIXEL, -4, "subpixel_bits is outside 0..RAST_MAX_SUBPIXEL_BITS") \
+    X(RAST_E_SIZE, -5, "width, height or stride is invalid")                   \
+    X(RAST_E_FORMAT, -6, "unknown pixel format")                               \
+    X(RAST_E_ALGORITHM, -7, "unknown algorithm")                               \
+    X(RAST_E_RULE, -8, "fill rule not supported by this algorithm")            \
+    X(RAST_E_SCRATCH, -9, "scratch buffer too small")                          \
+    X(RAST_E_ALIGN, -10, "scratch buffer is not aligned to RAST_SCRATCH_ALIGN") \
+    X(RAST_E_TOO_MANY, -11, "more than RAST_MAX_POINTS vertices")
+
+#define RAST__STATUS_ENUM(name, value, text) name = value,
+typedef enum rast_status { RAST_STATUS_LIST(RAST__STATUS_ENUM) RAST_STATUS_END_ = 1 } rast_status;
+#undef RAST__STATUS_ENUM
+
+/* ---- basic types ---------------------------------------------------------- */
+
+/* A vertex in fixed point: units of 1/2^S pixel. */
+typedef struct rast_point {
+    int32_t x;
+    int32_t y;
+} rast_point;
+
+/* A pixel rectangle, half open: columns x0 <= i < x1, rows y0 <= j < y1. */
+typedef struct rast_rect {
+    int32_t x0, y0, x1, y1;
+} rast_rect;
+
+/* A polygon: one or more closed rings whose vertices follow each other in
+ * `points`: ring 0 is points[0 .. ring_sizes[0]), ring 1 the next
+ * ring_sizes[1] points, and so on.  A ring of fewer than 3 points encloses
+ * nothing (its edges cancel) and is allowed.  The library only reads it. */
+typedef struct rast_polygon {
+    const rast_point *points;
+    const uint32_t *ring_sizes;
+    uint32_t nrings;
+} rast_polygon;
+
+typedef enum rast_fill_rule {
+    RAST_RULE_EVENODD = 0, /* inside iff the winding number is odd */
+    RAST_RULE_NONZERO = 1  /* inside iff the winding number is not 0 */
+} rast_fill_rule;
+
+typedef enum rast_sample {
+    RAST_SAMPLE_CORNER = 0, /* samples at (i, j): o = 0 */
+    RAST_SAMPLE_CENTER = 1  /* samples at (i + 1/2, j + 1/2): o = 1/2 */
+} rast_sample;
+
+/* Polygon algorithms.  All are exact: they give the same pixels. They
+ * differ in speed and in work memory (rast_scratch_size()). */
+typedef enum rast_algorithm {
+    RAST_ALGO_AET = 0, /* active edge table + bucket edge table (seed 001 3.4) */
+    RAST_ALGO_COUNT_ = 1
+} rast_algorithm;
+
+/* How to turn vertices into samples.  Zero-initialised means: AET,
+ * even-odd, S = 0, samples at integer points. */
+typedef struct rast_fill_opts {
+    rast_algorithm algorithm;
+    rast_fill_rule rule;
+    int32_t subpixel_bits; /* S, 0..RAST_MAX_SUBPIXEL_BITS */
+    rast_sample sample;
+} rast_fill_opts;
+
+/* Pixel formats: bytes of one pixel, in memory order. */
+typedef enum rast_format {
+    RAST_FORMAT_GRAY8 = 0,    /* 1 byte; also a 0/1 mask */
+    RAST_FORMAT_RGB888 = 1,   /* 3 bytes: R, G, B */
+    RAST_FORMAT_RGBA8888 = 2, /* 4 bytes: R, G, B, A */
+    RAST_FORMAT_COUNT_ = 3
+} rast_format;
+
+/* A target: a view of caller-owned memory.  pixels points at pixel (0, 0);
+ * row j starts `stride` bytes after row j-1 (stride >= width * bytes per
+ * pixel; it may be larger, for padding or for a sub-view of a larger image).
+ * Nothing outside `clip` is ever read or written; rast_target_init sets the
+ * clip to the whole target, and a caller may narrow it (to draw into a band
+ * or a window).  A clip that reaches past the target is cut to it. */
+typedef struct rast_target {
+    void *pixels;
+    int32_t width;
+    int32_t height;
+    int32_t stride;
+    rast_format format;
+    rast_rect clip;
+} rast_target;
+
+/* A span of samples in row y, columns x0 <= i < x1 (x0 < x1 always). */
+typedef void (*rast_span_fn)(void *user, int32_t y, int32_t x0, int32_t x1);
+
+/* ---- functions ------------------------------------------------------------ */
+
+/* The runtime version, RAST_VERSION_NUMBER of the library actually linked. */
+RAST_API int rast_version_number(void);
+
+/* The message of a status code; "unknown status" for a value not listed.
+ * The string is static: never free it. */
+RAST_API const char *rast_status_str(rast_status status);
+
+/* Bytes per pixel of `format` into *bytes (1, 3 or 4).
+ * RAST_E_FORMAT for an unknown format, RAST_E_NULL if bytes is NULL. */
+RAST_API rast_status rast_format_bytes(rast_format format, int32_t *bytes);
+
+/* Describe caller-owned memory as a target (see rast_target); clip = whole.
+ * width and height in 0..RAST_MAX_DIM pixels, stride in bytes with
+ * stride >= width * bytes per pixel and stride * height fitting a ptrdiff_t.
+ * pixels may be NULL only when width or height is 0.
+ * Errors: RAST_E_NULL (t, or pixels of a non-empty target), RAST_E_SIZE,
+ * RAST_E_FORMAT; *t is untouched on error. */
+RAST_API rast_status rast_target_init(rast_target *t, void *pixels,
+                                      int32_t width, int32_t height,
+                                      int32_t stride, rast_format format);
+
+/* Name ("aet", ...) and supported fill rules of an algorithm: bit r of
+ * *rules is set iff rast_fill_rule r is supported.  Either output pointer
+ * may be NULL.  RAST_E_ALGORITHM for an unknown algorithm. */
+RAST_API rast_status rast_algorithm_info(rast_algorithm algorithm,
+                                         const char **name, uint32_t *rules);
+
+/* Scratch bytes that a fill with `opts` needs for a polygon of `npoints`
+ * vertices (all rings together) drawn into a clip `width` x `height`
+ * pixels.  The size grows with the vertices and the rows, never with the
+ * coordinates.  Errors: RAST_E_NULL, RAST_E_ALGORITHM, RAST_E_SIZE,
+ * RAST_E_TOO_MANY. */
+RAST_API rast_status rast_scratch_size(const rast_fill_opts *opts,
+                                       uint32_t npoints, int32_t width,
+                                       int32_t height, size_t *bytes);
+
+/* Fill a polygon with one pixel value: every pixel of target->clip whose
+ * sample is inside (see Conventions) gets the `pixel` bytes (1, 3 or 4
+ * bytes as the target format says, memory order); other pixels are not
+ * touched.  Geometry outside the clip is clipped, not an error.
+ * `scratch` (aligned to RAST_SCRATCH_ALIGN, `scratch_bytes` long) must hold
+ * rast_scratch_size(opts, npoints, clip width, clip height) bytes; its
+ * contents on entry are ignored and on return are undefined.
+ * Errors, all returned before anything is written: RAST_E_NULL,
+ * RAST_E_RANGE, RAST_E_SUBPIXEL, RAST_E_ALGORITHM, RAST_E_RULE,
+ * RAST_E_FORMAT, RAST_E_SCRATCH, RAST_E_ALIGN, RAST_E_TOO_MANY, RAST_E_ARG
+ * (a bad sample or rule value). */
+RAST_API rast_status rast_fill_polygon(const rast_target *target,
+                                       const rast_polygon *polygon,
+                                       const rast_fill_opts *opts,
+                                       const void *pixel, void *scratch,
+                                       size_t scratch_bytes);
+
+/* The same coverage as rast_fill_polygon, handed to `span` instead of
+ * painted: for each row from top to bottom, the inside samples of the row
+ * within `clip`, as spans with x0 < x1 in increasing x order that neither
+ * overlap nor touch.  This is the call for firmware that pushes spans to a
+ * display controller.  The clip's coordinates must lie in
+ * -RAST_MAX_DIM..RAST_MAX_DIM (else RAST_E_SIZE); they may be negative.
+ * Scratch and errors as rast_fill_polygon (sized for the clip). */
+RAST_API rast_status rast_fill_polygon_spans(const rast_polygon *polygon,
+                                             const rast_fill_opts *opts,
+                                             const rast_rect *clip,
+                                             rast_span_fn span, void *user,
+                                             void *scratch,
+                                             size_t scratch_bytes);
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif /* RASTRUM_H */

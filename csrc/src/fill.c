@@ -1,0 +1,134 @@
+/*
+ * fill.c - the polygon entry points: check everything, then hand the
+ * polygon to the chosen filler with the chosen painter as its sink.
+ * Every error is found here, before a filler runs and before any pixel is
+ * written.
+ */
+#include "paint.h"
+#include "registry.h"
+
+static rast_status rast__check_opts(const rast_fill_opts *o, rast__grid *g,
+                                    const rast__algo **algo)
+{
+    const rast__algo *al;
+    if (!o) return RAST_E_NULL;
+    al = rast__algo_get(o->algorithm);
+    if (!al) return RAST_E_ALGORITHM;
+    if ((unsigned)o->rule > RAST_RULE_NONZERO) return RAST_E_ARG;
+    if (!(al->rules & (1u << o->rule))) return RAST_E_RULE;
+    if (o->subpixel_bits < 0 || o->subpixel_bits > RAST_MAX_SUBPIXEL_BITS)
+        return RAST_E_SUBPIXEL;
+    if (o->sample != RAST_SAMPLE_CORNER && o->sample != RAST_SAMPLE_CENTER)
+        return RAST_E_ARG;
+    g->shift = o->subpixel_bits + 1;
+    g->unit = (int32_t)1 << g->shift;
+    g->off = o->sample == RAST_SAMPLE_CENTER ? (int32_t)1 << o->subpixel_bits : 0;
+    *algo = al;
+    return RAST_OK;
+}
+
+/* Count the vertices and check that every one is in range. */
+static rast_status rast__check_polygon(const rast_polygon *p, uint32_t *npoints)
+{
+    uint64_t n = 0;
+    uint32_t k, i;
+    if (!p) return RAST_E_NULL;
+    if (p->nrings > 0 && !p->ring_sizes) return RAST_E_NULL;
+    for (k = 0; k < p->nrings; k++) {
+        n += p->ring_sizes[k];
+        if (n > RAST_MAX_POINTS) return RAST_E_TOO_MANY;
+    }
+    if (n > 0 && !p->points) return RAST_E_NULL;
+    for (i = 0; i < (uint32_t)n; i++) {
+        int32_t x = p->points[i].x, y = p->points[i].y;
+        if (x < -RAST_COORD_MAX || x > RAST_COORD_MAX ||
+            y < -RAST_COORD_MAX || y > RAST_COORD_MAX)
+            return RAST_E_RANGE;
+    }
+    *npoints = (uint32_t)n;
+    return RAST_OK;
+}
+
+rast_status rast_scratch_size(const rast_fill_opts *opts, uint32_t npoints,
+                              int32_t width, int32_t height, size_t *bytes)
+{
+    const rast__algo *al;
+    rast__grid g;
+    rast_status st;
+    if (!bytes) return RAST_E_NULL;
+    st = rast__check_opts(opts, &g, &al);
+    if (st != RAST_OK) return st;
+    if (width < 0 || height < 0 || width > RAST_MAX_DIM || height > RAST_MAX_DIM)
+        return RAST_E_SIZE;
+    if (npoints > RAST_MAX_POINTS) return RAST_E_TOO_MANY;
+    *bytes = al->scratch(npoints, width, height);
+    return RAST_OK;
+}
+
+/* Check the polygon, options and scratch for a clip; run the filler. */
+static rast_status rast__fill(const rast_polygon *poly, const rast_fill_opts *opts,
+                              const rast_rect *clip, rast_span_fn fn, void *user,
+                              void *scratch, size_t scratch_bytes)
+{
+    const rast__algo *al;
+    rast__grid g;
+    rast__sink sink;
+    rast__arena arena;
+    uint32_t npoints;
+    rast_status st;
+
+    st = rast__check_opts(opts, &g, &al);
+    if (st != RAST_OK) return st;
+    st = rast__check_polygon(poly, &npoints);
+    if (st != RAST_OK) return st;
+    if (scratch_bytes < al->scratch(npoints, clip->x1 - clip->x0, clip->y1 - clip->y0))
+        return RAST_E_SCRATCH;
+    if (scratch_bytes > 0 && !scratch) return RAST_E_NULL;
+    if ((uintptr_t)scratch % RAST_SCRATCH_ALIGN) return RAST_E_ALIGN;
+    if (clip->x0 >= clip->x1 || clip->y0 >= clip->y1) return RAST_OK;
+
+    sink.fn = fn;
+    sink.user = user;
+    sink.cx0 = clip->x0;
+    sink.cx1 = clip->x1;
+    sink.y = clip->y0;
+    sink.px0 = sink.px1 = clip->x0;
+    arena.p = (unsigned char *)scratch;
+    arena.left = scratch_bytes;
+    return al->fill(poly, npoints, &g, opts->rule, clip, &sink, &arena);
+}
+
+rast_status rast_fill_polygon(const rast_target *target, const rast_polygon *polygon,
+                              const rast_fill_opts *opts, const void *pixel,
+                              void *scratch, size_t scratch_bytes)
+{
+    rast__solid solid;
+    rast_span_fn fn;
+    rast_rect clip;
+    rast_status st;
+
+    st = rast__target_check(target, &clip);
+    if (st != RAST_OK) return st;
+    st = rast__solid_init(&solid, target, pixel, &fn);
+    if (st != RAST_OK) return st;
+    return rast__fill(polygon, opts, &clip, fn, &solid, scratch, scratch_bytes);
+}
+
+rast_status rast_fill_polygon_spans(const rast_polygon *polygon,
+                                    const rast_fill_opts *opts,
+                                    const rast_rect *clip, rast_span_fn span,
+                                    void *user, void *scratch,
+                                    size_t scratch_bytes)
+{
+    rast_rect c;
+    if (!clip || !span) return RAST_E_NULL;
+    c = *clip;
+    /* Keep x1 - x0 and y1 - y0 inside int32_t. */
+    if (c.x0 < -RAST_MAX_DIM || c.x0 > RAST_MAX_DIM || c.x1 < -RAST_MAX_DIM ||
+        c.x1 > RAST_MAX_DIM || c.y0 < -RAST_MAX_DIM || c.y0 > RAST_MAX_DIM ||
+        c.y1 < -RAST_MAX_DIM || c.y1 > RAST_MAX_DIM)
+        return RAST_E_SIZE;
+    if (c.x1 < c.x0) c.x1 = c.x0;
+    if (c.y1 < c.y0) c.y1 = c.y0;
+    return rast__fill(polygon, opts, &c, span, user, scratch, scratch_bytes);
+}

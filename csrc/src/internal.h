@@ -1,0 +1,160 @@
+/*
+ * internal.h - what the fillers, painters and the dispatcher share.
+ * Not installed; nothing here is part of the API.
+ *
+ * Internal units.  A vertex (x, y) given in 1/2^S pixel is doubled on entry,
+ * so one pixel is UNIT = 2^(S+1) internal units and a sample offset of 1/2
+ * pixel is the integer 2^S.  Sample (i, j) then sits at
+ * (i*UNIT + OFF, j*UNIT + OFF) with OFF = 2^S (centres) or 0 (corners), and
+ * every comparison of DESIGN section 1 is between integers.
+ */
+#ifndef RAST_INTERNAL_H
+#define RAST_INTERNAL_H
+
+#include "rastrum.h"
+
+typedef struct rast__grid {
+    int32_t shift; /* S + 1 */
+    int32_t unit;  /* 2^(S+1): one pixel in internal units */
+    int32_t off;   /* sample offset in internal units: 2^S or 0 */
+} rast__grid;
+
+/* Floor of a / b for b > 0, with a non-negative remainder. */
+static inline int64_t rast__floordiv(int64_t a, int64_t b)
+{
+    int64_t q = a / b;
+    return (a % b < 0) ? q - 1 : q;
+}
+
+/* Ceiling of a / b for b > 0. */
+static inline int64_t rast__ceildiv(int64_t a, int64_t b)
+{
+    return -rast__floordiv(-a, b);
+}
+
+/* The first row whose sample is at or below internal ordinate y:
+ * the least j with j*unit + off >= y. */
+static inline int64_t rast__row_at_or_after(int64_t y, const rast__grid *g)
+{
+    return rast__ceildiv(y - g->off, g->unit);
+}
+
+/*
+ * One non-horizontal edge, walked row by row with an exact integer DDA.
+ * At row j the edge's crossing is the rational X(j); `x` is the first column
+ * whose sample is at or right of it, x = ceil((X(j) - off) / unit), so that a
+ * sample i counts the crossing iff i >= x.  With the crossing written as
+ * (X(j) - off) / unit = n / q  (q = dy * unit > 0), the invariant is
+ *     x*q - n = e,  0 <= e < q.
+ * From one row to the next n grows by dx*unit = step*q + dr (0 <= dr < q).
+ */
+typedef struct rast__edge {
+    int64_t e;    /* x*q - n, in [0, q) */
+    int64_t dr;   /* remainder of the per-row growth, in [0, q) */
+    int64_t q;    /* dy * unit */
+    int32_t x;    /* first column at or right of the crossing */
+    int32_t step; /* whole columns per row: floor(dx / dy) */
+    int32_t row;  /* first row crossed (after clipping) */
+    int32_t end;  /* first row not crossed (after clipping) */
+    int32_t dir;  /* +1 if the edge goes down (y grows), -1 if up */
+    int32_t next; /* free for the filler's lists */
+} rast__edge;
+
+/* Set up edge a->b (fixed-point input units) restricted to rows
+ * [row_lo, row_hi).  Returns 1 and fills *ed when the edge crosses at least
+ * one of those rows, 0 otherwise.  Coordinates must be in range. */
+int rast__edge_setup(rast__edge *ed, rast_point a, rast_point b,
+                     const rast__grid *g, int32_t row_lo, int32_t row_hi);
+
+/* Advance an edge to the next row. */
+static inline void rast__edge_step(rast__edge *ed)
+{
+    ed->x += ed->step;
+    ed->e -= ed->dr;
+    if (ed->e < 0) {
+        ed->x += 1;
+        ed->e += ed->q;
+    }
+}
+
+/* Where spans go.  A filler calls rast__sink_span for each inside run of a
+ * row, rows in increasing order and runs in increasing x; the sink clips to
+ * the clip columns, merges runs that touch, and hands them to `fn`. */
+typedef struct rast__sink {
+    rast_span_fn fn;
+    void *user;
+    int32_t cx0, cx1; /* clip columns */
+    int32_t y;        /* row of the pending span */
+    int32_t px0, px1; /* pending span, px0 < px1 when one is pending */
+} rast__sink;
+
+static inline void rast__sink_flush(rast__sink *s)
+{
+    if (s->px0 < s->px1) {
+        s->fn(s->user, s->y, s->px0, s->px1);
+        s->px1 = s->px0;
+    }
+}
+
+static inline void rast__sink_span(rast__sink *s, int32_t y, int32_t x0, int32_t x1)
+{
+    if (x0 < s->cx0) x0 = s->cx0;
+    if (x1 > s->cx1) x1 = s->cx1;
+    if (x0 >= x1) return;
+    if (y == s->y && x0 <= s->px1 && s->px0 < s->px1) {
+        if (x1 > s->px1) s->px1 = x1;
+        return;
+    }
+    rast__sink_flush(s);
+    s->y = y;
+    s->px0 = x0;
+    s->px1 = x1;
+}
+
+/* Bump allocation out of the caller's scratch buffer. */
+typedef struct rast__arena {
+    unsigned char *p;
+    size_t left;
+} rast__arena;
+
+/* Round n up to a multiple of RAST_SCRATCH_ALIGN. */
+static inline size_t rast__align(size_t n)
+{
+    return (n + (RAST_SCRATCH_ALIGN - 1)) & ~(size_t)(RAST_SCRATCH_ALIGN - 1);
+}
+
+static inline void *rast__take(rast__arena *a, size_t n)
+{
+    void *p;
+    n = rast__align(n);
+    if (n > a->left) return NULL;
+    p = a->p;
+    a->p += n;
+    a->left -= n;
+    return p;
+}
+
+/* A polygon filler: coverage of `poly` inside `clip` (non-empty, already cut
+ * to the target) handed to `sink`, with work memory from `arena`.  Called
+ * only after the dispatcher has checked every argument and the scratch size,
+ * so it may assume valid input. */
+typedef rast_status (*rast__polygon_fill_fn)(const rast_polygon *poly,
+                                             uint32_t npoints,
+                                             const rast__grid *g,
+                                             rast_fill_rule rule,
+                                             const rast_rect *clip,
+                                             rast__sink *sink,
+                                             rast__arena *arena);
+
+/* Scratch bytes a filler needs for npoints vertices and a clip of the given
+ * size (both already checked against the limits). */
+typedef size_t (*rast__scratch_fn)(uint32_t npoints, int32_t width, int32_t height);
+
+/* The AET filler (aet.c). */
+rast_status rast__aet_fill(const rast_polygon *poly, uint32_t npoints,
+                           const rast__grid *g, rast_fill_rule rule,
+                           const rast_rect *clip, rast__sink *sink,
+                           rast__arena *arena);
+size_t rast__aet_scratch(uint32_t npoints, int32_t width, int32_t height);
+
+#endif /* RAST_INTERNAL_H */

@@ -1,0 +1,27 @@
+/*
+ * registry.c - the polygon algorithms by number: name, fill rules, scratch
+ * size, filler.  Adding an algorithm adds one row here (and its file).
+ */
+#include "registry.h"
+
+#define RAST__BOTH_RULES ((1u << RAST_RULE_EVENODD) | (1u << RAST_RULE_NONZERO))
+
+static const rast__algo rast__algos[RAST_ALGO_COUNT_] = {
+    {"aet", RAST__BOTH_RULES, rast__aet_scratch, rast__aet_fill},
+};
+
+const rast__algo *rast__algo_get(rast_algorithm a)
+{
+    if ((unsigned)a >= RAST_ALGO_COUNT_) return NULL;
+    return &rast__algos[a];
+}
+
+rast_status rast_algorithm_info(rast_algorithm algorithm, const char **name,
+                                uint32_t *rules)
+{
+    const rast__algo *al = rast__algo_get(algorithm);
+    if (!al) return RAST_E_ALGORITHM;
+    if (name) *name = al->name;
+    if (rules) *rules = al->rules;
+    return RAST_OK;
+}

@@ -1,0 +1,82 @@
+"""rastrum: exact, integer-only polygon filling.
+
+Every algorithm gives the same pixels: those whose sample point is inside
+the polygon under one exact rule (pixel centres by default, spans left
+closed and right open, rows top closed and bottom open; see the README).
+Coordinates are (x, y) as in Pillow; arrays are (row, column) = (y, x) as in
+numpy.
+"""
+
+import numpy as np
+
+from . import _core
+from ._core import InputError, RastrumError
+from ._native import ffi, lib
+from .canvas import Canvas
+
+__all__ = ["polygon_mask", "Canvas", "ALGORITHMS", "RastrumError", "InputError", "__version__"]
+
+_v = lib.rast_version_number()
+__version__ = "%d.%d.%d" % (_v // 10000, _v // 100 % 100, _v % 100)
+
+#: The algorithm names each entry point accepts, and the fill rules each
+#: algorithm supports.
+ALGORITHMS = {
+    "polygon_mask": {name: rules for name, (_, rules) in _core.POLYGON_ALGORITHMS.items()},
+}
+ALGORITHMS["Canvas.fill_polygon"] = ALGORITHMS["polygon_mask"]
+
+_ONE = ffi.new("uint8_t[1]", [1])
+
+
+def polygon_mask(rings, shape, *, rule="evenodd", algorithm="aet", subpixel_bits=8, sample_offset=0.5):
+    """Rasterise a polygon into a boolean mask.
+
+    Parameters
+    ----------
+    rings : (N, 2) array_like or list of them
+        The polygon's closed rings as (x, y) vertices in pixels; the last
+        vertex joins the first.  Several rings make holes and islands.
+    shape : (int, int)
+        (height, width) of the mask, as numpy writes it.
+    rule : {"evenodd", "nonzero"}
+        Fill rule.  Under "nonzero", holes must run opposite to their outer
+        ring.
+    algorithm : str
+        One of ``ALGORITHMS["polygon_mask"]``; all give the same pixels.
+    subpixel_bits : int
+        Vertices are snapped to 1/2**subpixel_bits pixel (0..16), the only
+        approximation.  The coordinate range is +-(2**27 - 1) / 2**bits px.
+    sample_offset : {0.5, 0}
+        Where a pixel's sample point is: its centre (0.5) or its top-left
+        corner (0, as OpenCV and the textbook).
+
+    Returns
+    -------
+    numpy.ndarray of bool, shape (H, W)
+        True where the pixel's sample is inside.
+
+    Raises
+    ------
+    InputError (a ValueError)
+        Bad shapes, NaN or infinite coordinates, coordinates out of range,
+        rings of fewer than 3 points, unknown names.
+
+    Examples
+    --------
+    >>> import rastrum
+    >>> m = rastrum.polygon_mask([(1, 1), (5, 1), (5, 4), (1, 4)], (6, 7))
+    >>> m.astype(int)
+    array([[0, 0, 0, 0, 0, 0, 0],
+           [0, 1, 1, 1, 1, 0, 0],
+           [0, 1, 1, 1, 1, 0, 0],
+           [0, 1, 1, 1, 1, 0, 0],
+           [0, 0, 0, 0, 0, 0, 0],
+           [0, 0, 0, 0, 0, 0, 0]])
+    """
+    h, w = _core.shape2(shape)
+    opts = _core.fill_opts(algorithm, rule, subpixel_bits, sample_offset)
+    out = np.zeros((h, w), np.uint8)
+    target = _core.make_target(out, lib.RAST_FORMAT_GRAY8)
+    _core.fill_polygon(target, rings, _ONE, opts, int(subpixel_bits))
+    return out.view(bool)

@@ -1,0 +1,135 @@
+"""Canvas: a target over a numpy array, with drawing methods."""
+
+import numpy as np
+
+from . import _core
+from ._core import InputError
+from ._native import ffi
+
+_CHANNELS_TO_FORMAT = {1: "gray8", 3: "rgb888", 4: "rgba8888"}
+_PIL_MODES = {"gray8": "L", "rgb888": "RGB", "rgba8888": "RGBA"}
+
+
+class Canvas:
+    """A picture that rastrum draws into.
+
+    ``Canvas(width, height, format="rgb888", background=0)`` owns a new
+    array; ``Canvas.wrap(array)`` draws into an existing one (a sub-view of
+    a larger image is fine).  Formats: "gray8" (H, W), "rgb888" (H, W, 3),
+    "rgba8888" (H, W, 4), all uint8.  A colour is an int for gray8, or a
+    sequence of 3 or 4 ints; a single int is used for every channel.
+
+    Examples
+    --------
+    >>> import rastrum
+    >>> c = rastrum.Canvas(8, 6, format="gray8")
+    >>> c.fill_polygon([(1, 1), (7, 1), (4, 5)], 255)
+    >>> int(c.array.sum() // 255)
+    12
+    """
+
+    def __init__(self, width, height, format="rgb888", background=0):
+        h, w = _core.shape2((height, width))
+        fmt = _core._name(format, "format", _core.FORMATS)
+        bpp = _core.FORMAT_BYTES[fmt]
+        array = np.empty((h, w) if bpp == 1 else (h, w, bpp), np.uint8)
+        array[...] = np.frombuffer(_pixel_bytes(background, fmt), np.uint8)
+        self._set(array, fmt)
+
+    @classmethod
+    def wrap(cls, array, format=None):
+        """Draw into an existing uint8 array (no copy).
+
+        The format follows from the shape when not given: (H, W) is gray8,
+        (H, W, 3) rgb888, (H, W, 4) rgba8888.  The array must be writable
+        and each row's pixels contiguous (any row stride, so a slice
+        ``big[10:-10, 10:-10]`` works).
+        """
+        if not isinstance(array, np.ndarray):
+            raise InputError("Canvas.wrap needs a numpy array, not %s" % type(array).__name__)
+        if array.dtype != np.uint8:
+            raise InputError("Canvas.wrap needs a uint8 array, not %s" % array.dtype)
+        if array.ndim == 2:
+            channels = 1
+        elif array.ndim == 3 and array.shape[2] in (3, 4):
+            channels = array.shape[2]
+        else:
+            raise InputError("Canvas.wrap needs shape (H, W), (H, W, 3) or (H, W, 4), not %s" % (array.shape,))
+        fmt = _CHANNELS_TO_FORMAT[channels] if format is None else _core._name(format, "format", _core.FORMATS)
+        if _core.FORMAT_BYTES[fmt] != channels:
+            raise InputError("format %r does not match an array of shape %s" % (fmt, array.shape))
+        if not array.flags.writeable:
+            raise InputError("Canvas.wrap needs a writable array")
+        h, w = array.shape[:2]
+        if array.size and h > 1 and array.strides[0] < w * channels or (
+            array.size and (array.strides[1] != channels or (channels > 1 and array.strides[2] != 1))
+        ):
+            raise InputError("Canvas.wrap needs each row's pixels contiguous and rows in order (strides %s)" % (array.strides,))
+        canvas = cls.__new__(cls)
+        canvas._set(array, fmt)
+        return canvas
+
+    def _set(self, array, fmt):
+        self._array = array
+        self._format = fmt
+        self._code = _core.FORMATS[fmt]
+        self._target = _core.make_target(array, self._code)
+
+    @property
+    def array(self):
+        """The pixels as a numpy view: (H, W) or (H, W, channels)."""
+        return self._array
+
+    @property
+    def width(self):
+        return self._array.shape[1]
+
+    @property
+    def height(self):
+        return self._array.shape[0]
+
+    @property
+    def format(self):
+        return self._format
+
+    def fill_polygon(self, rings, color, *, rule="evenodd", algorithm="aet", subpixel_bits=8, sample_offset=0.5):
+        """Paint `color` on every pixel whose sample is inside the polygon.
+
+        Arguments as :func:`rastrum.polygon_mask`.  Nothing is written when
+        an argument is bad (an InputError says which).
+        """
+        opts = _core.fill_opts(algorithm, rule, subpixel_bits, sample_offset)
+        pixel = ffi.from_buffer(_pixel_bytes(color, self._format))
+        _core.fill_polygon(self._target, rings, pixel, opts, int(subpixel_bits))
+
+    def to_image(self):
+        """A Pillow image (a copy): mode L, RGB or RGBA."""
+        from PIL import Image
+
+        return Image.fromarray(np.ascontiguousarray(self._array), _PIL_MODES[self._format])
+
+    def save(self, path, **kwargs):
+        """Save through Pillow; the format follows the file name (PNG, ...)."""
+        self.to_image().save(path, **kwargs)
+
+    def __repr__(self):
+        return "Canvas(%d, %d, format=%r)" % (self.width, self.height, self._format)
+
+
+def _pixel_bytes(color, fmt):
+    """The pixel's bytes for `color` in format `fmt`, or InputError."""
+    n = _core.FORMAT_BYTES[fmt]
+    if isinstance(color, (int, np.integer)) and not isinstance(color, (bool, np.bool_)):
+        values = [int(color)] * n
+    else:
+        try:
+            values = [v for v in color]
+        except TypeError:
+            raise InputError("colour %r: give an int or a sequence of %d ints" % (color, n)) from None
+        if len(values) != n or not all(
+            isinstance(v, (int, np.integer)) and not isinstance(v, (bool, np.bool_)) for v in values
+        ):
+            raise InputError("colour %r: format %s needs %d ints" % (color, fmt, n))
+    if not all(0 <= v <= 255 for v in values):
+        raise InputError("colour %r: every channel must be in 0..255" % (color,))
+    return bytes(bytearray(int(v) for v in values))

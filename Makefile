@@ -44,11 +44,11 @@ lib: build/librastrum.a build/librastrum.so
 
 build/obj/%.o: csrc/src/%.c $(HDR)
 	@mkdir -p $(@D)
-	$(CC) $(ALL_CFLAGS) -c $< -o $@
+	@$(CC) $(ALL_CFLAGS) -c $< -o $@
 
 build/pic/%.o: csrc/src/%.c $(HDR)
 	@mkdir -p $(@D)
-	$(CC) $(ALL_CFLAGS) -fPIC -fvisibility=hidden -c $< -o $@
+	@$(CC) $(ALL_CFLAGS) -fPIC -fvisibility=hidden -c $< -o $@
 
 build/librastrum.a: $(OBJ)
 	rm -f $@
@@ -61,7 +61,7 @@ build/librastrum.so: $(PIC_OBJ)
 
 build/tests/%: tests/c/%.c build/librastrum.a tests/c/check.h
 	@mkdir -p $(@D)
-	$(CC) $(ALL_CFLAGS) -Wno-conversion -Itests/c $< build/librastrum.a -o $@
+	@$(CC) $(ALL_CFLAGS) -Wno-conversion -Itests/c $< build/librastrum.a -o $@
 
 # ---- tests -----------------------------------------------------------------
 test: test-c test-py

@@ -109,7 +109,8 @@ enum {
     RAST_MAX_POINTS = 16777216, /* 2^24 */
     /* Alignment, in bytes, that a scratch buffer must have. */
     RAST_SCRATCH_ALIGN = 8,
-    /* Bytes of scratch per edge and per visible row for the "aet" filler. */
+    /* Bytes of scratch per edge (twice: edge table and AET) and per visible
+     * row (a bucket head) for the "aet" filler. */
     RAST_AET_EDGE_BYTES = 48,
     RAST_AET_ROW_BYTES = 4
 };
@@ -118,7 +119,7 @@ enum {
  * vertices and a clip `height` rows high; usable to size a static array:
  *     static uint64_t work[RAST_AET_SCRATCH_BOUND(64, 240) / 8]; */
 #define RAST_AET_SCRATCH_BOUND(npoints, height)                  \
-    ((size_t)(npoints) * (RAST_AET_EDGE_BYTES + 4) +             \
+    ((size_t)(npoints) * 2 * RAST_AET_EDGE_BYTES +               \
      ((size_t)(height) + 1) * RAST_AET_ROW_BYTES + RAST_SCRATCH_ALIGN)
 
 /* ---- status codes ----------------------------------------------------------

@@ -9,8 +9,8 @@
  * with the exact DDA.  Insertion sort keeps the AET ordered: from one row to
  * the next the order changes only where edges cross, so it is nearly sorted.
  *
- * Scratch: the edges, the AET (an index per edge) and one bucket head per
- * visible row.
+ * Scratch: the edge table and the AET (an edge record each) and one bucket
+ * head per visible row.
  */
 #include "internal.h"
 
@@ -20,21 +20,22 @@ typedef char rast__aet_edge_size_check[sizeof(rast__edge) == RAST_AET_EDGE_BYTES
 size_t rast__aet_scratch(uint32_t npoints, int32_t width, int32_t height)
 {
     (void)width;
-    return rast__align((size_t)npoints * sizeof(rast__edge)) +
-           rast__align((size_t)npoints * sizeof(int32_t)) +
+    return 2 * rast__align((size_t)npoints * sizeof(rast__edge)) +
            rast__align(((size_t)height + 1) * sizeof(int32_t));
 }
 
-/* Insertion sort of the AET indices by crossing column. */
-static void rast__aet_sort(int32_t *active, int32_t n, const rast__edge *edges)
+/* Insertion sort of the AET by crossing column.  The edges are held by
+ * value: comparisons read consecutive records and stepping walks the array
+ * in order; a record moves only when its edge crosses another. */
+static void rast__aet_sort(rast__edge *aet, int32_t n)
 {
     int32_t i, k;
     for (i = 1; i < n; i++) {
-        int32_t v = active[i];
-        int32_t xv = edges[v].x;
-        for (k = i; k > 0 && edges[active[k - 1]].x > xv; k--)
-            active[k] = active[k - 1];
-        active[k] = v;
+        if (aet[i - 1].x > aet[i].x) {
+            rast__edge v = aet[i];
+            for (k = i; k > 0 && aet[k - 1].x > v.x; k--) aet[k] = aet[k - 1];
+            aet[k] = v;
+        }
     }
 }
 
@@ -44,8 +45,8 @@ rast_status rast__aet_fill(const rast_polygon *poly, uint32_t npoints,
                            rast__arena *arena)
 {
     const rast_point *pts = poly->points;
-    rast__edge *edges;
-    int32_t *active, *bucket;
+    rast__edge *edges, *aet;
+    int32_t *bucket;
     int32_t miny, maxy, row0, row1, j, nactive = 0, nedges = 0;
     uint32_t i, k, base;
     int64_t r;
@@ -65,13 +66,13 @@ rast_status rast__aet_fill(const rast_polygon *poly, uint32_t npoints,
     if (row0 >= row1) return RAST_OK;
 
     edges = (rast__edge *)rast__take(arena, (size_t)npoints * sizeof(rast__edge));
-    active = (int32_t *)rast__take(arena, (size_t)npoints * sizeof(int32_t));
+    aet = (rast__edge *)rast__take(arena, (size_t)npoints * sizeof(rast__edge));
     bucket = (int32_t *)rast__take(arena, ((size_t)(row1 - row0) + 1) * sizeof(int32_t));
-    if (!edges || !active || !bucket) return RAST_E_SCRATCH;
+    if (!edges || !aet || !bucket) return RAST_E_SCRATCH;
 
     for (j = row0; j < row1; j++) bucket[j - row0] = -1;
 
-    /* The bucket edge table. */
+    /* The bucket edge table: each edge listed under its first visible row. */
     for (k = 0, base = 0; k < poly->nrings; base += poly->ring_sizes[k], k++) {
         uint32_t n = poly->ring_sizes[k];
         for (i = 0; i < n; i++) {
@@ -91,37 +92,39 @@ rast_status rast__aet_fill(const rast_polygon *poly, uint32_t npoints,
         /* Edges starting on this row join the AET, kept sorted. */
         for (e = bucket[j - row0]; e >= 0; e = edges[e].next) {
             int32_t x = edges[e].x, p = nactive++;
-            while (p > 0 && edges[active[p - 1]].x > x) {
-                active[p] = active[p - 1];
+            while (p > 0 && aet[p - 1].x > x) {
+                aet[p] = aet[p - 1];
                 p--;
             }
-            active[p] = e;
+            aet[p] = edges[e];
         }
         if (nactive == 0) continue;
 
         /* Spans: sample i is inside iff the crossings with x <= i make it so. */
         if (rule == RAST_RULE_EVENODD) {
             for (n = 0; n + 1 < nactive; n += 2)
-                rast__sink_span(sink, j, edges[active[n]].x, edges[active[n + 1]].x);
+                rast__sink_span(sink, j, aet[n].x, aet[n + 1].x);
         } else {
             int32_t w = 0, start = 0;
             for (n = 0; n < nactive; n++) {
-                const rast__edge *ed = &edges[active[n]];
-                if (w == 0) start = ed->x;
-                w += ed->dir;
-                if (w == 0) rast__sink_span(sink, j, start, ed->x);
+                if (w == 0) start = aet[n].x;
+                w += aet[n].dir;
+                if (w == 0) rast__sink_span(sink, j, start, aet[n].x);
             }
         }
 
-        /* Drop the edges that end here; step the rest to the next row. */
+        /* Step every edge to the next row; drop those that end here (few
+         * rows have any, so the compaction is a separate, rare pass). */
         for (n = 0, m = 0; n < nactive; n++) {
-            rast__edge *ed = &edges[active[n]];
-            if (ed->end == j + 1) continue;
-            rast__edge_step(ed);
-            active[m++] = active[n];
+            rast__edge_step(&aet[n]);
+            m += aet[n].end == j + 1;
         }
-        nactive = m;
-        rast__aet_sort(active, nactive, edges);
+        if (m) {
+            for (n = 0, m = 0; n < nactive; n++)
+                if (aet[n].end != j + 1) aet[m++] = aet[n];
+            nactive = m;
+        }
+        rast__aet_sort(aet, nactive);
     }
     rast__sink_flush(sink);
     return RAST_OK;

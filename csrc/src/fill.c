@@ -67,7 +67,7 @@ rast_status rast_scratch_size(const rast_fill_opts *opts, uint32_t npoints,
 
 /* Check the polygon, options and scratch for a clip; run the filler. */
 static rast_status rast__fill(const rast_polygon *poly, const rast_fill_opts *opts,
-                              const rast_rect *clip, rast_span_fn fn, void *user,
+                              const rast_rect *clip, rast__row_fn fn, void *user,
                               void *scratch, size_t scratch_bytes)
 {
     const rast__algo *al;
@@ -92,7 +92,7 @@ static rast_status rast__fill(const rast_polygon *poly, const rast_fill_opts *op
     sink.cx0 = clip->x0;
     sink.cx1 = clip->x1;
     sink.y = clip->y0;
-    sink.px0 = sink.px1 = clip->x0;
+    sink.n = 0;
     arena.p = (unsigned char *)scratch;
     arena.left = scratch_bytes;
     return al->fill(poly, npoints, &g, opts->rule, clip, &sink, &arena);
@@ -103,7 +103,7 @@ rast_status rast_fill_polygon(const rast_target *target, const rast_polygon *pol
                               void *scratch, size_t scratch_bytes)
 {
     rast__solid solid;
-    rast_span_fn fn;
+    rast__row_fn fn;
     rast_rect clip;
     rast_status st;
 
@@ -120,6 +120,7 @@ rast_status rast_fill_polygon_spans(const rast_polygon *polygon,
                                     void *user, void *scratch,
                                     size_t scratch_bytes)
 {
+    rast__user_spans u;
     rast_rect c;
     if (!clip || !span) return RAST_E_NULL;
     c = *clip;
@@ -130,5 +131,7 @@ rast_status rast_fill_polygon_spans(const rast_polygon *polygon,
         return RAST_E_SIZE;
     if (c.x1 < c.x0) c.x1 = c.x0;
     if (c.y1 < c.y0) c.y1 = c.y0;
-    return rast__fill(polygon, opts, &c, span, user, scratch, scratch_bytes);
+    u.fn = span;
+    u.user = user;
+    return rast__fill(polygon, opts, &c, rast__user_row, &u, scratch, scratch_bytes);
 }

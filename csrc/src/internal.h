@@ -77,22 +77,31 @@ static inline void rast__edge_step(rast__edge *ed)
     }
 }
 
+/* A painter's entry: the spans of row y, xs[2k] <= i < xs[2k+1] for
+ * k < n, in increasing x, each non-empty, none touching the next. */
+typedef void (*rast__row_fn)(void *user, int32_t y, const int32_t *xs, int32_t n);
+
+/* Spans a sink gathers before handing them on; a longer row goes in parts. */
+#define RAST__SINK_SPANS 64
+
 /* Where spans go.  A filler calls rast__sink_span for each inside run of a
  * row, rows in increasing order and runs in increasing x; the sink clips to
- * the clip columns, merges runs that touch, and hands them to `fn`. */
+ * the clip columns, merges runs that touch, and hands each row's spans to
+ * the painter in one call. */
 typedef struct rast__sink {
-    rast_span_fn fn;
+    rast__row_fn fn;
     void *user;
     int32_t cx0, cx1; /* clip columns */
-    int32_t y;        /* row of the pending span */
-    int32_t px0, px1; /* pending span, px0 < px1 when one is pending */
+    int32_t y;        /* row of the gathered spans */
+    int32_t n;        /* spans gathered */
+    int32_t xs[2 * RAST__SINK_SPANS];
 } rast__sink;
 
 static inline void rast__sink_flush(rast__sink *s)
 {
-    if (s->px0 < s->px1) {
-        s->fn(s->user, s->y, s->px0, s->px1);
-        s->px1 = s->px0;
+    if (s->n) {
+        s->fn(s->user, s->y, s->xs, s->n);
+        s->n = 0;
     }
 }
 
@@ -101,14 +110,22 @@ static inline void rast__sink_span(rast__sink *s, int32_t y, int32_t x0, int32_t
     if (x0 < s->cx0) x0 = s->cx0;
     if (x1 > s->cx1) x1 = s->cx1;
     if (x0 >= x1) return;
-    if (y == s->y && x0 <= s->px1 && s->px0 < s->px1) {
-        if (x1 > s->px1) s->px1 = x1;
-        return;
+    if (s->n) {
+        if (y == s->y) {
+            int32_t *last = &s->xs[2 * s->n - 1];
+            if (x0 <= *last) { /* touches the previous span: extend it */
+                if (x1 > *last) *last = x1;
+                return;
+            }
+            if (s->n == RAST__SINK_SPANS) rast__sink_flush(s);
+        } else {
+            rast__sink_flush(s);
+        }
     }
-    rast__sink_flush(s);
     s->y = y;
-    s->px0 = x0;
-    s->px1 = x1;
+    s->xs[2 * s->n] = x0;
+    s->xs[2 * s->n + 1] = x1;
+    s->n++;
 }
 
 /* Bump allocation out of the caller's scratch buffer. */

@@ -1,5 +1,6 @@
 /*
- * paint.c - targets and solid painters: WHAT a span writes.
+ * paint.c - targets and solid painters: WHAT a span writes.  Painters take a
+ * row's spans at once (one call per row, not per span).
  *
  * Adding a pixel format means one more row in rast__formats and, when its
  * pixels are not plain byte patterns, one more span function.
@@ -21,35 +22,45 @@ static void rast__replicate(unsigned char *p, size_t bytes, size_t n)
     }
 }
 
-static void rast__solid_span1(void *user, int32_t y, int32_t x0, int32_t x1)
+static void rast__solid_row1(void *user, int32_t y, const int32_t *xs, int32_t n)
 {
     const rast__solid *s = (const rast__solid *)user;
-    memset(s->base + (ptrdiff_t)y * s->stride + x0, s->value[0], (size_t)(x1 - x0));
+    unsigned char *row = s->base + (ptrdiff_t)y * s->stride, v = s->value[0];
+    int32_t k;
+    for (k = 0; k < n; k++) memset(row + xs[2 * k], v, (size_t)(xs[2 * k + 1] - xs[2 * k]));
 }
 
-static void rast__solid_span3(void *user, int32_t y, int32_t x0, int32_t x1)
+static void rast__solid_row3(void *user, int32_t y, const int32_t *xs, int32_t n)
 {
     const rast__solid *s = (const rast__solid *)user;
-    unsigned char *p = s->base + (ptrdiff_t)y * s->stride + (ptrdiff_t)x0 * 3;
-    memcpy(p, s->value, 3);
-    rast__replicate(p, 3, (size_t)(x1 - x0));
+    unsigned char *row = s->base + (ptrdiff_t)y * s->stride;
+    int32_t k;
+    for (k = 0; k < n; k++) {
+        unsigned char *p = row + (ptrdiff_t)xs[2 * k] * 3;
+        memcpy(p, s->value, 3);
+        rast__replicate(p, 3, (size_t)(xs[2 * k + 1] - xs[2 * k]));
+    }
 }
 
-static void rast__solid_span4(void *user, int32_t y, int32_t x0, int32_t x1)
+static void rast__solid_row4(void *user, int32_t y, const int32_t *xs, int32_t n)
 {
     const rast__solid *s = (const rast__solid *)user;
-    unsigned char *p = s->base + (ptrdiff_t)y * s->stride + (ptrdiff_t)x0 * 4;
-    memcpy(p, s->value, 4);
-    rast__replicate(p, 4, (size_t)(x1 - x0));
+    unsigned char *row = s->base + (ptrdiff_t)y * s->stride;
+    int32_t k;
+    for (k = 0; k < n; k++) {
+        unsigned char *p = row + (ptrdiff_t)xs[2 * k] * 4;
+        memcpy(p, s->value, 4);
+        rast__replicate(p, 4, (size_t)(xs[2 * k + 1] - xs[2 * k]));
+    }
 }
 
 static const struct {
     int32_t bytes;
-    rast_span_fn solid;
+    rast__row_fn solid;
 } rast__formats[RAST_FORMAT_COUNT_] = {
-    {1, rast__solid_span1}, /* RAST_FORMAT_GRAY8 */
-    {3, rast__solid_span3}, /* RAST_FORMAT_RGB888 */
-    {4, rast__solid_span4}, /* RAST_FORMAT_RGBA8888 */
+    {1, rast__solid_row1}, /* RAST_FORMAT_GRAY8 */
+    {3, rast__solid_row3}, /* RAST_FORMAT_RGB888 */
+    {4, rast__solid_row4}, /* RAST_FORMAT_RGBA8888 */
 };
 
 rast_status rast_format_bytes(rast_format format, int32_t *bytes)
@@ -111,7 +122,7 @@ rast_status rast__target_check(const rast_target *t, rast_rect *clip)
 }
 
 rast_status rast__solid_init(rast__solid *s, const rast_target *t,
-                             const void *pixel, rast_span_fn *fn)
+                             const void *pixel, rast__row_fn *fn)
 {
     int32_t bpp = rast__formats[t->format].bytes;
     if (!pixel) return RAST_E_NULL;
@@ -121,4 +132,11 @@ rast_status rast__solid_init(rast__solid *s, const rast_target *t,
     memcpy(s->value, pixel, (size_t)bpp);
     *fn = rast__formats[t->format].solid;
     return RAST_OK;
+}
+
+void rast__user_row(void *user, int32_t y, const int32_t *xs, int32_t n)
+{
+    const rast__user_spans *u = (const rast__user_spans *)user;
+    int32_t k;
+    for (k = 0; k < n; k++) u->fn(u->user, y, xs[2 * k], xs[2 * k + 1]);
 }

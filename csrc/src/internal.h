@@ -66,15 +66,14 @@ typedef struct rast__edge {
 int rast__edge_setup(rast__edge *ed, rast_point a, rast_point b,
                      const rast__grid *g, int32_t row_lo, int32_t row_hi);
 
-/* Advance an edge to the next row. */
+/* Advance an edge to the next row.  Branch-free: whether the remainder
+ * wraps is a coin toss for most slopes, which a branch would mispredict. */
 static inline void rast__edge_step(rast__edge *ed)
 {
-    ed->x += ed->step;
-    ed->e -= ed->dr;
-    if (ed->e < 0) {
-        ed->x += 1;
-        ed->e += ed->q;
-    }
+    int64_t e = ed->e - ed->dr;
+    int64_t carry = e < 0;
+    ed->x += ed->step + (int32_t)carry;
+    ed->e = e + (ed->q & -carry);
 }
 
 /* A painter's entry: the spans of row y, xs[2k] <= i < xs[2k+1] for

@@ -11,7 +11,7 @@ import numpy as np
 
 from . import _core
 from ._core import InputError, RastrumError
-from ._native import ffi, lib
+from ._native import lib
 from .canvas import Canvas
 
 __all__ = ["polygon_mask", "Canvas", "ALGORITHMS", "RastrumError", "InputError", "__version__"]
@@ -25,9 +25,6 @@ ALGORITHMS = {
     "polygon_mask": {name: rules for name, (_, rules) in _core.POLYGON_ALGORITHMS.items()},
 }
 ALGORITHMS["Canvas.fill_polygon"] = ALGORITHMS["polygon_mask"]
-
-_ONE = ffi.new("uint8_t[1]", [1])
-
 
 def polygon_mask(rings, shape, *, rule="evenodd", algorithm="aet", subpixel_bits=8, sample_offset=0.5):
     """Rasterise a polygon into a boolean mask.
@@ -74,9 +71,7 @@ def polygon_mask(rings, shape, *, rule="evenodd", algorithm="aet", subpixel_bits
            [0, 0, 0, 0, 0, 0, 0],
            [0, 0, 0, 0, 0, 0, 0]])
     """
-    h, w = _core.shape2(shape)
     opts = _core.fill_opts(algorithm, rule, subpixel_bits, sample_offset)
-    out = np.zeros((h, w), np.uint8)
-    target = _core.make_target(out, lib.RAST_FORMAT_GRAY8)
-    _core.fill_polygon(target, rings, _ONE, opts, int(subpixel_bits))
+    out = np.zeros(_core.shape2(shape), np.uint8)
+    _core.mask_polygon(out, rings, opts, opts.subpixel_bits)
     return out.view(bool)

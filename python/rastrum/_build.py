@@ -40,11 +40,95 @@ def _path(p):
     return os.path.relpath(p, ROOT) if os.path.abspath(os.getcwd()) == ROOT else p
 
 
+# Binding glue, not part of the core.  Snapping float64 input to the 1/2^S
+# grid belongs to the Python layer (the core is integer only), and a small
+# call's cost is mostly Python-to-C round trips; so one glue function snaps,
+# takes the scratch the core asks for and calls the core, all without the
+# GIL.  It holds no drawing logic.
+GLUE_CDEF = """
+#define RASTPY_E_NOMEM ...
+long rastpy_fill_polygon(const rast_target *target, const double *xy,
+                         uint32_t npoints, const uint32_t *ring_sizes,
+                         uint32_t nrings, const rast_fill_opts *opts,
+                         const void *pixel);
+long rastpy_mask_polygon(void *mask, int32_t height, int32_t width,
+                         const double *xy, uint32_t npoints,
+                         const uint32_t *ring_sizes, uint32_t nrings,
+                         const rast_fill_opts *opts);
+"""
+GLUE_SOURCE = r"""
+#include <math.h>
+#include <stdlib.h>
+#include "rastrum.h"
+
+#define RASTPY_E_NOMEM (-1000)
+
+/* out = floor(xy * 2^s + 1/2), exactly (|xy * 2^s| < 2^52 where it
+ * matters: scaling by 2^s and adding 1/2 are then exact in double).
+ * Returns the index of the first point that is NaN, infinite or outside
+ * +-RAST_COORD_MAX after snapping, or -1 when all are good. */
+static long rastpy_snap(const double *xy, size_t npoints, int s, int32_t *out)
+{
+    const double scale = ldexp(1.0, s), lim = (double)RAST_COORD_MAX;
+    size_t i;
+    for (i = 0; i < 2 * npoints; i++) {
+        double v = floor(xy[i] * scale + 0.5);
+        if (!(v >= -lim && v <= lim)) return (long)(i / 2);
+        out[i] = (int32_t)v;
+    }
+    return -1;
+}
+
+/* Snap, then rast_fill_polygon with scratch from malloc.  ring_sizes NULL
+ * means one ring of all the points.  Returns 0, a negative rast_status
+ * (or RASTPY_E_NOMEM), or k + 1 when point k is bad (see rastpy_snap). */
+long rastpy_fill_polygon(const rast_target *target, const double *xy,
+                         uint32_t npoints, const uint32_t *ring_sizes,
+                         uint32_t nrings, const rast_fill_opts *opts,
+                         const void *pixel)
+{
+    rast_polygon poly;
+    rast_status st;
+    size_t need, head = ((size_t)npoints * sizeof(rast_point) + 15) & ~(size_t)15;
+    unsigned char *mem;
+    long bad;
+    st = rast_scratch_size(opts, npoints, target->clip.x1 - target->clip.x0,
+                           target->clip.y1 - target->clip.y0, &need);
+    if (st != RAST_OK) return st;
+    mem = (unsigned char *)malloc(head + need + 1);
+    if (!mem) return RASTPY_E_NOMEM;
+    bad = rastpy_snap(xy, npoints, opts->subpixel_bits, (int32_t *)mem);
+    if (bad >= 0) {
+        free(mem);
+        return bad + 1;
+    }
+    poly.points = (const rast_point *)mem;
+    poly.ring_sizes = ring_sizes ? ring_sizes : &npoints;
+    poly.nrings = ring_sizes ? nrings : 1;
+    st = rast_fill_polygon(target, &poly, opts, pixel, mem + head, need);
+    free(mem);
+    return st;
+}
+
+/* The same into a zeroed gray8 (height, width) mask, setting inside to 1. */
+long rastpy_mask_polygon(void *mask, int32_t height, int32_t width,
+                         const double *xy, uint32_t npoints,
+                         const uint32_t *ring_sizes, uint32_t nrings,
+                         const rast_fill_opts *opts)
+{
+    static const unsigned char one = 1;
+    rast_target t;
+    rast_status st = rast_target_init(&t, mask, width, height, width, RAST_FORMAT_GRAY8);
+    if (st != RAST_OK) return st;
+    return rastpy_fill_polygon(&t, xy, npoints, ring_sizes, nrings, opts, &one);
+}
+"""
+
 ffibuilder = FFI()
-ffibuilder.cdef(_cdef())
+ffibuilder.cdef(_cdef() + GLUE_CDEF)
 ffibuilder.set_source(
     "rastrum._native",
-    '#include "rastrum.h"\n',
+    GLUE_SOURCE,
     sources=sorted(_path(p) for p in glob.glob(os.path.join(CSRC, "src", "*.c"))),
     include_dirs=[_path(os.path.join(CSRC, "include")), _path(os.path.join(CSRC, "src"))],
     extra_compile_args=["-std=c99", "-O2"] + shlex.split(os.environ.get("RASTRUM_CFLAGS", "")),

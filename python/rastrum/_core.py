@@ -5,8 +5,6 @@ written), snaps float coordinates to the 1/2^S grid, builds the C structs
 and translates status codes into exceptions.
 """
 
-import functools
-
 import numpy as np
 
 from ._native import ffi, lib
@@ -97,18 +95,7 @@ def _subpixel_bits(s):
     return int(s)
 
 
-@functools.lru_cache(maxsize=256)
-def _fill_opts_cached(algorithm, rule, s, sample):
-    opts = ffi.new("rast_fill_opts *")
-    opts.algorithm = algorithm
-    opts.rule = rule
-    opts.subpixel_bits = s
-    opts.sample = sample
-    return opts
-
-
-def fill_opts(algorithm, rule, subpixel_bits, sample_offset):
-    """A checked, read-only ``rast_fill_opts *`` (shared: C only reads it)."""
+def _make_fill_opts(algorithm, rule, subpixel_bits, sample_offset):
     _name(algorithm, "algorithm", POLYGON_ALGORITHMS)
     _name(rule, "fill rule", RULES)
     code, supported = POLYGON_ALGORITHMS[algorithm]
@@ -128,11 +115,42 @@ def fill_opts(algorithm, rule, subpixel_bits, sample_offset):
         sample = None
     if sample is None or isinstance(sample_offset, (bool, np.bool_)):
         raise InputError("sample_offset must be 0.5 (pixel centres) or 0, not %r" % (sample_offset,))
-    return _fill_opts_cached(code, RULES[rule], s, sample)
+    opts = ffi.new("rast_fill_opts *")
+    opts.algorithm = code
+    opts.rule = RULES[rule]
+    opts.subpixel_bits = s
+    opts.sample = sample
+    return opts
+
+
+# Checked options by their arguments (and the arguments' types, so that
+# True or 8.0 are still refused): a hit skips every check.  C only reads
+# the structs, so threads may share them.
+_OPTS_CACHE = {}
+
+
+def fill_opts(algorithm, rule, subpixel_bits, sample_offset):
+    """A checked, read-only ``rast_fill_opts *``."""
+    key = (algorithm, rule, subpixel_bits, type(subpixel_bits), sample_offset, type(sample_offset))
+    try:
+        return _OPTS_CACHE[key]
+    except (KeyError, TypeError):
+        pass
+    opts = _make_fill_opts(algorithm, rule, subpixel_bits, sample_offset)
+    if len(_OPTS_CACHE) < 4096:
+        try:
+            _OPTS_CACHE[key] = opts
+        except TypeError:
+            pass
+    return opts
 
 
 def shape2(shape):
     """(H, W) as two ints >= 0, or InputError."""
+    if type(shape) is tuple and len(shape) == 2:  # the common case, quickly
+        h, w = shape
+        if type(h) is int and type(w) is int and 0 <= h <= lib.RAST_MAX_DIM and 0 <= w <= lib.RAST_MAX_DIM:
+            return shape
     try:
         h, w = shape
     except (TypeError, ValueError):
@@ -162,16 +180,12 @@ def _ring_list(rings):
     return rings
 
 
-def snap(rings, s):
-    """Snap rings to 1/2^s pixel: (points int32 (N, 2), ring sizes uint32).
-
-    v_fixed = floor(v * 2^s + 1/2), exact in float64 (scaling by a power of
-    two and adding 1/2 lose nothing at these magnitudes).
-    """
+def rings_f64(rings):
+    """The rings as checked, C-contiguous float64 (N, 2) arrays."""
     arrays = []
     for k, ring in enumerate(_ring_list(rings)):
         try:
-            a = np.asarray(ring, dtype=np.float64)
+            a = np.ascontiguousarray(ring, dtype=np.float64)
         except (TypeError, ValueError):
             raise InputError("ring %d is not an (N, 2) array of numbers" % k) from None
         if a.ndim != 2 or a.shape[1] != 2:
@@ -179,27 +193,12 @@ def snap(rings, s):
         if a.shape[0] < 3:
             raise InputError("ring %d has %d points; a ring needs at least 3" % (k, a.shape[0]))
         arrays.append(a)
-    if not arrays:
-        return np.zeros((0, 2), np.int32), np.zeros(0, np.uint32)
-    pts = arrays[0] if len(arrays) == 1 else np.concatenate(arrays)
-    scaled = np.floor(pts * float(1 << s) + 0.5)
-    limit = lib.RAST_COORD_MAX
-    bad = ~(np.abs(scaled) <= limit)  # also catches NaN
-    if bad.any():
-        idx = int(np.flatnonzero(bad.any(axis=1))[0])
-        raise InputError(
-            "point %s is not finite or outside +-%.6g pixels, the range at subpixel_bits=%d"
-            % (tuple(pts[idx].tolist()), limit / float(1 << s), s)
-        )
-    if len(pts) > lib.RAST_MAX_POINTS:
-        raise InputError("%d points; at most %d per call" % (len(pts), lib.RAST_MAX_POINTS))
-    sizes = np.fromiter((len(a) for a in arrays), dtype=np.uint32, count=len(arrays))
-    return np.ascontiguousarray(scaled, dtype=np.int32), sizes
+    return arrays
 
 
 def make_target(array, fmt):
-    """A ``rast_target *`` over a checked uint8 array (kept alive by the
-    returned cdata's owner: hold both while C runs).
+    """A ``rast_target *`` over a checked uint8 array.  The target holds a
+    raw pointer: keep `array` alive as long as the target is used.
 
     The caller has checked: uint8, writable, pixels of each row contiguous,
     a positive row stride.  Sub-views (strided rows) are fine: C only ever
@@ -208,24 +207,64 @@ def make_target(array, fmt):
     h, w = array.shape[0], array.shape[1]
     bpp = FORMAT_BYTES_BY_CODE[fmt]
     stride = array.strides[0] if h > 1 else w * bpp
-    pixels = ffi.cast("void *", array.__array_interface__["data"][0]) if array.size else ffi.NULL
+    if not array.size:
+        pixels = ffi.NULL
+    elif array.flags.c_contiguous:
+        pixels = ffi.from_buffer(array, require_writable=True)
+    else:
+        pixels = ffi.cast("void *", array.__array_interface__["data"][0])
     target = ffi.new("rast_target *")
     _check(lib.rast_target_init(target, pixels, w, h, stride, fmt))
     return target
 
 
+def _points(rings):
+    """(float64 (N, 2) points, ring sizes as a cdata or NULL for one ring)."""
+    arrays = rings_f64(rings)
+    if len(arrays) == 1:
+        pts, sizes = arrays[0], ffi.NULL
+    elif arrays:
+        pts, sizes = np.concatenate(arrays), ffi.new("uint32_t[]", [len(a) for a in arrays])
+    else:
+        pts, sizes = np.zeros((0, 2)), ffi.NULL
+    if pts.shape[0] > lib.RAST_MAX_POINTS:
+        raise InputError("%d points; at most %d per call" % (pts.shape[0], lib.RAST_MAX_POINTS))
+    return pts, sizes, len(arrays)
+
+
+def _check_glue(result, pts, s):
+    """Raise for a rastpy_* result (see _build.py)."""
+    if result == 0:
+        return
+    if result > 0:
+        raise InputError(
+            "point %s is not finite or outside +-%.6g pixels, the range at subpixel_bits=%d"
+            % (tuple(pts[result - 1].tolist()), lib.RAST_COORD_MAX / float(1 << s), s)
+        )
+    if result == lib.RASTPY_E_NOMEM:
+        raise MemoryError("rastrum: no memory for the scratch of %d points" % len(pts))
+    _check(result)
+
+
 def fill_polygon(target, rings, pixel, opts, s):
-    """Fill `rings` into `target` with the pixel bytes `pixel`."""
-    pts, sizes = snap(rings, s)
-    poly = ffi.new("rast_polygon *")
-    poly.points = ffi.cast("rast_point *", ffi.from_buffer(pts)) if len(pts) else ffi.NULL
-    poly.ring_sizes = ffi.cast("uint32_t *", ffi.from_buffer(sizes)) if len(sizes) else ffi.NULL
-    poly.nrings = len(sizes)
-    size = ffi.new("size_t *")
-    clip = target.clip
-    _check(lib.rast_scratch_size(opts, len(pts), clip.x1 - clip.x0, clip.y1 - clip.y0, size))
-    scratch = np.empty(size[0], np.uint8)
-    _check(lib.rast_fill_polygon(target, poly, opts, pixel, ffi.from_buffer(scratch), size[0]))
+    """Snap `rings` to 1/2^s pixel and fill them into `target` with the pixel
+    bytes `pixel`.  Checks everything before a pixel is written."""
+    pts, sizes, nrings = _points(rings)
+    if not nrings:
+        return
+    xy = ffi.from_buffer("double[]", pts)
+    _check_glue(lib.rastpy_fill_polygon(target, xy, len(pts), sizes, nrings, opts, pixel), pts, s)
+
+
+def mask_polygon(mask, rings, opts, s):
+    """fill_polygon into a fresh zeroed uint8 (H, W) C-contiguous mask."""
+    pts, sizes, nrings = _points(rings)
+    if not nrings:
+        return
+    h, w = mask.shape
+    buf = ffi.from_buffer(mask) if mask.size else ffi.NULL
+    xy = ffi.from_buffer("double[]", pts)
+    _check_glue(lib.rastpy_mask_polygon(buf, h, w, xy, len(pts), sizes, nrings, opts), pts, s)
 
 
 FORMAT_BYTES_BY_CODE = {code: FORMAT_BYTES[name] for name, code in FORMATS.items()}

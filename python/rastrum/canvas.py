@@ -100,7 +100,7 @@ class Canvas:
         """
         opts = _core.fill_opts(algorithm, rule, subpixel_bits, sample_offset)
         pixel = ffi.from_buffer(_pixel_bytes(color, self._format))
-        _core.fill_polygon(self._target, rings, pixel, opts, int(subpixel_bits))
+        _core.fill_polygon(self._target, rings, pixel, opts, opts.subpixel_bits)
 
     def to_image(self):
         """A Pillow image (a copy): mode L, RGB or RGBA."""

@@ -274,6 +274,20 @@ RAST_API rast_status rast_fill_polygon(const rast_target *target,
                                        const void *pixel, void *scratch,
                                        size_t scratch_bytes);
 
+/* Like rast_fill_polygon, but every pixel of target->clip is written exactly
+ * once: `pixel` where the sample is inside, `background` elsewhere.  The
+ * clip's previous contents do not matter, so an uninitialised buffer becomes
+ * a complete image in one pass (a mask without a separate clear; a band of
+ * rows streamed to a display).  Scratch and errors as rast_fill_polygon;
+ * RAST_E_NULL also for a NULL background.  On error nothing is written. */
+RAST_API rast_status rast_fill_polygon_opaque(const rast_target *target,
+                                              const rast_polygon *polygon,
+                                              const rast_fill_opts *opts,
+                                              const void *pixel,
+                                              const void *background,
+                                              void *scratch,
+                                              size_t scratch_bytes);
+
 /* The same coverage as rast_fill_polygon, handed to `span` instead of
  * painted: for each row from top to bottom, the inside samples of the row
  * within `clip`, as spans with x0 < x1 in increasing x order that neither

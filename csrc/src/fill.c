@@ -98,9 +98,10 @@ static rast_status rast__fill(const rast_polygon *poly, const rast_fill_opts *op
     return al->fill(poly, npoints, &g, opts->rule, clip, &sink, &arena);
 }
 
-rast_status rast_fill_polygon(const rast_target *target, const rast_polygon *polygon,
-                              const rast_fill_opts *opts, const void *pixel,
-                              void *scratch, size_t scratch_bytes)
+static rast_status rast__fill_target(const rast_target *target, const rast_polygon *polygon,
+                                     const rast_fill_opts *opts, const void *pixel,
+                                     const void *background, int opaque,
+                                     void *scratch, size_t scratch_bytes)
 {
     rast__solid solid;
     rast__row_fn fn;
@@ -109,9 +110,27 @@ rast_status rast_fill_polygon(const rast_target *target, const rast_polygon *pol
 
     st = rast__target_check(target, &clip);
     if (st != RAST_OK) return st;
-    st = rast__solid_init(&solid, target, pixel, &fn);
+    if (opaque && !background) return RAST_E_NULL;
+    st = rast__solid_init(&solid, target, &clip, pixel, background, &fn);
     if (st != RAST_OK) return st;
-    return rast__fill(polygon, opts, &clip, fn, &solid, scratch, scratch_bytes);
+    st = rast__fill(polygon, opts, &clip, fn, &solid, scratch, scratch_bytes);
+    if (st == RAST_OK && opaque && clip.x0 < clip.x1) rast__opaque_finish(&solid);
+    return st;
+}
+
+rast_status rast_fill_polygon(const rast_target *target, const rast_polygon *polygon,
+                              const rast_fill_opts *opts, const void *pixel,
+                              void *scratch, size_t scratch_bytes)
+{
+    return rast__fill_target(target, polygon, opts, pixel, NULL, 0, scratch, scratch_bytes);
+}
+
+rast_status rast_fill_polygon_opaque(const rast_target *target, const rast_polygon *polygon,
+                                     const rast_fill_opts *opts, const void *pixel,
+                                     const void *background, void *scratch,
+                                     size_t scratch_bytes)
+{
+    return rast__fill_target(target, polygon, opts, pixel, background, 1, scratch, scratch_bytes);
 }
 
 rast_status rast_fill_polygon_spans(const rast_polygon *polygon,

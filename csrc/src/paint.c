@@ -1,6 +1,8 @@
 /*
- * paint.c - targets and solid painters: WHAT a span writes.  Painters take a
- * row's spans at once (one call per row, not per span).
+ * paint.c - targets and painters: WHAT a span writes.  Painters take a
+ * row's spans at once (one call per row, not per span).  The solid painter
+ * writes one value over the spans; the opaque painter also writes the
+ * background between them, so that every clip pixel is written once.
  *
  * Adding a pixel format means one more row in rast__formats and, when its
  * pixels are not plain byte patterns, one more span function.
@@ -22,52 +24,73 @@ static void rast__replicate(unsigned char *p, size_t bytes, size_t n)
     }
 }
 
-static void rast__solid_row1(void *user, int32_t y, const int32_t *xs, int32_t n)
-{
-    const rast__solid *s = (const rast__solid *)user;
-    unsigned char *row = s->base + (ptrdiff_t)y * s->stride, v = s->value[0];
-    int32_t k;
-    for (k = 0; k < n; k++) memset(row + xs[2 * k], v, (size_t)(xs[2 * k + 1] - xs[2 * k]));
-}
-
-static void rast__solid_row3(void *user, int32_t y, const int32_t *xs, int32_t n)
-{
-    const rast__solid *s = (const rast__solid *)user;
-    unsigned char *row = s->base + (ptrdiff_t)y * s->stride;
-    int32_t k;
-    for (k = 0; k < n; k++) {
-        unsigned char *p = row + (ptrdiff_t)xs[2 * k] * 3;
-        memcpy(p, s->value, 3);
-        rast__replicate(p, 3, (size_t)(xs[2 * k + 1] - xs[2 * k]));
-    }
-}
-
-static void rast__solid_row4(void *user, int32_t y, const int32_t *xs, int32_t n)
-{
-    const rast__solid *s = (const rast__solid *)user;
-    unsigned char *row = s->base + (ptrdiff_t)y * s->stride;
-    int32_t k;
-    for (k = 0; k < n; k++) {
-        unsigned char *p = row + (ptrdiff_t)xs[2 * k] * 4;
-        memcpy(p, s->value, 4);
-        rast__replicate(p, 4, (size_t)(xs[2 * k + 1] - xs[2 * k]));
-    }
-}
-
-static const struct {
-    int32_t bytes;
-    rast__row_fn solid;
-} rast__formats[RAST_FORMAT_COUNT_] = {
-    {1, rast__solid_row1}, /* RAST_FORMAT_GRAY8 */
-    {3, rast__solid_row3}, /* RAST_FORMAT_RGB888 */
-    {4, rast__solid_row4}, /* RAST_FORMAT_RGBA8888 */
+/* Bytes per pixel, by format.  The formats so far are plain byte patterns,
+ * which these painters write; a packed format (rgb565, mono1) adds its own. */
+static const int32_t rast__format_bytes[RAST_FORMAT_COUNT_] = {
+    1, /* RAST_FORMAT_GRAY8 */
+    3, /* RAST_FORMAT_RGB888 */
+    4, /* RAST_FORMAT_RGBA8888 */
 };
+
+/* Write n pixels of `bytes` bytes each, all equal to `value`, at p. */
+static void rast__put(unsigned char *p, const unsigned char *value, int32_t bytes, int32_t n)
+{
+    if (n <= 0) return;
+    if (bytes == 1) {
+        memset(p, value[0], (size_t)n);
+    } else {
+        memcpy(p, value, (size_t)bytes);
+        rast__replicate(p, (size_t)bytes, (size_t)n);
+    }
+}
+
+static void rast__solid_row(void *user, int32_t y, const int32_t *xs, int32_t n)
+{
+    const rast__solid *s = (const rast__solid *)user;
+    unsigned char *row = s->base + (ptrdiff_t)y * s->stride;
+    int32_t k, bpp = s->bytes;
+    if (bpp == 1) { /* masks: the common case, kept to a bare memset */
+        for (k = 0; k < n; k++) memset(row + xs[2 * k], s->value[0], (size_t)(xs[2 * k + 1] - xs[2 * k]));
+        return;
+    }
+    for (k = 0; k < n; k++)
+        rast__put(row + (ptrdiff_t)xs[2 * k] * bpp, s->value, bpp, xs[2 * k + 1] - xs[2 * k]);
+}
+
+/* ---- opaque: every clip pixel written once, value or background --------- */
+
+/* Whole background rows after the last row written, up to (not including)
+ * row `to`.  A row with spans is cleared whole too and its spans written
+ * over it: the row is in L1 by then, so the second write is nearly free,
+ * and it takes one memset per row instead of one per gap. */
+static void rast__opaque_rows(rast__solid *s, int32_t to)
+{
+    int32_t bpp = s->bytes;
+    for (s->row++; s->row < to; s->row++)
+        rast__put(s->base + (ptrdiff_t)s->row * s->stride + (ptrdiff_t)s->clip.x0 * bpp,
+                  s->background, bpp, s->clip.x1 - s->clip.x0);
+}
+
+static void rast__opaque_row(void *user, int32_t y, const int32_t *xs, int32_t n)
+{
+    rast__solid *s = (rast__solid *)user;
+    if (y != s->row) { /* a new row (a long row may come in parts) */
+        rast__opaque_rows(s, y + 1);
+        s->row = y;
+    }
+    rast__solid_row(user, y, xs, n);
+}
+
+void rast__opaque_finish(rast__solid *s)
+{
+    rast__opaque_rows(s, s->clip.y1);
+}
 
 rast_status rast_format_bytes(rast_format format, int32_t *bytes)
 {
     if (!bytes) return RAST_E_NULL;
     if ((unsigned)format >= RAST_FORMAT_COUNT_) return RAST_E_FORMAT;
-    *bytes = rast__formats[format].bytes;
+    *bytes = rast__format_bytes[format];
     return RAST_OK;
 }
 
@@ -121,16 +144,24 @@ rast_status rast__target_check(const rast_target *t, rast_rect *clip)
     return RAST_OK;
 }
 
-rast_status rast__solid_init(rast__solid *s, const rast_target *t,
-                             const void *pixel, rast__row_fn *fn)
+rast_status rast__solid_init(rast__solid *s, const rast_target *t, const rast_rect *clip,
+                             const void *pixel, const void *background, rast__row_fn *fn)
 {
-    int32_t bpp = rast__formats[t->format].bytes;
+    int32_t bpp = rast__format_bytes[t->format];
     if (!pixel) return RAST_E_NULL;
+    memset(s, 0, sizeof *s);
     s->base = (unsigned char *)t->pixels;
     s->stride = t->stride;
-    memset(s->value, 0, sizeof s->value);
+    s->bytes = bpp;
+    s->clip = *clip;
     memcpy(s->value, pixel, (size_t)bpp);
-    *fn = rast__formats[t->format].solid;
+    if (background) {
+        memcpy(s->background, background, (size_t)bpp);
+        s->row = clip->y0 - 1; /* the last row written */
+        *fn = rast__opaque_row;
+    } else {
+        *fn = rast__solid_row;
+    }
     return RAST_OK;
 }
 

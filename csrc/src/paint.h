@@ -9,14 +9,20 @@
 typedef struct rast__solid {
     unsigned char *base;
     ptrdiff_t stride;
-    unsigned char value[4];
+    int32_t bytes;                /* per pixel */
+    unsigned char value[4];       /* inside */
+    unsigned char background[4];  /* outside (opaque painter only) */
+    rast_rect clip;
+    int32_t row;                  /* opaque: the last row written */
 } rast__solid;
 
 /* Check a target (as rast_target_init would) and cut its clip to it. */
 rast_status rast__target_check(const rast_target *t, rast_rect *clip);
 
 /* A painter writing `pixel` (target format bytes) over spans of a checked
- * target: fills *s and the row function to pass it to. */
+ * target and clip: fills *s and the row function to pass it to.  With a
+ * non-NULL `background` it is the opaque painter: every clip pixel is
+ * written, and rast__opaque_finish must follow a successful fill. */
 /* The painter for rast_fill_polygon_spans: hands each span of a row to
  * the user's rast_span_fn. */
 typedef struct rast__user_spans {
@@ -25,7 +31,8 @@ typedef struct rast__user_spans {
 } rast__user_spans;
 void rast__user_row(void *user, int32_t y, const int32_t *xs, int32_t n);
 
-rast_status rast__solid_init(rast__solid *s, const rast_target *t,
-                             const void *pixel, rast__row_fn *fn);
+rast_status rast__solid_init(rast__solid *s, const rast_target *t, const rast_rect *clip,
+                             const void *pixel, const void *background, rast__row_fn *fn);
+void rast__opaque_finish(rast__solid *s);
 
 #endif /* RAST_PAINT_H */

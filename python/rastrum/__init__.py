@@ -7,8 +7,6 @@ Coordinates are (x, y) as in Pillow; arrays are (row, column) = (y, x) as in
 numpy.
 """
 
-import numpy as np
-
 from . import _core
 from ._core import InputError, RastrumError
 from ._native import lib
@@ -72,6 +70,4 @@ def polygon_mask(rings, shape, *, rule="evenodd", algorithm="aet", subpixel_bits
            [0, 0, 0, 0, 0, 0, 0]])
     """
     opts = _core.fill_opts(algorithm, rule, subpixel_bits, sample_offset)
-    out = np.zeros(_core.shape2(shape), np.uint8)
-    _core.mask_polygon(out, rings, opts, opts.subpixel_bits)
-    return out.view(bool)
+    return _core.mask_polygon(_core.shape2(shape), rings, opts, opts.subpixel_bits).view(bool)

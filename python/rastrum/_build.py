@@ -50,7 +50,7 @@ GLUE_CDEF = """
 long rastpy_fill_polygon(const rast_target *target, const double *xy,
                          uint32_t npoints, const uint32_t *ring_sizes,
                          uint32_t nrings, const rast_fill_opts *opts,
-                         const void *pixel);
+                         const void *pixel, const void *background);
 long rastpy_mask_polygon(void *mask, int32_t height, int32_t width,
                          const double *xy, uint32_t npoints,
                          const uint32_t *ring_sizes, uint32_t nrings,
@@ -79,13 +79,14 @@ static long rastpy_snap(const double *xy, size_t npoints, int s, int32_t *out)
     return -1;
 }
 
-/* Snap, then rast_fill_polygon with scratch from malloc.  ring_sizes NULL
- * means one ring of all the points.  Returns 0, a negative rast_status
- * (or RASTPY_E_NOMEM), or k + 1 when point k is bad (see rastpy_snap). */
+/* Snap, then rast_fill_polygon (or rast_fill_polygon_opaque when
+ * background is not NULL) with scratch from malloc.  ring_sizes NULL means
+ * one ring of all the points.  Returns 0, a negative rast_status (or
+ * RASTPY_E_NOMEM), or k + 1 when point k is bad (see rastpy_snap). */
 long rastpy_fill_polygon(const rast_target *target, const double *xy,
                          uint32_t npoints, const uint32_t *ring_sizes,
                          uint32_t nrings, const rast_fill_opts *opts,
-                         const void *pixel)
+                         const void *pixel, const void *background)
 {
     rast_polygon poly;
     rast_status st;
@@ -105,22 +106,24 @@ long rastpy_fill_polygon(const rast_target *target, const double *xy,
     poly.points = (const rast_point *)mem;
     poly.ring_sizes = ring_sizes ? ring_sizes : &npoints;
     poly.nrings = ring_sizes ? nrings : 1;
-    st = rast_fill_polygon(target, &poly, opts, pixel, mem + head, need);
+    st = background ? rast_fill_polygon_opaque(target, &poly, opts, pixel, background, mem + head, need)
+                    : rast_fill_polygon(target, &poly, opts, pixel, mem + head, need);
     free(mem);
     return st;
 }
 
-/* The same into a zeroed gray8 (height, width) mask, setting inside to 1. */
+/* A complete gray8 (height, width) mask, 1 inside and 0 outside, written
+ * in one pass over uninitialised memory. */
 long rastpy_mask_polygon(void *mask, int32_t height, int32_t width,
                          const double *xy, uint32_t npoints,
                          const uint32_t *ring_sizes, uint32_t nrings,
                          const rast_fill_opts *opts)
 {
-    static const unsigned char one = 1;
+    static const unsigned char one = 1, zero = 0;
     rast_target t;
     rast_status st = rast_target_init(&t, mask, width, height, width, RAST_FORMAT_GRAY8);
     if (st != RAST_OK) return st;
-    return rastpy_fill_polygon(&t, xy, npoints, ring_sizes, nrings, opts, &one);
+    return rastpy_fill_polygon(&t, xy, npoints, ring_sizes, nrings, opts, &one, &zero);
 }
 """
 

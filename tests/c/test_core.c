@@ -63,7 +63,12 @@ static int32_t on_sample(int32_t v, int s, int center)
     return q * one + (center ? one / 2 : 0);
 }
 
-/* Fill into a guarded gray8 buffer and compare every pixel with ref_inside. */
+static int guarded_equals_ref(const unsigned char *buf, int stride, const rast_point *pts,
+                              const uint32_t *sizes, uint32_t nrings, int s, int center,
+                              int rule, int w, int h);
+
+/* Fill into a guarded gray8 buffer and compare every pixel with ref_inside,
+ * with the solid painter over zeros and the opaque one over garbage. */
 static int fill_and_compare(const rast_point *pts, const uint32_t *sizes, uint32_t nrings,
                             int s, int center, int rule, int w, int h)
 {
@@ -85,6 +90,39 @@ static int fill_and_compare(const rast_point *pts, const uint32_t *sizes, uint32
     o.subpixel_bits = s;
     o.sample = center ? RAST_SAMPLE_CENTER : RAST_SAMPLE_CORNER;
     if (rast_fill_polygon(&t, &p, &o, &one, scratch, sizeof scratch) != RAST_OK) return 0;
+    ok &= guarded_equals_ref(buf, stride, pts, sizes, nrings, s, center, rule, w, h);
+
+    /* Opaque: the same pixels over garbage, with background 0; and with the
+     * clip narrowed, nothing outside it touched. */
+    {
+        unsigned char zero = 0;
+        for (j = 0; j < h; j++) memset(buf + (j + PAD) * stride + PAD, 0x77, (size_t)w);
+        if (rast_fill_polygon_opaque(&t, &p, &o, &one, &zero, scratch, sizeof scratch) != RAST_OK) return 0;
+        ok &= guarded_equals_ref(buf, stride, pts, sizes, nrings, s, center, rule, w, h);
+        t.clip.x0 = w / 3;
+        t.clip.y0 = h / 4;
+        t.clip.x1 = w - w / 5;
+        t.clip.y1 = h - h / 3;
+        for (j = 0; j < h; j++) memset(buf + (j + PAD) * stride + PAD, 0x77, (size_t)w);
+        if (rast_fill_polygon_opaque(&t, &p, &o, &one, &zero, scratch, sizeof scratch) != RAST_OK) return 0;
+        for (j = 0; j < h; j++)
+            for (i = 0; i < w; i++) {
+                unsigned char got = buf[(j + PAD) * stride + i + PAD];
+                int in_clip = i >= t.clip.x0 && i < t.clip.x1 && j >= t.clip.y0 && j < t.clip.y1;
+                if (!in_clip && got != 0x77) ok = 0;
+                if (in_clip && got != ref_inside(pts, sizes, nrings, s, center, rule, i, j)) ok = 0;
+            }
+    }
+    return ok;
+}
+
+/* Every pixel of the w x h target inside the guarded buffer equals the
+ * reference, and every guard byte is intact. */
+static int guarded_equals_ref(const unsigned char *buf, int stride, const rast_point *pts,
+                              const uint32_t *sizes, uint32_t nrings, int s, int center,
+                              int rule, int w, int h)
+{
+    int i, j, ok = 1;
     for (j = -PAD; j < h + PAD; j++)
         for (i = -PAD; i < w + PAD; i++) {
             unsigned char got = buf[(j + PAD) * stride + i + PAD];
@@ -295,6 +333,45 @@ static void test_limits(void)
     CHECK(bad == 0);
 }
 
+/* A comb of 100 teeth: rows of 100 spans reach the painter in parts. */
+static void test_comb(void)
+{
+    static rast_point comb[404];
+    uint32_t n = 0, k;
+    int bad = 0, rule;
+    for (k = 0; k < 100; k++) {
+        comb[n].x = (int32_t)(4 * k) << 4; comb[n++].y = 2 << 4;
+        comb[n].x = (int32_t)(4 * k + 2) << 4; comb[n++].y = 2 << 4;
+        comb[n].x = (int32_t)(4 * k + 2) << 4; comb[n++].y = 30 << 4;
+        comb[n].x = (int32_t)(4 * k + 4) << 4; comb[n++].y = 30 << 4;
+    }
+    /* close along the bottom, beyond row 40 */
+    comb[n - 1].y = 50 << 4;
+    comb[n].x = 0; comb[n++].y = 50 << 4;
+    for (rule = 0; rule < 2; rule++) {
+        /* view columns 0..63 of the comb, then a window further right */
+        bad += !fill_and_compare(comb, &n, 1, 4, 1, rule, 64, 64);
+    }
+    {
+        static unsigned char img[40 * 400];
+        unsigned char one = 1, zero = 0;
+        rast_target t;
+        rast_polygon p = {comb, &n, 1};
+        rast_fill_opts o;
+        int i, j;
+        memset(&o, 0, sizeof o);
+        o.subpixel_bits = 4;
+        o.sample = RAST_SAMPLE_CENTER;
+        memset(img, 0x77, sizeof img);
+        CHECK(rast_target_init(&t, img, 400, 40, 400, RAST_FORMAT_GRAY8) == RAST_OK);
+        CHECK(rast_fill_polygon_opaque(&t, &p, &o, &one, &zero, scratch, sizeof scratch) == RAST_OK);
+        for (j = 0; j < 40; j++)
+            for (i = 0; i < 400; i++)
+                bad += img[j * 400 + i] != ref_inside(comb, &n, 1, 4, 1, 0, i, j);
+    }
+    CHECK(bad == 0);
+}
+
 int main(void)
 {
     test_figure_3_19();
@@ -302,5 +379,6 @@ int main(void)
     test_errors();
     test_random();
     test_limits();
+    test_comb();
     return check_report("test_core");
 }

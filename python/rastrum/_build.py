@@ -63,16 +63,19 @@ GLUE_SOURCE = r"""
 
 #define RASTPY_E_NOMEM (-1000)
 
-/* out = floor(xy * 2^s + 1/2), exactly (|xy * 2^s| < 2^52 where it
- * matters: scaling by 2^s and adding 1/2 are then exact in double).
- * Returns the index of the first point that is NaN, infinite or outside
- * +-RAST_COORD_MAX after snapping, or -1 when all are good. */
+/* out = floor(xy * 2^s + 1/2), exactly.  t = xy * 2^s is exact (a power
+ * of two), and so is its fraction t - floor(t); but t + 1/2 is NOT: for
+ * t = 1/2 - 2^-54 it rounds up to 1.  So round by comparing the fraction
+ * with 1/2 instead of adding it.  Returns the index of the first point that
+ * is NaN, infinite or outside +-RAST_COORD_MAX after snapping, or -1 when
+ * all are good. */
 static long rastpy_snap(const double *xy, size_t npoints, int s, int32_t *out)
 {
     const double scale = ldexp(1.0, s), lim = (double)RAST_COORD_MAX;
     size_t i;
     for (i = 0; i < 2 * npoints; i++) {
-        double v = floor(xy[i] * scale + 0.5);
+        double t = xy[i] * scale, v = floor(t);
+        if (t - v >= 0.5) v += 1.0;
         if (!(v >= -lim && v <= lim)) return (long)(i / 2);
         out[i] = (int32_t)v;
     }

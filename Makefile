@@ -37,7 +37,7 @@ SONAME  := librastrum.so.$(VERSION_MAJOR)
 C_TESTS := $(patsubst tests/c/%.c,build/tests/%,$(wildcard tests/c/test_*.c))
 SAN     := -fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer -g
 
-.PHONY: all lib test test-c test-py demo asan asan-c asan-py strict install uninstall example clean
+.PHONY: all lib test test-c test-install test-py demo asan asan-c asan-py strict install uninstall example clean
 
 all: lib
 lib: build/librastrum.a build/librastrum.so
@@ -64,10 +64,25 @@ build/tests/%: tests/c/%.c build/librastrum.a tests/c/check.h
 	@$(CC) $(ALL_CFLAGS) -Wno-conversion -Itests/c $< build/librastrum.a -o $@
 
 # ---- tests -----------------------------------------------------------------
-test: test-c test-py
+test: test-c test-install test-py
 
 test-c: $(C_TESTS)
 	@for t in $(C_TESTS); do echo "== $$t"; ./$$t || exit 1; done
+
+# Install into a stage, build the example through pkg-config, run it; and
+# check that DESTDIR is honoured.
+test-install:
+	@rm -rf build/stage build/destdir
+	@$(MAKE) --no-print-directory install PREFIX=$(CURDIR)/build/stage >/dev/null
+	@PKG_CONFIG_PATH=$(CURDIR)/build/stage/lib/pkgconfig $(CC) -std=c99 -pedantic -Wall -Werror \
+	  examples/draw_ppm.c $$(PKG_CONFIG_PATH=$(CURDIR)/build/stage/lib/pkgconfig pkg-config --cflags --libs rastrum) \
+	  -Wl,-rpath,$(CURDIR)/build/stage/lib -o build/draw_ppm
+	@./build/draw_ppm build/draw_ppm.ppm
+	@$(MAKE) --no-print-directory install DESTDIR=$(CURDIR)/build/destdir PREFIX=/usr >/dev/null
+	@test -f build/destdir/usr/include/rastrum.h && test -f build/destdir/usr/lib/pkgconfig/rastrum.pc \
+	  && test -f build/destdir/usr/lib/librastrum.a && echo "test-install: 2 passed, 0 failed"
+	@$(MAKE) --no-print-directory uninstall DESTDIR=$(CURDIR)/build/destdir PREFIX=/usr >/dev/null
+	@test ! -e build/destdir/usr/include/rastrum.h || (echo "uninstall left files"; exit 1)
 
 test-py:
 	$(PYTHON) -m pip install --quiet '.[test]'
@@ -94,7 +109,7 @@ asan-c:
 asan-py:
 	rm -rf build/asan-py
 	RASTRUM_CFLAGS="$(SAN) -O1" RASTRUM_LDFLAGS="$(SAN)" \
-	  $(PYTHON) setup.py -q build --build-base build/asan-py/tmp --build-lib build/asan-py/lib
+	  $(PYTHON) -m pip install --quiet --no-deps --no-build-isolation --target build/asan-py/lib .
 	LD_PRELOAD="$$($(CC) -print-file-name=libasan.so) $$($(CC) -print-file-name=libubsan.so)" \
 	  ASAN_OPTIONS=detect_leaks=0 UBSAN_OPTIONS=halt_on_error=1:print_stacktrace=1 \
 	  RASTRUM_HYPOTHESIS_PROFILE=quick PYTHONPATH=build/asan-py/lib \

@@ -5,6 +5,8 @@ written), snaps float coordinates to the 1/2^S grid, builds the C structs
 and translates status codes into exceptions.
 """
 
+import numbers
+
 import numpy as np
 
 from ._native import ffi, lib
@@ -109,11 +111,10 @@ def _make_fill_opts(algorithm, rule, subpixel_bits, sample_offset):
             )
         )
     s = _subpixel_bits(subpixel_bits)
-    try:
+    sample = None
+    if isinstance(sample_offset, numbers.Real) and not isinstance(sample_offset, (bool, np.bool_)):
         sample = SAMPLE_OFFSETS.get(float(sample_offset))
-    except (TypeError, ValueError):
-        sample = None
-    if sample is None or isinstance(sample_offset, (bool, np.bool_)):
+    if sample is None:
         raise InputError("sample_offset must be 0.5 (pixel centres) or 0, not %r" % (sample_offset,))
     opts = ffi.new("rast_fill_opts *")
     opts.algorithm = code
@@ -261,15 +262,31 @@ def mask_polygon(shape, rings, opts, s):
 
     The array starts uninitialised: C writes every byte exactly once, which
     saves the clearing pass np.zeros would make."""
-    pts, sizes, nrings = _points(rings)
-    if not nrings:
-        return np.zeros(shape, np.uint8)
-    mask = np.empty(shape, np.uint8)
     h, w = shape
-    buf = ffi.from_buffer(mask) if mask.size else ffi.NULL
-    xy = ffi.from_buffer("double[]", pts)
-    _check_glue(lib.rastpy_mask_polygon(buf, h, w, xy, len(pts), sizes, nrings, opts), pts, s)
+    if (
+        type(rings) is np.ndarray  # one float64 ring: straight to C
+        and rings.dtype == _F64
+        and rings.ndim == 2
+        and rings.shape[1] == 2
+        and rings.shape[0] >= 3
+        and rings.flags.c_contiguous
+    ):
+        pts, sizes, nrings = rings, ffi.NULL, 1
+    else:
+        pts, sizes, nrings = _points(rings)
+        if not nrings:
+            return np.zeros(shape, np.uint8)
+    mask = np.empty(shape, np.uint8)
+    result = lib.rastpy_mask_polygon(
+        ffi.from_buffer(mask) if h and w else ffi.NULL, h, w,
+        ffi.from_buffer("double[]", pts), len(pts), sizes, nrings, opts,
+    )
+    if result:
+        _check_glue(result, pts, s)
     return mask
+
+
+_F64 = np.dtype(np.float64)
 
 
 FORMAT_BYTES_BY_CODE = {code: FORMAT_BYTES[name] for name, code in FORMATS.items()}

@@ -70,4 +70,4 @@ def polygon_mask(rings, shape, *, rule="evenodd", algorithm="aet", subpixel_bits
            [0, 0, 0, 0, 0, 0, 0]])
     """
     opts = _core.fill_opts(algorithm, rule, subpixel_bits, sample_offset)
-    return _core.mask_polygon(_core.shape2(shape), rings, opts, opts.subpixel_bits).view(bool)
+    return _core.mask_polygon(_core.shape2(shape), rings, opts, opts.subpixel_bits)

@@ -258,7 +258,7 @@ def fill_polygon(target, rings, pixel, opts, s):
 
 
 def mask_polygon(shape, rings, opts, s):
-    """A new uint8 (H, W) mask of the polygon, 1 inside and 0 outside.
+    """A new bool (H, W) mask of the polygon (bytes 1 inside, 0 outside).
 
     The array starts uninitialised: C writes every byte exactly once, which
     saves the clearing pass np.zeros would make."""
@@ -275,8 +275,8 @@ def mask_polygon(shape, rings, opts, s):
     else:
         pts, sizes, nrings = _points(rings)
         if not nrings:
-            return np.zeros(shape, np.uint8)
-    mask = np.empty(shape, np.uint8)
+            return np.zeros(shape, bool)
+    mask = np.empty(shape, bool)
     result = lib.rastpy_mask_polygon(
         ffi.from_buffer(mask) if h and w else ffi.NULL, h, w,
         ffi.from_buffer("double[]", pts), len(pts), sizes, nrings, opts,

@@ -6,6 +6,7 @@ from . import _core
 from ._core import InputError
 from ._native import ffi
 
+_NO_COLOR = object()  # equal to no colour: "nothing remembered yet"
 _CHANNELS_TO_FORMAT = {1: "gray8", 3: "rgb888", 4: "rgba8888"}
 _PIL_MODES = {"gray8": "L", "rgb888": "RGB", "rgba8888": "RGBA"}
 
@@ -69,7 +70,19 @@ class Canvas:
         canvas._set(array, fmt)
         return canvas
 
+    def _pixel(self, color):
+        """The colour's pixel bytes as a cdata, remembered for the last colour."""
+        try:
+            if color == self._last_color[0] and type(color) is type(self._last_color[0]):
+                return self._last_color[1]
+        except (TypeError, ValueError):  # e.g. a numpy array as the colour
+            pass
+        pixel = ffi.from_buffer(_pixel_bytes(color, self._format))
+        self._last_color = (color if isinstance(color, (int, tuple)) else _NO_COLOR, pixel)
+        return pixel
+
     def _set(self, array, fmt):
+        self._last_color = (_NO_COLOR, None)
         self._array = array
         self._format = fmt
         self._code = _core.FORMATS[fmt]
@@ -99,7 +112,7 @@ class Canvas:
         an argument is bad (an InputError says which).
         """
         opts = _core.fill_opts(algorithm, rule, subpixel_bits, sample_offset)
-        pixel = ffi.from_buffer(_pixel_bytes(color, self._format))
+        pixel = self._pixel(color)
         _core.fill_polygon(self._target, rings, pixel, opts, opts.subpixel_bits)
 
     def to_image(self):

@@ -1,0 +1,243 @@
+"""rastrum demo: render the benchmark scenes to PNG, then run the benchmark.
+
+    python bench/demo.py [--out DIR] [--no-bench] [--quick]
+
+Writes into DIR (default ./out):
+
+- fig3_19.png       the polygon of Figure 3-19 on its 14 x 14 grid, one
+                    enlarged square per pixel, under both sample offsets:
+                    o = 0 (integer sample points, as the textbook and OpenCV)
+                    and o = 1/2 (pixel centres, the default). Filled squares
+                    are the pixels rastrum sets; dots are the sample points;
+                    the red line is the exact polygon.
+- holes.png         the disc with three holes, even-odd | non-zero; top row
+                    with the holes running opposite to the disc (both rules
+                    agree), bottom row with the holes running the same way
+                    (non-zero fills them: orientation matters to non-zero).
+- star200.png       the 200-spike star.
+- star200_67.png    the self-intersecting {200/67} star, even-odd | non-zero.
+- canvas.png        an rgb888 Canvas composition.
+
+then prints the benchmark table (bench.main; --no-bench skips it).
+"""
+
+from __future__ import annotations
+
+import argparse
+import sys
+from pathlib import Path
+
+import numpy as np
+
+HERE = Path(__file__).resolve().parent
+if str(HERE) not in sys.path:
+    sys.path.insert(0, str(HERE))
+
+import bench  # noqa: E402
+import scenes  # noqa: E402
+
+rastrum = bench.import_rastrum()
+
+
+def _font(size):
+    from PIL import ImageFont
+    try:
+        return ImageFont.load_default(size=size)
+    except TypeError:          # Pillow < 10.1: fixed-size bitmap font
+        return ImageFont.load_default()
+
+
+def mask_image(mask, fg=0, bg=255):
+    """A mode-L Pillow image of a bool mask (inside = fg)."""
+    from PIL import Image
+    return Image.fromarray(np.where(mask, fg, bg).astype(np.uint8), "L")
+
+
+def labelled_row(images, labels, gap=16, pad_top=48, size=28):
+    """Images side by side on white, each with a caption above it."""
+    from PIL import Image, ImageDraw
+    w = sum(im.width for im in images) + gap * (len(images) + 1)
+    h = max(im.height for im in images) + pad_top + gap
+    out = Image.new("RGB", (w, h), "white")
+    d = ImageDraw.Draw(out)
+    x = gap
+    font = _font(size)
+    for im, lab in zip(images, labels):
+        out.paste(im.convert("RGB"), (x, pad_top))
+        d.text((x, 10), lab, fill="black", font=font)
+        x += im.width + gap
+    return out
+
+
+def stack(rows, gap=0):
+    from PIL import Image
+    w = max(r.width for r in rows)
+    out = Image.new("RGB", (w, sum(r.height for r in rows)
+                            + gap * (len(rows) - 1)), "white")
+    y = 0
+    for r in rows:
+        out.paste(r, (0, y))
+        y += r.height + gap
+    return out
+
+
+# ---------------------------------------------------------------------------
+# Figure 3-19
+# ---------------------------------------------------------------------------
+
+def fig3_19_panel(offset, scale=40, margin=36):
+    """The 14x14 mask at sample offset `offset`, upscaled nearest-neighbour,
+    with the pixel grid, the sample points and the exact polygon."""
+    from PIL import Image, ImageDraw
+    rings, shape = scenes.fig3_19()
+    mask = rastrum.polygon_mask(rings, shape, sample_offset=offset)
+    h, w = shape
+    big = mask_image(mask, fg=150, bg=255).resize((w * scale, h * scale),
+                                                  Image.NEAREST)
+    img = Image.new("RGB", (w * scale + 2 * margin, h * scale + 2 * margin),
+                    "white")
+    img.paste(Image.merge("RGB", (big.point(lambda v: 120 if v < 255
+                                            else 255), big,
+                                  big.point(lambda v: 230 if v < 255
+                                            else 255))),
+              (margin, margin))
+    d = ImageDraw.Draw(img)
+    small = _font(14)
+
+    def P(x, y):
+        return (margin + x * scale, margin + y * scale)
+    for k in range(w + 1):           # pixel boundaries
+        d.line([P(k, 0), P(k, h)], fill=(200, 200, 200))
+        d.line([P(0, k), P(w, k)], fill=(200, 200, 200))
+    for k in range(w):               # integer coordinates on the axes
+        d.text((margin + k * scale + 2, margin - 18), str(k), fill="gray",
+               font=small)
+        d.text((4, margin + k * scale + 2), str(k), fill="gray", font=small)
+    r = 4                            # sample points
+    for j in range(h):
+        for i in range(w):
+            cx, cy = P(i + offset, j + offset)
+            box = [cx - r, cy - r, cx + r, cy + r]
+            if mask[j, i]:
+                d.ellipse(box, fill=(20, 40, 140))
+            else:
+                d.ellipse(box, outline=(120, 120, 120))
+    pts = [P(x, y) for x, y in rings[0].tolist()]
+    d.line(pts + [pts[0]], fill=(220, 0, 0), width=3)
+    for k, (x, y) in enumerate(rings[0].tolist()):
+        px, py = P(x, y)
+        d.text((px + 6, py - 20), f"P{k}", fill=(220, 0, 0), font=small)
+    return img, int(mask.sum())
+
+
+def render_fig3_19(out: Path):
+    panels, labels = [], []
+    for o, name in ((0.0, "o = 0 (textbook, OpenCV)"),
+                    (0.5, "o = 1/2 (pixel centres, default)")):
+        img, n = fig3_19_panel(o)
+        panels.append(img)
+        labels.append(f"Figure 3-19, {name}: {n} pixels")
+    path = out / "fig3_19.png"
+    labelled_row(panels, labels, size=20).save(path)
+    return [path]
+
+
+# ---------------------------------------------------------------------------
+# holes, stars
+# ---------------------------------------------------------------------------
+
+def render_holes(out: Path):
+    rings, shape = scenes.ring_with_holes(1024)
+    same = [rings[0]] + [r[::-1].copy() for r in rings[1:]]
+    rows = []
+    for rr, what in ((rings, "holes opposite"), (same, "holes same way")):
+        ims, labs = [], []
+        for rule in ("evenodd", "nonzero"):
+            ims.append(mask_image(rastrum.polygon_mask(rr, shape,
+                                                       rule=rule)))
+            labs.append(f"{rule}, {what}")
+        rows.append(labelled_row(ims, labs))
+    path = out / "holes.png"
+    stack(rows).save(path)
+    return [path]
+
+
+def render_stars(out: Path):
+    paths = []
+    rings, shape = scenes.star(200, 2048)
+    p = out / "star200.png"
+    mask_image(rastrum.polygon_mask(rings, shape)).save(p)
+    paths.append(p)
+    rings, shape = scenes.star_polygon(200, 67, 2048)
+    ims = [mask_image(rastrum.polygon_mask(rings, shape, rule=r))
+           for r in ("evenodd", "nonzero")]
+    p = out / "star200_67.png"
+    labelled_row(ims, ["{200/67} evenodd", "{200/67} nonzero"],
+                 size=40, pad_top=64).save(p)
+    paths.append(p)
+    return paths
+
+
+# ---------------------------------------------------------------------------
+# Canvas composition
+# ---------------------------------------------------------------------------
+
+def render_canvas(out: Path):
+    W, H = 1400, 760
+    c = rastrum.Canvas(W, H, format="rgb888", background=(18, 24, 48))
+    rng = np.random.default_rng(7)
+    # scattered random polygons in the background, non-zero rule
+    for k in range(24):
+        cx, cy = rng.uniform(0, W), rng.uniform(0, H)
+        pts = np.stack([cx + rng.normal(0, 60, 12),
+                        cy + rng.normal(0, 60, 12)], axis=1)
+        col = tuple(int(v) for v in rng.integers(40, 110, 3))
+        c.fill_polygon(pts, col, rule="nonzero")
+    # the disc with holes, on the left
+    rings, _ = scenes.ring_with_holes(1024)
+    c.fill_polygon([r * 0.65 + (20.0, 50.0) for r in rings],
+                   (240, 140, 30), rule="nonzero")
+    # the {200/67} star polygon, even-odd bands, on the right
+    rings, _ = scenes.star_polygon(200, 67, 2048)
+    c.fill_polygon([r * 0.32 + (720.0, 50.0) for r in rings],
+                   (250, 220, 60), rule="evenodd")
+    # the 200-spike star, small, in its solid centre
+    rings, _ = scenes.star(200, 2048)
+    k = 0.08
+    c.fill_polygon([r * k + (720.0 + 1024 * (0.32 - k),
+                             50.0 + 1024 * (0.32 - k)) for r in rings],
+                   (90, 200, 255))
+    # Figure 3-19 x10, at sample offset 0 like the book, between them
+    rings, _ = scenes.fig3_19(10.0)
+    c.fill_polygon([r + (600.0, 590.0) for r in rings], (120, 220, 120),
+                   sample_offset=0)
+    path = out / "canvas.png"
+    c.save(path)
+    return [path]
+
+
+def main(argv=None):
+    ap = argparse.ArgumentParser(description="render the rastrum demo "
+                                 "scenes to PNG, then run the benchmark")
+    ap.add_argument("--out", default="out", help="output directory "
+                    "(default ./out)")
+    ap.add_argument("--no-bench", action="store_true",
+                    help="only write the pictures")
+    ap.add_argument("--quick", action="store_true",
+                    help="pass --quick to the benchmark")
+    args, bench_args = ap.parse_known_args(argv)
+    out = Path(args.out)
+    out.mkdir(parents=True, exist_ok=True)
+    written = []
+    for f in (render_fig3_19, render_holes, render_stars, render_canvas):
+        written += f(out)
+    for p in written:
+        print(f"wrote {p}")
+    sys.stdout.flush()
+    if not args.no_bench:
+        bench.main((["--quick"] if args.quick else []) + bench_args)
+    return written
+
+
+if __name__ == "__main__":
+    main()

@@ -55,6 +55,7 @@ long rastpy_mask_polygon(void *mask, int32_t height, int32_t width,
                          const double *xy, uint32_t npoints,
                          const uint32_t *ring_sizes, uint32_t nrings,
                          const rast_fill_opts *opts);
+int rastpy_gil_held(void);
 """
 GLUE_SOURCE = r"""
 #include <math.h>
@@ -127,6 +128,13 @@ long rastpy_mask_polygon(void *mask, int32_t height, int32_t width,
     rast_status st = rast_target_init(&t, mask, width, height, width, RAST_FORMAT_GRAY8);
     if (st != RAST_OK) return st;
     return rastpy_fill_polygon(&t, xy, npoints, ring_sizes, nrings, opts, &one, &zero);
+}
+
+/* For the tests: does the thread running a C call hold the GIL?  cffi
+ * releases it around every call, so this answers 0. */
+int rastpy_gil_held(void)
+{
+    return PyGILState_Check();
 }
 """
 

@@ -7,7 +7,7 @@ from hypothesis import given, settings, strategies as st
 
 import rastrum
 from oracle import oracle_mask
-from strategies import COORD_MAX, RULES, examples, limit_px, scenes
+from strategies import examples, limit_px, scenes
 
 ALGOS = rastrum.ALGORITHMS.get("Canvas.fill_polygon",
                                rastrum.ALGORITHMS["polygon_mask"])

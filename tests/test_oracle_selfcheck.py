@@ -156,9 +156,7 @@ def test_triangle_vertex_on_sample_right_open():
     tri = [(0.5, 0.5), (3.5, 1.5), (0.5, 2.5)]
     got = oracle_mask(tri, (4, 5))
     exp = np.zeros((4, 5), bool)
-    exp[0, 0] = True                 # row 0.5: [0.5, 0.5) ... wait: see below
     # row yc=0.5: edge 1 (0.5,0.5)->(3.5,1.5) X=0.5, edge 3 X=0.5 -> empty
-    exp[0, 0] = False
     # row yc=1.5: edge 2 X=3.5 (top closed), edge 3 X=0.5 -> [0.5, 3.5)
     exp[1, 0:3] = True
     # row yc=2.5: bottom open -> nothing
@@ -283,9 +281,9 @@ def test_snapping_moves_edge_over_sample():
     sq3 = [(0, 0), (1.5 - 2 ** -9 - 2 ** -30, 0), (1.5 - 2 ** -9 - 2 ** -30, 1),
            (0, 1)]
     assert oracle_mask(sq3, (1, 3), subpixel_bits=8).tolist() == \
-        [[True, False, False]]       # snaps to 1.5 - 2**-8 < 1.5 ... excluded
-    # 1.5 - 2**-8 + tiny stays below 1.5; sample 1.5 is still outside. Now
-    # the other way: left edge at 0.5 + 2**-9 (tie) snaps up past sample 0.5
+        [[True, False, False]]       # snaps down to 1.5 - 2**-8: excluded
+    # left edge at 0.5 + 2**-9 (a tie) snaps up past sample 0.5; a hair
+    # below the tie it snaps down onto 0.5 (left closed: included)
     sq4 = [(0.5 + 2 ** -9, 0), (3, 0), (3, 1), (0.5 + 2 ** -9, 1)]
     assert oracle_mask(sq4, (1, 3), subpixel_bits=8).tolist() == \
         [[False, True, True]]

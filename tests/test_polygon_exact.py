@@ -93,13 +93,23 @@ def test_matches_oracle_fine_subpixel(rule, S, data):
     check_equal(rl, shape, rule=rule, subpixel_bits=S, sample_offset=o)
 
 
-@pytest.mark.parametrize("alg,rule", UNSUPPORTED or [("-", "-")])
-def test_unlisted_rule_rejected(alg, rule):
-    if alg == "-":
-        pytest.skip("every algorithm supports every rule")
-    with pytest.raises(ValueError):
-        rastrum.polygon_mask([(0, 0), (4, 0), (0, 4)], (4, 4), rule=rule,
-                             algorithm=alg)
+def test_listed_rules_are_the_registry_and_others_are_refused():
+    """ALGORITHMS lists exactly the rules the C registry reports for each
+    algorithm, and a rule an algorithm does not list raises ValueError
+    (never a silent fallback)."""
+    from rastrum._native import ffi, lib
+
+    bits = {"evenodd": lib.RAST_RULE_EVENODD, "nonzero": lib.RAST_RULE_NONZERO}
+    name = ffi.new("char **")
+    mask = ffi.new("uint32_t *")
+    registry = {}
+    for code in range(lib.RAST_ALGO_COUNT_):
+        assert lib.rast_algorithm_info(code, name, mask) == lib.RAST_OK
+        registry[ffi.string(name[0]).decode()] = {r for r, b in bits.items() if mask[0] >> b & 1}
+    assert {a: set(r) for a, r in ALGOS.items()} == registry
+    for alg, rule in UNSUPPORTED:
+        with pytest.raises(ValueError, match=alg):
+            rastrum.polygon_mask([(0, 0), (4, 0), (0, 4)], (4, 4), rule=rule, algorithm=alg)
 
 
 def test_default_arguments():

@@ -168,3 +168,18 @@ def as_input_form(rl, form):
 
 
 input_forms = st.sampled_from(["arrays", "lists", "tuples", "single"])
+
+
+# --- helpers for failure messages ---------------------------------------------
+
+def lit(rl):
+    """Rings as plain lists of floats: a reproducer to paste."""
+    return [np.asarray(r, dtype=np.float64).tolist() for r in rl]
+
+
+def assert_same(a, b, msg):
+    """a equals b element for element, or an error naming the first cells."""
+    if not np.array_equal(a, b):
+        d = np.argwhere(a != b)
+        raise AssertionError(f"{msg}\n{len(d)} cell(s) differ, first "
+                             f"(row, col[, channel]): {d[:10].tolist()}")

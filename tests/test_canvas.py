@@ -7,7 +7,7 @@ from hypothesis import given, settings, strategies as st
 
 import rastrum
 from oracle import oracle_mask
-from strategies import examples, limit_px, scenes
+from strategies import assert_same, examples, limit_px, lit, scenes
 
 ALGOS = rastrum.ALGORITHMS.get("Canvas.fill_polygon",
                                rastrum.ALGORITHMS["polygon_mask"])
@@ -43,15 +43,6 @@ def colors(fmt):
                                                      max_size=n))
 
 
-def lit(rl):
-    return [np.asarray(r, dtype=np.float64).tolist() for r in rl]
-
-
-def assert_array(got, exp, msg):
-    if not np.array_equal(got, exp):
-        d = np.argwhere(got != exp)
-        raise AssertionError(f"{msg}\n{len(d)} byte(s) differ, first: "
-                             f"{d[:10].tolist()}")
 
 
 # --- construction ------------------------------------------------------------
@@ -101,7 +92,7 @@ def test_fill_polygon_matches_oracle(alg, rule, fmt, data):
     mask = oracle_mask(rl, (H, W), rule=rule, subpixel_bits=S,
                        sample_offset=o)
     exp = expected_after(before, mask, pixel_value(fmt, color))
-    assert_array(c.array, exp, f"Canvas({W}, {H}, format={fmt!r}, "
+    assert_same(c.array, exp, f"Canvas({W}, {H}, format={fmt!r}, "
                  f"background={bg}).fill_polygon({lit(rl)!r}, {color!r}, "
                  f"rule={rule!r}, algorithm={alg!r}, subpixel_bits={S}, "
                  f"sample_offset={o})")
@@ -117,7 +108,7 @@ def test_fill_polygon_defaults_and_overdraw(alg, rule):
     exp = np.full((16, 20, 3), 3, np.uint8)
     exp[oracle_mask(a, (16, 20))] = (10, 20, 30)
     exp[oracle_mask(b, (16, 20), rule=rule)] = (40, 50, 60)
-    assert_array(c.array, exp, "two overlapping fills, second wins")
+    assert_same(c.array, exp, "two overlapping fills, second wins")
 
 
 # --- guard bytes -------------------------------------------------------------
@@ -182,7 +173,7 @@ def test_guard_bytes_survive(fmt, data):
             f"rings={lit(rl)!r} rule={rule} alg={alg} S={S}")
         mask = oracle_mask(rl, (H, W), rule=rule, subpixel_bits=S)
         exp = expected_after(before, mask, pixel_value(fmt, color))
-        assert_array(inner, exp, f"wrapped fill: fmt={fmt} rings="
+        assert_same(inner, exp, f"wrapped fill: fmt={fmt} rings="
                      f"{lit(rl)!r} rule={rule} alg={alg} S={S}")
         # the canvas writes into the caller's memory, not into a copy
         assert np.shares_memory(c.array, big)

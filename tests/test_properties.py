@@ -10,7 +10,7 @@ from hypothesis import assume, given, settings, strategies as st
 
 import rastrum
 from oracle import oracle_mask, snapped_rings
-from strategies import RULES, examples, scenes
+from strategies import RULES, assert_same, examples, lit, scenes
 
 ALGOS = rastrum.ALGORITHMS["polygon_mask"]
 CASES = [(alg, rule) for alg, rules in ALGOS.items() for rule in rules]
@@ -18,15 +18,6 @@ ALG_NAMES = list(ALGOS)
 OFFSETS = [0.5, 0.0]
 
 
-def lit(rl):
-    return [np.asarray(r, dtype=np.float64).tolist() for r in rl]
-
-
-def assert_same(a, b, msg):
-    if not np.array_equal(a, b):
-        d = np.argwhere(a != b)
-        raise AssertionError(f"{msg}\n{len(d)} pixel(s) differ, first "
-                             f"(row, col): {d[:10].tolist()}")
 
 
 # --- watertightness -------------------------------------------------------

@@ -20,8 +20,7 @@ static rast_status rast__check_opts(const rast_fill_opts *o, rast__grid *g,
         return RAST_E_SUBPIXEL;
     if (o->sample != RAST_SAMPLE_CORNER && o->sample != RAST_SAMPLE_CENTER)
         return RAST_E_ARG;
-    g->shift = o->subpixel_bits + 1;
-    g->unit = (int32_t)1 << g->shift;
+    g->unit = (int32_t)2 << o->subpixel_bits;
     g->off = o->sample == RAST_SAMPLE_CENTER ? (int32_t)1 << o->subpixel_bits : 0;
     *algo = al;
     return RAST_OK;

@@ -14,7 +14,6 @@
 #include "rastrum.h"
 
 typedef struct rast__grid {
-    int32_t shift; /* S + 1 */
     int32_t unit;  /* 2^(S+1): one pixel in internal units */
     int32_t off;   /* sample offset in internal units: 2^S or 0 */
 } rast__grid;

@@ -46,7 +46,6 @@ def _check(status):
 
 
 RULES = {"evenodd": lib.RAST_RULE_EVENODD, "nonzero": lib.RAST_RULE_NONZERO}
-_RULE_NAMES = {v: k for k, v in RULES.items()}
 SAMPLE_OFFSETS = {0.5: lib.RAST_SAMPLE_CENTER, 0.0: lib.RAST_SAMPLE_CORNER}
 FORMATS = {
     "gray8": lib.RAST_FORMAT_GRAY8,

@@ -20,6 +20,14 @@ OFFSETS = [0.5, 0.0]
 
 
 
+def draw_small_case(data):
+    """S in 0..8, an offset, and a scene of at most 24 x 24 pixels."""
+    S = data.draw(st.integers(0, 8), label="S")
+    o = data.draw(st.sampled_from(OFFSETS), label="o")
+    rl, shape = data.draw(scenes(S, o, max_h=24, max_w=24), label="scene")
+    return S, o, rl, shape
+
+
 # --- watertightness -------------------------------------------------------
 
 @st.composite
@@ -163,9 +171,7 @@ def test_shared_edge_partition(alg, rule, data):
 @given(data=st.data())
 def test_evenodd_parity_is_additive(alg, data):
     """Under even-odd, mask(A + B) == mask(A) xor mask(B) for any rings."""
-    S = data.draw(st.integers(0, 8), label="S")
-    o = data.draw(st.sampled_from(OFFSETS), label="o")
-    rl, shape = data.draw(scenes(S, o, max_h=24, max_w=24), label="scene")
+    S, o, rl, shape = draw_small_case(data)
     rl2, _ = data.draw(scenes(S, o, max_h=24, max_w=24), label="scene2")
     kw = dict(rule="evenodd", algorithm=alg, subpixel_bits=S, sample_offset=o)
     m1 = rastrum.polygon_mask(rl, shape, **kw)
@@ -181,9 +187,7 @@ def test_evenodd_parity_is_additive(alg, data):
 @settings(max_examples=examples(100))
 @given(data=st.data())
 def test_order_free(alg, rule, data):
-    S = data.draw(st.integers(0, 8), label="S")
-    o = data.draw(st.sampled_from(OFFSETS), label="o")
-    rl, shape = data.draw(scenes(S, o, max_h=24, max_w=24), label="scene")
+    S, o, rl, shape = draw_small_case(data)
     kw = dict(rule=rule, algorithm=alg, subpixel_bits=S, sample_offset=o)
     base = rastrum.polygon_mask(rl, shape, **kw)
     where = f"rings={lit(rl)!r} shape={shape} {kw}"
@@ -213,9 +217,7 @@ def test_order_free(alg, rule, data):
 @settings(max_examples=examples(100))
 @given(data=st.data())
 def test_translation_by_whole_pixels(alg, rule, data):
-    S = data.draw(st.integers(0, 8), label="S")
-    o = data.draw(st.sampled_from(OFFSETS), label="o")
-    rl, shape = data.draw(scenes(S, o, max_h=24, max_w=24), label="scene")
+    S, o, rl, shape = draw_small_case(data)
     dx = data.draw(st.integers(-7, 7), label="dx")
     dy = data.draw(st.integers(-7, 7), label="dy")
     # the float addition must be exact for the property to apply: a

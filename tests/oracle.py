@@ -146,9 +146,17 @@ def _ceil_div(a: int, b: int) -> int:
     return -((-a) // b)
 
 
-def oracle_winding(rings, shape, *, subpixel_bits=8, sample_offset=0.5):
-    """Exact winding number of every sample, as an int64 (H, W) array."""
+def oracle_winding(rings, shape, *, subpixel_bits=8, sample_offset=0.5,
+                   rounding="exact"):
+    """Exact winding number of every sample, as an int64 (H, W) array.
+
+    rounding="textbook": a crossing at X counts for column i iff
+    X < i + o + 1/2 (the crossing rounded to the nearest sample column,
+    halves going right) instead of X <= i + o."""
     h, w, o = _check_args(shape, "evenodd", subpixel_bits, sample_offset)
+    if rounding not in ("exact", "textbook"):
+        raise ValueError(f"unknown rounding {rounding!r}")
+    textbook = rounding == "textbook"
     D, grid = _to_grid(rings, subpixel_bits)
     oD = int(o * D)
     up_idx = []     # flat indices (row * (w + 1) + col) of +1 contributions
@@ -186,7 +194,10 @@ def oracle_winding(rings, shape, *, subpixel_bits=8, sample_offset=0.5):
                 yc = js * D + oD
                 num = (x0 - oD) * dy + (yc - y0) * dx
                 num = num * sgn
-                c = -((-num) // den)            # exact ceil, den > 0
+                if textbook:                    # floor(X - o + 1/2)
+                    c = (num + (D // 2) * dy_pos) // den
+                else:
+                    c = -((-num) // den)        # exact ceil, den > 0
                 c = np.clip(c, 0, w)
                 flat = js * (w + 1) + c
             else:
@@ -194,7 +205,10 @@ def oracle_winding(rings, shape, *, subpixel_bits=8, sample_offset=0.5):
                 for j in range(j_lo, j_hi):
                     yc = j * D + oD
                     num = sgn * ((x0 - oD) * dy + (yc - y0) * dx)
-                    c = _ceil_div(num, den)
+                    if textbook:
+                        c = (num + (D // 2) * dy_pos) // den
+                    else:
+                        c = _ceil_div(num, den)
                     c = 0 if c < 0 else (w if c > w else c)
                     flat.append(j * (w + 1) + c)
                 flat = np.asarray(flat, dtype=np.int64)
@@ -210,7 +224,7 @@ def oracle_winding(rings, shape, *, subpixel_bits=8, sample_offset=0.5):
 
 
 def oracle_mask(rings, shape, *, rule="evenodd", subpixel_bits=8,
-                sample_offset=0.5):
+                sample_offset=0.5, rounding="exact"):
     """Exact inside/outside mask (H, W) of ``rings`` under DESIGN.md section 1.
 
     Parameters
@@ -222,18 +236,21 @@ def oracle_mask(rings, shape, *, rule="evenodd", subpixel_bits=8,
     subpixel_bits : int or None
         Snap to 1/2**S pixel (round half up); None: exact raw input.
     sample_offset : 0 or 0.5
+    rounding : "exact" or "textbook" (see oracle_winding)
     """
     _check_args(shape, rule, subpixel_bits, sample_offset)
     wind = oracle_winding(rings, shape, subpixel_bits=subpixel_bits,
-                          sample_offset=sample_offset)
+                          sample_offset=sample_offset, rounding=rounding)
     if rule == "evenodd":
         return (wind & 1).astype(bool)
     return wind != 0
 
 
 def oracle_mask_naive(rings, shape, *, rule="evenodd", subpixel_bits=8,
-                      sample_offset=0.5):
+                      sample_offset=0.5, rounding="exact"):
     """Literal per-sample transcription of the rule (slow; tiny inputs)."""
+    if rounding not in ("exact", "textbook"):
+        raise ValueError(f"unknown rounding {rounding!r}")
     h, w, o = _check_args(shape, rule, subpixel_bits, sample_offset)
     rl = snapped_rings(rings, subpixel_bits)
     edges = []
@@ -253,6 +270,9 @@ def oracle_mask_naive(rings, shape, *, rule="evenodd", subpixel_bits=8,
                 crossings.append((X, 1 if y1 > y0 else -1))
         for i in range(w):
             xc = i + o
-            wnd = sum(d for X, d in crossings if X <= xc)
+            if rounding == "exact":
+                wnd = sum(d for X, d in crossings if X <= xc)
+            else:
+                wnd = sum(d for X, d in crossings if X < xc + Fraction(1, 2))
             out[j, i] = (wnd % 2 == 1) if rule == "evenodd" else (wnd != 0)
     return out

@@ -180,25 +180,112 @@ typedef enum rast_sample {
 /* Polygon algorithms.  All are exact: they give the same pixels. They
  * differ in speed and in work memory (rast_scratch_size()). */
 typedef enum rast_algorithm {
-    RAST_ALGO_AET = 0, /* active edge table + bucket edge table (seed 001 3.4) */
-    RAST_ALGO_COUNT_ = 1
+    RAST_ALGO_AET = 0,      /* active edge table + bucket edge table (seed 001 3.4) */
+    RAST_ALGO_XSCAN = 1,    /* every edge intersected per row, sorted, paired (001 3.4.1) */
+    RAST_ALGO_EDGEFILL = 2, /* complement right of each crossing on a mask (001 3.5) */
+    RAST_ALGO_FENCE = 3,    /* the same, complementing only up to a fence (001 3.5) */
+    RAST_ALGO_EDGEFLAG = 4, /* flag crossings, then sweep each row (003) */
+    RAST_ALGO_CROSSING = 5, /* per sample: crossing number (003) */
+    RAST_ALGO_WINDING = 6,  /* per sample: winding number, the exact angle sum (003) */
+    RAST_ALGO_COUNT_ = 7
 } rast_algorithm;
 
+/* Where a crossing falls among the samples of its row.
+ * RAST_ROUND_EXACT is DESIGN section 1: a crossing at X counts for sample
+ * column i iff X <= i + o.
+ * RAST_ROUND_TEXTBOOK reproduces the textbook's worked examples (Example
+ * 3-1, Figure 3-19), which round each crossing to the nearest sample column,
+ * halves going right: a crossing counts for column i iff
+ * floor(X - o + 1/2) <= i, that is iff X < i + o + 1/2.  Rows are as in the
+ * exact rule.  The book uses it with o = 0.  It is still watertight (the
+ * rounding depends on the edge and the row only) but it is not the exact
+ * partition: a pixel whose sample is outside may be filled.  Never the
+ * default. */
+typedef enum rast_rounding {
+    RAST_ROUND_EXACT = 0,
+    RAST_ROUND_TEXTBOOK = 1
+} rast_rounding;
+
+/* Which pixels the boundary adds to the fill.
+ * RAST_BOUNDARY_EXACT: none; the fill is the exact partition (the default).
+ * RAST_BOUNDARY_CLOSED: the fill plus the library's outline, the pixels
+ *   rast_draw_line() draws for every edge of every ring (same S and sample
+ *   offset; lines ignore the rounding mode); what OpenCV and Pillow users
+ *   expect of a filled polygon.
+ * RAST_BOUNDARY_CONSERVATIVE: the fill plus every pixel whose open square
+ *   (i, i+1) x (j, j+1) meets an edge (a closed segment) of the polygon;
+ *   for a polygon without zero-area parts that is every pixel its interior
+ *   touches, what GDAL's ALL_TOUCHED users expect.  Zero-area parts (a
+ *   spike, an edge walked back and forth, two rings cancelling under
+ *   even-odd) still touch the pixels they cross.
+ * Neither of the last two is watertight: neighbours share their outline. */
+typedef enum rast_boundary {
+    RAST_BOUNDARY_EXACT = 0,
+    RAST_BOUNDARY_CLOSED = 1,
+    RAST_BOUNDARY_CONSERVATIVE = 2
+} rast_boundary;
+
 /* How to turn vertices into samples.  Zero-initialised means: AET,
- * even-odd, S = 0, samples at integer points. */
+ * even-odd, S = 0, samples at integer points, exact rounding, no boundary. */
 typedef struct rast_fill_opts {
     rast_algorithm algorithm;
     rast_fill_rule rule;
     int32_t subpixel_bits; /* S, 0..RAST_MAX_SUBPIXEL_BITS */
     rast_sample sample;
+    rast_rounding rounding;
+    rast_boundary boundary;
 } rast_fill_opts;
+
+/* Triangle algorithms.  All give the same pixels as the polygon fillers
+ * give the triangle as a one-ring polygon (either rule). */
+typedef enum rast_tri_algorithm {
+    RAST_TRI_EDGE = 0,     /* bounding box + incremental edge functions (000, 002, 004) */
+    RAST_TRI_SWEEP = 1,    /* split at the middle vertex, exact DDA for both ends (000, 002) */
+    RAST_TRI_EDGEFLAG = 2, /* SpanLeft/SpanRight arrays per row, then fill (001 3.3) */
+    RAST_TRI_COUNT_ = 3
+} rast_tri_algorithm;
+
+/* Options of a triangle batch; zero-initialised as rast_fill_opts. */
+typedef struct rast_tri_opts {
+    rast_tri_algorithm algorithm;
+    int32_t subpixel_bits; /* S, 0..RAST_MAX_SUBPIXEL_BITS */
+    rast_sample sample;
+    rast_rounding rounding;
+    rast_boundary boundary;
+} rast_tri_opts;
+
+/* Line algorithms (see rast_draw_line for the pixels a line owns). */
+typedef enum rast_line_algorithm {
+    RAST_LINE_BRESENHAM = 0, /* integer error term; exactly the defined pixels */
+    RAST_LINE_DDA = 1,       /* fixed-point DDA (16 fraction bits): may differ */
+    RAST_LINE_COUNT_ = 2
+} rast_line_algorithm;
+
+typedef struct rast_line_opts {
+    rast_line_algorithm algorithm;
+    int32_t subpixel_bits; /* S of the endpoints */
+    rast_sample sample;
+} rast_line_opts;
+
+/* Point-in-triangle predicates (seeds 003, 004), all in exact integers. */
+typedef enum rast_predicate {
+    RAST_PRED_SAMESIDE = 0,    /* p on the same side of each edge as the third vertex */
+    RAST_PRED_CROSS = 1,       /* the three cross products have one sign */
+    RAST_PRED_AREA = 2,        /* |A(pab)| + |A(pbc)| + |A(pca)| == |A(abc)| */
+    RAST_PRED_BARYCENTRIC = 3, /* all barycentric coordinates >= 0 */
+    RAST_PRED_OWNER = 4,       /* the fill's own rule: top-left, as every filler */
+    RAST_PRED_COUNT_ = 5
+} rast_predicate;
 
 /* Pixel formats: bytes of one pixel, in memory order. */
 typedef enum rast_format {
     RAST_FORMAT_GRAY8 = 0,    /* 1 byte; also a 0/1 mask */
     RAST_FORMAT_RGB888 = 1,   /* 3 bytes: R, G, B */
     RAST_FORMAT_RGBA8888 = 2, /* 4 bytes: R, G, B, A */
-    RAST_FORMAT_COUNT_ = 3
+    RAST_FORMAT_COUNT16 = 3,  /* 2 bytes, a native uint16_t: a fill adds 1 to
+                                 each pixel it covers (saturating at 65535) and
+                                 ignores the pixel value; overdraw made visible */
+    RAST_FORMAT_COUNT_ = 4
 } rast_format;
 
 /* A target: a view of caller-owned memory.  pixels points at pixel (0, 0);
@@ -301,6 +388,113 @@ RAST_API rast_status rast_fill_polygon_spans(const rast_polygon *polygon,
                                              rast_span_fn span, void *user,
                                              void *scratch,
                                              size_t scratch_bytes);
+
+/* ---- triangles --------------------------------------------------------------
+ * A batch is `ntris` triangles, tris[3k], tris[3k+1], tris[3k+2], in fixed
+ * point as polygon vertices (same units and range).  Each triangle owns
+ * exactly the samples the polygon fill of its one ring owns, in either
+ * winding order; a degenerate triangle (collinear or repeated vertices) owns
+ * none and is not an error.  Triangles of a mesh that share edges therefore
+ * cover every sample of its area exactly once. */
+
+/* Name of a triangle algorithm ("edge", "sweep", "edgeflag").
+ * RAST_E_ALGORITHM for an unknown one. */
+RAST_API rast_status rast_tri_algorithm_info(rast_tri_algorithm algorithm,
+                                             const char **name);
+
+/* Scratch bytes a triangle batch with `opts` needs for a clip `width` x
+ * `height` pixels; independent of the number of triangles.  Errors:
+ * RAST_E_NULL, RAST_E_ALGORITHM, RAST_E_SIZE, RAST_E_ARG. */
+RAST_API rast_status rast_tri_scratch_size(const rast_tri_opts *opts,
+                                           int32_t width, int32_t height,
+                                           size_t *bytes);
+
+/* Fill `ntris` triangles, one after the other, each writing `pixel` over
+ * the pixels of target->clip it owns (RAST_FORMAT_COUNT16: adding 1).
+ * Scratch as rast_fill_polygon, sized by rast_tri_scratch_size().
+ * Errors, all before anything is written: RAST_E_NULL, RAST_E_RANGE,
+ * RAST_E_SUBPIXEL, RAST_E_ALGORITHM, RAST_E_FORMAT, RAST_E_SCRATCH,
+ * RAST_E_ALIGN, RAST_E_ARG.  `pixel` may be NULL for RAST_FORMAT_COUNT16. */
+RAST_API rast_status rast_fill_triangles(const rast_target *target,
+                                         const rast_point *tris, uint32_t ntris,
+                                         const rast_tri_opts *opts,
+                                         const void *pixel, void *scratch,
+                                         size_t scratch_bytes);
+
+/* The same coverage handed to `span`: for each triangle in turn, its rows
+ * from top to bottom, each row's spans in increasing x (x0 < x1).  Spans of
+ * different triangles may overlap only in a non-exact boundary mode.
+ * The clip as for rast_fill_polygon_spans. */
+RAST_API rast_status rast_fill_triangles_spans(const rast_point *tris,
+                                               uint32_t ntris,
+                                               const rast_tri_opts *opts,
+                                               const rast_rect *clip,
+                                               rast_span_fn span, void *user,
+                                               void *scratch,
+                                               size_t scratch_bytes);
+
+/* ---- lines -------------------------------------------------------------------
+ * The pixels of the segment a -> b (fixed point, units 1/2^S, sample offset
+ * o, coordinates as polygon vertices), with dx = bx - ax, dy = by - ay:
+ *  - x-major (|dx| >= |dy|, also a = b): one pixel in each column i whose
+ *    sample abscissa i + o lies in [min(ax, bx), max(ax, bx)] (in pixels);
+ *    its row is the j whose sample ordinate j + o is nearest the line's
+ *    y(x) = ay + (x - ax) dy / dx at x = i + o (ay when dx = 0), halfway
+ *    going down: j = floor(y(i + o) - o + 1/2);
+ *  - y-major (|dy| > |dx|): the same with x and y swapped: one pixel in each
+ *    row j with j + o in [min(ay, by), max(ay, by)], column
+ *    i = floor(x(j + o) - o + 1/2), halfway going right.
+ * With o = 1/2 the pixel is the one containing the line's point; with o = 0
+ * and integer endpoints (S = 0) this is Bresenham's classic line, both
+ * endpoints included.  The set depends on the segment, not its direction:
+ * a -> b and b -> a give the same pixels. */
+
+/* Draw the segment a -> b with `pixel` (COUNT16: adding 1) into the clip.
+ * RAST_LINE_BRESENHAM draws exactly the pixels defined above;
+ * RAST_LINE_DDA steps a 16-fraction-bit fixed-point DDA (the textbook's
+ * float DDA made integer) and may miss a tie or a rounding by one pixel.
+ * Errors before any write: RAST_E_NULL, RAST_E_RANGE, RAST_E_SUBPIXEL,
+ * RAST_E_ALGORITHM, RAST_E_ARG, RAST_E_FORMAT, RAST_E_SIZE. */
+RAST_API rast_status rast_draw_line(const rast_target *target, rast_point a,
+                                    rast_point b, const rast_line_opts *opts,
+                                    const void *pixel);
+
+/* Draw segments points[k] -> points[k+1] for k < npoints - 1, and with
+ * `closed` non-zero also points[npoints-1] -> points[0] (an outline: seed
+ * 002's "three lines make a triangle").  Each segment is drawn whole, so a
+ * shared vertex is written once per segment (COUNT16 shows it).  Errors as
+ * rast_draw_line; RAST_E_TOO_MANY past RAST_MAX_POINTS. */
+RAST_API rast_status rast_draw_polyline(const rast_target *target,
+                                        const rast_point *points,
+                                        uint32_t npoints, int closed,
+                                        const rast_line_opts *opts,
+                                        const void *pixel);
+
+/* The pixels of the segment a -> b inside `clip` (coordinates within
+ * +-RAST_MAX_DIM), in order from a to b, as xy[2k], xy[2k+1].  *count gets
+ * the number of pixels; if it is more than `capacity` pixels, nothing is
+ * written to xy and RAST_E_SCRATCH is returned (call again with more).
+ * xy may be NULL when capacity is 0. */
+RAST_API rast_status rast_line_pixels(rast_point a, rast_point b,
+                                      const rast_line_opts *opts,
+                                      const rast_rect *clip, int32_t *xy,
+                                      size_t capacity, size_t *count);
+
+/* ---- predicates --------------------------------------------------------------
+ * Is point p inside triangle t[0..2] (fixed point, any units; coordinates
+ * within +-RAST_COORD_MAX)?  *inside gets 1 or 0.  The methods agree inside
+ * and outside a non-degenerate triangle and differ only on its boundary and
+ * on degenerate triangles:
+ *  - SAMESIDE, CROSS, BARYCENTRIC, AREA: closed triangle, a point on an edge
+ *    or a vertex is inside.  On a degenerate triangle (zero area) SAMESIDE,
+ *    CROSS and BARYCENTRIC say 0 everywhere; AREA says 1 on the segment
+ *    the three points span (0 + 0 + 0 == 0 only there... see the README).
+ *  - OWNER: the fill's rule (top-left: left and top edges in, right and
+ *    bottom out), so p is inside iff a fill of t owns a sample at p; 0 on
+ *    a degenerate triangle.
+ * Errors: RAST_E_NULL, RAST_E_RANGE, RAST_E_ARG (unknown method). */
+RAST_API rast_status rast_point_in_triangle(rast_point p, const rast_point *t,
+                                            rast_predicate method, int *inside);
 
 #ifdef __cplusplus
 }

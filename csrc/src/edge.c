@@ -35,6 +35,10 @@ int rast__edge_setup(rast__edge *ed, rast_point a, rast_point b,
     yc = first * g->unit + g->off;
     q = dy * g->unit;
     n = (xa - g->off) * dy + (yc - ya) * dx;
+    /* Textbook rounding: the first column is floor((n + h*dy) / q) with
+     * h = unit/2, which is ceil((n + h*dy - q + 1) / q); from then on the
+     * walk is the same (rast__cross_col says this once for other users). */
+    if (g->textbook) n += (int64_t)(g->unit / 2) * dy - q + 1;
 
     /* x = ceil(n / q) and e = x*q - n, without forming x*q (it may not fit). */
     r = n % q;

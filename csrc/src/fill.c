@@ -16,14 +16,8 @@ static rast_status rast__check_opts(const rast_fill_opts *o, rast__grid *g,
     if (!al) return RAST_E_ALGORITHM;
     if ((unsigned)o->rule > RAST_RULE_NONZERO) return RAST_E_ARG;
     if (!(al->rules & (1u << o->rule))) return RAST_E_RULE;
-    if (o->subpixel_bits < 0 || o->subpixel_bits > RAST_MAX_SUBPIXEL_BITS)
-        return RAST_E_SUBPIXEL;
-    if (o->sample != RAST_SAMPLE_CORNER && o->sample != RAST_SAMPLE_CENTER)
-        return RAST_E_ARG;
-    g->unit = (int32_t)2 << o->subpixel_bits;
-    g->off = o->sample == RAST_SAMPLE_CENTER ? (int32_t)1 << o->subpixel_bits : 0;
     *algo = al;
-    return RAST_OK;
+    return rast__grid_init(g, o->subpixel_bits, o->sample, o->rounding, o->boundary);
 }
 
 /* Count the vertices and check that every one is in range. */
@@ -61,6 +55,7 @@ rast_status rast_scratch_size(const rast_fill_opts *opts, uint32_t npoints,
         return RAST_E_SIZE;
     if (npoints > RAST_MAX_POINTS) return RAST_E_TOO_MANY;
     *bytes = al->scratch(npoints, width, height);
+    if (opts->boundary != RAST_BOUNDARY_EXACT) *bytes += rast__bound_scratch(npoints, height);
     return RAST_OK;
 }
 
@@ -74,14 +69,17 @@ static rast_status rast__fill(const rast_polygon *poly, const rast_fill_opts *op
     rast__sink sink;
     rast__arena arena;
     uint32_t npoints;
+    size_t need;
     rast_status st;
 
     st = rast__check_opts(opts, &g, &al);
     if (st != RAST_OK) return st;
     st = rast__check_polygon(poly, &npoints);
     if (st != RAST_OK) return st;
-    if (scratch_bytes < al->scratch(npoints, clip->x1 - clip->x0, clip->y1 - clip->y0))
-        return RAST_E_SCRATCH;
+    need = al->scratch(npoints, clip->x1 - clip->x0, clip->y1 - clip->y0);
+    if (opts->boundary != RAST_BOUNDARY_EXACT)
+        need += rast__bound_scratch(npoints, clip->y1 - clip->y0);
+    if (scratch_bytes < need) return RAST_E_SCRATCH;
     if (scratch_bytes > 0 && !scratch) return RAST_E_NULL;
     if ((uintptr_t)scratch % RAST_SCRATCH_ALIGN) return RAST_E_ALIGN;
     if (clip->x0 >= clip->x1 || clip->y0 >= clip->y1) return RAST_OK;
@@ -94,7 +92,15 @@ static rast_status rast__fill(const rast_polygon *poly, const rast_fill_opts *op
     sink.n = 0;
     arena.p = (unsigned char *)scratch;
     arena.left = scratch_bytes;
-    return al->fill(poly, npoints, &g, opts->rule, clip, &sink, &arena);
+    if (opts->boundary == RAST_BOUNDARY_EXACT)
+        return al->fill(poly, npoints, &g, opts->rule, clip, &sink, &arena);
+    {
+        rast__bound b;
+        st = rast__bound_begin(&b, poly, npoints, &g, opts->boundary, clip, &sink, &arena);
+        if (st == RAST_OK) st = al->fill(poly, npoints, &g, opts->rule, clip, &b.in, &arena);
+        if (st == RAST_OK) rast__bound_end(&b);
+        return st;
+    }
 }
 
 static rast_status rast__fill_target(const rast_target *target, const rast_polygon *polygon,

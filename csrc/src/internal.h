@@ -14,9 +14,15 @@
 #include "rastrum.h"
 
 typedef struct rast__grid {
-    int32_t unit;  /* 2^(S+1): one pixel in internal units */
-    int32_t off;   /* sample offset in internal units: 2^S or 0 */
+    int32_t unit;     /* 2^(S+1): one pixel in internal units */
+    int32_t off;      /* sample offset in internal units: 2^S or 0 */
+    int32_t textbook; /* 1: RAST_ROUND_TEXTBOOK, 0: exact */
 } rast__grid;
+
+/* Check S, the sample, rounding and boundary options and set up the grid.
+ * RAST_E_SUBPIXEL or RAST_E_ARG; shared by every entry point (grid.c). */
+rast_status rast__grid_init(rast__grid *g, int32_t subpixel_bits, rast_sample sample,
+                            rast_rounding rounding, rast_boundary boundary);
 
 /* Floor of a / b for b > 0, with a non-negative remainder. */
 static inline int64_t rast__floordiv(int64_t a, int64_t b)
@@ -29,6 +35,18 @@ static inline int64_t rast__floordiv(int64_t a, int64_t b)
 static inline int64_t rast__ceildiv(int64_t a, int64_t b)
 {
     return -rast__floordiv(-a, b);
+}
+
+/* The first column that counts a crossing at internal abscissa X = num/den
+ * (den > 0): exact, the least i with X <= i*unit + off, ceil((X-off)/unit);
+ * textbook, floor((X - off + unit/2)/unit) (see RAST_ROUND_TEXTBOOK).
+ * |num| < 2^60 and den < 2^47 keep every product inside int64_t. */
+static inline int64_t rast__cross_col(int64_t num, int64_t den, const rast__grid *g)
+{
+    int64_t q = den * g->unit;
+    if (g->textbook) /* floor(n/q) == ceil((n - q + 1)/q) for integers */
+        return rast__ceildiv(num + (int64_t)(g->unit / 2 - g->off) * den - q + 1, q);
+    return rast__ceildiv(num - (int64_t)g->off * den, q);
 }
 
 /* The first row whose sample is at or below internal ordinate y:
@@ -164,6 +182,60 @@ typedef rast_status (*rast__polygon_fill_fn)(const rast_polygon *poly,
 /* Scratch bytes a filler needs for npoints vertices and a clip of the given
  * size (both already checked against the limits). */
 typedef size_t (*rast__scratch_fn)(uint32_t npoints, int32_t width, int32_t height);
+
+/* ---- the library's line, by formula (linerun.c) --------------------------
+ * The pixels rast_draw_line defines for a -> b (fixed-point input units),
+ * row by row: the rows [*r0, *r1) that hold pixels of the line, and in row
+ * j of those the columns [*x0, *x1) (never empty).  Exact divisions, no
+ * stepping: the boundary modes use it, and the tests hold the incremental
+ * Bresenham of line.c against it. */
+void rast__line_rows(rast_point a, rast_point b, const rast__grid *g,
+                     int64_t *r0, int64_t *r1);
+void rast__line_run(rast_point a, rast_point b, const rast__grid *g,
+                    int64_t row, int64_t *x0, int64_t *x1);
+
+/* ---- boundary modes (boundary.c) ------------------------------------------
+ * RAST_BOUNDARY_CLOSED and _CONSERVATIVE add, row by row, the pixels of a
+ * polygon's edges to its fill.  The filler writes into `in` (set up by
+ * rast__bound_begin), which merges each of its rows with the edges' pixels
+ * of that row and passes the union on to `out` in row order;
+ * rast__bound_end adds the rows after the filler's last and flushes `out`. */
+typedef struct rast__bound_edge {
+    rast_point a, b;  /* a above b (a.y <= b.y), fixed-point input units */
+    int32_t row, end; /* rows [row, end) it adds pixels to, cut to the clip */
+    int32_t next;
+} rast__bound_edge;
+
+typedef struct rast__bound {
+    rast__sink *out;
+    rast__sink in;
+    const rast__grid *g;
+    rast_boundary mode;
+    rast__bound_edge *edges;
+    int32_t *bucket;   /* first edge of each clip row, -1 when none */
+    int32_t *active;   /* edges adding pixels to the current row */
+    int32_t *xs;       /* the current row's edge runs, merged (pairs) */
+    int32_t nactive, nxs, k; /* k: runs already passed on */
+    int32_t row;       /* row whose runs are in xs */
+    int32_t y0, y1;    /* clip rows */
+} rast__bound;
+
+size_t rast__bound_scratch(uint32_t npoints, int32_t height);
+rast_status rast__bound_begin(rast__bound *b, const rast_polygon *poly,
+                              uint32_t npoints, const rast__grid *g,
+                              rast_boundary mode, const rast_rect *clip,
+                              rast__sink *out, rast__arena *arena);
+void rast__bound_end(rast__bound *b);
+
+/* ---- triangle fillers -------------------------------------------------------
+ * Coverage of one triangle t[0..2] (in range, any orientation, possibly
+ * degenerate) inside `clip` (non-empty, cut to the target), handed to
+ * `sink` row by row from the top; work memory from `arena`, at most
+ * what the algorithm's scratch function asked for the clip. */
+typedef rast_status (*rast__tri_fill_fn)(const rast_point *t, const rast__grid *g,
+                                         const rast_rect *clip, rast__sink *sink,
+                                         rast__arena *arena);
+typedef size_t (*rast__tri_scratch_fn)(int32_t width, int32_t height);
 
 /* The AET filler (aet.c). */
 rast_status rast__aet_fill(const rast_polygon *poly, uint32_t npoints,

@@ -8,11 +8,12 @@
 
 static const rast__algo rast__algos[RAST_ALGO_COUNT_] = {
     {"aet", RAST__BOTH_RULES, rast__aet_scratch, rast__aet_fill},
+    /* RAST_ALGO_XSCAN .. RAST_ALGO_WINDING: rows added as they land */
 };
 
 const rast__algo *rast__algo_get(rast_algorithm a)
 {
-    if ((unsigned)a >= RAST_ALGO_COUNT_) return NULL;
+    if ((unsigned)a >= RAST_ALGO_COUNT_ || !rast__algos[a].fill) return NULL;
     return &rast__algos[a];
 }
 

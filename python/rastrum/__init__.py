@@ -24,7 +24,8 @@ ALGORITHMS = {
 }
 ALGORITHMS["Canvas.fill_polygon"] = ALGORITHMS["polygon_mask"]
 
-def polygon_mask(rings, shape, *, rule="evenodd", algorithm="aet", subpixel_bits=8, sample_offset=0.5):
+def polygon_mask(rings, shape, *, rule="evenodd", algorithm="aet", subpixel_bits=8, sample_offset=0.5,
+                 rounding="exact", boundary="exact"):
     """Rasterise a polygon into a boolean mask.
 
     Parameters
@@ -45,6 +46,14 @@ def polygon_mask(rings, shape, *, rule="evenodd", algorithm="aet", subpixel_bits
     sample_offset : {0.5, 0}
         Where a pixel's sample point is: its centre (0.5) or its top-left
         corner (0, as OpenCV and the textbook).
+    rounding : {"exact", "textbook"}
+        "textbook" rounds each crossing to the nearest sample column,
+        halves going right, as the textbook's worked examples do (use it
+        with ``sample_offset=0``).  Not exact; never the default.
+    boundary : {"exact", "closed", "conservative"}
+        "closed" adds the library's outline of every edge (what OpenCV and
+        Pillow draw), "conservative" every pixel an edge passes through
+        (GDAL's ALL_TOUCHED).  The default is the exact partition.
 
     Returns
     -------
@@ -69,5 +78,5 @@ def polygon_mask(rings, shape, *, rule="evenodd", algorithm="aet", subpixel_bits
            [0, 0, 0, 0, 0, 0, 0],
            [0, 0, 0, 0, 0, 0, 0]])
     """
-    opts = _core.fill_opts(algorithm, rule, subpixel_bits, sample_offset)
+    opts = _core.fill_opts(algorithm, rule, subpixel_bits, sample_offset, rounding, boundary)
     return _core.mask_polygon(_core.shape2(shape), rings, opts, opts.subpixel_bits)

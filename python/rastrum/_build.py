@@ -55,6 +55,7 @@ long rastpy_mask_polygon(void *mask, int32_t height, int32_t width,
                          const double *xy, uint32_t npoints,
                          const uint32_t *ring_sizes, uint32_t nrings,
                          const rast_fill_opts *opts);
+long rastpy_snap_points(const double *xy, size_t npoints, int s, int32_t *out);
 int rastpy_gil_held(void);
 """
 GLUE_SOURCE = r"""
@@ -81,6 +82,12 @@ static long rastpy_snap(const double *xy, size_t npoints, int s, int32_t *out)
         out[i] = (int32_t)v;
     }
     return -1;
+}
+
+/* rastpy_snap for callers in Python (lines, predicates, small inputs). */
+long rastpy_snap_points(const double *xy, size_t npoints, int s, int32_t *out)
+{
+    return rastpy_snap(xy, npoints, s, out);
 }
 
 /* Snap, then rast_fill_polygon (or rast_fill_polygon_opaque when

@@ -47,6 +47,12 @@ def _check(status):
 
 RULES = {"evenodd": lib.RAST_RULE_EVENODD, "nonzero": lib.RAST_RULE_NONZERO}
 SAMPLE_OFFSETS = {0.5: lib.RAST_SAMPLE_CENTER, 0.0: lib.RAST_SAMPLE_CORNER}
+ROUNDINGS = {"exact": lib.RAST_ROUND_EXACT, "textbook": lib.RAST_ROUND_TEXTBOOK}
+BOUNDARIES = {
+    "exact": lib.RAST_BOUNDARY_EXACT,
+    "closed": lib.RAST_BOUNDARY_CLOSED,
+    "conservative": lib.RAST_BOUNDARY_CONSERVATIVE,
+}
 FORMATS = {
     "gray8": lib.RAST_FORMAT_GRAY8,
     "rgb888": lib.RAST_FORMAT_RGB888,
@@ -69,7 +75,8 @@ def _polygon_algorithms():
     name = ffi.new("char **")
     rules = ffi.new("uint32_t *")
     for code in range(lib.RAST_ALGO_COUNT_):
-        _check(lib.rast_algorithm_info(code, name, rules))
+        if lib.rast_algorithm_info(code, name, rules) != lib.RAST_OK:
+            continue  # a number the library does not fill with (yet)
         supported = tuple(r for r, bit in RULES.items() if rules[0] & (1 << bit))
         table[ffi.string(name[0]).decode()] = (code, supported)
     return table
@@ -96,7 +103,44 @@ def _subpixel_bits(s):
     return int(s)
 
 
-def _make_fill_opts(algorithm, rule, subpixel_bits, sample_offset):
+def sample_code(sample_offset):
+    """RAST_SAMPLE_* for a sample offset of 0.5 or 0, or InputError."""
+    sample = None
+    if isinstance(sample_offset, numbers.Real) and not isinstance(sample_offset, (bool, np.bool_)):
+        sample = SAMPLE_OFFSETS.get(float(sample_offset))
+    if sample is None:
+        raise InputError("sample_offset must be 0.5 (pixel centres) or 0, not %r" % (sample_offset,))
+    return sample
+
+
+def rounding_code(rounding):
+    return ROUNDINGS[_name(rounding, "rounding", ROUNDINGS)]
+
+
+def boundary_code(boundary):
+    return BOUNDARIES[_name(boundary, "boundary", BOUNDARIES)]
+
+
+def snap_points(xy, s):
+    """float (N, 2) array-like -> int32 (N, 2) array on the 1/2^s grid,
+    snapped exactly as the fills snap; InputError names a bad point."""
+    s = _subpixel_bits(s)
+    try:
+        pts = np.ascontiguousarray(xy, dtype=np.float64)
+    except (TypeError, ValueError):
+        raise InputError("points must be numbers, not %r" % (xy,)) from None
+    if pts.ndim != 2 or pts.shape[1] != 2:
+        raise InputError("points must have shape (N, 2), not %s" % (pts.shape,))
+    out = np.empty(pts.shape, np.int32)
+    bad = lib.rastpy_snap_points(
+        ffi.from_buffer("double[]", pts), len(pts), s, ffi.from_buffer("int32_t[]", out)
+    )
+    if bad >= 0:
+        _check_glue(bad + 1, pts, s)
+    return out
+
+
+def _make_fill_opts(algorithm, rule, subpixel_bits, sample_offset, rounding="exact", boundary="exact"):
     _name(algorithm, "algorithm", POLYGON_ALGORITHMS)
     _name(rule, "fill rule", RULES)
     code, supported = POLYGON_ALGORITHMS[algorithm]
@@ -110,16 +154,13 @@ def _make_fill_opts(algorithm, rule, subpixel_bits, sample_offset):
             )
         )
     s = _subpixel_bits(subpixel_bits)
-    sample = None
-    if isinstance(sample_offset, numbers.Real) and not isinstance(sample_offset, (bool, np.bool_)):
-        sample = SAMPLE_OFFSETS.get(float(sample_offset))
-    if sample is None:
-        raise InputError("sample_offset must be 0.5 (pixel centres) or 0, not %r" % (sample_offset,))
     opts = ffi.new("rast_fill_opts *")
     opts.algorithm = code
     opts.rule = RULES[rule]
     opts.subpixel_bits = s
-    opts.sample = sample
+    opts.sample = sample_code(sample_offset)
+    opts.rounding = rounding_code(rounding)
+    opts.boundary = boundary_code(boundary)
     return opts
 
 
@@ -129,14 +170,15 @@ def _make_fill_opts(algorithm, rule, subpixel_bits, sample_offset):
 _OPTS_CACHE = {}
 
 
-def fill_opts(algorithm, rule, subpixel_bits, sample_offset):
+def fill_opts(algorithm, rule, subpixel_bits, sample_offset, rounding="exact", boundary="exact"):
     """A checked, read-only ``rast_fill_opts *``."""
-    key = (algorithm, rule, subpixel_bits, type(subpixel_bits), sample_offset, type(sample_offset))
+    key = (algorithm, rule, subpixel_bits, type(subpixel_bits), sample_offset, type(sample_offset),
+           rounding, boundary)
     try:
         return _OPTS_CACHE[key]
     except (KeyError, TypeError):
         pass
-    opts = _make_fill_opts(algorithm, rule, subpixel_bits, sample_offset)
+    opts = _make_fill_opts(algorithm, rule, subpixel_bits, sample_offset, rounding, boundary)
     if len(_OPTS_CACHE) < 4096:
         try:
             _OPTS_CACHE[key] = opts

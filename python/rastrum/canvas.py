@@ -105,13 +105,14 @@ class Canvas:
     def format(self):
         return self._format
 
-    def fill_polygon(self, rings, color, *, rule="evenodd", algorithm="aet", subpixel_bits=8, sample_offset=0.5):
+    def fill_polygon(self, rings, color, *, rule="evenodd", algorithm="aet", subpixel_bits=8,
+                     sample_offset=0.5, rounding="exact", boundary="exact"):
         """Paint `color` on every pixel whose sample is inside the polygon.
 
         Arguments as :func:`rastrum.polygon_mask`.  Nothing is written when
         an argument is bad (an InputError says which).
         """
-        opts = _core.fill_opts(algorithm, rule, subpixel_bits, sample_offset)
+        opts = _core.fill_opts(algorithm, rule, subpixel_bits, sample_offset, rounding, boundary)
         pixel = self._pixel(color)
         _core.fill_polygon(self._target, rings, pixel, opts, opts.subpixel_bits)
 

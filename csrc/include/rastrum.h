@@ -315,16 +315,18 @@ RAST_API int rast_version_number(void);
  * The string is static: never free it. */
 RAST_API const char *rast_status_str(rast_status status);
 
-/* Bytes per pixel of `format` into *bytes (1, 3 or 4).
+/* Bytes per pixel of `format` into *bytes (1, 2, 3 or 4).
  * RAST_E_FORMAT for an unknown format, RAST_E_NULL if bytes is NULL. */
 RAST_API rast_status rast_format_bytes(rast_format format, int32_t *bytes);
 
 /* Describe caller-owned memory as a target (see rast_target); clip = whole.
  * width and height in 0..RAST_MAX_DIM pixels, stride in bytes with
  * stride >= width * bytes per pixel and stride * height fitting a ptrdiff_t.
- * pixels may be NULL only when width or height is 0.
- * Errors: RAST_E_NULL (t, or pixels of a non-empty target), RAST_E_SIZE,
- * RAST_E_FORMAT; *t is untouched on error. */
+ * pixels may be NULL only when width or height is 0.  RAST_FORMAT_COUNT16
+ * pixels are uint16_t: pixels and stride must be multiples of 2 bytes.
+ * Errors: RAST_E_NULL (t, or pixels of a non-empty target), RAST_E_SIZE
+ * (also a misaligned COUNT16 target), RAST_E_FORMAT; *t is untouched on
+ * error. */
 RAST_API rast_status rast_target_init(rast_target *t, void *pixels,
                                       int32_t width, int32_t height,
                                       int32_t stride, rast_format format);
@@ -347,7 +349,8 @@ RAST_API rast_status rast_scratch_size(const rast_fill_opts *opts,
 /* Fill a polygon with one pixel value: every pixel of target->clip whose
  * sample is inside (see Conventions) gets the `pixel` bytes (1, 3 or 4
  * bytes as the target format says, memory order); other pixels are not
- * touched.  Geometry outside the clip is clipped, not an error.
+ * touched.  RAST_FORMAT_COUNT16 adds 1 to each inside pixel instead
+ * (saturating at 65535) and ignores `pixel`, which may then be NULL.  Geometry outside the clip is clipped, not an error.
  * `scratch` (aligned to RAST_SCRATCH_ALIGN, `scratch_bytes` long) must hold
  * rast_scratch_size(opts, npoints, clip width, clip height) bytes; its
  * contents on entry are ignored and on return are undefined.
@@ -366,7 +369,9 @@ RAST_API rast_status rast_fill_polygon(const rast_target *target,
  * clip's previous contents do not matter, so an uninitialised buffer becomes
  * a complete image in one pass (a mask without a separate clear; a band of
  * rows streamed to a display).  Scratch and errors as rast_fill_polygon;
- * RAST_E_NULL also for a NULL background.  On error nothing is written. */
+ * RAST_E_NULL also for a NULL background, RAST_E_FORMAT for a
+ * RAST_FORMAT_COUNT16 target (a count has no background).  On error
+ * nothing is written. */
 RAST_API rast_status rast_fill_polygon_opaque(const rast_target *target,
                                               const rast_polygon *polygon,
                                               const rast_fill_opts *opts,

@@ -24,12 +24,14 @@ static void rast__replicate(unsigned char *p, size_t bytes, size_t n)
     }
 }
 
-/* Bytes per pixel, by format.  The formats so far are plain byte patterns,
- * which these painters write; a packed format (rgb565, mono1) adds its own. */
+/* Bytes per pixel, by format.  GRAY8, RGB888 and RGBA8888 are plain byte
+ * patterns, which the solid painter writes; COUNT16 has its own painter
+ * (rast__count_row), as a packed format (rgb565, mono1) would. */
 static const int32_t rast__format_bytes[RAST_FORMAT_COUNT_] = {
     1, /* RAST_FORMAT_GRAY8 */
     3, /* RAST_FORMAT_RGB888 */
     4, /* RAST_FORMAT_RGBA8888 */
+    2, /* RAST_FORMAT_COUNT16 */
 };
 
 /* Write n pixels of `bytes` bytes each, all equal to `value`, at p. */
@@ -55,6 +57,23 @@ static void rast__solid_row(void *user, int32_t y, const int32_t *xs, int32_t n)
     }
     for (k = 0; k < n; k++)
         rast__put(row + (ptrdiff_t)xs[2 * k] * bpp, s->value, bpp, xs[2 * k + 1] - xs[2 * k]);
+}
+
+/* COUNT16: add 1 to every covered pixel, saturating at 65535.  v + 1 - carry
+ * keeps the loop free of branches, so the compiler vectorises it. */
+static void rast__count_row(void *user, int32_t y, const int32_t *xs, int32_t n)
+{
+    const rast__solid *s = (const rast__solid *)user;
+    uint16_t *row = (uint16_t *)(void *)(s->base + (ptrdiff_t)y * s->stride);
+    int32_t k, i;
+    for (k = 0; k < n; k++) {
+        uint16_t *p = row + xs[2 * k];
+        int32_t len = xs[2 * k + 1] - xs[2 * k];
+        for (i = 0; i < len; i++) {
+            uint32_t v = (uint32_t)p[i] + 1u;
+            p[i] = (uint16_t)(v - (v >> 16));
+        }
+    }
 }
 
 /* ---- opaque: every clip pixel written once, value or background --------- */
@@ -109,6 +128,10 @@ rast_status rast_target_init(rast_target *t, void *pixels, int32_t width,
     if (stride < 0 || (int64_t)stride < (int64_t)width * bpp) return RAST_E_SIZE;
     if ((uint64_t)stride * (uint64_t)height > (uint64_t)PTRDIFF_MAX) return RAST_E_SIZE;
     if (!pixels && width > 0 && height > 0) return RAST_E_NULL;
+    /* COUNT16 pixels are uint16_t: every row must start 2-byte aligned. */
+    if (format == RAST_FORMAT_COUNT16 &&
+        (stride % 2 != 0 || (uintptr_t)pixels % sizeof(uint16_t) != 0))
+        return RAST_E_SIZE;
     v.pixels = pixels;
     v.width = width;
     v.height = height;
@@ -148,6 +171,17 @@ rast_status rast__solid_init(rast__solid *s, const rast_target *t, const rast_re
                              const void *pixel, const void *background, rast__row_fn *fn)
 {
     int32_t bpp = rast__format_bytes[t->format];
+    if (t->format == RAST_FORMAT_COUNT16) {
+        /* A count has no value to write and no background to restore. */
+        if (background) return RAST_E_FORMAT;
+        memset(s, 0, sizeof *s);
+        s->base = (unsigned char *)t->pixels;
+        s->stride = t->stride;
+        s->bytes = bpp;
+        s->clip = *clip;
+        *fn = rast__count_row;
+        return RAST_OK;
+    }
     if (!pixel) return RAST_E_NULL;
     memset(s, 0, sizeof *s);
     s->base = (unsigned char *)t->pixels;

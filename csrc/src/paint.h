@@ -19,10 +19,6 @@ typedef struct rast__solid {
 /* Check a target (as rast_target_init would) and cut its clip to it. */
 rast_status rast__target_check(const rast_target *t, rast_rect *clip);
 
-/* A painter writing `pixel` (target format bytes) over spans of a checked
- * target and clip: fills *s and the row function to pass it to.  With a
- * non-NULL `background` it is the opaque painter: every clip pixel is
- * written, and rast__opaque_finish must follow a successful fill. */
 /* The painter for rast_fill_polygon_spans: hands each span of a row to
  * the user's rast_span_fn. */
 typedef struct rast__user_spans {
@@ -31,6 +27,13 @@ typedef struct rast__user_spans {
 } rast__user_spans;
 void rast__user_row(void *user, int32_t y, const int32_t *xs, int32_t n);
 
+/* A painter writing `pixel` (target format bytes) over spans of a checked
+ * target and clip: fills *s and the row function to pass it to.  With a
+ * non-NULL `background` it is the opaque painter: every clip pixel is
+ * written, and rast__opaque_finish must follow a successful fill.
+ * RAST_FORMAT_COUNT16 adds 1 per covered pixel instead and ignores `pixel`
+ * (it may be NULL); it has no opaque painter (RAST_E_FORMAT).  Otherwise
+ * RAST_E_NULL for a NULL pixel. */
 rast_status rast__solid_init(rast__solid *s, const rast_target *t, const rast_rect *clip,
                              const void *pixel, const void *background, rast__row_fn *fn);
 void rast__opaque_finish(rast__solid *s);

@@ -237,6 +237,32 @@ typedef rast_status (*rast__tri_fill_fn)(const rast_point *t, const rast__grid *
                                          rast__arena *arena);
 typedef size_t (*rast__tri_scratch_fn)(int32_t width, int32_t height);
 
+/* The three triangle fillers (tri_edge.c, tri_sweep.c, tri_edgeflag.c). */
+rast_status rast__tri_edge_fill(const rast_point *t, const rast__grid *g,
+                                const rast_rect *clip, rast__sink *sink,
+                                rast__arena *arena);
+size_t rast__tri_edge_scratch(int32_t width, int32_t height);
+rast_status rast__tri_sweep_fill(const rast_point *t, const rast__grid *g,
+                                 const rast_rect *clip, rast__sink *sink,
+                                 rast__arena *arena);
+size_t rast__tri_sweep_scratch(int32_t width, int32_t height);
+rast_status rast__tri_edgeflag_fill(const rast_point *t, const rast__grid *g,
+                                    const rast_rect *clip, rast__sink *sink,
+                                    rast__arena *arena);
+size_t rast__tri_edgeflag_scratch(int32_t width, int32_t height);
+
+/* The edge-flag arrays of seed 001 (section 3.3, algorithm 9) for triangle
+ * t: for each row j of [row_lo, row_hi) that the triangle covers,
+ * span_left[j - row_lo] and span_right[j - row_lo] get the first column
+ * that counts the crossing of its left and of its right edge (see
+ * rast__cross_col), so that the row's pixels are
+ * span_left <= i < span_right.  The covered rows are [*r0, *r1); returns 0
+ * (and leaves the arrays alone) when there are none in the range, or the
+ * triangle is degenerate.  The arrays hold row_hi - row_lo entries. */
+int rast__tri_span_flags(const rast_point *t, const rast__grid *g,
+                         int32_t row_lo, int32_t row_hi, int32_t *span_left,
+                         int32_t *span_right, int32_t *r0, int32_t *r1);
+
 /* The AET filler (aet.c). */
 rast_status rast__aet_fill(const rast_polygon *poly, uint32_t npoints,
                            const rast__grid *g, rast_fill_rule rule,

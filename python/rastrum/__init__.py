@@ -11,8 +11,10 @@ from . import _core
 from ._core import InputError, RastrumError
 from ._native import lib
 from .canvas import Canvas
+from .triangles import TRIANGLE_ALGORITHMS as _TRIANGLE_ALGORITHMS, triangles_mask
 
-__all__ = ["polygon_mask", "Canvas", "ALGORITHMS", "RastrumError", "InputError", "__version__"]
+__all__ = ["polygon_mask", "triangles_mask", "Canvas", "ALGORITHMS", "RastrumError", "InputError",
+           "__version__"]
 
 _v = lib.rast_version_number()
 __version__ = "%d.%d.%d" % (_v // 10000, _v // 100 % 100, _v % 100)
@@ -23,6 +25,9 @@ ALGORITHMS = {
     "polygon_mask": {name: rules for name, (_, rules) in _core.POLYGON_ALGORITHMS.items()},
 }
 ALGORITHMS["Canvas.fill_polygon"] = ALGORITHMS["polygon_mask"]
+# A triangle is the same under either rule.
+ALGORITHMS["triangles_mask"] = {name: ("evenodd", "nonzero") for name in _TRIANGLE_ALGORITHMS}
+ALGORITHMS["Canvas.fill_triangles"] = ALGORITHMS["triangles_mask"]
 
 def polygon_mask(rings, shape, *, rule="evenodd", algorithm="aet", subpixel_bits=8, sample_offset=0.5,
                  rounding="exact", boundary="exact"):

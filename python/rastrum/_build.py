@@ -56,6 +56,9 @@ long rastpy_mask_polygon(void *mask, int32_t height, int32_t width,
                          const uint32_t *ring_sizes, uint32_t nrings,
                          const rast_fill_opts *opts);
 long rastpy_snap_points(const double *xy, size_t npoints, int s, int32_t *out);
+long rastpy_fill_triangles(const rast_target *target, const double *xy,
+                           uint32_t ntris, const rast_tri_opts *opts,
+                           const void *pixel);
 int rastpy_gil_held(void);
 """
 GLUE_SOURCE = r"""
@@ -135,6 +138,34 @@ long rastpy_mask_polygon(void *mask, int32_t height, int32_t width,
     rast_status st = rast_target_init(&t, mask, width, height, width, RAST_FORMAT_GRAY8);
     if (st != RAST_OK) return st;
     return rastpy_fill_polygon(&t, xy, npoints, ring_sizes, nrings, opts, &one, &zero);
+}
+
+/* Snap the 3 * ntris vertices xy (x, y float pairs), then
+ * rast_fill_triangles with scratch from malloc.  Returns 0, a negative
+ * rast_status (or RASTPY_E_NOMEM), or k + 1 when vertex k is bad (see
+ * rastpy_snap). */
+long rastpy_fill_triangles(const rast_target *target, const double *xy,
+                           uint32_t ntris, const rast_tri_opts *opts,
+                           const void *pixel)
+{
+    rast_status st;
+    size_t need, n = 3 * (size_t)ntris;
+    size_t head = (n * sizeof(rast_point) + 15) & ~(size_t)15;
+    unsigned char *mem;
+    long bad;
+    st = rast_tri_scratch_size(opts, target->clip.x1 - target->clip.x0,
+                               target->clip.y1 - target->clip.y0, &need);
+    if (st != RAST_OK) return st;
+    mem = (unsigned char *)malloc(head + need + 1);
+    if (!mem) return RASTPY_E_NOMEM;
+    bad = rastpy_snap(xy, n, opts->subpixel_bits, (int32_t *)mem);
+    if (bad >= 0) {
+        free(mem);
+        return bad + 1;
+    }
+    st = rast_fill_triangles(target, (const rast_point *)mem, ntris, opts, pixel, mem + head, need);
+    free(mem);
+    return st;
 }
 
 /* For the tests: does the thread running a C call hold the GIL?  cffi

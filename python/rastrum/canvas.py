@@ -3,6 +3,7 @@
 import numpy as np
 
 from . import _core
+from . import triangles as _triangles
 from ._core import InputError
 from ._native import ffi
 
@@ -115,6 +116,43 @@ class Canvas:
         opts = _core.fill_opts(algorithm, rule, subpixel_bits, sample_offset, rounding, boundary)
         pixel = self._pixel(color)
         _core.fill_polygon(self._target, rings, pixel, opts, opts.subpixel_bits)
+
+    def fill_triangle(self, tri, color, *, algorithm="edge", subpixel_bits=8, sample_offset=0.5,
+                      rounding="exact", boundary="exact"):
+        """Paint `color` on every pixel the triangle `tri` owns.
+
+        `tri` is three (x, y) vertices, in either winding order; the other
+        arguments are those of :func:`rastrum.triangles_mask`.  A degenerate
+        triangle paints nothing.  Nothing is written when an argument is bad.
+        """
+        opts = _triangles.tri_opts(algorithm, subpixel_bits, sample_offset, rounding, boundary)
+        batch = _triangles.tris_f64(tri, single=True)
+        _triangles.fill_triangles(self._target, batch, self._pixel(color), opts)
+
+    def fill_triangles(self, tris, color, *, algorithm="edge", subpixel_bits=8, sample_offset=0.5,
+                       rounding="exact", boundary="exact"):
+        """Paint `color` on every pixel owned by a triangle of the batch.
+
+        `tris` is an (N, 3, 2) array-like of (x, y) vertices, drawn in one C
+        call; the other arguments are those of
+        :func:`rastrum.triangles_mask`.  Only the covered pixels are written,
+        and nothing at all when an argument is bad.
+
+        Examples
+        --------
+        >>> import rastrum
+        >>> c = rastrum.Canvas(6, 4, format="gray8")
+        >>> c.fill_triangles([[(0, 0), (4, 0), (4, 4)], [(0, 0), (4, 4), (0, 4)]], 9)
+        >>> c.array
+        array([[9, 9, 9, 9, 0, 0],
+               [9, 9, 9, 9, 0, 0],
+               [9, 9, 9, 9, 0, 0],
+               [9, 9, 9, 9, 0, 0]], dtype=uint8)
+        """
+        opts = _triangles.tri_opts(algorithm, subpixel_bits, sample_offset, rounding, boundary)
+        batch = _triangles.tris_f64(tris)
+        pixel = self._pixel(color)
+        _triangles.fill_triangles(self._target, batch, pixel, opts)
 
     def to_image(self):
         """A Pillow image (a copy): mode L, RGB or RGBA."""

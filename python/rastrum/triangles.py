@@ -1,0 +1,180 @@
+"""Triangle batches: ``triangles_mask`` and the helpers behind
+``Canvas.fill_triangle(s)``.
+
+Thin, like the rest: check the arguments, hand the float vertices to one C
+call (which snaps them exactly and fills the whole batch without the GIL),
+and turn statuses into exceptions.  Nothing is written when an argument is
+bad.
+"""
+
+import numpy as np
+
+from . import _core
+from ._core import InputError
+from ._native import ffi, lib
+
+
+def _triangle_algorithms():
+    """{name: code} as the C table lists them."""
+    table = {}
+    name = ffi.new("char **")
+    for code in range(lib.RAST_TRI_COUNT_):
+        if lib.rast_tri_algorithm_info(code, name) == lib.RAST_OK:
+            table[ffi.string(name[0]).decode()] = code
+    return table
+
+
+TRIANGLE_ALGORITHMS = _triangle_algorithms()
+MODES = ("set", "count")
+
+# Checked options by their arguments (and the arguments' types, so that
+# True or 8.0 are still refused), as _core.fill_opts does for polygons.
+_OPTS_CACHE = {}
+
+
+def tri_opts(algorithm, subpixel_bits, sample_offset, rounding="exact", boundary="exact"):
+    """A checked, read-only ``rast_tri_opts *``."""
+    key = (algorithm, subpixel_bits, type(subpixel_bits), sample_offset, type(sample_offset),
+           rounding, boundary)
+    try:
+        return _OPTS_CACHE[key]
+    except (KeyError, TypeError):
+        pass
+    code = TRIANGLE_ALGORITHMS[_core._name(algorithm, "triangle algorithm", TRIANGLE_ALGORITHMS)]
+    opts = ffi.new("rast_tri_opts *")
+    opts.algorithm = code
+    opts.subpixel_bits = _core._subpixel_bits(subpixel_bits)
+    opts.sample = _core.sample_code(sample_offset)
+    opts.rounding = _core.rounding_code(rounding)
+    opts.boundary = _core.boundary_code(boundary)
+    if len(_OPTS_CACHE) < 4096:
+        try:
+            _OPTS_CACHE[key] = opts
+        except TypeError:
+            pass
+    return opts
+
+
+def tris_f64(tris, single=False):
+    """The batch as a checked, C-contiguous float64 (N, 3, 2) array.
+
+    With `single`, one triangle given as a (3, 2) array-like."""
+    what = "tri" if single else "tris"
+    try:
+        a = np.ascontiguousarray(tris, dtype=np.float64)
+    except (TypeError, ValueError):
+        raise InputError("%s must be an array-like of numbers of shape %s"
+                         % (what, "(3, 2)" if single else "(N, 3, 2)")) from None
+    if single:
+        if a.shape != (3, 2):
+            raise InputError("tri must have shape (3, 2): three (x, y) vertices, not %s" % (a.shape,))
+        return a.reshape(1, 3, 2)
+    if a.size == 0 and a.ndim < 3:
+        return a.reshape(0, 3, 2)  # [] or np.zeros((0, 2)): an empty batch
+    if a.ndim != 3 or a.shape[1:] != (3, 2):
+        raise InputError("tris must have shape (N, 3, 2): N triangles of three (x, y) vertices, not %s"
+                         % (a.shape,))
+    if a.shape[0] >= 2 ** 32:
+        raise InputError("%d triangles; at most 2**32 - 1 per call" % a.shape[0])
+    return a
+
+
+def fill_triangles(target, tris, pixel, opts):
+    """Snap the checked (N, 3, 2) float64 batch and fill it into `target`."""
+    n = tris.shape[0]
+    if n == 0:
+        return
+    result = lib.rastpy_fill_triangles(target, ffi.from_buffer("double[]", tris), n, opts, pixel)
+    if result:
+        _core._check_glue(result, tris.reshape(-1, 2), opts.subpixel_bits)
+
+
+def _mode(mode):
+    if not isinstance(mode, str) or mode not in MODES:
+        raise InputError("unknown mode %r; choose one of: %s" % (mode, ", ".join(MODES)))
+    return mode
+
+
+def triangles_mask(tris, shape, *, algorithm="edge", subpixel_bits=8, sample_offset=0.5, mode="set",
+                   rounding="exact", boundary="exact"):
+    """Rasterise a batch of triangles into a mask, or count them per pixel.
+
+    Each triangle owns exactly the pixels whose sample point the polygon
+    rule gives it as a one-ring polygon (see :func:`rastrum.polygon_mask`):
+    in either winding order, and nothing when it is degenerate.  Triangles
+    that share an edge therefore never both own a pixel nor both miss one,
+    so a triangulated region is counted exactly once everywhere.
+
+    Parameters
+    ----------
+    tris : (N, 3, 2) array_like
+        N triangles, each three (x, y) vertices in pixels.  N may be 0.
+    shape : (int, int)
+        (height, width) of the result, as numpy writes it.
+    algorithm : str
+        One of ``ALGORITHMS["triangles_mask"]`` ("edge", "sweep",
+        "edgeflag"); all give the same pixels.
+    subpixel_bits : int
+        Vertices are snapped to 1/2**subpixel_bits pixel (0..16), the only
+        approximation.  The coordinate range is +-(2**27 - 1) / 2**bits px.
+    sample_offset : {0.5, 0}
+        Where a pixel's sample point is: its centre (0.5) or its top-left
+        corner (0, as OpenCV and the textbook).
+    mode : {"set", "count"}
+        "set": a bool union of the triangles.  "count": a uint16 count of
+        the triangles owning each pixel (saturating at 65535): overdraw
+        made visible.
+    rounding : {"exact", "textbook"}
+        "textbook" rounds each crossing to the nearest sample column,
+        halves going right, as the textbook's Example 3-1 does (use it with
+        ``sample_offset=0``).  Not exact; never the default.
+    boundary : {"exact", "closed", "conservative"}
+        Pixels of each triangle's outline to add, as in
+        :func:`rastrum.polygon_mask`.  Only "exact" is watertight.
+
+    Returns
+    -------
+    numpy.ndarray, shape (H, W)
+        bool for mode "set", uint16 for mode "count".
+
+    Raises
+    ------
+    InputError (a ValueError)
+        A batch not of shape (N, 3, 2), NaN or infinite coordinates,
+        coordinates out of range, a bad shape, unknown names.
+
+    Examples
+    --------
+    >>> import rastrum
+    >>> square = [[(0, 0), (4, 0), (4, 4)], [(0, 0), (4, 4), (0, 4)]]
+    >>> rastrum.triangles_mask(square, (5, 6), mode="count")
+    array([[1, 1, 1, 1, 0, 0],
+           [1, 1, 1, 1, 0, 0],
+           [1, 1, 1, 1, 0, 0],
+           [1, 1, 1, 1, 0, 0],
+           [0, 0, 0, 0, 0, 0]], dtype=uint16)
+    >>> rastrum.triangles_mask([[(1, 1), (5, 3), (4, 7)]], (8, 7),
+    ...                        sample_offset=0).astype(int)[1:7]
+    array([[0, 0, 0, 0, 0, 0, 0],
+           [0, 0, 1, 0, 0, 0, 0],
+           [0, 0, 1, 1, 1, 0, 0],
+           [0, 0, 0, 1, 1, 0, 0],
+           [0, 0, 0, 1, 1, 0, 0],
+           [0, 0, 0, 0, 1, 0, 0]])
+    """
+    opts = tri_opts(algorithm, subpixel_bits, sample_offset, rounding, boundary)
+    h, w = _core.shape2(shape)
+    count = _mode(mode) == "count"
+    batch = tris_f64(tris)
+    out = np.zeros((h, w), np.uint16 if count else np.bool_)
+    if not (h and w and batch.shape[0]):
+        return out
+    target = ffi.new("rast_target *")
+    _core._check(lib.rast_target_init(target, ffi.from_buffer(out, require_writable=True), w, h,
+                                      w * out.itemsize,
+                                      lib.RAST_FORMAT_COUNT16 if count else lib.RAST_FORMAT_GRAY8))
+    fill_triangles(target, batch, ffi.NULL if count else _ONE, opts)
+    return out
+
+
+_ONE = ffi.new("unsigned char[1]", [1])

@@ -6,6 +6,7 @@
 #   make asan            C and Python tests under AddressSanitizer + UBSan
 #   make strict          the core under gcc and clang, -std=c99 -pedantic -Werror
 #   make firmware-check  the core for Cortex-M0 and rv32: no float, heap or stdio; .text sizes
+#   make cross-check     C tests on 32-bit ARM and big-endian MIPS (qemu), same pixels as x86
 #   make install         PREFIX=/usr/local DESTDIR= : header, libraries, rastrum.pc
 #   make uninstall       the reverse
 #   make example         the pkg-config example (after make install)
@@ -38,7 +39,7 @@ SONAME  := librastrum.so.$(VERSION_MAJOR)
 C_TESTS := $(patsubst tests/c/%.c,build/tests/%,$(wildcard tests/c/test_*.c))
 SAN     := -fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer -g
 
-.PHONY: firmware-check all lib test test-c test-install test-py demo asan asan-c asan-py strict install uninstall example clean
+.PHONY: firmware-check cross-check all lib test test-c test-install test-py demo asan asan-c asan-py strict install uninstall example clean
 
 all: lib
 lib: build/librastrum.a build/librastrum.so
@@ -128,6 +129,9 @@ strict:
 # ---- bare metal --------------------------------------------------------------
 firmware-check:
 	@tools/firmware-check.sh build/fw
+
+cross-check:
+	@tools/cross-check.sh build/cross
 
 # ---- install ----------------------------------------------------------------------
 build/rastrum.pc: rastrum.pc.in csrc/include/rastrum.h

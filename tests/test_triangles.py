@@ -131,6 +131,27 @@ def test_count_matches_oracle_fine_subpixel(S, data):
     check_batch(tris, shape, S, o, rounding)
 
 
+@pytest.mark.parametrize("boundary", ["closed", "conservative"])
+@settings(max_examples=examples(40))
+@given(data=st.data())
+def test_boundary_modes_match_oracle(boundary, data):
+    """Each triangle adds its outline as its one-ring polygon would; the
+    count shows the shared outline pixels twice (not watertight, by
+    definition)."""
+    from oracle_boundary import ORACLES
+    S = data.draw(st.sampled_from([0, 3, 8]), label="S")
+    o = data.draw(st.sampled_from(OFFSETS), label="o")
+    rounding = data.draw(st.sampled_from(ROUNDINGS), label="rounding")
+    tris, shape = data.draw(batches(S, o, 16, 16, 4), label="batch")
+    kw = dict(subpixel_bits=S, sample_offset=o, rounding=rounding)
+    exp = np.zeros(shape, np.int64)
+    for t in tris:
+        exp += ORACLES[boundary]([list(map(tuple, t))], shape, **kw)
+    for alg in ALGOS:
+        got = rastrum.triangles_mask(tris, shape, algorithm=alg, mode="count", boundary=boundary, **kw)
+        assert_same(got, exp, f"{alg} {boundary} {lit(tris)} {shape} {kw}")
+
+
 @settings(max_examples=examples(100))
 @given(data=st.data())
 def test_vertex_order_never_matters(data):

@@ -17,6 +17,8 @@ typedef struct rast__grid {
     int32_t unit;     /* 2^(S+1): one pixel in internal units */
     int32_t off;      /* sample offset in internal units: 2^S or 0 */
     int32_t textbook; /* 1: RAST_ROUND_TEXTBOOK, 0: exact */
+    int32_t shift;    /* S + 1, unit == 1 << shift: divisions by the unit
+                         in a small primitive's setup become shifts */
 } rast__grid;
 
 /* Check S, the sample, rounding and boundary options and set up the grid.
@@ -50,10 +52,13 @@ static inline int64_t rast__cross_col(int64_t num, int64_t den, const rast__grid
 }
 
 /* The first row whose sample is at or below internal ordinate y:
- * the least j with j*unit + off >= y. */
+ * the least j with j*unit + off >= y, for |y| < 2^40.  A shift of the
+ * value made non-negative by a bias, instead of a division. */
 static inline int64_t rast__row_at_or_after(int64_t y, const rast__grid *g)
 {
-    return rast__ceildiv(y - g->off, g->unit);
+    const int64_t bias = (int64_t)1 << 41;
+    return (int64_t)((uint64_t)(y - g->off + g->unit - 1 + bias) >> g->shift) -
+           (bias >> g->shift);
 }
 
 /*
@@ -82,6 +87,13 @@ typedef struct rast__edge {
  * one of those rows, 0 otherwise.  Coordinates must be in range. */
 int rast__edge_setup(rast__edge *ed, rast_point a, rast_point b,
                      const rast__grid *g, int32_t row_lo, int32_t row_hi);
+
+/* The same for a caller that has the rows already (a triangle shares each
+ * vertex's row between two edges): `top` above `bottom` (top.y < bottom.y,
+ * in range), the edge walking rows [first, end) (first < end, all crossed
+ * by the edge), direction `dir`. */
+void rast__edge_start(rast__edge *ed, rast_point top, rast_point bottom,
+                      int32_t dir, int32_t first, int32_t end, const rast__grid *g);
 
 /* Advance an edge to the next row.  Branch-free: whether the remainder
  * wraps is a coin toss for most slopes, which a branch would mispredict. */
@@ -142,6 +154,17 @@ static inline void rast__sink_span(rast__sink *s, int32_t y, int32_t x0, int32_t
     s->xs[2 * s->n] = x0;
     s->xs[2 * s->n + 1] = x1;
     s->n++;
+}
+
+/* For a filler with at most one run per row (a triangle): hand the run of
+ * row y on at once, clipped, bypassing the gathering.  The sink must be
+ * empty (flushed) and rows must still come in increasing order. */
+static inline void rast__sink_row(rast__sink *s, int32_t y, int32_t x0, int32_t x1)
+{
+    int32_t xs[2];
+    xs[0] = x0 < s->cx0 ? s->cx0 : x0;
+    xs[1] = x1 > s->cx1 ? s->cx1 : x1;
+    if (xs[0] < xs[1]) s->fn(s->user, y, xs, 1);
 }
 
 /* Bump allocation out of the caller's scratch buffer. */

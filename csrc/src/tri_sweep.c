@@ -26,8 +26,8 @@ rast_status rast__tri_sweep_fill(const rast_point *t, const rast__grid *g,
 {
     rast_point a = t[0], b = t[1], c = t[2], s;
     rast__edge lng, sh;
-    int64_t side;
-    int k;
+    int64_t side, r;
+    int32_t ra, rb, rc, j;
     (void)arena;
 
     if (b.y < a.y) { s = a; a = b; b = s; }
@@ -38,27 +38,33 @@ rast_status rast__tri_sweep_fill(const rast_point *t, const rast__grid *g,
      * edge function of a->c at b; input units: products below 2^56). */
     side = (int64_t)(b.x - a.x) * (c.y - a.y) - (int64_t)(b.y - a.y) * (c.x - a.x);
     if (side == 0) return RAST_OK; /* degenerate: both crossings coincide */
-    if (!rast__edge_setup(&lng, a, c, g, clip->y0, clip->y1)) return RAST_OK;
 
-    /* The short edges' visible rows follow each other and together are the
-     * long edge's, so the long edge is always at the short edge's row. */
-    for (k = 0; k < 2; k++) {
-        int32_t j;
-        if (!rast__edge_setup(&sh, k ? b : a, k ? c : b, g, clip->y0, clip->y1)) continue;
-        if (side > 0) {
-            for (j = sh.row; j < sh.end; j++) {
-                rast__sink_span(sink, j, lng.x, sh.x);
-                rast__edge_step(&lng);
-                rast__edge_step(&sh);
-            }
-        } else {
-            for (j = sh.row; j < sh.end; j++) {
-                rast__sink_span(sink, j, sh.x, lng.x);
-                rast__edge_step(&lng);
-                rast__edge_step(&sh);
-            }
+    /* Each vertex's first row at or below it, once: the long edge walks
+     * [ra, rc), the short ones [ra, rb) and [rb, rc), all cut to the clip. */
+    r = rast__row_at_or_after(2 * (int64_t)a.y, g);
+    ra = r > clip->y0 ? (int32_t)r : clip->y0;
+    r = rast__row_at_or_after(2 * (int64_t)c.y, g);
+    rc = r < clip->y1 ? (int32_t)r : clip->y1;
+    if (ra >= rc) return RAST_OK;
+    r = rast__row_at_or_after(2 * (int64_t)b.y, g);
+    rb = r < ra ? ra : (r > rc ? rc : (int32_t)r);
+
+    rast__edge_start(&lng, a, c, 1, ra, rc, g);
+    if (ra < rb) {
+        rast__edge_start(&sh, a, b, 1, ra, rb, g);
+        for (j = ra; j < rb; j++) {
+            rast__sink_row(sink, j, side > 0 ? lng.x : sh.x, side > 0 ? sh.x : lng.x);
+            rast__edge_step(&lng);
+            rast__edge_step(&sh);
         }
     }
-    rast__sink_flush(sink);
+    if (rb < rc) {
+        rast__edge_start(&sh, b, c, 1, rb, rc, g);
+        for (j = rb; j < rc; j++) {
+            rast__sink_row(sink, j, side > 0 ? lng.x : sh.x, side > 0 ? sh.x : lng.x);
+            rast__edge_step(&lng);
+            rast__edge_step(&sh);
+        }
+    }
     return RAST_OK;
 }

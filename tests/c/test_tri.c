@@ -230,6 +230,68 @@ static void test_random(void)
     CHECK(bad == 0);
 }
 
+/* ---- the edge setup's fast paths against the formulas in 64 bits ------------
+ * rast__edge_setup takes rows by shifts and the first crossing by a 32-bit
+ * division when it fits; each field must be what the plain 64-bit formulas
+ * of internal.h give, for short edges near the origin and edges across the
+ * whole range seen through windows anywhere. */
+static int edge_equals_formula(rast_point a, rast_point b, const rast__grid *g, int32_t lo, int32_t hi)
+{
+    rast__edge ed;
+    int64_t ya = 2 * (int64_t)a.y, yb = 2 * (int64_t)b.y, first, end, x, n, q;
+    int got = rast__edge_setup(&ed, a, b, g, lo, hi);
+    if (ya > yb) {
+        rast_point t = a;
+        a = b;
+        b = t;
+        ya = 2 * (int64_t)a.y;
+        yb = 2 * (int64_t)b.y;
+    }
+    first = rast__ceildiv(ya - g->off, g->unit);
+    end = rast__ceildiv(yb - g->off, g->unit);
+    if (first < lo) first = lo;
+    if (end > hi) end = hi;
+    if (ya == yb || first >= end) return got == 0;
+    if (!got || ed.row != first || ed.end != end) return 0;
+    /* the crossing of row `first`, as rast__cross_col computes it */
+    q = yb - ya;
+    n = 2 * (int64_t)a.x * q + (first * g->unit + g->off - ya) * (2 * (int64_t)b.x - 2 * (int64_t)a.x);
+    x = rast__cross_col(n, q, g);
+    if (ed.x != x || ed.q != q * g->unit) return 0;
+    /* e = x*q' - n' (q' = q*unit, n' the numerator the walk uses), checked
+     * without forming x*q' (it may not fit): 0 <= e < q' and q' | e + n' */
+    n -= (int64_t)g->off * q;
+    if (g->textbook) n += (int64_t)(g->unit / 2) * q - ed.q + 1;
+    if (ed.e < 0 || ed.e >= ed.q || (ed.e + n) % ed.q != 0) return 0;
+    return ed.step == rast__floordiv(2 * (int64_t)b.x - 2 * (int64_t)a.x, q) && ed.dr >= 0 && ed.dr < ed.q;
+}
+
+static void test_edge_setup(void)
+{
+    int iter, bad = 0;
+    for (iter = 0; iter < 200000; iter++) {
+        int s = (int)(rng() % 17), big = (int)(rng() % 3);
+        rast__grid g;
+        rast_point a, b;
+        int32_t lo, hi, m = big ? RAST_COORD_MAX : (int32_t)(64 << s);
+        rast__grid_init(&g, s, (rast_sample)(rng() & 1), (rast_rounding)(rng() & 1), RAST_BOUNDARY_EXACT);
+        a.x = (int32_t)(rng() % (2u * (uint32_t)m + 1)) - m;
+        a.y = (int32_t)(rng() % (2u * (uint32_t)m + 1)) - m;
+        b.x = (int32_t)(rng() % (2u * (uint32_t)m + 1)) - m;
+        b.y = (int32_t)(rng() % (2u * (uint32_t)m + 1)) - m;
+        if (big == 2) a.x = (rng() & 1) ? RAST_COORD_MAX : -RAST_COORD_MAX;
+        /* a window of rows: everything, or 40 rows somewhere along the edge */
+        lo = -RAST_MAX_DIM;
+        hi = RAST_MAX_DIM;
+        if (rng() & 1) {
+            lo = (int32_t)rast__floordiv(2 * (int64_t)(a.y + (b.y - a.y) / 2), g.unit) - 20;
+            hi = lo + 40;
+        }
+        bad += !edge_equals_formula(a, b, &g, lo, hi);
+    }
+    CHECK(bad == 0);
+}
+
 /* ---- coordinates at the limit ------------------------------------------------ */
 static void test_limits(void)
 {
@@ -473,6 +535,7 @@ static void test_errors(void)
 int main(void)
 {
     test_example_3_1();
+    test_edge_setup();
     test_random();
     test_limits();
     test_watertight();

@@ -254,7 +254,8 @@ void rast__bound_end(rast__bound *b);
  * Coverage of one triangle t[0..2] (in range, any orientation, possibly
  * degenerate) inside `clip` (non-empty, cut to the target), handed to
  * `sink` row by row from the top; work memory from `arena`, at most
- * what the algorithm's scratch function asked for the clip. */
+ * what the algorithm's scratch function asked for the clip.  The sink is
+ * empty on entry and must be left empty (flushed) on return. */
 typedef rast_status (*rast__tri_fill_fn)(const rast_point *t, const rast__grid *g,
                                          const rast_rect *clip, rast__sink *sink,
                                          rast__arena *arena);

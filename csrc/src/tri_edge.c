@@ -50,6 +50,14 @@ typedef struct rast__fe {
 
 static void rast__fe_walk(rast__fe *f, int32_t lo, int32_t hi)
 {
+    /* One column either way without a branch: from one row to the next
+     * most edges move by at most one column, and which way is a coin toss
+     * a branch would mispredict.  (back and fwd exclude each other.) */
+    int32_t back = (f->g - f->da >= 0) & (f->c > lo);
+    int32_t fwd = (f->g < 0) & (f->c < hi);
+    f->c += fwd - back;
+    f->g += (fwd - back) * f->da;
+    /* Flatter edges walk on. */
     if (f->g >= 0) {
         while (f->c > lo && f->g - f->da >= 0) {
             f->g -= f->da;
@@ -69,9 +77,8 @@ rast_status rast__tri_edge_fill(const rast_point *t, const rast__grid *g,
 {
     int64_t x[3], y[3], area, xmin, xmax, ymin, ymax, shift, r;
     int64_t u = g->unit, px, py;
-    rast__fe fe[3];
-    int32_t row0, row1, lo, hi, j, k;
-    int left[3];
+    rast__fe fl[2], fr[2]; /* left and right bounds */
+    int32_t row0, row1, lo, hi, j, k, nl = 0, nr = 0;
     (void)arena;
 
     for (k = 0; k < 3; k++) {
@@ -110,13 +117,16 @@ rast_status rast__tri_edge_fill(const rast_point *t, const rast__grid *g,
     hi = r < clip->x1 ? (int32_t)r : clip->x1;
     if (lo >= hi) return RAST_OK;
 
-    /* Each non-horizontal edge at (lo, row0).  px - x and py - y stay below
+    /* Each non-horizontal edge at (lo, row0), as a left bound (the first
+     * column inside it) or a right one (the first column outside it); a
+     * triangle has one or two of each.  px - x and py - y stay below
      * 2^29 + 2 unit on the box's samples, so each product is below 2^59. */
     px = (int64_t)lo * u + shift;
     py = (int64_t)row0 * u + g->off;
     for (k = 0; k < 3; k++) {
         int32_t n = k == 2 ? 0 : k + 1;
         int64_t dx = x[n] - x[k], dy = y[n] - y[k], e;
+        rast__fe *f;
         int in_on_tie;
         if (dy == 0) continue; /* horizontal: the rows already say it */
         e = (px - x[k]) * dy - (py - y[k]) * dx;
@@ -124,32 +134,37 @@ rast_status rast__tri_edge_fill(const rast_point *t, const rast__grid *g,
          * exact, left edges (dy > 0); textbook, right edges. */
         in_on_tie = (dy > 0) != (g->textbook != 0);
         if (dy > 0) { /* left edge: G = E - 1 + in_on_tie >= 0 is inside */
-            fe[k].g = e - 1 + in_on_tie;
-            fe[k].da = dy * u;
-            fe[k].db = -dx * u;
+            f = &fl[nl++];
+            f->g = e - 1 + in_on_tie;
+            f->da = dy * u;
+            f->db = -dx * u;
         } else {      /* right edge: G = -E - in_on_tie >= 0 is outside */
-            fe[k].g = -e - in_on_tie;
-            fe[k].da = -dy * u;
-            fe[k].db = dx * u;
+            f = &fr[nr++];
+            f->g = -e - in_on_tie;
+            f->da = -dy * u;
+            f->db = dx * u;
         }
-        fe[k].c = lo;
-        left[k] = dy > 0;
+        f->c = lo;
     }
 
     for (j = row0; j < row1; j++) {
-        int32_t x0 = lo, x1 = hi;
-        for (k = 0; k < 3; k++) {
-            if (y[k == 2 ? 0 : k + 1] == y[k]) continue;
-            rast__fe_walk(&fe[k], lo, hi);
-            if (left[k]) {
-                if (fe[k].c > x0) x0 = fe[k].c;
-            } else {
-                if (fe[k].c < x1) x1 = fe[k].c;
-            }
-            fe[k].g += fe[k].db;
+        int32_t x0, x1;
+        rast__fe_walk(&fl[0], lo, hi);
+        rast__fe_walk(&fr[0], lo, hi);
+        x0 = fl[0].c;
+        x1 = fr[0].c;
+        fl[0].g += fl[0].db;
+        fr[0].g += fr[0].db;
+        if (nl > 1) {
+            rast__fe_walk(&fl[1], lo, hi);
+            if (fl[1].c > x0) x0 = fl[1].c;
+            fl[1].g += fl[1].db;
+        } else if (nr > 1) {
+            rast__fe_walk(&fr[1], lo, hi);
+            if (fr[1].c < x1) x1 = fr[1].c;
+            fr[1].g += fr[1].db;
         }
-        rast__sink_span(sink, j, x0, x1);
+        rast__sink_row(sink, j, x0, x1);
     }
-    rast__sink_flush(sink);
     return RAST_OK;
 }

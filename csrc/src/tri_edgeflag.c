@@ -63,8 +63,6 @@ rast_status rast__tri_edgeflag_fill(const rast_point *t, const rast__grid *g,
     right = (int32_t *)rast__take(arena, n * sizeof(int32_t));
     if (!left || !right) return RAST_E_SCRATCH;
     if (!rast__tri_span_flags(t, g, clip->y0, clip->y1, left, right, &r0, &r1)) return RAST_OK;
-    for (j = r0; j < r1; j++)
-        rast__sink_span(sink, j, left[j - clip->y0], right[j - clip->y0]);
-    rast__sink_flush(sink);
+    for (j = r0; j < r1; j++) rast__sink_row(sink, j, left[j - clip->y0], right[j - clip->y0]);
     return RAST_OK;
 }

@@ -106,8 +106,9 @@ static rast_status rast__tri_fill(const rast_point *tris, uint32_t ntris,
     sink.n = 0;
     for (k = 0; k < ntris; k++) {
         const rast_point *t = tris + 3 * (size_t)k;
-        /* Each filler flushes the sink when it is done, so one triangle's
-         * spans never merge with the next one's (COUNT16 counts both). */
+        /* Fillers leave the sink empty (rast__sink_row, or a flush), so one
+         * triangle's spans never merge with the next one's: COUNT16 counts
+         * both. */
         arena.p = (unsigned char *)scratch;
         arena.left = scratch_bytes;
         if (opts->boundary == RAST_BOUNDARY_EXACT) {

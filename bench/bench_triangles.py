@@ -36,12 +36,17 @@ from __future__ import annotations
 import argparse
 import ctypes
 import gc
+import os
 import statistics
 import sys
 import time
 from pathlib import Path
 
-import numpy as np
+# Single-threaded numpy: an idle BLAS thread spinning on the second core
+# would be timed as noise on a two-core machine.
+os.environ.setdefault("OPENBLAS_NUM_THREADS", "1")
+
+import numpy as np  # noqa: E402
 
 ROOT = Path(__file__).resolve().parent.parent
 H = W = 1024

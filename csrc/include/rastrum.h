@@ -408,18 +408,24 @@ RAST_API rast_status rast_tri_algorithm_info(rast_tri_algorithm algorithm,
                                              const char **name);
 
 /* Scratch bytes a triangle batch with `opts` needs for a clip `width` x
- * `height` pixels; independent of the number of triangles.  Errors:
- * RAST_E_NULL, RAST_E_ALGORITHM, RAST_E_SIZE, RAST_E_ARG. */
+ * `height` pixels; independent of the number of triangles ("edge" and
+ * "sweep" need none in the exact boundary mode, "edgeflag" two int32_t per
+ * row).  Errors: RAST_E_NULL, RAST_E_SUBPIXEL, RAST_E_ALGORITHM,
+ * RAST_E_SIZE, RAST_E_ARG. */
 RAST_API rast_status rast_tri_scratch_size(const rast_tri_opts *opts,
                                            int32_t width, int32_t height,
                                            size_t *bytes);
 
 /* Fill `ntris` triangles, one after the other, each writing `pixel` over
- * the pixels of target->clip it owns (RAST_FORMAT_COUNT16: adding 1).
- * Scratch as rast_fill_polygon, sized by rast_tri_scratch_size().
- * Errors, all before anything is written: RAST_E_NULL, RAST_E_RANGE,
- * RAST_E_SUBPIXEL, RAST_E_ALGORITHM, RAST_E_FORMAT, RAST_E_SCRATCH,
- * RAST_E_ALIGN, RAST_E_ARG.  `pixel` may be NULL for RAST_FORMAT_COUNT16. */
+ * the pixels of target->clip it owns (RAST_FORMAT_COUNT16: adding 1, so a
+ * pixel owned by k triangles gets k).  Geometry outside the clip is
+ * clipped, not an error; ntris may be 0 (tris may then be NULL).
+ * Scratch as rast_fill_polygon, sized by rast_tri_scratch_size() for the
+ * clip.  Every vertex of the batch is checked before the first triangle is
+ * drawn.  Errors, all before anything is written: RAST_E_NULL,
+ * RAST_E_RANGE, RAST_E_SUBPIXEL, RAST_E_ALGORITHM, RAST_E_FORMAT,
+ * RAST_E_SIZE (a bad target), RAST_E_SCRATCH, RAST_E_ALIGN, RAST_E_ARG.
+ * `pixel` may be NULL for RAST_FORMAT_COUNT16. */
 RAST_API rast_status rast_fill_triangles(const rast_target *target,
                                          const rast_point *tris, uint32_t ntris,
                                          const rast_tri_opts *opts,

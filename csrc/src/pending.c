@@ -35,11 +35,3 @@ rast_status rast_fill_triangles_spans(const rast_point *tris, uint32_t ntris,
     (void)scratch_bytes;
     return RAST_E_ARG;
 }
-
-/* predicates (predicate.c) */
-rast_status rast_point_in_triangle(rast_point p, const rast_point *t, rast_predicate method,
-                                   int *inside)
-{
-    (void)p; (void)t; (void)method; (void)inside;
-    return RAST_E_ARG;
-}

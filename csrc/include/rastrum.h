@@ -513,8 +513,8 @@ RAST_API rast_status rast_line_pixels(rast_point a, rast_point b,
  * contains no point under every method.  (The seeds' formulas taken
  * literally would not: SAMESIDE's "v1 . v2 >= 0" accepts the whole plane,
  * CROSS and AREA the whole line through the vertices (the plane when all
- * three coincide); the closed tests
- * check the area first.  OWNER needs no check: the crossings cancel.)
+ * three coincide); the closed tests check the area first.  OWNER needs no
+ * check: the crossings cancel.)
  * Either winding order.  Exact: no rounding, no overflow in range.
  * Errors: RAST_E_NULL, RAST_E_RANGE, RAST_E_ARG (unknown method). */
 RAST_API rast_status rast_point_in_triangle(rast_point p, const rast_point *t,

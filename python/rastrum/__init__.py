@@ -11,8 +11,9 @@ from . import _core
 from ._core import InputError, RastrumError
 from ._native import lib
 from .canvas import Canvas
+from .lines import line_pixels, point_in_triangle
 
-__all__ = ["polygon_mask", "Canvas", "ALGORITHMS", "RastrumError", "InputError", "__version__"]
+__all__ = ["polygon_mask", "line_pixels", "point_in_triangle", "Canvas", "ALGORITHMS", "RastrumError", "InputError", "__version__"]
 
 _v = lib.rast_version_number()
 __version__ = "%d.%d.%d" % (_v // 10000, _v // 100 % 100, _v % 100)
@@ -23,6 +24,8 @@ ALGORITHMS = {
     "polygon_mask": {name: rules for name, (_, rules) in _core.POLYGON_ALGORITHMS.items()},
 }
 ALGORITHMS["Canvas.fill_polygon"] = ALGORITHMS["polygon_mask"]
+# Lines have no fill rules.
+ALGORITHMS["Canvas.line"] = {"bresenham": (), "dda": ()}
 
 def polygon_mask(rings, shape, *, rule="evenodd", algorithm="aet", subpixel_bits=8, sample_offset=0.5,
                  rounding="exact", boundary="exact"):

@@ -10,6 +10,12 @@ Writes into DIR (default ./out):
                     and o = 1/2 (pixel centres, the default). Filled squares
                     are the pixels rastrum sets; dots are the sample points;
                     the red line is the exact polygon.
+- fig3_19_textbook.png  the same polygon under rounding="textbook" (each
+                    crossing rounded to the nearest column, as the book's
+                    worked example) beside the exact rule.
+- boundary_modes.png    one polygon under boundary="exact", "closed" (plus
+                    the library's outline) and "conservative" (plus every
+                    pixel an edge passes through).
 - holes.png         the disc with three holes, even-odd | non-zero; top row
                     with the holes running opposite to the disc (both rules
                     agree), bottom row with the holes running the same way
@@ -85,13 +91,11 @@ def stack(rows, gap=0):
 # Figure 3-19
 # ---------------------------------------------------------------------------
 
-def fig3_19_panel(offset, scale=40, margin=36):
-    """The 14x14 mask at sample offset `offset`, upscaled nearest-neighbour,
-    with the pixel grid, the sample points and the exact polygon."""
+def grid_panel(mask, ring, offset, scale=40, margin=36, labels=True):
+    """A small mask upscaled nearest-neighbour, with the pixel grid, the
+    sample points (filled when the pixel is set) and the exact polygon."""
     from PIL import Image, ImageDraw
-    rings, shape = scenes.fig3_19()
-    mask = rastrum.polygon_mask(rings, shape, sample_offset=offset)
-    h, w = shape
+    h, w = mask.shape
     big = mask_image(mask, fg=150, bg=255).resize((w * scale, h * scale),
                                                   Image.NEAREST)
     img = Image.new("RGB", (w * scale + 2 * margin, h * scale + 2 * margin),
@@ -108,10 +112,12 @@ def fig3_19_panel(offset, scale=40, margin=36):
         return (margin + x * scale, margin + y * scale)
     for k in range(w + 1):           # pixel boundaries
         d.line([P(k, 0), P(k, h)], fill=(200, 200, 200))
+    for k in range(h + 1):
         d.line([P(0, k), P(w, k)], fill=(200, 200, 200))
     for k in range(w):               # integer coordinates on the axes
         d.text((margin + k * scale + 2, margin - 18), str(k), fill="gray",
                font=small)
+    for k in range(h):
         d.text((4, margin + k * scale + 2), str(k), fill="gray", font=small)
     r = 4                            # sample points
     for j in range(h):
@@ -122,12 +128,20 @@ def fig3_19_panel(offset, scale=40, margin=36):
                 d.ellipse(box, fill=(20, 40, 140))
             else:
                 d.ellipse(box, outline=(120, 120, 120))
-    pts = [P(x, y) for x, y in rings[0].tolist()]
+    pts = [P(x, y) for x, y in np.asarray(ring, float).tolist()]
     d.line(pts + [pts[0]], fill=(220, 0, 0), width=3)
-    for k, (x, y) in enumerate(rings[0].tolist()):
-        px, py = P(x, y)
-        d.text((px + 6, py - 20), f"P{k}", fill=(220, 0, 0), font=small)
-    return img, int(mask.sum())
+    if labels:
+        for k, (x, y) in enumerate(np.asarray(ring, float).tolist()):
+            px, py = P(x, y)
+            d.text((px + 6, py - 20), f"P{k}", fill=(220, 0, 0), font=small)
+    return img
+
+
+def fig3_19_panel(offset, rounding="exact"):
+    rings, shape = scenes.fig3_19()
+    mask = rastrum.polygon_mask(rings, shape, sample_offset=offset,
+                                rounding=rounding)
+    return grid_panel(mask, rings[0], offset), int(mask.sum())
 
 
 def render_fig3_19(out: Path):
@@ -139,7 +153,36 @@ def render_fig3_19(out: Path):
         labels.append(f"Figure 3-19, {name}: {n} pixels")
     path = out / "fig3_19.png"
     labelled_row(panels, labels, size=20).save(path)
-    return [path]
+    return [path, render_textbook(out), render_boundary_modes(out)]
+
+
+def render_textbook(out: Path):
+    """Figure 3-19 as the book rounds it (each crossing to the nearest
+    column) beside the exact rule, both with samples on the corners."""
+    panels, labels = [], []
+    for rounding in ("textbook", "exact"):
+        img, n = fig3_19_panel(0.0, rounding)
+        panels.append(img)
+        labels.append(f'rounding="{rounding}", o = 0: {n} pixels')
+    path = out / "fig3_19_textbook.png"
+    labelled_row(panels, labels, size=20).save(path)
+    return path
+
+
+BOUNDARY_RING = [(1.6, 1.3), (13.4, 3.2), (10.2, 10.6), (5.5, 7.2), (2.4, 9.7)]
+
+
+def render_boundary_modes(out: Path):
+    """One polygon under the three boundary modes (pixel centres)."""
+    panels, labels = [], []
+    for boundary in ("exact", "closed", "conservative"):
+        mask = rastrum.polygon_mask(BOUNDARY_RING, (12, 15), boundary=boundary)
+        panels.append(grid_panel(mask, BOUNDARY_RING, 0.5, scale=32,
+                                 labels=False))
+        labels.append(f'boundary="{boundary}": {int(mask.sum())} px')
+    path = out / "boundary_modes.png"
+    labelled_row(panels, labels, size=20).save(path)
+    return path
 
 
 # ---------------------------------------------------------------------------

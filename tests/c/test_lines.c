@@ -8,6 +8,7 @@
 #include <string.h>
 
 #include "check.h"
+#include "internal.h" /* rast__line_rows, rast__line_run: the line by formula */
 #include "rastrum.h"
 
 #define GUARD 0xA5
@@ -593,6 +594,76 @@ static void test_predicates(void)
     }
 }
 
+/* ---- the walk equals the formula (linerun.c), pixel for pixel ---------------
+ * rast__line_rows / rast__line_run give the same line row by row by exact
+ * division; Bresenham's incremental walk must list exactly those pixels.
+ * Small lines are compared whole; lines up to the range limit through a
+ * window around a point of theirs. */
+static void test_linerun(void)
+{
+    enum { WMAX = 64 };
+    static int32_t xy[2 * 4 * WMAX * WMAX];
+    int iter, bad = 0, rows_seen = 0;
+    for (iter = 0; iter < 20000; iter++) {
+        int s = (int)(rng() % (RAST_MAX_SUBPIXEL_BITS + 1)), center = (int)(rng() & 1);
+        int huge = rng() % 4 == 0;
+        int32_t span = huge ? RAST_COORD_MAX : (int32_t)(30 << (s > 8 ? 8 : s));
+        rast__grid g;
+        rast_point a, b;
+        rast_rect win;
+        int64_t r0, r1, j;
+        long n, k;
+        a.x = (int32_t)(rng() % (2u * (uint32_t)span + 1u)) - span;
+        a.y = (int32_t)(rng() % (2u * (uint32_t)span + 1u)) - span;
+        b.x = (int32_t)(rng() % (2u * (uint32_t)span + 1u)) - span;
+        b.y = (int32_t)(rng() % (2u * (uint32_t)span + 1u)) - span;
+        if (rng() % 5 == 0) b.y = a.y + (b.x - a.x) / 2 / ((rng() & 1) ? 1 : -1); /* ties */
+        if (b.y > RAST_COORD_MAX || b.y < -RAST_COORD_MAX) b.y = a.y;
+        if (rng() % 10 == 0) b = a;
+        if (rast__grid_init(&g, s, center ? RAST_SAMPLE_CENTER : RAST_SAMPLE_CORNER, RAST_ROUND_EXACT,
+                            RAST_BOUNDARY_EXACT) != RAST_OK) {
+            bad++;
+            continue;
+        }
+        if (huge) { /* a window around the point halfway */
+            int32_t cx = (int32_t)(((int64_t)a.x + b.x) / 2 >> s), cy = (int32_t)(((int64_t)a.y + b.y) / 2 >> s);
+            win.x0 = cx - (int32_t)(rng() % WMAX);
+            win.y0 = cy - (int32_t)(rng() % WMAX);
+        } else {
+            win.x0 = -40;
+            win.y0 = -40;
+        }
+        win.x1 = win.x0 + WMAX + 16;
+        win.y1 = win.y0 + WMAX + 16;
+        n = pixels(a, b, s, center, 0, &win, xy, sizeof xy / sizeof xy[0] / 2);
+        if (n < 0) {
+            bad++;
+            continue;
+        }
+        rast__line_rows(a, b, &g, &r0, &r1);
+        for (j = win.y0; j < win.y1; j++) {
+            int64_t x0 = 0, x1 = 0, lo = INT64_MAX, hi = INT64_MIN, cnt = 0;
+            if (j >= r0 && j < r1) {
+                rast__line_run(a, b, &g, j, &x0, &x1);
+                if (x0 >= x1) bad++; /* never empty inside [r0, r1) */
+                if (x0 < win.x0) x0 = win.x0;
+                if (x1 > win.x1) x1 = win.x1;
+                if (x1 < x0) x1 = x0;
+            }
+            for (k = 0; k < n; k++) {
+                if (xy[2 * k + 1] != j) continue;
+                cnt++;
+                if (xy[2 * k] < lo) lo = xy[2 * k];
+                if (xy[2 * k] > hi) hi = xy[2 * k];
+            }
+            if (cnt != x1 - x0 || (cnt && (lo != x0 || hi != x1 - 1))) bad++;
+            rows_seen += cnt > 0;
+        }
+    }
+    CHECK(bad == 0);
+    CHECK(rows_seen > 10000);
+}
+
 int main(void)
 {
     test_seed_002_by_hand();
@@ -605,5 +676,6 @@ int main(void)
     test_dda();
     test_errors();
     test_predicates();
+    test_linerun();
     return check_report("test_lines");
 }

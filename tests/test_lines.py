@@ -341,3 +341,21 @@ def test_docstring_examples_run():
     for mod in (rastrum.lines, rastrum.canvas):
         failed, attempted = doctest.testmod(mod, optionflags=doctest.NORMALIZE_WHITESPACE)
         assert attempted and not failed
+
+
+@pytest.mark.parametrize("o", OFFSETS)
+@settings(max_examples=examples(50))
+@given(data=st.data())
+def test_closed_boundary_mode_adds_these_lines(o, data):
+    """boundary="closed" (boundary.c, through linerun.c) is the exact fill
+    plus the pixels line_pixels gives for every edge: the two files agree."""
+    S = data.draw(st.integers(0, 8))
+    h, w = data.draw(st.integers(1, 16)), data.draw(st.integers(1, 16))
+    cx, cy = coordinates(S, o, w), coordinates(S, o, h)
+    ring = [(data.draw(cx), data.draw(cy)) for _ in range(data.draw(st.integers(3, 6)))]
+    want = rastrum.polygon_mask(ring, (h, w), subpixel_bits=S, sample_offset=o)
+    for p0, p1 in zip(ring, ring[1:] + ring[:1]):
+        for x, y in rastrum.line_pixels(p0, p1, subpixel_bits=S, sample_offset=o, clip=(0, 0, w, h)).tolist():
+            want[y, x] = True
+    got = rastrum.polygon_mask(ring, (h, w), subpixel_bits=S, sample_offset=o, boundary="closed")
+    assert np.array_equal(got, want), (ring, S, o)

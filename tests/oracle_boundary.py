@@ -4,7 +4,8 @@ Written from the header's definitions with fractions.Fraction, sharing
 nothing with the C code (which works row by row in integers):
 
 * "closed": the exact fill plus, for every edge of every ring, the pixels
-  of the library's line between its two (snapped) vertices;
+  of the library's line between its two (snapped) vertices (the line's
+  reference is tests/oracle_lines.py);
 * "conservative": the exact fill plus every pixel whose OPEN square
   (i, i+1) x (j, j+1) meets an edge, a closed segment; tested here by
   clipping the segment's parameter t in [0, 1] against the four open
@@ -19,31 +20,7 @@ from fractions import Fraction
 import numpy as np
 
 from oracle import oracle_mask, snapped_rings
-
-HALF = Fraction(1, 2)
-
-
-def line_pixels(a, b, o, shape):
-    """The library's line a -> b (exact points in pixels, sample offset o) as
-    a set of (i, j) inside ``shape``, from the header's definition: one pixel
-    per sample column (x-major) or row (y-major) on the segment, at the
-    nearest sample across, halves going down / right."""
-    (ax, ay), (bx, by) = a, b
-    h, w = shape
-    out = set()
-    if abs(bx - ax) >= abs(by - ay):
-        lo, hi = min(ax, bx), max(ax, bx)
-        for i in range(max(math.ceil(lo - o), 0), min(math.floor(hi - o) + 1, w)):
-            x = i + o
-            y = ay if bx == ax else ay + (x - ax) * (by - ay) / (bx - ax)
-            out.add((i, math.floor(y - o + HALF)))
-    else:
-        lo, hi = min(ay, by), max(ay, by)
-        for j in range(max(math.ceil(lo - o), 0), min(math.floor(hi - o) + 1, h)):
-            y = j + o
-            x = ax + (y - ay) * (bx - ax) / (by - ay)
-            out.add((math.floor(x - o + HALF), j))
-    return out
+from oracle_lines import line_pixels
 
 
 def _t_window(p, d, lo, hi):
@@ -83,11 +60,12 @@ def oracle_closed(rings, shape, *, rule="evenodd", subpixel_bits=8,
     out = oracle_mask(rings, shape, rule=rule, subpixel_bits=subpixel_bits,
                       sample_offset=sample_offset, rounding=rounding).copy()
     h, w = shape
-    o = Fraction(sample_offset)
+    scale = 1 << subpixel_bits
     for a, b in _edges(rings, subpixel_bits):
-        for i, j in line_pixels(a, b, o, shape):
-            if 0 <= i < w and 0 <= j < h:
-                out[j, i] = True
+        fa = (int(a[0] * scale), int(a[1] * scale))
+        fb = (int(b[0] * scale), int(b[1] * scale))
+        for i, j in line_pixels(fa, fb, subpixel_bits, Fraction(sample_offset), (0, 0, w, h)):
+            out[j, i] = True
     return out
 
 

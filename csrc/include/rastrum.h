@@ -461,11 +461,22 @@ RAST_API rast_status rast_fill_triangles_spans(const rast_point *tris,
  * a -> b and b -> a give the same pixels. */
 
 /* Draw the segment a -> b with `pixel` (COUNT16: adding 1) into the clip.
- * RAST_LINE_BRESENHAM draws exactly the pixels defined above;
- * RAST_LINE_DDA steps a 16-fraction-bit fixed-point DDA (the textbook's
- * float DDA made integer) and may miss a tie or a rounding by one pixel.
- * Errors before any write: RAST_E_NULL, RAST_E_RANGE, RAST_E_SUBPIXEL,
- * RAST_E_ALGORITHM, RAST_E_ARG, RAST_E_FORMAT, RAST_E_SIZE. */
+ * RAST_LINE_BRESENHAM draws exactly the pixels defined above, with an
+ * integer error term (add and compare per pixel).
+ * RAST_LINE_DDA is the textbook's float DDA made integer, for comparison:
+ * the same major pixels, walked from a; the minor coordinate y is kept
+ * with 16 fraction bits of a pixel, starts at the line's exact value at
+ * the first sample rounded half up, and grows each step by the slope
+ * dminor/|dmajor| rounded half up; the pixel is floor(y - o + 1/2) of that
+ * y.  Only the slope's rounding differs from the exact line: after k steps
+ * y is off by at most (k + 1)/2^17 pixel, so lines under 2^16 pixels are
+ * never more than one pixel off; ties may go either way, and b -> a may
+ * differ from a -> b.
+ * Both clip exactly without walking off-clip pixels: a huge line costs
+ * what its visible part costs.
+ * Errors before any write: RAST_E_NULL (target, opts, or pixel where the
+ * format needs one), RAST_E_RANGE, RAST_E_SUBPIXEL, RAST_E_ALGORITHM,
+ * RAST_E_ARG (a bad sample value), RAST_E_FORMAT, RAST_E_SIZE. */
 RAST_API rast_status rast_draw_line(const rast_target *target, rast_point a,
                                     rast_point b, const rast_line_opts *opts,
                                     const void *pixel);
@@ -482,10 +493,13 @@ RAST_API rast_status rast_draw_polyline(const rast_target *target,
                                         const void *pixel);
 
 /* The pixels of the segment a -> b inside `clip` (coordinates within
- * +-RAST_MAX_DIM), in order from a to b, as xy[2k], xy[2k+1].  *count gets
- * the number of pixels; if it is more than `capacity` pixels, nothing is
- * written to xy and RAST_E_SCRATCH is returned (call again with more).
- * xy may be NULL when capacity is 0. */
+ * +-RAST_MAX_DIM, else RAST_E_SIZE; a clip of +-RAST_MAX_DIM holds every
+ * line), in order from a to b, as xy[2k] (x), xy[2k+1] (y).  *count gets
+ * the number of pixels (at most 2^28 + 1); if it is more than `capacity`
+ * pixels, nothing is written to xy and RAST_E_SCRATCH is returned (call
+ * again with more).  xy may be NULL when capacity is 0.  Other errors:
+ * RAST_E_NULL (opts, clip, count), RAST_E_RANGE, RAST_E_SUBPIXEL,
+ * RAST_E_ALGORITHM, RAST_E_ARG. */
 RAST_API rast_status rast_line_pixels(rast_point a, rast_point b,
                                       const rast_line_opts *opts,
                                       const rast_rect *clip, int32_t *xy,
@@ -493,16 +507,26 @@ RAST_API rast_status rast_line_pixels(rast_point a, rast_point b,
 
 /* ---- predicates --------------------------------------------------------------
  * Is point p inside triangle t[0..2] (fixed point, any units; coordinates
- * within +-RAST_COORD_MAX)?  *inside gets 1 or 0.  The methods agree inside
- * and outside a non-degenerate triangle and differ only on its boundary and
- * on degenerate triangles:
- *  - SAMESIDE, CROSS, BARYCENTRIC, AREA: closed triangle, a point on an edge
- *    or a vertex is inside.  On a degenerate triangle (zero area) SAMESIDE,
- *    CROSS and BARYCENTRIC say 0 everywhere; AREA says 1 on the segment
- *    the three points span (0 + 0 + 0 == 0 only there... see the README).
- *  - OWNER: the fill's rule (top-left: left and top edges in, right and
- *    bottom out), so p is inside iff a fill of t owns a sample at p; 0 on
- *    a degenerate triangle.
+ * within +-RAST_COORD_MAX)?  *inside gets 1 or 0.  The methods agree
+ * inside and outside a non-degenerate triangle and differ only on its
+ * boundary:
+ *  - SAMESIDE, CROSS, AREA, BARYCENTRIC: the closed triangle; a point on
+ *    an edge or a vertex is inside.  These four give the same answer for
+ *    every p and t (they are four computations of one set).
+ *  - OWNER: the fills' rule (Conventions) evaluated at a sample placed
+ *    exactly at p: p is inside iff rast_fill_triangles() of t would own a
+ *    sample there.  On the boundary that is top-left: points of a left
+ *    edge or of a horizontal top edge are in, of a right edge or of a
+ *    horizontal bottom edge out, a vertex as its row's crossings say; so
+ *    triangles sharing an edge never both own a point and never both miss
+ *    one.
+ * A degenerate triangle (zero area: collinear or repeated vertices)
+ * contains no point under every method.  (The seeds' formulas taken
+ * literally would not: SAMESIDE's "v1 . v2 >= 0" accepts the whole plane,
+ * CROSS and AREA the whole line through the vertices (the plane when all
+ * three coincide); the closed tests check the area first.  OWNER needs no
+ * check: the crossings cancel.)
+ * Either winding order.  Exact: no rounding, no overflow in range.
  * Errors: RAST_E_NULL, RAST_E_RANGE, RAST_E_ARG (unknown method). */
 RAST_API rast_status rast_point_in_triangle(rast_point p, const rast_point *t,
                                             rast_predicate method, int *inside);

@@ -11,10 +11,11 @@ from . import _core
 from ._core import InputError, RastrumError
 from ._native import lib
 from .canvas import Canvas
+from .lines import line_pixels, point_in_triangle
 from .triangles import TRIANGLE_ALGORITHMS as _TRIANGLE_ALGORITHMS, triangles_mask
 
-__all__ = ["polygon_mask", "triangles_mask", "Canvas", "ALGORITHMS", "RastrumError", "InputError",
-           "__version__"]
+__all__ = ["polygon_mask", "triangles_mask", "line_pixels", "point_in_triangle", "Canvas", "ALGORITHMS",
+           "RastrumError", "InputError", "__version__"]
 
 _v = lib.rast_version_number()
 __version__ = "%d.%d.%d" % (_v // 10000, _v // 100 % 100, _v % 100)
@@ -28,6 +29,8 @@ ALGORITHMS["Canvas.fill_polygon"] = ALGORITHMS["polygon_mask"]
 # A triangle is the same under either rule.
 ALGORITHMS["triangles_mask"] = {name: ("evenodd", "nonzero") for name in _TRIANGLE_ALGORITHMS}
 ALGORITHMS["Canvas.fill_triangles"] = ALGORITHMS["triangles_mask"]
+# Lines have no fill rules.
+ALGORITHMS["Canvas.line"] = {"bresenham": (), "dda": ()}
 
 def polygon_mask(rings, shape, *, rule="evenodd", algorithm="aet", subpixel_bits=8, sample_offset=0.5,
                  rounding="exact", boundary="exact"):

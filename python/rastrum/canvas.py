@@ -3,9 +3,10 @@
 import numpy as np
 
 from . import _core
+from . import lines as _lines
 from . import triangles as _triangles
 from ._core import InputError
-from ._native import ffi
+from ._native import ffi, lib
 
 _NO_COLOR = object()  # equal to no colour: "nothing remembered yet"
 _CHANNELS_TO_FORMAT = {1: "gray8", 3: "rgb888", 4: "rgba8888"}
@@ -153,6 +154,55 @@ class Canvas:
         batch = _triangles.tris_f64(tris)
         pixel = self._pixel(color)
         _triangles.fill_triangles(self._target, batch, pixel, opts)
+
+    def line(self, p0, p1, color, *, algorithm="bresenham", subpixel_bits=8, sample_offset=0.5):
+        """Paint `color` on the pixels of the segment p0 -> p1.
+
+        The pixels are :func:`rastrum.line_pixels` (p0, p1) within the
+        canvas; the rest of the line is clipped.  Arguments as there.
+        Nothing is written when an argument is bad (an InputError says
+        which).
+
+        Examples
+        --------
+        >>> import rastrum
+        >>> c = rastrum.Canvas(6, 3, format="gray8")
+        >>> c.line((0, 0), (5, 2), 1, subpixel_bits=0, sample_offset=0)
+        >>> c.array
+        array([[1, 1, 0, 0, 0, 0],
+               [0, 0, 1, 1, 0, 0],
+               [0, 0, 0, 0, 1, 1]], dtype=uint8)
+        """
+        opts = _lines.line_opts(algorithm, subpixel_bits, sample_offset)
+        a = _lines.snap_point(p0, opts.subpixel_bits, "p0")
+        b = _lines.snap_point(p1, opts.subpixel_bits, "p1")
+        _core._check(lib.rast_draw_line(self._target, a, b, opts, self._pixel(color)))
+
+    def polyline(self, points, color, *, closed=False, algorithm="bresenham", subpixel_bits=8,
+                 sample_offset=0.5):
+        """Paint the segments points[k] -> points[k+1]; with ``closed=True``
+        also the last point -> the first (an outline).
+
+        Each segment is :meth:`line`; a vertex shared by two segments is
+        painted by both.  `points` is an (N, 2) array-like, N >= 2.
+
+        Examples
+        --------
+        >>> import rastrum
+        >>> c = rastrum.Canvas(5, 5, format="gray8")
+        >>> c.polyline([(0, 0), (4, 0), (0, 4)], 1, closed=True, subpixel_bits=0, sample_offset=0)
+        >>> c.array
+        array([[1, 1, 1, 1, 1],
+               [1, 0, 0, 1, 0],
+               [1, 0, 1, 0, 0],
+               [1, 1, 0, 0, 0],
+               [1, 0, 0, 0, 0]], dtype=uint8)
+        """
+        opts = _lines.line_opts(algorithm, subpixel_bits, sample_offset)
+        pts = _lines.snap_polyline(points, opts.subpixel_bits, 2)
+        pixel = self._pixel(color)
+        _core._check(lib.rast_draw_polyline(self._target, ffi.from_buffer("rast_point[]", pts), len(pts),
+                                            1 if closed else 0, opts, pixel))
 
     def to_image(self):
         """A Pillow image (a copy): mode L, RGB or RGBA."""

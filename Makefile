@@ -5,6 +5,7 @@
 #   make demo            render the demo scenes to out/ and print the speed table
 #   make asan            C and Python tests under AddressSanitizer + UBSan
 #   make strict          the core under gcc and clang, -std=c99 -pedantic -Werror
+#   make valgrind        C tests under valgrind memcheck
 #   make firmware-check  the core for Cortex-M0 and rv32: no float, heap or stdio; .text sizes
 #   make cross-check     C tests on 32-bit ARM and big-endian MIPS (qemu), same pixels as x86
 #   make install         PREFIX=/usr/local DESTDIR= : header, libraries, rastrum.pc
@@ -39,7 +40,7 @@ SONAME  := librastrum.so.$(VERSION_MAJOR)
 C_TESTS := $(patsubst tests/c/%.c,build/tests/%,$(wildcard tests/c/test_*.c))
 SAN     := -fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer -g
 
-.PHONY: firmware-check cross-check all lib test test-c test-install test-py demo asan asan-c asan-py strict install uninstall example clean
+.PHONY: valgrind firmware-check cross-check all lib test test-c test-install test-py demo asan asan-c asan-py strict install uninstall example clean
 
 all: lib
 lib: build/librastrum.a build/librastrum.so
@@ -125,6 +126,11 @@ strict:
 	    echo "strict: $$cc ok"; \
 	  else echo "strict: $$cc not installed"; exit 1; fi; \
 	done
+
+# ---- valgrind ------------------------------------------------------------------
+valgrind: $(C_TESTS)
+	@for t in $(C_TESTS); do echo "== $$t (memcheck)"; \
+	  valgrind -q --error-exitcode=1 --leak-check=full ./$$t || exit 1; done
 
 # ---- bare metal --------------------------------------------------------------
 firmware-check:

@@ -2,13 +2,16 @@
  * registry.c - the polygon algorithms by number: name, fill rules, scratch
  * size, filler.  Adding an algorithm adds one row here (and its file).
  */
+#include "poly.h"
 #include "registry.h"
 
 #define RAST__BOTH_RULES ((1u << RAST_RULE_EVENODD) | (1u << RAST_RULE_NONZERO))
+#define RAST__EVENODD (1u << RAST_RULE_EVENODD)
 
 static const rast__algo rast__algos[RAST_ALGO_COUNT_] = {
     {"aet", RAST__BOTH_RULES, rast__aet_scratch, rast__aet_fill},
-    /* RAST_ALGO_XSCAN .. RAST_ALGO_WINDING: rows added as they land */
+    {"xscan", RAST__BOTH_RULES, rast__xscan_scratch, rast__xscan_fill},
+    /* the rows after this one: added as they land */
 };
 
 const rast__algo *rast__algo_get(rast_algorithm a)

@@ -11,6 +11,8 @@
 static const rast__algo rast__algos[RAST_ALGO_COUNT_] = {
     {"aet", RAST__BOTH_RULES, rast__aet_scratch, rast__aet_fill},
     {"xscan", RAST__BOTH_RULES, rast__xscan_scratch, rast__xscan_fill},
+    {"edgefill", RAST__EVENODD, rast__edgefill_scratch, rast__edgefill_fill},
+    {"fence", RAST__EVENODD, rast__fence_scratch, rast__fence_fill},
     /* the rows after this one: added as they land */
 };
 

@@ -13,6 +13,7 @@ static const rast__algo rast__algos[RAST_ALGO_COUNT_] = {
     {"xscan", RAST__BOTH_RULES, rast__xscan_scratch, rast__xscan_fill},
     {"edgefill", RAST__EVENODD, rast__edgefill_scratch, rast__edgefill_fill},
     {"fence", RAST__EVENODD, rast__fence_scratch, rast__fence_fill},
+    {"edgeflag", RAST__BOTH_RULES, rast__edgeflag_scratch, rast__edgeflag_fill},
     /* the rows after this one: added as they land */
 };
 

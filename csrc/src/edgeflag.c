@@ -16,11 +16,14 @@
  * while it is not 0.  The bits then say which pixels have a flag at all,
  * and a counter per pixel holds the sum; a counter is written when its bit
  * is first set, so only the bits are cleared beforehand and the sweep
- * still skips empty words.  The counters are kept modulo 2^(8F), which is
- * exact: |winding| never exceeds the number of edges, so a winding number
- * is 0 iff it is 0 modulo 2^8 with at most 255 vertices (F = 1), modulo
- * 2^16 up to 65535 (F = 2), and modulo 2^32 beyond (F = 4; RAST_MAX_POINTS
- * is 2^24).
+ * still skips empty words.  The counters, and the running sum, are kept
+ * modulo 2^(8F), which is exact: a row's crossings (at most one per edge,
+ * so at most npoints) have directions summing to 0, so the winding number
+ * of a sample, the sum over the crossings that count for it, is also minus
+ * the sum over those that do not, and |winding| <= npoints / 2.  It is
+ * therefore 0 iff it is 0 modulo 2^8 with at most 511 vertices (F = 1),
+ * modulo 2^16 up to 131071 (F = 2), and modulo 2^32 beyond (F = 4;
+ * RAST_MAX_POINTS is 2^24).
  *
  * Crossings left of the polygon's box (cut to the clip) are flagged on its
  * first column, the ones right of it are dropped: the sweep sees the same
@@ -35,7 +38,7 @@
 
 static size_t rast__flag_bytes(uint32_t npoints)
 {
-    return npoints <= 0xFFu ? 1 : npoints <= 0xFFFFu ? 2 : 4;
+    return npoints <= 511u ? 1 : npoints <= 131071u ? 2 : 4;
 }
 
 /* Bytes of the counters for a clip width x height, rounded up to 8. */

@@ -449,8 +449,9 @@ static void test_many_vertices(void)
 }
 
 /* Windings of 256 and 65536 at the centre: the same triangle walked round
- * that many times.  Exact only if the flag counters of edgeflag do not
- * wrap to 0 (they have 16 resp. 32 bits for that many vertices).
+ * that many times (768 and 196608 vertices).  Exact only if the flag
+ * counters of edgeflag do not wrap to 0: they have 16 resp. 32 bits for
+ * that many vertices (8 bits serve up to 511 vertices, |winding| <= 255).
  * The 65536 turns are checked against the reference only, and the AET is
  * skipped for them: 65536 edges joining its AET in the same row, each left
  * of all 65536 already there, cost its insertion ~2^32 moves (seconds). */

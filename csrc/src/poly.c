@@ -6,6 +6,10 @@
 
 #include "poly.h"
 
+/* The record sizes are part of the scratch contract in rastrum.h
+ * (RAST_XSCAN_SCRATCH_BOUND, RAST_POINTWISE_SCRATCH_BOUND). */
+typedef char rast__line_size_check[sizeof(rast__line) == 32 ? 1 : -1];
+
 int rast__poly_box(const rast_polygon *poly, uint32_t npoints, const rast__grid *g,
                    const rast_rect *clip, rast__box *box)
 {

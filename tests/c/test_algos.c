@@ -516,6 +516,35 @@ static void test_errors(void)
             CHECK(memcmp(img, before, sizeof img) != 0);
         }
     }
+    /* The compile-time bounds of rastrum.h are never less than
+     * rast_scratch_size. */
+    {
+        static const uint32_t ns[] = {0, 1, 3, 64, 511, 512, 131071, 131072, 1u << 24};
+        static const int32_t ds[] = {0, 1, 63, 64, 65, 640, 2048, 100000};
+        size_t k, a, b;
+        int fits = 1;
+        for (k = 0; k < sizeof ns / sizeof ns[0]; k++)
+            for (a = 0; a < sizeof ds / sizeof ds[0]; a++)
+                for (b = 0; b < sizeof ds / sizeof ds[0]; b++) {
+                    uint32_t np = ns[k];
+                    int32_t w = ds[a], h = ds[b];
+                    size_t need[RAST_ALGO_COUNT_], bound[RAST_ALGO_COUNT_];
+                    grid gr = {0, 0, 0};
+                    for (algo = 0; algo < RAST_ALGO_COUNT_; algo++) {
+                        rast_fill_opts o = make_opts(algo, 0, &gr);
+                        if (rast_scratch_size(&o, np, w, h, &need[algo]) != RAST_OK) fits = 0;
+                    }
+                    bound[RAST_ALGO_AET] = RAST_AET_SCRATCH_BOUND(np, h);
+                    bound[RAST_ALGO_XSCAN] = RAST_XSCAN_SCRATCH_BOUND(np);
+                    bound[RAST_ALGO_EDGEFILL] = RAST_EDGEFILL_SCRATCH_BOUND(w, h);
+                    bound[RAST_ALGO_FENCE] = RAST_FENCE_SCRATCH_BOUND(w, h);
+                    bound[RAST_ALGO_EDGEFLAG] = RAST_EDGEFLAG_SCRATCH_BOUND(np, w, h);
+                    bound[RAST_ALGO_CROSSING] = RAST_POINTWISE_SCRATCH_BOUND(np);
+                    bound[RAST_ALGO_WINDING] = RAST_POINTWISE_SCRATCH_BOUND(np);
+                    for (algo = 0; algo < RAST_ALGO_COUNT_; algo++) fits &= need[algo] <= bound[algo];
+                }
+        CHECK(fits);
+    }
     /* Scratch sizes never wrap: the largest clip gives a huge size (or
      * SIZE_MAX), not a small one. */
     for (algo = 0; algo < RAST_ALGO_COUNT_; algo++) {

@@ -374,10 +374,14 @@ static void to_img(void *user, int32_t y, int32_t x0, int32_t x1)
 static void test_far_clip(void)
 {
     const int32_t M = RAST_COORD_MAX;
-    rast_point tri[3] = {{M, M}, {-M, M - 7}, {M - 25, -M}};
+    rast_point tri[3];
     uint32_t n = 3;
     rast_polygon p = {tri, &n, 1};
-    int algo, rule, c, t, bad = 0;
+    int algo, rule, c, t, side, bad = 0;
+    long filled[2] = {0, 0};
+    /* side 0 near (M, M), side 1 the mirror image near (-M, -M): negative
+     * columns and rows in the span API */
+    for (side = 0; side < 2; side++)
     for (algo = 0; algo < RAST_ALGO_COUNT_; algo++)
         for (rule = 0; rule < 2; rule++)
             for (c = 0; c < 2; c++)
@@ -396,10 +400,24 @@ static void test_far_clip(void)
                     if (!(rules >> rule & 1)) continue;
                     o = make_opts(algo, rule, &gr);
                     memset(&si, 0, sizeof si);
+                    tri[0].x = M; tri[0].y = M;
+                    tri[1].x = -M; tri[1].y = M - 7;
+                    tri[2].x = M - 25; tri[2].y = -M;
                     si.clip.x0 = M - 30;
                     si.clip.y0 = M - 35;
                     si.clip.x1 = M + 10;
                     si.clip.y1 = M + 5;
+                    if (side) {
+                        int v;
+                        for (v = 0; v < 3; v++) {
+                            tri[v].x = -tri[v].x;
+                            tri[v].y = -tri[v].y;
+                        }
+                        si.clip.x0 = -M - 10;
+                        si.clip.y0 = -M - 5;
+                        si.clip.x1 = -M + 30;
+                        si.clip.y1 = -M + 35;
+                    }
                     si.last_y = si.clip.y0 - 1;
                     CHECK(rast_scratch_size(&o, n, 40, 40, &need) == RAST_OK);
                     scr = scratch_for(need);
@@ -407,11 +425,14 @@ static void test_far_clip(void)
                     CHECK(scratch_guard_ok(scr, need));
                     bad += si.bad;
                     for (j = 0; j < 40; j++)
-                        for (i = 0; i < 40; i++)
+                        for (i = 0; i < 40; i++) {
                             bad += si.img[j * 40 + i] !=
                                    ref_inside(tri, &n, 1, &gr, rule, si.clip.x0 + i, si.clip.y0 + j);
+                            filled[side] += si.img[j * 40 + i];
+                        }
                 }
     CHECK(bad == 0);
+    CHECK(filled[0] > 0 && filled[1] > 0); /* the windows do see the polygon */
 }
 
 /* ---- thousands of vertices ------------------------------------------------------------- */

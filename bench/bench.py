@@ -405,12 +405,30 @@ def _scene_callable(fns: List[Callable]) -> Callable:
     return batch
 
 
+def scratch_bytes(rastrum, alg, rule, s, o, polys, shape):
+    """The scratch a caller allocates for the scene: the largest
+    rast_scratch_size over its calls (the clip is the whole mask)."""
+    from rastrum import _core
+    from rastrum._native import ffi, lib
+    opts = _core.fill_opts(alg, rule, s, o)
+    out = ffi.new("size_t *")
+    best = 0
+    for rings in polys:
+        n = sum(len(r) for r in rings)
+        if lib.rast_scratch_size(opts, n, shape[1], shape[0], out) != lib.RAST_OK:
+            return None
+        best = max(best, int(out[0]))
+    return best
+
+
 def run_scene(scene, rastrum, refs: References, peers, args, progress,
               trade: bool):
     polys, shape = scene.load()
     h, w = shape
     nbytes = h * w
-    nmask = len(polys)
+    canvas = getattr(scene, "canvas", False)
+    # a canvas scene draws all its polygons into one buffer: one memset
+    nmask = 1 if canvas else len(polys)
     algos = rastrum.ALGORITHMS["polygon_mask"]
     cands: List[Cand] = []
     makers: Dict[int, List[Callable]] = {}     # id(cand) -> per-mask fns
@@ -423,35 +441,52 @@ def run_scene(scene, rastrum, refs: References, peers, args, progress,
     cands.append(Cand("memset", _scene_callable(
         [functools.partial(memset, addr, 1, nbytes)] * nmask),
         dict(kind="baseline", impl="memset", rule=None)))
-    cands.append(Cand("np.ones", _scene_callable(
-        [functools.partial(np.ones, shape, bool)] * nmask),
-        dict(kind="baseline", impl="np.ones", rule=None)))
+    if not canvas:
+        cands.append(Cand("np.ones", _scene_callable(
+            [functools.partial(np.ones, shape, bool)] * nmask),
+            dict(kind="baseline", impl="np.ones", rule=None)))
 
     # rastrum: the natural input, a list of C-contiguous float64 (N, 2)
-    # arrays, as the scenes make them
+    # arrays, as the scenes make them.  The summary table: every algorithm
+    # and rule at S = 8, o = 1/2; --detail: both offsets, and the S trade.
     combos = []
     for alg, alg_rules in algos.items():
         for rule in RULES:
             if rule not in alg_rules:
                 continue
-            for o in (0.0, 0.5):
+            for o in ((0.0, 0.5) if args.detail else (0.5,)):
                 combos.append((alg, rule, DEFAULT_S, o))
-        if trade and "evenodd" in alg_rules:
+        if args.detail and trade and "evenodd" in alg_rules:
             for s in TRADE_S:
                 if s != DEFAULT_S:
                     combos.append((alg, "evenodd", s, 0.5))
     for alg, rule, s, o in combos:
-        fns = [functools.partial(rastrum.polygon_mask, rings, shape,
-                                 rule=rule, algorithm=alg, subpixel_bits=s,
-                                 sample_offset=o) for rings in polys]
-        c = Cand(f"rastrum/{alg}", _scene_callable(fns),
-                 dict(kind="rastrum", impl=f"rastrum/{alg}", algorithm=alg,
-                      rule=rule, S=s, o=o, mode="new"))
-        makers[id(c)] = fns
+        info = dict(kind="rastrum", impl=f"rastrum/{alg}", algorithm=alg,
+                    rule=rule, S=s, o=o, mode="into" if canvas else "new",
+                    scratch=scratch_bytes(rastrum, alg, rule, s, o, polys,
+                                          shape))
+        if canvas:
+            # every polygon by its own call into one gray8 canvas
+            cv = rastrum.Canvas(w, h, format="gray8", background=0)
+            fns = [functools.partial(cv.fill_polygon, rings, 1, rule=rule,
+                                     algorithm=alg, subpixel_bits=s,
+                                     sample_offset=o) for rings in polys]
+            c = Cand(f"rastrum/{alg}", _scene_callable(fns), info)
+            makers[id(c)] = [lambda fns=fns, a=cv.array:
+                             ([f() for f in fns], a)[1]]
+        else:
+            fns = [functools.partial(rastrum.polygon_mask, rings, shape,
+                                     rule=rule, algorithm=alg,
+                                     subpixel_bits=s, sample_offset=o)
+                   for rings in polys]
+            c = Cand(f"rastrum/{alg}", _scene_callable(fns), info)
+            makers[id(c)] = fns
         cands.append(c)
 
     # peers
     for p in peers:
+        if canvas:
+            break                      # cv2 alone, below
         for rule in p.rules:
             fns, err = None, None
             try:
@@ -468,23 +503,34 @@ def run_scene(scene, rastrum, refs: References, peers, args, progress,
 
     # "into": paint into a preallocated, zeroed buffer (one per mask, made
     # outside the timing): Canvas(gray8).fill_polygon against cv2.fillPoly
-    # without its np.zeros. Same work again, minus the fresh mask.
-    if any(p.name == "cv2.fillPoly" for p in peers):
+    # without its np.zeros. Same work again, minus the fresh mask.  A
+    # canvas scene is only this, all polygons into one buffer.
+    if any(p.name == "cv2.fillPoly" for p in peers) and (canvas or
+                                                         args.detail):
         import cv2
         fns, arrs = [], []
+        img = np.zeros(shape, np.uint8) if canvas else None
         for rings in polys:
             pts = [np.round(r * 256.0).astype(np.int32).reshape(-1, 1, 2)
                    for r in rings]
-            img = np.zeros(shape, np.uint8)
+            if not canvas:
+                img = np.zeros(shape, np.uint8)
             fns.append(functools.partial(cv2.fillPoly, img, pts, 1,
                                          cv2.LINE_8, 8))
             arrs.append(img)
-        c = Cand("cv2.fillPoly into", _scene_callable(fns),
+        c = Cand("cv2.fillPoly into" if not canvas else "cv2.fillPoly",
+                 _scene_callable(fns),
                  dict(kind="peer", impl="cv2.fillPoly", rule="evenodd",
                       mode="into", note="fillPoly into a zeroed buffer"))
-        makers[id(c)] = [lambda f=f, a=a: (f(), a)[1]
-                         for f, a in zip(fns, arrs)]
+        if canvas:
+            makers[id(c)] = [lambda fns=fns, a=img:
+                             ([f() for f in fns], a)[1]]
+        else:
+            makers[id(c)] = [lambda f=f, a=a: (f(), a)[1]
+                             for f, a in zip(fns, arrs)]
         cands.append(c)
+    if (any(p.name == "cv2.fillPoly" for p in peers) and args.detail
+            and not canvas):
         for alg, alg_rules in rastrum.ALGORITHMS.get(
                 "Canvas.fill_polygon", {}).items():
             if "evenodd" not in alg_rules:
@@ -560,14 +606,25 @@ def run_scene(scene, rastrum, refs: References, peers, args, progress,
             row["x_cv2_paired"] = statistics.median(pairs) if pairs else None
             row["x_cv2_best"] = min(c.times) / min(cv2_c.times)
         out = results.get(id(c))
-        if c.info["kind"] == "rastrum":
+        if canvas:
+            # no per-mask oracle for 10000 fills into one canvas: compare
+            # with the AET's canvas (the AET is held to the oracle by the
+            # tests) - every exact algorithm must give 0
+            ref = next((results.get(id(x)) for x in cands
+                        if x.info.get("algorithm") == "aet"
+                        and x.info.get("rule") == c.info.get("rule")
+                        and x.info.get("S") == DEFAULT_S), None)
+            if c.info["kind"] != "baseline":
+                row["diff_aet"] = count_diff(out, ref)
+        elif c.info["kind"] == "rastrum":
             progress(f"  {scene.name}: accuracy {c.label}")
-            row["diff_exact"] = count_diff(
-                out, refs.get(scene, c.info["rule"], c.info["o"], None))
+            if args.detail:
+                row["diff_exact"] = count_diff(
+                    out, refs.get(scene, c.info["rule"], c.info["o"], None))
             row["diff_snap"] = count_diff(
                 out, refs.get(scene, c.info["rule"], c.info["o"],
                               c.info["S"]))
-        elif c.info["kind"] == "peer":
+        elif c.info["kind"] == "peer" and args.detail:
             progress(f"  {scene.name}: accuracy {c.label}")
             best = None
             for o in (0.0, 0.5):
@@ -579,10 +636,12 @@ def run_scene(scene, rastrum, refs: References, peers, args, progress,
         rows.append(row)
 
     # do the two rules give the same exact result on this scene?
-    a = refs.get(scene, "evenodd", 0.5)
-    b = refs.get(scene, "nonzero", 0.5)
-    same = None if a is None else all(np.array_equal(x, y)
-                                      for x, y in zip(a, b))
+    same = None
+    if not canvas:
+        a = refs.get(scene, "evenodd", 0.5, DEFAULT_S)
+        b = refs.get(scene, "nonzero", 0.5, DEFAULT_S)
+        same = None if a is None or b is None else all(
+            np.array_equal(x, y) for x, y in zip(a, b))
     progress.done()
     return rows, same
 
@@ -619,6 +678,110 @@ def print_scene(scene, rows, same, out=sys.stdout):
         print(format_row(r), file=out)
 
 
+def _fmt_bytes(n):
+    if n is None:
+        return "-"
+    if n < 1024:
+        return f"{n} B"
+    for unit in ("KiB", "MiB", "GiB"):
+        n /= 1024.0
+        if n < 1024 or unit == "GiB":
+            return f"{n:.0f} {unit}" if n >= 100 else f"{n:.1f} {unit}"
+
+
+def _table_rows(all_rows, scene_meta):
+    """[(implementation, rule, {scene: row})] in table order: memset,
+    cv2.fillPoly, the rastrum algorithms (registry order, even-odd before
+    non-zero, as measured), then the other peers; S = 8 and o = 1/2 only."""
+    groups: Dict[tuple, Dict[str, dict]] = {}
+    for r in all_rows:
+        sc = r["scene"]
+        if sc not in scene_meta:
+            continue
+        if r["kind"] == "rastrum" and (r.get("S") != DEFAULT_S
+                                       or r.get("o") != 0.5
+                                       or (r.get("mode") == "into")
+                                       != scene_meta[sc]["canvas"]):
+            continue
+        if r["kind"] == "baseline" and r["impl"] != "memset":
+            continue
+        if r["kind"] == "peer" and (r.get("mode") == "into") != \
+                scene_meta[sc]["canvas"]:
+            continue
+        impl = r["algorithm"] if r["kind"] == "rastrum" else r["impl"]
+        k = (r["kind"], impl, r.get("rule"))
+        groups.setdefault(k, {})[sc] = r
+    rank = {"baseline": 0, "rastrum": 2}
+    keys = sorted(groups, key=lambda k: (
+        1 if k[1] == "cv2.fillPoly" else rank.get(k[0], 3)))
+    return [(k[1], k[2], groups[k]) for k in keys]
+
+
+def _exact_mark(r):
+    d = r.get("diff_snap", r.get("diff_aet"))
+    return "" if not d else "!"
+
+
+def print_table(all_rows, scene_meta, out=sys.stdout):
+    """THE table: algorithm x scene -> time / memset, time / cv2.fillPoly,
+    scratch bytes (rast_scratch_size)."""
+    names = list(scene_meta)
+    print("\n== rastrum polygon fillers, S = 8, o = 1/2: x memset | x cv2 | "
+          "scratch per call   (memset and cv2 rows: ms)", file=out)
+    w0 = 25
+    head = f"{'algorithm':<16}{'rule':<9}" + "".join(
+        f"{n:>22}" for n in names)
+    sub = " " * w0 + "".join(
+        f"{scene_meta[n]['size']:>22}" for n in names)
+    print(head, file=out)
+    print(sub, file=out)
+    for impl, rule, by in _table_rows(all_rows, scene_meta):
+        label = impl.replace("rastrum/", "")
+        cells = []
+        for n in names:
+            r = by.get(n)
+            if r is None or "error" in r:
+                cells.append(f"{'-' if r is None else 'error':>22}")
+            elif r["kind"] == "baseline" or impl == "cv2.fillPoly":
+                cells.append(f"{_fmt_ms(r['ms'] / 1e3).strip() + ' ms':>22}")
+            else:
+                scr = _fmt_bytes(r.get("scratch")) if r["kind"] == "rastrum" \
+                    else ""
+                cells.append(f"{_fmt_ratio(r['x_memset']).strip():>7}"
+                             f"{_fmt_ratio(r.get('x_cv2')).strip():>6}"
+                             f"{scr:>9}" + (_exact_mark(r) or ""))
+        print(f"{label:<16}{rule or '':<9}" + "".join(cells), file=out)
+    print("   (! = not bit-exact; every rastrum cell without one is exact: "
+          "0 pixels off the exact mask of the snapped input,\n"
+          "   or for a canvas scene off the AET's canvas)", file=out)
+
+
+def table_markdown(all_rows, scene_meta) -> str:
+    """The same table in Markdown, for the README."""
+    names = list(scene_meta)
+    lines = ["| algorithm | rule | " + " | ".join(
+        f"{n} ({scene_meta[n]['size']})" for n in names) + " |",
+        "|---|---|" + "---|" * len(names)]
+    for impl, rule, by in _table_rows(all_rows, scene_meta):
+        label = impl.replace("rastrum/", "")
+        cells = []
+        for n in names:
+            r = by.get(n)
+            if r is None or "error" in r:
+                cells.append("-")
+            elif r["kind"] == "baseline" or impl == "cv2.fillPoly":
+                cells.append(f"{r['ms']:.3g} ms")
+            else:
+                c = f"{r['x_memset']:.3g} / {r['x_cv2']:.3g}" if \
+                    r.get("x_cv2") else f"{r['x_memset']:.3g} / -"
+                if r["kind"] == "rastrum":
+                    c += f" / {_fmt_bytes(r.get('scratch'))}"
+                cells.append(c + (" (not exact)" if _exact_mark(r) else ""))
+        lines.append(f"| {label} | {rule or ''} | " + " | ".join(cells)
+                     + " |")
+    return "\n".join(lines) + "\n"
+
+
 def print_trade(scene, rows, out=sys.stdout):
     tr = [r for r in rows if r["kind"] == "rastrum"
           and r.get("rule") == "evenodd" and r.get("o") == 0.5
@@ -640,17 +803,20 @@ def print_trade(scene, rows, out=sys.stdout):
 
 
 def summarize(all_rows, out=sys.stdout):
-    """The lead's target: bit-exact and no slower than cv2, every scene."""
+    """The lead's target: every algorithm bit-exact, and the default (aet)
+    no slower than cv2, every scene."""
     bad_speed, bad_exact = [], []
     for r in all_rows:
         if r["kind"] != "rastrum" or "error" in r or r.get("S") != DEFAULT_S:
             continue
-        if r.get("x_cv2") is not None and r["x_cv2"] > 1.0:
+        if r.get("x_cv2") is not None and r["x_cv2"] > 1.0 and \
+                r.get("algorithm") == "aet":
             bad_speed.append(r)
-        if r.get("diff_snap"):
+        if r.get("diff_snap") or r.get("diff_aet"):
+            r.setdefault("diff_snap", r.get("diff_aet"))
             bad_exact.append(r)
     errors = [r for r in all_rows if r["kind"] == "rastrum" and "error" in r]
-    print("\n== target: rastrum bit-exact (!=snap = 0) and xcv2 <= 1",
+    print("\n== target: every algorithm bit-exact (!=snap = 0), aet xcv2 <= 1",
           file=out)
     if not bad_speed and not bad_exact and not errors:
         print("   met on every scene measured", file=out)
@@ -694,6 +860,19 @@ a fresh mask: rastrum Canvas(gray8).fill_polygon vs cv2.fillPoly without
 np.zeros (their xcv2 is against "cv2.fillPoly into")."""
 
 
+TABLE_LEGEND = """\
+One table, algorithm x scene.  Each cell: the median time of the scene (all
+its masks; for a canvas scene all its fills into one canvas), over
+interleaved repeats (each round times every row once; each repeat averages
+enough calls to last ~{target:g} ms), as a ratio to ctypes.memset of the same
+H*W bytes per mask (x memset; one memset for a canvas scene) and to
+cv2.fillPoly doing the same work (x cv2: np.zeros + fillPoly per mask, or
+fillPoly per polygon into one canvas; < 1 = faster than OpenCV), then the
+scratch bytes rast_scratch_size asks for (the largest call of the scene).
+rastrum at S = 8 (1/256 px), samples at pixel centres; cv2 has even-odd
+only, so non-zero rows are compared with its even-odd fill."""
+
+
 def build_parser():
     p = argparse.ArgumentParser(description=__doc__.split("\n\n")[0],
                                 formatter_class=argparse.RawTextHelpFormatter)
@@ -709,6 +888,12 @@ def build_parser():
                    "(default star200)")
     p.add_argument("--no-peers", action="store_true",
                    help="time rastrum and the baselines only (and cv2)")
+    p.add_argument("--detail", action="store_true",
+                   help="also print a block per scene (both sample offsets, "
+                   "pixels off the\nUNSNAPPED exact mask, peers' accuracy, "
+                   "'into' rows) and the S trade;\ndefault scenes then: all")
+    p.add_argument("--markdown", default="", metavar="PATH",
+                   help="also write the table as Markdown to PATH")
     p.add_argument("--json", default=str(HERE / "results.json"),
                    metavar="PATH", help="where to write the results "
                    "(default bench/results.json; '' for none)")
@@ -733,7 +918,8 @@ def main(argv=None):
     rastrum = import_rastrum()
     oracle = load_oracle()
     refs = References(oracle, progress)
-    chosen = scenes_mod.get(args.scenes)
+    chosen = scenes_mod.get(args.scenes or
+                            (() if args.detail else scenes_mod.TABLE_SCENES))
 
     peers, missing = [], []
     for p in PEERS:
@@ -748,7 +934,8 @@ def main(argv=None):
           f"{os.cpu_count()} cpu, Python {platform.python_version()}, "
           f"numpy {np.__version__}"
           + (", --quick" if args.quick else ""))
-    print(LEGEND.format(target=args.target * 1e3))
+    print((LEGEND if args.detail else TABLE_LEGEND).format(
+        target=args.target * 1e3))
     print("vertices are float64 (bench/scenes.py); rastrum at S=8 unless "
           "noted; o = sample offset")
     if oracle is None:
@@ -761,14 +948,24 @@ def main(argv=None):
         progress(f"[{i + 1}/{len(chosen)}] {sc.name}", force=True)
         rows, same = run_scene(sc, rastrum, refs, peers, args, progress,
                                trade=(sc.name == args.trade_scene))
-        print_scene(sc, rows, same)
-        if sc.name == args.trade_scene:
-            print_trade(sc, rows)
+        if args.detail:
+            print_scene(sc, rows, same)
+            if sc.name == args.trade_scene:
+                print_trade(sc, rows)
         sys.stdout.flush()
         all_rows.extend(rows)
-        scene_meta[sc.name] = dict(summary=sc.summary(), shape=sc.shape,
-                                   masks=len(sc.polygons),
-                                   rules_agree=same)
+        h, w = sc.shape
+        canvas = getattr(sc, "canvas", False)
+        scene_meta[sc.name] = dict(
+            summary=sc.summary(), shape=sc.shape, masks=len(sc.polygons),
+            rules_agree=same, canvas=canvas,
+            size=(f"{len(sc.polygons)}x{w}x{h}" if sc.batch and not canvas
+                  else f"{len(sc.polygons)}->{w}x{h}" if canvas
+                  else f"{w}x{h}"))
+    progress.done()
+    print_table(all_rows, scene_meta)
+    if args.markdown:
+        Path(args.markdown).write_text(table_markdown(all_rows, scene_meta))
     summarize(all_rows)
     elapsed = time.monotonic() - t_start
     print(f"\n({elapsed:.0f} s)")

@@ -142,6 +142,55 @@ def random_polygons(count: int = 100, shape: Shape = (480, 640),
     return polys, shape
 
 
+def coco_like(count: int = 100, shape: Shape = (480, 640),
+              min_vertices: int = 20, max_vertices: int = 60,
+              seed: int = 20240602) -> Tuple[List[Rings], Shape]:
+    """`count` COCO-like instance outlines, each to its own mask: simple
+    (star-shaped about a centre, so never self-intersecting) rings of
+    20..60 vertices whose radius wanders smoothly around a mean radius
+    drawn log-uniformly from 12 to 200 px, centred anywhere in the image
+    (so some are cut by its border), as annotation polygons are.
+    Seeded, reproducible."""
+    rng = np.random.default_rng(seed)
+    h, w = shape
+    polys = []
+    for _ in range(count):
+        n = int(rng.integers(min_vertices, max_vertices + 1))
+        r0 = float(np.exp(rng.uniform(np.log(12.0), np.log(200.0))))
+        t = np.sort(rng.uniform(0.0, 2.0 * np.pi, n))
+        # a smooth wobble: a few low harmonics with random phases
+        k = np.arange(1, 5)
+        amp = rng.uniform(0.0, 0.25, k.size) / k
+        ph = rng.uniform(0.0, 2.0 * np.pi, k.size)
+        rad = r0 * (1.0 + (amp[None, :] * np.sin(k[None, :] * t[:, None]
+                                                  + ph[None, :])).sum(1))
+        cx, cy = rng.uniform(0.0, w), rng.uniform(0.0, h)
+        ring = np.stack([cx + rad * np.cos(t), cy + rad * np.sin(t)], axis=1)
+        polys.append([_orient(ring, True)])
+    return polys, shape
+
+
+def small_polygons(count: int = 10000, size: int = 1024,
+                   seed: int = 20240603) -> Tuple[List[Rings], Shape]:
+    """`count` small quadrilaterals and pentagons, 10..30 px across, at
+    random positions and angles in one size x size canvas (they overlap):
+    the "many small shapes" case (sprites, glyph-like marks, map symbols),
+    where the cost per call matters more than the cost per pixel.
+    All run the same way round. Seeded, reproducible."""
+    rng = np.random.default_rng(seed)
+    polys = []
+    for _ in range(count):
+        n = int(rng.integers(4, 6))
+        r = rng.uniform(5.0, 15.0)
+        t = rng.uniform(0, 2 * np.pi) + 2 * np.pi * np.arange(n) / n \
+            + rng.uniform(-0.3, 0.3, n)
+        rad = r * rng.uniform(0.7, 1.0, n)
+        cx, cy = rng.uniform(0.0, size, 2)
+        ring = np.stack([cx + rad * np.cos(t), cy + rad * np.sin(t)], axis=1)
+        polys.append([_orient(ring, True)])
+    return polys, (size, size)
+
+
 # ---------------------------------------------------------------------------
 # registry
 # ---------------------------------------------------------------------------
@@ -152,6 +201,7 @@ class Scene:
     description: str
     make: Callable[[], tuple]
     batch: bool = False              # make() returns a list of polygons
+    canvas: bool = False             # batch drawn into ONE canvas, not masks
     _cache: tuple = field(default=None, repr=False)
 
     def load(self) -> Tuple[List[Rings], Shape]:
@@ -174,7 +224,8 @@ class Scene:
         polys, (h, w) = self.load()
         nv = sum(len(r) for p in polys for r in p)
         nr = sum(len(p) for p in polys)
-        what = (f"{len(polys)} masks" if self.batch else "1 mask")
+        what = (f"{len(polys)} fills into 1 canvas" if self.canvas else
+                f"{len(polys)} masks" if self.batch else "1 mask")
         return (f"{self.description}; {nr} ring(s), {nv} vertices; "
                 f"{what} of {w}x{h}")
 
@@ -194,7 +245,14 @@ SCENES = {s.name: s for s in [
           lambda: circle(64, 2048)),
     Scene("random100", "100 random self-intersecting 20-60-gons",
           lambda: random_polygons(100), batch=True),
+    Scene("coco100", "100 COCO-like simple 20-60-gons, 12-200 px",
+          lambda: coco_like(100), batch=True),
+    Scene("small10k", "10000 quads/pentagons 10-30 px, one canvas",
+          lambda: small_polygons(10000), batch=True, canvas=True),
 ]}
+
+#: The scenes of the one summary table (issue 4), in its column order.
+TABLE_SCENES = ("circle64", "star200", "holes", "coco100", "small10k")
 
 
 def get(names: Sequence[str] = ()) -> List[Scene]:

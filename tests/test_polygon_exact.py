@@ -93,6 +93,28 @@ def test_matches_oracle_fine_subpixel(rule, S, data):
     check_equal(rl, shape, rule=rule, subpixel_bits=S, sample_offset=o)
 
 
+# The textbook rounding (a crossing counts for column i iff X < i + o + 1/2)
+# is a second rule every algorithm must keep exactly, as the oracle has it.
+@pytest.mark.parametrize("o", OFFSETS)
+@pytest.mark.parametrize("S", [0, 1, 4, 8, 16])
+@pytest.mark.parametrize("rule", RULES)
+@settings(max_examples=examples(40))
+@given(data=st.data())
+def test_matches_oracle_textbook_rounding(rule, S, o, data):
+    rl, shape = data.draw(scenes(S, o), label="scene")
+    check_equal(rl, shape, rule=rule, subpixel_bits=S, sample_offset=o,
+                rounding="textbook")
+
+
+@pytest.mark.parametrize("alg,rule", CASES)
+def test_figure_3_19_textbook_rounding(alg, rule):
+    """The book's own polygon at integer samples, rounded as the book does."""
+    fig = [(7, 8), (3, 12), (1, 7), (3, 1), (6, 5), (8, 1), (12, 9)]
+    for rounding in ("exact", "textbook"):
+        check_equal(fig, (14, 14), rule=rule, algorithm=alg, subpixel_bits=0,
+                    sample_offset=0.0, rounding=rounding)
+
+
 def test_listed_rules_are_the_registry_and_others_are_refused():
     """ALGORITHMS lists exactly the rules the C registry reports for each
     algorithm, and a rule an algorithm does not list raises ValueError

@@ -122,6 +122,27 @@ enum {
     ((size_t)(npoints) * 2 * RAST_AET_EDGE_BYTES +               \
      ((size_t)(height) + 1) * RAST_AET_ROW_BYTES + RAST_SCRATCH_ALIGN)
 
+/* The same for the other polygon algorithms (rast_scratch_size gives the
+ * exact figure; these are never less).  For a clip `width` x `height`:
+ *  - xscan: an edge record (32 bytes) and a crossing key (4) per vertex;
+ *  - edgefill, fence: the mask, ONE BIT per clip pixel in 64-bit words;
+ *  - edgeflag: the same bits (its flags; all even-odd needs), plus one
+ *    counter per clip pixel for non-zero's direction sums, of 1 byte up to
+ *    511 vertices, 2 up to 131071, 4 beyond (rast_scratch_size cannot see
+ *    the rule, so it always counts them);
+ *  - crossing, winding: two edge records (32 bytes each) per vertex. */
+#define RAST_XSCAN_SCRATCH_BOUND(npoints) \
+    ((size_t)(npoints) * 36 + 2 * RAST_SCRATCH_ALIGN)
+#define RAST_EDGEFILL_SCRATCH_BOUND(width, height) \
+    ((size_t)(height) * (((size_t)(width) + 63) / 64) * 8)
+#define RAST_FENCE_SCRATCH_BOUND(width, height) RAST_EDGEFILL_SCRATCH_BOUND(width, height)
+#define RAST_EDGEFLAG_SCRATCH_BOUND(npoints, width, height)                      \
+    (RAST_EDGEFILL_SCRATCH_BOUND(width, height) +                               \
+     (size_t)(width) * (size_t)(height) *                                       \
+         ((npoints) <= 511 ? 1u : (npoints) <= 131071 ? 2u : 4u) + RAST_SCRATCH_ALIGN)
+#define RAST_POINTWISE_SCRATCH_BOUND(npoints) \
+    ((size_t)(npoints) * 64 + RAST_SCRATCH_ALIGN)
+
 /* ---- status codes ----------------------------------------------------------
  * Every function returns one of these (RAST_OK = 0, errors negative), except
  * the three that return a version or a string.  rast_status_str() gives the
@@ -339,8 +360,10 @@ RAST_API rast_status rast_algorithm_info(rast_algorithm algorithm,
 
 /* Scratch bytes that a fill with `opts` needs for a polygon of `npoints`
  * vertices (all rings together) drawn into a clip `width` x `height`
- * pixels.  The size grows with the vertices and the rows, never with the
- * coordinates.  Errors: RAST_E_NULL, RAST_E_ALGORITHM, RAST_E_SIZE,
+ * pixels.  The size grows with the vertices and the rows (with the clip's
+ * pixels for the mask algorithms edgefill, fence and edgeflag: see
+ * RAST_EDGEFILL_SCRATCH_BOUND), never with the coordinates.  For those
+ * three, a size that would not fit a size_t is given as SIZE_MAX.  Errors: RAST_E_NULL, RAST_E_ALGORITHM, RAST_E_SIZE,
  * RAST_E_TOO_MANY. */
 RAST_API rast_status rast_scratch_size(const rast_fill_opts *opts,
                                        uint32_t npoints, int32_t width,

@@ -2,13 +2,20 @@
  * registry.c - the polygon algorithms by number: name, fill rules, scratch
  * size, filler.  Adding an algorithm adds one row here (and its file).
  */
+#include "poly.h"
 #include "registry.h"
 
 #define RAST__BOTH_RULES ((1u << RAST_RULE_EVENODD) | (1u << RAST_RULE_NONZERO))
+#define RAST__EVENODD (1u << RAST_RULE_EVENODD)
 
 static const rast__algo rast__algos[RAST_ALGO_COUNT_] = {
     {"aet", RAST__BOTH_RULES, rast__aet_scratch, rast__aet_fill},
-    /* RAST_ALGO_XSCAN .. RAST_ALGO_WINDING: rows added as they land */
+    {"xscan", RAST__BOTH_RULES, rast__xscan_scratch, rast__xscan_fill},
+    {"edgefill", RAST__EVENODD, rast__edgefill_scratch, rast__edgefill_fill},
+    {"fence", RAST__EVENODD, rast__fence_scratch, rast__fence_fill},
+    {"edgeflag", RAST__BOTH_RULES, rast__edgeflag_scratch, rast__edgeflag_fill},
+    {"crossing", RAST__EVENODD, rast__crossing_scratch, rast__crossing_fill},
+    {"winding", RAST__BOTH_RULES, rast__winding_scratch, rast__winding_fill},
 };
 
 const rast__algo *rast__algo_get(rast_algorithm a)

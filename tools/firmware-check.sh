@@ -17,7 +17,7 @@ rv32imac|riscv64-unknown-elf-gcc|-march=rv32imac -mabi=ilp32 --specs=picolibc.sp
 
 # Symbols a core object may need: the string.h trio and the compiler's
 # integer helpers (64-bit division and shifts on 32-bit machines).
-allowed='^(memset|memcpy|memmove|__aeabi_(l|ul)divmod|__aeabi_(i|ui)divmod|__aeabi_(i|ui)div|__aeabi_l(lsl|lsr|asr)|__aeabi_lmul|__aeabi_lcmp|__aeabi_ulcmp|__(u)?(div|mod|mul)di3|__(a|l)shrdi3|__ashldi3|__(u)?cmpdi2|__clzsi2|__clzdi2)$'
+allowed='^(memset|memcpy|memmove|__aeabi_(l|ul)divmod|__aeabi_(i|ui)divmod|__aeabi_(i|ui)div|__aeabi_l(lsl|lsr|asr)|__aeabi_lmul|__aeabi_lcmp|__aeabi_ulcmp|__(u)?(div|mod|mul)di3|__(a|l)shrdi3|__ashldi3|__(u)?cmpdi2|__clzsi2|__clzdi2|__ctzsi2|__ctzdi2)$'
 status=0
 built=0
 for t in $(printf '%s\n' "$targets" | tr ' ' '~'); do

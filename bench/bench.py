@@ -772,8 +772,8 @@ def table_markdown(all_rows, scene_meta) -> str:
             elif r["kind"] == "baseline" or impl == "cv2.fillPoly":
                 cells.append(f"{r['ms']:.3g} ms")
             else:
-                c = f"{r['x_memset']:.3g} / {r['x_cv2']:.3g}" if \
-                    r.get("x_cv2") else f"{r['x_memset']:.3g} / -"
+                c = (f"{_fmt_ratio(r['x_memset']).strip()} / "
+                     f"{_fmt_ratio(r.get('x_cv2')).strip()}")
                 if r["kind"] == "rastrum":
                     c += f" / {_fmt_bytes(r.get('scratch'))}"
                 cells.append(c + (" (not exact)" if _exact_mark(r) else ""))

@@ -20,8 +20,9 @@ typedef char rast__aet_edge_size_check[sizeof(rast__edge) == RAST_AET_EDGE_BYTES
 size_t rast__aet_scratch(uint32_t npoints, int32_t width, int32_t height)
 {
     (void)width;
-    return 2 * rast__align((size_t)npoints * sizeof(rast__edge)) +
-           rast__align(((size_t)height + 1) * sizeof(int32_t));
+    return rast__size_add(
+        rast__size_mul(2, rast__align(rast__size_mul(npoints, sizeof(rast__edge)))),
+        rast__align(rast__size_mul((size_t)height + 1, sizeof(int32_t))));
 }
 
 /* Insertion sort of the AET by crossing column.  The edges are held by

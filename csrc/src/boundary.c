@@ -20,10 +20,10 @@ static void rast__bound_row(void *user, int32_t y, const int32_t *xs, int32_t n)
 
 size_t rast__bound_scratch(uint32_t npoints, int32_t height)
 {
-    return rast__align((size_t)npoints * sizeof(rast__bound_edge)) +
-           rast__align(((size_t)height + 1) * sizeof(int32_t)) +
-           rast__align((size_t)npoints * sizeof(int32_t)) +
-           rast__align((size_t)npoints * 2 * sizeof(int32_t));
+    size_t e = rast__align(rast__size_mul(npoints, sizeof(rast__bound_edge)));
+    size_t rows = rast__align(rast__size_mul((size_t)height + 1, sizeof(int32_t)));
+    size_t act = rast__align(rast__size_mul(npoints, 3 * sizeof(int32_t)));
+    return rast__size_add(rast__size_add(e, rows), act);
 }
 
 /* Rows [*r0, *r1) in which the open square of some pixel meets the closed

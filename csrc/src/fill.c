@@ -55,7 +55,8 @@ rast_status rast_scratch_size(const rast_fill_opts *opts, uint32_t npoints,
         return RAST_E_SIZE;
     if (npoints > RAST_MAX_POINTS) return RAST_E_TOO_MANY;
     *bytes = al->scratch(npoints, width, height);
-    if (opts->boundary != RAST_BOUNDARY_EXACT) *bytes += rast__bound_scratch(npoints, height);
+    if (opts->boundary != RAST_BOUNDARY_EXACT)
+        *bytes = rast__size_add(*bytes, rast__bound_scratch(npoints, height));
     return RAST_OK;
 }
 
@@ -78,7 +79,7 @@ static rast_status rast__fill(const rast_polygon *poly, const rast_fill_opts *op
     if (st != RAST_OK) return st;
     need = al->scratch(npoints, clip->x1 - clip->x0, clip->y1 - clip->y0);
     if (opts->boundary != RAST_BOUNDARY_EXACT)
-        need += rast__bound_scratch(npoints, clip->y1 - clip->y0);
+        need = rast__size_add(need, rast__bound_scratch(npoints, clip->y1 - clip->y0));
     if (scratch_bytes < need) return RAST_E_SCRATCH;
     if (scratch_bytes > 0 && !scratch) return RAST_E_NULL;
     if ((uintptr_t)scratch % RAST_SCRATCH_ALIGN) return RAST_E_ALIGN;

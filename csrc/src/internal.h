@@ -167,15 +167,31 @@ static inline void rast__sink_row(rast__sink *s, int32_t y, int32_t x0, int32_t 
     if (xs[0] < xs[1]) s->fn(s->user, y, xs, 1);
 }
 
+/* Saturating size arithmetic for the scratch functions: a clip of
+ * 2^30 x 2^30 pixels must give SIZE_MAX ("too much"), never a small
+ * wrapped number, where size_t has 32 bits. */
+static inline size_t rast__size_mul(size_t a, size_t b)
+{
+    if (a != 0 && b > (size_t)-1 / a) return (size_t)-1;
+    return a * b;
+}
+
+static inline size_t rast__size_add(size_t a, size_t b)
+{
+    return a > (size_t)-1 - b ? (size_t)-1 : a + b;
+}
+
 /* Bump allocation out of the caller's scratch buffer. */
 typedef struct rast__arena {
     unsigned char *p;
     size_t left;
 } rast__arena;
 
-/* Round n up to a multiple of RAST_SCRATCH_ALIGN. */
+/* Round n up to a multiple of RAST_SCRATCH_ALIGN; SIZE_MAX stays SIZE_MAX
+ * (a saturated size must not wrap to a small one). */
 static inline size_t rast__align(size_t n)
 {
+    if (n > (size_t)-1 - (RAST_SCRATCH_ALIGN - 1)) return (size_t)-1;
     return (n + (RAST_SCRATCH_ALIGN - 1)) & ~(size_t)(RAST_SCRATCH_ALIGN - 1);
 }
 

@@ -45,20 +45,6 @@ typedef struct rast__line {
 int32_t rast__poly_lines(const rast_polygon *poly, const rast__grid *g,
                          const rast__box *box, rast__line *lines);
 
-/* Saturating size arithmetic for the scratch functions: a clip of
- * 2^30 x 2^30 pixels must give SIZE_MAX ("too much"), never a small
- * wrapped number, where size_t has 32 bits. */
-static inline size_t rast__size_mul(size_t a, size_t b)
-{
-    if (a != 0 && b > (size_t)-1 / a) return (size_t)-1;
-    return a * b;
-}
-
-static inline size_t rast__size_add(size_t a, size_t b)
-{
-    return a > (size_t)-1 - b ? (size_t)-1 : a + b;
-}
-
 /* ---- one bit per pixel ------------------------------------------------------
  * Mask rows of 64-bit words, bit b of word k standing for column
  * col0 + 64k + b.  Words rather than bytes: the complement of a run is a

@@ -18,7 +18,7 @@
 size_t rast__tri_edgeflag_scratch(int32_t width, int32_t height)
 {
     (void)width;
-    return 2 * rast__align((size_t)height * sizeof(int32_t));
+    return rast__size_mul(2, rast__align(rast__size_mul((size_t)height, sizeof(int32_t))));
 }
 
 int rast__tri_span_flags(const rast_point *t, const rast__grid *g,

@@ -41,7 +41,7 @@ static size_t rast__tri_need(const rast__tri_algo *al, const rast_tri_opts *o,
                              int32_t width, int32_t height)
 {
     size_t need = al->scratch(width, height);
-    if (o->boundary != RAST_BOUNDARY_EXACT) need += rast__bound_scratch(3, height);
+    if (o->boundary != RAST_BOUNDARY_EXACT) need = rast__size_add(need, rast__bound_scratch(3, height));
     return need;
 }
 

@@ -24,7 +24,8 @@ Writes into DIR (default ./out):
 - star200_67.png    the self-intersecting {200/67} star, even-odd | non-zero.
 - canvas.png        an rgb888 Canvas composition.
 
-then prints the benchmark table (bench.main; --no-bench skips it).
+then prints the benchmark table (bench.main) and the triangle table
+(bench_triangles.main); --no-bench skips both.
 """
 
 from __future__ import annotations
@@ -279,6 +280,9 @@ def main(argv=None):
     sys.stdout.flush()
     if not args.no_bench:
         bench.main((["--quick"] if args.quick else []) + bench_args)
+        import bench_triangles
+        print("\n== triangles (bench/bench_triangles.py)", flush=True)
+        bench_triangles.main(["--quick"] if args.quick else [])
     return written
 
 

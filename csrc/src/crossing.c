@@ -27,13 +27,6 @@
  */
 #include "poly.h"
 
-size_t rast__crossing_scratch(uint32_t npoints, int32_t width, int32_t height)
-{
-    (void)width;
-    (void)height;
-    return 2 * rast__align((size_t)npoints * sizeof(rast__line));
-}
-
 rast_status rast__crossing_fill(const rast_polygon *poly, uint32_t npoints,
                                 const rast__grid *g, rast_fill_rule rule,
                                 const rast_rect *clip, rast__sink *sink,
@@ -42,14 +35,12 @@ rast_status rast__crossing_fill(const rast_polygon *poly, uint32_t npoints,
     rast__box box;
     rast__line *lines, *row;
     int32_t nlines, nrow, i, j, e;
+    rast_status st;
     const int64_t half = g->textbook ? g->unit / 2 : 0, strict = g->textbook;
 
     (void)rule; /* even-odd: the registry refuses non-zero */
-    if (!rast__poly_box(poly, npoints, g, clip, &box)) return RAST_OK;
-    lines = (rast__line *)rast__take(arena, (size_t)npoints * sizeof(rast__line));
-    row = (rast__line *)rast__take(arena, (size_t)npoints * sizeof(rast__line));
-    if (!lines || !row) return RAST_E_SCRATCH;
-    nlines = rast__poly_lines(poly, g, &box, lines);
+    st = rast__pointwise_begin(poly, npoints, g, clip, arena, &box, &lines, &row, &nlines);
+    if (st != RAST_OK || nlines < 0) return st;
 
     for (j = box.row0; j < box.row1; j++) {
         const int64_t yc = (int64_t)j * g->unit + g->off;

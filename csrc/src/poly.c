@@ -156,3 +156,24 @@ void rast__mask_spans(const rast__mask *m, rast__sink *sink)
         rast__bits_spans(rast__mask_row(m, j), m->bits, m->box.col0, j, sink);
     rast__sink_flush(sink);
 }
+
+size_t rast__pointwise_scratch(uint32_t npoints, int32_t width, int32_t height)
+{
+    (void)width;
+    (void)height;
+    return 2 * rast__align((size_t)npoints * sizeof(rast__line));
+}
+
+rast_status rast__pointwise_begin(const rast_polygon *poly, uint32_t npoints,
+                                  const rast__grid *g, const rast_rect *clip,
+                                  rast__arena *arena, rast__box *box, rast__line **lines,
+                                  rast__line **row, int32_t *nlines)
+{
+    *nlines = -1;
+    if (!rast__poly_box(poly, npoints, g, clip, box)) return RAST_OK;
+    *lines = (rast__line *)rast__take(arena, (size_t)npoints * sizeof(rast__line));
+    *row = (rast__line *)rast__take(arena, (size_t)npoints * sizeof(rast__line));
+    if (!*lines || !*row) return RAST_E_SCRATCH;
+    *nlines = rast__poly_lines(poly, g, box, *lines);
+    return RAST_OK;
+}

@@ -118,7 +118,21 @@ RAST__DECLARE_FILLER(xscan);    /* xscan.c */
 RAST__DECLARE_FILLER(edgefill); /* edgefill.c */
 RAST__DECLARE_FILLER(fence);    /* fence.c */
 RAST__DECLARE_FILLER(edgeflag); /* edgeflag.c */
-RAST__DECLARE_FILLER(crossing); /* crossing.c */
-RAST__DECLARE_FILLER(winding);  /* winding.c */
+/* crossing.c and winding.c: point by point, with the same work memory (one
+ * rast__line per vertex, twice: all edges, and those crossing the row) and
+ * the same start, from poly.c. */
+rast_status rast__crossing_fill(const rast_polygon *poly, uint32_t npoints,
+                                const rast__grid *g, rast_fill_rule rule,
+                                const rast_rect *clip, rast__sink *sink, rast__arena *arena);
+rast_status rast__winding_fill(const rast_polygon *poly, uint32_t npoints,
+                               const rast__grid *g, rast_fill_rule rule,
+                               const rast_rect *clip, rast__sink *sink, rast__arena *arena);
+size_t rast__pointwise_scratch(uint32_t npoints, int32_t width, int32_t height);
+/* The bounding box, the edge lines and room for a row's lines.  *nlines is
+ * -1 when the box is empty (nothing to do) and the status RAST_OK. */
+rast_status rast__pointwise_begin(const rast_polygon *poly, uint32_t npoints,
+                                  const rast__grid *g, const rast_rect *clip,
+                                  rast__arena *arena, rast__box *box, rast__line **lines,
+                                  rast__line **row, int32_t *nlines);
 
 #endif /* RAST_POLY_H */

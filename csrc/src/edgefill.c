@@ -21,43 +21,13 @@
  */
 #include "poly.h"
 
-size_t rast__edgefill_scratch(uint32_t npoints, int32_t width, int32_t height)
-{
-    (void)npoints;
-    return rast__mask_scratch(width, height);
-}
-
 rast_status rast__edgefill_fill(const rast_polygon *poly, uint32_t npoints,
                                 const rast__grid *g, rast_fill_rule rule,
                                 const rast_rect *clip, rast__sink *sink,
                                 rast__arena *arena)
 {
-    const rast_point *pts = poly->points;
-    rast__mask m;
-    uint32_t k, i, base;
-    rast_status st;
-
     (void)rule; /* even-odd: the registry refuses non-zero */
-    st = rast__mask_begin(&m, poly, npoints, g, clip, arena);
-    if (st != RAST_OK || m.bits == 0) return st;
-
-    for (k = 0, base = 0; k < poly->nrings; base += poly->ring_sizes[k], k++) {
-        uint32_t n = poly->ring_sizes[k];
-        for (i = 0; i < n; i++) {
-            rast__edge ed;
-            int32_t j;
-            if (!rast__edge_setup(&ed, pts[base + i], pts[base + (i + 1 == n ? 0 : i + 1)], g,
-                                  m.box.row0, m.box.row1))
-                continue;
-            for (j = ed.row; j < ed.end; j++, rast__edge_step(&ed)) {
-                /* Samples i >= ed.x count the crossing: complement them,
-                 * from the box's left side when the crossing is left of it. */
-                int32_t c = ed.x - m.box.col0;
-                if (c < 0) c = 0;
-                if (c < m.bits) rast__bits_flip(rast__mask_row(&m, j), c, m.bits);
-            }
-        }
-    }
-    rast__mask_spans(&m, sink);
-    return RAST_OK;
+    /* Edge fill is the complement walk with its "fence" at the box's right
+     * side: every run goes from the crossing to there. */
+    return rast__complement_fill(poly, npoints, g, clip, sink, arena, NULL);
 }

@@ -21,12 +21,6 @@
  */
 #include "poly.h"
 
-size_t rast__fence_scratch(uint32_t npoints, int32_t width, int32_t height)
-{
-    (void)npoints;
-    return rast__mask_scratch(width, height);
-}
-
 /* The fence, relative to the box: the column (first counting column) of
  * the vertex nearest the box's middle, clamped to [0, bits]. */
 static int32_t rast__fence_col(const rast_polygon *poly, uint32_t npoints,
@@ -53,39 +47,6 @@ rast_status rast__fence_fill(const rast_polygon *poly, uint32_t npoints,
                              const rast_rect *clip, rast__sink *sink,
                              rast__arena *arena)
 {
-    const rast_point *pts = poly->points;
-    rast__mask m;
-    uint32_t k, i, base;
-    int32_t f;
-    rast_status st;
-
     (void)rule; /* even-odd: the registry refuses non-zero */
-    st = rast__mask_begin(&m, poly, npoints, g, clip, arena);
-    if (st != RAST_OK || m.bits == 0) return st;
-    f = rast__fence_col(poly, npoints, g, &m);
-
-    for (k = 0, base = 0; k < poly->nrings; base += poly->ring_sizes[k], k++) {
-        uint32_t n = poly->ring_sizes[k];
-        for (i = 0; i < n; i++) {
-            rast__edge ed;
-            int32_t j;
-            if (!rast__edge_setup(&ed, pts[base + i], pts[base + (i + 1 == n ? 0 : i + 1)], g,
-                                  m.box.row0, m.box.row1))
-                continue;
-            for (j = ed.row; j < ed.end; j++, rast__edge_step(&ed)) {
-                /* The crossing's column, clamped to the box [0, bits]
-                 * (which changes no sample's count), then the run between
-                 * it and the fence. */
-                int32_t c = ed.x - m.box.col0;
-                if (c < 0) c = 0;
-                if (c > m.bits) c = m.bits;
-                if (c < f)
-                    rast__bits_flip(rast__mask_row(&m, j), c, f);
-                else
-                    rast__bits_flip(rast__mask_row(&m, j), f, c);
-            }
-        }
-    }
-    rast__mask_spans(&m, sink);
-    return RAST_OK;
+    return rast__complement_fill(poly, npoints, g, clip, sink, arena, rast__fence_col);
 }

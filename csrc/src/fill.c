@@ -80,17 +80,11 @@ static rast_status rast__fill(const rast_polygon *poly, const rast_fill_opts *op
     need = al->scratch(npoints, clip->x1 - clip->x0, clip->y1 - clip->y0);
     if (opts->boundary != RAST_BOUNDARY_EXACT)
         need = rast__size_add(need, rast__bound_scratch(npoints, clip->y1 - clip->y0));
-    if (scratch_bytes < need) return RAST_E_SCRATCH;
-    if (scratch_bytes > 0 && !scratch) return RAST_E_NULL;
-    if ((uintptr_t)scratch % RAST_SCRATCH_ALIGN) return RAST_E_ALIGN;
+    st = rast__scratch_check(scratch, scratch_bytes, need);
+    if (st != RAST_OK) return st;
     if (clip->x0 >= clip->x1 || clip->y0 >= clip->y1) return RAST_OK;
 
-    sink.fn = fn;
-    sink.user = user;
-    sink.cx0 = clip->x0;
-    sink.cx1 = clip->x1;
-    sink.y = clip->y0;
-    sink.n = 0;
+    rast__sink_init(&sink, fn, user, clip);
     arena.p = (unsigned char *)scratch;
     arena.left = scratch_bytes;
     if (opts->boundary == RAST_BOUNDARY_EXACT)
@@ -147,15 +141,10 @@ rast_status rast_fill_polygon_spans(const rast_polygon *polygon,
 {
     rast__user_spans u;
     rast_rect c;
+    rast_status st;
     if (!clip || !span) return RAST_E_NULL;
-    c = *clip;
-    /* Keep x1 - x0 and y1 - y0 inside int32_t. */
-    if (c.x0 < -RAST_MAX_DIM || c.x0 > RAST_MAX_DIM || c.x1 < -RAST_MAX_DIM ||
-        c.x1 > RAST_MAX_DIM || c.y0 < -RAST_MAX_DIM || c.y0 > RAST_MAX_DIM ||
-        c.y1 < -RAST_MAX_DIM || c.y1 > RAST_MAX_DIM)
-        return RAST_E_SIZE;
-    if (c.x1 < c.x0) c.x1 = c.x0;
-    if (c.y1 < c.y0) c.y1 = c.y0;
+    st = rast__span_clip(clip, &c);
+    if (st != RAST_OK) return st;
     u.fn = span;
     u.user = user;
     return rast__fill(polygon, opts, &c, rast__user_row, &u, scratch, scratch_bytes);

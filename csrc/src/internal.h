@@ -181,6 +181,28 @@ static inline size_t rast__size_add(size_t a, size_t b)
     return a > (size_t)-1 - b ? (size_t)-1 : a + b;
 }
 
+/* A sink handing the spans inside `clip`'s columns to `fn`. */
+static inline void rast__sink_init(rast__sink *s, rast__row_fn fn, void *user,
+                                   const rast_rect *clip)
+{
+    s->fn = fn;
+    s->user = user;
+    s->cx0 = clip->x0;
+    s->cx1 = clip->x1;
+    s->y = clip->y0;
+    s->n = 0;
+}
+
+/* A caller's scratch, checked before anything is written: at least `need`
+ * bytes, not NULL unless empty, aligned to RAST_SCRATCH_ALIGN. */
+static inline rast_status rast__scratch_check(const void *scratch, size_t bytes, size_t need)
+{
+    if (bytes < need) return RAST_E_SCRATCH;
+    if (bytes > 0 && !scratch) return RAST_E_NULL;
+    if ((uintptr_t)scratch % RAST_SCRATCH_ALIGN) return RAST_E_ALIGN;
+    return RAST_OK;
+}
+
 /* Bump allocation out of the caller's scratch buffer. */
 typedef struct rast__arena {
     unsigned char *p;

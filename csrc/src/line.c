@@ -324,11 +324,8 @@ rast_status rast_line_pixels(rast_point a, rast_point b, const rast_line_opts *o
     rast_status st = rast__line_check(opts, &g);
     if (st != RAST_OK) return st;
     if (!clip || !count || (capacity > 0 && !xy)) return RAST_E_NULL;
-    c = *clip;
-    if (c.x0 < -RAST_MAX_DIM || c.x0 > RAST_MAX_DIM || c.x1 < -RAST_MAX_DIM ||
-        c.x1 > RAST_MAX_DIM || c.y0 < -RAST_MAX_DIM || c.y0 > RAST_MAX_DIM ||
-        c.y1 < -RAST_MAX_DIM || c.y1 > RAST_MAX_DIM)
-        return RAST_E_SIZE;
+    st = rast__span_clip(clip, &c);
+    if (st != RAST_OK) return st;
     if (!rast__in_range(a) || !rast__in_range(b)) return RAST_E_RANGE;
     rast__lwalk_init(&w, a, b, &g, opts->algorithm == RAST_LINE_DDA, &c);
     *count = (size_t)w.n; /* <= 2^28 + 1 */

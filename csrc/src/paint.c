@@ -145,6 +145,19 @@ rast_status rast_target_init(rast_target *t, void *pixels, int32_t width,
     return RAST_OK;
 }
 
+rast_status rast__span_clip(const rast_rect *clip, rast_rect *out)
+{
+    rast_rect c = *clip;
+    if (c.x0 < -RAST_MAX_DIM || c.x0 > RAST_MAX_DIM || c.x1 < -RAST_MAX_DIM ||
+        c.x1 > RAST_MAX_DIM || c.y0 < -RAST_MAX_DIM || c.y0 > RAST_MAX_DIM ||
+        c.y1 < -RAST_MAX_DIM || c.y1 > RAST_MAX_DIM)
+        return RAST_E_SIZE;
+    if (c.x1 < c.x0) c.x1 = c.x0;
+    if (c.y1 < c.y0) c.y1 = c.y0;
+    *out = c;
+    return RAST_OK;
+}
+
 rast_status rast__target_check(const rast_target *t, rast_rect *clip)
 {
     rast_target v;

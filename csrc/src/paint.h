@@ -16,6 +16,11 @@ typedef struct rast__solid {
     int32_t row;                  /* opaque: the last row written */
 } rast__solid;
 
+/* A span callback's clip: coordinates within +-RAST_MAX_DIM (so that its
+ * width and height fit int32_t) else RAST_E_SIZE; an inverted one is made
+ * empty. */
+rast_status rast__span_clip(const rast_rect *clip, rast_rect *c);
+
 /* Check a target (as rast_target_init would) and cut its clip to it. */
 rast_status rast__target_check(const rast_target *t, rast_rect *clip);
 

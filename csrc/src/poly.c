@@ -177,3 +177,50 @@ rast_status rast__pointwise_begin(const rast_polygon *poly, uint32_t npoints,
     *nlines = rast__poly_lines(poly, g, box, *lines);
     return RAST_OK;
 }
+
+size_t rast__complement_scratch(uint32_t npoints, int32_t width, int32_t height)
+{
+    (void)npoints;
+    return rast__mask_scratch(width, height);
+}
+
+rast_status rast__complement_fill(const rast_polygon *poly, uint32_t npoints,
+                                  const rast__grid *g, const rast_rect *clip,
+                                  rast__sink *sink, rast__arena *arena,
+                                  rast__fence_fn fence)
+{
+    const rast_point *pts = poly->points;
+    rast__mask m;
+    uint32_t k, i, base;
+    int32_t f;
+    rast_status st;
+
+    st = rast__mask_begin(&m, poly, npoints, g, clip, arena);
+    if (st != RAST_OK || m.bits == 0) return st;
+    f = fence ? fence(poly, npoints, g, &m) : m.bits;
+
+    for (k = 0, base = 0; k < poly->nrings; base += poly->ring_sizes[k], k++) {
+        uint32_t n = poly->ring_sizes[k];
+        for (i = 0; i < n; i++) {
+            rast__edge ed;
+            int32_t j;
+            if (!rast__edge_setup(&ed, pts[base + i], pts[base + (i + 1 == n ? 0 : i + 1)], g,
+                                  m.box.row0, m.box.row1))
+                continue;
+            for (j = ed.row; j < ed.end; j++, rast__edge_step(&ed)) {
+                /* The crossing's column, clamped to the box [0, bits]
+                 * (which changes no sample's count), then the run between
+                 * it and the fence. */
+                int32_t c = ed.x - m.box.col0;
+                if (c < 0) c = 0;
+                if (c > m.bits) c = m.bits;
+                if (c < f)
+                    rast__bits_flip(rast__mask_row(&m, j), c, f);
+                else if (c > f)
+                    rast__bits_flip(rast__mask_row(&m, j), f, c);
+            }
+        }
+    }
+    rast__mask_spans(&m, sink);
+    return RAST_OK;
+}

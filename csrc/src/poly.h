@@ -115,8 +115,22 @@ void rast__mask_spans(const rast__mask *m, rast__sink *sink);
     size_t rast__##name##_scratch(uint32_t npoints, int32_t width, int32_t height)
 
 RAST__DECLARE_FILLER(xscan);    /* xscan.c */
-RAST__DECLARE_FILLER(edgefill); /* edgefill.c */
-RAST__DECLARE_FILLER(fence);    /* fence.c */
+/* edgefill.c and fence.c: both the complement walk of poly.c, on the same
+ * one-bit mask; they differ only in where a crossing's run ends: at the
+ * box's right side (edge fill) or at the fence (fence.c's column). */
+typedef int32_t (*rast__fence_fn)(const rast_polygon *poly, uint32_t npoints,
+                                  const rast__grid *g, const rast__mask *m);
+rast_status rast__complement_fill(const rast_polygon *poly, uint32_t npoints,
+                                  const rast__grid *g, const rast_rect *clip,
+                                  rast__sink *sink, rast__arena *arena,
+                                  rast__fence_fn fence);
+size_t rast__complement_scratch(uint32_t npoints, int32_t width, int32_t height);
+rast_status rast__edgefill_fill(const rast_polygon *poly, uint32_t npoints,
+                                const rast__grid *g, rast_fill_rule rule,
+                                const rast_rect *clip, rast__sink *sink, rast__arena *arena);
+rast_status rast__fence_fill(const rast_polygon *poly, uint32_t npoints,
+                             const rast__grid *g, rast_fill_rule rule,
+                             const rast_rect *clip, rast__sink *sink, rast__arena *arena);
 RAST__DECLARE_FILLER(edgeflag); /* edgeflag.c */
 /* crossing.c and winding.c: point by point, with the same work memory (one
  * rast__line per vertex, twice: all edges, and those crossing the row) and

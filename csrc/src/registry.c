@@ -11,8 +11,8 @@
 static const rast__algo rast__algos[RAST_ALGO_COUNT_] = {
     {"aet", RAST__BOTH_RULES, rast__aet_scratch, rast__aet_fill},
     {"xscan", RAST__BOTH_RULES, rast__xscan_scratch, rast__xscan_fill},
-    {"edgefill", RAST__EVENODD, rast__edgefill_scratch, rast__edgefill_fill},
-    {"fence", RAST__EVENODD, rast__fence_scratch, rast__fence_fill},
+    {"edgefill", RAST__EVENODD, rast__complement_scratch, rast__edgefill_fill},
+    {"fence", RAST__EVENODD, rast__complement_scratch, rast__fence_fill},
     {"edgeflag", RAST__BOTH_RULES, rast__edgeflag_scratch, rast__edgeflag_fill},
     {"crossing", RAST__EVENODD, rast__pointwise_scratch, rast__crossing_fill},
     {"winding", RAST__BOTH_RULES, rast__pointwise_scratch, rast__winding_fill},

@@ -92,18 +92,12 @@ static rast_status rast__tri_fill(const rast_point *tris, uint32_t ntris,
     if (st != RAST_OK) return st;
     st = rast__tri_check_opts(opts, &g, &al);
     if (st != RAST_OK) return st;
-    if (scratch_bytes < rast__tri_need(al, opts, clip->x1 - clip->x0, clip->y1 - clip->y0))
-        return RAST_E_SCRATCH;
-    if (scratch_bytes > 0 && !scratch) return RAST_E_NULL;
-    if ((uintptr_t)scratch % RAST_SCRATCH_ALIGN) return RAST_E_ALIGN;
+    st = rast__scratch_check(scratch, scratch_bytes,
+                             rast__tri_need(al, opts, clip->x1 - clip->x0, clip->y1 - clip->y0));
+    if (st != RAST_OK) return st;
     if (clip->x0 >= clip->x1 || clip->y0 >= clip->y1) return RAST_OK;
 
-    sink.fn = fn;
-    sink.user = user;
-    sink.cx0 = clip->x0;
-    sink.cx1 = clip->x1;
-    sink.y = clip->y0;
-    sink.n = 0;
+    rast__sink_init(&sink, fn, user, clip);
     for (k = 0; k < ntris; k++) {
         const rast_point *t = tris + 3 * (size_t)k;
         /* Fillers leave the sink empty (rast__sink_row, or a flush), so one
@@ -153,15 +147,10 @@ rast_status rast_fill_triangles_spans(const rast_point *tris, uint32_t ntris,
 {
     rast__user_spans u;
     rast_rect c;
+    rast_status st;
     if (!opts || !clip || !span || (ntris > 0 && !tris)) return RAST_E_NULL;
-    c = *clip;
-    /* Keep x1 - x0 and y1 - y0 inside int32_t. */
-    if (c.x0 < -RAST_MAX_DIM || c.x0 > RAST_MAX_DIM || c.x1 < -RAST_MAX_DIM ||
-        c.x1 > RAST_MAX_DIM || c.y0 < -RAST_MAX_DIM || c.y0 > RAST_MAX_DIM ||
-        c.y1 < -RAST_MAX_DIM || c.y1 > RAST_MAX_DIM)
-        return RAST_E_SIZE;
-    if (c.x1 < c.x0) c.x1 = c.x0;
-    if (c.y1 < c.y0) c.y1 = c.y0;
+    st = rast__span_clip(clip, &c);
+    if (st != RAST_OK) return st;
     u.fn = span;
     u.user = user;
     return rast__tri_fill(tris, ntris, opts, &c, rast__user_row, &u, scratch, scratch_bytes);

@@ -12,6 +12,7 @@
 #include <string.h>
 
 #include "check.h"
+#include "ref.h"
 #include "rastrum.h"
 
 #define GUARD 0xA5
@@ -20,55 +21,16 @@
 #define STRIDE (MAXW + 2 * PAD)
 #define SCRATCH_GUARD 64
 
-/* ---- the reference: DESIGN section 1, one sample at a time ----------------
- * Doubled coordinates (a half-pixel sample is an integer) and
- * cross-multiplication instead of division.  For a downward edge (y0 < y1
- * after swapping) crossing row yc, the crossing X counts for xc iff
- * X <= xc (exact), iff X < xc + unit/2 (textbook), that is iff
- * (xc - x0)(y1 - y0) >= (yc - y0)(x1 - x0), resp. with xc + unit/2 and >. */
+/* ---- the reference: ref.h, DESIGN section 1 one sample at a time ---------- */
 typedef struct {
     int s, center, textbook;
 } grid;
-
-static int ref_winding(const rast_point *pts, const uint32_t *sizes, uint32_t nrings,
-                       const grid *gr, int64_t i, int64_t j, int *crossings)
-{
-    int64_t unit = (int64_t)2 << gr->s, off = gr->center ? ((int64_t)1 << gr->s) : 0;
-    int64_t xc = i * unit + off, yc = j * unit + off;
-    uint32_t k, v, base = 0;
-    int w = 0, n = 0;
-    if (gr->textbook) xc += unit / 2;
-    for (k = 0; k < nrings; base += sizes[k], k++) {
-        for (v = 0; v < sizes[k]; v++) {
-            rast_point a = pts[base + v], b = pts[base + (v + 1) % sizes[k]];
-            int64_t x0 = 2 * (int64_t)a.x, y0 = 2 * (int64_t)a.y;
-            int64_t x1 = 2 * (int64_t)b.x, y1 = 2 * (int64_t)b.y, lhs, rhs;
-            int dir = 1;
-            if (y0 == y1) continue;
-            if (y0 > y1) {
-                int64_t t;
-                t = x0; x0 = x1; x1 = t;
-                t = y0; y0 = y1; y1 = t;
-                dir = -1;
-            }
-            if (!(y0 <= yc && yc < y1)) continue;
-            lhs = (xc - x0) * (y1 - y0);
-            rhs = (yc - y0) * (x1 - x0);
-            if (gr->textbook ? lhs > rhs : lhs >= rhs) {
-                w += dir;
-                n++;
-            }
-        }
-    }
-    *crossings = n;
-    return w;
-}
 
 static int parity_bad; /* the parity of w is the parity of the count */
 static int ref_inside(const rast_point *pts, const uint32_t *sizes, uint32_t nrings,
                       const grid *gr, int rule, int64_t i, int64_t j)
 {
-    int n, w = ref_winding(pts, sizes, nrings, gr, i, j, &n);
+    int n, w = ref_winding(pts, sizes, nrings, gr->s, gr->center, gr->textbook, i, j, &n);
     if (rule == RAST_RULE_EVENODD) {
         parity_bad += (n & 1) != (w & 1);
         return n & 1;

@@ -6,43 +6,17 @@
 #include <string.h>
 
 #include "check.h"
+#include "ref.h"
 #include "rastrum.h"
 
 #define GUARD 0xA5
 #define PAD 16
 
-/* ---- a brute-force reference, one sample at a time ------------------------
- * DESIGN section 1 with cross-multiplication instead of division: the
- * crossing of a downward edge (y0 < y1, after swapping) lies at or left of
- * the sample iff (xc - x0)*(y1 - y0) >= (yc - y0)*(x1 - x0).  Coordinates
- * are doubled so that a half-pixel sample is an integer. */
+/* ---- the brute-force reference (ref.h) ----------------------------------- */
 static int ref_inside(const rast_point *pts, const uint32_t *sizes, uint32_t nrings,
                       int s, int center, int rule, int64_t i, int64_t j)
 {
-    int64_t unit = (int64_t)2 << s, off = center ? ((int64_t)1 << s) : 0;
-    int64_t xc = i * unit + off, yc = j * unit + off;
-    uint32_t k, v, base = 0;
-    int w = 0, crossings = 0;
-    for (k = 0; k < nrings; base += sizes[k], k++) {
-        for (v = 0; v < sizes[k]; v++) {
-            rast_point a = pts[base + v], b = pts[base + (v + 1) % sizes[k]];
-            int64_t x0 = 2 * (int64_t)a.x, y0 = 2 * (int64_t)a.y;
-            int64_t x1 = 2 * (int64_t)b.x, y1 = 2 * (int64_t)b.y;
-            int dir = 1;
-            if (y0 == y1) continue;
-            if (y0 > y1) {
-                int64_t t;
-                t = x0; x0 = x1; x1 = t;
-                t = y0; y0 = y1; y1 = t;
-                dir = -1;
-            }
-            if (!(y0 <= yc && yc < y1)) continue;
-            if ((xc - x0) * (y1 - y0) >= (yc - y0) * (x1 - x0)) {
-                w += dir;
-                crossings++;
-            }
-        }
-    }
+    int crossings, w = ref_winding(pts, sizes, nrings, s, center, 0, i, j, &crossings);
     return rule == RAST_RULE_EVENODD ? (crossings & 1) : (w != 0);
 }
 

@@ -7,6 +7,7 @@
 #include <string.h>
 
 #include "check.h"
+#include "ref.h"
 #include "internal.h" /* rast__tri_span_flags, rast__grid_init */
 
 #define GUARD 0xA5
@@ -29,27 +30,8 @@ static uint32_t rng(void)
  * X < xc + 1/2 pixel (textbook). */
 static int ref_inside(const rast_point *t, int s, int center, int textbook, int64_t i, int64_t j)
 {
-    int64_t unit = (int64_t)2 << s, off = center ? ((int64_t)1 << s) : 0;
-    int64_t xc = i * unit + off, yc = j * unit + off;
-    int k, w = 0;
-    for (k = 0; k < 3; k++) {
-        rast_point a = t[k], b = t[(k + 1) % 3];
-        int64_t x0 = 2 * (int64_t)a.x, y0 = 2 * (int64_t)a.y;
-        int64_t x1 = 2 * (int64_t)b.x, y1 = 2 * (int64_t)b.y, lhs, rhs;
-        int dir = 1;
-        if (y0 == y1) continue;
-        if (y0 > y1) {
-            int64_t tmp;
-            tmp = x0; x0 = x1; x1 = tmp;
-            tmp = y0; y0 = y1; y1 = tmp;
-            dir = -1;
-        }
-        if (!(y0 <= yc && yc < y1)) continue;
-        lhs = (xc - x0) * (y1 - y0);
-        rhs = (yc - y0) * (x1 - x0);
-        if (textbook ? (lhs + (unit / 2) * (y1 - y0) > rhs) : (lhs >= rhs)) w += dir;
-    }
-    return w != 0;
+    static const uint32_t three = 3;
+    return ref_winding(t, &three, 1, s, center, textbook, i, j, NULL) != 0;
 }
 
 static rast_tri_opts topts(int algo, int s, int center, int textbook)

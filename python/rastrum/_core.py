@@ -164,27 +164,32 @@ def _make_fill_opts(algorithm, rule, subpixel_bits, sample_offset, rounding="exa
     return opts
 
 
-# Checked options by their arguments (and the arguments' types, so that
-# True or 8.0 are still refused): a hit skips every check.  C only reads
-# the structs, so threads may share them.
+# Checked option structs by their arguments (and the arguments' types, so
+# that True or 8.0 are still refused): a hit skips every check.  C only
+# reads the structs, so threads may share them.
 _OPTS_CACHE = {}
 
 
-def fill_opts(algorithm, rule, subpixel_bits, sample_offset, rounding="exact", boundary="exact"):
-    """A checked, read-only ``rast_fill_opts *``."""
-    key = (algorithm, rule, subpixel_bits, type(subpixel_bits), sample_offset, type(sample_offset),
-           rounding, boundary)
+def cached_opts(kind, make, *args):
+    """``make(*args)``, remembered under (kind, args, their types)."""
+    key = (kind,) + args + tuple(type(a) for a in args)
     try:
         return _OPTS_CACHE[key]
     except (KeyError, TypeError):
         pass
-    opts = _make_fill_opts(algorithm, rule, subpixel_bits, sample_offset, rounding, boundary)
+    opts = make(*args)
     if len(_OPTS_CACHE) < 4096:
         try:
             _OPTS_CACHE[key] = opts
         except TypeError:
             pass
     return opts
+
+
+def fill_opts(algorithm, rule, subpixel_bits, sample_offset, rounding="exact", boundary="exact"):
+    """A checked, read-only ``rast_fill_opts *``."""
+    return cached_opts("polygon", _make_fill_opts, algorithm, rule, subpixel_bits, sample_offset,
+                       rounding, boundary)
 
 
 def shape2(shape):

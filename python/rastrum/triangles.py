@@ -27,19 +27,7 @@ def _triangle_algorithms():
 TRIANGLE_ALGORITHMS = _triangle_algorithms()
 MODES = ("set", "count")
 
-# Checked options by their arguments (and the arguments' types, so that
-# True or 8.0 are still refused), as _core.fill_opts does for polygons.
-_OPTS_CACHE = {}
-
-
-def tri_opts(algorithm, subpixel_bits, sample_offset, rounding="exact", boundary="exact"):
-    """A checked, read-only ``rast_tri_opts *``."""
-    key = (algorithm, subpixel_bits, type(subpixel_bits), sample_offset, type(sample_offset),
-           rounding, boundary)
-    try:
-        return _OPTS_CACHE[key]
-    except (KeyError, TypeError):
-        pass
+def _make_tri_opts(algorithm, subpixel_bits, sample_offset, rounding, boundary):
     code = TRIANGLE_ALGORITHMS[_core._name(algorithm, "triangle algorithm", TRIANGLE_ALGORITHMS)]
     opts = ffi.new("rast_tri_opts *")
     opts.algorithm = code
@@ -47,12 +35,13 @@ def tri_opts(algorithm, subpixel_bits, sample_offset, rounding="exact", boundary
     opts.sample = _core.sample_code(sample_offset)
     opts.rounding = _core.rounding_code(rounding)
     opts.boundary = _core.boundary_code(boundary)
-    if len(_OPTS_CACHE) < 4096:
-        try:
-            _OPTS_CACHE[key] = opts
-        except TypeError:
-            pass
     return opts
+
+
+def tri_opts(algorithm, subpixel_bits, sample_offset, rounding="exact", boundary="exact"):
+    """A checked, read-only ``rast_tri_opts *`` (cached as _core.fill_opts)."""
+    return _core.cached_opts("triangles", _make_tri_opts, algorithm, subpixel_bits,
+                             sample_offset, rounding, boundary)
 
 
 def tris_f64(tris, single=False):

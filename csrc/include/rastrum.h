@@ -306,7 +306,13 @@ typedef enum rast_format {
     RAST_FORMAT_COUNT16 = 3,  /* 2 bytes, a native uint16_t: a fill adds 1 to
                                  each pixel it covers (saturating at 65535) and
                                  ignores the pixel value; overdraw made visible */
-    RAST_FORMAT_COUNT_ = 4
+    RAST_FORMAT_RGB565 = 4,   /* 2 bytes, a native uint16_t: R in bits 15-11,
+                                 G in 10-5, B in 4-0 (TFT displays); pixels
+                                 and stride 2-byte aligned */
+    RAST_FORMAT_MONO1 = 5,    /* 1 bit, 8 pixels a byte, MSB first: pixel x is
+                                 bit 7 - x%8 of byte x/8 of its row (e-paper);
+                                 a pixel value is 1 byte, "on" iff not 0 */
+    RAST_FORMAT_COUNT_ = 6
 } rast_format;
 
 /* A target: a view of caller-owned memory.  pixels points at pixel (0, 0);
@@ -314,7 +320,10 @@ typedef enum rast_format {
  * pixel; it may be larger, for padding or for a sub-view of a larger image).
  * Nothing outside `clip` is ever read or written; rast_target_init sets the
  * clip to the whole target, and a caller may narrow it (to draw into a band
- * or a window).  A clip that reaches past the target is cut to it. */
+ * or a window).  A clip that reaches past the target is cut to it.
+ * RAST_FORMAT_MONO1 is the exception at the bit level: a byte holding both
+ * clip pixels and others is read and written back with the others' bits
+ * unchanged (so two threads must not draw into clips sharing a byte). */
 typedef struct rast_target {
     void *pixels;
     int32_t width;
@@ -336,17 +345,40 @@ RAST_API int rast_version_number(void);
  * The string is static: never free it. */
 RAST_API const char *rast_status_str(rast_status status);
 
-/* Bytes per pixel of `format` into *bytes (1, 2, 3 or 4).
+/* Bytes of one pixel value of `format` into *bytes (1, 2, 3 or 4): what a
+ * `pixel` or `background` argument holds, in the format's own encoding.
+ * It is also the memory of one pixel, except for RAST_FORMAT_MONO1, which
+ * packs 8 pixels into a byte (see rast_format_stride); its value is one
+ * byte, 0 (off) or not 0 (on).
  * RAST_E_FORMAT for an unknown format, RAST_E_NULL if bytes is NULL. */
 RAST_API rast_status rast_format_bytes(rast_format format, int32_t *bytes);
 
+/* The fewest bytes a row of `width` pixels of `format` takes, into *bytes:
+ * width * bytes per pixel, or ceil(width / 8) for RAST_FORMAT_MONO1 (the
+ * smallest valid stride).  Errors: RAST_E_NULL, RAST_E_FORMAT, RAST_E_SIZE
+ * (width outside 0..RAST_MAX_DIM, or a row past INT32_MAX bytes). */
+RAST_API rast_status rast_format_stride(rast_format format, int32_t width, int32_t *bytes);
+
+/* The pixel value of `format` for the 8-bit colour rgba[0..3] (R, G, B,
+ * A), into `pixel` (rast_format_bytes bytes), as the shaded fills store
+ * colours: GRAY8 takes R; RGB888 R, G, B; RGBA8888 all four; RGB565 the
+ * top 5, 6 and 5 bits of R, G and B (truncation: (R >> 3) << 11 |
+ * (G >> 2) << 5 | B >> 3, as a native uint16_t); MONO1 the top bit of R
+ * (on iff R >= 128).  Errors: RAST_E_NULL, RAST_E_FORMAT (unknown, or
+ * COUNT16, which has no colour). */
+RAST_API rast_status rast_pack_color(rast_format format, const uint8_t *rgba, void *pixel);
+
 /* Describe caller-owned memory as a target (see rast_target); clip = whole.
  * width and height in 0..RAST_MAX_DIM pixels, stride in bytes with
- * stride >= width * bytes per pixel and stride * height fitting a ptrdiff_t.
+ * stride >= rast_format_stride(format, width) and stride * height fitting
+ * a ptrdiff_t.
  * pixels may be NULL only when width or height is 0.  RAST_FORMAT_COUNT16
- * pixels are uint16_t: pixels and stride must be multiples of 2 bytes.
+ * and RAST_FORMAT_RGB565 pixels are uint16_t: pixels and stride must be
+ * multiples of 2 bytes.  RAST_FORMAT_MONO1 rows need stride >=
+ * ceil(width / 8) (rast_format_stride); a fill changes only the bits of
+ * the pixels it covers, never the padding bits after column width - 1.
  * Errors: RAST_E_NULL (t, or pixels of a non-empty target), RAST_E_SIZE
- * (also a misaligned COUNT16 target), RAST_E_FORMAT; *t is untouched on
+ * (also a misaligned 16-bit target), RAST_E_FORMAT; *t is untouched on
  * error. */
 RAST_API rast_status rast_target_init(rast_target *t, void *pixels,
                                       int32_t width, int32_t height,

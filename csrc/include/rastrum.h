@@ -499,6 +499,74 @@ RAST_API rast_status rast_fill_triangles_spans(const rast_point *tris,
                                                void *scratch,
                                                size_t scratch_bytes);
 
+/* ---- shaded triangles (Gouraud, flat; optional depth) ------------------------
+ * The same batch and the same coverage as rast_fill_triangles (every
+ * algorithm, rounding and boundary mode: a shaded call writes exactly the
+ * pixels the unshaded one writes, less those a depth test rejects), but
+ * each pixel gets a colour interpolated from its triangle's three vertex
+ * colours.
+ *
+ * Interpolation.  At the sample point p of a pixel, with the triangle's
+ * snapped vertices v0, v1, v2 and the edge functions (twice the signed
+ * areas) w0 = area(p, v1, v2), w1 = area(v0, p, v2), w2 = area(v0, v1, p),
+ * a quantity with vertex values c0, c1, c2 has the exact rational value
+ *     v = (w0 c0 + w1 c1 + w2 c2) / (w0 + w1 + w2)
+ * (the barycentric interpolation, seeds 002-004; the triangle's plane
+ * equation, seed 001 section 3.3.5).  Each channel is interpolated on its
+ * own and stored as rast_pack_color stores a colour (RGBA8888 stores the
+ * interpolated alpha; nothing is blended).  A sample outside its triangle
+ * (textbook rounding, boundary modes) gets the plane's value there,
+ * clamped to 0..255 (depth: to int32_t).  A degenerate triangle has no
+ * plane: its pixels (boundary modes only) get vertex 0's values. */
+typedef enum rast_precision {
+    /* floor(v + 1/2), exactly: rational arithmetic in integers (128-bit
+     * products in two halves where int64_t would overflow) - the reference */
+    RAST_PRECISION_EXACT = 0,
+    /* fixed point with F = fraction_bits: the value at one corner of the
+     * triangle's box and the steps per column and per row rounded to
+     * 1/2^F, then additions only; a pixel is floor(value + 1/2) of the
+     * stepped value.  Off by a level or more where the steps' rounding
+     * errors add up (bench/bench_shade.py measures how far, per F).  A
+     * triangle whose steps do not fit 32 bits (slivers) is done exactly. */
+    RAST_PRECISION_FIXED = 1,
+    /* flat: the whole triangle in vertex 0's colour (seed 001 3.1.3);
+     * depth, if asked for, is still interpolated, exactly */
+    RAST_PRECISION_FLAT = 2
+} rast_precision;
+
+/* Zero-initialised means exact. */
+typedef struct rast_shade_opts {
+    rast_precision precision;
+    int32_t fraction_bits; /* F for RAST_PRECISION_FIXED, 1..16; else ignored */
+} rast_shade_opts;
+
+/* Fill `ntris` triangles as rast_fill_triangles does, shading each pixel.
+ * colors: 3 * ntris vertex colours of 4 bytes, R, G, B, A, in the order of
+ *   the vertices (vertex m of triangle k at colors[4 * (3k + m)]); a format
+ *   uses the channels rast_pack_color reads (GRAY8 and MONO1: R; RGB888 and
+ *   RGB565: R, G, B; RGBA8888: all) and ignores the others.  Colours are
+ *   interpolated in 8-bit levels, then packed (RGB565: top bits; MONO1: on
+ *   iff the level is >= 128).  COUNT16 has no colour: RAST_E_FORMAT.
+ * z, zbuf: depth, both NULL (no depth: nothing depth-related is computed)
+ *   or both given.  z holds 3 * ntris vertex depths (any int32_t), zbuf the
+ *   depth of every pixel of the target, target->width * target->height
+ *   int32_t, row j at zbuf + j * width.  A pixel is written iff its
+ *   interpolated depth (same precision as the colour; exact for FLAT) is
+ *   less than zbuf there (smaller is nearer; equal fails), and zbuf then
+ *   takes that depth.  Start zbuf at INT32_MAX to accept everything once.
+ *   Only pixels of the clip are read or written.
+ * Scratch as rast_fill_triangles (rast_tri_scratch_size).
+ * Errors, all before anything is written: those of rast_fill_triangles,
+ * RAST_E_NULL (shade; colors with ntris > 0; exactly one of z and zbuf),
+ * RAST_E_FORMAT (COUNT16), RAST_E_ARG (an unknown precision, or
+ * fraction_bits outside 1..16 for FIXED). */
+RAST_API rast_status rast_fill_triangles_shaded(const rast_target *target,
+                                                const rast_point *tris, uint32_t ntris,
+                                                const uint8_t *colors, const int32_t *z,
+                                                int32_t *zbuf, const rast_tri_opts *opts,
+                                                const rast_shade_opts *shade,
+                                                void *scratch, size_t scratch_bytes);
+
 /* ---- lines -------------------------------------------------------------------
  * The pixels of the segment a -> b (fixed point, units 1/2^S, sample offset
  * o, coordinates as polygon vertices), with dx = bx - ax, dy = by - ay:

@@ -63,4 +63,17 @@ rast_status rast__solid_init(rast__solid *s, const rast_target *t, const rast_re
                              const void *pixel, const void *background, rast__row_fn *fn);
 void rast__opaque_finish(rast__solid *s);
 
+/* Called before triangle k (vertices t, grid g) is filled, with the
+ * painter's `user`: set the painter up for it; 0 skips the triangle. */
+typedef int (*rast__tri_begin_fn)(void *user, const rast_point *t, uint32_t k,
+                                  const rast__grid *g);
+
+/* The triangle batch behind every triangle entry point (trifill.c): check
+ * the batch, options and scratch for `clip` (non-empty or empty, cut to the
+ * target or a span clip), then run the filler on each triangle in turn,
+ * calling `begin` first when it is not NULL, its spans going to `fn`. */
+rast_status rast__tri_fill(const rast_point *tris, uint32_t ntris, const rast_tri_opts *opts,
+                           const rast_rect *clip, rast__row_fn fn, void *user,
+                           rast__tri_begin_fn begin, void *scratch, size_t scratch_bytes);
+
 #endif /* RAST_PAINT_H */

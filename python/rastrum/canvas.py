@@ -67,7 +67,8 @@ class Canvas:
             raise InputError("Canvas.wrap needs a numpy array, not %s" % type(array).__name__)
         if array.dtype == np.uint16 and format in (None, "rgb565"):
             if array.ndim != 2 or not array.flags.writeable or (array.size and array.strides[1] != 2):
-                raise InputError("Canvas.wrap needs a writable uint16 (H, W) array with contiguous rows for rgb565")
+                raise InputError("Canvas.wrap takes dtype uint16 only as rgb565: a writable (H, W) array with "
+                                 "contiguous rows, not shape %s" % (array.shape,))
             canvas = cls.__new__(cls)
             canvas._set(array, "rgb565", array.shape[1])
             return canvas

@@ -94,7 +94,7 @@ def timings(rastrum, quick):
     rng = np.random.default_rng(12)
     tris = scenes(quick)["small"]
     n = len(tris)
-    cols = vertex_colors(rng, n, 4)
+    cols = vertex_colors(rng, n, 4).astype(np.uint8)  # what C reads: no conversion per call
     cols[..., 3] = 255
     depth = rng.integers(0, 1 << 24, (n, 3))
     f = canvas.fill_triangles

@@ -38,6 +38,7 @@ typedef struct rast__chan {
     int64_t gx, gy;          /* N = (px - x0) gx + (py - y0) gy */
     int64_t sx, tx;          /* exact: R's step per column = sx D + tx */
     int64_t fbase, fgx, fgy; /* fixed: c - c0 at (ri, rj), steps; 1/2^F */
+    int64_t fc;              /* fixed: c at pixel (0, 0) of the plane, 1/2^F */
     int64_t lo, hi;          /* the channel's range */
 } rast__chan;
 
@@ -232,8 +233,7 @@ static int rast__chan_start(const rast__shade *s, const rast__chan *ch, int fixe
                             int32_t y, int64_t *q, int64_t *r)
 {
     if (fixed) {
-        *q = ch->c0 * ((int64_t)1 << s->F) + ch->fbase + (int64_t)(x - s->imin) * ch->fgx +
-             (int64_t)(y - s->jmin) * ch->fgy;
+        *q = ch->fc + (int64_t)x * ch->fgx + (int64_t)y * ch->fgy;
         return 1;
     }
     if (!rast__exact_at(s, ch, x, y, q, r)) return 0;
@@ -253,6 +253,16 @@ static void rast__shade_span(rast__shade *s, int32_t y, int32_t xa, int32_t xb)
     int fixed = s->fixed && s->prec == RAST_PRECISION_FIXED && xa >= s->imin &&
                 xb - 1 <= s->imax && y >= s->jmin && y <= s->jmax;
 
+    if (fixed && !zrow) { /* the fast common case */
+        for (c = 0; c < nch; c++)
+            q[c] = s->ch[c].fc + (int64_t)xa * s->ch[c].fgx + (int64_t)y * s->ch[c].fgy;
+        for (x = xa; x < xb; x += RAST__SHADE_RUN) {
+            int32_t n = xb - x < RAST__SHADE_RUN ? xb - x : RAST__SHADE_RUN;
+            rast__fixed_colours(s, q, nch, n, buf);
+            s->fmt->put(row, x, n, buf);
+        }
+        return;
+    }
     for (c = 0; c < nch; c++) step[c] = rast__chan_start(s, &s->ch[c], fixed, xa, y, &q[c], &r[c]);
     if (zrow)
         step[RAST__CH_Z] = rast__chan_start(s, &s->ch[RAST__CH_Z], fixed, xa, y, &q[RAST__CH_Z],
@@ -351,10 +361,15 @@ static void rast__chan_setup(rast__shade *s, rast__chan *ch, int64_t c0, int64_t
         }
         ok &= rast__prod_div(ch->gx, s->unit, s->F + 1, s->A, s->D, &ch->fgx, &t);
         ok &= rast__prod_div(ch->gy, s->unit, s->F + 1, s->A, s->D, &ch->fgy, &t);
-        /* base + 2^28 steps of each kind stays below 2^61 */
+        /* base + 2^28 steps of each kind stays below 2^61; with the
+         * columns and rows before the box (|imin|, |jmin| < 2^30), fc
+         * stays below 5 * 2^60 */
         if (!ok || ch->fbase > ((int64_t)1 << 60) || ch->fbase < -((int64_t)1 << 60) ||
             rast__bitlen(ch->fgx) > 31 || rast__bitlen(ch->fgy) > 31)
             s->fixed = 0;
+        else
+            ch->fc = ch->c0 * ((int64_t)1 << s->F) + ch->fbase - (int64_t)s->imin * ch->fgx -
+                     (int64_t)s->jmin * ch->fgy;
     }
 }
 

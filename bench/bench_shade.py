@@ -83,7 +83,7 @@ def skia_cand(tris, cols, buf):
 
 
 def timings(rastrum, quick):
-    rounds = 5 if quick else 15
+    rounds = 5 if quick else 31
     buf = np.zeros((H, W, 4), np.uint8)
     canvas = rastrum.Canvas.wrap(buf)
     addr, nbytes = buf.ctypes.data, buf.nbytes
@@ -105,6 +105,12 @@ def timings(rastrum, quick):
     for F in (8, 16):
         cands.append(("rastrum fixed F=%d" % F,
                       lambda F=F: f(tris, vertex_colors=cols, precision="fixed", fraction_bits=F)))
+    # the fastest filler (README, triangles): the painter is the same
+    cands.append(("rastrum solid, sweep", lambda: f(tris, (9, 9, 9, 255), algorithm="sweep")))
+    cands.append(("rastrum fixed F=16, sweep",
+                  lambda: f(tris, vertex_colors=cols, precision="fixed", algorithm="sweep")))
+    cands.append(("rastrum exact, sweep",
+                  lambda: f(tris, vertex_colors=cols, precision="exact", algorithm="sweep")))
 
     def with_depth(prec):
         def run():

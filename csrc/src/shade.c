@@ -56,6 +56,7 @@ typedef struct rast__shade {
     int32_t unit, off;       /* of the grid */
     /* the current triangle */
     int64_t A, D;
+    rast__recip rd;          /* division by D */
     int64_t x0, y0;          /* vertex 0, internal units */
     int32_t imin, imax, jmin, jmax; /* pixels its spans may reach */
     int32_t blx, bly;        /* bits of the largest |px - x0|, |py - y0| in the box */
@@ -93,21 +94,15 @@ static int32_t rast__bitlen(int64_t v)
  * |c| < 2^61, 0 <= sh < 64: natively when the product fits in 61 bits
  * (the common case), else in 128 bits; 0 if the quotient saturated (see
  * rast__i128_floordiv). */
-static int rast__prod_div(int64_t a, int64_t b, int32_t sh, int64_t c, int64_t d, int64_t *q,
-                          int64_t *r)
+static int rast__prod_div(int64_t a, int64_t b, int32_t sh, int64_t c, const rast__recip *d,
+                          int64_t *q, int64_t *r)
 {
     if (rast__bitlen(a) + rast__bitlen(b) + sh <= 61) {
-        int64_t n = a * b * ((int64_t)1 << sh) + c, qq = n / d, rr = n % d;
-        if (rr < 0) {
-            qq--;
-            rr += d;
-        }
-        *q = qq;
-        *r = rr;
+        *q = rast__recip_floordiv(d, a * b * ((int64_t)1 << sh) + c, r);
         return 1;
     }
     return rast__i128_floordiv(rast__i128_add(rast__i128_shl(rast__i128_mul(a, b), sh),
-                                              rast__i128_from(c)), d, q, r);
+                                              rast__i128_from(c)), (int64_t)d->d, q, r);
 }
 
 /* c - c0 at pixel (i, j), rounded half up, exactly: q and the remainder r
@@ -120,13 +115,7 @@ static int rast__exact_at(const rast__shade *s, const rast__chan *c, int32_t i, 
     int64_t dy = (int64_t)j * s->unit + s->off - s->y0;
     if (s->narrow && i >= s->imin && i <= s->imax && j >= s->jmin && j <= s->jmax) {
         int64_t R = 2 * (dx * c->gx + dy * c->gy) + s->A;
-        int64_t qq = R / s->D, rr = R % s->D;
-        if (rr < 0) {
-            qq--;
-            rr += s->D;
-        }
-        *q = qq;
-        *r = rr;
+        *q = rast__recip_floordiv(&s->rd, R, r);
         return 1;
     } else {
         rast__i128 R = rast__i128_add(rast__i128_mul(dx, c->gx), rast__i128_mul(dy, c->gy));
@@ -353,14 +342,14 @@ static void rast__chan_setup(rast__shade *s, rast__chan *ch, int64_t c0, int64_t
         int64_t dy = (int64_t)s->jmin * s->unit + s->off - s->y0;
         int ok;
         if (s->narrow) {
-            ok = rast__prod_div(dx * ch->gx + dy * ch->gy, 1, s->F + 1, s->A, s->D, &ch->fbase, &t);
+            ok = rast__prod_div(dx * ch->gx + dy * ch->gy, 1, s->F + 1, s->A, &s->rd, &ch->fbase, &t);
         } else {
             rast__i128 N = rast__i128_add(rast__i128_mul(dx, ch->gx), rast__i128_mul(dy, ch->gy));
             ok = rast__i128_floordiv(rast__i128_add(rast__i128_shl(N, s->F + 1),
                                                     rast__i128_from(s->A)), s->D, &ch->fbase, &t);
         }
-        ok &= rast__prod_div(ch->gx, s->unit, s->F + 1, s->A, s->D, &ch->fgx, &t);
-        ok &= rast__prod_div(ch->gy, s->unit, s->F + 1, s->A, s->D, &ch->fgy, &t);
+        ok &= rast__prod_div(ch->gx, s->unit, s->F + 1, s->A, &s->rd, &ch->fgx, &t);
+        ok &= rast__prod_div(ch->gy, s->unit, s->F + 1, s->A, &s->rd, &ch->fgy, &t);
         /* base + 2^28 steps of each kind stays below 2^61; with the
          * columns and rows before the box (|imin|, |jmin| < 2^30), fc
          * stays below 5 * 2^60 */
@@ -396,6 +385,7 @@ static int rast__shade_begin(void *user, const rast_point *t, uint32_t k, const 
     }
     s->A = neg ? -A : A;
     s->D = 2 * s->A;
+    rast__recip_init(&s->rd, s->D);
     s->x0 = x0;
     s->y0 = y0;
     rast__shade_extent(x0, x0 + ex1, x0 + ex2, s, s->solid.clip.x0, s->solid.clip.x1, &s->imin,
@@ -427,7 +417,7 @@ static int rast__shade_begin(void *user, const rast_point *t, uint32_t k, const 
     if (s->have_steps)
         for (c = 0; c <= RAST__CH_Z; c++)
             if ((c < s->nch || (c == RAST__CH_Z && s->z)) &&
-                !rast__prod_div(s->ch[c].gx, s->unit, 1, 0, s->D, &s->ch[c].sx, &s->ch[c].tx))
+                !rast__prod_div(s->ch[c].gx, s->unit, 1, 0, &s->rd, &s->ch[c].sx, &s->ch[c].tx))
                 s->step = 0;
     return 1;
 }

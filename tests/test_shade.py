@@ -332,3 +332,13 @@ def test_bad_shading_input(kwargs, what):
     with pytest.raises(rastrum.InputError, match=what):
         c.fill_triangles([[(0, 0), (4, 0), (0, 4)]], **kwargs)
     assert not c.array.any() and c.depth is None
+
+
+def test_readme_shading_example():
+    """The README's shading example (a ```py block) runs as written."""
+    import os
+    import re
+    root = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+    with open(os.path.join(root, "README.md"), encoding="utf-8") as f:
+        (code,) = re.findall(r"```py\n(.*?)```", f.read(), flags=re.S)
+    exec(compile(code, "README.md", "exec"), {})

@@ -329,18 +329,21 @@ static void test_division(void)
     int k, ok = 1, okw = 1;
     for (k = 0; k < 200000; k++) {
         int64_t d = (int64_t)(rng64() >> (1 + rng() % 62)) % (((int64_t)1 << 62) - 1) + 1;
-        int64_t n = k < 8 ? ns[k] : (int64_t)(rng64() >> (rng() % 64)) * ((rng() & 1) ? 1 : -1);
+        int64_t n = k < 8 ? ns[k] : (int64_t)(rng64() >> (1 + rng() % 63)) * ((rng() & 1) ? 1 : -1);
         int64_t want = ref_floordiv(n, d), q, r;
         rast__recip rc;
         if (n == INT64_MIN && d == 1) continue; /* ref_floordiv overflows */
         rast__recip_init(&rc, d);
         q = rast__recip_floordiv(&rc, n, &r);
-        if (q != want || r != n - want * d || r < 0 || r >= d) ok = 0;
+        /* q d + r == n, in unsigned (modular) arithmetic: q d may pass
+         * INT64_MIN on the way */
+        if (q != want || (uint64_t)q * (uint64_t)d + (uint64_t)r != (uint64_t)n || r < 0 || r >= d)
+            ok = 0;
         /* 128-bit: (n * 2^s) / d for small s compared when it fits */
         if (n > -((int64_t)1 << 60) && n < ((int64_t)1 << 60)) {
             int64_t q2, r2;
             int fits = rast__i128_floordiv(rast__i128_from(n), d, &q2, &r2);
-            if (!fits || q2 != want || r2 != n - want * d) okw = 0;
+            if (!fits || q2 != want || r2 != r) okw = 0;
         }
     }
     CHECK(ok);

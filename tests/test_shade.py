@@ -310,6 +310,11 @@ def test_rgb565_packing_and_image():
     assert np.asarray(c.to_image())[0, 0].tolist() == [255, 255, 255]
     wrapped = rastrum.Canvas.wrap(np.zeros((2, 5), np.uint16))
     assert wrapped.format == "rgb565"
+    wrapped.fill_polygon([(0, 0), (5, 0), (5, 2)], (255, 0, 0), sample_offset=0)
+    assert wrapped.array[0, 1] == 0xF800
+    for fmt in ("mono1", "rgb565"):
+        with pytest.raises(rastrum.InputError, match=fmt):
+            rastrum.Canvas.wrap(np.zeros((2, 5), np.uint8), format=fmt)
 
 
 # --- bad input ----------------------------------------------------------------------

@@ -81,6 +81,9 @@ class Canvas:
         else:
             raise InputError("Canvas.wrap needs shape (H, W), (H, W, 3) or (H, W, 4), not %s" % (array.shape,))
         fmt = _CHANNELS_TO_FORMAT[channels] if format is None else _core._name(format, "format", _core.FORMATS)
+        if fmt in ("mono1", "rgb565"):
+            raise InputError("Canvas.wrap: format %s needs %s" % (
+                fmt, "a uint16 (H, W) array" if fmt == "rgb565" else "a Canvas of its own (a packed row does not say its width)"))
         if _core.FORMAT_BYTES[fmt] != channels:
             raise InputError("format %r does not match an array of shape %s" % (fmt, array.shape))
         if not array.flags.writeable:

@@ -53,7 +53,7 @@ typedef struct rast__shade {
     rast_precision prec;
     int32_t F;
     int32_t nch;             /* colour channels interpolated */
-    int32_t unit, off;       /* of the grid */
+    int32_t unit, off, shift; /* of the grid: unit = 2^shift */
     /* the current triangle */
     int64_t A, D;
     rast__recip rd;          /* division by D */
@@ -313,8 +313,11 @@ static void rast__shade_extent(int64_t a, int64_t b, int64_t c, const rast__shad
 {
     int64_t min = a < b ? (a < c ? a : c) : (b < c ? b : c);
     int64_t max = a > b ? (a > c ? a : c) : (b > c ? b : c);
-    int64_t i0 = rast__floordiv(min - s->off, s->unit) - 2;
-    int64_t i1 = rast__floordiv(max - s->off, s->unit) + 2;
+    /* floor((v - off) / unit) by a shift of the value made non-negative
+     * (|v| < 2^29, unit = 2^shift) */
+    const int64_t bias = (int64_t)1 << 40;
+    int64_t i0 = (int64_t)((uint64_t)(min - s->off + bias) >> s->shift) - (bias >> s->shift) - 2;
+    int64_t i1 = (int64_t)((uint64_t)(max - s->off + bias) >> s->shift) - (bias >> s->shift) + 2;
     if (i0 < lo) i0 = lo;
     if (i1 > hi - 1) i1 = hi - 1;
     if (i1 < i0) i1 = i0; /* nothing to paint: any one pixel */
@@ -373,6 +376,7 @@ static int rast__shade_begin(void *user, const rast_point *t, uint32_t k, const 
     int32_t c, neg = A < 0;
 
     s->unit = g->unit;
+    s->shift = g->shift;
     s->off = g->off;
 
     if (s->flat) {

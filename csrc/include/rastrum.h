@@ -402,8 +402,9 @@ RAST_API rast_status rast_scratch_size(const rast_fill_opts *opts,
                                        int32_t height, size_t *bytes);
 
 /* Fill a polygon with one pixel value: every pixel of target->clip whose
- * sample is inside (see Conventions) gets the `pixel` bytes (1, 3 or 4
- * bytes as the target format says, memory order); other pixels are not
+ * sample is inside (see Conventions) gets the `pixel` value
+ * (rast_format_bytes bytes in the format's own encoding: memory order; a
+ * native uint16_t for RGB565; 0 or not 0 for MONO1); other pixels are not
  * touched.  RAST_FORMAT_COUNT16 adds 1 to each inside pixel instead
  * (saturating at 65535) and ignores `pixel`, which may then be NULL.  Geometry outside the clip is clipped, not an error.
  * `scratch` (aligned to RAST_SCRATCH_ALIGN, `scratch_bytes` long) must hold

@@ -1,0 +1,82 @@
+"""Gouraud rectangles and the colour checks behind ``Canvas.fill_rect_gouraud``.
+
+Thin like the rest: check the arguments, snap the corners, one C call.
+"""
+
+import numpy as np
+
+from . import _core
+from . import triangles as _triangles
+from ._core import InputError
+from ._native import ffi, lib
+
+PRECISIONS = {"exact": lib.RAST_PRECISION_EXACT, "fixed": lib.RAST_PRECISION_FIXED,
+              "flat": lib.RAST_PRECISION_FLAT}
+RECT_METHODS = ("bilinear", "triangles")
+
+
+def shade_opts(precision, fraction_bits):
+    """A checked ``rast_shade_opts *``."""
+    code = PRECISIONS[_core._name(precision, "precision", PRECISIONS)]
+    if isinstance(fraction_bits, (bool, np.bool_)) or not isinstance(fraction_bits, (int, np.integer)):
+        raise InputError("fraction_bits must be an int, not %r" % (fraction_bits,))
+    opts = ffi.new("rast_shade_opts *")
+    opts.precision = code
+    opts.fraction_bits = int(fraction_bits)
+    return opts
+
+
+def colors_rgba(colors, n, channels, what):
+    """(n, channels) array-like of ints in 0..255 -> uint8 (n, 4) RGBA bytes
+    (the channels past `channels` are 255; C writes only the format's)."""
+    try:
+        a = np.asarray(colors)
+    except (TypeError, ValueError):
+        raise InputError("%s must be an array-like of ints" % what) from None
+    if channels == 1 and a.shape == (n,):
+        a = a.reshape(n, 1)
+    if a.shape != (n, channels):
+        raise InputError("%s must have shape (%d, %d) for this canvas, not %s" % (what, n, channels, a.shape))
+    if a.dtype.kind not in "iu":
+        raise InputError("%s must hold ints, not %s" % (what, a.dtype))
+    if a.size and (a.min() < 0 or a.max() > 255):
+        raise InputError("%s: every channel must be in 0..255" % what)
+    out = np.full((n, 4), 255, np.uint8)
+    out[:, :channels] = a
+    return out
+
+
+def rect_corners(rect):
+    try:
+        r = np.asarray(rect, dtype=np.float64)
+    except (TypeError, ValueError):
+        raise InputError("rect must be (x0, y0, x1, y1) numbers, not %r" % (rect,)) from None
+    if r.shape != (4,):
+        raise InputError("rect must be (x0, y0, x1, y1), not shape %s" % (r.shape,))
+    return r
+
+
+def fill_rect_gouraud(canvas, rect, corner_colors, method, precision, fraction_bits, subpixel_bits,
+                      sample_offset):
+    r = rect_corners(rect)
+    if not isinstance(method, str) or method not in RECT_METHODS:
+        raise InputError("unknown method %r; choose one of: %s" % (method, ", ".join(RECT_METHODS)))
+    channels = _core.FORMAT_BYTES[canvas.format]
+    cols = colors_rgba(corner_colors, 4, channels, "corner_colors")
+    x0, y0, x1, y1 = r
+    if method == "triangles":
+        # The diagonal from corner 0 (x0, y0) to corner 2 (x1, y1).
+        quad = np.array([(x0, y0), (x1, y0), (x1, y1), (x0, y1)])
+        split = [(0, 1, 2), (0, 2, 3)]
+        tris = quad[split]
+        vc = cols[:, :channels][split]
+        canvas.fill_triangles(tris, vertex_colors=vc, precision=precision, fraction_bits=fraction_bits,
+                              subpixel_bits=subpixel_bits, sample_offset=sample_offset)
+        return
+    opts = _triangles.tri_opts("edge", subpixel_bits, sample_offset)
+    sh = shade_opts(precision, fraction_bits)
+    pts = _core.snap_points(r.reshape(2, 2), opts.subpixel_bits)
+    p0 = ffi.new("rast_point *", (int(pts[0, 0]), int(pts[0, 1])))
+    p1 = ffi.new("rast_point *", (int(pts[1, 0]), int(pts[1, 1])))
+    _core._check(lib.rast_fill_rect_gouraud(canvas._target, p0[0], p1[0],
+                                            ffi.from_buffer("uint8_t[]", cols), opts, sh))

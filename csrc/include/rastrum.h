@@ -620,6 +620,46 @@ RAST_API rast_status rast_fill_rect_gouraud(const rast_target *target, rast_poin
                                             const rast_tri_opts *opts,
                                             const rast_shade_opts *shade);
 
+/* ---- polygons with a colour per vertex (shade_poly.c; seed 001 3.4) ---------
+ * The active edge table fill with Gouraud colours, edge then span: the
+ * pixels are exactly rast_fill_polygon's with the same options (either
+ * rule, holes, self-intersections), and the colour of a pixel is defined
+ * row by row.  Its row's sample ordinate yc is crossed by the run's two
+ * bounding edges: with the row's crossings sorted by exact abscissa (ties
+ * by the index in polygon->points of the edge's first vertex, the edge
+ * from vertex k to vertex k+1 of its ring having index k), under even-odd
+ * the crossings 2k and 2k+1, under non-zero the crossing where the winding
+ * number leaves 0 and the one where it returns to 0 (crossings in between
+ * do not shade).  Each bounding edge, from vertex a to vertex b, has at yc
+ * the exact colour ca + (yc - ya)(cb - ca)/(yb - ya) (linear along the
+ * edge) at its exact crossing abscissa X (Conventions).  Along the run the
+ * colour is linear in x between the left crossing (Xl, cl) and the right
+ * one (Xr, cr): c = cl + (xs - Xl)(cr - cl)/(Xr - Xl) at the sample
+ * abscissa xs, and the pixel gets floor(c + 1/2) per channel, exactly
+ * (128-bit integers; no rounding before the last step).
+ * For a triangle this is the same colour as the barycentric (plane)
+ * interpolation: both are the unique affine function through the three
+ * vertex colours, evaluated exactly.
+ *
+ * `colors`: 4 RGBA bytes per vertex, in the order of polygon->points.
+ * opts: algorithm must be RAST_ALGO_AET (RAST_E_ALGORITHM), boundary
+ * RAST_BOUNDARY_EXACT; rule, subpixel_bits, sample and rounding as for
+ * rast_fill_polygon.  shade->precision: RAST_PRECISION_EXACT, or
+ * RAST_PRECISION_FLAT (vertex 0's colour everywhere, seed 001's flat
+ * shading); RAST_PRECISION_FIXED is not offered here (RAST_E_ARG).
+ * Targets GRAY8 (takes R), RGB888, RGBA8888 (else RAST_E_FORMAT).
+ * Scratch: rast_polygon_gouraud_scratch_size() for the clip (the AET's and
+ * 8 bytes per vertex).  Errors as rast_fill_polygon, all before anything
+ * is written.  Never writes outside the clip. */
+RAST_API rast_status rast_polygon_gouraud_scratch_size(uint32_t npoints, int32_t width,
+                                                       int32_t height, size_t *bytes);
+RAST_API rast_status rast_fill_polygon_gouraud(const rast_target *target,
+                                               const rast_polygon *polygon,
+                                               const uint8_t *colors,
+                                               const rast_fill_opts *opts,
+                                               const rast_shade_opts *shade,
+                                               void *scratch, size_t scratch_bytes);
+
 #ifdef __cplusplus
 }
 #endif

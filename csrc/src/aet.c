@@ -36,7 +36,7 @@ rast_status rast__aet_fill(const rast_polygon *poly, uint32_t npoints,
                            const rast_rect *clip, rast__sink *sink,
                            rast__arena *arena)
 {
-    rast_status st = rast__aet_walk(poly, npoints, g, rule, clip, arena, rast__aet_span, sink, NULL);
+    rast_status st = rast__aet_walk(poly, npoints, g, rule, clip, arena, rast__aet_span, NULL, sink, NULL);
     rast__sink_flush(sink);
     return st;
 }

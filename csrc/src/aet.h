@@ -23,9 +23,14 @@
  * of edge r.  Even-odd: the crossings 2k and 2k+1 of the row; non-zero:
  * the crossing where the winding number leaves 0 and the one where it
  * comes back.  An edge's `next` is its index in the walk's edge table
- * (see `src`).  Runs come row by row, in increasing x. */
+ * (see `src`); `order` may be NULL.  Runs come row by row, in increasing x. */
 typedef void (*rast__aet_span_fn)(void *user, int32_t row, const rast__edge *l,
                                   const rast__edge *r);
+
+/* Called for each row with its active edges sorted by column, before the
+ * row's runs are formed; it may reorder edges of EQUAL column (which
+ * changes no pixel, only which edges bound the runs). */
+typedef void (*rast__aet_order_fn)(void *user, int32_t row, rast__edge *aet, int32_t n);
 
 /* The walk: every run of `poly` inside `clip` to `span`.  Scratch as
  * rast__aet_scratch.  With `src` (room for 2 * npoints) not NULL, the edge
@@ -49,7 +54,8 @@ static inline void rast__aet_sort(rast__edge *aet, int32_t n)
 static inline rast_status rast__aet_walk(const rast_polygon *poly, uint32_t npoints,
                                          const rast__grid *g, rast_fill_rule rule,
                                          const rast_rect *clip, rast__arena *arena,
-                                         rast__aet_span_fn span, void *user, int32_t *src)
+                                         rast__aet_span_fn span, rast__aet_order_fn order,
+                                         void *user, int32_t *src)
 {
     const rast_point *pts = poly->points;
     rast__edge *edges, *aet;
@@ -111,6 +117,7 @@ static inline rast_status rast__aet_walk(const rast_polygon *poly, uint32_t npoi
             aet[p].next = e; /* from here on: which edge it is */
         }
         if (nactive == 0) continue;
+        if (order) order(user, j, aet, nactive);
 
         /* Spans: sample i is inside iff the crossings with x <= i make it so. */
         if (rule == RAST_RULE_EVENODD) {

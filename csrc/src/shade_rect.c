@@ -24,19 +24,7 @@
  * the exact recipe the tests replay.
  */
 #include "paint.h"
-
-/* Columns [x, x + n) of a row from n RGBA colours: the first `bytes`
- * channels of each (until branch shade's format table is merged). */
-static void rast__put_rgba(unsigned char *row, int32_t x, int32_t n, const unsigned char *rgba,
-                           int32_t bytes)
-{
-    int32_t i, k;
-    for (i = 0; i < n; i++)
-        for (k = 0; k < bytes; k++) row[(ptrdiff_t)(x + i) * bytes + k] = rgba[4 * i + k];
-}
-
-/* Pixels a row's colours are gathered in before they are stored. */
-#define RAST__RECT_RUN 64
+#include "shade_run.h"
 
 static rast_status rast__rect_check(const rast_target *target, rast_point p0, rast_point p1,
                                     const uint8_t *colors, const rast_tri_opts *opts,
@@ -74,7 +62,7 @@ rast_status rast_fill_rect_gouraud(const rast_target *target, rast_point p0, ras
     rast__grid g;
     rast_rect clip;
     int32_t c[4][4]; /* corner k, channel ch, with the corners put in order */
-    int32_t bytes, ch, k, F = 0;
+    int32_t ch, k, F = 0;
     int64_t X0, Y0, W, H, D, r0, r1, col0, col1, row0, row1, j;
     unsigned char *base;
     rast_status st;
@@ -116,7 +104,6 @@ rast_status rast_fill_rect_gouraud(const rast_target *target, rast_point p0, ras
     if (row1 > clip.y1) row1 = clip.y1;
     if (row0 >= row1) return RAST_OK;
 
-    rast_format_bytes(target->format, &bytes);
     base = (unsigned char *)target->pixels;
     D = W * H;
     if (shade->precision == RAST_PRECISION_FIXED) F = shade->fraction_bits;
@@ -125,15 +112,15 @@ rast_status rast_fill_rect_gouraud(const rast_target *target, rast_point p0, ras
      * ends. */
 #define RAST__RECT_EMIT()                                               \
     do {                                                                \
-        if (++fill == RAST__RECT_RUN || i + 1 == n) {                   \
-            rast__put_rgba(p, x, fill, run, bytes);                     \
+        if (++fill == RAST__SHADE_RUN || i + 1 == n) {                   \
+            rast__put_rgba(target, p, x, fill, run);                        \
             x += fill;                                                  \
             fill = 0;                                                   \
         }                                                               \
     } while (0)
     for (j = row0; j < row1; j++) {
         unsigned char *p = base + (ptrdiff_t)j * target->stride;
-        unsigned char run[4 * RAST__RECT_RUN];
+        unsigned char run[4 * RAST__SHADE_RUN];
         int64_t b = j * g.unit + g.off - Y0;          /* 0 <= b < H */
         int64_t a = r0 * g.unit + g.off - X0;         /* 0 <= a < W */
         int64_t i, n = r1 - r0;

@@ -60,6 +60,10 @@ long rastpy_fill_triangles(const rast_target *target, const double *xy,
                            uint32_t ntris, const rast_tri_opts *opts,
                            const void *pixel);
 int rastpy_gil_held(void);
+long rastpy_fill_polygon_gouraud(const rast_target *target, const double *xy,
+                                 uint32_t npoints, const uint32_t *ring_sizes,
+                                 uint32_t nrings, const rast_fill_opts *opts,
+                                 const uint8_t *colors, const rast_shade_opts *shade);
 """
 GLUE_SOURCE = r"""
 #include <math.h>
@@ -172,6 +176,36 @@ long rastpy_fill_triangles(const rast_target *target, const double *xy,
         return bad + 1;
     }
     st = rast_fill_triangles(target, (const rast_point *)mem, ntris, opts, pixel, mem + head, need);
+    free(mem);
+    return st;
+}
+
+/* Snap, then rast_fill_polygon_gouraud with scratch from malloc; results
+ * as rastpy_fill_polygon. */
+long rastpy_fill_polygon_gouraud(const rast_target *target, const double *xy,
+                                 uint32_t npoints, const uint32_t *ring_sizes,
+                                 uint32_t nrings, const rast_fill_opts *opts,
+                                 const uint8_t *colors, const rast_shade_opts *shade)
+{
+    rast_polygon poly;
+    rast_status st;
+    size_t need, head = ((size_t)npoints * sizeof(rast_point) + 15) & ~(size_t)15;
+    unsigned char *mem;
+    long bad;
+    st = rast_polygon_gouraud_scratch_size(npoints, target->clip.x1 - target->clip.x0,
+                                           target->clip.y1 - target->clip.y0, &need);
+    if (st != RAST_OK) return st;
+    mem = (unsigned char *)malloc(head + need + 1);
+    if (!mem) return RASTPY_E_NOMEM;
+    bad = rastpy_snap(xy, npoints, opts->subpixel_bits, (int32_t *)mem);
+    if (bad >= 0) {
+        free(mem);
+        return bad + 1;
+    }
+    poly.points = (const rast_point *)mem;
+    poly.ring_sizes = ring_sizes ? ring_sizes : &npoints;
+    poly.nrings = ring_sizes ? nrings : 1;
+    st = rast_fill_polygon_gouraud(target, &poly, colors, opts, shade, mem + head, need);
     free(mem);
     return st;
 }

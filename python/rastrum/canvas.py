@@ -107,14 +107,29 @@ class Canvas:
     def format(self):
         return self._format
 
-    def fill_polygon(self, rings, color, *, rule="evenodd", algorithm="aet", subpixel_bits=8,
-                     sample_offset=0.5, rounding="exact", boundary="exact"):
+    def fill_polygon(self, rings, color=None, *, rule="evenodd", algorithm="aet", subpixel_bits=8,
+                     sample_offset=0.5, rounding="exact", boundary="exact", vertex_colors=None,
+                     precision="exact"):
         """Paint `color` on every pixel whose sample is inside the polygon.
 
         Arguments as :func:`rastrum.polygon_mask`.  Nothing is written when
         an argument is bad (an InputError says which).
+
+        With `vertex_colors` instead of `color`: one colour per vertex, an
+        (N, C) array-like for the N vertices of all rings in order (or a
+        list of one (N_k, C) per ring), C the canvas's channels; the
+        active edge table interpolates them along each edge to the row,
+        then along the span (seed 001), rounded half up (``precision``
+        "exact"; "flat" paints vertex 0's colour).  Only ``algorithm="aet"``.
         """
         opts = _core.fill_opts(algorithm, rule, subpixel_bits, sample_offset, rounding, boundary)
+        if vertex_colors is not None:
+            from . import shading as _shading
+
+            _shading.fill_polygon_gouraud(self, rings, vertex_colors, opts, precision)
+            return
+        if color is None:
+            raise InputError("fill_polygon needs a color or vertex_colors")
         pixel = self._pixel(color)
         _core.fill_polygon(self._target, rings, pixel, opts, opts.subpixel_bits)
 

@@ -80,3 +80,14 @@ def fill_rect_gouraud(canvas, rect, corner_colors, method, precision, fraction_b
     p1 = ffi.new("rast_point *", (int(pts[1, 0]), int(pts[1, 1])))
     _core._check(lib.rast_fill_rect_gouraud(canvas._target, p0[0], p1[0],
                                             ffi.from_buffer("uint8_t[]", cols), opts, sh))
+
+
+def fill_polygon_gouraud(canvas, rings, vertex_colors, opts, precision):
+    channels = _core.FORMAT_BYTES[canvas.format]
+    if isinstance(vertex_colors, (list, tuple)) and vertex_colors and np.ndim(vertex_colors[0]) == 2:
+        vertex_colors = np.concatenate([np.asarray(v) for v in vertex_colors])
+    vc = np.asarray(vertex_colors)
+    n = vc.shape[0] if vc.ndim >= 1 else -1
+    cols = colors_rgba(vc, n, channels, "vertex_colors")
+    _core.fill_polygon_gouraud(canvas._target, rings, cols, opts, shade_opts(precision, 16),
+                               opts.subpixel_bits)

@@ -191,7 +191,7 @@ def test_canvas_bad_construction(args, pattern):
 
 @pytest.mark.parametrize("make,pattern", [
     (lambda: np.zeros((4, 5, 3), np.float32), r"uint8|dtype"),
-    (lambda: np.zeros((4, 5), np.uint16), r"uint8|dtype"),
+    (lambda: np.zeros((4, 5, 3), np.uint16), r"uint8|dtype"),  # (H, W) uint16 is rgb565
     (lambda: np.zeros((4, 5, 3), np.int8), r"uint8|dtype"),
     (lambda: np.zeros((4, 5, 2), np.uint8), r"shape|channel|format"),
     (lambda: np.zeros((4, 5, 5), np.uint8), r"shape|channel|format"),

@@ -22,7 +22,7 @@ corner_colors = st.lists(st.tuples(color, color, color, color), min_size=4, max_
 @settings(max_examples=examples(200))
 @given(rect=st.tuples(coord, coord, coord, coord), cols=corner_colors,
        S=st.sampled_from([0, 1, 4, 8]), offset=st.sampled_from([0.5, 0.0]),
-       precision=st.sampled_from(["exact", "fixed", "flat"]), F=st.sampled_from([0, 4, 8, 16, 24]))
+       precision=st.sampled_from(["exact", "fixed", "flat"]), F=st.sampled_from([1, 4, 8, 16]))
 def test_rect_gouraud_matches_oracle(rect, cols, S, offset, precision, F):
     c = rastrum.Canvas(20, 17, format="rgba8888", background=7)
     c.fill_rect_gouraud(rect, cols, precision=precision, fraction_bits=F, subpixel_bits=S,
@@ -81,7 +81,7 @@ def test_rect_errors():
     with pytest.raises(ValueError):
         c.fill_rect_gouraud((0, 0, 4, 4), cols, precision="fast")
     with pytest.raises(ValueError):
-        c.fill_rect_gouraud((0, 0, 4, 4), cols, precision="fixed", fraction_bits=25)
+        c.fill_rect_gouraud((0, 0, 4, 4), cols, precision="fixed", fraction_bits=17)
     with pytest.raises(ValueError):
         c.fill_rect_gouraud((0, 0, 4, 4), cols, method="quads")
     # a side longer than RAST_GOURAUD_RECT_MAX_SIZE units

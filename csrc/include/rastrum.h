@@ -306,7 +306,13 @@ typedef enum rast_format {
     RAST_FORMAT_COUNT16 = 3,  /* 2 bytes, a native uint16_t: a fill adds 1 to
                                  each pixel it covers (saturating at 65535) and
                                  ignores the pixel value; overdraw made visible */
-    RAST_FORMAT_COUNT_ = 4
+    RAST_FORMAT_RGB565 = 4,   /* 2 bytes, a native uint16_t: R in bits 15-11,
+                                 G in 10-5, B in 4-0 (TFT displays); pixels
+                                 and stride 2-byte aligned */
+    RAST_FORMAT_MONO1 = 5,    /* 1 bit, 8 pixels a byte, MSB first: pixel x is
+                                 bit 7 - x%8 of byte x/8 of its row (e-paper);
+                                 a pixel value is 1 byte, "on" iff not 0 */
+    RAST_FORMAT_COUNT_ = 6
 } rast_format;
 
 /* A target: a view of caller-owned memory.  pixels points at pixel (0, 0);
@@ -314,7 +320,10 @@ typedef enum rast_format {
  * pixel; it may be larger, for padding or for a sub-view of a larger image).
  * Nothing outside `clip` is ever read or written; rast_target_init sets the
  * clip to the whole target, and a caller may narrow it (to draw into a band
- * or a window).  A clip that reaches past the target is cut to it. */
+ * or a window).  A clip that reaches past the target is cut to it.
+ * RAST_FORMAT_MONO1 is the exception at the bit level: a byte holding both
+ * clip pixels and others is read and written back with the others' bits
+ * unchanged (so two threads must not draw into clips sharing a byte). */
 typedef struct rast_target {
     void *pixels;
     int32_t width;
@@ -336,17 +345,40 @@ RAST_API int rast_version_number(void);
  * The string is static: never free it. */
 RAST_API const char *rast_status_str(rast_status status);
 
-/* Bytes per pixel of `format` into *bytes (1, 2, 3 or 4).
+/* Bytes of one pixel value of `format` into *bytes (1, 2, 3 or 4): what a
+ * `pixel` or `background` argument holds, in the format's own encoding.
+ * It is also the memory of one pixel, except for RAST_FORMAT_MONO1, which
+ * packs 8 pixels into a byte (see rast_format_stride); its value is one
+ * byte, 0 (off) or not 0 (on).
  * RAST_E_FORMAT for an unknown format, RAST_E_NULL if bytes is NULL. */
 RAST_API rast_status rast_format_bytes(rast_format format, int32_t *bytes);
 
+/* The fewest bytes a row of `width` pixels of `format` takes, into *bytes:
+ * width * bytes per pixel, or ceil(width / 8) for RAST_FORMAT_MONO1 (the
+ * smallest valid stride).  Errors: RAST_E_NULL, RAST_E_FORMAT, RAST_E_SIZE
+ * (width outside 0..RAST_MAX_DIM, or a row past INT32_MAX bytes). */
+RAST_API rast_status rast_format_stride(rast_format format, int32_t width, int32_t *bytes);
+
+/* The pixel value of `format` for the 8-bit colour rgba[0..3] (R, G, B,
+ * A), into `pixel` (rast_format_bytes bytes), as the shaded fills store
+ * colours: GRAY8 takes R; RGB888 R, G, B; RGBA8888 all four; RGB565 the
+ * top 5, 6 and 5 bits of R, G and B (truncation: (R >> 3) << 11 |
+ * (G >> 2) << 5 | B >> 3, as a native uint16_t); MONO1 the top bit of R
+ * (on iff R >= 128).  Errors: RAST_E_NULL, RAST_E_FORMAT (unknown, or
+ * COUNT16, which has no colour). */
+RAST_API rast_status rast_pack_color(rast_format format, const uint8_t *rgba, void *pixel);
+
 /* Describe caller-owned memory as a target (see rast_target); clip = whole.
  * width and height in 0..RAST_MAX_DIM pixels, stride in bytes with
- * stride >= width * bytes per pixel and stride * height fitting a ptrdiff_t.
+ * stride >= rast_format_stride(format, width) and stride * height fitting
+ * a ptrdiff_t.
  * pixels may be NULL only when width or height is 0.  RAST_FORMAT_COUNT16
- * pixels are uint16_t: pixels and stride must be multiples of 2 bytes.
+ * and RAST_FORMAT_RGB565 pixels are uint16_t: pixels and stride must be
+ * multiples of 2 bytes.  RAST_FORMAT_MONO1 rows need stride >=
+ * ceil(width / 8) (rast_format_stride); a fill changes only the bits of
+ * the pixels it covers, never the padding bits after column width - 1.
  * Errors: RAST_E_NULL (t, or pixels of a non-empty target), RAST_E_SIZE
- * (also a misaligned COUNT16 target), RAST_E_FORMAT; *t is untouched on
+ * (also a misaligned 16-bit target), RAST_E_FORMAT; *t is untouched on
  * error. */
 RAST_API rast_status rast_target_init(rast_target *t, void *pixels,
                                       int32_t width, int32_t height,
@@ -467,6 +499,74 @@ RAST_API rast_status rast_fill_triangles_spans(const rast_point *tris,
                                                void *scratch,
                                                size_t scratch_bytes);
 
+/* ---- shaded triangles (Gouraud, flat; optional depth) ------------------------
+ * The same batch and the same coverage as rast_fill_triangles (every
+ * algorithm, rounding and boundary mode: a shaded call writes exactly the
+ * pixels the unshaded one writes, less those a depth test rejects), but
+ * each pixel gets a colour interpolated from its triangle's three vertex
+ * colours.
+ *
+ * Interpolation.  At the sample point p of a pixel, with the triangle's
+ * snapped vertices v0, v1, v2 and the edge functions (twice the signed
+ * areas) w0 = area(p, v1, v2), w1 = area(v0, p, v2), w2 = area(v0, v1, p),
+ * a quantity with vertex values c0, c1, c2 has the exact rational value
+ *     v = (w0 c0 + w1 c1 + w2 c2) / (w0 + w1 + w2)
+ * (the barycentric interpolation, seeds 002-004; the triangle's plane
+ * equation, seed 001 section 3.3.5).  Each channel is interpolated on its
+ * own and stored as rast_pack_color stores a colour (RGBA8888 stores the
+ * interpolated alpha; nothing is blended).  A sample outside its triangle
+ * (textbook rounding, boundary modes) gets the plane's value there,
+ * clamped to 0..255 (depth: to int32_t).  A degenerate triangle has no
+ * plane: its pixels (boundary modes only) get vertex 0's values. */
+typedef enum rast_precision {
+    /* floor(v + 1/2), exactly: rational arithmetic in integers (128-bit
+     * products in two halves where int64_t would overflow) - the reference */
+    RAST_PRECISION_EXACT = 0,
+    /* fixed point with F = fraction_bits: the value at one corner of the
+     * triangle's box and the steps per column and per row rounded to
+     * 1/2^F, then additions only; a pixel is floor(value + 1/2) of the
+     * stepped value.  Off by a level or more where the steps' rounding
+     * errors add up (bench/bench_shade.py measures how far, per F).  A
+     * triangle whose steps do not fit 32 bits (slivers) is done exactly. */
+    RAST_PRECISION_FIXED = 1,
+    /* flat: the whole triangle in vertex 0's colour (seed 001 3.1.3);
+     * depth, if asked for, is still interpolated, exactly */
+    RAST_PRECISION_FLAT = 2
+} rast_precision;
+
+/* Zero-initialised means exact. */
+typedef struct rast_shade_opts {
+    rast_precision precision;
+    int32_t fraction_bits; /* F for RAST_PRECISION_FIXED, 1..16; else ignored */
+} rast_shade_opts;
+
+/* Fill `ntris` triangles as rast_fill_triangles does, shading each pixel.
+ * colors: 3 * ntris vertex colours of 4 bytes, R, G, B, A, in the order of
+ *   the vertices (vertex m of triangle k at colors[4 * (3k + m)]); a format
+ *   uses the channels rast_pack_color reads (GRAY8 and MONO1: R; RGB888 and
+ *   RGB565: R, G, B; RGBA8888: all) and ignores the others.  Colours are
+ *   interpolated in 8-bit levels, then packed (RGB565: top bits; MONO1: on
+ *   iff the level is >= 128).  COUNT16 has no colour: RAST_E_FORMAT.
+ * z, zbuf: depth, both NULL (no depth: nothing depth-related is computed)
+ *   or both given.  z holds 3 * ntris vertex depths (any int32_t), zbuf the
+ *   depth of every pixel of the target, target->width * target->height
+ *   int32_t, row j at zbuf + j * width.  A pixel is written iff its
+ *   interpolated depth (same precision as the colour; exact for FLAT) is
+ *   less than zbuf there (smaller is nearer; equal fails), and zbuf then
+ *   takes that depth.  Start zbuf at INT32_MAX to accept everything once.
+ *   Only pixels of the clip are read or written.
+ * Scratch as rast_fill_triangles (rast_tri_scratch_size).
+ * Errors, all before anything is written: those of rast_fill_triangles,
+ * RAST_E_NULL (shade; colors with ntris > 0; exactly one of z and zbuf),
+ * RAST_E_FORMAT (COUNT16), RAST_E_ARG (an unknown precision, or
+ * fraction_bits outside 1..16 for FIXED). */
+RAST_API rast_status rast_fill_triangles_shaded(const rast_target *target,
+                                                const rast_point *tris, uint32_t ntris,
+                                                const uint8_t *colors, const int32_t *z,
+                                                int32_t *zbuf, const rast_tri_opts *opts,
+                                                const rast_shade_opts *shade,
+                                                void *scratch, size_t scratch_bytes);
+
 /* ---- lines -------------------------------------------------------------------
  * The pixels of the segment a -> b (fixed point, units 1/2^S, sample offset
  * o, coordinates as polygon vertices), with dx = bx - ax, dy = by - ay:
@@ -554,19 +654,6 @@ RAST_API rast_status rast_line_pixels(rast_point a, rast_point b,
 RAST_API rast_status rast_point_in_triangle(rast_point p, const rast_point *t,
                                             rast_predicate method, int *inside);
 
-/* ---- shading options (TEMPORARY copy of branch shade's declarations, so
- * that branch scene builds before the merge; the merge keeps shade's) ---- */
-typedef enum rast_precision {
-    RAST_PRECISION_EXACT = 0,
-    RAST_PRECISION_FIXED = 1,
-    RAST_PRECISION_FLAT = 2
-} rast_precision;
-
-typedef struct rast_shade_opts {
-    rast_precision precision;
-    int32_t fraction_bits;
-} rast_shade_opts;
-
 /* ---- Gouraud rectangles (shade_rect.c; seed 001 section 3.2.3) -------------
  * An axis-aligned rectangle with corners p0 and p1 (fixed point, units and
  * range as polygon vertices) and a colour at each corner, interpolated
@@ -585,7 +672,7 @@ typedef struct rast_shade_opts {
  *     c = (1-u)(1-v) c0 + u (1-v) c1 + u v c2 + (1-u) v c3
  *  - RAST_PRECISION_EXACT: floor(c + 1/2), exactly (rationals; integer
  *    quotient and remainder stepped along the row).
- *  - RAST_PRECISION_FIXED, F = fraction_bits (0..24), round(x) =
+ *  - RAST_PRECISION_FIXED, F = fraction_bits (1..16), round(x) =
  *    floor(x + 1/2), one = 2^F: the textbook's stepping.  With the top
  *    left corner at (X0, Y0), width W and height H in pixels (corners put
  *    in order, colours following them) and b0, a0 the offsets of the
@@ -595,12 +682,12 @@ typedef struct rast_shade_opts {
  *    R_k the same from c1 to c2, and in that row the pixel m columns right
  *    of the first has C = L_k + round((R_k - L_k) a0 / W)
  *    + m round((R_k - L_k) / W), written as clamp(floor((C + one/2) / one),
- *    0, 255) (one/2 is 0 when F = 0).  Not exact: the increments are
+ *    0, 255).  Not exact: the increments are
  *    rounded (the error grows with the size and shrinks with F).
  *  - RAST_PRECISION_FLAT: c0 everywhere (seed 001's flat shading: one
  *    vertex's colour).
- * Pixel bytes: the first 1, 3 or 4 channels of the RGBA value, as the
- * format has bytes (GRAY8 takes R).
+ * Each colour is stored as rast_pack_color stores it (GRAY8 and MONO1
+ * take R, RGB565 the top bits; COUNT16 has no colour: RAST_E_FORMAT).
  *
  * opts: subpixel_bits, sample and rounding as for triangles; the algorithm
  * is not used (a rectangle needs none); boundary must be
@@ -612,8 +699,7 @@ typedef struct rast_shade_opts {
  * interpolation inside int64_t), RAST_E_SIZE and RAST_E_FORMAT (a bad
  * target; RAST_FORMAT_COUNT16 has no colour). */
 enum {
-    RAST_GOURAUD_RECT_MAX_SIZE = 67108863, /* 2^26 - 1, input units */
-    RAST_GOURAUD_RECT_MAX_FRACTION_BITS = 24
+    RAST_GOURAUD_RECT_MAX_SIZE = 67108863 /* 2^26 - 1, input units */
 };
 RAST_API rast_status rast_fill_rect_gouraud(const rast_target *target, rast_point p0,
                                             rast_point p1, const uint8_t *colors,
@@ -647,7 +733,8 @@ RAST_API rast_status rast_fill_rect_gouraud(const rast_target *target, rast_poin
  * rast_fill_polygon.  shade->precision: RAST_PRECISION_EXACT, or
  * RAST_PRECISION_FLAT (vertex 0's colour everywhere, seed 001's flat
  * shading); RAST_PRECISION_FIXED is not offered here (RAST_E_ARG).
- * Targets GRAY8 (takes R), RGB888, RGBA8888 (else RAST_E_FORMAT).
+ * Colours are stored as rast_pack_color stores them (COUNT16:
+ * RAST_E_FORMAT).
  * Scratch: rast_polygon_gouraud_scratch_size() for the clip (the AET's and
  * 8 bytes per vertex).  Errors as rast_fill_polygon, all before anything
  * is written.  Never writes outside the clip. */

@@ -4,76 +4,20 @@
  * writes one value over the spans; the opaque painter also writes the
  * background between them, so that every clip pixel is written once.
  *
- * Adding a pixel format means one more row in rast__formats and, when its
- * pixels are not plain byte patterns, one more span function.
+ * The pixel formats themselves are rows of rast__formats (formats.c);
+ * nothing here depends on a particular one.
  */
 #include <string.h>
 
 #include "paint.h"
 
-/* Fill n pixels of `bytes` bytes each with the pattern already written in
- * the first pixel, doubling the copied run each time: long spans become a
- * handful of large memcpy calls. */
-static void rast__replicate(unsigned char *p, size_t bytes, size_t n)
-{
-    size_t done = bytes, total = bytes * n;
-    while (done < total) {
-        size_t c = done < total - done ? done : total - done;
-        memcpy(p + done, p, c);
-        done += c;
-    }
-}
-
-/* Bytes per pixel, by format.  GRAY8, RGB888 and RGBA8888 are plain byte
- * patterns, which the solid painter writes; COUNT16 has its own painter
- * (rast__count_row), as a packed format (rgb565, mono1) would. */
-static const int32_t rast__format_bytes[RAST_FORMAT_COUNT_] = {
-    1, /* RAST_FORMAT_GRAY8 */
-    3, /* RAST_FORMAT_RGB888 */
-    4, /* RAST_FORMAT_RGBA8888 */
-    2, /* RAST_FORMAT_COUNT16 */
-};
-
-/* Write n pixels of `bytes` bytes each, all equal to `value`, at p. */
-static void rast__put(unsigned char *p, const unsigned char *value, int32_t bytes, int32_t n)
-{
-    if (n <= 0) return;
-    if (bytes == 1) {
-        memset(p, value[0], (size_t)n);
-    } else {
-        memcpy(p, value, (size_t)bytes);
-        rast__replicate(p, (size_t)bytes, (size_t)n);
-    }
-}
-
+/* Any format's solid row: its span function over each span. */
 static void rast__solid_row(void *user, int32_t y, const int32_t *xs, int32_t n)
 {
     const rast__solid *s = (const rast__solid *)user;
     unsigned char *row = s->base + (ptrdiff_t)y * s->stride;
-    int32_t k, bpp = s->bytes;
-    if (bpp == 1) { /* masks: the common case, kept to a bare memset */
-        for (k = 0; k < n; k++) memset(row + xs[2 * k], s->value[0], (size_t)(xs[2 * k + 1] - xs[2 * k]));
-        return;
-    }
-    for (k = 0; k < n; k++)
-        rast__put(row + (ptrdiff_t)xs[2 * k] * bpp, s->value, bpp, xs[2 * k + 1] - xs[2 * k]);
-}
-
-/* COUNT16: add 1 to every covered pixel, saturating at 65535.  v + 1 - carry
- * keeps the loop free of branches, so the compiler vectorises it. */
-static void rast__count_row(void *user, int32_t y, const int32_t *xs, int32_t n)
-{
-    const rast__solid *s = (const rast__solid *)user;
-    uint16_t *row = (uint16_t *)(void *)(s->base + (ptrdiff_t)y * s->stride);
-    int32_t k, i;
-    for (k = 0; k < n; k++) {
-        uint16_t *p = row + xs[2 * k];
-        int32_t len = xs[2 * k + 1] - xs[2 * k];
-        for (i = 0; i < len; i++) {
-            uint32_t v = (uint32_t)p[i] + 1u;
-            p[i] = (uint16_t)(v - (v >> 16));
-        }
-    }
+    int32_t k;
+    for (k = 0; k < n; k++) s->fmt->fill(row, xs[2 * k], xs[2 * k + 1], s->value);
 }
 
 /* ---- opaque: every clip pixel written once, value or background --------- */
@@ -84,10 +28,9 @@ static void rast__count_row(void *user, int32_t y, const int32_t *xs, int32_t n)
  * and it takes one memset per row instead of one per gap. */
 static void rast__opaque_rows(rast__solid *s, int32_t to)
 {
-    int32_t bpp = s->bytes;
     for (s->row++; s->row < to; s->row++)
-        rast__put(s->base + (ptrdiff_t)s->row * s->stride + (ptrdiff_t)s->clip.x0 * bpp,
-                  s->background, bpp, s->clip.x1 - s->clip.x0);
+        s->fmt->fill(s->base + (ptrdiff_t)s->row * s->stride, s->clip.x0, s->clip.x1,
+                     s->background);
 }
 
 static void rast__opaque_row(void *user, int32_t y, const int32_t *xs, int32_t n)
@@ -97,7 +40,8 @@ static void rast__opaque_row(void *user, int32_t y, const int32_t *xs, int32_t n
         rast__opaque_rows(s, y + 1);
         s->row = y;
     }
-    rast__solid_row(user, y, xs, n);
+    if (s->fmt->row) s->fmt->row(user, y, xs, n);
+    else rast__solid_row(user, y, xs, n);
 }
 
 void rast__opaque_finish(rast__solid *s)
@@ -109,7 +53,29 @@ rast_status rast_format_bytes(rast_format format, int32_t *bytes)
 {
     if (!bytes) return RAST_E_NULL;
     if ((unsigned)format >= RAST_FORMAT_COUNT_) return RAST_E_FORMAT;
-    *bytes = rast__format_bytes[format];
+    *bytes = rast__formats[format].value ? rast__formats[format].value
+                                         : rast__formats[format].bits / 8;
+    return RAST_OK;
+}
+
+rast_status rast_format_stride(rast_format format, int32_t width, int32_t *bytes)
+{
+    int64_t b;
+    if (!bytes) return RAST_E_NULL;
+    if ((unsigned)format >= RAST_FORMAT_COUNT_) return RAST_E_FORMAT;
+    if (width < 0 || width > RAST_MAX_DIM) return RAST_E_SIZE;
+    b = ((int64_t)width * rast__formats[format].bits + 7) / 8;
+    if (b > INT32_MAX) return RAST_E_SIZE;
+    *bytes = (int32_t)b;
+    return RAST_OK;
+}
+
+rast_status rast_pack_color(rast_format format, const uint8_t *rgba, void *pixel)
+{
+    if (!rgba || !pixel) return RAST_E_NULL;
+    if ((unsigned)format >= RAST_FORMAT_COUNT_ || !rast__formats[format].pack)
+        return RAST_E_FORMAT;
+    rast__formats[format].pack(rgba, (unsigned char *)pixel);
     return RAST_OK;
 }
 
@@ -117,19 +83,20 @@ rast_status rast_target_init(rast_target *t, void *pixels, int32_t width,
                              int32_t height, int32_t stride, rast_format format)
 {
     rast_target v;
-    int32_t bpp;
+    int32_t row;
     rast_status st;
 
     if (!t) return RAST_E_NULL;
-    st = rast_format_bytes(format, &bpp);
+    if ((unsigned)format >= RAST_FORMAT_COUNT_) return RAST_E_FORMAT;
+    if (height < 0 || height > RAST_MAX_DIM) return RAST_E_SIZE;
+    st = rast_format_stride(format, width, &row);
     if (st != RAST_OK) return st;
-    if (width < 0 || height < 0 || width > RAST_MAX_DIM || height > RAST_MAX_DIM)
-        return RAST_E_SIZE;
-    if (stride < 0 || (int64_t)stride < (int64_t)width * bpp) return RAST_E_SIZE;
+    if (stride < 0 || stride < row) return RAST_E_SIZE;
     if ((uint64_t)stride * (uint64_t)height > (uint64_t)PTRDIFF_MAX) return RAST_E_SIZE;
     if (!pixels && width > 0 && height > 0) return RAST_E_NULL;
-    /* COUNT16 pixels are uint16_t: every row must start 2-byte aligned. */
-    if (format == RAST_FORMAT_COUNT16 &&
+    /* 16-bit pixels (COUNT16, RGB565) are uint16_t: every row must start
+     * 2-byte aligned. */
+    if (rast__formats[format].bits == 16 &&
         (stride % 2 != 0 || (uintptr_t)pixels % sizeof(uint16_t) != 0))
         return RAST_E_SIZE;
     v.pixels = pixels;
@@ -183,31 +150,22 @@ rast_status rast__target_check(const rast_target *t, rast_rect *clip)
 rast_status rast__solid_init(rast__solid *s, const rast_target *t, const rast_rect *clip,
                              const void *pixel, const void *background, rast__row_fn *fn)
 {
-    int32_t bpp = rast__format_bytes[t->format];
-    if (t->format == RAST_FORMAT_COUNT16) {
-        /* A count has no value to write and no background to restore. */
-        if (background) return RAST_E_FORMAT;
-        memset(s, 0, sizeof *s);
-        s->base = (unsigned char *)t->pixels;
-        s->stride = t->stride;
-        s->bytes = bpp;
-        s->clip = *clip;
-        *fn = rast__count_row;
-        return RAST_OK;
-    }
-    if (!pixel) return RAST_E_NULL;
+    const rast__format *f = &rast__formats[t->format];
+    /* A count has no value to write and no background to restore. */
+    if (!f->value && background) return RAST_E_FORMAT;
+    if (f->value && !pixel) return RAST_E_NULL;
     memset(s, 0, sizeof *s);
     s->base = (unsigned char *)t->pixels;
     s->stride = t->stride;
-    s->bytes = bpp;
+    s->fmt = f;
     s->clip = *clip;
-    memcpy(s->value, pixel, (size_t)bpp);
+    if (f->value) memcpy(s->value, pixel, (size_t)f->value);
     if (background) {
-        memcpy(s->background, background, (size_t)bpp);
+        memcpy(s->background, background, (size_t)f->value);
         s->row = clip->y0 - 1; /* the last row written */
         *fn = rast__opaque_row;
     } else {
-        *fn = rast__solid_row;
+        *fn = f->row ? f->row : rast__solid_row;
     }
     return RAST_OK;
 }

@@ -1,15 +1,35 @@
 /*
- * paint.h - the solid painter and target checks shared with the dispatcher.
+ * paint.h - the pixel formats, the solid painter and the target checks
+ * shared with the dispatchers.
  */
 #ifndef RAST_PAINT_H
 #define RAST_PAINT_H
 
 #include "internal.h"
 
+/* A pixel format (formats.c has one row per rast_format).  Rows are
+ * addressed by their first byte; x is a column.  A pixel VALUE is what the
+ * `pixel` arguments hold: `value` bytes in the format's own encoding. */
+typedef struct rast__format {
+    int32_t bits;     /* bits of memory per pixel: 1, 8, 16, 24, 32 */
+    int32_t value;    /* bytes of a pixel value; 0: the format takes none (COUNT16) */
+    int32_t channels; /* RGBA channels a shaded fill interpolates (R, RGB, RGBA); 0: none */
+    rast__row_fn row; /* a solid row painter of its own (user: rast__solid), or NULL
+                         for the generic one calling `fill` per span */
+    /* columns [x0, x1) of `row` set to the value v (COUNT16: plus 1) */
+    void (*fill)(unsigned char *row, int32_t x0, int32_t x1, const unsigned char *v);
+    /* an 8-bit RGBA colour as a pixel value; NULL if the format has none */
+    void (*pack)(const unsigned char *rgba, unsigned char *v);
+    /* columns [x, x + n) of `row` from n RGBA colours (4 bytes each) */
+    void (*put)(unsigned char *row, int32_t x, int32_t n, const unsigned char *rgba);
+} rast__format;
+
+extern const rast__format rast__formats[RAST_FORMAT_COUNT_];
+
 typedef struct rast__solid {
     unsigned char *base;
     ptrdiff_t stride;
-    int32_t bytes;                /* per pixel */
+    const rast__format *fmt;
     unsigned char value[4];       /* inside */
     unsigned char background[4];  /* outside (opaque painter only) */
     rast_rect clip;
@@ -32,15 +52,28 @@ typedef struct rast__user_spans {
 } rast__user_spans;
 void rast__user_row(void *user, int32_t y, const int32_t *xs, int32_t n);
 
-/* A painter writing `pixel` (target format bytes) over spans of a checked
- * target and clip: fills *s and the row function to pass it to.  With a
- * non-NULL `background` it is the opaque painter: every clip pixel is
- * written, and rast__opaque_finish must follow a successful fill.
+/* A painter writing `pixel` (a value of the target's format) over spans of
+ * a checked target and clip: fills *s and the row function to pass it to.
+ * With a non-NULL `background` it is the opaque painter: every clip pixel
+ * is written, and rast__opaque_finish must follow a successful fill.
  * RAST_FORMAT_COUNT16 adds 1 per covered pixel instead and ignores `pixel`
  * (it may be NULL); it has no opaque painter (RAST_E_FORMAT).  Otherwise
  * RAST_E_NULL for a NULL pixel. */
 rast_status rast__solid_init(rast__solid *s, const rast_target *t, const rast_rect *clip,
                              const void *pixel, const void *background, rast__row_fn *fn);
 void rast__opaque_finish(rast__solid *s);
+
+/* Called before triangle k (vertices t, grid g) is filled, with the
+ * painter's `user`: set the painter up for it; 0 skips the triangle. */
+typedef int (*rast__tri_begin_fn)(void *user, const rast_point *t, uint32_t k,
+                                  const rast__grid *g);
+
+/* The triangle batch behind every triangle entry point (trifill.c): check
+ * the batch, options and scratch for `clip` (non-empty or empty, cut to the
+ * target or a span clip), then run the filler on each triangle in turn,
+ * calling `begin` first when it is not NULL, its spans going to `fn`. */
+rast_status rast__tri_fill(const rast_point *tris, uint32_t ntris, const rast_tri_opts *opts,
+                           const rast_rect *clip, rast__row_fn fn, void *user,
+                           rast__tri_begin_fn begin, void *scratch, size_t scratch_bytes);
 
 #endif /* RAST_PAINT_H */

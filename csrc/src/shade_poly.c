@@ -22,7 +22,6 @@
  * quotient and remainder (in [0, D)) are stepped, as the rectangle's.
  */
 #include "aet.h"
-#include "paint.h"
 #include "shade_run.h"
 #include "wide.h"
 
@@ -271,9 +270,8 @@ rast_status rast_fill_polygon_gouraud(const rast_target *target, const rast_poly
     }
     st = rast__target_check(target, &clip);
     if (st != RAST_OK) return st;
-    if (target->format != RAST_FORMAT_GRAY8 && target->format != RAST_FORMAT_RGB888 &&
-        target->format != RAST_FORMAT_RGBA8888)
-        return RAST_E_FORMAT;
+    st = rast__shade_format(target);
+    if (st != RAST_OK) return st;
     st = rast_polygon_gouraud_scratch_size(npoints, clip.x1 - clip.x0, clip.y1 - clip.y0, &need);
     if (st != RAST_OK) return st;
     st = rast__scratch_check(scratch, scratch_bytes, need);

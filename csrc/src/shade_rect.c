@@ -23,7 +23,6 @@
  * per pixel, each increment rounded half up to 1/2^F; see the header for
  * the exact recipe the tests replay.
  */
-#include "paint.h"
 #include "shade_run.h"
 
 static rast_status rast__rect_check(const rast_target *target, rast_point p0, rast_point p1,
@@ -38,7 +37,7 @@ static rast_status rast__rect_check(const rast_target *target, rast_point p0, ra
     if (opts->boundary != RAST_BOUNDARY_EXACT) return RAST_E_ARG;
     if ((unsigned)shade->precision > RAST_PRECISION_FLAT) return RAST_E_ARG;
     if (shade->precision == RAST_PRECISION_FIXED &&
-        (shade->fraction_bits < 0 || shade->fraction_bits > RAST_GOURAUD_RECT_MAX_FRACTION_BITS))
+        (shade->fraction_bits < 1 || shade->fraction_bits > 16))
         return RAST_E_ARG;
     if (p0.x < -RAST_COORD_MAX || p0.x > RAST_COORD_MAX || p0.y < -RAST_COORD_MAX ||
         p0.y > RAST_COORD_MAX || p1.x < -RAST_COORD_MAX || p1.x > RAST_COORD_MAX ||
@@ -51,8 +50,7 @@ static rast_status rast__rect_check(const rast_target *target, rast_point p0, ra
         return RAST_E_RANGE;
     st = rast__target_check(target, clip);
     if (st != RAST_OK) return st;
-    if (target->format == RAST_FORMAT_COUNT16) return RAST_E_FORMAT;
-    return RAST_OK;
+    return rast__shade_format(target);
 }
 
 rast_status rast_fill_rect_gouraud(const rast_target *target, rast_point p0, rast_point p1,

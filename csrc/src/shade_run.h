@@ -1,23 +1,30 @@
 /*
- * shade_run.h - storing a run of shaded RGBA colours into a target row.
- * Not installed.  (Until branch shade's format table is merged: the first
- * 1, 3 or 4 channels of each colour, as the byte formats hold them.)
+ * shade_run.h - storing runs of shaded RGBA colours, for the fills that
+ * gather a row's colours before writing them (shade_rect.c,
+ * shade_poly.c): the format table's `put` (formats.c) does the packing.
+ * Not installed.
  */
 #ifndef RAST_SHADE_RUN_H
 #define RAST_SHADE_RUN_H
 
-#include "internal.h"
+#include "paint.h"
 
 /* Pixels a row's colours are gathered in before they are stored. */
 #define RAST__SHADE_RUN 64
 
-/* Columns [x, x + n) of `row` from n RGBA colours (4 bytes each). */
+/* Columns [x, x + n) of `row` (the first byte of a row of t) from n RGBA
+ * colours (4 bytes each).  t's format has a put (checked by the caller:
+ * rast__shade_format). */
 static inline void rast__put_rgba(const rast_target *t, unsigned char *row, int32_t x, int32_t n,
                                   const unsigned char *rgba)
 {
-    int32_t i, k, bytes = t->format == RAST_FORMAT_GRAY8 ? 1 : t->format == RAST_FORMAT_RGB888 ? 3 : 4;
-    for (i = 0; i < n; i++)
-        for (k = 0; k < bytes; k++) row[(ptrdiff_t)(x + i) * bytes + k] = rgba[4 * i + k];
+    rast__formats[t->format].put(row, x, n, rgba);
+}
+
+/* RAST_E_FORMAT for a checked target whose format has no colour (COUNT16). */
+static inline rast_status rast__shade_format(const rast_target *t)
+{
+    return rast__formats[t->format].put ? RAST_OK : RAST_E_FORMAT;
 }
 
 #endif /* RAST_SHADE_RUN_H */

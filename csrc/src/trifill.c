@@ -74,12 +74,9 @@ static rast_status rast__tri_check_range(const rast_point *tris, uint32_t ntris)
     return RAST_OK;
 }
 
-/* Check the batch, options and scratch for a clip; run the filler on each
- * triangle in turn, its spans going to `fn` (a painter's row function). */
-static rast_status rast__tri_fill(const rast_point *tris, uint32_t ntris,
-                                  const rast_tri_opts *opts, const rast_rect *clip,
-                                  rast__row_fn fn, void *user, void *scratch,
-                                  size_t scratch_bytes)
+rast_status rast__tri_fill(const rast_point *tris, uint32_t ntris, const rast_tri_opts *opts,
+                           const rast_rect *clip, rast__row_fn fn, void *user,
+                           rast__tri_begin_fn begin, void *scratch, size_t scratch_bytes)
 {
     const rast__tri_algo *al;
     rast__grid g;
@@ -100,6 +97,7 @@ static rast_status rast__tri_fill(const rast_point *tris, uint32_t ntris,
     rast__sink_init(&sink, fn, user, clip);
     for (k = 0; k < ntris; k++) {
         const rast_point *t = tris + 3 * (size_t)k;
+        if (begin && !begin(user, t, k, &g)) continue;
         /* Fillers leave the sink empty (rast__sink_row, or a flush), so one
          * triangle's spans never merge with the next one's: COUNT16 counts
          * both. */
@@ -137,7 +135,7 @@ rast_status rast_fill_triangles(const rast_target *target, const rast_point *tri
     if (st != RAST_OK) return st;
     st = rast__solid_init(&solid, target, &clip, pixel, NULL, &fn);
     if (st != RAST_OK) return st;
-    return rast__tri_fill(tris, ntris, opts, &clip, fn, &solid, scratch, scratch_bytes);
+    return rast__tri_fill(tris, ntris, opts, &clip, fn, &solid, NULL, scratch, scratch_bytes);
 }
 
 rast_status rast_fill_triangles_spans(const rast_point *tris, uint32_t ntris,
@@ -153,5 +151,5 @@ rast_status rast_fill_triangles_spans(const rast_point *tris, uint32_t ntris,
     if (st != RAST_OK) return st;
     u.fn = span;
     u.user = user;
-    return rast__tri_fill(tris, ntris, opts, &c, rast__user_row, &u, scratch, scratch_bytes);
+    return rast__tri_fill(tris, ntris, opts, &c, rast__user_row, &u, NULL, scratch, scratch_bytes);
 }

@@ -59,6 +59,11 @@ long rastpy_snap_points(const double *xy, size_t npoints, int s, int32_t *out);
 long rastpy_fill_triangles(const rast_target *target, const double *xy,
                            uint32_t ntris, const rast_tri_opts *opts,
                            const void *pixel);
+long rastpy_fill_triangles_shaded(const rast_target *target, const double *xy,
+                                  uint32_t ntris, const uint8_t *colors,
+                                  const int32_t *z, int32_t *zbuf,
+                                  const rast_tri_opts *opts,
+                                  const rast_shade_opts *shade);
 int rastpy_gil_held(void);
 long rastpy_fill_polygon_gouraud(const rast_target *target, const double *xy,
                                  uint32_t npoints, const uint32_t *ring_sizes,
@@ -153,12 +158,13 @@ long rastpy_mask_polygon(void *mask, int32_t height, int32_t width,
 }
 
 /* Snap the 3 * ntris vertices xy (x, y float pairs), then
- * rast_fill_triangles with scratch from malloc.  Returns 0, a negative
- * rast_status (or RASTPY_E_NOMEM), or k + 1 when vertex k is bad (see
- * rastpy_snap). */
-long rastpy_fill_triangles(const rast_target *target, const double *xy,
-                           uint32_t ntris, const rast_tri_opts *opts,
-                           const void *pixel)
+ * rast_fill_triangles (shade NULL) or rast_fill_triangles_shaded with
+ * scratch from malloc.  Returns 0, a negative rast_status (or
+ * RASTPY_E_NOMEM), or k + 1 when vertex k is bad (see rastpy_snap). */
+static long rastpy_tris(const rast_target *target, const double *xy, uint32_t ntris,
+                        const rast_tri_opts *opts, const void *pixel,
+                        const rast_shade_opts *shade, const uint8_t *colors,
+                        const int32_t *z, int32_t *zbuf)
 {
     rast_status st;
     size_t need, n = 3 * (size_t)ntris;
@@ -175,9 +181,28 @@ long rastpy_fill_triangles(const rast_target *target, const double *xy,
         free(mem);
         return bad + 1;
     }
-    st = rast_fill_triangles(target, (const rast_point *)mem, ntris, opts, pixel, mem + head, need);
+    st = shade ? rast_fill_triangles_shaded(target, (const rast_point *)mem, ntris, colors, z,
+                                            zbuf, opts, shade, mem + head, need)
+               : rast_fill_triangles(target, (const rast_point *)mem, ntris, opts, pixel,
+                                     mem + head, need);
     free(mem);
     return st;
+}
+
+long rastpy_fill_triangles(const rast_target *target, const double *xy,
+                           uint32_t ntris, const rast_tri_opts *opts,
+                           const void *pixel)
+{
+    return rastpy_tris(target, xy, ntris, opts, pixel, NULL, NULL, NULL, NULL);
+}
+
+long rastpy_fill_triangles_shaded(const rast_target *target, const double *xy,
+                                  uint32_t ntris, const uint8_t *colors,
+                                  const int32_t *z, int32_t *zbuf,
+                                  const rast_tri_opts *opts,
+                                  const rast_shade_opts *shade)
+{
+    return rastpy_tris(target, xy, ntris, opts, NULL, shade, colors, z, zbuf);
 }
 
 /* Snap, then rast_fill_polygon_gouraud with scratch from malloc; results

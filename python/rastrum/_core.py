@@ -57,6 +57,8 @@ FORMATS = {
     "gray8": lib.RAST_FORMAT_GRAY8,
     "rgb888": lib.RAST_FORMAT_RGB888,
     "rgba8888": lib.RAST_FORMAT_RGBA8888,
+    "rgb565": lib.RAST_FORMAT_RGB565,
+    "mono1": lib.RAST_FORMAT_MONO1,
 }
 
 
@@ -243,17 +245,26 @@ def rings_f64(rings):
     return arrays
 
 
-def make_target(array, fmt):
+def format_stride(fmt, width):
+    """Bytes of a packed row of `width` pixels of format code `fmt`."""
+    out = ffi.new("int32_t *")
+    _check(lib.rast_format_stride(fmt, width, out))
+    return out[0]
+
+
+def make_target(array, fmt, width=None):
     """A ``rast_target *`` over a checked uint8 array.  The target holds a
     raw pointer: keep `array` alive as long as the target is used.
 
-    The caller has checked: uint8, writable, pixels of each row contiguous,
-    a positive row stride.  Sub-views (strided rows) are fine: C only ever
+    The caller has checked: the format's dtype (uint8; uint16 for rgb565),
+    writable, pixels of each row contiguous, a positive row stride.  For
+    mono1 `array` is (H, ceil(W/8)) packed bytes and `width` is W.  Sub-views (strided rows) are fine: C only ever
     touches the H x W pixels, never the bytes between rows.
     """
     h, w = array.shape[0], array.shape[1]
-    bpp = FORMAT_BYTES_BY_CODE[fmt]
-    stride = array.strides[0] if h > 1 else w * bpp
+    if width is not None:  # mono1: the array holds packed bytes, not pixels
+        w = width
+    stride = array.strides[0] if h > 1 else format_stride(fmt, w)
     if not array.size:
         pixels = ffi.NULL
     elif array.flags.c_contiguous:
@@ -333,9 +344,6 @@ def mask_polygon(shape, rings, opts, s):
 
 
 _F64 = np.dtype(np.float64)
-
-
-FORMAT_BYTES_BY_CODE = {code: FORMAT_BYTES[name] for name, code in FORMATS.items()}
 
 
 def fill_polygon_gouraud(target, rings, colors, opts, shade, s):

@@ -4,13 +4,15 @@ import numpy as np
 
 from . import _core
 from . import lines as _lines
+from . import shade as _shade
 from . import triangles as _triangles
 from ._core import InputError
 from ._native import ffi, lib
 
 _NO_COLOR = object()  # equal to no colour: "nothing remembered yet"
 _CHANNELS_TO_FORMAT = {1: "gray8", 3: "rgb888", 4: "rgba8888"}
-_PIL_MODES = {"gray8": "L", "rgb888": "RGB", "rgba8888": "RGBA"}
+_PIL_MODES = {"gray8": "L", "rgb888": "RGB", "rgba8888": "RGBA", "rgb565": "RGB", "mono1": "1"}
+_CHANNELS = {"gray8": 1, "rgb888": 3, "rgba8888": 4, "rgb565": 3, "mono1": 1}
 
 
 class Canvas:
@@ -19,8 +21,13 @@ class Canvas:
     ``Canvas(width, height, format="rgb888", background=0)`` owns a new
     array; ``Canvas.wrap(array)`` draws into an existing one (a sub-view of
     a larger image is fine).  Formats: "gray8" (H, W), "rgb888" (H, W, 3),
-    "rgba8888" (H, W, 4), all uint8.  A colour is an int for gray8, or a
-    sequence of 3 or 4 ints; a single int is used for every channel.
+    "rgba8888" (H, W, 4), all uint8; "rgb565" (H, W) uint16 (R in bits
+    15-11, G 10-5, B 4-0, as TFT displays take it); "mono1", one bit per
+    pixel (e-paper), kept packed 8 pixels a byte, MSB first, in an
+    (H, ceil(W/8)) uint8 buffer (``packed``).  A colour is an int for
+    gray8, or a sequence of 3 or 4 ints; a single int is used for every
+    channel.  rgb565 takes (R, G, B) in 0..255 and keeps their top 5, 6 and
+    5 bits; mono1 takes an int, on iff it is not 0.
 
     Examples
     --------
@@ -34,22 +41,37 @@ class Canvas:
     def __init__(self, width, height, format="rgb888", background=0):
         h, w = _core.shape2((height, width))
         fmt = _core._name(format, "format", _core.FORMATS)
-        bpp = _core.FORMAT_BYTES[fmt]
-        array = np.empty((h, w) if bpp == 1 else (h, w, bpp), np.uint8)
-        array[...] = np.frombuffer(_pixel_bytes(background, fmt), np.uint8)
-        self._set(array, fmt)
+        value = _pixel_bytes(background, fmt)
+        if fmt == "mono1":
+            array = np.full((h, (w + 7) // 8), 0xFF if value[0] else 0, np.uint8)
+        elif fmt == "rgb565":
+            array = np.empty((h, w), np.uint16)
+            array[...] = np.frombuffer(value, np.uint16)
+        else:
+            bpp = _core.FORMAT_BYTES[fmt]
+            array = np.empty((h, w) if bpp == 1 else (h, w, bpp), np.uint8)
+            array[...] = np.frombuffer(value, np.uint8)
+        self._set(array, fmt, w)
 
     @classmethod
     def wrap(cls, array, format=None):
         """Draw into an existing uint8 array (no copy).
 
         The format follows from the shape when not given: (H, W) is gray8,
-        (H, W, 3) rgb888, (H, W, 4) rgba8888.  The array must be writable
-        and each row's pixels contiguous (any row stride, so a slice
-        ``big[10:-10, 10:-10]`` works).
+        (H, W, 3) rgb888, (H, W, 4) rgba8888, a uint16 (H, W) rgb565.  The
+        array must be writable and each row's pixels contiguous (any row
+        stride, so a slice ``big[10:-10, 10:-10]`` works).  mono1 cannot be
+        wrapped (a packed row does not say its width).
         """
         if not isinstance(array, np.ndarray):
             raise InputError("Canvas.wrap needs a numpy array, not %s" % type(array).__name__)
+        if array.dtype == np.uint16 and format in (None, "rgb565"):
+            if array.ndim != 2 or not array.flags.writeable or (array.size and array.strides[1] != 2):
+                raise InputError("Canvas.wrap takes dtype uint16 only as rgb565: a writable (H, W) array with "
+                                 "contiguous rows, not shape %s" % (array.shape,))
+            canvas = cls.__new__(cls)
+            canvas._set(array, "rgb565", array.shape[1])
+            return canvas
         if array.dtype != np.uint8:
             raise InputError("Canvas.wrap needs a uint8 array, not %s" % array.dtype)
         if array.ndim == 2:
@@ -69,7 +91,7 @@ class Canvas:
         ):
             raise InputError("Canvas.wrap needs each row's pixels contiguous and rows in order (strides %s)" % (array.strides,))
         canvas = cls.__new__(cls)
-        canvas._set(array, fmt)
+        canvas._set(array, fmt, w)
         return canvas
 
     def _pixel(self, color):
@@ -83,21 +105,40 @@ class Canvas:
         self._last_color = (color if isinstance(color, (int, tuple)) else _NO_COLOR, pixel)
         return pixel
 
-    def _set(self, array, fmt):
+    def _set(self, array, fmt, width):
         self._last_color = (_NO_COLOR, None)
         self._array = array
         self._format = fmt
+        self._width = width
         self._code = _core.FORMATS[fmt]
-        self._target = _core.make_target(array, self._code)
+        self._target = _core.make_target(array, self._code, width if fmt == "mono1" else None)
+        self.depth = None
 
     @property
     def array(self):
-        """The pixels as a numpy view: (H, W) or (H, W, channels)."""
+        """The pixels as a numpy view: (H, W) or (H, W, channels); rgb565 a
+        uint16 (H, W) view.  mono1: an unpacked (H, W) uint8 COPY of 0/1
+        (writing to it changes nothing; ``packed`` is the buffer itself)."""
+        if self._format == "mono1":
+            return np.unpackbits(self._array, axis=1, count=self._width) if self._array.size else \
+                np.zeros((self._array.shape[0], self._width), np.uint8)
         return self._array
 
     @property
+    def packed(self):
+        """The buffer C draws into, as a view: for mono1 (H, ceil(W/8))
+        uint8, pixel x of a row at bit 7 - x % 8 of byte x // 8; for the
+        other formats the same as ``array``."""
+        return self._array
+
+    def clear_depth(self):
+        """Forget the depth buffer: the next depth-tested fill starts afresh
+        (``depth`` back to None)."""
+        self.depth = None
+
+    @property
     def width(self):
-        return self._array.shape[1]
+        return self._width
 
     @property
     def height(self):
@@ -145,14 +186,40 @@ class Canvas:
         batch = _triangles.tris_f64(tri, single=True)
         _triangles.fill_triangles(self._target, batch, self._pixel(color), opts)
 
-    def fill_triangles(self, tris, color, *, algorithm="edge", subpixel_bits=8, sample_offset=0.5,
+    def fill_triangles(self, tris, color=None, *, vertex_colors=None, precision="exact", fraction_bits=16,
+                       depth=None, algorithm="edge", subpixel_bits=8, sample_offset=0.5,
                        rounding="exact", boundary="exact"):
-        """Paint `color` on every pixel owned by a triangle of the batch.
+        """Paint every pixel owned by a triangle of the batch.
 
         `tris` is an (N, 3, 2) array-like of (x, y) vertices, drawn in one C
-        call; the other arguments are those of
-        :func:`rastrum.triangles_mask`.  Only the covered pixels are written,
-        and nothing at all when an argument is bad.
+        call; `algorithm`, `subpixel_bits`, `sample_offset`, `rounding` and
+        `boundary` are those of :func:`rastrum.triangles_mask`.  Only the
+        covered pixels are written, and nothing at all when an argument is
+        bad.  Give exactly one of:
+
+        - `color`: one colour for the whole batch, or an (N, C) int array,
+          one colour per triangle (flat shading);
+        - `vertex_colors`: an (N, 3, C) int array, a colour per vertex,
+          interpolated over each triangle (Gouraud).  C is 1 (a level, used
+          for R, G and B), 3 (R, G, B; alpha 255) or 4 (R, G, B, A: rgba8888
+          stores the interpolated alpha, nothing is blended); gray8 and
+          mono1 take C = 1.  Levels are 0..255 whatever the format: rgb565
+          keeps their top bits, mono1 is on iff the level is >= 128.
+
+        `precision`: "exact" (the rational barycentric value at the sample,
+        rounded half up: floor(v + 1/2)), "fixed" (fixed point with
+        `fraction_bits` F in 1..16, stepped by additions: faster, off by
+        about a level at small F; see the README's table), or "flat" (each
+        triangle in its first vertex's colour).  A shaded fill writes
+        exactly the pixels the unshaded one writes.
+
+        `depth`: (N, 3) vertex depths, rounded half up to int32 (the range
+        -2**31..2**31-1).  The canvas then keeps a depth buffer,
+        ``canvas.depth``, an (H, W) int32 array made on first use and filled
+        with 2**31-1; a pixel is written iff its interpolated depth (same
+        precision as the colour; exact for "flat") is less than the
+        buffer's, which then takes it.  ``clear_depth()`` drops the buffer.
+        Without `depth`, nothing depth-related is made or computed.
 
         Examples
         --------
@@ -167,8 +234,35 @@ class Canvas:
         """
         opts = _triangles.tri_opts(algorithm, subpixel_bits, sample_offset, rounding, boundary)
         batch = _triangles.tris_f64(tris)
-        pixel = self._pixel(color)
-        _triangles.fill_triangles(self._target, batch, pixel, opts)
+        if vertex_colors is None and depth is None and precision == "exact" and (
+                color is None or np.ndim(color) < 2):
+            if color is None:
+                raise InputError("fill_triangles needs color or vertex_colors")
+            _triangles.fill_triangles(self._target, batch, self._pixel(color), opts)
+            return
+        if (color is None) == (vertex_colors is None):
+            raise InputError("fill_triangles takes exactly one of color and vertex_colors")
+        sopts = _shade.shade_opts(precision, fraction_bits)
+        n = batch.shape[0]
+        channels = _CHANNELS[self._format] if self._format in _CHANNELS else 0
+        if not channels:
+            raise InputError("format %s has no colours to shade" % self._format)
+        if vertex_colors is not None:
+            colors = _shade.rgba(vertex_colors, n, True, self._format, channels)
+        else:
+            if np.ndim(color) < 2:  # one colour for every triangle
+                one = np.frombuffer(_rgba_bytes(color, self._format), np.uint8)
+                colors = np.ascontiguousarray(np.broadcast_to(one, (n, 3, 4)))
+            else:
+                colors = _shade.rgba(color, n, False, self._format, channels)
+            sopts = _shade.shade_opts("flat", fraction_bits)
+        z = zbuf = None
+        if depth is not None:
+            z = _shade.depths(depth, n)
+            if self.depth is None:
+                self.depth = np.full((self.height, self.width), _shade.INT32_MAX, np.int32)
+            zbuf = self.depth
+        _shade.fill(self._target, batch, colors, z, zbuf, opts, sopts)
 
     def fill_rect_gouraud(self, rect, corner_colors, *, method="bilinear", precision="exact",
                           fraction_bits=16, subpixel_bits=8, sample_offset=0.5):
@@ -248,9 +342,19 @@ class Canvas:
                                             1 if closed else 0, opts, pixel))
 
     def to_image(self):
-        """A Pillow image (a copy): mode L, RGB or RGBA."""
+        """A Pillow image (a copy): mode L, RGB or RGBA; rgb565 as RGB (each
+        channel widened to 8 bits by repeating its top bits), mono1 as
+        mode "1"."""
         from PIL import Image
 
+        if self._format == "mono1":
+            packed = np.ascontiguousarray(self._array)
+            return Image.frombytes("1", (self._width, self.height), packed.tobytes())
+        if self._format == "rgb565":
+            p = self._array.astype(np.uint32)
+            r, g, b = p >> 11, (p >> 5) & 63, p & 31
+            rgb = np.stack([(r << 3) | (r >> 2), (g << 2) | (g >> 4), (b << 3) | (b >> 2)], axis=-1)
+            return Image.fromarray(rgb.astype(np.uint8), "RGB")
         return Image.fromarray(np.ascontiguousarray(self._array), _PIL_MODES[self._format])
 
     def save(self, path, **kwargs):
@@ -263,6 +367,14 @@ class Canvas:
 
 def _pixel_bytes(color, fmt):
     """The pixel's bytes for `color` in format `fmt`, or InputError."""
+    if fmt == "mono1":
+        if isinstance(color, (bool, np.bool_)) or not isinstance(color, (int, np.integer)):
+            raise InputError("colour %r: format mono1 needs an int (0 off, else on)" % (color,))
+        return b"\x01" if color else b"\x00"
+    if fmt == "rgb565":
+        out = ffi.new("uint8_t[2]")
+        _core._check(lib.rast_pack_color(lib.RAST_FORMAT_RGB565, _rgba_bytes(color, fmt), out))
+        return bytes(ffi.buffer(out))
     n = _core.FORMAT_BYTES[fmt]
     if isinstance(color, (int, np.integer)) and not isinstance(color, (bool, np.bool_)):
         values = [int(color)] * n
@@ -278,3 +390,13 @@ def _pixel_bytes(color, fmt):
     if not all(0 <= v <= 255 for v in values):
         raise InputError("colour %r: every channel must be in 0..255" % (color,))
     return bytes(bytearray(int(v) for v in values))
+
+
+def _rgba_bytes(color, fmt):
+    """An 8-bit RGBA colour (4 bytes) for `color` given in `fmt`'s terms:
+    an int (every channel; alpha 255) or 3 or 4 ints."""
+    n = 4 if fmt == "rgba8888" else 3 if fmt in ("rgb888", "rgb565") else 1
+    if fmt == "mono1" and isinstance(color, (int, np.integer)) and not isinstance(color, (bool, np.bool_)):
+        color = 255 if color else 0  # a flat mono1 colour: on iff not 0
+    values = _pixel_bytes(color, "rgba8888" if n == 4 else "rgb888" if n == 3 else "gray8")
+    return (values * 3)[:3] + b"\xff" if n == 1 else values + (b"\xff" if n == 3 else b"")

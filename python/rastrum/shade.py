@@ -1,0 +1,107 @@
+"""Shaded triangle batches: the checks and conversions behind
+``Canvas.fill_triangles(..., vertex_colors=..., depth=...)``.
+
+Thin, like the rest: colours become an (N, 3, 4) uint8 RGBA array, depths
+an (N, 3) int32 array, and one C call (rast_fill_triangles_shaded, without
+the GIL) snaps the vertices and paints the batch.
+"""
+
+import numbers
+
+import numpy as np
+
+from . import _core
+from ._core import InputError
+from ._native import ffi, lib
+
+PRECISIONS = {
+    "exact": lib.RAST_PRECISION_EXACT,
+    "fixed": lib.RAST_PRECISION_FIXED,
+    "flat": lib.RAST_PRECISION_FLAT,
+}
+INT32_MAX = 2 ** 31 - 1
+INT32_MIN = -(2 ** 31)
+
+
+def _make_shade_opts(precision, fraction_bits):
+    code = PRECISIONS[_core._name(precision, "precision", PRECISIONS)]
+    if isinstance(fraction_bits, (bool, np.bool_)) or not isinstance(fraction_bits, (int, np.integer)):
+        raise InputError("fraction_bits must be an int, not %r" % (fraction_bits,))
+    if code == lib.RAST_PRECISION_FIXED and not 1 <= fraction_bits <= 16:
+        raise InputError("fraction_bits must be in 1..16, not %d" % fraction_bits)
+    opts = ffi.new("rast_shade_opts *")
+    opts.precision = code
+    opts.fraction_bits = int(fraction_bits)
+    return opts
+
+
+def shade_opts(precision, fraction_bits):
+    """A checked, read-only ``rast_shade_opts *``."""
+    return _core.cached_opts("shade", _make_shade_opts, precision, fraction_bits)
+
+
+def rgba(colors, n, per_vertex, fmt, channels):
+    """`colors` as a C-contiguous uint8 (n, 3, 4) RGBA array.
+
+    per_vertex: (n, 3, C) vertex colours; else (n, C) one colour per
+    triangle, given to its three vertices.  C = 1 (a level: R = G = B),
+    3 (A = 255) or 4; gray8 and mono1 take C = 1 only.
+    """
+    what = "vertex_colors" if per_vertex else "color"
+    want = "(N, 3, C)" if per_vertex else "(N, C)"
+    try:
+        a = np.asarray(colors)
+    except (TypeError, ValueError):
+        raise InputError("%s must be an array-like of ints of shape %s" % (what, want)) from None
+    if a.dtype.kind not in "iu" or a.ndim != (3 if per_vertex else 2) or a.shape[0] != n or (
+            per_vertex and a.shape[1] != 3):
+        raise InputError("%s must be ints of shape %s with N = %d triangles, not %s %s"
+                         % (what, want, n, a.dtype, a.shape))
+    c = a.shape[-1]
+    allowed = (1,) if channels == 1 else (1, 3, 4)
+    if c not in allowed:
+        raise InputError("%s: format %s takes %s channels per colour, not %d"
+                         % (what, fmt, " or ".join(map(str, allowed)), c))
+    if a.size and (a.min() < 0 or a.max() > 255):
+        raise InputError("%s: every channel must be in 0..255" % what)
+    if not per_vertex:
+        a = np.repeat(a[:, None, :], 3, axis=1)
+    out = np.empty((n, 3, 4), np.uint8)
+    out[..., 3] = 255
+    if c == 1:
+        out[..., :3] = a
+    else:
+        out[..., :c] = a
+    return out
+
+
+def depths(depth, n):
+    """(n, 3) numbers rounded half up to int32 (floor(d + 1/2)), checked."""
+    try:
+        d = np.asarray(depth, dtype=np.float64)
+    except (TypeError, ValueError):
+        raise InputError("depth must be an array-like of numbers of shape (N, 3)") from None
+    if d.shape != (n, 3):
+        raise InputError("depth must have shape (N, 3) = (%d, 3), not %s" % (n, d.shape))
+    z = np.floor(d + 0.5)
+    if not np.all(np.isfinite(z)) or (z.size and (z.min() < INT32_MIN or z.max() > INT32_MAX)):
+        raise InputError("depth values must be finite and round to int32 (-2**31..2**31-1)")
+    return np.ascontiguousarray(z, dtype=np.int32)
+
+
+def fill(target, tris, colors, z, zbuf, opts, sopts):
+    """Snap the checked (N, 3, 2) float64 batch and paint it shaded."""
+    n = tris.shape[0]
+    if n == 0:
+        return
+    result = lib.rastpy_fill_triangles_shaded(
+        target, ffi.from_buffer("double[]", tris), n, ffi.from_buffer("uint8_t[]", colors),
+        ffi.NULL if z is None else ffi.from_buffer("int32_t[]", z),
+        ffi.NULL if zbuf is None else ffi.from_buffer("int32_t[]", zbuf, require_writable=True),
+        opts, sopts)
+    if result:
+        _core._check_glue(result, tris.reshape(-1, 2), opts.subpixel_bits)
+
+
+def is_number(v):
+    return isinstance(v, numbers.Integral) and not isinstance(v, (bool, np.bool_))

@@ -148,9 +148,10 @@ def read_obj(source):
     (1-based; negative indices count back from the last one read); faces of
     more than three corners are fanned into triangles from their first
     corner.  Other statements (vt, o, g, s, usemtl, mtllib, l, comments)
-    are ignored.  When faces carry normal indices, each distinct
-    (vertex, normal) pair becomes one output vertex, so that `normals`
-    is per vertex.
+    are ignored.  When faces carry normal indices, `normals` is per vertex:
+    a vertex takes the first normal a face gives it, and each other
+    normal it is given makes a copy of the vertex (appended after the
+    others); a vertex no face uses gets (0, 0, 0).
 
     Raises InputError naming the line for a malformed number, a face of
     fewer than 3 corners, an index of 0 or out of range, or faces that give
@@ -205,17 +206,26 @@ def _read_obj(f, name):
     if not any(with_n):
         faces = np.array([[c[0] for c in t] for t in tris], np.int64).reshape(-1, 3)
         return verts, faces, None
-    # One output vertex per distinct (vertex, normal) pair, in first-use order.
-    index, out_v, out_n, faces = {}, [], [], []
+    # Normals per vertex: a vertex keeps its place and takes the first normal
+    # it is used with; each further (vertex, normal) pair it is used with
+    # becomes a new vertex after the others.  Unused vertices get (0, 0, 0).
+    out_v = list(vs)
+    out_n = [None] * len(vs)
+    index, faces = {}, []
     for t in tris:
         row = []
-        for c in t:
-            if c not in index:
-                index[c] = len(out_v)
-                out_v.append(vs[c[0]])
-                out_n.append(vns[c[1]])
-            row.append(index[c])
+        for vi, ni in t:
+            if (vi, ni) not in index:
+                if out_n[vi] is None:
+                    out_n[vi] = vns[ni]
+                    index[(vi, ni)] = vi
+                else:
+                    index[(vi, ni)] = len(out_v)
+                    out_v.append(vs[vi])
+                    out_n.append(vns[ni])
+            row.append(index[(vi, ni)])
         faces.append(row)
+    out_n = [(0.0, 0.0, 0.0) if c is None else c for c in out_n]
     return (np.array(out_v, np.float64).reshape(-1, 3), np.array(faces, np.int64).reshape(-1, 3),
             np.array(out_n, np.float64).reshape(-1, 3))
 

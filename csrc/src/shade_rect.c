@@ -163,7 +163,7 @@ rast_status rast_fill_rect_gouraud(const rast_target *target, rast_point p0, ras
             int64_t first_b = rast__row_at_or_after(Y0, &g) * g.unit + g.off - Y0;
             int64_t first_a = col0 * g.unit + g.off - X0;
             int64_t krow = j - rast__row_at_or_after(Y0, &g), m0 = r0 - col0;
-            int64_t cf[4], dc[4], half = ((int64_t)1 << F) >> 1;
+            int64_t cf[4], dc[4], half = ((int64_t)1 << F) >> 1, bias = (int64_t)1 << 41;
             for (ch = 0; ch < 4; ch++) {
                 int64_t one = (int64_t)1 << F;
                 int64_t L = rast__floordiv(2 * (c[0][ch] * H + first_b * (c[3][ch] - c[0][ch])) * one + H, 2 * H) +
@@ -176,7 +176,9 @@ rast_status rast_fill_rect_gouraud(const rast_target *target, rast_point p0, ras
             }
             for (i = 0; i < n; i++) {
                 for (ch = 0; ch < 4; ch++) {
-                    int64_t t = rast__floordiv(cf[ch] + half, (int64_t)1 << F);
+                    /* floor((C + one/2) / one) by a shift of the value made
+                     * non-negative by a multiple of one (|C| < 2^40) */
+                    int64_t t = (int64_t)((uint64_t)(cf[ch] + half + bias) >> F) - (bias >> F);
                     run[4 * fill + ch] = (unsigned char)(t < 0 ? 0 : t > 255 ? 255 : t);
                     cf[ch] += dc[ch];
                 }

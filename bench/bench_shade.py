@@ -83,7 +83,7 @@ def skia_cand(tris, cols, buf):
 
 
 def timings(rastrum, quick):
-    rounds = 5 if quick else 15
+    rounds = 5 if quick else 31
     buf = np.zeros((H, W, 4), np.uint8)
     canvas = rastrum.Canvas.wrap(buf)
     addr, nbytes = buf.ctypes.data, buf.nbytes
@@ -94,7 +94,7 @@ def timings(rastrum, quick):
     rng = np.random.default_rng(12)
     tris = scenes(quick)["small"]
     n = len(tris)
-    cols = vertex_colors(rng, n, 4)
+    cols = vertex_colors(rng, n, 4).astype(np.uint8)  # what C reads: no conversion per call
     cols[..., 3] = 255
     depth = rng.integers(0, 1 << 24, (n, 3))
     f = canvas.fill_triangles
@@ -105,6 +105,12 @@ def timings(rastrum, quick):
     for F in (8, 16):
         cands.append(("rastrum fixed F=%d" % F,
                       lambda F=F: f(tris, vertex_colors=cols, precision="fixed", fraction_bits=F)))
+    # the fastest filler (README, triangles): the painter is the same
+    cands.append(("rastrum solid, sweep", lambda: f(tris, (9, 9, 9, 255), algorithm="sweep")))
+    cands.append(("rastrum fixed F=16, sweep",
+                  lambda: f(tris, vertex_colors=cols, precision="fixed", algorithm="sweep")))
+    cands.append(("rastrum exact, sweep",
+                  lambda: f(tris, vertex_colors=cols, precision="exact", algorithm="sweep")))
 
     def with_depth(prec):
         def run():

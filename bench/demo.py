@@ -269,6 +269,34 @@ def render_canvas(out: Path):
     return [path]
 
 
+def render_shading(out):
+    """Gouraud triangles (exact and fixed point at F = 4), and the same
+    scene in rgb565 and mono1: out/gouraud.png."""
+    from PIL import Image
+    rng = np.random.default_rng(3)
+    n = 12
+    ang = np.linspace(0, 2 * np.pi, n + 1)
+    ring = np.stack([150 + 140 * np.cos(ang), 150 + 140 * np.sin(ang)], -1)
+    tris = np.array([[ring[k], ring[k + 1], (150.0, 150.0)] for k in range(n)])
+    cols = rng.integers(0, 256, (n, 3, 3))
+    cols[:, 2] = 255  # a white centre
+    cols[:, 1] = np.roll(cols[:, 0], -1, axis=0)  # shared rim vertices agree
+    tiles = []
+    for fmt, prec, F in (("rgb888", "exact", 16), ("rgb888", "fixed", 4), ("rgb565", "exact", 16)):
+        c = rastrum.Canvas(300, 300, format=fmt)
+        c.fill_triangles(tris, vertex_colors=cols, precision=prec, fraction_bits=F)
+        tiles.append(c.to_image().convert("RGB"))
+    c = rastrum.Canvas(300, 300, format="mono1")
+    c.fill_triangles(tris, vertex_colors=cols[..., :1])
+    tiles.append(c.to_image().convert("RGB"))
+    img = Image.new("RGB", (1200, 300))
+    for k, t in enumerate(tiles):
+        img.paste(t, (300 * k, 0))
+    path = out / "gouraud.png"
+    img.save(path)
+    return [path]
+
+
 def render_meshes(out: Path):
     """The scene pipeline and the Gouraud rectangles/polygons (issue 6)."""
     from rastrum.scene import render_mesh, rotation, sphere, torus
@@ -332,7 +360,7 @@ def main(argv=None):
     out = Path(args.out)
     out.mkdir(parents=True, exist_ok=True)
     written = []
-    for f in (render_fig3_19, render_holes, render_stars, render_canvas, render_meshes):
+    for f in (render_fig3_19, render_holes, render_stars, render_canvas, render_shading, render_meshes):
         written += f(out)
     for p in written:
         print(f"wrote {p}")
@@ -342,6 +370,9 @@ def main(argv=None):
         import bench_triangles
         print("\n== triangles (bench/bench_triangles.py)", flush=True)
         bench_triangles.main(["--quick"] if args.quick else [])
+        import bench_shade
+        print("\n== shading (bench/bench_shade.py)", flush=True)
+        bench_shade.main(["--quick"] if args.quick else [])
     return written
 
 

@@ -38,6 +38,7 @@ typedef struct rast__chan {
     int64_t gx, gy;          /* N = (px - x0) gx + (py - y0) gy */
     int64_t sx, tx;          /* exact: R's step per column = sx D + tx */
     int64_t fbase, fgx, fgy; /* fixed: c - c0 at (ri, rj), steps; 1/2^F */
+    int64_t fc;              /* fixed: c at pixel (0, 0) of the plane, 1/2^F */
     int64_t lo, hi;          /* the channel's range */
 } rast__chan;
 
@@ -55,10 +56,13 @@ typedef struct rast__shade {
     int32_t unit, off;       /* of the grid */
     /* the current triangle */
     int64_t A, D;
+    rast__recip rd;          /* division by D */
     int64_t x0, y0;          /* vertex 0, internal units */
     int32_t imin, imax, jmin, jmax; /* pixels its spans may reach */
+    int32_t blx, bly;        /* bits of the largest |px - x0|, |py - y0| in the box */
     int32_t narrow;          /* every N in the box fits int64_t */
     int32_t step;            /* every sx fits: stepping is exact */
+    int32_t have_steps;      /* sx, tx computed (fixed point needs none) */
     int32_t fixed;           /* fixed steps fit (else: exact) */
     rast__chan ch[5];        /* R, G, B, A, depth */
     /* flat without depth: a solid painter */
@@ -67,20 +71,38 @@ typedef struct rast__shade {
     rast__row_fn solid_fn;
 } rast__shade;
 
+/* Bits of |v| (0 for 0): the compiler's count-leading-zeros, or (other
+ * compilers, -DRAST_NO_BUILTIN_CTZ) halving. */
 static int32_t rast__bitlen(int64_t v)
 {
     uint64_t u = v < 0 ? 0 - (uint64_t)v : (uint64_t)v;
+#if (defined(__GNUC__) || defined(__clang__)) && !defined(RAST_NO_BUILTIN_CTZ)
+    return u ? 64 - __builtin_clzll(u) : 0;
+#else
     int32_t n = 0;
-    while (u) {
-        n++;
-        u >>= 1;
-    }
-    return n;
+    if (u >> 32) { n += 32; u >>= 32; }
+    if (u >> 16) { n += 16; u >>= 16; }
+    if (u >> 8) { n += 8; u >>= 8; }
+    if (u >> 4) { n += 4; u >>= 4; }
+    if (u >> 2) { n += 2; u >>= 2; }
+    if (u >> 1) { n += 1; u >>= 1; }
+    return n + (int32_t)u;
+#endif
 }
 
-static int64_t rast__clamp(int64_t v, const rast__chan *c)
+/* *q = floor((a b 2^sh + c) / d), *r the remainder, for 0 < d < 2^62,
+ * |c| < 2^61, 0 <= sh < 64: natively when the product fits in 61 bits
+ * (the common case), else in 128 bits; 0 if the quotient saturated (see
+ * rast__i128_floordiv). */
+static int rast__prod_div(int64_t a, int64_t b, int32_t sh, int64_t c, const rast__recip *d,
+                          int64_t *q, int64_t *r)
 {
-    return v < c->lo ? c->lo : v > c->hi ? c->hi : v;
+    if (rast__bitlen(a) + rast__bitlen(b) + sh <= 61) {
+        *q = rast__recip_floordiv(d, a * b * ((int64_t)1 << sh) + c, r);
+        return 1;
+    }
+    return rast__i128_floordiv(rast__i128_add(rast__i128_shl(rast__i128_mul(a, b), sh),
+                                              rast__i128_from(c)), (int64_t)d->d, q, r);
 }
 
 /* c - c0 at pixel (i, j), rounded half up, exactly: q and the remainder r
@@ -93,13 +115,7 @@ static int rast__exact_at(const rast__shade *s, const rast__chan *c, int32_t i, 
     int64_t dy = (int64_t)j * s->unit + s->off - s->y0;
     if (s->narrow && i >= s->imin && i <= s->imax && j >= s->jmin && j <= s->jmax) {
         int64_t R = 2 * (dx * c->gx + dy * c->gy) + s->A;
-        int64_t qq = R / s->D, rr = R % s->D;
-        if (rr < 0) {
-            qq--;
-            rr += s->D;
-        }
-        *q = qq;
-        *r = rr;
+        *q = rast__recip_floordiv(&s->rd, R, r);
         return 1;
     } else {
         rast__i128 R = rast__i128_add(rast__i128_mul(dx, c->gx), rast__i128_mul(dy, c->gy));
@@ -108,20 +124,110 @@ static int rast__exact_at(const rast__shade *s, const rast__chan *c, int32_t i, 
     }
 }
 
-/* floor(v / 2^F + 1/2) for |v| < 2^62, by a shift of the biased value
- * (a right shift of a negative number is implementation-defined in C). */
-static int64_t rast__fixed_round(int64_t v, int32_t F)
+/* One channel of a chunk of n pixels, channel-major so that each loop is
+ * a tight run of adds: the values start at *q (exact: with remainder *r)
+ * and go into out[stride k] (clamped to the channel's range); *q and *r
+ * are left at pixel n. */
+static void rast__exact_run(const rast__shade *s, const rast__chan *ch, int64_t *q, int64_t *r,
+                            int32_t n, int64_t *out)
 {
-    const int64_t bias = (int64_t)1 << 62;
-    return (int64_t)((uint64_t)(v + bias + ((int64_t)1 << (F - 1))) >> F) - (bias >> F);
+    int64_t qq = *q, rr = *r, D = s->D, sx = ch->sx, tx = ch->tx, lo = ch->lo, hi = ch->hi;
+    int32_t k;
+    for (k = 0; k < n; k++) {
+        int64_t v = qq, carry;
+        out[k] = v < lo ? lo : v > hi ? hi : v;
+        rr += tx;
+        carry = rr >= D;
+        qq += sx + carry;
+        rr -= D & -carry;
+    }
+    *q = qq;
+    *r = rr;
 }
 
-/* Hand the gathered run [x, x + n) to the format. */
-static void rast__shade_flush(const rast__shade *s, unsigned char *row, int32_t x, int32_t *n,
-                              const unsigned char *buf)
+static void rast__fixed_run(const rast__shade *s, const rast__chan *ch, int64_t *q, int32_t n,
+                            int64_t *out)
 {
-    if (*n) s->fmt->put(row, x, *n, buf);
-    *n = 0;
+    /* floor(v / 2^F + 1/2) by a shift of v biased non-negative (a right
+     * shift of a negative number is implementation-defined in C) */
+    const int64_t bias = (int64_t)1 << 62;
+    int64_t v = *q + bias + ((int64_t)1 << (s->F - 1)), g = ch->fgx, lo = ch->lo, hi = ch->hi;
+    int64_t unbias = bias >> s->F;
+    int32_t k, F = s->F;
+    for (k = 0; k < n; k++) {
+        int64_t x = (int64_t)((uint64_t)v >> F) - unbias;
+        out[k] = x < lo ? lo : x > hi ? hi : x;
+        v += g;
+    }
+    *q = v - bias - ((int64_t)1 << (s->F - 1));
+}
+
+/* The colour channels of n pixels in fixed point, pixel-major into the
+ * RGBA buffer: the common fast case, one loop per channel count. */
+static void rast__fixed_colours(const rast__shade *s, int64_t *q, int32_t nch, int32_t n,
+                                unsigned char *buf)
+{
+    const int64_t bias = ((int64_t)1 << 62) + ((int64_t)1 << (s->F - 1));
+    const int64_t unbias = ((int64_t)1 << 62) >> s->F;
+    const int32_t F = s->F;
+    int64_t v[4] = {0, 0, 0, 0}, g[4] = {0, 0, 0, 0};
+    int32_t c, k;
+#define RAST__LEVEL(c)                                                         \
+    do {                                                                       \
+        int64_t l = (int64_t)((uint64_t)v[c] >> F) - unbias;                   \
+        buf[4 * k + (c)] = (unsigned char)(l < 0 ? 0 : l > 255 ? 255 : l);     \
+        v[c] += g[c];                                                          \
+    } while (0)
+    for (c = 0; c < nch; c++) {
+        v[c] = q[c] + bias;
+        g[c] = s->ch[c].fgx;
+    }
+    if (nch == 1) {
+        for (k = 0; k < n; k++) RAST__LEVEL(0);
+    } else if (nch == 3) {
+        for (k = 0; k < n; k++) {
+            RAST__LEVEL(0);
+            RAST__LEVEL(1);
+            RAST__LEVEL(2);
+        }
+    } else {
+        for (k = 0; k < n; k++) {
+            RAST__LEVEL(0);
+            RAST__LEVEL(1);
+            RAST__LEVEL(2);
+            RAST__LEVEL(3);
+        }
+    }
+#undef RAST__LEVEL
+    for (c = 0; c < nch; c++) q[c] = v[c] - bias;
+}
+
+/* Exactly, one pixel at a time (a saturated start: far outside a sliver,
+ * where stepping would be wrong). */
+static void rast__fresh_run(const rast__shade *s, const rast__chan *ch, int32_t x, int32_t y,
+                            int32_t n, int64_t *out)
+{
+    int32_t k;
+    for (k = 0; k < n; k++) {
+        int64_t q, r;
+        (void)rast__exact_at(s, ch, x + k, y, &q, &r);
+        q += ch->c0;
+        out[k] = q < ch->lo ? ch->lo : q > ch->hi ? ch->hi : q;
+    }
+}
+
+/* The start of channel c at pixel (x, y): *q (value, c0 included) and *r;
+ * returns 0 when the pixels must be computed one by one. */
+static int rast__chan_start(const rast__shade *s, const rast__chan *ch, int fixed, int32_t x,
+                            int32_t y, int64_t *q, int64_t *r)
+{
+    if (fixed) {
+        *q = ch->fc + (int64_t)x * ch->fgx + (int64_t)y * ch->fgy;
+        return 1;
+    }
+    if (!rast__exact_at(s, ch, x, y, q, r)) return 0;
+    *q += ch->c0;
+    return s->step && s->have_steps;
 }
 
 static void rast__shade_span(rast__shade *s, int32_t y, int32_t xa, int32_t xb)
@@ -129,53 +235,63 @@ static void rast__shade_span(rast__shade *s, int32_t y, int32_t xa, int32_t xb)
     unsigned char *row = s->base + (ptrdiff_t)y * s->stride;
     int32_t *zrow = s->zbuf ? s->zbuf + (ptrdiff_t)y * s->zstride : NULL;
     unsigned char buf[4 * RAST__SHADE_RUN];
+    int64_t val[RAST__SHADE_RUN];
     int64_t q[5], r[5];
-    int32_t nch = s->nch, c, x, run = 0, runx = xa;
-    int32_t last = zrow ? RAST__CH_Z : nch - 1;
+    int step[5];
+    int32_t nch = s->nch, c, x, k;
     int fixed = s->fixed && s->prec == RAST_PRECISION_FIXED && xa >= s->imin &&
                 xb - 1 <= s->imax && y >= s->jmin && y <= s->jmax;
-    int fresh = 0;
 
-    /* The first pixel's values: q (and r) per channel. */
-    for (c = 0; c <= last; c++) {
-        const rast__chan *ch = &s->ch[c];
-        if (c >= nch && c != RAST__CH_Z) continue;
-        if (fixed) {
-            q[c] = ch->fbase + (int64_t)(xa - s->imin) * ch->fgx + (int64_t)(y - s->jmin) * ch->fgy;
-        } else if (!rast__exact_at(s, ch, xa, y, &q[c], &r[c]) || !s->step) {
-            fresh = 1;
+    if (fixed && !zrow) { /* the fast common case */
+        for (c = 0; c < nch; c++)
+            q[c] = s->ch[c].fc + (int64_t)xa * s->ch[c].fgx + (int64_t)y * s->ch[c].fgy;
+        for (x = xa; x < xb; x += RAST__SHADE_RUN) {
+            int32_t n = xb - x < RAST__SHADE_RUN ? xb - x : RAST__SHADE_RUN;
+            rast__fixed_colours(s, q, nch, n, buf);
+            s->fmt->put(row, x, n, buf);
         }
+        return;
     }
-    for (x = xa; x < xb; x++) {
-        int64_t val[5];
-        if (fresh && x > xa)
-            for (c = 0; c <= last; c++)
-                if (c < nch || c == RAST__CH_Z) (void)rast__exact_at(s, &s->ch[c], x, y, &q[c], &r[c]);
-        for (c = 0; c <= last; c++) {
+    for (c = 0; c < nch; c++) step[c] = rast__chan_start(s, &s->ch[c], fixed, xa, y, &q[c], &r[c]);
+    if (zrow)
+        step[RAST__CH_Z] = rast__chan_start(s, &s->ch[RAST__CH_Z], fixed, xa, y, &q[RAST__CH_Z],
+                                            &r[RAST__CH_Z]);
+    for (x = xa; x < xb; x += RAST__SHADE_RUN) {
+        int32_t n = xb - x < RAST__SHADE_RUN ? xb - x : RAST__SHADE_RUN;
+        unsigned char pass[RAST__SHADE_RUN];
+        if (fixed) rast__fixed_colours(s, q, nch, n, buf);
+        else for (c = 0; c < nch; c++) {
             const rast__chan *ch = &s->ch[c];
-            if (c >= nch && c != RAST__CH_Z) continue;
-            val[c] = rast__clamp(ch->c0 + (fixed ? rast__fixed_round(q[c], s->F) : q[c]), ch);
-            if (fixed) {
-                q[c] += ch->fgx;
-            } else if (!fresh) {
-                int64_t rr = r[c] + ch->tx, carry = rr >= s->D;
-                q[c] += ch->sx + carry;
-                r[c] = rr - (s->D & -carry);
-            }
+            if (!step[c]) rast__fresh_run(s, ch, x, y, n, val);
+            else if (fixed) rast__fixed_run(s, ch, &q[c], n, val);
+            else rast__exact_run(s, ch, &q[c], &r[c], n, val);
+            for (k = 0; k < n; k++) buf[4 * k + c] = (unsigned char)val[k];
         }
-        if (zrow) {
-            int32_t zv = (int32_t)val[RAST__CH_Z];
-            if (!(zv < zrow[x])) { /* hidden: the run ends here */
-                rast__shade_flush(s, row, runx, &run, buf);
+        if (!zrow) {
+            s->fmt->put(row, x, n, buf);
+            continue;
+        }
+        c = RAST__CH_Z;
+        if (!step[c]) rast__fresh_run(s, &s->ch[c], x, y, n, val);
+        else if (fixed) rast__fixed_run(s, &s->ch[c], &q[c], n, val);
+        else rast__exact_run(s, &s->ch[c], &q[c], &r[c], n, val);
+        for (k = 0; k < n; k++) {
+            int32_t zv = (int32_t)val[k];
+            pass[k] = zv < zrow[x + k];
+            if (pass[k]) zrow[x + k] = zv;
+        }
+        /* the runs of visible pixels */
+        for (k = 0; k < n;) {
+            int32_t e;
+            if (!pass[k]) {
+                k++;
                 continue;
             }
-            zrow[x] = zv;
+            for (e = k + 1; e < n && pass[e]; e++) {}
+            s->fmt->put(row, x + k, e - k, buf + 4 * k);
+            k = e;
         }
-        if (run == 0) runx = x;
-        for (c = 0; c < nch; c++) buf[4 * run + c] = (unsigned char)val[c];
-        if (++run == RAST__SHADE_RUN) rast__shade_flush(s, row, runx, &run, buf);
     }
-    rast__shade_flush(s, row, runx, &run, buf);
 }
 
 static void rast__shade_row(void *user, int32_t y, const int32_t *xs, int32_t n)
@@ -210,8 +326,7 @@ static void rast__shade_extent(int64_t a, int64_t b, int64_t c, const rast__shad
 static void rast__chan_setup(rast__shade *s, rast__chan *ch, int64_t c0, int64_t c1, int64_t c2,
                              int64_t ex1, int64_t ey1, int64_t ex2, int64_t ey2, int neg)
 {
-    int64_t d1 = c1 - c0, d2 = c2 - c0;
-    int64_t dxr, dyr, t;
+    int64_t d1 = c1 - c0, d2 = c2 - c0, t;
     ch->c0 = c0;
     ch->gx = d1 * ey2 - d2 * ey1;
     ch->gy = d2 * ex1 - d1 * ex2;
@@ -219,40 +334,31 @@ static void rast__chan_setup(rast__shade *s, rast__chan *ch, int64_t c0, int64_t
         ch->gx = -ch->gx;
         ch->gy = -ch->gy;
     }
-    /* Exact stepping: 2 gx unit = sx D + tx. */
-    if (!rast__i128_floordiv(rast__i128_mul(ch->gx, 2 * (int64_t)s->unit), s->D, &ch->sx, &ch->tx))
-        s->step = 0;
-    /* N fits int64_t over the box? */
-    dxr = (int64_t)(s->imax - s->imin + 1) * s->unit + s->unit;
-    dyr = (int64_t)(s->jmax - s->jmin + 1) * s->unit + s->unit;
-    {
-        int64_t ax = s->x0 - ((int64_t)s->imin * s->unit + s->off);
-        int64_t ay = s->y0 - ((int64_t)s->jmin * s->unit + s->off);
-        if (ax < 0) ax = -ax;
-        if (ay < 0) ay = -ay;
-        dxr += ax;
-        dyr += ay;
-    }
-    if (rast__bitlen(ch->gx) + rast__bitlen(dxr) > 60 || rast__bitlen(ch->gy) + rast__bitlen(dyr) > 60)
-        s->narrow = 0;
+    /* N fits int64_t over the box: each product below 2^60 */
+    if (rast__bitlen(ch->gx) + s->blx > 60 || rast__bitlen(ch->gy) + s->bly > 60) s->narrow = 0;
     if (s->prec == RAST_PRECISION_FIXED) {
         /* base: (2 N 2^F + A) / D at the corner; steps: (2 g unit 2^F + A) / D */
         int64_t dx = (int64_t)s->imin * s->unit + s->off - s->x0;
         int64_t dy = (int64_t)s->jmin * s->unit + s->off - s->y0;
-        rast__i128 N = rast__i128_add(rast__i128_mul(dx, ch->gx), rast__i128_mul(dy, ch->gy));
-        rast__i128 a = rast__i128_from(s->A);
-        int ok = rast__i128_floordiv(rast__i128_add(rast__i128_shl(N, s->F + 1), a), s->D,
-                                     &ch->fbase, &t);
-        ok &= rast__i128_floordiv(
-            rast__i128_add(rast__i128_shl(rast__i128_mul(ch->gx, s->unit), s->F + 1), a), s->D,
-            &ch->fgx, &t);
-        ok &= rast__i128_floordiv(
-            rast__i128_add(rast__i128_shl(rast__i128_mul(ch->gy, s->unit), s->F + 1), a), s->D,
-            &ch->fgy, &t);
-        /* base + 2^29 steps of each kind stays below 2^62 */
+        int ok;
+        if (s->narrow) {
+            ok = rast__prod_div(dx * ch->gx + dy * ch->gy, 1, s->F + 1, s->A, &s->rd, &ch->fbase, &t);
+        } else {
+            rast__i128 N = rast__i128_add(rast__i128_mul(dx, ch->gx), rast__i128_mul(dy, ch->gy));
+            ok = rast__i128_floordiv(rast__i128_add(rast__i128_shl(N, s->F + 1),
+                                                    rast__i128_from(s->A)), s->D, &ch->fbase, &t);
+        }
+        ok &= rast__prod_div(ch->gx, s->unit, s->F + 1, s->A, &s->rd, &ch->fgx, &t);
+        ok &= rast__prod_div(ch->gy, s->unit, s->F + 1, s->A, &s->rd, &ch->fgy, &t);
+        /* base + 2^28 steps of each kind stays below 2^61; with the
+         * columns and rows before the box (|imin|, |jmin| < 2^30), fc
+         * stays below 5 * 2^60 */
         if (!ok || ch->fbase > ((int64_t)1 << 60) || ch->fbase < -((int64_t)1 << 60) ||
             rast__bitlen(ch->fgx) > 31 || rast__bitlen(ch->fgy) > 31)
             s->fixed = 0;
+        else
+            ch->fc = ch->c0 * ((int64_t)1 << s->F) + ch->fbase - (int64_t)s->imin * ch->fgx -
+                     (int64_t)s->jmin * ch->fgy;
     }
 }
 
@@ -279,12 +385,20 @@ static int rast__shade_begin(void *user, const rast_point *t, uint32_t k, const 
     }
     s->A = neg ? -A : A;
     s->D = 2 * s->A;
+    rast__recip_init(&s->rd, s->D);
     s->x0 = x0;
     s->y0 = y0;
     rast__shade_extent(x0, x0 + ex1, x0 + ex2, s, s->solid.clip.x0, s->solid.clip.x1, &s->imin,
                        &s->imax);
     rast__shade_extent(y0, y0 + ey1, y0 + ey2, s, s->solid.clip.y0, s->solid.clip.y1, &s->jmin,
                        &s->jmax);
+    /* bits of the largest |px - x0|, |py - y0| over the box */
+    {
+        int64_t ax = s->x0 - ((int64_t)s->imin * s->unit + s->off);
+        int64_t ay = s->y0 - ((int64_t)s->jmin * s->unit + s->off);
+        s->blx = rast__bitlen((ax < 0 ? -ax : ax) + (int64_t)(s->imax - s->imin + 2) * s->unit);
+        s->bly = rast__bitlen((ay < 0 ? -ay : ay) + (int64_t)(s->jmax - s->jmin + 2) * s->unit);
+    }
     s->narrow = 1;
     s->step = 1;
     /* fixed: (i - imin) fgx + (j - jmin) fgy + base stays below 2^61 */
@@ -298,6 +412,13 @@ static int rast__shade_begin(void *user, const rast_point *t, uint32_t k, const 
         const int32_t *z = s->z + 3 * (size_t)k;
         rast__chan_setup(s, &s->ch[RAST__CH_Z], z[0], z[1], z[2], ex1, ey1, ex2, ey2, neg);
     }
+    /* Exact stepping, 2 gx unit = sx D + tx, unless fixed point does it all */
+    s->have_steps = s->prec != RAST_PRECISION_FIXED || !s->fixed;
+    if (s->have_steps)
+        for (c = 0; c <= RAST__CH_Z; c++)
+            if ((c < s->nch || (c == RAST__CH_Z && s->z)) &&
+                !rast__prod_div(s->ch[c].gx, s->unit, 1, 0, &s->rd, &s->ch[c].sx, &s->ch[c].tx))
+                s->step = 0;
     return 1;
 }
 

@@ -120,4 +120,50 @@ saturate:
     return 0;
 }
 
+/* The high 64 bits of the 128-bit product a * b. */
+static inline uint64_t rast__mulhi(uint64_t a, uint64_t b)
+{
+    const uint64_t m = 0xFFFFFFFFu;
+    uint64_t a0 = a & m, a1 = a >> 32, b0 = b & m, b1 = b >> 32;
+    uint64_t p00 = a0 * b0, p01 = a0 * b1, p10 = a1 * b0, p11 = a1 * b1;
+    uint64_t mid = (p00 >> 32) + (p01 & m) + (p10 & m);
+    return p11 + (p01 >> 32) + (p10 >> 32) + (mid >> 32);
+}
+
+/* Division by an invariant divisor d (0 < d < 2^62) without a divide
+ * instruction per quotient: m = floor((2^64 - 1) / d) once, then
+ * q = floor(u m / 2^64) is floor(u / d) less 0, 1 or 2 (u < 2^64), which
+ * at most two corrections fix.  Exact; a triangle's setup and each span
+ * divide by the same d, and a 64-bit divide costs tens of cycles. */
+typedef struct rast__recip {
+    uint64_t d, m;
+} rast__recip;
+
+static inline void rast__recip_init(rast__recip *r, int64_t d)
+{
+    r->d = (uint64_t)d;
+    r->m = ~(uint64_t)0 / (uint64_t)d;
+}
+
+/* floor(n / d) for any int64_t n, *rem = n - floor(n / d) d in [0, d). */
+static inline int64_t rast__recip_floordiv(const rast__recip *rc, int64_t n, int64_t *rem)
+{
+    uint64_t u = n < 0 ? 0 - (uint64_t)n : (uint64_t)n;
+    uint64_t q = rast__mulhi(u, rc->m), r = u - q * rc->d;
+    while (r >= rc->d) {
+        q++;
+        r -= rc->d;
+    }
+    if (n >= 0) {
+        *rem = (int64_t)r;
+        return (int64_t)q;
+    }
+    if (r) {
+        *rem = (int64_t)(rc->d - r);
+        return -(int64_t)q - 1;
+    }
+    *rem = 0;
+    return -(int64_t)q;
+}
+
 #endif /* RAST_WIDE_H */

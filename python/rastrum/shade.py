@@ -6,8 +6,6 @@ an (N, 3) int32 array, and one C call (rast_fill_triangles_shaded, without
 the GIL) snaps the vertices and paints the batch.
 """
 
-import numbers
-
 import numpy as np
 
 from . import _core
@@ -47,6 +45,9 @@ def rgba(colors, n, per_vertex, fmt, channels):
     triangle, given to its three vertices.  C = 1 (a level: R = G = B),
     3 (A = 255) or 4; gray8 and mono1 take C = 1 only.
     """
+    if (per_vertex and type(colors) is np.ndarray and colors.dtype == np.uint8 and colors.shape == (n, 3, 4)
+            and colors.flags.c_contiguous and channels == 4):
+        return colors  # already what C reads: no copy
     what = "vertex_colors" if per_vertex else "color"
     want = "(N, 3, C)" if per_vertex else "(N, C)"
     try:
@@ -101,7 +102,3 @@ def fill(target, tris, colors, z, zbuf, opts, sopts):
         opts, sopts)
     if result:
         _core._check_glue(result, tris.reshape(-1, 2), opts.subpixel_bits)
-
-
-def is_number(v):
-    return isinstance(v, numbers.Integral) and not isinstance(v, (bool, np.bool_))

@@ -11,6 +11,7 @@
 
 #include "check.h"
 #include "ref.h"
+#include "wide.h" /* rast__recip_floordiv, rast__i128_floordiv */
 
 #define GUARD 0xA5
 #define PAD 16
@@ -315,8 +316,60 @@ static void test_depth_and_errors(void)
     CHECK(img[5] == 0 && zbuf[5] == INT32_MAX); /* outside the clip */
 }
 
+static uint64_t rng64(void)
+{
+    return ((uint64_t)rng() << 40) ^ ((uint64_t)rng() << 16) ^ rng();
+}
+
+/* The division helpers against the compiler's division: random and
+ * extreme numerators, divisors up to 2^62 - 1. */
+static void test_division(void)
+{
+    static const int64_t ns[] = {0, 1, -1, INT64_MAX, INT64_MIN + 1, INT64_MIN, 12345, -12345};
+    int k, ok = 1, okw = 1;
+    for (k = 0; k < 200000; k++) {
+        int64_t d = (int64_t)(rng64() >> (1 + rng() % 62)) % (((int64_t)1 << 62) - 1) + 1;
+        int64_t n = k < 8 ? ns[k] : (int64_t)(rng64() >> (rng() % 64)) * ((rng() & 1) ? 1 : -1);
+        int64_t want = ref_floordiv(n, d), q, r;
+        rast__recip rc;
+        if (n == INT64_MIN && d == 1) continue; /* ref_floordiv overflows */
+        rast__recip_init(&rc, d);
+        q = rast__recip_floordiv(&rc, n, &r);
+        if (q != want || r != n - want * d || r < 0 || r >= d) ok = 0;
+        /* 128-bit: (n * 2^s) / d for small s compared when it fits */
+        if (n > -((int64_t)1 << 60) && n < ((int64_t)1 << 60)) {
+            int64_t q2, r2;
+            int fits = rast__i128_floordiv(rast__i128_from(n), d, &q2, &r2);
+            if (!fits || q2 != want || r2 != n - want * d) okw = 0;
+        }
+    }
+    CHECK(ok);
+    CHECK(okw);
+    { /* a product past int64_t: (2^62 + 3)(2^40 + 1) over 2^41 + 1, checked
+       * by multiplying back: q d + r == n with 0 <= r < d */
+        int64_t q, r;
+        rast__i128 n = rast__i128_mul(((int64_t)1 << 62) + 3, ((int64_t)1 << 40) + 1);
+        CHECK(rast__i128_floordiv(n, ((int64_t)1 << 41) + 1, &q, &r) == 1);
+        {
+            rast__i128 back = rast__i128_add(rast__i128_mul(q, ((int64_t)1 << 41) + 1),
+                                             rast__i128_from(r));
+            CHECK(back.hi == n.hi && back.lo == n.lo && r >= 0 && r < ((int64_t)1 << 41) + 1);
+        }
+        n = rast__i128_neg(n);
+        CHECK(rast__i128_floordiv(n, ((int64_t)1 << 41) + 1, &q, &r) == 1);
+        {
+            rast__i128 back = rast__i128_add(rast__i128_mul(q, ((int64_t)1 << 41) + 1),
+                                             rast__i128_from(r));
+            CHECK(back.hi == n.hi && back.lo == n.lo && r >= 0 && r < ((int64_t)1 << 41) + 1);
+        }
+        /* a quotient past 2^62 saturates */
+        CHECK(rast__i128_floordiv(n, 3, &q, &r) == 0 && q == -((int64_t)1 << 62));
+    }
+}
+
 int main(void)
 {
+    test_division();
     test_formats();
     test_mono1_spans();
     test_pixel_sets();

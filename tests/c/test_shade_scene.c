@@ -13,7 +13,12 @@
 #define H 17
 #define GUARD 64
 
-static unsigned char mem[GUARD + W * H * 4 + GUARD];
+/* A union so that a 16-bit target over mem + GUARD is aligned. */
+static union {
+    unsigned char b[GUARD + W * H * 4 + GUARD];
+    uint64_t align;
+} mem_u;
+#define mem (mem_u.b)
 static unsigned char plain[W * H * 4];
 static uint64_t scratch[8192];
 

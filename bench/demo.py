@@ -23,6 +23,15 @@ Writes into DIR (default ./out):
 - star200.png       the 200-spike star.
 - star200_67.png    the self-intersecting {200/67} star, even-odd | non-zero.
 - canvas.png        an rgb888 Canvas composition.
+- mesh_sphere_flat_vs_gouraud.png  one sphere, Lambert flat | Gouraud (the
+                    Mach bands of seed 001 3.1.3 at the flat faces' edges).
+- mesh_torus_depth.png  a tilted torus, its faces shuffled and culled,
+                    drawn without depth (the last face wins) | z-buffered.
+- fig3_18_gouraud_rect.png  Figure 3-18: a rectangle shaded bilinearly from
+                    its four corners | split into two Gouraud triangles
+                    along either diagonal.
+- gouraud_polygon.png   Figure 3-19's polygon with a colour per vertex,
+                    shaded by the AET (edge, then span).
 
 then prints the benchmark table (bench.main) and the triangle table
 (bench_triangles.main); --no-bench skips both.
@@ -288,6 +297,56 @@ def render_shading(out):
     return [path]
 
 
+def render_meshes(out: Path):
+    """The scene pipeline and the Gouraud rectangles/polygons (issue 6)."""
+    from rastrum.scene import render_mesh, rotation, sphere, torus
+    paths = []
+    v, f, n = sphere(14, 28)
+    kw = dict(normals=n, scale=0.9, light=(-0.5, 0.6, 0.7), color=(235, 235, 235), ambient=0.12)
+    flat = render_mesh(v, f, (360, 360), shading="flat", **kw)
+    smooth = render_mesh(v, f, (360, 360), shading="gouraud", **kw)
+    p = out / "mesh_sphere_flat_vs_gouraud.png"
+    labelled_row([flat.to_image(), smooth.to_image()], ["flat (Lambert per face)", "Gouraud (per vertex)"]).save(p)
+    paths.append(p)
+
+    v, f, n = torus(1.0, 0.42, 64, 32)
+    kw = dict(normals=n, shading="gouraud", rotation=rotation(15, 30, -10), projection="perspective",
+              distance=3.6, fov=40, scale=0.95, color=(245, 170, 70), light=(-0.3, 0.7, 0.65))
+    shuffled = f[np.random.default_rng(1).permutation(len(f))]  # a mesh in no particular order
+    no_depth = render_mesh(v, shuffled, (400, 360), depth=False, **kw)
+    z = render_mesh(v, shuffled, (400, 360), depth=True, **kw)
+    p = out / "mesh_torus_depth.png"
+    labelled_row([no_depth.to_image(), z.to_image()], ["culled, no depth", "culled + depth buffer"]).save(p)
+    paths.append(p)
+
+    # Figure 3-18: P0 red (bottom left), P1 green, P2 yellow, P3 blue (the
+    # book's y goes up; ours goes down).
+    red, green, yellow, blue = (230, 30, 30), (30, 200, 60), (250, 230, 40), (40, 70, 230)
+    W = H = 300
+    panels = []
+    for method, rect, cols in (
+        ("bilinear", (0, 0, W, H), [blue, yellow, green, red]),
+        ("triangles", (0, 0, W, H), [blue, yellow, green, red]),      # diagonal P3-P1
+        ("triangles", (0, H, W, 0), [red, green, yellow, blue]),      # diagonal P0-P2
+    ):
+        c = rastrum.Canvas(W, H)
+        c.fill_rect_gouraud(rect, cols, method=method)
+        panels.append(c.to_image())
+    p = out / "fig3_18_gouraud_rect.png"
+    labelled_row(panels, ["bilinear (Fig. 3-12b)", "2 triangles, TL-BR", "2 triangles, BL-TR"]).save(p)
+    paths.append(p)
+
+    rings, _ = scenes.fig3_19(30.0)
+    c = rastrum.Canvas(420, 420, background=(255, 255, 255))
+    cols = [(230, 30, 30), (250, 200, 40), (40, 190, 60), (40, 70, 230), (250, 250, 250), (150, 40, 200),
+            (20, 200, 220)]
+    c.fill_polygon([r + (-15.0, -15.0) for r in rings], vertex_colors=cols)
+    p = out / "gouraud_polygon.png"
+    c.save(p)
+    paths.append(p)
+    return paths
+
+
 def main(argv=None):
     ap = argparse.ArgumentParser(description="render the rastrum demo "
                                  "scenes to PNG, then run the benchmark")
@@ -301,7 +360,7 @@ def main(argv=None):
     out = Path(args.out)
     out.mkdir(parents=True, exist_ok=True)
     written = []
-    for f in (render_fig3_19, render_holes, render_stars, render_canvas, render_shading):
+    for f in (render_fig3_19, render_holes, render_stars, render_canvas, render_shading, render_meshes):
         written += f(out)
     for p in written:
         print(f"wrote {p}")

@@ -655,6 +655,99 @@ RAST_API rast_status rast_line_pixels(rast_point a, rast_point b,
 RAST_API rast_status rast_point_in_triangle(rast_point p, const rast_point *t,
                                             rast_predicate method, int *inside);
 
+/* ---- Gouraud rectangles (shade_rect.c; seed 001 section 3.2.3) -------------
+ * An axis-aligned rectangle with corners p0 and p1 (fixed point, units and
+ * range as polygon vertices) and a colour at each corner, interpolated
+ * bilinearly.  `colors` holds 4 RGBA colours (16 bytes), for the corners
+ * (p0.x, p0.y), (p1.x, p0.y), (p1.x, p1.y), (p0.x, p1.y) in that order
+ * (p0 need not be the top left: a colour stays with its corner).
+ *
+ * Pixels: exactly those rast_fill_polygon gives the rectangle's ring with
+ * the same subpixel_bits, sample and rounding (the left and top sides in,
+ * the right and bottom sides out: 左闭右开，下闭上开), so rectangles sharing
+ * a side never both own a pixel.  p0.x == p1.x or p0.y == p1.y: nothing.
+ *
+ * Colour of a pixel whose sample is (xs, ys), with u = (xs - p0.x) /
+ * (p1.x - p0.x) and v = (ys - p0.y) / (p1.y - p0.y) exact rationals in
+ * [0, 1], per channel:
+ *     c = (1-u)(1-v) c0 + u (1-v) c1 + u v c2 + (1-u) v c3
+ *  - RAST_PRECISION_EXACT: floor(c + 1/2), exactly (rationals; integer
+ *    quotient and remainder stepped along the row).
+ *  - RAST_PRECISION_FIXED, F = fraction_bits (1..16), round(x) =
+ *    floor(x + 1/2), one = 2^F: the textbook's stepping.  With the top
+ *    left corner at (X0, Y0), width W and height H in pixels (corners put
+ *    in order, colours following them) and b0, a0 the offsets of the
+ *    rectangle's first sample row and column from Y0 and X0 (whatever the
+ *    clip), the left side's colour at row k (0 = the first row) is
+ *    L_k = round(L(b0) one) + k round((c3 - c0) one / H), the right side's
+ *    R_k the same from c1 to c2, and in that row the pixel m columns right
+ *    of the first has C = L_k + round((R_k - L_k) a0 / W)
+ *    + m round((R_k - L_k) / W), written as clamp(floor((C + one/2) / one),
+ *    0, 255).  Not exact: the increments are
+ *    rounded (the error grows with the size and shrinks with F).
+ *  - RAST_PRECISION_FLAT: c0 everywhere (seed 001's flat shading: one
+ *    vertex's colour).
+ * Each colour is stored as rast_pack_color stores it (GRAY8 and MONO1
+ * take R, RGB565 the top bits; COUNT16 has no colour: RAST_E_FORMAT).
+ *
+ * opts: subpixel_bits, sample and rounding as for triangles; the algorithm
+ * is not used (a rectangle needs none); boundary must be
+ * RAST_BOUNDARY_EXACT.  Needs no scratch.  Never writes outside the clip.
+ * Errors, before anything is written: RAST_E_NULL, RAST_E_SUBPIXEL,
+ * RAST_E_ARG (bad sample, rounding, boundary, precision or fraction_bits),
+ * RAST_E_RANGE (a coordinate past RAST_COORD_MAX, or a side longer than
+ * RAST_GOURAUD_RECT_MAX_SIZE units, which keeps every product of the exact
+ * interpolation inside int64_t), RAST_E_SIZE and RAST_E_FORMAT (a bad
+ * target; RAST_FORMAT_COUNT16 has no colour). */
+enum {
+    RAST_GOURAUD_RECT_MAX_SIZE = 67108863 /* 2^26 - 1, input units */
+};
+RAST_API rast_status rast_fill_rect_gouraud(const rast_target *target, rast_point p0,
+                                            rast_point p1, const uint8_t *colors,
+                                            const rast_tri_opts *opts,
+                                            const rast_shade_opts *shade);
+
+/* ---- polygons with a colour per vertex (shade_poly.c; seed 001 3.4) ---------
+ * The active edge table fill with Gouraud colours, edge then span: the
+ * pixels are exactly rast_fill_polygon's with the same options (either
+ * rule, holes, self-intersections), and the colour of a pixel is defined
+ * row by row.  Its row's sample ordinate yc is crossed by the run's two
+ * bounding edges: with the row's crossings sorted by exact abscissa (ties
+ * by the index in polygon->points of the edge's first vertex, the edge
+ * from vertex k to vertex k+1 of its ring having index k), under even-odd
+ * the crossings 2k and 2k+1, under non-zero the crossing where the winding
+ * number leaves 0 and the one where it returns to 0 (crossings in between
+ * do not shade).  Each bounding edge, from vertex a to vertex b, has at yc
+ * the exact colour ca + (yc - ya)(cb - ca)/(yb - ya) (linear along the
+ * edge) at its exact crossing abscissa X (Conventions).  Along the run the
+ * colour is linear in x between the left crossing (Xl, cl) and the right
+ * one (Xr, cr): c = cl + (xs - Xl)(cr - cl)/(Xr - Xl) at the sample
+ * abscissa xs, and the pixel gets floor(c + 1/2) per channel, exactly
+ * (128-bit integers; no rounding before the last step).
+ * For a triangle this is the same colour as the barycentric (plane)
+ * interpolation: both are the unique affine function through the three
+ * vertex colours, evaluated exactly.
+ *
+ * `colors`: 4 RGBA bytes per vertex, in the order of polygon->points.
+ * opts: algorithm must be RAST_ALGO_AET (RAST_E_ALGORITHM), boundary
+ * RAST_BOUNDARY_EXACT; rule, subpixel_bits, sample and rounding as for
+ * rast_fill_polygon.  shade->precision: RAST_PRECISION_EXACT, or
+ * RAST_PRECISION_FLAT (vertex 0's colour everywhere, seed 001's flat
+ * shading); RAST_PRECISION_FIXED is not offered here (RAST_E_ARG).
+ * Colours are stored as rast_pack_color stores them (COUNT16:
+ * RAST_E_FORMAT).
+ * Scratch: rast_polygon_gouraud_scratch_size() for the clip (the AET's and
+ * 8 bytes per vertex).  Errors as rast_fill_polygon, all before anything
+ * is written.  Never writes outside the clip. */
+RAST_API rast_status rast_polygon_gouraud_scratch_size(uint32_t npoints, int32_t width,
+                                                       int32_t height, size_t *bytes);
+RAST_API rast_status rast_fill_polygon_gouraud(const rast_target *target,
+                                               const rast_polygon *polygon,
+                                               const uint8_t *colors,
+                                               const rast_fill_opts *opts,
+                                               const rast_shade_opts *shade,
+                                               void *scratch, size_t scratch_bytes);
+
 #ifdef __cplusplus
 }
 #endif

@@ -65,6 +65,10 @@ long rastpy_fill_triangles_shaded(const rast_target *target, const double *xy,
                                   const rast_tri_opts *opts,
                                   const rast_shade_opts *shade);
 int rastpy_gil_held(void);
+long rastpy_fill_polygon_gouraud(const rast_target *target, const double *xy,
+                                 uint32_t npoints, const uint32_t *ring_sizes,
+                                 uint32_t nrings, const rast_fill_opts *opts,
+                                 const uint8_t *colors, const rast_shade_opts *shade);
 """
 GLUE_SOURCE = r"""
 #include <math.h>
@@ -107,21 +111,25 @@ long rastpy_snap_points(const double *xy, size_t npoints, int s, int32_t *out)
 }
 
 /* Snap, then rast_fill_polygon (or rast_fill_polygon_opaque when
- * background is not NULL) with scratch from malloc.  ring_sizes NULL means
- * one ring of all the points.  Returns 0, a negative rast_status (or
- * RASTPY_E_NOMEM), or k + 1 when point k is bad (see rastpy_snap). */
-long rastpy_fill_polygon(const rast_target *target, const double *xy,
-                         uint32_t npoints, const uint32_t *ring_sizes,
-                         uint32_t nrings, const rast_fill_opts *opts,
-                         const void *pixel, const void *background)
+ * background is not NULL, or rast_fill_polygon_gouraud when shade is not
+ * NULL) with scratch from malloc.  ring_sizes NULL means one ring of all
+ * the points.  Returns 0, a negative rast_status (or RASTPY_E_NOMEM), or
+ * k + 1 when point k is bad (see rastpy_snap). */
+static long rastpy_poly(const rast_target *target, const double *xy,
+                        uint32_t npoints, const uint32_t *ring_sizes,
+                        uint32_t nrings, const rast_fill_opts *opts,
+                        const void *pixel, const void *background,
+                        const uint8_t *colors, const rast_shade_opts *shade)
 {
     rast_polygon poly;
     rast_status st;
     size_t need, head = ((size_t)npoints * sizeof(rast_point) + 15) & ~(size_t)15;
     unsigned char *mem;
     long bad;
-    st = rast_scratch_size(opts, npoints, target->clip.x1 - target->clip.x0,
-                           target->clip.y1 - target->clip.y0, &need);
+    st = shade ? rast_polygon_gouraud_scratch_size(npoints, target->clip.x1 - target->clip.x0,
+                                                   target->clip.y1 - target->clip.y0, &need)
+               : rast_scratch_size(opts, npoints, target->clip.x1 - target->clip.x0,
+                                   target->clip.y1 - target->clip.y0, &need);
     if (st != RAST_OK) return st;
     mem = (unsigned char *)malloc(head + need + 1);
     if (!mem) return RASTPY_E_NOMEM;
@@ -133,10 +141,19 @@ long rastpy_fill_polygon(const rast_target *target, const double *xy,
     poly.points = (const rast_point *)mem;
     poly.ring_sizes = ring_sizes ? ring_sizes : &npoints;
     poly.nrings = ring_sizes ? nrings : 1;
-    st = background ? rast_fill_polygon_opaque(target, &poly, opts, pixel, background, mem + head, need)
-                    : rast_fill_polygon(target, &poly, opts, pixel, mem + head, need);
+    st = shade ? rast_fill_polygon_gouraud(target, &poly, colors, opts, shade, mem + head, need)
+         : background ? rast_fill_polygon_opaque(target, &poly, opts, pixel, background, mem + head, need)
+                      : rast_fill_polygon(target, &poly, opts, pixel, mem + head, need);
     free(mem);
     return st;
+}
+
+long rastpy_fill_polygon(const rast_target *target, const double *xy,
+                         uint32_t npoints, const uint32_t *ring_sizes,
+                         uint32_t nrings, const rast_fill_opts *opts,
+                         const void *pixel, const void *background)
+{
+    return rastpy_poly(target, xy, npoints, ring_sizes, nrings, opts, pixel, background, NULL, NULL);
 }
 
 /* A complete gray8 (height, width) mask, 1 inside and 0 outside, written
@@ -199,6 +216,15 @@ long rastpy_fill_triangles_shaded(const rast_target *target, const double *xy,
                                   const rast_shade_opts *shade)
 {
     return rastpy_tris(target, xy, ntris, opts, NULL, shade, colors, z, zbuf);
+}
+
+/* rastpy_poly with vertex colours: rast_fill_polygon_gouraud. */
+long rastpy_fill_polygon_gouraud(const rast_target *target, const double *xy,
+                                 uint32_t npoints, const uint32_t *ring_sizes,
+                                 uint32_t nrings, const rast_fill_opts *opts,
+                                 const uint8_t *colors, const rast_shade_opts *shade)
+{
+    return rastpy_poly(target, xy, npoints, ring_sizes, nrings, opts, NULL, NULL, colors, shade);
 }
 
 /* For the tests: does the thread running a C call hold the GIL?  cffi

@@ -346,4 +346,14 @@ def mask_polygon(shape, rings, opts, s):
 _F64 = np.dtype(np.float64)
 
 
-
+def fill_polygon_gouraud(target, rings, colors, opts, shade, s):
+    """As fill_polygon, with RGBA `colors` (uint8 (N, 4), one per vertex of
+    the rings in order) interpolated by the AET (rast_fill_polygon_gouraud)."""
+    pts, sizes, nrings = _points(rings)
+    if not nrings:
+        return
+    if colors.shape != (len(pts), 4):
+        raise InputError("vertex_colors: %d colours for %d vertices" % (colors.shape[0], len(pts)))
+    xy = ffi.from_buffer("double[]", pts)
+    _check_glue(lib.rastpy_fill_polygon_gouraud(target, xy, len(pts), sizes, nrings, opts,
+                                                ffi.from_buffer("uint8_t[]", colors), shade), pts, s)

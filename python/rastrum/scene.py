@@ -1,0 +1,474 @@
+"""A small mesh pipeline (seeds 002 and 004): camera, viewport, back-face
+culling, Lambert shading (flat or Gouraud), optional depth buffer.
+
+Everything here is plain numpy in floating point, like any application of
+the library: the geometry ends as float pixel coordinates, per-corner
+colours and quantised depths, handed to ONE call of the integer core
+(:meth:`Canvas.fill_triangles` with ``vertex_colors`` and ``depth``).
+
+Conventions
+-----------
+World and camera space are right-handed: x right, y up, z towards the
+viewer.  The camera first rotates the mesh (``rotation``, a 3x3 matrix; see
+:func:`rotation`), then projects it:
+
+* ``"orthographic"``: (x, y) scaled by ``scale``; the depth of a point is
+  its distance -z in front of the plane z = 0 (smaller is nearer);
+* ``"perspective"``: the eye sits at (0, 0, ``distance``) looking down -z
+  with a vertical field of view ``fov`` degrees; a point at distance
+  d = distance - z projects to (x, y) * f / d, f = 1 / tan(fov / 2), and
+  its depth is -1/d, which unlike d is linear in screen space (so the
+  core's linear interpolation of depth across a triangle is exact).
+
+x is divided by the aspect ratio W / H so that a circle stays round.  That
+gives normalised device coordinates (NDC) with the visible square
+[-1, 1]^2, y up.
+
+Viewport (seed 004's M_viewport, y flipped): NDC (x, y) goes to pixel
+coordinates ((x + 1) W / 2, (1 - y) H / 2): x grows right and y DOWN, the
+NDC square covers the canvas [0, W] x [0, H] exactly, and the sample of
+pixel (i, j) is its centre (i + 1/2, j + 1/2), which is the NDC point
+((2 i + 1) / W - 1, 1 - (2 j + 1) / H).
+
+Faces are front faces when their vertices run counter-clockwise as seen
+(in NDC, y up; the OBJ and OpenGL convention), which is clockwise in pixel
+coordinates (y down).  Back-face culling keeps the faces whose NDC signed
+area is positive; zero-area faces own no pixel anyway.
+
+Lambert (seed 002): with unit normal n and unit light direction l (towards
+the light, in camera space), the intensity is
+``ambient + (1 - ambient) * max(0, n . l)`` and the colour
+``floor(color * intensity + 1/2)`` per channel.  "flat" takes n from the
+face's plane (the cross product of its edges) and paints the face in one
+colour; "gouraud" evaluates Lambert at each vertex with the vertex normal
+and lets the core interpolate the colours across the face (seed 001's
+smooth shading: no Mach bands at the edges).
+
+Depth: the depths of the visible faces are mapped linearly onto the
+integers 0 .. 2^24 - 1 (int32), and a sample is written iff its
+interpolated depth is less than the depth buffer's (nearer wins; the
+buffer starts at its largest value).
+"""
+
+from __future__ import annotations
+
+import io
+import math
+import os
+
+import numpy as np
+
+from ._core import InputError
+
+__all__ = ["render_mesh", "sphere", "torus", "read_obj", "write_obj", "rotation", "project",
+           "lambert", "vertex_normals"]
+
+DEPTH_MAX = (1 << 24) - 1
+
+
+# ---- meshes -----------------------------------------------------------------------
+
+def sphere(n_lat=16, n_lon=32):
+    """The unit sphere as a UV mesh: (vertices (V, 3), faces (F, 3), normals (V, 3)).
+
+    `n_lat` bands from pole to pole (>= 2), `n_lon` segments around
+    (>= 3).  Faces are counter-clockwise seen from outside; the poles are
+    single vertices, so the mesh is closed.
+    """
+    n_lat, n_lon = _count(n_lat, "n_lat", 2), _count(n_lon, "n_lon", 3)
+    verts = [(0.0, 1.0, 0.0)]
+    for i in range(1, n_lat):
+        theta = math.pi * i / n_lat
+        for k in range(n_lon):
+            phi = 2 * math.pi * k / n_lon
+            verts.append((math.sin(theta) * math.cos(phi), math.cos(theta),
+                          -math.sin(theta) * math.sin(phi)))
+    verts.append((0.0, -1.0, 0.0))
+    v = np.array(verts)
+    south = len(verts) - 1
+
+    def ring(i, k):  # vertex k of latitude ring i (1 .. n_lat - 1)
+        return 1 + (i - 1) * n_lon + k % n_lon
+
+    faces = []
+    for k in range(n_lon):
+        faces.append((0, ring(1, k), ring(1, k + 1)))
+        faces.append((south, ring(n_lat - 1, k + 1), ring(n_lat - 1, k)))
+    for i in range(1, n_lat - 1):
+        for k in range(n_lon):
+            a, b = ring(i, k), ring(i, k + 1)
+            c, d = ring(i + 1, k), ring(i + 1, k + 1)
+            faces.append((a, c, d))
+            faces.append((a, d, b))
+    return v, np.array(faces, np.int64), v.copy()
+
+
+def torus(R=1.0, r=0.4, n=32, m=16):
+    """A torus around the y axis: (vertices, faces, normals).
+
+    Ring radius `R`, tube radius `r` (0 < r < R), `n` segments around the
+    ring and `m` around the tube (each >= 3).  Closed; faces
+    counter-clockwise seen from outside.
+    """
+    n, m = _count(n, "n", 3), _count(m, "m", 3)
+    R, r = float(R), float(r)
+    if not (0 < r < R) or not math.isfinite(R):
+        raise InputError("torus needs 0 < r < R, not R=%r r=%r" % (R, r))
+    u = 2 * math.pi * np.arange(n) / n
+    w = 2 * math.pi * np.arange(m) / m
+    U, Wt = np.meshgrid(u, w, indexing="ij")
+    # Around the ring in the x-z plane, counter-clockwise seen from +y.
+    cx, cz = np.cos(U), -np.sin(U)
+    normals = np.stack([np.cos(Wt) * cx, np.sin(Wt), np.cos(Wt) * cz], -1).reshape(-1, 3)
+    centres = np.stack([R * cx, np.zeros_like(cx), R * cz], -1).reshape(-1, 3)
+    verts = centres + r * normals
+    idx = np.arange(n * m).reshape(n, m)
+    a = idx
+    b = np.roll(idx, -1, axis=0)             # next around the ring
+    c = np.roll(idx, -1, axis=1)             # next around the tube
+    d = np.roll(np.roll(idx, -1, axis=0), -1, axis=1)
+    faces = np.concatenate([np.stack([a, b, d], -1).reshape(-1, 3),
+                            np.stack([a, d, c], -1).reshape(-1, 3)])
+    return verts, faces.astype(np.int64), normals
+
+
+def _count(v, name, least):
+    if isinstance(v, bool) or not isinstance(v, (int, np.integer)) or v < least:
+        raise InputError("%s must be an int >= %d, not %r" % (name, least, v))
+    return int(v)
+
+
+# ---- OBJ ----------------------------------------------------------------------------
+
+def read_obj(source):
+    """Read a Wavefront OBJ mesh: (vertices (V, 3), faces (F, 3), normals (V, 3) or None).
+
+    `source` is a path or a text file object.  Understood: ``v x y z [w]``,
+    ``vn x y z``, ``f`` with corners ``i``, ``i/t``, ``i/t/n`` or ``i//n``
+    (1-based; negative indices count back from the last one read); faces of
+    more than three corners are fanned into triangles from their first
+    corner.  Other statements (vt, o, g, s, usemtl, mtllib, l, comments)
+    are ignored.  When faces carry normal indices, `normals` is per vertex:
+    a vertex takes the first normal a face gives it, and each other
+    normal it is given makes a copy of the vertex (appended after the
+    others); a vertex no face uses gets (0, 0, 0).
+
+    Raises InputError naming the line for a malformed number, a face of
+    fewer than 3 corners, an index of 0 or out of range, or faces that give
+    normals for some corners but not others.
+    """
+    if isinstance(source, (str, os.PathLike)):
+        with open(source, "r", encoding="utf-8") as f:
+            return _read_obj(f, str(source))
+    return _read_obj(source, getattr(source, "name", "<obj>"))
+
+
+def _read_obj(f, name):
+    vs, vns, corners = [], [], []  # corners: per face, list of (v, n or None)
+    for lineno, line in enumerate(f, 1):
+        line = line.split("#", 1)[0].strip()
+        if not line:
+            continue
+        parts = line.split()
+        tag, args = parts[0], parts[1:]
+        where = "%s:%d" % (name, lineno)
+        if tag in ("v", "vn"):
+            if len(args) < 3 or (tag == "vn" and len(args) != 3) or len(args) > 4:
+                raise InputError("%s: %s needs 3 numbers, got %r" % (where, tag, line))
+            try:
+                xyz = tuple(float(a) for a in args[:3])
+            except ValueError:
+                raise InputError("%s: bad number in %r" % (where, line)) from None
+            if not all(math.isfinite(c) for c in xyz):
+                raise InputError("%s: non-finite number in %r" % (where, line))
+            (vs if tag == "v" else vns).append(xyz)
+        elif tag == "f":
+            if len(args) < 3:
+                raise InputError("%s: a face needs at least 3 corners, got %r" % (where, line))
+            face = []
+            for a in args:
+                fields = a.split("/")
+                if len(fields) > 3 or not fields[0]:
+                    raise InputError("%s: bad face corner %r" % (where, a))
+                vi = _obj_index(fields[0], len(vs), where, "vertex")
+                ni = None
+                if len(fields) == 3 and fields[2]:
+                    ni = _obj_index(fields[2], len(vns), where, "normal")
+                face.append((vi, ni))
+            if len({n is None for _, n in face}) > 1:
+                raise InputError("%s: normals given for some corners only: %r" % (where, line))
+            corners.append(face)
+    with_n = [face[0][1] is not None for face in corners]
+    if any(with_n) and not all(with_n):
+        raise InputError("%s: some faces give normals and others do not" % name)
+    verts = np.array(vs, np.float64).reshape(-1, 3)
+    tris = [(face[0], face[k], face[k + 1]) for face in corners for k in range(1, len(face) - 1)]
+    if not any(with_n):
+        faces = np.array([[c[0] for c in t] for t in tris], np.int64).reshape(-1, 3)
+        return verts, faces, None
+    # Normals per vertex: a vertex keeps its place and takes the first normal
+    # it is used with; each further (vertex, normal) pair it is used with
+    # becomes a new vertex after the others.  Unused vertices get (0, 0, 0).
+    out_v = list(vs)
+    out_n = [None] * len(vs)
+    index, faces = {}, []
+    for t in tris:
+        row = []
+        for vi, ni in t:
+            if (vi, ni) not in index:
+                if out_n[vi] is None:
+                    out_n[vi] = vns[ni]
+                    index[(vi, ni)] = vi
+                else:
+                    index[(vi, ni)] = len(out_v)
+                    out_v.append(vs[vi])
+                    out_n.append(vns[ni])
+            row.append(index[(vi, ni)])
+        faces.append(row)
+    out_n = [(0.0, 0.0, 0.0) if c is None else c for c in out_n]
+    return (np.array(out_v, np.float64).reshape(-1, 3), np.array(faces, np.int64).reshape(-1, 3),
+            np.array(out_n, np.float64).reshape(-1, 3))
+
+
+def _obj_index(text, count, where, what):
+    try:
+        k = int(text)
+    except ValueError:
+        raise InputError("%s: bad %s index %r" % (where, what, text)) from None
+    if k > 0 and k <= count:
+        return k - 1
+    if k < 0 and -k <= count:
+        return count + k
+    raise InputError("%s: %s index %d out of range (%d read so far)" % (where, what, k, count))
+
+
+def write_obj(target, vertices, faces, normals=None):
+    """Write a triangle mesh as OBJ text to a path or a text file object
+    (``v`` lines with 17 significant digits, so floats read back equal;
+    ``f i//i`` when there are normals)."""
+    v, fc, n = _mesh(vertices, faces, normals)
+    out = io.StringIO()
+    for p in v:
+        out.write("v %.17g %.17g %.17g\n" % tuple(p))
+    if n is not None:
+        for p in n:
+            out.write("vn %.17g %.17g %.17g\n" % tuple(p))
+    for t in fc + 1:
+        if n is None:
+            out.write("f %d %d %d\n" % tuple(t))
+        else:
+            out.write("f %d//%d %d//%d %d//%d\n" % (t[0], t[0], t[1], t[1], t[2], t[2]))
+    if isinstance(target, (str, os.PathLike)):
+        with open(target, "w", encoding="utf-8") as f:
+            f.write(out.getvalue())
+    else:
+        target.write(out.getvalue())
+
+
+# ---- camera, viewport, shading ------------------------------------------------
+
+def rotation(yaw=0.0, pitch=0.0, roll=0.0):
+    """A 3x3 rotation: `roll` about z, then `pitch` about x, then `yaw`
+    about y, in degrees (a positive yaw turns the mesh's front to the
+    right, a positive pitch tilts its top towards the viewer)."""
+    a, b, c = (math.radians(float(t)) for t in (yaw, pitch, roll))
+    ry = np.array([[math.cos(a), 0, math.sin(a)], [0, 1, 0], [-math.sin(a), 0, math.cos(a)]])
+    rx = np.array([[1, 0, 0], [0, math.cos(b), -math.sin(b)], [0, math.sin(b), math.cos(b)]])
+    rz = np.array([[math.cos(c), -math.sin(c), 0], [math.sin(c), math.cos(c), 0], [0, 0, 1]])
+    return ry @ rx @ rz
+
+
+def _mesh(vertices, faces, normals=None):
+    try:
+        v = np.asarray(vertices, dtype=np.float64)
+        f = np.asarray(faces)
+    except (TypeError, ValueError):
+        raise InputError("vertices must be (V, 3) numbers and faces (F, 3) ints") from None
+    if v.ndim != 2 or v.shape[1] != 3:
+        raise InputError("vertices must have shape (V, 3), not %s" % (v.shape,))
+    if not np.all(np.isfinite(v)):
+        raise InputError("vertices must be finite")
+    if f.size == 0:
+        f = f.reshape(0, 3).astype(np.int64)
+    if f.ndim != 2 or f.shape[1] != 3 or f.dtype.kind not in "iu":
+        raise InputError("faces must be an int array of shape (F, 3), not %s %s" % (f.dtype, f.shape))
+    if f.size and (f.min() < 0 or f.max() >= len(v)):
+        raise InputError("faces index vertices 0..%d only" % (len(v) - 1))
+    n = None
+    if normals is not None:
+        n = np.asarray(normals, dtype=np.float64)
+        if n.shape != v.shape:
+            raise InputError("normals must have the shape of vertices %s, not %s" % (v.shape, n.shape))
+    return v, f.astype(np.int64), n
+
+
+def project(vertices, size, *, rotation=None, projection="orthographic", scale=1.0, fov=40.0,
+            distance=4.0):
+    """Camera and viewport: (pixel xy (V, 2), depth key (V,), camera-space
+    vertices (V, 3)).  See the module's conventions; a smaller key is
+    nearer."""
+    v = np.asarray(vertices, dtype=np.float64)
+    w, h = size
+    rot = np.eye(3) if rotation is None else np.asarray(rotation, dtype=np.float64)
+    if rot.shape != (3, 3):
+        raise InputError("rotation must be a 3x3 matrix, not shape %s" % (rot.shape,))
+    cam = v @ rot.T
+    if projection == "orthographic":
+        xy = cam[:, :2] * float(scale)
+        key = -cam[:, 2]
+    elif projection == "perspective":
+        d = float(distance) - cam[:, 2]
+        if np.any(d <= 0):
+            raise InputError("a vertex is at or behind the eye (distance %g)" % distance)
+        f = 1.0 / math.tan(math.radians(float(fov)) / 2)
+        xy = cam[:, :2] * (float(scale) * f / d)[:, None]
+        key = -1.0 / d
+    else:
+        raise InputError("unknown projection %r; choose orthographic or perspective" % (projection,))
+    xy = xy * np.array([h / w, 1.0]) if w else xy
+    return viewport(xy, size), key, cam
+
+
+def viewport(ndc, size):
+    """NDC (N, 2), y up, to pixel coordinates: ((x + 1) W/2, (1 - y) H/2)."""
+    w, h = size
+    ndc = np.asarray(ndc, dtype=np.float64)
+    return np.stack([(ndc[:, 0] + 1) * (w / 2), (1 - ndc[:, 1]) * (h / 2)], -1)
+
+
+def face_normals(v, faces):
+    """Unit normals of the faces' planes, (v1 - v0) x (v2 - v0) normalised
+    (zero for a degenerate face)."""
+    t = v[faces]
+    n = np.cross(t[:, 1] - t[:, 0], t[:, 2] - t[:, 0])
+    length = np.linalg.norm(n, axis=1, keepdims=True)
+    return np.divide(n, length, out=np.zeros_like(n), where=length > 0)
+
+
+def vertex_normals(vertices, faces):
+    """Per-vertex normals: the area-weighted sum of the adjacent faces'
+    normals, normalised (what a mesh without ``vn`` gets for Gouraud)."""
+    v, f, _ = _mesh(vertices, faces)
+    t = v[f]
+    n = np.cross(t[:, 1] - t[:, 0], t[:, 2] - t[:, 0])  # twice the area, along the normal
+    acc = np.zeros_like(v)
+    for k in range(3):
+        np.add.at(acc, f[:, k], n)
+    length = np.linalg.norm(acc, axis=1, keepdims=True)
+    return np.divide(acc, length, out=np.zeros_like(acc), where=length > 0)
+
+
+def lambert(normals, light, ambient, color):
+    """Colours (N, C) uint8 of Lambert shading for unit `normals` (N, 3):
+    floor(color * (ambient + (1 - ambient) max(0, n . l)) + 1/2)."""
+    l = np.asarray(light, dtype=np.float64)
+    l = l / np.linalg.norm(l)
+    k = ambient + (1 - ambient) * np.clip(np.asarray(normals) @ l, 0, None)
+    c = np.asarray(color, dtype=np.float64)
+    return np.floor(k[:, None] * c[None, :] + 0.5).astype(np.int64)
+
+
+def render_mesh(vertices, faces, size=(256, 256), *, normals=None, shading="flat",
+                light=(-0.4, 0.5, 0.75), ambient=0.15, color=(230, 230, 230), rotation=None,
+                projection="orthographic", scale=1.0, fov=40.0, distance=4.0, cull=True,
+                depth=True, background=0, format="rgb888", canvas=None, precision="exact",
+                subpixel_bits=8):
+    """Render a triangle mesh into a Canvas (a new one, or `canvas`).
+
+    Parameters
+    ----------
+    vertices : (V, 3) array_like
+        Positions in world space (x right, y up, z towards the viewer).
+    faces : (F, 3) int array_like
+        Vertex indices, counter-clockwise seen from the front.
+    size : (int, int)
+        (width, height) of a new canvas.
+    normals : (V, 3) array_like, optional
+        Vertex normals for "gouraud" (else :func:`vertex_normals`).
+    shading : {"flat", "gouraud"}
+        Lambert per face, or per vertex then interpolated.
+    light : 3 numbers
+        Direction towards the light, in camera space.
+    ambient : float in [0, 1]
+        Intensity of a face turned away from the light.
+    color : sequence of C ints
+        The surface colour (C = the canvas's channels).
+    rotation, projection, scale, fov, distance
+        The camera: see :func:`project` and the module's conventions.
+    cull : bool
+        Drop back faces (negative NDC area) before drawing.
+    depth : bool
+        Use the canvas's depth buffer (cleared first): nearer wins.
+        Without it, faces are drawn in order and the last one wins.
+    precision : {"exact", "fixed", "flat"}
+        The colour interpolation of the core (``Canvas.fill_triangles``).
+
+    Returns
+    -------
+    Canvas
+
+    Examples
+    --------
+    >>> import rastrum
+    >>> from rastrum.scene import sphere
+    >>> v, f, n = sphere(8, 16)
+    >>> c = rastrum.render_mesh(v, f, (32, 32), normals=n, shading="gouraud")
+    >>> c.array.shape
+    (32, 32, 3)
+    """
+    from .canvas import Canvas
+
+    v, f, n = _mesh(vertices, faces, normals)
+    if shading not in ("flat", "gouraud"):
+        raise InputError("unknown shading %r; choose flat or gouraud" % (shading,))
+    if not 0 <= float(ambient) <= 1:
+        raise InputError("ambient must be in [0, 1], not %r" % (ambient,))
+    if np.linalg.norm(np.asarray(light, dtype=np.float64)) == 0:
+        raise InputError("light must be a non-zero direction")
+    if canvas is None:
+        canvas = Canvas(size[0], size[1], format=format, background=background)
+    w, h = canvas.width, canvas.height
+    xy, key, cam = project(v, (w, h), rotation=rotation, projection=projection, scale=scale, fov=fov,
+                           distance=distance)
+    rot = np.eye(3) if rotation is None else np.asarray(rotation, dtype=np.float64)
+    f_all = f
+    tri_xy = xy[f]
+    if cull and len(f):
+        f = f[front_facing(tri_xy)]
+        tri_xy = xy[f]
+    channels = canvas.array.shape[2] if canvas.array.ndim == 3 else 1
+    col = np.broadcast_to(np.asarray(color, dtype=np.int64).reshape(-1), (channels,))
+    if shading == "flat":
+        face_c = lambert(face_normals(cam, f), light, float(ambient), col)
+        vcol = np.repeat(face_c[:, None, :], 3, axis=1)
+    else:
+        vn = vertex_normals(v, f_all) if n is None else n
+        vcol = lambert(vn @ rot.T, light, float(ambient), col)[f]
+    zq = None
+    if depth:
+        zq = quantise_depth(key)[f]
+        canvas.clear_depth()
+    canvas.fill_triangles(tri_xy, vertex_colors=vcol, precision=precision, depth=zq,
+                          subpixel_bits=subpixel_bits)
+    return canvas
+
+
+def front_facing(tri_xy):
+    """Which triangles (pixel coordinates, y down) are front faces:
+    counter-clockwise in NDC (y up), that is a negative signed area in
+    pixels."""
+    t = np.asarray(tri_xy, dtype=np.float64)
+    a = ((t[:, 1, 0] - t[:, 0, 0]) * (t[:, 2, 1] - t[:, 0, 1])
+         - (t[:, 2, 0] - t[:, 0, 0]) * (t[:, 1, 1] - t[:, 0, 1]))
+    return a < 0
+
+
+def quantise_depth(key):
+    """Depth keys onto 0 .. DEPTH_MAX (int32), linearly over their range."""
+    key = np.asarray(key, dtype=np.float64)
+    if key.size == 0:
+        return key.astype(np.int32)
+    lo, hi = key.min(), key.max()
+    if hi == lo:
+        return np.zeros(key.shape, np.int32)
+    return np.floor((key - lo) / (hi - lo) * DEPTH_MAX + 0.5).astype(np.int32)

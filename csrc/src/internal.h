@@ -11,6 +11,8 @@
 #ifndef RAST_INTERNAL_H
 #define RAST_INTERNAL_H
 
+#include <string.h>
+
 #include "rastrum.h"
 
 typedef struct rast__grid {
@@ -123,6 +125,14 @@ typedef struct rast__sink {
     int32_t y;        /* row of the gathered spans */
     int32_t n;        /* spans gathered */
     int32_t xs[2 * RAST__SINK_SPANS];
+    /* A fast path behind rast__sink_row, set by rast__sink_direct8 when
+     * `fn` is the solid painter of a one-byte format: rows of pixels at
+     * direct + y * stride, written inline instead of through `fn` (the
+     * same pixels, without an indirect call and a memset call for a span
+     * of a few pixels).  NULL otherwise: every span goes to `fn`. */
+    unsigned char *direct;
+    ptrdiff_t stride;
+    unsigned char pat[16]; /* the pixel value, 16 times */
 } rast__sink;
 
 static inline void rast__sink_flush(rast__sink *s)
@@ -156,6 +166,32 @@ static inline void rast__sink_span(rast__sink *s, int32_t y, int32_t x0, int32_t
     s->n++;
 }
 
+/* Set n > 0 bytes at p to the value repeated in pat[16]: a span of up to
+ * 32 pixels as two overlapping stores of 1, 2, 4, 8 or 16 bytes (memcpy
+ * of a constant size is one move), a longer one by memset. */
+static inline void rast__fill8(unsigned char *p, const unsigned char *pat, size_t n)
+{
+    if (n >= 8) {
+        if (n > 32) {
+            memset(p, pat[0], n);
+        } else if (n >= 16) {
+            memcpy(p, pat, 16);
+            memcpy(p + n - 16, pat, 16);
+        } else {
+            memcpy(p, pat, 8);
+            memcpy(p + n - 8, pat, 8);
+        }
+    } else if (n >= 4) {
+        memcpy(p, pat, 4);
+        memcpy(p + n - 4, pat, 4);
+    } else if (n >= 2) {
+        memcpy(p, pat, 2);
+        memcpy(p + n - 2, pat, 2);
+    } else {
+        p[0] = pat[0];
+    }
+}
+
 /* For a filler with at most one run per row (a triangle): hand the run of
  * row y on at once, clipped, bypassing the gathering.  The sink must be
  * empty (flushed) and rows must still come in increasing order. */
@@ -164,7 +200,11 @@ static inline void rast__sink_row(rast__sink *s, int32_t y, int32_t x0, int32_t 
     int32_t xs[2];
     xs[0] = x0 < s->cx0 ? s->cx0 : x0;
     xs[1] = x1 > s->cx1 ? s->cx1 : x1;
-    if (xs[0] < xs[1]) s->fn(s->user, y, xs, 1);
+    if (xs[0] >= xs[1]) return;
+    if (s->direct)
+        rast__fill8(s->direct + (ptrdiff_t)y * s->stride + xs[0], s->pat, (size_t)(xs[1] - xs[0]));
+    else
+        s->fn(s->user, y, xs, 1);
 }
 
 /* Saturating size arithmetic for the scratch functions: a clip of
@@ -191,6 +231,18 @@ static inline void rast__sink_init(rast__sink *s, rast__row_fn fn, void *user,
     s->cx1 = clip->x1;
     s->y = clip->y0;
     s->n = 0;
+    s->direct = NULL;
+}
+
+/* Turn on the sink's inline path (see rast__sink::direct) for one-byte
+ * pixels `value` in rows of `stride` bytes from `base`; only for the solid
+ * painter of such a target, which writes the same. */
+static inline void rast__sink_direct8(rast__sink *s, unsigned char *base, ptrdiff_t stride,
+                                      unsigned char value)
+{
+    s->direct = base;
+    s->stride = stride;
+    memset(s->pat, value, sizeof s->pat);
 }
 
 /* A caller's scratch, checked before anything is written: at least `need`

@@ -20,11 +20,18 @@
  * exact test at the sample moved half a pixel right, with the tie flipped
  * (left edges open, right edges closed).
  *
- * Instead of testing every sample of the box, each row keeps, per edge, the
- * column where the edge's test turns (the first column inside a left edge,
- * the first column outside a right edge) and walks it from the previous
- * row's with additions, Bresenham-like: the work per row is the number of
- * columns the edges move, and the span between is handed on whole.
+ * Instead of testing every sample of the box, each edge keeps, per row,
+ * the column where its test turns (the first column inside a left edge,
+ * the first column outside a right edge) and the value of its edge
+ * function there.  One division puts it on the first row; from row to row
+ * the function grows by a constant, so the column moves by a constant
+ * number of columns plus one more when the function's remainder runs out:
+ * an integer DDA on E, with additions only.  Every row takes the last of
+ * the left bounds and the first of the right ones (the triangle is the
+ * intersection of its edges' half-planes), with no branch on which edge is
+ * active: the edge lines are followed past their vertices, and the other
+ * edge of the same side decides there.  The span between is handed on
+ * whole.
  *
  * Scratch: none.
  */
@@ -39,36 +46,51 @@ size_t rast__tri_edge_scratch(int32_t width, int32_t height)
 
 /* One edge as a column bound walked along the rows.  With G the edge
  * function turned into a test "G >= 0" that grows with the column (for a
- * right edge, the test "outside"), c is the first column of [lo, hi] with
- * G >= 0 (hi if there is none) and g is G at column c of the current row. */
+ * right edge, the test "outside"), c is the first column with G >= 0 on
+ * the current row and g is G there, 0 <= g < da.  Followed past the
+ * edge's vertices, c may leave the int32_t range: |c| < 2^59. */
 typedef struct rast__fe {
-    int64_t g;  /* G at (c, current row) */
-    int64_t da; /* G's growth per column, > 0 */
-    int64_t db; /* G's growth per row */
-    int32_t c;
+    int64_t c;
+    int64_t g;    /* G at (c, current row), in [0, da) */
+    int64_t da;   /* G's growth per column, > 0 */
+    int64_t r0;   /* -(G's growth per row) = s0*da + r0, 0 <= r0 < da */
+    int64_t s0;
 } rast__fe;
 
-static void rast__fe_walk(rast__fe *f, int32_t lo, int32_t hi)
+/* floor(a / b) and the remainder in [0, b), for b > 0; a 32-bit division
+ * when both fit (several times faster than a 64-bit one on common CPUs). */
+static void rast__fe_divmod(int64_t a, int64_t b, int64_t *q, int64_t *r)
 {
-    /* One column either way without a branch: from one row to the next
-     * most edges move by at most one column, and which way is a coin toss
-     * a branch would mispredict.  (back and fwd exclude each other.) */
-    int32_t back = (f->g - f->da >= 0) & (f->c > lo);
-    int32_t fwd = (f->g < 0) & (f->c < hi);
-    f->c += fwd - back;
-    f->g += (fwd - back) * f->da;
-    /* Flatter edges walk on. */
-    if (f->g >= 0) {
-        while (f->c > lo && f->g - f->da >= 0) {
-            f->g -= f->da;
-            f->c--;
-        }
+    int64_t t, m;
+    if (b <= INT32_MAX && a >= -INT32_MAX && a <= INT32_MAX) {
+        t = (int32_t)a / (int32_t)b;
+        m = (int32_t)a % (int32_t)b;
     } else {
-        while (f->c < hi && f->g < 0) {
-            f->g += f->da;
-            f->c++;
-        }
+        t = a / b;
+        m = a % b;
     }
+    *q = t - (m < 0);
+    *r = m + (b & -(int64_t)(m < 0));
+}
+
+/* Start bound f at G = g0 on column c0: the first column with G >= 0. */
+static void rast__fe_start(rast__fe *f, int64_t c0, int64_t g0)
+{
+    int64_t q, r;
+    rast__fe_divmod(g0, f->da, &q, &r); /* g0 = q*da + r */
+    f->c = c0 - q;
+    f->g = r;
+}
+
+/* The next row: G falls by s0*da + r0, so the bound moves s0 columns, and
+ * one more when the remainder runs out.  Branch-free: whether it does is a
+ * coin toss for most slopes, which a branch would mispredict. */
+static inline void rast__fe_step(rast__fe *f)
+{
+    int64_t g = f->g - f->r0;
+    int64_t carry = g < 0;
+    f->c += f->s0 + carry;
+    f->g = g + (f->da & -carry);
 }
 
 rast_status rast__tri_edge_fill(const rast_point *t, const rast__grid *g,
@@ -125,46 +147,46 @@ rast_status rast__tri_edge_fill(const rast_point *t, const rast__grid *g,
     py = (int64_t)row0 * u + g->off;
     for (k = 0; k < 3; k++) {
         int32_t n = k == 2 ? 0 : k + 1;
-        int64_t dx = x[n] - x[k], dy = y[n] - y[k], e;
+        int64_t dx = x[n] - x[k], dy = y[n] - y[k], e, s0, rr;
         rast__fe *f;
         int in_on_tie;
         if (dy == 0) continue; /* horizontal: the rows already say it */
         e = (px - x[k]) * dy - (py - y[k]) * dx;
         /* Inside is E > 0, or E == 0 on an edge that owns its samples:
-         * exact, left edges (dy > 0); textbook, right edges. */
+         * exact, left edges (dy > 0); textbook, right edges.  Per column E
+         * grows by dy*u, per row by -dx*u; both bounds move dx/dy columns
+         * per row. */
         in_on_tie = (dy > 0) != (g->textbook != 0);
+        rast__fe_divmod(dy > 0 ? dx : -dx, dy > 0 ? dy : -dy, &s0, &rr);
         if (dy > 0) { /* left edge: G = E - 1 + in_on_tie >= 0 is inside */
             f = &fl[nl++];
-            f->g = e - 1 + in_on_tie;
             f->da = dy * u;
-            f->db = -dx * u;
+            e = e - 1 + in_on_tie;
         } else {      /* right edge: G = -E - in_on_tie >= 0 is outside */
             f = &fr[nr++];
-            f->g = -e - in_on_tie;
             f->da = -dy * u;
-            f->db = dx * u;
+            e = -e - in_on_tie;
         }
-        f->c = lo;
+        f->s0 = s0;
+        f->r0 = rr * u;
+        rast__fe_start(f, lo, e);
     }
+    /* One bound on a side: the second is the first again. */
+    if (nl == 1) fl[1] = fl[0];
+    if (nr == 1) fr[1] = fr[0];
 
     for (j = row0; j < row1; j++) {
-        int32_t x0, x1;
-        rast__fe_walk(&fl[0], lo, hi);
-        rast__fe_walk(&fr[0], lo, hi);
-        x0 = fl[0].c;
-        x1 = fr[0].c;
-        fl[0].g += fl[0].db;
-        fr[0].g += fr[0].db;
-        if (nl > 1) {
-            rast__fe_walk(&fl[1], lo, hi);
-            if (fl[1].c > x0) x0 = fl[1].c;
-            fl[1].g += fl[1].db;
-        } else if (nr > 1) {
-            rast__fe_walk(&fr[1], lo, hi);
-            if (fr[1].c < x1) x1 = fr[1].c;
-            fr[1].g += fr[1].db;
-        }
-        rast__sink_row(sink, j, x0, x1);
+        int64_t x0 = fl[0].c > fl[1].c ? fl[0].c : fl[1].c;
+        int64_t x1 = fr[0].c < fr[1].c ? fr[0].c : fr[1].c;
+        /* Into the box: the bounds followed past their vertices may be
+         * far outside it (and outside int32_t). */
+        x0 = x0 < lo ? lo : (x0 > hi ? hi : x0);
+        x1 = x1 < lo ? lo : (x1 > hi ? hi : x1);
+        rast__sink_row(sink, j, (int32_t)x0, (int32_t)x1);
+        rast__fe_step(&fl[0]);
+        rast__fe_step(&fl[1]);
+        rast__fe_step(&fr[0]);
+        rast__fe_step(&fr[1]);
     }
     return RAST_OK;
 }

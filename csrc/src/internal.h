@@ -127,12 +127,16 @@ typedef struct rast__sink {
     int32_t xs[2 * RAST__SINK_SPANS];
     /* A fast path behind rast__sink_row, set by rast__sink_direct8 when
      * `fn` is the solid painter of a one-byte format: rows of pixels at
-     * direct + y * stride, written inline instead of through `fn` (the
-     * same pixels, without an indirect call and a memset call for a span
-     * of a few pixels).  NULL otherwise: every span goes to `fn`. */
+     * direct + y * stride, each run written by one memset in the
+     * filler's loop instead of through `fn` (the same pixels, without an
+     * indirect call, the painter's loop and its reloads for a run of a
+     * few pixels).  The library memset is also the fastest way to write a
+     * few bytes of unknown count on common CPUs: overlapping 1..8-byte
+     * stores inline were slower, their size tests mispredicting.  NULL
+     * otherwise: every run goes to `fn`. */
     unsigned char *direct;
     ptrdiff_t stride;
-    unsigned char pat[16]; /* the pixel value, 16 times */
+    int value;
 } rast__sink;
 
 static inline void rast__sink_flush(rast__sink *s)
@@ -166,45 +170,52 @@ static inline void rast__sink_span(rast__sink *s, int32_t y, int32_t x0, int32_t
     s->n++;
 }
 
-/* Set n > 0 bytes at p to the value repeated in pat[16]: a span of up to
- * 32 pixels as two overlapping stores of 1, 2, 4, 8 or 16 bytes (memcpy
- * of a constant size is one move), a longer one by memset. */
-static inline void rast__fill8(unsigned char *p, const unsigned char *pat, size_t n)
+/* A filler's copy of what it needs from a sink to hand on one run per row
+ * (a triangle): kept in the filler's locals, so that the pixel stores of
+ * the inline path (which may alias anything) do not force the compiler to
+ * reload the sink after each one.  Rows must come in increasing order and
+ * the sink must be empty (flushed); the runs bypass its gathering. */
+typedef struct rast__rows {
+    rast__sink *sink;
+    unsigned char *direct; /* see rast__sink::direct */
+    ptrdiff_t stride;
+    int value;
+    int32_t cx0, cx1;
+} rast__rows;
+
+static inline rast__rows rast__rows_of(rast__sink *s)
 {
-    if (n >= 8) {
-        if (n > 32) {
-            memset(p, pat[0], n);
-        } else if (n >= 16) {
-            memcpy(p, pat, 16);
-            memcpy(p + n - 16, pat, 16);
-        } else {
-            memcpy(p, pat, 8);
-            memcpy(p + n - 8, pat, 8);
-        }
-    } else if (n >= 4) {
-        memcpy(p, pat, 4);
-        memcpy(p + n - 4, pat, 4);
-    } else if (n >= 2) {
-        memcpy(p, pat, 2);
-        memcpy(p + n - 2, pat, 2);
-    } else {
-        p[0] = pat[0];
-    }
+    rast__rows o;
+    o.sink = s;
+    o.direct = s->direct;
+    o.stride = s->stride;
+    o.value = s->value;
+    o.cx0 = s->cx0;
+    o.cx1 = s->cx1;
+    return o;
+}
+
+/* Hand on the run [x0, x1) of row y, clipped (it may be empty). */
+static inline void rast__rows_put(const rast__rows *o, int32_t y, int32_t x0, int32_t x1)
+{
+    int32_t xs[2];
+    xs[0] = x0 < o->cx0 ? o->cx0 : x0;
+    xs[1] = x1 > o->cx1 ? o->cx1 : x1;
+    if (xs[0] >= xs[1]) return;
+    if (o->direct)
+        memset(o->direct + (ptrdiff_t)y * o->stride + xs[0], o->value, (size_t)(xs[1] - xs[0]));
+    else
+        o->sink->fn(o->sink->user, y, xs, 1);
 }
 
 /* For a filler with at most one run per row (a triangle): hand the run of
  * row y on at once, clipped, bypassing the gathering.  The sink must be
- * empty (flushed) and rows must still come in increasing order. */
+ * empty (flushed) and rows must still come in increasing order.  (A loop
+ * over many rows does better with rast__rows.) */
 static inline void rast__sink_row(rast__sink *s, int32_t y, int32_t x0, int32_t x1)
 {
-    int32_t xs[2];
-    xs[0] = x0 < s->cx0 ? s->cx0 : x0;
-    xs[1] = x1 > s->cx1 ? s->cx1 : x1;
-    if (xs[0] >= xs[1]) return;
-    if (s->direct)
-        rast__fill8(s->direct + (ptrdiff_t)y * s->stride + xs[0], s->pat, (size_t)(xs[1] - xs[0]));
-    else
-        s->fn(s->user, y, xs, 1);
+    rast__rows o = rast__rows_of(s);
+    rast__rows_put(&o, y, x0, x1);
 }
 
 /* Saturating size arithmetic for the scratch functions: a clip of
@@ -242,7 +253,7 @@ static inline void rast__sink_direct8(rast__sink *s, unsigned char *base, ptrdif
 {
     s->direct = base;
     s->stride = stride;
-    memset(s->pat, value, sizeof s->pat);
+    s->value = value;
 }
 
 /* A caller's scratch, checked before anything is written: at least `need`

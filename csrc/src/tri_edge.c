@@ -73,15 +73,6 @@ static void rast__fe_divmod(int64_t a, int64_t b, int64_t *q, int64_t *r)
     *r = m + (b & -(int64_t)(m < 0));
 }
 
-/* Start bound f at G = g0 on column c0: the first column with G >= 0. */
-static void rast__fe_start(rast__fe *f, int64_t c0, int64_t g0)
-{
-    int64_t q, r;
-    rast__fe_divmod(g0, f->da, &q, &r); /* g0 = q*da + r */
-    f->c = c0 - q;
-    f->g = r;
-}
-
 /* The next row: G falls by s0*da + r0, so the bound moves s0 columns, and
  * one more when the remainder runs out.  Branch-free: whether it does is a
  * coin toss for most slopes, which a branch would mispredict. */
@@ -93,28 +84,41 @@ static inline void rast__fe_step(rast__fe *f)
     f->g = g + (f->da & -carry);
 }
 
+/* Bound f for the edge whose function, made a test G >= 0 growing with
+ * the column, is g0 at column c0 of the first row, grows by da > 0 per
+ * column and moves its turning column by dx/dy per row (dy != 0). */
+static void rast__fe_start(rast__fe *f, int64_t c0, int64_t g0, int64_t da, int64_t dx,
+                           int64_t dy, int64_t u)
+{
+    int64_t q, r;
+    f->da = da;
+    rast__fe_divmod(dy > 0 ? dx : -dx, dy > 0 ? dy : -dy, &f->s0, &r);
+    f->r0 = r * u;
+    rast__fe_divmod(g0, da, &q, &r); /* g0 = q*da + r */
+    f->c = c0 - q;
+    f->g = r;
+}
+
 rast_status rast__tri_edge_fill(const rast_point *t, const rast__grid *g,
                                 const rast_rect *clip, rast__sink *sink,
                                 rast__arena *arena)
 {
     int64_t x[3], y[3], area, xmin, xmax, ymin, ymax, shift, r;
     int64_t u = g->unit, px, py;
-    rast__fe fl[2], fr[2]; /* left and right bounds */
-    int32_t row0, row1, lo, hi, j, k, nl = 0, nr = 0;
+    rast__fe f[3], a, b, c;
+    rast__rows o;
+    int32_t row0, row1, lo, hi, j, k, left[3], lone, pair_left;
     (void)arena;
 
     for (k = 0; k < 3; k++) {
         x[k] = 2 * (int64_t)t[k].x; /* internal units, |x| < 2^28 */
         y[k] = 2 * (int64_t)t[k].y;
     }
-    /* Orientation: E of t0->t1 at t2; differences < 2^29, products < 2^58. */
+    /* Orientation: E of t0->t1 at t2; differences < 2^29, products < 2^58.
+     * Inside is E > 0 on every edge when area > 0; when area < 0 it is
+     * E < 0, which is E > 0 for the edges walked the other way round. */
     area = (x[2] - x[0]) * (y[1] - y[0]) - (y[2] - y[0]) * (x[1] - x[0]);
     if (area == 0) return RAST_OK; /* degenerate: no sample inside */
-    if (area < 0) {                /* turn it so that inside is E > 0 */
-        int64_t s;
-        s = x[1]; x[1] = x[2]; x[2] = s;
-        s = y[1]; y[1] = y[2]; y[2] = s;
-    }
 
     xmin = xmax = x[0];
     ymin = ymax = y[0];
@@ -141,52 +145,64 @@ rast_status rast__tri_edge_fill(const rast_point *t, const rast__grid *g,
 
     /* Each non-horizontal edge at (lo, row0), as a left bound (the first
      * column inside it) or a right one (the first column outside it); a
-     * triangle has one or two of each.  px - x and py - y stay below
-     * 2^29 + 2 unit on the box's samples, so each product is below 2^59. */
+     * triangle has one or two of each.  Walked the way that puts the
+     * inside at E > 0 (edge a->b as it is when area > 0, as b->a
+     * otherwise, which negates E, dx and dy), an edge going down (dy > 0)
+     * is a left edge, and inside is E > 0, or E == 0 on an edge that owns
+     * its samples: exact, left edges; textbook, right edges.  So the test
+     * is G = E - t >= 0 on a left edge ("inside") and G = -E - t >= 0 on a
+     * right one ("outside"), t = 1 for textbook rounding, else 0: in both
+     * orientations G = sign(dy)*E - t of the edge as given, growing by
+     * |dy|*u per column, its turning column moving dx/dy columns per row.
+     * px - x and py - y stay below 2^29 + 2 unit on the box's samples, so
+     * each product is below 2^59. */
     px = (int64_t)lo * u + shift;
     py = (int64_t)row0 * u + g->off;
     for (k = 0; k < 3; k++) {
         int32_t n = k == 2 ? 0 : k + 1;
-        int64_t dx = x[n] - x[k], dy = y[n] - y[k], e, s0, rr;
-        rast__fe *f;
-        int in_on_tie;
-        if (dy == 0) continue; /* horizontal: the rows already say it */
-        e = (px - x[k]) * dy - (py - y[k]) * dx;
-        /* Inside is E > 0, or E == 0 on an edge that owns its samples:
-         * exact, left edges (dy > 0); textbook, right edges.  Per column E
-         * grows by dy*u, per row by -dx*u; both bounds move dx/dy columns
-         * per row. */
-        in_on_tie = (dy > 0) != (g->textbook != 0);
-        rast__fe_divmod(dy > 0 ? dx : -dx, dy > 0 ? dy : -dy, &s0, &rr);
-        if (dy > 0) { /* left edge: G = E - 1 + in_on_tie >= 0 is inside */
-            f = &fl[nl++];
-            f->da = dy * u;
-            e = e - 1 + in_on_tie;
-        } else {      /* right edge: G = -E - in_on_tie >= 0 is outside */
-            f = &fr[nr++];
-            f->da = -dy * u;
-            e = -e - in_on_tie;
+        int64_t dx = x[n] - x[k], dy = y[n] - y[k], e;
+        if (dy == 0) {
+            /* Horizontal: the rows already say it.  A left bound that
+             * never binds (the other two edges are one left, one right). */
+            f[k].c = -((int64_t)1 << 62);
+            f[k].g = f[k].r0 = f[k].s0 = 0;
+            f[k].da = 1;
+            left[k] = 1;
+            continue;
         }
-        f->s0 = s0;
-        f->r0 = rr * u;
-        rast__fe_start(f, lo, e);
+        e = (px - x[k]) * dy - (py - y[k]) * dx;
+        rast__fe_start(&f[k], lo, (dy > 0 ? e : -e) - (g->textbook != 0),
+                       (dy > 0 ? dy : -dy) * u, dx, dy, u);
+        left[k] = (dy > 0) == (area > 0);
     }
-    /* One bound on a side: the second is the first again. */
-    if (nl == 1) fl[1] = fl[0];
-    if (nr == 1) fr[1] = fr[0];
+    /* Two bounds on one side, one on the other: a is a left bound, c a
+     * right one, b the third (left if pair_left).  Copied to locals, so
+     * that the loop keeps them in registers. */
+    lone = left[0] == left[1] ? 2 : (left[0] == left[2] ? 1 : 0);
+    pair_left = !left[lone];
+    b = f[lone == 0 ? 1 : 0];
+    if (pair_left) {
+        a = f[lone == 2 ? 1 : 2];
+        c = f[lone];
+    } else {
+        a = f[lone];
+        c = f[lone == 2 ? 1 : 2];
+    }
 
+    /* Each row, the last of the left bounds to the first of the right
+     * ones.  On the rows of the triangle these are its own crossings, so
+     * within the box (and int32_t) even where a bound followed past its
+     * edge's end is far outside; the sink cuts them to the clip. */
+    o = rast__rows_of(sink);
     for (j = row0; j < row1; j++) {
-        int64_t x0 = fl[0].c > fl[1].c ? fl[0].c : fl[1].c;
-        int64_t x1 = fr[0].c < fr[1].c ? fr[0].c : fr[1].c;
-        /* Into the box: the bounds followed past their vertices may be
-         * far outside it (and outside int32_t). */
-        x0 = x0 < lo ? lo : (x0 > hi ? hi : x0);
-        x1 = x1 < lo ? lo : (x1 > hi ? hi : x1);
-        rast__sink_row(sink, j, (int32_t)x0, (int32_t)x1);
-        rast__fe_step(&fl[0]);
-        rast__fe_step(&fl[1]);
-        rast__fe_step(&fr[0]);
-        rast__fe_step(&fr[1]);
+        int64_t x0 = a.c, x1 = c.c;
+        int64_t bl = pair_left ? b.c : x0, br = pair_left ? x1 : b.c;
+        x0 = x0 > bl ? x0 : bl;
+        x1 = x1 < br ? x1 : br;
+        rast__rows_put(&o, j, (int32_t)x0, (int32_t)x1);
+        rast__fe_step(&a);
+        rast__fe_step(&b);
+        rast__fe_step(&c);
     }
     return RAST_OK;
 }

@@ -58,11 +58,13 @@ rast_status rast__tri_edgeflag_fill(const rast_point *t, const rast__grid *g,
 {
     size_t n = (size_t)(clip->y1 - clip->y0);
     int32_t *left, *right, r0, r1, j;
+    rast__rows o;
 
     left = (int32_t *)rast__take(arena, n * sizeof(int32_t));
     right = (int32_t *)rast__take(arena, n * sizeof(int32_t));
     if (!left || !right) return RAST_E_SCRATCH;
     if (!rast__tri_span_flags(t, g, clip->y0, clip->y1, left, right, &r0, &r1)) return RAST_OK;
-    for (j = r0; j < r1; j++) rast__sink_row(sink, j, left[j - clip->y0], right[j - clip->y0]);
+    o = rast__rows_of(sink);
+    for (j = r0; j < r1; j++) rast__rows_put(&o, j, left[j - clip->y0], right[j - clip->y0]);
     return RAST_OK;
 }

@@ -25,7 +25,8 @@ rast_status rast__tri_sweep_fill(const rast_point *t, const rast__grid *g,
                                  rast__arena *arena)
 {
     rast_point a = t[0], b = t[1], c = t[2], s;
-    rast__edge lng, sh;
+    rast__edge e0, lng, sh;
+    rast__rows o;
     int64_t side, r;
     int32_t ra, rb, rc, j;
     (void)arena;
@@ -49,19 +50,26 @@ rast_status rast__tri_sweep_fill(const rast_point *t, const rast__grid *g,
     r = rast__row_at_or_after(2 * (int64_t)b.y, g);
     rb = r < ra ? ra : (r > rc ? rc : (int32_t)r);
 
-    rast__edge_start(&lng, a, c, 1, ra, rc, g);
+    /* The walks run on local copies (sh, lng): the pixel stores of the
+     * sink's inline path may alias anything whose address was taken, and
+     * would make the compiler reload the edges from memory every row. */
+    rast__edge_start(&e0, a, c, 1, ra, rc, g);
+    lng = e0;
+    o = rast__rows_of(sink);
     if (ra < rb) {
-        rast__edge_start(&sh, a, b, 1, ra, rb, g);
+        rast__edge_start(&e0, a, b, 1, ra, rb, g);
+        sh = e0;
         for (j = ra; j < rb; j++) {
-            rast__sink_row(sink, j, side > 0 ? lng.x : sh.x, side > 0 ? sh.x : lng.x);
+            rast__rows_put(&o, j, side > 0 ? lng.x : sh.x, side > 0 ? sh.x : lng.x);
             rast__edge_step(&lng);
             rast__edge_step(&sh);
         }
     }
     if (rb < rc) {
-        rast__edge_start(&sh, b, c, 1, rb, rc, g);
+        rast__edge_start(&e0, b, c, 1, rb, rc, g);
+        sh = e0;
         for (j = rb; j < rc; j++) {
-            rast__sink_row(sink, j, side > 0 ? lng.x : sh.x, side > 0 ? sh.x : lng.x);
+            rast__rows_put(&o, j, side > 0 ? lng.x : sh.x, side > 0 ? sh.x : lng.x);
             rast__edge_step(&lng);
             rast__edge_step(&sh);
         }

@@ -73,26 +73,55 @@ GLUE_SOURCE = r"""
  * t = 1/2 - 2^-54 it rounds up to 1.  So round by comparing the fraction
  * with 1/2 instead of adding it.  Returns the index of the first point that
  * is NaN, infinite or outside +-RAST_COORD_MAX after snapping, or -1 when
- * all are good. */
-static long rastpy_snap(const double *xy, size_t npoints, int s, int32_t *out)
+ * all are good (then all of out is written).  The snapped value is in
+ * range iff -M - 1/2 <= t < M + 1/2 (M = RAST_COORD_MAX; exact doubles),
+ * which NaN fails too. */
+static long rastpy_snap_scalar(const double *xy, size_t npoints, int s, int32_t *out, size_t i)
 {
-    const double scale = ldexp(1.0, s), lim = (double)RAST_COORD_MAX + 1.0;
-    size_t i;
+    const double scale = ldexp(1.0, s), lim = (double)RAST_COORD_MAX + 0.5;
     /* Branch-free but for the range test (which a batch passes): the
      * rounding of random input is a coin toss a branch would mispredict.
      * Inside +-lim, t converts to int32_t exactly (truncating) and floor
      * and the fraction follow in integers and exact doubles. */
-    for (i = 0; i < 2 * npoints; i++) {
+    for (; i < 2 * npoints; i++) {
         double t = xy[i] * scale;
         int32_t v;
-        if (!(t >= -lim && t <= lim)) return (long)(i / 2); /* also NaN */
+        if (!(t >= -lim && t < lim)) return (long)(i / 2); /* also NaN */
         v = (int32_t)t;
         v -= (double)v > t;                 /* floor */
         v += t - (double)v >= 0.5;          /* half up */
-        if (v < -RAST_COORD_MAX || v > RAST_COORD_MAX) return (long)(i / 2);
         out[i] = v;
     }
     return -1;
+}
+
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
+
+/* The same, two coordinates at a time where SSE2 is there (every x86-64):
+ * the same steps, with the range test folded into a mask checked once at
+ * the end (then the scalar loop finds the first bad point).  A batch of
+ * 20,000 triangles snaps in a fraction of the scalar loop's time. */
+static long rastpy_snap(const double *xy, size_t npoints, int s, int32_t *out)
+{
+    size_t i = 0;
+#if defined(__SSE2__)
+    const double lim = (double)RAST_COORD_MAX + 0.5;
+    const __m128d scale = _mm_set1_pd(ldexp(1.0, s)), lo = _mm_set1_pd(-lim),
+                  hi = _mm_set1_pd(lim), one = _mm_set1_pd(1.0), half = _mm_set1_pd(0.5);
+    __m128d ok = _mm_cmpeq_pd(one, one);
+    for (; i + 2 <= 2 * npoints; i += 2) {
+        __m128d t = _mm_mul_pd(_mm_loadu_pd(xy + i), scale), f;
+        ok = _mm_and_pd(ok, _mm_and_pd(_mm_cmpge_pd(t, lo), _mm_cmplt_pd(t, hi)));
+        f = _mm_cvtepi32_pd(_mm_cvttpd_epi32(t));                       /* trunc */
+        f = _mm_sub_pd(f, _mm_and_pd(_mm_cmpgt_pd(f, t), one));          /* floor */
+        f = _mm_add_pd(f, _mm_and_pd(_mm_cmpge_pd(_mm_sub_pd(t, f), half), one));
+        _mm_storel_epi64((__m128i *)(void *)(out + i), _mm_cvttpd_epi32(f));
+    }
+    if (_mm_movemask_pd(ok) != 3) return rastpy_snap_scalar(xy, npoints, s, out, 0);
+#endif
+    return rastpy_snap_scalar(xy, npoints, s, out, i);
 }
 
 /* rastpy_snap for callers in Python (lines, predicates, small inputs). */

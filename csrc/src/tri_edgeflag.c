@@ -40,14 +40,19 @@ int rast__tri_span_flags(const rast_point *t, const rast__grid *g,
     *r1 = row_lo;
     for (k = 0; k < 3; k++) {
         int32_t *flags, j;
+        rast__edge e;
         if (!rast__edge_setup(&ed, t[k], t[k == 2 ? 0 : k + 1], g, row_lo, row_hi)) continue;
-        flags = ((ed.dir > 0) == (area > 0)) ? span_left : span_right;
-        for (j = ed.row; j < ed.end; j++) {
-            flags[j - row_lo] = ed.x;
-            rast__edge_step(&ed);
+        /* The walk on a local copy: the int32_t stores into the flags
+         * could alias ed, whose address was taken, and force reloads. */
+        e = ed;
+        flags = ((e.dir > 0) == (area > 0)) ? span_left : span_right;
+        flags -= row_lo;
+        for (j = e.row; j < e.end; j++) {
+            flags[j] = e.x;
+            rast__edge_step(&e);
         }
-        if (ed.row < *r0) *r0 = ed.row;
-        if (ed.end > *r1) *r1 = ed.end;
+        if (e.row < *r0) *r0 = e.row;
+        if (e.end > *r1) *r1 = e.end;
     }
     return *r0 < *r1;
 }

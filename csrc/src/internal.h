@@ -208,6 +208,21 @@ static inline void rast__rows_put(const rast__rows *o, int32_t y, int32_t x0, in
         o->sink->fn(o->sink->user, y, xs, 1);
 }
 
+/* Does the inline path take every run of a primitive whose crossings lie
+ * in [xmin, xmax] (internal units), uncut?  Each run's ends are first
+ * columns counting a crossing X in that range, which lie between
+ * ceil((X - s)/unit) and floor((X - s)/unit) + 1, s the sample offset
+ * (moved half a pixel right for textbook rounding); when all those
+ * columns are inside the clip, a filler may write its runs without
+ * cutting them (1), else it hands them to rast__rows_put (0). */
+static inline int rast__rows_direct_uncut(const rast__rows *o, int64_t xmin, int64_t xmax,
+                                          const rast__grid *g)
+{
+    int64_t s = g->off + (g->textbook ? g->unit / 2 : 0);
+    return o->direct && rast__ceildiv(xmin - s, g->unit) >= o->cx0 &&
+           rast__floordiv(xmax - s, g->unit) + 1 <= o->cx1;
+}
+
 /* For a filler with at most one run per row (a triangle): hand the run of
  * row y on at once, clipped, bypassing the gathering.  The sink must be
  * empty (flushed) and rows must still come in increasing order.  (A loop

@@ -133,7 +133,7 @@ rast_status rast__tri_edge_fill(const rast_point *t, const rast__grid *g,
                                 const rast_rect *clip, rast__sink *sink,
                                 rast__arena *arena)
 {
-    int64_t x[3], y[3], area, xmin, xmax, ymin, ymax, shift, r, lo_u, hi_u;
+    int64_t x[3], y[3], area, xmin, xmax, ymin, ymax, shift, r;
     int64_t u = g->unit, px, py;
     rast__fe f[3], a, b, c;
     rast__rows o;
@@ -167,10 +167,10 @@ rast_status rast__tri_edge_fill(const rast_point *t, const rast__grid *g,
     /* Columns: tested samples (moved by `shift`) in [xmin, xmax], cut to the
      * clip; every inside sample is one of them. */
     shift = g->off + (g->textbook ? u / 2 : 0);
-    lo_u = rast__ceildiv(xmin - shift, u);
-    lo = lo_u > clip->x0 ? (int32_t)lo_u : clip->x0;
-    hi_u = rast__floordiv(xmax - shift, u) + 1;
-    hi = hi_u < clip->x1 ? (int32_t)hi_u : clip->x1;
+    r = rast__ceildiv(xmin - shift, u);
+    lo = r > clip->x0 ? (int32_t)r : clip->x0;
+    r = rast__floordiv(xmax - shift, u) + 1;
+    hi = r < clip->x1 ? (int32_t)r : clip->x1;
     if (lo >= hi) return RAST_OK;
 
     /* Each non-horizontal edge at (lo, row0), as a left bound (the first
@@ -217,11 +217,11 @@ rast_status rast__tri_edge_fill(const rast_point *t, const rast__grid *g,
 
     /* Each row, the last of the left bounds to the first of the right
      * ones.  On the rows of the triangle these are its own crossings, so
-     * within the unclipped box [lo_u, hi_u] (and int32_t) even where a
-     * bound followed past its edge's end is far outside; the sink cuts
-     * them to the clip, unless the box is inside it. */
+     * within the columns of [xmin, xmax] (and int32_t) even where a bound
+     * followed past its edge's end is far outside; the sink cuts them to
+     * the clip, unless those columns are inside it. */
     o = rast__rows_of(sink);
-    if (o.direct && lo_u >= o.cx0 && hi_u <= o.cx1)
+    if (rast__rows_direct_uncut(&o, xmin, xmax, g))
         rast__fe_rows(&o, row0, row1, a, b, c, pair_left, 1);
     else
         rast__fe_rows(&o, row0, row1, a, b, c, pair_left, 0);

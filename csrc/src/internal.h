@@ -41,6 +41,20 @@ static inline int64_t rast__ceildiv(int64_t a, int64_t b)
     return -rast__floordiv(-a, b);
 }
 
+/* floor(a / unit) and ceil(a / unit) for |a| < 2^61: shifts of the value
+ * made non-negative by a bias (the unit is a power of two), instead of a
+ * 64-bit division. */
+static inline int64_t rast__floor_unit(int64_t a, const rast__grid *g)
+{
+    const int64_t bias = (int64_t)1 << 61;
+    return (int64_t)((uint64_t)(a + bias) >> g->shift) - (bias >> g->shift);
+}
+
+static inline int64_t rast__ceil_unit(int64_t a, const rast__grid *g)
+{
+    return -rast__floor_unit(-a, g);
+}
+
 /* The first column that counts a crossing at internal abscissa X = num/den
  * (den > 0): exact, the least i with X <= i*unit + off, ceil((X-off)/unit);
  * textbook, floor((X - off + unit/2)/unit) (see RAST_ROUND_TEXTBOOK).
@@ -219,8 +233,8 @@ static inline int rast__rows_direct_uncut(const rast__rows *o, int64_t xmin, int
                                           const rast__grid *g)
 {
     int64_t s = g->off + (g->textbook ? g->unit / 2 : 0);
-    return o->direct && rast__ceildiv(xmin - s, g->unit) >= o->cx0 &&
-           rast__floordiv(xmax - s, g->unit) + 1 <= o->cx1;
+    return o->direct && rast__ceil_unit(xmin - s, g) >= o->cx0 &&
+           rast__floor_unit(xmax - s, g) + 1 <= o->cx1;
 }
 
 /* For a filler with at most one run per row (a triangle): hand the run of

@@ -84,17 +84,35 @@ static inline void rast__fe_step(rast__fe *f)
     f->g = g + (f->da & -carry);
 }
 
-/* Bound f for the edge whose function, made a test G >= 0 growing with
- * the column, is g0 at column c0 of the first row, grows by da > 0 per
- * column and moves its turning column by dx/dy per row (dy != 0). */
-static void rast__fe_start(rast__fe *f, int64_t c0, int64_t g0, int64_t da, int64_t dx,
-                           int64_t dy, int64_t u)
+/* Bound f for edge k -> k+1 of x[], y[] (internal units) on the first
+ * row, whose sample is at ordinate py, from the sample at abscissa px
+ * (column c0): with E its edge function, G = sign(dy)*E - t, t = 1 for
+ * textbook rounding, else 0 (see the loop in rast__tri_edge_fill), which
+ * grows by |dy|*u per column and whose turning column moves dx/dy columns
+ * per row.  A horizontal edge becomes a left bound that never binds (the
+ * rows already say it; the other two edges are one left, one right).
+ * |px - x| and |py - y| < 2^29 + 2 unit, so each product is below 2^59. */
+static inline void rast__fe_start(rast__fe *f, const int64_t *x, const int64_t *y, int32_t k,
+                                  int64_t c0, int64_t px, int64_t py, const rast__grid *g)
 {
-    int64_t q, r;
-    f->da = da;
-    rast__fe_divmod(dy > 0 ? dx : -dx, dy > 0 ? dy : -dy, &f->s0, &r);
-    f->r0 = r * u;
-    rast__fe_divmod(g0, da, &q, &r); /* g0 = q*da + r */
+    int32_t n = k == 2 ? 0 : k + 1;
+    int64_t dx = x[n] - x[k], dy = y[n] - y[k], e, q, r;
+    if (dy == 0) {
+        f->c = -((int64_t)1 << 62);
+        f->g = f->r0 = f->s0 = 0;
+        f->da = 1;
+        return;
+    }
+    e = (px - x[k]) * dy - (py - y[k]) * dx;
+    if (dy < 0) {
+        e = -e;
+        dx = -dx;
+        dy = -dy;
+    }
+    f->da = dy * g->unit;
+    rast__fe_divmod(dx, dy, &f->s0, &r);
+    f->r0 = r * g->unit;
+    rast__fe_divmod(e - (g->textbook != 0), f->da, &q, &r); /* G0 = q*da + r */
     f->c = c0 - q;
     f->g = r;
 }
@@ -103,15 +121,16 @@ static void rast__fe_start(rast__fe *f, int64_t c0, int64_t g0, int64_t da, int6
  * and a third bound b (on the left if pair_left).  `direct` (a constant,
  * so this is two loops): the sink writes inline and every run lies inside
  * the clip, so each row is one memset down a row pointer, with no clip
- * test.  The bounds come by value, so that they stay in registers. */
-static inline void rast__fe_rows(const rast__rows *o, int32_t row0, int32_t row1, rast__fe a,
-                                 rast__fe b, rast__fe c, int32_t pair_left, int direct)
+ * test.  The bounds are the caller's locals, whose addresses go to
+ * inline functions only: they stay in registers. */
+static inline void rast__fe_rows(const rast__rows *o, int32_t row0, int32_t row1, rast__fe *a,
+                                 rast__fe *b, rast__fe *c, int32_t pair_left, int direct)
 {
     unsigned char *p = direct ? o->direct + (ptrdiff_t)row0 * o->stride : NULL;
     int32_t j;
     for (j = row0; j < row1; j++) {
-        int64_t x0 = a.c, x1 = c.c;
-        int64_t bl = pair_left ? b.c : x0, br = pair_left ? x1 : b.c;
+        int64_t x0 = a->c, x1 = c->c;
+        int64_t bl = pair_left ? b->c : x0, br = pair_left ? x1 : b->c;
         x0 = x0 > bl ? x0 : bl;
         x1 = x1 < br ? x1 : br;
         if (!direct) {
@@ -123,9 +142,9 @@ static inline void rast__fe_rows(const rast__rows *o, int32_t row0, int32_t row1
             memset(p + x0, o->value, (size_t)(n & ~(n >> 63)));
             p += o->stride;
         }
-        rast__fe_step(&a);
-        rast__fe_step(&b);
-        rast__fe_step(&c);
+        rast__fe_step(a);
+        rast__fe_step(b);
+        rast__fe_step(c);
     }
 }
 
@@ -135,7 +154,7 @@ rast_status rast__tri_edge_fill(const rast_point *t, const rast__grid *g,
 {
     int64_t x[3], y[3], area, xmin, xmax, ymin, ymax, shift, r;
     int64_t u = g->unit, px, py;
-    rast__fe f[3], a, b, c;
+    rast__fe a, b, c;
     rast__rows o;
     int32_t row0, row1, lo, hi, k, left[3], lone, other, pair_left;
     (void)arena;
@@ -167,53 +186,37 @@ rast_status rast__tri_edge_fill(const rast_point *t, const rast__grid *g,
     /* Columns: tested samples (moved by `shift`) in [xmin, xmax], cut to the
      * clip; every inside sample is one of them. */
     shift = g->off + (g->textbook ? u / 2 : 0);
-    r = rast__ceildiv(xmin - shift, u);
+    r = rast__ceil_unit(xmin - shift, g);
     lo = r > clip->x0 ? (int32_t)r : clip->x0;
-    r = rast__floordiv(xmax - shift, u) + 1;
+    r = rast__floor_unit(xmax - shift, g) + 1;
     hi = r < clip->x1 ? (int32_t)r : clip->x1;
     if (lo >= hi) return RAST_OK;
 
-    /* Each non-horizontal edge at (lo, row0), as a left bound (the first
-     * column inside it) or a right one (the first column outside it); a
-     * triangle has one or two of each.  Walked the way that puts the
-     * inside at E > 0 (edge a->b as it is when area > 0, as b->a
-     * otherwise, which negates E, dx and dy), an edge going down (dy > 0)
-     * is a left edge, and inside is E > 0, or E == 0 on an edge that owns
-     * its samples: exact, left edges; textbook, right edges.  So the test
-     * is G = E - t >= 0 on a left edge ("inside") and G = -E - t >= 0 on a
-     * right one ("outside"), t = 1 for textbook rounding, else 0: in both
-     * orientations G = sign(dy)*E - t of the edge as given, growing by
-     * |dy|*u per column, its turning column moving dx/dy columns per row.
-     * px - x and py - y stay below 2^29 + 2 unit on the box's samples, so
-     * each product is below 2^59. */
-    px = (int64_t)lo * u + shift;
-    py = (int64_t)row0 * u + g->off;
+    /* Each edge at (lo, row0), as a left bound (the first column inside
+     * it) or a right one (the first column outside it); a triangle has one
+     * or two of each.  Walked the way that puts the inside at E > 0 (edge
+     * a->b as it is when area > 0, as b->a otherwise, which negates E, dx
+     * and dy), an edge going down (dy > 0) is a left edge, and inside is
+     * E > 0, or E == 0 on an edge that owns its samples: exact, left
+     * edges; textbook, right edges.  So the test is G = E - t >= 0 on a
+     * left edge ("inside") and G = -E - t >= 0 on a right one
+     * ("outside"), t = 1 for textbook rounding, else 0: in both
+     * orientations G = sign(dy)*E - t of the edge as given.  Two bounds
+     * on one side, one on the other: a is a left bound, c a right one, b
+     * the third (left if pair_left); chosen before they are set up, by
+     * index, not by branch (which edge is which is a coin toss). */
     for (k = 0; k < 3; k++) {
-        int32_t n = k == 2 ? 0 : k + 1;
-        int64_t dx = x[n] - x[k], dy = y[n] - y[k], e;
-        if (dy == 0) {
-            /* Horizontal: the rows already say it.  A left bound that
-             * never binds (the other two edges are one left, one right). */
-            f[k].c = -((int64_t)1 << 62);
-            f[k].g = f[k].r0 = f[k].s0 = 0;
-            f[k].da = 1;
-            left[k] = 1;
-            continue;
-        }
-        e = (px - x[k]) * dy - (py - y[k]) * dx;
-        rast__fe_start(&f[k], lo, (dy > 0 ? e : -e) - (g->textbook != 0),
-                       (dy > 0 ? dy : -dy) * u, dx, dy, u);
-        left[k] = (dy > 0) == (area > 0);
+        int64_t dy = y[k == 2 ? 0 : k + 1] - y[k];
+        left[k] = dy == 0 || (dy > 0) == (area > 0);
     }
-    /* Two bounds on one side, one on the other: a is a left bound, c a
-     * right one, b the third (left if pair_left).  Copied to locals, so
-     * that the loop keeps them in registers. */
     lone = left[0] == left[1] ? 2 : (left[0] == left[2] ? 1 : 0);
     pair_left = !left[lone];
     other = lone == 2 ? 1 : 2;
-    b = f[lone == 0 ? 1 : 0];
-    a = f[pair_left ? other : lone];
-    c = f[pair_left ? lone : other];
+    px = (int64_t)lo * u + shift;
+    py = (int64_t)row0 * u + g->off;
+    rast__fe_start(&a, x, y, pair_left ? other : lone, lo, px, py, g);
+    rast__fe_start(&b, x, y, lone == 0 ? 1 : 0, lo, px, py, g);
+    rast__fe_start(&c, x, y, pair_left ? lone : other, lo, px, py, g);
 
     /* Each row, the last of the left bounds to the first of the right
      * ones.  On the rows of the triangle these are its own crossings, so
@@ -222,8 +225,8 @@ rast_status rast__tri_edge_fill(const rast_point *t, const rast__grid *g,
      * the clip, unless those columns are inside it. */
     o = rast__rows_of(sink);
     if (rast__rows_direct_uncut(&o, xmin, xmax, g))
-        rast__fe_rows(&o, row0, row1, a, b, c, pair_left, 1);
+        rast__fe_rows(&o, row0, row1, &a, &b, &c, pair_left, 1);
     else
-        rast__fe_rows(&o, row0, row1, a, b, c, pair_left, 0);
+        rast__fe_rows(&o, row0, row1, &a, &b, &c, pair_left, 0);
     return RAST_OK;
 }

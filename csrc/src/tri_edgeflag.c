@@ -41,7 +41,7 @@ int rast__tri_span_flags(const rast_point *t, const rast__grid *g,
     for (k = 0; k < 3; k++) {
         int32_t *flags, j;
         rast__edge e;
-        if (!rast__edge_setup(&ed, t[k], t[k == 2 ? 0 : k + 1], g, row_lo, row_hi)) continue;
+        if (!rast__edge_setup_tri(&ed, t[k], t[k == 2 ? 0 : k + 1], g, row_lo, row_hi)) continue;
         /* The walk on a local copy: the int32_t stores into the flags
          * could alias ed, whose address was taken, and force reloads. */
         e = ed;

@@ -64,15 +64,15 @@ static inline void rast__sweep_halves(const rast__rows *o, rast_point a, rast_po
                                       int long_left, const rast__grid *g, int direct)
 {
     rast__edge e, lng, sh;
-    rast__edge_start(&e, a, c, 1, ra, rc, g);
+    rast__edge_start_tri(&e, a, c, 1, ra, rc, g);
     lng = e;
     if (ra < rb) {
-        rast__edge_start(&e, a, b, 1, ra, rb, g);
+        rast__edge_start_tri(&e, a, b, 1, ra, rb, g);
         sh = e;
         rast__sweep_rows(o, ra, rb, &lng, &sh, long_left, direct);
     }
     if (rb < rc) {
-        rast__edge_start(&e, b, c, 1, rb, rc, g);
+        rast__edge_start_tri(&e, b, c, 1, rb, rc, g);
         sh = e;
         rast__sweep_rows(o, rb, rc, &lng, &sh, long_left, direct);
     }

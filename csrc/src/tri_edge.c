@@ -57,22 +57,6 @@ typedef struct rast__fe {
     int64_t s0;
 } rast__fe;
 
-/* floor(a / b) and the remainder in [0, b), for b > 0; a 32-bit division
- * when both fit (several times faster than a 64-bit one on common CPUs). */
-static void rast__fe_divmod(int64_t a, int64_t b, int64_t *q, int64_t *r)
-{
-    int64_t t, m;
-    if (b <= INT32_MAX && a >= -INT32_MAX && a <= INT32_MAX) {
-        t = (int32_t)a / (int32_t)b;
-        m = (int32_t)a % (int32_t)b;
-    } else {
-        t = a / b;
-        m = a % b;
-    }
-    *q = t - (m < 0);
-    *r = m + (b & -(int64_t)(m < 0));
-}
-
 /* The next row: G falls by s0*da + r0, so the bound moves s0 columns, and
  * one more when the remainder runs out.  Branch-free: whether it does is a
  * coin toss for most slopes, which a branch would mispredict. */
@@ -92,7 +76,7 @@ static inline void rast__fe_step(rast__fe *f)
  * per row.  A horizontal edge becomes a left bound that never binds (the
  * rows already say it; the other two edges are one left, one right).
  * |px - x| and |py - y| < 2^29 + 2 unit, so each product is below 2^59. */
-static inline void rast__fe_start(rast__fe *f, const int64_t *x, const int64_t *y, int32_t k,
+RAST__HOT void rast__fe_start(rast__fe *f, const int64_t *x, const int64_t *y, int32_t k,
                                   int64_t c0, int64_t px, int64_t py, const rast__grid *g)
 {
     int32_t n = k == 2 ? 0 : k + 1;
@@ -110,9 +94,9 @@ static inline void rast__fe_start(rast__fe *f, const int64_t *x, const int64_t *
         dy = -dy;
     }
     f->da = dy * g->unit;
-    rast__fe_divmod(dx, dy, &f->s0, &r);
+    rast__floordivmod(dx, dy, &f->s0, &r);
     f->r0 = r * g->unit;
-    rast__fe_divmod(e - (g->textbook != 0), f->da, &q, &r); /* G0 = q*da + r */
+    rast__floordivmod(e - (g->textbook != 0), f->da, &q, &r); /* G0 = q*da + r */
     f->c = c0 - q;
     f->g = r;
 }
@@ -123,25 +107,17 @@ static inline void rast__fe_start(rast__fe *f, const int64_t *x, const int64_t *
  * the clip, so each row is one memset down a row pointer, with no clip
  * test.  The bounds are the caller's locals, whose addresses go to
  * inline functions only: they stay in registers. */
-static inline void rast__fe_rows(const rast__rows *o, int32_t row0, int32_t row1, rast__fe *a,
+RAST__HOT void rast__fe_rows(const rast__rows *o, int32_t row0, int32_t row1, rast__fe *a,
                                  rast__fe *b, rast__fe *c, int32_t pair_left, int direct)
 {
-    unsigned char *p = direct ? o->direct + (ptrdiff_t)row0 * o->stride : NULL;
+    unsigned char *p = rast__rows_at(o, row0, direct);
     int32_t j;
     for (j = row0; j < row1; j++) {
         int64_t x0 = a->c, x1 = c->c;
         int64_t bl = pair_left ? b->c : x0, br = pair_left ? x1 : b->c;
         x0 = x0 > bl ? x0 : bl;
         x1 = x1 < br ? x1 : br;
-        if (!direct) {
-            rast__rows_put(o, j, (int32_t)x0, (int32_t)x1);
-        } else {
-            /* An empty row (x1 <= x0, at a sharp vertex) as a memset of
-             * nothing: cheaper than a branch that sometimes mispredicts. */
-            int64_t n = x1 - x0;
-            memset(p + x0, o->value, (size_t)(n & ~(n >> 63)));
-            p += o->stride;
-        }
+        rast__rows_emit(o, &p, j, (int32_t)x0, (int32_t)x1, direct);
         rast__fe_step(a);
         rast__fe_step(b);
         rast__fe_step(c);

@@ -78,13 +78,8 @@ rast_status rast__tri_edgeflag_fill(const rast_point *t, const rast__grid *g,
     left -= clip->y0;
     right -= clip->y0;
     if (rast__rows_direct_uncut(&o, 2 * (int64_t)xmin, 2 * (int64_t)xmax, g)) {
-        /* Every run inside the clip: one memset per row down a row
-         * pointer (an empty row, at a sharp vertex, writes nothing). */
-        unsigned char *p = o.direct + (ptrdiff_t)r0 * o.stride;
-        for (j = r0; j < r1; j++, p += o.stride) {
-            int32_t len = right[j] - left[j];
-            memset(p + left[j], o.value, (size_t)(len & ~(len >> 31)));
-        }
+        unsigned char *p = rast__rows_at(&o, r0, 1);
+        for (j = r0; j < r1; j++) rast__rows_emit(&o, &p, j, left[j], right[j], 1);
     } else {
         for (j = r0; j < r1; j++) rast__rows_put(&o, j, left[j], right[j]);
     }

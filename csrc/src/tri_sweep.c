@@ -36,22 +36,13 @@ static inline void rast__sort2(rast_point *p, rast_point *q)
  * one memset down a row pointer.  The walks run on the caller's locals:
  * the pixel stores may alias anything whose address escaped, and would
  * make the compiler reload the edges from memory every row. */
-static inline void rast__sweep_rows(const rast__rows *o, int32_t j0, int32_t j1, rast__edge *lng,
+RAST__HOT void rast__sweep_rows(const rast__rows *o, int32_t j0, int32_t j1, rast__edge *lng,
                                     rast__edge *sh, int long_left, int direct)
 {
-    unsigned char *p = direct ? o->direct + (ptrdiff_t)j0 * o->stride : NULL;
+    unsigned char *p = rast__rows_at(o, j0, direct);
     int32_t j;
     for (j = j0; j < j1; j++) {
-        int32_t x0 = long_left ? lng->x : sh->x, x1 = long_left ? sh->x : lng->x;
-        if (!direct) {
-            rast__rows_put(o, j, x0, x1);
-        } else {
-            /* An empty row (at a sharp vertex) as a memset of nothing:
-             * cheaper than a branch that sometimes mispredicts. */
-            int32_t n = x1 - x0;
-            memset(p + x0, o->value, (size_t)(n & ~(n >> 31)));
-            p += o->stride;
-        }
+        rast__rows_emit(o, &p, j, long_left ? lng->x : sh->x, long_left ? sh->x : lng->x, direct);
         rast__edge_step(lng);
         rast__edge_step(sh);
     }
@@ -59,7 +50,7 @@ static inline void rast__sweep_rows(const rast__rows *o, int32_t j0, int32_t j1,
 
 /* Both halves: [ra, rb) between a->c and a->b, [rb, rc) between a->c and
  * b->c. */
-static inline void rast__sweep_halves(const rast__rows *o, rast_point a, rast_point b,
+RAST__HOT void rast__sweep_halves(const rast__rows *o, rast_point a, rast_point b,
                                       rast_point c, int32_t ra, int32_t rb, int32_t rc,
                                       int long_left, const rast__grid *g, int direct)
 {

@@ -11,7 +11,20 @@
 #ifndef RAST_INTERNAL_H
 #define RAST_INTERNAL_H
 
+#include <string.h>
+
 #include "rastrum.h"
+
+/* For a filler's row loop and its setup: inlined whatever the compiler's
+ * weighing of code size says, where it can be told (GCC, clang), so that
+ * the walk's state stays in registers (a call taking it by pointer puts
+ * it in memory, and a small triangle pays ~5% for it).  Not in a build
+ * for size (-Os, firmware). */
+#if (defined(__GNUC__) || defined(__clang__)) && !defined(__OPTIMIZE_SIZE__)
+#define RAST__HOT static inline __attribute__((always_inline))
+#else
+#define RAST__HOT static inline
+#endif
 
 typedef struct rast__grid {
     int32_t unit;     /* 2^(S+1): one pixel in internal units */
@@ -37,6 +50,37 @@ static inline int64_t rast__floordiv(int64_t a, int64_t b)
 static inline int64_t rast__ceildiv(int64_t a, int64_t b)
 {
     return -rast__floordiv(-a, b);
+}
+
+/* n = f*q + r with f = floor(n / q) and 0 <= r < q, for q > 0: a 32-bit
+ * division when both fit, several times faster than a 64-bit one on
+ * common CPUs. */
+static inline void rast__floordivmod(int64_t n, int64_t q, int64_t *f, int64_t *r)
+{
+    int64_t t, m;
+    if (q <= INT32_MAX && n >= -INT32_MAX && n <= INT32_MAX) {
+        t = (int32_t)n / (int32_t)q;
+        m = (int32_t)n % (int32_t)q;
+    } else {
+        t = n / q;
+        m = n % q;
+    }
+    *f = t - (m < 0);
+    *r = m + (q & -(int64_t)(m < 0));
+}
+
+/* floor(a / unit) and ceil(a / unit) for |a| < 2^61: shifts of the value
+ * made non-negative by a bias (the unit is a power of two), instead of a
+ * 64-bit division. */
+static inline int64_t rast__floor_unit(int64_t a, const rast__grid *g)
+{
+    const int64_t bias = (int64_t)1 << 61;
+    return (int64_t)((uint64_t)(a + bias) >> g->shift) - (bias >> g->shift);
+}
+
+static inline int64_t rast__ceil_unit(int64_t a, const rast__grid *g)
+{
+    return -rast__floor_unit(-a, g);
 }
 
 /* The first column that counts a crossing at internal abscissa X = num/den
@@ -105,6 +149,100 @@ static inline void rast__edge_step(rast__edge *ed)
     ed->e = e + (ed->q & -carry);
 }
 
+/* The bodies of rast__edge_start and rast__edge_setup (edge.c), for the
+ * triangle fillers, which set up three edges per triangle: inlined, the
+ * edge stays in registers and the call is gone.  Setup is most of the
+ * cost of a small primitive (a triangle of a mesh has three edges and a
+ * handful of rows), and its cost is divisions.  Those by the unit (a
+ * power of two) are shifts; the whole columns per row always fit 32 bits;
+ * the first crossing is split into a whole column at the upper vertex
+ * plus a remainder that fits 32 bits unless the edge is very long or
+ * starts far above the first row, and a 32-bit division is several times
+ * faster than a 64-bit one on common CPUs. */
+/* floor(a / 2^shift) for |a| < 2^30, by a shift of a + 2^30 >= 0. */
+static inline int32_t rast__floorshift32(int32_t a, int32_t shift)
+{
+    const uint32_t bias = (uint32_t)1 << 30;
+    return (int32_t)(((uint32_t)a + bias) >> shift) - (int32_t)(bias >> shift);
+}
+
+static inline void rast__edge_start_inline(rast__edge *ed, rast_point top, rast_point bottom,
+                                           int32_t dir, int32_t first, int32_t end,
+                                           const rast__grid *g)
+{
+    /* Internal units: |coordinate| < 2^28, differences < 2^29. */
+    int32_t xa = 2 * top.x, ya = 2 * top.y;
+    int32_t dx = 2 * bottom.x - xa, dy = 2 * bottom.y - ya;
+    int32_t base, xr, step;
+    int64_t q = (int64_t)dy * g->unit; /* < 2^46 */
+    int64_t n, t, r;
+
+    /* The first column x = ceil(n / q), n = (xa - off)*dy + (yc - ya)*dx
+     * with yc = first*unit + off.  With xa - off = base*unit + xr
+     * (0 <= xr < unit), n / q is base plus n' / q, n' = xr*dy + (yc - ya)*dx,
+     * small unless the edge is long or starts far above row `first`;
+     * |n'| < 2^59 in any case. */
+    base = rast__floorshift32(xa - g->off, g->shift);
+    xr = xa - g->off - base * g->unit;
+    n = (int64_t)xr * dy + ((int64_t)first * g->unit + g->off - ya) * dx;
+    /* Textbook rounding: the first column is floor((n + h*dy) / q) with
+     * h = unit/2, which is ceil((n + h*dy - q + 1) / q); from then on the
+     * walk is the same (rast__cross_col says this once for other users). */
+    if (g->textbook) n += (int64_t)(g->unit / 2) * dy - q + 1;
+
+    /* x = ceil(n / q) and e = x*q - n, without forming x*q (it may not fit),
+     * from one floor division n = t*q + r (0 <= r < q): the ceiling is
+     * t + 1 when r > 0, else t. */
+    rast__floordivmod(n, q, &t, &r);
+    ed->x = (int32_t)(base + t + (r > 0));
+    ed->e = r > 0 ? q - r : 0;
+    ed->q = q;
+
+    /* Whole columns per row, floor(dx / dy), and the remainder's growth. */
+    step = dx / dy;
+    step -= dx % dy < 0;
+    ed->step = step;
+    ed->dr = (int64_t)(dx - step * dy) * g->unit;
+    ed->row = first;
+    ed->end = end;
+    ed->dir = dir;
+    ed->next = -1;
+}
+
+static inline int rast__edge_setup_inline(rast__edge *ed, rast_point a, rast_point b,
+                                          const rast__grid *g, int32_t row_lo, int32_t row_hi)
+{
+    int64_t first, end;
+    int32_t dir = 1;
+
+    if (a.y == b.y) return 0; /* horizontal edges never cross */
+    if (a.y > b.y) {
+        rast_point s = a;
+        a = b;
+        b = s;
+        dir = -1;
+    }
+    /* Rows j with ya <= j*unit + off < yb, cut to [row_lo, row_hi). */
+    first = rast__row_at_or_after(2 * (int64_t)a.y, g);
+    end = rast__row_at_or_after(2 * (int64_t)b.y, g);
+    if (first < row_lo) first = row_lo;
+    if (end > row_hi) end = row_hi;
+    if (first >= end) return 0;
+    rast__edge_start_inline(ed, a, b, dir, (int32_t)first, (int32_t)end, g);
+    return 1;
+}
+
+/* What the triangle fillers call: the inline bodies, except in a build
+ * for size (-Os, firmware), where the out-of-line copies save about 400
+ * bytes of code per filler that uses them. */
+#if defined(__OPTIMIZE_SIZE__)
+#define rast__edge_start_tri rast__edge_start
+#define rast__edge_setup_tri rast__edge_setup
+#else
+#define rast__edge_start_tri rast__edge_start_inline
+#define rast__edge_setup_tri rast__edge_setup_inline
+#endif
+
 /* A painter's entry: the spans of row y, xs[2k] <= i < xs[2k+1] for
  * k < n, in increasing x, each non-empty, none touching the next. */
 typedef void (*rast__row_fn)(void *user, int32_t y, const int32_t *xs, int32_t n);
@@ -123,6 +261,18 @@ typedef struct rast__sink {
     int32_t y;        /* row of the gathered spans */
     int32_t n;        /* spans gathered */
     int32_t xs[2 * RAST__SINK_SPANS];
+    /* A fast path behind rast__sink_row, set by rast__sink_direct8 when
+     * `fn` is the solid painter of a one-byte format: rows of pixels at
+     * direct + y * stride, each run written by one memset in the
+     * filler's loop instead of through `fn` (the same pixels, without an
+     * indirect call, the painter's loop and its reloads for a run of a
+     * few pixels).  The library memset is also the fastest way to write a
+     * few bytes of unknown count on common CPUs: overlapping 1..8-byte
+     * stores inline were slower, their size tests mispredicting.  NULL
+     * otherwise: every run goes to `fn`. */
+    unsigned char *direct;
+    ptrdiff_t stride;
+    int value;
 } rast__sink;
 
 static inline void rast__sink_flush(rast__sink *s)
@@ -156,15 +306,92 @@ static inline void rast__sink_span(rast__sink *s, int32_t y, int32_t x0, int32_t
     s->n++;
 }
 
-/* For a filler with at most one run per row (a triangle): hand the run of
- * row y on at once, clipped, bypassing the gathering.  The sink must be
- * empty (flushed) and rows must still come in increasing order. */
-static inline void rast__sink_row(rast__sink *s, int32_t y, int32_t x0, int32_t x1)
+/* A filler's copy of what it needs from a sink to hand on one run per row
+ * (a triangle): kept in the filler's locals, so that the pixel stores of
+ * the inline path (which may alias anything) do not force the compiler to
+ * reload the sink after each one.  Rows must come in increasing order and
+ * the sink must be empty (flushed); the runs bypass its gathering. */
+typedef struct rast__rows {
+    rast__sink *sink;
+    unsigned char *direct; /* see rast__sink::direct */
+    ptrdiff_t stride;
+    int value;
+    int32_t cx0, cx1;
+} rast__rows;
+
+static inline rast__rows rast__rows_of(rast__sink *s)
+{
+    rast__rows o;
+    o.sink = s;
+    o.direct = s->direct;
+    o.stride = s->stride;
+    o.value = s->value;
+    o.cx0 = s->cx0;
+    o.cx1 = s->cx1;
+    return o;
+}
+
+/* Hand on the run [x0, x1) of row y, clipped (it may be empty). */
+static inline void rast__rows_put(const rast__rows *o, int32_t y, int32_t x0, int32_t x1)
 {
     int32_t xs[2];
-    xs[0] = x0 < s->cx0 ? s->cx0 : x0;
-    xs[1] = x1 > s->cx1 ? s->cx1 : x1;
-    if (xs[0] < xs[1]) s->fn(s->user, y, xs, 1);
+    xs[0] = x0 < o->cx0 ? o->cx0 : x0;
+    xs[1] = x1 > o->cx1 ? o->cx1 : x1;
+    if (xs[0] >= xs[1]) return;
+    if (o->direct)
+        memset(o->direct + (ptrdiff_t)y * o->stride + xs[0], o->value, (size_t)(xs[1] - xs[0]));
+    else
+        o->sink->fn(o->sink->user, y, xs, 1);
+}
+
+/* Does the inline path take every run of a primitive whose crossings lie
+ * in [xmin, xmax] (internal units), uncut?  Each run's ends are first
+ * columns counting a crossing X in that range, which lie between
+ * ceil((X - s)/unit) and floor((X - s)/unit) + 1, s the sample offset
+ * (moved half a pixel right for textbook rounding); when all those
+ * columns are inside the clip, a filler may write its runs without
+ * cutting them (1), else it hands them to rast__rows_put (0). */
+static inline int rast__rows_direct_uncut(const rast__rows *o, int64_t xmin, int64_t xmax,
+                                          const rast__grid *g)
+{
+    int64_t s = g->off + (g->textbook ? g->unit / 2 : 0);
+    return o->direct && rast__ceil_unit(xmin - s, g) >= o->cx0 &&
+           rast__floor_unit(xmax - s, g) + 1 <= o->cx1;
+}
+
+/* Row y's run [x0, x1) (maybe empty) from a triangle filler's loop over
+ * consecutive rows.  `uncut` (a constant in the caller, so that it makes
+ * two loops) says rast__rows_direct_uncut held: the run is one memset at
+ * *row, the row pointer, which then moves down a row (an empty run as a
+ * memset of nothing: cheaper than a branch that sometimes mispredicts).
+ * Else it goes to rast__rows_put. */
+static inline void rast__rows_emit(const rast__rows *o, unsigned char **row, int32_t y,
+                                   int32_t x0, int32_t x1, int uncut)
+{
+    if (uncut) {
+        int32_t n = x1 - x0;
+        memset(*row + x0, o->value, (size_t)(n & ~(n >> 31)));
+        *row += o->stride;
+    } else {
+        rast__rows_put(o, y, x0, x1);
+    }
+}
+
+/* The row pointer rast__rows_emit starts from at row y (NULL unless
+ * uncut). */
+static inline unsigned char *rast__rows_at(const rast__rows *o, int32_t y, int uncut)
+{
+    return uncut ? o->direct + (ptrdiff_t)y * o->stride : NULL;
+}
+
+/* For a filler with at most one run per row (a triangle): hand the run of
+ * row y on at once, clipped, bypassing the gathering.  The sink must be
+ * empty (flushed) and rows must still come in increasing order.  (A loop
+ * over many rows does better with rast__rows.) */
+static inline void rast__sink_row(rast__sink *s, int32_t y, int32_t x0, int32_t x1)
+{
+    rast__rows o = rast__rows_of(s);
+    rast__rows_put(&o, y, x0, x1);
 }
 
 /* Saturating size arithmetic for the scratch functions: a clip of
@@ -191,6 +418,18 @@ static inline void rast__sink_init(rast__sink *s, rast__row_fn fn, void *user,
     s->cx1 = clip->x1;
     s->y = clip->y0;
     s->n = 0;
+    s->direct = NULL;
+}
+
+/* Turn on the sink's inline path (see rast__sink::direct) for one-byte
+ * pixels `value` in rows of `stride` bytes from `base`; only for the solid
+ * painter of such a target, which writes the same. */
+static inline void rast__sink_direct8(rast__sink *s, unsigned char *base, ptrdiff_t stride,
+                                      unsigned char value)
+{
+    s->direct = base;
+    s->stride = stride;
+    s->value = value;
 }
 
 /* A caller's scratch, checked before anything is written: at least `need`

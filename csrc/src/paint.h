@@ -71,9 +71,12 @@ typedef int (*rast__tri_begin_fn)(void *user, const rast_point *t, uint32_t k,
 /* The triangle batch behind every triangle entry point (trifill.c): check
  * the batch, options and scratch for `clip` (non-empty or empty, cut to the
  * target or a span clip), then run the filler on each triangle in turn,
- * calling `begin` first when it is not NULL, its spans going to `fn`. */
+ * calling `begin` first when it is not NULL, its spans going to `fn`.
+ * `gray8`, when not NULL, is the solid painter `user` of a GRAY8 target:
+ * the sink then writes its pixels inline (rast__sink_direct8). */
 rast_status rast__tri_fill(const rast_point *tris, uint32_t ntris, const rast_tri_opts *opts,
                            const rast_rect *clip, rast__row_fn fn, void *user,
-                           rast__tri_begin_fn begin, void *scratch, size_t scratch_bytes);
+                           const rast__solid *gray8, rast__tri_begin_fn begin,
+                           void *scratch, size_t scratch_bytes);
 
 #endif /* RAST_PAINT_H */

@@ -470,6 +470,6 @@ rast_status rast_fill_triangles_shaded(const rast_target *target, const rast_poi
         if (st != RAST_OK) return st;
     }
     s.flat = s.prec == RAST_PRECISION_FLAT && !z;
-    return rast__tri_fill(tris, ntris, opts, &clip, rast__shade_row, &s, rast__shade_begin,
+    return rast__tri_fill(tris, ntris, opts, &clip, rast__shade_row, &s, NULL, rast__shade_begin,
                           scratch, scratch_bytes);
 }

@@ -40,14 +40,19 @@ int rast__tri_span_flags(const rast_point *t, const rast__grid *g,
     *r1 = row_lo;
     for (k = 0; k < 3; k++) {
         int32_t *flags, j;
-        if (!rast__edge_setup(&ed, t[k], t[k == 2 ? 0 : k + 1], g, row_lo, row_hi)) continue;
-        flags = ((ed.dir > 0) == (area > 0)) ? span_left : span_right;
-        for (j = ed.row; j < ed.end; j++) {
-            flags[j - row_lo] = ed.x;
-            rast__edge_step(&ed);
+        rast__edge e;
+        if (!rast__edge_setup_tri(&ed, t[k], t[k == 2 ? 0 : k + 1], g, row_lo, row_hi)) continue;
+        /* The walk on a local copy: the int32_t stores into the flags
+         * could alias ed, whose address was taken, and force reloads. */
+        e = ed;
+        flags = ((e.dir > 0) == (area > 0)) ? span_left : span_right;
+        flags -= row_lo;
+        for (j = e.row; j < e.end; j++) {
+            flags[j] = e.x;
+            rast__edge_step(&e);
         }
-        if (ed.row < *r0) *r0 = ed.row;
-        if (ed.end > *r1) *r1 = ed.end;
+        if (e.row < *r0) *r0 = e.row;
+        if (e.end > *r1) *r1 = e.end;
     }
     return *r0 < *r1;
 }
@@ -57,12 +62,26 @@ rast_status rast__tri_edgeflag_fill(const rast_point *t, const rast__grid *g,
                                     rast__arena *arena)
 {
     size_t n = (size_t)(clip->y1 - clip->y0);
-    int32_t *left, *right, r0, r1, j;
+    int32_t *left, *right, r0, r1, j, xmin, xmax;
+    rast__rows o;
 
     left = (int32_t *)rast__take(arena, n * sizeof(int32_t));
     right = (int32_t *)rast__take(arena, n * sizeof(int32_t));
     if (!left || !right) return RAST_E_SCRATCH;
     if (!rast__tri_span_flags(t, g, clip->y0, clip->y1, left, right, &r0, &r1)) return RAST_OK;
-    for (j = r0; j < r1; j++) rast__sink_row(sink, j, left[j - clip->y0], right[j - clip->y0]);
+    /* Every crossing lies between the vertices' abscissae. */
+    xmin = t[0].x < t[1].x ? t[0].x : t[1].x;
+    xmin = xmin < t[2].x ? xmin : t[2].x;
+    xmax = t[0].x > t[1].x ? t[0].x : t[1].x;
+    xmax = xmax > t[2].x ? xmax : t[2].x;
+    o = rast__rows_of(sink);
+    left -= clip->y0;
+    right -= clip->y0;
+    if (rast__rows_direct_uncut(&o, 2 * (int64_t)xmin, 2 * (int64_t)xmax, g)) {
+        unsigned char *p = rast__rows_at(&o, r0, 1);
+        for (j = r0; j < r1; j++) rast__rows_emit(&o, &p, j, left[j], right[j], 1);
+    } else {
+        for (j = r0; j < r1; j++) rast__rows_put(&o, j, left[j], right[j]);
+    }
     return RAST_OK;
 }

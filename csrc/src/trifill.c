@@ -76,7 +76,8 @@ static rast_status rast__tri_check_range(const rast_point *tris, uint32_t ntris)
 
 rast_status rast__tri_fill(const rast_point *tris, uint32_t ntris, const rast_tri_opts *opts,
                            const rast_rect *clip, rast__row_fn fn, void *user,
-                           rast__tri_begin_fn begin, void *scratch, size_t scratch_bytes)
+                           const rast__solid *gray8, rast__tri_begin_fn begin,
+                           void *scratch, size_t scratch_bytes)
 {
     const rast__tri_algo *al;
     rast__grid g;
@@ -95,6 +96,7 @@ rast_status rast__tri_fill(const rast_point *tris, uint32_t ntris, const rast_tr
     if (clip->x0 >= clip->x1 || clip->y0 >= clip->y1) return RAST_OK;
 
     rast__sink_init(&sink, fn, user, clip);
+    if (gray8) rast__sink_direct8(&sink, gray8->base, gray8->stride, gray8->value[0]);
     for (k = 0; k < ntris; k++) {
         const rast_point *t = tris + 3 * (size_t)k;
         if (begin && !begin(user, t, k, &g)) continue;
@@ -135,7 +137,9 @@ rast_status rast_fill_triangles(const rast_target *target, const rast_point *tri
     if (st != RAST_OK) return st;
     st = rast__solid_init(&solid, target, &clip, pixel, NULL, &fn);
     if (st != RAST_OK) return st;
-    return rast__tri_fill(tris, ntris, opts, &clip, fn, &solid, NULL, scratch, scratch_bytes);
+    return rast__tri_fill(tris, ntris, opts, &clip, fn, &solid,
+                          target->format == RAST_FORMAT_GRAY8 ? &solid : NULL, NULL, scratch,
+                          scratch_bytes);
 }
 
 rast_status rast_fill_triangles_spans(const rast_point *tris, uint32_t ntris,
@@ -151,5 +155,6 @@ rast_status rast_fill_triangles_spans(const rast_point *tris, uint32_t ntris,
     if (st != RAST_OK) return st;
     u.fn = span;
     u.user = user;
-    return rast__tri_fill(tris, ntris, opts, &c, rast__user_row, &u, NULL, scratch, scratch_bytes);
+    return rast__tri_fill(tris, ntris, opts, &c, rast__user_row, &u, NULL, NULL, scratch,
+                          scratch_bytes);
 }

@@ -82,26 +82,93 @@ GLUE_SOURCE = r"""
  * t = 1/2 - 2^-54 it rounds up to 1.  So round by comparing the fraction
  * with 1/2 instead of adding it.  Returns the index of the first point that
  * is NaN, infinite or outside +-RAST_COORD_MAX after snapping, or -1 when
- * all are good. */
-static long rastpy_snap(const double *xy, size_t npoints, int s, int32_t *out)
+ * all are good (then all of out is written).  The snapped value is in
+ * range iff -M - 1/2 <= t < M + 1/2 (M = RAST_COORD_MAX; exact doubles),
+ * which NaN fails too. */
+static long rastpy_snap_scalar(const double *xy, size_t npoints, int s, int32_t *out, size_t i)
 {
-    const double scale = ldexp(1.0, s), lim = (double)RAST_COORD_MAX + 1.0;
-    size_t i;
+    const double scale = ldexp(1.0, s), lim = (double)RAST_COORD_MAX + 0.5;
     /* Branch-free but for the range test (which a batch passes): the
      * rounding of random input is a coin toss a branch would mispredict.
      * Inside +-lim, t converts to int32_t exactly (truncating) and floor
      * and the fraction follow in integers and exact doubles. */
-    for (i = 0; i < 2 * npoints; i++) {
+    for (; i < 2 * npoints; i++) {
         double t = xy[i] * scale;
         int32_t v;
-        if (!(t >= -lim && t <= lim)) return (long)(i / 2); /* also NaN */
+        if (!(t >= -lim && t < lim)) return (long)(i / 2); /* also NaN */
         v = (int32_t)t;
         v -= (double)v > t;                 /* floor */
         v += t - (double)v >= 0.5;          /* half up */
-        if (v < -RAST_COORD_MAX || v > RAST_COORD_MAX) return (long)(i / 2);
         out[i] = v;
     }
     return -1;
+}
+
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
+#if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))
+#define RASTPY_AVX 1
+#include <immintrin.h>
+
+/* The same, four coordinates at a time (AVX: floor in one instruction), for
+ * i = 0 .. 2n - 4 in steps of 4; the mask of good coordinates goes to *ok.
+ * Compiled for AVX whatever the build's target and called only where the
+ * CPU has it. */
+__attribute__((target("avx"))) static size_t rastpy_snap_avx(const double *xy, size_t n2, double scale,
+                                                             int32_t *out, int *ok)
+{
+    const double lim = (double)RAST_COORD_MAX + 0.5;
+    const __m256d vs = _mm256_set1_pd(scale), lo = _mm256_set1_pd(-lim), hi = _mm256_set1_pd(lim),
+                  one = _mm256_set1_pd(1.0), half = _mm256_set1_pd(0.5);
+    __m256d good = _mm256_cmp_pd(one, one, _CMP_EQ_OQ);
+    size_t i;
+    for (i = 0; i + 4 <= n2; i += 4) {
+        __m256d t = _mm256_mul_pd(_mm256_loadu_pd(xy + i), vs), f;
+        good = _mm256_and_pd(good, _mm256_and_pd(_mm256_cmp_pd(t, lo, _CMP_GE_OQ),
+                                                 _mm256_cmp_pd(t, hi, _CMP_LT_OQ)));
+        f = _mm256_floor_pd(t);
+        f = _mm256_add_pd(f, _mm256_and_pd(_mm256_cmp_pd(_mm256_sub_pd(t, f), half, _CMP_GE_OQ), one));
+        _mm_storeu_si128((__m128i *)(void *)(out + i), _mm256_cvttpd_epi32(f));
+    }
+    *ok = _mm256_movemask_pd(good) == 15;
+    return i;
+}
+#endif
+
+/* The same, two coordinates at a time where SSE2 is there (every x86-64),
+ * four where AVX is: the same steps, with the range test folded into a
+ * mask checked once at the end (then the scalar loop finds the first bad
+ * point).  A batch of 20,000 triangles snaps in a fraction of the scalar
+ * loop's time. */
+static long rastpy_snap(const double *xy, size_t npoints, int s, int32_t *out)
+{
+    size_t i = 0;
+#if defined(RASTPY_AVX)
+    if (__builtin_cpu_supports("avx")) {
+        int ok;
+        i = rastpy_snap_avx(xy, 2 * npoints, ldexp(1.0, s), out, &ok);
+        if (!ok) return rastpy_snap_scalar(xy, npoints, s, out, 0);
+    }
+#endif
+#if defined(__SSE2__)
+    {
+        const double lim = (double)RAST_COORD_MAX + 0.5;
+        const __m128d scale = _mm_set1_pd(ldexp(1.0, s)), lo = _mm_set1_pd(-lim),
+                      hi = _mm_set1_pd(lim), one = _mm_set1_pd(1.0), half = _mm_set1_pd(0.5);
+        __m128d ok = _mm_cmpeq_pd(one, one);
+        for (; i + 2 <= 2 * npoints; i += 2) {
+            __m128d t = _mm_mul_pd(_mm_loadu_pd(xy + i), scale), f;
+            ok = _mm_and_pd(ok, _mm_and_pd(_mm_cmpge_pd(t, lo), _mm_cmplt_pd(t, hi)));
+            f = _mm_cvtepi32_pd(_mm_cvttpd_epi32(t));                       /* trunc */
+            f = _mm_sub_pd(f, _mm_and_pd(_mm_cmpgt_pd(f, t), one));          /* floor */
+            f = _mm_add_pd(f, _mm_and_pd(_mm_cmpge_pd(_mm_sub_pd(t, f), half), one));
+            _mm_storel_epi64((__m128i *)(void *)(out + i), _mm_cvttpd_epi32(f));
+        }
+        if (_mm_movemask_pd(ok) != 3) return rastpy_snap_scalar(xy, npoints, s, out, 0);
+    }
+#endif
+    return rastpy_snap_scalar(xy, npoints, s, out, i);
 }
 
 /* rastpy_snap for callers in Python (lines, predicates, small inputs). */

@@ -11,6 +11,7 @@
 #   make install         PREFIX=/usr/local DESTDIR= : header, libraries, rastrum.pc
 #   make uninstall       the reverse
 #   make example         the pkg-config example (after make install)
+#   make display-example a 320x240 RGB565 display fed spans band by band (run by test-c)
 
 CC      ?= cc
 PYTHON  ?= python3
@@ -40,7 +41,7 @@ SONAME  := librastrum.so.$(VERSION_MAJOR)
 C_TESTS := $(patsubst tests/c/%.c,build/tests/%,$(wildcard tests/c/test_*.c))
 SAN     := -fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer -g
 
-.PHONY: valgrind firmware-check cross-check all lib test test-c test-install test-py demo asan asan-c asan-py strict install uninstall example clean
+.PHONY: display-example valgrind firmware-check cross-check all lib test test-c test-install test-py demo asan asan-c asan-py strict install uninstall example clean
 
 all: lib
 lib: build/librastrum.a build/librastrum.so
@@ -71,6 +72,12 @@ test: test-c test-install test-py
 
 test-c: $(C_TESTS)
 	@for t in $(C_TESTS); do echo "== $$t"; ./$$t || exit 1; done
+test-c: display-example
+
+# The firmware example: scene, spans, band by band, one static arena.
+display-example: build/librastrum.a
+	@$(CC) $(WARN) -O2 -Icsrc/include examples/display_rgb565.c build/librastrum.a -o build/display_rgb565
+	@./build/display_rgb565 build/display_rgb565.ppm
 
 # Install into a stage, build the example through pkg-config, run it; and
 # check that DESTDIR is honoured.

@@ -71,6 +71,17 @@ typedef struct rast__scene {
     size_t bytes;
 } rast__scene;
 
+static void rast__scene_init(rast__scene *s, const rast_target *target, rast_prim_span_fn span,
+                             void *user, void *scratch, size_t bytes)
+{
+    s->target = target;
+    s->span = span;
+    s->user = user;
+    s->prim = NULL;
+    s->scratch = scratch;
+    s->bytes = bytes;
+}
+
 static void rast__scene_span(void *user, int32_t y, int32_t x0, int32_t x1)
 {
     const rast__scene *s = (const rast__scene *)user;
@@ -181,12 +192,7 @@ rast_status rast_render_bands(const rast_target *target, const rast_prim *prims,
     rast_rect clip;
     rast_status st = rast__target_check(target, &clip);
     if (st != RAST_OK) return st;
-    s.target = target;
-    s.span = NULL;
-    s.user = NULL;
-    s.prim = NULL;
-    s.scratch = scratch;
-    s.bytes = scratch_bytes;
+    rast__scene_init(&s, target, NULL, NULL, scratch, scratch_bytes);
     return rast__render(&s, prims, n, &clip, band_rows, stats);
 }
 
@@ -200,11 +206,6 @@ rast_status rast_render_bands_spans(const rast_prim *prims, uint32_t n, const ra
     if (!clip || !span) return RAST_E_NULL;
     st = rast__span_clip(clip, &c);
     if (st != RAST_OK) return st;
-    s.target = NULL;
-    s.span = span;
-    s.user = user;
-    s.prim = NULL;
-    s.scratch = scratch;
-    s.bytes = scratch_bytes;
+    rast__scene_init(&s, NULL, span, user, scratch, scratch_bytes);
     return rast__render(&s, prims, n, &c, band_rows, stats);
 }

@@ -158,8 +158,8 @@ static void demo_scene(scene *sc, int which, int s)
         rast_point *t;
         for (j = 0; j < 9; j++)
             for (i = 0; i < 7; i++) {
-                grid[i][j].x = (int32_t)(((i * 30 - 20) << s) + rnd(-(5 << s), 5 << s));
-                grid[i][j].y = (int32_t)(((j * 32 - 20) << s) + rnd(-(5 << s), 5 << s));
+                grid[i][j].x = (int32_t)((i * 30 - 20) * (1 << s) + rnd(-5 * (1 << s), 5 << s));
+                grid[i][j].y = (int32_t)((j * 32 - 20) * (1 << s) + rnd(-5 * (1 << s), 5 << s));
             }
         p = add_prim(sc, RAST_PRIM_TRIANGLES, s);
         t = take_pts(sc, 6 * 6 * 8);
@@ -180,8 +180,8 @@ static void demo_scene(scene *sc, int which, int s)
             p = add_prim(sc, RAST_PRIM_POLYLINE, s);
             q = take_pts(sc, 12);
             for (i = 0; i < 12; i++) {
-                q[i].x = (int32_t)((rnd(-20, W + 20)) << s) + rnd(0, (1 << s) - 1);
-                q[i].y = (int32_t)((rnd(-20, H + 20)) << s) + rnd(0, (1 << s) - 1);
+                q[i].x = (int32_t)(rnd(-20, W + 20) * (1 << s)) + rnd(0, (1 << s) - 1);
+                q[i].y = (int32_t)(rnd(-20, H + 20) * (1 << s)) + rnd(0, (1 << s) - 1);
             }
             p->points = q;
             p->count = 12;
@@ -217,8 +217,8 @@ static void random_scene(scene *sc)
         m = kind == RAST_PRIM_TRIANGLES ? 3 * (uint32_t)rnd(0, 12) : (uint32_t)rnd(0, 30);
         q = take_pts(sc, m);
         for (i = 0; i < m; i++) {
-            int64_t x = (int64_t)rnd(-(40 << s), (W + 40) << s);
-            int64_t y = (int64_t)rnd(-(40 << s), (H + 40) << s);
+            int64_t x = (int64_t)rnd(-40 * (1 << s), (W + 40) << s);
+            int64_t y = (int64_t)rnd(-40 * (1 << s), (H + 40) << s);
             if (span == RAST_COORD_MAX && rnd(0, 2) == 0) {
                 x = rnd(0, 1) ? RAST_COORD_MAX : -RAST_COORD_MAX;
                 y = rnd(0, 1) ? RAST_COORD_MAX : -RAST_COORD_MAX;

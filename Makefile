@@ -163,7 +163,7 @@ FUZZ_INC := -Icsrc/include -Icsrc/src -Itests/c
 fuzz-regress:
 	@mkdir -p build/fuzz-regress
 	@for t in $(FUZZ_TARGETS); do \
-	  $(CC) -std=c99 -O1 $(SAN) $(FUZZ_INC) tests/fuzz/$$t.c tests/fuzz/driver.c $(SRC) \
+	  $(CC) -std=c99 -Wall -Wextra -Werror -O1 $(SAN) $(FUZZ_INC) tests/fuzz/$$t.c tests/fuzz/driver.c $(SRC) \
 	    -o build/fuzz-regress/$$t || exit 1; \
 	  ./build/fuzz-regress/$$t tests/fuzz/corpus/$$t || exit 1; \
 	done
@@ -171,7 +171,7 @@ fuzz-regress:
 fuzz-check:
 	@mkdir -p build/fuzz
 	@for t in $(FUZZ_TARGETS); do \
-	  $(FUZZ_CC) -std=c99 -g -O1 -fsanitize=fuzzer,address,undefined -fno-sanitize-recover=all \
+	  $(FUZZ_CC) -std=c99 -Wall -Wextra -Werror -g -O1 -fsanitize=fuzzer,address,undefined -fno-sanitize-recover=all \
 	    $(FUZZ_INC) tests/fuzz/$$t.c $(SRC) -o build/fuzz/$$t || exit 1; \
 	  rm -rf build/fuzz/new_$$t; mkdir -p build/fuzz/new_$$t; \
 	  if ./build/fuzz/$$t -max_total_time=$(FUZZ_SECONDS) -timeout=20 -print_final_stats=1 \

@@ -632,7 +632,8 @@ typedef struct rast_band_stats {
  * rast_tri_scratch_size; polylines: none).  band_rows = 1 gives the least
  * scratch with which rast_render_bands succeeds.  n may be 0 (prims may
  * then be NULL).  Errors: RAST_E_NULL, RAST_E_ARG (an unknown kind,
- * band_rows < 1), RAST_E_SIZE (width outside 0..RAST_MAX_DIM), and those of
+ * band_rows < 1), RAST_E_SIZE (width or band_rows past RAST_MAX_DIM, or a
+ * negative width), and those of
  * the scratch functions. */
 RAST_API rast_status rast_scene_scratch_size(const rast_prim *prims, uint32_t n,
                                              int32_t band_rows, int32_t width,

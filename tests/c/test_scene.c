@@ -371,7 +371,7 @@ static void test_demo_scenes(void)
     const rast_rect whole = {0, 0, W, H}, window = {13, 29, 141, 203};
     int which, algo, rule, boundary, k, s;
     for (which = 0; which <= 5; which++) {
-        for (s = 0; s <= 8; s += 4) {
+        for (s = 0; s <= 5; s += 5) {
             demo_scene(&sc, which, s);
             for (algo = 0; algo < RAST_ALGO_COUNT_; algo++) {
                 uint32_t rules = 0;
@@ -401,7 +401,7 @@ static void test_random_scenes(void)
 {
     static scene sc;
     int n, k;
-    for (n = 0; n < 150; n++) {
+    for (n = 0; n < 100; n++) {
         rast_rect clip;
         rast_format f = (rast_format)rnd(0, RAST_FORMAT_COUNT16);
         uint32_t i;
@@ -470,6 +470,33 @@ static void test_small_scratch(void)
                                           one - 8, NULL) == RAST_E_SCRATCH);
             CHECK(memcmp(copy, band_mem, sizeof band_mem) == 0);
         }
+    }
+}
+
+/* A line first (no scratch), then a mask algorithm whose one-row need is
+ * more than the scratch but whose empty-clip need is not: still nothing
+ * drawn (the one-row need is checked for the whole scene first). */
+static void test_small_scratch_after_line(void)
+{
+    static scene sc;
+    const rast_rect whole = {0, 0, W, H};
+    rast_target t;
+    size_t one = 0;
+    int algo;
+    for (algo = RAST_ALGO_EDGEFILL; algo <= RAST_ALGO_EDGEFLAG; algo++) {
+        demo_scene(&sc, 5, 4); /* circle, star, holes, mesh, line, line */
+        sc.fill[0].algorithm = (rast_algorithm)algo;
+        sc.prims[1] = sc.prims[0];
+        sc.prims[0] = sc.prims[4];
+        sc.n = 2; /* a line, the circle */
+        CHECK(sc.prims[0].kind == RAST_PRIM_POLYLINE);
+        CHECK(rast_scene_scratch_size(sc.prims, sc.n, 1, W, &one) == RAST_OK);
+        CHECK(one >= 8);
+        t = make_target(band_mem, RAST_FORMAT_GRAY8, &whole);
+        memcpy(span_mem, band_mem, sizeof band_mem);
+        CHECK(rast_render_bands(&t, sc.prims, sc.n, 16, scratch_mem, one - 8, NULL) ==
+              RAST_E_SCRATCH);
+        CHECK(memcmp(span_mem, band_mem, sizeof band_mem) == 0);
     }
 }
 
@@ -596,6 +623,7 @@ int main(void)
     test_demo_scenes();
     test_random_scenes();
     test_small_scratch();
+    test_small_scratch_after_line();
     test_bad_last();
     test_coordinate_range();
     test_against_reference();

@@ -47,7 +47,7 @@ static inline int ref_winding(const rast_point *pts, const uint32_t *sizes, uint
     return w;
 }
 
-static inline int64_t ref_floordiv(int64_t a, int64_t b)
+static inline int64_t ref_floor_div(int64_t a, int64_t b)
 {
     int64_t q = a / b;
     return (a % b < 0) ? q - 1 : q;
@@ -75,9 +75,9 @@ static inline int ref_line_minor(rast_point a, rast_point b, int s, int center, 
     }
     if (xs < ax || xs > bx) return 0;
     if (bx == ax) {
-        *q = ref_floordiv(ay - O + U / 2, U);
+        *q = ref_floor_div(ay - O + U / 2, U);
     } else {
-        *q = ref_floordiv((ay - O + U / 2) * (bx - ax) + (xs - ax) * (by - ay), U * (bx - ax));
+        *q = ref_floor_div((ay - O + U / 2) * (bx - ax) + (xs - ax) * (by - ay), U * (bx - ax));
     }
     return 1;
 }

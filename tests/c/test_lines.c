@@ -45,8 +45,8 @@ static int equals_ref(rast_point a, rast_point b, int s, int center, const int32
     int sm = bmaj >= amaj ? 1 : -1;
     long k = 0;
     /* samples p*2^s + o*2^s in [min, max]: in doubled units to keep o = 1/2 whole */
-    lo = -ref_floordiv(-(2 * (amaj < bmaj ? amaj : bmaj) - O2 * U), 2 * U);
-    hi = ref_floordiv(2 * (amaj > bmaj ? amaj : bmaj) - O2 * U, 2 * U);
+    lo = -ref_floor_div(-(2 * (amaj < bmaj ? amaj : bmaj) - O2 * U), 2 * U);
+    hi = ref_floor_div(2 * (amaj > bmaj ? amaj : bmaj) - O2 * U, 2 * U);
     if ((lo > hi ? 0 : hi - lo + 1) != n) return 0;
     for (p = sm > 0 ? lo : hi; k < n; p += sm, k++) {
         int32_t x = ymajor ? xy[2 * k + 1] : xy[2 * k], y = ymajor ? xy[2 * k] : xy[2 * k + 1];

@@ -11,6 +11,9 @@
 #   make install         PREFIX=/usr/local DESTDIR= : header, libraries, rastrum.pc
 #   make uninstall       the reverse
 #   make example         the pkg-config example (after make install)
+#   make display-example a 320x240 RGB565 display fed spans band by band (run by test-c)
+#   make fuzz-check      libFuzzer targets (clang): the corpus, then FUZZ_SECONDS=20 each
+#   make fuzz-regress    the fuzz targets over the corpus without libFuzzer (gcc, sanitizers)
 
 CC      ?= cc
 PYTHON  ?= python3
@@ -40,7 +43,7 @@ SONAME  := librastrum.so.$(VERSION_MAJOR)
 C_TESTS := $(patsubst tests/c/%.c,build/tests/%,$(wildcard tests/c/test_*.c))
 SAN     := -fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer -g
 
-.PHONY: valgrind firmware-check cross-check all lib test test-c test-install test-py demo asan asan-c asan-py strict install uninstall example clean
+.PHONY: fuzz-check fuzz-regress display-example valgrind firmware-check cross-check all lib test test-c test-install test-py demo asan asan-c asan-py strict install uninstall example clean
 
 all: lib
 lib: build/librastrum.a build/librastrum.so
@@ -71,6 +74,12 @@ test: test-c test-install test-py
 
 test-c: $(C_TESTS)
 	@for t in $(C_TESTS); do echo "== $$t"; ./$$t || exit 1; done
+test-c: display-example
+
+# The firmware example: scene, spans, band by band, one static arena.
+display-example: build/librastrum.a
+	@$(CC) $(WARN) -O2 -Icsrc/include examples/display_rgb565.c build/librastrum.a -o build/display_rgb565
+	@./build/display_rgb565 build/display_rgb565.ppm
 
 # Install into a stage, build the example through pkg-config, run it; and
 # check that DESTDIR is honoured.
@@ -138,6 +147,41 @@ firmware-check:
 
 cross-check:
 	@tools/cross-check.sh build/cross
+
+# ---- fuzzing ---------------------------------------------------------------------
+# tests/fuzz/fuzz_*.c are libFuzzer targets with their oracle inside.
+# fuzz-regress runs each over its committed corpus (tests/fuzz/corpus/NAME)
+# through driver.c, with $(CC) and the sanitizers; fuzz-check builds them
+# with clang's libFuzzer, runs the corpus and then fuzzes each target for
+# FUZZ_SECONDS seconds (new inputs go to build/fuzz/new_NAME, crashes to
+# build/fuzz/NAME-crash-*; a crash fails the target).
+FUZZ_TARGETS := $(patsubst tests/fuzz/%.c,%,$(wildcard tests/fuzz/fuzz_*.c))
+FUZZ_SECONDS ?= 20
+FUZZ_CC ?= clang
+FUZZ_INC := -Icsrc/include -Icsrc/src -Itests/c
+
+fuzz-regress:
+	@mkdir -p build/fuzz-regress
+	@for t in $(FUZZ_TARGETS); do \
+	  $(CC) -std=c99 -Wall -Wextra -Werror -O1 $(SAN) $(FUZZ_INC) tests/fuzz/$$t.c tests/fuzz/driver.c $(SRC) \
+	    -o build/fuzz-regress/$$t || exit 1; \
+	  ./build/fuzz-regress/$$t tests/fuzz/corpus/$$t || exit 1; \
+	done
+
+fuzz-check:
+	@mkdir -p build/fuzz
+	@for t in $(FUZZ_TARGETS); do \
+	  $(FUZZ_CC) -std=c99 -Wall -Wextra -Werror -g -O1 -fsanitize=fuzzer,address,undefined -fno-sanitize-recover=all \
+	    $(FUZZ_INC) tests/fuzz/$$t.c $(SRC) -o build/fuzz/$$t || exit 1; \
+	  rm -rf build/fuzz/new_$$t; mkdir -p build/fuzz/new_$$t; \
+	  if ./build/fuzz/$$t -max_total_time=$(FUZZ_SECONDS) -timeout=20 -print_final_stats=1 \
+	       -artifact_prefix=build/fuzz/$$t- build/fuzz/new_$$t tests/fuzz/corpus/$$t \
+	       > build/fuzz/$$t.log 2>&1; then \
+	    echo "$$t: $$(ls tests/fuzz/corpus/$$t | wc -l) corpus inputs," \
+	      "$$(sed -n 's/^stat::number_of_executed_units: *//p' build/fuzz/$$t.log) executions" \
+	      "in $(FUZZ_SECONDS) s, 0 crashes"; \
+	  else tail -40 build/fuzz/$$t.log; echo "$$t: crashed (build/fuzz/$$t.log)"; exit 1; fi; \
+	done
 
 # ---- install ----------------------------------------------------------------------
 build/rastrum.pc: rastrum.pc.in csrc/include/rastrum.h

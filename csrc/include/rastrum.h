@@ -748,6 +748,114 @@ RAST_API rast_status rast_fill_polygon_gouraud(const rast_target *target,
                                                const rast_shade_opts *shade,
                                                void *scratch, size_t scratch_bytes);
 
+/* ---- lines as spans ---------------------------------------------------------
+ * The pixels rast_draw_polyline would draw (same segments, same algorithm),
+ * inside `clip`, handed to `span` instead of painted: for each segment in
+ * turn, from points[k] to points[k+1], one span per run of its pixels in a
+ * row (x-major segments) or per pixel (y-major ones).  Spans of different
+ * segments may overlap (a shared vertex is in both).  The clip as for
+ * rast_fill_polygon_spans.  Errors as rast_draw_polyline, before any span:
+ * RAST_E_NULL (opts, clip, span, or points when npoints > 0),
+ * RAST_E_RANGE, RAST_E_SUBPIXEL, RAST_E_ALGORITHM, RAST_E_ARG,
+ * RAST_E_SIZE, RAST_E_TOO_MANY. */
+RAST_API rast_status rast_draw_polyline_spans(const rast_point *points, uint32_t npoints,
+                                              int closed, const rast_line_opts *opts,
+                                              const rast_rect *clip, rast_span_fn span,
+                                              void *user);
+
+/* ---- scenes, rendered band by band --------------------------------------------
+ * A scene is an array of primitives drawn in order, each over the ones
+ * before it.  rast_render_bands cuts the clip into bands of `band_rows`
+ * rows and draws every primitive into each band in turn, so the work memory
+ * is that of one primitive in one band: it grows with the primitive's
+ * vertices and the band's rows and width, never with the coordinates (a
+ * polygon reaching y = +-2^27 costs what one inside the band costs).  The
+ * pixels are exactly those of drawing each primitive in order into the
+ * whole clip: every filler clips exactly, rows are independent.
+ *
+ * Bounded memory, no partial image.  When a primitive's scratch for a band
+ * does not fit `scratch_bytes`, its band is halved (and halved again, down
+ * to one row) and drawn in parts, as FreeType's rasteriser does.  Before
+ * anything is written, every primitive is checked (as its own entry point
+ * checks it) and its scratch for a one-row band compared with
+ * `scratch_bytes`: so the call either draws the whole scene or returns an
+ * error having written nothing. */
+typedef enum rast_prim_kind {
+    RAST_PRIM_POLYGON = 0,   /* `polygon` with `fill` (rast_fill_polygon) */
+    RAST_PRIM_TRIANGLES = 1, /* `count` triangles at `points` with `tri`
+                                (rast_fill_triangles) */
+    RAST_PRIM_POLYLINE = 2,  /* `count` points at `points`, `closed`, with
+                                `line` (rast_draw_polyline) */
+    RAST_PRIM_COUNT_ = 3
+} rast_prim_kind;
+
+/* One primitive; only the fields of its kind are read.  `pixel` is the
+ * value (target format bytes; NULL allowed for RAST_FORMAT_COUNT16 and for
+ * the spans call, which hands the primitive to its callback instead).  The
+ * library only reads it and what it points to. */
+typedef struct rast_prim {
+    rast_prim_kind kind;
+    rast_polygon polygon;          /* RAST_PRIM_POLYGON */
+    const rast_point *points;      /* RAST_PRIM_TRIANGLES, RAST_PRIM_POLYLINE */
+    uint32_t count;                /* triangles, or polyline points */
+    int32_t closed;                /* RAST_PRIM_POLYLINE: non-zero closes it */
+    const rast_fill_opts *fill;    /* RAST_PRIM_POLYGON */
+    const rast_tri_opts *tri;      /* RAST_PRIM_TRIANGLES */
+    const rast_line_opts *line;    /* RAST_PRIM_POLYLINE */
+    const void *pixel;
+} rast_prim;
+
+/* A span of primitive `prim` (a pointer into the caller's array) in row y,
+ * columns x0 <= i < x1. */
+typedef void (*rast_prim_span_fn)(void *user, const rast_prim *prim, int32_t y,
+                                  int32_t x0, int32_t x1);
+
+/* What a band render did (optional output): the number of bands of
+ * band_rows rows the clip was cut into, how many times a primitive's band
+ * was halved to fit the scratch, and the most scratch bytes any primitive
+ * asked for in the band it was drawn in (<= scratch_bytes). */
+typedef struct rast_band_stats {
+    uint32_t bands;
+    uint32_t splits;
+    size_t peak_scratch;
+} rast_band_stats;
+
+/* Scratch bytes that draw every primitive of the scene in a band of
+ * `band_rows` rows and `width` columns without halving: the largest need of
+ * one primitive (polygons: rast_scratch_size; triangles:
+ * rast_tri_scratch_size; polylines: none).  band_rows = 1 gives the least
+ * scratch with which rast_render_bands succeeds.  n may be 0 (prims may
+ * then be NULL).  Errors: RAST_E_NULL, RAST_E_ARG (an unknown kind,
+ * band_rows < 1), RAST_E_SIZE (width or band_rows past RAST_MAX_DIM, or a
+ * negative width), and those of
+ * the scratch functions. */
+RAST_API rast_status rast_scene_scratch_size(const rast_prim *prims, uint32_t n,
+                                             int32_t band_rows, int32_t width,
+                                             size_t *bytes);
+
+/* Draw the scene into target->clip band by band (see above): each band is
+ * the clip narrowed to rows [y, y + band_rows), top to bottom.  Pixels as
+ * drawing the primitives in order with their own entry points.  `scratch`
+ * aligned to RAST_SCRATCH_ALIGN; `stats` may be NULL.  Errors, all before
+ * anything is written: those of each primitive's entry point,
+ * RAST_E_ARG (an unknown kind, band_rows < 1), RAST_E_SCRATCH (some
+ * primitive does not fit even a one-row band). */
+RAST_API rast_status rast_render_bands(const rast_target *target, const rast_prim *prims,
+                                       uint32_t n, int32_t band_rows, void *scratch,
+                                       size_t scratch_bytes, rast_band_stats *stats);
+
+/* The same coverage handed to `span` (firmware pushing spans to a display
+ * with a framebuffer of a band, or none): band by band, in each band the
+ * primitives in order, each primitive's spans as its own spans call gives
+ * them.  The clip as for rast_fill_polygon_spans; errors as
+ * rast_render_bands, RAST_E_NULL also for clip or span, all before the
+ * first span. */
+RAST_API rast_status rast_render_bands_spans(const rast_prim *prims, uint32_t n,
+                                             const rast_rect *clip, int32_t band_rows,
+                                             rast_prim_span_fn span, void *user,
+                                             void *scratch, size_t scratch_bytes,
+                                             rast_band_stats *stats);
+
 #ifdef __cplusplus
 }
 #endif

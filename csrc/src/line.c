@@ -290,6 +290,25 @@ rast_status rast_draw_line(const rast_target *target, rast_point a, rast_point b
     return RAST_OK;
 }
 
+/* Check the points, then hand every segment's pixels inside clip to fn
+ * (the options are checked). */
+static rast_status rast__polyline(const rast_point *points, uint32_t npoints, int closed,
+                                  const rast__grid *g, const rast_line_opts *opts,
+                                  const rast_rect *clip, rast__row_fn fn, void *user)
+{
+    uint32_t k;
+    int dda = opts->algorithm == RAST_LINE_DDA;
+    if (npoints > RAST_MAX_POINTS) return RAST_E_TOO_MANY;
+    if (npoints > 0 && !points) return RAST_E_NULL;
+    for (k = 0; k < npoints; k++)
+        if (!rast__in_range(points[k])) return RAST_E_RANGE;
+    for (k = 0; k + 1 < npoints; k++)
+        rast__line_paint(points[k], points[k + 1], g, dda, clip, fn, user);
+    if (closed && npoints > 0)
+        rast__line_paint(points[npoints - 1], points[0], g, dda, clip, fn, user);
+    return RAST_OK;
+}
+
 rast_status rast_draw_polyline(const rast_target *target, const rast_point *points,
                                uint32_t npoints, int closed, const rast_line_opts *opts,
                                const void *pixel)
@@ -298,20 +317,26 @@ rast_status rast_draw_polyline(const rast_target *target, const rast_point *poin
     rast_rect clip;
     rast__solid solid;
     rast__row_fn fn;
-    uint32_t k;
-    int dda;
     rast_status st = rast__line_begin(target, opts, pixel, &g, &clip, &solid, &fn);
     if (st != RAST_OK) return st;
-    if (npoints > RAST_MAX_POINTS) return RAST_E_TOO_MANY;
-    if (npoints > 0 && !points) return RAST_E_NULL;
-    for (k = 0; k < npoints; k++)
-        if (!rast__in_range(points[k])) return RAST_E_RANGE;
-    dda = opts->algorithm == RAST_LINE_DDA;
-    for (k = 0; k + 1 < npoints; k++)
-        rast__line_paint(points[k], points[k + 1], &g, dda, &clip, fn, &solid);
-    if (closed && npoints > 0)
-        rast__line_paint(points[npoints - 1], points[0], &g, dda, &clip, fn, &solid);
-    return RAST_OK;
+    return rast__polyline(points, npoints, closed, &g, opts, &clip, fn, &solid);
+}
+
+rast_status rast_draw_polyline_spans(const rast_point *points, uint32_t npoints, int closed,
+                                     const rast_line_opts *opts, const rast_rect *clip,
+                                     rast_span_fn span, void *user)
+{
+    rast__grid g;
+    rast__user_spans u;
+    rast_rect c;
+    rast_status st = rast__line_check(opts, &g);
+    if (st != RAST_OK) return st;
+    if (!clip || !span) return RAST_E_NULL;
+    st = rast__span_clip(clip, &c);
+    if (st != RAST_OK) return st;
+    u.fn = span;
+    u.user = user;
+    return rast__polyline(points, npoints, closed, &g, opts, &c, rast__user_row, &u);
 }
 
 rast_status rast_line_pixels(rast_point a, rast_point b, const rast_line_opts *opts,

@@ -8,6 +8,7 @@
 #include <string.h>
 
 #include "check.h"
+#include "ref.h"
 #include "internal.h" /* rast__line_rows, rast__line_run: the line by formula */
 #include "rastrum.h"
 
@@ -35,40 +36,6 @@ static long pixels(rast_point a, rast_point b, int s, int center, int dda, const
     return (long)n;
 }
 
-static int64_t floordiv(int64_t a, int64_t b)
-{
-    int64_t q = a / b;
-    return (a % b < 0) ? q - 1 : q;
-}
-
-/* ---- a per-pixel reference, straight from the header ------------------------
- * Doubled coordinates (one pixel = U = 2^(s+1), sample offset O).  Major
- * pixel p is on the line iff its sample p*U + O lies between the endpoints;
- * its minor pixel is floor((y(p*U + O) - O + U/2) / U) with y the line
- * through the endpoints, as one fraction with a positive denominator. */
-static int ref_minor(rast_point a, rast_point b, int s, int center, int64_t p, int64_t *q)
-{
-    int64_t U = (int64_t)2 << s, O = center ? (int64_t)1 << s : 0;
-    int64_t ax = 2 * (int64_t)a.x, ay = 2 * (int64_t)a.y, bx = 2 * (int64_t)b.x, by = 2 * (int64_t)b.y;
-    int64_t adx = bx > ax ? bx - ax : ax - bx, ady = by > ay ? by - ay : ay - by, t;
-    int64_t xs = p * U + O;
-    if (ady > adx) { /* y-major: swap the axes */
-        t = ax; ax = ay; ay = t;
-        t = bx; bx = by; by = t;
-    }
-    if (bx < ax) { /* left to right */
-        t = ax; ax = bx; bx = t;
-        t = ay; ay = by; by = t;
-    }
-    if (xs < ax || xs > bx) return 0;
-    if (bx == ax) {
-        *q = floordiv(ay - O + U / 2, U);
-    } else {
-        *q = floordiv((ay - O + U / 2) * (bx - ax) + (xs - ax) * (by - ay), U * (bx - ax));
-    }
-    return 1;
-}
-
 /* The listed pixels are exactly ref_minor's, in order from a. */
 static int equals_ref(rast_point a, rast_point b, int s, int center, const int32_t *xy, long n)
 {
@@ -78,12 +45,12 @@ static int equals_ref(rast_point a, rast_point b, int s, int center, const int32
     int sm = bmaj >= amaj ? 1 : -1;
     long k = 0;
     /* samples p*2^s + o*2^s in [min, max]: in doubled units to keep o = 1/2 whole */
-    lo = -floordiv(-(2 * (amaj < bmaj ? amaj : bmaj) - O2 * U), 2 * U);
-    hi = floordiv(2 * (amaj > bmaj ? amaj : bmaj) - O2 * U, 2 * U);
+    lo = -ref_floor_div(-(2 * (amaj < bmaj ? amaj : bmaj) - O2 * U), 2 * U);
+    hi = ref_floor_div(2 * (amaj > bmaj ? amaj : bmaj) - O2 * U, 2 * U);
     if ((lo > hi ? 0 : hi - lo + 1) != n) return 0;
     for (p = sm > 0 ? lo : hi; k < n; p += sm, k++) {
         int32_t x = ymajor ? xy[2 * k + 1] : xy[2 * k], y = ymajor ? xy[2 * k] : xy[2 * k + 1];
-        if (!ref_minor(a, b, s, center, p, &q)) return 0;
+        if (!ref_line_minor(a, b, s, center, p, &q)) return 0;
         if (x != p || y != q) return 0;
     }
     return 1;
@@ -363,11 +330,7 @@ static void test_huge(void)
                 if (i < 0 || j < 0 || i >= W || j >= H) {
                     guard += v != GUARD;
                 } else {
-                    int64_t q;
-                    int ymajor = ((int64_t)b.y - a.y > 0 ? (int64_t)b.y - a.y : (int64_t)a.y - b.y) >
-                                 ((int64_t)b.x - a.x > 0 ? (int64_t)b.x - a.x : (int64_t)a.x - b.x);
-                    int want = ymajor ? (ref_minor(a, b, s, center, j, &q) && q == i)
-                                      : (ref_minor(a, b, s, center, i, &q) && q == j);
+                    int want = ref_line_has(a, b, s, center, i, j);
                     bad += v != want;
                     drawn += v;
                 }

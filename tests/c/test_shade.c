@@ -20,12 +20,6 @@
 
 static uint64_t scratch[1 << 12];
 
-static int64_t ref_floordiv(int64_t a, int64_t b)
-{
-    int64_t q = a / b;
-    return (a % b < 0) ? q - 1 : q;
-}
-
 static uint32_t rng_state = 77u;
 static uint32_t rng(void)
 {
@@ -262,9 +256,9 @@ static void test_limit_exact(void)
             int64_t px = 2 * i + 1 + 2 * (int64_t)M, py = 2 * j + 1;
             int64_t d1 = (int64_t)z[1] - z[0], d2 = (int64_t)z[2] - z[0];
             int64_t nz = px * d1 + 2 * py * d2; /* < 2^61 */
-            int64_t want = z[0] + ref_floordiv(2 * nz + L, 2 * L);
+            int64_t want = z[0] + ref_floor_div(2 * nz + L, 2 * L);
             int64_t nc = px * 255 + 2 * py * 100;
-            int64_t wc = ref_floordiv(2 * nc + L, 2 * L);
+            int64_t wc = ref_floor_div(2 * nc + L, 2 * L);
             if (zbuf[j * 16 + i] != want) okz = 0;
             if (img[j * 16 + i] != wc) okc = 0;
         }
@@ -330,9 +324,9 @@ static void test_division(void)
     for (k = 0; k < 200000; k++) {
         int64_t d = (int64_t)(rng64() >> (1 + rng() % 62)) % (((int64_t)1 << 62) - 1) + 1;
         int64_t n = k < 8 ? ns[k] : (int64_t)(rng64() >> (1 + rng() % 63)) * ((rng() & 1) ? 1 : -1);
-        int64_t want = ref_floordiv(n, d), q, r;
+        int64_t want = ref_floor_div(n, d), q, r;
         rast__recip rc;
-        if (n == INT64_MIN && d == 1) continue; /* ref_floordiv overflows */
+        if (n == INT64_MIN && d == 1) continue; /* ref_floor_div overflows */
         rast__recip_init(&rc, d);
         q = rast__recip_floordiv(&rc, n, &r);
         /* q d + r == n, in unsigned (modular) arithmetic: q d may pass

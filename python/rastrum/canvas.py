@@ -72,6 +72,13 @@ class Canvas:
         canvas._set(array, fmt)
         return canvas
 
+    def _writable(self):
+        """The target, once the array is known to be still writable (it may
+        have been made read-only after Canvas.wrap)."""
+        if not self._array.flags.writeable:
+            raise InputError("the canvas's array is read-only; nothing was drawn")
+        return self._target
+
     def _pixel(self, color):
         """The colour's pixel bytes as a cdata, remembered for the last colour."""
         try:
@@ -116,7 +123,7 @@ class Canvas:
         """
         opts = _core.fill_opts(algorithm, rule, subpixel_bits, sample_offset, rounding, boundary)
         pixel = self._pixel(color)
-        _core.fill_polygon(self._target, rings, pixel, opts, opts.subpixel_bits)
+        _core.fill_polygon(self._writable(), rings, pixel, opts, opts.subpixel_bits)
 
     def fill_triangle(self, tri, color, *, algorithm="edge", subpixel_bits=8, sample_offset=0.5,
                       rounding="exact", boundary="exact"):
@@ -128,7 +135,7 @@ class Canvas:
         """
         opts = _triangles.tri_opts(algorithm, subpixel_bits, sample_offset, rounding, boundary)
         batch = _triangles.tris_f64(tri, single=True)
-        _triangles.fill_triangles(self._target, batch, self._pixel(color), opts)
+        _triangles.fill_triangles(self._writable(), batch, self._pixel(color), opts, "tri")
 
     def fill_triangles(self, tris, color, *, algorithm="edge", subpixel_bits=8, sample_offset=0.5,
                        rounding="exact", boundary="exact"):
@@ -153,7 +160,7 @@ class Canvas:
         opts = _triangles.tri_opts(algorithm, subpixel_bits, sample_offset, rounding, boundary)
         batch = _triangles.tris_f64(tris)
         pixel = self._pixel(color)
-        _triangles.fill_triangles(self._target, batch, pixel, opts)
+        _triangles.fill_triangles(self._writable(), batch, pixel, opts)
 
     def line(self, p0, p1, color, *, algorithm="bresenham", subpixel_bits=8, sample_offset=0.5):
         """Paint `color` on the pixels of the segment p0 -> p1.
@@ -176,7 +183,7 @@ class Canvas:
         opts = _lines.line_opts(algorithm, subpixel_bits, sample_offset)
         a = _lines.snap_point(p0, opts.subpixel_bits, "p0")
         b = _lines.snap_point(p1, opts.subpixel_bits, "p1")
-        _core._check(lib.rast_draw_line(self._target, a, b, opts, self._pixel(color)))
+        _core._check(lib.rast_draw_line(self._writable(), a, b, opts, self._pixel(color)))
 
     def polyline(self, points, color, *, closed=False, algorithm="bresenham", subpixel_bits=8,
                  sample_offset=0.5):
@@ -199,10 +206,14 @@ class Canvas:
                [1, 0, 0, 0, 0]], dtype=uint8)
         """
         opts = _lines.line_opts(algorithm, subpixel_bits, sample_offset)
+        if not isinstance(closed, (bool, np.bool_)):
+            raise InputError("closed must be True or False, not %r" % (closed,))
         pts = _lines.snap_polyline(points, opts.subpixel_bits, 2)
         pixel = self._pixel(color)
-        _core._check(lib.rast_draw_polyline(self._target, ffi.from_buffer("rast_point[]", pts), len(pts),
-                                            1 if closed else 0, opts, pixel))
+        target = self._writable()
+        if len(pts):
+            _core._check(lib.rast_draw_polyline(target, ffi.from_buffer("rast_point[]", pts), len(pts),
+                                                1 if closed else 0, opts, pixel))
 
     def to_image(self):
         """A Pillow image (a copy): mode L, RGB or RGBA."""

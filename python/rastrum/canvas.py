@@ -22,6 +22,17 @@ class Canvas:
     "rgba8888" (H, W, 4), all uint8.  A colour is an int for gray8, or a
     sequence of 3 or 4 ints; a single int is used for every channel.
 
+    Bad input raises InputError (a ValueError) naming the argument and the
+    problem, before any pixel is written: sizes that are negative, not
+    ints or past 2**30 - 1; unknown formats; colours out of 0..255 or of
+    the wrong length or type; NaN, infinite, out-of-range or non-real
+    coordinates; too few vertices; unknown names; and drawing while the
+    array is read-only (made so after ``Canvas.wrap``).  Empty input (no
+    rings, no triangles, no points) draws nothing and is not an error; a
+    canvas of width or height 0 is fine and never drawn on.  ``save``
+    raises what Pillow raises (ValueError for an unknown file extension,
+    OSError for a path it cannot write).
+
     Examples
     --------
     >>> import rastrum
@@ -46,7 +57,11 @@ class Canvas:
         The format follows from the shape when not given: (H, W) is gray8,
         (H, W, 3) rgb888, (H, W, 4) rgba8888.  The array must be writable
         and each row's pixels contiguous (any row stride, so a slice
-        ``big[10:-10, 10:-10]`` works).
+        ``big[10:-10, 10:-10]`` works).  InputError otherwise: not a numpy
+        array, not uint8, another shape, a format that does not match,
+        read-only (also a broadcast view), a column stride or reversed
+        rows.  If the array is made read-only later, drawing raises
+        InputError and writes nothing.
         """
         if not isinstance(array, np.ndarray):
             raise InputError("Canvas.wrap needs a numpy array, not %s" % type(array).__name__)
@@ -119,7 +134,7 @@ class Canvas:
         """Paint `color` on every pixel whose sample is inside the polygon.
 
         Arguments as :func:`rastrum.polygon_mask`.  Nothing is written when
-        an argument is bad (an InputError says which).
+        an argument is bad (an InputError says which; see the class).
         """
         opts = _core.fill_opts(algorithm, rule, subpixel_bits, sample_offset, rounding, boundary)
         pixel = self._pixel(color)
@@ -191,7 +206,8 @@ class Canvas:
         also the last point -> the first (an outline).
 
         Each segment is :meth:`line`; a vertex shared by two segments is
-        painted by both.  `points` is an (N, 2) array-like, N >= 2.
+        painted by both.  `points` is an (N, 2) array-like, N >= 2 (N = 0
+        draws nothing; N = 1 is an InputError); `closed` is a bool.
 
         Examples
         --------

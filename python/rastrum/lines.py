@@ -41,7 +41,8 @@ def snap_point(p, s, what="point"):
         shape = None
     if shape != (2,):
         raise InputError("%s must be a pair (x, y), not %r" % (what, p))
-    (x, y), = _core.snap_points([p], s, what).tolist()
+    p = _core.real_array(p, what, "a pair (x, y)")
+    (x, y), = _core.snap_points(p.reshape(1, 2), s, what).tolist()
     return ffi.new("rast_point *", [x, y])[0]
 
 
@@ -120,8 +121,9 @@ def line_pixels(p0, p1, *, algorithm="bresenham", subpixel_bits=8, sample_offset
     Raises
     ------
     InputError (a ValueError)
-        Unknown names, coordinates that are not finite or out of range,
-        a bad clip.
+        Naming the argument: p0 or p1 not a pair of real numbers, NaN,
+        infinite or out of range; a bad clip; an unknown name or option
+        value.
 
     Examples
     --------
@@ -169,6 +171,13 @@ def point_in_triangle(p, tri, *, method="owner", subpixel_bits=8):
     Returns
     -------
     bool
+
+    Raises
+    ------
+    InputError (a ValueError)
+        Naming the argument: p not a pair, tri not of shape (3, 2), a
+        coordinate that is not a real number, NaN, infinite or out of
+        range; an unknown method or a bad subpixel_bits.
 
     Examples
     --------

@@ -126,8 +126,13 @@ def triangles_mask(tris, shape, *, algorithm="edge", subpixel_bits=8, sample_off
     Raises
     ------
     InputError (a ValueError)
-        A batch not of shape (N, 3, 2), NaN or infinite coordinates,
-        coordinates out of range, a bad shape, unknown names.
+        Its message names the argument and the problem: a batch not of
+        shape (N, 3, 2), a NaN, infinite or out-of-range coordinate (which
+        triangle and vertex), coordinates that are not real numbers (bool,
+        complex, str, None), a bad `shape`, an unknown name or option
+        value.  An empty batch is not an error: the result is all 0.
+    MemoryError
+        When numpy cannot allocate the (H, W) result.
 
     Examples
     --------

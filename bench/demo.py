@@ -24,8 +24,9 @@ Writes into DIR (default ./out):
 - star200_67.png    the self-intersecting {200/67} star, even-odd | non-zero.
 - canvas.png        an rgb888 Canvas composition.
 
-then prints the benchmark table (bench.main) and the triangle table
-(bench_triangles.main); --no-bench skips both.
+then prints the benchmark table (bench.main), the triangle table
+(bench_triangles.main) and the threads table (bench_threads.main, a few
+seconds); --no-bench skips them.
 """
 
 from __future__ import annotations
@@ -283,6 +284,9 @@ def main(argv=None):
         import bench_triangles
         print("\n== triangles (bench/bench_triangles.py)", flush=True)
         bench_triangles.main(["--quick"] if args.quick else [])
+        import bench_threads
+        print("\n== threads: the same work on 1, 2, 4 threads (bench/bench_threads.py --quick)", flush=True)
+        bench_threads.main(["--quick"])
     return written
 
 

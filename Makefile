@@ -63,7 +63,7 @@ build/librastrum.so: $(PIC_OBJ)
 	ln -sf librastrum.so.$(VERSION) build/$(SONAME)
 	ln -sf $(SONAME) $@
 
-build/tests/%: tests/c/%.c build/librastrum.a tests/c/check.h tests/c/ref.h
+build/tests/%: tests/c/%.c build/librastrum.a tests/c/check.h tests/c/ref.h tests/c/scratch.h
 	@mkdir -p $(@D)
 	@$(CC) $(ALL_CFLAGS) -Wno-conversion -Itests/c $< build/librastrum.a -o $@
 

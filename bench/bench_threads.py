@@ -10,7 +10,10 @@ median time and the speed-up t(1) / t(k).  Entry points whose calls are
 small (a line, a 30-vertex mask) spend much of each call in Python, under
 the GIL, and scale less: that share is what the table shows.
 
-The machine has 2 cores (shared): 4 threads cannot beat 2.
+The machine has 2 cores (shared): 4 threads cannot beat 2, and when other
+work keeps a core busy, 2 cannot beat 1 either.  The first row is a
+control that is not rastrum (numpy's matrix product, which also releases
+the GIL): it shows what the machine gives at the time of the run.
 
 ``python bench/bench_threads.py [--quick]``; ``run(quick)`` returns the rows.
 """
@@ -62,7 +65,15 @@ def workloads(rastrum, quick):
     def canvas():
         return rastrum.Canvas(1024, 1024, format="gray8")
 
+    spiky = star(200, 60, 120, 128, 128)
+    mat = rng.uniform(0, 1, (200, 200))
     return {
+        # What the machine gives at the moment: numpy's matrix product also
+        # runs without the GIL (single-threaded BLAS, see the top).
+        "control: numpy 200² matmul": ([lambda out: mat @ mat] * (40 * scale), lambda: None),
+        "polygon_mask 256² winding (C-bound)": (
+            [lambda out: rastrum.polygon_mask(spiky, (256, 256), algorithm="winding")] * (8 * scale),
+            lambda: None),
         "polygon_mask 1024² star": (
             [lambda out, s=s: rastrum.polygon_mask(s, (1024, 1024)) for s, _ in masks], lambda: None),
         "polygon_mask 30 px (many calls)": (

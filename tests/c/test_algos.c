@@ -19,7 +19,6 @@
 #define PAD 16
 #define MAXW 300
 #define STRIDE (MAXW + 2 * PAD)
-#define SCRATCH_GUARD 64
 
 /* ---- the reference: ref.h, DESIGN section 1 one sample at a time ---------- */
 typedef struct {
@@ -48,6 +47,7 @@ static uint32_t rng(void)
 /* ---- filling with guards ------------------------------------------------------ */
 
 static uint64_t scratch_mem[(1 << 25) / 8]; /* 32 MiB: the AET of 196608 vertices */
+#include "scratch.h"
 static const char *algo_name(int a)
 {
     const char *name = "?";
@@ -65,25 +65,6 @@ static rast_fill_opts make_opts(int algo, int rule, const grid *gr)
     o.sample = gr->center ? RAST_SAMPLE_CENTER : RAST_SAMPLE_CORNER;
     o.rounding = gr->textbook ? RAST_ROUND_TEXTBOOK : RAST_ROUND_EXACT;
     return o;
-}
-
-/* Scratch of exactly `need` bytes (aligned), followed by guard bytes.
- * Returns NULL if scratch_mem is too small. */
-static unsigned char *scratch_for(size_t need)
-{
-    size_t cap = sizeof scratch_mem, start;
-    if (need > cap - SCRATCH_GUARD) return NULL;
-    start = (cap - SCRATCH_GUARD - need) & ~(size_t)(RAST_SCRATCH_ALIGN - 1);
-    memset((unsigned char *)scratch_mem + start + need, GUARD, SCRATCH_GUARD);
-    return (unsigned char *)scratch_mem + start;
-}
-
-static int scratch_guard_ok(const unsigned char *s, size_t need)
-{
-    size_t k;
-    for (k = 0; k < SCRATCH_GUARD && s + need + k < (unsigned char *)scratch_mem + sizeof scratch_mem; k++)
-        if (s[need + k] != GUARD) return 0;
-    return 1;
 }
 
 /* Fill into a guarded w x h gray8 buffer over `background` (solid painter

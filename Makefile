@@ -5,7 +5,8 @@
 #   make demo            render the demo scenes to out/ and print the speed table
 #   make asan            C and Python tests under AddressSanitizer + UBSan
 #   make strict          the core under gcc and clang, -std=c99 -pedantic -Werror
-#   make valgrind        C tests under valgrind memcheck
+#   make valgrind        C tests under valgrind memcheck, then valgrind-py
+#   make valgrind-py     a quick profile of the Python tests under memcheck
 #   make firmware-check  the core for Cortex-M0 and rv32: no float, heap or stdio; .text sizes
 #   make cross-check     C tests on 32-bit ARM and big-endian MIPS (qemu), same pixels as x86
 #   make install         PREFIX=/usr/local DESTDIR= : header, libraries, rastrum.pc
@@ -43,7 +44,7 @@ SONAME  := librastrum.so.$(VERSION_MAJOR)
 C_TESTS := $(patsubst tests/c/%.c,build/tests/%,$(wildcard tests/c/test_*.c))
 SAN     := -fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer -g
 
-.PHONY: fuzz-check fuzz-regress display-example valgrind firmware-check cross-check all lib test test-c test-install test-py demo asan asan-c asan-py strict install uninstall example clean
+.PHONY: fuzz-check fuzz-regress display-example valgrind valgrind-py firmware-check cross-check all lib test test-c test-install test-py demo asan asan-c asan-py strict install uninstall example clean
 
 all: lib
 lib: build/librastrum.a build/librastrum.so
@@ -65,7 +66,7 @@ build/librastrum.so: $(PIC_OBJ)
 	ln -sf librastrum.so.$(VERSION) build/$(SONAME)
 	ln -sf $(SONAME) $@
 
-build/tests/%: tests/c/%.c build/librastrum.a tests/c/check.h tests/c/ref.h
+build/tests/%: tests/c/%.c build/librastrum.a tests/c/check.h tests/c/ref.h tests/c/scratch.h
 	@mkdir -p $(@D)
 	@$(CC) $(ALL_CFLAGS) -Wno-conversion -Itests/c $< build/librastrum.a -o $@
 
@@ -140,6 +141,23 @@ strict:
 valgrind: $(C_TESTS)
 	@for t in $(C_TESTS); do echo "== $$t (memcheck)"; \
 	  valgrind -q --error-exitcode=1 --leak-check=full ./$$t || exit 1; done
+	@$(MAKE) --no-print-directory valgrind-py
+
+# A quick profile of the Python tests under memcheck, against an extension
+# built with -g: the real interpreter binary (not a pyenv shim, which
+# valgrind would not follow into), PYTHONMALLOC=malloc so that memcheck
+# sees every allocation, and the suppressions of CPython's own noise
+# (tools/valgrind-python.supp; never a frame of rastrum).  A few minutes.
+VALGRIND_PY_TESTS ?= tests/test_bad_input.py tests/test_threads.py tests/test_snapping.py
+VALGRIND_PY_K ?= NaN or empty or contiguous or only or zero or Fortran or gil or disjoint or snap
+valgrind-py:
+	rm -rf build/valgrind-py
+	RASTRUM_CFLAGS="-g -O1" $(PYTHON) -m pip install --quiet --no-deps --no-build-isolation \
+	  --target build/valgrind-py/lib .
+	PYTHONMALLOC=malloc RASTRUM_HYPOTHESIS_PROFILE=valgrind PYTHONPATH=build/valgrind-py/lib \
+	  valgrind -q --error-exitcode=1 --suppressions=tools/valgrind-python.supp \
+	  "$$($(PYTHON) -c 'import sys; print(sys.executable)')" -m pytest -q -p no:cacheprovider \
+	  -k "$(VALGRIND_PY_K)" $(VALGRIND_PY_TESTS)
 
 # ---- bare metal --------------------------------------------------------------
 firmware-check:

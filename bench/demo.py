@@ -33,8 +33,9 @@ Writes into DIR (default ./out):
 - gouraud_polygon.png   Figure 3-19's polygon with a colour per vertex,
                     shaded by the AET (edge, then span).
 
-then prints the benchmark table (bench.main) and the triangle table
-(bench_triangles.main); --no-bench skips both.
+then prints the benchmark table (bench.main), the triangle table
+(bench_triangles.main) and the threads table (bench_threads.main, a few
+seconds); --no-bench skips them.
 """
 
 from __future__ import annotations
@@ -373,6 +374,9 @@ def main(argv=None):
         import bench_shade
         print("\n== shading (bench/bench_shade.py)", flush=True)
         bench_shade.main(["--quick"] if args.quick else [])
+        import bench_threads
+        print("\n== threads: the same work on 1, 2, 4 threads (bench/bench_threads.py --quick)", flush=True)
+        bench_threads.main(["--quick"])
     return written
 
 

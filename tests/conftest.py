@@ -5,7 +5,8 @@ Select a profile with the environment variable RASTRUM_HYPOTHESIS_PROFILE:
 * ``default`` -- 100 examples per hypothesis test (per parametrization);
 * ``ci``      -- the same counts, no example database, derandomised so that
   a CI failure reproduces on a developer machine;
-* ``quick``   -- about a fifth of the examples, for slow runs (sanitizers).
+* ``quick``   -- about a fifth of the examples, for slow runs (sanitizers);
+* ``valgrind`` -- 5 examples, derandomised (make valgrind-py).
 
 Profiles only change how many examples run; no assertion depends on them.
 Tests that want more or fewer examples than the profile's base scale their
@@ -29,9 +30,13 @@ settings.register_profile("default", max_examples=100, **_common)
 settings.register_profile("ci", max_examples=100, database=None,
                           derandomize=True, **_common)
 settings.register_profile("quick", max_examples=20, **_common)
+# make valgrind-py: memcheck runs Python ~50x slower; a handful of examples
+# each, derandomised so that a report reproduces.
+settings.register_profile("valgrind", max_examples=5, database=None,
+                          derandomize=True, **_common)
 
 _profile = os.environ.get("RASTRUM_HYPOTHESIS_PROFILE", "default")
-if _profile not in ("default", "ci", "quick"):
+if _profile not in ("default", "ci", "quick", "valgrind"):
     raise RuntimeError(
-        f"RASTRUM_HYPOTHESIS_PROFILE={_profile!r}: expected default, ci or quick")
+        f"RASTRUM_HYPOTHESIS_PROFILE={_profile!r}: expected default, ci, quick or valgrind")
 settings.load_profile(_profile)

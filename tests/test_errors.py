@@ -37,7 +37,6 @@ BAD_RINGS = [
     ([np.zeros((3, 2, 1))], r"shape|\(N, ?2\)|dim"),
     ([(0, 0), (1, 1)], r"3|three|point|vert"),
     ([[(0, 0), (4, 0), (0, 4)], [(1, 1), (2, 2)]], r"3|three|point|vert"),
-    ([np.zeros((0, 2))], r"3|three|point|vert|empty"),
     ([(0, 0), ((COORD_MAX + 1) / 256, 0), (0, 3)], r"range|limit|large"),
     ([(0, 0), (3, 0), (0, -(COORD_MAX + 1) / 256)], r"range|limit|large"),
     ([(0, 0), (1e300, 0), (0, 3)], r"range|limit|large"),
@@ -48,6 +47,14 @@ BAD_RINGS = [
 def test_bad_rings(rings, pattern):
     with raises_input_error(pattern):
         rastrum.polygon_mask(rings, SHAPE)
+
+
+def test_empty_rings_are_nothing():
+    # Defined in issue 5: empty input draws nothing; it is not an error
+    # (a ring of 1 or 2 points still is).  See test_bad_input.py.
+    full = rastrum.polygon_mask(TRI, SHAPE)
+    assert not rastrum.polygon_mask([np.zeros((0, 2))], SHAPE).any()
+    assert np.array_equal(rastrum.polygon_mask([TRI, np.zeros((0, 2))], SHAPE), full)
 
 
 def test_range_depends_on_subpixel_bits():

@@ -450,6 +450,30 @@ RAST_API rast_status rast_fill_polygon_spans(const rast_polygon *polygon,
                                              void *scratch,
                                              size_t scratch_bytes);
 
+/* The part of `clip` that a fill of `polygon` with `opts` can paint: every
+ * pixel that rast_fill_polygon, rast_fill_polygon_opaque's `pixel` or
+ * rast_fill_polygon_spans gives the polygon (with a boundary mode, its
+ * edges' pixels too) lies in *bounds, a rectangle inside *clip; it is
+ * empty (x0 == x1 and y0 == y1) when there are none.  With the exact
+ * boundary it is the box the fillers work in; with the others, the
+ * vertices' pixel hull grown by one pixel each side.
+ * What it is for: a fill with its clip (target->clip, or the span clip) set
+ * to *bounds paints the same pixels and needs only
+ * rast_scratch_size(opts, npoints, bounds width, bounds height) bytes of
+ * scratch.  For the mask algorithms (edgefill, fence, edgeflag), whose
+ * scratch grows with the clip's pixels, that is the polygon's box instead
+ * of the clip: a small polygon in a huge clip needs little.  (An opaque
+ * fill so cut leaves the pixels outside *bounds to its caller: they are
+ * all background.)  The clip's coordinates must lie in
+ * -RAST_MAX_DIM..RAST_MAX_DIM; x1 < x0 or y1 < y0 is an empty clip.
+ * Errors: RAST_E_NULL, RAST_E_RANGE, RAST_E_TOO_MANY, RAST_E_SIZE (the
+ * clip), and the option errors of rast_scratch_size; nothing is written
+ * to *bounds on error. */
+RAST_API rast_status rast_fill_bounds(const rast_fill_opts *opts,
+                                      const rast_polygon *polygon,
+                                      const rast_rect *clip,
+                                      rast_rect *bounds);
+
 /* ---- triangles --------------------------------------------------------------
  * A batch is `ntris` triangles, tris[3k], tris[3k+1], tris[3k+2], in fixed
  * point as polygon vertices (same units and range).  Each triangle owns

@@ -2,16 +2,11 @@
  * aet.c - the active edge table filler (seed 001, section 3.4); the walk
  * itself is in aet.h.
  *
- * A bucket edge table holds each edge under the first visible row it
- * crosses; the active edge table holds the edges crossing the current row,
- * sorted by their crossing column.  Each row: move the row's bucket into the
- * AET, pair the crossings into spans (even-odd) or sum their directions
- * (non-zero), then drop the edges that end and step the others one row down
- * with the exact DDA.  Insertion sort keeps the AET ordered: from one row to
- * the next the order changes only where edges cross, so it is nearly sorted.
+ * (How the walk works, and how a row's new edges join the AET in
+ * O(k log k + n): aet.h.)
  *
  * Scratch: the edge table and the AET (an edge record each) and one bucket
- * head per visible row.
+ * per visible row (where its run of the table ends).
  */
 #include "aet.h"
 

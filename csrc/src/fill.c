@@ -5,6 +5,7 @@
  * written.
  */
 #include "paint.h"
+#include "poly.h"
 #include "registry.h"
 
 static rast_status rast__check_opts(const rast_fill_opts *o, rast__grid *g,
@@ -148,4 +149,70 @@ rast_status rast_fill_polygon_spans(const rast_polygon *polygon,
     u.fn = span;
     u.user = user;
     return rast__fill(polygon, opts, &c, rast__user_row, &u, scratch, scratch_bytes);
+}
+
+/* floor(v / 2^s) for a fixed-point coordinate, in pixels. */
+static int64_t rast__pixel_floor(int32_t v, int32_t s)
+{
+    return rast__floordiv(v, (int64_t)1 << s);
+}
+
+rast_status rast_fill_bounds(const rast_fill_opts *opts, const rast_polygon *polygon,
+                             const rast_rect *clip, rast_rect *bounds)
+{
+    const rast__algo *al;
+    rast__grid g;
+    rast_rect c, out;
+    rast__box box;
+    uint32_t npoints, i;
+    rast_status st;
+
+    if (!clip || !bounds) return RAST_E_NULL;
+    st = rast__check_opts(opts, &g, &al);
+    if (st != RAST_OK) return st;
+    st = rast__check_polygon(polygon, &npoints);
+    if (st != RAST_OK) return st;
+    st = rast__span_clip(clip, &c);
+    if (st != RAST_OK) return st;
+    out.x0 = out.x1 = c.x0; /* empty unless something below says otherwise */
+    out.y0 = out.y1 = c.y0;
+    if (opts->boundary == RAST_BOUNDARY_EXACT) {
+        /* The box the fillers themselves work in (poly.h). */
+        if (rast__poly_box(polygon, npoints, &g, &c, &box)) {
+            out.x0 = box.col0;
+            out.x1 = box.col1;
+            out.y0 = box.row0;
+            out.y1 = box.row1;
+        }
+    } else if (npoints > 0) {
+        /* The edges' pixels too: a pixel of the library's line, or one that
+         * an edge passes through, lies within a pixel of the vertices'
+         * pixel hull [floor(min), floor(max)]; and so does every sample the
+         * fill owns under either rounding.  One more pixel each side. */
+        const rast_point *pts = polygon->points;
+        int32_t minx = pts[0].x, maxx = pts[0].x, miny = pts[0].y, maxy = pts[0].y;
+        int64_t x0, x1, y0, y1;
+        for (i = 1; i < npoints; i++) {
+            if (pts[i].x < minx) minx = pts[i].x;
+            if (pts[i].x > maxx) maxx = pts[i].x;
+            if (pts[i].y < miny) miny = pts[i].y;
+            if (pts[i].y > maxy) maxy = pts[i].y;
+        }
+        x0 = rast__pixel_floor(minx, opts->subpixel_bits) - 1;
+        x1 = rast__pixel_floor(maxx, opts->subpixel_bits) + 2;
+        y0 = rast__pixel_floor(miny, opts->subpixel_bits) - 1;
+        y1 = rast__pixel_floor(maxy, opts->subpixel_bits) + 2;
+        if (x0 < c.x0) x0 = c.x0;
+        if (x1 > c.x1) x1 = c.x1;
+        if (y0 < c.y0) y0 = c.y0;
+        if (y1 > c.y1) y1 = c.y1;
+        if (x0 < x1 && y0 < y1) {
+            out.x0 = (int32_t)x0;
+            out.x1 = (int32_t)x1;
+            out.y0 = (int32_t)y0;
+            out.y1 = (int32_t)y1;
+        }
+    }
+    *bounds = out;
+    return RAST_OK;
 }

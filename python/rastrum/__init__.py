@@ -73,8 +73,15 @@ def polygon_mask(rings, shape, *, rule="evenodd", algorithm="aet", subpixel_bits
     Raises
     ------
     InputError (a ValueError)
-        Bad shapes, NaN or infinite coordinates, coordinates out of range,
-        rings of fewer than 3 points, unknown names.
+        Its message names the argument and the problem: a bad `shape`
+        (negative, not two ints, past 2**30 - 1), a NaN, infinite or
+        out-of-range coordinate (which ring and point), coordinates that
+        are not real numbers (bool, complex, str, None), a ring of 1 or 2
+        points or not of shape (N, 2), an unknown name or option value.
+        Empty input (no rings, or rings of no points) is not an error: the
+        mask is all False.  Non-contiguous or read-only arrays are fine.
+    MemoryError
+        When numpy cannot allocate the (H, W) mask.
 
     Examples
     --------

@@ -73,6 +73,7 @@ long rastpy_fill_polygon_gouraud(const rast_target *target, const double *xy,
 GLUE_SOURCE = r"""
 #include <math.h>
 #include <stdlib.h>
+#include <string.h>
 #include "rastrum.h"
 
 #define RASTPY_E_NOMEM (-1000)
@@ -177,11 +178,32 @@ long rastpy_snap_points(const double *xy, size_t npoints, int s, int32_t *out)
     return rastpy_snap(xy, npoints, s, out);
 }
 
+/* Paint the pixels of rectangle r (inside the target) with the pixel
+ * bytes px: the background outside a cut opaque fill. */
+static void rastpy_paint_rect(const rast_target *t, rast_rect r, const void *px)
+{
+    int32_t bpp = 1, x, y;
+    rast_format_bytes(t->format, &bpp);
+    for (y = r.y0; y < r.y1; y++) {
+        unsigned char *row = (unsigned char *)t->pixels + (ptrdiff_t)y * t->stride + (ptrdiff_t)r.x0 * bpp;
+        if (bpp == 1)
+            memset(row, *(const unsigned char *)px, (size_t)(r.x1 - r.x0));
+        else
+            for (x = r.x0; x < r.x1; x++) memcpy(row + (ptrdiff_t)(x - r.x0) * bpp, px, (size_t)bpp);
+    }
+}
+
 /* Snap, then rast_fill_polygon (or rast_fill_polygon_opaque when
  * background is not NULL, or rast_fill_polygon_gouraud when shade is not
- * NULL) with scratch from malloc.  ring_sizes NULL means one ring of all
- * the points.  Returns 0, a negative rast_status (or RASTPY_E_NOMEM), or
- * k + 1 when point k is bad (see rastpy_snap). */
+ * NULL) with scratch from malloc.  The fill's clip is cut to
+ * rast_fill_bounds first, so that the scratch grows with the polygon's
+ * box, not with the target (the mask algorithms need a bit, or a counter,
+ * per clip pixel); an opaque fill's background outside the cut is painted
+ * here (rastpy_paint_rect: byte formats, which is what the opaque path,
+ * rastpy_mask_polygon's gray8, uses), after the core has accepted every
+ * argument.  ring_sizes NULL means one ring of all the points.  Returns 0,
+ * a negative rast_status (or RASTPY_E_NOMEM), or k + 1 when point k is bad
+ * (see rastpy_snap). */
 static long rastpy_poly(const rast_target *target, const double *xy,
                         uint32_t npoints, const uint32_t *ring_sizes,
                         uint32_t nrings, const rast_fill_opts *opts,
@@ -189,29 +211,57 @@ static long rastpy_poly(const rast_target *target, const double *xy,
                         const uint8_t *colors, const rast_shade_opts *shade)
 {
     rast_polygon poly;
+    rast_target cut = *target;
+    rast_rect c = target->clip, b;
     rast_status st;
-    size_t need, head = ((size_t)npoints * sizeof(rast_point) + 15) & ~(size_t)15;
-    unsigned char *mem;
+    size_t need;
+    int32_t *pts;
+    void *scratch;
     long bad;
-    st = shade ? rast_polygon_gouraud_scratch_size(npoints, target->clip.x1 - target->clip.x0,
-                                                   target->clip.y1 - target->clip.y0, &need)
-               : rast_scratch_size(opts, npoints, target->clip.x1 - target->clip.x0,
-                                   target->clip.y1 - target->clip.y0, &need);
-    if (st != RAST_OK) return st;
-    mem = (unsigned char *)malloc(head + need + 1);
-    if (!mem) return RASTPY_E_NOMEM;
-    bad = rastpy_snap(xy, npoints, opts->subpixel_bits, (int32_t *)mem);
+    pts = (int32_t *)malloc((size_t)npoints * sizeof(rast_point) + 1);
+    if (!pts) return RASTPY_E_NOMEM;
+    bad = rastpy_snap(xy, npoints, opts->subpixel_bits, pts);
     if (bad >= 0) {
-        free(mem);
+        free(pts);
         return bad + 1;
     }
-    poly.points = (const rast_point *)mem;
+    poly.points = (const rast_point *)pts;
     poly.ring_sizes = ring_sizes ? ring_sizes : &npoints;
     poly.nrings = ring_sizes ? nrings : 1;
-    st = shade ? rast_fill_polygon_gouraud(target, &poly, colors, opts, shade, mem + head, need)
-         : background ? rast_fill_polygon_opaque(target, &poly, opts, pixel, background, mem + head, need)
-                      : rast_fill_polygon(target, &poly, opts, pixel, mem + head, need);
-    free(mem);
+    /* The target's clip cut to the target, as the core cuts it. */
+    if (c.x0 < 0) c.x0 = 0;
+    if (c.y0 < 0) c.y0 = 0;
+    if (c.x1 > target->width) c.x1 = target->width;
+    if (c.y1 > target->height) c.y1 = target->height;
+    st = rast_fill_bounds(opts, &poly, &c, &b);
+    if (st == RAST_OK)
+        st = shade ? rast_polygon_gouraud_scratch_size(npoints, b.x1 - b.x0, b.y1 - b.y0, &need)
+                   : rast_scratch_size(opts, npoints, b.x1 - b.x0, b.y1 - b.y0, &need);
+    if (st != RAST_OK) {
+        free(pts);
+        return st;
+    }
+    scratch = malloc(need + 1);
+    if (!scratch) {
+        free(pts);
+        return RASTPY_E_NOMEM;
+    }
+    cut.clip = b;
+    st = shade ? rast_fill_polygon_gouraud(&cut, &poly, colors, opts, shade, scratch, need)
+         : background ? rast_fill_polygon_opaque(&cut, &poly, opts, pixel, background, scratch, need)
+                      : rast_fill_polygon(&cut, &poly, opts, pixel, scratch, need);
+    free(scratch);
+    free(pts);
+    if (st == RAST_OK && background && c.x0 < c.x1 && c.y0 < c.y1) {
+        /* Above, below, left and right of the cut. */
+        rast_rect r;
+        if (b.x0 == b.x1 || b.y0 == b.y1) b.y0 = b.y1 = c.y1; /* nothing cut: all background */
+        r = c; r.y1 = b.y0; rastpy_paint_rect(target, r, background);
+        r = c; r.y0 = b.y1; rastpy_paint_rect(target, r, background);
+        r.y0 = b.y0; r.y1 = b.y1;
+        r.x0 = c.x0; r.x1 = b.x0; rastpy_paint_rect(target, r, background);
+        r.x0 = b.x1; r.x1 = c.x1; rastpy_paint_rect(target, r, background);
+    }
     return st;
 }
 
@@ -295,7 +345,11 @@ long rastpy_fill_polygon_gouraud(const rast_target *target, const double *xy,
 }
 
 /* For the tests: does the thread running a C call hold the GIL?  cffi
- * releases it around every call, so this answers 0. */
+ * releases it around every call, so this answers 0.  Declared here because
+ * cffi compiles against the limited API, whose Python.h leaves it out
+ * (the symbol is in every CPython since 3.4); without the declaration it
+ * is an implicit one, an error for newer compilers. */
+int PyGILState_Check(void);
 int rastpy_gil_held(void)
 {
     return PyGILState_Check();

@@ -123,22 +123,41 @@ def boundary_code(boundary):
     return BOUNDARIES[_name(boundary, "boundary", BOUNDARIES)]
 
 
-def snap_points(xy, s):
+def real_array(x, what, shape_text):
+    """`x` as a float64 array, C-contiguous (a copy when it is not), or
+    InputError naming `what`: coordinates must be real numbers (ints or
+    floats; bool, complex, strings and None are refused, not converted)."""
+    if x is None:
+        raise InputError("%s must be %s of numbers, not None" % (what, shape_text))
+    try:
+        a = np.asarray(x)
+    except (TypeError, ValueError):  # e.g. ragged nesting
+        raise InputError("%s must be %s of numbers" % (what, shape_text)) from None
+    kind = a.dtype.kind
+    if kind == "O":
+        try:
+            a = a.astype(np.float64)
+        except (TypeError, ValueError):
+            raise InputError("%s must be %s of real numbers" % (what, shape_text)) from None
+    elif kind not in "iuf":
+        raise InputError("%s must be %s of real numbers (int or float), not dtype %s"
+                         % (what, shape_text, a.dtype))
+    return np.ascontiguousarray(a, dtype=np.float64)
+
+
+def snap_points(xy, s, what="points"):
     """float (N, 2) array-like -> int32 (N, 2) array on the 1/2^s grid,
     snapped exactly as the fills snap; InputError names a bad point."""
     s = _subpixel_bits(s)
-    try:
-        pts = np.ascontiguousarray(xy, dtype=np.float64)
-    except (TypeError, ValueError):
-        raise InputError("points must be numbers, not %r" % (xy,)) from None
+    pts = real_array(xy, what, "an (N, 2) array-like")
     if pts.ndim != 2 or pts.shape[1] != 2:
-        raise InputError("points must have shape (N, 2), not %s" % (pts.shape,))
+        raise InputError("%s must have shape (N, 2), not %s" % (what, pts.shape))
     out = np.empty(pts.shape, np.int32)
     bad = lib.rastpy_snap_points(
         ffi.from_buffer("double[]", pts), len(pts), s, ffi.from_buffer("int32_t[]", out)
     )
     if bad >= 0:
-        _check_glue(bad + 1, pts, s)
+        _check_glue(bad + 1, pts, s, what)
     return out
 
 
@@ -230,17 +249,17 @@ def _ring_list(rings):
 
 
 def rings_f64(rings):
-    """The rings as checked, C-contiguous float64 (N, 2) arrays."""
+    """The rings as checked, C-contiguous float64 (N, 2) arrays.  A ring of
+    no points is nothing (dropped): empty input draws nothing."""
     arrays = []
     for k, ring in enumerate(_ring_list(rings)):
-        try:
-            a = np.ascontiguousarray(ring, dtype=np.float64)
-        except (TypeError, ValueError):
-            raise InputError("ring %d is not an (N, 2) array of numbers" % k) from None
+        a = real_array(ring, "rings: ring %d" % k, "an (N, 2) array-like")
+        if a.size == 0 and a.ndim <= 2:
+            continue  # [] or np.zeros((0, 2))
         if a.ndim != 2 or a.shape[1] != 2:
-            raise InputError("ring %d must have shape (N, 2), not %s" % (k, a.shape))
+            raise InputError("rings: ring %d must have shape (N, 2), not %s" % (k, a.shape))
         if a.shape[0] < 3:
-            raise InputError("ring %d has %d points; a ring needs at least 3" % (k, a.shape[0]))
+            raise InputError("rings: ring %d has %d points; a ring needs at least 3" % (k, a.shape[0]))
         arrays.append(a)
     return arrays
 
@@ -290,15 +309,39 @@ def _points(rings):
     return pts, sizes, len(arrays)
 
 
-def _check_glue(result, pts, s):
+def bad_point_message(what, pts, k, s, sizes=None):
+    """Why point k of `pts` (float64 (N, 2)) was refused: NaN, infinite or
+    out of range at subpixel_bits=s.  With `sizes` (the ring sizes), say
+    which ring and point; with sizes an int (3), which triangle and vertex."""
+    x, y = pts[k].tolist()
+    where = "point %d " % k if len(pts) > 1 else ""
+    if isinstance(sizes, int):
+        where = "triangle %d, vertex %d " % (k // sizes, k % sizes)
+    elif sizes is not None:
+        ring = 0
+        while k >= sizes[ring]:
+            k -= sizes[ring]
+            ring += 1
+        where = "ring %d, point %d " % (ring, k)
+    if x != x or y != y:
+        why = "is NaN, not a finite number"
+    elif x in (_INF, -_INF) or y in (_INF, -_INF):
+        why = "is infinite, not a finite number"
+    else:
+        why = ("is outside the range +-%.6g pixels (|coordinate| * 2**subpixel_bits must stay "
+               "below 2**27; subpixel_bits=%d)" % (lib.RAST_COORD_MAX / float(1 << s), s))
+    return "%s: %s(%r, %r) %s" % (what, where, x, y, why)
+
+
+_INF = float("inf")
+
+
+def _check_glue(result, pts, s, what="points", sizes=None):
     """Raise for a rastpy_* result (see _build.py)."""
     if result == 0:
         return
     if result > 0:
-        raise InputError(
-            "point %s is not finite or outside +-%.6g pixels, the range at subpixel_bits=%d"
-            % (tuple(pts[result - 1].tolist()), lib.RAST_COORD_MAX / float(1 << s), s)
-        )
+        raise InputError(bad_point_message(what, pts, result - 1, s, sizes))
     if result == lib.RASTPY_E_NOMEM:
         raise MemoryError("rastrum: no memory for the scratch of %d points" % len(pts))
     _check(result)
@@ -311,7 +354,9 @@ def fill_polygon(target, rings, pixel, opts, s):
     if not nrings:
         return
     xy = ffi.from_buffer("double[]", pts)
-    _check_glue(lib.rastpy_fill_polygon(target, xy, len(pts), sizes, nrings, opts, pixel, ffi.NULL), pts, s)
+    result = lib.rastpy_fill_polygon(target, xy, len(pts), sizes, nrings, opts, pixel, ffi.NULL)
+    if result:
+        _check_glue(result, pts, s, "rings", [len(pts)] if nrings == 1 else sizes)
 
 
 def mask_polygon(shape, rings, opts, s):
@@ -339,7 +384,7 @@ def mask_polygon(shape, rings, opts, s):
         ffi.from_buffer("double[]", pts), len(pts), sizes, nrings, opts,
     )
     if result:
-        _check_glue(result, pts, s)
+        _check_glue(result, pts, s, "rings", [len(pts)] if nrings == 1 else sizes)
     return mask
 
 

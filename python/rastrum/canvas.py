@@ -29,6 +29,17 @@ class Canvas:
     channel.  rgb565 takes (R, G, B) in 0..255 and keeps their top 5, 6 and
     5 bits; mono1 takes an int, on iff it is not 0.
 
+    Bad input raises InputError (a ValueError) naming the argument and the
+    problem, before any pixel is written: sizes that are negative, not
+    ints or past 2**30 - 1; unknown formats; colours out of 0..255 or of
+    the wrong length or type; NaN, infinite, out-of-range or non-real
+    coordinates; too few vertices; unknown names; and drawing while the
+    array is read-only (made so after ``Canvas.wrap``).  Empty input (no
+    rings, no triangles, no points) draws nothing and is not an error; a
+    canvas of width or height 0 is fine and never drawn on.  ``save``
+    raises what Pillow raises (ValueError for an unknown file extension,
+    OSError for a path it cannot write).
+
     Examples
     --------
     >>> import rastrum
@@ -61,7 +72,11 @@ class Canvas:
         (H, W, 3) rgb888, (H, W, 4) rgba8888, a uint16 (H, W) rgb565.  The
         array must be writable and each row's pixels contiguous (any row
         stride, so a slice ``big[10:-10, 10:-10]`` works).  mono1 cannot be
-        wrapped (a packed row does not say its width).
+        wrapped (a packed row does not say its width).  InputError otherwise:
+        not a numpy array, not uint8 (uint16 for rgb565), another shape, a
+        format that does not match, read-only (also a broadcast view), a
+        column stride or reversed rows.  If the array is made read-only
+        later, drawing raises InputError and writes nothing.
         """
         if not isinstance(array, np.ndarray):
             raise InputError("Canvas.wrap needs a numpy array, not %s" % type(array).__name__)
@@ -96,6 +111,13 @@ class Canvas:
         canvas = cls.__new__(cls)
         canvas._set(array, fmt, w)
         return canvas
+
+    def _writable(self):
+        """The target, once the array is known to be still writable (it may
+        have been made read-only after Canvas.wrap)."""
+        if not self._array.flags.writeable:
+            raise InputError("the canvas's array is read-only; nothing was drawn")
+        return self._target
 
     def _pixel(self, color):
         """The colour's pixel bytes as a cdata, remembered for the last colour."""
@@ -157,7 +179,7 @@ class Canvas:
         """Paint `color` on every pixel whose sample is inside the polygon.
 
         Arguments as :func:`rastrum.polygon_mask`.  Nothing is written when
-        an argument is bad (an InputError says which).
+        an argument is bad (an InputError says which; see the class).
 
         With `vertex_colors` instead of `color`: one colour per vertex, an
         (N, C) array-like for the N vertices of all rings in order (or a
@@ -175,7 +197,7 @@ class Canvas:
         if color is None:
             raise InputError("fill_polygon needs a color or vertex_colors")
         pixel = self._pixel(color)
-        _core.fill_polygon(self._target, rings, pixel, opts, opts.subpixel_bits)
+        _core.fill_polygon(self._writable(), rings, pixel, opts, opts.subpixel_bits)
 
     def fill_triangle(self, tri, color, *, algorithm="edge", subpixel_bits=8, sample_offset=0.5,
                       rounding="exact", boundary="exact"):
@@ -187,7 +209,7 @@ class Canvas:
         """
         opts = _triangles.tri_opts(algorithm, subpixel_bits, sample_offset, rounding, boundary)
         batch = _triangles.tris_f64(tri, single=True)
-        _triangles.fill_triangles(self._target, batch, self._pixel(color), opts)
+        _triangles.fill_triangles(self._writable(), batch, self._pixel(color), opts, "tri")
 
     def fill_triangles(self, tris, color=None, *, vertex_colors=None, precision="exact", fraction_bits=16,
                        depth=None, algorithm="edge", subpixel_bits=8, sample_offset=0.5,
@@ -241,7 +263,7 @@ class Canvas:
                 color is None or np.ndim(color) < 2):
             if color is None:
                 raise InputError("fill_triangles needs color or vertex_colors")
-            _triangles.fill_triangles(self._target, batch, self._pixel(color), opts)
+            _triangles.fill_triangles(self._writable(), batch, self._pixel(color), opts)
             return
         if (color is None) == (vertex_colors is None):
             raise InputError("fill_triangles takes exactly one of color and vertex_colors")
@@ -265,7 +287,7 @@ class Canvas:
             if self.depth is None:
                 self.depth = np.full((self.height, self.width), _shade.INT32_MAX, np.int32)
             zbuf = self.depth
-        _shade.fill(self._target, batch, colors, z, zbuf, opts, sopts)
+        _shade.fill(self._writable(), batch, colors, z, zbuf, opts, sopts)
 
     def fill_rect_gouraud(self, rect, corner_colors, *, method="bilinear", precision="exact",
                           fraction_bits=16, subpixel_bits=8, sample_offset=0.5):
@@ -316,7 +338,7 @@ class Canvas:
         opts = _lines.line_opts(algorithm, subpixel_bits, sample_offset)
         a = _lines.snap_point(p0, opts.subpixel_bits, "p0")
         b = _lines.snap_point(p1, opts.subpixel_bits, "p1")
-        _core._check(lib.rast_draw_line(self._target, a, b, opts, self._pixel(color)))
+        _core._check(lib.rast_draw_line(self._writable(), a, b, opts, self._pixel(color)))
 
     def polyline(self, points, color, *, closed=False, algorithm="bresenham", subpixel_bits=8,
                  sample_offset=0.5):
@@ -324,7 +346,8 @@ class Canvas:
         also the last point -> the first (an outline).
 
         Each segment is :meth:`line`; a vertex shared by two segments is
-        painted by both.  `points` is an (N, 2) array-like, N >= 2.
+        painted by both.  `points` is an (N, 2) array-like, N >= 2 (N = 0
+        draws nothing; N = 1 is an InputError); `closed` is a bool.
 
         Examples
         --------
@@ -339,10 +362,14 @@ class Canvas:
                [1, 0, 0, 0, 0]], dtype=uint8)
         """
         opts = _lines.line_opts(algorithm, subpixel_bits, sample_offset)
+        if not isinstance(closed, (bool, np.bool_)):
+            raise InputError("closed must be True or False, not %r" % (closed,))
         pts = _lines.snap_polyline(points, opts.subpixel_bits, 2)
         pixel = self._pixel(color)
-        _core._check(lib.rast_draw_polyline(self._target, ffi.from_buffer("rast_point[]", pts), len(pts),
-                                            1 if closed else 0, opts, pixel))
+        target = self._writable()
+        if len(pts):
+            _core._check(lib.rast_draw_polyline(target, ffi.from_buffer("rast_point[]", pts), len(pts),
+                                                1 if closed else 0, opts, pixel))
 
     def to_image(self):
         """A Pillow image (a copy): mode L, RGB or RGBA; rgb565 as RGB (each

@@ -35,17 +35,29 @@ def line_opts(algorithm, subpixel_bits, sample_offset):
 
 def snap_point(p, s, what="point"):
     """One (x, y) pair snapped to the 1/2^s grid, as a ``rast_point``."""
-    if np.shape(p) != (2,):
+    try:
+        shape = np.shape(p)
+    except ValueError:  # ragged nesting
+        shape = None
+    if shape != (2,):
         raise InputError("%s must be a pair (x, y), not %r" % (what, p))
-    (x, y), = _core.snap_points([p], s).tolist()
+    p = _core.real_array(p, what, "a pair (x, y)")
+    (x, y), = _core.snap_points(p.reshape(1, 2), s, what).tolist()
     return ffi.new("rast_point *", [x, y])[0]
 
 
 def snap_polyline(points, s, minimum):
-    """An (N, 2) array-like snapped to an int32 (N, 2) array, N >= minimum."""
+    """An (N, 2) array-like snapped to an int32 (N, 2) array, N >= minimum;
+    no points at all ([] or an empty (0, 2) array) give an empty array."""
+    try:
+        empty = np.size(points) == 0 and np.ndim(points) <= 2
+    except ValueError:  # ragged nesting: snap_points says why
+        empty = False
+    if empty:
+        return np.zeros((0, 2), np.int32)
     pts = _core.snap_points(points, s)
     if len(pts) < minimum:
-        raise InputError("%d point(s) given; at least %d needed" % (len(pts), minimum))
+        raise InputError("points: %d point(s) given; at least %d needed" % (len(pts), minimum))
     if len(pts) > lib.RAST_MAX_POINTS:
         raise InputError("%d points; at most %d per call" % (len(pts), lib.RAST_MAX_POINTS))
     return pts
@@ -109,8 +121,9 @@ def line_pixels(p0, p1, *, algorithm="bresenham", subpixel_bits=8, sample_offset
     Raises
     ------
     InputError (a ValueError)
-        Unknown names, coordinates that are not finite or out of range,
-        a bad clip.
+        Naming the argument: p0 or p1 not a pair of real numbers, NaN,
+        infinite or out of range; a bad clip; an unknown name or option
+        value.
 
     Examples
     --------
@@ -159,6 +172,13 @@ def point_in_triangle(p, tri, *, method="owner", subpixel_bits=8):
     -------
     bool
 
+    Raises
+    ------
+    InputError (a ValueError)
+        Naming the argument: p not a pair, tri not of shape (3, 2), a
+        coordinate that is not a real number, NaN, infinite or out of
+        range; an unknown method or a bad subpixel_bits.
+
     Examples
     --------
     >>> import rastrum
@@ -173,9 +193,10 @@ def point_in_triangle(p, tri, *, method="owner", subpixel_bits=8):
     code = PREDICATES[_core._name(method, "method", PREDICATES)]
     s = _core._subpixel_bits(subpixel_bits)
     q = snap_point(p, s, "p")
-    if np.shape(tri) != (3, 2):
-        raise InputError("tri must be three (x, y) vertices, shape (3, 2), not %s" % (np.shape(tri),))
-    t = ffi.new("rast_point[3]", _core.snap_points(tri, s).tolist())
+    t = _core.snap_points(tri, s, "tri")
+    if t.shape != (3, 2):
+        raise InputError("tri must be three (x, y) vertices, shape (3, 2), not %s" % (t.shape,))
+    t = ffi.new("rast_point[3]", t.tolist())
     inside = ffi.new("int *")
     _core._check(lib.rast_point_in_triangle(q, t, code, inside))
     return bool(inside[0])

@@ -70,7 +70,7 @@ def fill_rect_gouraud(canvas, rect, corner_colors, method, precision, fraction_b
     pts = _core.snap_points(r.reshape(2, 2), opts.subpixel_bits)
     p0 = ffi.new("rast_point *", (int(pts[0, 0]), int(pts[0, 1])))
     p1 = ffi.new("rast_point *", (int(pts[1, 0]), int(pts[1, 1])))
-    _core._check(lib.rast_fill_rect_gouraud(canvas._target, p0[0], p1[0],
+    _core._check(lib.rast_fill_rect_gouraud(canvas._writable(), p0[0], p1[0],
                                             ffi.from_buffer("uint8_t[]", cols), opts, sh))
 
 
@@ -80,5 +80,5 @@ def fill_polygon_gouraud(canvas, rings, vertex_colors, opts, precision):
     vc = np.asarray(vertex_colors)
     n = vc.shape[0] if vc.ndim >= 1 else -1
     cols = colors_rgba(vc, n, canvas.format, "vertex_colors")
-    _core.fill_polygon_gouraud(canvas._target, rings, cols, opts, shade_opts(precision, 16),
+    _core.fill_polygon_gouraud(canvas._writable(), rings, cols, opts, shade_opts(precision, 16),
                                opts.subpixel_bits)

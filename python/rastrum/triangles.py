@@ -45,15 +45,12 @@ def tri_opts(algorithm, subpixel_bits, sample_offset, rounding="exact", boundary
 
 
 def tris_f64(tris, single=False):
-    """The batch as a checked, C-contiguous float64 (N, 3, 2) array.
+    """The batch as a checked, C-contiguous float64 (N, 3, 2) array (a copy
+    when the input is not one already).
 
     With `single`, one triangle given as a (3, 2) array-like."""
     what = "tri" if single else "tris"
-    try:
-        a = np.ascontiguousarray(tris, dtype=np.float64)
-    except (TypeError, ValueError):
-        raise InputError("%s must be an array-like of numbers of shape %s"
-                         % (what, "(3, 2)" if single else "(N, 3, 2)")) from None
+    a = _core.real_array(tris, what, "a (3, 2) array-like" if single else "an (N, 3, 2) array-like")
     if single:
         if a.shape != (3, 2):
             raise InputError("tri must have shape (3, 2): three (x, y) vertices, not %s" % (a.shape,))
@@ -68,14 +65,14 @@ def tris_f64(tris, single=False):
     return a
 
 
-def fill_triangles(target, tris, pixel, opts):
+def fill_triangles(target, tris, pixel, opts, what="tris"):
     """Snap the checked (N, 3, 2) float64 batch and fill it into `target`."""
     n = tris.shape[0]
     if n == 0:
         return
     result = lib.rastpy_fill_triangles(target, ffi.from_buffer("double[]", tris), n, opts, pixel)
     if result:
-        _core._check_glue(result, tris.reshape(-1, 2), opts.subpixel_bits)
+        _core._check_glue(result, tris.reshape(-1, 2), opts.subpixel_bits, what, 3)
 
 
 def _mode(mode):
@@ -129,8 +126,13 @@ def triangles_mask(tris, shape, *, algorithm="edge", subpixel_bits=8, sample_off
     Raises
     ------
     InputError (a ValueError)
-        A batch not of shape (N, 3, 2), NaN or infinite coordinates,
-        coordinates out of range, a bad shape, unknown names.
+        Its message names the argument and the problem: a batch not of
+        shape (N, 3, 2), a NaN, infinite or out-of-range coordinate (which
+        triangle and vertex), coordinates that are not real numbers (bool,
+        complex, str, None), a bad `shape`, an unknown name or option
+        value.  An empty batch is not an error: the result is all 0.
+    MemoryError
+        When numpy cannot allocate the (H, W) result.
 
     Examples
     --------

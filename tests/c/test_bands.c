@@ -1,5 +1,5 @@
 /*
- * test_scene.c - scenes drawn band by band (rast_render_bands and
+ * test_bands.c - scenes drawn band by band (rast_render_bands and
  * rast_render_bands_spans) against the same primitives drawn one after the
  * other into the whole clip with their own entry points: byte for byte, for
  * band heights 1, 2, 7, 16 and 240, every polygon algorithm and rule, every
@@ -627,5 +627,5 @@ int main(void)
     test_bad_last();
     test_coordinate_range();
     test_against_reference();
-    return check_report("test_scene");
+    return check_report("test_bands");
 }

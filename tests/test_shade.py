@@ -212,6 +212,52 @@ def test_fixed_16_within_one_level(data):
     assert np.abs(out[0] - out[1]).max(initial=0) <= 1, f"{lit(tris)} {shape} {cols.tolist()}"
 
 
+def fixed_by_paths(batch, cols, shape, **kw):
+    """precision="fixed" on rgba8888 (the packed path where it applies:
+    exact rounding and boundary, a small enough box) and the same colours
+    through the general path: R, G, B on rgb888, A as the level of gray8."""
+    out = {}
+    for fmt, vc in (("rgba8888", cols), ("rgb888", cols[..., :3]), ("gray8", cols[..., 3:])):
+        c = rastrum.Canvas(shape[1], shape[0], format=fmt)
+        c.fill_triangles(batch, vertex_colors=vc, precision="fixed", **kw)
+        out[fmt] = c.array.astype(int)
+    return out["rgba8888"], np.dstack([out["rgb888"], out["gray8"]])
+
+
+@settings(max_examples=examples(60))
+@given(data=st.data())
+def test_fixed_packed_equals_general(data):
+    """The packed rgba8888 path (two channels a 64-bit word, no clamping)
+    computes the documented fixed-point values: equal, pixel for pixel, to
+    the general per-channel path that other formats take."""
+    S = data.draw(st.sampled_from([0, 2, 8, 16]), label="S")
+    o = data.draw(st.sampled_from(OFFSETS), label="o")
+    rounding = data.draw(st.sampled_from(ROUNDINGS), label="rounding")
+    boundary = data.draw(st.sampled_from(["exact", "exact", "exact", "closed"]), label="boundary")
+    F = data.draw(st.integers(1, 16), label="F")
+    alg = data.draw(st.sampled_from(ALGOS), label="alg")
+    tris, shape, cols, _ = data.draw(colour_batches(S, o, 24, 24, max_n=6), label="batch")
+    batch = np.asarray(tris, dtype=np.float64).reshape(-1, 3, 2)
+    got, want = fixed_by_paths(batch, cols, shape, fraction_bits=F, algorithm=alg,
+                               subpixel_bits=S, sample_offset=o, rounding=rounding,
+                               boundary=boundary)
+    assert_same(got, want, f"F={F} {alg} {lit(tris)} {shape} {cols.tolist()}")
+
+
+@pytest.mark.parametrize("F", [3, 6, 8, 12, 16])
+def test_fixed_packed_equals_general_many(F):
+    """The same on 400 random triangles of up to ~300 px (boxes past 2^F
+    for small F: both paths in one batch), slivers and vertex colours at
+    the ends of the range."""
+    rng = np.random.default_rng(F)
+    ctr = rng.uniform(0, 128, (400, 1, 2))
+    batch = ctr + rng.normal(0, 6, (400, 3, 2)) * rng.uniform(0.2, 3, (400, 1, 1))
+    batch[::7, 2] = batch[::7, 0] + (batch[::7, 1] - batch[::7, 0]) * 0.5 + 0.01  # slivers
+    cols = rng.choice([0, 1, 128, 254, 255, 17, 200], (400, 3, 4)).astype(np.int64)
+    got, want = fixed_by_paths(batch, cols, (128, 128), fraction_bits=F)
+    assert_same(got, want, f"F={F}")
+
+
 def test_fixed_error_grows_as_f_shrinks():
     """Coarser F, larger error: F = 2 is visibly off somewhere on a big
     smooth triangle, F = 16 nowhere by more than one level."""

@@ -24,6 +24,19 @@
  * Fixed: the value at the box corner (ri, rj) and the steps per column and
  * row, each rounded to 1/2^F, then v = base + (i - ri) fgx + (j - rj) fgy
  * by additions; a pixel is floor(v / 2^F + 1/2).
+ *
+ * Fixed, packed (the common case: RGBA8888 on a little-endian machine, no
+ * depth, exact rounding and boundary, a small triangle): the same values,
+ * two channels to a 64-bit word (R and B; G and A times 256), so that a
+ * pixel is two adds, a few shifts and masks and one 32-bit store.  It
+ * needs no clamping: every sample such a fill writes lies in the closed
+ * triangle, where the exact value is within the vertex values (0..255);
+ * the base and each step are off by at most 1/2 of 1/2^F, so with
+ * 1 + W + H < 2^F (W, H: the box's columns and rows) v is less than half a
+ * level off, v + 1/2 lies in (0, 256) and each 32-bit lane of v 2^F (plus
+ * 2^(F-1)) in [0, 2^(F+8)): the lanes never carry into each other.  The
+ * setup divides by D with one reciprocal (wide.h) and skips constant
+ * channels.
  */
 #include <string.h>
 
@@ -65,6 +78,12 @@ typedef struct rast__shade {
     int32_t have_steps;      /* sx, tx computed (fixed point needs none) */
     int32_t fixed;           /* fixed steps fit (else: exact) */
     rast__chan ch[5];        /* R, G, B, A, depth */
+    /* fixed, packed (see the top): lanes (R, B) and 256 (G, A), each
+     * v 2^F + 2^(F-1), at pixel (0, 0) of the plane and their steps; the
+     * sums are taken modulo 2^64 */
+    int32_t packable;        /* the call may pack: RGBA8888, little-endian, fixed, no depth, exact boundary */
+    int32_t packed;          /* the current triangle is packed */
+    uint64_t pk0[2], pkx[2], pky[2];
     /* flat without depth: a solid painter */
     int32_t flat;
     rast__solid solid;
@@ -294,12 +313,43 @@ static void rast__shade_span(rast__shade *s, int32_t y, int32_t xa, int32_t xb)
     }
 }
 
+/* The spans of row y of a packed triangle: R at bits F.., B at 32 + F..
+ * of one word, G at 8 + F.., A at 40 + F.. of the other; the level is the
+ * lane shifted down (no clamping, see the top), stored as R, G, B, A bytes
+ * in one little-endian 32-bit word. */
+static void rast__packed_row(const rast__shade *s, int32_t y, const int32_t *xs, int32_t n)
+{
+    const uint64_t m0 = 0x000000FF000000FFu, m1 = 0x0000FF000000FF00u;
+    const uint64_t sx0 = s->pkx[0], sx1 = s->pkx[1];
+    const int32_t F = s->F;
+    unsigned char *row = s->base + (ptrdiff_t)y * s->stride;
+    uint64_t r0 = s->pk0[0] + (uint64_t)(int64_t)y * s->pky[0];
+    uint64_t r1 = s->pk0[1] + (uint64_t)(int64_t)y * s->pky[1];
+    int32_t k;
+    for (k = 0; k < n; k++) {
+        int32_t x = xs[2 * k], xb = xs[2 * k + 1];
+        uint64_t p0 = r0 + (uint64_t)(int64_t)x * sx0, p1 = r1 + (uint64_t)(int64_t)x * sx1;
+        unsigned char *o = row + (ptrdiff_t)x * 4;
+        for (; x < xb; x++, o += 4) {
+            uint64_t w = ((p0 >> F) & m0) | ((p1 >> F) & m1);
+            uint32_t px = (uint32_t)(w | (w >> 16));
+            memcpy(o, &px, 4);
+            p0 += sx0;
+            p1 += sx1;
+        }
+    }
+}
+
 static void rast__shade_row(void *user, int32_t y, const int32_t *xs, int32_t n)
 {
     rast__shade *s = (rast__shade *)user;
     int32_t k;
     if (s->flat) {
         s->solid_fn(&s->solid, y, xs, n);
+        return;
+    }
+    if (s->packed) {
+        rast__packed_row(s, y, xs, n);
         return;
     }
     for (k = 0; k < n; k++) rast__shade_span(s, y, xs[2 * k], xs[2 * k + 1]);
@@ -365,6 +415,56 @@ static void rast__chan_setup(rast__shade *s, rast__chan *ch, int64_t c0, int64_t
     }
 }
 
+/* Set up the packed fixed-point path for the current triangle (box and
+ * reciprocal done, exact rounding): 0 when it does not apply (a big box for
+ * F, magnitudes past the bounds below, steps the general path would reject),
+ * then the general setup runs. */
+static int rast__packed_setup(rast__shade *s, const uint8_t *col, int64_t ex1, int64_t ey1,
+                              int64_t ex2, int64_t ey2, int neg)
+{
+    const int32_t F = s->F;
+    const int64_t A = s->A, lim = (int64_t)1 << 60;
+    int64_t dx = (int64_t)s->imin * s->unit + s->off - s->x0;
+    int64_t dy = (int64_t)s->jmin * s->unit + s->off - s->y0;
+    uint64_t v0[4], vx[4], vy[4];
+    int32_t b, c;
+    /* no lane carries (see the top) */
+    if ((int64_t)(s->imax - s->imin) + (s->jmax - s->jmin) + 1 >= ((int64_t)1 << F)) return 0;
+    /* b: |ex|, |ey|, |dx|, |dy| < 2^b, unit <= 2^(b - 2); so |gx|, |gy| <
+     * 2^(b+9), |N| < 2^(2b+10) and the numerators below < 2^62 */
+    b = rast__bitlen((ex1 < 0 ? -ex1 : ex1) | (ey1 < 0 ? -ey1 : ey1) | (ex2 < 0 ? -ex2 : ex2) |
+                     (ey2 < 0 ? -ey2 : ey2) | (dx < 0 ? -dx : dx) | (dy < 0 ? -dy : dy) |
+                     (4 * (int64_t)s->unit));
+    if (2 * b + F + 12 > 62 || b + s->shift + F + 11 > 62) return 0;
+    for (c = 0; c < 4; c++) {
+        int64_t c0 = col[c], d1 = col[4 + c] - c0, d2 = col[8 + c] - c0;
+        int64_t fb = 0, fx = 0, fy = 0, r;
+        if (d1 | d2) { /* as rast__chan_setup, with the same roundings */
+            int64_t gx = d1 * ey2 - d2 * ey1, gy = d2 * ex1 - d1 * ex2;
+            if (neg) {
+                gx = -gx;
+                gy = -gy;
+            }
+            fb = rast__recip_floordiv(&s->rd, (dx * gx + dy * gy) * ((int64_t)1 << (F + 1)) + A, &r);
+            fx = rast__recip_floordiv(&s->rd, gx * ((int64_t)1 << (s->shift + F + 1)) + A, &r);
+            fy = rast__recip_floordiv(&s->rd, gy * ((int64_t)1 << (s->shift + F + 1)) + A, &r);
+            if (fb > lim || fb < -lim || rast__bitlen(fx) > 31 || rast__bitlen(fy) > 31) return 0;
+        }
+        /* c 2^F + fbase - imin fgx - jmin fgy + 2^(F-1), modulo 2^64 */
+        v0[c] = ((uint64_t)c0 << F) + (uint64_t)fb - (uint64_t)(int64_t)s->imin * (uint64_t)fx -
+                (uint64_t)(int64_t)s->jmin * (uint64_t)fy + ((uint64_t)1 << (F - 1));
+        vx[c] = (uint64_t)fx;
+        vy[c] = (uint64_t)fy;
+    }
+    s->pk0[0] = v0[0] + (v0[2] << 32);
+    s->pk0[1] = (v0[1] + (v0[3] << 32)) << 8;
+    s->pkx[0] = vx[0] + (vx[2] << 32);
+    s->pkx[1] = (vx[1] + (vx[3] << 32)) << 8;
+    s->pky[0] = vy[0] + (vy[2] << 32);
+    s->pky[1] = (vy[1] + (vy[3] << 32)) << 8;
+    return 1;
+}
+
 static int rast__shade_begin(void *user, const rast_point *t, uint32_t k, const rast__grid *g)
 {
     rast__shade *s = (rast__shade *)user;
@@ -373,7 +473,7 @@ static int rast__shade_begin(void *user, const rast_point *t, uint32_t k, const 
     int64_t ex1 = 2 * (int64_t)t[1].x - x0, ey1 = 2 * (int64_t)t[1].y - y0;
     int64_t ex2 = 2 * (int64_t)t[2].x - x0, ey2 = 2 * (int64_t)t[2].y - y0;
     int64_t A = ex1 * ey2 - ey1 * ex2;
-    int32_t c, neg = A < 0;
+    int32_t c, neg = A < 0, plane;
 
     s->unit = g->unit;
     s->shift = g->shift;
@@ -383,6 +483,8 @@ static int rast__shade_begin(void *user, const rast_point *t, uint32_t k, const 
         s->fmt->pack(col, s->solid.value);
         return 1;
     }
+    s->packed = 0;
+    plane = A != 0;
     if (A == 0) { /* no plane: vertex 0's values (boundary modes only) */
         ex1 = ey1 = ex2 = ey2 = 0;
         A = 1;
@@ -396,6 +498,11 @@ static int rast__shade_begin(void *user, const rast_point *t, uint32_t k, const 
                        &s->imax);
     rast__shade_extent(y0, y0 + ey1, y0 + ey2, s, s->solid.clip.y0, s->solid.clip.y1, &s->jmin,
                        &s->jmax);
+    if (s->packable && !g->textbook && plane &&
+        rast__packed_setup(s, col, ex1, ey1, ex2, ey2, neg)) {
+        s->packed = 1;
+        return 1;
+    }
     /* bits of the largest |px - x0|, |py - y0| over the box */
     {
         int64_t ax = s->x0 - ((int64_t)s->imin * s->unit + s->off);
@@ -470,6 +577,13 @@ rast_status rast_fill_triangles_shaded(const rast_target *target, const rast_poi
         if (st != RAST_OK) return st;
     }
     s.flat = s.prec == RAST_PRECISION_FLAT && !z;
+    {
+        const uint32_t one = 1;
+        unsigned char low;
+        memcpy(&low, &one, 1);
+        s.packable = low == 1 && target->format == RAST_FORMAT_RGBA8888 &&
+                     s.prec == RAST_PRECISION_FIXED && !z && opts->boundary == RAST_BOUNDARY_EXACT;
+    }
     return rast__tri_fill(tris, ntris, opts, &clip, rast__shade_row, &s, rast__shade_begin,
                           scratch, scratch_bytes);
 }

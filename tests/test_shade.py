@@ -212,14 +212,14 @@ def test_fixed_16_within_one_level(data):
     assert np.abs(out[0] - out[1]).max(initial=0) <= 1, f"{lit(tris)} {shape} {cols.tolist()}"
 
 
-def fixed_by_paths(batch, cols, shape, **kw):
-    """precision="fixed" on rgba8888 (the packed path where it applies:
-    exact rounding and boundary, a small enough box) and the same colours
-    through the general path: R, G, B on rgb888, A as the level of gray8."""
+def fixed_by_paths(batch, cols, shape, precision="fixed", **kw):
+    """A fill on rgba8888 (the packed path where it applies: exact rounding
+    and boundary, a small enough box) and the same colours through the
+    general path: R, G, B on rgb888, A as the level of gray8."""
     out = {}
     for fmt, vc in (("rgba8888", cols), ("rgb888", cols[..., :3]), ("gray8", cols[..., 3:])):
         c = rastrum.Canvas(shape[1], shape[0], format=fmt)
-        c.fill_triangles(batch, vertex_colors=vc, precision="fixed", **kw)
+        c.fill_triangles(batch, vertex_colors=vc, precision=precision, **kw)
         out[fmt] = c.array.astype(int)
     return out["rgba8888"], np.dstack([out["rgb888"], out["gray8"]])
 
@@ -244,17 +244,20 @@ def test_fixed_packed_equals_general(data):
     assert_same(got, want, f"F={F} {alg} {lit(tris)} {shape} {cols.tolist()}")
 
 
-@pytest.mark.parametrize("F", [3, 6, 8, 12, 16])
+@pytest.mark.parametrize("F", [3, 6, 8, 12, 16, "exact"])
 def test_fixed_packed_equals_general_many(F):
     """The same on 400 random triangles of up to ~300 px (boxes past 2^F
-    for small F: both paths in one batch), slivers and vertex colours at
-    the ends of the range."""
-    rng = np.random.default_rng(F)
+    for small F: both paths in one batch), slivers, vertices on sample
+    points (exact halves) and vertex colours at the ends of the range;
+    "exact": the exact packed path against the general one."""
+    rng = np.random.default_rng(F if F != "exact" else 99)
     ctr = rng.uniform(0, 128, (400, 1, 2))
     batch = ctr + rng.normal(0, 6, (400, 3, 2)) * rng.uniform(0.2, 3, (400, 1, 1))
     batch[::7, 2] = batch[::7, 0] + (batch[::7, 1] - batch[::7, 0]) * 0.5 + 0.01  # slivers
+    batch[1::5] = np.round(batch[1::5]) + 0.5  # on sample points
     cols = rng.choice([0, 1, 128, 254, 255, 17, 200], (400, 3, 4)).astype(np.int64)
-    got, want = fixed_by_paths(batch, cols, (128, 128), fraction_bits=F)
+    kw = dict(precision="exact") if F == "exact" else dict(fraction_bits=F)
+    got, want = fixed_by_paths(batch, cols, (128, 128), **kw)
     assert_same(got, want, f"F={F}")
 
 

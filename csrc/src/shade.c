@@ -81,9 +81,12 @@ typedef struct rast__shade {
     /* fixed, packed (see the top): lanes (R, B) and 256 (G, A), each
      * v 2^F + 2^(F-1), at pixel (0, 0) of the plane and their steps; the
      * sums are taken modulo 2^64 */
-    int32_t packable;        /* the call may pack: RGBA8888, little-endian, fixed, no depth, exact boundary */
-    int32_t packed;          /* the current triangle is packed */
+    int32_t packable;        /* the call may pack: RGBA8888, little-endian, no depth, exact boundary */
+    int32_t packed;          /* the current triangle is packed: 1 fixed, 2 exact */
     uint64_t pk0[2], pkx[2], pky[2];
+    /* exact, packed: per channel R at the box corner, its steps per column
+     * and row (R's, and 2 gx unit = sx D + tx) */
+    int64_t ek[4], egx[4], egy[4], esx[4], etx[4];
     /* flat without depth: a solid painter */
     int32_t flat;
     rast__solid solid;
@@ -313,15 +316,14 @@ static void rast__shade_span(rast__shade *s, int32_t y, int32_t xa, int32_t xb)
     }
 }
 
-/* The spans of row y of a packed triangle: R at bits F.., B at 32 + F..
- * of one word, G at 8 + F.., A at 40 + F.. of the other; the level is the
- * lane shifted down (no clamping, see the top), stored as R, G, B, A bytes
- * in one little-endian 32-bit word. */
+/* The spans of row y of a packed triangle: the levels of R and B at bits
+ * 16.. and 48.. of one word, of G and A at bits 24.. and 56.. of the other
+ * (no clamping, see the top), stored as R, G, B, A bytes in one
+ * little-endian 32-bit word. */
 static void rast__packed_row(const rast__shade *s, int32_t y, const int32_t *xs, int32_t n)
 {
-    const uint64_t m0 = 0x000000FF000000FFu, m1 = 0x0000FF000000FF00u;
+    const uint64_t m0 = 0x00FF000000FF0000u, m1 = 0xFF000000FF000000u;
     const uint64_t sx0 = s->pkx[0], sx1 = s->pkx[1];
-    const int32_t F = s->F;
     unsigned char *row = s->base + (ptrdiff_t)y * s->stride;
     uint64_t r0 = s->pk0[0] + (uint64_t)(int64_t)y * s->pky[0];
     uint64_t r1 = s->pk0[1] + (uint64_t)(int64_t)y * s->pky[1];
@@ -331,11 +333,61 @@ static void rast__packed_row(const rast__shade *s, int32_t y, const int32_t *xs,
         uint64_t p0 = r0 + (uint64_t)(int64_t)x * sx0, p1 = r1 + (uint64_t)(int64_t)x * sx1;
         unsigned char *o = row + (ptrdiff_t)x * 4;
         for (; x < xb; x++, o += 4) {
-            uint64_t w = ((p0 >> F) & m0) | ((p1 >> F) & m1);
-            uint32_t px = (uint32_t)(w | (w >> 16));
+            uint64_t w = (p0 & m0) | (p1 & m1);
+            uint32_t px = (uint32_t)(w >> 16) | (uint32_t)(w >> 32);
             memcpy(o, &px, 4);
             p0 += sx0;
             p1 += sx1;
+        }
+    }
+}
+
+/* The spans of row y of an exact packed triangle: each channel's value
+ * q + r / D stepped exactly (a carry when r reaches D), the four levels in
+ * the bytes of one 32-bit word (no clamping: every sample lies in the
+ * triangle, so every level in 0..255, and the bytes never carry into each
+ * other), stored as R, G, B, A on a little-endian machine. */
+static void rast__exact_packed_row(const rast__shade *s, int32_t y, const int32_t *xs, int32_t n)
+{
+    const int64_t D = s->D;
+    unsigned char *row = s->base + (ptrdiff_t)y * s->stride;
+    uint32_t sxp = 0;
+    int64_t rowk[4];
+    int32_t c, k;
+    for (c = 0; c < 4; c++) {
+        rowk[c] = s->ek[c] + (int64_t)(y - s->jmin) * s->egy[c];
+        sxp += (uint32_t)s->esx[c] << (8 * c);
+    }
+    for (k = 0; k < n; k++) {
+        int32_t x = xs[2 * k], xb = xs[2 * k + 1];
+        int64_t r[4];
+        uint32_t qp = 0;
+        unsigned char *o = row + (ptrdiff_t)x * 4;
+        for (c = 0; c < 4; c++) {
+            int64_t q = rast__recip_floordiv(&s->rd, rowk[c] + (int64_t)(x - s->imin) * s->egx[c],
+                                             &r[c]);
+            qp += (uint32_t)(q + s->ch[c].c0) << (8 * c);
+        }
+        {
+            int64_t r0 = r[0], r1 = r[1], r2 = r[2], r3 = r[3];
+            const int64_t t0 = s->etx[0], t1 = s->etx[1], t2 = s->etx[2], t3 = s->etx[3];
+            for (; x < xb; x++, o += 4) {
+                uint32_t c0, c1, c2, c3;
+                memcpy(o, &qp, 4);
+                r0 += t0;
+                r1 += t1;
+                r2 += t2;
+                r3 += t3;
+                c0 = r0 >= D;
+                c1 = r1 >= D;
+                c2 = r2 >= D;
+                c3 = r3 >= D;
+                r0 -= D & -(int64_t)c0;
+                r1 -= D & -(int64_t)c1;
+                r2 -= D & -(int64_t)c2;
+                r3 -= D & -(int64_t)c3;
+                qp += sxp + (c0 | c1 << 8 | c2 << 16 | c3 << 24);
+            }
         }
     }
 }
@@ -348,8 +400,12 @@ static void rast__shade_row(void *user, int32_t y, const int32_t *xs, int32_t n)
         s->solid_fn(&s->solid, y, xs, n);
         return;
     }
-    if (s->packed) {
+    if (s->packed == 1) {
         rast__packed_row(s, y, xs, n);
+        return;
+    }
+    if (s->packed == 2) {
+        rast__exact_packed_row(s, y, xs, n);
         return;
     }
     for (k = 0; k < n; k++) rast__shade_span(s, y, xs[2 * k], xs[2 * k + 1]);
@@ -456,12 +512,44 @@ static int rast__packed_setup(rast__shade *s, const uint8_t *col, int64_t ex1, i
         vx[c] = (uint64_t)fx;
         vy[c] = (uint64_t)fy;
     }
-    s->pk0[0] = v0[0] + (v0[2] << 32);
-    s->pk0[1] = (v0[1] + (v0[3] << 32)) << 8;
-    s->pkx[0] = vx[0] + (vx[2] << 32);
-    s->pkx[1] = (vx[1] + (vx[3] << 32)) << 8;
-    s->pky[0] = vy[0] + (vy[2] << 32);
-    s->pky[1] = (vy[1] + (vy[3] << 32)) << 8;
+    /* in units of 2^-16 level (2^-8 for G and A), so that every F has its
+     * levels at the same bits */
+    s->pk0[0] = (v0[0] + (v0[2] << 32)) << (16 - F);
+    s->pk0[1] = (v0[1] + (v0[3] << 32)) << (24 - F);
+    s->pkx[0] = (vx[0] + (vx[2] << 32)) << (16 - F);
+    s->pkx[1] = (vx[1] + (vx[3] << 32)) << (24 - F);
+    s->pky[0] = (vy[0] + (vy[2] << 32)) << (16 - F);
+    s->pky[1] = (vy[1] + (vy[3] << 32)) << (24 - F);
+    return 1;
+}
+
+/* Set up the exact packed path for the current triangle (box and
+ * reciprocal done, exact rounding): 0 when it does not apply. */
+static int rast__exact_packed_setup(rast__shade *s, const uint8_t *col, int64_t ex1,
+                                    int64_t ey1, int64_t ex2, int64_t ey2, int neg)
+{
+    int64_t dx = (int64_t)s->imin * s->unit + s->off - s->x0;
+    int64_t dy = (int64_t)s->jmin * s->unit + s->off - s->y0;
+    int32_t b, c;
+    /* b: |ex|, |ey|, |dx|, |dy| at the corner < 2^b, unit <= 2^(b - 2); over
+     * the box |dx|, |dy| < 2^(b+3), |gx|, |gy| < 2^(b+9), so |R| < 2^(2b+14) */
+    b = rast__bitlen((ex1 < 0 ? -ex1 : ex1) | (ey1 < 0 ? -ey1 : ey1) | (ex2 < 0 ? -ex2 : ex2) |
+                     (ey2 < 0 ? -ey2 : ey2) | (dx < 0 ? -dx : dx) | (dy < 0 ? -dy : dy) |
+                     (4 * (int64_t)s->unit));
+    if (2 * b + 15 > 62) return 0;
+    for (c = 0; c < 4; c++) {
+        int64_t c0 = col[c], d1 = col[4 + c] - c0, d2 = col[8 + c] - c0;
+        int64_t gx = d1 * ey2 - d2 * ey1, gy = d2 * ex1 - d1 * ex2;
+        if (neg) {
+            gx = -gx;
+            gy = -gy;
+        }
+        s->ch[c].c0 = c0;
+        s->ek[c] = 2 * (dx * gx + dy * gy) + s->A;
+        s->egx[c] = gx * ((int64_t)2 << s->shift);
+        s->egy[c] = gy * ((int64_t)2 << s->shift);
+        s->esx[c] = rast__recip_floordiv(&s->rd, s->egx[c], &s->etx[c]);
+    }
     return 1;
 }
 
@@ -498,10 +586,13 @@ static int rast__shade_begin(void *user, const rast_point *t, uint32_t k, const 
                        &s->imax);
     rast__shade_extent(y0, y0 + ey1, y0 + ey2, s, s->solid.clip.y0, s->solid.clip.y1, &s->jmin,
                        &s->jmax);
-    if (s->packable && !g->textbook && plane &&
-        rast__packed_setup(s, col, ex1, ey1, ex2, ey2, neg)) {
-        s->packed = 1;
-        return 1;
+    if (s->packable && !g->textbook && plane) {
+        if (s->prec == RAST_PRECISION_FIXED && rast__packed_setup(s, col, ex1, ey1, ex2, ey2, neg))
+            s->packed = 1;
+        else if (s->prec == RAST_PRECISION_EXACT &&
+                 rast__exact_packed_setup(s, col, ex1, ey1, ex2, ey2, neg))
+            s->packed = 2;
+        if (s->packed) return 1;
     }
     /* bits of the largest |px - x0|, |py - y0| over the box */
     {
@@ -582,7 +673,7 @@ rast_status rast_fill_triangles_shaded(const rast_target *target, const rast_poi
         unsigned char low;
         memcpy(&low, &one, 1);
         s.packable = low == 1 && target->format == RAST_FORMAT_RGBA8888 &&
-                     s.prec == RAST_PRECISION_FIXED && !z && opts->boundary == RAST_BOUNDARY_EXACT;
+                     s.prec != RAST_PRECISION_FLAT && !z && opts->boundary == RAST_BOUNDARY_EXACT;
     }
     return rast__tri_fill(tris, ntris, opts, &clip, rast__shade_row, &s, rast__shade_begin,
                           scratch, scratch_bytes);

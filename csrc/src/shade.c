@@ -371,22 +371,28 @@ static void rast__exact_packed_row(const rast__shade *s, int32_t y, const int32_
         {
             int64_t r0 = r[0], r1 = r[1], r2 = r[2], r3 = r[3];
             const int64_t t0 = s->etx[0], t1 = s->etx[1], t2 = s->etx[2], t3 = s->etx[3];
+            /* r - D kept in [-D, 0): a carry when it reaches 0 */
+            r0 -= D;
+            r1 -= D;
+            r2 -= D;
+            r3 -= D;
             for (; x < xb; x++, o += 4) {
-                uint32_t c0, c1, c2, c3;
+                int64_t m0, m1, m2, m3; /* -1 where r - D reached 0: a carry */
                 memcpy(o, &qp, 4);
                 r0 += t0;
                 r1 += t1;
                 r2 += t2;
                 r3 += t3;
-                c0 = r0 >= D;
-                c1 = r1 >= D;
-                c2 = r2 >= D;
-                c3 = r3 >= D;
-                r0 -= D & -(int64_t)c0;
-                r1 -= D & -(int64_t)c1;
-                r2 -= D & -(int64_t)c2;
-                r3 -= D & -(int64_t)c3;
-                qp += sxp + (c0 | c1 << 8 | c2 << 16 | c3 << 24);
+                m0 = (int64_t)((uint64_t)r0 >> 63) - 1;
+                m1 = (int64_t)((uint64_t)r1 >> 63) - 1;
+                m2 = (int64_t)((uint64_t)r2 >> 63) - 1;
+                m3 = (int64_t)((uint64_t)r3 >> 63) - 1;
+                r0 -= D & m0;
+                r1 -= D & m1;
+                r2 -= D & m2;
+                r3 -= D & m3;
+                qp += sxp + (((uint32_t)m0 & 0x1u) | ((uint32_t)m1 & 0x100u) |
+                             ((uint32_t)m2 & 0x10000u) | ((uint32_t)m3 & 0x1000000u));
             }
         }
     }

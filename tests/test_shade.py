@@ -261,6 +261,18 @@ def test_fixed_packed_equals_general_many(F):
     assert_same(got, want, f"F={F}")
 
 
+@pytest.mark.parametrize("S", [0, 4, 8, 12])
+def test_exact_packed_equals_general_big(S):
+    """Big triangles (2A past 2^31 at S >= 8: the packed exact path keeps
+    its remainders in 64-bit registers instead of 32-bit lanes), vertices on
+    sample points so that exact halves are everywhere."""
+    rng = np.random.default_rng(S + 7)
+    batch = np.round(rng.uniform(-20, 148, (60, 3, 2))) + 0.5
+    cols = rng.integers(0, 256, (60, 3, 4)).astype(np.int64)
+    got, want = fixed_by_paths(batch, cols, (128, 128), precision="exact", subpixel_bits=S)
+    assert_same(got, want, f"S={S}")
+
+
 def test_fixed_error_grows_as_f_shrinks():
     """Coarser F, larger error: F = 2 is visibly off somewhere on a big
     smooth triangle, F = 16 nowhere by more than one level."""

@@ -25,18 +25,24 @@
  * row, each rounded to 1/2^F, then v = base + (i - ri) fgx + (j - rj) fgy
  * by additions; a pixel is floor(v / 2^F + 1/2).
  *
- * Fixed, packed (the common case: RGBA8888 on a little-endian machine, no
- * depth, exact rounding and boundary, a small triangle): the same values,
- * two channels to a 64-bit word (R and B; G and A times 256), so that a
- * pixel is two adds, a few shifts and masks and one 32-bit store.  It
- * needs no clamping: every sample such a fill writes lies in the closed
- * triangle, where the exact value is within the vertex values (0..255);
- * the base and each step are off by at most 1/2 of 1/2^F, so with
- * 1 + W + H < 2^F (W, H: the box's columns and rows) v is less than half a
- * level off, v + 1/2 lies in (0, 256) and each 32-bit lane of v 2^F (plus
- * 2^(F-1)) in [0, 2^(F+8)): the lanes never carry into each other.  The
- * setup divides by D with one reciprocal (wide.h) and skips constant
- * channels.
+ * Packed (the common case: RGBA8888 on a little-endian machine, no depth,
+ * exact rounding and boundary, a small triangle): the same values, all
+ * four channels of a pixel stepped together and written by one 32-bit
+ * store, without clamping.  Every sample such a fill writes lies in the
+ * closed triangle, where the exact value is within the vertex values
+ * (0..255), so:
+ *  - exact: each level is in 0..255; the four quotients q live in the bytes
+ *    of one word (a step adds every channel's sx and its carry: no byte
+ *    ever carries into the next), the remainders r - D in [-D, 0) in four
+ *    registers, a carry where one reaches 0 (its sign bit: no branch);
+ *  - fixed: the base and each step are off by at most 1/2 of 1/2^F, so with
+ *    1 + W + H < 2^F (W, H: the box's columns and rows) v is less than half
+ *    a level off and v + 1/2 lies in (0, 256).  Two channels share a
+ *    64-bit word (R and B; G and A times 256) as 32-bit lanes holding
+ *    (v + 1/2) 2^16, in [0, 2^24) (times 256: [0, 2^32)), so the lanes
+ *    never carry into each other and every level sits at a fixed bit:
+ *    two adds, two masks, two shifts and a store a pixel.
+ * Both setups divide by D with the triangle's reciprocal (wide.h).
  */
 #include <string.h>
 
@@ -368,7 +374,28 @@ static void rast__exact_packed_row(const rast__shade *s, int32_t y, const int32_
                                              &r[c]);
             qp += (uint32_t)(q + s->ch[c].c0) << (8 * c);
         }
-        {
+        if (D < ((int64_t)1 << 31)) {
+            /* r - D + 2^31 in [2^31 - D, 2^31) as 32-bit lanes, (R, B) and
+             * (G, A): a carry sets the lane's bit 31, never bit 32 (r + t
+             * < 2D < 2^32), and one product takes D off both lanes */
+            const uint64_t bias = ((uint64_t)1 << 31) - (uint64_t)D, lanes = 0x100000001u;
+            const uint64_t d = (uint64_t)D;
+            const uint64_t t0 = (uint64_t)s->etx[0] | (uint64_t)s->etx[2] << 32;
+            const uint64_t t1 = (uint64_t)s->etx[1] | (uint64_t)s->etx[3] << 32;
+            uint64_t p0 = ((uint64_t)r[0] + bias) | ((uint64_t)r[2] + bias) << 32;
+            uint64_t p1 = ((uint64_t)r[1] + bias) | ((uint64_t)r[3] + bias) << 32;
+            for (; x < xb; x++, o += 4) {
+                uint64_t c0, c1;
+                memcpy(o, &qp, 4);
+                p0 += t0;
+                p1 += t1;
+                c0 = (p0 >> 31) & lanes; /* R's carry at bit 0, B's at bit 32 */
+                c1 = (p1 >> 31) & lanes;
+                p0 -= c0 * d;
+                p1 -= c1 * d;
+                qp += sxp + ((uint32_t)(c0 | c0 >> 16) | (uint32_t)(c1 | c1 >> 16) << 8);
+            }
+        } else {
             int64_t r0 = r[0], r1 = r[1], r2 = r[2], r3 = r[3];
             const int64_t t0 = s->etx[0], t1 = s->etx[1], t2 = s->etx[2], t3 = s->etx[3];
             /* r - D kept in [-D, 0): a carry when it reaches 0 */

@@ -31,10 +31,11 @@
  * store, without clamping.  Every sample such a fill writes lies in the
  * closed triangle, where the exact value is within the vertex values
  * (0..255), so:
- *  - exact: each level is in 0..255; the four quotients q live in the bytes
- *    of one word (a step adds every channel's sx and its carry: no byte
- *    ever carries into the next), the remainders r - D in [-D, 0) in four
- *    registers, a carry where one reaches 0 (its sign bit: no branch);
+ *  - exact: each level is in 0..255; the four levels q live in bytes of
+ *    one word (a step adds every channel's sx and its carry: no byte ever
+ *    carries into the next), the remainders in [0, D) shifted so that a
+ *    carry is a sign bit (no branch): two to a 64-bit word as 32-bit lanes
+ *    when D < 2^31, else one to a register;
  *  - fixed: the base and each step are off by at most 1/2 of 1/2^F, so with
  *    1 + W + H < 2^F (W, H: the box's columns and rows) v is less than half
  *    a level off and v + 1/2 lies in (0, 256).  Two channels share a
@@ -384,16 +385,22 @@ static void rast__exact_packed_row(const rast__shade *s, int32_t y, const int32_
             const uint64_t t1 = (uint64_t)s->etx[1] | (uint64_t)s->etx[3] << 32;
             uint64_t p0 = ((uint64_t)r[0] + bias) | ((uint64_t)r[2] + bias) << 32;
             uint64_t p1 = ((uint64_t)r[1] + bias) | ((uint64_t)r[3] + bias) << 32;
+            /* the levels R, G at bits 0, 8 and B, A at 32, 40, where the
+             * carries land */
+            uint64_t q = (qp & 0xFFFFu) | (uint64_t)(qp >> 16) << 32;
+            const uint64_t sq = (uint64_t)s->esx[0] + ((uint64_t)s->esx[1] << 8) +
+                                ((uint64_t)s->esx[2] << 32) + ((uint64_t)s->esx[3] << 40);
             for (; x < xb; x++, o += 4) {
                 uint64_t c0, c1;
-                memcpy(o, &qp, 4);
+                uint32_t px = (uint32_t)(q | q >> 16);
+                memcpy(o, &px, 4);
                 p0 += t0;
                 p1 += t1;
                 c0 = (p0 >> 31) & lanes; /* R's carry at bit 0, B's at bit 32 */
                 c1 = (p1 >> 31) & lanes;
+                q += sq + c0 + (c1 << 8);
                 p0 -= c0 * d;
                 p1 -= c1 * d;
-                qp += sxp + ((uint32_t)(c0 | c0 >> 16) | (uint32_t)(c1 | c1 >> 16) << 8);
             }
         } else {
             int64_t r0 = r[0], r1 = r[1], r2 = r[2], r3 = r[3];

@@ -85,9 +85,9 @@ typedef struct rast__shade {
     int32_t have_steps;      /* sx, tx computed (fixed point needs none) */
     int32_t fixed;           /* fixed steps fit (else: exact) */
     rast__chan ch[5];        /* R, G, B, A, depth */
-    /* fixed, packed (see the top): lanes (R, B) and 256 (G, A), each
-     * v 2^F + 2^(F-1), at pixel (0, 0) of the plane and their steps; the
-     * sums are taken modulo 2^64 */
+    /* fixed, packed (see the top): 32-bit lanes (R, B) and 256 (G, A), each
+     * (v + 1/2) 2^16, at pixel (0, 0) of the plane and their steps per
+     * column and row; the sums are taken modulo 2^64 */
     int32_t packable;        /* the call may pack: RGBA8888, little-endian, no depth, exact boundary */
     int32_t packed;          /* the current triangle is packed: 1 fixed, 2 exact */
     uint64_t pk0[2], pkx[2], pky[2];
@@ -351,9 +351,9 @@ static void rast__packed_row(const rast__shade *s, int32_t y, const int32_t *xs,
 
 /* The spans of row y of an exact packed triangle: each channel's value
  * q + r / D stepped exactly (a carry when r reaches D), the four levels in
- * the bytes of one 32-bit word (no clamping: every sample lies in the
- * triangle, so every level in 0..255, and the bytes never carry into each
- * other), stored as R, G, B, A on a little-endian machine. */
+ * bytes of one word (no clamping: every sample lies in the triangle, so
+ * every level is in 0..255 and no byte carries into the next), stored as
+ * R, G, B, A by one 32-bit store on a little-endian machine. */
 static void rast__exact_packed_row(const rast__shade *s, int32_t y, const int32_t *xs, int32_t n)
 {
     const int64_t D = s->D;
@@ -572,7 +572,7 @@ static int rast__exact_packed_setup(rast__shade *s, const uint8_t *col, int64_t 
     int64_t dy = (int64_t)s->jmin * s->unit + s->off - s->y0;
     int32_t b, c;
     /* b: |ex|, |ey|, |dx|, |dy| at the corner < 2^b, unit <= 2^(b - 2); over
-     * the box |dx|, |dy| < 2^(b+3), |gx|, |gy| < 2^(b+9), so |R| < 2^(2b+14) */
+     * the box |dx|, |dy| < 2^(b+3), |gx|, |gy| < 2^(b+9), so |R| < 2^(2b+15) */
     b = rast__bitlen((ex1 < 0 ? -ex1 : ex1) | (ey1 < 0 ? -ey1 : ey1) | (ex2 < 0 ? -ex2 : ex2) |
                      (ey2 < 0 ? -ey2 : ey2) | (dx < 0 ? -dx : dx) | (dy < 0 ? -dy : dy) |
                      (4 * (int64_t)s->unit));

@@ -212,6 +212,67 @@ def test_fixed_16_within_one_level(data):
     assert np.abs(out[0] - out[1]).max(initial=0) <= 1, f"{lit(tris)} {shape} {cols.tolist()}"
 
 
+def fixed_by_paths(batch, cols, shape, precision="fixed", **kw):
+    """A fill on rgba8888 (the packed path where it applies: exact rounding
+    and boundary, a small enough box) and the same colours through the
+    general path: R, G, B on rgb888, A as the level of gray8."""
+    out = {}
+    for fmt, vc in (("rgba8888", cols), ("rgb888", cols[..., :3]), ("gray8", cols[..., 3:])):
+        c = rastrum.Canvas(shape[1], shape[0], format=fmt)
+        c.fill_triangles(batch, vertex_colors=vc, precision=precision, **kw)
+        out[fmt] = c.array.astype(int)
+    return out["rgba8888"], np.dstack([out["rgb888"], out["gray8"]])
+
+
+@settings(max_examples=examples(60))
+@given(data=st.data())
+def test_fixed_packed_equals_general(data):
+    """The packed rgba8888 path (two channels a 64-bit word, no clamping)
+    computes the documented fixed-point values: equal, pixel for pixel, to
+    the general per-channel path that other formats take."""
+    S = data.draw(st.sampled_from([0, 2, 8, 16]), label="S")
+    o = data.draw(st.sampled_from(OFFSETS), label="o")
+    rounding = data.draw(st.sampled_from(ROUNDINGS), label="rounding")
+    boundary = data.draw(st.sampled_from(["exact", "exact", "exact", "closed"]), label="boundary")
+    F = data.draw(st.integers(1, 16), label="F")
+    alg = data.draw(st.sampled_from(ALGOS), label="alg")
+    tris, shape, cols, _ = data.draw(colour_batches(S, o, 24, 24, max_n=6), label="batch")
+    batch = np.asarray(tris, dtype=np.float64).reshape(-1, 3, 2)
+    got, want = fixed_by_paths(batch, cols, shape, fraction_bits=F, algorithm=alg,
+                               subpixel_bits=S, sample_offset=o, rounding=rounding,
+                               boundary=boundary)
+    assert_same(got, want, f"F={F} {alg} {lit(tris)} {shape} {cols.tolist()}")
+
+
+@pytest.mark.parametrize("F", [3, 6, 8, 12, 16, "exact"])
+def test_fixed_packed_equals_general_many(F):
+    """The same on 400 random triangles of up to ~300 px (boxes past 2^F
+    for small F: both paths in one batch), slivers, vertices on sample
+    points (exact halves) and vertex colours at the ends of the range;
+    "exact": the exact packed path against the general one."""
+    rng = np.random.default_rng(F if F != "exact" else 99)
+    ctr = rng.uniform(0, 128, (400, 1, 2))
+    batch = ctr + rng.normal(0, 6, (400, 3, 2)) * rng.uniform(0.2, 3, (400, 1, 1))
+    batch[::7, 2] = batch[::7, 0] + (batch[::7, 1] - batch[::7, 0]) * 0.5 + 0.01  # slivers
+    batch[1::5] = np.round(batch[1::5]) + 0.5  # on sample points
+    cols = rng.choice([0, 1, 128, 254, 255, 17, 200], (400, 3, 4)).astype(np.int64)
+    kw = dict(precision="exact") if F == "exact" else dict(fraction_bits=F)
+    got, want = fixed_by_paths(batch, cols, (128, 128), **kw)
+    assert_same(got, want, f"F={F}")
+
+
+@pytest.mark.parametrize("S", [0, 4, 8, 12])
+def test_exact_packed_equals_general_big(S):
+    """Big triangles (2A past 2^31 at S >= 8: the packed exact path keeps
+    its remainders in 64-bit registers instead of 32-bit lanes), vertices on
+    sample points so that exact halves are everywhere."""
+    rng = np.random.default_rng(S + 7)
+    batch = np.round(rng.uniform(-20, 148, (60, 3, 2))) + 0.5
+    cols = rng.integers(0, 256, (60, 3, 4)).astype(np.int64)
+    got, want = fixed_by_paths(batch, cols, (128, 128), precision="exact", subpixel_bits=S)
+    assert_same(got, want, f"S={S}")
+
+
 def test_fixed_error_grows_as_f_shrinks():
     """Coarser F, larger error: F = 2 is visibly off somewhere on a big
     smooth triangle, F = 16 nowhere by more than one level."""

@@ -24,6 +24,26 @@
  * Fixed: the value at the box corner (ri, rj) and the steps per column and
  * row, each rounded to 1/2^F, then v = base + (i - ri) fgx + (j - rj) fgy
  * by additions; a pixel is floor(v / 2^F + 1/2).
+ *
+ * Packed (the common case: RGBA8888 on a little-endian machine, no depth,
+ * exact rounding and boundary, a small triangle): the same values, all
+ * four channels of a pixel stepped together and written by one 32-bit
+ * store, without clamping.  Every sample such a fill writes lies in the
+ * closed triangle, where the exact value is within the vertex values
+ * (0..255), so:
+ *  - exact: each level is in 0..255; the four levels q live in bytes of
+ *    one word (a step adds every channel's sx and its carry: no byte ever
+ *    carries into the next), the remainders in [0, D) shifted so that a
+ *    carry is a sign bit (no branch): two to a 64-bit word as 32-bit lanes
+ *    when D < 2^31, else one to a register;
+ *  - fixed: the base and each step are off by at most 1/2 of 1/2^F, so with
+ *    1 + W + H < 2^F (W, H: the box's columns and rows) v is less than half
+ *    a level off and v + 1/2 lies in (0, 256).  Two channels share a
+ *    64-bit word (R and B; G and A times 256) as 32-bit lanes holding
+ *    (v + 1/2) 2^16, in [0, 2^24) (times 256: [0, 2^32)), so the lanes
+ *    never carry into each other and every level sits at a fixed bit:
+ *    two adds, two masks, two shifts and a store a pixel.
+ * Both setups divide by D with the triangle's reciprocal (wide.h).
  */
 #include <string.h>
 
@@ -65,6 +85,15 @@ typedef struct rast__shade {
     int32_t have_steps;      /* sx, tx computed (fixed point needs none) */
     int32_t fixed;           /* fixed steps fit (else: exact) */
     rast__chan ch[5];        /* R, G, B, A, depth */
+    /* fixed, packed (see the top): 32-bit lanes (R, B) and 256 (G, A), each
+     * (v + 1/2) 2^16, at pixel (0, 0) of the plane and their steps per
+     * column and row; the sums are taken modulo 2^64 */
+    int32_t packable;        /* the call may pack: RGBA8888, little-endian, no depth, exact boundary */
+    int32_t packed;          /* the current triangle is packed: 1 fixed, 2 exact */
+    uint64_t pk0[2], pkx[2], pky[2];
+    /* exact, packed: per channel R at the box corner, its steps per column
+     * and row (R's, and 2 gx unit = sx D + tx) */
+    int64_t ek[4], egx[4], egy[4], esx[4], etx[4];
     /* flat without depth: a solid painter */
     int32_t flat;
     rast__solid solid;
@@ -294,12 +323,129 @@ static void rast__shade_span(rast__shade *s, int32_t y, int32_t xa, int32_t xb)
     }
 }
 
+/* The spans of row y of a packed triangle: the levels of R and B at bits
+ * 16.. and 48.. of one word, of G and A at bits 24.. and 56.. of the other
+ * (no clamping, see the top), stored as R, G, B, A bytes in one
+ * little-endian 32-bit word. */
+static void rast__packed_row(const rast__shade *s, int32_t y, const int32_t *xs, int32_t n)
+{
+    const uint64_t m0 = 0x00FF000000FF0000u, m1 = 0xFF000000FF000000u;
+    const uint64_t sx0 = s->pkx[0], sx1 = s->pkx[1];
+    unsigned char *row = s->base + (ptrdiff_t)y * s->stride;
+    uint64_t r0 = s->pk0[0] + (uint64_t)(int64_t)y * s->pky[0];
+    uint64_t r1 = s->pk0[1] + (uint64_t)(int64_t)y * s->pky[1];
+    int32_t k;
+    for (k = 0; k < n; k++) {
+        int32_t x = xs[2 * k], xb = xs[2 * k + 1];
+        uint64_t p0 = r0 + (uint64_t)(int64_t)x * sx0, p1 = r1 + (uint64_t)(int64_t)x * sx1;
+        unsigned char *o = row + (ptrdiff_t)x * 4;
+        for (; x < xb; x++, o += 4) {
+            uint64_t w = (p0 & m0) | (p1 & m1);
+            uint32_t px = (uint32_t)(w >> 16) | (uint32_t)(w >> 32);
+            memcpy(o, &px, 4);
+            p0 += sx0;
+            p1 += sx1;
+        }
+    }
+}
+
+/* The spans of row y of an exact packed triangle: each channel's value
+ * q + r / D stepped exactly (a carry when r reaches D), the four levels in
+ * bytes of one word (no clamping: every sample lies in the triangle, so
+ * every level is in 0..255 and no byte carries into the next), stored as
+ * R, G, B, A by one 32-bit store on a little-endian machine. */
+static void rast__exact_packed_row(const rast__shade *s, int32_t y, const int32_t *xs, int32_t n)
+{
+    const int64_t D = s->D;
+    unsigned char *row = s->base + (ptrdiff_t)y * s->stride;
+    uint32_t sxp = 0;
+    int64_t rowk[4];
+    int32_t c, k;
+    for (c = 0; c < 4; c++) {
+        rowk[c] = s->ek[c] + (int64_t)(y - s->jmin) * s->egy[c];
+        sxp += (uint32_t)s->esx[c] << (8 * c);
+    }
+    for (k = 0; k < n; k++) {
+        int32_t x = xs[2 * k], xb = xs[2 * k + 1];
+        int64_t r[4];
+        uint32_t qp = 0;
+        unsigned char *o = row + (ptrdiff_t)x * 4;
+        for (c = 0; c < 4; c++) {
+            int64_t q = rast__recip_floordiv(&s->rd, rowk[c] + (int64_t)(x - s->imin) * s->egx[c],
+                                             &r[c]);
+            qp += (uint32_t)(q + s->ch[c].c0) << (8 * c);
+        }
+        if (D < ((int64_t)1 << 31)) {
+            /* r - D + 2^31 in [2^31 - D, 2^31) as 32-bit lanes, (R, B) and
+             * (G, A): a carry sets the lane's bit 31, never bit 32 (r + t
+             * < 2D < 2^32), and one product takes D off both lanes */
+            const uint64_t bias = ((uint64_t)1 << 31) - (uint64_t)D, lanes = 0x100000001u;
+            const uint64_t d = (uint64_t)D;
+            const uint64_t t0 = (uint64_t)s->etx[0] | (uint64_t)s->etx[2] << 32;
+            const uint64_t t1 = (uint64_t)s->etx[1] | (uint64_t)s->etx[3] << 32;
+            uint64_t p0 = ((uint64_t)r[0] + bias) | ((uint64_t)r[2] + bias) << 32;
+            uint64_t p1 = ((uint64_t)r[1] + bias) | ((uint64_t)r[3] + bias) << 32;
+            /* the levels R, G at bits 0, 8 and B, A at 32, 40, where the
+             * carries land */
+            uint64_t q = (qp & 0xFFFFu) | (uint64_t)(qp >> 16) << 32;
+            const uint64_t sq = (uint64_t)s->esx[0] + ((uint64_t)s->esx[1] << 8) +
+                                ((uint64_t)s->esx[2] << 32) + ((uint64_t)s->esx[3] << 40);
+            for (; x < xb; x++, o += 4) {
+                uint64_t c0, c1;
+                uint32_t px = (uint32_t)(q | q >> 16);
+                memcpy(o, &px, 4);
+                p0 += t0;
+                p1 += t1;
+                c0 = (p0 >> 31) & lanes; /* R's carry at bit 0, B's at bit 32 */
+                c1 = (p1 >> 31) & lanes;
+                q += sq + c0 + (c1 << 8);
+                p0 -= c0 * d;
+                p1 -= c1 * d;
+            }
+        } else {
+            int64_t r0 = r[0], r1 = r[1], r2 = r[2], r3 = r[3];
+            const int64_t t0 = s->etx[0], t1 = s->etx[1], t2 = s->etx[2], t3 = s->etx[3];
+            /* r - D kept in [-D, 0): a carry when it reaches 0 */
+            r0 -= D;
+            r1 -= D;
+            r2 -= D;
+            r3 -= D;
+            for (; x < xb; x++, o += 4) {
+                int64_t m0, m1, m2, m3; /* -1 where r - D reached 0: a carry */
+                memcpy(o, &qp, 4);
+                r0 += t0;
+                r1 += t1;
+                r2 += t2;
+                r3 += t3;
+                m0 = (int64_t)((uint64_t)r0 >> 63) - 1;
+                m1 = (int64_t)((uint64_t)r1 >> 63) - 1;
+                m2 = (int64_t)((uint64_t)r2 >> 63) - 1;
+                m3 = (int64_t)((uint64_t)r3 >> 63) - 1;
+                r0 -= D & m0;
+                r1 -= D & m1;
+                r2 -= D & m2;
+                r3 -= D & m3;
+                qp += sxp + (((uint32_t)m0 & 0x1u) | ((uint32_t)m1 & 0x100u) |
+                             ((uint32_t)m2 & 0x10000u) | ((uint32_t)m3 & 0x1000000u));
+            }
+        }
+    }
+}
+
 static void rast__shade_row(void *user, int32_t y, const int32_t *xs, int32_t n)
 {
     rast__shade *s = (rast__shade *)user;
     int32_t k;
     if (s->flat) {
         s->solid_fn(&s->solid, y, xs, n);
+        return;
+    }
+    if (s->packed == 1) {
+        rast__packed_row(s, y, xs, n);
+        return;
+    }
+    if (s->packed == 2) {
+        rast__exact_packed_row(s, y, xs, n);
         return;
     }
     for (k = 0; k < n; k++) rast__shade_span(s, y, xs[2 * k], xs[2 * k + 1]);
@@ -365,6 +511,88 @@ static void rast__chan_setup(rast__shade *s, rast__chan *ch, int64_t c0, int64_t
     }
 }
 
+/* Set up the packed fixed-point path for the current triangle (box and
+ * reciprocal done, exact rounding): 0 when it does not apply (a big box for
+ * F, magnitudes past the bounds below, steps the general path would reject),
+ * then the general setup runs. */
+static int rast__packed_setup(rast__shade *s, const uint8_t *col, int64_t ex1, int64_t ey1,
+                              int64_t ex2, int64_t ey2, int neg)
+{
+    const int32_t F = s->F;
+    const int64_t A = s->A, lim = (int64_t)1 << 60;
+    int64_t dx = (int64_t)s->imin * s->unit + s->off - s->x0;
+    int64_t dy = (int64_t)s->jmin * s->unit + s->off - s->y0;
+    uint64_t v0[4], vx[4], vy[4];
+    int32_t b, c;
+    /* no lane carries (see the top) */
+    if ((int64_t)(s->imax - s->imin) + (s->jmax - s->jmin) + 1 >= ((int64_t)1 << F)) return 0;
+    /* b: |ex|, |ey|, |dx|, |dy| < 2^b, unit <= 2^(b - 2); so |gx|, |gy| <
+     * 2^(b+9), |N| < 2^(2b+10) and the numerators below < 2^62 */
+    b = rast__bitlen((ex1 < 0 ? -ex1 : ex1) | (ey1 < 0 ? -ey1 : ey1) | (ex2 < 0 ? -ex2 : ex2) |
+                     (ey2 < 0 ? -ey2 : ey2) | (dx < 0 ? -dx : dx) | (dy < 0 ? -dy : dy) |
+                     (4 * (int64_t)s->unit));
+    if (2 * b + F + 12 > 62 || b + s->shift + F + 11 > 62) return 0;
+    for (c = 0; c < 4; c++) {
+        int64_t c0 = col[c], d1 = col[4 + c] - c0, d2 = col[8 + c] - c0;
+        int64_t fb = 0, fx = 0, fy = 0, r;
+        if (d1 | d2) { /* as rast__chan_setup, with the same roundings */
+            int64_t gx = d1 * ey2 - d2 * ey1, gy = d2 * ex1 - d1 * ex2;
+            if (neg) {
+                gx = -gx;
+                gy = -gy;
+            }
+            fb = rast__recip_floordiv(&s->rd, (dx * gx + dy * gy) * ((int64_t)1 << (F + 1)) + A, &r);
+            fx = rast__recip_floordiv(&s->rd, gx * ((int64_t)1 << (s->shift + F + 1)) + A, &r);
+            fy = rast__recip_floordiv(&s->rd, gy * ((int64_t)1 << (s->shift + F + 1)) + A, &r);
+            if (fb > lim || fb < -lim || rast__bitlen(fx) > 31 || rast__bitlen(fy) > 31) return 0;
+        }
+        /* c 2^F + fbase - imin fgx - jmin fgy + 2^(F-1), modulo 2^64 */
+        v0[c] = ((uint64_t)c0 << F) + (uint64_t)fb - (uint64_t)(int64_t)s->imin * (uint64_t)fx -
+                (uint64_t)(int64_t)s->jmin * (uint64_t)fy + ((uint64_t)1 << (F - 1));
+        vx[c] = (uint64_t)fx;
+        vy[c] = (uint64_t)fy;
+    }
+    /* in units of 2^-16 level (2^-8 for G and A), so that every F has its
+     * levels at the same bits */
+    s->pk0[0] = (v0[0] + (v0[2] << 32)) << (16 - F);
+    s->pk0[1] = (v0[1] + (v0[3] << 32)) << (24 - F);
+    s->pkx[0] = (vx[0] + (vx[2] << 32)) << (16 - F);
+    s->pkx[1] = (vx[1] + (vx[3] << 32)) << (24 - F);
+    s->pky[0] = (vy[0] + (vy[2] << 32)) << (16 - F);
+    s->pky[1] = (vy[1] + (vy[3] << 32)) << (24 - F);
+    return 1;
+}
+
+/* Set up the exact packed path for the current triangle (box and
+ * reciprocal done, exact rounding): 0 when it does not apply. */
+static int rast__exact_packed_setup(rast__shade *s, const uint8_t *col, int64_t ex1,
+                                    int64_t ey1, int64_t ex2, int64_t ey2, int neg)
+{
+    int64_t dx = (int64_t)s->imin * s->unit + s->off - s->x0;
+    int64_t dy = (int64_t)s->jmin * s->unit + s->off - s->y0;
+    int32_t b, c;
+    /* b: |ex|, |ey|, |dx|, |dy| at the corner < 2^b, unit <= 2^(b - 2); over
+     * the box |dx|, |dy| < 2^(b+3), |gx|, |gy| < 2^(b+9), so |R| < 2^(2b+15) */
+    b = rast__bitlen((ex1 < 0 ? -ex1 : ex1) | (ey1 < 0 ? -ey1 : ey1) | (ex2 < 0 ? -ex2 : ex2) |
+                     (ey2 < 0 ? -ey2 : ey2) | (dx < 0 ? -dx : dx) | (dy < 0 ? -dy : dy) |
+                     (4 * (int64_t)s->unit));
+    if (2 * b + 15 > 62) return 0;
+    for (c = 0; c < 4; c++) {
+        int64_t c0 = col[c], d1 = col[4 + c] - c0, d2 = col[8 + c] - c0;
+        int64_t gx = d1 * ey2 - d2 * ey1, gy = d2 * ex1 - d1 * ex2;
+        if (neg) {
+            gx = -gx;
+            gy = -gy;
+        }
+        s->ch[c].c0 = c0;
+        s->ek[c] = 2 * (dx * gx + dy * gy) + s->A;
+        s->egx[c] = gx * ((int64_t)2 << s->shift);
+        s->egy[c] = gy * ((int64_t)2 << s->shift);
+        s->esx[c] = rast__recip_floordiv(&s->rd, s->egx[c], &s->etx[c]);
+    }
+    return 1;
+}
+
 static int rast__shade_begin(void *user, const rast_point *t, uint32_t k, const rast__grid *g)
 {
     rast__shade *s = (rast__shade *)user;
@@ -373,7 +601,7 @@ static int rast__shade_begin(void *user, const rast_point *t, uint32_t k, const 
     int64_t ex1 = 2 * (int64_t)t[1].x - x0, ey1 = 2 * (int64_t)t[1].y - y0;
     int64_t ex2 = 2 * (int64_t)t[2].x - x0, ey2 = 2 * (int64_t)t[2].y - y0;
     int64_t A = ex1 * ey2 - ey1 * ex2;
-    int32_t c, neg = A < 0;
+    int32_t c, neg = A < 0, plane;
 
     s->unit = g->unit;
     s->shift = g->shift;
@@ -383,6 +611,8 @@ static int rast__shade_begin(void *user, const rast_point *t, uint32_t k, const 
         s->fmt->pack(col, s->solid.value);
         return 1;
     }
+    s->packed = 0;
+    plane = A != 0;
     if (A == 0) { /* no plane: vertex 0's values (boundary modes only) */
         ex1 = ey1 = ex2 = ey2 = 0;
         A = 1;
@@ -396,6 +626,14 @@ static int rast__shade_begin(void *user, const rast_point *t, uint32_t k, const 
                        &s->imax);
     rast__shade_extent(y0, y0 + ey1, y0 + ey2, s, s->solid.clip.y0, s->solid.clip.y1, &s->jmin,
                        &s->jmax);
+    if (s->packable && !g->textbook && plane) {
+        if (s->prec == RAST_PRECISION_FIXED && rast__packed_setup(s, col, ex1, ey1, ex2, ey2, neg))
+            s->packed = 1;
+        else if (s->prec == RAST_PRECISION_EXACT &&
+                 rast__exact_packed_setup(s, col, ex1, ey1, ex2, ey2, neg))
+            s->packed = 2;
+        if (s->packed) return 1;
+    }
     /* bits of the largest |px - x0|, |py - y0| over the box */
     {
         int64_t ax = s->x0 - ((int64_t)s->imin * s->unit + s->off);
@@ -470,6 +708,13 @@ rast_status rast_fill_triangles_shaded(const rast_target *target, const rast_poi
         if (st != RAST_OK) return st;
     }
     s.flat = s.prec == RAST_PRECISION_FLAT && !z;
+    {
+        const uint32_t one = 1;
+        unsigned char low;
+        memcpy(&low, &one, 1);
+        s.packable = low == 1 && target->format == RAST_FORMAT_RGBA8888 &&
+                     s.prec != RAST_PRECISION_FLAT && !z && opts->boundary == RAST_BOUNDARY_EXACT;
+    }
     return rast__tri_fill(tris, ntris, opts, &clip, rast__shade_row, &s, NULL, rast__shade_begin,
                           scratch, scratch_bytes);
 }

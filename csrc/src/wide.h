@@ -120,14 +120,21 @@ saturate:
     return 0;
 }
 
-/* The high 64 bits of the 128-bit product a * b. */
+/* The high 64 bits of the 128-bit product a * b: one instruction where
+ * the compiler has a 128-bit type (GCC and clang on 64-bit targets; the
+ * __extension__ keeps -pedantic quiet), else four 32-bit products. */
 static inline uint64_t rast__mulhi(uint64_t a, uint64_t b)
 {
+#if defined(__SIZEOF_INT128__) && !defined(RAST_NO_INT128)
+    __extension__ typedef unsigned __int128 rast__u128;
+    return (uint64_t)(((rast__u128)a * b) >> 64);
+#else
     const uint64_t m = 0xFFFFFFFFu;
     uint64_t a0 = a & m, a1 = a >> 32, b0 = b & m, b1 = b >> 32;
     uint64_t p00 = a0 * b0, p01 = a0 * b1, p10 = a1 * b0, p11 = a1 * b1;
     uint64_t mid = (p00 >> 32) + (p01 & m) + (p10 & m);
     return p11 + (p01 >> 32) + (p10 >> 32) + (mid >> 32);
+#endif
 }
 
 /* Division by an invariant divisor d (0 < d < 2^62) without a divide

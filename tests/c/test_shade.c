@@ -139,6 +139,53 @@ static void test_pixel_sets(void)
     }
 }
 
+/* The packed RGBA8888 paths (fixed and exact; little-endian hosts, exact
+ * rounding and boundary, no depth) against the general per-channel path:
+ * R, G, B equal those of RGB888, A the level of GRAY8 filled with A as its
+ * R; nothing written outside the target. */
+static void test_packed_paths(void)
+{
+    static unsigned char buf[3][PAD + (W * 4 + PAD) * H + PAD];
+    static const rast_format fmts[3] = {RAST_FORMAT_RGBA8888, RAST_FORMAT_RGB888, RAST_FORMAT_GRAY8};
+    int round, bad = 0, guards = 1;
+    for (round = 0; round < 400; round++) {
+        int s = (int)(rng() % 9), n = 1 + (int)(rng() % 4), f, k;
+        rast_point tri[12];
+        uint8_t colors[48], alpha[48];
+        rast_target t[3];
+        rast_tri_opts o;
+        rast_shade_opts so;
+        int32_t i, j;
+        for (k = 0; k < 3 * n; k++) tri[k] = rpt(s);
+        for (k = 0; k < 12 * n; k++) {
+            uint32_t r = rng();
+            colors[k] = (uint8_t)(r & 8 ? (r >> 4) & 1 ? 255 : 0 : r >> 8);
+        }
+        for (k = 0; k < 3 * n; k++) alpha[4 * k] = colors[4 * k + 3];
+        memset(&o, 0, sizeof o);
+        o.algorithm = (rast_tri_algorithm)(rng() % RAST_TRI_COUNT_);
+        o.subpixel_bits = s;
+        o.sample = rng() & 1 ? RAST_SAMPLE_CENTER : RAST_SAMPLE_CORNER;
+        so.precision = rng() & 1 ? RAST_PRECISION_EXACT : RAST_PRECISION_FIXED;
+        so.fraction_bits = 1 + (int32_t)(rng() % 16);
+        for (f = 0; f < 3; f++) {
+            make(&t[f], buf[f], sizeof buf[f], fmts[f]);
+            CHECK(rast_fill_triangles_shaded(&t[f], tri, (uint32_t)n, f == 2 ? alpha : colors, NULL,
+                                             NULL, &o, &so, scratch, sizeof scratch) == RAST_OK);
+            guards &= guards_ok(&t[f], buf[f], sizeof buf[f]);
+        }
+        for (j = 0; j < H; j++)
+            for (i = 0; i < W; i++) {
+                const unsigned char *a = (const unsigned char *)t[0].pixels + j * t[0].stride + 4 * i;
+                const unsigned char *b = (const unsigned char *)t[1].pixels + j * t[1].stride + 3 * i;
+                const unsigned char *c = (const unsigned char *)t[2].pixels + j * t[2].stride + i;
+                if (memcmp(a, b, 3) != 0 || a[3] != c[0]) bad++;
+            }
+    }
+    CHECK(bad == 0);
+    CHECK(guards);
+}
+
 /* mono1 spans at every start and end bit: exactly those bits change. */
 static void test_mono1_spans(void)
 {
@@ -370,6 +417,7 @@ int main(void)
     test_formats();
     test_mono1_spans();
     test_pixel_sets();
+    test_packed_paths();
     test_opaque();
     test_limit_exact();
     test_depth_and_errors();

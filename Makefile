@@ -41,6 +41,12 @@ VERSION_PATCH := $(shell sed -n 's/^\#define RAST_VERSION_PATCH \([0-9]*\)/\1/p'
 VERSION := $(VERSION_MAJOR).$(VERSION_MINOR).$(VERSION_PATCH)
 SONAME  := librastrum.so.$(VERSION_MAJOR)
 
+# setuptools keeps its objects in build/temp.* and reuses them whenever the
+# sources are older, whatever the flags: a sanitizer build (asan-py) would
+# then leak into the next plain or valgrind install.  Every pip install of
+# the package starts from none.
+PY_CLEAN := rm -rf build/lib.* build/temp.* build/bdist.*
+
 C_TESTS := $(patsubst tests/c/%.c,build/tests/%,$(wildcard tests/c/test_*.c))
 SAN     := -fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer -g
 
@@ -98,11 +104,13 @@ test-install:
 	@test ! -e build/destdir/usr/include/rastrum.h || (echo "uninstall left files"; exit 1)
 
 test-py:
+	$(PY_CLEAN)
 	$(PYTHON) -m pip install --quiet '.[test]'
 	$(PYTHON) -m pytest -q tests
 
 # ---- demo (the main job) -----------------------------------------------------
 demo:
+	$(PY_CLEAN)
 	$(PYTHON) -m pip install --quiet '.[bench]'
 	$(PYTHON) bench/demo.py --out out
 
@@ -121,6 +129,7 @@ asan-c:
 # into an ordinary interpreter with the ASan runtime preloaded.
 asan-py:
 	rm -rf build/asan-py
+	$(PY_CLEAN)
 	RASTRUM_CFLAGS="$(SAN) -O1" RASTRUM_LDFLAGS="$(SAN)" \
 	  $(PYTHON) -m pip install --quiet --no-deps --no-build-isolation --target build/asan-py/lib .
 	LD_PRELOAD="$$($(CC) -print-file-name=libasan.so) $$($(CC) -print-file-name=libubsan.so)" \
@@ -152,6 +161,7 @@ VALGRIND_PY_TESTS ?= tests/test_bad_input.py tests/test_threads.py tests/test_sn
 VALGRIND_PY_K ?= NaN or empty or contiguous or only or zero or Fortran or gil or disjoint or snap
 valgrind-py:
 	rm -rf build/valgrind-py
+	$(PY_CLEAN)
 	RASTRUM_CFLAGS="-g -O1" $(PYTHON) -m pip install --quiet --no-deps --no-build-isolation \
 	  --target build/valgrind-py/lib .
 	PYTHONMALLOC=malloc RASTRUM_HYPOTHESIS_PROFILE=valgrind PYTHONPATH=build/valgrind-py/lib \

@@ -747,7 +747,9 @@ RAST_API rast_status rast_fill_rect_gouraud(const rast_target *target, rast_poin
  * colour is linear in x between the left crossing (Xl, cl) and the right
  * one (Xr, cr): c = cl + (xs - Xl)(cr - cl)/(Xr - Xl) at the sample
  * abscissa xs, and the pixel gets floor(c + 1/2) per channel, exactly
- * (128-bit integers; no rounding before the last step).
+ * (128-bit integers; no rounding before the last step), clamped to 0..255
+ * (RAST_ROUND_TEXTBOOK owns a sample up to half a pixel left of Xl, where
+ * the line is extrapolated).
  * For a triangle this is the same colour as the barycentric (plane)
  * interpolation: both are the unique affine function through the three
  * vertex colours, evaluated exactly.

@@ -33,9 +33,13 @@ Writes into DIR (default ./out):
 - gouraud_polygon.png   Figure 3-19's polygon with a colour per vertex,
                     shaded by the AET (edge, then span).
 
+- seedfill.png      region fill: outlines drawn with the library's lines,
+                    before | flood-filled 4-connected | 8-connected.
+
 then prints the benchmark table (bench.main), the triangle table
-(bench_triangles.main) and the threads table (bench_threads.main, a few
-seconds); --no-bench skips them.
+(bench_triangles.main), the shading table (bench_shade.main), the region
+fill table (bench_seedfill.main) and the threads table (bench_threads.main,
+a few seconds); --no-bench skips them.
 """
 
 from __future__ import annotations
@@ -347,6 +351,44 @@ def render_meshes(out: Path):
     paths.append(p)
     return paths
 
+# ---------------------------------------------------------------------------
+# region fill: before / after
+# ---------------------------------------------------------------------------
+
+def render_seedfill(out: Path):
+    """Outlines drawn with the library's lines, then flood-filled from a few
+    seeds (inside the circle, the star and the bar, on the ink of the bar
+    and the vertical line, on the paper): before | 4-connected |
+    8-connected, which leaks through the corner steps of a line."""
+    W, H, scale = 200, 130, 4
+    ink, paper = (30, 30, 40), (250, 248, 240)
+
+    def drawing():
+        c = rastrum.Canvas(W, H, format="rgb888", background=paper)
+        t = np.linspace(0, 2 * np.pi, 40, endpoint=False)
+        c.polyline(np.stack([50 + 38 * np.cos(t), 62 + 38 * np.sin(t)], 1), ink, closed=True)
+        a = np.linspace(0, 2 * np.pi, 11)[:-1]
+        r = np.where(np.arange(10) % 2, 18, 40)
+        c.polyline(np.stack([140 + r * np.sin(a), 62 - r * np.cos(a)], 1), ink, closed=True)
+        c.polyline([(12, 112), (188, 112), (188, 124), (12, 124)], ink, closed=True)
+        c.line((100, 0), (100, 130), ink)
+        return c
+
+    panels, labels = [], []
+    for conn in (None, 4, 8):
+        c = drawing()
+        if conn:
+            c.flood_fill((50, 62), (70, 150, 230), connectivity=conn)
+            c.flood_fill((140, 62), (240, 170, 40), connectivity=conn)
+            c.flood_fill((100, 118), (200, 60, 80), connectivity=conn)
+            c.flood_fill((60, 118), (120, 200, 120), connectivity=conn)
+            c.flood_fill((5, 5), (200, 225, 200), connectivity=conn)
+        panels.append(c.to_image().resize((W * scale, H * scale), 0))
+        labels.append("before" if conn is None else f"flood_fill, connectivity={conn}")
+    path = out / "seedfill.png"
+    labelled_row(panels, labels).save(path)
+    return [path]
+
 
 def main(argv=None):
     ap = argparse.ArgumentParser(description="render the rastrum demo "
@@ -361,7 +403,8 @@ def main(argv=None):
     out = Path(args.out)
     out.mkdir(parents=True, exist_ok=True)
     written = []
-    for f in (render_fig3_19, render_holes, render_stars, render_canvas, render_shading, render_meshes):
+    for f in (render_fig3_19, render_holes, render_stars, render_canvas, render_shading, render_meshes,
+              render_seedfill):
         written += f(out)
     for p in written:
         print(f"wrote {p}")
@@ -374,6 +417,9 @@ def main(argv=None):
         import bench_shade
         print("\n== shading (bench/bench_shade.py)", flush=True)
         bench_shade.main(["--quick"] if args.quick else [])
+        import bench_seedfill
+        print("\n== region fill (bench/bench_seedfill.py)", flush=True)
+        bench_seedfill.main(["--quick"] if args.quick else [])
         import bench_threads
         print("\n== threads: the same work on 1, 2, 4 threads (bench/bench_threads.py --quick)", flush=True)
         bench_threads.main(["--quick"])

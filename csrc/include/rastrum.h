@@ -882,6 +882,64 @@ RAST_API rast_status rast_render_bands_spans(const rast_prim *prims, uint32_t n,
                                              void *scratch, size_t scratch_bytes,
                                              rast_band_stats *stats);
 
+/* ---- region fill -------------------------------------------------------------
+ * Seed fill (seed 001 section 3.6): starting at the seed pixel (x, y),
+ * write `value` over a connected region of target->clip.  Pixels are
+ * connected through their 4 side neighbours (connectivity 4) or also
+ * their 4 corner neighbours (connectivity 8).  Values are compared as
+ * whole pixels: all bytes of the format in memory order (RAST_FORMAT_RGB565
+ * and RAST_FORMAT_COUNT16 a native uint16_t, COUNT16 written as a value,
+ * not counted); RAST_FORMAT_MONO1 its bit, a value byte being on iff it is
+ * not 0.
+ *
+ * The region is confined to the clip: pixels outside it are never read or
+ * written and connect nothing.  A seed outside the target is an error
+ * (RAST_E_ARG); a seed inside the target but outside the clip fills
+ * nothing and returns RAST_OK.
+ *
+ * `stack` (aligned to RAST_SCRATCH_ALIGN, `stack_bytes` long, contents
+ * ignored and undefined on return; may be NULL when stack_bytes is 0) holds
+ * the span fill's pending row ranges, 16 bytes each.  With less than
+ * rast_seed_stack_size() the fill may run out of it; then it goes on in
+ * fixed memory and still fills exactly the region (only slower: up to the
+ * region's contour length per pixel where the region is one pixel thin).
+ * Any size is correct, 0 included.
+ *
+ * Errors, returned before anything is written: RAST_E_NULL (target,
+ * value, or boundary for rast_boundary_fill), RAST_E_SIZE and
+ * RAST_E_FORMAT (a bad target), RAST_E_ARG (connectivity not 4 or 8; the
+ * seed outside the target), RAST_E_ALIGN (a misaligned stack), and
+ * RAST_E_NULL for a NULL stack of non-zero size.  Never writes outside
+ * the clip. */
+
+/* Bytes of stack with which rast_flood_fill and rast_boundary_fill never
+ * need their fixed-memory fallback, for a clip `width` x `height`: 16
+ * bytes for each range the span fill can have pending at once, at most 2
+ * per run of the clip plus 2 (a worst case: most regions need far less;
+ * SIZE_MAX when it does not fit a size_t).  Errors: RAST_E_NULL,
+ * RAST_E_SIZE (a side outside 0..RAST_MAX_DIM). */
+RAST_API rast_status rast_seed_stack_size(int32_t width, int32_t height, size_t *bytes);
+
+/* Flood fill (interior-defined region): every pixel connected to the seed
+ * through pixels equal to the seed's value (its value before the call)
+ * gets `value`.  If `value` equals the seed's value nothing changes and
+ * nothing is written (RAST_OK). */
+RAST_API rast_status rast_flood_fill(const rast_target *target, int32_t x, int32_t y,
+                                     const void *value, int connectivity, void *stack,
+                                     size_t stack_bytes);
+
+/* Boundary fill (boundary-defined region): every pixel connected to the
+ * seed through pixels that are neither the `boundary` value nor `value`
+ * gets `value`; the textbook's BoundaryFill, where a pixel already of the
+ * fill value counts as done, so it stops the fill like the boundary.
+ * With boundary == value (an outline drawn in the fill colour, the usual
+ * use) that is exactly every pixel connected to the seed through pixels
+ * not of the boundary value.  A seed of the boundary value or of `value`
+ * fills nothing (RAST_OK). */
+RAST_API rast_status rast_boundary_fill(const rast_target *target, int32_t x, int32_t y,
+                                        const void *value, const void *boundary,
+                                        int connectivity, void *stack, size_t stack_bytes);
+
 #ifdef __cplusplus
 }
 #endif

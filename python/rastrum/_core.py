@@ -213,19 +213,28 @@ def fill_opts(algorithm, rule, subpixel_bits, sample_offset, rounding="exact", b
                        rounding, boundary)
 
 
+def int_pair(pair, not_pair, not_ints):
+    """Two ints (numpy ints too, never bools) from `pair`, or InputError
+    with the message `not_pair` or `not_ints` % (pair,)."""
+    try:
+        a, b = pair
+    except (TypeError, ValueError):
+        raise InputError(not_pair % (pair,)) from None
+    for v in (a, b):
+        if isinstance(v, (bool, np.bool_)) or not isinstance(v, (int, np.integer)):
+            raise InputError(not_ints % (pair,))
+    return int(a), int(b)
+
+
 def shape2(shape):
     """(H, W) as two ints >= 0, or InputError."""
     if type(shape) is tuple and len(shape) == 2:  # the common case, quickly
         h, w = shape
         if type(h) is int and type(w) is int and 0 <= h <= lib.RAST_MAX_DIM and 0 <= w <= lib.RAST_MAX_DIM:
             return shape
-    try:
-        h, w = shape
-    except (TypeError, ValueError):
-        raise InputError("shape must be a pair (height, width), not %r" % (shape,)) from None
+    h, w = int_pair(shape, "shape must be a pair (height, width), not %r",
+                    "shape must hold two ints, not %r")
     for v in (h, w):
-        if isinstance(v, (bool, np.bool_)) or not isinstance(v, (int, np.integer)):
-            raise InputError("shape must hold two ints, not %r" % (shape,))
         if not 0 <= v <= lib.RAST_MAX_DIM:
             raise InputError("shape %r: each side must be in 0..%d" % (shape, lib.RAST_MAX_DIM))
     return int(h), int(w)
@@ -402,3 +411,48 @@ def fill_polygon_gouraud(target, rings, colors, opts, shade, s):
     xy = ffi.from_buffer("double[]", pts)
     _check_glue(lib.rastpy_fill_polygon_gouraud(target, xy, len(pts), sizes, nrings, opts,
                                                 ffi.from_buffer("uint8_t[]", colors), shade), pts, s)
+
+
+
+# ---- region fill ---------------------------------------------------------------
+
+# Stack for the span seed fill: what rast_seed_stack_size guarantees, but at
+# most this many bytes (np.empty does not touch the pages it does not use,
+# so a fill pays only for the depth it reaches); if even that cannot be
+# had, SEED_STACK_FALLBACK.  Less is still exact: the C fill goes on in
+# fixed memory, only slower.
+SEED_STACK_CAP = 1 << 30
+SEED_STACK_FALLBACK = 1 << 26
+
+
+def seed_point(seed, target):
+    """(x, y) ints inside the target, or InputError."""
+    x, y = int_pair(seed, "seed must be a pair (x, y), not %r",
+                    "seed must hold two ints (pixel column, row), not %r")
+    if not (0 <= x < target.width and 0 <= y < target.height):
+        raise InputError("seed %r is outside the %d x %d canvas" % (seed, target.width, target.height))
+    return x, y
+
+
+def seed_fill(target, seed, pixel, boundary, connectivity, stack_bytes=None):
+    """rast_flood_fill (boundary None) or rast_boundary_fill into `target`.
+
+    `stack_bytes` None: what the clip needs, up to SEED_STACK_CAP."""
+    x, y = seed_point(seed, target)
+    if isinstance(connectivity, (bool, np.bool_)) or connectivity not in (4, 8):
+        raise InputError("connectivity must be 4 or 8, not %r" % (connectivity,))
+    if stack_bytes is None:
+        need = ffi.new("size_t *")
+        _check(lib.rast_seed_stack_size(target.clip.x1 - target.clip.x0,
+                                        target.clip.y1 - target.clip.y0, need))
+        stack_bytes = min(need[0], SEED_STACK_CAP)
+    try:
+        stack = np.empty((stack_bytes + 7) // 8, np.uint64)
+    except MemoryError:
+        stack_bytes = min(stack_bytes, SEED_STACK_FALLBACK)
+        stack = np.empty((stack_bytes + 7) // 8, np.uint64)
+    mem = ffi.from_buffer(stack) if stack_bytes else ffi.NULL
+    if boundary is None:
+        _check(lib.rast_flood_fill(target, x, y, pixel, int(connectivity), mem, stack_bytes))
+    else:
+        _check(lib.rast_boundary_fill(target, x, y, pixel, boundary, int(connectivity), mem, stack_bytes))

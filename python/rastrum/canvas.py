@@ -371,6 +371,64 @@ class Canvas:
             _core._check(lib.rast_draw_polyline(target, ffi.from_buffer("rast_point[]", pts), len(pts),
                                                 1 if closed else 0, opts, pixel))
 
+    def flood_fill(self, seed, value, connectivity=4):
+        """Flood fill: paint `value` on every pixel connected to `seed`
+        through pixels of the seed's (original) value.
+
+        `seed` is (x, y), inside the canvas; `connectivity` is 4 (through
+        sides) or 8 (also through corners); `value` is a colour as for
+        :meth:`fill_polygon`.  A value equal to the seed's paints nothing.
+        Nothing is written when an argument is bad (an InputError says
+        which).
+
+        Examples
+        --------
+        >>> import rastrum
+        >>> picture = [[0, 0, 1], [1, 0, 1], [0, 1, 0]]
+        >>> c = rastrum.Canvas.wrap(np.array(picture, np.uint8))
+        >>> c.flood_fill((0, 0), 7)
+        >>> c.array
+        array([[7, 7, 1],
+               [1, 7, 1],
+               [0, 1, 0]], dtype=uint8)
+        >>> c = rastrum.Canvas.wrap(np.array(picture, np.uint8))
+        >>> c.flood_fill((0, 0), 7, connectivity=8)
+        >>> c.array
+        array([[7, 7, 1],
+               [1, 7, 1],
+               [7, 1, 7]], dtype=uint8)
+        """
+        pixel = self._pixel(value)
+        _core.seed_fill(self._target, seed, pixel, None, connectivity)
+
+    def boundary_fill(self, seed, value, boundary, connectivity=4):
+        """Boundary fill: paint `value` on every pixel connected to `seed`
+        through pixels that are neither `boundary` nor `value`.
+
+        The textbook's boundary fill: a pixel already of the fill value is
+        done, and stops the fill like the boundary.  With
+        ``boundary == value`` (an outline drawn in the fill colour) the
+        region is every pixel connected to the seed through pixels that
+        are not the boundary.  A seed of either value paints nothing.
+        Other arguments as :meth:`flood_fill`.
+
+        Examples
+        --------
+        >>> import rastrum
+        >>> c = rastrum.Canvas(5, 4, format="gray8")
+        >>> c.polyline([(0, 0), (3, 0), (3, 3), (0, 3)], 1, closed=True, subpixel_bits=0, sample_offset=0)
+        >>> c.array[1, 2] = 7
+        >>> c.boundary_fill((1, 1), 7, 1)
+        >>> c.array
+        array([[1, 1, 1, 1, 0],
+               [1, 7, 7, 1, 0],
+               [1, 7, 7, 1, 0],
+               [1, 1, 1, 1, 0]], dtype=uint8)
+        """
+        pixel = self._pixel(value)
+        edge = ffi.from_buffer(_pixel_bytes(boundary, self._format))
+        _core.seed_fill(self._target, seed, pixel, edge, connectivity)
+
     def to_image(self):
         """A Pillow image (a copy): mode L, RGB or RGBA; rgb565 as RGB (each
         channel widened to 8 bits by repeating its top bits), mono1 as

@@ -9,6 +9,8 @@
  */
 #include "fuzz.h"
 
+static const unsigned char fz_off[4] = {0, 0, 0, 0}; /* MONO1's opaque background */
+
 #define MAXPTS 40
 
 static fz_target ft, ft2;
@@ -25,7 +27,9 @@ static rast_status run(int entry, fz_target *t, const rast_polygon *pg, const ra
     if (entry == 0)
         st = rast_fill_polygon(&t->t, pg, o, fz_value, mem, bytes);
     else if (entry == 1)
-        st = rast_fill_polygon_opaque(&t->t, pg, o, fz_value, fz_background, mem, bytes);
+        st = rast_fill_polygon_opaque(&t->t, pg, o, fz_value,
+                                      t->t.format == RAST_FORMAT_MONO1 ? fz_off : fz_background, mem,
+                                      bytes);
     else
         st = rast_fill_polygon_spans(pg, o, clip, fz_span, &spans, mem, bytes);
     fz_scratch_check(&scratch);
@@ -109,7 +113,8 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     for (y = 0; y < h; y++)
         for (x = 0; x < w; x++)
             want[y * w + x] = (uint16_t)(fz_in_rect(&ft.cut, x, y) && fz_ref_polygon(&pg, &o, x, y));
-    if (entry == 1) { /* opaque: turn the background into "0" and check as the fill */
+    if (entry == 1 && f == RAST_FORMAT_MONO1) { /* opaque: background is "off", as before */
+    } else if (entry == 1) { /* opaque: turn the background into "0" and check as the fill */
         for (y = ft.cut.y0; y < ft.cut.y1; y++)
             for (x = ft.cut.x0; x < ft.cut.x1; x++) {
                 unsigned char *p = fz_px(&ft, x, y);

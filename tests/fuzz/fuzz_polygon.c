@@ -5,7 +5,9 @@
  * nothing) exactly when the input is bad; otherwise every pixel of the clip
  * is the per-sample reference's (fuzz.h), nothing outside the clip or after
  * the scratch changes, and every other algorithm supporting the rule gives
- * the same bytes.
+ * the same bytes.  rast_fill_bounds: a rectangle inside the clip holding
+ * every filled pixel, and a fill clipped to it (with the scratch its size
+ * asks for) gives the same bytes; RAST_E_RANGE with *bounds untouched.
  */
 #include "fuzz.h"
 
@@ -96,6 +98,13 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
                                  : small ? RAST_E_SCRATCH : RAST_E_FORMAT));
             FZ_ASSERT(fz_untouched(&ft));
             for (k = 0; k < FZ_SPAN * FZ_SPAN; k++) FZ_ASSERT(spans.count[k] == 0);
+            if (range) { /* rast_fill_bounds: the same status, *bounds untouched */
+                rast_rect b = {7, 7, 7, 7};
+                rast_status bs = rast_fill_bounds(&o, &pg, &clip, &b);
+                FZ_ASSERT(bs != RAST_OK);
+                if (range + rule + small + format == 1) FZ_ASSERT(bs == RAST_E_RANGE);
+                FZ_ASSERT(b.x0 == 7 && b.y0 == 7 && b.x1 == 7 && b.y1 == 7);
+            }
             return 0;
         }
     }
@@ -127,6 +136,25 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
             }
     }
     fz_check(&ft, want);
+
+    /* rast_fill_bounds: a rectangle inside the clip holding every pixel of
+     * the fill (empty as x0 == x1 and y0 == y1); a fill clipped to it, with
+     * the scratch its size asks for, gives the same bytes */
+    if (entry == 0) {
+        rast_rect b;
+        FZ_ASSERT(rast_fill_bounds(&o, &pg, &ft.cut, &b) == RAST_OK);
+        FZ_ASSERT(b.x0 <= b.x1 && b.y0 <= b.y1);
+        if (b.x0 == b.x1 || b.y0 == b.y1) FZ_ASSERT(b.x0 == b.x1 && b.y0 == b.y1);
+        if (b.x0 < b.x1)
+            FZ_ASSERT(b.x0 >= ft.cut.x0 && b.x1 <= ft.cut.x1 && b.y0 >= ft.cut.y0 && b.y1 <= ft.cut.y1);
+        for (y = 0; y < h; y++)
+            for (x = 0; x < w; x++)
+                if (want[y * w + x]) FZ_ASSERT(fz_in_rect(&b, x, y));
+        FZ_ASSERT(rast_scratch_size(&o, npts, b.x1 - b.x0, b.y1 - b.y0, &need) == RAST_OK);
+        fz_target_init(&ft2, w, h, f, &b);
+        FZ_ASSERT(run(0, &ft2, &pg, &o, &b, need) == RAST_OK);
+        FZ_ASSERT(memcmp(ft.mem, ft2.mem, sizeof ft.mem) == 0);
+    }
 
     /* every other algorithm with this rule: the same bytes */
     for (a = 0; a < RAST_ALGO_COUNT_; a++) {

@@ -86,7 +86,8 @@ static uint64_t hash_i32(uint64_t h, const int32_t *v, size_t n)
  * scene's points (npts of them, in 3 rings of `sizes`). */
 static void hash_more(const rast_point *pts, const uint32_t *sizes, uint32_t npts, int seed, int s)
 {
-    static const unsigned char rgb[3] = {200, 17, 99}, one = 1, two = 2;
+    static const unsigned char one = 1, two = 2;
+    static const uint16_t px565 = 0x11c8;
     static int32_t z[NPTS];
     static unsigned char stack[64];
     rast_target t;
@@ -142,10 +143,13 @@ static void hash_more(const rast_point *pts, const uint32_t *sizes, uint32_t npt
             printf("cpoly seed=%d S=%d o=%d prec=%d: %d %016llx\n", seed, s, o, prec, (int)st,
                    (unsigned long long)fnv(14695981039346656037ull, img, W * H * 3));
         }
-        /* rgb565 (hashed by value) and mono1 through a polygon and triangles */
+        /* rgb565 (hashed by value) and mono1 through a polygon and triangles;
+         * an rgb565 pixel is a native uint16_t, so the value is given as
+         * one (the bytes {200, 17} meant 0x11c8 on little-endian hosts and
+         * 0xc811 on big-endian ones: every rgb565 hash differed on MIPS) */
         memset(counts, 0x5a, sizeof counts);
         rast_target_init(&t, counts, W, H, W * 2, RAST_FORMAT_RGB565);
-        st = rast_fill_polygon(&t, &p, &fo, rgb, scratch, sizeof scratch);
+        st = rast_fill_polygon(&t, &p, &fo, &px565, scratch, sizeof scratch);
         printf("rgb565 seed=%d S=%d o=%d: %d %016llx\n", seed, s, o, (int)st,
                (unsigned long long)hash_u16(counts, W * H));
         memset(img, 0x5a, sizeof img);

@@ -38,9 +38,28 @@ GOOD = {
     "seg": (np.array([1.0, 1.5]), np.array([10.25, 7.0])),
     "points": (np.array([(1.0, 1.0), (10.0, 3.0), (4.0, 8.0)]),),
     "ptri": (np.array([3.0, 3.0]), np.array([(1.5, 1.0), (10.0, 2.25), (4.0, 8.5)])),
+    "rect": (np.array([1.5, 1.0, 9.0, 8.5]),),
+    "seed": (np.array([3, 4]),),
 }
 ARG = {"ring": r"\brings\b", "tris": r"\btris\b", "tri": r"\btri\b", "seg": r"\bp1\b",
-       "points": r"\bpoints\b", "ptri": r"\btri\b"}
+       "points": r"\bpoints\b", "ptri": r"\btri\b",
+       "rect": r"\brect\b", "seed": r"\bseed\b"}
+# The shading calls' good colours and depths, for the geometry above.
+VCOLORS = np.array([[(255, 0, 0), (0, 255, 0), (0, 0, 255)], [(9, 9, 9), (200, 100, 0), (0, 50, 250)]])
+RCOLORS = np.array([(255, 0, 0), (0, 255, 0), (0, 0, 255), (90, 90, 90)])
+PCOLORS = np.array([(255, 0, 0), (0, 255, 0), (0, 0, 255), (90, 90, 90)])
+DEPTHS = np.array([(1.0, 2.0, 3.0), (-5.0, 0.0, 7.5)])
+EDGE = (1, 2, 3)
+
+
+def _fit(colors, g):
+    """The first len(g) rows of `colors` (one per triangle), when g has a
+    length (so that an empty batch gets no colours): the colour rows must
+    not be what fails in a geometry row."""
+    try:
+        return colors[:min(len(g), len(colors))]
+    except TypeError:
+        return colors
 
 
 class Entry:
@@ -72,6 +91,27 @@ ENTRIES = [
           ("algorithm", "subpixel_bits", "sample_offset", "clip")),
     Entry("point_in_triangle", "ptri", lambda c, g, kw: rastrum.point_in_triangle(g[0], g[1], **kw),
           ("method", "subpixel_bits")),
+    # The shading calls (issue 4's Gouraud work) and the seed fills.
+    Entry("Canvas.fill_triangles(vertex_colors)", "tris",
+          lambda c, g, kw: c.fill_triangles(g[0], vertex_colors=kw.pop("vertex_colors", _fit(VCOLORS, g[0])), **kw),
+          FILL + ("vertex_colors", "precision", "fraction_bits"), canvas=True),
+    Entry("Canvas.fill_triangles(color per triangle)", "tris",
+          lambda c, g, kw: c.fill_triangles(g[0], kw.pop("color", _fit(VCOLORS[:, 0], g[0])), **kw), FILL, canvas=True),
+    Entry("Canvas.fill_triangles(depth)", "tris",
+          lambda c, g, kw: c.fill_triangles(g[0], vertex_colors=_fit(VCOLORS, g[0]),
+                                            depth=kw.pop("depth", _fit(DEPTHS, g[0])), **kw),
+          FILL + ("depth", "precision", "fraction_bits"), canvas=True),
+    Entry("Canvas.fill_rect_gouraud", "rect",
+          lambda c, g, kw: c.fill_rect_gouraud(g[0], kw.pop("corner_colors", RCOLORS), **kw),
+          ("corner_colors", "precision", "fraction_bits", "subpixel_bits", "sample_offset", "method"), canvas=True),
+    Entry("Canvas.fill_polygon(vertex_colors)", "ring",
+          lambda c, g, kw: c.fill_polygon(g[0], vertex_colors=kw.pop("polygon_colors", PCOLORS), **kw),
+          FILL + ("rule", "polygon_colors", "precision"), canvas=True),
+    Entry("Canvas.flood_fill", "seed", lambda c, g, kw: c.flood_fill(g[0], kw.pop("color", COLOR), **kw),
+          ("connectivity",), canvas=True, color=True),
+    Entry("Canvas.boundary_fill", "seed",
+          lambda c, g, kw: c.boundary_fill(g[0], kw.pop("color", COLOR), kw.pop("boundary_value", EDGE), **kw),
+          ("connectivity", "boundary_value"), canvas=True, color=True),
 ]
 
 
@@ -114,32 +154,41 @@ RAISE, SAME, NOTHING = "raises", "same", "nothing"
 # (RAISE, exception, problem regex) -- the argument's name is added -- or
 # (SAME,) or (NOTHING,).  "*" is every kind not listed.
 SHAPE_ERR = (RAISE, rastrum.InputError, r"shape|pair|three|at least")
+# A seed is a pixel: two ints inside the canvas, never floats (even 3.0).
+SEED_INTS = (RAISE, rastrum.InputError, r"two ints")
+SEED_PAIR = (RAISE, rastrum.InputError, r"pair")
 GEOMETRY = {
-    "NaN": (_set_last(NAN), {"*": (RAISE, rastrum.InputError, r"\bNaN\b")}),
-    "+inf": (_set_last(INF), {"*": (RAISE, rastrum.InputError, r"infinite")}),
-    "-inf": (_set_last(-INF), {"*": (RAISE, rastrum.InputError, r"infinite")}),
-    "huge 1e300": (_set_last(1e300), {"*": (RAISE, rastrum.InputError, r"range")}),
-    "just past the range": (_set_last(PAST_RANGE), {"*": (RAISE, rastrum.InputError, r"range")}),
-    "-(just past the range)": (_set_last(-PAST_RANGE), {"*": (RAISE, rastrum.InputError, r"range")}),
+    "NaN": (_set_last(NAN), {"seed": SEED_INTS, "*": (RAISE, rastrum.InputError, r"\bNaN\b")}),
+    "+inf": (_set_last(INF), {"seed": SEED_INTS, "*": (RAISE, rastrum.InputError, r"infinite")}),
+    "-inf": (_set_last(-INF), {"seed": SEED_INTS, "*": (RAISE, rastrum.InputError, r"infinite")}),
+    "huge 1e300": (_set_last(1e300), {"seed": SEED_INTS, "*": (RAISE, rastrum.InputError, r"range")}),
+    "just past the range": (_set_last(PAST_RANGE),
+                            {"seed": SEED_INTS, "*": (RAISE, rastrum.InputError, r"range")}),
+    "-(just past the range)": (_set_last(-PAST_RANGE),
+                               {"seed": SEED_INTS, "*": (RAISE, rastrum.InputError, r"range")}),
     "dtype complex": (_replace(lambda a: np.asarray(a, complex)),
-                      {"*": (RAISE, rastrum.InputError, r"real numbers")}),
-    "dtype bool": (_replace(lambda a: np.asarray(a) > 2), {"*": (RAISE, rastrum.InputError, r"real numbers")}),
+                      {"seed": SEED_INTS, "*": (RAISE, rastrum.InputError, r"real numbers")}),
+    "dtype bool": (_replace(lambda a: np.asarray(a) > 2),
+                   {"seed": SEED_INTS, "*": (RAISE, rastrum.InputError, r"real numbers")}),
     "dtype str": (_replace(lambda a: np.asarray(a).astype(str)),
-                  {"*": (RAISE, rastrum.InputError, r"real numbers|pair")}),
-    "None": (_replace(lambda a: None), {"*": (RAISE, rastrum.InputError, r"must")}),
-    "wrong last axis (3)": (_replace(lambda a: np.concatenate([a, a[..., :1]], axis=-1)), {"*": SHAPE_ERR}),
+                  {"seed": SEED_INTS, "*": (RAISE, rastrum.InputError, r"real numbers|pair")}),
+    "None": (_replace(lambda a: None), {"seed": SEED_PAIR, "*": (RAISE, rastrum.InputError, r"must")}),
+    "wrong last axis (3)": (_replace(lambda a: np.concatenate([a, a[..., :1]], axis=-1)),
+                            {"seed": SEED_PAIR, "*": SHAPE_ERR}),
     "too few vertices": (_replace(lambda a: a[..., :1] if a.ndim == 1 else a[:, :2] if a.ndim == 3
-                                  else a[:2] if len(a) > 3 else a[:1]), {"*": SHAPE_ERR}),
+                                  else a[:2] if len(a) > 3 else a[:1]), {"seed": SEED_PAIR, "*": SHAPE_ERR}),
     "empty": (_replace(lambda a: a[:0]),
-              {"ring": (NOTHING,), "tris": (NOTHING,), "points": (NOTHING,), "*": SHAPE_ERR}),
+              {"ring": (NOTHING,), "tris": (NOTHING,), "points": (NOTHING,), "seed": SEED_PAIR, "*": SHAPE_ERR}),
     "empty list": (_replace(lambda a: []),
-                   {"ring": (NOTHING,), "tris": (NOTHING,), "points": (NOTHING,), "*": SHAPE_ERR}),
-    # Inputs that must work: the same pixels as the float64 call.
-    "non-contiguous": (_replace(_strided), {"*": (SAME,)}),
+                   {"ring": (NOTHING,), "tris": (NOTHING,), "points": (NOTHING,), "seed": SEED_PAIR,
+                    "*": SHAPE_ERR}),
+    # Inputs that must work: the same pixels as the float64 call (a seed:
+    # floats, even 3.0, are refused).
+    "non-contiguous": (_replace(_strided), {"seed": SEED_INTS, "*": (SAME,)}),
     "read-only input": (_replace(_read_only), {"*": (SAME,)}),
     "Fortran order": (_replace(np.asfortranarray), {"*": (SAME,)}),
     "nested lists": (_replace(lambda a: np.asarray(a).tolist()), {"*": (SAME,)}),
-    "float32": (_replace(lambda a: np.asarray(a, np.float32)), {"*": (SAME,)}),
+    "float32": (_replace(lambda a: np.asarray(a, np.float32)), {"seed": SEED_INTS, "*": (SAME,)}),
 }
 # Integers and the edge of the range work too (compared with float64).
 INT_ROWS = {
@@ -166,6 +215,24 @@ OPTIONS = {
     "color": [(256, r"colou?r"), (-1, r"colou?r"), ((1, 2), r"colou?r"), ((1, 2, 3, 4, 5), r"colou?r"),
               (1.5, r"colou?r"), (NAN, r"colou?r"), ("red", r"colou?r"), (None, r"colou?r"),
               ((1.5, 2, 3), r"colou?r"), ((0, 0, 256), r"colou?r"), (True, r"colou?r")],
+    "vertex_colors": [(VCOLORS[:1], r"vertex_colors"), (VCOLORS + 0.5, r"vertex_colors"),
+                      (VCOLORS * 2, r"vertex_colors.*0\.\.255"), (-VCOLORS, r"vertex_colors.*0\.\.255"),
+                      (VCOLORS[..., :2], r"vertex_colors"), (None, r"vertex_colors|colou?r"),
+                      ("red", r"vertex_colors")],
+    "polygon_colors": [(PCOLORS[:3], r"vertex_colors.*3 colours for 4 vertices"),
+                       (PCOLORS + 0.5, r"vertex_colors"), (PCOLORS * 2, r"vertex_colors.*0\.\.255"),
+                       (-PCOLORS, r"vertex_colors.*0\.\.255"), (PCOLORS[:, :2], r"vertex_colors"),
+                       ("red", r"vertex_colors")],
+    "precision": [("bogus", r"precision"), (None, r"precision"), ("EXACT", r"precision")],
+    "fraction_bits": [(8.0, r"fraction_bits"), (None, r"fraction_bits"), (True, r"fraction_bits")],
+    "depth": [(DEPTHS[:1], r"depth"), (DEPTHS + NAN, r"depth"), (np.where(DEPTHS > 2, INF, DEPTHS), r"depth"),
+              (DEPTHS * 1e300, r"depth"), (DEPTHS.astype(complex), r"depth"), ("near", r"depth")],
+    "corner_colors": [(RCOLORS[:3], r"corner_colors"), (RCOLORS + 0.5, r"corner_colors"),
+                      (RCOLORS * 2, r"corner_colors.*0\.\.255"), (None, r"corner_colors"),
+                      ("red", r"corner_colors")],
+    "connectivity": [(6, r"connectivity"), (0, r"connectivity"), (True, r"connectivity"),
+                     ("4", r"connectivity"), (None, r"connectivity"), (4.5, r"connectivity")],
+    "boundary_value": [(256, r"colou?r"), ((1, 2), r"colou?r"), (None, r"colou?r"), (NAN, r"colou?r")],
     "shape": [((-1, 5), r"shape"), ((5, -1), r"shape"), ((5,), r"shape"), ((1, 2, 3), r"shape"),
               ((1.5, 5), r"shape"), (None, r"shape"), ("ab", r"shape"), ((2 ** 31, 5), r"shape"),
               ((lib.RAST_MAX_DIM + 1, 1), r"shape"), ((NAN, 5), r"shape")],
@@ -185,6 +252,15 @@ def _rows():
                 exp = (RAISE, exp[1], both(ARG[e.kind], exp[2]))
             rows.append((e.name, label, ("geometry", change, None), exp))
         for label, fn in INT_ROWS.items():
+            if e.kind == "seed":  # ints are what a seed is; the range is the canvas
+                rows.append((e.name, label, ("geometry", _replace(fn), None),
+                             (RAISE, rastrum.InputError, both(ARG["seed"], "two ints")) if label == "at the range"
+                             else (SAME,)))
+                continue
+            if e.kind == "rect" and label == "at the range":  # a side past 2**26 - 1 units
+                rows.append((e.name, label, ("geometry", _replace(fn), None),
+                             (RAISE, rastrum.InputError, both(ARG["rect"], "side"))))
+                continue
             rows.append((e.name, label, ("geometry", _replace(fn), _replace(lambda a, fn=fn: np.asarray(fn(a), float))),
                          (SAME,)))
         opts = set(e.options) | ({"color"} if e.color else set()) | ({"shape"} if e.shape else set())
@@ -192,6 +268,11 @@ def _rows():
             for value, problem in OPTIONS[opt]:
                 rows.append((e.name, "%s=%r" % (opt, value), ("option", opt, value),
                              (RAISE, rastrum.InputError, problem)))
+        if "fraction_bits" in e.options:
+            for fb in (0, 17, -1):
+                rows.append((e.name, "fixed, fraction_bits=%d" % fb,
+                             ("options", dict(precision="fixed", fraction_bits=fb)),
+                             (RAISE, rastrum.InputError, r"fraction_bits.*1\.\.16")))
         if "rule" in e.options:
             rows.append((e.name, "edgefill with nonzero", ("options", dict(algorithm="edgefill", rule="nonzero")),
                          (RAISE, rastrum.InputError, r"support")))
@@ -201,7 +282,8 @@ def _rows():
         if e.canvas:
             rows.append((e.name, "read-only target", ("read-only target",),
                          (RAISE, rastrum.InputError, r"read-only")))
-            rows.append((e.name, "zero-size canvas", ("zero-size canvas",), (NOTHING,)))
+            rows.append((e.name, "zero-size canvas", ("zero-size canvas",),
+                         (RAISE, rastrum.InputError, r"seed.*outside") if e.kind == "seed" else (NOTHING,)))
     return rows
 
 
@@ -258,6 +340,7 @@ def test_bad_input(row):
             _run(entry, geometry, kw, canvas)
         assert re.search(pattern, str(info.value)), "message %r does not match %r" % (str(info.value), pattern)
         assert np.array_equal(big, before), "the target changed although the call raised"
+        assert canvas.depth is None, "a depth buffer was made although the call raised"
         if exc is rastrum.InputError:
             assert isinstance(info.value, ValueError)
     elif expect[0] == SAME:
@@ -301,8 +384,7 @@ def test_every_entry_draws_with_good_input():
 # Public names that other branches were adding while this table was
 # written (main's shading, scene and seed-fill work): they still need their
 # Entry (or explicit rows).  Remove a name from here when it gets one.
-AWAITING_ROWS = {"render_mesh", "scene", "Canvas.fill_rect_gouraud", "Canvas.packed", "Canvas.clear_depth",
-                 "Canvas.flood_fill", "Canvas.boundary_fill"}
+AWAITING_ROWS = set()
 
 
 def test_every_public_drawing_name_has_an_entry():
@@ -376,7 +458,7 @@ OTHER = [
     ("Canvas.to_image", "an empty canvas", lambda: rastrum.Canvas(0, 0).to_image(), None, None),
     ("ALGORITHMS", "unknown entry point", lambda: rastrum.ALGORITHMS["bogus"], KeyError, r"bogus"),
 ]
-EXTRA_COVERED = {row[0] for row in OTHER}
+EXTRA_COVERED = {row[0] for row in OTHER} | {"render_mesh", "scene", "Canvas.packed", "Canvas.clear_depth"}
 
 
 @pytest.mark.parametrize("name,label,call,exc,pattern", OTHER, ids=["%s | %s" % (r[0], r[1]) for r in OTHER])
@@ -387,6 +469,180 @@ def test_other_bad_input(name, label, call, exc, pattern):
     with pytest.raises(exc) as info:
         call()
     assert re.search(pattern, str(info.value), re.I), str(info.value)
+
+
+# ---- render_mesh and the OBJ reader (rastrum.scene) ----------------------------
+
+def _mesh_args():
+    from rastrum.scene import sphere
+    v, f, n = sphere(4, 8)
+    return dict(vertices=v, faces=f, normals=n)
+
+
+def _with(key, fn):
+    return lambda a: dict(a, **{key: fn(a[key])})
+
+
+# label -> (change of the keyword arguments, message regex); every one an InputError.
+MESH_ROWS = {
+    "vertices NaN": (_with("vertices", lambda v: np.where(np.arange(v.size).reshape(v.shape) == 4, NAN, v)),
+                     r"vertices.*finite"),
+    "vertices inf": (_with("vertices", lambda v: np.where(v > 0, INF, v)), r"vertices.*finite"),
+    "vertices complex": (_with("vertices", lambda v: v.astype(complex)), r"vertices.*real numbers"),
+    "vertices bool": (_with("vertices", lambda v: v > 0), r"vertices.*real numbers"),
+    "vertices str": (_with("vertices", lambda v: v.astype(str)), r"vertices.*real numbers"),
+    "vertices None": (_with("vertices", lambda v: None), r"vertices"),
+    "vertices (V, 2)": (_with("vertices", lambda v: v[:, :2]), r"vertices.*shape"),
+    "faces float": (_with("faces", lambda f: f.astype(float)), r"faces.*int"),
+    "faces -1": (_with("faces", lambda f: f - 1), r"faces.*index"),
+    "faces past the vertices": (_with("faces", lambda f: f + 1000), r"faces.*index"),
+    "faces (F, 4)": (_with("faces", lambda f: np.c_[f, f[:, :1]]), r"faces.*shape"),
+    "faces None": (_with("faces", lambda f: None), r"faces"),
+    "size -1": (lambda a: dict(a, size=(-1, 16)), r"shape|size"),
+    "size 1.5": (lambda a: dict(a, size=(1.5, 16)), r"size.*ints"),
+    "size None": (lambda a: dict(a, size=None), r"size.*pair"),
+    "normals NaN": (_with("normals", lambda n: n * NAN), r"normals.*finite"),
+    "normals wrong shape": (_with("normals", lambda n: n[:3]), r"normals.*shape"),
+    "shading phong": (lambda a: dict(a, shading="phong"), r"shading"),
+    "shading None": (lambda a: dict(a, shading=None), r"shading"),
+    "light NaN": (lambda a: dict(a, light=(NAN, 0, 1)), r"light.*finite"),
+    "light zero": (lambda a: dict(a, light=(0, 0, 0)), r"light.*non-zero"),
+    "light (1, 2)": (lambda a: dict(a, light=(1, 2)), r"light.*3 numbers"),
+    "light 'up'": (lambda a: dict(a, light="up"), r"light.*real numbers"),
+    "ambient 2": (lambda a: dict(a, ambient=2), r"ambient.*\[0, 1\]"),
+    "ambient NaN": (lambda a: dict(a, ambient=NAN), r"ambient.*finite"),
+    "ambient 'x'": (lambda a: dict(a, ambient="x"), r"ambient.*number"),
+    "color 256": (lambda a: dict(a, color=(256, 0, 0)), r"color.*0\.\.255"),
+    "color -1": (lambda a: dict(a, color=(-1, 0, 0)), r"color.*0\.\.255"),
+    "color 2 channels": (lambda a: dict(a, color=(1, 2)), r"color.*3 int"),
+    "color 'red'": (lambda a: dict(a, color="red"), r"color"),
+    "color 1.5": (lambda a: dict(a, color=(1.5, 2, 3)), r"color.*int"),
+    "rotation 2x2": (lambda a: dict(a, rotation=np.eye(2)), r"rotation.*3x3"),
+    "rotation NaN": (lambda a: dict(a, rotation=np.eye(3) * NAN), r"rotation.*finite"),
+    "projection fisheye": (lambda a: dict(a, projection="fisheye"), r"projection"),
+    "scale 1e10": (lambda a: dict(a, scale=1e10), r"out of range.*scale"),
+    "scale NaN": (lambda a: dict(a, scale=NAN), r"scale.*finite"),
+    "scale 'big'": (lambda a: dict(a, scale="big"), r"scale.*number"),
+    "fov 0": (lambda a: dict(a, projection="perspective", fov=0), r"fov"),
+    "fov 180": (lambda a: dict(a, projection="perspective", fov=180), r"fov"),
+    "distance 0": (lambda a: dict(a, projection="perspective", distance=0), r"behind the eye"),
+    "precision double": (lambda a: dict(a, precision="double"), r"precision"),
+    "subpixel_bits 17": (lambda a: dict(a, subpixel_bits=17), r"subpixel"),
+    "cull 'yes'": (lambda a: dict(a, cull="yes"), r"cull"),
+    "depth 'yes'": (lambda a: dict(a, depth="yes"), r"depth"),
+}
+MESH_NEW_CANVAS = {  # only without canvas=
+    "format cmyk": (lambda a: dict(a, format="cmyk"), r"format"),
+    "background 300": (lambda a: dict(a, background=300), r"colou?r"),
+}
+
+
+@pytest.mark.parametrize("label", list(MESH_ROWS) + list(MESH_NEW_CANVAS))
+def test_render_mesh_bad_input(label):
+    """render_mesh: the InputError naming the argument; a canvas given
+    with canvas= is untouched (pixels and depth buffer), and so are the
+    caller's arrays."""
+    change, pattern = {**MESH_ROWS, **MESH_NEW_CANVAS}[label]
+    args = change(_mesh_args())
+    v, f = args.pop("vertices"), args.pop("faces")
+    size = args.pop("size", (16, 12))
+    inputs = _snapshot((v, f, args.get("normals")))
+    with pytest.raises(rastrum.InputError) as info:
+        rastrum.render_mesh(v, f, size, **args)
+    assert re.search(pattern, str(info.value), re.I), str(info.value)
+    if label in MESH_NEW_CANVAS or label.startswith("size"):
+        return
+    big, canvas = _target()
+    canvas.fill_triangles(GOOD["tris"][0], vertex_colors=VCOLORS, depth=DEPTHS)
+    before, depth = big.copy(), canvas.depth.copy()
+    with pytest.raises(rastrum.InputError):
+        rastrum.render_mesh(v, f, canvas=canvas, **args)
+    assert np.array_equal(big, before)
+    assert np.array_equal(canvas.depth, depth)
+    for a, b in zip(_snapshot((v, f, args.get("normals"))), inputs):
+        if isinstance(a, np.ndarray) and a.dtype.kind in "fc":
+            assert np.array_equal(a, b, equal_nan=True)
+        elif isinstance(a, np.ndarray):
+            assert np.array_equal(a, b)
+
+
+def test_render_mesh_good_input_draws():
+    big, canvas = _target()
+    before = big.copy()
+    args = _mesh_args()
+    rastrum.render_mesh(args["vertices"], args["faces"], canvas=canvas)
+    assert not np.array_equal(big, before)
+    assert rastrum.render_mesh(args["vertices"], args["faces"], (8, 6), format="gray8").array.any()
+
+
+OBJ_ROWS = [
+    ("v with 2 numbers", "v 1 2\n", r":1: v needs 3 numbers"),
+    ("v NaN", "v nan 0 0\n", r":1: non-finite"),
+    ("v inf", "v inf 0 0\n", r":1: non-finite"),
+    ("v text", "v a b c\n", r":1: bad number"),
+    ("vn with 4 numbers", "vn 0 0 1 1\n", r":1: vn needs 3 numbers"),
+    ("face of 2 corners", "v 0 0 0\nv 1 0 0\nf 1 2\n", r":3: a face needs at least 3 corners"),
+    ("index 0", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 0 1 2\n", r":4: vertex index 0 out of range"),
+    ("index past the end", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 9\n", r":4: vertex index 9 out of range"),
+    ("negative index past the start", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf -4 1 2\n", r":4: vertex index -4"),
+    ("huge index", "v 0 0 0\nf 1 1 99999999999999999999\n", r":2: vertex index 9+ out of range"),
+    ("index text", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf a b c\n", r":4: bad vertex index 'a'"),
+    ("index 1.5", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1.5 2 3\n", r":4: bad vertex index '1.5'"),
+    ("corner of 4 fields", "v 0 0 0\nf 1/1/1/1 1 1\n", r":2: bad face corner"),
+    ("normals for some corners", "v 0 0 0\nv 1 0 0\nv 0 1 0\nvn 0 0 1\nf 1//1 2 3\n",
+     r":5: normals given for some corners only"),
+    ("normal index past the end", "v 0 0 0\nv 1 0 0\nv 0 1 0\nvn 0 0 1\nf 1//2 2//1 3//1\n",
+     r":5: normal index 2 out of range"),
+    ("some faces with normals", "v 0 0 0\nv 1 0 0\nv 0 1 0\nvn 0 0 1\nf 1//1 2//1 3//1\nf 1 2 3\n",
+     r": some faces give normals and others do not"),
+]
+
+
+@pytest.mark.parametrize("label,text,pattern", OBJ_ROWS, ids=[r[0] for r in OBJ_ROWS])
+def test_read_obj_bad_file(label, text, pattern, tmp_path):
+    """rastrum.scene.read_obj: an InputError naming the file and line, from a
+    file object and from a path alike."""
+    import io
+    from rastrum.scene import read_obj
+    with pytest.raises(rastrum.InputError, match=pattern):
+        read_obj(io.StringIO(text))
+    path = tmp_path / "bad.obj"
+    path.write_text(text)
+    with pytest.raises(rastrum.InputError, match=re.escape(str(path)) + pattern):
+        read_obj(str(path))
+
+
+def test_read_obj_not_a_file(tmp_path):
+    from rastrum.scene import read_obj
+    for source in (None, 5, b"v 0 0 0"):
+        with pytest.raises(rastrum.InputError, match=r"source must be a path or a text file"):
+            read_obj(source)
+    path = tmp_path / "binary.obj"
+    path.write_bytes(b"v 0 0 0\n\xff\xfe\x00\n")
+    with pytest.raises(rastrum.InputError, match=r"not a text \(UTF-8\) OBJ file"):
+        read_obj(path)
+    with pytest.raises(FileNotFoundError):
+        read_obj(tmp_path / "missing.obj")
+
+
+def test_packed_and_clear_depth():
+    """Canvas.packed is the buffer itself (a view; mono1 packed bits) and
+    cannot be replaced; clear_depth takes no argument and only drops the
+    depth buffer."""
+    c = rastrum.Canvas(10, 2, format="mono1")
+    assert c.packed.shape == (2, 2) and c.packed.dtype == np.uint8
+    c.fill_polygon([(0, 0), (3, 0), (3, 2), (0, 2)], 1, subpixel_bits=0)
+    assert c.packed[0, 0] == 0b11100000 and c.packed[0, 1] == 0
+    with pytest.raises(AttributeError):
+        c.packed = np.zeros((2, 2), np.uint8)
+    big, canvas = _target()
+    canvas.fill_triangles(GOOD["tris"][0], vertex_colors=VCOLORS, depth=DEPTHS)
+    before = big.copy()
+    with pytest.raises(TypeError):
+        canvas.clear_depth(0)
+    assert canvas.depth is not None
+    canvas.clear_depth()
+    assert canvas.depth is None and np.array_equal(big, before)
 
 
 def test_read_only_after_wrap_then_writable_again():

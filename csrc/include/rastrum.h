@@ -692,11 +692,14 @@ RAST_API rast_status rast_point_in_triangle(rast_point p, const rast_point *t,
  * a side never both own a pixel.  p0.x == p1.x or p0.y == p1.y: nothing.
  *
  * Colour of a pixel whose sample is (xs, ys), with u = (xs - p0.x) /
- * (p1.x - p0.x) and v = (ys - p0.y) / (p1.y - p0.y) exact rationals in
- * [0, 1], per channel:
+ * (p1.x - p0.x) and v = (ys - p0.y) / (p1.y - p0.y) exact rationals, in
+ * [0, 1] (u a little below 0 or above 1 under textbook rounding, see
+ * below), per channel:
  *     c = (1-u)(1-v) c0 + u (1-v) c1 + u v c2 + (1-u) v c3
  *  - RAST_PRECISION_EXACT: floor(c + 1/2), exactly (rationals; integer
- *    quotient and remainder stepped along the row).
+ *    quotient and remainder stepped along the row), clamped to 0..255
+ *    (RAST_ROUND_TEXTBOOK owns a first column whose sample lies up to half
+ *    a pixel left of the rectangle: u < 0 there, c extrapolated).
  *  - RAST_PRECISION_FIXED, F = fraction_bits (1..16), round(x) =
  *    floor(x + 1/2), one = 2^F: the textbook's stepping.  With the top
  *    left corner at (X0, Y0), width W and height H in pixels (corners put
@@ -747,7 +750,9 @@ RAST_API rast_status rast_fill_rect_gouraud(const rast_target *target, rast_poin
  * colour is linear in x between the left crossing (Xl, cl) and the right
  * one (Xr, cr): c = cl + (xs - Xl)(cr - cl)/(Xr - Xl) at the sample
  * abscissa xs, and the pixel gets floor(c + 1/2) per channel, exactly
- * (128-bit integers; no rounding before the last step).
+ * (128-bit integers; no rounding before the last step), clamped to 0..255
+ * (RAST_ROUND_TEXTBOOK owns a sample up to half a pixel left of Xl, where
+ * the line is extrapolated).
  * For a triangle this is the same colour as the barycentric (plane)
  * interpolation: both are the unique affine function through the three
  * vertex colours, evaluated exactly.

@@ -16,7 +16,9 @@
  *   - the pixel gets floor(c + 1/2).
  * Magnitudes (poly.h's ranges: |coordinates| < 2^28, dy < 2^29):
  * |Q| < 2^59, P < 2^37, G < 2^89, |E| < 2^67, D < 2^118, and since c is a
- * convex combination of the corners, 0 <= c D <= 255 D < 2^126: all inside
+ * convex combination of the corners for xs in [Xl, Xr) (a textbook
+ * sample left of Xl is clamped apart, see rast__shade_span),
+ * 0 <= c D <= 255 D < 2^126: all inside
  * the signed 128-bit integers of wide.h.  From one sample to the next the
  * numerator grows by T = unit dl E (|T| < 2^113), less than 256 D: the
  * quotient and remainder (in [0, D)) are stepped, as the rectangle's.
@@ -149,7 +151,7 @@ static void rast__shade_span(void *user, int32_t row, const rast__edge *l, const
     }
     {
         int64_t yc = (int64_t)row * g->unit + g->off;
-        int64_t xs = (int64_t)x0 * g->unit + g->off; /* inside [Xl, Xr): |xs| < 2^28 */
+        int64_t xs = (int64_t)x0 * g->unit + g->off; /* |xs| < 2^28 */
         rast__edge_at el, er;
         rast__i128 G;
         int64_t A;
@@ -158,6 +160,31 @@ static void rast__shade_span(void *user, int32_t row, const rast__edge *l, const
         G = rast__i128_sub(rast__i128_mul(er.Q, el.dy), rast__i128_mul(el.Q, er.dy));
         D = rast__i128_mul_wide(G, el.dy);
         A = xs * el.dy - el.Q;
+        /* Textbook rounding owns a sample up to half a pixel left of Xl
+         * (A < 0; never more than the run's first one): the line's value
+         * there is extrapolated, so it may lie outside 0..255, by any
+         * amount when Xr - Xl is tiny.  It is clamped (as the triangles
+         * clamp the plane), and the run goes on from the next sample,
+         * which is inside [Xl, Xr). */
+        if (A < 0) {
+            for (ch = 0; ch < 4; ch++) {
+                rast__i128 E = rast__i128_sub(rast__i128_mul(er.P[ch], el.dy), rast__i128_mul(el.P[ch], er.dy));
+                rast__i128 N = rast__i128_add(rast__i128_mul_wide(G, el.P[ch]), rast__i128_mul_wide(E, A));
+                rast__i128 rem;
+                N = rast__i128_add(N, rast__i128_mul_wide(G, el.dy / 2));
+                run[ch] = (int64_t)N.hi < 0 ? 0
+                          : !rast__i128_lt(N, rast__i128_shl(D, 8))
+                              ? 255
+                              : (unsigned char)rast__i128_small_div(N, D, &rem);
+            }
+            fill = 1;
+            if (n == 1) {
+                rast__put_rgba(s->target, p, x, fill, run);
+                return;
+            }
+            xs += g->unit;
+            A += (int64_t)g->unit * el.dy;
+        }
         for (ch = 0; ch < 4; ch++) {
             rast__i128 E = rast__i128_sub(rast__i128_mul(er.P[ch], el.dy), rast__i128_mul(el.P[ch], er.dy));
             rast__i128 N = rast__i128_add(rast__i128_mul_wide(G, el.P[ch]), rast__i128_mul_wide(E, A));
@@ -170,7 +197,7 @@ static void rast__shade_span(void *user, int32_t row, const rast__edge *l, const
                 sq[ch] = rast__i128_small_div(rast__i128_mul_wide(E, (int64_t)g->unit * el.dy), D, &SR[ch]);
         }
     }
-    for (i = 0; i < n; i++) {
+    for (i = fill; i < n; i++) {
         for (ch = 0; ch < 4; ch++) {
             run[4 * fill + ch] = (unsigned char)q[ch];
             q[ch] += sq[ch];

@@ -120,7 +120,10 @@ rast_status rast_fill_rect_gouraud(const rast_target *target, rast_point p0, ras
         unsigned char *p = base + (ptrdiff_t)j * target->stride;
         unsigned char run[4 * RAST__SHADE_RUN];
         int64_t b = j * g.unit + g.off - Y0;          /* 0 <= b < H */
-        int64_t a = r0 * g.unit + g.off - X0;         /* 0 <= a < W */
+        /* 0 <= a < W, except under textbook rounding, which owns a first
+         * column whose sample is up to unit/2 left of X0 (a < 0): there the
+         * bilinear value is extrapolated and may leave 0..255 */
+        int64_t a = r0 * g.unit + g.off - X0;
         int64_t i, n = r1 - r0;
         int32_t x = (int32_t)r0, fill = 0;
 
@@ -137,14 +140,14 @@ rast_status rast_fill_rect_gouraud(const rast_target *target, rast_point p0, ras
                 int64_t slope = (H - b) * (c[1][ch] - c[0][ch]) + b * (c[2][ch] - c[3][ch]);
                 int64_t t = W * ((H - b) * c[0][ch] + b * c[3][ch]) + a * slope + D / 2;
                 int64_t step = (int64_t)g.unit * slope;
-                q[ch] = t / D; /* t >= 0 */
-                r[ch] = t % D;
+                q[ch] = rast__floordiv(t, D); /* t < 0 only for a < 0 */
+                r[ch] = t - q[ch] * D;
                 sq[ch] = rast__floordiv(step, D);
                 sr[ch] = step - sq[ch] * D;
             }
             for (i = 0; i < n; i++) {
                 for (ch = 0; ch < 4; ch++) {
-                    run[4 * fill + ch] = (unsigned char)q[ch];
+                    run[4 * fill + ch] = (unsigned char)(q[ch] < 0 ? 0 : q[ch] > 255 ? 255 : q[ch]);
                     q[ch] += sq[ch];
                     r[ch] += sr[ch];
                     if (r[ch] >= D) {

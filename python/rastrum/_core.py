@@ -410,7 +410,8 @@ def fill_polygon_gouraud(target, rings, colors, opts, shade, s):
         raise InputError("vertex_colors: %d colours for %d vertices" % (colors.shape[0], len(pts)))
     xy = ffi.from_buffer("double[]", pts)
     _check_glue(lib.rastpy_fill_polygon_gouraud(target, xy, len(pts), sizes, nrings, opts,
-                                                ffi.from_buffer("uint8_t[]", colors), shade), pts, s)
+                                                ffi.from_buffer("uint8_t[]", colors), shade), pts, s,
+                "rings", [len(pts)] if nrings == 1 else sizes)
 
 
 

@@ -284,10 +284,12 @@ class Canvas:
         z = zbuf = None
         if depth is not None:
             z = _shade.depths(depth, n)
-            if self.depth is None:
-                self.depth = np.full((self.height, self.width), _shade.INT32_MAX, np.int32)
             zbuf = self.depth
+            if zbuf is None:  # kept only once a call has succeeded with it
+                zbuf = np.full((self.height, self.width), _shade.INT32_MAX, np.int32)
         _shade.fill(self._writable(), batch, colors, z, zbuf, opts, sopts)
+        if z is not None:
+            self.depth = zbuf
 
     def fill_rect_gouraud(self, rect, corner_colors, *, method="bilinear", precision="exact",
                           fraction_bits=16, subpixel_bits=8, sample_offset=0.5):
@@ -399,7 +401,7 @@ class Canvas:
                [7, 1, 7]], dtype=uint8)
         """
         pixel = self._pixel(value)
-        _core.seed_fill(self._target, seed, pixel, None, connectivity)
+        _core.seed_fill(self._writable(), seed, pixel, None, connectivity)
 
     def boundary_fill(self, seed, value, boundary, connectivity=4):
         """Boundary fill: paint `value` on every pixel connected to `seed`
@@ -427,7 +429,7 @@ class Canvas:
         """
         pixel = self._pixel(value)
         edge = ffi.from_buffer(_pixel_bytes(boundary, self._format))
-        _core.seed_fill(self._target, seed, pixel, edge, connectivity)
+        _core.seed_fill(self._writable(), seed, pixel, edge, connectivity)
 
     def to_image(self):
         """A Pillow image (a copy): mode L, RGB or RGBA; rgb565 as RGB (each

@@ -159,7 +159,12 @@ def read_obj(source):
     """
     if isinstance(source, (str, os.PathLike)):
         with open(source, "r", encoding="utf-8") as f:
-            return _read_obj(f, str(source))
+            try:
+                return _read_obj(f, str(source))
+            except UnicodeDecodeError as e:
+                raise InputError("%s: not a text (UTF-8) OBJ file: %s" % (source, e)) from None
+    if not hasattr(source, "read"):
+        raise InputError("source must be a path or a text file object, not %r" % (source,))
     return _read_obj(source, getattr(source, "name", "<obj>"))
 
 
@@ -278,12 +283,33 @@ def rotation(yaw=0.0, pitch=0.0, roll=0.0):
     return ry @ rx @ rz
 
 
+def _real(x, what):
+    """A finite real number (not a bool or a string), as a float."""
+    if isinstance(x, (bool, np.bool_)) or not isinstance(x, (int, float, np.integer, np.floating)) \
+            or not math.isfinite(x):
+        raise InputError("%s must be a finite number, not %r" % (what, x))
+    return float(x)
+
+
+def _finite(x, what, shape, text):
+    """A float64 array of `shape`, all finite, or InputError naming `what`."""
+    from ._core import real_array
+    a = real_array(x, what, text)
+    if a.shape != shape:
+        raise InputError("%s must be %s, not shape %s" % (what, text, a.shape))
+    if not np.all(np.isfinite(a)):
+        bad = np.argwhere(~np.isfinite(a))[0]
+        raise InputError("%s must be finite: %s at index %s" % (what, a[tuple(bad)], tuple(int(i) for i in bad)))
+    return a
+
+
 def _mesh(vertices, faces, normals=None):
+    from ._core import real_array
+    v = real_array(vertices, "vertices", "a (V, 3) array-like")
     try:
-        v = np.asarray(vertices, dtype=np.float64)
         f = np.asarray(faces)
     except (TypeError, ValueError):
-        raise InputError("vertices must be (V, 3) numbers and faces (F, 3) ints") from None
+        raise InputError("faces must be (F, 3) ints") from None
     if v.ndim != 2 or v.shape[1] != 3:
         raise InputError("vertices must have shape (V, 3), not %s" % (v.shape,))
     if not np.all(np.isfinite(v)):
@@ -296,9 +322,7 @@ def _mesh(vertices, faces, normals=None):
         raise InputError("faces index vertices 0..%d only" % (len(v) - 1))
     n = None
     if normals is not None:
-        n = np.asarray(normals, dtype=np.float64)
-        if n.shape != v.shape:
-            raise InputError("normals must have the shape of vertices %s, not %s" % (v.shape, n.shape))
+        n = _finite(normals, "normals", v.shape, "the shape of vertices %s" % (v.shape,))
     return v, f.astype(np.int64), n
 
 
@@ -369,7 +393,7 @@ def lambert(normals, light, ambient, color):
 
 
 def render_mesh(vertices, faces, size=(256, 256), *, normals=None, shading="flat",
-                light=(-0.4, 0.5, 0.75), ambient=0.15, color=(230, 230, 230), rotation=None,
+                light=(-0.4, 0.5, 0.75), ambient=0.15, color=None, rotation=None,
                 projection="orthographic", scale=1.0, fov=40.0, distance=4.0, cull=True,
                 depth=True, background=0, format="rgb888", canvas=None, precision="exact",
                 subpixel_bits=8):
@@ -391,8 +415,9 @@ def render_mesh(vertices, faces, size=(256, 256), *, normals=None, shading="flat
         Direction towards the light, in camera space.
     ambient : float in [0, 1]
         Intensity of a face turned away from the light.
-    color : sequence of C ints
-        The surface colour (C = the canvas's channels).
+    color : sequence of C ints, or one int
+        The surface colour (C = the canvas's channels); None: 230 in
+        every channel.
     rotation, projection, scale, fov, distance
         The camera: see :func:`project` and the module's conventions.
     cull : bool
@@ -419,14 +444,40 @@ def render_mesh(vertices, faces, size=(256, 256), *, normals=None, shading="flat
     from .canvas import Canvas
 
     v, f, n = _mesh(vertices, faces, normals)
-    if shading not in ("flat", "gouraud"):
+    if not isinstance(shading, str) or shading not in ("flat", "gouraud"):
         raise InputError("unknown shading %r; choose flat or gouraud" % (shading,))
-    if not 0 <= float(ambient) <= 1:
+    ambient = _real(ambient, "ambient")
+    if not 0 <= ambient <= 1:
         raise InputError("ambient must be in [0, 1], not %r" % (ambient,))
-    if np.linalg.norm(np.asarray(light, dtype=np.float64)) == 0:
+    light = _finite(light, "light", (3,), "3 numbers (x, y, z)")
+    if np.linalg.norm(light) == 0:
         raise InputError("light must be a non-zero direction")
+    if rotation is not None:
+        rotation = _finite(rotation, "rotation", (3, 3), "a 3x3 matrix")
+    scale = _real(scale, "scale")
+    if projection == "perspective":
+        fov, distance = _real(fov, "fov"), _real(distance, "distance")
+        if not 0 < fov < 180:
+            raise InputError("fov must be in (0, 180) degrees, not %r" % (fov,))
+    for name, flag in (("cull", cull), ("depth", depth)):
+        if not isinstance(flag, (bool, np.bool_)):
+            raise InputError("%s must be True or False, not %r" % (name, flag))
     if canvas is None:
-        canvas = Canvas(size[0], size[1], format=format, background=background)
+        from ._core import int_pair
+        width, height = int_pair(size, "size must be a pair (width, height), not %r",
+                                 "size must hold two ints (width, height), not %r")
+        canvas = Canvas(width, height, format=format, background=background)
+    elif not isinstance(canvas, Canvas):
+        raise InputError("canvas must be a rastrum.Canvas, not %s" % type(canvas).__name__)
+    channels = canvas.array.shape[2] if canvas.array.ndim == 3 else 1
+    if color is None:
+        color = (230,) * channels
+    col = np.asarray(color) if not isinstance(color, str) else np.asarray(None)
+    if col.dtype.kind not in "iu" or col.ndim > 1 or (col.size != channels and col.size != 1):
+        raise InputError("color must be %d int(s) in 0..255 for format %s, not %r"
+                         % (channels, canvas.format, color))
+    if col.min() < 0 or col.max() > 255:
+        raise InputError("color: every channel must be in 0..255, not %r" % (color,))
     w, h = canvas.width, canvas.height
     xy, key, cam = project(v, (w, h), rotation=rotation, projection=projection, scale=scale, fov=fov,
                            distance=distance)
@@ -436,20 +487,29 @@ def render_mesh(vertices, faces, size=(256, 256), *, normals=None, shading="flat
     if cull and len(f):
         f = f[front_facing(tri_xy)]
         tri_xy = xy[f]
-    channels = canvas.array.shape[2] if canvas.array.ndim == 3 else 1
-    col = np.broadcast_to(np.asarray(color, dtype=np.int64).reshape(-1), (channels,))
+    col = np.broadcast_to(col.astype(np.int64).reshape(-1), (channels,))
+    if not np.all(np.isfinite(xy)):
+        raise InputError("the projected vertices are not finite (scale %r, fov %r, distance %r)"
+                         % (scale, fov, distance))
     if shading == "flat":
         face_c = lambert(face_normals(cam, f), light, float(ambient), col)
         vcol = np.repeat(face_c[:, None, :], 3, axis=1)
     else:
         vn = vertex_normals(v, f_all) if n is None else n
         vcol = lambert(vn @ rot.T, light, float(ambient), col)[f]
-    zq = None
+    zq, kept = None, canvas.depth
     if depth:
         zq = quantise_depth(key)[f]
         canvas.clear_depth()
-    canvas.fill_triangles(tri_xy, vertex_colors=vcol, precision=precision, depth=zq,
-                          subpixel_bits=subpixel_bits)
+    try:
+        canvas.fill_triangles(tri_xy, vertex_colors=vcol, precision=precision, depth=zq,
+                              subpixel_bits=subpixel_bits)
+    except InputError as e:
+        canvas.depth = kept  # nothing was drawn: the depth buffer as it was
+        if str(e).startswith("tris"):  # the projected triangles: name what the caller gave
+            raise InputError("render_mesh: the projected mesh is out of range (scale, fov or distance "
+                             "too large?): %s" % e) from None
+        raise
     return canvas
 
 

@@ -78,10 +78,7 @@ def rgba(colors, n, per_vertex, fmt, channels):
 
 def depths(depth, n):
     """(n, 3) numbers rounded half up to int32 (floor(d + 1/2)), checked."""
-    try:
-        d = np.asarray(depth, dtype=np.float64)
-    except (TypeError, ValueError):
-        raise InputError("depth must be an array-like of numbers of shape (N, 3)") from None
+    d = _core.real_array(depth, "depth", "an (N, 3) array-like")
     if d.shape != (n, 3):
         raise InputError("depth must have shape (N, 3) = (%d, 3), not %s" % (n, d.shape))
     z = np.floor(d + 0.5)
@@ -101,4 +98,4 @@ def fill(target, tris, colors, z, zbuf, opts, sopts):
         ffi.NULL if zbuf is None else ffi.from_buffer("int32_t[]", zbuf, require_writable=True),
         opts, sopts)
     if result:
-        _core._check_glue(result, tris.reshape(-1, 2), opts.subpixel_bits)
+        _core._check_glue(result, tris.reshape(-1, 2), opts.subpixel_bits, "tris", 3)

@@ -40,10 +40,7 @@ def colors_rgba(colors, n, fmt, what):
 
 
 def rect_corners(rect):
-    try:
-        r = np.asarray(rect, dtype=np.float64)
-    except (TypeError, ValueError):
-        raise InputError("rect must be (x0, y0, x1, y1) numbers, not %r" % (rect,)) from None
+    r = _core.real_array(rect, "rect", "(x0, y0, x1, y1)")
     if r.shape != (4,):
         raise InputError("rect must be (x0, y0, x1, y1), not shape %s" % (r.shape,))
     return r
@@ -67,7 +64,13 @@ def fill_rect_gouraud(canvas, rect, corner_colors, method, precision, fraction_b
         return
     opts = _triangles.tri_opts("edge", subpixel_bits, sample_offset)
     sh = shade_opts(precision, fraction_bits)
-    pts = _core.snap_points(r.reshape(2, 2), opts.subpixel_bits)
+    pts = _core.snap_points(r.reshape(2, 2), opts.subpixel_bits, "rect")
+    side = np.abs(pts[1].astype(np.int64) - pts[0])
+    if side.max() > lib.RAST_GOURAUD_RECT_MAX_SIZE:
+        raise InputError("rect: a side of %g pixels is longer than the limit, 2**26 - 1 units of "
+                         "1/2**subpixel_bits pixel (%g pixels at subpixel_bits=%d)"
+                         % (side.max() / 2.0 ** opts.subpixel_bits,
+                            lib.RAST_GOURAUD_RECT_MAX_SIZE / 2.0 ** opts.subpixel_bits, opts.subpixel_bits))
     p0 = ffi.new("rast_point *", (int(pts[0, 0]), int(pts[0, 1])))
     p1 = ffi.new("rast_point *", (int(pts[1, 0]), int(pts[1, 1])))
     _core._check(lib.rast_fill_rect_gouraud(canvas._writable(), p0[0], p1[0],

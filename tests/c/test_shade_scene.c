@@ -215,9 +215,70 @@ static void test_polygon(void)
     CHECK(k == W * H * 3 && guards_ok());
 }
 
+/* Textbook rounding owns a sample up to half a pixel left of the run's
+ * left crossing, where the edge-to-edge line is extrapolated: the value
+ * there is the plane's, clamped to 0..255 (found by fuzz_shade: pixel
+ * (10, 1) of this triangle, plane value -784/617, was stored as 255, and a
+ * tiny run could overflow the quotient). */
+static void test_polygon_textbook_clamp(void)
+{
+    static rast_point pts[3] = {{48, -5}, {15, -8}, {-8, 46}};
+    static const uint8_t cols[12] = {96, 243, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0};
+    static const uint32_t three = 3;
+    static uint8_t img[48 * 48];
+    rast_polygon poly;
+    rast_fill_opts o;
+    rast_shade_opts sh;
+    rast_target t;
+    size_t need = 0;
+    poly.points = pts;
+    poly.ring_sizes = &three;
+    poly.nrings = 1;
+    memset(&o, 0, sizeof o);
+    memset(&sh, 0, sizeof sh);
+    o.algorithm = RAST_ALGO_AET;
+    o.sample = RAST_SAMPLE_CENTER;
+    o.rounding = RAST_ROUND_TEXTBOOK;
+    memset(img, 7, sizeof img);
+    CHECK(rast_target_init(&t, img, 48, 48, 48, RAST_FORMAT_GRAY8) == RAST_OK);
+    CHECK(rast_polygon_gouraud_scratch_size(3, 48, 48, &need) == RAST_OK);
+    CHECK(need <= sizeof scratch);
+    CHECK(rast_fill_polygon_gouraud(&t, &poly, cols, &o, &sh, scratch, need) == RAST_OK);
+    CHECK(img[1 * 48 + 10] == 0);
+}
+
+/* The same for rectangles (found by fuzz_shade): textbook rounding owns
+ * column 11 of this rectangle, x from 11.9375 to 16, whose sample 11.5 is
+ * left of it; its red, extrapolated to a little below 0, was stored as 255,
+ * and the truncating division put every later pixel of the row one level
+ * too high. */
+static void test_rect_textbook_clamp(void)
+{
+    static const uint8_t cols[16] = {89, 255, 255, 0, 0, 192, 170, 250, 34, 95, 85, 0, 0, 51, 253, 253};
+    static uint8_t img[20 * 20 * 3];
+    rast_point p0 = {256, 204}, p1 = {191, -128};
+    rast_tri_opts o;
+    rast_shade_opts sh;
+    rast_target t;
+    memset(&o, 0, sizeof o);
+    memset(&sh, 0, sizeof sh);
+    o.subpixel_bits = 4;
+    o.sample = RAST_SAMPLE_CENTER;
+    o.rounding = RAST_ROUND_TEXTBOOK;
+    memset(img, 7, sizeof img);
+    CHECK(rast_target_init(&t, img, 20, 20, 60, RAST_FORMAT_RGB888) == RAST_OK);
+    CHECK(rast_fill_rect_gouraud(&t, p0, p1, cols, &o, &sh) == RAST_OK);
+    CHECK(img[(9 * 20 + 11) * 3] == 0);  /* extrapolated below 0: clamped */
+    CHECK(img[(9 * 20 + 12) * 3] == 15); /* Fraction reference: floor(c + 1/2) */
+    CHECK(img[(9 * 20 + 15) * 3] == 66);
+    CHECK(img[(9 * 20 + 11) * 3 + 1] == 172);
+}
+
 int main(void)
 {
     test_rect();
     test_polygon();
+    test_polygon_textbook_clamp();
+    test_rect_textbook_clamp();
     return check_report("test_shade_scene");
 }

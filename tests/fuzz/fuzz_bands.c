@@ -39,7 +39,7 @@ static void paint(void *user, const rast_prim *prim, int32_t y, int32_t x0, int3
             if (v < 65535) v++;
             memcpy(px, &v, 2);
         } else {
-            memcpy(px, prim->pixel, (size_t)p->t->bpp);
+            fz_set(p->t, p->t->mem, x, y, (const unsigned char *)prim->pixel);
         }
     }
 }

@@ -5,9 +5,13 @@
  * nothing) exactly when the input is bad; otherwise every pixel of the clip
  * is the per-sample reference's (fuzz.h), nothing outside the clip or after
  * the scratch changes, and every other algorithm supporting the rule gives
- * the same bytes.
+ * the same bytes.  rast_fill_bounds: a rectangle inside the clip holding
+ * every filled pixel, and a fill clipped to it (with the scratch its size
+ * asks for) gives the same bytes; RAST_E_RANGE with *bounds untouched.
  */
 #include "fuzz.h"
+
+static const unsigned char fz_off[4] = {0, 0, 0, 0}; /* MONO1's opaque background */
 
 #define MAXPTS 40
 
@@ -25,7 +29,9 @@ static rast_status run(int entry, fz_target *t, const rast_polygon *pg, const ra
     if (entry == 0)
         st = rast_fill_polygon(&t->t, pg, o, fz_value, mem, bytes);
     else if (entry == 1)
-        st = rast_fill_polygon_opaque(&t->t, pg, o, fz_value, fz_background, mem, bytes);
+        st = rast_fill_polygon_opaque(&t->t, pg, o, fz_value,
+                                      t->t.format == RAST_FORMAT_MONO1 ? fz_off : fz_background, mem,
+                                      bytes);
     else
         st = rast_fill_polygon_spans(pg, o, clip, fz_span, &spans, mem, bytes);
     fz_scratch_check(&scratch);
@@ -92,6 +98,13 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
                                  : small ? RAST_E_SCRATCH : RAST_E_FORMAT));
             FZ_ASSERT(fz_untouched(&ft));
             for (k = 0; k < FZ_SPAN * FZ_SPAN; k++) FZ_ASSERT(spans.count[k] == 0);
+            if (range) { /* rast_fill_bounds: the same status, *bounds untouched */
+                rast_rect b = {7, 7, 7, 7};
+                rast_status bs = rast_fill_bounds(&o, &pg, &clip, &b);
+                FZ_ASSERT(bs != RAST_OK);
+                if (range + rule + small + format == 1) FZ_ASSERT(bs == RAST_E_RANGE);
+                FZ_ASSERT(b.x0 == 7 && b.y0 == 7 && b.x1 == 7 && b.y1 == 7);
+            }
             return 0;
         }
     }
@@ -109,7 +122,8 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     for (y = 0; y < h; y++)
         for (x = 0; x < w; x++)
             want[y * w + x] = (uint16_t)(fz_in_rect(&ft.cut, x, y) && fz_ref_polygon(&pg, &o, x, y));
-    if (entry == 1) { /* opaque: turn the background into "0" and check as the fill */
+    if (entry == 1 && f == RAST_FORMAT_MONO1) { /* opaque: background is "off", as before */
+    } else if (entry == 1) { /* opaque: turn the background into "0" and check as the fill */
         for (y = ft.cut.y0; y < ft.cut.y1; y++)
             for (x = ft.cut.x0; x < ft.cut.x1; x++) {
                 unsigned char *p = fz_px(&ft, x, y);
@@ -122,6 +136,25 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
             }
     }
     fz_check(&ft, want);
+
+    /* rast_fill_bounds: a rectangle inside the clip holding every pixel of
+     * the fill (empty as x0 == x1 and y0 == y1); a fill clipped to it, with
+     * the scratch its size asks for, gives the same bytes */
+    if (entry == 0) {
+        rast_rect b;
+        FZ_ASSERT(rast_fill_bounds(&o, &pg, &ft.cut, &b) == RAST_OK);
+        FZ_ASSERT(b.x0 <= b.x1 && b.y0 <= b.y1);
+        if (b.x0 == b.x1 || b.y0 == b.y1) FZ_ASSERT(b.x0 == b.x1 && b.y0 == b.y1);
+        if (b.x0 < b.x1)
+            FZ_ASSERT(b.x0 >= ft.cut.x0 && b.x1 <= ft.cut.x1 && b.y0 >= ft.cut.y0 && b.y1 <= ft.cut.y1);
+        for (y = 0; y < h; y++)
+            for (x = 0; x < w; x++)
+                if (want[y * w + x]) FZ_ASSERT(fz_in_rect(&b, x, y));
+        FZ_ASSERT(rast_scratch_size(&o, npts, b.x1 - b.x0, b.y1 - b.y0, &need) == RAST_OK);
+        fz_target_init(&ft2, w, h, f, &b);
+        FZ_ASSERT(run(0, &ft2, &pg, &o, &b, need) == RAST_OK);
+        FZ_ASSERT(memcmp(ft.mem, ft2.mem, sizeof ft.mem) == 0);
+    }
 
     /* every other algorithm with this rule: the same bytes */
     for (a = 0; a < RAST_ALGO_COUNT_; a++) {

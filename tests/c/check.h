@@ -1,8 +1,24 @@
-/* check.h - the smallest test harness: CHECK(cond), then check_report(). */
+/* check.h - the smallest test harness: CHECK(cond), then check_report();
+ * and rng(), the tests' deterministic generator (an LCG), seeded by
+ * CHECK_RNG_SEED, which a test file may define before including this. */
 #ifndef RAST_CHECK_H
 #define RAST_CHECK_H
 
+#include <stdint.h>
 #include <stdio.h>
+
+#ifndef CHECK_RNG_SEED
+#define CHECK_RNG_SEED 1u
+#endif
+
+static uint32_t rng_state = CHECK_RNG_SEED;
+
+/* 24 random bits. */
+static inline uint32_t rng(void)
+{
+    rng_state = rng_state * 1664525u + 1013904223u;
+    return rng_state >> 8;
+}
 
 static int check_passed, check_failed;
 

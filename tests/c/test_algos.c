@@ -11,6 +11,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#define CHECK_RNG_SEED 2024u
 #include "check.h"
 #include "ref.h"
 #include "rastrum.h"
@@ -35,13 +36,6 @@ static int ref_inside(const rast_point *pts, const uint32_t *sizes, uint32_t nri
         return n & 1;
     }
     return w != 0;
-}
-
-static uint32_t rng_state = 2024u;
-static uint32_t rng(void)
-{
-    rng_state = rng_state * 1664525u + 1013904223u;
-    return rng_state >> 8;
 }
 
 /* ---- filling with guards ------------------------------------------------------ */

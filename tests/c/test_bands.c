@@ -16,6 +16,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#define CHECK_RNG_SEED 5u
 #include "check.h"
 #include "ref.h"
 #include "rastrum.h"
@@ -31,12 +32,6 @@
 #define MAXPTS 4096
 #define SCRATCH_BYTES (1 << 20)
 
-static uint32_t rng_state = 5u;
-static uint32_t rng(void)
-{
-    rng_state = rng_state * 1664525u + 1013904223u;
-    return rng_state >> 8;
-}
 static int32_t rnd(int32_t lo, int32_t hi) { return lo + (int32_t)(rng() % (uint32_t)(hi - lo + 1)); }
 
 /* ---- scenes ------------------------------------------------------------------ */

@@ -5,6 +5,7 @@
 #include <stdint.h>
 #include <string.h>
 
+#define CHECK_RNG_SEED 12345u
 #include "check.h"
 #include "ref.h"
 #include "rastrum.h"
@@ -18,13 +19,6 @@ static int ref_inside(const rast_point *pts, const uint32_t *sizes, uint32_t nri
 {
     int crossings, w = ref_winding(pts, sizes, nrings, s, center, 0, i, j, &crossings);
     return rule == RAST_RULE_EVENODD ? (crossings & 1) : (w != 0);
-}
-
-static uint32_t rng_state = 12345u;
-static uint32_t rng(void)
-{
-    rng_state = rng_state * 1664525u + 1013904223u;
-    return rng_state >> 8;
 }
 
 static uint64_t scratch[1 << 16];

@@ -12,6 +12,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#define CHECK_RNG_SEED 55u
 #include "check.h"
 #include "ref.h"
 #include "rastrum.h"
@@ -22,13 +23,6 @@
 
 static uint64_t scratch_mem[(1 << 22) / 8];
 #include "scratch.h"
-
-static uint32_t rng_state = 55u;
-static uint32_t rng(void)
-{
-    rng_state = rng_state * 1664525u + 1013904223u;
-    return rng_state >> 8;
-}
 
 /* Spans into a W x H image (pixels counted) whose (0, 0) is (ox, oy);
  * bad counts spans outside `clip`, out of order, or off the image. */

@@ -7,19 +7,13 @@
 #include <stdint.h>
 #include <string.h>
 
+#define CHECK_RNG_SEED 4242u
 #include "check.h"
 #include "ref.h"
 #include "internal.h" /* rast__line_rows, rast__line_run: the line by formula */
 #include "rastrum.h"
 
 #define GUARD 0xA5
-
-static uint32_t rng_state = 4242u;
-static uint32_t rng(void)
-{
-    rng_state = rng_state * 1664525u + 1013904223u;
-    return rng_state >> 8;
-}
 
 static const rast_rect everything = {-RAST_MAX_DIM, -RAST_MAX_DIM, RAST_MAX_DIM, RAST_MAX_DIM};
 

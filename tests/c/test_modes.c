@@ -6,17 +6,11 @@
 #include <stdint.h>
 #include <string.h>
 
+#define CHECK_RNG_SEED 777u
 #include "check.h"
 #include "rastrum.h"
 
 static uint64_t scratch[1 << 15];
-
-static uint32_t rng_state = 777u;
-static uint32_t rng(void)
-{
-    rng_state = rng_state * 1664525u + 1013904223u;
-    return rng_state >> 8;
-}
 
 /* Spans as painted into a mask, with their order checked on the way. */
 typedef struct span_log {

@@ -8,6 +8,7 @@
 #include <stdint.h>
 #include <string.h>
 
+#define CHECK_RNG_SEED 2024u
 #include "check.h"
 #include "rastrum.h"
 
@@ -15,13 +16,6 @@
 #define PAD 4
 #define MAXW 96
 #define MAXH 80
-
-static uint32_t rng_state = 2024u;
-static uint32_t rng(void)
-{
-    rng_state = rng_state * 1664525u + 1013904223u;
-    return rng_state >> 8;
-}
 
 /* ---- scenes: labels 0..2 ------------------------------------------------------ */
 static unsigned char lab[MAXH][MAXW];

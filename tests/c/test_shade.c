@@ -9,6 +9,7 @@
 #include <stdint.h>
 #include <string.h>
 
+#define CHECK_RNG_SEED 77u
 #include "check.h"
 #include "ref.h"
 #include "wide.h" /* rast__recip_floordiv, rast__i128_floordiv */
@@ -19,13 +20,6 @@
 #define H 21
 
 static uint64_t scratch[1 << 12];
-
-static uint32_t rng_state = 77u;
-static uint32_t rng(void)
-{
-    rng_state = rng_state * 1664525u + 1013904223u;
-    return rng_state >> 8;
-}
 
 static const rast_format formats[] = {RAST_FORMAT_GRAY8, RAST_FORMAT_RGB888, RAST_FORMAT_RGBA8888,
                                       RAST_FORMAT_RGB565, RAST_FORMAT_MONO1};

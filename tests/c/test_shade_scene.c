@@ -22,11 +22,11 @@ static union {
 static unsigned char plain[W * H * 4];
 static uint64_t scratch[8192];
 
-static uint32_t rng = 12345u;
+static uint32_t rnd_state = 12345u;
 static int32_t rnd(int32_t lo, int32_t hi) /* [lo, hi] */
 {
-    rng = rng * 1103515245u + 12345u;
-    return lo + (int32_t)((rng >> 8) % (uint32_t)(hi - lo + 1));
+    rnd_state = rnd_state * 1103515245u + 12345u;
+    return lo + (int32_t)((rnd_state >> 8) % (uint32_t)(hi - lo + 1));
 }
 
 static int guards_ok(void)

@@ -6,6 +6,7 @@
 #include <stdint.h>
 #include <string.h>
 
+#define CHECK_RNG_SEED 2024u
 #include "check.h"
 #include "ref.h"
 #include "internal.h" /* rast__tri_span_flags, rast__grid_init */
@@ -15,13 +16,6 @@
 #define MAXW 48
 
 static uint64_t scratch[1 << 12];
-
-static uint32_t rng_state = 2024u;
-static uint32_t rng(void)
-{
-    rng_state = rng_state * 1664525u + 1013904223u;
-    return rng_state >> 8;
-}
 
 /* ---- the reference: DESIGN section 1 for the ring t0 t1 t2, one sample at a
  * time, by cross-multiplication (no division).  Coordinates doubled, so the

@@ -149,7 +149,7 @@ strict:
 # ---- valgrind ------------------------------------------------------------------
 valgrind: $(C_TESTS)
 	@for t in $(C_TESTS); do echo "== $$t (memcheck)"; \
-	  valgrind -q --error-exitcode=1 --leak-check=full ./$$t || exit 1; done
+	  RAST_TEST_QUICK=1 valgrind -q --error-exitcode=1 --leak-check=full ./$$t || exit 1; done
 	@$(MAKE) --no-print-directory valgrind-py
 
 # A quick profile of the Python tests under memcheck, against an extension

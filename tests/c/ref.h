@@ -85,7 +85,7 @@ static inline int ref_line_minor(rast_point a, rast_point b, int s, int center, 
 /* Is pixel (i, j) one of the line a -> b's? */
 static inline int ref_line_has(rast_point a, rast_point b, int s, int center, int64_t i, int64_t j)
 {
-    int64_t dx = (int64_t)b.x - a.x, dy = (int64_t)b.y - a.y, q;
+    int64_t dx = (int64_t)b.x - a.x, dy = (int64_t)b.y - a.y, q = 0;
     if (dx < 0) dx = -dx;
     if (dy < 0) dy = -dy;
     if (dy > dx) return ref_line_minor(a, b, s, center, j, &q) && q == i;

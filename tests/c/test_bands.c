@@ -396,7 +396,7 @@ static void test_random_scenes(void)
 {
     static scene sc;
     int n, k;
-    for (n = 0; n < 100; n++) {
+    for (n = 0; n < check_count(100); n++) {
         rast_rect clip;
         rast_format f = (rast_format)rnd(0, RAST_FORMAT_COUNT16);
         uint32_t i;

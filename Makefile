@@ -158,7 +158,7 @@ valgrind: $(C_TESTS)
 # sees every allocation, and the suppressions of CPython's own noise
 # (tools/valgrind-python.supp; never a frame of rastrum).  A few minutes.
 VALGRIND_PY_TESTS ?= tests/test_bad_input.py tests/test_threads.py tests/test_snapping.py
-VALGRIND_PY_K ?= NaN or empty or contiguous or only or zero or Fortran or gil or disjoint or snap
+VALGRIND_PY_K ?= NaN or empty or Fortran or snap
 valgrind-py:
 	rm -rf build/valgrind-py
 	$(PY_CLEAN)

@@ -9,11 +9,11 @@ from fractions import Fraction
 
 import numpy as np
 
+import oracle_shade
 from oracle import oracle_mask, snap
 
 
-def _round(x: Fraction) -> int:
-    return math.floor(x + Fraction(1, 2))
+_round = oracle_shade._round  # floor(v + 1/2), the one rounding of every shaded value
 
 
 def rect_gouraud(rect, colors, shape, *, precision="exact", fraction_bits=16, subpixel_bits=8,
@@ -130,20 +130,10 @@ def polygon_gouraud(rings, colors, shape, *, rule="evenodd", subpixel_bits=8, sa
 
 def triangle_barycentric(tri, colors, shape, *, subpixel_bits=8, sample_offset=0.5, channels=4):
     """The barycentric (plane) Gouraud colours of one triangle, rounded half
-    up, on the triangle's exact pixels (a zero background)."""
-    S = subpixel_bits
-    o = Fraction(sample_offset)
-    p = [(Fraction(snap(x, S), 1 << S), Fraction(snap(y, S), 1 << S)) for x, y in tri]
-    mask = oracle_mask([[(float(x), float(y)) for x, y in p]], shape, subpixel_bits=S,
-                       sample_offset=sample_offset)
-    out = np.zeros(shape + (channels,), np.uint8)
-    (x0, y0), (x1, y1), (x2, y2) = p
-    area = (x1 - x0) * (y2 - y0) - (x2 - x0) * (y1 - y0)
-    for j, i in zip(*np.nonzero(mask)):
-        xs, ys = i + o, j + o
-        w0 = ((x1 - xs) * (y2 - ys) - (x2 - xs) * (y1 - ys)) / area
-        w1 = ((x2 - xs) * (y0 - ys) - (x0 - xs) * (y2 - ys)) / area
-        w2 = 1 - w0 - w1
-        for ch in range(channels):
-            out[j, i, ch] = _round(w0 * colors[0][ch] + w1 * colors[1][ch] + w2 * colors[2][ch])
-    return out
+    up, on the triangle's exact pixels (a zero background): the shaded
+    triangles' reference (oracle_shade.shade), not a second copy of it."""
+    rgba = np.zeros((1, 3, 4), np.int64)
+    rgba[0, :, :channels] = np.asarray(colors, np.int64)[:, :channels]
+    out, _ = oracle_shade.shade([tri], rgba, shape, subpixel_bits=subpixel_bits,
+                                sample_offset=sample_offset)
+    return np.where(out < 0, 0, out)[..., :channels].astype(np.uint8)

@@ -63,11 +63,18 @@ def rgba(colors, n, per_vertex, fmt, channels):
     if c not in allowed:
         raise InputError("%s: format %s takes %s channels per colour, not %d"
                          % (what, fmt, " or ".join(map(str, allowed)), c))
-    if a.size and (a.min() < 0 or a.max() > 255):
-        raise InputError("%s: every channel must be in 0..255" % what)
     if not per_vertex:
         a = np.repeat(a[:, None, :], 3, axis=1)
-    out = np.empty((n, 3, 4), np.uint8)
+    return to_rgba(a, what)
+
+
+def to_rgba(a, what):
+    """Checked ints (..., C), C = 1 (a level: R = G = B), 3 (A = 255) or 4,
+    as uint8 (..., 4) RGBA: the channel rule of every shaded call."""
+    if a.size and (a.min() < 0 or a.max() > 255):
+        raise InputError("%s: every channel must be in 0..255" % what)
+    c = a.shape[-1]
+    out = np.empty(a.shape[:-1] + (4,), np.uint8)
     out[..., 3] = 255
     if c == 1:
         out[..., :3] = a

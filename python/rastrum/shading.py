@@ -7,7 +7,7 @@ import numpy as np
 
 from . import _core
 from . import triangles as _triangles
-from .shade import shade_opts
+from .shade import shade_opts, to_rgba
 from ._core import InputError
 from ._native import ffi, lib
 from .canvas import _CHANNELS
@@ -30,13 +30,7 @@ def colors_rgba(colors, n, fmt, what):
     if a.ndim != 2 or a.shape[0] != n or a.shape[1] not in allowed or a.dtype.kind not in "iu":
         raise InputError("%s must be ints of shape (%d, C), C in %s for format %s, not %s %s"
                          % (what, n, allowed, fmt, a.dtype, a.shape))
-    if a.size and (a.min() < 0 or a.max() > 255):
-        raise InputError("%s: every channel must be in 0..255" % what)
-    out = np.full((n, 4), 255, np.uint8)
-    out[:, :3] = a[:, :3] if a.shape[1] > 1 else a
-    if a.shape[1] == 4:
-        out[:, 3] = a[:, 3]
-    return out
+    return to_rgba(a, what)
 
 
 def rect_corners(rect):

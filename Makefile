@@ -4,7 +4,7 @@
 #   make test            C tests, then the Python tests (installs the package)
 #   make demo            render the demo scenes to out/ and print the speed table
 #   make asan            C and Python tests under AddressSanitizer + UBSan
-#   make strict          the core under gcc and clang, -std=c99 -pedantic -Werror
+#   make strict          the core and the Python glue under gcc and clang, -std=c99 -pedantic -Werror
 #   make valgrind        C tests under valgrind memcheck, then valgrind-py
 #   make valgrind-py     a quick profile of the Python tests under memcheck
 #   make firmware-check  the core for Cortex-M0 and rv32: no float, heap or stdio; .text sizes
@@ -30,6 +30,10 @@ CFLAGS  ?= -O2
 ALL_CFLAGS = $(WARN) $(CFLAGS) -Icsrc/include -Icsrc/src
 
 SRC     := $(wildcard csrc/src/*.c)
+# The Python binding's C glue (not the core: it may use double and malloc),
+# built into the extension by python/rastrum/_build.py and checked by make
+# strict with the same warnings.
+GLUE_SRC := $(wildcard python/glue/*.c)
 HDR     := csrc/include/rastrum.h $(wildcard csrc/src/*.h)
 OBJ     := $(SRC:csrc/src/%.c=build/obj/%.o)
 PIC_OBJ := $(SRC:csrc/src/%.c=build/pic/%.o)
@@ -141,7 +145,7 @@ asan-py:
 strict:
 	@for cc in gcc clang; do \
 	  if command -v $$cc >/dev/null; then \
-	    for f in $(SRC); do $$cc $(WARN) -O2 -Icsrc/include -Icsrc/src -c $$f -o /dev/null || exit 1; done; \
+	    for f in $(SRC) $(GLUE_SRC); do $$cc $(WARN) -O2 -Icsrc/include -Icsrc/src -Ipython/glue -c $$f -o /dev/null || exit 1; done; \
 	    echo "strict: $$cc ok"; \
 	  else echo "strict: $$cc not installed"; exit 1; fi; \
 	done

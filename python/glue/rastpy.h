@@ -1,0 +1,44 @@
+/* rastpy.h - the binding glue's declarations (the .c files of python/glue).
+ *
+ * Not part of the core and not installed: these functions exist for the
+ * Python layer.  They snap float64 input, take scratch from malloc and call
+ * the core, one C call per Python call, with the GIL released by cffi.
+ * python/rastrum/_build.py hands cffi the declarations between the
+ * cdef-begin and cdef-end markers of every header in this folder (python/glue), and a
+ * "#define NAME ..." for every RASTPY_ constant defined above them. */
+#ifndef RASTPY_H
+#define RASTPY_H
+
+#include <stddef.h>
+#include <stdint.h>
+#include "rastrum.h"
+
+/* Out of memory in the glue (malloc failed); never a core status. */
+#define RASTPY_E_NOMEM (-1000)
+
+/* cdef-begin */
+long rastpy_fill_polygon(const rast_target *target, const double *xy,
+                         uint32_t npoints, const uint32_t *ring_sizes,
+                         uint32_t nrings, const rast_fill_opts *opts,
+                         const void *pixel, const void *background);
+long rastpy_mask_polygon(void *mask, int32_t height, int32_t width,
+                         const double *xy, uint32_t npoints,
+                         const uint32_t *ring_sizes, uint32_t nrings,
+                         const rast_fill_opts *opts);
+long rastpy_snap_points(const double *xy, size_t npoints, int s, int32_t *out);
+long rastpy_fill_triangles(const rast_target *target, const double *xy,
+                           uint32_t ntris, const rast_tri_opts *opts,
+                           const void *pixel);
+long rastpy_fill_triangles_shaded(const rast_target *target, const double *xy,
+                                  uint32_t ntris, const uint8_t *colors,
+                                  const int32_t *z, int32_t *zbuf,
+                                  const rast_tri_opts *opts,
+                                  const rast_shade_opts *shade);
+int rastpy_gil_held(void);
+long rastpy_fill_polygon_gouraud(const rast_target *target, const double *xy,
+                                 uint32_t npoints, const uint32_t *ring_sizes,
+                                 uint32_t nrings, const rast_fill_opts *opts,
+                                 const uint8_t *colors, const rast_shade_opts *shade);
+/* cdef-end */
+
+#endif

@@ -1,0 +1,567 @@
+"""GIS rasterisation: :func:`rasterize`, with rasterio's semantics.
+
+Shapes (shapely geometries, ``__geo_interface__`` objects, GeoJSON-like
+mappings, GeoSeries and GeoDataFrames) are burnt into a 2-D array through
+an affine geo transform.  Polygons follow the library's exact rule (pixel
+centres, spans left closed and right open, rows top closed and bottom
+open) evaluated on the float64 pixel coordinates that the inverse
+transform gives; lines and points burn what GDAL burns for them.  See
+docs/gis.md.
+"""
+
+from __future__ import annotations
+
+import math
+import numbers
+from typing import Any, Callable, Iterable, Optional, Sequence, Tuple, Union
+
+import numpy as np
+
+from . import _core
+from ._core import InputError
+from . import _burn
+
+__all__ = ["rasterize", "IDENTITY", "DTYPES"]
+
+#: The identity transform in Affine order (a, b, c, d, e, f):
+#: x = a*col + b*row + c, y = d*col + e*row + f.
+IDENTITY: Tuple[float, ...] = (1.0, 0.0, 0.0, 0.0, 1.0, 0.0)
+
+#: The dtypes rasterize burns into.
+DTYPES = ("uint8", "int8", "uint16", "int16", "uint32", "int32", "int64", "float32", "float64")
+
+_KIND_POLYGON, _KIND_LINE, _KIND_POINT = 0, 1, 2
+
+Transform = Union[Sequence[float], Any]
+ShapeItem = Union[Any, Tuple[Any, Union[int, float, None]]]
+
+
+# ---- transform -------------------------------------------------------------------
+
+def _transform6(transform) -> Tuple[float, ...]:
+    """(a, b, c, d, e, f) as floats from an affine.Affine or a 6-sequence,
+    or InputError."""
+    try:
+        values = list(transform)
+    except TypeError:
+        raise InputError("transform must be an affine.Affine or 6 numbers (a, b, c, d, e, f) in Affine "
+                         "order, not %r (a GDAL geotransform: affine.Affine.from_gdal(*gt))"
+                         % (transform,)) from None
+    if len(values) == 9:
+        if [float(v) if isinstance(v, numbers.Real) else v for v in values[6:]] != [0.0, 0.0, 1.0]:
+            raise InputError("transform: the last row of a 3x3 affine matrix must be (0, 0, 1), not %r"
+                             % (tuple(values[6:]),))
+        values = values[:6]
+    if len(values) != 6:
+        raise InputError("transform must be 6 numbers (a, b, c, d, e, f) in Affine order, not %d "
+                         "(a GDAL geotransform: affine.Affine.from_gdal(*gt))" % len(values))
+    out = []
+    for v in values:
+        if isinstance(v, (bool, np.bool_)) or not isinstance(v, numbers.Real):
+            raise InputError("transform: %r is not a real number" % (v,))
+        v = float(v)
+        if not math.isfinite(v):
+            raise InputError("transform: %r is not finite" % (v,))
+        out.append(v)
+    return tuple(out)
+
+
+def _inverse(t6):
+    """GDAL's inverse geotransform (GDALInvGeoTransform) of Affine (a..f),
+    as (c0, cx, cy, r0, rx, ry): col = c0 + x*cx + y*cy, row = r0 + x*rx +
+    y*ry, each evaluated left to right in float64."""
+    a, b, c, d, e, f = t6
+    if b == 0.0 and d == 0.0 and a != 0.0 and e != 0.0:  # north-up: no determinant
+        return (-c / a, 1.0 / a, 0.0, -f / e, 0.0, 1.0 / e)
+    det = a * e - b * d
+    mag = max(abs(a), abs(b), abs(d), abs(e))
+    if not abs(det) > 1e-10 * mag * mag:
+        raise InputError("transform %r is not invertible (determinant %r)" % (t6, det))
+    inv = 1.0 / det
+    out = (
+        (b * f - c * e) * inv, e * inv, -b * inv,
+        (-a * f + c * d) * inv, -d * inv, a * inv,
+    )
+    if not all(math.isfinite(v) for v in out):
+        raise InputError("transform %r: its inverse is not finite" % (t6,))
+    return out
+
+
+def pixel_coordinates(xy: np.ndarray, transform: Transform = IDENTITY) -> np.ndarray:
+    """World (x, y) -> float64 pixel (col, row), as rasterize computes them
+    (GDAL's inverse geotransform, applied in float64).  These are the
+    coordinates on which rasterize's polygons are exact."""
+    inv = _inverse(_transform6(transform))
+    xy = np.asarray(xy, np.float64)
+    out = np.empty(xy.shape, np.float64)
+    x, y = xy[..., 0], xy[..., 1]
+    out[..., 0] = inv[0] + x * inv[1] + y * inv[2]
+    out[..., 1] = inv[3] + x * inv[4] + y * inv[5]
+    return out
+
+
+# ---- values and dtypes ------------------------------------------------------------
+
+def _dtype(dtype, what):
+    try:
+        dt = np.dtype(dtype)
+    except TypeError:
+        raise InputError("%s %r is not a numpy dtype; choose one of: %s" % (what, dtype, ", ".join(DTYPES))) from None
+    if dt.name not in DTYPES or not dt.isnative:
+        raise InputError("%s %s is not supported; choose one of: %s" % (what, dt, ", ".join(DTYPES)))
+    return dt
+
+
+def _real(v, what):
+    if isinstance(v, (bool, np.bool_)) or not isinstance(v, (numbers.Real, np.integer, np.floating)):
+        raise InputError("%s %r is not a real number (int or float)" % (what, v))
+    return v
+
+
+def _fits(v, dt, what):
+    """`v` as the Python number burnt into dtype `dt`, or InputError."""
+    if dt.kind == "f":
+        v = float(v)
+        if math.isfinite(v) and dt.itemsize == 4 and abs(v) > float(np.finfo(np.float32).max):
+            raise InputError("%s %r does not fit dtype float32" % (what, v))
+        return v
+    if isinstance(v, (float, np.floating)):
+        if not math.isfinite(v) or v != math.floor(v):
+            raise InputError("%s %r does not fit dtype %s (not a whole number)" % (what, v, dt))
+    v = int(v)
+    info = np.iinfo(dt)
+    if not info.min <= v <= info.max:
+        raise InputError("%s %r does not fit dtype %s (%d..%d)" % (what, v, dt, info.min, info.max))
+    return v
+
+
+# ---- shapes -> flat arrays -------------------------------------------------------------
+
+class _Flat:
+    """Parts in burning order: a part is one Polygon (rings), one
+    LineString or one Point.  xy holds every position; ring_sizes the
+    positions of each ring (a line is one ring, a point a ring of one);
+    part_rings the rings of each part; kind, feature (index in `shapes`)
+    and value per part."""
+
+    def __init__(self):
+        self.xy = []
+        self.ring_sizes = []
+        self.part_rings = []
+        self.kind = []
+        self.feature = []
+
+
+def _position_list(coords, what, need):
+    """A ring or line's positions as an (N, 2) float64 array (a z is
+    dropped), N >= need, or InputError."""
+    try:
+        a = np.asarray(coords, dtype=np.float64)
+    except (TypeError, ValueError):
+        raise InputError("%s: positions must be pairs of numbers" % what) from None
+    if a.ndim != 2 or a.shape[1] not in (2, 3):
+        if a.size == 0:
+            raise InputError("%s is empty" % what)
+        raise InputError("%s: positions must be (x, y) or (x, y, z), not shape %s" % (what, a.shape))
+    if len(a) < need:
+        raise InputError("%s has %d position(s); at least %d needed" % (what, len(a), need))
+    return a[:, :2]
+
+
+def _type_name(t):
+    return t if isinstance(t, str) else repr(t)
+
+
+def _add_geometry(flat, geom, index, depth=0):
+    what = "shapes: feature %d" % index
+    if hasattr(geom, "__geo_interface__"):
+        geom = geom.__geo_interface__
+    if not hasattr(geom, "get"):
+        raise InputError("%s: %r is not a geometry (no __geo_interface__, not a GeoJSON mapping)"
+                         % (what, type(geom).__name__))
+    gtype = geom.get("type")
+    if gtype == "Feature" and depth == 0:
+        return _add_geometry(flat, geom.get("geometry"), index, depth + 1)
+    if gtype == "GeometryCollection":
+        members = geom.get("geometries")
+        if members is None:
+            raise InputError("%s: GeometryCollection without 'geometries'" % what)
+        members = list(members)
+        if not members:
+            raise InputError("%s: empty GeometryCollection" % what)
+        for g in members:
+            _add_geometry(flat, g, index, depth + 1)
+        return
+    if gtype not in ("Polygon", "MultiPolygon", "LineString", "MultiLineString", "LinearRing",
+                     "Point", "MultiPoint"):
+        raise InputError("%s: unknown geometry type %s; rasterize burns Polygon, MultiPolygon, "
+                         "LineString, MultiLineString, Point, MultiPoint and GeometryCollection"
+                         % (what, _type_name(gtype)))
+    coords = geom.get("coordinates")
+    if coords is None:
+        raise InputError("%s: %s without 'coordinates'" % (what, gtype))
+    try:
+        coords = list(coords)
+    except TypeError:
+        raise InputError("%s: %s coordinates %r are not a sequence" % (what, gtype, coords)) from None
+    if not coords:
+        raise InputError("%s: empty %s" % (what, gtype))
+    if gtype in ("Polygon", "MultiPolygon"):
+        polys = [coords] if gtype == "Polygon" else coords
+        for p, rings in enumerate(polys):
+            try:
+                rings = list(rings)
+            except TypeError:
+                raise InputError("%s: %s part %d is not a list of rings" % (what, gtype, p)) from None
+            if not rings:
+                raise InputError("%s: empty Polygon (%s part %d)" % (what, gtype, p))
+            sizes = []
+            for r, ring in enumerate(rings):
+                a = _position_list(ring, "%s: %s%s ring %d" % (what, gtype, "" if gtype == "Polygon" else " part %d," % p, r), 3)
+                flat.xy.append(a)
+                sizes.append(len(a))
+            flat.ring_sizes += sizes
+            flat.part_rings.append(len(sizes))
+            flat.kind.append(_KIND_POLYGON)
+            flat.feature.append(index)
+    elif gtype in ("LineString", "MultiLineString", "LinearRing"):
+        lines = coords if gtype == "MultiLineString" else [coords]
+        for p, line in enumerate(lines):
+            a = _position_list(line, "%s: %s%s" % (what, gtype, " part %d" % p if gtype == "MultiLineString" else ""), 2)
+            flat.xy.append(a)
+            flat.ring_sizes.append(len(a))
+            flat.part_rings.append(1)
+            flat.kind.append(_KIND_LINE)
+            flat.feature.append(index)
+    else:
+        points = [coords] if gtype == "Point" else coords
+        a = _position_list(points, "%s: %s" % (what, gtype), 1)
+        for k in range(len(a)):
+            flat.xy.append(a[k:k + 1])
+            flat.ring_sizes.append(1)
+            flat.part_rings.append(1)
+            flat.kind.append(_KIND_POINT)
+            flat.feature.append(index)
+
+
+def _shapely_parts(geoms, index0=0):
+    """The flat arrays of an array of shapely geometries, vectorised
+    (shapely 2), or None when shapely is not there."""
+    try:
+        import shapely
+    except ImportError:
+        return None
+    types = shapely.get_type_id(geoms)
+    if (types < 0).any():  # None
+        k = int(np.flatnonzero(types < 0)[0])
+        raise InputError("shapes: feature %d is None, not a geometry" % (k + index0))
+    empty = shapely.is_empty(geoms)
+    parts, pidx = geoms, np.arange(len(geoms))
+    for _ in range(64):
+        t = shapely.get_type_id(parts)
+        if not (t >= 4).any():
+            break
+        parts, sub = shapely.get_parts(parts, return_index=True)
+        pidx = pidx[sub]
+    empty_parts = shapely.is_empty(parts)
+    bad = empty.copy()
+    bad[pidx[empty_parts]] = True
+    if bad.any():
+        k = int(np.flatnonzero(bad)[0])
+        raise InputError("shapes: feature %d: empty %s" % (k + index0, shapely.get_type_id(geoms[k]) and geoms[k].geom_type))
+    t = shapely.get_type_id(parts)
+    unknown = ~np.isin(t, (0, 1, 2, 3))
+    if unknown.any():
+        k = int(np.flatnonzero(unknown)[0])
+        raise InputError("shapes: feature %d: unknown geometry type %s" % (pidx[k] + index0, parts[k].geom_type))
+    kind = np.where(t == 3, _KIND_POLYGON, np.where(t == 0, _KIND_POINT, _KIND_LINE))
+    # Rings of each part, in part order: a polygon's rings, a line or point itself.
+    poly = np.flatnonzero(t == 3)
+    rings, ridx = shapely.get_rings(parts[poly], return_index=True)
+    other = np.flatnonzero(t != 3)
+    ring_part = np.concatenate([poly[ridx], other])
+    order = np.argsort(ring_part, kind="stable")
+    ring_geoms = np.concatenate([rings, parts[other]])[order]
+    ring_part = ring_part[order]
+    xy, cidx = shapely.get_coordinates(ring_geoms, return_index=True)
+    ring_sizes = np.bincount(cidx, minlength=len(ring_geoms))
+    part_rings = np.bincount(ring_part, minlength=len(parts))
+    return xy, ring_sizes, part_rings, kind, pidx + index0
+
+
+def _is_shapely(g):
+    mod = type(g).__module__
+    return mod.startswith("shapely.")
+
+
+def _flatten(items, index0=0):
+    """(xy, ring_sizes, part_rings, kind, feature) of a list of geometries."""
+    if items and all(_is_shapely(g) for g in items):
+        got = _shapely_parts(np.asarray(items, dtype=object), index0)
+        if got is not None:
+            return got
+    flat = _Flat()
+    for k, g in enumerate(items):
+        if g is None:
+            raise InputError("shapes: feature %d is None, not a geometry" % (k + index0))
+        _add_geometry(flat, g, k + index0)
+    xy = np.concatenate(flat.xy) if flat.xy else np.zeros((0, 2))
+    return (xy, np.asarray(flat.ring_sizes, np.int64), np.asarray(flat.part_rings, np.int64),
+            np.asarray(flat.kind, np.int8), np.asarray(flat.feature, np.int64))
+
+
+def _split_shapes(shapes, default_value, fill, values):
+    """([geometries], [values]) from the shapes argument."""
+    if hasattr(shapes, "geometry") and hasattr(shapes, "columns"):  # GeoDataFrame
+        geoms = list(np.asarray(shapes.geometry.values, dtype=object))
+        if isinstance(values, str):
+            if values not in shapes.columns:
+                raise InputError("values=%r is not a column of the GeoDataFrame; columns: %s"
+                                 % (values, ", ".join(map(str, shapes.columns))))
+            values = list(shapes[values].tolist())
+    elif type(shapes).__name__ == "GeoSeries":
+        geoms = list(np.asarray(shapes.values, dtype=object))
+    else:
+        if isinstance(shapes, (str, bytes)) or hasattr(shapes, "__geo_interface__") or isinstance(shapes, dict):
+            raise InputError("shapes must be an iterable of geometries or (geometry, value) pairs, "
+                             "not one geometry; wrap it in a list")
+        try:
+            items = list(shapes)
+        except TypeError:
+            raise InputError("shapes must be an iterable of geometries or (geometry, value) pairs, "
+                             "not %r" % type(shapes).__name__) from None
+        geoms, vals = [], []
+        for item in items:
+            if isinstance(item, (tuple, list)):
+                if len(item) != 2:
+                    raise InputError("shapes: feature %d is a sequence of %d items, not a (geometry, value) pair"
+                                     % (len(geoms), len(item)))
+                g, v = item
+                geoms.append(g)
+                vals.append(fill if v is None else v)
+            else:
+                geoms.append(item)
+                vals.append(default_value)
+        if values is None:
+            return geoms, vals
+    if values is None:
+        return geoms, [default_value] * len(geoms)
+    if isinstance(values, str):
+        raise InputError("values=%r: a column name needs a GeoDataFrame" % (values,))
+    values = list(values)
+    if len(values) != len(geoms):
+        raise InputError("values: %d values for %d shapes" % (len(values), len(geoms)))
+    return geoms, [fill if v is None else v for v in values]
+
+
+def _merge_name(merge_alg):
+    name = merge_alg
+    if not isinstance(name, str):
+        name = getattr(merge_alg, "name", None)  # rasterio.enums.MergeAlg
+    if isinstance(name, str) and name.lower() in ("replace", "add"):
+        return name.lower()
+    raise InputError("unknown merge_alg %r; choose one of: add, replace (or rasterio's MergeAlg members)"
+                     % (merge_alg,))
+
+
+def _out_array(out, out_shape, dtype, fill, values):
+    """(array to burn into, whether it is new); checks only, writes nothing."""
+    if out is not None:
+        if not isinstance(out, np.ndarray):
+            raise InputError("out must be a numpy array, not %s" % type(out).__name__)
+        if out.ndim != 2:
+            raise InputError("out must be 2-D (rows, columns), not %d-D" % out.ndim)
+        _dtype(out.dtype, "out: dtype")
+        if dtype is not None and _dtype(dtype, "dtype") != out.dtype:
+            raise InputError("dtype %s differs from out's dtype %s" % (np.dtype(dtype), out.dtype))
+        if not out.flags.writeable:
+            raise InputError("out is read-only")
+        if out_shape is not None and tuple(out_shape) != out.shape:
+            raise InputError("out_shape %r differs from out's shape %r" % (tuple(out_shape), out.shape))
+        if 0 in out.shape:
+            raise InputError("out: width and height must be > 0, not shape %r" % (out.shape,))
+        return out, False
+    if out_shape is None:
+        raise InputError("either out_shape or out must be given")
+    try:
+        n = len(out_shape)
+    except TypeError:
+        n = None
+    if n != 2:
+        raise InputError("Invalid out_shape %r: must be 2-D (height, width)" % (out_shape,))
+    h, w = _core.int_pair(out_shape, "Invalid out_shape %r: must be 2-D (height, width)",
+                          "out_shape must hold two ints, not %r")
+    if h <= 0 or w <= 0 or h > _core.lib.RAST_MAX_DIM or w > _core.lib.RAST_MAX_DIM:
+        raise InputError("out_shape %r: width and height must be > 0 and at most %d"
+                         % (out_shape, _core.lib.RAST_MAX_DIM))
+    if dtype is None:
+        floats = any(isinstance(v, (float, np.floating)) for v in values)
+        dt = np.dtype(np.float64 if floats else np.int64)
+    else:
+        dt = _dtype(dtype, "dtype")
+    return (h, w, dt), True
+
+
+class _Progress:
+    """progress= as a callable(done, total): True (tqdm), a callable, or None."""
+
+    def __init__(self, progress, total):
+        self.bar = None
+        self.fn = None
+        self.total = total
+        self.done = 0
+        if progress is None or progress is False:
+            return
+        if progress is True:
+            try:
+                import tqdm
+            except ImportError:
+                raise InputError("progress=True needs tqdm (pip install 'rastrum[gis]'), "
+                                 "or pass a callable(done, total)") from None
+            self.bar = tqdm.tqdm(total=total, unit="shape", desc="rasterize")
+        elif callable(progress):
+            self.fn = progress
+        else:
+            raise InputError("progress must be True, False, None or a callable(done, total), not %r" % (progress,))
+
+    def __call__(self, done):
+        if self.bar is not None:
+            self.bar.update(done - self.done)
+        elif self.fn is not None:
+            self.fn(done, self.total)
+        self.done = done
+
+    def close(self):
+        if self.bar is not None:
+            self.bar.close()
+
+
+def rasterize(
+    shapes: Iterable[ShapeItem],
+    out_shape: Optional[Tuple[int, int]] = None,
+    fill: Union[int, float] = 0,
+    out: Optional[np.ndarray] = None,
+    transform: Transform = IDENTITY,
+    all_touched: bool = False,
+    merge_alg: Any = "replace",
+    default_value: Union[int, float] = 1,
+    dtype: Any = None,
+    *,
+    rule: str = "evenodd",
+    values: Union[str, Sequence[Union[int, float, None]], None] = None,
+    progress: Union[bool, Callable[[int, int], Any], None] = None,
+) -> np.ndarray:
+    """Burn shapes into a 2-D array, as ``rasterio.features.rasterize``.
+
+    Parameters
+    ----------
+    shapes : iterable of geometries or of (geometry, value) pairs, a GeoSeries or a GeoDataFrame
+        A geometry is a shapely geometry, anything with ``__geo_interface__``,
+        or a GeoJSON-like mapping (a Feature's geometry is used): Polygon,
+        MultiPolygon, LineString, MultiLineString, Point, MultiPoint,
+        GeometryCollection.  A value of None burns `fill`.  Burnt in order;
+        the parts of a multi-geometry or collection are burnt one by one,
+        as rasterio does (so "add" adds overlapping parts twice).
+    out_shape : (int, int)
+        (height, width) of a new array; not needed with `out`.
+    fill : number
+        The background of a new array (`out` keeps its pixels).
+    out : numpy.ndarray, optional
+        A 2-D array to burn into, in place, and return.
+    transform : affine.Affine or 6 numbers (a, b, c, d, e, f)
+        Pixel (col, row) to world: x = a*col + b*row + c, y = d*col + e*row
+        + f (Affine order; a GDAL geotransform gt is
+        ``affine.Affine.from_gdal(*gt)``).  Any invertible affine: rotation,
+        shear, flipped axes.  World coordinates are taken to pixels with
+        GDAL's inverse geotransform in float64 (:func:`pixel_coordinates`).
+    all_touched : bool
+        False: a polygon burns the pixels whose centre is inside it, under
+        the library's exact rule; True: also every pixel whose open square
+        an edge meets (the conservative boundary mode); lines likewise burn
+        every pixel they pass through.
+    merge_alg : "replace" or "add" (or rasterio's MergeAlg members)
+        "add" adds each value, saturating at the dtype's limits (integers)
+        or rounding the float64 sum to the dtype (floats), as GDAL does.
+    default_value : number
+        The value of geometries given without one.
+    dtype : one of DTYPES
+        uint8, int8, uint16, int16, uint32, int32, int64, float32, float64;
+        by default out's, else int64 for integer values and float64 if any
+        value is a float (as rasterio).
+    rule : {"evenodd", "nonzero"}
+        Polygon fill rule (GDAL's is even-odd).
+    values : str or sequence, optional
+        Values per shape: a column name of a GeoDataFrame, or a sequence.
+    progress : bool or callable(done, total), optional
+        True shows a tqdm bar (needs tqdm); a callable is called as
+        batches of shapes are burnt.
+
+    Returns
+    -------
+    numpy.ndarray (H, W): `out`, or a new array.
+
+    Raises
+    ------
+    InputError (a ValueError)
+        Naming the feature index and the problem: an unknown or empty
+        geometry, too few positions, NaN or infinite coordinates, a
+        coordinate outside the range, a value that does not fit the dtype;
+        or a bad out_shape, out, dtype, transform, merge_alg or rule.
+        Nothing is written to `out` then.
+
+    Examples
+    --------
+    >>> import rastrum
+    >>> square = {"type": "Polygon", "coordinates": [[(1, 1), (4, 1), (4, 3), (1, 3), (1, 1)]]}
+    >>> rastrum.rasterize([(square, 7)], out_shape=(4, 5), dtype="uint8")
+    array([[0, 0, 0, 0, 0],
+           [0, 7, 7, 7, 0],
+           [0, 7, 7, 7, 0],
+           [0, 0, 0, 0, 0]], dtype=uint8)
+    """
+    merge = _merge_name(merge_alg)
+    _core._name(rule, "fill rule", _core.RULES)
+    if not isinstance(all_touched, (bool, np.bool_)):
+        raise InputError("all_touched must be True or False, not %r" % (all_touched,))
+    inv = _inverse(_transform6(transform))
+    geoms, vals = _split_shapes(shapes, default_value, fill, values)
+    for k, v in enumerate(vals):
+        _real(v, "shapes: feature %d: value" % k)
+    _real(fill, "fill")
+    target, new = _out_array(out, out_shape, dtype, fill, vals)
+    dt = target.dtype if not new else target[2]
+    fill_v = _fits(fill, dt, "fill")
+    vals = [_fits(v, dt, "shapes: feature %d: value" % k) for k, v in enumerate(vals)]
+    xy, ring_sizes, part_rings, kind, feature = _flatten(geoms)
+    if len(xy):
+        px = np.empty_like(xy)
+        x, y = xy[:, 0], xy[:, 1]
+        px[:, 0] = inv[0] + x * inv[1] + y * inv[2]
+        px[:, 1] = inv[3] + x * inv[4] + y * inv[5]
+        bad = ~(np.isfinite(px).all(axis=1) & (np.abs(px) <= _burn.COORD_LIMIT).all(axis=1))
+        if bad.any():
+            _coordinate_error(xy, px, int(np.flatnonzero(bad)[0]), ring_sizes, part_rings, feature)
+    else:
+        px = xy
+    if new:
+        h, w, dt = target
+        target = np.full((h, w), fill_v, dt)
+    part_values = [vals[f] for f in feature.tolist()]
+    bar = _Progress(progress, len(geoms))
+    try:
+        _burn.burn(target, px, ring_sizes, part_rings, kind, part_values, feature, merge,
+                   bool(all_touched), rule, bar)
+    finally:
+        bar.close()
+    return target
+
+
+def _coordinate_error(xy, px, k, ring_sizes, part_rings, feature):
+    ring = int(np.searchsorted(np.cumsum(ring_sizes), k, side="right"))
+    part = int(np.searchsorted(np.cumsum(part_rings), ring, side="right"))
+    x, y = xy[k].tolist()
+    what = "shapes: feature %d: position (%r, %r)" % (feature[part], x, y)
+    if not (math.isfinite(x) and math.isfinite(y)):
+        raise InputError("%s is %s, not a finite number" % (what, "NaN" if math.isnan(x) or math.isnan(y) else "infinite"))
+    raise InputError("%s is at pixel (%r, %r), outside the range +-%r pixels"
+                     % (what, px[k, 0], px[k, 1], _burn.COORD_LIMIT))

@@ -47,6 +47,13 @@ typedef struct rastpy_burn {
         T *p = (T *)(void *)row, v = rastpy_value_##NAME(b, k);                              \
         int32_t x;                                                                           \
         for (x = x0; x < x1; x++) p[x] = RASTPY_ADD_##NAME(p[x], v);                         \
+    }                                                                                        \
+    static void rastpy_addsat_##NAME(const rastpy_burn *b, unsigned char *row, uint32_t k,   \
+                                     int32_t x0, int32_t x1)                                 \
+    {                                                                                        \
+        T *p = (T *)(void *)row, v = rastpy_value_##NAME(b, k);                              \
+        int32_t x;                                                                           \
+        for (x = x0; x < x1; x++) p[x] = RASTPY_SAT_##NAME(p[x], v);                         \
     }
 
 /* Integer adds wrap (through the unsigned type of the same width, where
@@ -62,6 +69,24 @@ typedef struct rastpy_burn {
 #define RASTPY_ADD_f32(a, b) (float)((a) + (b))
 #define RASTPY_ADD_f64(a, b) ((a) + (b))
 
+/* Saturating adds (RASTPY_MERGE_ADD_SAT): the exact sum clamped to the
+ * type's range; types narrower than 64 bits sum in int64_t, the 64-bit
+ * ones compare with the room left first. */
+#define RASTPY_CLAMP(s, lo, hi) ((s) < (lo) ? (lo) : (s) > (hi) ? (hi) : (s))
+#define RASTPY_SAT_u8(a, b) (uint8_t)RASTPY_CLAMP((int64_t)(a) + (int64_t)(b), 0, 255)
+#define RASTPY_SAT_i8(a, b) (int8_t)RASTPY_CLAMP((int64_t)(a) + (int64_t)(b), -128, 127)
+#define RASTPY_SAT_u16(a, b) (uint16_t)RASTPY_CLAMP((int64_t)(a) + (int64_t)(b), 0, 65535)
+#define RASTPY_SAT_i16(a, b) (int16_t)RASTPY_CLAMP((int64_t)(a) + (int64_t)(b), -32768, 32767)
+#define RASTPY_SAT_u32(a, b) (uint32_t)RASTPY_CLAMP((int64_t)(a) + (int64_t)(b), 0, (int64_t)UINT32_MAX)
+#define RASTPY_SAT_i32(a, b) (int32_t)RASTPY_CLAMP((int64_t)(a) + (int64_t)(b), INT32_MIN, INT32_MAX)
+#define RASTPY_SAT_i64(a, b)                                             \
+    ((b) > 0 && (a) > INT64_MAX - (b)   ? INT64_MAX                      \
+     : (b) < 0 && (a) < INT64_MIN - (b) ? INT64_MIN                      \
+                                        : (a) + (b))
+#define RASTPY_SAT_u64(a, b) ((uint64_t)((a) + (b)) < (a) ? UINT64_MAX : (uint64_t)((a) + (b)))
+#define RASTPY_SAT_f32(a, b) (float)((a) + (b))
+#define RASTPY_SAT_f64(a, b) ((a) + (b))
+
 RASTPY_PUTS(u8, uint8_t)
 RASTPY_PUTS(i8, int8_t)
 RASTPY_PUTS(u16, uint16_t)
@@ -76,12 +101,11 @@ RASTPY_PUTS(f64, double)
 typedef void (*rastpy_put_fn)(const rastpy_burn *, unsigned char *, uint32_t, int32_t, int32_t);
 
 /* Indexed by RASTPY_DT_* - 1, then by merge rule. */
-static const rastpy_put_fn rastpy_puts[10][2] = {
-    {rastpy_replace_u8, rastpy_add_u8},   {rastpy_replace_i8, rastpy_add_i8},
-    {rastpy_replace_u16, rastpy_add_u16}, {rastpy_replace_i16, rastpy_add_i16},
-    {rastpy_replace_u32, rastpy_add_u32}, {rastpy_replace_i32, rastpy_add_i32},
-    {rastpy_replace_i64, rastpy_add_i64}, {rastpy_replace_u64, rastpy_add_u64},
-    {rastpy_replace_f32, rastpy_add_f32}, {rastpy_replace_f64, rastpy_add_f64},
+#define RASTPY_PUT_ROW(NAME) {rastpy_replace_##NAME, rastpy_add_##NAME, rastpy_addsat_##NAME}
+static const rastpy_put_fn rastpy_puts[10][3] = {
+    RASTPY_PUT_ROW(u8),  RASTPY_PUT_ROW(i8),  RASTPY_PUT_ROW(u16), RASTPY_PUT_ROW(i16),
+    RASTPY_PUT_ROW(u32), RASTPY_PUT_ROW(i32), RASTPY_PUT_ROW(i64), RASTPY_PUT_ROW(u64),
+    RASTPY_PUT_ROW(f32), RASTPY_PUT_ROW(f64),
 };
 
 static void rastpy_burn_span(void *user, uint32_t k, int32_t y, int32_t x0, int32_t x1)
@@ -106,8 +130,8 @@ long rastpy_burn_polygons(void *out, int32_t height, int32_t width, int64_t row_
     long bad;
     rast_status st;
 
-    if (dtype < RASTPY_DT_U8 || dtype > RASTPY_DT_F64 || (merge != RASTPY_MERGE_REPLACE &&
-                                                          merge != RASTPY_MERGE_ADD))
+    if (dtype < RASTPY_DT_U8 || dtype > RASTPY_DT_F64 || merge < RASTPY_MERGE_REPLACE ||
+        merge > RASTPY_MERGE_ADD_SAT)
         return RAST_E_ARG;
     if (height < 0 || width < 0) return RAST_E_SIZE;
     polys = (rast_polygon *)malloc((size_t)npolys * sizeof *polys + 1);

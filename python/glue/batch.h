@@ -20,6 +20,9 @@
  * wrap modulo 2^bits, as numpy's in-place add; floats add in IEEE). */
 #define RASTPY_MERGE_REPLACE 0
 #define RASTPY_MERGE_ADD 1
+/* Add as GDAL's rasterizer adds (rastrum.rasterize): integers saturate at
+ * their type's limits instead of wrapping; floats as RASTPY_MERGE_ADD. */
+#define RASTPY_MERGE_ADD_SAT 2
 
 /* cdef-begin */
 long rastpy_burn_polygons(void *out, int32_t height, int32_t width, int64_t row_stride,

@@ -28,8 +28,15 @@ import numpy as np
 from . import _core
 from ._native import ffi, lib
 
-#: Largest |pixel coordinate| rasterize accepts.
-COORD_LIMIT = float(2 ** 26)
+#: Largest |pixel coordinate| rasterize accepts: S = 0 still holds it.
+COORD_LIMIT = float(lib.RAST_COORD_MAX - 1)
+
+_MERGES = {"replace": lib.RASTPY_MERGE_REPLACE, "add": lib.RASTPY_MERGE_ADD_SAT}
+_DTYPES = {
+    "uint8": lib.RASTPY_DT_U8, "int8": lib.RASTPY_DT_I8, "uint16": lib.RASTPY_DT_U16,
+    "int16": lib.RASTPY_DT_I16, "uint32": lib.RASTPY_DT_U32, "int32": lib.RASTPY_DT_I32,
+    "int64": lib.RASTPY_DT_I64, "float32": lib.RASTPY_DT_F32, "float64": lib.RASTPY_DT_F64,
+}
 
 _KIND_POLYGON, _KIND_LINE, _KIND_POINT = 0, 1, 2
 
@@ -37,10 +44,11 @@ _KIND_POLYGON, _KIND_LINE, _KIND_POINT = 0, 1, 2
 # ---- merging ------------------------------------------------------------------------
 
 def _add(cur, v, dt):
-    """cur + v in dtype dt as GDAL adds: saturating integers (exact here),
-    floats summed in float64 and rounded to dt."""
+    """cur + v in dtype dt, as the glue's RASTPY_MERGE_ADD_SAT: integers
+    saturate at the dtype's limits (exactly), floats add in the dtype (v
+    rounded to it first)."""
     if dt.kind == "f":
-        return (cur.astype(np.float64) + v).astype(dt)
+        return cur + dt.type(v)
     info = np.iinfo(dt)
     if dt.itemsize < 8:
         return np.clip(cur.astype(np.int64) + v, info.min, info.max).astype(dt)
@@ -124,36 +132,46 @@ def point_pixels(px, h, w):
 
 # ---- polygons --------------------------------------------------------------------------------
 
-def _polygons_fallback(target, px, ring_sizes, part_rings, values, merge, boundary, rule):
-    """Polygon parts one by one through polygon_mask (the engine until the
-    batched C call is there)."""
+def _subpixel_bits(px):
+    """The largest S <= 16 at which every vertex snaps in range
+    (|v| * 2**S <= RAST_COORD_MAX - 1)."""
+    m = float(np.abs(px).max()) if len(px) else 0.0
+    limit = float(lib.RAST_COORD_MAX - 1)
+    s = lib.RAST_MAX_SUBPIXEL_BITS
+    while s > 0 and m * 2.0 ** s > limit:
+        s -= 1
+    return s
+
+
+def _polygons(target, px, ring_sizes, part_rings, values, merge, boundary, rule):
+    """Polygon parts through rastpy_burn_polygons in one C call."""
+    s = _subpixel_bits(px)
+    opts = _core.fill_opts("aet", rule, s, 0.5, "exact", boundary)
     h, w = target.shape
-    rs = np.cumsum(np.concatenate([[0], ring_sizes]))
-    ring = 0
-    for p, nr in enumerate(part_rings.tolist()):
-        lo, hi = rs[ring], rs[ring + nr]
-        pts = px[lo:hi]
-        sizes = ring_sizes[ring:ring + nr]
-        ring += nr
-        mn = np.floor(pts.min(axis=0)).astype(np.int64) - 1
-        mx = np.ceil(pts.max(axis=0)).astype(np.int64) + 2
-        x0, y0 = max(int(mn[0]), 0), max(int(mn[1]), 0)
-        x1, y1 = min(int(mx[0]), w), min(int(mx[1]), h)
-        if x0 >= x1 or y0 >= y1:
-            continue
-        rel = pts - np.array([x0, y0], np.float64)
-        ext = float(np.abs(rel).max()) + 1.0
-        s = 16
-        while s > 0 and ext * (1 << s) >= lib.RAST_COORD_MAX:
-            s -= 1
-        rings = np.split(rel, np.cumsum(sizes)[:-1])
-        m = _core.mask_polygon((y1 - y0, x1 - x0), rings,
-                               _core.fill_opts("aet", rule, s, 0.5, "exact", boundary), s)
-        _burn_mask(target[y0:y1, x0:x1], m, values[p], merge)
+    xy = np.ascontiguousarray(px)
+    sizes = np.ascontiguousarray(ring_sizes, np.uint32)
+    prings = np.ascontiguousarray(part_rings, np.uint32)
+    v = np.ascontiguousarray(values, dtype=target.dtype)
+    failed = ffi.new("uint32_t *")
+    result = lib.rastpy_burn_polygons(
+        ffi.cast("void *", target.__array_interface__["data"][0]), h, w,
+        target.strides[0], 0, _DTYPES[target.dtype.name], _MERGES[merge], ffi.from_buffer(v),
+        ffi.from_buffer("double[]", xy), len(xy), ffi.from_buffer("uint32_t[]", sizes), len(sizes),
+        ffi.from_buffer("uint32_t[]", prings), len(prings), opts, failed)
+    if result == lib.RASTPY_E_NOMEM:
+        raise MemoryError("rastrum: no memory for a batch of %d polygons" % len(prings))
+    if result > 0:  # checked before: cannot happen
+        raise _core.RastrumError("rastrum: point %d of a checked batch refused" % (result - 1))
+    _core._check(result)
 
 
 def burn(target, px, ring_sizes, part_rings, kind, values, feature, merge, all_touched, rule, progress):
     """Burn every part in order (see the module's docstring)."""
+    if not (target.flags.aligned and target.strides[1] == target.itemsize and target.strides[0] > 0):
+        work = np.ascontiguousarray(target)  # a transposed or reversed view: burn a copy
+        burn(work, px, ring_sizes, part_rings, kind, values, feature, merge, all_touched, rule, progress)
+        target[...] = work
+        return
     h, w = target.shape
     n = len(part_rings)
     ring_start = np.concatenate([[0], np.cumsum(part_rings)])
@@ -162,7 +180,7 @@ def burn(target, px, ring_sizes, part_rings, kind, values, feature, merge, all_t
     # Lines under all_touched are zero-area polygons: there and back.
     polyish = (kind == _KIND_POLYGON) | ((kind == _KIND_LINE) & all_touched)
     p = 0
-    chunk = max(256, n // 100)
+    chunk = max(1024, n // 50) if progress.active else n
     while p < n:
         q = p
         if polyish[p]:
@@ -174,7 +192,7 @@ def burn(target, px, ring_sizes, part_rings, kind, values, feature, merge, all_t
             sub_rings = part_rings[p:q]
             if all_touched and (kind[p:q] == _KIND_LINE).any():
                 sub_px, sub_sizes = _there_and_back(sub_px, sub_sizes, kind[p:q], sub_rings)
-            _polygons_fallback(target, sub_px, sub_sizes, sub_rings, values[p:q], merge, boundary, rule)
+            _polygons(target, sub_px, sub_sizes, sub_rings, values[p:q], merge, boundary, rule)
         else:
             # One geometry's lines (a MultiLineString) or points together:
             # in "add", GDAL burns a line's pixel once per geometry, a

@@ -135,6 +135,31 @@ def _fits(v, dt, what):
     return v
 
 
+def _values(vals, dt):
+    """The values as an array of dtype dt, checked as _fits checks them
+    (vectorised; the first bad one is reported by _fits)."""
+    a = None
+    if all(type(v) is int for v in vals) or all(type(v) is float for v in vals):
+        a = np.asarray(vals) if vals else np.zeros(0, np.int64)
+        if a.dtype.kind == "f":
+            ok = np.isfinite(a) | (dt.kind == "f")
+            if dt.kind == "f":
+                if dt.itemsize == 4:
+                    ok &= ~(np.abs(a) > float(np.finfo(np.float32).max)) | ~np.isfinite(a)
+            else:
+                info = np.iinfo(dt)
+                ok &= (a == np.floor(a)) & (a >= info.min) & (a <= info.max)
+            if ok.all():
+                return a.astype(dt)
+        elif a.dtype.kind in "iu":
+            if dt.kind == "f" or (a.min() >= np.iinfo(dt).min and a.max() <= np.iinfo(dt).max):
+                return a.astype(dt)
+    out = np.empty(len(vals), dt)
+    for k, v in enumerate(vals):
+        out[k] = _fits(_real(v, "shapes: feature %d: value" % k), dt, "shapes: feature %d: value" % k)
+    return out
+
+
 # ---- shapes -> flat arrays -------------------------------------------------------------
 
 class _Flat:
@@ -255,22 +280,19 @@ def _shapely_parts(geoms, index0=0):
     if (types < 0).any():  # None
         k = int(np.flatnonzero(types < 0)[0])
         raise InputError("shapes: feature %d is None, not a geometry" % (k + index0))
-    empty = shapely.is_empty(geoms)
+    bad = shapely.is_empty(geoms)
     parts, pidx = geoms, np.arange(len(geoms))
-    for _ in range(64):
-        t = shapely.get_type_id(parts)
-        if not (t >= 4).any():
-            break
+    t = types
+    while (t >= 4).any():  # multi-geometries and collections: their parts, in order
         parts, sub = shapely.get_parts(parts, return_index=True)
         pidx = pidx[sub]
-    empty_parts = shapely.is_empty(parts)
-    bad = empty.copy()
-    bad[pidx[empty_parts]] = True
+        t = shapely.get_type_id(parts)
+    if len(parts) != len(geoms):
+        bad[pidx[shapely.is_empty(parts)]] = True
     if bad.any():
         k = int(np.flatnonzero(bad)[0])
         raise InputError("shapes: feature %d: empty %s" % (k + index0, shapely.get_type_id(geoms[k]) and geoms[k].geom_type))
-    t = shapely.get_type_id(parts)
-    unknown = ~np.isin(t, (0, 1, 2, 3))
+    unknown = t > 3
     if unknown.any():
         k = int(np.flatnonzero(unknown)[0])
         raise InputError("shapes: feature %d: unknown geometry type %s" % (pidx[k] + index0, parts[k].geom_type))
@@ -296,10 +318,18 @@ def _is_shapely(g):
 
 def _flatten(items, index0=0):
     """(xy, ring_sizes, part_rings, kind, feature) of a list of geometries."""
-    if items and all(_is_shapely(g) for g in items):
-        got = _shapely_parts(np.asarray(items, dtype=object), index0)
-        if got is not None:
-            return got
+    if items and _is_shapely(items[0]):
+        arr = np.empty(len(items), dtype=object)
+        arr[:] = items
+        try:
+            import shapely
+        except ImportError:  # pragma: no cover
+            shapely = None
+        if shapely is not None:
+            try:
+                return _shapely_parts(arr, index0)
+            except TypeError:  # not all shapely geometries: the general path says which
+                pass
     flat = _Flat()
     for k, g in enumerate(items):
         if g is None:
@@ -330,18 +360,23 @@ def _split_shapes(shapes, default_value, fill, values):
         except TypeError:
             raise InputError("shapes must be an iterable of geometries or (geometry, value) pairs, "
                              "not %r" % type(shapes).__name__) from None
-        geoms, vals = [], []
-        for item in items:
-            if isinstance(item, (tuple, list)):
-                if len(item) != 2:
-                    raise InputError("shapes: feature %d is a sequence of %d items, not a (geometry, value) pair"
-                                     % (len(geoms), len(item)))
-                g, v = item
-                geoms.append(g)
-                vals.append(fill if v is None else v)
-            else:
-                geoms.append(item)
-                vals.append(default_value)
+        if set(map(type, items)) == {tuple} and set(map(len, items)) == {2}:  # (geometry, value) pairs, quickly
+            geoms, vals = map(list, zip(*items))
+            if any(v is None for v in vals):
+                vals = [fill if v is None else v for v in vals]
+        else:
+            geoms, vals = [], []
+            for item in items:
+                if isinstance(item, (tuple, list)):
+                    if len(item) != 2:
+                        raise InputError("shapes: feature %d is a sequence of %d items, not a (geometry, value) pair"
+                                         % (len(geoms), len(item)))
+                    g, v = item
+                    geoms.append(g)
+                    vals.append(fill if v is None else v)
+                else:
+                    geoms.append(item)
+                    vals.append(default_value)
         if values is None:
             return geoms, vals
     if values is None:
@@ -423,6 +458,10 @@ class _Progress:
             self.fn = progress
         else:
             raise InputError("progress must be True, False, None or a callable(done, total), not %r" % (progress,))
+
+    @property
+    def active(self):
+        return self.bar is not None or self.fn is not None
 
     def __call__(self, done):
         if self.bar is not None:
@@ -525,13 +564,11 @@ def rasterize(
         raise InputError("all_touched must be True or False, not %r" % (all_touched,))
     inv = _inverse(_transform6(transform))
     geoms, vals = _split_shapes(shapes, default_value, fill, values)
-    for k, v in enumerate(vals):
-        _real(v, "shapes: feature %d: value" % k)
     _real(fill, "fill")
     target, new = _out_array(out, out_shape, dtype, fill, vals)
     dt = target.dtype if not new else target[2]
     fill_v = _fits(fill, dt, "fill")
-    vals = [_fits(v, dt, "shapes: feature %d: value" % k) for k, v in enumerate(vals)]
+    vals = _values(vals, dt)
     xy, ring_sizes, part_rings, kind, feature = _flatten(geoms)
     if len(xy):
         px = np.empty_like(xy)
@@ -546,7 +583,7 @@ def rasterize(
     if new:
         h, w, dt = target
         target = np.full((h, w), fill_v, dt)
-    part_values = [vals[f] for f in feature.tolist()]
+    part_values = vals[feature]
     bar = _Progress(progress, len(geoms))
     try:
         _burn.burn(target, px, ring_sizes, part_rings, kind, part_values, feature, merge,

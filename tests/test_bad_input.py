@@ -459,6 +459,9 @@ OTHER = [
     ("ALGORITHMS", "unknown entry point", lambda: rastrum.ALGORITHMS["bogus"], KeyError, r"bogus"),
 ]
 EXTRA_COVERED = {row[0] for row in OTHER} | {"render_mesh", "scene", "Canvas.packed", "Canvas.clear_depth"}
+# rasterize's rows (every kind of bad geometry, value, dtype, transform and
+# shape, out untouched) are in tests/test_rasterize.py.
+EXTRA_COVERED |= {"rasterize", "IDENTITY"}
 
 
 @pytest.mark.parametrize("name,label,call,exc,pattern", OTHER, ids=["%s | %s" % (r[0], r[1]) for r in OTHER])

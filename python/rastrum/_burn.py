@@ -173,6 +173,18 @@ def burn(target, px, ring_sizes, part_rings, kind, values, feature, merge, all_t
         target[...] = work
         return
     h, w = target.shape
+    if all_touched and len(kind):
+        # The lines of one geometry become one part (one zero-area ring
+        # each): "add" then burns a pixel once per geometry, as GDAL does.
+        line = kind == _KIND_LINE
+        same = np.zeros(len(kind), bool)
+        same[1:] = line[1:] & line[:-1] & (feature[1:] == feature[:-1])
+        if same.any():
+            keep = ~same
+            group = np.cumsum(keep) - 1
+            part_rings = np.bincount(group, weights=part_rings).astype(np.int64)
+            kind, feature = kind[keep], feature[keep]
+            values = values[keep]
     n = len(part_rings)
     ring_start = np.concatenate([[0], np.cumsum(part_rings)])
     pt_start = np.concatenate([[0], np.cumsum(ring_sizes)])

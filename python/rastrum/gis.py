@@ -138,9 +138,10 @@ def _fits(v, dt, what):
 def _values(vals, dt):
     """The values as an array of dtype dt, checked as _fits checks them
     (vectorised; the first bad one is reported by _fits)."""
-    a = None
+    if not vals:
+        return np.zeros(0, dt)
     if all(type(v) is int for v in vals) or all(type(v) is float for v in vals):
-        a = np.asarray(vals) if vals else np.zeros(0, np.int64)
+        a = np.asarray(vals)
         if a.dtype.kind == "f":
             ok = np.isfinite(a) | (dt.kind == "f")
             if dt.kind == "f":

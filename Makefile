@@ -9,7 +9,7 @@
 #   make valgrind-py     a quick profile of the Python tests under memcheck
 #   make firmware-check  the core for Cortex-M0 and rv32: no float, heap or stdio; .text sizes
 #   make cross-check     C tests on 32-bit ARM and big-endian MIPS (qemu), same pixels as x86
-#   make install         PREFIX=/usr/local DESTDIR= : header, libraries, rastrum.pc
+#   make install         PREFIX=/usr/local DESTDIR= : header, libraries, rastrum.pc, CMake package
 #   make uninstall       the reverse
 #   make example         the pkg-config example (after make install)
 #   make display-example a 320x240 RGB565 display fed spans band by band (run by test-c)
@@ -92,20 +92,11 @@ display-example: build/librastrum.a
 	@$(CC) $(WARN) -O2 -Icsrc/include examples/display_rgb565.c build/librastrum.a -o build/display_rgb565
 	@./build/display_rgb565 build/display_rgb565.ppm
 
-# Install into a stage, build the example through pkg-config, run it; and
-# check that DESTDIR is honoured.
-test-install:
-	@rm -rf build/stage build/destdir
-	@$(MAKE) --no-print-directory install PREFIX=$(CURDIR)/build/stage >/dev/null
-	@PKG_CONFIG_PATH=$(CURDIR)/build/stage/lib/pkgconfig $(CC) -std=c99 -pedantic -Wall -Werror \
-	  examples/draw_ppm.c $$(PKG_CONFIG_PATH=$(CURDIR)/build/stage/lib/pkgconfig pkg-config --cflags --libs rastrum) \
-	  -Wl,-rpath,$(CURDIR)/build/stage/lib -o build/draw_ppm
-	@./build/draw_ppm build/draw_ppm.ppm
-	@$(MAKE) --no-print-directory install DESTDIR=$(CURDIR)/build/destdir PREFIX=/usr >/dev/null
-	@test -f build/destdir/usr/include/rastrum.h && test -f build/destdir/usr/lib/pkgconfig/rastrum.pc \
-	  && test -f build/destdir/usr/lib/librastrum.a && echo "test-install: 2 passed, 0 failed"
-	@$(MAKE) --no-print-directory uninstall DESTDIR=$(CURDIR)/build/destdir PREFIX=/usr >/dev/null
-	@test ! -e build/destdir/usr/include/rastrum.h || (echo "uninstall left files"; exit 1)
+# The C packaging as a user meets it: the README's C example and install
+# steps as written (pkg-config and CMake), one .pc per PREFIX, DESTDIR,
+# uninstall (tools/test-install.sh).
+test-install: lib
+	@tools/test-install.sh
 
 test-py:
 	$(PY_CLEAN)
@@ -216,24 +207,32 @@ fuzz-check:
 	done
 
 # ---- install ----------------------------------------------------------------------
-build/rastrum.pc: rastrum.pc.in csrc/include/rastrum.h
-	@mkdir -p $(@D)
-	sed -e 's|@PREFIX@|$(PREFIX)|' -e 's|@LIBDIR@|$(LIBDIR)|' -e 's|@INCDIR@|$(INCDIR)|' \
-	    -e 's|@VERSION@|$(VERSION)|' $< > $@
+# The .pc file and the CMake package are written for the PREFIX, LIBDIR and
+# INCDIR of each install (never a file left from an earlier one, which
+# would point at the first PREFIX used).
+CMAKEDIR ?= $(LIBDIR)/cmake/rastrum
+SUBST = sed -e 's|@PREFIX@|$(PREFIX)|g' -e 's|@LIBDIR@|$(LIBDIR)|g' -e 's|@INCDIR@|$(INCDIR)|g' \
+            -e 's|@VERSION@|$(VERSION)|g' -e 's|@VERSION_MAJOR@|$(VERSION_MAJOR)|g' \
+            -e 's|@SONAME@|$(SONAME)|g'
 
-install: lib build/rastrum.pc
-	install -d $(DESTDIR)$(INCDIR) $(DESTDIR)$(LIBDIR)/pkgconfig
+install: lib
+	install -d $(DESTDIR)$(INCDIR) $(DESTDIR)$(LIBDIR)/pkgconfig $(DESTDIR)$(CMAKEDIR)
 	install -m 644 csrc/include/rastrum.h $(DESTDIR)$(INCDIR)/
 	install -m 644 build/librastrum.a $(DESTDIR)$(LIBDIR)/
 	install -m 755 build/librastrum.so.$(VERSION) $(DESTDIR)$(LIBDIR)/
 	ln -sf librastrum.so.$(VERSION) $(DESTDIR)$(LIBDIR)/$(SONAME)
 	ln -sf $(SONAME) $(DESTDIR)$(LIBDIR)/librastrum.so
-	install -m 644 build/rastrum.pc $(DESTDIR)$(LIBDIR)/pkgconfig/
+	$(SUBST) rastrum.pc.in > $(DESTDIR)$(LIBDIR)/pkgconfig/rastrum.pc
+	$(SUBST) tools/cmake/rastrum-config.cmake.in > $(DESTDIR)$(CMAKEDIR)/rastrum-config.cmake
+	$(SUBST) tools/cmake/rastrum-config-version.cmake.in > $(DESTDIR)$(CMAKEDIR)/rastrum-config-version.cmake
+	chmod 644 $(DESTDIR)$(LIBDIR)/pkgconfig/rastrum.pc $(DESTDIR)$(CMAKEDIR)/*.cmake
 
 uninstall:
 	rm -f $(DESTDIR)$(INCDIR)/rastrum.h $(DESTDIR)$(LIBDIR)/librastrum.a \
 	      $(DESTDIR)$(LIBDIR)/librastrum.so $(DESTDIR)$(LIBDIR)/$(SONAME) \
-	      $(DESTDIR)$(LIBDIR)/librastrum.so.$(VERSION) $(DESTDIR)$(LIBDIR)/pkgconfig/rastrum.pc
+	      $(DESTDIR)$(LIBDIR)/librastrum.so.$(VERSION) $(DESTDIR)$(LIBDIR)/pkgconfig/rastrum.pc \
+	      $(DESTDIR)$(CMAKEDIR)/rastrum-config.cmake $(DESTDIR)$(CMAKEDIR)/rastrum-config-version.cmake
+	-rmdir $(DESTDIR)$(CMAKEDIR) 2>/dev/null
 
 # Build the example through pkg-config, against an installed rastrum.
 example:

@@ -312,3 +312,63 @@ rast_status rast_fill_polygon64_spans(const rast_polygon64 *polygon, const rast_
     u.user = user;
     return rast__fill64(polygon, opts, &c, rast__user_row, &u, scratch, scratch_bytes);
 }
+
+rast_status rast_fill_bounds64(const rast_fill_opts *opts, const rast_polygon64 *polygon,
+                               const rast_rect *clip, rast_rect *bounds)
+{
+    const int64_t bias = (int64_t)1 << 62;
+    rast__grid64 g;
+    rast_rect c, out;
+    uint32_t npoints, i;
+    int64_t lo[2], hi[2], x0, x1, y0, y1;
+    rast_status st;
+
+    if (!clip || !bounds) return RAST_E_NULL;
+    st = rast__check_opts64(opts, &g);
+    if (st != RAST_OK) return st;
+    st = rast__check_polygon64(polygon, opts->subpixel_bits, &npoints);
+    if (st != RAST_OK) return st;
+    st = rast__span_clip(clip, &c);
+    if (st != RAST_OK) return st;
+    out.x0 = out.x1 = c.x0; /* empty unless something below says otherwise */
+    out.y0 = out.y1 = c.y0;
+    if (npoints > 0) {
+        const rast_point64 *pts = polygon->points;
+        lo[0] = hi[0] = pts[0].x;
+        lo[1] = hi[1] = pts[0].y;
+        for (i = 1; i < npoints; i++) {
+            if (pts[i].x < lo[0]) lo[0] = pts[i].x;
+            if (pts[i].x > hi[0]) hi[0] = pts[i].x;
+            if (pts[i].y < lo[1]) lo[1] = pts[i].y;
+            if (pts[i].y > hi[1]) hi[1] = pts[i].y;
+        }
+        if (opts->boundary == RAST_BOUNDARY_EXACT) {
+            /* The AET's rows; columns from the first column counting a
+             * crossing at min x to the one counting max x (poly.h). */
+            x0 = rast__row64(2 * lo[0], &g);
+            x1 = rast__row64(2 * hi[0], &g);
+            y0 = rast__row64(2 * lo[1], &g);
+            y1 = rast__row64(2 * hi[1], &g);
+        } else {
+            /* The vertices' pixel hull, one more pixel each side (as
+             * rast_fill_bounds). */
+            const int32_t s = opts->subpixel_bits;
+            x0 = (int64_t)((uint64_t)(lo[0] + bias) >> s) - (bias >> s) - 1;
+            x1 = (int64_t)((uint64_t)(hi[0] + bias) >> s) - (bias >> s) + 2;
+            y0 = (int64_t)((uint64_t)(lo[1] + bias) >> s) - (bias >> s) - 1;
+            y1 = (int64_t)((uint64_t)(hi[1] + bias) >> s) - (bias >> s) + 2;
+        }
+        if (x0 < c.x0) x0 = c.x0;
+        if (x1 > c.x1) x1 = c.x1;
+        if (y0 < c.y0) y0 = c.y0;
+        if (y1 > c.y1) y1 = c.y1;
+        if (x0 < x1 && y0 < y1) {
+            out.x0 = (int32_t)x0;
+            out.x1 = (int32_t)x1;
+            out.y0 = (int32_t)y0;
+            out.y1 = (int32_t)y1;
+        }
+    }
+    *bounds = out;
+    return RAST_OK;
+}

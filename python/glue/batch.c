@@ -193,7 +193,7 @@ long rastpy_burn_polygons(void *out, int32_t height, int32_t width, int64_t row_
 {
     return rastpy_burn_any(out, height, width, row_stride, plane_stride, dtype, merge, values, xy,
                            npoints, ring_sizes, nrings, poly_rings, npolys, opts, failed, 0);
-    }
+}
 
 long rastpy_burn_polygons64(void *out, int32_t height, int32_t width, int64_t row_stride,
                             int64_t plane_stride, int dtype, int merge, const void *values,
@@ -203,4 +203,4 @@ long rastpy_burn_polygons64(void *out, int32_t height, int32_t width, int64_t ro
 {
     return rastpy_burn_any(out, height, width, row_stride, plane_stride, dtype, merge, values, xy,
                            npoints, ring_sizes, nrings, poly_rings, npolys, opts, failed, 1);
-    }
+}

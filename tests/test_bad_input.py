@@ -28,6 +28,11 @@ SHAPE = (10, 12)
 COLOR = (10, 20, 30)
 PAST_RANGE = (lib.RAST_COORD_MAX + 1) / 256.0  # just past the range at S = 8
 AT_RANGE = lib.RAST_COORD_MAX / 256.0           # the last coordinate in it
+# The polygon fills (polygon_mask, Canvas.fill_polygon with a colour) take
+# the 64-bit path past the 32-bit range: their range is +-2**28 pixels at
+# every subpixel_bits, and their subpixel_bits go up to 32.
+PAST_RANGE64 = float(2 ** lib.RAST_COORD64_PIXEL_BITS)  # snaps to 2**(S+28) > the limit
+AT_RANGE64 = (2 ** (8 + lib.RAST_COORD64_PIXEL_BITS) - 1) / 256.0
 
 # Good geometry of each kind, as a tuple of the geometric arguments; the
 # generic rows change the LAST one (named ARG[kind] in messages).
@@ -66,17 +71,19 @@ class Entry:
     """A public entry point: how to call it with geometry `g` (a tuple as in
     GOOD) on canvas `c`, and which options it takes."""
 
-    def __init__(self, name, kind, call, options=(), canvas=False, color=False, shape=False):
+    def __init__(self, name, kind, call, options=(), canvas=False, color=False, shape=False,
+                 wide=False):
         self.name, self.kind, self.call = name, kind, call
         self.options, self.canvas, self.color, self.shape = set(options), canvas, color, shape
+        self.wide = wide  # the 64-bit vertex path: S up to 32, +-2**28 pixels
 
 
 FILL = ("algorithm", "subpixel_bits", "sample_offset", "rounding", "boundary")
 ENTRIES = [
     Entry("polygon_mask", "ring", lambda c, g, kw: rastrum.polygon_mask(g[0], kw.pop("shape", SHAPE), **kw),
-          FILL + ("rule",), shape=True),
+          FILL + ("rule",), shape=True, wide=True),
     Entry("Canvas.fill_polygon", "ring", lambda c, g, kw: c.fill_polygon(g[0], kw.pop("color", COLOR), **kw),
-          FILL + ("rule",), canvas=True, color=True),
+          FILL + ("rule",), canvas=True, color=True, wide=True),
     Entry("triangles_mask", "tris", lambda c, g, kw: rastrum.triangles_mask(g[0], kw.pop("shape", SHAPE), **kw),
           FILL + ("mode",), shape=True),
     Entry("Canvas.fill_triangles", "tris",
@@ -243,10 +250,29 @@ def _expectation(table, kind):
     return table.get(kind, table.get("*"))
 
 
+# The range rows of the entries on the 64-bit path: just past +-2**28 px.
+WIDE_GEOMETRY = {
+    "just past the range": _set_last(PAST_RANGE64),
+    "-(just past the range)": _set_last(-PAST_RANGE64),
+}
+# Their subpixel_bits run to 32 (17 is good there), and above 16 they
+# take only the options of the 64-bit path.
+WIDE_OPTIONS = {
+    "subpixel_bits": [(v, p) for v, p in OPTIONS["subpixel_bits"] if v != 17] + [(33, r"subpixel.*0\.\.32")],
+}
+WIDE_ROWS = {
+    "subpixel_bits=24, algorithm=xscan": dict(subpixel_bits=24, algorithm="xscan"),
+    "subpixel_bits=20, boundary=closed": dict(subpixel_bits=20, boundary="closed"),
+    "subpixel_bits=17, rounding=textbook": dict(subpixel_bits=17, rounding="textbook"),
+}
+
+
 def _rows():
     rows = []
     for e in ENTRIES:
         for label, (change, table) in GEOMETRY.items():
+            if e.wide and label in WIDE_GEOMETRY:
+                change = WIDE_GEOMETRY[label]
             exp = _expectation(table, e.kind)
             if exp[0] == RAISE:
                 exp = (RAISE, exp[1], both(ARG[e.kind], exp[2]))
@@ -264,8 +290,14 @@ def _rows():
             rows.append((e.name, label, ("geometry", _replace(fn), _replace(lambda a, fn=fn: np.asarray(fn(a), float))),
                          (SAME,)))
         opts = set(e.options) | ({"color"} if e.color else set()) | ({"shape"} if e.shape else set())
+        if e.wide:
+            rows.append((e.name, "at the 64-bit range",
+                         ("geometry", _set_last(AT_RANGE64), None), ("works",)))
+            for label, kw in WIDE_ROWS.items():
+                rows.append((e.name, label, ("options", kw),
+                             (RAISE, rastrum.InputError, r"subpixel_bits.*aet")))
         for opt in sorted(opts):
-            for value, problem in OPTIONS[opt]:
+            for value, problem in (WIDE_OPTIONS if e.wide else OPTIONS).get(opt, OPTIONS[opt]):
                 rows.append((e.name, "%s=%r" % (opt, value), ("option", opt, value),
                              (RAISE, rastrum.InputError, problem)))
         if "fraction_bits" in e.options:
@@ -354,6 +386,13 @@ def test_bad_input(row):
         assert np.array_equal(big, before)
         if isinstance(got, np.ndarray):
             assert not got.any()
+    elif expect[0] == "works":  # at the 64-bit range: accepted, and the mask is the oracle's
+        got = _run(entry, geometry, kw, canvas)
+        if isinstance(got, np.ndarray):
+            from oracle import oracle_mask
+            assert np.array_equal(got, oracle_mask([np.asarray(geometry[0], float)], SHAPE))
+        else:
+            assert not np.array_equal(big, before)
     else:  # ("empty", shape): an empty result of that shape
         got = _run(entry, geometry, kw, canvas)
         assert got.shape == expect[1]

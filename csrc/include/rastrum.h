@@ -112,8 +112,33 @@ enum {
     /* Bytes of scratch per edge (twice: edge table and AET) and per visible
      * row (a bucket head) for the "aet" filler. */
     RAST_AET_EDGE_BYTES = 48,
-    RAST_AET_ROW_BYTES = 4
+    RAST_AET_ROW_BYTES = 4,
+    /* Largest subpixel precision S of the 64-bit vertices (rast_point64). */
+    RAST_MAX_SUBPIXEL_BITS64 = 32,
+    /* Largest |coordinate| of a 64-bit vertex in PIXELS, exclusive: a
+     * rast_point64 coordinate v (units 1/2^S pixel) must satisfy
+     * |v| <= 2^(S + RAST_COORD64_PIXEL_BITS) - 1 (RAST_COORD64_MAX(S)). */
+    RAST_COORD64_PIXEL_BITS = 28
 };
+
+/* Largest |coordinate| of a 64-bit vertex at subpixel precision s, in
+ * fixed-point units: 2^(s + 28) - 1, just under 2^28 pixels (268,435,456)
+ * at every s in 0..RAST_MAX_SUBPIXEL_BITS64.
+ *
+ * Range table (pixels each side of the origin, exclusive bound):
+ *
+ *     vertices        S          |coordinate| in pixels     grid step
+ *     rast_point      0          < 2^27 = 134,217,728       1
+ *     rast_point      8          < 2^19 = 524,288           1/256
+ *     rast_point      16         < 2^11 = 2,048             1/65536
+ *     rast_point64    0..32      < 2^28 = 268,435,456       1/2^S
+ *     rast_point64    24         < 2^28                     1/16,777,216
+ *     rast_point64    32         < 2^28                     1/4,294,967,296
+ *
+ * With 32-bit vertices S + log2(range) <= 27; with 64-bit vertices every
+ * S up to 32 keeps the whole 2^28-pixel range (internally up to 2^61 units,
+ * products in 128 bits). */
+#define RAST_COORD64_MAX(s) (((int64_t)1 << ((s) + RAST_COORD64_PIXEL_BITS)) - 1)
 
 /* Scratch bytes that always suffice for the "aet" algorithm with `npoints`
  * vertices and a clip `height` rows high; usable to size a static array:
@@ -159,7 +184,8 @@ enum {
     X(RAST_E_RULE, -8, "fill rule not supported by this algorithm")            \
     X(RAST_E_SCRATCH, -9, "scratch buffer too small")                          \
     X(RAST_E_ALIGN, -10, "scratch buffer is not aligned to RAST_SCRATCH_ALIGN") \
-    X(RAST_E_TOO_MANY, -11, "more than RAST_MAX_POINTS vertices")
+    X(RAST_E_TOO_MANY, -11, "more than RAST_MAX_POINTS vertices")             \
+    X(RAST_E_WIDE, -12, "not offered for 64-bit vertices (rast_polygon64: algorithm aet, exact rounding, exact or conservative boundary)")
 
 #define RAST__STATUS_ENUM(name, value, text) name = value,
 typedef enum rast_status { RAST_STATUS_LIST(RAST__STATUS_ENUM) RAST_STATUS_END_ = 1 } rast_status;
@@ -187,6 +213,23 @@ typedef struct rast_polygon {
     const uint32_t *ring_sizes;
     uint32_t nrings;
 } rast_polygon;
+
+/* A vertex with 64-bit fixed-point coordinates: units of 1/2^S pixel for
+ * S up to RAST_MAX_SUBPIXEL_BITS64 = 32, |x|, |y| <= RAST_COORD64_MAX(S)
+ * (see the range table above).  The precision path for callers whose
+ * coordinates are floats at GIS scale: at S = 32 snapping moves a vertex
+ * by at most 2^-33 pixel. */
+typedef struct rast_point64 {
+    int64_t x;
+    int64_t y;
+} rast_point64;
+
+/* A polygon of 64-bit vertices, laid out as rast_polygon. */
+typedef struct rast_polygon64 {
+    const rast_point64 *points;
+    const uint32_t *ring_sizes;
+    uint32_t nrings;
+} rast_polygon64;
 
 typedef enum rast_fill_rule {
     RAST_RULE_EVENODD = 0, /* inside iff the winding number is odd */
@@ -474,6 +517,64 @@ RAST_API rast_status rast_fill_bounds(const rast_fill_opts *opts,
                                       const rast_rect *clip,
                                       rast_rect *bounds);
 
+/* ---- 64-bit vertices (poly64.c) ------------------------------------------------
+ * The same fills on rast_polygon64: vertices in units of 1/2^S pixel with
+ * S = opts->subpixel_bits in 0..RAST_MAX_SUBPIXEL_BITS64 (32) and every
+ * |coordinate| <= RAST_COORD64_MAX(S) = 2^(S+28) - 1, that is under 2^28
+ * pixels whatever S is.  The rule is the Conventions' rule, exactly, on
+ * these vertices: a polygon of rast_point vertices gives the same pixels
+ * through either path (same S, same values).  Internally the doubled
+ * coordinates reach 2^61 and the first crossing of an edge is a 128-bit
+ * numerator (two 64-bit halves, portable C99); the row-to-row walk stays
+ * in 64 bits, so a 64-bit fill costs about what a 32-bit one does.
+ *
+ * What is offered: algorithm RAST_ALGO_AET with either rule, rounding
+ * RAST_ROUND_EXACT, boundary RAST_BOUNDARY_EXACT or
+ * RAST_BOUNDARY_CONSERVATIVE (GDAL's ALL_TOUCHED; see rast_boundary).
+ * Any other algorithm, RAST_ROUND_TEXTBOOK or RAST_BOUNDARY_CLOSED:
+ * RAST_E_WIDE.  S outside 0..32: RAST_E_SUBPIXEL.  A coordinate past
+ * RAST_COORD64_MAX(S): RAST_E_RANGE.  All checked before anything is
+ * written.  Scratch: rast_scratch_size64 (what the AET needs, an edge
+ * record per vertex twice and a bucket per clip row, plus the boundary's
+ * records in conservative mode: it grows with the vertices and the rows,
+ * never with the coordinates). */
+
+/* Scratch bytes of a 64-bit fill with `opts` (checked as the fill checks
+ * them: RAST_E_NULL, RAST_E_ALGORITHM, RAST_E_ARG, RAST_E_RULE,
+ * RAST_E_SUBPIXEL, RAST_E_WIDE) for `npoints` vertices and a clip
+ * `width` x `height` (RAST_E_SIZE, RAST_E_TOO_MANY). */
+RAST_API rast_status rast_scratch_size64(const rast_fill_opts *opts, uint32_t npoints,
+                                         int32_t width, int32_t height, size_t *bytes);
+
+/* rast_fill_polygon for 64-bit vertices. */
+RAST_API rast_status rast_fill_polygon64(const rast_target *target,
+                                         const rast_polygon64 *polygon,
+                                         const rast_fill_opts *opts, const void *pixel,
+                                         void *scratch, size_t scratch_bytes);
+
+/* rast_fill_polygon_opaque for 64-bit vertices. */
+RAST_API rast_status rast_fill_polygon64_opaque(const rast_target *target,
+                                                const rast_polygon64 *polygon,
+                                                const rast_fill_opts *opts,
+                                                const void *pixel, const void *background,
+                                                void *scratch, size_t scratch_bytes);
+
+/* rast_fill_polygon_spans for 64-bit vertices. */
+RAST_API rast_status rast_fill_polygon64_spans(const rast_polygon64 *polygon,
+                                               const rast_fill_opts *opts,
+                                               const rast_rect *clip, rast_span_fn span,
+                                               void *user, void *scratch,
+                                               size_t scratch_bytes);
+
+/* rast_fill_bounds for 64-bit vertices: the part of `clip` a fill of
+ * `polygon` with `opts` can paint (the exact fill's box, or with the
+ * conservative boundary the vertices' pixel hull grown by a pixel).
+ * Errors: those of rast_scratch_size64's options, RAST_E_NULL,
+ * RAST_E_RANGE, RAST_E_TOO_MANY, RAST_E_SIZE (the clip). */
+RAST_API rast_status rast_fill_bounds64(const rast_fill_opts *opts,
+                                        const rast_polygon64 *polygon,
+                                        const rast_rect *clip, rast_rect *bounds);
+
 /* ---- polygon batches ------------------------------------------------------
  * Many polygons in one call, each with its own index (a GIS layer burnt
  * value by value, the instances of a label image, N masks): polygons[k]
@@ -514,6 +615,20 @@ RAST_API rast_status rast_fill_polygons_spans(const rast_polygon *polygons, uint
                                               const rast_rect *clip, rast_batch_span_fn span,
                                               void *user, void *scratch, size_t scratch_bytes,
                                               uint32_t *failed);
+
+/* The same two for a batch of 64-bit polygons (rast_polygon64, see
+ * rast_fill_polygon64: algorithm aet, S up to 32, RAST_E_WIDE for what is
+ * not offered), each polygon's clip cut to rast_fill_bounds64. */
+RAST_API rast_status rast_polygons64_scratch_size(const rast_polygon64 *polygons, uint32_t n,
+                                                  const rast_fill_opts *opts,
+                                                  const rast_rect *clip, size_t *bytes,
+                                                  uint32_t *failed);
+RAST_API rast_status rast_fill_polygons64_spans(const rast_polygon64 *polygons, uint32_t n,
+                                                const rast_fill_opts *opts,
+                                                const rast_rect *clip,
+                                                rast_batch_span_fn span, void *user,
+                                                void *scratch, size_t scratch_bytes,
+                                                uint32_t *failed);
 
 /* ---- triangles --------------------------------------------------------------
  * A batch is `ntris` triangles, tris[3k], tris[3k+1], tris[3k+2], in fixed
@@ -856,7 +971,8 @@ typedef enum rast_prim_kind {
                                 (rast_fill_triangles) */
     RAST_PRIM_POLYLINE = 2,  /* `count` points at `points`, `closed`, with
                                 `line` (rast_draw_polyline) */
-    RAST_PRIM_COUNT_ = 3
+    RAST_PRIM_POLYGON64 = 3, /* `polygon64` with `fill` (rast_fill_polygon64) */
+    RAST_PRIM_COUNT_ = 4
 } rast_prim_kind;
 
 /* One primitive; only the fields of its kind are read.  `pixel` is the
@@ -873,6 +989,7 @@ typedef struct rast_prim {
     const rast_tri_opts *tri;      /* RAST_PRIM_TRIANGLES */
     const rast_line_opts *line;    /* RAST_PRIM_POLYLINE */
     const void *pixel;
+    rast_polygon64 polygon64;      /* RAST_PRIM_POLYGON64 */
 } rast_prim;
 
 /* A span of primitive `prim` (a pointer into the caller's array) in row y,
@@ -892,7 +1009,7 @@ typedef struct rast_band_stats {
 
 /* Scratch bytes that draw every primitive of the scene in a band of
  * `band_rows` rows and `width` columns without halving: the largest need of
- * one primitive (polygons: rast_scratch_size; triangles:
+ * one primitive (polygons: rast_scratch_size, rast_scratch_size64; triangles:
  * rast_tri_scratch_size; polylines: none).  band_rows = 1 gives the least
  * scratch with which rast_render_bands succeeds.  n may be 0 (prims may
  * then be NULL).  Errors: RAST_E_NULL, RAST_E_ARG (an unknown kind,

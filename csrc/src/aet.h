@@ -108,6 +108,62 @@ static inline int32_t rast__aet_join(rast__edge *aet, int32_t n, rast__edge *add
     return total;
 }
 
+/* The walk once the edge table is set up: nedges edge records in aet[]
+ * (each with `row` its first row in [row0, row1)), bucket[r - row0 + 1]
+ * holding how many start on row r (bucket[0] = 0).  Groups the table by
+ * first row into edges[], then walks rows [row0, row1).  Shared by the
+ * 32-bit walk below and the 64-bit one (poly64.c): after the setup the
+ * walk is the same integers. */
+static inline void rast__aet_sweep(rast__edge *edges, rast__edge *aet, int32_t *bucket,
+                                   int32_t nedges, int32_t row0, int32_t row1,
+                                   rast_fill_rule rule, rast__aet_span_fn span,
+                                   rast__aet_order_fn order, void *user)
+{
+    int32_t j, first, nactive = 0, k;
+    for (j = row0; j < row1; j++) bucket[j - row0 + 1] += bucket[j - row0];
+    /* Placing an edge moves its row's start on: bucket[r] ends up where
+     * row r's run ends. */
+    for (k = 0; k < nedges; k++) edges[bucket[aet[k].row - row0]++] = aet[k];
+
+    for (j = row0, first = 0; j < row1; j++) {
+        int32_t m, n, last = bucket[j - row0];
+
+        /* Edges starting on this row join the AET: sort them, then merge
+         * from the back (an edge goes after active ones of equal column). */
+        if (last != first) {
+            nactive = rast__aet_join(aet, nactive, &edges[first], last - first);
+            first = last;
+        }
+        if (nactive == 0) continue;
+        if (order) order(user, j, aet, nactive);
+
+        /* Spans: sample i is inside iff the crossings with x <= i make it so. */
+        if (rule == RAST_RULE_EVENODD) {
+            for (n = 0; n + 1 < nactive; n += 2) span(user, j, &aet[n], &aet[n + 1]);
+        } else {
+            int32_t w = 0, start = 0;
+            for (n = 0; n < nactive; n++) {
+                if (w == 0) start = n;
+                w += aet[n].dir;
+                if (w == 0) span(user, j, &aet[start], &aet[n]);
+            }
+        }
+
+        /* Step every edge to the next row; drop those that end here (few
+         * rows have any, so the compaction is a separate, rare pass). */
+        for (n = 0, m = 0; n < nactive; n++) {
+            rast__edge_step(&aet[n]);
+            m += aet[n].end == j + 1;
+        }
+        if (m) {
+            for (n = 0, m = 0; n < nactive; n++)
+                if (aet[n].end != j + 1) aet[m++] = aet[n];
+            nactive = m;
+        }
+        rast__aet_sort(aet, nactive);
+    }
+}
+
 static inline rast_status rast__aet_walk(const rast_polygon *poly, uint32_t npoints,
                                          const rast__grid *g, rast_fill_rule rule,
                                          const rast_rect *clip, rast__arena *arena,
@@ -117,7 +173,7 @@ static inline rast_status rast__aet_walk(const rast_polygon *poly, uint32_t npoi
     const rast_point *pts = poly->points;
     rast__edge *edges, *aet;
     int32_t *bucket;
-    int32_t miny, maxy, row0, row1, j, first, nactive = 0, nedges = 0;
+    int32_t miny, maxy, row0, row1, j, nedges = 0;
     uint32_t i, k, base;
     int64_t r;
 
@@ -162,48 +218,7 @@ static inline rast_status rast__aet_walk(const rast_polygon *poly, uint32_t npoi
             }
         }
     }
-    for (j = row0; j < row1; j++) bucket[j - row0 + 1] += bucket[j - row0];
-    /* Placing an edge moves its row's start on: bucket[r] ends up where
-     * row r's run ends. */
-    for (k = 0; k < (uint32_t)nedges; k++) edges[bucket[aet[k].row - row0]++] = aet[k];
-
-    for (j = row0, first = 0; j < row1; j++) {
-        int32_t m, n, last = bucket[j - row0];
-
-        /* Edges starting on this row join the AET: sort them, then merge
-         * from the back (an edge goes after active ones of equal column). */
-        if (last != first) {
-            nactive = rast__aet_join(aet, nactive, &edges[first], last - first);
-            first = last;
-        }
-        if (nactive == 0) continue;
-        if (order) order(user, j, aet, nactive);
-
-        /* Spans: sample i is inside iff the crossings with x <= i make it so. */
-        if (rule == RAST_RULE_EVENODD) {
-            for (n = 0; n + 1 < nactive; n += 2) span(user, j, &aet[n], &aet[n + 1]);
-        } else {
-            int32_t w = 0, start = 0;
-            for (n = 0; n < nactive; n++) {
-                if (w == 0) start = n;
-                w += aet[n].dir;
-                if (w == 0) span(user, j, &aet[start], &aet[n]);
-            }
-        }
-
-        /* Step every edge to the next row; drop those that end here (few
-         * rows have any, so the compaction is a separate, rare pass). */
-        for (n = 0, m = 0; n < nactive; n++) {
-            rast__edge_step(&aet[n]);
-            m += aet[n].end == j + 1;
-        }
-        if (m) {
-            for (n = 0, m = 0; n < nactive; n++)
-                if (aet[n].end != j + 1) aet[m++] = aet[n];
-            nactive = m;
-        }
-        rast__aet_sort(aet, nactive);
-    }
+    rast__aet_sweep(edges, aet, bucket, nedges, row0, row1, rule, span, order, user);
     return RAST_OK;
 }
 

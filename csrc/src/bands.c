@@ -31,6 +31,13 @@ static rast_status rast__prim_need(const rast_prim *p, int32_t width, int32_t ro
             if (npoints > RAST_MAX_POINTS) return RAST_E_TOO_MANY;
         }
         return rast_scratch_size(p->fill, (uint32_t)npoints, width, rows, need);
+    case RAST_PRIM_POLYGON64:
+        if (p->polygon64.nrings > 0 && !p->polygon64.ring_sizes) return RAST_E_NULL;
+        for (k = 0; k < p->polygon64.nrings; k++) {
+            npoints += p->polygon64.ring_sizes[k];
+            if (npoints > RAST_MAX_POINTS) return RAST_E_TOO_MANY;
+        }
+        return rast_scratch_size64(p->fill, (uint32_t)npoints, width, rows, need);
     case RAST_PRIM_TRIANGLES:
         return rast_tri_scratch_size(p->tri, width, rows, need);
     case RAST_PRIM_POLYLINE:
@@ -97,6 +104,9 @@ static rast_status rast__prim_draw(rast__scene *s, const rast_prim *p, const ras
         switch (p->kind) {
         case RAST_PRIM_POLYGON:
             return rast_fill_polygon(&t, &p->polygon, p->fill, p->pixel, s->scratch, s->bytes);
+        case RAST_PRIM_POLYGON64:
+            return rast_fill_polygon64(&t, &p->polygon64, p->fill, p->pixel, s->scratch,
+                                       s->bytes);
         case RAST_PRIM_TRIANGLES:
             return rast_fill_triangles(&t, p->points, p->count, p->tri, p->pixel, s->scratch,
                                        s->bytes);
@@ -111,6 +121,9 @@ static rast_status rast__prim_draw(rast__scene *s, const rast_prim *p, const ras
     case RAST_PRIM_POLYGON:
         return rast_fill_polygon_spans(&p->polygon, p->fill, band, rast__scene_span, s,
                                        s->scratch, s->bytes);
+    case RAST_PRIM_POLYGON64:
+        return rast_fill_polygon64_spans(&p->polygon64, p->fill, band, rast__scene_span, s,
+                                         s->scratch, s->bytes);
     case RAST_PRIM_TRIANGLES:
         return rast_fill_triangles_spans(p->points, p->count, p->tri, band, rast__scene_span, s,
                                          s->scratch, s->bytes);

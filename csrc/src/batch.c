@@ -15,36 +15,62 @@
  */
 #include "paint.h"
 
+/* A batch of rast_polygon (wide == 0) or rast_polygon64 (wide == 1). */
+typedef struct rast__polys {
+    const void *p;
+    int wide;
+} rast__polys;
+
+static rast__polys rast__polys_of(const void *p, int wide)
+{
+    rast__polys b;
+    b.p = p;
+    b.wide = wide;
+    return b;
+}
+
 /* What polygon k of the batch needs in clip c: its bounds and scratch. */
-static rast_status rast__batch_need(const rast_polygon *p, const rast_fill_opts *opts,
+static rast_status rast__batch_need(rast__polys ps, uint32_t k, const rast_fill_opts *opts,
                                     const rast_rect *c, rast_rect *b, size_t *need)
 {
-    uint32_t npoints = 0, i;
-    rast_status st = rast_fill_bounds(opts, p, c, b);
+    const uint32_t *sizes;
+    uint32_t npoints = 0, i, nrings;
+    rast_status st;
+    if (ps.wide) {
+        const rast_polygon64 *p = (const rast_polygon64 *)ps.p + k;
+        st = rast_fill_bounds64(opts, p, c, b);
+        sizes = p->ring_sizes;
+        nrings = p->nrings;
+    } else {
+        const rast_polygon *p = (const rast_polygon *)ps.p + k;
+        st = rast_fill_bounds(opts, p, c, b);
+        sizes = p->ring_sizes;
+        nrings = p->nrings;
+    }
     if (st != RAST_OK) return st;
     /* rast_fill_bounds has checked the ring sizes and their sum. */
-    for (i = 0; i < p->nrings; i++) npoints += p->ring_sizes[i];
-    return rast_scratch_size(opts, npoints, b->x1 - b->x0, b->y1 - b->y0, need);
+    for (i = 0; i < nrings; i++) npoints += sizes[i];
+    return ps.wide ? rast_scratch_size64(opts, npoints, b->x1 - b->x0, b->y1 - b->y0, need)
+                   : rast_scratch_size(opts, npoints, b->x1 - b->x0, b->y1 - b->y0, need);
 }
 
 /* The batch's checks and its largest need; *failed names the polygon. */
-static rast_status rast__batch_check(const rast_polygon *polygons, uint32_t n,
-                                     const rast_fill_opts *opts, const rast_rect *clip,
-                                     size_t *most, uint32_t *failed)
+static rast_status rast__batch_check(rast__polys ps, uint32_t n, const rast_fill_opts *opts,
+                                     const rast_rect *clip, size_t *most, uint32_t *failed)
 {
     rast_rect c, b;
     size_t need;
     uint32_t k;
     rast_status st;
-    if (!opts || !clip || (n > 0 && !polygons)) return RAST_E_NULL;
+    if (!opts || !clip || (n > 0 && !ps.p)) return RAST_E_NULL;
     st = rast__span_clip(clip, &c);
     if (st != RAST_OK) return st;
     /* The options are the batch's: their errors name no polygon. */
-    st = rast_scratch_size(opts, 0, 0, 0, most);
+    st = ps.wide ? rast_scratch_size64(opts, 0, 0, 0, most) : rast_scratch_size(opts, 0, 0, 0, most);
     if (st != RAST_OK) return st;
     *most = 0;
     for (k = 0; k < n; k++) {
-        st = rast__batch_need(&polygons[k], opts, &c, &b, &need);
+        st = rast__batch_need(ps, k, opts, &c, &b, &need);
         if (st != RAST_OK) {
             if (failed) *failed = k;
             return st;
@@ -61,7 +87,19 @@ rast_status rast_polygons_scratch_size(const rast_polygon *polygons, uint32_t n,
     size_t most;
     rast_status st;
     if (!bytes) return RAST_E_NULL;
-    st = rast__batch_check(polygons, n, opts, clip, &most, failed);
+    st = rast__batch_check(rast__polys_of(polygons, 0), n, opts, clip, &most, failed);
+    if (st == RAST_OK) *bytes = most;
+    return st;
+}
+
+rast_status rast_polygons64_scratch_size(const rast_polygon64 *polygons, uint32_t n,
+                                         const rast_fill_opts *opts, const rast_rect *clip,
+                                         size_t *bytes, uint32_t *failed)
+{
+    size_t most;
+    rast_status st;
+    if (!bytes) return RAST_E_NULL;
+    st = rast__batch_check(rast__polys_of(polygons, 1), n, opts, clip, &most, failed);
     if (st == RAST_OK) *bytes = most;
     return st;
 }
@@ -79,10 +117,9 @@ static void rast__batch_span(void *user, int32_t y, int32_t x0, int32_t x1)
     b->span(b->user, b->index, y, x0, x1);
 }
 
-rast_status rast_fill_polygons_spans(const rast_polygon *polygons, uint32_t n,
-                                     const rast_fill_opts *opts, const rast_rect *clip,
-                                     rast_batch_span_fn span, void *user, void *scratch,
-                                     size_t scratch_bytes, uint32_t *failed)
+static rast_status rast__batch_fill(rast__polys ps, uint32_t n, const rast_fill_opts *opts,
+                                    const rast_rect *clip, rast_batch_span_fn span, void *user,
+                                    void *scratch, size_t scratch_bytes, uint32_t *failed)
 {
     rast__batch ctx;
     rast_rect c, b;
@@ -90,13 +127,13 @@ rast_status rast_fill_polygons_spans(const rast_polygon *polygons, uint32_t n,
     uint32_t k;
     rast_status st;
     if (!span) return RAST_E_NULL;
-    st = rast__batch_check(polygons, n, opts, clip, &most, failed);
+    st = rast__batch_check(ps, n, opts, clip, &most, failed);
     if (st != RAST_OK) return st;
     if (most > scratch_bytes) {
         /* Name the first polygon that does not fit. */
         rast__span_clip(clip, &c);
         for (k = 0; k < n; k++) {
-            rast__batch_need(&polygons[k], opts, &c, &b, &need);
+            rast__batch_need(ps, k, opts, &c, &b, &need);
             if (need > scratch_bytes) break;
         }
         if (failed) *failed = k;
@@ -110,11 +147,31 @@ rast_status rast_fill_polygons_spans(const rast_polygon *polygons, uint32_t n,
     ctx.user = user;
     for (k = 0; k < n; k++) {
         ctx.index = k;
-        rast__batch_need(&polygons[k], opts, &c, &b, &need); /* checked above */
+        rast__batch_need(ps, k, opts, &c, &b, &need); /* checked above */
         if (b.x0 == b.x1 || b.y0 == b.y1) continue;
-        st = rast_fill_polygon_spans(&polygons[k], opts, &b, rast__batch_span, &ctx, scratch,
-                                     scratch_bytes);
+        st = ps.wide ? rast_fill_polygon64_spans((const rast_polygon64 *)ps.p + k, opts, &b,
+                                                 rast__batch_span, &ctx, scratch, scratch_bytes)
+                     : rast_fill_polygon_spans((const rast_polygon *)ps.p + k, opts, &b,
+                                               rast__batch_span, &ctx, scratch, scratch_bytes);
         if (st != RAST_OK) return st; /* not reached: everything was checked */
     }
     return RAST_OK;
+}
+
+rast_status rast_fill_polygons_spans(const rast_polygon *polygons, uint32_t n,
+                                     const rast_fill_opts *opts, const rast_rect *clip,
+                                     rast_batch_span_fn span, void *user, void *scratch,
+                                     size_t scratch_bytes, uint32_t *failed)
+{
+    return rast__batch_fill(rast__polys_of(polygons, 0), n, opts, clip, span, user, scratch,
+                            scratch_bytes, failed);
+}
+
+rast_status rast_fill_polygons64_spans(const rast_polygon64 *polygons, uint32_t n,
+                                       const rast_fill_opts *opts, const rast_rect *clip,
+                                       rast_batch_span_fn span, void *user, void *scratch,
+                                       size_t scratch_bytes, uint32_t *failed)
+{
+    return rast__batch_fill(rast__polys_of(polygons, 1), n, opts, clip, span, user, scratch,
+                            scratch_bytes, failed);
 }

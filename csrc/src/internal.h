@@ -512,6 +512,8 @@ typedef struct rast__bound {
     const rast__grid *g;
     rast_boundary mode;
     rast__bound_edge *edges;
+    const struct rast__grid64 *g64; /* the 64-bit path (conservative only), else NULL */
+    struct rast__bound_edge64 *edges64; /* its edges */
     int32_t *bucket;   /* first edge of each clip row, -1 when none */
     int32_t *active;   /* edges adding pixels to the current row */
     int32_t *xs;       /* the current row's edge runs, merged (pairs) */
@@ -520,7 +522,27 @@ typedef struct rast__bound {
     int32_t y0, y1;    /* clip rows */
 } rast__bound;
 
+/* The 64-bit path's grid (poly64.c): S up to 32, so the unit 2^(S+1)
+ * needs 64 bits. */
+typedef struct rast__grid64 {
+    int64_t unit;  /* 2^(S+1) */
+    int64_t off;   /* 2^S (centres) or 0 */
+    int32_t shift; /* S + 1 */
+} rast__grid64;
+
+/* An edge of a 64-bit polygon for RAST_BOUNDARY_CONSERVATIVE: internal
+ * (doubled) coordinates, a above b. */
+typedef struct rast__bound_edge64 {
+    int64_t ax, ay, bx, by;
+    int32_t row, end, next, pad;
+} rast__bound_edge64;
+
 size_t rast__bound_scratch(uint32_t npoints, int32_t height);
+size_t rast__bound_scratch64(uint32_t npoints, int32_t height);
+rast_status rast__bound_begin64(rast__bound *b, const rast_polygon64 *poly,
+                                uint32_t npoints, const rast__grid64 *g,
+                                const rast_rect *clip, rast__sink *out,
+                                rast__arena *arena);
 rast_status rast__bound_begin(rast__bound *b, const rast_polygon *poly,
                               uint32_t npoints, const rast__grid *g,
                               rast_boundary mode, const rast_rect *clip,

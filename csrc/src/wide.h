@@ -53,6 +53,15 @@ static inline rast__i128 rast__i128_shl(rast__i128 a, int32_t n)
 /* The exact product a * b. */
 static inline rast__i128 rast__i128_mul(int64_t a, int64_t b)
 {
+#if defined(__SIZEOF_INT128__) && !defined(RAST_NO_INT128)
+    __extension__ typedef __int128 rast__s128;
+    __extension__ typedef unsigned __int128 rast__u128;
+    rast__s128 p = (rast__s128)a * b;
+    rast__i128 r;
+    r.lo = (uint64_t)p;
+    r.hi = (uint64_t)((rast__u128)p >> 64);
+    return r;
+#else
     const uint64_t m = 0xFFFFFFFFu;
     uint64_t ua = a < 0 ? 0 - (uint64_t)a : (uint64_t)a;
     uint64_t ub = b < 0 ? 0 - (uint64_t)b : (uint64_t)b;
@@ -63,6 +72,26 @@ static inline rast__i128 rast__i128_mul(int64_t a, int64_t b)
     r.lo = (p00 & m) | (mid << 32);
     r.hi = p11 + (p01 >> 32) + (p10 >> 32) + (mid >> 32);
     return (a < 0) != (b < 0) ? rast__i128_neg(r) : r;
+#endif
+}
+
+/* Is a (as a signed 128-bit value) inside int64_t? */
+static inline int rast__i128_is64(rast__i128 a)
+{
+    return a.hi == (((a.lo >> 63) != 0) ? ~(uint64_t)0 : 0);
+}
+
+/* ceil(a / 2^n) for 0 < n < 64: the arithmetic shift of a + 2^n - 1
+ * (two's complement, so the shift of the halves is the floor), which
+ * stays in range for |a| < 2^126. */
+static inline rast__i128 rast__i128_ceilshift(rast__i128 a, int32_t n)
+{
+    rast__i128 r;
+    a = rast__i128_add(a, rast__i128_from(((int64_t)1 << n) - 1));
+    r.lo = (a.lo >> n) | (a.hi << (64 - n));
+    /* arithmetic shift of hi, without relying on >> of a negative */
+    r.hi = (a.hi >> n) | ((a.hi >> 63) ? ~(~(uint64_t)0 >> n) : 0);
+    return r;
 }
 
 /* Largest quotient magnitude rast__i128_floordiv hands back. */
@@ -118,6 +147,30 @@ saturate:
     *q = neg ? -RAST__WIDE_QMAX : RAST__WIDE_QMAX;
     *r = 0;
     return 0;
+}
+
+/* *q = floor(a / d), *r = a - *q * d in [0, d), for 0 < d < 2^62 and a
+ * quotient the caller knows to be within +-2^62 (the 64-bit polygon path:
+ * a crossing's abscissa).  A native 128-bit division where the compiler
+ * has one (GCC and clang on 64-bit targets), else the long division of
+ * rast__i128_floordiv (the same results: tests build both,
+ * -DRAST_NO_INT128). */
+static inline void rast__wide_floordiv(rast__i128 a, int64_t d, int64_t *q, int64_t *r)
+{
+#if defined(__SIZEOF_INT128__) && !defined(RAST_NO_INT128)
+    __extension__ typedef __int128 rast__s128;
+    __extension__ typedef unsigned __int128 rast__u128;
+    rast__s128 n = (rast__s128)(((rast__u128)a.hi << 64) | a.lo);
+    rast__s128 qq = n / d, rr = n % d;
+    if (rr < 0) {
+        qq -= 1;
+        rr += d;
+    }
+    *q = (int64_t)qq;
+    *r = (int64_t)rr;
+#else
+    (void)rast__i128_floordiv(a, d, q, r);
+#endif
 }
 
 /* The high 64 bits of the 128-bit product a * b: one instruction where

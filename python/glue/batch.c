@@ -8,6 +8,11 @@
  * x * itemsize (plane_stride 0: all polygons into one plane; the size of a
  * plane: one mask per polygon).
  *
+ * rastpy_burn_polygons64 is the same with the points snapped to int64
+ * (rastpy_snap64, S up to 32, +-2^28 pixels) and drawn by
+ * rast_fill_polygons64_spans (algorithm aet; exact or conservative
+ * boundary; else RAST_E_WIDE).
+ *
  * Returns 0; k + 1 when point k is bad (NaN, infinite or out of range
  * after snapping, see rastpy_snap); a negative rast_status, with *failed
  * the polygon it belongs to when it is one polygon's; RASTPY_E_NOMEM.
@@ -15,6 +20,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include "batch.h"
+#include "wide.h"
 
 typedef struct rastpy_burn {
     unsigned char *out;
@@ -114,16 +120,19 @@ static void rastpy_burn_span(void *user, uint32_t k, int32_t y, int32_t x0, int3
     b->put(b, b->out + (int64_t)k * b->plane_stride + (int64_t)y * b->row_stride, k, x0, x1);
 }
 
-long rastpy_burn_polygons(void *out, int32_t height, int32_t width, int64_t row_stride,
-                          int64_t plane_stride, int dtype, int merge, const void *values,
-                          const double *xy, size_t npoints, const uint32_t *ring_sizes,
-                          size_t nrings, const uint32_t *poly_rings, uint32_t npolys,
-                          const rast_fill_opts *opts, uint32_t *failed)
+/* Both burns: the points snapped to int32 (rast_polygon, wide == 0) or to
+ * int64 (rast_polygon64, wide == 1), the same tables, the same spans. */
+static long rastpy_burn_any(void *out, int32_t height, int32_t width, int64_t row_stride,
+                            int64_t plane_stride, int dtype, int merge, const void *values,
+                            const double *xy, size_t npoints, const uint32_t *ring_sizes,
+                            size_t nrings, const uint32_t *poly_rings, uint32_t npolys,
+                            const rast_fill_opts *opts, uint32_t *failed, int wide)
 {
-    rast_polygon *polys;
+    const size_t psize = wide ? sizeof(rast_polygon64) : sizeof(rast_polygon);
+    unsigned char *polys;
     rast_rect clip;
     rastpy_burn b;
-    int32_t *pts;
+    void *pts;
     size_t need = 0, ring = 0, point = 0, r;
     uint32_t k;
     void *scratch;
@@ -134,14 +143,15 @@ long rastpy_burn_polygons(void *out, int32_t height, int32_t width, int64_t row_
         merge > RASTPY_MERGE_ADD_SAT)
         return RAST_E_ARG;
     if (height < 0 || width < 0) return RAST_E_SIZE;
-    polys = (rast_polygon *)malloc((size_t)npolys * sizeof *polys + 1);
-    pts = (int32_t *)malloc(npoints * sizeof(rast_point) + 1);
+    polys = (unsigned char *)malloc((size_t)npolys * psize + 1);
+    pts = malloc(npoints * (wide ? sizeof(rast_point64) : sizeof(rast_point)) + 1);
     if (!polys || !pts) {
         free(polys);
         free(pts);
         return RASTPY_E_NOMEM;
     }
-    bad = rastpy_snap(xy, npoints, opts ? opts->subpixel_bits : 0, pts);
+    bad = wide ? rastpy_snap64(xy, npoints, opts ? opts->subpixel_bits : 0, (int64_t *)pts)
+               : rastpy_snap(xy, npoints, opts ? opts->subpixel_bits : 0, (int32_t *)pts);
     if (bad >= 0) {
         free(polys);
         free(pts);
@@ -149,9 +159,17 @@ long rastpy_burn_polygons(void *out, int32_t height, int32_t width, int64_t row_
     }
     for (k = 0; k < npolys; k++) {
         size_t n = 0;
-        polys[k].points = (const rast_point *)(const void *)(pts + 2 * point);
-        polys[k].ring_sizes = ring_sizes + ring;
-        polys[k].nrings = poly_rings[k];
+        if (wide) {
+            rast_polygon64 *p = (rast_polygon64 *)(void *)polys + k;
+            p->points = (const rast_point64 *)pts + point;
+            p->ring_sizes = ring_sizes + ring;
+            p->nrings = poly_rings[k];
+        } else {
+            rast_polygon *p = (rast_polygon *)(void *)polys + k;
+            p->points = (const rast_point *)pts + point;
+            p->ring_sizes = ring_sizes + ring;
+            p->nrings = poly_rings[k];
+        }
         if (poly_rings[k] > nrings - ring) break;
         for (r = 0; r < poly_rings[k]; r++) n += ring_sizes[ring + r];
         if (n > npoints - point) break;
@@ -167,7 +185,10 @@ long rastpy_burn_polygons(void *out, int32_t height, int32_t width, int64_t row_
     clip.y0 = 0;
     clip.x1 = width;
     clip.y1 = height;
-    st = rast_polygons_scratch_size(polys, npolys, opts, &clip, &need, failed);
+    st = wide ? rast_polygons64_scratch_size((const rast_polygon64 *)(void *)polys, npolys, opts,
+                                             &clip, &need, failed)
+              : rast_polygons_scratch_size((const rast_polygon *)(void *)polys, npolys, opts,
+                                           &clip, &need, failed);
     scratch = st == RAST_OK ? malloc(need + 1) : NULL;
     if (st == RAST_OK && !scratch) st = (rast_status)RASTPY_E_NOMEM;
     if (st == RAST_OK) {
@@ -176,11 +197,34 @@ long rastpy_burn_polygons(void *out, int32_t height, int32_t width, int64_t row_
         b.plane_stride = plane_stride;
         b.values = (const unsigned char *)values;
         b.put = rastpy_puts[dtype - 1][merge];
-        st = rast_fill_polygons_spans(polys, npolys, opts, &clip, rastpy_burn_span, &b, scratch,
-                                      need, failed);
+        st = wide ? rast_fill_polygons64_spans((const rast_polygon64 *)(void *)polys, npolys,
+                                               opts, &clip, rastpy_burn_span, &b, scratch, need,
+                                               failed)
+                  : rast_fill_polygons_spans((const rast_polygon *)(void *)polys, npolys, opts,
+                                             &clip, rastpy_burn_span, &b, scratch, need, failed);
     }
     free(scratch);
     free(polys);
     free(pts);
     return st;
+}
+
+long rastpy_burn_polygons(void *out, int32_t height, int32_t width, int64_t row_stride,
+                          int64_t plane_stride, int dtype, int merge, const void *values,
+                          const double *xy, size_t npoints, const uint32_t *ring_sizes,
+                          size_t nrings, const uint32_t *poly_rings, uint32_t npolys,
+                          const rast_fill_opts *opts, uint32_t *failed)
+{
+    return rastpy_burn_any(out, height, width, row_stride, plane_stride, dtype, merge, values, xy,
+                           npoints, ring_sizes, nrings, poly_rings, npolys, opts, failed, 0);
+}
+
+long rastpy_burn_polygons64(void *out, int32_t height, int32_t width, int64_t row_stride,
+                            int64_t plane_stride, int dtype, int merge, const void *values,
+                            const double *xy, size_t npoints, const uint32_t *ring_sizes,
+                            size_t nrings, const uint32_t *poly_rings, uint32_t npolys,
+                            const rast_fill_opts *opts, uint32_t *failed)
+{
+    return rastpy_burn_any(out, height, width, row_stride, plane_stride, dtype, merge, values, xy,
+                           npoints, ring_sizes, nrings, poly_rings, npolys, opts, failed, 1);
 }

@@ -30,6 +30,11 @@ long rastpy_burn_polygons(void *out, int32_t height, int32_t width, int64_t row_
                           const double *xy, size_t npoints, const uint32_t *ring_sizes,
                           size_t nrings, const uint32_t *poly_rings, uint32_t npolys,
                           const rast_fill_opts *opts, uint32_t *failed);
+long rastpy_burn_polygons64(void *out, int32_t height, int32_t width, int64_t row_stride,
+                            int64_t plane_stride, int dtype, int merge, const void *values,
+                            const double *xy, size_t npoints, const uint32_t *ring_sizes,
+                            size_t nrings, const uint32_t *poly_rings, uint32_t npolys,
+                            const rast_fill_opts *opts, uint32_t *failed);
 /* cdef-end */
 
 #endif

@@ -10,7 +10,7 @@ Nothing is written unless every polygon is good.
 
 import numpy as np
 
-from ._core import InputError, _check, bad_point_message
+from ._core import InputError, _check, bad_point_message, use_wide
 from ._native import ffi, lib
 
 #: numpy dtype -> the glue's element type code.
@@ -66,7 +66,10 @@ def burn(out, polygons, opts, values=None, merge="replace", planes=False, what="
     if not len(polygons) or not h or not w:
         return out
     failed = ffi.new("uint32_t *", 0xFFFFFFFF)
-    result = lib.rastpy_burn_polygons(
+    # The 64-bit path (S up to 32, +-2**28 pixels) when S or the coordinates
+    # need it: the same pixels where both apply (_core.use_wide).
+    wide = use_wide(opts, pts)
+    result = (lib.rastpy_burn_polygons64 if wide else lib.rastpy_burn_polygons)(
         ffi.cast("void *", out.__array_interface__["data"][0]), h, w,
         out.strides[-2] if h > 1 else 0, out.strides[0] if planes and len(polygons) > 1 else 0,
         dt, MERGES[merge], ffi.from_buffer(values) if values is not None else ffi.NULL,
@@ -83,7 +86,7 @@ def burn(out, polygons, opts, values=None, merge="replace", planes=False, what="
         raise InputError(bad_point_message(
             "%s %d" % (what, poly), pts[ends[ring] - sizes[ring]:ends[ring]],
             int(k - (ends[ring] - sizes[ring])), opts.subpixel_bits,
-            None).replace("%s %d: " % (what, poly), "%s %d: ring %d, " % (what, poly, ring - first_ring)))
+            None, wide).replace("%s %d: " % (what, poly), "%s %d: ring %d, " % (what, poly, ring - first_ring)))
     if result == lib.RASTPY_E_NOMEM:
         raise MemoryError("rastrum: no memory for a batch of %d %ss" % (len(polygons), what))
     if failed[0] != 0xFFFFFFFF:

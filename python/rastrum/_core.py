@@ -32,6 +32,7 @@ _INPUT_ERRORS = frozenset(
         lib.RAST_E_ALGORITHM,
         lib.RAST_E_RULE,
         lib.RAST_E_TOO_MANY,
+        lib.RAST_E_WIDE,
     ]
 )
 
@@ -95,14 +96,42 @@ def _name(value, what, choices):
     return value
 
 
-def _subpixel_bits(s):
+def _subpixel_bits(s, most=None):
+    most = lib.RAST_MAX_SUBPIXEL_BITS if most is None else most
     if isinstance(s, (bool, np.bool_)) or not isinstance(s, (int, np.integer)):
         raise InputError("subpixel_bits must be an int, not %r" % (s,))
-    if not 0 <= s <= lib.RAST_MAX_SUBPIXEL_BITS:
-        raise InputError(
-            "subpixel_bits must be in 0..%d, not %d" % (lib.RAST_MAX_SUBPIXEL_BITS, s)
-        )
+    if not 0 <= s <= most:
+        raise InputError("subpixel_bits must be in 0..%d, not %d" % (most, s))
     return int(s)
+
+
+# ---- the 64-bit vertex path (issue 13) ---------------------------------------
+# Polygon fills take subpixel_bits up to 32 and coordinates up to 2**28
+# pixels through rast_polygon64 (algorithm "aet", exact rounding, boundary
+# "exact" or "conservative"); below 17 bits and inside the 32-bit range
+# (|v| * 2**S < 2**27 - 1) both paths give the same pixels, so the 64-bit
+# one is taken only when S or a coordinate needs it.
+
+#: Largest |coordinate| of the 64-bit path, in pixels (exclusive).
+WIDE_PIXELS = 2 ** lib.RAST_COORD64_PIXEL_BITS
+
+
+def can_wide(opts):
+    """Can the 64-bit path draw a fill with these options?"""
+    return (opts.algorithm == lib.RAST_ALGO_AET and opts.rounding == lib.RAST_ROUND_EXACT
+            and opts.boundary != lib.RAST_BOUNDARY_CLOSED)
+
+
+def use_wide(opts, pts):
+    """Take the 64-bit path for float64 (N, 2) points `pts` with `opts`?
+    Yes when S is above 16, or when a coordinate is past the 32-bit range
+    (or not finite: the 64-bit snapping names it as well) and the options
+    allow it."""
+    if opts.subpixel_bits > lib.RAST_MAX_SUBPIXEL_BITS:
+        return True
+    if not can_wide(opts) or not len(pts):
+        return False
+    return bool(lib.rastpy_needs_wide(ffi.from_buffer("double[]", pts), len(pts), opts.subpixel_bits))
 
 
 def sample_code(sample_offset):
@@ -174,7 +203,13 @@ def _make_fill_opts(algorithm, rule, subpixel_bits, sample_offset, rounding="exa
                 ", ".join(a for a, (_, r) in POLYGON_ALGORITHMS.items() if rule in r),
             )
         )
-    s = _subpixel_bits(subpixel_bits)
+    s = _subpixel_bits(subpixel_bits, lib.RAST_MAX_SUBPIXEL_BITS64)
+    if s > lib.RAST_MAX_SUBPIXEL_BITS and (algorithm != "aet" or rounding != "exact"
+                                           or boundary == "closed"):
+        raise InputError(
+            "subpixel_bits=%d: above %d bits (the 64-bit path) only algorithm='aet' with "
+            "rounding='exact' and boundary 'exact' or 'conservative'; not algorithm=%r, "
+            "rounding=%r, boundary=%r" % (s, lib.RAST_MAX_SUBPIXEL_BITS, algorithm, rounding, boundary))
     opts = ffi.new("rast_fill_opts *")
     opts.algorithm = code
     opts.rule = RULES[rule]
@@ -318,7 +353,7 @@ def _points(rings):
     return pts, sizes, len(arrays)
 
 
-def bad_point_message(what, pts, k, s, sizes=None):
+def bad_point_message(what, pts, k, s, sizes=None, wide=False):
     """Why point k of `pts` (float64 (N, 2)) was refused: NaN, infinite or
     out of range at subpixel_bits=s.  With `sizes` (the ring sizes), say
     which ring and point; with sizes an int (3), which triangle and vertex."""
@@ -336,6 +371,9 @@ def bad_point_message(what, pts, k, s, sizes=None):
         why = "is NaN, not a finite number"
     elif x in (_INF, -_INF) or y in (_INF, -_INF):
         why = "is infinite, not a finite number"
+    elif wide:
+        why = ("is outside the range +-%.9g pixels (|coordinate| must stay below 2**28 pixels "
+               "at every subpixel_bits; subpixel_bits=%d)" % (((1 << (s + lib.RAST_COORD64_PIXEL_BITS)) - 1) / float(1 << s), s))
     else:
         why = ("is outside the range +-%.6g pixels (|coordinate| * 2**subpixel_bits must stay "
                "below 2**27; subpixel_bits=%d)" % (lib.RAST_COORD_MAX / float(1 << s), s))
@@ -345,12 +383,12 @@ def bad_point_message(what, pts, k, s, sizes=None):
 _INF = float("inf")
 
 
-def _check_glue(result, pts, s, what="points", sizes=None):
+def _check_glue(result, pts, s, what="points", sizes=None, wide=False):
     """Raise for a rastpy_* result (see _build.py)."""
     if result == 0:
         return
     if result > 0:
-        raise InputError(bad_point_message(what, pts, result - 1, s, sizes))
+        raise InputError(bad_point_message(what, pts, result - 1, s, sizes, wide))
     if result == lib.RASTPY_E_NOMEM:
         raise MemoryError("rastrum: no memory for the scratch of %d points" % len(pts))
     _check(result)
@@ -363,9 +401,11 @@ def fill_polygon(target, rings, pixel, opts, s):
     if not nrings:
         return
     xy = ffi.from_buffer("double[]", pts)
-    result = lib.rastpy_fill_polygon(target, xy, len(pts), sizes, nrings, opts, pixel, ffi.NULL)
+    wide = use_wide(opts, pts)
+    result = (lib.rastpy_fill_polygon64 if wide else lib.rastpy_fill_polygon)(
+        target, xy, len(pts), sizes, nrings, opts, pixel, ffi.NULL)
     if result:
-        _check_glue(result, pts, s, "rings", [len(pts)] if nrings == 1 else sizes)
+        _check_glue(result, pts, s, "rings", [len(pts)] if nrings == 1 else sizes, wide)
 
 
 def mask_polygon(shape, rings, opts, s):
@@ -388,12 +428,13 @@ def mask_polygon(shape, rings, opts, s):
         if not nrings:
             return np.zeros(shape, bool)
     mask = np.empty(shape, bool)
-    result = lib.rastpy_mask_polygon(
+    wide = use_wide(opts, pts)
+    result = (lib.rastpy_mask_polygon64 if wide else lib.rastpy_mask_polygon)(
         ffi.from_buffer(mask) if h and w else ffi.NULL, h, w,
         ffi.from_buffer("double[]", pts), len(pts), sizes, nrings, opts,
     )
     if result:
-        _check_glue(result, pts, s, "rings", [len(pts)] if nrings == 1 else sizes)
+        _check_glue(result, pts, s, "rings", [len(pts)] if nrings == 1 else sizes, wide)
     return mask
 
 
@@ -406,6 +447,9 @@ def fill_polygon_gouraud(target, rings, colors, opts, shade, s):
     pts, sizes, nrings = _points(rings)
     if not nrings:
         return
+    if s > lib.RAST_MAX_SUBPIXEL_BITS:
+        raise InputError("vertex_colors: subpixel_bits must be in 0..%d for a shaded fill, not %d"
+                         % (lib.RAST_MAX_SUBPIXEL_BITS, s))
     if colors.shape != (len(pts), 4):
         raise InputError("vertex_colors: %d colours for %d vertices" % (colors.shape[0], len(pts)))
     xy = ffi.from_buffer("double[]", pts)

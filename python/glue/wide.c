@@ -1,0 +1,103 @@
+/* wide.c - glue for the 64-bit vertex path (not part of the core): exact
+ * snapping of float64 to int64 at S = 0..32 and the polygon fills on
+ * rast_polygon64, with scratch from malloc.
+ *
+ * rastpy_snap64(xy, n, s, out): out = floor(xy * 2^s + 1/2), exactly, for
+ * the 2n coordinates; returns -1 when every one is finite and inside
+ * +-RAST_COORD64_MAX(s) after snapping (all of out written), else the index
+ * of the first point that is not.  t = xy * 2^s is exact (a power of two;
+ * an overflow is infinite and refused), floor(t) is exact and so is the
+ * fraction t - floor(t); the half is decided by comparing the fraction with
+ * 1/2, never by adding it (t + 1/2 rounds for |t| >= 2^52).  |t| < 2^(s+28)
+ * <= 2^60 is tested first, so floor(t) converts to int64_t exactly.
+ *
+ * rastpy_needs_wide(xy, n, s): 1 when the 32-bit path cannot take the
+ * input (s > RAST_MAX_SUBPIXEL_BITS, or a coordinate that is not finite or
+ * whose |v| * 2^s is not below RAST_COORD_MAX), else 0.  The 64-bit path
+ * gives the same pixels wherever both apply, so the choice near the bound
+ * changes nothing. */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+#include "wide.h"
+
+long rastpy_snap64(const double *xy, size_t npoints, int s, int64_t *out)
+{
+    const double scale = ldexp(1.0, s), bound = ldexp(1.0, s + RAST_COORD64_PIXEL_BITS);
+    const int64_t lim = RAST_COORD64_MAX(s);
+    size_t i;
+    if (s < 0 || s > RAST_MAX_SUBPIXEL_BITS64) return npoints ? 0 : -1;
+    for (i = 0; i < 2 * npoints; i++) {
+        double t = xy[i] * scale, f;
+        int64_t v;
+        if (!(t > -bound && t < bound)) return (long)(i / 2); /* also NaN */
+        f = floor(t);
+        v = (int64_t)f + (t - f >= 0.5);
+        if (v > lim || v < -lim) return (long)(i / 2);
+        out[i] = v;
+    }
+    return -1;
+}
+
+int rastpy_needs_wide(const double *xy, size_t npoints, int s)
+{
+    const double lim = ldexp((double)RAST_COORD_MAX, -s);
+    size_t i;
+    if (s > RAST_MAX_SUBPIXEL_BITS) return 1;
+    for (i = 0; i < 2 * npoints; i++)
+        if (!(xy[i] < lim && xy[i] > -lim)) return 1;
+    return 0;
+}
+
+/* Snap, then rast_fill_polygon64 (rast_fill_polygon64_opaque when
+ * background is not NULL) with scratch from malloc.  ring_sizes NULL means
+ * one ring of all the points.  Returns 0, a negative rast_status (or
+ * RASTPY_E_NOMEM), or k + 1 when point k is bad (rastpy_snap64). */
+long rastpy_fill_polygon64(const rast_target *target, const double *xy, uint32_t npoints,
+                           const uint32_t *ring_sizes, uint32_t nrings,
+                           const rast_fill_opts *opts, const void *pixel,
+                           const void *background)
+{
+    rast_polygon64 poly;
+    rast_status st;
+    size_t need;
+    int64_t *pts;
+    void *scratch;
+    long bad;
+    if (!target || !opts) return RAST_E_NULL;
+    st = rast_scratch_size64(opts, npoints, target->clip.x1 - target->clip.x0,
+                             target->clip.y1 - target->clip.y0, &need);
+    if (st != RAST_OK) return st;
+    pts = (int64_t *)malloc((size_t)npoints * sizeof(rast_point64) + 1);
+    if (!pts) return RASTPY_E_NOMEM;
+    bad = rastpy_snap64(xy, npoints, opts->subpixel_bits, pts);
+    if (bad >= 0) {
+        free(pts);
+        return bad + 1;
+    }
+    scratch = malloc(need + 1);
+    if (!scratch) {
+        free(pts);
+        return RASTPY_E_NOMEM;
+    }
+    poly.points = (const rast_point64 *)(const void *)pts;
+    poly.ring_sizes = ring_sizes ? ring_sizes : &npoints;
+    poly.nrings = ring_sizes ? nrings : 1;
+    st = background ? rast_fill_polygon64_opaque(target, &poly, opts, pixel, background, scratch, need)
+                    : rast_fill_polygon64(target, &poly, opts, pixel, scratch, need);
+    free(scratch);
+    free(pts);
+    return st;
+}
+
+/* A complete gray8 (height, width) mask, 1 inside and 0 outside. */
+long rastpy_mask_polygon64(void *mask, int32_t height, int32_t width, const double *xy,
+                           uint32_t npoints, const uint32_t *ring_sizes, uint32_t nrings,
+                           const rast_fill_opts *opts)
+{
+    static const unsigned char one = 1, zero = 0;
+    rast_target t;
+    rast_status st = rast_target_init(&t, mask, width, height, width, RAST_FORMAT_GRAY8);
+    if (st != RAST_OK) return st;
+    return rastpy_fill_polygon64(&t, xy, npoints, ring_sizes, nrings, opts, &one, &zero);
+}

@@ -1,0 +1,22 @@
+/* wide.h - the 64-bit vertex path for the Python layer (wide.c): exact
+ * snapping of float64 to int64 at S up to 32, and the polygon fills on
+ * rast_polygon64 (issue 13).  The batch burn's 64-bit twin,
+ * rastpy_burn_polygons64, is declared in batch.h. */
+#ifndef RASTPY_WIDE_H
+#define RASTPY_WIDE_H
+
+#include "rastpy.h"
+
+/* cdef-begin */
+long rastpy_snap64(const double *xy, size_t npoints, int s, int64_t *out);
+int rastpy_needs_wide(const double *xy, size_t npoints, int s);
+long rastpy_fill_polygon64(const rast_target *target, const double *xy, uint32_t npoints,
+                           const uint32_t *ring_sizes, uint32_t nrings,
+                           const rast_fill_opts *opts, const void *pixel,
+                           const void *background);
+long rastpy_mask_polygon64(void *mask, int32_t height, int32_t width, const double *xy,
+                           uint32_t npoints, const uint32_t *ring_sizes, uint32_t nrings,
+                           const rast_fill_opts *opts);
+/* cdef-end */
+
+#endif

@@ -171,8 +171,8 @@ def test_all_touched_polygons(all_touched):
 
 # Nasty cases: vertices on sample points and pixel corners, horizontal
 # edges on sample rows, slivers, repeated points; identity and flipped.
-# Coordinates on the 2^-16 grid: the pixels of any float64 vertex are
-# exact to 2^-(S+1) px only (test_snapping_is_the_limit).
+# Coordinates on a 2^-16 grid (any grid up to 2^-32 is snapped exactly;
+# a float64 vertex off it moves by up to 2^-33 px: test_snapping_is_the_limit).
 _coord = st.one_of(st.integers(-2, 14).map(float), st.integers(-4, 28).map(lambda v: v / 2),
                    st.floats(-2, 14, allow_nan=False, width=64).map(lambda v: round(v * 65536) / 65536))
 _ring_st = st.lists(st.tuples(_coord, _coord), min_size=3, max_size=7)
@@ -191,9 +191,8 @@ def test_nasty_polygons_exact(rings, flip, merge):
 
 
 def test_snapping_is_the_limit():
-    """Vertices are snapped to 2^-S px (S = 16 on the 32-bit path, 32 on
-    the 64-bit one): a vertex 1e-280 px below a sample row's edge lands
-    on it.  The exact rule on the unsnapped input would fill the top-left
+    """rasterize snaps vertices to 2^-32 px (the 64-bit path at S = 32): a
+    vertex 1e-280 px below a sample row lands on it.  The exact rule on the unsnapped input would fill the top-left
     pixel's sample (0.5, 0.5) of this sliver; the snapped one does not."""
     tri = {"type": "Polygon", "coordinates": [[(0.0, 0.0), (0.0, -3.25e-280), (1.0, 1.0), (0.0, 0.0)]]}
     exact = burn_reference([(tri, 1)], (2, 2), (1.0, 0.0, 0.0, 0.0, 1.0, 0.0), "uint8")

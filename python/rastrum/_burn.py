@@ -28,8 +28,13 @@ import numpy as np
 from . import _core
 from ._native import ffi, lib
 
-#: Largest |pixel coordinate| rasterize accepts: S = 0 still holds it.
-COORD_LIMIT = float(lib.RAST_COORD_MAX - 1)
+#: Subpixel bits of rasterize's polygons: the 64-bit path at its finest,
+#: so that vertices snap to 2^-32 px (an error of at most 2^-33 px).
+SUBPIXEL_BITS = lib.RAST_MAX_SUBPIXEL_BITS64
+
+#: Largest |pixel coordinate| rasterize accepts: the 64-bit path holds
+#: +-2^28 px at every S.
+COORD_LIMIT = float(2 ** lib.RAST_COORD64_PIXEL_BITS - 1)
 
 _MERGES = {"replace": lib.RASTPY_MERGE_REPLACE, "add": lib.RASTPY_MERGE_ADD_SAT}
 _DTYPES = {
@@ -132,28 +137,16 @@ def point_pixels(px, h, w):
 
 # ---- polygons --------------------------------------------------------------------------------
 
-def _subpixel_bits(px):
-    """The largest S <= 16 at which every vertex snaps in range
-    (|v| * 2**S <= RAST_COORD_MAX - 1)."""
-    m = float(np.abs(px).max()) if len(px) else 0.0
-    limit = float(lib.RAST_COORD_MAX - 1)
-    s = lib.RAST_MAX_SUBPIXEL_BITS
-    while s > 0 and m * 2.0 ** s > limit:
-        s -= 1
-    return s
-
-
 def _polygons(target, px, ring_sizes, part_rings, values, merge, boundary, rule):
-    """Polygon parts through rastpy_burn_polygons in one C call."""
-    s = _subpixel_bits(px)
-    opts = _core.fill_opts("aet", rule, s, 0.5, "exact", boundary)
+    """Polygon parts through rastpy_burn_polygons64 in one C call."""
+    opts = _core.fill_opts("aet", rule, SUBPIXEL_BITS, 0.5, "exact", boundary)
     h, w = target.shape
     xy = np.ascontiguousarray(px)
     sizes = np.ascontiguousarray(ring_sizes, np.uint32)
     prings = np.ascontiguousarray(part_rings, np.uint32)
     v = np.ascontiguousarray(values, dtype=target.dtype)
     failed = ffi.new("uint32_t *")
-    result = lib.rastpy_burn_polygons(
+    result = lib.rastpy_burn_polygons64(
         ffi.cast("void *", target.__array_interface__["data"][0]), h, w,
         target.strides[0], 0, _DTYPES[target.dtype.name], _MERGES[merge], ffi.from_buffer(v),
         ffi.from_buffer("double[]", xy), len(xy), ffi.from_buffer("uint32_t[]", sizes), len(sizes),

@@ -140,7 +140,8 @@ def _values(vals, dt):
     (vectorised; the first bad one is reported by _fits)."""
     if not vals:
         return np.zeros(0, dt)
-    if all(type(v) is int for v in vals) or all(type(v) is float for v in vals):
+    types = set(map(type, vals))
+    if types == {int} or types == {float}:
         a = np.asarray(vals)
         if a.dtype.kind == "f":
             ok = np.isfinite(a) | (dt.kind == "f")
@@ -300,12 +301,16 @@ def _shapely_parts(geoms, index0=0):
     kind = np.where(t == 3, _KIND_POLYGON, np.where(t == 0, _KIND_POINT, _KIND_LINE))
     # Rings of each part, in part order: a polygon's rings, a line or point itself.
     poly = np.flatnonzero(t == 3)
-    rings, ridx = shapely.get_rings(parts[poly], return_index=True)
-    other = np.flatnonzero(t != 3)
-    ring_part = np.concatenate([poly[ridx], other])
-    order = np.argsort(ring_part, kind="stable")
-    ring_geoms = np.concatenate([rings, parts[other]])[order]
-    ring_part = ring_part[order]
+    if not shapely.get_num_interior_rings(parts[poly]).any():
+        # No holes: a polygon's coordinates are its exterior ring's.
+        ring_geoms, ring_part = parts, np.arange(len(parts))
+    else:
+        rings, ridx = shapely.get_rings(parts[poly], return_index=True)
+        other = np.flatnonzero(t != 3)
+        ring_part = np.concatenate([poly[ridx], other])
+        order = np.argsort(ring_part, kind="stable")
+        ring_geoms = np.concatenate([rings, parts[other]])[order]
+        ring_part = ring_part[order]
     xy, cidx = shapely.get_coordinates(ring_geoms, return_index=True)
     ring_sizes = np.bincount(cidx, minlength=len(ring_geoms))
     part_rings = np.bincount(ring_part, minlength=len(parts))
@@ -363,7 +368,7 @@ def _split_shapes(shapes, default_value, fill, values):
                              "not %r" % type(shapes).__name__) from None
         if set(map(type, items)) == {tuple} and set(map(len, items)) == {2}:  # (geometry, value) pairs, quickly
             geoms, vals = map(list, zip(*items))
-            if any(v is None for v in vals):
+            if None in vals:
                 vals = [fill if v is None else v for v in vals]
         else:
             geoms, vals = [], []
@@ -576,14 +581,15 @@ def rasterize(
         x, y = xy[:, 0], xy[:, 1]
         px[:, 0] = inv[0] + x * inv[1] + y * inv[2]
         px[:, 1] = inv[3] + x * inv[4] + y * inv[5]
-        bad = ~(np.isfinite(px).all(axis=1) & (np.abs(px) <= _burn.COORD_LIMIT).all(axis=1))
-        if bad.any():
+        if not np.abs(px).max() <= _burn.COORD_LIMIT:  # also NaN
+            bad = ~(np.isfinite(px).all(axis=1) & (np.abs(px) <= _burn.COORD_LIMIT).all(axis=1))
             _coordinate_error(xy, px, int(np.flatnonzero(bad)[0]), ring_sizes, part_rings, feature)
     else:
         px = xy
     if new:
         h, w, dt = target
-        target = np.full((h, w), fill_v, dt)
+        # zeros: pages the kernel clears as they are first touched
+        target = np.zeros((h, w), dt) if fill_v == 0 else np.full((h, w), fill_v, dt)
     part_values = vals[feature]
     bar = _Progress(progress, len(geoms))
     try:

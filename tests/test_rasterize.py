@@ -536,6 +536,9 @@ def test_bad_shapely_inputs():
     out = np.full((6, 8), 3, np.uint8)
     for shapes, pattern in [([good, shapely.Polygon()], r"feature 1: empty Polygon"),
                             ([good, shapely.GeometryCollection([good, shapely.LineString()])], r"feature 1: empty"),
+                            ([good, shapely.MultiPolygon()], r"feature 1: empty MultiPolygon"),
+                            ([good, good, shapely.GeometryCollection([good, shapely.MultiPoint()])],
+                             r"feature 2: empty"),
                             ([good, shapely.Point(np.nan, 1)], r"feature 1: position \(nan, 1.0\) is NaN"),
                             ([good, shapely.LinearRing([(0, 0), (1, 0), (1, 1)]), None], r"feature 2 is None")]:
         with pytest.raises(InputError, match=pattern):

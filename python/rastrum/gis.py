@@ -13,6 +13,7 @@ from __future__ import annotations
 
 import math
 import numbers
+from operator import itemgetter
 from typing import Any, Callable, Iterable, Optional, Sequence, Tuple, Union
 
 import numpy as np
@@ -31,6 +32,7 @@ IDENTITY: Tuple[float, ...] = (1.0, 0.0, 0.0, 0.0, 1.0, 0.0)
 DTYPES = ("uint8", "int8", "uint16", "int16", "uint32", "int32", "int64", "float32", "float64")
 
 _KIND_POLYGON, _KIND_LINE, _KIND_POINT = 0, 1, 2
+_FIRST, _SECOND = itemgetter(0), itemgetter(1)
 
 Transform = Union[Sequence[float], Any]
 ShapeItem = Union[Any, Tuple[Any, Union[int, float, None]]]
@@ -282,18 +284,14 @@ def _shapely_parts(geoms, index0=0):
     if (types < 0).any():  # None
         k = int(np.flatnonzero(types < 0)[0])
         raise InputError("shapes: feature %d is None, not a geometry" % (k + index0))
-    bad = shapely.is_empty(geoms)
     parts, pidx = geoms, np.arange(len(geoms))
     t = types
+    bad = np.zeros(len(geoms), bool)
     while (t >= 4).any():  # multi-geometries and collections: their parts, in order
+        bad[pidx[(t >= 4) & (shapely.get_num_geometries(parts) == 0)]] = True  # an empty one
         parts, sub = shapely.get_parts(parts, return_index=True)
         pidx = pidx[sub]
         t = shapely.get_type_id(parts)
-    if len(parts) != len(geoms):
-        bad[pidx[shapely.is_empty(parts)]] = True
-    if bad.any():
-        k = int(np.flatnonzero(bad)[0])
-        raise InputError("shapes: feature %d: empty %s" % (k + index0, shapely.get_type_id(geoms[k]) and geoms[k].geom_type))
     unknown = t > 3
     if unknown.any():
         k = int(np.flatnonzero(unknown)[0])
@@ -314,6 +312,11 @@ def _shapely_parts(geoms, index0=0):
     xy, cidx = shapely.get_coordinates(ring_geoms, return_index=True)
     ring_sizes = np.bincount(cidx, minlength=len(ring_geoms))
     part_rings = np.bincount(ring_part, minlength=len(parts))
+    # Empty geometries: a part without coordinates, or a feature without parts.
+    bad[pidx[np.bincount(ring_part, weights=ring_sizes, minlength=len(parts)) == 0]] = True
+    if bad.any():
+        k = int(np.flatnonzero(bad)[0])
+        raise InputError("shapes: feature %d: empty %s" % (k + index0, geoms[k].geom_type))
     return xy, ring_sizes, part_rings, kind, pidx + index0
 
 
@@ -325,8 +328,7 @@ def _is_shapely(g):
 def _flatten(items, index0=0):
     """(xy, ring_sizes, part_rings, kind, feature) of a list of geometries."""
     if items and _is_shapely(items[0]):
-        arr = np.empty(len(items), dtype=object)
-        arr[:] = items
+        arr = np.fromiter(items, dtype=object, count=len(items))
         try:
             import shapely
         except ImportError:  # pragma: no cover
@@ -367,7 +369,7 @@ def _split_shapes(shapes, default_value, fill, values):
             raise InputError("shapes must be an iterable of geometries or (geometry, value) pairs, "
                              "not %r" % type(shapes).__name__) from None
         if set(map(type, items)) == {tuple} and set(map(len, items)) == {2}:  # (geometry, value) pairs, quickly
-            geoms, vals = map(list, zip(*items))
+            geoms, vals = list(map(_FIRST, items)), list(map(_SECOND, items))
             if None in vals:
                 vals = [fill if v is None else v for v in vals]
         else:
@@ -579,8 +581,9 @@ def rasterize(
     if len(xy):
         px = np.empty_like(xy)
         x, y = xy[:, 0], xy[:, 1]
-        px[:, 0] = inv[0] + x * inv[1] + y * inv[2]
-        px[:, 1] = inv[3] + x * inv[4] + y * inv[5]
+        with np.errstate(invalid="ignore", over="ignore"):  # inf * 0: named below
+            px[:, 0] = inv[0] + x * inv[1] + y * inv[2]
+            px[:, 1] = inv[3] + x * inv[4] + y * inv[5]
         if not np.abs(px).max() <= _burn.COORD_LIMIT:  # also NaN
             bad = ~(np.isfinite(px).all(axis=1) & (np.abs(px) <= _burn.COORD_LIMIT).all(axis=1))
             _coordinate_error(xy, px, int(np.flatnonzero(bad)[0]), ring_sizes, part_rings, feature)

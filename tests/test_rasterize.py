@@ -557,3 +557,27 @@ def test_docs_gis_examples():
     assert blocks
     for code in blocks:
         exec(compile(code, "docs/gis.md", "exec"), {})
+
+
+@pytest.mark.parametrize("all_touched", [False, True])
+def test_add_counts_a_line_once_per_geometry(all_touched):
+    """In "add", a (Multi)LineString burns each pixel once, a collection's
+    members are geometries of their own, a MultiPoint adds per point."""
+    line = [(0.5, 1.5), (3.5, 1.5)]
+    shapes = [
+        {"type": "MultiLineString", "coordinates": [line, line]},
+        {"type": "LineString", "coordinates": line + [(0.5, 1.5)]},
+        {"type": "GeometryCollection", "geometries": [{"type": "LineString", "coordinates": line}] * 2},
+        {"type": "MultiPoint", "coordinates": [(1.5, 1.5), (1.5, 1.5)]},
+    ]
+    got = rastrum.rasterize(shapes, (3, 4), merge_alg="add", all_touched=all_touched, dtype="uint8")
+    want = burn_reference([(g, 1) for g in shapes], (3, 4), (1.0, 0.0, 0.0, 0.0, 1.0, 0.0), "uint8",
+                          merge="add", all_touched=all_touched)
+    assert np.array_equal(got, want)
+    assert got[1].tolist() == [4, 6, 4, 4]
+    try:
+        rio_rasterize, MergeAlg, _ = _rasterio()
+    except pytest.skip.Exception:
+        return
+    assert np.array_equal(got, rio_rasterize(shapes, (3, 4), merge_alg=MergeAlg.add, all_touched=all_touched,
+                                             dtype="uint8"))

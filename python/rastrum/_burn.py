@@ -158,11 +158,15 @@ def _polygons(target, px, ring_sizes, part_rings, values, merge, boundary, rule)
     _core._check(result)
 
 
-def burn(target, px, ring_sizes, part_rings, kind, values, feature, merge, all_touched, rule, progress):
-    """Burn every part in order (see the module's docstring)."""
+def burn(target, px, ring_sizes, part_rings, kind, values, feature, geom, merge, all_touched, rule,
+         progress):
+    """Burn every part in order (see the module's docstring).  feature: the
+    index in shapes of each part (for progress); geom: the geometry it
+    belongs to (a collection's members are geometries of their own)."""
     if not (target.flags.aligned and target.strides[1] == target.itemsize and target.strides[0] > 0):
         work = np.ascontiguousarray(target)  # a transposed or reversed view: burn a copy
-        burn(work, px, ring_sizes, part_rings, kind, values, feature, merge, all_touched, rule, progress)
+        burn(work, px, ring_sizes, part_rings, kind, values, feature, geom, merge, all_touched, rule,
+             progress)
         target[...] = work
         return
     h, w = target.shape
@@ -171,12 +175,12 @@ def burn(target, px, ring_sizes, part_rings, kind, values, feature, merge, all_t
         # each): "add" then burns a pixel once per geometry, as GDAL does.
         line = kind == _KIND_LINE
         same = np.zeros(len(kind), bool)
-        same[1:] = line[1:] & line[:-1] & (feature[1:] == feature[:-1])
+        same[1:] = line[1:] & line[:-1] & (geom[1:] == geom[:-1])
         if same.any():
             keep = ~same
             group = np.cumsum(keep) - 1
             part_rings = np.bincount(group, weights=part_rings).astype(np.int64)
-            kind, feature = kind[keep], feature[keep]
+            kind, feature, geom = kind[keep], feature[keep], geom[keep]
             values = values[keep]
     n = len(part_rings)
     ring_start = np.concatenate([[0], np.cumsum(part_rings)])
@@ -202,7 +206,7 @@ def burn(target, px, ring_sizes, part_rings, kind, values, feature, merge, all_t
             # One geometry's lines (a MultiLineString) or points together:
             # in "add", GDAL burns a line's pixel once per geometry, a
             # point each time.
-            while q < n and kind[q] == kind[p] and feature[q] == feature[p]:
+            while q < n and kind[q] == kind[p] and geom[q] == geom[p]:
                 q += 1
             rows, cols = [], []
             for part in range(p, q):

@@ -179,6 +179,8 @@ class _Flat:
         self.part_rings = []
         self.kind = []
         self.feature = []
+        self.geom = []  # which geometry: a collection's members are geometries
+        self.ngeoms = 0
 
 
 def _position_list(coords, what, need):
@@ -229,6 +231,8 @@ def _add_geometry(flat, geom, index, depth=0):
     coords = geom.get("coordinates")
     if coords is None:
         raise InputError("%s: %s without 'coordinates'" % (what, gtype))
+    flat.ngeoms += 1
+    before = len(flat.kind)
     try:
         coords = list(coords)
     except TypeError:
@@ -271,6 +275,7 @@ def _add_geometry(flat, geom, index, depth=0):
             flat.part_rings.append(1)
             flat.kind.append(_KIND_POINT)
             flat.feature.append(index)
+    flat.geom += [flat.ngeoms] * (len(flat.kind) - before)
 
 
 def _shapely_parts(geoms, index0=0):
@@ -285,12 +290,14 @@ def _shapely_parts(geoms, index0=0):
         k = int(np.flatnonzero(types < 0)[0])
         raise InputError("shapes: feature %d is None, not a geometry" % (k + index0))
     parts, pidx = geoms, np.arange(len(geoms))
+    gid = pidx  # the geometry a part belongs to: a collection's members are geometries
     t = types
     bad = np.zeros(len(geoms), bool)
     while (t >= 4).any():  # multi-geometries and collections: their parts, in order
         bad[pidx[(t >= 4) & (shapely.get_num_geometries(parts) == 0)]] = True  # an empty one
         parts, sub = shapely.get_parts(parts, return_index=True)
         pidx = pidx[sub]
+        gid = np.where(t[sub] == 7, gid.max() + 1 + np.arange(len(sub)), gid[sub])
         t = shapely.get_type_id(parts)
     unknown = t > 3
     if unknown.any():
@@ -317,7 +324,7 @@ def _shapely_parts(geoms, index0=0):
     if bad.any():
         k = int(np.flatnonzero(bad)[0])
         raise InputError("shapes: feature %d: empty %s" % (k + index0, geoms[k].geom_type))
-    return xy, ring_sizes, part_rings, kind, pidx + index0
+    return xy, ring_sizes, part_rings, kind, pidx + index0, gid
 
 
 def _is_shapely(g):
@@ -326,7 +333,9 @@ def _is_shapely(g):
 
 
 def _flatten(items, index0=0):
-    """(xy, ring_sizes, part_rings, kind, feature) of a list of geometries."""
+    """(xy, ring_sizes, part_rings, kind, feature, geometry) of a list of
+    geometries (geometry: which geometry each part belongs to, for GDAL's
+    once-per-geometry rules)."""
     if items and _is_shapely(items[0]):
         arr = np.fromiter(items, dtype=object, count=len(items))
         try:
@@ -345,7 +354,7 @@ def _flatten(items, index0=0):
         _add_geometry(flat, g, k + index0)
     xy = np.concatenate(flat.xy) if flat.xy else np.zeros((0, 2))
     return (xy, np.asarray(flat.ring_sizes, np.int64), np.asarray(flat.part_rings, np.int64),
-            np.asarray(flat.kind, np.int8), np.asarray(flat.feature, np.int64))
+            np.asarray(flat.kind, np.int8), np.asarray(flat.feature, np.int64), np.asarray(flat.geom, np.int64))
 
 
 def _split_shapes(shapes, default_value, fill, values):
@@ -577,7 +586,7 @@ def rasterize(
     dt = target.dtype if not new else target[2]
     fill_v = _fits(fill, dt, "fill")
     vals = _values(vals, dt)
-    xy, ring_sizes, part_rings, kind, feature = _flatten(geoms)
+    xy, ring_sizes, part_rings, kind, feature, geom = _flatten(geoms)
     if len(xy):
         px = np.empty_like(xy)
         x, y = xy[:, 0], xy[:, 1]
@@ -596,7 +605,7 @@ def rasterize(
     part_values = vals[feature]
     bar = _Progress(progress, len(geoms))
     try:
-        _burn.burn(target, px, ring_sizes, part_rings, kind, part_values, feature, merge,
+        _burn.burn(target, px, ring_sizes, part_rings, kind, part_values, feature, geom, merge,
                    bool(all_touched), rule, bar)
     finally:
         bar.close()

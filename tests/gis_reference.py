@@ -48,33 +48,21 @@ def gdal_line(points, h, w):
     out = []
     n = len(points)
     for j in range(1, n):
-        ix, iy = math.floor(points[j - 1][0]), math.floor(points[j - 1][1])
-        ix1, iy1 = math.floor(points[j][0]), math.floor(points[j][1])
-        dx, dy = abs(ix1 - ix), abs(iy1 - iy)
-        sx = -1 if ix > ix1 else 1
-        sy = -1 if iy > iy1 else 1
-        if dx >= dy:
-            err = 2 * dy - dx
-            steps = dx if j != n - 1 else dx + 1
-            for _ in range(steps):
-                if 0 <= ix < w and 0 <= iy < h:
-                    out.append((iy, ix))
-                ix += sx
-                if err >= 0:
-                    iy += sy
-                    err -= 2 * dx
-                err += 2 * dy
-        else:
-            err = 2 * dx - dy
-            steps = dy if j != n - 1 else dy + 1
-            for _ in range(steps):
-                if 0 <= ix < w and 0 <= iy < h:
-                    out.append((iy, ix))
-                iy += sy
-                if err >= 0:
-                    ix += sx
-                    err -= 2 * dy
-                err += 2 * dx
+        p = [math.floor(points[j - 1][0]), math.floor(points[j - 1][1])]
+        end = [math.floor(points[j][0]), math.floor(points[j][1])]
+        d = [abs(end[0] - p[0]), abs(end[1] - p[1])]
+        step = [-1 if p[i] > end[i] else 1 for i in (0, 1)]
+        major = 0 if d[0] >= d[1] else 1  # x when |dx| >= |dy|
+        minor = 1 - major
+        err = 2 * d[minor] - d[major]
+        for _ in range(d[major] + (j == n - 1)):
+            if 0 <= p[0] < w and 0 <= p[1] < h:
+                out.append((p[1], p[0]))
+            p[major] += step[major]
+            if err >= 0:
+                p[minor] += step[minor]
+                err -= 2 * d[major]
+            err += 2 * d[minor]
     return out
 
 

@@ -447,6 +447,8 @@ BAD = [
     ("value NaN int", [(GOOD, NAN)], {"dtype": "int32"}, r"feature 0: value nan does not fit dtype int32"),
     ("value float32", [(GOOD, 1e300)], {"dtype": "float32"}, r"feature 0: value 1e\+300 does not fit dtype float32"),
     ("value str", [(GOOD, "5")], {}, r"feature 0: value '5' is not a real number"),
+    ("value huge int", [(GOOD, 1), (GOOD, 10 ** 400)], {"dtype": "float64"}, r"feature 1: value 1000.* does not fit dtype float64"),
+    ("value numpy", [(GOOD, np.int64(1)), (GOOD, np.int64(-1))], {"dtype": "uint8"}, r"feature 1: value -1 does not fit"),
     ("value bool", [(GOOD, True)], {}, r"feature 0: value True is not a real number"),
     ("default_value", [GOOD], {"default_value": -2147483648, "dtype": "uint8"}, r"feature 0: value -2147483648 does not fit"),
     ("fill", [GOOD], {"fill": 1000000, "dtype": "uint8"}, r"fill 1000000 does not fit dtype uint8"),

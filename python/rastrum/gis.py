@@ -123,7 +123,10 @@ def _real(v, what):
 def _fits(v, dt, what):
     """`v` as the Python number burnt into dtype `dt`, or InputError."""
     if dt.kind == "f":
-        v = float(v)
+        try:
+            v = float(v)
+        except OverflowError:
+            raise InputError("%s %r does not fit dtype %s" % (what, v, dt)) from None
         if math.isfinite(v) and dt.itemsize == 4 and abs(v) > float(np.finfo(np.float32).max):
             raise InputError("%s %r does not fit dtype float32" % (what, v))
         return v
@@ -143,7 +146,8 @@ def _values(vals, dt):
     if not vals:
         return np.zeros(0, dt)
     types = set(map(type, vals))
-    if types == {int} or types == {float}:
+    ints = all(issubclass(t, (int, np.integer)) and not issubclass(t, (bool, np.bool_)) for t in types)
+    if ints or all(issubclass(t, (float, np.floating)) for t in types):
         a = np.asarray(vals)
         if a.dtype.kind == "f":
             ok = np.isfinite(a) | (dt.kind == "f")

@@ -20,6 +20,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include "batch.h"
+#include "gdalline.h"
 #include "wide.h"
 
 typedef struct rastpy_burn {
@@ -227,4 +228,77 @@ long rastpy_burn_polygons64(void *out, int32_t height, int32_t width, int64_t ro
 {
     return rastpy_burn_any(out, height, width, row_stride, plane_stride, dtype, merge, values, xy,
                            npoints, ring_sizes, nrings, poly_rings, npolys, opts, failed, 1);
+}
+
+typedef struct rastpy_line_burn {
+    rastpy_burn b;
+    const uint32_t *part;
+    int64_t *buf, width; /* geometry by geometry: its pixels, row * width + col */
+    size_t n;
+} rastpy_line_burn;
+
+static void rastpy_line_pixel(void *user, size_t k, int64_t row, int64_t col)
+{
+    const rastpy_line_burn *l = (const rastpy_line_burn *)user;
+    l->b.put(&l->b, l->b.out + row * l->b.row_stride, l->part[k], (int32_t)col, (int32_t)col + 1);
+}
+
+static void rastpy_line_collect(void *user, size_t k, int64_t row, int64_t col)
+{
+    rastpy_line_burn *l = (rastpy_line_burn *)user;
+    (void)k;
+    l->buf[l->n++] = row * l->width + col;
+}
+
+static int rastpy_cmp_i64(const void *a, const void *b)
+{
+    const int64_t x = *(const int64_t *)a, y = *(const int64_t *)b;
+    return (x > y) - (x < y);
+}
+
+long rastpy_burn_gdal_lines(void *out, int32_t height, int32_t width, int64_t row_stride, int dtype,
+                            int merge, const void *values, const int64_t *ij, const int8_t *last,
+                            const uint32_t *part, const uint32_t *geom, size_t npoints)
+{
+    rastpy_line_burn l;
+    size_t s = 0, e, cap = 0, i;
+    if (dtype < RASTPY_DT_U8 || dtype > RASTPY_DT_F64 || merge < RASTPY_MERGE_REPLACE ||
+        merge > RASTPY_MERGE_ADD_SAT || !values)
+        return RAST_E_ARG;
+    l.b.out = (unsigned char *)out;
+    l.b.row_stride = row_stride;
+    l.b.plane_stride = 0;
+    l.b.values = (const unsigned char *)values;
+    l.b.put = rastpy_puts[dtype - 1][merge];
+    l.part = part;
+    l.buf = NULL;
+    l.width = width;
+    if (!geom) {
+        rastpy_gdal_line_walk(ij, last, npoints, height, width, rastpy_line_pixel, &l);
+        return 0;
+    }
+    /* Geometry by geometry: its pixels, sorted, each burnt once. */
+    for (s = 0; s < npoints; s = e) {
+        size_t need;
+        for (e = s + 1; e < npoints && geom[e] == geom[s];) e++;
+        need = rastpy_gdal_line_count(ij + 2 * s, last + s, e - s, height, width);
+        if (need > cap) {
+            int64_t *grown = (int64_t *)realloc(l.buf, need * sizeof *l.buf);
+            if (!grown) {
+                free(l.buf);
+                return RASTPY_E_NOMEM;
+            }
+            l.buf = grown;
+            cap = need;
+        }
+        l.n = 0;
+        rastpy_gdal_line_walk(ij + 2 * s, last + s, e - s, height, width, rastpy_line_collect, &l);
+        qsort(l.buf, l.n, sizeof *l.buf, rastpy_cmp_i64);
+        for (i = 0; i < l.n; i++)
+            if (i == 0 || l.buf[i] != l.buf[i - 1])
+                l.b.put(&l.b, l.b.out + l.buf[i] / width * row_stride, part[s],
+                        (int32_t)(l.buf[i] % width), (int32_t)(l.buf[i] % width) + 1);
+    }
+    free(l.buf);
+    return 0;
 }

@@ -35,6 +35,17 @@ long rastpy_burn_polygons64(void *out, int32_t height, int32_t width, int64_t ro
                             const double *xy, size_t npoints, const uint32_t *ring_sizes,
                             size_t nrings, const uint32_t *poly_rings, uint32_t npolys,
                             const rast_fill_opts *opts, uint32_t *failed);
+/* Lines burnt as GDAL burns them (gdalline.c's walk over ij, last and
+ * npoints), segment k's pixels with values[part[k]] through the span
+ * writers of rastpy_burn_polygons (dtype, merge as there; values not
+ * NULL).  geom NULL: pixel by pixel in order.  Else geom[k] numbers the
+ * geometry of position k (equal on consecutive positions of one
+ * geometry): each geometry burns each of its pixels once (GDAL's rule for
+ * "add"), the geometries in order.  Returns 0, RAST_E_ARG for a bad dtype
+ * or merge, or RASTPY_E_NOMEM. */
+long rastpy_burn_gdal_lines(void *out, int32_t height, int32_t width, int64_t row_stride, int dtype,
+                            int merge, const void *values, const int64_t *ij, const int8_t *last,
+                            const uint32_t *part, const uint32_t *geom, size_t npoints);
 /* cdef-end */
 
 #endif

@@ -2,8 +2,9 @@
 
 ``burn`` takes the parts of the shapes in order (polygons, lines, points)
 in float64 pixel coordinates and burns them into a 2-D numpy array.
-Polygons go to the C fillers; lines and points follow GDAL's rules
-(llrasterize.cpp), computed here in integers with numpy:
+Polygons go to the C fillers (rastpy_burn_polygons64); lines and points
+follow GDAL's rules (llrasterize.cpp), walked in integers by
+python/glue/gdalline.c and written by rastpy_burn_gdal_lines:
 
 * a point burns the pixel (floor(x), floor(y)) that contains it;
 * a line burns, for each segment, the Bresenham line between the pixels
@@ -44,95 +45,6 @@ _DTYPES = {
 }
 
 _KIND_POLYGON, _KIND_LINE, _KIND_POINT = 0, 1, 2
-
-
-# ---- merging ------------------------------------------------------------------------
-
-def _add(cur, v, dt):
-    """cur + v in dtype dt, as the glue's RASTPY_MERGE_ADD_SAT: integers
-    saturate at the dtype's limits (exactly), floats add in the dtype (v
-    rounded to it first)."""
-    if dt.kind == "f":
-        return cur + dt.type(v)
-    info = np.iinfo(dt)
-    if dt.itemsize < 8:
-        return np.clip(cur.astype(np.int64) + v, info.min, info.max).astype(dt)
-    if v >= 0:
-        return np.where(cur > info.max - v, info.max, cur + np.int64(v))
-    return np.where(cur < info.min - v, info.min, cur + np.int64(v))
-
-
-def burn_pixels(target, rows, cols, v, merge):
-    """Burn value v at (rows, cols) (in range; repeats count for "add")."""
-    if not len(rows):
-        return
-    if merge == "replace":
-        target[rows, cols] = v
-        return
-    h, w = target.shape
-    flat, counts = np.unique(rows.astype(np.int64) * w + cols, return_counts=True)
-    r, c = flat // w, flat % w
-    vals = target[r, c]
-    for k in range(int(counts.max())):
-        sel = counts > k
-        vals[sel] = _add(vals[sel], v, target.dtype)
-    target[r, c] = vals
-
-
-def _burn_mask(sub, m, v, merge):
-    if merge == "replace":
-        sub[m] = v
-    else:
-        sub[m] = _add(sub[m], v, sub.dtype)
-
-
-# ---- lines and points (GDAL's rules) ----------------------------------------------------
-
-def gdal_line_pixels(px, h, w):
-    """The pixels GDALdllImageLine burns for one line (an (N, 2) float64
-    array of pixel coordinates, N >= 2), inside (h, w), as (rows, cols);
-    a pixel may repeat (a line crossing itself)."""
-    ij = np.floor(px).astype(np.int64)
-    x0, y0 = ij[:-1, 0], ij[:-1, 1]
-    x1, y1 = ij[1:, 0], ij[1:, 1]
-    last = np.zeros(len(x0), np.int64)
-    last[-1] = 1
-    dx, dy = np.abs(x1 - x0), np.abs(y1 - y0)
-    xmaj = dx >= dy
-    dmaj = np.where(xmaj, dx, dy)
-    dmin = np.where(xmaj, dy, dx)
-    m0 = np.where(xmaj, x0, y0)
-    n0 = np.where(xmaj, y0, x0)
-    smaj = np.where(xmaj, np.where(x0 > x1, -1, 1), np.where(y0 > y1, -1, 1))
-    smin = np.where(xmaj, np.where(y0 > y1, -1, 1), np.where(x0 > x1, -1, 1))
-    count = dmaj + last
-    dim = np.where(xmaj, w, h)
-    # Only the steps whose major coordinate lies in the raster: at most
-    # the raster's side per segment, however long the segment.
-    k0 = np.where(smaj > 0, np.maximum(0, -m0), np.maximum(0, m0 - dim + 1))
-    k1 = np.where(smaj > 0, np.minimum(count, dim - m0), np.minimum(count, m0 + 1))
-    n = np.maximum(k1 - k0, 0)
-    total = int(n.sum())
-    if not total:
-        return np.zeros(0, np.int64), np.zeros(0, np.int64)
-    seg = np.repeat(np.arange(len(n)), n)
-    start = np.cumsum(n) - n
-    k = np.arange(total, dtype=np.int64) - start[seg] + k0[seg]
-    a, b = dmaj[seg], dmin[seg]
-    off = (2 * k * b + a) // np.maximum(2 * a, 1)
-    major = m0[seg] + smaj[seg] * k
-    minor = n0[seg] + smin[seg] * off
-    xm = xmaj[seg]
-    cols = np.where(xm, major, minor)
-    rows = np.where(xm, minor, major)
-    keep = (cols >= 0) & (cols < w) & (rows >= 0) & (rows < h)
-    return rows[keep], cols[keep]
-
-
-def point_pixels(px, h, w):
-    ij = np.floor(px).astype(np.int64)
-    keep = (ij[:, 0] >= 0) & (ij[:, 0] < w) & (ij[:, 1] >= 0) & (ij[:, 1] < h)
-    return ij[keep, 1], ij[keep, 0]
 
 
 # ---- polygons --------------------------------------------------------------------------------
@@ -203,24 +115,55 @@ def burn(target, px, ring_sizes, part_rings, kind, values, feature, geom, merge,
                 sub_px, sub_sizes = _there_and_back(sub_px, sub_sizes, kind[p:q], sub_rings)
             _polygons(target, sub_px, sub_sizes, sub_rings, values[p:q], merge, boundary, rule)
         else:
-            # One geometry's lines (a MultiLineString) or points together:
-            # in "add", GDAL burns a line's pixel once per geometry, a
-            # point each time.
-            while q < n and kind[q] == kind[p] and geom[q] == geom[p]:
+            while q < n and not polyish[q] and q - p < chunk:
                 q += 1
-            rows, cols = [], []
-            for part in range(p, q):
-                a, b = pt_start[ring_start[part]], pt_start[ring_start[part + 1]]
-                rc = (point_pixels if kind[p] == _KIND_POINT else gdal_line_pixels)(px[a:b], h, w)
-                rows.append(rc[0])
-                cols.append(rc[1])
-            rows, cols = np.concatenate(rows), np.concatenate(cols)
-            if kind[p] == _KIND_LINE and merge == "add" and len(rows):
-                flat = np.unique(rows * w + cols)
-                rows, cols = flat // w, flat % w
-            burn_pixels(target, rows, cols, values[p], merge)
+            _lines_points(target, px, pt_start, ring_start, kind, values, geom, p, q, merge)
         p = q
         progress(int(feature[q - 1]) + 1 if q < n else progress.total)
+
+
+# ---- lines and points (GDAL's rules, python/glue/gdalline.c) ---------------------------
+
+def _lines_points(target, px, pt_start, ring_start, kind, values, geom, p, q, merge):
+    """Parts p..q-1 (lines and points) in one go: their pixels in order,
+    each with its part's value; in "add" a line geometry (a LineString, or
+    the lines of a MultiLineString) burns each pixel once, a point each
+    time, as GDAL does."""
+    h, w = target.shape
+    a = pt_start[ring_start[p]]
+    sub = px[a:pt_start[ring_start[q]]]
+    sizes = pt_start[ring_start[p + 1:q + 1]] - pt_start[ring_start[p:q]]
+    part_of = np.repeat(np.arange(p, q), sizes)  # the part of every position
+    is_line = kind[part_of] == _KIND_LINE
+    ends = np.cumsum(sizes) - 1  # the last position of each part
+    last = np.where(is_line, 0, -1)
+    last[ends] = -1
+    last[ends[kind[p:q] == _KIND_LINE] - 1] = 1
+    # Straight into the raster in C, in order: a point is a one-pixel last
+    # segment (from itself to itself).
+    rep = np.where(is_line, 1, 2)
+    first = np.cumsum(rep) - rep
+    last2 = np.repeat(last, rep).astype(np.int8)
+    last2[first[~is_line]] = 1
+    ij = np.ascontiguousarray(np.floor(np.repeat(sub, rep, axis=0)), dtype=np.int64)
+    part = np.ascontiguousarray(np.repeat(part_of - p, rep), dtype=np.uint32)
+    vals = np.ascontiguousarray(values[p:q], dtype=target.dtype)
+    if merge == "add" and is_line.any():
+        # a line geometry burns a pixel once; each point is a geometry
+        g = np.where(kind[part_of] == _KIND_LINE, geom[part_of] - geom[p], 0)
+        g = np.where(is_line, g, -1 - np.arange(len(g)))  # points: each its own
+        g = np.ascontiguousarray(np.repeat(g, rep).astype(np.uint32))
+        geom_arg = ffi.from_buffer("uint32_t[]", g)
+    else:
+        geom_arg = ffi.NULL
+    result = lib.rastpy_burn_gdal_lines(
+        ffi.cast("void *", target.__array_interface__["data"][0]), h, w, target.strides[0],
+        _DTYPES[target.dtype.name], _MERGES[merge], ffi.from_buffer(vals),
+        ffi.from_buffer("int64_t[]", ij), ffi.from_buffer("int8_t[]", last2),
+        ffi.from_buffer("uint32_t[]", part), geom_arg, len(ij))
+    if result == lib.RASTPY_E_NOMEM:
+        raise MemoryError("rastrum: no memory for the pixels of a line")
+    _core._check(result)
 
 
 def _there_and_back(px, sizes, kinds, part_rings):

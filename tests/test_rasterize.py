@@ -583,3 +583,16 @@ def test_add_counts_a_line_once_per_geometry(all_touched):
         return
     assert np.array_equal(got, rio_rasterize(shapes, (3, 4), merge_alg=MergeAlg.add, all_touched=all_touched,
                                              dtype="uint8"))
+
+
+def test_long_lines_cross_the_raster():
+    """Segments 10^8 px long: only their steps inside the raster are
+    walked; the pixels are GDAL's (row 5 across; the diagonal)."""
+    lines = [{"type": "LineString", "coordinates": [(-1e8, 5.5), (1e8, 5.5)]},
+             {"type": "LineString", "coordinates": [(-1e8 + 0.5, -1e8 + 0.5), (1e8 + 0.5, 1e8 + 0.5)]}]
+    got = rastrum.rasterize([(lines[0], 1), (lines[1], 2)], (8, 9), dtype="uint8")
+    want = np.zeros((8, 9), np.uint8)
+    want[5, :] = 1
+    for i in range(8):
+        want[i, i] = 2
+    assert np.array_equal(got, want)

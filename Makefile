@@ -57,7 +57,7 @@ PY_CLEAN := rm -rf build/lib.* build/temp.* build/bdist.*
 C_TESTS := $(patsubst tests/c/%.c,build/tests/%,$(wildcard tests/c/test_*.c))
 SAN     := -fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer -g
 
-.PHONY: single test-single display-qemu fuzz-check fuzz-regress display-example valgrind valgrind-py firmware-check cross-check all lib test test-c test-install test-py demo asan asan-c asan-py strict install uninstall example clean
+.PHONY: bench-precision bench-precision-callgrind single test-single display-qemu fuzz-check fuzz-regress display-example valgrind valgrind-py firmware-check cross-check all lib test test-c test-install test-py demo asan asan-c asan-py strict install uninstall example clean
 
 all: lib
 lib: build/librastrum.a build/librastrum.so
@@ -193,6 +193,20 @@ test-single: $(SINGLE_TESTS)
 # machine's.
 display-qemu: single display-example
 	@tools/qemu-m/run.sh build/qemu-m
+
+# ---- the 64-bit vertex path's cost (issue 13) ---------------------------------
+# The same polygons through the int32 path (S = 8) and the int64 path (S = 8,
+# 24, 32), medians side by side in one run; then, with callgrind, the
+# instruction counts of one round (repeatable where timings are not).
+ROUNDS ?= 31
+build/bench_precision: bench/bench_precision.c build/librastrum.a
+	@$(CC) $(WARN) -O2 -Icsrc/include $< build/librastrum.a -o $@
+
+bench-precision: build/bench_precision
+	@./build/bench_precision $(ROUNDS)
+
+bench-precision-callgrind: build/bench_precision
+	@tools/callgrind-precision.sh build/bench_precision
 
 # ---- bare metal --------------------------------------------------------------
 firmware-check: single

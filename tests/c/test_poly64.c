@@ -66,7 +66,7 @@ static int ref_winding64(const rast_point64 *pts, const uint32_t *sizes, uint32_
     return w;
 }
 
-static unsigned char img_a[H][W], img_b[H][W];
+static unsigned char img_a[H][W], img_b[H][W], img_c[H][W];
 static long inside_seen, outside_seen; /* the reference cases are not all empty */
 
 static rast_fill_opts opts_of(int s, int rule, int center, int boundary)
@@ -354,7 +354,6 @@ static void test_errors(void)
 /* The band renderer: a scene of 64-bit polygons (both rules, both
  * boundary modes) against the direct fills, band heights 1, 3, 40; and
  * the spans call against the target call. */
-static unsigned char img_c[H][W];
 static uint32_t span_count;
 static void span_paint(void *user, const rast_prim *prim, int32_t y, int32_t x0, int32_t x1)
 {
@@ -424,6 +423,95 @@ static void test_bands(void)
     CHECK(span_count > 0);
 }
 
+/* The batch: rast_fill_polygons64_spans equals each polygon's own spans
+ * call, in order; rast_fill_bounds64 holds every pixel of its polygon; a
+ * bad polygon is named by *failed before any span. */
+typedef struct {
+    unsigned char (*img)[W];
+    uint32_t spans;
+} batch_user;
+
+static void batch_span(void *user, uint32_t k, int32_t y, int32_t x0, int32_t x1)
+{
+    batch_user *u = (batch_user *)user;
+    memset(&u->img[y][x0], (int)(k + 1), (size_t)(x1 - x0));
+    u->spans++;
+}
+
+static unsigned char (*one_img)[W];
+static uint32_t one_k;
+static void one_span(void *user, int32_t y, int32_t x0, int32_t x1)
+{
+    (void)user;
+    memset(&one_img[y][x0], (int)(one_k + 1), (size_t)(x1 - x0));
+}
+
+static void test_batch64(void)
+{
+    static rast_point64 pts[8][MAXP];
+    static uint32_t sizes[8][4];
+    rast_polygon64 polys[8];
+    rast_rect clip = {0, 0, W, H}, b;
+    int rep, outside = 0, same = 0;
+    uint32_t k, failed;
+    for (rep = 0; rep < 40; rep++) {
+        int s = (int)(rng() % 33);
+        int64_t unit = (int64_t)1 << s;
+        rast_fill_opts o = opts_of(s, rep & 1, 1, (rep >> 1) & 1 ? RAST_BOUNDARY_CONSERVATIVE : 0);
+        batch_user u;
+        size_t need;
+        for (k = 0; k < 8; k++) {
+            uint32_t nr;
+            random_poly(pts[k], sizes[k], &nr, -3 * unit, (W + 3) * unit, -3 * unit, (H + 3) * unit);
+            polys[k].points = pts[k];
+            polys[k].ring_sizes = sizes[k];
+            polys[k].nrings = nr;
+        }
+        CHECK(rast_polygons64_scratch_size(polys, 8, &o, &clip, &need, &failed) == RAST_OK);
+        memset(img_a, 0, sizeof img_a);
+        u.img = img_a;
+        u.spans = 0;
+        CHECK(rast_fill_polygons64_spans(polys, 8, &o, &clip, batch_span, &u, scratch_mem, need,
+                                         &failed) == RAST_OK);
+        memset(img_b, 0, sizeof img_b);
+        one_img = img_b;
+        for (k = 0; k < 8; k++) {
+            int i, j;
+            one_k = k;
+            CHECK(rast_fill_polygon64_spans(&polys[k], &o, &clip, one_span, NULL, scratch_mem,
+                                            sizeof scratch_mem) == RAST_OK);
+            /* the bounds hold this polygon's pixels */
+            memset(img_c, 0, sizeof img_c);
+            one_img = img_c;
+            CHECK(rast_fill_polygon64_spans(&polys[k], &o, &clip, one_span, NULL, scratch_mem,
+                                            sizeof scratch_mem) == RAST_OK);
+            one_img = img_b;
+            CHECK(rast_fill_bounds64(&o, &polys[k], &clip, &b) == RAST_OK);
+            for (j = 0; j < H; j++)
+                for (i = 0; i < W; i++)
+                    if (img_c[j][i] && (i < b.x0 || i >= b.x1 || j < b.y0 || j >= b.y1)) outside++;
+        }
+        same += memcmp(img_a, img_b, sizeof img_a) == 0;
+        /* polygon 5 out of range: named, nothing drawn */
+        pts[5][0].x = RAST_COORD64_MAX(s) + 1;
+        memset(img_a, 0, sizeof img_a);
+        failed = 99;
+        u.spans = 0;
+        CHECK(rast_fill_polygons64_spans(polys, 8, &o, &clip, batch_span, &u, scratch_mem,
+                                         sizeof scratch_mem, &failed) == RAST_E_RANGE);
+        CHECK(failed == 5 && u.spans == 0);
+        CHECK(rast_fill_bounds64(&o, &polys[5], &clip, &b) == RAST_E_RANGE);
+    }
+    CHECK(same == 40);
+    CHECK(outside == 0);
+    {
+        rast_fill_opts o = opts_of(24, 0, 1, 0);
+        o.algorithm = RAST_ALGO_XSCAN;
+        CHECK(rast_fill_polygons64_spans(polys, 8, &o, &clip, batch_span, NULL, scratch_mem,
+                                         sizeof scratch_mem, &failed) == RAST_E_WIDE);
+    }
+}
+
 int main(void)
 {
     int s;
@@ -440,5 +528,6 @@ int main(void)
     test_vs32(check_count(400));
     test_errors();
     test_bands();
+    test_batch64();
     return check_report("test_poly64");
 }

@@ -139,6 +139,13 @@ static int diff_ref(const rast_point64 *pts, const uint32_t *sizes, uint32_t nri
     return bad;
 }
 
+/* v rounded down to a multiple of m > 0 (no shift of a negative value). */
+static int64_t down(int64_t v, int64_t m)
+{
+    int64_t r = v % m;
+    return v - (r < 0 ? r + m : r);
+}
+
 /* Random polygons near the window, at precision s, with vertices up to
  * `reach` pixels from it (so edges come from far away). */
 static void test_reference(int s, int cases)
@@ -153,8 +160,8 @@ static void test_reference(int s, int cases)
                                  -reach * px, (H + reach) * px), k;
         if (c % 5 == 4) /* vertices on sample points (centres and corners) */
             for (k = 0; k < n; k++) {
-                pts[k].x = (pts[k].x >> (s - 1)) << (s - 1);
-                pts[k].y = (pts[k].y >> (s - 1)) << (s - 1);
+                pts[k].x = down(pts[k].x, (int64_t)1 << (s - 1));
+                pts[k].y = down(pts[k].y, (int64_t)1 << (s - 1));
             }
         if (c % 7 == 6 && n >= 3) { /* a collinear point mid-edge */
             pts[1].x = pts[0].x + (pts[2].x - pts[0].x) / 2;

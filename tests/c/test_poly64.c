@@ -1,8 +1,8 @@
 /*
  * test_poly64.c - the 64-bit vertex path (rast_polygon64, issue 13).
  *
- *  - against a brute-force reference of DESIGN section 1 written here with
- *    128-bit cross-multiplication (ref_winding64), at S = 24, 28, 32 and
+ *  - against a brute-force reference of DESIGN section 1 with 128-bit
+ *    cross-multiplication (ref.h, ref_polygon64), at S = 20 .. 32 and
  *    at the ends of the range (+-RAST_COORD64_MAX(S)): random polygons in
  *    windows around the origin and around the corners of the range,
  *    slivers thinner than 2^-S pixel, vertices on sample points, collinear
@@ -23,13 +23,12 @@
 
 #define CHECK_RNG_SEED 13u
 #include "check.h"
+#include "ref.h"
 #include "rastrum.h"
 
 #define W 48
 #define H 40
 #define MAXP 64
-
-__extension__ typedef __int128 i128;
 
 static int64_t rnd64(int64_t lo, int64_t hi)
 {
@@ -37,33 +36,6 @@ static int64_t rnd64(int64_t lo, int64_t hi)
     v = ((uint64_t)rng() << 40) ^ ((uint64_t)rng() << 20) ^ rng();
     if (span == 0) return (int64_t)v;
     return lo + (int64_t)(v % span);
-}
-
-/* Winding number of sample (i, j) of a 64-bit polygon (DESIGN section 1),
- * by cross-multiplication in 128 bits. */
-static int ref_winding64(const rast_point64 *pts, const uint32_t *sizes, uint32_t nrings, int s,
-                         int center, int64_t i, int64_t j)
-{
-    i128 unit = (i128)2 << s, off = center ? ((i128)1 << s) : 0;
-    i128 xc = i * unit + off, yc = j * unit + off;
-    uint32_t k, v, base = 0;
-    int w = 0;
-    for (k = 0; k < nrings; base += sizes[k], k++) {
-        for (v = 0; v < sizes[k]; v++) {
-            rast_point64 a = pts[base + v], b = pts[base + (v + 1) % sizes[k]];
-            i128 x0 = 2 * (i128)a.x, y0 = 2 * (i128)a.y, x1 = 2 * (i128)b.x, y1 = 2 * (i128)b.y, t;
-            int dir = 1;
-            if (y0 == y1) continue;
-            if (y0 > y1) {
-                t = x0; x0 = x1; x1 = t;
-                t = y0; y0 = y1; y1 = t;
-                dir = -1;
-            }
-            if (!(y0 <= yc && yc < y1)) continue;
-            if ((xc - x0) * (y1 - y0) >= (yc - y0) * (x1 - x0)) w += dir;
-        }
-    }
-    return w;
 }
 
 static unsigned char img_a[H][W], img_b[H][W], img_c[H][W];
@@ -121,22 +93,33 @@ static uint32_t random_poly(rast_point64 *pts, uint32_t *sizes, uint32_t *nrings
     return n;
 }
 
-/* Compare the fill with the reference over the W x H window whose pixel
- * (0, 0) is pixel (0, 0) of the plane; returns the pixels that differ. */
-static int diff_ref(const rast_point64 *pts, const uint32_t *sizes, uint32_t nrings, int s,
-                    int rule, int center)
+/* Compare the fill with the reference (ref.h) over the W x H window whose
+ * pixel (0, 0) is pixel (0, 0) of the plane; returns the pixels that
+ * differ. */
+static int diff_ref_mode(const rast_point64 *pts, const uint32_t *sizes, uint32_t nrings, int s,
+                         int rule, int center, int boundary)
 {
-    rast_fill_opts o = opts_of(s, rule, center, RAST_BOUNDARY_EXACT);
+    rast_fill_opts o = opts_of(s, rule, center, boundary);
+    rast_polygon64 pg;
     int i, j, bad = 0;
+    pg.points = pts;
+    pg.ring_sizes = sizes;
+    pg.nrings = nrings;
     if (fill64(img_a, pts, sizes, nrings, &o) != RAST_OK) return -1;
     for (j = 0; j < H; j++)
         for (i = 0; i < W; i++) {
-            int w = ref_winding64(pts, sizes, nrings, s, center, i, j);
-            int in = rule == RAST_RULE_EVENODD ? (w & 1) != 0 : w != 0;
+            int in = ref_polygon64(&pg, &o, i, j);
             bad += in != img_a[j][i];
             if (in) inside_seen++; else outside_seen++;
         }
     return bad;
+}
+
+static int diff_ref(const rast_point64 *pts, const uint32_t *sizes, uint32_t nrings, int s,
+                    int rule, int center)
+{
+    return diff_ref_mode(pts, sizes, nrings, s, rule, center, RAST_BOUNDARY_EXACT) |
+           diff_ref_mode(pts, sizes, nrings, s, rule, center, RAST_BOUNDARY_CONSERVATIVE);
 }
 
 /* v rounded down to a multiple of m > 0 (no shift of a negative value). */

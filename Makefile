@@ -13,6 +13,9 @@
 #   make uninstall       the reverse
 #   make example         the pkg-config example (after make install)
 #   make display-example a 320x240 RGB565 display fed spans band by band (run by test-c)
+#   make single          build/single/rastrum.[ch]: the whole core in one file
+#   make test-single     the C tests against the single-file build
+#   make display-qemu    the display example on an emulated Cortex-M (qemu-system-arm)
 #   make fuzz-check      libFuzzer targets (clang): the corpus, then FUZZ_SECONDS=20 each
 #   make fuzz-regress    the fuzz targets over the corpus without libFuzzer (gcc, sanitizers)
 
@@ -54,7 +57,7 @@ PY_CLEAN := rm -rf build/lib.* build/temp.* build/bdist.*
 C_TESTS := $(patsubst tests/c/%.c,build/tests/%,$(wildcard tests/c/test_*.c))
 SAN     := -fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer -g
 
-.PHONY: fuzz-check fuzz-regress display-example valgrind valgrind-py firmware-check cross-check all lib test test-c test-install test-py demo asan asan-c asan-py strict install uninstall example clean
+.PHONY: bench-precision bench-precision-callgrind single test-single display-qemu fuzz-check fuzz-regress display-example valgrind valgrind-py firmware-check cross-check all lib test test-c test-install test-py demo asan asan-c asan-py strict install uninstall example clean
 
 all: lib
 lib: build/librastrum.a build/librastrum.so
@@ -164,8 +167,49 @@ valgrind-py:
 	  "$$($(PYTHON) -c 'import sys; print(sys.executable)')" -m pytest -q -p no:cacheprovider \
 	  -k "$(VALGRIND_PY_K)" $(VALGRIND_PY_TESTS)
 
+# ---- one file ------------------------------------------------------------------
+# build/single/rastrum.c and rastrum.h: the whole core as one translation
+# unit, generated from csrc/ (tools/single.py), for dropping into a firmware
+# build.  test-single builds it with the core's warnings under gcc and
+# clang and runs every C test against it instead of the library.
+SINGLE_TESTS := $(patsubst tests/c/%.c,build/single/tests/%,$(wildcard tests/c/test_*.c))
+
+single: build/single/rastrum.c
+build/single/rastrum.c: $(SRC) $(HDR) tools/single.py
+	@python3 tools/single.py build/single
+
+build/single/rastrum.o: build/single/rastrum.c
+	@for cc in gcc clang; do $$cc $(WARN) -O2 -c $< -o $@ || exit 1; done
+
+build/single/tests/%: tests/c/%.c build/single/rastrum.o tests/c/check.h tests/c/ref.h tests/c/scratch.h
+	@mkdir -p $(@D)
+	@$(CC) $(WARN) -Wno-conversion -O2 -Ibuild/single -Icsrc/src -Itests/c $< build/single/rastrum.o -o $@
+
+test-single: $(SINGLE_TESTS)
+	@for t in $(SINGLE_TESTS); do echo "== $$t (single-file build)"; ./$$t || exit 1; done
+
+# The display example on an emulated Cortex-M (qemu-system-arm, mps2-an385,
+# semihosting), from the single-file build; its frame hash must equal this
+# machine's.
+display-qemu: single display-example
+	@tools/qemu-m/run.sh build/qemu-m
+
+# ---- the 64-bit vertex path's cost (issue 13) ---------------------------------
+# The same polygons through the int32 path (S = 8) and the int64 path (S = 8,
+# 24, 32), medians side by side in one run; then, with callgrind, the
+# instruction counts of one round (repeatable where timings are not).
+ROUNDS ?= 31
+build/bench_precision: bench/bench_precision.c build/librastrum.a
+	@$(CC) $(WARN) -O2 -Icsrc/include $< build/librastrum.a -o $@
+
+bench-precision: build/bench_precision
+	@./build/bench_precision $(ROUNDS)
+
+bench-precision-callgrind: build/bench_precision
+	@tools/callgrind-precision.sh build/bench_precision
+
 # ---- bare metal --------------------------------------------------------------
-firmware-check:
+firmware-check: single
 	@tools/firmware-check.sh build/fw
 
 cross-check:

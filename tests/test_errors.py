@@ -37,8 +37,10 @@ BAD_RINGS = [
     ([np.zeros((3, 2, 1))], r"shape|\(N, ?2\)|dim"),
     ([(0, 0), (1, 1)], r"3|three|point|vert"),
     ([[(0, 0), (4, 0), (0, 4)], [(1, 1), (2, 2)]], r"3|three|point|vert"),
-    ([(0, 0), ((COORD_MAX + 1) / 256, 0), (0, 3)], r"range|limit|large"),
-    ([(0, 0), (3, 0), (0, -(COORD_MAX + 1) / 256)], r"range|limit|large"),
+    # polygon_mask's "aet" takes the 64-bit path past the 32-bit range:
+    # +-2**28 pixels at every subpixel_bits (tests/test_precision.py)
+    ([(0, 0), (2.0 ** 28, 0), (0, 3)], r"range|limit|large"),
+    ([(0, 0), (3, 0), (0, -2.0 ** 28)], r"range|limit|large"),
     ([(0, 0), (1e300, 0), (0, 3)], r"range|limit|large"),
 ]
 
@@ -58,11 +60,22 @@ def test_empty_rings_are_nothing():
 
 
 def test_range_depends_on_subpixel_bits():
+    # The 32-bit path (every algorithm but "aet", which goes on to the
+    # 64-bit path): |v| * 2**S below 2**27.
     v = 2.0 ** 27 / 2 ** 4              # fine at S=0, past the limit at S=4
     ring = [(0, 0), (v, 0), (0, 3)]
-    rastrum.polygon_mask(ring, SHAPE, subpixel_bits=0)
+    rastrum.polygon_mask(ring, SHAPE, subpixel_bits=0, algorithm="xscan")
     with raises_input_error(r"range|limit|large"):
-        rastrum.polygon_mask(ring, SHAPE, subpixel_bits=4)
+        rastrum.polygon_mask(ring, SHAPE, subpixel_bits=4, algorithm="xscan")
+    with raises_input_error(r"range|limit|large"):
+        rastrum.polygon_mask([(0, 0), ((COORD_MAX + 1) / 256, 0), (0, 3)], SHAPE, algorithm="xscan")
+    # "aet" goes on to 2**28 pixels whatever S is
+    rastrum.polygon_mask([(0, 0), ((COORD_MAX + 1) / 256, 0), (0, 3)], SHAPE, subpixel_bits=20)
+    with raises_input_error(r"range|limit|large"):
+        rastrum.polygon_mask([(0, 0), (2.0 ** 28, 0), (0, 3)], SHAPE, subpixel_bits=0)
+    # "aet" at S = 4 is the 64-bit path: the same pixels as at S = 0 here
+    assert np.array_equal(rastrum.polygon_mask(ring, SHAPE, subpixel_bits=4),
+                          rastrum.polygon_mask(ring, SHAPE, subpixel_bits=0))
 
 
 @pytest.mark.parametrize("shape", [
@@ -93,7 +106,7 @@ def test_unknown_algorithm(alg):
         rastrum.polygon_mask(TRI, SHAPE, algorithm=alg)
 
 
-@pytest.mark.parametrize("bits", [-1, 17, 100, 2.5, 8.0, "8", None])
+@pytest.mark.parametrize("bits", [-1, 33, 100, 2.5, 8.0, "8", None])
 def test_bad_subpixel_bits(bits):
     with raises_input_error(r"subpixel"):
         rastrum.polygon_mask(TRI, SHAPE, subpixel_bits=bits)
@@ -148,7 +161,8 @@ def test_bad_color(fmt, color):
 BAD_FILL_KWARGS = [
     (dict(rule="bogus"), r"rule"),
     (dict(algorithm="bogus"), r"algorithm"),
-    (dict(subpixel_bits=17), r"subpixel"),
+    (dict(subpixel_bits=33), r"subpixel"),
+    (dict(subpixel_bits=17, algorithm="xscan"), r"subpixel"),
     (dict(subpixel_bits=-1), r"subpixel"),
     (dict(sample_offset=0.25), r"offset"),
 ]

@@ -174,11 +174,14 @@ def test_at_range_limit(alg, rule, S):
 @pytest.mark.parametrize("alg,rule", CASES)
 def test_past_range_limit(alg, rule, S):
     g = 1 << S
+    # "aet" goes on to the 64-bit path past the 32-bit range: its limit is
+    # 2**(S+28) - 1 units (2**28 pixels) at every S
+    M = COORD_MAX if alg != "aet" else 2 ** (S + 28) - 1
     past = [
-        (COORD_MAX + 1) / g,            # one grid step past
-        -(COORD_MAX + 1) / g,
-        (COORD_MAX + 0.5) / g,          # tie rounds up past the limit
-        -(COORD_MAX + 0.75) / g,        # snaps to -(max + 1)
+        (M + 1) / g,            # one grid step past
+        -(M + 1) / g,
+        (M + 0.5) / g,          # tie rounds up past the limit
+        -(M + 0.75) / g,        # snaps to -(max + 1)
         1e12, -1e12, 1e300,
     ]
     for v in past:
@@ -188,7 +191,7 @@ def test_past_range_limit(alg, rule, S):
                 rastrum.polygon_mask(ring, (4, 4), rule=rule, algorithm=alg,
                                      subpixel_bits=S)
     # the last values that are still accepted
-    for v in ((COORD_MAX + 0.25) / g, -(COORD_MAX + 0.5) / g):
+    for v in ((M + 0.25) / g, -(M + 0.5) / g):
         ring = [(v, 0.0), (3.0, v), (0.0, 3.0)]
         check_equal(ring, (4, 4), rule=rule, algorithm=alg, subpixel_bits=S)
 

@@ -164,6 +164,21 @@ static inline void rast__aet_sweep(rast__edge *edges, rast__edge *aet, int32_t *
     }
 }
 
+/* The walk's tables out of the arena: the edge table and the AET (an edge
+ * record per vertex each) and the buckets of rows [row0, row1], cleared.
+ * 0 when the arena is too small. */
+static inline int rast__aet_tables(rast__arena *arena, uint32_t npoints, int32_t row0,
+                                   int32_t row1, rast__edge **edges, rast__edge **aet,
+                                   int32_t **bucket)
+{
+    *edges = (rast__edge *)rast__take(arena, (size_t)npoints * sizeof(rast__edge));
+    *aet = (rast__edge *)rast__take(arena, (size_t)npoints * sizeof(rast__edge));
+    *bucket = (int32_t *)rast__take(arena, ((size_t)(row1 - row0) + 1) * sizeof(int32_t));
+    if (!*edges || !*aet || !*bucket) return 0;
+    memset(*bucket, 0, ((size_t)(row1 - row0) + 1) * sizeof(int32_t));
+    return 1;
+}
+
 static inline rast_status rast__aet_walk(const rast_polygon *poly, uint32_t npoints,
                                          const rast__grid *g, rast_fill_rule rule,
                                          const rast_rect *clip, rast__arena *arena,
@@ -173,7 +188,7 @@ static inline rast_status rast__aet_walk(const rast_polygon *poly, uint32_t npoi
     const rast_point *pts = poly->points;
     rast__edge *edges, *aet;
     int32_t *bucket;
-    int32_t miny, maxy, row0, row1, j, nedges = 0;
+    int32_t miny, maxy, row0, row1, nedges = 0;
     uint32_t i, k, base;
     int64_t r;
 
@@ -191,12 +206,8 @@ static inline rast_status rast__aet_walk(const rast_polygon *poly, uint32_t npoi
     row1 = r < clip->y1 ? (int32_t)r : clip->y1;
     if (row0 >= row1) return RAST_OK;
 
-    edges = (rast__edge *)rast__take(arena, (size_t)npoints * sizeof(rast__edge));
-    aet = (rast__edge *)rast__take(arena, (size_t)npoints * sizeof(rast__edge));
-    bucket = (int32_t *)rast__take(arena, ((size_t)(row1 - row0) + 1) * sizeof(int32_t));
-    if (!edges || !aet || !bucket) return RAST_E_SCRATCH;
-
-    for (j = row0; j <= row1; j++) bucket[j - row0] = 0;
+    if (!rast__aet_tables(arena, npoints, row0, row1, &edges, &aet, &bucket))
+        return RAST_E_SCRATCH;
 
     /* The edge table, grouped by first visible row: set the edges up in
      * the AET's room (`next` holding each edge's index, see `src`), count

@@ -23,6 +23,17 @@ static rast_status rast__prim_need(const rast_prim *p, int32_t width, int32_t ro
 {
     uint64_t npoints = 0;
     uint32_t k;
+    /* 64-bit polygons outside the switch: a switch of four cases makes
+     * GCC's Thumb-1 code call a case-table helper (__gnu_thumb1_case_uqi)
+     * that firmware-check does not allow. */
+    if (p->kind == RAST_PRIM_POLYGON64) {
+        if (p->polygon64.nrings > 0 && !p->polygon64.ring_sizes) return RAST_E_NULL;
+        for (k = 0; k < p->polygon64.nrings; k++) {
+            npoints += p->polygon64.ring_sizes[k];
+            if (npoints > RAST_MAX_POINTS) return RAST_E_TOO_MANY;
+        }
+        return rast_scratch_size64(p->fill, (uint32_t)npoints, width, rows, need);
+    }
     switch (p->kind) {
     case RAST_PRIM_POLYGON:
         if (p->polygon.nrings > 0 && !p->polygon.ring_sizes) return RAST_E_NULL;
@@ -31,13 +42,6 @@ static rast_status rast__prim_need(const rast_prim *p, int32_t width, int32_t ro
             if (npoints > RAST_MAX_POINTS) return RAST_E_TOO_MANY;
         }
         return rast_scratch_size(p->fill, (uint32_t)npoints, width, rows, need);
-    case RAST_PRIM_POLYGON64:
-        if (p->polygon64.nrings > 0 && !p->polygon64.ring_sizes) return RAST_E_NULL;
-        for (k = 0; k < p->polygon64.nrings; k++) {
-            npoints += p->polygon64.ring_sizes[k];
-            if (npoints > RAST_MAX_POINTS) return RAST_E_TOO_MANY;
-        }
-        return rast_scratch_size64(p->fill, (uint32_t)npoints, width, rows, need);
     case RAST_PRIM_TRIANGLES:
         return rast_tri_scratch_size(p->tri, width, rows, need);
     case RAST_PRIM_POLYLINE:
@@ -101,12 +105,12 @@ static rast_status rast__prim_draw(rast__scene *s, const rast_prim *p, const ras
     if (s->target) {
         rast_target t = *s->target;
         t.clip = *band;
+        if (p->kind == RAST_PRIM_POLYGON64) /* (outside the switch: see rast__prim_need) */
+            return rast_fill_polygon64(&t, &p->polygon64, p->fill, p->pixel, s->scratch,
+                                       s->bytes);
         switch (p->kind) {
         case RAST_PRIM_POLYGON:
             return rast_fill_polygon(&t, &p->polygon, p->fill, p->pixel, s->scratch, s->bytes);
-        case RAST_PRIM_POLYGON64:
-            return rast_fill_polygon64(&t, &p->polygon64, p->fill, p->pixel, s->scratch,
-                                       s->bytes);
         case RAST_PRIM_TRIANGLES:
             return rast_fill_triangles(&t, p->points, p->count, p->tri, p->pixel, s->scratch,
                                        s->bytes);
@@ -117,13 +121,13 @@ static rast_status rast__prim_draw(rast__scene *s, const rast_prim *p, const ras
         }
     }
     s->prim = p;
+    if (p->kind == RAST_PRIM_POLYGON64)
+        return rast_fill_polygon64_spans(&p->polygon64, p->fill, band, rast__scene_span, s,
+                                         s->scratch, s->bytes);
     switch (p->kind) {
     case RAST_PRIM_POLYGON:
         return rast_fill_polygon_spans(&p->polygon, p->fill, band, rast__scene_span, s,
                                        s->scratch, s->bytes);
-    case RAST_PRIM_POLYGON64:
-        return rast_fill_polygon64_spans(&p->polygon64, p->fill, band, rast__scene_span, s,
-                                         s->scratch, s->bytes);
     case RAST_PRIM_TRIANGLES:
         return rast_fill_triangles_spans(p->points, p->count, p->tri, band, rast__scene_span, s,
                                          s->scratch, s->bytes);

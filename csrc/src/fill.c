@@ -62,10 +62,11 @@ rast_status rast_scratch_size(const rast_fill_opts *opts, uint32_t npoints,
 }
 
 /* Check the polygon, options and scratch for a clip; run the filler. */
-static rast_status rast__fill(const rast_polygon *poly, const rast_fill_opts *opts,
+static rast_status rast__fill(const void *polygon, const rast_fill_opts *opts,
                               const rast_rect *clip, rast__row_fn fn, void *user,
                               void *scratch, size_t scratch_bytes)
 {
+    const rast_polygon *poly = (const rast_polygon *)polygon;
     const rast__algo *al;
     rast__grid g;
     rast__sink sink;
@@ -99,10 +100,10 @@ static rast_status rast__fill(const rast_polygon *poly, const rast_fill_opts *op
     }
 }
 
-static rast_status rast__fill_target(const rast_target *target, const rast_polygon *polygon,
-                                     const rast_fill_opts *opts, const void *pixel,
-                                     const void *background, int opaque,
-                                     void *scratch, size_t scratch_bytes)
+rast_status rast__fill_target(const rast_target *target, const void *polygon,
+                              const rast_fill_opts *opts, const void *pixel,
+                              const void *background, int opaque, rast__fill_any_fn fill,
+                              void *scratch, size_t scratch_bytes)
 {
     rast__solid solid;
     rast__row_fn fn;
@@ -114,31 +115,14 @@ static rast_status rast__fill_target(const rast_target *target, const rast_polyg
     if (opaque && !background) return RAST_E_NULL;
     st = rast__solid_init(&solid, target, &clip, pixel, background, &fn);
     if (st != RAST_OK) return st;
-    st = rast__fill(polygon, opts, &clip, fn, &solid, scratch, scratch_bytes);
+    st = fill(polygon, opts, &clip, fn, &solid, scratch, scratch_bytes);
     if (st == RAST_OK && opaque && clip.x0 < clip.x1) rast__opaque_finish(&solid);
     return st;
 }
 
-rast_status rast_fill_polygon(const rast_target *target, const rast_polygon *polygon,
-                              const rast_fill_opts *opts, const void *pixel,
-                              void *scratch, size_t scratch_bytes)
-{
-    return rast__fill_target(target, polygon, opts, pixel, NULL, 0, scratch, scratch_bytes);
-}
-
-rast_status rast_fill_polygon_opaque(const rast_target *target, const rast_polygon *polygon,
-                                     const rast_fill_opts *opts, const void *pixel,
-                                     const void *background, void *scratch,
-                                     size_t scratch_bytes)
-{
-    return rast__fill_target(target, polygon, opts, pixel, background, 1, scratch, scratch_bytes);
-}
-
-rast_status rast_fill_polygon_spans(const rast_polygon *polygon,
-                                    const rast_fill_opts *opts,
-                                    const rast_rect *clip, rast_span_fn span,
-                                    void *user, void *scratch,
-                                    size_t scratch_bytes)
+rast_status rast__fill_spans(const void *polygon, const rast_fill_opts *opts,
+                             const rast_rect *clip, rast_span_fn span, void *user,
+                             rast__fill_any_fn fill, void *scratch, size_t scratch_bytes)
 {
     rast__user_spans u;
     rast_rect c;
@@ -148,7 +132,33 @@ rast_status rast_fill_polygon_spans(const rast_polygon *polygon,
     if (st != RAST_OK) return st;
     u.fn = span;
     u.user = user;
-    return rast__fill(polygon, opts, &c, rast__user_row, &u, scratch, scratch_bytes);
+    return fill(polygon, opts, &c, rast__user_row, &u, scratch, scratch_bytes);
+}
+
+rast_status rast_fill_polygon(const rast_target *target, const rast_polygon *polygon,
+                              const rast_fill_opts *opts, const void *pixel,
+                              void *scratch, size_t scratch_bytes)
+{
+    return rast__fill_target(target, polygon, opts, pixel, NULL, 0, rast__fill, scratch,
+                             scratch_bytes);
+}
+
+rast_status rast_fill_polygon_opaque(const rast_target *target, const rast_polygon *polygon,
+                                     const rast_fill_opts *opts, const void *pixel,
+                                     const void *background, void *scratch,
+                                     size_t scratch_bytes)
+{
+    return rast__fill_target(target, polygon, opts, pixel, background, 1, rast__fill, scratch,
+                             scratch_bytes);
+}
+
+rast_status rast_fill_polygon_spans(const rast_polygon *polygon,
+                                    const rast_fill_opts *opts,
+                                    const rast_rect *clip, rast_span_fn span,
+                                    void *user, void *scratch,
+                                    size_t scratch_bytes)
+{
+    return rast__fill_spans(polygon, opts, clip, span, user, rast__fill, scratch, scratch_bytes);
 }
 
 /* floor(v / 2^s) for a fixed-point coordinate, in pixels. */

@@ -79,4 +79,21 @@ rast_status rast__tri_fill(const rast_point *tris, uint32_t ntris, const rast_tr
                            const rast__solid *gray8, rast__tri_begin_fn begin,
                            void *scratch, size_t scratch_bytes);
 
+/* The polygon entry points' common part (fill.c), for 32-bit polygons
+ * (fill.c) and 64-bit ones (poly64.c): `fill` checks the polygon (a
+ * rast_polygon or rast_polygon64), options and scratch for a clip and runs
+ * the filler into the row painter.  rast__fill_target checks the target
+ * and paints `pixel` (with `opaque`, `background` elsewhere in the clip);
+ * rast__fill_spans hands the spans to a user callback. */
+typedef rast_status (*rast__fill_any_fn)(const void *polygon, const rast_fill_opts *opts,
+                                         const rast_rect *clip, rast__row_fn fn, void *user,
+                                         void *scratch, size_t scratch_bytes);
+rast_status rast__fill_target(const rast_target *target, const void *polygon,
+                              const rast_fill_opts *opts, const void *pixel,
+                              const void *background, int opaque, rast__fill_any_fn fill,
+                              void *scratch, size_t scratch_bytes);
+rast_status rast__fill_spans(const void *polygon, const rast_fill_opts *opts,
+                             const rast_rect *clip, rast_span_fn span, void *user,
+                             rast__fill_any_fn fill, void *scratch, size_t scratch_bytes);
+
 #endif /* RAST_PAINT_H */

@@ -189,7 +189,7 @@ static rast_status rast__aet64_fill(const rast_polygon64 *poly, uint32_t npoints
     rast__edge *edges, *aet;
     int32_t *bucket;
     int64_t miny, maxy, r;
-    int32_t row0, row1, j, nedges = 0;
+    int32_t row0, row1, nedges = 0;
     uint32_t i, k, base;
 
     if (npoints == 0) return RAST_OK;
@@ -204,11 +204,8 @@ static rast_status rast__aet64_fill(const rast_polygon64 *poly, uint32_t npoints
     row1 = r < clip->y1 ? (int32_t)r : clip->y1;
     if (row0 >= row1) return RAST_OK;
 
-    edges = (rast__edge *)rast__take(arena, (size_t)npoints * sizeof(rast__edge));
-    aet = (rast__edge *)rast__take(arena, (size_t)npoints * sizeof(rast__edge));
-    bucket = (int32_t *)rast__take(arena, ((size_t)(row1 - row0) + 1) * sizeof(int32_t));
-    if (!edges || !aet || !bucket) return RAST_E_SCRATCH;
-    for (j = row0; j <= row1; j++) bucket[j - row0] = 0;
+    if (!rast__aet_tables(arena, npoints, row0, row1, &edges, &aet, &bucket))
+        return RAST_E_SCRATCH;
 
     for (k = 0, base = 0; k < poly->nrings; base += poly->ring_sizes[k], k++) {
         uint32_t n = poly->ring_sizes[k];
@@ -226,10 +223,11 @@ static rast_status rast__aet64_fill(const rast_polygon64 *poly, uint32_t npoints
 }
 
 /* Check the polygon, options and scratch for a clip; run the filler. */
-static rast_status rast__fill64(const rast_polygon64 *poly, const rast_fill_opts *opts,
+static rast_status rast__fill64(const void *polygon, const rast_fill_opts *opts,
                                 const rast_rect *clip, rast__row_fn fn, void *user,
                                 void *scratch, size_t scratch_bytes)
 {
+    const rast_polygon64 *poly = (const rast_polygon64 *)polygon;
     rast__grid64 g;
     rast__sink sink;
     rast__arena arena;
@@ -262,31 +260,12 @@ static rast_status rast__fill64(const rast_polygon64 *poly, const rast_fill_opts
     }
 }
 
-static rast_status rast__fill64_target(const rast_target *target, const rast_polygon64 *polygon,
-                                       const rast_fill_opts *opts, const void *pixel,
-                                       const void *background, int opaque, void *scratch,
-                                       size_t scratch_bytes)
-{
-    rast__solid solid;
-    rast__row_fn fn;
-    rast_rect clip;
-    rast_status st;
-
-    st = rast__target_check(target, &clip);
-    if (st != RAST_OK) return st;
-    if (opaque && !background) return RAST_E_NULL;
-    st = rast__solid_init(&solid, target, &clip, pixel, background, &fn);
-    if (st != RAST_OK) return st;
-    st = rast__fill64(polygon, opts, &clip, fn, &solid, scratch, scratch_bytes);
-    if (st == RAST_OK && opaque && clip.x0 < clip.x1) rast__opaque_finish(&solid);
-    return st;
-}
-
 rast_status rast_fill_polygon64(const rast_target *target, const rast_polygon64 *polygon,
                                 const rast_fill_opts *opts, const void *pixel, void *scratch,
                                 size_t scratch_bytes)
 {
-    return rast__fill64_target(target, polygon, opts, pixel, NULL, 0, scratch, scratch_bytes);
+    return rast__fill_target(target, polygon, opts, pixel, NULL, 0, rast__fill64, scratch,
+                             scratch_bytes);
 }
 
 rast_status rast_fill_polygon64_opaque(const rast_target *target, const rast_polygon64 *polygon,
@@ -294,23 +273,16 @@ rast_status rast_fill_polygon64_opaque(const rast_target *target, const rast_pol
                                        const void *background, void *scratch,
                                        size_t scratch_bytes)
 {
-    return rast__fill64_target(target, polygon, opts, pixel, background, 1, scratch,
-                               scratch_bytes);
+    return rast__fill_target(target, polygon, opts, pixel, background, 1, rast__fill64, scratch,
+                             scratch_bytes);
 }
 
 rast_status rast_fill_polygon64_spans(const rast_polygon64 *polygon, const rast_fill_opts *opts,
                                       const rast_rect *clip, rast_span_fn span, void *user,
                                       void *scratch, size_t scratch_bytes)
 {
-    rast__user_spans u;
-    rast_rect c;
-    rast_status st;
-    if (!clip || !span) return RAST_E_NULL;
-    st = rast__span_clip(clip, &c);
-    if (st != RAST_OK) return st;
-    u.fn = span;
-    u.user = user;
-    return rast__fill64(polygon, opts, &c, rast__user_row, &u, scratch, scratch_bytes);
+    return rast__fill_spans(polygon, opts, clip, span, user, rast__fill64, scratch,
+                            scratch_bytes);
 }
 
 rast_status rast_fill_bounds64(const rast_fill_opts *opts, const rast_polygon64 *polygon,

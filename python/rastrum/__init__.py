@@ -52,8 +52,13 @@ def polygon_mask(rings, shape, *, rule="evenodd", algorithm="aet", subpixel_bits
     algorithm : str
         One of ``ALGORITHMS["polygon_mask"]``; all give the same pixels.
     subpixel_bits : int
-        Vertices are snapped to 1/2**subpixel_bits pixel (0..16), the only
-        approximation.  The coordinate range is +-(2**27 - 1) / 2**bits px.
+        Vertices are snapped to 1/2**subpixel_bits pixel (0..32), the only
+        approximation.  The coordinate range is +-(2**27 - 1) / 2**bits px
+        for the 32-bit vertex path; above 16 bits, or past that range, the
+        fill takes the 64-bit path (algorithm "aet", rounding "exact",
+        boundary "exact" or "conservative"), whose range is +-2**28 px at
+        every subpixel_bits, with the same pixels where both apply
+        (docs/precision.md).
     sample_offset : {0.5, 0}
         Where a pixel's sample point is: its centre (0.5) or its top-left
         corner (0, as OpenCV and the textbook).

@@ -1,8 +1,8 @@
 /*
  * test_poly64.c - the 64-bit vertex path (rast_polygon64, issue 13).
  *
- *  - against a brute-force reference of DESIGN section 1 written here with
- *    128-bit cross-multiplication (ref_winding64), at S = 24, 28, 32 and
+ *  - against a brute-force reference of DESIGN section 1 with 128-bit
+ *    cross-multiplication (ref.h, ref_polygon64), at S = 20 .. 32 and
  *    at the ends of the range (+-RAST_COORD64_MAX(S)): random polygons in
  *    windows around the origin and around the corners of the range,
  *    slivers thinner than 2^-S pixel, vertices on sample points, collinear
@@ -23,13 +23,12 @@
 
 #define CHECK_RNG_SEED 13u
 #include "check.h"
+#include "ref.h"
 #include "rastrum.h"
 
 #define W 48
 #define H 40
 #define MAXP 64
-
-__extension__ typedef __int128 i128;
 
 static int64_t rnd64(int64_t lo, int64_t hi)
 {
@@ -39,34 +38,7 @@ static int64_t rnd64(int64_t lo, int64_t hi)
     return lo + (int64_t)(v % span);
 }
 
-/* Winding number of sample (i, j) of a 64-bit polygon (DESIGN section 1),
- * by cross-multiplication in 128 bits. */
-static int ref_winding64(const rast_point64 *pts, const uint32_t *sizes, uint32_t nrings, int s,
-                         int center, int64_t i, int64_t j)
-{
-    i128 unit = (i128)2 << s, off = center ? ((i128)1 << s) : 0;
-    i128 xc = i * unit + off, yc = j * unit + off;
-    uint32_t k, v, base = 0;
-    int w = 0;
-    for (k = 0; k < nrings; base += sizes[k], k++) {
-        for (v = 0; v < sizes[k]; v++) {
-            rast_point64 a = pts[base + v], b = pts[base + (v + 1) % sizes[k]];
-            i128 x0 = 2 * (i128)a.x, y0 = 2 * (i128)a.y, x1 = 2 * (i128)b.x, y1 = 2 * (i128)b.y, t;
-            int dir = 1;
-            if (y0 == y1) continue;
-            if (y0 > y1) {
-                t = x0; x0 = x1; x1 = t;
-                t = y0; y0 = y1; y1 = t;
-                dir = -1;
-            }
-            if (!(y0 <= yc && yc < y1)) continue;
-            if ((xc - x0) * (y1 - y0) >= (yc - y0) * (x1 - x0)) w += dir;
-        }
-    }
-    return w;
-}
-
-static unsigned char img_a[H][W], img_b[H][W];
+static unsigned char img_a[H][W], img_b[H][W], img_c[H][W];
 static long inside_seen, outside_seen; /* the reference cases are not all empty */
 
 static rast_fill_opts opts_of(int s, int rule, int center, int boundary)
@@ -121,22 +93,40 @@ static uint32_t random_poly(rast_point64 *pts, uint32_t *sizes, uint32_t *nrings
     return n;
 }
 
-/* Compare the fill with the reference over the W x H window whose pixel
- * (0, 0) is pixel (0, 0) of the plane; returns the pixels that differ. */
-static int diff_ref(const rast_point64 *pts, const uint32_t *sizes, uint32_t nrings, int s,
-                    int rule, int center)
+/* Compare the fill with the reference (ref.h) over the W x H window whose
+ * pixel (0, 0) is pixel (0, 0) of the plane; returns the pixels that
+ * differ. */
+static int diff_ref_mode(const rast_point64 *pts, const uint32_t *sizes, uint32_t nrings, int s,
+                         int rule, int center, int boundary)
 {
-    rast_fill_opts o = opts_of(s, rule, center, RAST_BOUNDARY_EXACT);
+    rast_fill_opts o = opts_of(s, rule, center, boundary);
+    rast_polygon64 pg;
     int i, j, bad = 0;
+    pg.points = pts;
+    pg.ring_sizes = sizes;
+    pg.nrings = nrings;
     if (fill64(img_a, pts, sizes, nrings, &o) != RAST_OK) return -1;
     for (j = 0; j < H; j++)
         for (i = 0; i < W; i++) {
-            int w = ref_winding64(pts, sizes, nrings, s, center, i, j);
-            int in = rule == RAST_RULE_EVENODD ? (w & 1) != 0 : w != 0;
+            int in = ref_polygon64(&pg, &o, i, j);
             bad += in != img_a[j][i];
             if (in) inside_seen++; else outside_seen++;
         }
     return bad;
+}
+
+static int diff_ref(const rast_point64 *pts, const uint32_t *sizes, uint32_t nrings, int s,
+                    int rule, int center)
+{
+    return diff_ref_mode(pts, sizes, nrings, s, rule, center, RAST_BOUNDARY_EXACT) |
+           diff_ref_mode(pts, sizes, nrings, s, rule, center, RAST_BOUNDARY_CONSERVATIVE);
+}
+
+/* v rounded down to a multiple of m > 0 (no shift of a negative value). */
+static int64_t down(int64_t v, int64_t m)
+{
+    int64_t r = v % m;
+    return v - (r < 0 ? r + m : r);
 }
 
 /* Random polygons near the window, at precision s, with vertices up to
@@ -153,8 +143,8 @@ static void test_reference(int s, int cases)
                                  -reach * px, (H + reach) * px), k;
         if (c % 5 == 4) /* vertices on sample points (centres and corners) */
             for (k = 0; k < n; k++) {
-                pts[k].x = (pts[k].x >> (s - 1)) << (s - 1);
-                pts[k].y = (pts[k].y >> (s - 1)) << (s - 1);
+                pts[k].x = down(pts[k].x, (int64_t)1 << (s - 1));
+                pts[k].y = down(pts[k].y, (int64_t)1 << (s - 1));
             }
         if (c % 7 == 6 && n >= 3) { /* a collinear point mid-edge */
             pts[1].x = pts[0].x + (pts[2].x - pts[0].x) / 2;
@@ -354,7 +344,6 @@ static void test_errors(void)
 /* The band renderer: a scene of 64-bit polygons (both rules, both
  * boundary modes) against the direct fills, band heights 1, 3, 40; and
  * the spans call against the target call. */
-static unsigned char img_c[H][W];
 static uint32_t span_count;
 static void span_paint(void *user, const rast_prim *prim, int32_t y, int32_t x0, int32_t x1)
 {
@@ -424,6 +413,95 @@ static void test_bands(void)
     CHECK(span_count > 0);
 }
 
+/* The batch: rast_fill_polygons64_spans equals each polygon's own spans
+ * call, in order; rast_fill_bounds64 holds every pixel of its polygon; a
+ * bad polygon is named by *failed before any span. */
+typedef struct {
+    unsigned char (*img)[W];
+    uint32_t spans;
+} batch_user;
+
+static void batch_span(void *user, uint32_t k, int32_t y, int32_t x0, int32_t x1)
+{
+    batch_user *u = (batch_user *)user;
+    memset(&u->img[y][x0], (int)(k + 1), (size_t)(x1 - x0));
+    u->spans++;
+}
+
+static unsigned char (*one_img)[W];
+static uint32_t one_k;
+static void one_span(void *user, int32_t y, int32_t x0, int32_t x1)
+{
+    (void)user;
+    memset(&one_img[y][x0], (int)(one_k + 1), (size_t)(x1 - x0));
+}
+
+static void test_batch64(void)
+{
+    static rast_point64 pts[8][MAXP];
+    static uint32_t sizes[8][4];
+    rast_polygon64 polys[8];
+    rast_rect clip = {0, 0, W, H}, b;
+    int rep, outside = 0, same = 0;
+    uint32_t k, failed;
+    for (rep = 0; rep < 40; rep++) {
+        int s = (int)(rng() % 33);
+        int64_t unit = (int64_t)1 << s;
+        rast_fill_opts o = opts_of(s, rep & 1, 1, (rep >> 1) & 1 ? RAST_BOUNDARY_CONSERVATIVE : 0);
+        batch_user u;
+        size_t need;
+        for (k = 0; k < 8; k++) {
+            uint32_t nr;
+            random_poly(pts[k], sizes[k], &nr, -3 * unit, (W + 3) * unit, -3 * unit, (H + 3) * unit);
+            polys[k].points = pts[k];
+            polys[k].ring_sizes = sizes[k];
+            polys[k].nrings = nr;
+        }
+        CHECK(rast_polygons64_scratch_size(polys, 8, &o, &clip, &need, &failed) == RAST_OK);
+        memset(img_a, 0, sizeof img_a);
+        u.img = img_a;
+        u.spans = 0;
+        CHECK(rast_fill_polygons64_spans(polys, 8, &o, &clip, batch_span, &u, scratch_mem, need,
+                                         &failed) == RAST_OK);
+        memset(img_b, 0, sizeof img_b);
+        one_img = img_b;
+        for (k = 0; k < 8; k++) {
+            int i, j;
+            one_k = k;
+            CHECK(rast_fill_polygon64_spans(&polys[k], &o, &clip, one_span, NULL, scratch_mem,
+                                            sizeof scratch_mem) == RAST_OK);
+            /* the bounds hold this polygon's pixels */
+            memset(img_c, 0, sizeof img_c);
+            one_img = img_c;
+            CHECK(rast_fill_polygon64_spans(&polys[k], &o, &clip, one_span, NULL, scratch_mem,
+                                            sizeof scratch_mem) == RAST_OK);
+            one_img = img_b;
+            CHECK(rast_fill_bounds64(&o, &polys[k], &clip, &b) == RAST_OK);
+            for (j = 0; j < H; j++)
+                for (i = 0; i < W; i++)
+                    if (img_c[j][i] && (i < b.x0 || i >= b.x1 || j < b.y0 || j >= b.y1)) outside++;
+        }
+        same += memcmp(img_a, img_b, sizeof img_a) == 0;
+        /* polygon 5 out of range: named, nothing drawn */
+        pts[5][0].x = RAST_COORD64_MAX(s) + 1;
+        memset(img_a, 0, sizeof img_a);
+        failed = 99;
+        u.spans = 0;
+        CHECK(rast_fill_polygons64_spans(polys, 8, &o, &clip, batch_span, &u, scratch_mem,
+                                         sizeof scratch_mem, &failed) == RAST_E_RANGE);
+        CHECK(failed == 5 && u.spans == 0);
+        CHECK(rast_fill_bounds64(&o, &polys[5], &clip, &b) == RAST_E_RANGE);
+    }
+    CHECK(same == 40);
+    CHECK(outside == 0);
+    {
+        rast_fill_opts o = opts_of(24, 0, 1, 0);
+        o.algorithm = RAST_ALGO_XSCAN;
+        CHECK(rast_fill_polygons64_spans(polys, 8, &o, &clip, batch_span, NULL, scratch_mem,
+                                         sizeof scratch_mem, &failed) == RAST_E_WIDE);
+    }
+}
+
 int main(void)
 {
     int s;
@@ -440,5 +518,6 @@ int main(void)
     test_vs32(check_count(400));
     test_errors();
     test_bands();
+    test_batch64();
     return check_report("test_poly64");
 }

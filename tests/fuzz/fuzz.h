@@ -258,40 +258,12 @@ static inline void fz_scratch_check(const fz_scratch *s)
  * < 2^29: the products fit int64_t). */
 static inline int fz_ref_touches(rast_point a, rast_point b, int s, int64_t i, int64_t j)
 {
-    int64_t lo_n = 0, lo_d = 1, hi_n = 1, hi_d = 1;
-    int lo_open = 0, hi_open = 0, axis;
-    for (axis = 0; axis < 2; axis++) {
-        int64_t p0 = axis ? a.y : a.x, d = (axis ? b.y : b.x) - p0, k = axis ? j : i;
-        int64_t L = k * ((int64_t)1 << s), H = (k + 1) * ((int64_t)1 << s), n0, n1;
-        if (d == 0) {
-            if (!(L < p0 && p0 < H)) return 0;
-            continue;
-        }
-        /* L < p0 + t d < H */
-        if (d > 0) {
-            n0 = L - p0;
-            n1 = H - p0;
-        } else {
-            d = -d;
-            n0 = p0 - H;
-            n1 = p0 - L;
-        }
-        if (n0 * lo_d >= lo_n * d) { /* a higher (or equal, open) lower bound */
-            lo_n = n0;
-            lo_d = d;
-            lo_open = 1;
-        }
-        if (n1 * hi_d <= hi_n * d) {
-            hi_n = n1;
-            hi_d = d;
-            hi_open = 1;
-        }
-    }
-    {
-        int64_t cmp = lo_n * hi_d - hi_n * lo_d;
-        if (cmp < 0) return 1;
-        return cmp == 0 && !lo_open && !hi_open;
-    }
+    rast_point64 a64, b64;
+    a64.x = a.x;
+    a64.y = a.y;
+    b64.x = b.x;
+    b64.y = b.y;
+    return ref_touches64(a64, b64, s, i, j); /* ref.h: the same test, in 128 bits */
 }
 
 /* Is pixel (i, j) in the fill of polygon pg with options o (any rule,

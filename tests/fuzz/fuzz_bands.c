@@ -51,6 +51,9 @@ static rast_status draw_full(fz_target *t, const rast_prim *p, uint32_t n)
         rast_status st;
         if (p[i].kind == RAST_PRIM_POLYGON)
             st = rast_fill_polygon(&t->t, &p[i].polygon, p[i].fill, p[i].pixel, big, sizeof big);
+        else if (p[i].kind == RAST_PRIM_POLYGON64)
+            st = rast_fill_polygon64(&t->t, &p[i].polygon64, p[i].fill, p[i].pixel, big,
+                                     sizeof big);
         else if (p[i].kind == RAST_PRIM_TRIANGLES)
             st = rast_fill_triangles(&t->t, p[i].points, p[i].count, p[i].tri, p[i].pixel, big,
                                      sizeof big);
@@ -70,6 +73,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     rast_tri_opts to[MAXPRIMS];
     rast_line_opts lo[MAXPRIMS];
     rast_point pts[MAXPRIMS][MAXPTS];
+    rast_point64 pts64[MAXPRIMS][MAXPTS];
     uint32_t rings[MAXPRIMS][3];
     unsigned char pixel[MAXPRIMS][4];
     rast_band_stats stats;
@@ -121,6 +125,14 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         p->polygon.nrings = 1 + (uint32_t)fz_below(&in, 3);
         if (p->polygon.nrings == 1) rings[i][0] = m;
         if (p->polygon.nrings == 2) rings[i][1] = m - m / 3;
+        /* RAST_PRIM_POLYGON64: the same polygon with 64-bit vertices */
+        for (k = 0; k < m; k++) {
+            pts64[i][k].x = pts[i][k].x;
+            pts64[i][k].y = pts[i][k].y;
+        }
+        p->polygon64.points = pts64[i];
+        p->polygon64.ring_sizes = rings[i];
+        p->polygon64.nrings = p->polygon.nrings;
     }
 
     fz_target_init(&ft, w, h, f, &clip);

@@ -602,12 +602,13 @@ def rasterize(
             _coordinate_error(xy, px, int(np.flatnonzero(bad)[0]), ring_sizes, part_rings, feature)
     else:
         px = xy
+    bar = _Progress(progress, len(geoms))
     if new:
         h, w, dt = target
-        # zeros: pages the kernel clears as they are first touched
-        target = np.zeros((h, w), dt) if fill_v == 0 else np.full((h, w), fill_v, dt)
+        # zeros (not -0.0): pages the kernel clears as they are first touched
+        zero = fill_v == 0 and math.copysign(1.0, fill_v) > 0
+        target = np.zeros((h, w), dt) if zero else np.full((h, w), fill_v, dt)
     part_values = vals[feature]
-    bar = _Progress(progress, len(geoms))
     try:
         _burn.burn(target, px, ring_sizes, part_rings, kind, part_values, feature, geom, merge,
                    bool(all_touched), rule, bar)

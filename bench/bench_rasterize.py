@@ -12,7 +12,9 @@ which a loaded shared machine disturbs less), and each output checked:
 * "holes": 100 large polygons with 3 holes each (64-vertex rings, up to
   700 px across) into 4096 x 4096 uint16 (target: faster than rasterio);
 * "coast": one 100,000-vertex polygon (a noisy closed coastline) into
-  4096 x 4096 uint8 (target: faster than rasterio).
+  4096 x 4096 uint8 (target: faster than rasterio);
+* "lines", "points": 5,000 random 5-vertex lines and 100,000 points into
+  4096 x 4096 uint16 (GDAL's own rules: checked equal to rasterio's).
 
 Check: rastrum's raster must equal the exact rule on the float64 pixel
 coordinates (the oracle of tests/oracle.py, unsnapped, burnt in order)
@@ -92,6 +94,16 @@ def scene_coast(rng, n=100000):
     return [(shapely.Polygon(_world(pix)), 1)], "uint8"
 
 
+def scene_lines(rng, n=5000):
+    lines = [shapely.LineString(_world(rng.uniform(0, N, (5, 2)))) for _ in range(n)]
+    return list(zip(lines, rng.integers(1, 60000, n).tolist())), "uint16"
+
+
+def scene_points(rng, n=100000):
+    pts = shapely.points(_world(rng.uniform(0, N, (n, 2))))
+    return list(zip(pts, rng.integers(1, 60000, n).tolist())), "uint16"
+
+
 def timed(fn, repeat):
     """(median wall seconds, median CPU seconds of this process, result).
     CPU time leaves out the time the shared machine gives to others."""
@@ -134,7 +146,9 @@ def main():
     rng = np.random.default_rng(13)
     scenes = [("small", scene_small(rng, 2000 if args.quick else 20000)),
               ("holes", scene_holes(rng)),
-              ("coast", scene_coast(rng))]
+              ("coast", scene_coast(rng)),
+              ("lines", scene_lines(rng, 500 if args.quick else 5000)),
+              ("points", scene_points(rng, 10000 if args.quick else 100000))]
     repeat = 1 if args.quick else args.repeat
     print("rastrum.rasterize vs rasterio.features.rasterize, %dx%d, median of %d" % (N, N, repeat))
     print("%-6s %8s %16s %16s %12s %14s %14s" % ("scene", "shapes", "rastrum s", "rasterio s",
@@ -149,7 +163,9 @@ def main():
             b = None
         off_r = off_g = "-"
         if not args.no_check:
-            if name == "small":
+            if name in ("lines", "points"):
+                pass  # GDAL's rule itself: the check is rastrum == rasterio (below)
+            elif name == "small":
                 # A sample of polygons, each alone: the exact rule against
                 # each library's raster of the same polygon alone.
                 sample = rng.choice(len(shapes), 300 if not args.quick else 50, replace=False)

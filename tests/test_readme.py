@@ -27,13 +27,21 @@ def test_c_example(tmp_path):
     cc = shutil.which(os.environ.get("CC", "cc"))
     if cc is None:
         pytest.fail("no C compiler to build the README's C example")
-    (code,) = blocks("c")
+    # The first C block is a whole program (make test-install also builds
+    # it against an installed library, through pkg-config and CMake).
+    code = blocks("c")[0]
     src = tmp_path / "readme.c"
-    src.write_text(code + "\nint main(void) { return draw(); }\n")
+    src.write_text(code)
     exe = tmp_path / "readme"
     sources = [os.path.join(ROOT, "csrc", "src", f) for f in sorted(os.listdir(os.path.join(ROOT, "csrc", "src"))) if f.endswith(".c")]
     subprocess.run(
-        [cc, "-std=c99", "-pedantic", "-Wall", "-Werror", "-I", os.path.join(ROOT, "csrc", "include"), "-I", os.path.join(ROOT, "csrc", "src"), str(src)] + sources + ["-o", str(exe)],
+        [cc, "-std=c99", "-pedantic", "-Wall", "-Wextra", "-Werror", "-I", os.path.join(ROOT, "csrc", "include"), "-I", os.path.join(ROOT, "csrc", "src"), str(src)] + sources + ["-o", str(exe)],
         check=True,
     )
-    subprocess.run([str(exe)], check=True)
+    pgm = tmp_path / "quad.pgm"
+    subprocess.run([str(exe), str(pgm)], check=True)
+    data = pgm.read_bytes()
+    header = b"P5 320 240 255\n"
+    assert data.startswith(header) and len(data) == len(header) + 320 * 240
+    pixels = data[len(header):]
+    assert set(pixels) == {0, 255} and 0 < pixels.count(255) < 320 * 240

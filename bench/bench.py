@@ -467,7 +467,7 @@ def run_scene(scene, rastrum, refs: References, peers, args, progress,
                                           shape))
         if canvas:
             # every polygon by its own call into one gray8 canvas
-            cv = rastrum.Canvas(w, h, format="gray8", background=0)
+            cv = rastrum.Canvas((h, w), format="gray8", background=0)
             fns = [functools.partial(cv.fill_polygon, rings, 1, rule=rule,
                                      algorithm=alg, subpixel_bits=s,
                                      sample_offset=o) for rings in polys]
@@ -537,7 +537,7 @@ def run_scene(scene, rastrum, refs: References, peers, args, progress,
                 continue
             fns, arrs = [], []
             for rings in polys:
-                cv = rastrum.Canvas(w, h, format="gray8", background=0)
+                cv = rastrum.Canvas((h, w), format="gray8", background=0)
                 fns.append(functools.partial(
                     cv.fill_polygon, rings, 1, rule="evenodd",
                     algorithm=alg, subpixel_bits=DEFAULT_S,

@@ -54,11 +54,11 @@ def error_table(rastrum, quick):
     for name, tris in scenes(quick).items():
         cols = vertex_colors(rng, len(tris), 3)
         covered = rastrum.triangles_mask(tris, (H, W))
-        ref = rastrum.Canvas(W, H, format="rgb888")
+        ref = rastrum.Canvas((H, W), format="rgb888")
         ref.fill_triangles(tris, vertex_colors=cols, precision="exact")
         exact = ref.array[covered].astype(np.int64)
         for F in F_VALUES:
-            c = rastrum.Canvas(W, H, format="rgb888")
+            c = rastrum.Canvas((H, W), format="rgb888")
             c.fill_triangles(tris, vertex_colors=cols, precision="fixed", fraction_bits=F)
             err = np.abs(c.array[covered].astype(np.int64) - exact)
             rows.append((name, F, int(err.max()), float(err.mean())))

@@ -12,11 +12,11 @@ from ._core import InputError, RastrumError
 from ._native import lib
 from .canvas import Canvas
 from .lines import line_pixels, point_in_triangle
-from .triangles import TRIANGLE_ALGORITHMS as _TRIANGLE_ALGORITHMS, triangles_mask
+from .triangles import TRIANGLE_ALGORITHMS as _TRIANGLE_ALGORITHMS, triangles_count, triangles_mask
 from . import scene
 from .scene import render_mesh
 
-__all__ = ["polygon_mask", "triangles_mask", "line_pixels", "point_in_triangle", "Canvas", "ALGORITHMS",
+__all__ = ["polygon_mask", "triangles_mask", "triangles_count", "line_pixels", "point_in_triangle", "Canvas", "ALGORITHMS",
            "RastrumError", "InputError", "__version__", "render_mesh", "scene"]
 
 _v = lib.rast_version_number()
@@ -30,6 +30,7 @@ ALGORITHMS = {
 ALGORITHMS["Canvas.fill_polygon"] = ALGORITHMS["polygon_mask"]
 # A triangle is the same under either rule.
 ALGORITHMS["triangles_mask"] = {name: ("evenodd", "nonzero") for name in _TRIANGLE_ALGORITHMS}
+ALGORITHMS["triangles_count"] = ALGORITHMS["triangles_mask"]
 ALGORITHMS["Canvas.fill_triangles"] = ALGORITHMS["triangles_mask"]
 # Lines have no fill rules.
 ALGORITHMS["Canvas.line"] = {"bresenham": (), "dda": ()}

@@ -369,7 +369,7 @@ def test_rgb565_packing_and_image():
     c.fill_triangles([[(0, 0), (3, 0), (0, 3)]], (255, 255, 255))
     assert c.array[0, 0] == 0xFFFF
     assert np.asarray(c.to_image())[0, 0].tolist() == [255, 255, 255]
-    wrapped = rastrum.Canvas.wrap(np.zeros((2, 5), np.uint16))
+    wrapped = rastrum.Canvas.wrap(np.zeros((2, 5), np.uint16), format="rgb565")
     assert wrapped.format == "rgb565"
     wrapped.fill_polygon([(0, 0), (5, 0), (5, 2)], (255, 0, 0), sample_offset=0)
     assert wrapped.array[0, 1] == 0xF800

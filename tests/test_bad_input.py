@@ -596,7 +596,7 @@ def test_render_mesh_good_input_draws():
     args = _mesh_args()
     rastrum.render_mesh(args["vertices"], args["faces"], canvas=canvas)
     assert not np.array_equal(big, before)
-    assert rastrum.render_mesh(args["vertices"], args["faces"], (8, 6), format="gray8").array.any()
+    assert rastrum.render_mesh(args["vertices"], args["faces"], shape=(6, 8), format="gray8").array.any()
 
 
 OBJ_ROWS = [

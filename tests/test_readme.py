@@ -1,7 +1,8 @@
 """The README's and the docs' examples run as written (docs that match the
 code): every ```python block of README.md and docs/*.md is executed, each
 in a fresh namespace and an empty directory; every ```c block that
-defines ``int draw(void)`` is compiled against the core with the strict
+defines ``int main`` or ``int draw(void)`` (then called by a main added
+here) is compiled against the core with the strict
 warnings and run.  Output and shell sessions go in ```text / ```console
 blocks, which are not run."""
 
@@ -68,14 +69,14 @@ def test_readme_example_writes_its_picture(tmp_path, monkeypatch):
     assert (tmp_path / "square.png").exists()
 
 
-@pytest.mark.parametrize("page, k, code", [b for b in blocks("c") if "int draw(void)" in b[2]],
+@pytest.mark.parametrize("page, k, code", [b for b in blocks("c") if "int draw(void)" in b[2] or "int main(" in b[2]],
                          ids=lambda v: str(v) if not isinstance(v, str) or len(v) < 40 else "code")
 def test_c_block(page, k, code, tmp_path):
     cc = shutil.which(os.environ.get("CC", "cc"))
     if cc is None:
         pytest.fail("no C compiler to build the docs' C examples")
     src = tmp_path / "example.c"
-    src.write_text(code + "\nint main(void) { return draw(); }\n")
+    src.write_text(code if "int main(" in code else code + "\nint main(void) { return draw(); }\n")
     exe = tmp_path / "example"
     sources = [os.path.join(ROOT, "csrc", "src", f) for f in sorted(os.listdir(os.path.join(ROOT, "csrc", "src")))
                if f.endswith(".c")]

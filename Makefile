@@ -11,10 +11,13 @@
 #   make valgrind-py     a quick profile of the Python tests under memcheck
 #   make firmware-check  the core for Cortex-M0 and rv32: no float, heap or stdio; .text sizes
 #   make cross-check     C tests on 32-bit ARM and big-endian MIPS (qemu), same pixels as x86
-#   make install         PREFIX=/usr/local DESTDIR= : header, libraries, rastrum.pc
+#   make install         PREFIX=/usr/local DESTDIR= : header, libraries, rastrum.pc, CMake package
 #   make uninstall       the reverse
 #   make example         the pkg-config example (after make install)
 #   make display-example a 320x240 RGB565 display fed spans band by band (run by test-c)
+#   make single          build/single/rastrum.[ch]: the whole core in one file
+#   make test-single     the C tests against the single-file build
+#   make display-qemu    the display example on an emulated Cortex-M (qemu-system-arm)
 #   make fuzz-check      libFuzzer targets (clang): the corpus, then FUZZ_SECONDS=20 each
 #   make fuzz-regress    the fuzz targets over the corpus without libFuzzer (gcc, sanitizers)
 
@@ -79,7 +82,7 @@ $(CURDIR)/.venv/bin/python:
 C_TESTS := $(patsubst tests/c/%.c,build/tests/%,$(wildcard tests/c/test_*.c))
 SAN     := -fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer -g
 
-.PHONY: bench docs fuzz-check fuzz-regress display-example valgrind valgrind-py firmware-check cross-check all lib test test-c test-install test-py demo asan asan-c asan-py strict install uninstall example clean
+.PHONY: bench docs single test-single display-qemu fuzz-check fuzz-regress display-example valgrind valgrind-py firmware-check cross-check all lib test test-c test-install test-py demo asan asan-c asan-py strict install uninstall example clean
 
 all: lib
 lib: build/librastrum.a build/librastrum.so
@@ -117,20 +120,11 @@ display-example: build/librastrum.a
 	@$(CC) $(WARN) -O2 -Icsrc/include examples/display_rgb565.c build/librastrum.a -o build/display_rgb565
 	@./build/display_rgb565 build/display_rgb565.ppm
 
-# Install into a stage, build the example through pkg-config, run it; and
-# check that DESTDIR is honoured.
-test-install:
-	@rm -rf build/stage build/destdir
-	@$(MAKE) --no-print-directory install PREFIX=$(CURDIR)/build/stage >/dev/null
-	@PKG_CONFIG_PATH=$(CURDIR)/build/stage/lib/pkgconfig $(CC) -std=c99 -pedantic -Wall -Werror \
-	  examples/draw_ppm.c $$(PKG_CONFIG_PATH=$(CURDIR)/build/stage/lib/pkgconfig pkg-config --cflags --libs rastrum) \
-	  -Wl,-rpath,$(CURDIR)/build/stage/lib -o build/draw_ppm
-	@./build/draw_ppm build/draw_ppm.ppm
-	@$(MAKE) --no-print-directory install DESTDIR=$(CURDIR)/build/destdir PREFIX=/usr >/dev/null
-	@test -f build/destdir/usr/include/rastrum.h && test -f build/destdir/usr/lib/pkgconfig/rastrum.pc \
-	  && test -f build/destdir/usr/lib/librastrum.a && echo "test-install: 2 passed, 0 failed"
-	@$(MAKE) --no-print-directory uninstall DESTDIR=$(CURDIR)/build/destdir PREFIX=/usr >/dev/null
-	@test ! -e build/destdir/usr/include/rastrum.h || (echo "uninstall left files"; exit 1)
+# The C packaging as a user meets it: the README's C example and install
+# steps as written (pkg-config and CMake), one .pc per PREFIX, DESTDIR,
+# uninstall (tools/test-install.sh).
+test-install: lib
+	@tools/test-install.sh
 
 test-py: | $(VENV)
 	$(PY_CLEAN)
@@ -220,8 +214,35 @@ valgrind-py: | $(VENV)
 	  "$$($(PYTHON) -c 'import sys; print(sys.executable)')" -m pytest -q -p no:cacheprovider \
 	  -k "$(VALGRIND_PY_K)" $(VALGRIND_PY_TESTS)
 
+# ---- one file ------------------------------------------------------------------
+# build/single/rastrum.c and rastrum.h: the whole core as one translation
+# unit, generated from csrc/ (tools/single.py), for dropping into a firmware
+# build.  test-single builds it with the core's warnings under gcc and
+# clang and runs every C test against it instead of the library.
+SINGLE_TESTS := $(patsubst tests/c/%.c,build/single/tests/%,$(wildcard tests/c/test_*.c))
+
+single: build/single/rastrum.c
+build/single/rastrum.c: $(SRC) $(HDR) tools/single.py
+	@python3 tools/single.py build/single
+
+build/single/rastrum.o: build/single/rastrum.c
+	@for cc in gcc clang; do $$cc $(WARN) -O2 -c $< -o $@ || exit 1; done
+
+build/single/tests/%: tests/c/%.c build/single/rastrum.o tests/c/check.h tests/c/ref.h tests/c/scratch.h
+	@mkdir -p $(@D)
+	@$(CC) $(WARN) -Wno-conversion -O2 -Ibuild/single -Icsrc/src -Itests/c $< build/single/rastrum.o -o $@
+
+test-single: $(SINGLE_TESTS)
+	@for t in $(SINGLE_TESTS); do echo "== $$t (single-file build)"; ./$$t || exit 1; done
+
+# The display example on an emulated Cortex-M (qemu-system-arm, mps2-an385,
+# semihosting), from the single-file build; its frame hash must equal this
+# machine's.
+display-qemu: single display-example
+	@tools/qemu-m/run.sh build/qemu-m
+
 # ---- bare metal --------------------------------------------------------------
-firmware-check:
+firmware-check: single
 	@tools/firmware-check.sh build/fw
 
 cross-check:
@@ -263,24 +284,32 @@ fuzz-check:
 	done
 
 # ---- install ----------------------------------------------------------------------
-build/rastrum.pc: rastrum.pc.in csrc/include/rastrum.h
-	@mkdir -p $(@D)
-	sed -e 's|@PREFIX@|$(PREFIX)|' -e 's|@LIBDIR@|$(LIBDIR)|' -e 's|@INCDIR@|$(INCDIR)|' \
-	    -e 's|@VERSION@|$(VERSION)|' $< > $@
+# The .pc file and the CMake package are written for the PREFIX, LIBDIR and
+# INCDIR of each install (never a file left from an earlier one, which
+# would point at the first PREFIX used).
+CMAKEDIR ?= $(LIBDIR)/cmake/rastrum
+SUBST = sed -e 's|@PREFIX@|$(PREFIX)|g' -e 's|@LIBDIR@|$(LIBDIR)|g' -e 's|@INCDIR@|$(INCDIR)|g' \
+            -e 's|@VERSION@|$(VERSION)|g' -e 's|@VERSION_MAJOR@|$(VERSION_MAJOR)|g' \
+            -e 's|@SONAME@|$(SONAME)|g'
 
-install: lib build/rastrum.pc
-	install -d $(DESTDIR)$(INCDIR) $(DESTDIR)$(LIBDIR)/pkgconfig
+install: lib
+	install -d $(DESTDIR)$(INCDIR) $(DESTDIR)$(LIBDIR)/pkgconfig $(DESTDIR)$(CMAKEDIR)
 	install -m 644 csrc/include/rastrum.h $(DESTDIR)$(INCDIR)/
 	install -m 644 build/librastrum.a $(DESTDIR)$(LIBDIR)/
 	install -m 755 build/librastrum.so.$(VERSION) $(DESTDIR)$(LIBDIR)/
 	ln -sf librastrum.so.$(VERSION) $(DESTDIR)$(LIBDIR)/$(SONAME)
 	ln -sf $(SONAME) $(DESTDIR)$(LIBDIR)/librastrum.so
-	install -m 644 build/rastrum.pc $(DESTDIR)$(LIBDIR)/pkgconfig/
+	$(SUBST) rastrum.pc.in > $(DESTDIR)$(LIBDIR)/pkgconfig/rastrum.pc
+	$(SUBST) tools/cmake/rastrum-config.cmake.in > $(DESTDIR)$(CMAKEDIR)/rastrum-config.cmake
+	$(SUBST) tools/cmake/rastrum-config-version.cmake.in > $(DESTDIR)$(CMAKEDIR)/rastrum-config-version.cmake
+	chmod 644 $(DESTDIR)$(LIBDIR)/pkgconfig/rastrum.pc $(DESTDIR)$(CMAKEDIR)/*.cmake
 
 uninstall:
 	rm -f $(DESTDIR)$(INCDIR)/rastrum.h $(DESTDIR)$(LIBDIR)/librastrum.a \
 	      $(DESTDIR)$(LIBDIR)/librastrum.so $(DESTDIR)$(LIBDIR)/$(SONAME) \
-	      $(DESTDIR)$(LIBDIR)/librastrum.so.$(VERSION) $(DESTDIR)$(LIBDIR)/pkgconfig/rastrum.pc
+	      $(DESTDIR)$(LIBDIR)/librastrum.so.$(VERSION) $(DESTDIR)$(LIBDIR)/pkgconfig/rastrum.pc \
+	      $(DESTDIR)$(CMAKEDIR)/rastrum-config.cmake $(DESTDIR)$(CMAKEDIR)/rastrum-config-version.cmake
+	-rmdir $(DESTDIR)$(CMAKEDIR) 2>/dev/null
 
 # Build the example through pkg-config, against an installed rastrum.
 example:

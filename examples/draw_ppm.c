@@ -25,7 +25,8 @@ static rast_status fill(const rast_target *t, const rast_point *pts, const uint3
                         uint32_t nrings, rast_fill_rule rule, const unsigned char rgb[3])
 {
     rast_polygon poly;
-    rast_fill_opts opts = {RAST_ALGO_AET, RAST_RULE_EVENODD, S, RAST_SAMPLE_CENTER};
+    rast_fill_opts opts = {.algorithm = RAST_ALGO_AET, .rule = RAST_RULE_EVENODD,
+                           .subpixel_bits = S, .sample = RAST_SAMPLE_CENTER};
     poly.points = pts;
     poly.ring_sizes = sizes;
     poly.nrings = nrings;

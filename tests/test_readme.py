@@ -85,4 +85,4 @@ def test_c_block(page, k, code, tmp_path):
          os.path.join(ROOT, "csrc", "src"), str(src)] + sources + ["-o", str(exe)],
         check=True,
     )
-    subprocess.run([str(exe)], check=True)
+    subprocess.run([str(exe)], check=True, cwd=tmp_path)

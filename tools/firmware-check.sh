@@ -40,6 +40,12 @@ for t in $(printf '%s\n' "$targets" | tr ' ' '~'); do
     printf '  %-14s %8d\n' "$(basename "$src")" "$text"
   done
   printf '  %-14s %8d\n' "core" "$total"
+  # The same core as one file (make single), as a firmware build drops it in.
+  if [ -f build/single/rastrum.c ]; then
+    # shellcheck disable=SC2086
+    $cc $common $flags -Ibuild/single -c build/single/rastrum.c -o "$out/$name/single.o"
+    printf '  %-14s %8d\n' "single file" "$($sz -A "$out/$name/single.o" | awk '$1 ~ /^\.text/ {s += $2} END {print s + 0}')"
+  fi
   # What the core as a whole needs from outside: undefined in some object,
   # defined in none.
   $nm --defined-only "$out/$name"/*.o | awk 'NF == 3 {print $3}' | sort -u > "$out/$name/defined"

@@ -474,6 +474,47 @@ RAST_API rast_status rast_fill_bounds(const rast_fill_opts *opts,
                                       const rast_rect *clip,
                                       rast_rect *bounds);
 
+/* ---- polygon batches ------------------------------------------------------
+ * Many polygons in one call, each with its own index (a GIS layer burnt
+ * value by value, the instances of a label image, N masks): polygons[k]
+ * for k = 0 .. n-1, all with the same `opts`, drawn in order.  Each
+ * polygon is drawn once, with the clip cut to its rast_fill_bounds, so the
+ * scratch is that of the largest polygon's own box (the mask algorithms)
+ * or edges (the others), never the clip's: memory grows with the batch's
+ * largest polygon and the visible rows of its box, not with the batch.
+ * The clip is a band or window as for rast_fill_polygon_spans: rendering a
+ * batch band by band (clip = the band) gives the pixels of rendering it
+ * whole.
+ *
+ * Errors, all before the first span: everything rast_fill_bounds and
+ * rast_fill_polygon_spans check, for every polygon; RAST_E_SCRATCH when a
+ * polygon's need exceeds scratch_bytes; RAST_E_NULL for polygons (n > 0),
+ * opts, clip, span; RAST_E_ALIGN for a misaligned scratch.  When `failed`
+ * is not NULL and the error belongs to one polygon, *failed is set to its
+ * index (else it is left untouched). */
+
+/* A span of polygon `index` in row y, columns x0 <= i < x1 (x0 < x1). */
+typedef void (*rast_batch_span_fn)(void *user, uint32_t index, int32_t y, int32_t x0,
+                                   int32_t x1);
+
+/* Scratch bytes with which rast_fill_polygons_spans draws the batch in
+ * `clip`: the largest rast_scratch_size of one polygon cut to its bounds.
+ * Errors as rast_fill_polygons_spans' checks (with *failed). */
+RAST_API rast_status rast_polygons_scratch_size(const rast_polygon *polygons, uint32_t n,
+                                                const rast_fill_opts *opts,
+                                                const rast_rect *clip, size_t *bytes,
+                                                uint32_t *failed);
+
+/* Draw the batch (see above): for k = 0 .. n-1, the spans polygon k gives
+ * in `clip` (as rast_fill_polygon_spans gives them: rows top to bottom, in
+ * each row increasing x), handed to `span` with k.  `scratch` aligned to
+ * RAST_SCRATCH_ALIGN, at least rast_polygons_scratch_size bytes. */
+RAST_API rast_status rast_fill_polygons_spans(const rast_polygon *polygons, uint32_t n,
+                                              const rast_fill_opts *opts,
+                                              const rast_rect *clip, rast_batch_span_fn span,
+                                              void *user, void *scratch, size_t scratch_bytes,
+                                              uint32_t *failed);
+
 /* ---- triangles --------------------------------------------------------------
  * A batch is `ntris` triangles, tris[3k], tris[3k+1], tris[3k+2], in fixed
  * point as polygon vertices (same units and range).  Each triangle owns

@@ -261,7 +261,7 @@ typedef struct rast__sink {
     int32_t y;        /* row of the gathered spans */
     int32_t n;        /* spans gathered */
     int32_t xs[2 * RAST__SINK_SPANS];
-    /* A fast path behind rast__sink_row, set by rast__sink_direct8 when
+    /* A fast path behind rast__rows_put, set by rast__sink_direct8 when
      * `fn` is the solid painter of a one-byte format: rows of pixels at
      * direct + y * stride, each run written by one memset in the
      * filler's loop instead of through `fn` (the same pixels, without an
@@ -382,16 +382,6 @@ static inline void rast__rows_emit(const rast__rows *o, unsigned char **row, int
 static inline unsigned char *rast__rows_at(const rast__rows *o, int32_t y, int uncut)
 {
     return uncut ? o->direct + (ptrdiff_t)y * o->stride : NULL;
-}
-
-/* For a filler with at most one run per row (a triangle): hand the run of
- * row y on at once, clipped, bypassing the gathering.  The sink must be
- * empty (flushed) and rows must still come in increasing order.  (A loop
- * over many rows does better with rast__rows.) */
-static inline void rast__sink_row(rast__sink *s, int32_t y, int32_t x0, int32_t x1)
-{
-    rast__rows o = rast__rows_of(s);
-    rast__rows_put(&o, y, x0, x1);
 }
 
 /* Saturating size arithmetic for the scratch functions: a clip of

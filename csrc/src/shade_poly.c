@@ -17,7 +17,7 @@
  * Magnitudes (poly.h's ranges: |coordinates| < 2^28, dy < 2^29):
  * |Q| < 2^59, P < 2^37, G < 2^89, |E| < 2^67, D < 2^118, and since c is a
  * convex combination of the corners for xs in [Xl, Xr) (a textbook
- * sample left of Xl is clamped apart, see rast__shade_span),
+ * sample left of Xl is clamped apart, see rast__poly_shade_span),
  * 0 <= c D <= 255 D < 2^126: all inside
  * the signed 128-bit integers of wide.h.  From one sample to the next the
  * numerator grows by T = unit dl E (|T| < 2^113), less than 256 D: the
@@ -124,7 +124,7 @@ static void rast__edge_at_row(const rast__shade_poly *s, int32_t k, int64_t yc, 
     }
 }
 
-static void rast__shade_span(void *user, int32_t row, const rast__edge *l, const rast__edge *r)
+static void rast__poly_shade_span(void *user, int32_t row, const rast__edge *l, const rast__edge *r)
 {
     const rast__shade_poly *s = (const rast__shade_poly *)user;
     const rast__grid *g = s->g;
@@ -317,6 +317,6 @@ rast_status rast_fill_polygon_gouraud(const rast_target *target, const rast_poly
     s.cx0 = clip.x0;
     s.cx1 = clip.x1;
     s.flat = shade->precision == RAST_PRECISION_FLAT;
-    return rast__aet_walk(polygon, npoints, &g, opts->rule, &clip, &arena, rast__shade_span,
+    return rast__aet_walk(polygon, npoints, &g, opts->rule, &clip, &arena, rast__poly_shade_span,
                           s.flat ? NULL : rast__shade_order, &s, src);
 }

@@ -100,7 +100,7 @@ rast_status rast__tri_fill(const rast_point *tris, uint32_t ntris, const rast_tr
     for (k = 0; k < ntris; k++) {
         const rast_point *t = tris + 3 * (size_t)k;
         if (begin && !begin(user, t, k, &g)) continue;
-        /* Fillers leave the sink empty (rast__sink_row, or a flush), so one
+        /* Fillers leave the sink empty (rast__rows_put, or a flush), so one
          * triangle's spans never merge with the next one's: COUNT16 counts
          * both. */
         arena.p = (unsigned char *)scratch;

@@ -72,7 +72,7 @@ __attribute__((target("avx"))) static size_t rastpy_snap_avx(const double *xy, s
  * mask checked once at the end (then the scalar loop finds the first bad
  * point).  A batch of 20,000 triangles snaps in a fraction of the scalar
  * loop's time. */
-static long rastpy_snap(const double *xy, size_t npoints, int s, int32_t *out)
+long rastpy_snap(const double *xy, size_t npoints, int s, int32_t *out)
 {
     size_t i = 0;
 #if defined(RASTPY_AVX)

@@ -16,6 +16,13 @@
 /* Out of memory in the glue (malloc failed); never a core status. */
 #define RASTPY_E_NOMEM (-1000)
 
+/* Snap 2 * npoints float64 coordinates to the 1/2^s grid:
+ * out = floor(xy * 2^s + 1/2) exactly.  Returns -1 when all are good (all
+ * of out written), else the index of the first point that is NaN, infinite
+ * or outside +-RAST_COORD_MAX after snapping.  (fill.c; for the other glue
+ * files, not for Python.) */
+long rastpy_snap(const double *xy, size_t npoints, int s, int32_t *out);
+
 /* cdef-begin */
 long rastpy_fill_polygon(const rast_target *target, const double *xy,
                          uint32_t npoints, const uint32_t *ring_sizes,

@@ -1,0 +1,32 @@
+/* batch.h - burning many polygons, each with its value, into one array
+ * (rastrum.rasterize, rastrum.masks, rastrum.labels): batch.c. */
+#ifndef RASTPY_BATCH_H
+#define RASTPY_BATCH_H
+
+#include "rastpy.h"
+
+/* Element types of the array burnt into (numpy's names). */
+#define RASTPY_DT_U8 1
+#define RASTPY_DT_I8 2
+#define RASTPY_DT_U16 3
+#define RASTPY_DT_I16 4
+#define RASTPY_DT_U32 5
+#define RASTPY_DT_I32 6
+#define RASTPY_DT_I64 7
+#define RASTPY_DT_U64 8
+#define RASTPY_DT_F32 9
+#define RASTPY_DT_F64 10
+/* How a value meets what is there: replace it, or add to it (integers
+ * wrap modulo 2^bits, as numpy's in-place add; floats add in IEEE). */
+#define RASTPY_MERGE_REPLACE 0
+#define RASTPY_MERGE_ADD 1
+
+/* cdef-begin */
+long rastpy_burn_polygons(void *out, int32_t height, int32_t width, int64_t row_stride,
+                          int64_t plane_stride, int dtype, int merge, const void *values,
+                          const double *xy, size_t npoints, const uint32_t *ring_sizes,
+                          size_t nrings, const uint32_t *poly_rings, uint32_t npolys,
+                          const rast_fill_opts *opts, uint32_t *failed);
+/* cdef-end */
+
+#endif

@@ -1,0 +1,94 @@
+"""Many polygons, each with its value, into one array in one C call.
+
+The engine behind the batched Python names (``rasterize``, ``masks``,
+``labels``): the rings of every polygon are concatenated into one float64
+array, and ``rastpy_burn_polygons`` (python/glue/batch.c) snaps them and
+draws the whole batch through the core's ``rast_fill_polygons_spans``, each
+polygon once, in order, writing its value into the array's own dtype.
+Nothing is written unless every polygon is good.
+"""
+
+import numpy as np
+
+from ._core import InputError, _check, bad_point_message
+from ._native import ffi, lib
+
+#: numpy dtype -> the glue's element type code.
+DTYPES = {
+    np.dtype(np.bool_): lib.RASTPY_DT_U8,
+    np.dtype(np.uint8): lib.RASTPY_DT_U8,
+    np.dtype(np.int8): lib.RASTPY_DT_I8,
+    np.dtype(np.uint16): lib.RASTPY_DT_U16,
+    np.dtype(np.int16): lib.RASTPY_DT_I16,
+    np.dtype(np.uint32): lib.RASTPY_DT_U32,
+    np.dtype(np.int32): lib.RASTPY_DT_I32,
+    np.dtype(np.int64): lib.RASTPY_DT_I64,
+    np.dtype(np.uint64): lib.RASTPY_DT_U64,
+    np.dtype(np.float32): lib.RASTPY_DT_F32,
+    np.dtype(np.float64): lib.RASTPY_DT_F64,
+}
+
+MERGES = {"replace": lib.RASTPY_MERGE_REPLACE, "add": lib.RASTPY_MERGE_ADD}
+
+
+def burn(out, polygons, opts, values=None, merge="replace", planes=False, what="polygon"):
+    """Burn `polygons` into `out` (numpy, native byte order, rows of
+    contiguous elements, writable).
+
+    polygons: a list; item k is a list of C-contiguous float64 (N, 2) rings
+    (already checked by the caller; rings of fewer than 3 points enclose
+    nothing).  values: None (1 everywhere) or a 1-D array of out.dtype, one
+    per polygon.  merge: "replace" or "add".  planes: out is (N, H, W) and
+    polygon k goes into out[k]; else out is (H, W).  Errors name `what` and
+    the polygon's index; out is untouched then.
+    """
+    dt = DTYPES.get(out.dtype)
+    if dt is None or not out.dtype.isnative:
+        raise InputError("cannot burn into an array of dtype %s" % out.dtype)
+    if not out.flags.writeable:
+        raise InputError("the output array is read-only")
+    if out.ndim != (3 if planes else 2):
+        raise InputError("the output array must be %s, not shape %s"
+                         % ("(N, H, W)" if planes else "(H, W)", out.shape))
+    if planes and out.shape[0] != len(polygons):
+        raise InputError("%d %ss for %d planes" % (len(polygons), what, out.shape[0]))
+    h, w = out.shape[-2:]
+    if w > 1 and out.strides[-1] != out.itemsize:
+        raise InputError("the output array's rows must be contiguous (strides %s)" % (out.strides,))
+    if values is not None:
+        values = np.ascontiguousarray(values, dtype=out.dtype)
+        if values.shape != (len(polygons),):
+            raise InputError("%d values for %d %ss" % (values.size, len(polygons), what))
+    rings = [r for poly in polygons for r in poly]
+    poly_rings = np.fromiter((len(p) for p in polygons), np.uint32, len(polygons))
+    sizes = np.fromiter((len(r) for r in rings), np.uint32, len(rings))
+    pts = np.concatenate(rings) if rings else np.zeros((0, 2))
+    if not len(polygons) or not h or not w:
+        return out
+    failed = ffi.new("uint32_t *", 0xFFFFFFFF)
+    result = lib.rastpy_burn_polygons(
+        ffi.cast("void *", out.__array_interface__["data"][0]), h, w,
+        out.strides[-2] if h > 1 else 0, out.strides[0] if planes and len(polygons) > 1 else 0,
+        dt, MERGES[merge], ffi.from_buffer(values) if values is not None else ffi.NULL,
+        ffi.from_buffer("double[]", pts), len(pts), ffi.from_buffer("uint32_t[]", sizes),
+        len(sizes), ffi.from_buffer("uint32_t[]", poly_rings), len(polygons), opts, failed)
+    if result == 0:
+        return out
+    if result > 0:
+        k = result - 1
+        ends = np.cumsum(sizes)
+        ring = int(np.searchsorted(ends, k, side="right"))
+        poly = int(np.searchsorted(np.cumsum(poly_rings), ring, side="right"))
+        first_ring = int(poly_rings[:poly].sum())
+        raise InputError(bad_point_message(
+            "%s %d" % (what, poly), pts[ends[ring] - sizes[ring]:ends[ring]],
+            int(k - (ends[ring] - sizes[ring])), opts.subpixel_bits,
+            None).replace("%s %d: " % (what, poly), "%s %d: ring %d, " % (what, poly, ring - first_ring)))
+    if result == lib.RASTPY_E_NOMEM:
+        raise MemoryError("rastrum: no memory for a batch of %d %ss" % (len(polygons), what))
+    if failed[0] != 0xFFFFFFFF:
+        try:
+            _check(result)
+        except InputError as e:
+            raise InputError("%s %d: %s" % (what, failed[0], e)) from None
+    _check(result)

@@ -10,6 +10,10 @@ Scenes (each skipped when its source is not installed):
 - contours: the outlines cv2.findContours finds in scikit-image's bundled
   photographs (camera, coins, horse, text), thresholded at their mean, all
   of one image's contours as one even-odd polygon;
+- countries: Natural Earth's 1:110m countries (177 features), which
+  pyogrio's wheel ships as a test fixture: all of them as one world mask
+  of 2048x1024 (even-odd), and each country in its own box at 10 px per
+  degree (one mask per country, as a GIS burns features one by one);
 - the benchmark's synthetic scenes (bench/scenes.py): circle64, star200,
   holes, coco100.
 
@@ -82,8 +86,62 @@ def contour_scene(name):
     return [rings], img.shape[:2]
 
 
+def _wkb_rings(b):
+    """The rings of a WKB Polygon or MultiPolygon (2-D), as (N, 2) arrays."""
+    import struct
+    pos = 0
+
+    def polygon(pos, e):
+        (nr,) = struct.unpack_from(e + "I", b, pos)
+        pos += 4
+        rings = []
+        for _ in range(nr):
+            (n,) = struct.unpack_from(e + "I", b, pos)
+            pos += 4
+            rings.append(np.frombuffer(b, e.replace("<", "<f8").replace(">", ">f8"), 2 * n, pos).reshape(n, 2)
+                         .astype(float))
+            pos += 16 * n
+        return rings, pos
+    e = "<" if b[0] == 1 else ">"
+    (kind,) = struct.unpack_from(e + "I", b, 1)
+    pos = 5
+    if kind == 3:
+        return polygon(pos, e)[0]
+    (np_,) = struct.unpack_from(e + "I", b, pos)
+    pos += 4
+    out = []
+    for _ in range(np_):
+        e2 = "<" if b[pos] == 1 else ">"
+        rings, pos = polygon(pos + 5, e2)
+        out += rings
+    return out
+
+
+def country_scenes():
+    import pyogrio
+    import pyogrio.raw
+    path = os.path.join(os.path.dirname(pyogrio.__file__), "tests", "fixtures", "naturalearth_lowres",
+                        "naturalearth_lowres.shp")
+    meta, fids, geoms, fields = pyogrio.raw.read(path)
+    countries = [[r[:-1] for r in _wkb_rings(bytes(g)) if len(r) > 3] for g in geoms]
+    world = [np.stack([(r[:, 0] + 180) * 2048 / 360, (90 - r[:, 1]) * 1024 / 180], 1)
+             for c in countries for r in c]
+    own = []
+    for c in countries:
+        allp = np.concatenate(c)
+        x0, y1 = allp[:, 0].min(), allp[:, 1].max()
+        own.append([np.stack([(r[:, 0] - x0) * 10 + 0.5, (y1 - r[:, 1]) * 10 + 0.5], 1) for r in c])
+    shapes = [(int(np.ceil(max(r[:, 1].max() for r in c))) + 2, int(np.ceil(max(r[:, 0].max() for r in c))) + 2)
+              for c in own]
+    return {"countries world": ([world], (1024, 2048)), "countries each": (own, shapes)}
+
+
 def load_scenes():
     out = {}
+    try:
+        out.update(country_scenes())
+    except Exception as e:
+        print("skipped countries: %s" % e)
     try:
         out["DejaVu glyphs"] = glyph_scene()
     except Exception as e:
@@ -107,16 +165,21 @@ def main(argv=None):
              if a not in ("crossing", "winding")]
     table = {}
     for name, (polys, shape) in load_scenes().items():
-        ref = [rastrum.polygon_mask(r, shape, algorithm="aet") for r in polys]
+        shapes = shape if isinstance(shape, list) else [shape] * len(polys)
+        ref = [rastrum.polygon_mask(r, sh, algorithm="aet") for r, sh in zip(polys, shapes)]
         for a in algos:
-            assert all(np.array_equal(rastrum.polygon_mask(r, shape, algorithm=a), m) for r, m in zip(polys, ref)), a
+            assert all(np.array_equal(rastrum.polygon_mask(r, sh, algorithm=a), m)
+                       for r, sh, m in zip(polys, shapes, ref)), a
         times = {a: [] for a in algos}
+        work = list(zip(polys, shapes))
         for _ in range(args.rounds):
             for a in algos:
                 t0 = time.perf_counter()
-                for r in polys:
-                    rastrum.polygon_mask(r, shape, algorithm=a)
+                for r, sh in work:
+                    rastrum.polygon_mask(r, sh, algorithm=a)
                 times[a].append(time.perf_counter() - t0)
+        if isinstance(shape, list):
+            shape = (max(h for h, w in shape), max(w for h, w in shape))
         med = {a: statistics.median(t) for a, t in times.items()}
         nv = sum(len(x) for r in polys for x in r)
         table[name] = (len(polys), nv, shape, med)

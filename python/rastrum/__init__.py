@@ -50,7 +50,12 @@ def polygon_mask(rings, shape, *, rule="evenodd", algorithm="aet", subpixel_bits
         Fill rule.  Under "nonzero", holes must run opposite to their outer
         ring.
     algorithm : str
-        One of ``ALGORITHMS["polygon_mask"]``; all give the same pixels.
+        One of ``ALGORITHMS["polygon_mask"]``; all give the same pixels,
+        so the choice is speed and memory: "aet" (the default) for smooth
+        shapes and either rule; "edgeflag" is faster on dense real outlines
+        under even-odd (coastlines, contours, text: 0.55-0.95x aet's time
+        in the benchmarks) at the cost of a bit of scratch per pixel of
+        the polygon's box.
     subpixel_bits : int
         Vertices are snapped to 1/2**subpixel_bits pixel (0..16), the only
         approximation.  The coordinate range is +-(2**27 - 1) / 2**bits px.

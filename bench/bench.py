@@ -772,7 +772,7 @@ def print_table(all_rows, scene_meta, out=sys.stdout):
 
 
 def table_markdown(all_rows, scene_meta) -> str:
-    """The same table in Markdown, for the README."""
+    """The same table in Markdown, for docs/benchmarks.md."""
     names = list(scene_meta)
     lines = ["| algorithm | rule | " + " | ".join(
         f"{n} ({scene_meta[n]['size']})" for n in names) + " |",

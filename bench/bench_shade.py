@@ -125,7 +125,7 @@ def timings(rastrum, quick):
     for F in (8, 16):
         cands.append(("rastrum fixed F=%d" % F,
                       lambda F=F: f(tris, vertex_colors=cols, precision="fixed", fraction_bits=F)))
-    # the fastest filler (README, triangles): the painter is the same
+    # the fastest filler (docs/benchmarks.md, triangles): the painter is the same
     cands.append(("rastrum solid, sweep", lambda: f(tris, (9, 9, 9, 255), algorithm="sweep")))
     cands.append(("rastrum fixed F=16, sweep",
                   lambda: f(tris, vertex_colors=cols, precision="fixed", algorithm="sweep")))

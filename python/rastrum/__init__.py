@@ -2,7 +2,7 @@
 
 Every algorithm gives the same pixels: those whose sample point is inside
 the polygon under one exact rule (pixel centres by default, spans left
-closed and right open, rows top closed and bottom open; see the README).
+closed and right open, rows top closed and bottom open; see docs/semantics.md).
 Coordinates are (x, y) as in Pillow; arrays are (row, column) = (y, x) as in
 numpy.
 """

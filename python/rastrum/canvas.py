@@ -415,7 +415,7 @@ class Canvas:
 
     def fill_rect_gouraud(self, rect, corner_colors, *, method="bilinear", shading="gouraud",
                           precision="exact", fraction_bits=16, subpixel_bits=8, sample_offset=0.5):
-        """A Gouraud rectangle: four corner colours, interpolated (seed 001, 3.2.3).
+        """A Gouraud rectangle: four corner colours, interpolated (the textbook's §3.2.3).
 
         `rect` is (x0, y0, x1, y1) in pixels; `corner_colors` is (4, C), C
         the canvas's channels, for the corners (x0, y0), (x1, y0), (x1, y1),

@@ -1,4 +1,4 @@
-"""A small mesh pipeline (seeds 002 and 004): camera, viewport, back-face
+"""A small mesh pipeline (after the textbook's chapters): camera, viewport, back-face
 culling, Lambert shading (flat or Gouraud), optional depth buffer.
 
 Everything here is plain numpy in floating point, like any application of
@@ -24,7 +24,7 @@ x is divided by the aspect ratio W / H so that a circle stays round.  That
 gives normalised device coordinates (NDC) with the visible square
 [-1, 1]^2, y up.
 
-Viewport (seed 004's M_viewport, y flipped): NDC (x, y) goes to pixel
+Viewport (the textbook's M_viewport, y flipped): NDC (x, y) goes to pixel
 coordinates ((x + 1) W / 2, (1 - y) H / 2): x grows right and y DOWN, the
 NDC square covers the canvas [0, W] x [0, H] exactly, and the sample of
 pixel (i, j) is its centre (i + 1/2, j + 1/2), which is the NDC point
@@ -35,13 +35,13 @@ Faces are front faces when their vertices run counter-clockwise as seen
 coordinates (y down).  Back-face culling keeps the faces whose NDC signed
 area is positive; zero-area faces own no pixel anyway.
 
-Lambert (seed 002): with unit normal n and unit light direction l (towards
+Lambert: with unit normal n and unit light direction l (towards
 the light, in camera space), the intensity is
 ``ambient + (1 - ambient) * max(0, n . l)`` and the colour
 ``floor(color * intensity + 1/2)`` per channel.  "flat" takes n from the
 face's plane (the cross product of its edges) and paints the face in one
 colour; "gouraud" evaluates Lambert at each vertex with the vertex normal
-and lets the core interpolate the colours across the face (seed 001's
+and lets the core interpolate the colours across the face (the textbook's
 smooth shading: no Mach bands at the edges).
 
 Depth: the depths of the visible faces are mapped linearly onto the

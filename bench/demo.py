@@ -432,6 +432,8 @@ def peer_table(out=sys.stdout, repeats=5):
     print("%-10s %-15s %9s %10s" % ("scene", "library", "ms", "px off"), file=out)
     for name, label, ms, off, empty in rows:
         print("%-10s %-15s %9.3f %10s" % (name, label, ms, "empty!" if empty else "(exact)" if label == "rastrum" else off), file=out)
+    print("(the exact mask: rastrum's, equal to the exact rule for the input snapped to 1/256 px; each peer"
+          " compared at the sample offset, pixel centre or corner, that suits it best)", file=out)
     if missing:
         print("not installed: %s (make bench installs them and runs the full benchmarks)"
               % ", ".join(missing), file=out)

@@ -402,13 +402,14 @@ def render_seedfill(out: Path):
     return [path]
 
 
-def peer_table(out=sys.stdout, repeats=5):
+def peer_table(out=None, repeats=5):
     """rastrum against the peers installed here, on three scenes: the
     median time of one call and the pixels each result differs from the
     exact mask (rastrum's, at the sample offset that suits the peer best;
     rastrum equals the exact rational reference, which the tests check).
     An empty result is reported as such, not timed as a winner."""
     import time
+    out = sys.stdout if out is None else out
     table = [("star200", scenes.star(200, 1024)), ("holes", scenes.ring_with_holes(1024)),
              ("coco-like", (scenes.coco_like(1)[0][0], (480, 640)))]
     peers = [p for p in bench.PEERS if bench.peer_available(p) is None and p.name != "skimage.draw"]

@@ -756,7 +756,9 @@ def print_table(all_rows, scene_meta, out=sys.stdout):
             if r is None or "error" in r:
                 cells.append(f"{'-' if r is None else 'error':>22}")
             elif r["kind"] == "baseline" or impl == "cv2.fillPoly":
-                cells.append(f"{_fmt_ms(r['ms'] / 1e3).strip() + ' ms':>22}")
+                off = "" if r["kind"] == "baseline" or r.get("px_off") is None else \
+                    " EMPTY" if r.get("empty") else f" {r['px_off']}px"
+                cells.append(f"{_fmt_ms(r['ms'] / 1e3).strip() + ' ms' + off:>22}")
             else:
                 scr = _fmt_bytes(r.get("scratch")) if r["kind"] == "rastrum" \
                     else "EMPTY" if r.get("empty") else \
@@ -785,7 +787,8 @@ def table_markdown(all_rows, scene_meta) -> str:
             if r is None or "error" in r:
                 cells.append("-")
             elif r["kind"] == "baseline" or impl == "cv2.fillPoly":
-                cells.append(f"{r['ms']:.3g} ms")
+                cells.append(f"{r['ms']:.3g} ms" + ("" if r["kind"] == "baseline" or r.get("px_off") is None
+                                                    else f" / {r['px_off']} px off"))
             else:
                 c = (f"{_fmt_ratio(r['x_memset']).strip()} / "
                      f"{_fmt_ratio(r.get('x_cv2')).strip()}")

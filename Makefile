@@ -2,7 +2,9 @@
 #
 #   make                 build/librastrum.a and build/librastrum.so
 #   make test            C tests, then the Python tests (installs the package)
-#   make demo            render the demo scenes to out/ and print the speed table
+#   make demo            render the demo pictures to out/ and print a short speed table
+#   make bench           the full benchmarks (installs the peers: OpenCV, skia, ...)
+#   make docs            the documentation site (mkdocs) into build/site
 #   make asan            C and Python tests under AddressSanitizer + UBSan
 #   make strict          the core and the Python glue under gcc and clang, -std=c99 -pedantic -Werror
 #   make valgrind        C tests under valgrind memcheck, then valgrind-py
@@ -20,7 +22,20 @@
 #   make fuzz-regress    the fuzz targets over the corpus without libFuzzer (gcc, sanitizers)
 
 CC      ?= cc
-PYTHON  ?= python3
+
+# Python: an explicit PYTHON=..., else the active virtualenv's interpreter,
+# else the project's own virtualenv .venv, made on first use from
+# BASE_PYTHON (Debian's python3 is "externally managed": pip refuses to
+# install into it, so nothing is ever installed outside a virtualenv).
+BASE_PYTHON ?= python3
+ifeq ($(origin PYTHON),undefined)
+  ifneq ($(VIRTUAL_ENV),)
+    PYTHON := $(VIRTUAL_ENV)/bin/python
+  else
+    PYTHON := $(CURDIR)/.venv/bin/python
+    VENV   := $(CURDIR)/.venv/bin/python
+  endif
+endif
 PREFIX  ?= /usr/local
 DESTDIR ?=
 LIBDIR  ?= $(PREFIX)/lib
@@ -54,10 +69,20 @@ SONAME  := librastrum.so.$(VERSION_MAJOR)
 # the package starts from none.
 PY_CLEAN := rm -rf build/lib.* build/temp.* build/bdist.*
 
+# What the sanitizer and valgrind runs need beside the package they build.
+PY_TEST_DEPS := setuptools wheel cffi numpy Pillow pytest hypothesis
+
+# The project virtualenv, with what a --no-build-isolation build needs.
+$(CURDIR)/.venv/bin/python:
+	@$(BASE_PYTHON) -c 'import ensurepip, venv' 2>/dev/null || { echo "make: $(BASE_PYTHON) cannot make a virtualenv;" \
+	  "on Debian/Ubuntu: sudo apt-get install python3-venv python3-dev (or run make with PYTHON=/path/to/python)"; exit 1; }
+	$(BASE_PYTHON) -m venv $(CURDIR)/.venv
+	$(CURDIR)/.venv/bin/python -m pip install --quiet --disable-pip-version-check --upgrade pip setuptools wheel cffi
+
 C_TESTS := $(patsubst tests/c/%.c,build/tests/%,$(wildcard tests/c/test_*.c))
 SAN     := -fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer -g
 
-.PHONY: bench-precision bench-precision-callgrind single test-single display-qemu fuzz-check fuzz-regress display-example valgrind valgrind-py firmware-check cross-check all lib test test-c test-install test-py demo asan asan-c asan-py strict install uninstall example clean
+.PHONY: bench docs bench-precision bench-precision-callgrind single test-single display-qemu fuzz-check fuzz-regress display-example valgrind valgrind-py firmware-check cross-check all lib test test-c test-install test-py demo asan asan-c asan-py strict install uninstall example clean
 
 all: lib
 lib: build/librastrum.a build/librastrum.so
@@ -101,16 +126,39 @@ display-example: build/librastrum.a
 test-install: lib
 	@tools/test-install.sh
 
-test-py:
+# PY_TEST_EXTRAS: the extras the tests run with; CI adds gis,compat-test
+# (shapely, affine, tqdm, rasterio, geopandas), whose tests skip without them.
+PY_TEST_EXTRAS ?= test
+test-py: | $(VENV)
 	$(PY_CLEAN)
-	$(PYTHON) -m pip install --quiet '.[test]'
+	$(PYTHON) -m pip install --quiet --disable-pip-version-check '.[$(PY_TEST_EXTRAS)]'
 	$(PYTHON) -m pytest -q tests
 
-# ---- demo (the main job) -----------------------------------------------------
-demo:
+# ---- demo and benchmarks --------------------------------------------------------
+# The demo needs only the package (numpy, Pillow): the pictures, then a short
+# table against whichever peers happen to be installed.  The full benchmarks
+# install the peers ('.[bench]', several hundred MB) and take minutes.
+demo: | $(VENV)
 	$(PY_CLEAN)
-	$(PYTHON) -m pip install --quiet '.[bench]'
+	$(PYTHON) -m pip install --quiet --disable-pip-version-check .
 	$(PYTHON) bench/demo.py --out out
+
+bench: | $(VENV)
+	$(PY_CLEAN)
+	$(PYTHON) -m pip install --quiet --disable-pip-version-check '.[bench,test]'
+	$(PYTHON) bench/bench.py
+	$(PYTHON) bench/bench_triangles.py
+	$(PYTHON) bench/bench_shade.py
+	$(PYTHON) bench/bench_seedfill.py
+	$(PYTHON) bench/bench_threads.py --quick
+
+# ---- documentation ---------------------------------------------------------------
+# mkdocs builds README.md's pages in docs/ into build/site; the API reference
+# comes from the docstrings (mkdocstrings).  --strict: a warning fails it.
+docs: | $(VENV)
+	$(PY_CLEAN)
+	$(PYTHON) -m pip install --quiet --disable-pip-version-check '.[docs]'
+	$(PYTHON) -m mkdocs build --strict --site-dir build/site
 
 # ---- sanitizers --------------------------------------------------------------
 asan: asan-c asan-py
@@ -125,8 +173,9 @@ asan-c:
 
 # The Python tests against an extension built with the sanitizers, loaded
 # into an ordinary interpreter with the ASan runtime preloaded.
-asan-py:
+asan-py: | $(VENV)
 	rm -rf build/asan-py
+	$(PYTHON) -m pip install --quiet --disable-pip-version-check $(PY_TEST_DEPS)
 	$(PY_CLEAN)
 	RASTRUM_CFLAGS="$(SAN) -O1" RASTRUM_LDFLAGS="$(SAN)" \
 	  $(PYTHON) -m pip install --quiet --no-deps --no-build-isolation --target build/asan-py/lib .
@@ -157,8 +206,9 @@ valgrind: $(C_TESTS)
 # (tools/valgrind-python.supp; never a frame of rastrum).  A few minutes.
 VALGRIND_PY_TESTS ?= tests/test_bad_input.py tests/test_threads.py tests/test_snapping.py
 VALGRIND_PY_K ?= NaN or empty or Fortran or snap
-valgrind-py:
+valgrind-py: | $(VENV)
 	rm -rf build/valgrind-py
+	$(PYTHON) -m pip install --quiet --disable-pip-version-check $(PY_TEST_DEPS)
 	$(PY_CLEAN)
 	RASTRUM_CFLAGS="-g -O1" $(PYTHON) -m pip install --quiet --no-deps --no-build-isolation \
 	  --target build/valgrind-py/lib .

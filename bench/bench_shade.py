@@ -54,11 +54,11 @@ def error_table(rastrum, quick):
     for name, tris in scenes(quick).items():
         cols = vertex_colors(rng, len(tris), 3)
         covered = rastrum.triangles_mask(tris, (H, W))
-        ref = rastrum.Canvas(W, H, format="rgb888")
+        ref = rastrum.Canvas((H, W), format="rgb888")
         ref.fill_triangles(tris, vertex_colors=cols, precision="exact")
         exact = ref.array[covered].astype(np.int64)
         for F in F_VALUES:
-            c = rastrum.Canvas(W, H, format="rgb888")
+            c = rastrum.Canvas((H, W), format="rgb888")
             c.fill_triangles(tris, vertex_colors=cols, precision="fixed", fraction_bits=F)
             err = np.abs(c.array[covered].astype(np.int64) - exact)
             rows.append((name, F, int(err.max()), float(err.mean())))
@@ -77,9 +77,29 @@ def skia_cand(tris, cols, buf):
     paint = skia.Paint(AntiAlias=False)
     canvas = skia.Canvas(buf, colorType=skia.kRGBA_8888_ColorType)
 
-    def run(cv=canvas, v=verts, p=paint):
-        cv.drawVertices(v, p)
+    # kDst: the vertex colours alone.  The default (kModulate) multiplies
+    # them by the paint's colour, black: skia-python 144 then draws black
+    # on black, which the check in timings() reports.
+    def run(cv=canvas, v=verts, p=paint, mode=skia.BlendMode.kDst):
+        cv.drawVertices(v, p, mode)
     return run, None
+
+
+def check_peer(run, buf, exact, mask):
+    """A peer's shaded output against rastrum's exact one: pixels whose
+    coverage differs, and the level error on the pixels both cover; or
+    "EMPTY" / "BLACK" when it drew nothing / no colour."""
+    buf[...] = 0
+    run()
+    got = buf[..., 3] > 0
+    if not got.any():
+        return "EMPTY"
+    if not buf[..., :3].any():
+        return "BLACK (no colour drawn)"
+    both = got & mask
+    err = np.abs(buf[both][:, :3].astype(int) - exact[both][:, :3].astype(int))
+    return "%d px coverage off, colour error max %d / mean %.2f levels" % (
+        int(np.count_nonzero(got != mask)), int(err.max()), float(err.mean()))
 
 
 def timings(rastrum, quick):
@@ -100,12 +120,12 @@ def timings(rastrum, quick):
     f = canvas.fill_triangles
     cands = [("memset 4 MiB", do_memset),
              ("rastrum solid (unshaded)", lambda: f(tris, (9, 9, 9, 255))),
-             ("rastrum flat", lambda: f(tris, vertex_colors=cols, precision="flat")),
+             ("rastrum flat", lambda: f(tris, vertex_colors=cols, shading="flat")),
              ("rastrum exact", lambda: f(tris, vertex_colors=cols, precision="exact"))]
     for F in (8, 16):
         cands.append(("rastrum fixed F=%d" % F,
                       lambda F=F: f(tris, vertex_colors=cols, precision="fixed", fraction_bits=F)))
-    # the fastest filler (README, triangles): the painter is the same
+    # the fastest filler (docs/benchmarks.md, triangles): the painter is the same
     cands.append(("rastrum solid, sweep", lambda: f(tris, (9, 9, 9, 255), algorithm="sweep")))
     cands.append(("rastrum fixed F=16, sweep",
                   lambda: f(tris, vertex_colors=cols, precision="fixed", algorithm="sweep")))
@@ -123,8 +143,13 @@ def timings(rastrum, quick):
     sk, note = skia_cand(tris, cols[..., :3], buf)
     if sk:
         cands.append(("skia drawVertices (colors)", sk))
+        buf[...] = 0
+        f(tris, vertex_colors=cols)
+        exact = buf.copy()
+        mask = rastrum.triangles_mask(tris, (H, W))
+        note = "skia drawVertices checked against rastrum's exact output: " + check_peer(sk, buf, exact, mask)
     med = bt.measure(cands, rounds)
-    pixels = int(rastrum.triangles_mask(tris, (H, W), mode="count").sum())
+    pixels = int(rastrum.triangles_count(tris, (H, W)).sum())
     return med, n, pixels, note
 
 
@@ -149,7 +174,7 @@ def run(quick=False):
         print("%-28s %9.3f %9.1f %9.2f %9s" % (label, t * 1e3, pixels / t / 1e6, t / tm,
                                                 "%.2f" % (t / sk) if sk else "-"))
     if note:
-        print("skipped: " + note)
+        print(note if note.startswith("skia drawVertices checked") else "skipped: " + note)
     return rows, med
 
 

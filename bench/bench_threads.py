@@ -63,7 +63,7 @@ def workloads(rastrum, quick):
     masks = [(s, (1024, 1024)) for s in stars]
 
     def canvas():
-        return rastrum.Canvas(1024, 1024, format="gray8")
+        return rastrum.Canvas((1024, 1024), format="gray8")
 
     spiky = star(200, 60, 120, 128, 128)
     mat = rng.uniform(0, 1, (200, 200))

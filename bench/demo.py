@@ -1,6 +1,6 @@
 """rastrum demo: render the benchmark scenes to PNG, then run the benchmark.
 
-    python bench/demo.py [--out DIR] [--no-bench] [--quick]
+    python bench/demo.py [--out DIR] [--no-table]
 
 Writes into DIR (default ./out):
 
@@ -23,6 +23,11 @@ Writes into DIR (default ./out):
 - star200.png       the 200-spike star.
 - star200_67.png    the self-intersecting {200/67} star, even-odd | non-zero.
 - canvas.png        an rgb888 Canvas composition.
+- gouraud.png       twelve Gouraud triangles round a grey centre, labelled:
+                    exact | the error of fixed point at F = 4 (x 16) |
+                    rgb565 (5/6/5 bits: visible steps) | mono1 (a pixel on
+                    iff its interpolated level is >= 128: a threshold, no
+                    dithering).
 - mesh_sphere_flat_vs_gouraud.png  one sphere, Lambert flat | Gouraud (the
                     Mach bands of seed 001 3.1.3 at the flat faces' edges).
 - mesh_torus_depth.png  a tilted torus, its faces shuffled and culled,
@@ -36,10 +41,12 @@ Writes into DIR (default ./out):
 - seedfill.png      region fill: outlines drawn with the library's lines,
                     before | flood-filled 4-connected | 8-connected.
 
-then prints the benchmark table (bench.main), the triangle table
-(bench_triangles.main), the shading table (bench_shade.main), the region
-fill table (bench_seedfill.main) and the threads table (bench_threads.main,
-a few seconds); --no-bench skips them.
+then prints a short table: rastrum against the peers it finds installed
+(Pillow always; OpenCV, skia-python, scikit-image, pycocotools when
+present), the time of one call and the pixels each result differs from the
+exact mask.  A few seconds in all; --no-table skips it.  The full
+benchmarks are ``make bench`` (bench/bench.py and its siblings), which
+install the peers first.
 """
 
 from __future__ import annotations
@@ -242,7 +249,7 @@ def render_stars(out: Path):
 
 def render_canvas(out: Path):
     W, H = 1400, 760
-    c = rastrum.Canvas(W, H, format="rgb888", background=(18, 24, 48))
+    c = rastrum.Canvas((H, W), format="rgb888", background=(18, 24, 48))
     rng = np.random.default_rng(7)
     # scattered random polygons in the background, non-zero rule
     for k in range(24):
@@ -275,30 +282,35 @@ def render_canvas(out: Path):
 
 
 def render_shading(out):
-    """Gouraud triangles (exact and fixed point at F = 4), and the same
-    scene in rgb565 and mono1: out/gouraud.png."""
-    from PIL import Image
+    """Twelve Gouraud triangles round a grey centre, four labelled panels:
+    exact, the error of fixed point at F = 4 (magnified), rgb565 and mono1
+    (on iff the interpolated level is >= 128): out/gouraud.png."""
     rng = np.random.default_rng(3)
     n = 12
     ang = np.linspace(0, 2 * np.pi, n + 1)
     ring = np.stack([150 + 140 * np.cos(ang), 150 + 140 * np.sin(ang)], -1)
     tris = np.array([[ring[k], ring[k + 1], (150.0, 150.0)] for k in range(n)])
     cols = rng.integers(0, 256, (n, 3, 3))
-    cols[:, 2] = 255  # a white centre
+    cols[:, 2] = 128  # a mid-grey centre
     cols[:, 1] = np.roll(cols[:, 0], -1, axis=0)  # shared rim vertices agree
-    tiles = []
-    for fmt, prec, F in (("rgb888", "exact", 16), ("rgb888", "fixed", 4), ("rgb565", "exact", 16)):
-        c = rastrum.Canvas(300, 300, format=fmt)
-        c.fill_triangles(tris, vertex_colors=cols, precision=prec, fraction_bits=F)
-        tiles.append(c.to_image().convert("RGB"))
-    c = rastrum.Canvas(300, 300, format="mono1")
-    c.fill_triangles(tris, vertex_colors=cols[..., :1])
-    tiles.append(c.to_image().convert("RGB"))
-    img = Image.new("RGB", (1200, 300))
-    for k, t in enumerate(tiles):
-        img.paste(t, (300 * k, 0))
+
+    def draw(fmt, vc, **kw):
+        c = rastrum.Canvas((300, 300), format=fmt)
+        c.fill_triangles(tris, vertex_colors=vc, **kw)
+        return c
+
+    exact = draw("rgb888", cols)
+    fixed = draw("rgb888", cols, precision="fixed", fraction_bits=4)
+    err = np.abs(exact.array.astype(int) - fixed.array.astype(int))
+    from PIL import Image
+    err_img = Image.fromarray(np.clip(255 - 16 * err.max(axis=2), 0, 255).astype(np.uint8), "L")
+    # mono1 takes one level a vertex: the colours' mean
+    mono = draw("mono1", cols.mean(axis=2, keepdims=True).round().astype(int))
+    tiles = [exact.to_image(), err_img, draw("rgb565", cols).to_image(), mono.to_image()]
+    labels = ["exact (rgb888)", f"fixed F=4: error x16, max {int(err.max())}",
+              "rgb565", "mono1: level >= 128"]
     path = out / "gouraud.png"
-    img.save(path)
+    labelled_row(tiles, labels, size=18, pad_top=36).save(path)
     return [path]
 
 
@@ -308,8 +320,8 @@ def render_meshes(out: Path):
     paths = []
     v, f, n = sphere(14, 28)
     kw = dict(normals=n, scale=0.9, light=(-0.5, 0.6, 0.7), color=(235, 235, 235), ambient=0.12)
-    flat = render_mesh(v, f, (360, 360), shading="flat", **kw)
-    smooth = render_mesh(v, f, (360, 360), shading="gouraud", **kw)
+    flat = render_mesh(v, f, shape=(360, 360), shading="flat", **kw)
+    smooth = render_mesh(v, f, shape=(360, 360), shading="gouraud", **kw)
     p = out / "mesh_sphere_flat_vs_gouraud.png"
     labelled_row([flat.to_image(), smooth.to_image()], ["flat (Lambert per face)", "Gouraud (per vertex)"]).save(p)
     paths.append(p)
@@ -318,8 +330,8 @@ def render_meshes(out: Path):
     kw = dict(normals=n, shading="gouraud", rotation=rotation(15, 30, -10), projection="perspective",
               distance=3.6, fov=40, scale=0.95, color=(245, 170, 70), light=(-0.3, 0.7, 0.65))
     shuffled = f[np.random.default_rng(1).permutation(len(f))]  # a mesh in no particular order
-    no_depth = render_mesh(v, shuffled, (400, 360), depth=False, **kw)
-    z = render_mesh(v, shuffled, (400, 360), depth=True, **kw)
+    no_depth = render_mesh(v, shuffled, shape=(360, 400), depth=False, **kw)
+    z = render_mesh(v, shuffled, shape=(360, 400), depth=True, **kw)
     p = out / "mesh_torus_depth.png"
     labelled_row([no_depth.to_image(), z.to_image()], ["culled, no depth", "culled + depth buffer"]).save(p)
     paths.append(p)
@@ -334,7 +346,7 @@ def render_meshes(out: Path):
         ("triangles", (0, 0, W, H), [blue, yellow, green, red]),      # diagonal P3-P1
         ("triangles", (0, H, W, 0), [red, green, yellow, blue]),      # diagonal P0-P2
     ):
-        c = rastrum.Canvas(W, H)
+        c = rastrum.Canvas((H, W))
         c.fill_rect_gouraud(rect, cols, method=method)
         panels.append(c.to_image())
     p = out / "fig3_18_gouraud_rect.png"
@@ -342,7 +354,7 @@ def render_meshes(out: Path):
     paths.append(p)
 
     rings, _ = scenes.fig3_19(30.0)
-    c = rastrum.Canvas(420, 420, background=(255, 255, 255))
+    c = rastrum.Canvas((420, 420), background=(255, 255, 255))
     cols = [(230, 30, 30), (250, 200, 40), (40, 190, 60), (40, 70, 230), (250, 250, 250), (150, 40, 200),
             (20, 200, 220)]
     c.fill_polygon([r + (-15.0, -15.0) for r in rings], vertex_colors=cols)
@@ -364,7 +376,7 @@ def render_seedfill(out: Path):
     ink, paper = (30, 30, 40), (250, 248, 240)
 
     def drawing():
-        c = rastrum.Canvas(W, H, format="rgb888", background=paper)
+        c = rastrum.Canvas((H, W), format="rgb888", background=paper)
         t = np.linspace(0, 2 * np.pi, 40, endpoint=False)
         c.polyline(np.stack([50 + 38 * np.cos(t), 62 + 38 * np.sin(t)], 1), ink, closed=True)
         a = np.linspace(0, 2 * np.pi, 11)[:-1]
@@ -390,39 +402,61 @@ def render_seedfill(out: Path):
     return [path]
 
 
+def peer_table(out=None, repeats=5):
+    """rastrum against the peers installed here, on three scenes: the
+    median time of one call and the pixels each result differs from the
+    exact mask (rastrum's, at the sample offset that suits the peer best;
+    rastrum equals the exact rational reference, which the tests check).
+    An empty result is reported as such, not timed as a winner."""
+    import time
+    out = sys.stdout if out is None else out
+    table = [("star200", scenes.star(200, 1024)), ("holes", scenes.ring_with_holes(1024)),
+             ("coco-like", (scenes.coco_like(1)[0][0], (480, 640)))]
+    peers = [p for p in bench.PEERS if bench.peer_available(p) is None and p.name != "skimage.draw"]
+    rows = []
+    for name, (rings, shape) in table:
+        exact = {o: rastrum.polygon_mask(rings, shape, sample_offset=o) for o in (0.0, 0.5)}
+        cands = [("rastrum", lambda r=rings, s=shape: rastrum.polygon_mask(r, s))]
+        cands += [(p.name, p.make(rings, shape, "evenodd")) for p in peers]
+        for label, fn in cands:
+            got = np.asarray(fn()).astype(bool)
+            times = []
+            for _ in range(repeats):
+                t0 = time.perf_counter()
+                fn()
+                times.append(time.perf_counter() - t0)
+            off = min(int(np.count_nonzero(got != e)) for e in exact.values())
+            rows.append((name, label, sorted(times)[repeats // 2] * 1e3, off, not got.any()))
+    missing = [p.name for p in bench.PEERS if bench.peer_available(p) is not None]
+    print("\nrastrum and the peers installed here (one call, median of %d; pixels that differ"
+          " from the exact mask):" % repeats, file=out)
+    print("%-10s %-15s %9s %10s" % ("scene", "library", "ms", "px off"), file=out)
+    for name, label, ms, off, empty in rows:
+        print("%-10s %-15s %9.3f %10s" % (name, label, ms, "empty!" if empty else "(exact)" if label == "rastrum" else off), file=out)
+    print("(the exact mask: rastrum's, equal to the exact rule for the input snapped to 1/256 px; each peer"
+          " compared at the sample offset, pixel centre or corner, that suits it best)", file=out)
+    if missing:
+        print("not installed: %s (make bench installs them and runs the full benchmarks)"
+              % ", ".join(missing), file=out)
+    return rows
+
+
 def main(argv=None):
-    ap = argparse.ArgumentParser(description="render the rastrum demo "
-                                 "scenes to PNG, then run the benchmark")
-    ap.add_argument("--out", default="out", help="output directory "
-                    "(default ./out)")
-    ap.add_argument("--no-bench", action="store_true",
-                    help="only write the pictures")
-    ap.add_argument("--quick", action="store_true",
-                    help="pass --quick to the benchmark")
-    args, bench_args = ap.parse_known_args(argv)
+    ap = argparse.ArgumentParser(description="render the rastrum demo pictures to PNG, then print a "
+                                 "short table against the peers installed here")
+    ap.add_argument("--out", default="out", help="output directory (default ./out)")
+    ap.add_argument("--no-table", action="store_true", help="only write the pictures")
+    args = ap.parse_args(argv)
     out = Path(args.out)
     out.mkdir(parents=True, exist_ok=True)
     written = []
     for f in (render_fig3_19, render_holes, render_stars, render_canvas, render_shading, render_meshes,
               render_seedfill):
         written += f(out)
-    for p in written:
-        print(f"wrote {p}")
+    print("wrote %d pictures to %s/: %s" % (len(written), out, ", ".join(p.name for p in written)))
     sys.stdout.flush()
-    if not args.no_bench:
-        bench.main((["--quick"] if args.quick else []) + bench_args)
-        import bench_triangles
-        print("\n== triangles (bench/bench_triangles.py)", flush=True)
-        bench_triangles.main(["--quick"] if args.quick else [])
-        import bench_shade
-        print("\n== shading (bench/bench_shade.py)", flush=True)
-        bench_shade.main(["--quick"] if args.quick else [])
-        import bench_seedfill
-        print("\n== region fill (bench/bench_seedfill.py)", flush=True)
-        bench_seedfill.main(["--quick"] if args.quick else [])
-        import bench_threads
-        print("\n== threads: the same work on 1, 2, 4 threads (bench/bench_threads.py --quick)", flush=True)
-        bench_threads.main(["--quick"])
+    if not args.no_table:
+        peer_table()
     return written
 
 

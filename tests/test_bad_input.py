@@ -17,6 +17,8 @@ of its own.
 import math
 import re
 
+import warnings
+
 import numpy as np
 import pytest
 
@@ -86,6 +88,8 @@ ENTRIES = [
           FILL + ("rule",), canvas=True, color=True, wide=True),
     Entry("triangles_mask", "tris", lambda c, g, kw: rastrum.triangles_mask(g[0], kw.pop("shape", SHAPE), **kw),
           FILL + ("mode",), shape=True),
+    Entry("triangles_count", "tris", lambda c, g, kw: rastrum.triangles_count(g[0], kw.pop("shape", SHAPE), **kw),
+          FILL, shape=True),
     Entry("Canvas.fill_triangles", "tris",
           lambda c, g, kw: c.fill_triangles(g[0], kw.pop("color", COLOR), **kw), FILL, canvas=True, color=True),
     Entry("Canvas.fill_triangle", "tri",
@@ -470,9 +474,24 @@ OTHER = [
      r"colou?r"),
     ("Canvas.wrap", "float32", lambda: rastrum.Canvas.wrap(np.zeros((4, 5, 3), np.float32)), rastrum.InputError,
      r"uint8"),
-    # A uint16 (H, W) array is an rgb565 canvas; any other uint16 shape is not.
+    # A uint16 array needs format= (rgb565 or label): the dtype does not say which.
     ("Canvas.wrap", "uint16 (H, W, 3)", lambda: rastrum.Canvas.wrap(np.zeros((4, 5, 3), np.uint16)),
+     rastrum.InputError, r"needs format="),
+    ("Canvas.wrap", "uint16 (H, W), no format", lambda: rastrum.Canvas.wrap(np.zeros((4, 5), np.uint16)),
+     rastrum.InputError, r"needs format="),
+    ("Canvas.wrap", "rgb565, uint16 (H, W, 3)",
+     lambda: rastrum.Canvas.wrap(np.zeros((4, 5, 3), np.uint16), format="rgb565"),
      rastrum.InputError, r"uint16 only as rgb565"),
+    ("Canvas.wrap", "label, float", lambda: rastrum.Canvas.wrap(np.zeros((4, 5), np.float64), format="label"),
+     rastrum.InputError, r"integer array"),
+    ("Canvas.wrap", "label, (H, W, 3)", lambda: rastrum.Canvas.wrap(np.zeros((4, 5, 3), np.int32), format="label"),
+     rastrum.InputError, r"\(H, W\) array"),
+    ("Canvas.wrap", "label, read-only", lambda: rastrum.Canvas.wrap(_ro(np.zeros((4, 5), np.int32)),
+                                                                    format="label"),
+     rastrum.InputError, r"writable"),
+    ("Canvas.wrap", "label, column stride", lambda: rastrum.Canvas.wrap(np.zeros((4, 6), np.int32)[:, ::2],
+                                                                        format="label"),
+     rastrum.InputError, r"contiguous"),
     ("Canvas.wrap", "a list", lambda: rastrum.Canvas.wrap([[0, 0], [0, 0]]), rastrum.InputError, r"array"),
     ("Canvas.wrap", "read-only", _wrap_then(_ro), rastrum.InputError, r"writable"),
     ("Canvas.wrap", "broadcast (read-only)", lambda: rastrum.Canvas.wrap(
@@ -540,9 +559,11 @@ MESH_ROWS = {
     "faces past the vertices": (_with("faces", lambda f: f + 1000), r"faces.*index"),
     "faces (F, 4)": (_with("faces", lambda f: np.c_[f, f[:, :1]]), r"faces.*shape"),
     "faces None": (_with("faces", lambda f: None), r"faces"),
-    "size -1": (lambda a: dict(a, size=(-1, 16)), r"shape|size"),
-    "size 1.5": (lambda a: dict(a, size=(1.5, 16)), r"size.*ints"),
-    "size None": (lambda a: dict(a, size=None), r"size.*pair"),
+    "shape -1": (lambda a: dict(a, shape=(16, -1)), r"shape"),
+    "shape 1.5": (lambda a: dict(a, shape=(16, 1.5)), r"shape.*ints"),
+    "shape 'big'": (lambda a: dict(a, shape="big"), r"shape.*pair"),
+    "size -1 (the deprecated spelling)": (lambda a: dict(a, size=(-1, 16)), r"shape|size"),
+    "size and shape": (lambda a: dict(a, size=(16, 12), shape=(12, 16)), r"not also size"),
     "normals NaN": (_with("normals", lambda n: n * NAN), r"normals.*finite"),
     "normals wrong shape": (_with("normals", lambda n: n[:3]), r"normals.*shape"),
     "shading phong": (lambda a: dict(a, shading="phong"), r"shading"),
@@ -587,12 +608,15 @@ def test_render_mesh_bad_input(label):
     change, pattern = {**MESH_ROWS, **MESH_NEW_CANVAS}[label]
     args = change(_mesh_args())
     v, f = args.pop("vertices"), args.pop("faces")
-    size = args.pop("size", (16, 12))
+    if "size" not in args:
+        args.setdefault("shape", (12, 16))
     inputs = _snapshot((v, f, args.get("normals")))
-    with pytest.raises(rastrum.InputError) as info:
-        rastrum.render_mesh(v, f, size, **args)
+    with pytest.raises(rastrum.InputError) as info, warnings.catch_warnings():
+        warnings.simplefilter("ignore", DeprecationWarning)  # size=: the old spelling
+        rastrum.render_mesh(v, f, **args)
     assert re.search(pattern, str(info.value), re.I), str(info.value)
-    if label in MESH_NEW_CANVAS or label.startswith("size"):
+    args.pop("shape", None)
+    if label in MESH_NEW_CANVAS or label.startswith(("size", "shape")):
         return
     big, canvas = _target()
     canvas.fill_triangles(GOOD["tris"][0], vertex_colors=VCOLORS, depth=DEPTHS)
@@ -614,7 +638,7 @@ def test_render_mesh_good_input_draws():
     args = _mesh_args()
     rastrum.render_mesh(args["vertices"], args["faces"], canvas=canvas)
     assert not np.array_equal(big, before)
-    assert rastrum.render_mesh(args["vertices"], args["faces"], (8, 6), format="gray8").array.any()
+    assert rastrum.render_mesh(args["vertices"], args["faces"], shape=(6, 8), format="gray8").array.any()
 
 
 OBJ_ROWS = [

@@ -548,19 +548,6 @@ def test_bad_shapely_inputs():
         assert (out == 3).all()
 
 
-def test_docs_gis_examples():
-    """docs/gis.md's python blocks run as written."""
-    import os
-    import re
-    pytest.importorskip("affine")
-    path = os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), "docs", "gis.md")
-    with open(path, encoding="utf-8") as f:
-        blocks = re.findall(r"```python\n(.*?)```", f.read(), flags=re.S)
-    assert blocks
-    for code in blocks:
-        exec(compile(code, "docs/gis.md", "exec"), {})
-
-
 @pytest.mark.parametrize("all_touched", [False, True])
 def test_add_counts_a_line_once_per_geometry(all_touched):
     """In "add", a (Multi)LineString burns each pixel once, a collection's

@@ -47,16 +47,16 @@ def test_front_facing_winding():
     ((1, 0, math.sqrt(3)), 0.0, 173),              # cos 30 = 0.866 -> 173.2
 ])
 def test_lambert_flat_by_hand(light, ambient, want):
-    c = render_mesh(FRONT, [(0, 1, 2)], (10, 10), light=light, ambient=ambient, color=(200, 200, 200),
+    c = render_mesh(FRONT, [(0, 1, 2)], shape=(10, 10), light=light, ambient=ambient, color=(200, 200, 200),
                     depth=False)
     assert c.array[5, 5].tolist() == [want] * 3
     assert set(np.unique(c.array)) == {0, want}
 
 
 def test_culling_drops_back_faces_only():
-    c = render_mesh(FRONT[::-1], [(0, 1, 2)], (10, 10), depth=False)
+    c = render_mesh(FRONT[::-1], [(0, 1, 2)], shape=(10, 10), depth=False)
     assert not c.array.any()
-    c = render_mesh(FRONT[::-1], [(0, 1, 2)], (10, 10), depth=False, cull=False)
+    c = render_mesh(FRONT[::-1], [(0, 1, 2)], shape=(10, 10), depth=False, cull=False)
     assert c.array.any()
 
 
@@ -70,13 +70,13 @@ def test_closed_mesh_front_faces_cover_each_pixel_once(mesh):
     xy, _, _ = project(v, (64, 64), rotation=rot, scale=0.9 if mesh == "sphere" else 0.6)
     tris = xy[f]
     front = tris[front_facing(tris)]
-    count_front = rastrum.triangles_mask(front, (64, 64), mode="count")
+    count_front = rastrum.triangles_count(front, (64, 64))
     everything = rastrum.triangles_mask(tris, (64, 64))
     assert (count_front > 0).tolist() == everything.tolist()
     if mesh == "sphere":
         assert count_front.max() == 1
         # and the back faces cover the same silhouette once more
-        assert (rastrum.triangles_mask(tris, (64, 64), mode="count") == 2 * (count_front > 0)).all()
+        assert (rastrum.triangles_count(tris, (64, 64)) == 2 * (count_front > 0)).all()
 
 
 @pytest.mark.parametrize("shading", ["flat", "gouraud"])
@@ -84,8 +84,8 @@ def test_closed_mesh_front_faces_cover_each_pixel_once(mesh):
 def test_sphere_culling_on_off_same_image_with_depth(shading, projection):
     v, f, n = sphere(12, 24)
     kw = dict(normals=n, shading=shading, rotation=rotation(25, -15, 5), projection=projection, scale=0.9)
-    a = render_mesh(v, f, (96, 80), cull=True, **kw)
-    b = render_mesh(v, f, (96, 80), cull=False, **kw)
+    a = render_mesh(v, f, shape=(80, 96), cull=True, **kw)
+    b = render_mesh(v, f, shape=(80, 96), cull=False, **kw)
     np.testing.assert_array_equal(a.array, b.array)
     assert a.array.any()
 
@@ -111,8 +111,8 @@ def test_depth_order_free():
 
 def test_gouraud_differs_from_flat_and_is_smoother():
     v, f, n = sphere(8, 16)
-    a = render_mesh(v, f, (64, 64), normals=n, shading="flat").array[..., 0].astype(int)
-    b = render_mesh(v, f, (64, 64), normals=n, shading="gouraud").array[..., 0].astype(int)
+    a = render_mesh(v, f, shape=(64, 64), normals=n, shading="flat").array[..., 0].astype(int)
+    b = render_mesh(v, f, shape=(64, 64), normals=n, shading="gouraud").array[..., 0].astype(int)
     inside = (a > 0) & (b > 0)
     # the largest jump between horizontal neighbours inside the sphere: flat
     # has steps at the face edges (the Mach bands), Gouraud does not
@@ -208,13 +208,13 @@ def test_obj_error_names_the_line():
 
 def test_render_mesh_errors():
     with pytest.raises(ValueError):
-        render_mesh(FRONT, [(0, 1, 3)], (8, 8))
+        render_mesh(FRONT, [(0, 1, 3)], shape=(8, 8))
     with pytest.raises(ValueError):
-        render_mesh(FRONT, [(0, 1, 2)], (8, 8), shading="phong")
+        render_mesh(FRONT, [(0, 1, 2)], shape=(8, 8), shading="phong")
     with pytest.raises(ValueError):
-        render_mesh(FRONT, [(0, 1, 2)], (8, 8), light=(0, 0, 0))
+        render_mesh(FRONT, [(0, 1, 2)], shape=(8, 8), light=(0, 0, 0))
     with pytest.raises(ValueError):
-        render_mesh(FRONT, [(0, 1, 2)], (8, 8), projection="perspective", distance=-1)
+        render_mesh(FRONT, [(0, 1, 2)], shape=(8, 8), projection="perspective", distance=-1)
     with pytest.raises(ValueError):
         sphere(1, 5)
     with pytest.raises(ValueError):
@@ -226,6 +226,6 @@ def test_render_mesh_errors():
 def test_any_view_of_the_sphere_culled_equals_unculled(yaw, pitch, roll):
     v, f, n = sphere(6, 10)
     kw = dict(normals=n, shading="gouraud", rotation=rotation(yaw, pitch, roll), scale=0.8)
-    a = render_mesh(v, f, (48, 40), **kw)
-    b = render_mesh(v, f, (48, 40), cull=False, **kw)
+    a = render_mesh(v, f, shape=(40, 48), **kw)
+    b = render_mesh(v, f, shape=(40, 48), cull=False, **kw)
     np.testing.assert_array_equal(a.array, b.array)

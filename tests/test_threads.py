@@ -105,7 +105,7 @@ def _jobs():
     jobs += [("Canvas.fill_polygon", fill_polygon), ("Canvas.fill_triangles", fill_triangles),
              ("Canvas.fill_triangle", fill_triangle), ("Canvas.line/polyline", line_and_polyline),
              ("line_pixels", line_pixels), ("point_in_triangle", point_in_triangle),
-             ("triangles_mask count", lambda: rastrum.triangles_mask(tris, (200, 200), mode="count",
+             ("triangles_mask count", lambda: rastrum.triangles_count(tris, (200, 200),
                                                                      algorithm="sweep").tobytes())]
     return jobs
 

@@ -53,7 +53,7 @@ def check_batch(tris, shape, S, o, rounding, algorithms=ALGOS):
     exp = oracle_count(tris, shape, S, o, rounding)
     kw = dict(subpixel_bits=S, sample_offset=o, rounding=rounding)
     for alg in algorithms:
-        got = rastrum.triangles_mask(tris, shape, algorithm=alg, mode="count", **kw)
+        got = rastrum.triangles_count(tris, shape, algorithm=alg, **kw)
         assert got.dtype == np.uint16 and got.shape == tuple(shape)
         msg = f"rastrum.triangles_mask({lit(tris)!r}, {tuple(shape)!r}, algorithm={alg!r}, mode='count', {kw})"
         assert_same(got, exp, msg)
@@ -148,7 +148,7 @@ def test_boundary_modes_match_oracle(boundary, data):
     for t in tris:
         exp += ORACLES[boundary]([list(map(tuple, t))], shape, **kw)
     for alg in ALGOS:
-        got = rastrum.triangles_mask(tris, shape, algorithm=alg, mode="count", boundary=boundary, **kw)
+        got = rastrum.triangles_count(tris, shape, algorithm=alg, boundary=boundary, **kw)
         assert_same(got, exp, f"{alg} {boundary} {lit(tris)} {shape} {kw}")
 
 
@@ -199,12 +199,11 @@ def test_degenerate_draws_nothing(alg):
     for tri in degenerate:
         for o in OFFSETS:
             for r in ROUNDINGS:
-                m = rastrum.triangles_mask([tri], (6, 7), algorithm=alg, sample_offset=o,
-                                           rounding=r, mode="count")
+                m = rastrum.triangles_count([tri], (6, 7), algorithm=alg, sample_offset=o,
+                                           rounding=r)
                 assert not m.any(), (tri, o, r)
     assert rastrum.triangles_mask([], (5, 7), algorithm=alg).shape == (5, 7)
-    assert rastrum.triangles_mask(np.zeros((0, 3, 2)), (5, 7), algorithm=alg,
-                                  mode="count").dtype == np.uint16
+    assert rastrum.triangles_count(np.zeros((0, 3, 2)), (5, 7), algorithm=alg).dtype == np.uint16
     for shape in ((0, 5), (5, 0), (0, 0)):
         m = rastrum.triangles_mask([[(0, 0), (4, 0), (0, 4)]], shape, algorithm=alg)
         assert m.shape == shape and m.dtype == np.bool_
@@ -226,8 +225,8 @@ def test_at_range_limit(alg, S):
     for o in OFFSETS:
         for r in ROUNDINGS:
             # the first two cover everything once
-            m = rastrum.triangles_mask(tris[:2], (5, 6), algorithm=alg, subpixel_bits=S,
-                                       sample_offset=o, rounding=r, mode="count")
+            m = rastrum.triangles_count(tris[:2], (5, 6), algorithm=alg, subpixel_bits=S,
+                                       sample_offset=o, rounding=r)
             assert (m == 1).all()
             check_batch(tris, (7, 9), S, o, r, algorithms=[alg])
     for v in ((COORD_MAX + 1) / g, -(COORD_MAX + 0.75) / g, 1e300):
@@ -272,12 +271,12 @@ def test_mesh_covered_exactly_once(half_grid):
     for alg in ALGOS:
         for o in OFFSETS:
             for r in ROUNDINGS:
-                cnt = rastrum.triangles_mask(tris, (1024, 1024), algorithm=alg, sample_offset=o,
-                                             rounding=r, mode="count")
+                cnt = rastrum.triangles_count(tris, (1024, 1024), algorithm=alg, sample_offset=o,
+                                             rounding=r)
                 holes, over = int((cnt == 0).sum()), int((cnt > 1).sum())
                 assert holes == 0 and over == 0, (alg, o, r, holes, over)
     # the check can fail: drop one triangle and there are holes
-    cnt = rastrum.triangles_mask(tris[1:], (1024, 1024), mode="count")
+    cnt = rastrum.triangles_count(tris[1:], (1024, 1024))
     assert (cnt == 0).sum() > 0
 
 

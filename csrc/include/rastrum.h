@@ -27,7 +27,9 @@
  *         units, whatever S is; so S = 8 allows +-524287 pixels, S = 0 allows
  *         +-134217727 pixels).  Inside this range no intermediate product can
  *         overflow int64_t.  A vertex outside it makes the call return
- *         RAST_E_RANGE before anything is written.
+ *         RAST_E_RANGE before anything is written.  The polygon fills also
+ *         take 64-bit vertices (rast_point64): S up to 32 and +-2^28 pixels
+ *         at every S (RAST_COORD64_MAX(S); the range table under "limits").
  *
  * Edges.  A ring is closed: its edges are (P_k, P_k+1) with P_n = P_0.
  *         A non-horizontal edge (x0,y0)->(x1,y1) crosses sample row yc iff
@@ -176,7 +178,7 @@ enum {
     X(RAST_OK, 0, "ok")                                                        \
     X(RAST_E_NULL, -1, "a required pointer argument is NULL")                  \
     X(RAST_E_ARG, -2, "invalid argument")                                      \
-    X(RAST_E_RANGE, -3, "a coordinate is outside +-RAST_COORD_MAX")            \
+    X(RAST_E_RANGE, -3, "a coordinate is outside +-RAST_COORD_MAX (64-bit vertices: +-RAST_COORD64_MAX(S))") \
     X(RAST_E_SUBPIXEL, -4, "subpixel_bits is outside 0..RAST_MAX_SUBPIXEL_BITS") \
     X(RAST_E_SIZE, -5, "width, height or stride is invalid")                   \
     X(RAST_E_FORMAT, -6, "unknown pixel format")                               \

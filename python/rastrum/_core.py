@@ -6,6 +6,7 @@ and translates status codes into exceptions.
 """
 
 import numbers
+import warnings
 
 import numpy as np
 
@@ -246,6 +247,32 @@ def fill_opts(algorithm, rule, subpixel_bits, sample_offset, rounding="exact", b
     """A checked, read-only ``rast_fill_opts *``."""
     return cached_opts("polygon", _make_fill_opts, algorithm, rule, subpixel_bits, sample_offset,
                        rounding, boundary)
+
+
+def deprecated(message, stacklevel=3):
+    """Warn that a spelling will go in the next release (DeprecationWarning,
+    pointing at the caller's line)."""
+    warnings.warn(message + " (deprecated: it will be removed in the next release)", DeprecationWarning,
+                  stacklevel=stacklevel)
+
+
+def shading_precision(shading, precision, default="gouraud"):
+    """The C precision name for the ``shading=`` / ``precision=`` pair:
+    ``shading`` is "gouraud" or "flat" (what is interpolated), ``precision``
+    "exact" or "fixed" (how).  ``precision="flat"`` is the old spelling of
+    ``shading="flat"``: it still works, with a DeprecationWarning."""
+    if isinstance(precision, str) and precision == "flat":
+        deprecated('precision="flat" is now shading="flat"', stacklevel=4)
+        shading = "flat"
+    if shading is None:
+        shading = default
+    if not isinstance(shading, str) or shading not in ("gouraud", "flat"):
+        raise InputError("unknown shading %r; choose one of: gouraud, flat" % (shading,))
+    if shading == "flat":
+        return "flat"
+    if isinstance(precision, str) and precision not in ("exact", "fixed"):
+        raise InputError("unknown precision %r; choose one of: exact, fixed" % (precision,))
+    return precision
 
 
 def int_pair(pair, not_pair, not_ints):

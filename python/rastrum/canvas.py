@@ -1,5 +1,7 @@
 """Canvas: a target over a numpy array, with drawing methods."""
 
+import functools
+
 import numpy as np
 
 from . import _core
@@ -12,15 +14,41 @@ from ._native import ffi, lib
 _NO_COLOR = object()  # equal to no colour: "nothing remembered yet"
 _CHANNELS_TO_FORMAT = {1: "gray8", 3: "rgb888", 4: "rgba8888"}
 _PIL_MODES = {"gray8": "L", "rgb888": "RGB", "rgba8888": "RGBA", "rgb565": "RGB", "mono1": "1"}
+_FORMAT_NAMES = tuple(_core.FORMATS) + ("label",)
 _CHANNELS = {"gray8": 1, "rgb888": 3, "rgba8888": 4, "rgb565": 3, "mono1": 1}
+
+
+def _label_spill(method):
+    """Drawing on a label canvas whose items have 8 bytes (no C format has
+    8-byte pixels): draw the same call with value 1 into a uint8 mask, then
+    write the value where it is set.  Other canvases: the method itself."""
+    @functools.wraps(method)
+    def draw(self, *args, **kwargs):
+        if self._format != "label" or self._code is not None:
+            return method(self, *args, **kwargs)
+        names = method.__code__.co_varnames[1:method.__code__.co_argcount]
+        kwargs.update(zip(names, args))
+        color = kwargs.get("color", None)
+        if kwargs.get("vertex_colors") is not None or kwargs.get("depth") is not None:
+            raise InputError("a label canvas has no channels to shade: give one int color")
+        value = np.frombuffer(self._value_bytes(color), self._array.dtype)[0]
+        if not self._array.flags.writeable:
+            raise InputError("the canvas's array is read-only; nothing was drawn")
+        scratch = Canvas.wrap(np.zeros(self._array.shape, np.uint8))
+        kwargs["color"] = 1
+        method(scratch, **kwargs)
+        self._array[scratch._array != 0] = value
+    return draw
 
 
 class Canvas:
     """A picture that rastrum draws into.
 
-    ``Canvas(width, height, format="rgb888", background=0)`` owns a new
-    array; ``Canvas.wrap(array)`` draws into an existing one (a sub-view of
-    a larger image is fine).  Formats: "gray8" (H, W), "rgb888" (H, W, 3),
+    ``Canvas((height, width), format="rgb888", background=0)`` owns a new
+    array of that shape, (H, W) as numpy writes it (the old spelling
+    ``Canvas(width, height)`` still works for one release, with a
+    DeprecationWarning); ``Canvas.wrap(array)`` draws into an existing one
+    (a sub-view of a larger image is fine).  Formats: "gray8" (H, W), "rgb888" (H, W, 3),
     "rgba8888" (H, W, 4), all uint8; "rgb565" (H, W) uint16 (R in bits
     15-11, G 10-5, B 4-0, as TFT displays take it); "mono1", one bit per
     pixel (e-paper), kept packed 8 pixels a byte, MSB first, in an
@@ -43,15 +71,19 @@ class Canvas:
     Examples
     --------
     >>> import rastrum
-    >>> c = rastrum.Canvas(8, 6, format="gray8")
+    >>> c = rastrum.Canvas((6, 8), format="gray8")
     >>> c.fill_polygon([(1, 1), (7, 1), (4, 5)], 255)
     >>> int(c.array.sum() // 255)
     12
     """
 
-    def __init__(self, width, height, format="rgb888", background=0):
-        h, w = _core.shape2((height, width))
-        fmt = _core._name(format, "format", _core.FORMATS)
+    def __init__(self, shape=None, _legacy_height=None, format="rgb888", background=0, *, width=None,
+                 height=None):
+        h, w = _canvas_shape(shape, _legacy_height, width, height)
+        fmt = _core._name(format, "format", _FORMAT_NAMES)
+        if fmt == "label":
+            raise InputError('format "label" is for Canvas.wrap of an integer (H, W) array; a new label '
+                             'canvas: Canvas.wrap(np.zeros((H, W), np.int32), format="label")')
         value = _pixel_bytes(background, fmt)
         if fmt == "mono1":
             array = np.full((h, (w + 7) // 8), 0xFF if value[0] else 0, np.uint8)
@@ -66,21 +98,51 @@ class Canvas:
 
     @classmethod
     def wrap(cls, array, format=None):
-        """Draw into an existing uint8 array (no copy).
+        """Draw into an existing array (no copy).
 
-        The format follows from the shape when not given: (H, W) is gray8,
-        (H, W, 3) rgb888, (H, W, 4) rgba8888, a uint16 (H, W) rgb565.  The
-        array must be writable and each row's pixels contiguous (any row
+        For uint8 arrays the format follows from the shape when not given:
+        (H, W) is gray8, (H, W, 3) rgb888, (H, W, 4) rgba8888.  Any other
+        dtype needs ``format=``, because the dtype alone does not say what
+        a value means (a uint16 array may be RGB565 pixels or a label
+        image):
+
+        - ``format="rgb565"``: a uint16 (H, W) array of RGB565 pixels;
+          colours are (R, G, B) in 0..255.
+        - ``format="label"``: an (H, W) array of any integer dtype (int8 ..
+          uint64; a uint8 array too), a label image: a colour is one int
+          that fits the dtype, written as it is.  Polygons, triangles,
+          lines and (for dtypes of 1, 2 or 4 bytes) flood and boundary
+          fills work; shading does not (there are no channels).
+
+        The array must be writable and each row's pixels contiguous (any row
         stride, so a slice ``big[10:-10, 10:-10]`` works).  mono1 cannot be
         wrapped (a packed row does not say its width).  InputError otherwise:
-        not a numpy array, not uint8 (uint16 for rgb565), another shape, a
+        not a numpy array, a dtype without ``format=``, another shape, a
         format that does not match, read-only (also a broadcast view), a
         column stride or reversed rows.  If the array is made read-only
         later, drawing raises InputError and writes nothing.
+
+        Examples
+        --------
+        >>> import numpy as np, rastrum
+        >>> labels = np.zeros((3, 4), np.int32)
+        >>> c = rastrum.Canvas.wrap(labels, format="label")
+        >>> c.fill_polygon([(0, 0), (3, 0), (3, 2), (0, 2)], 70000)
+        >>> labels
+        array([[70000, 70000, 70000,     0],
+               [70000, 70000, 70000,     0],
+               [    0,     0,     0,     0]], dtype=int32)
         """
         if not isinstance(array, np.ndarray):
             raise InputError("Canvas.wrap needs a numpy array, not %s" % type(array).__name__)
-        if array.dtype == np.uint16 and format in (None, "rgb565"):
+        if format is not None:
+            format = _core._name(format, "format", _FORMAT_NAMES)
+        if format == "label":
+            return cls._wrap_label(array)
+        if array.dtype == np.uint16 and format is None:
+            raise InputError('Canvas.wrap of a uint16 array needs format="rgb565" (RGB565 pixels) or '
+                             'format="label" (a label image): the dtype alone does not say which')
+        if array.dtype == np.uint16 and format == "rgb565":
             if array.ndim != 2 or not array.flags.writeable or (array.size and array.strides[1] != 2):
                 raise InputError("Canvas.wrap takes dtype uint16 only as rgb565: a writable (H, W) array with "
                                  "contiguous rows, not shape %s" % (array.shape,))
@@ -88,33 +150,46 @@ class Canvas:
             canvas._set(array, "rgb565", array.shape[1])
             return canvas
         if array.dtype != np.uint8:
-            raise InputError("Canvas.wrap needs a uint8 array, not %s" % array.dtype)
+            raise InputError('Canvas.wrap needs a uint8 array (or uint16 with format="rgb565", or any integer '
+                             'dtype with format="label"), not %s' % array.dtype)
         if array.ndim == 2:
             channels = 1
         elif array.ndim == 3 and array.shape[2] in (3, 4):
             channels = array.shape[2]
         else:
             raise InputError("Canvas.wrap needs shape (H, W), (H, W, 3) or (H, W, 4), not %s" % (array.shape,))
-        fmt = _CHANNELS_TO_FORMAT[channels] if format is None else _core._name(format, "format", _core.FORMATS)
+        fmt = _CHANNELS_TO_FORMAT[channels] if format is None else format
         if fmt in ("mono1", "rgb565"):
             raise InputError("Canvas.wrap: format %s needs %s" % (
                 fmt, "a uint16 (H, W) array" if fmt == "rgb565" else "a Canvas of its own (a packed row does not say its width)"))
         if _core.FORMAT_BYTES[fmt] != channels:
             raise InputError("format %r does not match an array of shape %s" % (fmt, array.shape))
-        if not array.flags.writeable:
-            raise InputError("Canvas.wrap needs a writable array")
-        h, w = array.shape[:2]
-        if array.size and h > 1 and array.strides[0] < w * channels or (
-            array.size and (array.strides[1] != channels or (channels > 1 and array.strides[2] != 1))
-        ):
-            raise InputError("Canvas.wrap needs each row's pixels contiguous and rows in order (strides %s)" % (array.strides,))
+        _check_rows(array, channels)
         canvas = cls.__new__(cls)
-        canvas._set(array, fmt, w)
+        canvas._set(array, fmt, array.shape[1])
+        return canvas
+
+    @classmethod
+    def _wrap_label(cls, array):
+        """A label canvas: integer (H, W) values written as they are.  Items
+        of 1, 2 and 4 bytes are drawn by C as gray8, rgb565 and rgba8888
+        pixels whose bytes are the value's (those painters copy a pixel's
+        bytes verbatim); 8-byte items through a uint8 mask (Python)."""
+        if array.dtype.kind not in "iu":
+            raise InputError('Canvas.wrap(format="label") needs an integer array, not %s' % array.dtype)
+        if array.ndim != 2:
+            raise InputError('Canvas.wrap(format="label") needs an (H, W) array, not shape %s' % (array.shape,))
+        _check_rows(array, array.dtype.itemsize)
+        canvas = cls.__new__(cls)
+        canvas._set(array, "label", array.shape[1])
         return canvas
 
     def _writable(self):
         """The target, once the array is known to be still writable (it may
         have been made read-only after Canvas.wrap)."""
+        if self._target is None:
+            raise InputError("a label canvas of %d-byte integers takes polygons, triangles and lines, "
+                             "not this call (seed fills need 1, 2 or 4-byte labels)" % self._array.dtype.itemsize)
         if not self._array.flags.writeable:
             raise InputError("the canvas's array is read-only; nothing was drawn")
         return self._target
@@ -126,24 +201,40 @@ class Canvas:
                 return self._last_color[1]
         except (TypeError, ValueError):  # e.g. a numpy array as the colour
             pass
-        pixel = ffi.from_buffer(_pixel_bytes(color, self._format))
+        pixel = ffi.from_buffer(self._value_bytes(color))
         self._last_color = (color if isinstance(color, (int, tuple)) else _NO_COLOR, pixel)
         return pixel
+
+    def _value_bytes(self, color):
+        """A colour's pixel bytes in this canvas's format (a label: the
+        value in the array's own dtype)."""
+        if self._format == "label":
+            return _label_bytes(color, self._array.dtype)
+        return _pixel_bytes(color, self._format)
 
     def _set(self, array, fmt, width):
         self._last_color = (_NO_COLOR, None)
         self._array = array
         self._format = fmt
         self._width = width
-        self._code = _core.FORMATS[fmt]
-        self._target = _core.make_target(array, self._code, width if fmt == "mono1" else None)
+        if fmt == "label":  # drawn by C through the format of the item's size
+            code = _LABEL_FORMATS.get(array.dtype.itemsize)
+            self._code = code
+            self._target = None if code is None else _core.make_target(array, code)
+        else:
+            self._code = _core.FORMATS[fmt]
+            self._target = _core.make_target(array, self._code, width if fmt == "mono1" else None)
         self.depth = None
 
     @property
     def array(self):
-        """The pixels as a numpy view: (H, W) or (H, W, channels); rgb565 a
-        uint16 (H, W) view.  mono1: an unpacked (H, W) uint8 COPY of 0/1
-        (writing to it changes nothing; ``packed`` is the buffer itself)."""
+        """The pixels: a numpy VIEW of the canvas's buffer, (H, W) or (H, W,
+        channels), rgb565 a uint16 (H, W) view, a label canvas the wrapped
+        array itself; writing to it changes the picture.  The one
+        exception is mono1, whose buffer packs 8 pixels a byte: there
+        ``array`` is an unpacked (H, W) uint8 COPY of 0/1 made at each
+        access (writing to it changes nothing); ``packed`` is the buffer
+        itself."""
         if self._format == "mono1":
             return np.unpackbits(self._array, axis=1, count=self._width) if self._array.size else \
                 np.zeros((self._array.shape[0], self._width), np.uint8)
@@ -173,9 +264,10 @@ class Canvas:
     def format(self):
         return self._format
 
+    @_label_spill
     def fill_polygon(self, rings, color=None, *, rule="evenodd", algorithm="aet", subpixel_bits=8,
                      sample_offset=0.5, rounding="exact", boundary="exact", vertex_colors=None,
-                     precision="exact"):
+                     shading="gouraud", precision="exact"):
         """Paint `color` on every pixel whose sample is inside the polygon.
 
         Arguments as :func:`rastrum.polygon_mask`.  Nothing is written when
@@ -185,34 +277,60 @@ class Canvas:
         (N, C) array-like for the N vertices of all rings in order (or a
         list of one (N_k, C) per ring), C the canvas's channels; the
         active edge table interpolates them along each edge to the row,
-        then along the span (seed 001), rounded half up (``precision``
-        "exact"; "flat" paints vertex 0's colour).  Only ``algorithm="aet"``.
+        then along the span, rounded half up (``precision="exact"``);
+        ``shading="flat"`` paints vertex 0's colour instead.  Only
+        ``algorithm="aet"``.  Give exactly one of `color` and
+        `vertex_colors`, as for :meth:`fill_triangle` and
+        :meth:`fill_triangles`.
         """
         opts = _core.fill_opts(algorithm, rule, subpixel_bits, sample_offset, rounding, boundary)
         if vertex_colors is not None:
             from . import shading as _shading
 
-            _shading.fill_polygon_gouraud(self, rings, vertex_colors, opts, precision)
+            if color is not None:
+                raise InputError("fill_polygon takes exactly one of color and vertex_colors")
+            if self._format == "label":
+                raise InputError("a label canvas has no channels to shade: give one int color")
+            _shading.fill_polygon_gouraud(self, rings, vertex_colors, opts,
+                                          _core.shading_precision(shading, precision))
             return
         if color is None:
-            raise InputError("fill_polygon needs a color or vertex_colors")
+            raise InputError("fill_polygon needs color or vertex_colors")
         pixel = self._pixel(color)
         _core.fill_polygon(self._writable(), rings, pixel, opts, opts.subpixel_bits)
 
-    def fill_triangle(self, tri, color, *, algorithm="edge", subpixel_bits=8, sample_offset=0.5,
+    @_label_spill
+    def fill_triangle(self, tri, color=None, *, vertex_colors=None, shading="gouraud", precision="exact",
+                      fraction_bits=16, algorithm="edge", subpixel_bits=8, sample_offset=0.5,
                       rounding="exact", boundary="exact"):
         """Paint `color` on every pixel the triangle `tri` owns.
 
         `tri` is three (x, y) vertices, in either winding order; the other
         arguments are those of :func:`rastrum.triangles_mask`.  A degenerate
         triangle paints nothing.  Nothing is written when an argument is bad.
+        Give exactly one of `color` and `vertex_colors` (a (3, C) array, a
+        colour per vertex, shaded as by :meth:`fill_triangles`), as for
+        :meth:`fill_polygon`.
         """
+        if vertex_colors is not None:
+            if color is not None:
+                raise InputError("fill_triangle takes exactly one of color and vertex_colors")
+            batch = _triangles.tris_f64(tri, single=True)
+            vc = np.asarray(vertex_colors)
+            self.fill_triangles(batch, vertex_colors=vc[None] if vc.ndim == 2 else vc, shading=shading,
+                                precision=precision, fraction_bits=fraction_bits, algorithm=algorithm,
+                                subpixel_bits=subpixel_bits, sample_offset=sample_offset, rounding=rounding,
+                                boundary=boundary)
+            return
+        if color is None:
+            raise InputError("fill_triangle needs color or vertex_colors")
         opts = _triangles.tri_opts(algorithm, subpixel_bits, sample_offset, rounding, boundary)
         batch = _triangles.tris_f64(tri, single=True)
         _triangles.fill_triangles(self._writable(), batch, self._pixel(color), opts, "tri")
 
-    def fill_triangles(self, tris, color=None, *, vertex_colors=None, precision="exact", fraction_bits=16,
-                       depth=None, algorithm="edge", subpixel_bits=8, sample_offset=0.5,
+    @_label_spill
+    def fill_triangles(self, tris, color=None, *, vertex_colors=None, shading="gouraud", precision="exact",
+                       fraction_bits=16, depth=None, algorithm="edge", subpixel_bits=8, sample_offset=0.5,
                        rounding="exact", boundary="exact"):
         """Paint every pixel owned by a triangle of the batch.
 
@@ -231,12 +349,15 @@ class Canvas:
           mono1 take C = 1.  Levels are 0..255 whatever the format: rgb565
           keeps their top bits, mono1 is on iff the level is >= 128.
 
-        `precision`: "exact" (the rational barycentric value at the sample,
-        rounded half up: floor(v + 1/2)), "fixed" (fixed point with
-        `fraction_bits` F in 1..16, stepped by additions: faster, off by
-        about a level at small F; see the README's table), or "flat" (each
-        triangle in its first vertex's colour).  A shaded fill writes
-        exactly the pixels the unshaded one writes.
+        `shading`: "gouraud" (the default: vertex colours interpolated) or
+        "flat" (each triangle in its first vertex's colour).  `precision`
+        of the interpolation: "exact" (the rational barycentric value at
+        the sample, rounded half up: floor(v + 1/2)) or "fixed" (fixed
+        point with `fraction_bits` F in 1..16, stepped by additions:
+        faster, off by about a level at small F; see the docs' table).
+        ``precision="flat"`` is the old spelling of ``shading="flat"``
+        (DeprecationWarning).  A shaded fill writes exactly the pixels the
+        unshaded one writes.
 
         `depth`: (N, 3) vertex depths, rounded half up to int32 (the range
         -2**31..2**31-1).  The canvas then keeps a depth buffer,
@@ -249,7 +370,7 @@ class Canvas:
         Examples
         --------
         >>> import rastrum
-        >>> c = rastrum.Canvas(6, 4, format="gray8")
+        >>> c = rastrum.Canvas((4, 6), format="gray8")
         >>> c.fill_triangles([[(0, 0), (4, 0), (4, 4)], [(0, 0), (4, 4), (0, 4)]], 9)
         >>> c.array
         array([[9, 9, 9, 9, 0, 0],
@@ -259,6 +380,7 @@ class Canvas:
         """
         opts = _triangles.tri_opts(algorithm, subpixel_bits, sample_offset, rounding, boundary)
         batch = _triangles.tris_f64(tris)
+        precision = _core.shading_precision(shading, precision)
         if vertex_colors is None and depth is None and precision == "exact" and (
                 color is None or np.ndim(color) < 2):
             if color is None:
@@ -291,16 +413,17 @@ class Canvas:
         if z is not None:
             self.depth = zbuf
 
-    def fill_rect_gouraud(self, rect, corner_colors, *, method="bilinear", precision="exact",
-                          fraction_bits=16, subpixel_bits=8, sample_offset=0.5):
-        """A Gouraud rectangle: four corner colours, interpolated (seed 001, 3.2.3).
+    def fill_rect_gouraud(self, rect, corner_colors, *, method="bilinear", shading="gouraud",
+                          precision="exact", fraction_bits=16, subpixel_bits=8, sample_offset=0.5):
+        """A Gouraud rectangle: four corner colours, interpolated (the textbook's §3.2.3).
 
         `rect` is (x0, y0, x1, y1) in pixels; `corner_colors` is (4, C), C
         the canvas's channels, for the corners (x0, y0), (x1, y0), (x1, y1),
         (x0, y1).  The pixels are those :meth:`fill_polygon` gives the
         rectangle.  method "bilinear" interpolates the four corners at each
         sample (rounded half up in precision "exact"; "fixed" steps in
-        `fraction_bits` bits as the textbook does; "flat" paints corner 0);
+        `fraction_bits` bits as the textbook does; ``shading="flat"``
+        paints corner 0);
         "triangles" splits the rectangle along the diagonal from (x0, y0)
         to (x1, y1) and fills the two Gouraud triangles instead: the
         difference of the textbook's Figure 3-18.
@@ -308,7 +431,7 @@ class Canvas:
         Examples
         --------
         >>> import rastrum
-        >>> c = rastrum.Canvas(4, 2, format="gray8")
+        >>> c = rastrum.Canvas((2, 4), format="gray8")
         >>> c.fill_rect_gouraud((0, 0, 4, 2), [0, 80, 80, 0])
         >>> c.array
         array([[10, 30, 50, 70],
@@ -316,9 +439,12 @@ class Canvas:
         """
         from . import shading as _shading
 
-        _shading.fill_rect_gouraud(self, rect, corner_colors, method, precision, fraction_bits,
-                                   subpixel_bits, sample_offset)
+        if self._format == "label":
+            raise InputError("a label canvas has no channels to shade")
+        _shading.fill_rect_gouraud(self, rect, corner_colors, method, _core.shading_precision(shading, precision),
+                                   fraction_bits, subpixel_bits, sample_offset)
 
+    @_label_spill
     def line(self, p0, p1, color, *, algorithm="bresenham", subpixel_bits=8, sample_offset=0.5):
         """Paint `color` on the pixels of the segment p0 -> p1.
 
@@ -330,7 +456,7 @@ class Canvas:
         Examples
         --------
         >>> import rastrum
-        >>> c = rastrum.Canvas(6, 3, format="gray8")
+        >>> c = rastrum.Canvas((3, 6), format="gray8")
         >>> c.line((0, 0), (5, 2), 1, subpixel_bits=0, sample_offset=0)
         >>> c.array
         array([[1, 1, 0, 0, 0, 0],
@@ -342,6 +468,7 @@ class Canvas:
         b = _lines.snap_point(p1, opts.subpixel_bits, "p1")
         _core._check(lib.rast_draw_line(self._writable(), a, b, opts, self._pixel(color)))
 
+    @_label_spill
     def polyline(self, points, color, *, closed=False, algorithm="bresenham", subpixel_bits=8,
                  sample_offset=0.5):
         """Paint the segments points[k] -> points[k+1]; with ``closed=True``
@@ -354,7 +481,7 @@ class Canvas:
         Examples
         --------
         >>> import rastrum
-        >>> c = rastrum.Canvas(5, 5, format="gray8")
+        >>> c = rastrum.Canvas((5, 5), format="gray8")
         >>> c.polyline([(0, 0), (4, 0), (0, 4)], 1, closed=True, subpixel_bits=0, sample_offset=0)
         >>> c.array
         array([[1, 1, 1, 1, 1],
@@ -373,12 +500,12 @@ class Canvas:
             _core._check(lib.rast_draw_polyline(target, ffi.from_buffer("rast_point[]", pts), len(pts),
                                                 1 if closed else 0, opts, pixel))
 
-    def flood_fill(self, seed, value, connectivity=4):
+    def flood_fill(self, seed, value, *_legacy, connectivity=4):
         """Flood fill: paint `value` on every pixel connected to `seed`
         through pixels of the seed's (original) value.
 
-        `seed` is (x, y), inside the canvas; `connectivity` is 4 (through
-        sides) or 8 (also through corners); `value` is a colour as for
+        `seed` is (x, y), inside the canvas; `connectivity` (keyword only)
+        is 4 (through sides) or 8 (also through corners); `value` is a colour as for
         :meth:`fill_polygon`.  A value equal to the seed's paints nothing.
         Nothing is written when an argument is bad (an InputError says
         which).
@@ -400,10 +527,11 @@ class Canvas:
                [1, 7, 1],
                [7, 1, 7]], dtype=uint8)
         """
+        connectivity = _connectivity(_legacy, connectivity)
         pixel = self._pixel(value)
         _core.seed_fill(self._writable(), seed, pixel, None, connectivity)
 
-    def boundary_fill(self, seed, value, boundary, connectivity=4):
+    def boundary_fill(self, seed, value, boundary, *_legacy, connectivity=4):
         """Boundary fill: paint `value` on every pixel connected to `seed`
         through pixels that are neither `boundary` nor `value`.
 
@@ -417,7 +545,7 @@ class Canvas:
         Examples
         --------
         >>> import rastrum
-        >>> c = rastrum.Canvas(5, 4, format="gray8")
+        >>> c = rastrum.Canvas((4, 5), format="gray8")
         >>> c.polyline([(0, 0), (3, 0), (3, 3), (0, 3)], 1, closed=True, subpixel_bits=0, sample_offset=0)
         >>> c.array[1, 2] = 7
         >>> c.boundary_fill((1, 1), 7, 1)
@@ -427,8 +555,9 @@ class Canvas:
                [1, 7, 7, 1, 0],
                [1, 1, 1, 1, 0]], dtype=uint8)
         """
+        connectivity = _connectivity(_legacy, connectivity)
         pixel = self._pixel(value)
-        edge = ffi.from_buffer(_pixel_bytes(boundary, self._format))
+        edge = ffi.from_buffer(self._value_bytes(boundary))
         _core.seed_fill(self._writable(), seed, pixel, edge, connectivity)
 
     def to_image(self):
@@ -437,6 +566,8 @@ class Canvas:
         mode "1"."""
         from PIL import Image
 
+        if self._format == "label":  # what Pillow makes of the integers (mode L, I;16 or I)
+            return Image.fromarray(np.ascontiguousarray(self._array))
         if self._format == "mono1":
             packed = np.ascontiguousarray(self._array)
             return Image.frombytes("1", (self._width, self.height), packed.tobytes())
@@ -452,7 +583,7 @@ class Canvas:
         self.to_image().save(path, **kwargs)
 
     def __repr__(self):
-        return "Canvas(%d, %d, format=%r)" % (self.width, self.height, self._format)
+        return "Canvas((%d, %d), format=%r)" % (self.height, self.width, self._format)
 
 
 def _pixel_bytes(color, fmt):
@@ -490,3 +621,70 @@ def _rgba_bytes(color, fmt):
         color = 255 if color else 0  # a flat mono1 colour: on iff not 0
     values = _pixel_bytes(color, "rgba8888" if n == 4 else "rgb888" if n == 3 else "gray8")
     return (values * 3)[:3] + b"\xff" if n == 1 else values + (b"\xff" if n == 3 else b"")
+
+
+# A label value's bytes are copied verbatim by the painters of these formats.
+_LABEL_FORMATS = {1: lib.RAST_FORMAT_GRAY8, 2: lib.RAST_FORMAT_RGB565, 4: lib.RAST_FORMAT_RGBA8888}
+
+
+def _label_bytes(value, dtype):
+    """The bytes of `value` as one item of `dtype`, or InputError when it is
+    not an int or does not fit."""
+    if isinstance(value, (bool, np.bool_)) or not isinstance(value, (int, np.integer)):
+        raise InputError("label value %r: a label canvas takes one int" % (value,))
+    info = np.iinfo(dtype)
+    if not info.min <= int(value) <= info.max:
+        raise InputError("label value %d does not fit the array's dtype %s (%d..%d)"
+                         % (int(value), dtype, info.min, info.max))
+    return np.array(int(value), dtype).tobytes()
+
+
+def _check_rows(array, item):
+    """A wrapped array must be writable, with each row's pixels contiguous
+    (`item` bytes a pixel) and rows in order."""
+    if not array.flags.writeable:
+        raise InputError("Canvas.wrap needs a writable array")
+    h, w = array.shape[:2]
+    if array.size and (h > 1 and array.strides[0] < w * item or array.strides[1] != item
+                       or (array.ndim > 2 and array.strides[2] != 1)):
+        raise InputError("Canvas.wrap needs each row's pixels contiguous and rows in order (strides %s)"
+                         % (array.strides,))
+
+
+def _is_int(v):
+    return isinstance(v, (int, np.integer)) and not isinstance(v, (bool, np.bool_))
+
+
+def _canvas_shape(shape, legacy_height, width, height):
+    """(H, W) from Canvas(shape) or, deprecated, Canvas(width, height) /
+    Canvas(width=, height=)."""
+    if shape is not None and not _is_int(shape):
+        if legacy_height is not None or width is not None or height is not None:
+            raise InputError("Canvas takes shape=(height, width) alone, not with width or height")
+        return _core.shape2(shape)
+    if shape is not None and width is not None:
+        raise InputError("Canvas: width given twice")
+    w = shape if shape is not None else width
+    h = legacy_height if legacy_height is not None else height
+    if legacy_height is not None and height is not None:
+        raise InputError("Canvas: height given twice")
+    if w is None or h is None:
+        raise InputError("Canvas needs shape=(height, width), as numpy writes it")
+    if not (_is_int(w) and _is_int(h)):
+        raise InputError("Canvas(width, height) takes two ints, not %r, %r; better: Canvas((height, width))"
+                         % (w, h))
+    _core.deprecated("Canvas(width, height) is now Canvas((height, width)), (H, W) as numpy writes it",
+                     stacklevel=4)
+    return _core.shape2((h, w))
+
+
+def _connectivity(legacy, connectivity):
+    """connectivity is keyword-only; given by position it still works for
+    one release, with a DeprecationWarning."""
+    if legacy:
+        if len(legacy) > 1 or connectivity != 4:
+            raise InputError("connectivity is keyword-only: connectivity=4 or connectivity=8")
+        _core.deprecated("connectivity by position is now keyword-only: connectivity=%r" % (legacy[0],),
+                         stacklevel=4)
+        return legacy[0]
+    return connectivity

@@ -1,4 +1,4 @@
-"""A small mesh pipeline (seeds 002 and 004): camera, viewport, back-face
+"""A small mesh pipeline (after the textbook's chapters): camera, viewport, back-face
 culling, Lambert shading (flat or Gouraud), optional depth buffer.
 
 Everything here is plain numpy in floating point, like any application of
@@ -24,7 +24,7 @@ x is divided by the aspect ratio W / H so that a circle stays round.  That
 gives normalised device coordinates (NDC) with the visible square
 [-1, 1]^2, y up.
 
-Viewport (seed 004's M_viewport, y flipped): NDC (x, y) goes to pixel
+Viewport (the textbook's M_viewport, y flipped): NDC (x, y) goes to pixel
 coordinates ((x + 1) W / 2, (1 - y) H / 2): x grows right and y DOWN, the
 NDC square covers the canvas [0, W] x [0, H] exactly, and the sample of
 pixel (i, j) is its centre (i + 1/2, j + 1/2), which is the NDC point
@@ -35,13 +35,13 @@ Faces are front faces when their vertices run counter-clockwise as seen
 coordinates (y down).  Back-face culling keeps the faces whose NDC signed
 area is positive; zero-area faces own no pixel anyway.
 
-Lambert (seed 002): with unit normal n and unit light direction l (towards
+Lambert: with unit normal n and unit light direction l (towards
 the light, in camera space), the intensity is
 ``ambient + (1 - ambient) * max(0, n . l)`` and the colour
 ``floor(color * intensity + 1/2)`` per channel.  "flat" takes n from the
 face's plane (the cross product of its edges) and paints the face in one
 colour; "gouraud" evaluates Lambert at each vertex with the vertex normal
-and lets the core interpolate the colours across the face (seed 001's
+and lets the core interpolate the colours across the face (the textbook's
 smooth shading: no Mach bands at the edges).
 
 Depth: the depths of the visible faces are mapped linearly onto the
@@ -392,7 +392,7 @@ def lambert(normals, light, ambient, color):
     return np.floor(k[:, None] * c[None, :] + 0.5).astype(np.int64)
 
 
-def render_mesh(vertices, faces, size=(256, 256), *, normals=None, shading="flat",
+def render_mesh(vertices, faces, size=None, *, shape=None, normals=None, shading="flat",
                 light=(-0.4, 0.5, 0.75), ambient=0.15, color=None, rotation=None,
                 projection="orthographic", scale=1.0, fov=40.0, distance=4.0, cull=True,
                 depth=True, background=0, format="rgb888", canvas=None, precision="exact",
@@ -405,8 +405,13 @@ def render_mesh(vertices, faces, size=(256, 256), *, normals=None, shading="flat
         Positions in world space (x right, y up, z towards the viewer).
     faces : (F, 3) int array_like
         Vertex indices, counter-clockwise seen from the front.
+    shape : (int, int)
+        (height, width) of a new canvas, as numpy writes it; default
+        (256, 256).  With `canvas`, None or the canvas's own shape.
     size : (int, int)
-        (width, height) of a new canvas.
+        Deprecated: the old spelling, (width, height), by position or as
+        ``size=``; it still works for one release, with a
+        DeprecationWarning.
     normals : (V, 3) array_like, optional
         Vertex normals for "gouraud" (else :func:`vertex_normals`).
     shading : {"flat", "gouraud"}
@@ -425,8 +430,9 @@ def render_mesh(vertices, faces, size=(256, 256), *, normals=None, shading="flat
     depth : bool
         Use the canvas's depth buffer (cleared first): nearer wins.
         Without it, faces are drawn in order and the last one wins.
-    precision : {"exact", "fixed", "flat"}
-        The colour interpolation of the core (``Canvas.fill_triangles``).
+    precision : {"exact", "fixed"}
+        The colour interpolation of the core (``Canvas.fill_triangles``);
+        ``"flat"`` is deprecated (use ``shading="flat"``).
 
     Returns
     -------
@@ -437,7 +443,7 @@ def render_mesh(vertices, faces, size=(256, 256), *, normals=None, shading="flat
     >>> import rastrum
     >>> from rastrum.scene import sphere
     >>> v, f, n = sphere(8, 16)
-    >>> c = rastrum.render_mesh(v, f, (32, 32), normals=n, shading="gouraud")
+    >>> c = rastrum.render_mesh(v, f, shape=(32, 32), normals=n, shading="gouraud")
     >>> c.array.shape
     (32, 32, 3)
     """
@@ -462,13 +468,24 @@ def render_mesh(vertices, faces, size=(256, 256), *, normals=None, shading="flat
     for name, flag in (("cull", cull), ("depth", depth)):
         if not isinstance(flag, (bool, np.bool_)):
             raise InputError("%s must be True or False, not %r" % (name, flag))
-    if canvas is None:
-        from ._core import int_pair
+    from ._core import deprecated, int_pair, shape2
+    if size is not None:
+        if shape is not None:
+            raise InputError("render_mesh takes shape=(height, width), not also size")
         width, height = int_pair(size, "size must be a pair (width, height), not %r",
                                  "size must hold two ints (width, height), not %r")
-        canvas = Canvas(width, height, format=format, background=background)
+        deprecated("render_mesh(..., size=(width, height)) is now shape=(height, width), as numpy writes it")
+        shape = (height, width)
+    if precision == "flat":
+        deprecated('render_mesh(precision="flat") is now shading="flat"')
+    if canvas is None:
+        canvas = Canvas(shape2((256, 256) if shape is None else shape), format=format, background=background)
     elif not isinstance(canvas, Canvas):
         raise InputError("canvas must be a rastrum.Canvas, not %s" % type(canvas).__name__)
+    elif shape is not None and shape2(shape) != (canvas.height, canvas.width):
+        raise InputError("shape %r does not match the canvas's (height, width) = (%d, %d)%s"
+                         % (shape, canvas.height, canvas.width,
+                            " (swapped?)" if shape2(shape) == (canvas.width, canvas.height) else ""))
     channels = canvas.array.shape[2] if canvas.array.ndim == 3 else 1
     if color is None:
         color = (230,) * channels
@@ -502,8 +519,8 @@ def render_mesh(vertices, faces, size=(256, 256), *, normals=None, shading="flat
         zq = quantise_depth(key)[f]
         canvas.clear_depth()
     try:
-        canvas.fill_triangles(tri_xy, vertex_colors=vcol, precision=precision, depth=zq,
-                              subpixel_bits=subpixel_bits)
+        canvas.fill_triangles(tri_xy, vertex_colors=vcol, depth=zq, subpixel_bits=subpixel_bits,
+                              **({"shading": "flat"} if precision == "flat" else {"precision": precision}))
     except InputError as e:
         canvas.depth = kept  # nothing was drawn: the depth buffer as it was
         if str(e).startswith("tris"):  # the projected triangles: name what the caller gave

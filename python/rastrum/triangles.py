@@ -106,10 +106,10 @@ def triangles_mask(tris, shape, *, algorithm="edge", subpixel_bits=8, sample_off
     sample_offset : {0.5, 0}
         Where a pixel's sample point is: its centre (0.5) or its top-left
         corner (0, as OpenCV and the textbook).
-    mode : {"set", "count"}
-        "set": a bool union of the triangles.  "count": a uint16 count of
-        the triangles owning each pixel (saturating at 65535): overdraw
-        made visible.
+    mode : {"set"}
+        Deprecated: ``mode="count"`` (a uint16 count instead of the bool
+        mask) is now :func:`triangles_count`; it still works for one
+        release, with a DeprecationWarning.
     rounding : {"exact", "textbook"}
         "textbook" rounds each crossing to the nearest sample column,
         halves going right, as the textbook's Example 3-1 does (use it with
@@ -120,8 +120,8 @@ def triangles_mask(tris, shape, *, algorithm="edge", subpixel_bits=8, sample_off
 
     Returns
     -------
-    numpy.ndarray, shape (H, W)
-        bool for mode "set", uint16 for mode "count".
+    numpy.ndarray of bool, shape (H, W)
+        True where a triangle owns the pixel.
 
     Raises
     ------
@@ -138,12 +138,12 @@ def triangles_mask(tris, shape, *, algorithm="edge", subpixel_bits=8, sample_off
     --------
     >>> import rastrum
     >>> square = [[(0, 0), (4, 0), (4, 4)], [(0, 0), (4, 4), (0, 4)]]
-    >>> rastrum.triangles_mask(square, (5, 6), mode="count")
+    >>> rastrum.triangles_mask(square, (5, 6)).astype(int)
     array([[1, 1, 1, 1, 0, 0],
            [1, 1, 1, 1, 0, 0],
            [1, 1, 1, 1, 0, 0],
            [1, 1, 1, 1, 0, 0],
-           [0, 0, 0, 0, 0, 0]], dtype=uint16)
+           [0, 0, 0, 0, 0, 0]])
     >>> rastrum.triangles_mask([[(1, 1), (5, 3), (4, 7)]], (8, 7),
     ...                        sample_offset=0).astype(int)[1:7]
     array([[0, 0, 0, 0, 0, 0, 0],
@@ -153,9 +153,42 @@ def triangles_mask(tris, shape, *, algorithm="edge", subpixel_bits=8, sample_off
            [0, 0, 0, 1, 1, 0, 0],
            [0, 0, 0, 0, 1, 0, 0]])
     """
+    count = _mode(mode) == "count"
+    if count:
+        _core.deprecated('triangles_mask(mode="count") is now triangles_count(), which always returns uint16')
+    return _mask(tris, shape, algorithm, subpixel_bits, sample_offset, rounding, boundary, count)
+
+
+def triangles_count(tris, shape, *, algorithm="edge", subpixel_bits=8, sample_offset=0.5, rounding="exact",
+                    boundary="exact"):
+    """Count, per pixel, the triangles of a batch that own it: overdraw
+    made visible.
+
+    Arguments as :func:`triangles_mask`, which gives the bool union of
+    the same triangles (``triangles_count(...) > 0``).
+
+    Returns
+    -------
+    numpy.ndarray of uint16, shape (H, W)
+        The number of triangles owning each pixel, saturating at 65535.
+
+    Examples
+    --------
+    >>> import rastrum
+    >>> square = [[(0, 0), (4, 0), (4, 4)], [(0, 0), (4, 4), (0, 4)]]
+    >>> rastrum.triangles_count(square, (5, 6))
+    array([[1, 1, 1, 1, 0, 0],
+           [1, 1, 1, 1, 0, 0],
+           [1, 1, 1, 1, 0, 0],
+           [1, 1, 1, 1, 0, 0],
+           [0, 0, 0, 0, 0, 0]], dtype=uint16)
+    """
+    return _mask(tris, shape, algorithm, subpixel_bits, sample_offset, rounding, boundary, True)
+
+
+def _mask(tris, shape, algorithm, subpixel_bits, sample_offset, rounding, boundary, count):
     opts = tri_opts(algorithm, subpixel_bits, sample_offset, rounding, boundary)
     h, w = _core.shape2(shape)
-    count = _mode(mode) == "count"
     batch = tris_f64(tris)
     out = np.zeros((h, w), np.uint16 if count else np.bool_)
     if not (h and w and batch.shape[0]):

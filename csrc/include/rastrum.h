@@ -943,7 +943,9 @@ RAST_API rast_status rast_render_bands_spans(const rast_prim *prims, uint32_t n,
  * X = 5c + 2 to 5c + 3, column c (0 <= c < width) gets a toggle at row
  * ceil((Y - 2) / 5) clamped to 0..height, Y the smaller of the two steps'
  * Y; a pixel is inside iff an odd number of its column's toggles are at or
- * above it.  Rings of 0, 1 or 2 points draw nothing.
+ * above it.  Rings of 0, 1 or 2 points draw nothing.  Width 0 is
+ * pycocotools' too: its unsigned width - 1 wraps, so every column c >= 0
+ * takes toggles (counts past the empty mask, as pycocotools gives them).
  */
 enum {
     RAST_COCO_COORD_MAX = 8388607 /* 2^23 - 1, in fifths of a pixel */
@@ -962,10 +964,13 @@ RAST_API rast_status rast_coco_ring_toggles(const rast_point *points, uint32_t n
                                             size_t capacity, size_t *count);
 
 /* The run-length counts of the mask that toggles[0..count) (positions, any
- * order, any multiplicity; positions >= total are ignored) give a mask of
- * `total` pixels, as COCO writes them: zeros first (a count of 0 when the
- * mask starts inside), then alternately ones and zeros, no other count 0;
- * one count (`total`) for an empty mask.  toggles is sorted in place (and
+ * order, any multiplicity) give a mask of `total` pixels, as pycocotools
+ * makes them: the differences of the sorted positions with `total` among
+ * them (uint32), a difference of 0 joining the runs either side of it.
+ * When no position passes `total` these are COCO's canonical runs of the
+ * positions of odd multiplicity: zeros first (a count of 0 when the mask
+ * starts inside), then alternately ones and zeros, no other count 0; one
+ * count (`total`) for an empty mask.  toggles is sorted in place (and
  * `scratch`, count uint32_t, used as work memory); counts must hold
  * count + 1 values; *ncounts gets how many were written.  Errors:
  * RAST_E_NULL. */

@@ -194,7 +194,9 @@ static void coco_columns(int64_t lo, int64_t hi, int32_t width, int64_t *c0, int
 {
     int64_t a = rast__ceildiv(lo - 2, 5), b = rast__ceildiv(hi - 2, 5);
     *c0 = a < 0 ? 0 : a;
-    *c1 = b > width ? width : b;
+    /* width 0: pycocotools' unsigned width - 1 wraps, and every column
+     * from 0 on takes toggles */
+    *c1 = width && b > width ? width : b;
     if (*c1 < *c0) *c1 = *c0;
 }
 
@@ -293,7 +295,7 @@ rast_status rast_coco_rle(uint32_t *toggles, size_t count, uint32_t total, uint3
                           uint32_t *counts, size_t *ncounts)
 {
     size_t i, m = 0;
-    uint32_t prev = 0;
+    const uint32_t prev = 0;
     if (!ncounts || !counts || (count && (!toggles || !scratch))) return RAST_E_NULL;
     if (count) {
         size_t h[256], k;
@@ -322,18 +324,46 @@ rast_status rast_coco_rle(uint32_t *toggles, size_t count, uint32_t total, uint3
             toggles = src;
         }
     }
-    /* Runs from the distinct positions of odd multiplicity below total. */
-    for (i = 0; i < count;) {
-        uint32_t p = toggles[i];
-        size_t k = i;
-        while (k < count && toggles[k] == p) k++;
-        if (((k - i) & 1) && p < total) {
-            counts[m++] = p - prev;
-            prev = p;
+    /* pycocotools' runs: the differences of the sorted positions and
+     * `total` (uint32), a difference of 0 joining the runs around it.
+     * With every position <= total (width > 0) these are the runs of the
+     * positions of odd multiplicity; with width 0 they are pycocotools'
+     * counts past the empty mask. */
+    {
+        size_t j = 0, k = count + 1;
+        int put = 0; /* total taken */
+        uint32_t p = 0, a0;
+        /* the j-th value of the sorted toggles with total merged in */
+#define COCO_NEXT(out)                                                        \
+    do {                                                                      \
+        if (!put && (i >= count || toggles[i] > total)) {                     \
+            (out) = total;                                                    \
+            put = 1;                                                          \
+        } else {                                                              \
+            (out) = toggles[i++];                                             \
+        }                                                                     \
+    } while (0)
+        i = 0;
+        COCO_NEXT(a0);
+        counts[m++] = a0 - prev;
+        p = a0;
+        for (j = 1; j < k;) {
+            uint32_t v, d;
+            COCO_NEXT(v);
+            d = v - p;
+            p = v;
+            j++;
+            if (d > 0) {
+                counts[m++] = d;
+            } else if (j < k) {
+                COCO_NEXT(v);
+                counts[m - 1] += v - p;
+                p = v;
+                j++;
+            }
         }
-        i = k;
+#undef COCO_NEXT
     }
-    counts[m++] = total - prev;
     *ncounts = m;
     return RAST_OK;
 }

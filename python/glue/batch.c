@@ -90,11 +90,78 @@ static void rastpy_burn_span(void *user, uint32_t k, int32_t y, int32_t x0, int3
     b->put(b, b->out + (int64_t)k * b->plane_stride + (int64_t)y * b->row_stride, k, x0, x1);
 }
 
+/* Twice the signed area of snapped ring p[0..n), exactly where the
+ * compiler has a 128-bit integer (products of coordinates below 2^27 reach
+ * 2^55; their sum over 2^24 points 2^79), else in double. */
+#if defined(__SIZEOF_INT128__)
+__extension__ typedef __int128 rastpy_wide;
+#else
+typedef double rastpy_wide;
+#endif
+static int rastpy_ring_sign(const int32_t *p, size_t n)
+{
+    rastpy_wide a = 0;
+    size_t i;
+    for (i = 0; i < n; i++) {
+        size_t j = i + 1 < n ? i + 1 : 0;
+        a += (rastpy_wide)((int64_t)p[2 * i] * p[2 * j + 1] - (int64_t)p[2 * j] * p[2 * i + 1]);
+    }
+    return a > 0 ? 1 : a < 0 ? -1 : 0;
+}
+
+/* Reverse the rings whose sign of area is not orient[r] (+1 or -1; 0:
+ * leave it): after this, non-zero winding gives the union of the +1 rings
+ * less the -1 rings (outer rings and their holes). */
+static void rastpy_orient(int32_t *pts, const uint32_t *ring_sizes, size_t nrings,
+                          const int8_t *orient)
+{
+    size_t r, at = 0;
+    for (r = 0; r < nrings; at += ring_sizes[r], r++) {
+        int32_t *p = pts + 2 * at;
+        size_t n = ring_sizes[r], i;
+        if (!orient[r] || rastpy_ring_sign(p, n) != -orient[r]) continue;
+        for (i = 0; i < n / 2; i++) {
+            int32_t x = p[2 * i], y = p[2 * i + 1];
+            p[2 * i] = p[2 * (n - 1 - i)];
+            p[2 * i + 1] = p[2 * (n - 1 - i) + 1];
+            p[2 * (n - 1 - i)] = x;
+            p[2 * (n - 1 - i) + 1] = y;
+        }
+    }
+}
+
+static long rastpy_burn_all(void *out, int32_t height, int32_t width, int64_t row_stride,
+                        int64_t plane_stride, int dtype, int merge, const void *values,
+                        const double *xy, size_t npoints, const uint32_t *ring_sizes,
+                        size_t nrings, const uint32_t *poly_rings, uint32_t npolys,
+                        const rast_fill_opts *opts, uint32_t *failed, const int8_t *orient);
+
 long rastpy_burn_polygons(void *out, int32_t height, int32_t width, int64_t row_stride,
                           int64_t plane_stride, int dtype, int merge, const void *values,
                           const double *xy, size_t npoints, const uint32_t *ring_sizes,
                           size_t nrings, const uint32_t *poly_rings, uint32_t npolys,
                           const rast_fill_opts *opts, uint32_t *failed)
+{
+    return rastpy_burn_all(out, height, width, row_stride, plane_stride, dtype, merge, values, xy,
+                       npoints, ring_sizes, nrings, poly_rings, npolys, opts, failed, NULL);
+}
+
+long rastpy_burn_polygons_oriented(void *out, int32_t height, int32_t width, int64_t row_stride,
+                                   int64_t plane_stride, int dtype, int merge, const void *values,
+                                   const double *xy, size_t npoints, const uint32_t *ring_sizes,
+                                   size_t nrings, const uint32_t *poly_rings, uint32_t npolys,
+                                   const rast_fill_opts *opts, uint32_t *failed,
+                                   const int8_t *orient)
+{
+    return rastpy_burn_all(out, height, width, row_stride, plane_stride, dtype, merge, values, xy,
+                       npoints, ring_sizes, nrings, poly_rings, npolys, opts, failed, orient);
+}
+
+static long rastpy_burn_all(void *out, int32_t height, int32_t width, int64_t row_stride,
+                        int64_t plane_stride, int dtype, int merge, const void *values,
+                        const double *xy, size_t npoints, const uint32_t *ring_sizes,
+                        size_t nrings, const uint32_t *poly_rings, uint32_t npolys,
+                        const rast_fill_opts *opts, uint32_t *failed, const int8_t *orient)
 {
     rast_polygon *polys;
     rast_rect clip;
@@ -139,6 +206,7 @@ long rastpy_burn_polygons(void *out, int32_t height, int32_t width, int64_t row_
         free(pts);
         return RAST_E_ARG;
     }
+    if (orient) rastpy_orient(pts, ring_sizes, nrings, orient);
     clip.x0 = 0;
     clip.y0 = 0;
     clip.x1 = width;

@@ -27,6 +27,15 @@ long rastpy_burn_polygons(void *out, int32_t height, int32_t width, int64_t row_
                           const double *xy, size_t npoints, const uint32_t *ring_sizes,
                           size_t nrings, const uint32_t *poly_rings, uint32_t npolys,
                           const rast_fill_opts *opts, uint32_t *failed);
+/* The same, each ring r first turned so that its signed area has the sign
+ * orient[r] (+1, -1; 0 leaves it): with the non-zero rule, the union of
+ * the +1 rings less the -1 rings (rastrum.masks' parts and holes). */
+long rastpy_burn_polygons_oriented(void *out, int32_t height, int32_t width, int64_t row_stride,
+                                   int64_t plane_stride, int dtype, int merge, const void *values,
+                                   const double *xy, size_t npoints, const uint32_t *ring_sizes,
+                                   size_t nrings, const uint32_t *poly_rings, uint32_t npolys,
+                                   const rast_fill_opts *opts, uint32_t *failed,
+                                   const int8_t *orient);
 /* cdef-end */
 
 #endif

@@ -15,10 +15,11 @@ from .lines import line_pixels, point_in_triangle
 from .triangles import TRIANGLE_ALGORITHMS as _TRIANGLE_ALGORITHMS, triangles_mask
 from . import scene
 from . import coco
+from .ml import labels, masks
 from .scene import render_mesh
 
 __all__ = ["polygon_mask", "triangles_mask", "line_pixels", "point_in_triangle", "Canvas", "ALGORITHMS",
-           "RastrumError", "InputError", "__version__", "render_mesh", "scene", "coco"]
+           "RastrumError", "InputError", "__version__", "render_mesh", "scene", "coco", "masks", "labels"]
 
 _v = lib.rast_version_number()
 __version__ = "%d.%d.%d" % (_v // 10000, _v // 100 % 100, _v % 100)

@@ -31,7 +31,7 @@ DTYPES = {
 MERGES = {"replace": lib.RASTPY_MERGE_REPLACE, "add": lib.RASTPY_MERGE_ADD}
 
 
-def burn(out, polygons, opts, values=None, merge="replace", planes=False, what="polygon"):
+def burn(out, polygons, opts, values=None, merge="replace", planes=False, what="polygon", orient=None):
     """Burn `polygons` into `out` (numpy, native byte order, rows of
     contiguous elements, writable).
 
@@ -66,12 +66,15 @@ def burn(out, polygons, opts, values=None, merge="replace", planes=False, what="
     if not len(polygons) or not h or not w:
         return out
     failed = ffi.new("uint32_t *", 0xFFFFFFFF)
-    result = lib.rastpy_burn_polygons(
-        ffi.cast("void *", out.__array_interface__["data"][0]), h, w,
-        out.strides[-2] if h > 1 else 0, out.strides[0] if planes and len(polygons) > 1 else 0,
-        dt, MERGES[merge], ffi.from_buffer(values) if values is not None else ffi.NULL,
-        ffi.from_buffer("double[]", pts), len(pts), ffi.from_buffer("uint32_t[]", sizes),
-        len(sizes), ffi.from_buffer("uint32_t[]", poly_rings), len(polygons), opts, failed)
+    args = (ffi.cast("void *", out.__array_interface__["data"][0]), h, w,
+            out.strides[-2] if h > 1 else 0, out.strides[0] if planes and len(polygons) > 1 else 0,
+            dt, MERGES[merge], ffi.from_buffer(values) if values is not None else ffi.NULL,
+            ffi.from_buffer("double[]", pts), len(pts), ffi.from_buffer("uint32_t[]", sizes),
+            len(sizes), ffi.from_buffer("uint32_t[]", poly_rings), len(polygons), opts, failed)
+    if orient is None:
+        result = lib.rastpy_burn_polygons(*args)
+    else:
+        result = lib.rastpy_burn_polygons_oriented(*args, ffi.from_buffer("int8_t[]", orient))
     if result == 0:
         return out
     if result > 0:

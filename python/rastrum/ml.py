@@ -89,6 +89,8 @@ def _burn(out, polys, orient, opts, rule, values, merge, planes, what, report):
     """Burn in chunks (one when no progress is shown); orientation per
     ring for the union rule."""
     n = len(polys)
+    if not n:
+        return
     ring_at = np.zeros(n + 1, np.int64)
     if rule == "union" and n:
         np.cumsum([len(p) for p in polys], out=ring_at[1:])
@@ -117,10 +119,12 @@ def masks(polygons, shape, *, rule="union", algorithm="aet", subpixel_bits=8, sa
         (height, width) of each mask.
     rule : {"union", "evenodd", "nonzero"}
         "union" (the default): a polygon is the union of its parts, less
-        its geometry's holes (each ring turned to one orientation, holes to
-        the other, then the non-zero rule: a part that crosses itself is
-        its own non-zero region).  "evenodd" and "nonzero" take the rings
-        as given.
+        its geometry's holes: each ring is turned to positive area (holes
+        to negative), then filled under the non-zero rule.  For parts that
+        do not cross themselves (COCO parts, contours, valid geometries)
+        that is exactly the union; where a part crosses itself, its lobes
+        wound the other way subtract.  "evenodd" and "nonzero" take the
+        rings as given.
     algorithm, subpixel_bits, sample_offset
         As for ``polygon_mask``; every algorithm gives the same pixels.
     progress : bool or callable

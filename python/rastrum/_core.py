@@ -226,11 +226,14 @@ def int_pair(pair, not_pair, not_ints):
     return int(a), int(b)
 
 
+_MAX_DIM = lib.RAST_MAX_DIM
+
+
 def shape2(shape):
     """(H, W) as two ints >= 0, or InputError."""
     if type(shape) is tuple and len(shape) == 2:  # the common case, quickly
         h, w = shape
-        if type(h) is int and type(w) is int and 0 <= h <= lib.RAST_MAX_DIM and 0 <= w <= lib.RAST_MAX_DIM:
+        if type(h) is int and type(w) is int and 0 <= h <= _MAX_DIM and 0 <= w <= _MAX_DIM:
             return shape
     h, w = int_pair(shape, "shape must be a pair (height, width), not %r",
                     "shape must hold two ints, not %r")

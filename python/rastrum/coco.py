@@ -27,8 +27,6 @@ from ._native import ffi, lib
 
 __all__ = ["encode", "decode", "area", "toBbox", "merge", "iou", "frPyObjects", "rings"]
 
-_SIZE_T = np.dtype("uintp")
-
 
 def _glue(result, what):
     if result == 0:
@@ -52,10 +50,15 @@ def _counts_bytes(obj, k, what):
     if isinstance(c, str):
         return c.encode()
     # uncompressed counts (a list of ints), as frPyObjects takes them
-    return _strings(_fr_counts([c], what))[0]
+    return _fr_counts([c], what)[0]
 
 
 def _size(obj, k, what):
+    size = obj["size"]
+    if type(size) is list and len(size) == 2:
+        h, w = size
+        if type(h) is int and type(w) is int and 0 <= h and 0 <= w and h * w <= 0xFFFFFFFF:
+            return h, w
     try:
         h, w = obj["size"]
         h, w = _core.int_pair((h, w), "", "")
@@ -69,31 +72,34 @@ def _size(obj, k, what):
 
 
 def _pack(objs, what):
-    """(bytes of all counts strings, size_t offsets (n + 1), uint32 sizes (n, 2))."""
-    strs = [_counts_bytes(o, k, what) for k, o in enumerate(objs)]
-    sizes = np.array([_size(o, k, what) for k, o in enumerate(objs)], np.uint32).reshape(-1, 2)
-    offsets = np.zeros(len(strs) + 1, _SIZE_T)
-    np.cumsum([len(s) for s in strs], out=offsets[1:])
-    return b"".join(strs), offsets, sizes
+    """(bytes of all counts strings, size_t[n + 1] offsets, uint32_t[2n]
+    sizes (h, w each), the sizes as a list of (h, w)); small calls stay in
+    plain Python (numpy's per-call cost would be most of a merge)."""
+    strs, hw, offs, flat = [], [], [0], []
+    at = 0
+    for k, o in enumerate(objs):
+        c = _counts_bytes(o, k, what)
+        strs.append(c)
+        at += len(c)
+        offs.append(at)
+        size = _size(o, k, what)
+        hw.append(size)
+        flat.extend(size)
+    return b"".join(strs), ffi.new("size_t[]", offs), ffi.new("uint32_t[]", flat or [0]), hw
 
 
-def _unpack(data, offsets):
-    """The strings of a C-made buffer (freed here) as a list of bytes."""
-    n = len(offsets) - 1
+def _unpack(data, offsets, n):
+    """The n strings of a C-made buffer (freed here), offsets a size_t[n + 1]
+    cdata, as a list of bytes."""
     try:
-        buf = ffi.buffer(data[0], int(offsets[n]))[:] if offsets[n] else b""
+        buf = ffi.buffer(data[0], offsets[n])[:] if offsets[n] else b""
     finally:
         lib.rastpy_free(data[0])
-    o = offsets.tolist()
-    return [buf[o[k]:o[k + 1]] for k in range(n)]
-
-
-def _strings(made):
-    return made
+    return [buf[offsets[k]:offsets[k + 1]] for k in range(n)]
 
 
 def _objs(strs, sizes):
-    return [{"size": [int(h), int(w)], "counts": s} for s, (h, w) in zip(strs, sizes)]
+    return [{"size": [h, w], "counts": s} for s, (h, w) in zip(strs, sizes)]
 
 
 def _fr_counts(counts_lists, what):
@@ -107,14 +113,15 @@ def _fr_counts(counts_lists, what):
             raise InputError("%s: uncompressed counts %d must be a list of ints in 0..2**32-1"
                              % (what, k)) from None
         arrays.append(a.astype(np.uint32))
-    offsets = np.zeros(len(arrays) + 1, _SIZE_T)
-    np.cumsum([len(a) for a in arrays], out=offsets[1:])
-    flat = np.concatenate(arrays) if arrays else np.zeros(0, np.uint32)
+    offs = [0]
+    for a in arrays:
+        offs.append(offs[-1] + len(a))
+    flat = np.concatenate(arrays) if arrays else np.zeros(1, np.uint32)
     data = ffi.new("char **")
-    out = np.zeros(len(arrays) + 1, _SIZE_T)
-    _glue(lib.rastpy_coco_fr_counts(ffi.from_buffer("uint32_t[]", flat), ffi.from_buffer("size_t[]", offsets),
-                                    len(arrays), data, ffi.from_buffer("size_t[]", out)), what)
-    return _unpack(data, out)
+    out = ffi.new("size_t[]", len(arrays) + 1)
+    _glue(lib.rastpy_coco_fr_counts(ffi.from_buffer("uint32_t[]", flat), ffi.new("size_t[]", offs),
+                                    len(arrays), data, out), what)
+    return _unpack(data, out, len(arrays))
 
 
 # ---- masks <-> RLE ----------------------------------------------------------
@@ -145,11 +152,11 @@ def encode(bimask):
     if a.dtype == np.bool_:
         a = a.view(np.uint8)
     data = ffi.new("char **")
-    offsets = np.zeros(n + 1, _SIZE_T)
+    offsets = ffi.new("size_t[]", n + 1)
     ptr = ffi.cast("uint8_t *", a.__array_interface__["data"][0]) if a.size else ffi.NULL
-    _glue(lib.rastpy_coco_encode(ptr, h, w, n, a.strides[0], a.strides[1], a.strides[2], data,
-                                 ffi.from_buffer("size_t[]", offsets)), "encode")
-    objs = _objs(_unpack(data, offsets), [(h, w)] * n)
+    _glue(lib.rastpy_coco_encode(ptr, h, w, n, a.strides[0], a.strides[1], a.strides[2], data, offsets),
+          "encode")
+    objs = _objs(_unpack(data, offsets, n), [(h, w)] * n)
     return objs[0] if single else objs
 
 
@@ -166,12 +173,12 @@ def decode(rleObjs, out=None):
     objs = [rleObjs] if single else rleObjs
     if not objs:
         raise InputError("decode: no RLEs to decode (an empty list has no size)")
-    strs, offsets, sizes = _pack(objs, "decode")
-    h, w = int(sizes[0, 0]), int(sizes[0, 1])
-    if (sizes != sizes[0]).any():
-        k = int(np.nonzero((sizes != sizes[0]).any(axis=1))[0][0])
-        raise InputError("decode: RLE %d has size %s, RLE 0 %s; one size is needed"
-                         % (k, sizes[k].tolist(), [h, w]))
+    strs, offsets, _, hw = _pack(objs, "decode")
+    h, w = hw[0]
+    for k, size in enumerate(hw):
+        if size != hw[0]:
+            raise InputError("decode: RLE %d has size %s, RLE 0 %s; one size is needed"
+                             % (k, list(size), [h, w]))
     n = len(objs)
     if out is None:
         res = np.empty((n, w, h), np.uint8).T  # (h, w, n), Fortran order
@@ -188,7 +195,7 @@ def decode(rleObjs, out=None):
         res = out
     ptr = ffi.cast("uint8_t *", target.__array_interface__["data"][0]) if target.size else ffi.NULL
     if target.size:
-        _glue(lib.rastpy_coco_decode(strs, ffi.from_buffer("size_t[]", offsets), n, h, w, ptr,
+        _glue(lib.rastpy_coco_decode(strs, offsets, n, h, w, ptr,
                                      target.strides[0], target.strides[1], target.strides[2], 1),
               "decode")
     if out is None and single:
@@ -200,10 +207,10 @@ def area(rleObjs):
     """Pixels inside each RLE (uint32), as ``pycocotools.mask.area``."""
     single = not isinstance(rleObjs, list)
     objs = [rleObjs] if single else rleObjs
-    strs, offsets, _ = _pack(objs, "area")
+    strs, offsets, _, _ = _pack(objs, "area")
     a = np.zeros(len(objs), np.uint32)
     if objs:
-        _glue(lib.rastpy_coco_area(strs, ffi.from_buffer("size_t[]", offsets), len(objs),
+        _glue(lib.rastpy_coco_area(strs, offsets, len(objs),
                                    ffi.from_buffer("uint32_t[]", a)), "area")
     return a[0] if single else a
 
@@ -212,11 +219,10 @@ def toBbox(rleObjs):
     """Boxes [x, y, w, h] (float64) of RLEs, as ``pycocotools.mask.toBbox``."""
     single = not isinstance(rleObjs, list)
     objs = [rleObjs] if single else rleObjs
-    strs, offsets, sizes = _pack(objs, "toBbox")
+    strs, offsets, sizes, _ = _pack(objs, "toBbox")
     bb = np.zeros((len(objs), 4), np.float64)
     if objs:
-        _glue(lib.rastpy_coco_bbox(strs, ffi.from_buffer("size_t[]", offsets), len(objs),
-                                   ffi.from_buffer("uint32_t[]", sizes), ffi.from_buffer("double[]", bb)),
+        _glue(lib.rastpy_coco_bbox(strs, offsets, len(objs), sizes, ffi.from_buffer("double[]", bb)),
               "toBbox")
     return bb[0] if single else bb
 
@@ -227,16 +233,15 @@ def merge(rleObjs, intersect=0):
     pycocotools' empty {'size': [0, 0], 'counts': b''}."""
     if not isinstance(rleObjs, list):
         raise InputError("merge: rleObjs must be a list of RLE dicts, not %s" % type(rleObjs).__name__)
-    strs, offsets, sizes = _pack(rleObjs, "merge")
+    strs, offsets, sizes, _ = _pack(rleObjs, "merge")
     data = ffi.new("char **")
-    out = np.zeros(2, _SIZE_T)
+    out = ffi.new("size_t[2]")
     size = ffi.new("uint32_t[2]")
-    _glue(lib.rastpy_coco_merge(strs, ffi.from_buffer("size_t[]", offsets), len(rleObjs),
-                                ffi.from_buffer("uint32_t[]", sizes), 1 if intersect else 0, data,
-                                ffi.from_buffer("size_t[]", out), size), "merge")
+    _glue(lib.rastpy_coco_merge(strs, offsets, len(rleObjs), sizes, 1 if intersect else 0, data, out, size),
+          "merge")
     if data[0] == ffi.NULL:
         return {"size": [0, 0], "counts": b""}
-    return {"size": [int(size[0]), int(size[1])], "counts": _unpack(data, out)[0]}
+    return {"size": [size[0], size[1]], "counts": _unpack(data, out, 1)[0]}
 
 
 def _boxes(objs, what):
@@ -281,10 +286,9 @@ def iou(dt, gt, pyiscrowd):
         lib.rastpy_coco_bb_iou(ffi.from_buffer("double[]", d), ffi.from_buffer("double[]", g), m, n,
                                ffi.from_buffer("uint8_t[]", crowd), ffi.from_buffer("double[]", o))
     else:
-        ds, do, dsz = _pack(d, "iou dt")
-        gs, go, gsz = _pack(g, "iou gt")
-        _glue(lib.rastpy_coco_iou(ds, ffi.from_buffer("size_t[]", do), ffi.from_buffer("uint32_t[]", dsz), m,
-                                  gs, ffi.from_buffer("size_t[]", go), ffi.from_buffer("uint32_t[]", gsz), n,
+        ds, do, dsz, _ = _pack(d, "iou dt")
+        gs, go, gsz, _ = _pack(g, "iou gt")
+        _glue(lib.rastpy_coco_iou(ds, do, dsz, m, gs, go, gsz, n,
                                   ffi.from_buffer("uint8_t[]", crowd), ffi.from_buffer("double[]", o)), "iou")
     return o.reshape((m, n), order="F")
 
@@ -314,36 +318,64 @@ def _flat(p, k):
                      "or an (N, 2) array is needed" % (k, a.shape))
 
 
-def _fr_polys(polys, h, w, rule):
-    """One RLE string per polygon (list of (K, 2) float64 arrays)."""
-    n = len(polys)
-    offsets = np.zeros(n + 1, _SIZE_T)
+def _fr_call(xy, sizes, n, h, w, rule):
+    """rastpy_coco_fr_polys or rastpy_coco_exact: (status, data, offsets)."""
+    offsets = ffi.new("size_t[]", n + 1)
     data = ffi.new("char **")
-    xy = np.concatenate(polys) if polys else np.zeros((0, 2))
-    sizes = np.array([len(p) for p in polys], np.uint32)
     if rule == "coco":
-        r = lib.rastpy_coco_fr_polys(ffi.from_buffer("double[]", xy), ffi.from_buffer("uint32_t[]", sizes),
-                                     n, h, w, data, ffi.from_buffer("size_t[]", offsets))
-        if r > 0:
-            k = r - 1
-            ends = np.cumsum(sizes)
-            poly = int(np.searchsorted(ends, k, side="right"))
-            x, y = xy[k].tolist()
-            raise InputError("frPyObjects: polygon %d, point %d (%r, %r) is NaN, infinite or outside "
-                             "+-%d pixels (pycocotools' rule works on 5x upsampled int coordinates)"
-                             % (poly, k - (ends[poly] - sizes[poly]), x, y, lib.RAST_COCO_COORD_MAX // 5))
-        _glue(r, "frPyObjects")
+        r = lib.rastpy_coco_fr_polys(xy, sizes, n, h, w, data, offsets)
     else:
         opts = _core.fill_opts("aet", "evenodd", 8, 0.5)
         failed = ffi.new("uint32_t *", 0xFFFFFFFF)
-        ones = np.ones(n, np.uint32)
-        r = lib.rastpy_coco_exact(ffi.from_buffer("double[]", xy), len(xy), ffi.from_buffer("uint32_t[]", sizes),
-                                  n, ffi.from_buffer("uint32_t[]", ones), n, h, w, opts, data,
-                                  ffi.from_buffer("size_t[]", offsets), failed)
-        if r > 0:
-            _core._check_glue(r, xy, 8, "frPyObjects: polygons")
-        _glue(r, "frPyObjects")
-    return _objs(_unpack(data, offsets), [(h, w)] * n)
+        r = lib.rastpy_coco_exact(xy, sum(sizes), sizes, n, ffi.new("uint32_t[]", [1] * n or [0]), n, h, w,
+                                  opts, data, offsets, failed)
+    return r, data, offsets
+
+
+def _fr_polys(polys, h, w, rule):
+    """One RLE string per polygon (list of (K, 2) float64 arrays)."""
+    n = len(polys)
+    xy = np.ascontiguousarray(np.concatenate(polys)) if polys else np.zeros((1, 2))
+    sizes = [len(p) for p in polys]
+    r, data, offsets = _fr_call(ffi.from_buffer("double[]", xy), ffi.new("uint32_t[]", sizes or [0]), n, h, w,
+                                rule)
+    if r > 0:
+        k = r - 1
+        ends = np.cumsum(sizes)
+        poly = int(np.searchsorted(ends, k, side="right"))
+        x, y = xy[k].tolist()
+        if rule == "coco":
+            raise InputError("frPyObjects: polygon %d, point %d (%r, %r) is NaN, infinite or outside "
+                             "+-%d pixels (pycocotools' rule works on 5x upsampled int coordinates)"
+                             % (poly, k - (ends[poly] - sizes[poly]), x, y, lib.RAST_COCO_COORD_MAX // 5))
+        _core._check_glue(r, xy, 8, "frPyObjects: polygon %d" % poly)
+    _glue(r, "frPyObjects")
+    return _objs(_unpack(data, offsets, n), [(h, w)] * n)
+
+
+def _fr_lists(parts, h, w, rule):
+    """The common case quickly: every part a flat list of numbers (no numpy
+    on the way).  None when a part is not a plain list of floats and ints
+    (the general path then checks and converts it)."""
+    flat, sizes = [], []
+    for p in parts:
+        if type(p) is not list:
+            return None
+        k = len(p) // 2
+        flat += p if 2 * k == len(p) else p[:2 * k]
+        sizes.append(k)
+    try:
+        xy = ffi.new("double[]", flat or [0.0])
+    except (TypeError, OverflowError):
+        return None
+    for v in flat:  # bools and other numbers the general path refuses
+        if type(v) is not float and type(v) is not int:
+            return None
+    r, data, offsets = _fr_call(xy, ffi.new("uint32_t[]", sizes or [0]), len(parts), h, w, rule)
+    if r:
+        lib.rastpy_free(data[0])
+        return None  # the general path names the bad point
+    return _objs(_unpack(data, offsets, len(parts)), [(h, w)] * len(parts))
 
 
 def _box_polys(bb):
@@ -398,6 +430,9 @@ def frPyObjects(pyobj, h, w, *, rule="coco"):
         return _fr_polys([_flat(pyobj, 0)], h, w, rule)[0]
     if len(first) == 4 and np.ndim(first) == 1:
         return _fr_polys(_box_polys(pyobj), h, w, rule)
+    quick = _fr_lists(pyobj, h, w, rule)
+    if quick is not None:
+        return quick
     return _fr_polys([_flat(p, k) for k, p in enumerate(pyobj)], h, w, rule)
 
 

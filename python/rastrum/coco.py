@@ -450,6 +450,10 @@ def rings(segmentation):
         segmentation = [segmentation]
     out = []
     for k, p in enumerate(segmentation):
+        a = np.asarray(p) if type(p) is list else None
+        if a is not None and a.ndim == 1 and a.dtype.kind == "f":  # the usual: floats, quickly
+            out.append(a[: a.shape[0] // 2 * 2].reshape(-1, 2).astype(np.float64, copy=False))
+            continue
         a = _core.real_array(p, "rings: part %d" % k, "a flat [x0, y0, x1, y1, ...] list")
         if a.ndim != 1:
             raise InputError("rings: part %d has shape %s; a flat [x0, y0, x1, y1, ...] list is needed"

@@ -40,6 +40,11 @@ def _polygons(polygons, what):
             if len(p):
                 orient.append(1)
             continue
+        if type(p) is list and p and all(type(r) is np.ndarray and r.dtype == _F64 and r.ndim == 2
+                                         and r.shape[1] == 2 and r.flags.c_contiguous and len(r) for r in p):
+            out.append(p)  # rings as coco.rings makes them
+            orient.extend([1] * len(p))
+            continue
         holes = []
         try:
             rings = _core.rings_f64(p, holes)

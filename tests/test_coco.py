@@ -214,3 +214,14 @@ def test_bad_decode_writes_nothing():
     with pytest.raises(rastrum.InputError):
         C.decode({"size": [3, 3], "counts": b";"}, out=out)
     assert (out == 7).all()
+
+
+def test_docs_coco_examples_run():
+    """docs/coco.md's python blocks run as written."""
+    import re
+    path = os.path.join(os.path.dirname(__file__), "..", "docs", "coco.md")
+    with open(path, encoding="utf-8") as f:
+        blocks = re.findall(r"```python\n(.*?)```", f.read(), flags=re.S)
+    assert len(blocks) == 3
+    for code in blocks:
+        exec(compile(code, "docs/coco.md", "exec"), {})

@@ -90,6 +90,52 @@ static void rastpy_burn_span(void *user, uint32_t k, int32_t y, int32_t x0, int3
     b->put(b, b->out + (int64_t)k * b->plane_stride + (int64_t)y * b->row_stride, k, x0, x1);
 }
 
+/* Snap xy (npoints points) into a malloc'd *pts and lay npolys polygons
+ * over it in a malloc'd *polys: polygon k is poly_rings[k] consecutive
+ * rings of ring_sizes.  Returns 0 (the caller frees both), k + 1 when point
+ * k is bad, RAST_E_ARG when the tables disagree, RASTPY_E_NOMEM (nothing
+ * to free then). */
+long rastpy_polygon_table(const double *xy, size_t npoints, const uint32_t *ring_sizes,
+                          size_t nrings, const uint32_t *poly_rings, uint32_t npolys, int s,
+                          rast_polygon **polys_out, int32_t **pts_out)
+{
+    rast_polygon *polys = (rast_polygon *)malloc((size_t)npolys * sizeof *polys + 1);
+    int32_t *pts = (int32_t *)malloc(npoints * sizeof(rast_point) + 1);
+    size_t ring = 0, point = 0, r;
+    uint32_t k;
+    long bad;
+    if (!polys || !pts) {
+        free(polys);
+        free(pts);
+        return RASTPY_E_NOMEM;
+    }
+    bad = rastpy_snap(xy, npoints, s, pts);
+    if (bad >= 0) {
+        free(polys);
+        free(pts);
+        return bad + 1;
+    }
+    for (k = 0; k < npolys; k++) {
+        size_t n = 0;
+        polys[k].points = (const rast_point *)(const void *)(pts + 2 * point);
+        polys[k].ring_sizes = ring_sizes + ring;
+        polys[k].nrings = poly_rings[k];
+        if (poly_rings[k] > nrings - ring) break;
+        for (r = 0; r < poly_rings[k]; r++) n += ring_sizes[ring + r];
+        if (n > npoints - point) break;
+        ring += poly_rings[k];
+        point += n;
+    }
+    if (k < npolys || ring != nrings || point != npoints) { /* the tables disagree */
+        free(polys);
+        free(pts);
+        return RAST_E_ARG;
+    }
+    *polys_out = polys;
+    *pts_out = pts;
+    return 0;
+}
+
 /* Twice the signed area of snapped ring p[0..n), exactly where the
  * compiler has a 128-bit integer (products of coordinates below 2^27 reach
  * 2^55; their sum over 2^24 points 2^79), else in double. */
@@ -167,8 +213,7 @@ static long rastpy_burn_all(void *out, int32_t height, int32_t width, int64_t ro
     rast_rect clip;
     rastpy_burn b;
     int32_t *pts;
-    size_t need = 0, ring = 0, point = 0, r;
-    uint32_t k;
+    size_t need = 0;
     void *scratch;
     long bad;
     rast_status st;
@@ -177,35 +222,9 @@ static long rastpy_burn_all(void *out, int32_t height, int32_t width, int64_t ro
                                                           merge != RASTPY_MERGE_ADD))
         return RAST_E_ARG;
     if (height < 0 || width < 0) return RAST_E_SIZE;
-    polys = (rast_polygon *)malloc((size_t)npolys * sizeof *polys + 1);
-    pts = (int32_t *)malloc(npoints * sizeof(rast_point) + 1);
-    if (!polys || !pts) {
-        free(polys);
-        free(pts);
-        return RASTPY_E_NOMEM;
-    }
-    bad = rastpy_snap(xy, npoints, opts ? opts->subpixel_bits : 0, pts);
-    if (bad >= 0) {
-        free(polys);
-        free(pts);
-        return bad + 1;
-    }
-    for (k = 0; k < npolys; k++) {
-        size_t n = 0;
-        polys[k].points = (const rast_point *)(const void *)(pts + 2 * point);
-        polys[k].ring_sizes = ring_sizes + ring;
-        polys[k].nrings = poly_rings[k];
-        if (poly_rings[k] > nrings - ring) break;
-        for (r = 0; r < poly_rings[k]; r++) n += ring_sizes[ring + r];
-        if (n > npoints - point) break;
-        ring += poly_rings[k];
-        point += n;
-    }
-    if (k < npolys || ring != nrings || point != npoints) { /* the tables disagree */
-        free(polys);
-        free(pts);
-        return RAST_E_ARG;
-    }
+    bad = rastpy_polygon_table(xy, npoints, ring_sizes, nrings, poly_rings, npolys,
+                               opts ? opts->subpixel_bits : 0, &polys, &pts);
+    if (bad) return bad;
     if (orient) rastpy_orient(pts, ring_sizes, nrings, orient);
     clip.x0 = 0;
     clip.y0 = 0;

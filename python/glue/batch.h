@@ -21,6 +21,12 @@
 #define RASTPY_MERGE_REPLACE 0
 #define RASTPY_MERGE_ADD 1
 
+/* For the glue's own files (not for cffi): snap and lay out a polygon
+ * table (batch.c). */
+long rastpy_polygon_table(const double *xy, size_t npoints, const uint32_t *ring_sizes,
+                          size_t nrings, const uint32_t *poly_rings, uint32_t npolys, int s,
+                          rast_polygon **polys_out, int32_t **pts_out);
+
 /* cdef-begin */
 long rastpy_burn_polygons(void *out, int32_t height, int32_t width, int64_t row_stride,
                           int64_t plane_stride, int dtype, int merge, const void *values,

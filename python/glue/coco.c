@@ -317,43 +317,16 @@ long rastpy_coco_exact(const double *xy, size_t npoints, const uint32_t *ring_si
     rast_polygon *polys;
     rast_rect clip;
     int32_t *pts;
-    size_t ring = 0, point = 0, need = 0, r;
-    uint32_t k;
+    size_t need = 0;
     long bad;
     rast_status st;
     void *scratch;
     *data = NULL;
     if ((uint64_t)height * width > 0xFFFFFFFFu || height > RAST_MAX_DIM || width > RAST_MAX_DIM)
         return RAST_E_SIZE;
-    polys = (rast_polygon *)malloc((size_t)npolys * sizeof *polys + 1);
-    pts = (int32_t *)malloc(npoints * sizeof(rast_point) + 1);
-    if (!polys || !pts) {
-        free(polys);
-        free(pts);
-        return RASTPY_E_NOMEM;
-    }
-    bad = rastpy_snap(xy, npoints, opts->subpixel_bits, pts);
-    if (bad >= 0) {
-        free(polys);
-        free(pts);
-        return bad + 1;
-    }
-    for (k = 0; k < npolys; k++) {
-        size_t n = 0;
-        if (poly_rings[k] > nrings - ring) break;
-        polys[k].points = (const rast_point *)(const void *)(pts + 2 * point);
-        polys[k].ring_sizes = ring_sizes + ring;
-        polys[k].nrings = poly_rings[k];
-        for (r = 0; r < poly_rings[k]; r++) n += ring_sizes[ring + r];
-        if (n > npoints - point) break;
-        ring += poly_rings[k];
-        point += n;
-    }
-    if (k < npolys || ring != nrings || point != npoints) {
-        free(polys);
-        free(pts);
-        return RAST_E_ARG;
-    }
+    bad = rastpy_polygon_table(xy, npoints, ring_sizes, nrings, poly_rings, npolys,
+                               opts->subpixel_bits, &polys, &pts);
+    if (bad) return bad;
     clip.x0 = 0;
     clip.y0 = 0;
     clip.x1 = (int32_t)width;

@@ -481,6 +481,43 @@ long rastpy_coco_decode(const char *strs, const size_t *offsets, uint32_t n, uin
 
 /* ---- merge, area, boxes, IoU (pycocotools' arithmetic) -------------------- */
 
+/* A cursor over the runs of one RLE, as pycocotools' merge and IoU walk
+ * them: `left` pixels remain of run i - 1, whose value is v (runs
+ * alternate from 0). */
+typedef struct rastpy_runs {
+    const uint32_t *c;
+    size_t m, i;
+    uint32_t left;
+    int v;
+} rastpy_runs;
+
+static void rastpy_runs_start(rastpy_runs *r, const uint32_t *c, size_t m)
+{
+    r->c = c;
+    r->m = m;
+    r->i = 1;
+    r->left = m ? c[0] : 0;
+    r->v = 0;
+}
+
+/* Take n pixels (n <= left); at the end of a run, step to the next. */
+static void rastpy_runs_take(rastpy_runs *r, uint32_t n)
+{
+    r->left -= n;
+    if (!r->left && r->i < r->m) {
+        r->left = r->c[r->i++];
+        r->v = !r->v;
+    }
+}
+
+/* Took nothing while one cursor is spent and the other is not: counts
+ * that do not add up to the same total (pycocotools loops forever). */
+static int rastpy_runs_stuck(const rastpy_runs *a, const rastpy_runs *b, uint32_t took)
+{
+    return took == 0 && (uint32_t)(a->left + b->left) != 0 &&
+           ((a->left == 0 && a->i >= a->m) || (b->left == 0 && b->i >= b->m));
+}
+
 long rastpy_coco_merge(const char *strs, const size_t *offsets, uint32_t n,
                        const uint32_t *sizes, int intersect, char **data, size_t *offsets_out,
                        uint32_t *size_out)
@@ -512,34 +549,25 @@ long rastpy_coco_merge(const char *strs, const size_t *offsets, uint32_t n,
     memcpy(acc, cnts, m * sizeof(uint32_t));
     for (i = 1; i < n; i++) {
         const uint32_t *B = cnts + first[i];
-        size_t bm = first[i + 1] - first[i], a = 1, b = 1, mm = 0;
-        uint32_t ca, cb, cc = 0, ct = 1, c;
-        int v = 0, va = 0, vb = 0, vp;
+        size_t bm = first[i + 1] - first[i], mm = 0;
+        uint32_t cc = 0, ct = 1, c;
+        int v = 0, vp;
+        rastpy_runs ra, rb;
         if (sizes[2 * i] != h || sizes[2 * i + 1] != w) {
             h = w = 0;
             m = 0;
             break;
         }
-        ca = m ? acc[0] : 0;
-        cb = bm ? B[0] : 0;
+        rastpy_runs_start(&ra, acc, m);
+        rastpy_runs_start(&rb, B, bm);
         while (ct > 0) {
-            c = ca < cb ? ca : cb;
+            c = ra.left < rb.left ? ra.left : rb.left;
             cc += c;
-            ct = 0;
-            ca -= c;
-            if (!ca && a < m) {
-                ca = acc[a++];
-                va = !va;
-            }
-            ct += ca;
-            cb -= c;
-            if (!cb && b < bm) {
-                cb = B[b++];
-                vb = !vb;
-            }
-            ct += cb;
+            rastpy_runs_take(&ra, c);
+            rastpy_runs_take(&rb, c);
+            ct = ra.left + rb.left;
             vp = v;
-            v = intersect ? (va && vb) : (va || vb);
+            v = intersect ? (ra.v && rb.v) : (ra.v || rb.v);
             if (v != vp || ct == 0) {
                 if (mm == cap) { /* counts that do not add up: pycocotools loops */
                     st = RASTPY_E_RLE;
@@ -548,11 +576,7 @@ long rastpy_coco_merge(const char *strs, const size_t *offsets, uint32_t n,
                 tmp[mm++] = cc;
                 cc = 0;
             }
-            if (c == 0 && ca == 0 && cb != 0 && a >= m) { /* A ran out first */
-                st = RASTPY_E_RLE;
-                goto done;
-            }
-            if (c == 0 && cb == 0 && ca != 0 && b >= bm) {
+            if (rastpy_runs_stuck(&ra, &rb, c)) {
                 st = RASTPY_E_RLE;
                 goto done;
             }
@@ -696,37 +720,28 @@ long rastpy_coco_iou(const char *dstrs, const size_t *doffsets, const uint32_t *
     for (g = 0; g < n; g++)
         for (d = 0; d < m; d++) {
             const uint32_t *A = dc + df[d], *B = gc + gf[g];
-            size_t ka = df[d + 1] - df[d], kb = gf[g + 1] - gf[g], a = 1, b = 1, j;
-            uint32_t c, ca, cb, ct = 1, in = 0, un = 0;
-            int va = 0, vb = 0, crowd;
+            size_t ka = df[d + 1] - df[d], kb = gf[g + 1] - gf[g], j;
+            uint32_t c, ct = 1, in = 0, un = 0;
+            int crowd;
+            rastpy_runs ra, rb;
             if (!(o[(size_t)g * m + d] > 0)) continue;
             crowd = iscrowd != NULL && iscrowd[g];
             if (dsizes[2 * d] != gsizes[2 * g] || dsizes[2 * d + 1] != gsizes[2 * g + 1]) {
                 o[(size_t)g * m + d] = -1;
                 continue;
             }
-            ca = ka ? A[0] : 0;
-            cb = kb ? B[0] : 0;
+            rastpy_runs_start(&ra, A, ka);
+            rastpy_runs_start(&rb, B, kb);
             while (ct > 0) {
-                c = ca < cb ? ca : cb;
-                if (va || vb) {
+                c = ra.left < rb.left ? ra.left : rb.left;
+                if (ra.v || rb.v) {
                     un += c;
-                    if (va && vb) in += c;
+                    if (ra.v && rb.v) in += c;
                 }
-                ct = 0;
-                ca -= c;
-                if (!ca && a < ka) {
-                    ca = A[a++];
-                    va = !va;
-                }
-                ct += ca;
-                cb -= c;
-                if (!cb && b < kb) {
-                    cb = B[b++];
-                    vb = !vb;
-                }
-                ct += cb;
-                if (c == 0 && ((ca == 0 && a >= ka) || (cb == 0 && b >= kb)) && ct) {
+                rastpy_runs_take(&ra, c);
+                rastpy_runs_take(&rb, c);
+                ct = ra.left + rb.left;
+                if (rastpy_runs_stuck(&ra, &rb, c)) {
                     st = RASTPY_E_RLE; /* counts that do not add up */
                     goto done;
                 }

@@ -2,8 +2,8 @@
 
     python bench/bench_coco.py [--quick]
 
-Rows (targets of issue 14 in brackets), each timed as the median of
-interleaved runs, outputs checked:
+Rows (targets of issue 14 in brackets), each timed as the median of runs
+taking turns (see `timed`), outputs checked:
 
 1. frPyObjects + merge + decode of 2,000 COCO-like objects of 640 x 480,
    rastrum.coco against pycocotools.mask, the same three calls per object
@@ -62,12 +62,19 @@ def coco_objects(rng, n, h, w):
 
 
 def timed(fns, repeat):
-    """{name: median seconds}, the functions run interleaved."""
+    """{name: median seconds}: the functions take turns, in an order that
+    rotates every repeat; each turn runs its function twice and times the
+    second run.  (Whichever function runs first after another one pays for
+    the allocator's state it left: a freed 30 MB array makes the next
+    np.zeros page-fault or clear it.  Measured once each in a fixed order,
+    a row's ratio swings 5x with the order.)"""
     res = {k: [] for k in fns}
-    for _ in range(repeat):
-        for k, f in fns.items():
+    names = list(fns)
+    for r in range(repeat):
+        for k in names[r % len(names):] + names[:r % len(names)]:
+            fns[k]()
             t = time.perf_counter()
-            f()
+            fns[k]()
             res[k].append(time.perf_counter() - t)
     return {k: float(np.median(v)) for k, v in res.items()}
 

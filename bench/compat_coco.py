@@ -54,6 +54,8 @@ def check(n, seed):
                     first += [first[0] + 1.0, first[1] + 0.4]
                 parts.insert(0, first)
         done += len(objs)
+        if done % 5000 < len(objs):
+            print("... %d objects, %d mismatches" % (done, bad), flush=True)
         for parts in objs:
             a, b = M.frPyObjects(parts, h, w), C.frPyObjects(parts, h, w)
             if a != b:

@@ -126,9 +126,11 @@ display-example: build/librastrum.a
 test-install: lib
 	@tools/test-install.sh
 
-# PY_TEST_EXTRAS: the extras the tests run with; CI adds gis,compat-test
-# (shapely, affine, tqdm, rasterio, geopandas), whose tests skip without them.
-PY_TEST_EXTRAS ?= test
+# PY_TEST_EXTRAS: the extras the tests run with.  All of them by default:
+# the optional inputs (shapely, affine, tqdm) and the peers the compatibility
+# tests compare with (rasterio, geopandas, pycocotools); with fewer
+# (PY_TEST_EXTRAS=test) those tests skip.
+PY_TEST_EXTRAS ?= test,gis,compat-test
 test-py: | $(VENV)
 	$(PY_CLEAN)
 	$(PYTHON) -m pip install --quiet --disable-pip-version-check '.[$(PY_TEST_EXTRAS)]'

@@ -1045,6 +1045,57 @@ RAST_API rast_status rast_render_bands_spans(const rast_prim *prims, uint32_t n,
                                              void *scratch, size_t scratch_bytes,
                                              rast_band_stats *stats);
 
+/* ---- pycocotools' polygon rule (coco.c) --------------------------------------
+ * Not the exact rule: the rule with which pycocotools (cocoapi maskApi.c,
+ * rleFrPoly) turns a COCO polygon into a mask, reproduced bit for bit in
+ * integers so that training masks equal the evaluation's.  Masks are
+ * column-major, as COCO's run-length encoding (RLE) stores them: pixel
+ * (row y, column x) of an height x width mask is position x * height + y.
+ *
+ * Input: the ring's vertices upsampled by 5 and rounded as pycocotools
+ * rounds them, X = (int)(5 * x + 0.5) in C double arithmetic (truncation
+ * toward zero), within +-RAST_COCO_COORD_MAX (about +-1.67 million
+ * pixels); the ring is closed (the last vertex joins the first).
+ * The rule: each edge is walked one fifth of a pixel at a time along its
+ * longer axis, its other coordinate rounded as pycocotools' doubles round
+ * it (reproduced exactly, ties included); where the walk steps from
+ * X = 5c + 2 to 5c + 3, column c (0 <= c < width) gets a toggle at row
+ * ceil((Y - 2) / 5) clamped to 0..height, Y the smaller of the two steps'
+ * Y; a pixel is inside iff an odd number of its column's toggles are at or
+ * above it.  Rings of 0, 1 or 2 points draw nothing.  Width 0 is
+ * pycocotools' too: its unsigned width - 1 wraps, so every column c >= 0
+ * takes toggles (counts past the empty mask, as pycocotools gives them).
+ */
+enum {
+    RAST_COCO_COORD_MAX = 8388607 /* 2^23 - 1, in fifths of a pixel */
+};
+
+/* The toggle positions (x * height + row, row in 0..height) of one ring
+ * under pycocotools' rule, in no particular order, into toggles[0..*count).
+ * *count always gets the number of toggles (at most npoints * width); if it
+ * is more than `capacity`, nothing is written and RAST_E_SCRATCH returned
+ * (call again with more).  toggles may be NULL when capacity is 0.
+ * height * width must fit 32 bits (COCO's counts are uint32).  Errors,
+ * before anything is written: RAST_E_NULL, RAST_E_SIZE (a negative side or
+ * height * width > 2^32 - 1), RAST_E_TOO_MANY, RAST_E_RANGE. */
+RAST_API rast_status rast_coco_ring_toggles(const rast_point *points, uint32_t npoints,
+                                            int32_t height, int32_t width, uint32_t *toggles,
+                                            size_t capacity, size_t *count);
+
+/* The run-length counts of the mask that toggles[0..count) (positions, any
+ * order, any multiplicity) give a mask of `total` pixels, as pycocotools
+ * makes them: the differences of the sorted positions with `total` among
+ * them (uint32), a difference of 0 joining the runs either side of it.
+ * When no position passes `total` these are COCO's canonical runs of the
+ * positions of odd multiplicity: zeros first (a count of 0 when the mask
+ * starts inside), then alternately ones and zeros, no other count 0; one
+ * count (`total`) for an empty mask.  toggles is sorted in place (and
+ * `scratch`, count uint32_t, used as work memory); counts must hold
+ * count + 1 values; *ncounts gets how many were written.  Errors:
+ * RAST_E_NULL. */
+RAST_API rast_status rast_coco_rle(uint32_t *toggles, size_t count, uint32_t total,
+                                   uint32_t *scratch, uint32_t *counts, size_t *ncounts);
+
 /* ---- region fill -------------------------------------------------------------
  * Seed fill (seed 001 section 3.6): starting at the seed pixel (x, y),
  * write `value` over a connected region of target->clip.  Pixels are

@@ -121,38 +121,28 @@ static void rastpy_burn_span(void *user, uint32_t k, int32_t y, int32_t x0, int3
     b->put(b, b->out + (int64_t)k * b->plane_stride + (int64_t)y * b->row_stride, k, x0, x1);
 }
 
-/* Both burns: the points snapped to int32 (rast_polygon, wide == 0) or to
- * int64 (rast_polygon64, wide == 1), the same tables, the same spans. */
-static long rastpy_burn_any(void *out, int32_t height, int32_t width, int64_t row_stride,
-                            int64_t plane_stride, int dtype, int merge, const void *values,
-                            const double *xy, size_t npoints, const uint32_t *ring_sizes,
-                            size_t nrings, const uint32_t *poly_rings, uint32_t npolys,
-                            const rast_fill_opts *opts, uint32_t *failed, int wide)
+/* Snap xy (npoints points) to int32 (wide == 0) or int64 (wide == 1) into
+ * a malloc'd *pts and lay npolys polygons (rast_polygon or rast_polygon64)
+ * over it in a malloc'd *polys: polygon k is poly_rings[k] consecutive
+ * rings of ring_sizes.  Returns 0 (the caller frees both), k + 1 when point
+ * k is bad, RAST_E_ARG when the tables disagree, RASTPY_E_NOMEM (nothing
+ * to free then). */
+static long rastpy_table_any(const double *xy, size_t npoints, const uint32_t *ring_sizes,
+                             size_t nrings, const uint32_t *poly_rings, uint32_t npolys, int s,
+                             int wide, void **polys_out, void **pts_out)
 {
-    const size_t psize = wide ? sizeof(rast_polygon64) : sizeof(rast_polygon);
-    unsigned char *polys;
-    rast_rect clip;
-    rastpy_burn b;
-    void *pts;
-    size_t need = 0, ring = 0, point = 0, r;
+    unsigned char *polys =
+        (unsigned char *)malloc((size_t)npolys * (wide ? sizeof(rast_polygon64) : sizeof(rast_polygon)) + 1);
+    void *pts = malloc(npoints * (wide ? sizeof(rast_point64) : sizeof(rast_point)) + 1);
+    size_t ring = 0, point = 0, r;
     uint32_t k;
-    void *scratch;
     long bad;
-    rast_status st;
-
-    if (dtype < RASTPY_DT_U8 || dtype > RASTPY_DT_F64 || merge < RASTPY_MERGE_REPLACE ||
-        merge > RASTPY_MERGE_ADD_SAT)
-        return RAST_E_ARG;
-    if (height < 0 || width < 0) return RAST_E_SIZE;
-    polys = (unsigned char *)malloc((size_t)npolys * psize + 1);
-    pts = malloc(npoints * (wide ? sizeof(rast_point64) : sizeof(rast_point)) + 1);
     if (!polys || !pts) {
         free(polys);
         free(pts);
         return RASTPY_E_NOMEM;
     }
-    bad = wide ? rastpy_snap64(xy, npoints, opts ? opts->subpixel_bits : 0, (int64_t *)pts)
-               : rastpy_snap(xy, npoints, opts ? opts->subpixel_bits : 0, (int32_t *)pts);
+    bad = wide ? rastpy_snap64(xy, npoints, s, (int64_t *)pts) : rastpy_snap(xy, npoints, s, (int32_t *)pts);
     if (bad >= 0) {
         free(polys);
         free(pts);
@@ -182,14 +172,97 @@ static long rastpy_burn_any(void *out, int32_t height, int32_t width, int64_t ro
         free(pts);
         return RAST_E_ARG;
     }
+    *polys_out = polys;
+    *pts_out = pts;
+    return 0;
+}
+
+/* The 32-bit table, for the glue's other files (coco.c). */
+long rastpy_polygon_table(const double *xy, size_t npoints, const uint32_t *ring_sizes,
+                          size_t nrings, const uint32_t *poly_rings, uint32_t npolys, int s,
+                          rast_polygon **polys_out, int32_t **pts_out)
+{
+    void *polys, *pts;
+    long st = rastpy_table_any(xy, npoints, ring_sizes, nrings, poly_rings, npolys, s, 0, &polys, &pts);
+    if (st == 0) {
+        *polys_out = (rast_polygon *)polys;
+        *pts_out = (int32_t *)pts;
+    }
+    return st;
+}
+
+/* Twice the signed area of snapped ring p[0..n), exactly where the
+ * compiler has a 128-bit integer (products of coordinates below 2^27 reach
+ * 2^55; their sum over 2^24 points 2^79), else in double. */
+#if defined(__SIZEOF_INT128__)
+__extension__ typedef __int128 rastpy_wide;
+#else
+typedef double rastpy_wide;
+#endif
+static int rastpy_ring_sign(const int32_t *p, size_t n)
+{
+    rastpy_wide a = 0;
+    size_t i;
+    for (i = 0; i < n; i++) {
+        size_t j = i + 1 < n ? i + 1 : 0;
+        a += (rastpy_wide)((int64_t)p[2 * i] * p[2 * j + 1] - (int64_t)p[2 * j] * p[2 * i + 1]);
+    }
+    return a > 0 ? 1 : a < 0 ? -1 : 0;
+}
+
+/* Reverse the rings whose sign of area is not orient[r] (+1 or -1; 0:
+ * leave it): after this, non-zero winding gives the union of the +1 rings
+ * less the -1 rings (outer rings and their holes). */
+static void rastpy_orient(int32_t *pts, const uint32_t *ring_sizes, size_t nrings,
+                          const int8_t *orient)
+{
+    size_t r, at = 0;
+    for (r = 0; r < nrings; at += ring_sizes[r], r++) {
+        int32_t *p = pts + 2 * at;
+        size_t n = ring_sizes[r], i;
+        if (!orient[r] || rastpy_ring_sign(p, n) != -orient[r]) continue;
+        for (i = 0; i < n / 2; i++) {
+            int32_t x = p[2 * i], y = p[2 * i + 1];
+            p[2 * i] = p[2 * (n - 1 - i)];
+            p[2 * i + 1] = p[2 * (n - 1 - i) + 1];
+            p[2 * (n - 1 - i)] = x;
+            p[2 * (n - 1 - i) + 1] = y;
+        }
+    }
+}
+
+/* Every burn: the points snapped to int32 (rast_polygon, wide == 0) or to
+ * int64 (rast_polygon64, wide == 1), the same tables, the same spans; with
+ * `orient` (32-bit only), the rings turned first (rastpy_orient). */
+static long rastpy_burn_any(void *out, int32_t height, int32_t width, int64_t row_stride,
+                            int64_t plane_stride, int dtype, int merge, const void *values,
+                            const double *xy, size_t npoints, const uint32_t *ring_sizes,
+                            size_t nrings, const uint32_t *poly_rings, uint32_t npolys,
+                            const rast_fill_opts *opts, uint32_t *failed, int wide,
+                            const int8_t *orient)
+{
+    void *polys, *pts, *scratch;
+    rast_rect clip;
+    rastpy_burn b;
+    size_t need = 0;
+    long bad;
+    rast_status st;
+
+    if (dtype < RASTPY_DT_U8 || dtype > RASTPY_DT_F64 || merge < RASTPY_MERGE_REPLACE ||
+        merge > RASTPY_MERGE_ADD_SAT || (orient && wide))
+        return RAST_E_ARG;
+    if (height < 0 || width < 0) return RAST_E_SIZE;
+    bad = rastpy_table_any(xy, npoints, ring_sizes, nrings, poly_rings, npolys,
+                           opts ? opts->subpixel_bits : 0, wide, &polys, &pts);
+    if (bad) return bad;
+    if (orient) rastpy_orient((int32_t *)pts, ring_sizes, nrings, orient);
     clip.x0 = 0;
     clip.y0 = 0;
     clip.x1 = width;
     clip.y1 = height;
-    st = wide ? rast_polygons64_scratch_size((const rast_polygon64 *)(void *)polys, npolys, opts,
-                                             &clip, &need, failed)
-              : rast_polygons_scratch_size((const rast_polygon *)(void *)polys, npolys, opts,
-                                           &clip, &need, failed);
+    st = wide ? rast_polygons64_scratch_size((const rast_polygon64 *)polys, npolys, opts, &clip, &need,
+                                             failed)
+              : rast_polygons_scratch_size((const rast_polygon *)polys, npolys, opts, &clip, &need, failed);
     scratch = st == RAST_OK ? malloc(need + 1) : NULL;
     if (st == RAST_OK && !scratch) st = (rast_status)RASTPY_E_NOMEM;
     if (st == RAST_OK) {
@@ -198,11 +271,10 @@ static long rastpy_burn_any(void *out, int32_t height, int32_t width, int64_t ro
         b.plane_stride = plane_stride;
         b.values = (const unsigned char *)values;
         b.put = rastpy_puts[dtype - 1][merge];
-        st = wide ? rast_fill_polygons64_spans((const rast_polygon64 *)(void *)polys, npolys,
-                                               opts, &clip, rastpy_burn_span, &b, scratch, need,
-                                               failed)
-                  : rast_fill_polygons_spans((const rast_polygon *)(void *)polys, npolys, opts,
-                                             &clip, rastpy_burn_span, &b, scratch, need, failed);
+        st = wide ? rast_fill_polygons64_spans((const rast_polygon64 *)polys, npolys, opts, &clip,
+                                               rastpy_burn_span, &b, scratch, need, failed)
+                  : rast_fill_polygons_spans((const rast_polygon *)polys, npolys, opts, &clip,
+                                             rastpy_burn_span, &b, scratch, need, failed);
     }
     free(scratch);
     free(polys);
@@ -217,7 +289,7 @@ long rastpy_burn_polygons(void *out, int32_t height, int32_t width, int64_t row_
                           const rast_fill_opts *opts, uint32_t *failed)
 {
     return rastpy_burn_any(out, height, width, row_stride, plane_stride, dtype, merge, values, xy,
-                           npoints, ring_sizes, nrings, poly_rings, npolys, opts, failed, 0);
+                           npoints, ring_sizes, nrings, poly_rings, npolys, opts, failed, 0, NULL);
 }
 
 long rastpy_burn_polygons64(void *out, int32_t height, int32_t width, int64_t row_stride,
@@ -227,7 +299,18 @@ long rastpy_burn_polygons64(void *out, int32_t height, int32_t width, int64_t ro
                             const rast_fill_opts *opts, uint32_t *failed)
 {
     return rastpy_burn_any(out, height, width, row_stride, plane_stride, dtype, merge, values, xy,
-                           npoints, ring_sizes, nrings, poly_rings, npolys, opts, failed, 1);
+                           npoints, ring_sizes, nrings, poly_rings, npolys, opts, failed, 1, NULL);
+}
+
+long rastpy_burn_polygons_oriented(void *out, int32_t height, int32_t width, int64_t row_stride,
+                                   int64_t plane_stride, int dtype, int merge, const void *values,
+                                   const double *xy, size_t npoints, const uint32_t *ring_sizes,
+                                   size_t nrings, const uint32_t *poly_rings, uint32_t npolys,
+                                   const rast_fill_opts *opts, uint32_t *failed,
+                                   const int8_t *orient)
+{
+    return rastpy_burn_any(out, height, width, row_stride, plane_stride, dtype, merge, values, xy,
+                           npoints, ring_sizes, nrings, poly_rings, npolys, opts, failed, 0, orient);
 }
 
 typedef struct rastpy_line_burn {

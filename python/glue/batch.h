@@ -24,6 +24,12 @@
  * their type's limits instead of wrapping; floats as RASTPY_MERGE_ADD. */
 #define RASTPY_MERGE_ADD_SAT 2
 
+/* For the glue's own files (not for cffi): snap and lay out a polygon
+ * table (batch.c). */
+long rastpy_polygon_table(const double *xy, size_t npoints, const uint32_t *ring_sizes,
+                          size_t nrings, const uint32_t *poly_rings, uint32_t npolys, int s,
+                          rast_polygon **polys_out, int32_t **pts_out);
+
 /* cdef-begin */
 long rastpy_burn_polygons(void *out, int32_t height, int32_t width, int64_t row_stride,
                           int64_t plane_stride, int dtype, int merge, const void *values,
@@ -46,6 +52,15 @@ long rastpy_burn_polygons64(void *out, int32_t height, int32_t width, int64_t ro
 long rastpy_burn_gdal_lines(void *out, int32_t height, int32_t width, int64_t row_stride, int dtype,
                             int merge, const void *values, const int64_t *ij, const int8_t *last,
                             const uint32_t *part, const uint32_t *geom, size_t npoints);
+/* The same, each ring r first turned so that its signed area has the sign
+ * orient[r] (+1, -1; 0 leaves it): with the non-zero rule, the union of
+ * the +1 rings less the -1 rings (rastrum.masks' parts and holes). */
+long rastpy_burn_polygons_oriented(void *out, int32_t height, int32_t width, int64_t row_stride,
+                                   int64_t plane_stride, int dtype, int merge, const void *values,
+                                   const double *xy, size_t npoints, const uint32_t *ring_sizes,
+                                   size_t nrings, const uint32_t *poly_rings, uint32_t npolys,
+                                   const rast_fill_opts *opts, uint32_t *failed,
+                                   const int8_t *orient);
 /* cdef-end */
 
 #endif

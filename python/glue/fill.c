@@ -108,11 +108,20 @@ long rastpy_snap_points(const double *xy, size_t npoints, int s, int32_t *out)
     return rastpy_snap(xy, npoints, s, out);
 }
 
+/* 64-bit words of stack for a small polygon's points and scratch (half
+ * each). */
+#define RASTPY_LOCAL_WORDS 512
+
+/* Pixels of a clip that rastpy_poly fills whole instead of cutting it to
+ * the polygon's bounds first. */
+#define RASTPY_SMALL_CLIP 1024
+
 /* Paint the pixels of rectangle r (inside the target) with the pixel
  * bytes px: the background outside a cut opaque fill. */
 static void rastpy_paint_rect(const rast_target *t, rast_rect r, const void *px)
 {
     int32_t bpp = 1, x, y;
+    if (r.x0 >= r.x1) return;
     rast_format_bytes(t->format, &bpp);
     for (y = r.y0; y < r.y1; y++) {
         unsigned char *row = (unsigned char *)t->pixels + (ptrdiff_t)y * t->stride + (ptrdiff_t)r.x0 * bpp;
@@ -148,11 +157,16 @@ static long rastpy_poly(const rast_target *target, const double *xy,
     int32_t *pts;
     void *scratch;
     long bad;
-    pts = (int32_t *)malloc((size_t)npoints * sizeof(rast_point) + 1);
+    /* A small polygon's points and scratch live here, not in malloc's
+     * memory: for a 14 x 14 mask the two mallocs were a tenth of the call. */
+    uint64_t local[RASTPY_LOCAL_WORDS];
+    const size_t half = sizeof local / 2;
+    pts = (size_t)npoints * sizeof(rast_point) <= half ? (int32_t *)(void *)local
+                                                       : (int32_t *)malloc((size_t)npoints * sizeof(rast_point) + 1);
     if (!pts) return RASTPY_E_NOMEM;
     bad = rastpy_snap(xy, npoints, opts->subpixel_bits, pts);
     if (bad >= 0) {
-        free(pts);
+        if (pts != (int32_t *)(void *)local) free(pts);
         return bad + 1;
     }
     poly.points = (const rast_point *)pts;
@@ -163,26 +177,35 @@ static long rastpy_poly(const rast_target *target, const double *xy,
     if (c.y0 < 0) c.y0 = 0;
     if (c.x1 > target->width) c.x1 = target->width;
     if (c.y1 > target->height) c.y1 = target->height;
-    st = rast_fill_bounds(opts, &poly, &c, &b);
+    /* A small clip is filled whole: cutting it to the polygon's bounds
+     * (and painting the background around them row by row) costs more
+     * than it saves there, and a small clip's scratch is small. */
+    if (c.x0 < c.x1 && c.y0 < c.y1 && (int64_t)(c.x1 - c.x0) * (c.y1 - c.y0) <= RASTPY_SMALL_CLIP) {
+        b = c;
+        st = RAST_OK;
+    } else {
+        st = rast_fill_bounds(opts, &poly, &c, &b);
+    }
     if (st == RAST_OK)
         st = shade ? rast_polygon_gouraud_scratch_size(npoints, b.x1 - b.x0, b.y1 - b.y0, &need)
                    : rast_scratch_size(opts, npoints, b.x1 - b.x0, b.y1 - b.y0, &need);
     if (st != RAST_OK) {
-        free(pts);
+        if (pts != (int32_t *)(void *)local) free(pts);
         return st;
     }
-    scratch = malloc(need + 1);
+    scratch = need <= half ? (void *)(local + RASTPY_LOCAL_WORDS / 2) : malloc(need + 1);
     if (!scratch) {
-        free(pts);
+        if (pts != (int32_t *)(void *)local) free(pts);
         return RASTPY_E_NOMEM;
     }
     cut.clip = b;
     st = shade ? rast_fill_polygon_gouraud(&cut, &poly, colors, opts, shade, scratch, need)
          : background ? rast_fill_polygon_opaque(&cut, &poly, opts, pixel, background, scratch, need)
                       : rast_fill_polygon(&cut, &poly, opts, pixel, scratch, need);
-    free(scratch);
-    free(pts);
-    if (st == RAST_OK && background && c.x0 < c.x1 && c.y0 < c.y1) {
+    if (scratch != (void *)(local + RASTPY_LOCAL_WORDS / 2)) free(scratch);
+    if (pts != (int32_t *)(void *)local) free(pts);
+    if (st == RAST_OK && background && c.x0 < c.x1 && c.y0 < c.y1 &&
+        (b.x0 != c.x0 || b.y0 != c.y0 || b.x1 != c.x1 || b.y1 != c.y1)) {
         /* Above, below, left and right of the cut. */
         rast_rect r;
         if (b.x0 == b.x1 || b.y0 == b.y1) b.y0 = b.y1 = c.y1; /* nothing cut: all background */
@@ -215,6 +238,14 @@ long rastpy_mask_polygon(void *mask, int32_t height, int32_t width,
     rast_status st = rast_target_init(&t, mask, width, height, width, RAST_FORMAT_GRAY8);
     if (st != RAST_OK) return st;
     return rastpy_fill_polygon(&t, xy, npoints, ring_sizes, nrings, opts, &one, &zero);
+}
+
+/* rastpy_mask_polygon for one ring: the small-call path of polygon_mask
+ * (fewer arguments for cffi to convert). */
+long rastpy_mask_ring(void *mask, int32_t height, int32_t width, const double *xy,
+                      uint32_t npoints, const rast_fill_opts *opts)
+{
+    return rastpy_mask_polygon(mask, height, width, xy, npoints, NULL, 1, opts);
 }
 
 /* Snap the 3 * ntris vertices xy (x, y float pairs), then

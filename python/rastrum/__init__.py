@@ -14,11 +14,14 @@ from .canvas import Canvas
 from .lines import line_pixels, point_in_triangle
 from .triangles import TRIANGLE_ALGORITHMS as _TRIANGLE_ALGORITHMS, triangles_count, triangles_mask
 from . import scene
+from . import coco
+from .ml import labels, masks
 from .scene import render_mesh
 from .gis import rasterize, IDENTITY
 
-__all__ = ["polygon_mask", "triangles_mask", "triangles_count", "line_pixels", "point_in_triangle", "Canvas", "ALGORITHMS",
-           "RastrumError", "InputError", "__version__", "render_mesh", "scene", "rasterize", "IDENTITY"]
+__all__ = ["polygon_mask", "triangles_mask", "triangles_count", "line_pixels", "point_in_triangle", "Canvas",
+           "ALGORITHMS", "RastrumError", "InputError", "__version__", "render_mesh", "scene", "rasterize",
+           "IDENTITY", "coco", "masks", "labels"]
 
 _v = lib.rast_version_number()
 __version__ = "%d.%d.%d" % (_v // 10000, _v // 100 % 100, _v % 100)
@@ -107,5 +110,36 @@ def polygon_mask(rings, shape, *, rule="evenodd", algorithm="aet", subpixel_bits
            [0, 0, 0, 0, 0, 0, 0],
            [0, 0, 0, 0, 0, 0, 0]])
     """
-    opts = _core.fill_opts(algorithm, rule, subpixel_bits, sample_offset, rounding, boundary)
+    # The options struct of these exact argument types, checked once: a
+    # dict lookup instead of the general cache's (which also keys on the
+    # types, so that True or 8.0 are still refused: here only an int S and
+    # a float offset take the quick way).
+    key = (algorithm, rule, subpixel_bits, sample_offset, rounding, boundary)
+    opts = _MASK_OPTS.get(key) if type(subpixel_bits) is int and type(sample_offset) is float else None
+    if opts is None:
+        opts = _core.fill_opts(algorithm, rule, subpixel_bits, sample_offset, rounding, boundary)
+        if type(subpixel_bits) is int and type(sample_offset) is float and len(_MASK_OPTS) < 256:
+            _MASK_OPTS[key] = opts
+    # One C-contiguous float64 ring and a plain (h, w): straight to C, every
+    # check of the general path made here in a few comparisons (shape: two
+    # ints in 1..RAST_MAX_DIM; ring: (N >= 3, 2) float64).  Anything else,
+    # and any error status, takes the general path, which checks and raises.
+    # (strides (16, 8): two float64 per row, rows packed: C-contiguous (N, 2))
+    if type(rings) is _ndarray and rings.dtype is _F64 and rings.strides == _PACKED and type(shape) is tuple \
+            and len(shape) == 2 and rings.shape[1] == 2:
+        h, w = shape
+        n = len(rings)
+        if type(h) is int and type(w) is int and 0 < h <= _MAX_DIM and 0 < w <= _MAX_DIM and n >= 3:
+            mask = _empty(shape, bool)
+            if not _mask_call(_from_buffer(mask), h, w, _from_buffer(_DOUBLES, rings), n, opts):
+                return mask
     return _core.mask_polygon(_core.shape2(shape), rings, opts, opts.subpixel_bits)
+
+
+_MASK_OPTS = {}
+_ndarray, _empty = _core.np.ndarray, _core.np.empty
+_F64 = _core.np.dtype(_core.np.float64)
+_MAX_DIM = lib.RAST_MAX_DIM
+_PACKED = (16, 8)
+_DOUBLES = _core.ffi.typeof("double[]")
+_mask_call, _from_buffer = lib.rastpy_mask_ring, _core.ffi.from_buffer

@@ -31,7 +31,7 @@ DTYPES = {
 MERGES = {"replace": lib.RASTPY_MERGE_REPLACE, "add": lib.RASTPY_MERGE_ADD}
 
 
-def burn(out, polygons, opts, values=None, merge="replace", planes=False, what="polygon"):
+def burn(out, polygons, opts, values=None, merge="replace", planes=False, what="polygon", orient=None):
     """Burn `polygons` into `out` (numpy, native byte order, rows of
     contiguous elements, writable).
 
@@ -67,14 +67,17 @@ def burn(out, polygons, opts, values=None, merge="replace", planes=False, what="
         return out
     failed = ffi.new("uint32_t *", 0xFFFFFFFF)
     # The 64-bit path (S up to 32, +-2**28 pixels) when S or the coordinates
-    # need it: the same pixels where both apply (_core.use_wide).
-    wide = use_wide(opts, pts)
-    result = (lib.rastpy_burn_polygons64 if wide else lib.rastpy_burn_polygons)(
-        ffi.cast("void *", out.__array_interface__["data"][0]), h, w,
-        out.strides[-2] if h > 1 else 0, out.strides[0] if planes and len(polygons) > 1 else 0,
-        dt, MERGES[merge], ffi.from_buffer(values) if values is not None else ffi.NULL,
-        ffi.from_buffer("double[]", pts), len(pts), ffi.from_buffer("uint32_t[]", sizes),
-        len(sizes), ffi.from_buffer("uint32_t[]", poly_rings), len(polygons), opts, failed)
+    # need it: the same pixels where both apply (_core.use_wide).  Turning
+    # rings (orient, rastrum.masks' union) is 32-bit only.
+    args = (ffi.cast("void *", out.__array_interface__["data"][0]), h, w,
+            out.strides[-2] if h > 1 else 0, out.strides[0] if planes and len(polygons) > 1 else 0,
+            dt, MERGES[merge], ffi.from_buffer(values) if values is not None else ffi.NULL,
+            ffi.from_buffer("double[]", pts), len(pts), ffi.from_buffer("uint32_t[]", sizes),
+            len(sizes), ffi.from_buffer("uint32_t[]", poly_rings), len(polygons), opts, failed)
+    if orient is None:
+        result = (lib.rastpy_burn_polygons64 if use_wide(opts, pts) else lib.rastpy_burn_polygons)(*args)
+    else:
+        result = lib.rastpy_burn_polygons_oriented(*args, ffi.from_buffer("int8_t[]", orient))
     if result == 0:
         return out
     if result > 0:

@@ -288,11 +288,14 @@ def int_pair(pair, not_pair, not_ints):
     return int(a), int(b)
 
 
+_MAX_DIM = lib.RAST_MAX_DIM
+
+
 def shape2(shape):
     """(H, W) as two ints >= 0, or InputError."""
     if type(shape) is tuple and len(shape) == 2:  # the common case, quickly
         h, w = shape
-        if type(h) is int and type(w) is int and 0 <= h <= lib.RAST_MAX_DIM and 0 <= w <= lib.RAST_MAX_DIM:
+        if type(h) is int and type(w) is int and 0 <= h <= _MAX_DIM and 0 <= w <= _MAX_DIM:
             return shape
     h, w = int_pair(shape, "shape must be a pair (height, width), not %r",
                     "shape must hold two ints, not %r")
@@ -302,36 +305,110 @@ def shape2(shape):
     return int(h), int(w)
 
 
-def _ring_list(rings):
-    """A list of rings from one (N, 2) ring or a sequence of rings."""
+def _geo_mapping(obj):
+    """The GeoJSON-like mapping of a shapely geometry, an object with
+    ``__geo_interface__`` or a mapping with "type" and "coordinates";
+    None for anything else."""
+    gi = getattr(obj, "__geo_interface__", None)
+    if gi is None and isinstance(obj, dict) and "type" in obj:
+        gi = obj
+    return gi
+
+
+def _geo_rings(gi, rings, holes):
+    """Append the rings of a Polygon / MultiPolygon / GeometryCollection
+    mapping to `rings`, and whether each is a hole to `holes`."""
+    kind = gi.get("type")
+    if kind == "Polygon":
+        for k, r in enumerate(gi["coordinates"]):
+            rings.append(r)
+            holes.append(k > 0)
+    elif kind == "MultiPolygon":
+        for poly in gi["coordinates"]:
+            _geo_rings({"type": "Polygon", "coordinates": poly}, rings, holes)
+    elif kind == "GeometryCollection":
+        for g in gi["geometries"]:
+            _geo_rings(g, rings, holes)
+    else:
+        raise InputError("rings: a %s geometry has no area to fill; Polygon, MultiPolygon or "
+                         "GeometryCollection of them are needed" % (kind,))
+
+
+def _ring_list(rings, holes=None):
+    """A list of rings from one (N, 2) ring, an (N, 1, 2) OpenCV contour, a
+    shapely / __geo_interface__ polygon, or a sequence of rings.  With
+    `holes` (a list), whether each ring is a hole (geometries' interiors) is
+    appended to it."""
+    gi = _geo_mapping(rings)
+    if gi is not None:
+        out, flags = [], []
+        _geo_rings(gi, out, flags)
+        if holes is not None:
+            holes.extend(flags)
+        return out
     if isinstance(rings, np.ndarray):
         if rings.ndim == 2:
-            return [rings]
-        if rings.ndim == 3:
-            return list(rings)
-        raise InputError("rings must be an (N, 2) array or a list of them, not shape %s" % (rings.shape,))
-    try:
-        rings = list(rings)
-    except TypeError:
-        raise InputError("rings must be an (N, 2) array-like or a list of them") from None
-    if rings and np.ndim(rings[0]) == 1:
-        return [rings]  # one ring given as a list of (x, y) pairs
-    return rings
+            out = [rings]
+        elif rings.ndim == 3 and rings.shape[1:] == (1, 2):
+            out = [rings]  # one OpenCV contour
+        elif rings.ndim == 3:
+            out = list(rings)
+        else:
+            raise InputError("rings must be an (N, 2) array, an (N, 1, 2) contour or a list of them, "
+                             "not shape %s" % (rings.shape,))
+    else:
+        try:
+            out = list(rings)
+        except TypeError:
+            raise InputError("rings must be an (N, 2) array-like or a list of them, not %s"
+                             % type(rings).__name__) from None
+        if out and np.ndim(out[0]) == 0 and not isinstance(out[0], (str, bytes)) and out[0] is not None:
+            raise InputError("rings: got a flat list of %d numbers (shape (%d,)); a ring needs shape "
+                             "(N, 2); for a COCO polygon [x0, y0, x1, y1, ...] use "
+                             "rastrum.coco.rings(segmentation)" % (len(out), len(out)))
+        if out and np.ndim(out[0]) == 1:
+            out = [out]  # one ring given as a list of (x, y) pairs
+        else:
+            flat = []
+            for r in out:  # geometries among the rings
+                g = _geo_mapping(r)
+                if g is None:
+                    flat.append(r)
+                    if holes is not None:
+                        holes.append(False)
+                else:
+                    _geo_rings(g, flat, holes if holes is not None else [])
+            return flat
+    if holes is not None:
+        holes.extend([False] * len(out))
+    return out
 
 
-def rings_f64(rings):
-    """The rings as checked, C-contiguous float64 (N, 2) arrays.  A ring of
-    no points is nothing (dropped): empty input draws nothing."""
+def rings_f64(rings, holes=None):
+    """The rings as checked, C-contiguous float64 (N, 2) arrays (an
+    (N, 1, 2) contour is reshaped).  A ring of no points is nothing
+    (dropped): empty input draws nothing; rings of 1 or 2 points are kept
+    and enclose nothing.  With `holes` (a list), whether each kept ring is
+    a hole is put there."""
     arrays = []
-    for k, ring in enumerate(_ring_list(rings)):
-        a = real_array(ring, "rings: ring %d" % k, "an (N, 2) array-like")
+    flags = [] if holes is not None else None
+    ring_list = _ring_list(rings, flags)
+    for k, ring in enumerate(ring_list):
+        if type(ring) is np.ndarray and ring.dtype == _F64 and ring.ndim == 2 and ring.shape[1:] == (2,) \
+                and ring.flags.c_contiguous:
+            a = ring
+        else:
+            a = real_array(ring, "rings: ring %d" % k, "an (N, 2) array-like")
         if a.size == 0 and a.ndim <= 2:
             continue  # [] or np.zeros((0, 2))
+        if a.ndim == 3 and a.shape[1:] == (1, 2):
+            a = a.reshape(-1, 2)
         if a.ndim != 2 or a.shape[1] != 2:
-            raise InputError("rings: ring %d must have shape (N, 2), not %s" % (k, a.shape))
-        if a.shape[0] < 3:
-            raise InputError("rings: ring %d has %d points; a ring needs at least 3" % (k, a.shape[0]))
+            raise InputError("rings: ring %d has shape %s; a ring needs shape (N, 2) (or (N, 1, 2), an "
+                             "OpenCV contour)" % (k, a.shape))
         arrays.append(a)
+        if holes is not None:
+            holes.append(flags[k])
     return arrays
 
 
@@ -378,6 +455,9 @@ def _points(rings):
     if pts.shape[0] > lib.RAST_MAX_POINTS:
         raise InputError("%d points; at most %d per call" % (pts.shape[0], lib.RAST_MAX_POINTS))
     return pts, sizes, len(arrays)
+
+
+_F64 = np.dtype(np.float64)
 
 
 def bad_point_message(what, pts, k, s, sizes=None, wide=False):
@@ -465,7 +545,6 @@ def mask_polygon(shape, rings, opts, s):
     return mask
 
 
-_F64 = np.dtype(np.float64)
 
 
 def fill_polygon_gouraud(target, rings, colors, opts, shade, s):

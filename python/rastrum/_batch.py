@@ -74,8 +74,9 @@ def burn(out, polygons, opts, values=None, merge="replace", planes=False, what="
             dt, MERGES[merge], ffi.from_buffer(values) if values is not None else ffi.NULL,
             ffi.from_buffer("double[]", pts), len(pts), ffi.from_buffer("uint32_t[]", sizes),
             len(sizes), ffi.from_buffer("uint32_t[]", poly_rings), len(polygons), opts, failed)
+    wide = orient is None and use_wide(opts, pts)
     if orient is None:
-        result = (lib.rastpy_burn_polygons64 if use_wide(opts, pts) else lib.rastpy_burn_polygons)(*args)
+        result = (lib.rastpy_burn_polygons64 if wide else lib.rastpy_burn_polygons)(*args)
     else:
         result = lib.rastpy_burn_polygons_oriented(*args, ffi.from_buffer("int8_t[]", orient))
     if result == 0:

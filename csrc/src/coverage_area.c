@@ -1,0 +1,434 @@
+/*
+ * coverage_area.c - exact area coverage ("area") and signed-area
+ * accumulation ("accumulate"), row by row (DESIGN section 1a; the bound in
+ * rastrum.h).
+ *
+ * Area.  Pixel row j is the strip j <= y < j + 1.  Its edges (those whose
+ * open y extent meets the strip) are swept from the strip's top: at the
+ * current ordinate t they are put in their exact order just below t (by
+ * abscissa, then slope), and the sweep goes on to the next event: an
+ * edge's end or start, or the first crossing of two neighbours (only
+ * neighbours can cross first).  Between t and that event no two edges
+ * cross, so the region is a union of trapezoids [L(y), R(y)] bounded by
+ * the edges where the winding number enters and leaves "inside" (every
+ * edge under even-odd; under non-zero those where it leaves or returns to
+ * 0): coverage counts what lies right of each left boundary minus what
+ * lies right of each right boundary, per column, as FreeType counts its
+ * cells (cover and area per cell, then a running sum along the row).  A
+ * crossing's ordinate is rounded up to the grid of 2^-60 pixel, abscissae
+ * at the pieces' ends down to it; everything else is exact (the order of
+ * the edges, the crossings' positions before rounding, the sums, which
+ * are 128-bit and modular: the true per-pixel result is small).
+ *
+ * Accumulate.  The same cells, but every edge adds its whole part in the
+ * row with the sign of its direction: the sum is the integral of the
+ * winding number over the pixel, turned into a coverage by the rule.
+ * Right where no parts of the region overlap.
+ */
+#include "coverage.h"
+
+#define G RAST__COV_G
+#define T ((uint64_t)1 << G)
+
+/* The row's cells: for clip column c (index c - x0), cover (sum of signed
+ * heights, U) and area (sum of signed (f0 + f1) heights, U V; or, when
+ * accumulating, that over 2^59 per piece, so that deep overlaps do not
+ * wrap), and `carry`, the cover of everything left of the clip. */
+typedef struct rast__cells {
+    rast__i128 *cover, *area, carry;
+    int32_t x0, x1, cmin, cmax; /* clip columns; columns touched */
+    int32_t h;                  /* H = G - S */
+    int32_t p;                  /* P = 2^S */
+    int accumulate;
+} rast__cells;
+
+/* x at ordinate t (U, from the top of the row whose top is Yj, fixed
+ * units) of edge e, which must reach t: floor in V into *x, the rest r/dy
+ * into *r. */
+static void rast__cov_x_at(const rast__cedge *e, int64_t Yj, uint64_t t, int32_t h,
+                           rast__i128 *x, int64_t *r)
+{
+    rast__i128 base = rast__i128_shl(rast__i128_from(e->xt), h), y, q;
+    uint32_t rem;
+    if (e->dx == 0) {
+        *x = base;
+        *r = 0;
+        return;
+    }
+    /* Y = height below the top, U units (>= 0, < 2^89). */
+    y = rast__i128_add(rast__i128_shl(rast__i128_from(Yj - e->yt), h), rast__i128_u64(t));
+    q = rast__u128_div32(rast__u128_mul32(y, (uint32_t)(e->dx < 0 ? -e->dx : e->dx)),
+                         (uint32_t)e->dy, &rem);
+    if (e->dx > 0) {
+        *x = rast__i128_add(base, q);
+        *r = rem;
+    } else if (rem) {
+        *x = rast__i128_sub(rast__i128_sub(base, q), rast__i128_from(1));
+        *r = e->dy - (int64_t)rem;
+    } else {
+        *x = rast__i128_sub(base, q);
+        *r = 0;
+    }
+}
+
+/* floor of the ordinate t (U from the row's top at Yj) where e meets the
+ * vertical x = X pixels, which lies between its ends. */
+static uint64_t rast__cov_t_at(const rast__cedge *e, int64_t Yj, int64_t X, const rast__cells *c)
+{
+    int64_t w = X * c->p - e->xt;
+    uint32_t rem;
+    rast__i128 q, t;
+    if (w < 0) w = -w;
+    q = rast__u128_div32(rast__i128_shl(rast__i128_mul(w, e->dy), c->h),
+                         (uint32_t)(e->dx < 0 ? -e->dx : e->dx), &rem);
+    t = rast__i128_sub(q, rast__i128_shl(rast__i128_from(Yj - e->yt), c->h));
+    if (rast__i128_neg_p(t)) return 0;
+    if (t.hi || t.lo > T) return T;
+    return t.lo;
+}
+
+/* t kept in [lo, hi]: the column crossings of a piece are in its range
+ * (a floor of an exact value between its ends); this only guards it. */
+static uint64_t rast__cov_t_clamp(uint64_t t, uint64_t lo, uint64_t hi)
+{
+    return t < lo ? lo : t > hi ? hi : t;
+}
+
+/* One cell's share: from fraction f0 at t0 to f1 at t1 (V, 0..2^G) in
+ * column col, sign s. */
+static void rast__cells_add(rast__cells *c, int32_t col, uint64_t f0, uint64_t f1,
+                            uint64_t t0, uint64_t t1, int32_t s)
+{
+    uint64_t dy = t1 - t0;
+    rast__i128 cv, ar;
+    if (dy == 0 || col >= c->x1) return;
+    cv = rast__i128_u64(dy);
+    if (s < 0) cv = rast__i128_neg(cv);
+    if (col < c->x0) {
+        c->carry = rast__i128_add(c->carry, cv);
+        return;
+    }
+    ar = rast__i128_mul((int64_t)(f0 + f1), (int64_t)dy);
+    if (c->accumulate) ar = rast__i128_sar(ar, 59);
+    if (s < 0) ar = rast__i128_neg(ar);
+    col -= c->x0;
+    c->cover[col] = rast__i128_add(c->cover[col], cv);
+    c->area[col] = rast__i128_add(c->area[col], ar);
+    if (col < c->cmin) c->cmin = col;
+    if (col > c->cmax) c->cmax = col;
+}
+
+/* The piece of edge e from (xa, ta) to (xb, tb) (V, U; ta < tb), sign s,
+ * split at the pixel columns it crosses. */
+static void rast__cells_piece(rast__cells *c, const rast__cedge *e, int64_t Yj, rast__i128 xa,
+                              uint64_t ta, rast__i128 xb, uint64_t tb, int32_t s)
+{
+    const uint64_t fmask = T - 1;
+    rast__i128 ca128 = rast__i128_sar(xa, G), cb128 = rast__i128_sar(xb, G);
+    int64_t ca = (int64_t)ca128.lo, cb = (int64_t)cb128.lo; /* |column| < 2^28 */
+    uint64_t fa = xa.lo & fmask, fb = xb.lo & fmask, t = ta;
+    int64_t col;
+    if (ta >= tb) return;
+    if (ca == cb) {
+        rast__cells_add(c, (int32_t)ca, fa, fb, ta, tb, s);
+        return;
+    }
+    if ((ca < c->x0 && cb < c->x0)) { /* all left of the clip: its cover */
+        rast__cells_add(c, c->x0 - 1, 0, 0, ta, tb, s);
+        return;
+    }
+    if (ca < cb) { /* going right */
+        if (ca >= c->x1) return;
+        col = ca;
+        if (col < c->x0) { /* the part left of the clip: its cover */
+            uint64_t tx = rast__cov_t_clamp(rast__cov_t_at(e, Yj, c->x0, c), t, tb);
+            rast__cells_add(c, c->x0 - 1, 0, 0, t, tx, s);
+            t = tx;
+            col = c->x0;
+            fa = 0;
+        }
+        for (; col < cb; col++) {
+            uint64_t tx;
+            if (col >= c->x1) return;
+            tx = rast__cov_t_clamp(rast__cov_t_at(e, Yj, col + 1, c), t, tb);
+            rast__cells_add(c, (int32_t)col, fa, T, t, tx, s);
+            t = tx;
+            fa = 0;
+        }
+        rast__cells_add(c, (int32_t)cb, 0, fb, t, tb, s);
+    } else { /* going left */
+        if (cb >= c->x1) return;
+        col = ca;
+        if (col >= c->x1) { /* the part right of the clip adds nothing */
+            t = rast__cov_t_clamp(rast__cov_t_at(e, Yj, c->x1, c), t, tb);
+            col = c->x1 - 1;
+            fa = T;
+        }
+        for (; col > cb; col--) {
+            uint64_t tx;
+            if (col < c->x0) { /* the rest is left of the clip */
+                rast__cells_add(c, c->x0 - 1, 0, 0, t, tb, s);
+                return;
+            }
+            tx = rast__cov_t_clamp(rast__cov_t_at(e, Yj, col, c), t, tb);
+            rast__cells_add(c, (int32_t)col, fa, 0, t, tx, s);
+            t = tx;
+            fa = T;
+        }
+        rast__cells_add(c, (int32_t)cb, T, fb, t, tb, s);
+    }
+}
+
+/* Row y's values from the cells, which are then cleared. */
+static void rast__cells_emit(rast__cells *c, const rast__cov_out *o, int32_t y, rast_fill_rule rule)
+{
+    unsigned char *row = rast__cov_row(o, y);
+    rast__i128 acc = c->carry;
+    const rast__i128 one = rast__i128_u64((uint64_t)1 << 62);
+    int32_t k, w = c->x1 - c->x0;
+    for (k = 0; k < w; k++) {
+        rast__i128 v;
+        uint64_t a;
+        if (k >= c->cmin && k <= c->cmax) {
+            acc = rast__i128_add(acc, c->cover[k]);
+            if (c->accumulate) /* a 2^62 = 4 cover - area / 2^59 */
+                v = rast__i128_sub(rast__i128_shl(acc, 2), c->area[k]);
+            else /* a 2^121 = 2^61 cover - area, then down to 2^62 */
+                v = rast__i128_sar(rast__i128_sub(rast__i128_shl(acc, 61), c->area[k]), 59);
+            c->cover[k] = c->area[k] = rast__i128_u64(0);
+        } else {
+            v = c->accumulate ? rast__i128_shl(acc, 2)
+                              : rast__i128_sar(rast__i128_shl(acc, 61), 59);
+        }
+        if (c->accumulate) {
+            /* |w| integrated, then the rule */
+            if (rast__i128_neg_p(v)) v = rast__i128_neg(v);
+            if (rule == RAST_RULE_NONZERO) {
+                if (rast__i128_cmp(v, one) > 0) v = one;
+            } else {
+                uint64_t m = v.lo & (((uint64_t)1 << 63) - 1); /* mod 2 */
+                v = rast__i128_u64(m > ((uint64_t)1 << 62) ? ((uint64_t)1 << 63) - m : m);
+            }
+        }
+        if (rast__i128_neg_p(v))
+            a = 0;
+        else if (rast__i128_cmp(v, one) > 0)
+            a = (uint64_t)1 << 62;
+        else
+            a = v.lo;
+        rast__cov_put(o, row, k, a);
+    }
+    c->carry = rast__i128_u64(0);
+    c->cmin = INT32_MAX;
+    c->cmax = -1;
+}
+
+/* Is a strictly before b just below the ordinate both have cached? */
+static int rast__cov_before(const rast__cedge *a, const rast__cedge *b)
+{
+    int c = rast__i128_cmp(a->x, b->x);
+    int64_t l, r;
+    if (c) return c < 0;
+    l = a->r * b->dy;
+    r = b->r * a->dy;
+    if (l != r) return l < r;
+    return (int64_t)a->dx * b->dy < (int64_t)b->dx * a->dy;
+}
+
+/* The first ordinate after t (U; up to T) where a, left of b just below
+ * t, crosses it; T when they do not cross inside the row. */
+static uint64_t rast__cov_cross(const rast__cedge *a, const rast__cedge *b, int64_t Yj,
+                                uint64_t t, const rast__cells *c)
+{
+    int64_t D = (int64_t)a->dx * b->dy - (int64_t)b->dx * a->dy, q0, r0, qq, rr;
+    rast__i128 N;
+    uint64_t tc;
+    if (D <= 0) return T; /* a is not steeper to the right: no crossing */
+    /* The crossing's ordinate y = Yj + N / D (fixed units). */
+    N = rast__i128_mul((int64_t)(b->xt - a->xt) * a->dy, b->dy);
+    N = rast__i128_add(N, rast__i128_mul((a->yt - Yj) * a->dx, b->dy));
+    N = rast__i128_sub(N, rast__i128_mul((b->yt - Yj) * b->dx, a->dy));
+    if (!rast__i128_floordiv(N, D, &q0, &r0)) return T;
+    if (q0 < 0 || q0 >= c->p) return T; /* not inside the row (q0 < 0 cannot be) */
+    /* t = ceil(N 2^H / D) = q0 2^H + ceil(r0 2^H / D). */
+    rast__i128_floordiv(rast__i128_shl(rast__i128_from(r0), c->h), D, &qq, &rr);
+    tc = ((uint64_t)q0 << c->h) + (uint64_t)qq + (rr > 0);
+    if (tc <= t) tc = t + 1;
+    return tc > T ? T : tc;
+}
+
+size_t rast__cov_area_scratch(uint32_t n, int32_t width)
+{
+    size_t b = rast__align(rast__size_mul(n, sizeof(rast__cedge)));
+    b = rast__size_add(b, 3 * rast__align(rast__size_mul(n, sizeof(int32_t))));
+    return rast__size_add(b, 2 * rast__align(rast__size_mul((size_t)width, sizeof(rast__i128))));
+}
+
+/* Heapsort of the indices ix[0..n) by the edges' top ordinate. */
+static void rast__cov_sift(int32_t *ix, const rast__cedge *e, uint32_t root, uint32_t n)
+{
+    int32_t v = ix[root];
+    for (;;) {
+        uint32_t ch = 2 * root + 1;
+        if (ch >= n) break;
+        if (ch + 1 < n && e[ix[ch + 1]].yt > e[ix[ch]].yt) ch++;
+        if (e[ix[ch]].yt <= e[v].yt) break;
+        ix[root] = ix[ch];
+        root = ch;
+    }
+    ix[root] = v;
+}
+
+static void rast__cov_sort_tops(int32_t *ix, const rast__cedge *e, uint32_t n)
+{
+    uint32_t i;
+    for (i = n / 2; i-- > 0;) rast__cov_sift(ix, e, i, n);
+    for (i = n; i-- > 1;) {
+        int32_t s = ix[0];
+        ix[0] = ix[i];
+        ix[i] = s;
+        rast__cov_sift(ix, e, 0, i);
+    }
+}
+
+/* The row's sweep (area): edges row[0..nrow) of row j. */
+static void rast__cov_row_area(rast__cells *c, rast__cedge *e, const int32_t *row, int32_t nrow,
+                               int32_t *live, int32_t j, rast_fill_rule rule)
+{
+    const int64_t Yj = (int64_t)j * c->p;
+    uint64_t t = 0;
+    while (t < T) {
+        uint64_t tn = T;
+        int32_t k, n = 0, w;
+        /* The edges reaching below t, in order; the next start or end. */
+        for (k = 0; k < nrow; k++) {
+            rast__cedge *ed = &e[row[k]];
+            int64_t rel0 = (int64_t)ed->yt - Yj, rel1 = (int64_t)ed->yt + ed->dy - Yj;
+            uint64_t t0 = rel0 <= 0 ? 0 : (uint64_t)rel0 << c->h;
+            uint64_t t1 = rel1 >= c->p ? T : (uint64_t)rel1 << c->h;
+            if (t0 > t) {
+                if (t0 < tn) tn = t0;
+                continue;
+            }
+            if (t1 <= t) continue;
+            if (t1 < tn) tn = t1;
+            if (ed->rowx != j || ed->tx != t) {
+                rast__cov_x_at(ed, Yj, t, c->h, &ed->x, &ed->r);
+                ed->rowx = j;
+                ed->tx = t;
+            }
+            {   /* insertion, by the exact order below t */
+                int32_t m = n++, id = row[k];
+                while (m > 0 && rast__cov_before(ed, &e[live[m - 1]])) {
+                    live[m] = live[m - 1];
+                    m--;
+                }
+                live[m] = id;
+            }
+        }
+        for (k = 0; k + 1 < n; k++) {
+            uint64_t tc = rast__cov_cross(&e[live[k]], &e[live[k + 1]], Yj, t, c);
+            if (tc < tn) tn = tc;
+        }
+        /* The pieces [t, tn] of the edges bounding the inside. */
+        for (k = 0, w = 0; k < n; k++) {
+            rast__cedge *ed = &e[live[k]];
+            int32_t wb = w, s;
+            w += ed->dir;
+            if (rule == RAST_RULE_EVENODD)
+                s = (wb & 1) ? -1 : 1;
+            else
+                s = (wb == 0) ? 1 : (w == 0) ? -1 : 0;
+            rast__cov_x_at(ed, Yj, tn, c->h, &ed->xn, &ed->rn);
+            if (s) rast__cells_piece(c, ed, Yj, ed->x, t, ed->xn, tn, s);
+            ed->x = ed->xn;
+            ed->r = ed->rn;
+            ed->tx = tn;
+        }
+        t = tn;
+    }
+}
+
+/* The row's accumulation: every edge, whole, signed by its direction. */
+static void rast__cov_row_acc(rast__cells *c, rast__cedge *e, const int32_t *row, int32_t nrow,
+                              int32_t j)
+{
+    const int64_t Yj = (int64_t)j * c->p;
+    int32_t k;
+    for (k = 0; k < nrow; k++) {
+        rast__cedge *ed = &e[row[k]];
+        int64_t rel0 = (int64_t)ed->yt - Yj, rel1 = (int64_t)ed->yt + ed->dy - Yj;
+        uint64_t t0 = rel0 <= 0 ? 0 : (uint64_t)rel0 << c->h;
+        uint64_t t1 = rel1 >= c->p ? T : (uint64_t)rel1 << c->h;
+        rast__cov_x_at(ed, Yj, t0, c->h, &ed->x, &ed->r);
+        rast__cov_x_at(ed, Yj, t1, c->h, &ed->xn, &ed->rn);
+        rast__cells_piece(c, ed, Yj, ed->x, t0, ed->xn, t1, ed->dir);
+    }
+}
+
+rast_status rast__cov_area(rast__cedge *e, uint32_t n, int32_t s, rast_fill_rule rule,
+                           int accumulate, const rast__cov_out *o, rast__arena *arena)
+{
+    rast__cells c;
+    int32_t *order, *row, *live, nrow = 0, j, ja, jb, k, width = o->clip.x1 - o->clip.x0;
+    uint32_t i, next = 0;
+    int64_t ymin, ymax;
+
+    order = (int32_t *)rast__take(arena, (size_t)n * sizeof(int32_t));
+    row = (int32_t *)rast__take(arena, (size_t)n * sizeof(int32_t));
+    live = (int32_t *)rast__take(arena, (size_t)n * sizeof(int32_t));
+    c.cover = (rast__i128 *)rast__take(arena, (size_t)width * sizeof(rast__i128));
+    c.area = (rast__i128 *)rast__take(arena, (size_t)width * sizeof(rast__i128));
+    if ((n && (!order || !row || !live)) || !c.cover || !c.area) return RAST_E_SCRATCH;
+    for (k = 0; k < width; k++) c.cover[k] = c.area[k] = rast__i128_u64(0);
+    c.carry = rast__i128_u64(0);
+    c.x0 = o->clip.x0;
+    c.x1 = o->clip.x1;
+    c.cmin = INT32_MAX;
+    c.cmax = -1;
+    c.h = G - s;
+    c.p = (int32_t)1 << s;
+    c.accumulate = accumulate;
+
+    if (n == 0) {
+        rast__cov_zero_rows(o, o->clip.y0, o->clip.y1);
+        return RAST_OK;
+    }
+    ymin = e[0].yt;
+    ymax = (int64_t)e[0].yt + e[0].dy;
+    for (i = 0; i < n; i++) {
+        order[i] = (int32_t)i;
+        e[i].rowx = INT32_MIN;
+        if (e[i].yt < ymin) ymin = e[i].yt;
+        if ((int64_t)e[i].yt + e[i].dy > ymax) ymax = (int64_t)e[i].yt + e[i].dy;
+    }
+    rast__cov_sort_tops(order, e, n);
+    /* Rows whose strip the edges reach: floor(ymin / P) .. ceil(ymax / P). */
+    ymin = rast__floordiv(ymin, c.p);
+    ymax = rast__ceildiv(ymax, c.p);
+    ja = ymin > o->clip.y0 ? (int32_t)(ymin < o->clip.y1 ? ymin : o->clip.y1) : o->clip.y0;
+    jb = ymax < o->clip.y1 ? (int32_t)(ymax > ja ? ymax : ja) : o->clip.y1;
+    rast__cov_zero_rows(o, o->clip.y0, ja);
+    for (j = ja; j < jb; j++) {
+        const int64_t Yj = (int64_t)j * c.p;
+        int32_t m;
+        /* Drop the edges that end above the row; take those that start
+         * above its bottom. */
+        for (k = 0, m = 0; k < nrow; k++)
+            if ((int64_t)e[row[k]].yt + e[row[k]].dy > Yj) row[m++] = row[k];
+        nrow = m;
+        while (next < n && e[order[next]].yt < Yj + c.p) {
+            if ((int64_t)e[order[next]].yt + e[order[next]].dy > Yj) row[nrow++] = order[next];
+            next++;
+        }
+        if (nrow) {
+            if (accumulate)
+                rast__cov_row_acc(&c, e, row, nrow, j);
+            else
+                rast__cov_row_area(&c, e, row, nrow, live, j, rule);
+        }
+        rast__cells_emit(&c, o, j, rule);
+    }
+    rast__cov_zero_rows(o, jb, o->clip.y1);
+    return RAST_OK;
+}

@@ -102,8 +102,15 @@ static inline rast__i128 rast__i128_u64(uint64_t v)
  * (xn, rn). */
 typedef struct rast__cedge {
     rast__i128 x, xn;
-    int64_t r, rn;
+    rast__i128 xs; /* x grows by xs + xsr/dy from a row's top to the next */
+    rast__i128 ts; /* t grows by ts + tsr/|dx| from a column to the next */
+    rast__i128 ct; /* the column stepper left at vertical cX: t (U from the
+                      top) = ct + crem/|dx|; see coverage_area.c */
+    int64_t cX;
+    uint32_t crem;
+    int64_t r, rn, xsr;
     uint64_t tx;  /* the t of x, r in row `rowx` */
+    uint32_t tsr;
     int32_t rowx; /* see tx; INT32_MIN: not cached */
     int32_t xt, yt, dx, dy, dir;
 } rast__cedge;
@@ -124,23 +131,33 @@ typedef struct rast__cov_out {
     rast_rect clip;
 } rast__cov_out;
 
-/* Pixel x of row y gets coverage a62 / 2^62 (0 <= a62 <= 2^62). */
+/* The value stored for coverage a62 / 2^62 (0 <= a62 <= 2^62): a62 itself
+ * (FIX62), or floor((a62 M + 2^61) / 2^62), in 128 bits (a62 M < 2^78). */
+static inline uint64_t rast__cov_level(rast_coverage_format f, uint64_t a62)
+{
+    rast__i128 p;
+    if (f == RAST_COVERAGE_FIX62) return a62;
+    p = rast__i128_mul((int64_t)a62, f == RAST_COVERAGE_U8 ? 255 : 65535);
+    p = rast__i128_add(p, rast__i128_u64((uint64_t)1 << 61));
+    return rast__i128_sar(p, 62).lo;
+}
+
+/* Column k of a clip row gets value v (rast__cov_level's). */
+static inline void rast__cov_store(rast_coverage_format f, unsigned char *row, int32_t k,
+                                   uint64_t v)
+{
+    if (f == RAST_COVERAGE_U8)
+        row[k] = (unsigned char)v;
+    else if (f == RAST_COVERAGE_U16)
+        ((uint16_t *)(void *)row)[k] = (uint16_t)v;
+    else
+        ((uint64_t *)(void *)row)[k] = v;
+}
+
 static inline void rast__cov_put(const rast__cov_out *o, unsigned char *row, int32_t k,
                                  uint64_t a62)
 {
-    if (o->format == RAST_COVERAGE_FIX62) {
-        ((uint64_t *)(void *)row)[k] = a62;
-    } else {
-        /* floor((a62 M + 2^61) / 2^62): a62 M < 2^78, in 128 bits. */
-        uint64_t M = o->format == RAST_COVERAGE_U8 ? 255u : 65535u;
-        rast__i128 p = rast__i128_mul((int64_t)a62, (int64_t)M);
-        p = rast__i128_add(p, rast__i128_u64((uint64_t)1 << 61));
-        p = rast__i128_sar(p, 62);
-        if (o->format == RAST_COVERAGE_U8)
-            row[k] = (unsigned char)p.lo;
-        else
-            ((uint16_t *)(void *)row)[k] = (uint16_t)p.lo;
-    }
+    rast__cov_store(o->format, row, k, rast__cov_level(o->format, a62));
 }
 
 static inline unsigned char *rast__cov_row(const rast__cov_out *o, int32_t y)

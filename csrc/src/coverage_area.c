@@ -71,27 +71,67 @@ static void rast__cov_x_at(const rast__cedge *e, int64_t Yj, uint64_t t, int32_t
     }
 }
 
-/* floor of the ordinate t (U from the row's top at Yj) where e meets the
- * vertical x = X pixels, which lies between its ends. */
-static uint64_t rast__cov_t_at(const rast__cedge *e, int64_t Yj, int64_t X, const rast__cells *c)
+/* The ordinates (U from the row's top at Yj) where e meets the verticals
+ * x = X, X + 1, ... (dx > 0) or X, X - 1, ... (dx < 0) pixels, which lie
+ * between its ends: floor(|X P - xt| dy 2^H / |dx|) - (Yj - yt) 2^H, the
+ * first by a division, the next ones by adding e->ts, e->tsr (the step
+ * dy 2^G / |dx|) with the remainder carried: exact, without a division
+ * per column. */
+typedef struct rast__tstep {
+    rast__i128 t, off; /* t from the edge's top; off: the row's top from it */
+    rast__cedge *e;
+    uint32_t rem, adx;
+    int64_t X;
+} rast__tstep;
+
+/* Start at vertical X: the edge's own stepper when it stands there (the
+ * piece before ended in this column), else a division. */
+static void rast__cov_t_first(rast__cedge *e, int64_t Yj, int64_t X, const rast__cells *c,
+                              rast__tstep *s)
 {
-    int64_t w = X * c->p - e->xt;
-    uint32_t rem;
-    rast__i128 q, t;
-    if (w < 0) w = -w;
-    q = rast__u128_div32(rast__i128_shl(rast__i128_mul(w, e->dy), c->h),
-                         (uint32_t)(e->dx < 0 ? -e->dx : e->dx), &rem);
-    t = rast__i128_sub(q, rast__i128_shl(rast__i128_from(Yj - e->yt), c->h));
-    if (rast__i128_neg_p(t)) return 0;
-    if (t.hi || t.lo > T) return T;
-    return t.lo;
+    s->e = e;
+    s->X = X;
+    s->adx = (uint32_t)(e->dx < 0 ? -e->dx : e->dx);
+    s->off = rast__i128_shl(rast__i128_from(Yj - e->yt), c->h);
+    if (e->cX == X) {
+        s->t = e->ct;
+        s->rem = e->crem;
+    } else {
+        int64_t w = X * c->p - e->xt;
+        if (w < 0) w = -w;
+        s->t = rast__u128_div32(rast__i128_shl(rast__i128_mul(w, e->dy), c->h), s->adx, &s->rem);
+    }
 }
 
-/* t kept in [lo, hi]: the column crossings of a piece are in its range
- * (a floor of an exact value between its ends); this only guards it. */
-static uint64_t rast__cov_t_clamp(uint64_t t, uint64_t lo, uint64_t hi)
+static void rast__cov_t_next(rast__tstep *s)
 {
-    return t < lo ? lo : t > hi ? hi : t;
+    const rast__cedge *e = s->e;
+    s->t = rast__i128_add(s->t, e->ts);
+    s->rem += e->tsr;
+    if (s->rem >= s->adx) {
+        s->rem -= s->adx;
+        s->t = rast__i128_add(s->t, rast__i128_u64(1));
+    }
+    s->X += e->dx > 0 ? 1 : -1;
+}
+
+/* Leave the stepper with its edge for the next piece. */
+static void rast__cov_t_keep(const rast__tstep *s)
+{
+    s->e->ct = s->t;
+    s->e->crem = s->rem;
+    s->e->cX = s->X;
+}
+
+/* The stepper's ordinate from the row's top, kept in [lo, hi]: the column
+ * crossings of a piece are in its range (a floor of an exact value
+ * between its ends); this only guards it. */
+static uint64_t rast__cov_t_val(const rast__tstep *s, uint64_t lo, uint64_t hi)
+{
+    rast__i128 t = rast__i128_sub(s->t, s->off);
+    if (rast__i128_neg_p(t) || (!t.hi && t.lo < lo)) return lo;
+    if (t.hi || t.lo > hi) return hi;
+    return t.lo;
 }
 
 /* One cell's share: from fraction f0 at t0 to f1 at t1 (V, 0..2^G) in
@@ -120,7 +160,7 @@ static void rast__cells_add(rast__cells *c, int32_t col, uint64_t f0, uint64_t f
 
 /* The piece of edge e from (xa, ta) to (xb, tb) (V, U; ta < tb), sign s,
  * split at the pixel columns it crosses. */
-static void rast__cells_piece(rast__cells *c, const rast__cedge *e, int64_t Yj, rast__i128 xa,
+static void rast__cells_piece(rast__cells *c, rast__cedge *e, int64_t Yj, rast__i128 xa,
                               uint64_t ta, rast__i128 xb, uint64_t tb, int32_t s)
 {
     const uint64_t fmask = T - 1;
@@ -128,41 +168,53 @@ static void rast__cells_piece(rast__cells *c, const rast__cedge *e, int64_t Yj, 
     int64_t ca = (int64_t)ca128.lo, cb = (int64_t)cb128.lo; /* |column| < 2^28 */
     uint64_t fa = xa.lo & fmask, fb = xb.lo & fmask, t = ta;
     int64_t col;
+    rast__tstep st;
     if (ta >= tb) return;
     if (ca == cb) {
         rast__cells_add(c, (int32_t)ca, fa, fb, ta, tb, s);
         return;
     }
-    if ((ca < c->x0 && cb < c->x0)) { /* all left of the clip: its cover */
+    if (ca < c->x0 && cb < c->x0) { /* all left of the clip: its cover */
         rast__cells_add(c, c->x0 - 1, 0, 0, ta, tb, s);
         return;
     }
-    if (ca < cb) { /* going right */
+    if (ca < cb) { /* going right: the verticals ca + 1, ..., cb */
         if (ca >= c->x1) return;
         col = ca;
         if (col < c->x0) { /* the part left of the clip: its cover */
-            uint64_t tx = rast__cov_t_clamp(rast__cov_t_at(e, Yj, c->x0, c), t, tb);
+            uint64_t tx;
+            rast__cov_t_first(e, Yj, c->x0, c, &st);
+            tx = rast__cov_t_val(&st, t, tb);
             rast__cells_add(c, c->x0 - 1, 0, 0, t, tx, s);
             t = tx;
             col = c->x0;
             fa = 0;
+            rast__cov_t_next(&st);
+        } else {
+            rast__cov_t_first(e, Yj, col + 1, c, &st);
         }
         for (; col < cb; col++) {
             uint64_t tx;
             if (col >= c->x1) return;
-            tx = rast__cov_t_clamp(rast__cov_t_at(e, Yj, col + 1, c), t, tb);
+            tx = rast__cov_t_val(&st, t, tb);
             rast__cells_add(c, (int32_t)col, fa, T, t, tx, s);
             t = tx;
             fa = 0;
+            rast__cov_t_next(&st);
         }
+        rast__cov_t_keep(&st);
         rast__cells_add(c, (int32_t)cb, 0, fb, t, tb, s);
-    } else { /* going left */
+    } else { /* going left: the verticals ca, ..., cb + 1 */
         if (cb >= c->x1) return;
         col = ca;
         if (col >= c->x1) { /* the part right of the clip adds nothing */
-            t = rast__cov_t_clamp(rast__cov_t_at(e, Yj, c->x1, c), t, tb);
+            rast__cov_t_first(e, Yj, c->x1, c, &st);
+            t = rast__cov_t_val(&st, t, tb);
             col = c->x1 - 1;
             fa = T;
+            rast__cov_t_next(&st);
+        } else {
+            rast__cov_t_first(e, Yj, col, c, &st);
         }
         for (; col > cb; col--) {
             uint64_t tx;
@@ -170,57 +222,132 @@ static void rast__cells_piece(rast__cells *c, const rast__cedge *e, int64_t Yj, 
                 rast__cells_add(c, c->x0 - 1, 0, 0, t, tb, s);
                 return;
             }
-            tx = rast__cov_t_clamp(rast__cov_t_at(e, Yj, col, c), t, tb);
+            tx = rast__cov_t_val(&st, t, tb);
             rast__cells_add(c, (int32_t)col, fa, 0, t, tx, s);
             t = tx;
             fa = T;
+            rast__cov_t_next(&st);
         }
+        rast__cov_t_keep(&st);
         rast__cells_add(c, (int32_t)cb, T, fb, t, tb, s);
     }
 }
 
-/* Row y's values from the cells, which are then cleared. */
+/* a 2^62 from the running cover and a cell's area (see rast__cells),
+ * the rule applied when accumulating, clamped to [0, 2^62]. */
+static uint64_t rast__cells_a62(const rast__cells *c, rast__i128 acc, rast__i128 area,
+                                rast_fill_rule rule)
+{
+    const rast__i128 one = rast__i128_u64((uint64_t)1 << 62);
+    rast__i128 v;
+    if (c->accumulate) { /* a 2^62 = 4 cover - area / 2^59 */
+        v = rast__i128_sub(rast__i128_shl(acc, 2), area);
+        /* |w| integrated, then the rule */
+        if (rast__i128_neg_p(v)) v = rast__i128_neg(v);
+        if (rule == RAST_RULE_NONZERO) {
+            if (rast__i128_cmp(v, one) > 0) v = one;
+        } else {
+            uint64_t m = v.lo & (((uint64_t)1 << 63) - 1); /* mod 2 */
+            v = rast__i128_u64(m > ((uint64_t)1 << 62) ? ((uint64_t)1 << 63) - m : m);
+        }
+    } else { /* a 2^121 = 2^61 cover - area, then down to 2^62 */
+        v = rast__i128_sar(rast__i128_sub(rast__i128_shl(acc, 61), area), 59);
+    }
+    if (rast__i128_neg_p(v)) return 0;
+    if (rast__i128_cmp(v, one) > 0) return (uint64_t)1 << 62;
+    return v.lo;
+}
+
+/* Row y's values from the cells, which are then cleared.  Where a cell
+ * adds nothing (inside a span, or outside the shape) the value is the
+ * running cover's, computed once per change. */
 static void rast__cells_emit(rast__cells *c, const rast__cov_out *o, int32_t y, rast_fill_rule rule)
 {
     unsigned char *row = rast__cov_row(o, y);
+    const rast__i128 zero = rast__i128_u64(0);
     rast__i128 acc = c->carry;
-    const rast__i128 one = rast__i128_u64((uint64_t)1 << 62);
-    int32_t k, w = c->x1 - c->x0;
+    int32_t k, w = c->x1 - c->x0, plain = 0;
+    uint64_t plain_v = 0;
     for (k = 0; k < w; k++) {
-        rast__i128 v;
-        uint64_t a;
-        if (k >= c->cmin && k <= c->cmax) {
-            acc = rast__i128_add(acc, c->cover[k]);
-            if (c->accumulate) /* a 2^62 = 4 cover - area / 2^59 */
-                v = rast__i128_sub(rast__i128_shl(acc, 2), c->area[k]);
-            else /* a 2^121 = 2^61 cover - area, then down to 2^62 */
-                v = rast__i128_sar(rast__i128_sub(rast__i128_shl(acc, 61), c->area[k]), 59);
-            c->cover[k] = c->area[k] = rast__i128_u64(0);
-        } else {
-            v = c->accumulate ? rast__i128_shl(acc, 2)
-                              : rast__i128_sar(rast__i128_shl(acc, 61), 59);
-        }
-        if (c->accumulate) {
-            /* |w| integrated, then the rule */
-            if (rast__i128_neg_p(v)) v = rast__i128_neg(v);
-            if (rule == RAST_RULE_NONZERO) {
-                if (rast__i128_cmp(v, one) > 0) v = one;
-            } else {
-                uint64_t m = v.lo & (((uint64_t)1 << 63) - 1); /* mod 2 */
-                v = rast__i128_u64(m > ((uint64_t)1 << 62) ? ((uint64_t)1 << 63) - m : m);
+        if (k >= c->cmin && k <= c->cmax && (c->cover[k].lo | c->cover[k].hi |
+                                             c->area[k].lo | c->area[k].hi)) {
+            if (c->cover[k].lo | c->cover[k].hi) {
+                acc = rast__i128_add(acc, c->cover[k]);
+                plain = 0;
             }
+            rast__cov_store(o->format, row, k,
+                            rast__cov_level(o->format, rast__cells_a62(c, acc, c->area[k], rule)));
+            c->cover[k] = c->area[k] = zero;
+        } else {
+            if (!plain) {
+                plain_v = rast__cov_level(o->format, rast__cells_a62(c, acc, zero, rule));
+                plain = 1;
+            }
+            rast__cov_store(o->format, row, k, plain_v);
         }
-        if (rast__i128_neg_p(v))
-            a = 0;
-        else if (rast__i128_cmp(v, one) > 0)
-            a = (uint64_t)1 << 62;
-        else
-            a = v.lo;
-        rast__cov_put(o, row, k, a);
     }
-    c->carry = rast__i128_u64(0);
+    c->carry = zero;
     c->cmin = INT32_MAX;
     c->cmax = -1;
+}
+
+/* x advanced by a whole row: from a row's top to the next (exact). */
+static void rast__cov_x_row(const rast__cedge *e, rast__i128 *x, int64_t *r)
+{
+    *x = rast__i128_add(*x, e->xs);
+    *r += e->xsr;
+    if (*r >= e->dy) {
+        *r -= e->dy;
+        *x = rast__i128_add(*x, rast__i128_u64(1));
+    }
+}
+
+/* The per-row and per-column steps of e (see rast__cedge). */
+static void rast__cov_steps(rast__cedge *e)
+{
+    uint32_t adx = (uint32_t)(e->dx < 0 ? -e->dx : e->dx), rem;
+    rast__i128 q = rast__u128_div32(rast__u128_mul32(rast__i128_u64(T), adx), (uint32_t)e->dy, &rem);
+    if (e->dx >= 0) {
+        e->xs = q;
+        e->xsr = rem;
+    } else if (rem) {
+        e->xs = rast__i128_neg(rast__i128_add(q, rast__i128_u64(1)));
+        e->xsr = e->dy - (int64_t)rem;
+    } else {
+        e->xs = rast__i128_neg(q);
+        e->xsr = 0;
+    }
+    e->ts = rast__i128_u64(0);
+    e->tsr = 0;
+    if (adx) {
+        e->ts = rast__u128_div32(rast__u128_mul32(rast__i128_u64(T), (uint32_t)e->dy), adx, &rem);
+        e->tsr = rem;
+    }
+    e->rowx = INT32_MIN;
+    e->cX = INT64_MIN;
+}
+
+/* e's abscissa at the end tn of a piece that starts at t (where it is
+ * cached) into xn, rn: a row's step when the piece is the whole row. */
+static void rast__cov_x_end(rast__cedge *e, int64_t Yj, uint64_t t, uint64_t tn, int32_t h)
+{
+    if (t == 0 && tn == T) {
+        e->xn = e->x;
+        e->rn = e->r;
+        rast__cov_x_row(e, &e->xn, &e->rn);
+    } else {
+        rast__cov_x_at(e, Yj, tn, h, &e->xn, &e->rn);
+    }
+}
+
+/* Cache xn, rn as the abscissa at tn of row j (the top of row j + 1 when
+ * tn is the bottom). */
+static void rast__cov_x_keep(rast__cedge *e, int32_t j, uint64_t tn)
+{
+    e->x = e->xn;
+    e->r = e->rn;
+    e->rowx = tn == T ? j + 1 : j;
+    e->tx = tn == T ? 0 : tn;
 }
 
 /* Is a strictly before b just below the ordinate both have cached? */
@@ -292,25 +419,25 @@ static void rast__cov_sort_tops(int32_t *ix, const rast__cedge *e, uint32_t n)
 }
 
 /* The row's sweep (area): edges row[0..nrow) of row j. */
-static void rast__cov_row_area(rast__cells *c, rast__cedge *e, const int32_t *row, int32_t nrow,
+static void rast__cov_row_area(rast__cells *c, rast__cedge *e, int32_t *row, int32_t nrow,
                                int32_t *live, int32_t j, rast_fill_rule rule)
 {
     const int64_t Yj = (int64_t)j * c->p;
     uint64_t t = 0;
     while (t < T) {
         uint64_t tn = T;
-        int32_t k, n = 0, w;
+        int32_t k, n = 0, w, rest = nrow; /* live[rest..nrow): the others */
         /* The edges reaching below t, in order; the next start or end. */
         for (k = 0; k < nrow; k++) {
             rast__cedge *ed = &e[row[k]];
             int64_t rel0 = (int64_t)ed->yt - Yj, rel1 = (int64_t)ed->yt + ed->dy - Yj;
             uint64_t t0 = rel0 <= 0 ? 0 : (uint64_t)rel0 << c->h;
             uint64_t t1 = rel1 >= c->p ? T : (uint64_t)rel1 << c->h;
-            if (t0 > t) {
-                if (t0 < tn) tn = t0;
+            if (t0 > t || t1 <= t) {
+                if (t0 > t && t0 < tn) tn = t0;
+                live[--rest] = row[k];
                 continue;
             }
-            if (t1 <= t) continue;
             if (t1 < tn) tn = t1;
             if (ed->rowx != j || ed->tx != t) {
                 rast__cov_x_at(ed, Yj, t, c->h, &ed->x, &ed->r);
@@ -326,9 +453,23 @@ static void rast__cov_row_area(rast__cells *c, rast__cedge *e, const int32_t *ro
                 live[m] = id;
             }
         }
-        for (k = 0; k + 1 < n; k++) {
-            uint64_t tc = rast__cov_cross(&e[live[k]], &e[live[k + 1]], Yj, t, c);
-            if (tc < tn) tn = tc;
+        /* Where each edge is at tn; a pair of neighbours out of order
+         * there crossed before it: the piece ends at their crossing. */
+        for (k = 0; k < n; k++) rast__cov_x_end(&e[live[k]], Yj, t, tn, c->h);
+        {
+            uint64_t tc0 = tn;
+            for (k = 0; k + 1 < n; k++) {
+                rast__cedge *a = &e[live[k]], *b = &e[live[k + 1]];
+                int cmp = rast__i128_cmp(a->xn, b->xn);
+                if (cmp > 0 || (cmp == 0 && a->rn * b->dy > b->rn * a->dy)) {
+                    uint64_t tc = rast__cov_cross(a, b, Yj, t, c);
+                    if (tc < tc0) tc0 = tc;
+                }
+            }
+            if (tc0 < tn) {
+                tn = tc0;
+                for (k = 0; k < n; k++) rast__cov_x_end(&e[live[k]], Yj, t, tn, c->h);
+            }
         }
         /* The pieces [t, tn] of the edges bounding the inside. */
         for (k = 0, w = 0; k < n; k++) {
@@ -339,12 +480,13 @@ static void rast__cov_row_area(rast__cells *c, rast__cedge *e, const int32_t *ro
                 s = (wb & 1) ? -1 : 1;
             else
                 s = (wb == 0) ? 1 : (w == 0) ? -1 : 0;
-            rast__cov_x_at(ed, Yj, tn, c->h, &ed->xn, &ed->rn);
             if (s) rast__cells_piece(c, ed, Yj, ed->x, t, ed->xn, tn, s);
-            ed->x = ed->xn;
-            ed->r = ed->rn;
-            ed->tx = tn;
+            rast__cov_x_keep(ed, j, tn);
         }
+        /* The row's edges in this order, so that the next sort (here, or
+         * in the next row) has little to do. */
+        memcpy(row, live, (size_t)n * sizeof *row);
+        for (k = rest; k < nrow; k++) row[n + k - rest] = live[k];
         t = tn;
     }
 }
@@ -360,9 +502,10 @@ static void rast__cov_row_acc(rast__cells *c, rast__cedge *e, const int32_t *row
         int64_t rel0 = (int64_t)ed->yt - Yj, rel1 = (int64_t)ed->yt + ed->dy - Yj;
         uint64_t t0 = rel0 <= 0 ? 0 : (uint64_t)rel0 << c->h;
         uint64_t t1 = rel1 >= c->p ? T : (uint64_t)rel1 << c->h;
-        rast__cov_x_at(ed, Yj, t0, c->h, &ed->x, &ed->r);
-        rast__cov_x_at(ed, Yj, t1, c->h, &ed->xn, &ed->rn);
+        if (ed->rowx != j || ed->tx != t0) rast__cov_x_at(ed, Yj, t0, c->h, &ed->x, &ed->r);
+        rast__cov_x_end(ed, Yj, t0, t1, c->h);
         rast__cells_piece(c, ed, Yj, ed->x, t0, ed->xn, t1, ed->dir);
+        rast__cov_x_keep(ed, j, t1);
     }
 }
 
@@ -398,7 +541,7 @@ rast_status rast__cov_area(rast__cedge *e, uint32_t n, int32_t s, rast_fill_rule
     ymax = (int64_t)e[0].yt + e[0].dy;
     for (i = 0; i < n; i++) {
         order[i] = (int32_t)i;
-        e[i].rowx = INT32_MIN;
+        rast__cov_steps(&e[i]);
         if (e[i].yt < ymin) ymin = e[i].yt;
         if ((int64_t)e[i].yt + e[i].dy > ymax) ymax = (int64_t)e[i].yt + e[i].dy;
     }

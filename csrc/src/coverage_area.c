@@ -258,34 +258,49 @@ static uint64_t rast__cells_a62(const rast__cells *c, rast__i128 acc, rast__i128
     return v.lo;
 }
 
-/* Row y's values from the cells, which are then cleared.  Where a cell
- * adds nothing (inside a span, or outside the shape) the value is the
- * running cover's, computed once per change. */
+/* Columns [k0, k1) of a clip row get value v. */
+static void rast__cov_fill(rast_coverage_format f, unsigned char *row, int32_t k0, int32_t k1,
+                           uint64_t v)
+{
+    int32_t k;
+    if (k0 >= k1) return;
+    if (f == RAST_COVERAGE_U8)
+        memset(row + k0, (int)v, (size_t)(k1 - k0));
+    else
+        for (k = k0; k < k1; k++) rast__cov_store(f, row, k, v);
+}
+
+static int rast__cells_empty(const rast__cells *c, int32_t k)
+{
+    return !(c->cover[k].lo | c->cover[k].hi | c->area[k].lo | c->area[k].hi);
+}
+
+/* Row y's values from the cells, which are then cleared.  Between cells
+ * that add something (inside a span, or outside the shape) the value is
+ * the running cover's: one computation and a fill per run. */
 static void rast__cells_emit(rast__cells *c, const rast__cov_out *o, int32_t y, rast_fill_rule rule)
 {
     unsigned char *row = rast__cov_row(o, y);
     const rast__i128 zero = rast__i128_u64(0);
+    const rast_coverage_format f = o->format;
     rast__i128 acc = c->carry;
-    int32_t k, w = c->x1 - c->x0, plain = 0;
-    uint64_t plain_v = 0;
-    for (k = 0; k < w; k++) {
-        if (k >= c->cmin && k <= c->cmax && (c->cover[k].lo | c->cover[k].hi |
-                                             c->area[k].lo | c->area[k].hi)) {
-            if (c->cover[k].lo | c->cover[k].hi) {
-                acc = rast__i128_add(acc, c->cover[k]);
-                plain = 0;
-            }
-            rast__cov_store(o->format, row, k,
-                            rast__cov_level(o->format, rast__cells_a62(c, acc, c->area[k], rule)));
-            c->cover[k] = c->area[k] = zero;
-        } else {
-            if (!plain) {
-                plain_v = rast__cov_level(o->format, rast__cells_a62(c, acc, zero, rule));
-                plain = 1;
-            }
-            rast__cov_store(o->format, row, k, plain_v);
+    int32_t k = c->cmin <= c->cmax ? c->cmin : c->x1 - c->x0, w = c->x1 - c->x0;
+    rast__cov_fill(f, row, 0, k, rast__cov_level(f, rast__cells_a62(c, acc, zero, rule)));
+    while (k <= c->cmax) {
+        if (rast__cells_empty(c, k)) {
+            int32_t k2 = k + 1;
+            while (k2 <= c->cmax && rast__cells_empty(c, k2)) k2++;
+            rast__cov_fill(f, row, k, k2, rast__cov_level(f, rast__cells_a62(c, acc, zero, rule)));
+            k = k2;
+            continue;
         }
+        acc = rast__i128_add(acc, c->cover[k]);
+        rast__cov_store(f, row, k, rast__cov_level(f, rast__cells_a62(c, acc, c->area[k], rule)));
+        c->cover[k] = c->area[k] = zero;
+        k++;
     }
+    if (k < w)
+        rast__cov_fill(f, row, k, w, rast__cov_level(f, rast__cells_a62(c, acc, zero, rule)));
     c->carry = zero;
     c->cmin = INT32_MAX;
     c->cmax = -1;

@@ -154,6 +154,16 @@ def rastrum_binary(rings, rule, tris, size):
     return rastrum.polygon_mask(rings, (size, size), rule=rule).view(np.uint8) * np.uint8(255)
 
 
+def _trace(rings, move, line, close):
+    """Each ring as move, lines and close on a peer's path object."""
+    for r in rings:
+        r = np.asarray(r, float)
+        move(float(r[0, 0]), float(r[0, 1]))
+        for x, y in r[1:].tolist():
+            line(x, y)
+        close()
+
+
 def peers():
     out = {}
     try:
@@ -166,12 +176,7 @@ def peers():
             ctx.fill_rule = b.BLFillRule.NON_ZERO if rule == "nonzero" else b.BLFillRule.EVEN_ODD
             ctx.set_fill_style((255, 255, 255, 255))
             p = b.BLPath()
-            for r in rings:
-                r = np.asarray(r, float)
-                p.move_to(float(r[0, 0]), float(r[0, 1]))
-                for x, y in r[1:].tolist():
-                    p.line_to(x, y)
-                p.close()
+            _trace(rings, p.move_to, p.line_to, p.close)
             ctx.fill_path(p)
             ctx.flush()
             return img.getDataAsNumPy().reshape(size, size)
@@ -183,18 +188,13 @@ def peers():
 
         def skia_draw(rings, rule, tris, size):
             arr = np.zeros((size, size), np.uint8)
-            info = skia.ImageInfo.Make(size, size, skia.ColorType.kAlpha_8_ColorType,
-                                       skia.AlphaType.kPremul_AlphaType)
-            canvas = skia.Canvas(arr, info=info) if hasattr(skia.Canvas, "__init__") else None
+            surface = skia.Surface(arr, colorType=skia.ColorType.kAlpha_8_ColorType)
+            canvas = surface.getCanvas()
             path = skia.Path()
             path.setFillType(skia.PathFillType.kWinding if rule == "nonzero" else skia.PathFillType.kEvenOdd)
-            for r in rings:
-                r = np.asarray(r, float)
-                path.moveTo(float(r[0, 0]), float(r[0, 1]))
-                for x, y in r[1:].tolist():
-                    path.lineTo(x, y)
-                path.close()
+            _trace(rings, path.moveTo, path.lineTo, path.close)
             canvas.drawPath(path, skia.Paint(AntiAlias=True, Color=skia.ColorWHITE))
+            surface.flushAndSubmit() if hasattr(surface, "flushAndSubmit") else None
             return arr
         skia_draw([np.array([(0, 0), (4, 0), (0, 4)], float)], "nonzero", False, 8)
         out["skia"] = skia_draw
@@ -209,12 +209,7 @@ def peers():
             d = aggdraw.Draw(img)
             brush = aggdraw.Brush(255)
             path = aggdraw.Path()
-            for r in rings:
-                r = np.asarray(r, float)
-                path.moveto(float(r[0, 0]), float(r[0, 1]))
-                for x, y in r[1:].tolist():
-                    path.lineto(x, y)
-                path.close()
+            _trace(rings, path.moveto, path.lineto, path.close)
             d.path(path, None, brush)
             d.flush()
             return np.asarray(img)
@@ -234,6 +229,9 @@ def peers():
     out["Pillow 4x"] = pillow(4)
     out["Pillow 16x"] = pillow(16)
     return out
+
+
+AREA_MAX_EDGES = 2000
 
 
 def median_ms(f, reps):
@@ -264,14 +262,26 @@ def main():
     for name, (rings, rule, tris) in scenes(size).items():
         if args.scenes and not any(s in name for s in args.scenes.split(",")):
             continue
-        if tris:
+        if tris and len(rings) * 3 > AREA_MAX_EDGES:  # the same union, exact by 16x16 samples
+            ref = rastrum.triangles_coverage(np.asarray(rings), (size, size), method="ss16",
+                                             subpixel_bits=12, dtype=np.float64) * 255
+            print("(reference for %s: ss16, not area: max error <= ~1/8 of a pixel's edge length)" % name)
+        elif tris:
             ref = rastrum.triangles_coverage(np.asarray(rings), (size, size), subpixel_bits=16,
                                              dtype=np.float64) * 255
         else:
             ref = rastrum.polygon_coverage(rings, (size, size), rule=rule, subpixel_bits=16,
                                            dtype=np.float64) * 255
         rows = []
+        nedges = sum(len(r) for r in rings)
         for label, f in list(ours.items()) + list(others.items()):
+            if label == "rastrum area" and nedges > AREA_MAX_EDGES:
+                # the sweep recomputes every edge of the row at each crossing:
+                # 300 random triangles took 4.5 s, 1,000 took 214 s (see
+                # docs/coverage.md); the event-driven sweep is future work
+                print("  (rastrum area skipped on %s: %d edges, too many crossings per row)"
+                      % (name, nedges))
+                continue
             try:
                 out = f(rings, rule, tris, size)
             except Exception as exc:

@@ -111,6 +111,18 @@ def events_y(rl, h):
     return sorted(ys)
 
 
+def _one_orientation(tris):
+    """The triangles with positive signed area (degenerate ones dropped):
+    under non-zero their union."""
+    out = []
+    for t in tris:
+        (ax, ay), (bx, by), (cx, cy) = t
+        cross = (bx - ax) * (cy - ay) - (by - ay) * (cx - ax)
+        if cross:
+            out.append(t if cross > 0 else [t[0], t[2], t[1]])
+    return out
+
+
 def coverage_exact(rings, shape, *, rule="evenodd", subpixel_bits=8, triangles=False):
     """The exact coverage of every pixel: an (H, W) object array of
     Fractions.  With ``triangles``, `rings` is a list of triangles and the
@@ -119,15 +131,7 @@ def coverage_exact(rings, shape, *, rule="evenodd", subpixel_bits=8, triangles=F
     h, w = shape
     rl = oracle.snapped_rings(rings, subpixel_bits)
     if triangles:
-        rule = "nonzero"
-        rl2 = []
-        for t in rl:
-            (ax, ay), (bx, by), (cx, cy) = t
-            cross = (bx - ax) * (cy - ay) - (by - ay) * (cx - ax)
-            if cross == 0:
-                continue
-            rl2.append(t if cross > 0 else [t[0], t[2], t[1]])
-        rl = rl2
+        rule, rl = "nonzero", _one_orientation(rl)
     edges = _edges(rl)
     out = np.empty((h, w), dtype=object)
     out.fill(F(0))
@@ -230,14 +234,7 @@ def coverage_ss(rings, shape, k, *, rule="evenodd", subpixel_bits=8, sample_offs
     h, w = shape
     rl = oracle.snapped_rings(rings, subpixel_bits)
     if triangles:
-        rule = "nonzero"
-        fixed = []
-        for t in rl:
-            (ax, ay), (bx, by), (cx, cy) = t
-            cross = (bx - ax) * (cy - ay) - (by - ay) * (cx - ax)
-            if cross:
-                fixed.append(t if cross > 0 else [t[0], t[2], t[1]])
-        rl = fixed
+        rule, rl = "nonzero", _one_orientation(rl)
     fine = [[(float(x * k), float(y * k)) for x, y in r] for r in rl]  # exact dyadics
     if not fine:
         return np.zeros((h, w), dtype=np.int64)

@@ -108,6 +108,9 @@ typedef struct rast__cedge {
                       top) = ct + crem/|dx|; see coverage_area.c */
     int64_t cX;
     uint32_t crem;
+    rast__i128 xT; /* the edge's line at the bottom of the row (xT + rT/dy) */
+    int64_t rT;
+    int32_t sg;    /* the sign of its current piece (+1 enters, -1 leaves the inside, 0 neither) */
     int64_t r, rn, xsr;
     uint64_t tx;  /* the t of x, r in row `rowx` */
     uint32_t tsr;

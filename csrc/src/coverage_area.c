@@ -402,7 +402,8 @@ static uint64_t rast__cov_cross(const rast__cedge *a, const rast__cedge *b, int6
 size_t rast__cov_area_scratch(uint32_t n, int32_t width)
 {
     size_t b = rast__align(rast__size_mul(n, sizeof(rast__cedge)));
-    b = rast__size_add(b, 3 * rast__align(rast__size_mul(n, sizeof(int32_t))));
+    b = rast__size_add(b, 6 * rast__align(rast__size_mul(n, sizeof(int32_t))));
+    b = rast__size_add(b, rast__align(rast__size_mul(n, sizeof(uint64_t))));
     return rast__size_add(b, 2 * rast__align(rast__size_mul((size_t)width, sizeof(rast__i128))));
 }
 
@@ -433,15 +434,118 @@ static void rast__cov_sort_tops(int32_t *ix, const rast__cedge *e, uint32_t n)
     }
 }
 
-/* The row's sweep (area): edges row[0..nrow) of row j. */
+/* The sweep's arrays, by position in the row's order: the edges (live),
+ * the winding number left of each (wb), and the crossing time of each
+ * position with the next (ct; NONE: not before the next vertex), kept in
+ * a heap of positions (h, hidx its inverse, m entries). */
+typedef struct rast__sweep {
+    int32_t *live, *wb, *h, *hidx;
+    uint64_t *ct;
+    int32_t m;
+} rast__sweep;
+
+#define NONE (T + 1)
+
+static void rast__heap_swap(rast__sweep *w, int32_t i, int32_t k)
+{
+    int32_t a = w->h[i], b = w->h[k];
+    w->h[i] = b;
+    w->h[k] = a;
+    w->hidx[b] = i;
+    w->hidx[a] = k;
+}
+
+static void rast__heap_up(rast__sweep *w, int32_t i)
+{
+    while (i > 0) {
+        int32_t p = (i - 1) / 2;
+        if (w->ct[w->h[p]] <= w->ct[w->h[i]]) break;
+        rast__heap_swap(w, p, i);
+        i = p;
+    }
+}
+
+static void rast__heap_down(rast__sweep *w, int32_t i)
+{
+    for (;;) {
+        int32_t l = 2 * i + 1, r = l + 1, m = i;
+        if (l < w->m && w->ct[w->h[l]] < w->ct[w->h[m]]) m = l;
+        if (r < w->m && w->ct[w->h[r]] < w->ct[w->h[m]]) m = r;
+        if (m == i) break;
+        rast__heap_swap(w, i, m);
+        i = m;
+    }
+}
+
+static void rast__heap_set(rast__sweep *w, int32_t pos, uint64_t v)
+{
+    uint64_t old = w->ct[pos];
+    w->ct[pos] = v;
+    if (v < old)
+        rast__heap_up(w, w->hidx[pos]);
+    else if (v > old)
+        rast__heap_down(w, w->hidx[pos]);
+}
+
+/* The sign of an edge's piece with winding wb on its left. */
+static int32_t rast__cov_sign(rast_fill_rule rule, int32_t wb, int32_t dir)
+{
+    if (rule == RAST_RULE_EVENODD) return (wb & 1) ? -1 : 1;
+    return wb == 0 ? 1 : (wb + dir == 0) ? -1 : 0;
+}
+
+/* When a, left of b just after t, crosses it before tv (else NONE).  Lines
+ * in order at the row's bottom too do not cross in between. */
+static uint64_t rast__cov_pair(const rast__cedge *a, const rast__cedge *b, int64_t Yj, uint64_t t,
+                               uint64_t tv, const rast__cells *c)
+{
+    int cmp = rast__i128_cmp(a->xT, b->xT);
+    uint64_t tc;
+    if (cmp < 0 || (cmp == 0 && a->rT * b->dy <= b->rT * a->dy)) return NONE;
+    tc = rast__cov_cross(a, b, Yj, t, c);
+    return tc < tv ? tc : NONE;
+}
+
+/* Edge e's piece sign becomes s at tc: the piece so far is added. */
+static void rast__cov_resign(rast__cells *c, rast__cedge *e, int64_t Yj, int32_t j, uint64_t tc,
+                             int32_t s)
+{
+    if (s == e->sg) return;
+    rast__cov_x_at(e, Yj, tc, c->h, &e->xn, &e->rn);
+    if (e->sg) rast__cells_piece(c, e, Yj, e->x, e->tx, e->xn, tc, e->sg);
+    e->x = e->xn;
+    e->r = e->rn;
+    e->rowx = j;
+    e->tx = tc;
+    e->sg = s;
+}
+
+/* The row's sweep (area): edges row[0..nrow) of row j.  Between vertex
+ * events (an edge starting or ending inside the row) the order changes
+ * only where neighbours cross: the earliest crossing comes off the heap,
+ * the two edges swap, and only they can change sign (the winding number
+ * between them is the only one that changes); an edge's piece runs from
+ * one change of its sign to the next. */
 static void rast__cov_row_area(rast__cells *c, rast__cedge *e, int32_t *row, int32_t nrow,
-                               int32_t *live, int32_t j, rast_fill_rule rule)
+                               rast__sweep *sw, int32_t j, rast_fill_rule rule)
 {
     const int64_t Yj = (int64_t)j * c->p;
+    int32_t *live = sw->live;
     uint64_t t = 0;
+    int32_t k;
+    for (k = 0; k < nrow; k++) { /* every line at the row's bottom */
+        rast__cedge *ed = &e[row[k]];
+        if (ed->rowx == j && ed->tx == 0) {
+            ed->xT = ed->x;
+            ed->rT = ed->r;
+            rast__cov_x_row(ed, &ed->xT, &ed->rT);
+        } else {
+            rast__cov_x_at(ed, Yj, T, c->h, &ed->xT, &ed->rT);
+        }
+    }
     while (t < T) {
-        uint64_t tn = T;
-        int32_t k, n = 0, w, rest = nrow; /* live[rest..nrow): the others */
+        uint64_t tv = T;
+        int32_t n = 0, wsum = 0, rest = nrow; /* live[rest..nrow): the others */
         /* The edges reaching below t, in order; the next start or end. */
         for (k = 0; k < nrow; k++) {
             rast__cedge *ed = &e[row[k]];
@@ -449,11 +553,11 @@ static void rast__cov_row_area(rast__cells *c, rast__cedge *e, int32_t *row, int
             uint64_t t0 = rel0 <= 0 ? 0 : (uint64_t)rel0 << c->h;
             uint64_t t1 = rel1 >= c->p ? T : (uint64_t)rel1 << c->h;
             if (t0 > t || t1 <= t) {
-                if (t0 > t && t0 < tn) tn = t0;
+                if (t0 > t && t0 < tv) tv = t0;
                 live[--rest] = row[k];
                 continue;
             }
-            if (t1 < tn) tn = t1;
+            if (t1 < tv) tv = t1;
             if (ed->rowx != j || ed->tx != t) {
                 rast__cov_x_at(ed, Yj, t, c->h, &ed->x, &ed->r);
                 ed->rowx = j;
@@ -468,41 +572,46 @@ static void rast__cov_row_area(rast__cells *c, rast__cedge *e, int32_t *row, int
                 live[m] = id;
             }
         }
-        /* Where each edge is at tn; a pair of neighbours out of order
-         * there crossed before it: the piece ends at their crossing. */
-        for (k = 0; k < n; k++) rast__cov_x_end(&e[live[k]], Yj, t, tn, c->h);
-        {
-            uint64_t tc0 = tn;
-            for (k = 0; k + 1 < n; k++) {
-                rast__cedge *a = &e[live[k]], *b = &e[live[k + 1]];
-                int cmp = rast__i128_cmp(a->xn, b->xn);
-                if (cmp > 0 || (cmp == 0 && a->rn * b->dy > b->rn * a->dy)) {
-                    uint64_t tc = rast__cov_cross(a, b, Yj, t, c);
-                    if (tc < tc0) tc0 = tc;
-                }
-            }
-            if (tc0 < tn) {
-                tn = tc0;
-                for (k = 0; k < n; k++) rast__cov_x_end(&e[live[k]], Yj, t, tn, c->h);
-            }
-        }
-        /* The pieces [t, tn] of the edges bounding the inside. */
-        for (k = 0, w = 0; k < n; k++) {
+        /* Windings and signs; every piece starts at t. */
+        for (k = 0; k < n; k++) {
             rast__cedge *ed = &e[live[k]];
-            int32_t wb = w, s;
-            w += ed->dir;
-            if (rule == RAST_RULE_EVENODD)
-                s = (wb & 1) ? -1 : 1;
-            else
-                s = (wb == 0) ? 1 : (w == 0) ? -1 : 0;
-            if (s) rast__cells_piece(c, ed, Yj, ed->x, t, ed->xn, tn, s);
-            rast__cov_x_keep(ed, j, tn);
+            sw->wb[k] = wsum;
+            ed->sg = rast__cov_sign(rule, wsum, ed->dir);
+            wsum += ed->dir;
+        }
+        /* The neighbours' crossings before tv, in a heap. */
+        sw->m = n > 0 ? n - 1 : 0;
+        for (k = 0; k < sw->m; k++) {
+            sw->ct[k] = rast__cov_pair(&e[live[k]], &e[live[k + 1]], Yj, t, tv, c);
+            sw->h[k] = k;
+            sw->hidx[k] = k;
+        }
+        for (k = sw->m / 2; k-- > 0;) rast__heap_down(sw, k);
+        while (sw->m > 0 && sw->ct[sw->h[0]] < tv) {
+            int32_t p = sw->h[0], ia = live[p], ib = live[p + 1];
+            uint64_t tc = sw->ct[p];
+            rast__cedge *a = &e[ia], *b = &e[ib];
+            live[p] = ib;
+            live[p + 1] = ia;
+            sw->wb[p + 1] = sw->wb[p] + b->dir;
+            rast__cov_resign(c, b, Yj, j, tc, rast__cov_sign(rule, sw->wb[p], b->dir));
+            rast__cov_resign(c, a, Yj, j, tc, rast__cov_sign(rule, sw->wb[p + 1], a->dir));
+            rast__heap_set(sw, p, NONE);
+            if (p > 0) rast__heap_set(sw, p - 1, rast__cov_pair(&e[live[p - 1]], b, Yj, tc, tv, c));
+            if (p + 2 < n) rast__heap_set(sw, p + 1, rast__cov_pair(a, &e[live[p + 2]], Yj, tc, tv, c));
+        }
+        /* The open pieces end at tv. */
+        for (k = 0; k < n; k++) {
+            rast__cedge *ed = &e[live[k]];
+            rast__cov_x_end(ed, Yj, ed->tx, tv, c->h);
+            if (ed->sg) rast__cells_piece(c, ed, Yj, ed->x, ed->tx, ed->xn, tv, ed->sg);
+            rast__cov_x_keep(ed, j, tv);
         }
         /* The row's edges in this order, so that the next sort (here, or
          * in the next row) has little to do. */
         memcpy(row, live, (size_t)n * sizeof *row);
         for (k = rest; k < nrow; k++) row[n + k - rest] = live[k];
-        t = tn;
+        t = tv;
     }
 }
 
@@ -528,16 +637,23 @@ rast_status rast__cov_area(rast__cedge *e, uint32_t n, int32_t s, rast_fill_rule
                            int accumulate, const rast__cov_out *o, rast__arena *arena)
 {
     rast__cells c;
-    int32_t *order, *row, *live, nrow = 0, j, ja, jb, k, width = o->clip.x1 - o->clip.x0;
+    rast__sweep sw;
+    int32_t *order, *row, nrow = 0, j, ja, jb, k, width = o->clip.x1 - o->clip.x0;
     uint32_t i, next = 0;
     int64_t ymin, ymax;
 
     order = (int32_t *)rast__take(arena, (size_t)n * sizeof(int32_t));
     row = (int32_t *)rast__take(arena, (size_t)n * sizeof(int32_t));
-    live = (int32_t *)rast__take(arena, (size_t)n * sizeof(int32_t));
+    sw.live = (int32_t *)rast__take(arena, (size_t)n * sizeof(int32_t));
+    sw.wb = (int32_t *)rast__take(arena, (size_t)n * sizeof(int32_t));
+    sw.h = (int32_t *)rast__take(arena, (size_t)n * sizeof(int32_t));
+    sw.hidx = (int32_t *)rast__take(arena, (size_t)n * sizeof(int32_t));
+    sw.ct = (uint64_t *)rast__take(arena, (size_t)n * sizeof(uint64_t));
     c.cover = (rast__i128 *)rast__take(arena, (size_t)width * sizeof(rast__i128));
     c.area = (rast__i128 *)rast__take(arena, (size_t)width * sizeof(rast__i128));
-    if ((n && (!order || !row || !live)) || !c.cover || !c.area) return RAST_E_SCRATCH;
+    if ((n && (!order || !row || !sw.live || !sw.wb || !sw.h || !sw.hidx || !sw.ct)) || !c.cover ||
+        !c.area)
+        return RAST_E_SCRATCH;
     for (k = 0; k < width; k++) c.cover[k] = c.area[k] = rast__i128_u64(0);
     c.carry = rast__i128_u64(0);
     c.x0 = o->clip.x0;
@@ -583,7 +699,7 @@ rast_status rast__cov_area(rast__cedge *e, uint32_t n, int32_t s, rast_fill_rule
             if (accumulate)
                 rast__cov_row_acc(&c, e, row, nrow, j);
             else
-                rast__cov_row_area(&c, e, row, nrow, live, j, rule);
+                rast__cov_row_area(&c, e, row, nrow, &sw, j, rule);
         }
         rast__cells_emit(&c, o, j, rule);
     }

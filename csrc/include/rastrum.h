@@ -910,8 +910,10 @@ RAST_API rast_status rast_render_bands_spans(const rast_prim *prims, uint32_t n,
  *    that in each piece the edges do not cross and the winding number is
  *    constant between neighbours; the inside trapezoids' areas are summed
  *    per column in 128-bit integers, with ordinates and abscissae on a
- *    grid of 2^-60 pixel.  Work per row grows with the square of the edges
- *    crossing it, at worst; memory with the edges and one row.)
+ *    grid of 2^-60 pixel.  Between the vertices of a row its crossings
+ *    come off a heap, each touching the two edges that cross; each vertex
+ *    inside a row costs a pass over the row's edges.  Memory grows with
+ *    the edges and one row.)
  *  - RAST_AA_SS2 .. RAST_AA_SS16 (K = 2, 4, 8, 16): the binary rule on a
  *    grid K times finer: sub-sample (s, t), 0 <= s, t < K, of pixel (i, j)
  *    sits at (i + (s + o)/K, j + (t + o)/K), o the sample offset (1/2 or
@@ -969,7 +971,7 @@ RAST_API rast_status rast_aa_method_info(rast_aa_method method, const char **nam
 
 /* Scratch bytes a coverage call with `opts` needs for `npoints` vertices
  * (a triangle batch: 3 per triangle) and a clip `width` x `height`: for
- * area and accumulate, 96 bytes per vertex and 24 per clip column (never
+ * area and accumulate, 224 bytes per vertex and 32 per clip column (never
  * the rows); for ssK, the AET's scratch on the K-times finer clip
  * (rast_scratch_size), 2 bytes per clip column and a copy of the
  * vertices.  Errors: RAST_E_NULL, RAST_E_ARG (method, rule or sample),

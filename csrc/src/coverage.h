@@ -111,6 +111,8 @@ typedef struct rast__cedge {
     rast__i128 xT; /* the edge's line at the bottom of the row (xT + rT/dy) */
     int64_t rT;
     int32_t sg;    /* the sign of its current piece (+1 enters, -1 leaves the inside, 0 neither) */
+    uint64_t ctime; /* its crossing time with edge cn in row crow (a cache) */
+    int32_t cn, crow;
     int64_t r, rn, xsr;
     uint64_t tx;  /* the t of x, r in row `rowx` */
     uint32_t tsr;

@@ -340,6 +340,7 @@ static void rast__cov_steps(rast__cedge *e)
     }
     e->rowx = INT32_MIN;
     e->cX = INT64_MIN;
+    e->crow = INT32_MIN;
 }
 
 /* e's abscissa at the end tn of a piece that starts at t (where it is
@@ -494,15 +495,27 @@ static int32_t rast__cov_sign(rast_fill_rule rule, int32_t wb, int32_t dir)
     return wb == 0 ? 1 : (wb + dir == 0) ? -1 : 0;
 }
 
-/* When a, left of b just after t, crosses it before tv (else NONE).  Lines
- * in order at the row's bottom too do not cross in between. */
-static uint64_t rast__cov_pair(const rast__cedge *a, const rast__cedge *b, int64_t Yj, uint64_t t,
-                               uint64_t tv, const rast__cells *c)
+/* When a, left of b (edge ib) just after t, crosses it before tv (else
+ * NONE).  Lines in order at the row's bottom do not cross in between.  The
+ * crossing does not depend on t (a pair in order just after t crosses
+ * after it), so each edge keeps the last one it computed, for its right
+ * neighbour: a vertex event, which sorts the row again, finds most pairs
+ * unchanged. */
+static uint64_t rast__cov_pair(rast__cedge *a, int32_t ib, const rast__cedge *b, int64_t Yj,
+                               int32_t j, uint64_t t, uint64_t tv, const rast__cells *c)
 {
-    int cmp = rast__i128_cmp(a->xT, b->xT);
     uint64_t tc;
-    if (cmp < 0 || (cmp == 0 && a->rT * b->dy <= b->rT * a->dy)) return NONE;
-    tc = rast__cov_cross(a, b, Yj, t, c);
+    if (a->cn == ib && a->crow == j) {
+        tc = a->ctime;
+    } else {
+        int cmp = rast__i128_cmp(a->xT, b->xT);
+        tc = (cmp < 0 || (cmp == 0 && a->rT * b->dy <= b->rT * a->dy)) ? NONE
+                                                                          : rast__cov_cross(a, b, Yj, 0, c);
+        a->cn = ib;
+        a->crow = j;
+        a->ctime = tc;
+    }
+    if (tc <= t) tc = t + 1;
     return tc < tv ? tc : NONE;
 }
 
@@ -582,7 +595,7 @@ static void rast__cov_row_area(rast__cells *c, rast__cedge *e, int32_t *row, int
         /* The neighbours' crossings before tv, in a heap. */
         sw->m = n > 0 ? n - 1 : 0;
         for (k = 0; k < sw->m; k++) {
-            sw->ct[k] = rast__cov_pair(&e[live[k]], &e[live[k + 1]], Yj, t, tv, c);
+            sw->ct[k] = rast__cov_pair(&e[live[k]], live[k + 1], &e[live[k + 1]], Yj, j, t, tv, c);
             sw->h[k] = k;
             sw->hidx[k] = k;
         }
@@ -597,8 +610,10 @@ static void rast__cov_row_area(rast__cells *c, rast__cedge *e, int32_t *row, int
             rast__cov_resign(c, b, Yj, j, tc, rast__cov_sign(rule, sw->wb[p], b->dir));
             rast__cov_resign(c, a, Yj, j, tc, rast__cov_sign(rule, sw->wb[p + 1], a->dir));
             rast__heap_set(sw, p, NONE);
-            if (p > 0) rast__heap_set(sw, p - 1, rast__cov_pair(&e[live[p - 1]], b, Yj, tc, tv, c));
-            if (p + 2 < n) rast__heap_set(sw, p + 1, rast__cov_pair(a, &e[live[p + 2]], Yj, tc, tv, c));
+            if (p > 0)
+                rast__heap_set(sw, p - 1, rast__cov_pair(&e[live[p - 1]], ib, b, Yj, j, tc, tv, c));
+            if (p + 2 < n)
+                rast__heap_set(sw, p + 1, rast__cov_pair(a, live[p + 2], &e[live[p + 2]], Yj, j, tc, tv, c));
         }
         /* The open pieces end at tv. */
         for (k = 0; k < n; k++) {

@@ -13,7 +13,9 @@
 
 typedef struct rast__ss {
     const rast__cov_out *o;
-    uint16_t *count; /* the output row being counted, by clip column */
+    int32_t *d;       /* the output row's counts as differences: count[i] =
+                         d[0] + ... + d[i], clip columns, one more at the end */
+    uint64_t *level;  /* the value of each count 0..k^2 */
     int32_t kbits;
     int32_t row;  /* that row; INT32_MIN before the first */
     int32_t next; /* the first output row not written yet */
@@ -23,13 +25,21 @@ static void rast__ss_flush(rast__ss *ss)
 {
     const rast__cov_out *o = ss->o;
     unsigned char *row = rast__cov_row(o, ss->row);
-    int32_t k, w = o->clip.x1 - o->clip.x0, sh = 62 - 2 * ss->kbits;
-    /* count / k^2 is exactly count 2^(62 - 2 kbits) / 2^62. */
+    int32_t k, w = o->clip.x1 - o->clip.x0, count = 0;
     for (k = 0; k < w; k++) {
-        rast__cov_put(o, row, k, (uint64_t)ss->count[k] << sh);
-        ss->count[k] = 0;
+        count += ss->d[k];
+        ss->d[k] = 0;
+        rast__cov_store(o->format, row, k, ss->level[count]);
     }
+    ss->d[w] = 0;
     ss->next = ss->row + 1;
+}
+
+/* Add n to the counts of clip columns [i0, i1). */
+static void rast__ss_add(int32_t *d, int32_t i0, int32_t i1, int32_t n)
+{
+    d[i0] += n;
+    d[i1] -= n;
 }
 
 static void rast__ss_span(void *user, int32_t y, int32_t x0, int32_t x1)
@@ -37,20 +47,19 @@ static void rast__ss_span(void *user, int32_t y, int32_t x0, int32_t x1)
     rast__ss *ss = (rast__ss *)user;
     const int32_t K = (int32_t)1 << ss->kbits, cx0 = ss->o->clip.x0;
     int32_t r = (int32_t)rast__floordiv(y, K);
-    int32_t i0 = (int32_t)rast__floordiv(x0, K), i1 = (int32_t)rast__floordiv(x1 - 1, K), i;
-    uint16_t *c = ss->count - cx0;
+    int32_t i0 = (int32_t)rast__floordiv(x0, K), i1 = (int32_t)rast__floordiv(x1 - 1, K);
     if (r != ss->row) {
         if (ss->row != INT32_MIN) rast__ss_flush(ss);
         rast__cov_zero_rows(ss->o, ss->next, r);
         ss->row = r;
     }
     if (i0 == i1) {
-        c[i0] = (uint16_t)(c[i0] + (x1 - x0));
+        rast__ss_add(ss->d, i0 - cx0, i0 - cx0 + 1, x1 - x0);
         return;
     }
-    c[i0] = (uint16_t)(c[i0] + ((i0 + 1) * K - x0));
-    for (i = i0 + 1; i < i1; i++) c[i] = (uint16_t)(c[i] + K);
-    c[i1] = (uint16_t)(c[i1] + (x1 - i1 * K));
+    rast__ss_add(ss->d, i0 - cx0, i0 - cx0 + 1, (i0 + 1) * K - x0);
+    if (i0 + 1 < i1) rast__ss_add(ss->d, i0 + 1 - cx0, i1 - cx0, K);
+    rast__ss_add(ss->d, i1 - cx0, i1 - cx0 + 1, x1 - i1 * K);
 }
 
 static void rast__ss_fopts(rast_fill_opts *fo, int32_t s, rast_fill_rule rule, rast_sample sample)
@@ -70,7 +79,9 @@ size_t rast__cov_ss_scratch(uint32_t npoints, int32_t kbits, int32_t width, int3
     if ((int64_t)width << kbits > RAST_MAX_DIM || (int64_t)height << kbits > RAST_MAX_DIM)
         return (size_t)-1;
     rast_scratch_size(&fo, npoints, width << kbits, height << kbits, &aet);
-    return rast__size_add(aet, rast__align(rast__size_mul((size_t)width, sizeof(uint16_t))));
+    return rast__size_add(aet, rast__size_add(
+                                   rast__align(rast__size_mul((size_t)width + 1, sizeof(int32_t))),
+                                   ((size_t)1 << (2 * kbits)) * 8 + 8));
 }
 
 rast_status rast__cov_ss(const rast_polygon *poly, uint32_t npoints, int32_t s,
@@ -87,9 +98,13 @@ rast_status rast__cov_ss(const rast_polygon *poly, uint32_t npoints, int32_t s,
     ss.kbits = kbits;
     ss.row = INT32_MIN;
     ss.next = o->clip.y0;
-    ss.count = (uint16_t *)rast__take(arena, (size_t)w * sizeof(uint16_t));
-    if (!ss.count) return RAST_E_SCRATCH;
-    for (k = 0; k < w; k++) ss.count[k] = 0;
+    ss.d = (int32_t *)rast__take(arena, ((size_t)w + 1) * sizeof(int32_t));
+    ss.level = (uint64_t *)rast__take(arena, (((size_t)1 << (2 * kbits)) + 1) * sizeof(uint64_t));
+    if (!ss.d || !ss.level) return RAST_E_SCRATCH;
+    for (k = 0; k <= w; k++) ss.d[k] = 0;
+    /* count / k^2 is exactly count 2^(62 - 2 kbits) / 2^62 */
+    for (k = 0; k <= (int32_t)1 << (2 * kbits); k++)
+        ss.level[k] = rast__cov_level(o->format, (uint64_t)k << (62 - 2 * kbits));
     fine.x0 = o->clip.x0 * ((int32_t)1 << kbits);
     fine.y0 = o->clip.y0 * ((int32_t)1 << kbits);
     fine.x1 = o->clip.x1 * ((int32_t)1 << kbits);

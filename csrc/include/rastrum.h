@@ -971,9 +971,9 @@ RAST_API rast_status rast_aa_method_info(rast_aa_method method, const char **nam
 
 /* Scratch bytes a coverage call with `opts` needs for `npoints` vertices
  * (a triangle batch: 3 per triangle) and a clip `width` x `height`: for
- * area and accumulate, 224 bytes per vertex and 32 per clip column (never
+ * area and accumulate, 224 bytes per vertex and 33 per clip column (never
  * the rows); for ssK, the AET's scratch on the K-times finer clip
- * (rast_scratch_size), 4 bytes per clip column, 8 per level of count
+ * (rast_scratch_size), 5 bytes per clip column, 8 per level of count
  * (K^2 + 1) and a copy of the
  * vertices.  Errors: RAST_E_NULL, RAST_E_ARG (method, rule or sample),
  * RAST_E_SUBPIXEL, RAST_E_SIZE, RAST_E_TOO_MANY. */
@@ -1003,6 +1003,23 @@ RAST_API rast_status rast_triangles_coverage(const rast_point *tris, uint32_t nt
                                              rast_coverage_format format, void *out,
                                              ptrdiff_t stride, void *scratch,
                                              size_t scratch_bytes);
+
+/* Coverage handed to a callback instead of written (a display driver that
+ * blends): for each row of the clip from the top, its runs of pixels with
+ * coverage not 0, in increasing x, as `span`(user, y, x0, x1, values) with
+ * values[i - x0] the uint8_t value (floor(a 255 + 1/2), 1..255) of pixel
+ * (i, y), x0 <= i < x1.  The values are those rast_polygon_coverage writes
+ * with RAST_COVERAGE_U8; `values` is valid during the call only.  Scratch:
+ * rast_coverage_scratch_size() for the clip (it counts the row buffer).
+ * Errors as rast_polygon_coverage, RAST_E_NULL also for span, all before
+ * the first span. */
+typedef void (*rast_coverage_span_fn)(void *user, int32_t y, int32_t x0, int32_t x1,
+                                      const uint8_t *values);
+RAST_API rast_status rast_polygon_coverage_spans(const rast_polygon *polygon,
+                                                 const rast_coverage_opts *opts,
+                                                 const rast_rect *clip,
+                                                 rast_coverage_span_fn span, void *user,
+                                                 void *scratch, size_t scratch_bytes);
 
 /* ---- region fill -------------------------------------------------------------
  * Seed fill (seed 001 section 3.6): starting at the seed pixel (x, y),

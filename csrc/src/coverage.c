@@ -37,11 +37,13 @@ static size_t rast__cov_need(const rast_coverage_opts *o, uint32_t npoints, int3
                              int32_t height)
 {
     int32_t kb = rast__aa_kbits(o->method);
-    if (!kb) return rast__cov_area_scratch(npoints, width);
+    /* the spans call's row buffer first */
+    size_t row = rast__align((size_t)width);
+    if (!kb) return rast__size_add(row, rast__cov_area_scratch(npoints, width));
     /* the fine-grid copy of the vertices and ring sizes, then the count */
-    return rast__size_add(rast__align(rast__size_mul(npoints, sizeof(rast_point))),
+    return rast__size_add(row, rast__size_add(rast__align(rast__size_mul(npoints, sizeof(rast_point))),
                           rast__size_add(rast__align(rast__size_mul(npoints, sizeof(uint32_t))),
-                                         rast__cov_ss_scratch(npoints, kb, width, height)));
+                                         rast__cov_ss_scratch(npoints, kb, width, height))));
 }
 
 rast_status rast_coverage_scratch_size(const rast_coverage_opts *opts, uint32_t npoints,
@@ -58,10 +60,25 @@ rast_status rast_coverage_scratch_size(const rast_coverage_opts *opts, uint32_t 
     return RAST_OK;
 }
 
+void rast__cov_row_done(const rast__cov_out *o, int32_t y)
+{
+    const unsigned char *row = o->base;
+    int32_t k = 0, w = o->clip.x1 - o->clip.x0;
+    if (!o->span) return;
+    while (k < w) {
+        int32_t k0;
+        while (k < w && !row[k]) k++;
+        k0 = k;
+        while (k < w && row[k]) k++;
+        if (k > k0) o->span(o->user, y, o->clip.x0 + k0, o->clip.x0 + k, row + k0);
+    }
+}
+
 void rast__cov_zero_rows(const rast__cov_out *o, int32_t y0, int32_t y1)
 {
     static const int32_t size[3] = {1, 2, 8};
     int32_t y;
+    if (o->span) return; /* nothing to hand on */
     for (y = y0; y < y1; y++)
         memset(rast__cov_row(o, y), 0,
                (size_t)(o->clip.x1 - o->clip.x0) * (size_t)size[o->format]);
@@ -87,7 +104,7 @@ static rast_status rast__cov_check_points(const rast_point *p, uint32_t n, int32
 static rast_status rast__cov_begin(const rast_coverage_opts *opts, const rast_rect *clip,
                                    rast_coverage_format format, void *out, ptrdiff_t stride,
                                    uint32_t npoints, void *scratch, size_t scratch_bytes,
-                                   rast__cov_out *o)
+                                   rast__cov_out *o, int spans)
 {
     static const int32_t size[3] = {1, 2, 8};
     rast_status st = rast__cov_check_opts(opts);
@@ -106,7 +123,7 @@ static rast_status rast__cov_begin(const rast_coverage_opts *opts, const rast_re
     w = o->clip.x1 - o->clip.x0;
     h = o->clip.y1 - o->clip.y0;
     if (npoints > RAST_MAX_POINTS) return RAST_E_TOO_MANY;
-    if (w > 0 && h > 0) {
+    if (w > 0 && h > 0 && !spans) {
         if (!out) return RAST_E_NULL;
         if (stride % size[format] || (uintptr_t)out % (uintptr_t)size[format] ||
             stride < (ptrdiff_t)w * size[format])
@@ -117,6 +134,8 @@ static rast_status rast__cov_begin(const rast_coverage_opts *opts, const rast_re
     o->base = (unsigned char *)out;
     o->stride = stride;
     o->format = format;
+    o->span = NULL;
+    o->user = NULL;
     return RAST_OK;
 }
 
@@ -197,6 +216,7 @@ static rast_status rast__cov_run(const rast_polygon *poly, const rast_point *tri
     if (o->clip.x0 >= o->clip.x1 || o->clip.y0 >= o->clip.y1) return RAST_OK;
     arena.p = (unsigned char *)scratch;
     arena.left = scratch_bytes;
+    if (!rast__take(&arena, (size_t)(o->clip.x1 - o->clip.x0))) return RAST_E_SCRATCH; /* the row */
     if (!kb) {
         rast__cedge *e = (rast__cedge *)rast__take(&arena, (size_t)npoints * sizeof(rast__cedge));
         uint32_t n;
@@ -240,7 +260,7 @@ rast_status rast_polygon_coverage(const rast_polygon *polygon, const rast_covera
         if (n > RAST_MAX_POINTS) return RAST_E_TOO_MANY;
     }
     if (n > 0 && !polygon->points) return RAST_E_NULL;
-    st = rast__cov_begin(opts, clip, format, out, stride, (uint32_t)n, scratch, scratch_bytes, &o);
+    st = rast__cov_begin(opts, clip, format, out, stride, (uint32_t)n, scratch, scratch_bytes, &o, 0);
     if (st != RAST_OK) return st;
     {
         int32_t kb = rast__aa_kbits(opts->method);
@@ -261,7 +281,7 @@ rast_status rast_triangles_coverage(const rast_point *tris, uint32_t ntris,
     rast_status st;
     if (ntris > RAST_MAX_POINTS / 3) return RAST_E_TOO_MANY;
     if (ntris > 0 && !tris) return RAST_E_NULL;
-    st = rast__cov_begin(opts, clip, format, out, stride, 3 * ntris, scratch, scratch_bytes, &o);
+    st = rast__cov_begin(opts, clip, format, out, stride, 3 * ntris, scratch, scratch_bytes, &o, 0);
     if (st != RAST_OK) return st;
     {
         int32_t kb = rast__aa_kbits(opts->method);
@@ -271,4 +291,38 @@ rast_status rast_triangles_coverage(const rast_point *tris, uint32_t ntris,
     if (st != RAST_OK) return st;
     return rast__cov_run(NULL, ntris ? tris : none, ntris, 3 * ntris, opts, &o, scratch,
                          scratch_bytes);
+}
+
+rast_status rast_polygon_coverage_spans(const rast_polygon *polygon,
+                                        const rast_coverage_opts *opts, const rast_rect *clip,
+                                        rast_coverage_span_fn span, void *user, void *scratch,
+                                        size_t scratch_bytes)
+{
+    rast__cov_out o;
+    rast_status st;
+    uint64_t n = 0;
+    uint32_t k;
+    if (!polygon || !span || !clip) return RAST_E_NULL;
+    if (polygon->nrings > 0 && !polygon->ring_sizes) return RAST_E_NULL;
+    for (k = 0; k < polygon->nrings; k++) {
+        n += polygon->ring_sizes[k];
+        if (n > RAST_MAX_POINTS) return RAST_E_TOO_MANY;
+    }
+    if (n > 0 && !polygon->points) return RAST_E_NULL;
+    /* the row buffer at the scratch's start (rast__cov_run skips it) */
+    st = rast__cov_begin(opts, clip, RAST_COVERAGE_U8, NULL, 0, (uint32_t)n, scratch,
+                         scratch_bytes, &o, 1);
+    if (st != RAST_OK) return st;
+    {
+        int32_t kb = rast__aa_kbits(opts->method);
+        st = rast__cov_check_points(polygon->points, (uint32_t)n,
+                                    kb > opts->subpixel_bits ? kb - opts->subpixel_bits : 0);
+    }
+    if (st != RAST_OK) return st;
+    o.base = (unsigned char *)scratch;
+    o.stride = 0;
+    o.format = RAST_COVERAGE_U8;
+    o.span = span;
+    o.user = user;
+    return rast__cov_run(polygon, NULL, 0, (uint32_t)n, opts, &o, scratch, scratch_bytes);
 }

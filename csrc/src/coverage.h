@@ -134,7 +134,14 @@ typedef struct rast__cov_out {
     ptrdiff_t stride;
     rast_coverage_format format;
     rast_rect clip;
+    /* rast_polygon_coverage_spans: base is one row (stride 0), handed on
+     * by rast__cov_row_done; NULL otherwise */
+    rast_coverage_span_fn span;
+    void *user;
 } rast__cov_out;
+
+/* Row y is complete: hand its runs of values not 0 to o->span, if any. */
+void rast__cov_row_done(const rast__cov_out *o, int32_t y);
 
 /* The value stored for coverage a62 / 2^62 (0 <= a62 <= 2^62): a62 itself
  * (FIX62), or floor((a62 M + 2^61) / 2^62), in 128 bits (a62 M < 2^78). */

@@ -301,6 +301,7 @@ static void rast__cells_emit(rast__cells *c, const rast__cov_out *o, int32_t y, 
     }
     if (k < w)
         rast__cov_fill(f, row, k, w, rast__cov_level(f, rast__cells_a62(c, acc, zero, rule)));
+    rast__cov_row_done(o, y);
     c->carry = zero;
     c->cmin = INT32_MAX;
     c->cmax = -1;

@@ -33,6 +33,7 @@ static void rast__ss_flush(rast__ss *ss)
     }
     ss->d[w] = 0;
     ss->next = ss->row + 1;
+    rast__cov_row_done(o, ss->row);
 }
 
 /* Add n to the counts of clip columns [i0, i1). */

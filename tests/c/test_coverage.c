@@ -10,7 +10,9 @@
  *  - triangle batches: a triangulated square is covered fully, seamlessly;
  *  - area: translation by whole pixels translates the values exactly;
  *  - errors: every status, nothing written, scratch exact and its guard
- *    bytes intact.
+ *    bytes intact;
+ *  - rast_polygon_coverage_spans: the same values as the image, in ordered
+ *    runs of values not 0 inside the clip.
  */
 #include <stdint.h>
 #include <string.h>
@@ -340,6 +342,80 @@ static void test_errors(void)
 #undef REFUSED
 }
 
+/* ---- spans with coverage values ---------------------------------------------------- */
+
+typedef struct span_img {
+    uint8_t img[H][W];
+    rast_rect clip;
+    int32_t y, x1, calls, ok;
+} span_img;
+
+static void take_span(void *user, int32_t y, int32_t x0, int32_t x1, const uint8_t *v)
+{
+    span_img *s = (span_img *)user;
+    int32_t x;
+    s->calls++;
+    if (x0 >= x1 || y < s->clip.y0 || y >= s->clip.y1 || x0 < s->clip.x0 || x1 > s->clip.x1 ||
+        (y == s->y && x0 <= s->x1) || y < s->y) {
+        s->ok = 0;
+        return;
+    }
+    for (x = x0; x < x1; x++) {
+        if (!v[x - x0]) s->ok = 0;
+        s->img[y - s->clip.y0][x - s->clip.x0] = v[x - x0];
+    }
+    s->y = y;
+    s->x1 = x1;
+}
+
+static void test_spans(void)
+{
+    int iter, n = check_count(150);
+    for (iter = 0; iter < n; iter++) {
+        rast_point pts[9];
+        uint32_t size = 9;
+        rast_polygon p = {pts, &size, 1};
+        rast_coverage_opts o;
+        rast_rect clip;
+        uint8_t want[H][W];
+        span_img s;
+        size_t need;
+        unsigned char *sc;
+        int32_t i, m = (int32_t)(rng() % 3);
+        for (i = 0; i < 9; i++) {
+            pts[i].x = (int32_t)(rng() % ((W + 4) * 16)) - 32;
+            pts[i].y = (int32_t)(rng() % ((H + 4) * 16)) - 32;
+        }
+        memset(&o, 0, sizeof o);
+        o.method = m == 0 ? RAST_AA_AREA : m == 1 ? RAST_AA_SS4 : RAST_AA_ACCUMULATE;
+        o.rule = (rast_fill_rule)(rng() % 2);
+        o.subpixel_bits = 4;
+        clip.x0 = (int32_t)(rng() % 3) - 1;
+        clip.y0 = (int32_t)(rng() % 3) - 1;
+        clip.x1 = clip.x0 + W - 2;
+        clip.y1 = clip.y0 + H - 2;
+        CHECK(cover(&p, NULL, 0, &o, &clip, RAST_COVERAGE_U8, &want[0][0], W) == RAST_OK);
+        memset(&s, 0, sizeof s);
+        s.clip = clip;
+        s.y = INT32_MIN;
+        s.ok = 1;
+        CHECK(rast_coverage_scratch_size(&o, 9, W - 2, H - 2, &need) == RAST_OK);
+        sc = scratch_for(need);
+        CHECK(rast_polygon_coverage_spans(&p, &o, &clip, take_span, &s, sc, need) == RAST_OK);
+        CHECK(scratch_guard_ok(sc, need));
+        CHECK(s.ok);
+        for (i = 0; i < H - 2; i++) CHECK(memcmp(s.img[i], want[i], W - 2) == 0);
+        /* errors: nothing handed on */
+        s.calls = 0;
+        CHECK(rast_polygon_coverage_spans(&p, &o, &clip, NULL, &s, sc, need) == RAST_E_NULL);
+        CHECK(rast_polygon_coverage_spans(&p, &o, &clip, take_span, &s, sc, need - 1) ==
+              RAST_E_SCRATCH);
+        o.rule = (rast_fill_rule)5;
+        CHECK(rast_polygon_coverage_spans(&p, &o, &clip, take_span, &s, sc, need) == RAST_E_ARG);
+        CHECK(s.calls == 0);
+    }
+}
+
 int main(void)
 {
     test_rectangles();
@@ -347,5 +423,6 @@ int main(void)
     test_mesh();
     test_translation();
     test_errors();
+    test_spans();
     return check_report("test_coverage");
 }

@@ -12,7 +12,9 @@
  *  - area and accumulate on rectangles on the 2^-S grid (possibly
  *    overlapping, either orientation): the exact area by cells;
  *  - area on any polygon: translating it (and the clip) by whole pixels,
- *    and (even-odd) reversing its rings, gives the same bytes.
+ *    and (even-odd) reversing its rings, gives the same bytes;
+ *  - rast_polygon_coverage_spans (uint8): the same values, in ordered runs
+ *    of values not 0 inside the clip.
  */
 #include "fuzz.h"
 
@@ -40,6 +42,29 @@ static uint64_t want_value(uint64_t num, uint64_t den, rast_coverage_format f)
     uint64_t M = f == RAST_COVERAGE_U8 ? 255 : 65535;
     if (f == RAST_COVERAGE_FIX62) return num * (((uint64_t)1 << 62) / den); /* den: 2^n <= 2^8 */
     return (2 * num * M + den) / (2 * den);
+}
+
+/* rast_polygon_coverage_spans into an image of the clip (stride CW). */
+typedef struct fz_cspans {
+    unsigned char img[CW * CW];
+    rast_rect clip;
+    int32_t y, x1;
+} fz_cspans;
+
+static fz_cspans cspans;
+
+static void fz_cspan(void *user, int32_t y, int32_t x0, int32_t x1, const uint8_t *v)
+{
+    fz_cspans *s = (fz_cspans *)user;
+    int32_t x;
+    FZ_ASSERT(x0 < x1 && y >= s->clip.y0 && y < s->clip.y1 && x0 >= s->clip.x0 && x1 <= s->clip.x1);
+    FZ_ASSERT(y > s->y || (y == s->y && x0 > s->x1)); /* ordered, not touching */
+    for (x = x0; x < x1; x++) {
+        FZ_ASSERT(v[x - x0] != 0);
+        s->img[(y - s->clip.y0) * CW + x - s->clip.x0] = v[x - x0];
+    }
+    s->y = y;
+    s->x1 = x1;
 }
 
 static rast_status run(const rast_polygon *pg, const rast_point *tris, uint32_t ntris,
@@ -150,6 +175,16 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         for (x = cw * fmt_size[f]; x < stride; x++) FZ_ASSERT(out[y * stride + x] == FZ_GUARD);
     for (k = (uint32_t)(ch * stride); k < sizeof out; k++) FZ_ASSERT(out[k] == FZ_GUARD);
 
+    if (f == RAST_COVERAGE_U8 && shape != 2) { /* the spans call: the same values */
+        void *mem = fz_scratch_init(&scratch, need);
+        memset(&cspans, 0, sizeof cspans);
+        cspans.clip = clip;
+        cspans.y = INT32_MIN;
+        FZ_ASSERT(rast_polygon_coverage_spans(&pg, &o, &clip, fz_cspan, &cspans, mem, need) == RAST_OK);
+        fz_scratch_check(&scratch);
+        for (y = 0; y < ch; y++)
+            FZ_ASSERT(memcmp(cspans.img + y * CW, out + y * stride, (size_t)cw) == 0);
+    }
     if (kb) { /* the per-sample reference, k times finer */
         const int32_t K = 1 << kb, sf = o.subpixel_bits >= kb ? o.subpixel_bits - kb : 0;
         uint32_t base = 0, t;

@@ -245,30 +245,40 @@ static rast_status rast__cov_run(const rast_polygon *poly, const rast_point *tri
     }
 }
 
-rast_status rast_polygon_coverage(const rast_polygon *polygon, const rast_coverage_opts *opts,
-                                  const rast_rect *clip, rast_coverage_format format, void *out,
-                                  ptrdiff_t stride, void *scratch, size_t scratch_bytes)
+/* The polygon's vertices, counted and its pointers checked. */
+static rast_status rast__cov_count(const rast_polygon *polygon, uint32_t *npoints)
 {
-    rast__cov_out o;
     uint64_t n = 0;
     uint32_t k;
-    rast_status st;
-    if (!polygon) return RAST_E_NULL;
     if (polygon->nrings > 0 && !polygon->ring_sizes) return RAST_E_NULL;
     for (k = 0; k < polygon->nrings; k++) {
         n += polygon->ring_sizes[k];
         if (n > RAST_MAX_POINTS) return RAST_E_TOO_MANY;
     }
     if (n > 0 && !polygon->points) return RAST_E_NULL;
-    st = rast__cov_begin(opts, clip, format, out, stride, (uint32_t)n, scratch, scratch_bytes, &o, 0);
+    *npoints = (uint32_t)n;
+    return RAST_OK;
+}
+
+rast_status rast_polygon_coverage(const rast_polygon *polygon, const rast_coverage_opts *opts,
+                                  const rast_rect *clip, rast_coverage_format format, void *out,
+                                  ptrdiff_t stride, void *scratch, size_t scratch_bytes)
+{
+    rast__cov_out o;
+    uint32_t n = 0;
+    rast_status st;
+    if (!polygon) return RAST_E_NULL;
+    st = rast__cov_count(polygon, &n);
+    if (st != RAST_OK) return st;
+    st = rast__cov_begin(opts, clip, format, out, stride, n, scratch, scratch_bytes, &o, 0);
     if (st != RAST_OK) return st;
     {
         int32_t kb = rast__aa_kbits(opts->method);
-        st = rast__cov_check_points(polygon->points, (uint32_t)n,
+        st = rast__cov_check_points(polygon->points, n,
                                     kb > opts->subpixel_bits ? kb - opts->subpixel_bits : 0);
     }
     if (st != RAST_OK) return st;
-    return rast__cov_run(polygon, NULL, 0, (uint32_t)n, opts, &o, scratch, scratch_bytes);
+    return rast__cov_run(polygon, NULL, 0, n, opts, &o, scratch, scratch_bytes);
 }
 
 rast_status rast_triangles_coverage(const rast_point *tris, uint32_t ntris,
@@ -300,22 +310,17 @@ rast_status rast_polygon_coverage_spans(const rast_polygon *polygon,
 {
     rast__cov_out o;
     rast_status st;
-    uint64_t n = 0;
-    uint32_t k;
+    uint32_t n = 0;
     if (!polygon || !span || !clip) return RAST_E_NULL;
-    if (polygon->nrings > 0 && !polygon->ring_sizes) return RAST_E_NULL;
-    for (k = 0; k < polygon->nrings; k++) {
-        n += polygon->ring_sizes[k];
-        if (n > RAST_MAX_POINTS) return RAST_E_TOO_MANY;
-    }
-    if (n > 0 && !polygon->points) return RAST_E_NULL;
+    st = rast__cov_count(polygon, &n);
+    if (st != RAST_OK) return st;
     /* the row buffer at the scratch's start (rast__cov_run skips it) */
-    st = rast__cov_begin(opts, clip, RAST_COVERAGE_U8, NULL, 0, (uint32_t)n, scratch,
+    st = rast__cov_begin(opts, clip, RAST_COVERAGE_U8, NULL, 0, n, scratch,
                          scratch_bytes, &o, 1);
     if (st != RAST_OK) return st;
     {
         int32_t kb = rast__aa_kbits(opts->method);
-        st = rast__cov_check_points(polygon->points, (uint32_t)n,
+        st = rast__cov_check_points(polygon->points, n,
                                     kb > opts->subpixel_bits ? kb - opts->subpixel_bits : 0);
     }
     if (st != RAST_OK) return st;
@@ -324,5 +329,5 @@ rast_status rast_polygon_coverage_spans(const rast_polygon *polygon,
     o.format = RAST_COVERAGE_U8;
     o.span = span;
     o.user = user;
-    return rast__cov_run(polygon, NULL, 0, (uint32_t)n, opts, &o, scratch, scratch_bytes);
+    return rast__cov_run(polygon, NULL, 0, n, opts, &o, scratch, scratch_bytes);
 }

@@ -1096,6 +1096,142 @@ RAST_API rast_status rast_coco_ring_toggles(const rast_point *points, uint32_t n
 RAST_API rast_status rast_coco_rle(uint32_t *toggles, size_t count, uint32_t total,
                                    uint32_t *scratch, uint32_t *counts, size_t *ncounts);
 
+/* ---- anti-aliased coverage (coverage*.c; DESIGN section 1a) ------------------
+ * The binary rule (Conventions) says, per pixel, inside or outside.
+ * Coverage says how much: the coverage of pixel (i, j) is the area a of
+ * the part of its square [i, i+1) x [j, j+1) that is inside under the fill
+ * rule, on the snapped (fixed-point) vertices; 0 <= a <= 1.  It is defined
+ * by the region, not by its edges: where contours overlap, cross
+ * themselves or coincide, the region is what the winding number says
+ * (signed-area accumulation, as FreeType, AGG and Blend2D do it, is not:
+ * see RAST_AA_ACCUMULATE).  Methods:
+ *
+ *  - RAST_AA_AREA: a itself, for both rules, with overlaps, self
+ *    intersections, coincident edges and holes.  Delivered as
+ *    floor(a M + 1/2) (M = 255 for RAST_COVERAGE_U8, 65535 for _U16), or
+ *    as a fixed-point number (RAST_COVERAGE_FIX62).  Bound: the value
+ *    computed, a', satisfies |a' - a| <= (n + m + 1) 2^-58, where n is the
+ *    number of edges crossing the pixel's row (the strip j <= y < j + 1)
+ *    and m the number of pairs of them that cross each other inside it.
+ *    So the level delivered is floor(a M + 1/2) except where a M + 1/2 is
+ *    within (n + m + 1) 2^-42 of an integer (a tie, to 2^-20 of a level
+ *    while n + m < 2^22), where it may be the level below or above; it is
+ *    always within 1/2 + (n + m + 1) 2^-42 of a M.  (How: each pixel row
+ *    is cut at its vertices' ordinates and at its edges' crossings, so
+ *    that in each piece the edges do not cross and the winding number is
+ *    constant between neighbours; the inside trapezoids' areas are summed
+ *    per column in 128-bit integers, with ordinates and abscissae on a
+ *    grid of 2^-60 pixel.  Between the vertices of a row its crossings
+ *    come off a heap, each touching the two edges that cross; each vertex
+ *    inside a row costs a pass over the row's edges.  Memory grows with
+ *    the edges and one row.)
+ *  - RAST_AA_SS2 .. RAST_AA_SS16 (K = 2, 4, 8, 16): the binary rule on a
+ *    grid K times finer: sub-sample (s, t), 0 <= s, t < K, of pixel (i, j)
+ *    sits at (i + (s + o)/K, j + (t + o)/K), o the sample offset (1/2 or
+ *    0); with `count` of them inside the value is
+ *    floor(count M / K^2 + 1/2), exactly (FIX62: count 2^62 / K^2).  The
+ *    vertices are scaled by K exactly, so |v| * 2^max(0, log2(K) - S)
+ *    must stay within RAST_COORD_MAX (else RAST_E_RANGE), and the clip
+ *    times K within +-RAST_MAX_DIM (else RAST_E_SIZE).
+ *  - RAST_AA_ACCUMULATE: signed-area accumulation (FreeType, font-rs):
+ *    every edge adds its signed area to the cells it crosses, and a pixel
+ *    gets min(|w|, 1) (non-zero) or |w| folded mod 2 (even-odd) of the
+ *    accumulated w.  Equal to RAST_AA_AREA (same rounding) where no two
+ *    parts of the region overlap; NOT exact where contours overlap (a ring
+ *    drawn twice doubles its edge pixels under non-zero), cross, or where
+ *    triangles of a batch overlap.
+ *
+ * A triangle batch is ONE region: the union of its triangles (each is
+ * oriented the same way and the batch filled non-zero), so a mesh drawn in
+ * one call has no seams and overlapping triangles are not counted twice.
+ *
+ * Output: every pixel of `clip` is written, row y at out + (y - clip->y0)
+ * * stride bytes, column x at index x - clip->x0 of that row, as uint8_t,
+ * uint16_t or uint64_t (`stride` a multiple of that size, >= its size
+ * times the clip width).  The clip's coordinates must lie within
+ * +-RAST_MAX_DIM; geometry outside it is clipped, not an error. */
+typedef enum rast_aa_method {
+    RAST_AA_AREA = 0,
+    RAST_AA_SS2 = 1,
+    RAST_AA_SS4 = 2,
+    RAST_AA_SS8 = 3,
+    RAST_AA_SS16 = 4,
+    RAST_AA_ACCUMULATE = 5,
+    RAST_AA_COUNT_ = 6
+} rast_aa_method;
+
+typedef enum rast_coverage_format {
+    RAST_COVERAGE_U8 = 0,   /* uint8_t, floor(a 255 + 1/2) */
+    RAST_COVERAGE_U16 = 1,  /* uint16_t, floor(a 65535 + 1/2) */
+    RAST_COVERAGE_FIX62 = 2 /* uint64_t, a in units of 2^-62 (0 .. 2^62),
+                               truncated; for float output */
+} rast_coverage_format;
+
+/* Zero-initialised means: area, even-odd, S = 0, samples at integer
+ * points (only the ssK methods use the sample offset). */
+typedef struct rast_coverage_opts {
+    rast_aa_method method;
+    rast_fill_rule rule;   /* ignored by the triangle calls (a union) */
+    int32_t subpixel_bits; /* S, 0..RAST_MAX_SUBPIXEL_BITS */
+    rast_sample sample;
+} rast_coverage_opts;
+
+/* Name of a method ("area", "ss2", "ss4", "ss8", "ss16", "accumulate").
+ * RAST_E_ARG for an unknown one. */
+RAST_API rast_status rast_aa_method_info(rast_aa_method method, const char **name);
+
+/* Scratch bytes a coverage call with `opts` needs for `npoints` vertices
+ * (a triangle batch: 3 per triangle) and a clip `width` x `height`: for
+ * area and accumulate, 224 bytes per vertex and 33 per clip column (never
+ * the rows); for ssK, the AET's scratch on the K-times finer clip
+ * (rast_scratch_size), 5 bytes per clip column, 8 per level of count
+ * (K^2 + 1) and a copy of the
+ * vertices.  Errors: RAST_E_NULL, RAST_E_ARG (method, rule or sample),
+ * RAST_E_SUBPIXEL, RAST_E_SIZE, RAST_E_TOO_MANY. */
+RAST_API rast_status rast_coverage_scratch_size(const rast_coverage_opts *opts,
+                                                uint32_t npoints, int32_t width,
+                                                int32_t height, size_t *bytes);
+
+/* The coverage of `polygon` (rules as rast_fill_polygon, both for every
+ * method) for every pixel of `clip`, into `out` (see Output above).
+ * Errors, all before anything is written: RAST_E_NULL, RAST_E_ARG (method,
+ * rule, sample, format, stride), RAST_E_SUBPIXEL, RAST_E_RANGE,
+ * RAST_E_TOO_MANY, RAST_E_SIZE (the clip), RAST_E_SCRATCH, RAST_E_ALIGN.
+ * Never writes outside the clip's rows and columns of `out`. */
+RAST_API rast_status rast_polygon_coverage(const rast_polygon *polygon,
+                                           const rast_coverage_opts *opts,
+                                           const rast_rect *clip,
+                                           rast_coverage_format format, void *out,
+                                           ptrdiff_t stride, void *scratch,
+                                           size_t scratch_bytes);
+
+/* The same for the union of `ntris` triangles tris[3k..3k+2] (see above);
+ * opts->rule is ignored.  ntris may be 0 (tris may then be NULL; every
+ * clip pixel gets 0).  Errors as rast_polygon_coverage. */
+RAST_API rast_status rast_triangles_coverage(const rast_point *tris, uint32_t ntris,
+                                             const rast_coverage_opts *opts,
+                                             const rast_rect *clip,
+                                             rast_coverage_format format, void *out,
+                                             ptrdiff_t stride, void *scratch,
+                                             size_t scratch_bytes);
+
+/* Coverage handed to a callback instead of written (a display driver that
+ * blends): for each row of the clip from the top, its runs of pixels with
+ * coverage not 0, in increasing x, as `span`(user, y, x0, x1, values) with
+ * values[i - x0] the uint8_t value (floor(a 255 + 1/2), 1..255) of pixel
+ * (i, y), x0 <= i < x1.  The values are those rast_polygon_coverage writes
+ * with RAST_COVERAGE_U8; `values` is valid during the call only.  Scratch:
+ * rast_coverage_scratch_size() for the clip (it counts the row buffer).
+ * Errors as rast_polygon_coverage, RAST_E_NULL also for span, all before
+ * the first span. */
+typedef void (*rast_coverage_span_fn)(void *user, int32_t y, int32_t x0, int32_t x1,
+                                      const uint8_t *values);
+RAST_API rast_status rast_polygon_coverage_spans(const rast_polygon *polygon,
+                                                 const rast_coverage_opts *opts,
+                                                 const rast_rect *clip,
+                                                 rast_coverage_span_fn span, void *user,
+                                                 void *scratch, size_t scratch_bytes);
+
 /* ---- region fill -------------------------------------------------------------
  * Seed fill (seed 001 section 3.6): starting at the seed pixel (x, y),
  * write `value` over a connected region of target->clip.  Pixels are

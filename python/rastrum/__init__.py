@@ -18,10 +18,11 @@ from . import coco
 from .ml import labels, masks
 from .scene import render_mesh
 from .gis import rasterize, IDENTITY
+from .coverage import METHODS as _COVERAGE_METHODS, polygon_coverage, triangles_coverage
 
 __all__ = ["polygon_mask", "triangles_mask", "triangles_count", "line_pixels", "point_in_triangle", "Canvas",
            "ALGORITHMS", "RastrumError", "InputError", "__version__", "render_mesh", "scene", "rasterize",
-           "IDENTITY", "coco", "masks", "labels"]
+           "IDENTITY", "coco", "masks", "labels", "polygon_coverage", "triangles_coverage"]
 
 _v = lib.rast_version_number()
 __version__ = "%d.%d.%d" % (_v // 10000, _v // 100 % 100, _v % 100)
@@ -38,6 +39,10 @@ ALGORITHMS["triangles_count"] = ALGORITHMS["triangles_mask"]
 ALGORITHMS["Canvas.fill_triangles"] = ALGORITHMS["triangles_mask"]
 # Lines have no fill rules.
 ALGORITHMS["Canvas.line"] = {"bresenham": (), "dda": ()}
+# Coverage: the methods (DESIGN.md section 1a) and the rules each takes;
+# a triangle batch is one region (a union), whatever the rule.
+ALGORITHMS["polygon_coverage"] = {name: ("evenodd", "nonzero") for name in _COVERAGE_METHODS}
+ALGORITHMS["triangles_coverage"] = {name: ("evenodd", "nonzero") for name in _COVERAGE_METHODS}
 
 def polygon_mask(rings, shape, *, rule="evenodd", algorithm="aet", subpixel_bits=8, sample_offset=0.5,
                  rounding="exact", boundary="exact"):

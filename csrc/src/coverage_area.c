@@ -1,0 +1,724 @@
+/*
+ * coverage_area.c - exact area coverage ("area") and signed-area
+ * accumulation ("accumulate"), row by row (DESIGN section 1a; the bound in
+ * rastrum.h).
+ *
+ * Area.  Pixel row j is the strip j <= y < j + 1.  Its edges (those whose
+ * open y extent meets the strip) are swept from the strip's top: at the
+ * current ordinate t they are put in their exact order just below t (by
+ * abscissa, then slope), and the sweep goes on to the next event: an
+ * edge's end or start, or the first crossing of two neighbours (only
+ * neighbours can cross first).  Between t and that event no two edges
+ * cross, so the region is a union of trapezoids [L(y), R(y)] bounded by
+ * the edges where the winding number enters and leaves "inside" (every
+ * edge under even-odd; under non-zero those where it leaves or returns to
+ * 0): coverage counts what lies right of each left boundary minus what
+ * lies right of each right boundary, per column, as FreeType counts its
+ * cells (cover and area per cell, then a running sum along the row).  A
+ * crossing's ordinate is rounded up to the grid of 2^-60 pixel, abscissae
+ * at the pieces' ends down to it; everything else is exact (the order of
+ * the edges, the crossings' positions before rounding, the sums, which
+ * are 128-bit and modular: the true per-pixel result is small).
+ *
+ * Accumulate.  The same cells, but every edge adds its whole part in the
+ * row with the sign of its direction: the sum is the integral of the
+ * winding number over the pixel, turned into a coverage by the rule.
+ * Right where no parts of the region overlap.
+ */
+#include "coverage.h"
+
+#define G RAST__COV_G
+#define T ((uint64_t)1 << G)
+
+/* The row's cells: for clip column c (index c - x0), cover (sum of signed
+ * heights, U) and area (sum of signed (f0 + f1) heights, U V; or, when
+ * accumulating, that over 2^59 per piece, so that deep overlaps do not
+ * wrap), and `carry`, the cover of everything left of the clip. */
+typedef struct rast__cells {
+    rast__i128 *cover, *area, carry;
+    int32_t x0, x1, cmin, cmax; /* clip columns; columns touched */
+    int32_t h;                  /* H = G - S */
+    int32_t p;                  /* P = 2^S */
+    int accumulate;
+} rast__cells;
+
+/* x at ordinate t (U, from the top of the row whose top is Yj, fixed
+ * units) of edge e, which must reach t: floor in V into *x, the rest r/dy
+ * into *r. */
+static void rast__cov_x_at(const rast__cedge *e, int64_t Yj, uint64_t t, int32_t h,
+                           rast__i128 *x, int64_t *r)
+{
+    rast__i128 base = rast__i128_shl(rast__i128_from(e->xt), h), y, q;
+    uint32_t rem;
+    if (e->dx == 0) {
+        *x = base;
+        *r = 0;
+        return;
+    }
+    /* Y = height below the top, U units (>= 0, < 2^89). */
+    y = rast__i128_add(rast__i128_shl(rast__i128_from(Yj - e->yt), h), rast__i128_u64(t));
+    q = rast__u128_div32(rast__u128_mul32(y, (uint32_t)(e->dx < 0 ? -e->dx : e->dx)),
+                         (uint32_t)e->dy, &rem);
+    if (e->dx > 0) {
+        *x = rast__i128_add(base, q);
+        *r = rem;
+    } else if (rem) {
+        *x = rast__i128_sub(rast__i128_sub(base, q), rast__i128_from(1));
+        *r = e->dy - (int64_t)rem;
+    } else {
+        *x = rast__i128_sub(base, q);
+        *r = 0;
+    }
+}
+
+/* The ordinates (U from the row's top at Yj) where e meets the verticals
+ * x = X, X + 1, ... (dx > 0) or X, X - 1, ... (dx < 0) pixels, which lie
+ * between its ends: floor(|X P - xt| dy 2^H / |dx|) - (Yj - yt) 2^H, the
+ * first by a division, the next ones by adding e->ts, e->tsr (the step
+ * dy 2^G / |dx|) with the remainder carried: exact, without a division
+ * per column. */
+typedef struct rast__tstep {
+    rast__i128 t, off; /* t from the edge's top; off: the row's top from it */
+    rast__cedge *e;
+    uint32_t rem, adx;
+    int64_t X;
+} rast__tstep;
+
+/* Start at vertical X: the edge's own stepper when it stands there (the
+ * piece before ended in this column), else a division. */
+static void rast__cov_t_first(rast__cedge *e, int64_t Yj, int64_t X, const rast__cells *c,
+                              rast__tstep *s)
+{
+    s->e = e;
+    s->X = X;
+    s->adx = (uint32_t)(e->dx < 0 ? -e->dx : e->dx);
+    s->off = rast__i128_shl(rast__i128_from(Yj - e->yt), c->h);
+    if (e->cX == X) {
+        s->t = e->ct;
+        s->rem = e->crem;
+    } else {
+        int64_t w = X * c->p - e->xt;
+        if (w < 0) w = -w;
+        s->t = rast__u128_div32(rast__i128_shl(rast__i128_mul(w, e->dy), c->h), s->adx, &s->rem);
+    }
+}
+
+static void rast__cov_t_next(rast__tstep *s)
+{
+    const rast__cedge *e = s->e;
+    s->t = rast__i128_add(s->t, e->ts);
+    s->rem += e->tsr;
+    if (s->rem >= s->adx) {
+        s->rem -= s->adx;
+        s->t = rast__i128_add(s->t, rast__i128_u64(1));
+    }
+    s->X += e->dx > 0 ? 1 : -1;
+}
+
+/* Leave the stepper with its edge for the next piece. */
+static void rast__cov_t_keep(const rast__tstep *s)
+{
+    s->e->ct = s->t;
+    s->e->crem = s->rem;
+    s->e->cX = s->X;
+}
+
+/* The stepper's ordinate from the row's top, kept in [lo, hi]: the column
+ * crossings of a piece are in its range (a floor of an exact value
+ * between its ends); this only guards it. */
+static uint64_t rast__cov_t_val(const rast__tstep *s, uint64_t lo, uint64_t hi)
+{
+    rast__i128 t = rast__i128_sub(s->t, s->off);
+    if (rast__i128_neg_p(t) || (!t.hi && t.lo < lo)) return lo;
+    if (t.hi || t.lo > hi) return hi;
+    return t.lo;
+}
+
+/* One cell's share: from fraction f0 at t0 to f1 at t1 (V, 0..2^G) in
+ * column col, sign s. */
+static void rast__cells_add(rast__cells *c, int32_t col, uint64_t f0, uint64_t f1,
+                            uint64_t t0, uint64_t t1, int32_t s)
+{
+    uint64_t dy = t1 - t0;
+    rast__i128 cv, ar;
+    if (dy == 0 || col >= c->x1) return;
+    cv = rast__i128_u64(dy);
+    if (s < 0) cv = rast__i128_neg(cv);
+    if (col < c->x0) {
+        c->carry = rast__i128_add(c->carry, cv);
+        return;
+    }
+    ar = rast__i128_mul((int64_t)(f0 + f1), (int64_t)dy);
+    if (c->accumulate) ar = rast__i128_sar(ar, 59);
+    if (s < 0) ar = rast__i128_neg(ar);
+    col -= c->x0;
+    c->cover[col] = rast__i128_add(c->cover[col], cv);
+    c->area[col] = rast__i128_add(c->area[col], ar);
+    if (col < c->cmin) c->cmin = col;
+    if (col > c->cmax) c->cmax = col;
+}
+
+/* The piece of edge e from (xa, ta) to (xb, tb) (V, U; ta < tb), sign s,
+ * split at the pixel columns it crosses. */
+static void rast__cells_piece(rast__cells *c, rast__cedge *e, int64_t Yj, rast__i128 xa,
+                              uint64_t ta, rast__i128 xb, uint64_t tb, int32_t s)
+{
+    const uint64_t fmask = T - 1;
+    rast__i128 ca128 = rast__i128_sar(xa, G), cb128 = rast__i128_sar(xb, G);
+    int64_t ca = (int64_t)ca128.lo, cb = (int64_t)cb128.lo; /* |column| < 2^28 */
+    uint64_t fa = xa.lo & fmask, fb = xb.lo & fmask, t = ta;
+    int64_t col;
+    rast__tstep st;
+    if (ta >= tb) return;
+    if (ca == cb) {
+        rast__cells_add(c, (int32_t)ca, fa, fb, ta, tb, s);
+        return;
+    }
+    if (ca < c->x0 && cb < c->x0) { /* all left of the clip: its cover */
+        rast__cells_add(c, c->x0 - 1, 0, 0, ta, tb, s);
+        return;
+    }
+    if (ca < cb) { /* going right: the verticals ca + 1, ..., cb */
+        if (ca >= c->x1) return;
+        col = ca;
+        if (col < c->x0) { /* the part left of the clip: its cover */
+            uint64_t tx;
+            rast__cov_t_first(e, Yj, c->x0, c, &st);
+            tx = rast__cov_t_val(&st, t, tb);
+            rast__cells_add(c, c->x0 - 1, 0, 0, t, tx, s);
+            t = tx;
+            col = c->x0;
+            fa = 0;
+            rast__cov_t_next(&st);
+        } else {
+            rast__cov_t_first(e, Yj, col + 1, c, &st);
+        }
+        for (; col < cb; col++) {
+            uint64_t tx;
+            if (col >= c->x1) return;
+            tx = rast__cov_t_val(&st, t, tb);
+            rast__cells_add(c, (int32_t)col, fa, T, t, tx, s);
+            t = tx;
+            fa = 0;
+            rast__cov_t_next(&st);
+        }
+        rast__cov_t_keep(&st);
+        rast__cells_add(c, (int32_t)cb, 0, fb, t, tb, s);
+    } else { /* going left: the verticals ca, ..., cb + 1 */
+        if (cb >= c->x1) return;
+        col = ca;
+        if (col >= c->x1) { /* the part right of the clip adds nothing */
+            rast__cov_t_first(e, Yj, c->x1, c, &st);
+            t = rast__cov_t_val(&st, t, tb);
+            col = c->x1 - 1;
+            fa = T;
+            rast__cov_t_next(&st);
+        } else {
+            rast__cov_t_first(e, Yj, col, c, &st);
+        }
+        for (; col > cb; col--) {
+            uint64_t tx;
+            if (col < c->x0) { /* the rest is left of the clip */
+                rast__cells_add(c, c->x0 - 1, 0, 0, t, tb, s);
+                return;
+            }
+            tx = rast__cov_t_val(&st, t, tb);
+            rast__cells_add(c, (int32_t)col, fa, 0, t, tx, s);
+            t = tx;
+            fa = T;
+            rast__cov_t_next(&st);
+        }
+        rast__cov_t_keep(&st);
+        rast__cells_add(c, (int32_t)cb, T, fb, t, tb, s);
+    }
+}
+
+/* a 2^62 from the running cover and a cell's area (see rast__cells),
+ * the rule applied when accumulating, clamped to [0, 2^62]. */
+static uint64_t rast__cells_a62(const rast__cells *c, rast__i128 acc, rast__i128 area,
+                                rast_fill_rule rule)
+{
+    const rast__i128 one = rast__i128_u64((uint64_t)1 << 62);
+    rast__i128 v;
+    if (c->accumulate) { /* a 2^62 = 4 cover - area / 2^59 */
+        v = rast__i128_sub(rast__i128_shl(acc, 2), area);
+        /* |w| integrated, then the rule */
+        if (rast__i128_neg_p(v)) v = rast__i128_neg(v);
+        if (rule == RAST_RULE_NONZERO) {
+            if (rast__i128_cmp(v, one) > 0) v = one;
+        } else {
+            uint64_t m = v.lo & (((uint64_t)1 << 63) - 1); /* mod 2 */
+            v = rast__i128_u64(m > ((uint64_t)1 << 62) ? ((uint64_t)1 << 63) - m : m);
+        }
+    } else { /* a 2^121 = 2^61 cover - area, then down to 2^62 */
+        v = rast__i128_sar(rast__i128_sub(rast__i128_shl(acc, 61), area), 59);
+    }
+    if (rast__i128_neg_p(v)) return 0;
+    if (rast__i128_cmp(v, one) > 0) return (uint64_t)1 << 62;
+    return v.lo;
+}
+
+/* Columns [k0, k1) of a clip row get value v. */
+static void rast__cov_fill(rast_coverage_format f, unsigned char *row, int32_t k0, int32_t k1,
+                           uint64_t v)
+{
+    int32_t k;
+    if (k0 >= k1) return;
+    if (f == RAST_COVERAGE_U8)
+        memset(row + k0, (int)v, (size_t)(k1 - k0));
+    else
+        for (k = k0; k < k1; k++) rast__cov_store(f, row, k, v);
+}
+
+static int rast__cells_empty(const rast__cells *c, int32_t k)
+{
+    return !(c->cover[k].lo | c->cover[k].hi | c->area[k].lo | c->area[k].hi);
+}
+
+/* Row y's values from the cells, which are then cleared.  Between cells
+ * that add something (inside a span, or outside the shape) the value is
+ * the running cover's: one computation and a fill per run. */
+static void rast__cells_emit(rast__cells *c, const rast__cov_out *o, int32_t y, rast_fill_rule rule)
+{
+    unsigned char *row = rast__cov_row(o, y);
+    const rast__i128 zero = rast__i128_u64(0);
+    const rast_coverage_format f = o->format;
+    rast__i128 acc = c->carry;
+    int32_t k = c->cmin <= c->cmax ? c->cmin : c->x1 - c->x0, w = c->x1 - c->x0;
+    rast__cov_fill(f, row, 0, k, rast__cov_level(f, rast__cells_a62(c, acc, zero, rule)));
+    while (k <= c->cmax) {
+        if (rast__cells_empty(c, k)) {
+            int32_t k2 = k + 1;
+            while (k2 <= c->cmax && rast__cells_empty(c, k2)) k2++;
+            rast__cov_fill(f, row, k, k2, rast__cov_level(f, rast__cells_a62(c, acc, zero, rule)));
+            k = k2;
+            continue;
+        }
+        acc = rast__i128_add(acc, c->cover[k]);
+        rast__cov_store(f, row, k, rast__cov_level(f, rast__cells_a62(c, acc, c->area[k], rule)));
+        c->cover[k] = c->area[k] = zero;
+        k++;
+    }
+    if (k < w)
+        rast__cov_fill(f, row, k, w, rast__cov_level(f, rast__cells_a62(c, acc, zero, rule)));
+    rast__cov_row_done(o, y);
+    c->carry = zero;
+    c->cmin = INT32_MAX;
+    c->cmax = -1;
+}
+
+/* x advanced by a whole row: from a row's top to the next (exact). */
+static void rast__cov_x_row(const rast__cedge *e, rast__i128 *x, int64_t *r)
+{
+    *x = rast__i128_add(*x, e->xs);
+    *r += e->xsr;
+    if (*r >= e->dy) {
+        *r -= e->dy;
+        *x = rast__i128_add(*x, rast__i128_u64(1));
+    }
+}
+
+/* The per-row and per-column steps of e (see rast__cedge). */
+static void rast__cov_steps(rast__cedge *e)
+{
+    uint32_t adx = (uint32_t)(e->dx < 0 ? -e->dx : e->dx), rem;
+    rast__i128 q = rast__u128_div32(rast__u128_mul32(rast__i128_u64(T), adx), (uint32_t)e->dy, &rem);
+    if (e->dx >= 0) {
+        e->xs = q;
+        e->xsr = rem;
+    } else if (rem) {
+        e->xs = rast__i128_neg(rast__i128_add(q, rast__i128_u64(1)));
+        e->xsr = e->dy - (int64_t)rem;
+    } else {
+        e->xs = rast__i128_neg(q);
+        e->xsr = 0;
+    }
+    e->ts = rast__i128_u64(0);
+    e->tsr = 0;
+    if (adx) {
+        e->ts = rast__u128_div32(rast__u128_mul32(rast__i128_u64(T), (uint32_t)e->dy), adx, &rem);
+        e->tsr = rem;
+    }
+    e->rowx = INT32_MIN;
+    e->cX = INT64_MIN;
+    e->crow = INT32_MIN;
+}
+
+/* e's abscissa at the end tn of a piece that starts at t (where it is
+ * cached) into xn, rn: a row's step when the piece is the whole row. */
+static void rast__cov_x_end(rast__cedge *e, int64_t Yj, uint64_t t, uint64_t tn, int32_t h)
+{
+    if (t == 0 && tn == T) {
+        e->xn = e->x;
+        e->rn = e->r;
+        rast__cov_x_row(e, &e->xn, &e->rn);
+    } else {
+        rast__cov_x_at(e, Yj, tn, h, &e->xn, &e->rn);
+    }
+}
+
+/* Cache xn, rn as the abscissa at tn of row j (the top of row j + 1 when
+ * tn is the bottom). */
+static void rast__cov_x_keep(rast__cedge *e, int32_t j, uint64_t tn)
+{
+    e->x = e->xn;
+    e->r = e->rn;
+    e->rowx = tn == T ? j + 1 : j;
+    e->tx = tn == T ? 0 : tn;
+}
+
+/* Is a strictly before b just below the ordinate both have cached? */
+static int rast__cov_before(const rast__cedge *a, const rast__cedge *b)
+{
+    int c = rast__i128_cmp(a->x, b->x);
+    int64_t l, r;
+    if (c) return c < 0;
+    l = a->r * b->dy;
+    r = b->r * a->dy;
+    if (l != r) return l < r;
+    return (int64_t)a->dx * b->dy < (int64_t)b->dx * a->dy;
+}
+
+/* The first ordinate after t (U; up to T) where a, left of b just below
+ * t, crosses it; T when they do not cross inside the row. */
+static uint64_t rast__cov_cross(const rast__cedge *a, const rast__cedge *b, int64_t Yj,
+                                uint64_t t, const rast__cells *c)
+{
+    int64_t D = (int64_t)a->dx * b->dy - (int64_t)b->dx * a->dy, q0, r0, qq, rr;
+    rast__i128 N;
+    uint64_t tc;
+    if (D <= 0) return T; /* a is not steeper to the right: no crossing */
+    /* The crossing's ordinate y = Yj + N / D (fixed units). */
+    N = rast__i128_mul((int64_t)(b->xt - a->xt) * a->dy, b->dy);
+    N = rast__i128_add(N, rast__i128_mul((a->yt - Yj) * a->dx, b->dy));
+    N = rast__i128_sub(N, rast__i128_mul((b->yt - Yj) * b->dx, a->dy));
+    if (!rast__i128_floordiv(N, D, &q0, &r0)) return T;
+    if (q0 < 0 || q0 >= c->p) return T; /* not inside the row (q0 < 0 cannot be) */
+    /* t = ceil(N 2^H / D) = q0 2^H + ceil(r0 2^H / D). */
+    rast__i128_floordiv(rast__i128_shl(rast__i128_from(r0), c->h), D, &qq, &rr);
+    tc = ((uint64_t)q0 << c->h) + (uint64_t)qq + (rr > 0);
+    if (tc <= t) tc = t + 1;
+    return tc > T ? T : tc;
+}
+
+size_t rast__cov_area_scratch(uint32_t n, int32_t width)
+{
+    size_t b = rast__align(rast__size_mul(n, sizeof(rast__cedge)));
+    b = rast__size_add(b, 6 * rast__align(rast__size_mul(n, sizeof(int32_t))));
+    b = rast__size_add(b, rast__align(rast__size_mul(n, sizeof(uint64_t))));
+    return rast__size_add(b, 2 * rast__align(rast__size_mul((size_t)width, sizeof(rast__i128))));
+}
+
+/* Heapsort of the indices ix[0..n) by the edges' top ordinate. */
+static void rast__cov_sift(int32_t *ix, const rast__cedge *e, uint32_t root, uint32_t n)
+{
+    int32_t v = ix[root];
+    for (;;) {
+        uint32_t ch = 2 * root + 1;
+        if (ch >= n) break;
+        if (ch + 1 < n && e[ix[ch + 1]].yt > e[ix[ch]].yt) ch++;
+        if (e[ix[ch]].yt <= e[v].yt) break;
+        ix[root] = ix[ch];
+        root = ch;
+    }
+    ix[root] = v;
+}
+
+static void rast__cov_sort_tops(int32_t *ix, const rast__cedge *e, uint32_t n)
+{
+    uint32_t i;
+    for (i = n / 2; i-- > 0;) rast__cov_sift(ix, e, i, n);
+    for (i = n; i-- > 1;) {
+        int32_t s = ix[0];
+        ix[0] = ix[i];
+        ix[i] = s;
+        rast__cov_sift(ix, e, 0, i);
+    }
+}
+
+/* The sweep's arrays, by position in the row's order: the edges (live),
+ * the winding number left of each (wb), and the crossing time of each
+ * position with the next (ct; NONE: not before the next vertex), kept in
+ * a heap of positions (h, hidx its inverse, m entries). */
+typedef struct rast__sweep {
+    int32_t *live, *wb, *h, *hidx;
+    uint64_t *ct;
+    int32_t m;
+} rast__sweep;
+
+#define NONE (T + 1)
+
+static void rast__heap_swap(rast__sweep *w, int32_t i, int32_t k)
+{
+    int32_t a = w->h[i], b = w->h[k];
+    w->h[i] = b;
+    w->h[k] = a;
+    w->hidx[b] = i;
+    w->hidx[a] = k;
+}
+
+static void rast__heap_up(rast__sweep *w, int32_t i)
+{
+    while (i > 0) {
+        int32_t p = (i - 1) / 2;
+        if (w->ct[w->h[p]] <= w->ct[w->h[i]]) break;
+        rast__heap_swap(w, p, i);
+        i = p;
+    }
+}
+
+static void rast__heap_down(rast__sweep *w, int32_t i)
+{
+    for (;;) {
+        int32_t l = 2 * i + 1, r = l + 1, m = i;
+        if (l < w->m && w->ct[w->h[l]] < w->ct[w->h[m]]) m = l;
+        if (r < w->m && w->ct[w->h[r]] < w->ct[w->h[m]]) m = r;
+        if (m == i) break;
+        rast__heap_swap(w, i, m);
+        i = m;
+    }
+}
+
+static void rast__heap_set(rast__sweep *w, int32_t pos, uint64_t v)
+{
+    uint64_t old = w->ct[pos];
+    w->ct[pos] = v;
+    if (v < old)
+        rast__heap_up(w, w->hidx[pos]);
+    else if (v > old)
+        rast__heap_down(w, w->hidx[pos]);
+}
+
+/* The sign of an edge's piece with winding wb on its left. */
+static int32_t rast__cov_sign(rast_fill_rule rule, int32_t wb, int32_t dir)
+{
+    if (rule == RAST_RULE_EVENODD) return (wb & 1) ? -1 : 1;
+    return wb == 0 ? 1 : (wb + dir == 0) ? -1 : 0;
+}
+
+/* When a, left of b (edge ib) just after t, crosses it before tv (else
+ * NONE).  Lines in order at the row's bottom do not cross in between.  The
+ * crossing does not depend on t (a pair in order just after t crosses
+ * after it), so each edge keeps the last one it computed, for its right
+ * neighbour: a vertex event, which sorts the row again, finds most pairs
+ * unchanged. */
+static uint64_t rast__cov_pair(rast__cedge *a, int32_t ib, const rast__cedge *b, int64_t Yj,
+                               int32_t j, uint64_t t, uint64_t tv, const rast__cells *c)
+{
+    uint64_t tc;
+    if (a->cn == ib && a->crow == j) {
+        tc = a->ctime;
+    } else {
+        int cmp = rast__i128_cmp(a->xT, b->xT);
+        tc = (cmp < 0 || (cmp == 0 && a->rT * b->dy <= b->rT * a->dy)) ? NONE
+                                                                          : rast__cov_cross(a, b, Yj, 0, c);
+        a->cn = ib;
+        a->crow = j;
+        a->ctime = tc;
+    }
+    if (tc <= t) tc = t + 1;
+    return tc < tv ? tc : NONE;
+}
+
+/* Edge e's piece sign becomes s at tc: the piece so far is added. */
+static void rast__cov_resign(rast__cells *c, rast__cedge *e, int64_t Yj, int32_t j, uint64_t tc,
+                             int32_t s)
+{
+    if (s == e->sg) return;
+    rast__cov_x_at(e, Yj, tc, c->h, &e->xn, &e->rn);
+    if (e->sg) rast__cells_piece(c, e, Yj, e->x, e->tx, e->xn, tc, e->sg);
+    e->x = e->xn;
+    e->r = e->rn;
+    e->rowx = j;
+    e->tx = tc;
+    e->sg = s;
+}
+
+/* The row's sweep (area): edges row[0..nrow) of row j.  Between vertex
+ * events (an edge starting or ending inside the row) the order changes
+ * only where neighbours cross: the earliest crossing comes off the heap,
+ * the two edges swap, and only they can change sign (the winding number
+ * between them is the only one that changes); an edge's piece runs from
+ * one change of its sign to the next. */
+static void rast__cov_row_area(rast__cells *c, rast__cedge *e, int32_t *row, int32_t nrow,
+                               rast__sweep *sw, int32_t j, rast_fill_rule rule)
+{
+    const int64_t Yj = (int64_t)j * c->p;
+    int32_t *live = sw->live;
+    uint64_t t = 0;
+    int32_t k;
+    for (k = 0; k < nrow; k++) { /* every line at the row's bottom */
+        rast__cedge *ed = &e[row[k]];
+        if (ed->rowx == j && ed->tx == 0) {
+            ed->xT = ed->x;
+            ed->rT = ed->r;
+            rast__cov_x_row(ed, &ed->xT, &ed->rT);
+        } else {
+            rast__cov_x_at(ed, Yj, T, c->h, &ed->xT, &ed->rT);
+        }
+    }
+    while (t < T) {
+        uint64_t tv = T;
+        int32_t n = 0, wsum = 0, rest = nrow; /* live[rest..nrow): the others */
+        /* The edges reaching below t, in order; the next start or end. */
+        for (k = 0; k < nrow; k++) {
+            rast__cedge *ed = &e[row[k]];
+            int64_t rel0 = (int64_t)ed->yt - Yj, rel1 = (int64_t)ed->yt + ed->dy - Yj;
+            uint64_t t0 = rel0 <= 0 ? 0 : (uint64_t)rel0 << c->h;
+            uint64_t t1 = rel1 >= c->p ? T : (uint64_t)rel1 << c->h;
+            if (t0 > t || t1 <= t) {
+                if (t0 > t && t0 < tv) tv = t0;
+                live[--rest] = row[k];
+                continue;
+            }
+            if (t1 < tv) tv = t1;
+            if (ed->rowx != j || ed->tx != t) {
+                rast__cov_x_at(ed, Yj, t, c->h, &ed->x, &ed->r);
+                ed->rowx = j;
+                ed->tx = t;
+            }
+            {   /* insertion, by the exact order below t */
+                int32_t m = n++, id = row[k];
+                while (m > 0 && rast__cov_before(ed, &e[live[m - 1]])) {
+                    live[m] = live[m - 1];
+                    m--;
+                }
+                live[m] = id;
+            }
+        }
+        /* Windings and signs; every piece starts at t. */
+        for (k = 0; k < n; k++) {
+            rast__cedge *ed = &e[live[k]];
+            sw->wb[k] = wsum;
+            ed->sg = rast__cov_sign(rule, wsum, ed->dir);
+            wsum += ed->dir;
+        }
+        /* The neighbours' crossings before tv, in a heap. */
+        sw->m = n > 0 ? n - 1 : 0;
+        for (k = 0; k < sw->m; k++) {
+            sw->ct[k] = rast__cov_pair(&e[live[k]], live[k + 1], &e[live[k + 1]], Yj, j, t, tv, c);
+            sw->h[k] = k;
+            sw->hidx[k] = k;
+        }
+        for (k = sw->m / 2; k-- > 0;) rast__heap_down(sw, k);
+        while (sw->m > 0 && sw->ct[sw->h[0]] < tv) {
+            int32_t p = sw->h[0], ia = live[p], ib = live[p + 1];
+            uint64_t tc = sw->ct[p];
+            rast__cedge *a = &e[ia], *b = &e[ib];
+            live[p] = ib;
+            live[p + 1] = ia;
+            sw->wb[p + 1] = sw->wb[p] + b->dir;
+            rast__cov_resign(c, b, Yj, j, tc, rast__cov_sign(rule, sw->wb[p], b->dir));
+            rast__cov_resign(c, a, Yj, j, tc, rast__cov_sign(rule, sw->wb[p + 1], a->dir));
+            rast__heap_set(sw, p, NONE);
+            if (p > 0)
+                rast__heap_set(sw, p - 1, rast__cov_pair(&e[live[p - 1]], ib, b, Yj, j, tc, tv, c));
+            if (p + 2 < n)
+                rast__heap_set(sw, p + 1, rast__cov_pair(a, live[p + 2], &e[live[p + 2]], Yj, j, tc, tv, c));
+        }
+        /* The open pieces end at tv. */
+        for (k = 0; k < n; k++) {
+            rast__cedge *ed = &e[live[k]];
+            rast__cov_x_end(ed, Yj, ed->tx, tv, c->h);
+            if (ed->sg) rast__cells_piece(c, ed, Yj, ed->x, ed->tx, ed->xn, tv, ed->sg);
+            rast__cov_x_keep(ed, j, tv);
+        }
+        /* The row's edges in this order, so that the next sort (here, or
+         * in the next row) has little to do. */
+        memcpy(row, live, (size_t)n * sizeof *row);
+        for (k = rest; k < nrow; k++) row[n + k - rest] = live[k];
+        t = tv;
+    }
+}
+
+/* The row's accumulation: every edge, whole, signed by its direction. */
+static void rast__cov_row_acc(rast__cells *c, rast__cedge *e, const int32_t *row, int32_t nrow,
+                              int32_t j)
+{
+    const int64_t Yj = (int64_t)j * c->p;
+    int32_t k;
+    for (k = 0; k < nrow; k++) {
+        rast__cedge *ed = &e[row[k]];
+        int64_t rel0 = (int64_t)ed->yt - Yj, rel1 = (int64_t)ed->yt + ed->dy - Yj;
+        uint64_t t0 = rel0 <= 0 ? 0 : (uint64_t)rel0 << c->h;
+        uint64_t t1 = rel1 >= c->p ? T : (uint64_t)rel1 << c->h;
+        if (ed->rowx != j || ed->tx != t0) rast__cov_x_at(ed, Yj, t0, c->h, &ed->x, &ed->r);
+        rast__cov_x_end(ed, Yj, t0, t1, c->h);
+        rast__cells_piece(c, ed, Yj, ed->x, t0, ed->xn, t1, ed->dir);
+        rast__cov_x_keep(ed, j, t1);
+    }
+}
+
+rast_status rast__cov_area(rast__cedge *e, uint32_t n, int32_t s, rast_fill_rule rule,
+                           int accumulate, const rast__cov_out *o, rast__arena *arena)
+{
+    rast__cells c;
+    rast__sweep sw;
+    int32_t *order, *row, nrow = 0, j, ja, jb, k, width = o->clip.x1 - o->clip.x0;
+    uint32_t i, next = 0;
+    int64_t ymin, ymax;
+
+    order = (int32_t *)rast__take(arena, (size_t)n * sizeof(int32_t));
+    row = (int32_t *)rast__take(arena, (size_t)n * sizeof(int32_t));
+    sw.live = (int32_t *)rast__take(arena, (size_t)n * sizeof(int32_t));
+    sw.wb = (int32_t *)rast__take(arena, (size_t)n * sizeof(int32_t));
+    sw.h = (int32_t *)rast__take(arena, (size_t)n * sizeof(int32_t));
+    sw.hidx = (int32_t *)rast__take(arena, (size_t)n * sizeof(int32_t));
+    sw.ct = (uint64_t *)rast__take(arena, (size_t)n * sizeof(uint64_t));
+    c.cover = (rast__i128 *)rast__take(arena, (size_t)width * sizeof(rast__i128));
+    c.area = (rast__i128 *)rast__take(arena, (size_t)width * sizeof(rast__i128));
+    if ((n && (!order || !row || !sw.live || !sw.wb || !sw.h || !sw.hidx || !sw.ct)) || !c.cover ||
+        !c.area)
+        return RAST_E_SCRATCH;
+    for (k = 0; k < width; k++) c.cover[k] = c.area[k] = rast__i128_u64(0);
+    c.carry = rast__i128_u64(0);
+    c.x0 = o->clip.x0;
+    c.x1 = o->clip.x1;
+    c.cmin = INT32_MAX;
+    c.cmax = -1;
+    c.h = G - s;
+    c.p = (int32_t)1 << s;
+    c.accumulate = accumulate;
+
+    if (n == 0) {
+        rast__cov_zero_rows(o, o->clip.y0, o->clip.y1);
+        return RAST_OK;
+    }
+    ymin = e[0].yt;
+    ymax = (int64_t)e[0].yt + e[0].dy;
+    for (i = 0; i < n; i++) {
+        order[i] = (int32_t)i;
+        rast__cov_steps(&e[i]);
+        if (e[i].yt < ymin) ymin = e[i].yt;
+        if ((int64_t)e[i].yt + e[i].dy > ymax) ymax = (int64_t)e[i].yt + e[i].dy;
+    }
+    rast__cov_sort_tops(order, e, n);
+    /* Rows whose strip the edges reach: floor(ymin / P) .. ceil(ymax / P). */
+    ymin = rast__floordiv(ymin, c.p);
+    ymax = rast__ceildiv(ymax, c.p);
+    ja = ymin > o->clip.y0 ? (int32_t)(ymin < o->clip.y1 ? ymin : o->clip.y1) : o->clip.y0;
+    jb = ymax < o->clip.y1 ? (int32_t)(ymax > ja ? ymax : ja) : o->clip.y1;
+    rast__cov_zero_rows(o, o->clip.y0, ja);
+    for (j = ja; j < jb; j++) {
+        const int64_t Yj = (int64_t)j * c.p;
+        int32_t m;
+        /* Drop the edges that end above the row; take those that start
+         * above its bottom. */
+        for (k = 0, m = 0; k < nrow; k++)
+            if ((int64_t)e[row[k]].yt + e[row[k]].dy > Yj) row[m++] = row[k];
+        nrow = m;
+        while (next < n && e[order[next]].yt < Yj + c.p) {
+            if ((int64_t)e[order[next]].yt + e[order[next]].dy > Yj) row[nrow++] = order[next];
+            next++;
+        }
+        if (nrow) {
+            if (accumulate)
+                rast__cov_row_acc(&c, e, row, nrow, j);
+            else
+                rast__cov_row_area(&c, e, row, nrow, &sw, j, rule);
+        }
+        rast__cells_emit(&c, o, j, rule);
+    }
+    rast__cov_zero_rows(o, jb, o->clip.y1);
+    return RAST_OK;
+}

@@ -1,0 +1,20 @@
+/* coverage.h - the binding glue of the coverage entry points
+ * (python/glue/coverage.c): snap float64 input, take scratch from malloc,
+ * one call to rast_polygon_coverage or rast_triangles_coverage.
+ * Results as rastpy.h's: 0, a negative status (or RASTPY_E_NOMEM), or
+ * k + 1 when point k is bad. */
+#ifndef RASTPY_COVERAGE_H
+#define RASTPY_COVERAGE_H
+
+#include "rastpy.h"
+
+/* cdef-begin */
+long rastpy_polygon_coverage(void *out, int32_t height, int32_t width, int format,
+                             const double *xy, uint32_t npoints, const uint32_t *ring_sizes,
+                             uint32_t nrings, const rast_coverage_opts *opts);
+long rastpy_triangles_coverage(void *out, int32_t height, int32_t width, int format,
+                               const double *xy, uint32_t ntris,
+                               const rast_coverage_opts *opts);
+/* cdef-end */
+
+#endif

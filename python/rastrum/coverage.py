@@ -1,0 +1,179 @@
+"""Anti-aliased coverage: ``polygon_coverage`` and ``triangles_coverage``.
+
+The coverage of a pixel is the area of the part of its square that is
+inside (DESIGN.md section 1a, docs/coverage.md).  Thin, like the rest: check
+the arguments, hand the float vertices to one C call (which snaps them
+exactly and writes the whole array without the GIL), turn statuses into
+exceptions.  Nothing is returned half-written.
+"""
+
+import numpy as np
+
+from . import _core
+from ._core import InputError
+from ._native import ffi, lib
+from .triangles import tris_f64
+
+
+def _methods():
+    """{name: code} as the C table lists them."""
+    table = {}
+    name = ffi.new("char **")
+    for code in range(lib.RAST_AA_COUNT_):
+        if lib.rast_aa_method_info(code, name) == lib.RAST_OK:
+            table[ffi.string(name[0]).decode()] = code
+    return table
+
+
+#: The coverage methods by name ("area", "ss2", "ss4", "ss8", "ss16",
+#: "accumulate").
+METHODS = _methods()
+
+# dtype -> (C output format, how to turn the C array into the result)
+_U8, _U16, _F32, _F64 = (np.dtype(t) for t in (np.uint8, np.uint16, np.float32, np.float64))
+_DTYPES = {_U8: lib.RAST_COVERAGE_U8, _U16: lib.RAST_COVERAGE_U16,
+           _F32: lib.RAST_COVERAGE_FIX62, _F64: lib.RAST_COVERAGE_FIX62}
+_C_DTYPE = {lib.RAST_COVERAGE_U8: _U8, lib.RAST_COVERAGE_U16: _U16,
+            lib.RAST_COVERAGE_FIX62: np.dtype(np.uint64)}
+
+
+def method_error(method, entry, supported):
+    return InputError("unknown or unsupported method %r for %s; choose one of: %s"
+                      % (method, entry, ", ".join(supported)))
+
+
+def _opts(method, rule, subpixel_bits, sample_offset, entry):
+    if not isinstance(method, str) or method not in METHODS:
+        raise method_error(method, entry, list(METHODS))
+    opts = ffi.new("rast_coverage_opts *")
+    opts.method = METHODS[method]
+    opts.rule = _core.RULES[_core._name(rule, "rule", _core.RULES)]
+    opts.subpixel_bits = _core._subpixel_bits(subpixel_bits)
+    opts.sample = _core.sample_code(sample_offset)
+    return opts
+
+
+def _dtype(dtype):
+    try:
+        d = np.dtype(dtype)
+    except TypeError:
+        d = None
+    if d not in _DTYPES:
+        raise InputError("dtype must be one of uint8, uint16, float32, float64, not %r" % (dtype,))
+    return d
+
+
+def _check(result, pts, opts, what, sizes):
+    if result == lib.RAST_E_RANGE:  # snapped in range, but not times k
+        k = 1 << (opts.method - lib.RAST_AA_SS2 + 1)
+        raise InputError(
+            "%s: a vertex times %d (method ss%d scales the vertices to its finer grid) is "
+            "outside the range +-%.6g pixels at subpixel_bits=%d"
+            % (what, k, k, lib.RAST_COORD_MAX / float(max(k, 1 << opts.subpixel_bits)),
+               opts.subpixel_bits))
+    _core._check_glue(result, pts, opts.subpixel_bits, what, sizes)
+
+
+def _finish(raw, d):
+    if d in (_U8, _U16):
+        return raw
+    # a in units of 2^-62: to float exactly (a power of two scales exactly;
+    # the integer rounds to the nearest float64 once, or float32 once more)
+    return np.ldexp(raw.astype(np.float64), -62).astype(d, copy=False)
+
+
+def polygon_coverage(rings, shape, *, rule="evenodd", method="area", subpixel_bits=8,
+                     sample_offset=0.5, dtype=np.uint8):
+    """How much of each pixel a polygon covers.
+
+    Parameters
+    ----------
+    rings : (N, 2) array_like or list of them
+        The polygon's closed rings as (x, y) vertices in pixels, as for
+        ``polygon_mask``.
+    shape : (int, int)
+        (height, width) of the result.
+    rule : {"evenodd", "nonzero"}
+        Fill rule; coverage is the area inside under it, right where
+        contours overlap, cross or coincide.
+    method : str
+        One of ``ALGORITHMS["polygon_coverage"]``: "area" (the exact area,
+        the default), "ss2", "ss4", "ss8", "ss16" (k x k sub-samples, the
+        exact binary rule on each), "accumulate" (signed-area accumulation
+        as FreeType does it: exact only where nothing overlaps).
+    subpixel_bits : int
+        Vertices are snapped to 1/2**subpixel_bits pixel (0..16).
+    sample_offset : {0.5, 0}
+        Where the sub-samples sit (the ssK methods only): (s + 0.5)/k or s/k.
+    dtype : uint8, uint16, float32 or float64
+        uint8 holds floor(a*255 + 1/2), uint16 floor(a*65535 + 1/2) (see
+        docs/coverage.md for the bound on ties); the floats hold a (from a
+        2^-62 fixed point).
+
+    Returns
+    -------
+    numpy.ndarray of `dtype`, shape (H, W)
+
+    Raises
+    ------
+    InputError (a ValueError)
+        As ``polygon_mask``; also an unknown method or dtype.
+
+    Examples
+    --------
+    >>> import rastrum
+    >>> rastrum.polygon_coverage([(0.5, 0), (2, 0), (2, 1), (0.5, 1)], (1, 3))
+    array([[128, 255,   0]], dtype=uint8)
+    """
+    opts = _opts(method, rule, subpixel_bits, sample_offset, "polygon_coverage")
+    d = _dtype(dtype)
+    h, w = _core.shape2(shape)
+    pts, sizes, nrings = _core._points(rings)
+    fmt = _DTYPES[d]
+    raw = np.empty((h, w), _C_DTYPE[fmt])
+    if not nrings:
+        raw[...] = 0
+        return _finish(raw, d)
+    result = lib.rastpy_polygon_coverage(
+        ffi.from_buffer(raw) if h and w else ffi.NULL, h, w, fmt,
+        ffi.from_buffer("double[]", pts), len(pts), sizes, nrings, opts)
+    if result:
+        _check(result, pts, opts, "rings", [len(pts)] if nrings == 1 else sizes)
+    return _finish(raw, d)
+
+
+def triangles_coverage(tris, shape, *, method="area", subpixel_bits=8, sample_offset=0.5,
+                       dtype=np.uint8):
+    """How much of each pixel a batch of triangles covers, as ONE region.
+
+    The batch is the union of its triangles (whatever their orientation):
+    a mesh submitted in one call has no seams, and overlapping triangles
+    are not counted twice (except by "accumulate", which adds them).
+    Parameters as ``polygon_coverage``; `tris` is (N, 3, 2) as for
+    ``triangles_mask``.
+
+    Examples
+    --------
+    >>> import rastrum
+    >>> sq = [[(0, 0), (2, 0), (2, 2)], [(0, 0), (2, 2), (0, 2)]]
+    >>> rastrum.triangles_coverage(sq, (2, 2)).tolist()
+    [[255, 255], [255, 255]]
+    """
+    opts = _opts(method, "nonzero", subpixel_bits, sample_offset, "triangles_coverage")
+    d = _dtype(dtype)
+    h, w = _core.shape2(shape)
+    t = tris_f64(tris)
+    n = t.shape[0]
+    if 3 * n > lib.RAST_MAX_POINTS:
+        raise InputError("%d triangles; at most %d per call" % (n, lib.RAST_MAX_POINTS // 3))
+    fmt = _DTYPES[d]
+    raw = np.empty((h, w), _C_DTYPE[fmt])
+    if n == 0:
+        raw[...] = 0
+        return _finish(raw, d)
+    result = lib.rastpy_triangles_coverage(
+        ffi.from_buffer(raw) if h and w else ffi.NULL, h, w, fmt,
+        ffi.from_buffer("double[]", t), n, opts)
+    if result:
+        _check(result, t.reshape(-1, 2), opts, "tris", 3)
+    return _finish(raw, d)

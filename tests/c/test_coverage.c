@@ -1,0 +1,428 @@
+/*
+ * test_coverage.c - anti-aliased coverage through the C API, each method
+ * against an exact reference that does not share its code:
+ *  - area (and accumulate for one rectangle): unions of axis-aligned
+ *    rectangles on the 2^-S grid, overlapping, coincident, in either
+ *    orientation, under both rules; the exact area is a count of the
+ *    2^-S cells inside, so every level must be floor(a M + 1/2);
+ *  - ssK: the binary fill ("xscan", not the AET the method uses) of the
+ *    vertices scaled by k into a count16 target k times finer;
+ *  - triangle batches: a triangulated square is covered fully, seamlessly;
+ *  - area: translation by whole pixels translates the values exactly;
+ *  - errors: every status, nothing written, scratch exact and its guard
+ *    bytes intact;
+ *  - rast_polygon_coverage_spans: the same values as the image, in ordered
+ *    runs of values not 0 inside the clip.
+ */
+#include <stdint.h>
+#include <string.h>
+
+#define CHECK_RNG_SEED 1212u
+#include "check.h"
+#include "rastrum.h"
+
+#define GUARD 0x5A
+static uint64_t scratch_mem[1 << 17];
+#include "scratch.h"
+
+#define W 12
+#define H 10
+
+static rast_status cover(const rast_polygon *p, const rast_point *tris, uint32_t ntris,
+                         const rast_coverage_opts *o, const rast_rect *clip,
+                         rast_coverage_format f, void *out, ptrdiff_t stride)
+{
+    size_t need;
+    unsigned char *s;
+    uint32_t np = p ? 0 : 3 * ntris;
+    rast_status st;
+    uint32_t k;
+    if (p)
+        for (k = 0; k < p->nrings; k++) np += p->ring_sizes[k];
+    st = rast_coverage_scratch_size(o, np, clip->x1 - clip->x0, clip->y1 - clip->y0, &need);
+    if (st != RAST_OK) return st;
+    s = scratch_for(need);
+    if (!s) return RAST_E_SCRATCH;
+    st = p ? rast_polygon_coverage(p, o, clip, f, out, stride, s, need)
+           : rast_triangles_coverage(tris, ntris, o, clip, f, out, stride, s, need);
+    CHECK(scratch_guard_ok(s, need));
+    return st;
+}
+
+static uint32_t level(uint64_t num, uint64_t den, uint32_t M)
+{
+    return (uint32_t)((2 * num * M + den) / (2 * den)); /* floor(num M / den + 1/2) */
+}
+
+/* ---- rectangles: the exact area by cells ----------------------------------- */
+
+static void test_rectangles(void)
+{
+    int iter, n = check_count(300);
+    for (iter = 0; iter < n; iter++) {
+        int32_t s = (int32_t)(rng() % 4), g = 1 << s, nr = 1 + (int)(rng() % 5), r, i, j;
+        rast_point pts[4 * 5];
+        uint32_t sizes[5];
+        int32_t rx0[5], ry0[5], rx1[5], ry1[5], sg[5];
+        rast_polygon poly;
+        rast_coverage_opts o;
+        rast_rect clip;
+        uint16_t out[H][W];
+        int rule = (int)(rng() % 2);
+        for (r = 0; r < nr; r++) {
+            int32_t a = (int32_t)(rng() % (uint32_t)((W + 2) * g)) - g;
+            int32_t b = (int32_t)(rng() % (uint32_t)((W + 2) * g)) - g;
+            int32_t c = (int32_t)(rng() % (uint32_t)((H + 2) * g)) - g;
+            int32_t d = (int32_t)(rng() % (uint32_t)((H + 2) * g)) - g;
+            if (r > 0 && rng() % 3 == 0) { /* share an edge or the whole rectangle */
+                a = rx0[r - 1];
+                if (rng() % 2) b = rx1[r - 1];
+            }
+            rx0[r] = a < b ? a : b;
+            rx1[r] = a < b ? b : a;
+            ry0[r] = c < d ? c : d;
+            ry1[r] = c < d ? d : c;
+            sg[r] = (rng() % 2) ? 1 : -1;
+            /* (x0,y0) (x1,y0) (x1,y1) (x0,y1) has winding -1 inside */
+            pts[4 * r].x = rx0[r];
+            pts[4 * r].y = ry0[r];
+            pts[4 * r + 1].x = sg[r] < 0 ? rx1[r] : rx0[r];
+            pts[4 * r + 1].y = sg[r] < 0 ? ry0[r] : ry1[r];
+            pts[4 * r + 2].x = rx1[r];
+            pts[4 * r + 2].y = ry1[r];
+            pts[4 * r + 3].x = sg[r] < 0 ? rx0[r] : rx1[r];
+            pts[4 * r + 3].y = sg[r] < 0 ? ry1[r] : ry0[r];
+            sizes[r] = 4;
+        }
+        poly.points = pts;
+        poly.ring_sizes = sizes;
+        poly.nrings = (uint32_t)nr;
+        memset(&o, 0, sizeof o);
+        o.rule = (rast_fill_rule)rule;
+        o.subpixel_bits = s;
+        o.method = (nr == 1 && rng() % 2) ? RAST_AA_ACCUMULATE : RAST_AA_AREA;
+        clip.x0 = (int32_t)(rng() % 3);
+        clip.y0 = (int32_t)(rng() % 3);
+        clip.x1 = W - (int32_t)(rng() % 3);
+        clip.y1 = H - (int32_t)(rng() % 3);
+        CHECK(cover(&poly, NULL, 0, &o, &clip, RAST_COVERAGE_U16, &out[0][0], W * 2) == RAST_OK);
+        for (j = clip.y0; j < clip.y1; j++)
+            for (i = clip.x0; i < clip.x1; i++) {
+                uint32_t cells = 0;
+                int32_t u, v;
+                for (v = j * g; v < (j + 1) * g; v++)
+                    for (u = i * g; u < (i + 1) * g; u++) {
+                        int w = 0;
+                        for (r = 0; r < nr; r++)
+                            if (u >= rx0[r] && u < rx1[r] && v >= ry0[r] && v < ry1[r]) w += sg[r];
+                        cells += rule == RAST_RULE_EVENODD ? (uint32_t)(w & 1) : (w != 0);
+                    }
+                CHECK(out[j - clip.y0][i - clip.x0] == level(cells, (uint64_t)g * g, 65535));
+            }
+    }
+}
+
+/* ---- supersampling: the binary fill k times finer ------------------------------ */
+
+static void test_ss(void)
+{
+    int iter, n = check_count(200);
+    static uint16_t fine[16 * H][16 * W];
+    for (iter = 0; iter < n; iter++) {
+        int32_t kb = 1 + (int32_t)(rng() % 4), K = 1 << kb, s = (int32_t)(rng() % 6), i, j;
+        int32_t np = 3 + (int32_t)(rng() % 8), g = 1 << s, w = K == 16 ? 5 : W, h = K == 16 ? 4 : H;
+        rast_point pts[10], big[10];
+        uint32_t size = (uint32_t)np;
+        rast_polygon poly = {pts, &size, 1}, bigp = {big, &size, 1};
+        rast_coverage_opts o;
+        rast_fill_opts fo;
+        rast_rect clip = {0, 0, 0, 0};
+        rast_target t;
+        uint8_t out[H][W];
+        size_t need;
+        unsigned char *sc;
+        for (i = 0; i < np; i++) {
+            pts[i].x = (int32_t)(rng() % (uint32_t)((w + 4) * g)) - 2 * g;
+            pts[i].y = (int32_t)(rng() % (uint32_t)((h + 4) * g)) - 2 * g;
+            /* the same point on the fine grid, with S' = max(S - kb, 0) */
+            big[i].x = s >= kb ? pts[i].x : pts[i].x * (K >> s);
+            big[i].y = s >= kb ? pts[i].y : pts[i].y * (K >> s);
+        }
+        memset(&o, 0, sizeof o);
+        o.method = (rast_aa_method)(RAST_AA_SS2 + kb - 1);
+        o.rule = (rast_fill_rule)(rng() % 2);
+        o.subpixel_bits = s;
+        o.sample = (rast_sample)(rng() % 2);
+        clip.x1 = w;
+        clip.y1 = h;
+        CHECK(cover(&poly, NULL, 0, &o, &clip, RAST_COVERAGE_U8, &out[0][0], W) == RAST_OK);
+        memset(fine, 0, sizeof fine);
+        CHECK(rast_target_init(&t, fine, w * K, h * K, (int32_t)sizeof fine[0], RAST_FORMAT_COUNT16) ==
+              RAST_OK);
+        memset(&fo, 0, sizeof fo);
+        fo.algorithm = RAST_ALGO_XSCAN;
+        fo.rule = o.rule;
+        fo.subpixel_bits = s >= kb ? s - kb : 0;
+        fo.sample = o.sample;
+        CHECK(rast_scratch_size(&fo, size, w * K, h * K, &need) == RAST_OK);
+        sc = scratch_for(need);
+        CHECK(rast_fill_polygon(&t, &bigp, &fo, NULL, sc, need) == RAST_OK);
+        for (j = 0; j < h; j++)
+            for (i = 0; i < w; i++) {
+                uint32_t c = 0;
+                int32_t u, v;
+                for (v = 0; v < K; v++)
+                    for (u = 0; u < K; u++) c += fine[j * K + v][i * K + u];
+                CHECK(out[j][i] == level(c, (uint64_t)K * K, 255));
+            }
+    }
+}
+
+/* ---- triangle batches ------------------------------------------------------------ */
+
+static void test_mesh(void)
+{
+    /* a 4 x 4 grid of quads over [1, 9] x [1, 9], inner vertices jittered,
+     * each quad two triangles in alternating orientations */
+    rast_point v[25], tris[32 * 3];
+    uint8_t out[H][W];
+    rast_coverage_opts o;
+    rast_rect clip = {0, 0, W, H};
+    int r, c, k = 0, m;
+    for (r = 0; r < 5; r++)
+        for (c = 0; c < 5; c++) {
+            int inner = r > 0 && r < 4 && c > 0 && c < 4;
+            v[r * 5 + c].x = (1 + 2 * c) * 16 + (inner ? (int32_t)(rng() % 13) - 6 : 0);
+            v[r * 5 + c].y = (1 + 2 * r) * 16 + (inner ? (int32_t)(rng() % 13) - 6 : 0);
+        }
+    for (r = 0; r < 4; r++)
+        for (c = 0; c < 4; c++) {
+            rast_point a = v[r * 5 + c], b = v[r * 5 + c + 1], d = v[r * 5 + c + 6],
+                       e = v[r * 5 + c + 5];
+            tris[k++] = a, tris[k++] = b, tris[k++] = d;
+            tris[k++] = a, tris[k++] = (r + c) % 2 ? e : d, tris[k++] = (r + c) % 2 ? d : e;
+        }
+    for (m = 0; m < 3; m++) {
+        int i, j, ok = 1;
+        memset(&o, 0, sizeof o);
+        o.method = m == 0 ? RAST_AA_AREA : m == 1 ? RAST_AA_SS4 : RAST_AA_ACCUMULATE;
+        o.subpixel_bits = 4;
+        CHECK(cover(NULL, tris, 32, &o, &clip, RAST_COVERAGE_U8, &out[0][0], W) == RAST_OK);
+        for (j = 0; j < H; j++)
+            for (i = 0; i < W; i++) {
+                int in = i >= 1 && i < 9 && j >= 1 && j < 9;
+                if (out[j][i] != (in ? 255 : 0)) ok = 0;
+            }
+        CHECK(ok);
+    }
+}
+
+/* ---- area: translation by whole pixels ---------------------------------------------- */
+
+static void test_translation(void)
+{
+    int iter, n = check_count(100);
+    for (iter = 0; iter < n; iter++) {
+        rast_point a[9], b[9];
+        uint32_t size = 9;
+        rast_polygon pa = {a, &size, 1}, pb = {b, &size, 1};
+        rast_coverage_opts o;
+        int32_t s = (int32_t)(rng() % 9), dx = (int32_t)(rng() % 200) - 100,
+                dy = (int32_t)(rng() % 200) - 100, i;
+        rast_rect ca = {0, 0, W, H}, cb;
+        uint64_t oa[H][W], ob[H][W];
+        for (i = 0; i < 9; i++) {
+            a[i].x = (int32_t)(rng() % (uint32_t)((W + 2) << s)) - (1 << s);
+            a[i].y = (int32_t)(rng() % (uint32_t)((H + 2) << s)) - (1 << s);
+            b[i].x = a[i].x + dx * (1 << s);
+            b[i].y = a[i].y + dy * (1 << s);
+        }
+        cb.x0 = dx;
+        cb.y0 = dy;
+        cb.x1 = dx + W;
+        cb.y1 = dy + H;
+        memset(&o, 0, sizeof o);
+        o.rule = (rast_fill_rule)(rng() % 2);
+        o.subpixel_bits = s;
+        CHECK(cover(&pa, NULL, 0, &o, &ca, RAST_COVERAGE_FIX62, &oa[0][0], W * 8) == RAST_OK);
+        CHECK(cover(&pb, NULL, 0, &o, &cb, RAST_COVERAGE_FIX62, &ob[0][0], W * 8) == RAST_OK);
+        CHECK(memcmp(oa, ob, sizeof oa) == 0);
+    }
+}
+
+/* ---- errors ---------------------------------------------------------------------- */
+
+static int untouched(const uint8_t *p, size_t n)
+{
+    size_t k;
+    for (k = 0; k < n; k++)
+        if (p[k] != 0xAB) return 0;
+    return 1;
+}
+
+static void test_errors(void)
+{
+    static const rast_point tri[3] = {{0, 0}, {64, 0}, {0, 64}};
+    const uint32_t three = 3;
+    rast_polygon p = {tri, &three, 1};
+    rast_coverage_opts o;
+    rast_rect clip = {0, 0, 4, 4};
+    uint8_t out[4 * 8 + 8];
+    size_t need;
+    unsigned char *s;
+    const char *name;
+    memset(&o, 0, sizeof o);
+    o.subpixel_bits = 4;
+    CHECK(rast_coverage_scratch_size(&o, 3, 4, 4, &need) == RAST_OK);
+    s = scratch_for(need);
+    memset(out, 0xAB, sizeof out);
+#define REFUSED(call, status) CHECK((call) == (status) && untouched(out, sizeof out))
+    REFUSED(rast_polygon_coverage(&p, &o, &clip, RAST_COVERAGE_U8, out, 4, s, need - 1),
+            RAST_E_SCRATCH);
+    REFUSED(rast_polygon_coverage(&p, &o, &clip, RAST_COVERAGE_U8, out, 4, s + 1, need),
+            RAST_E_ALIGN);
+    REFUSED(rast_polygon_coverage(&p, &o, &clip, RAST_COVERAGE_U8, out, 3, s, need), RAST_E_ARG);
+    REFUSED(rast_polygon_coverage(&p, &o, &clip, RAST_COVERAGE_U16, out + 1, 8, s, need),
+            RAST_E_ARG);
+    REFUSED(rast_polygon_coverage(&p, &o, &clip, (rast_coverage_format)3, out, 4, s, need),
+            RAST_E_ARG);
+    REFUSED(rast_polygon_coverage(&p, &o, &clip, RAST_COVERAGE_U8, NULL, 4, s, need), RAST_E_NULL);
+    REFUSED(rast_polygon_coverage(NULL, &o, &clip, RAST_COVERAGE_U8, out, 4, s, need), RAST_E_NULL);
+    REFUSED(rast_polygon_coverage(&p, NULL, &clip, RAST_COVERAGE_U8, out, 4, s, need), RAST_E_NULL);
+    REFUSED(rast_polygon_coverage(&p, &o, NULL, RAST_COVERAGE_U8, out, 4, s, need), RAST_E_NULL);
+    REFUSED(rast_triangles_coverage(NULL, 1, &o, &clip, RAST_COVERAGE_U8, out, 4, s, need),
+            RAST_E_NULL);
+    o.method = RAST_AA_COUNT_;
+    REFUSED(rast_polygon_coverage(&p, &o, &clip, RAST_COVERAGE_U8, out, 4, s, need), RAST_E_ARG);
+    o.method = RAST_AA_AREA;
+    o.rule = (rast_fill_rule)2;
+    REFUSED(rast_polygon_coverage(&p, &o, &clip, RAST_COVERAGE_U8, out, 4, s, need), RAST_E_ARG);
+    o.rule = RAST_RULE_EVENODD;
+    o.sample = (rast_sample)2;
+    REFUSED(rast_polygon_coverage(&p, &o, &clip, RAST_COVERAGE_U8, out, 4, s, need), RAST_E_ARG);
+    o.sample = RAST_SAMPLE_CENTER;
+    o.subpixel_bits = 17;
+    REFUSED(rast_polygon_coverage(&p, &o, &clip, RAST_COVERAGE_U8, out, 4, s, need),
+            RAST_E_SUBPIXEL);
+    o.subpixel_bits = 4;
+    {
+        rast_point far[3] = {{0, 0}, {RAST_COORD_MAX + 1, 0}, {0, 64}};
+        rast_polygon pf = {far, &three, 1};
+        REFUSED(rast_polygon_coverage(&pf, &o, &clip, RAST_COVERAGE_U8, out, 4, s, need),
+                RAST_E_RANGE);
+        far[1].x = RAST_COORD_MAX; /* in range, but not times 16 with S = 0 */
+        o.method = RAST_AA_SS16;
+        o.subpixel_bits = 0;
+        CHECK(rast_coverage_scratch_size(&o, 3, 4, 4, &need) == RAST_OK);
+        s = scratch_for(need);
+        REFUSED(rast_polygon_coverage(&pf, &o, &clip, RAST_COVERAGE_U8, out, 4, s, need),
+                RAST_E_RANGE);
+        clip.x1 = RAST_MAX_DIM / 8;
+        REFUSED(rast_polygon_coverage(&p, &o, &clip, RAST_COVERAGE_U8, out, 4, s, need),
+                RAST_E_SIZE);
+        clip.x1 = 4;
+    }
+    {
+        rast_rect huge = {-RAST_MAX_DIM - 1, 0, 4, 4};
+        o.method = RAST_AA_AREA;
+        REFUSED(rast_polygon_coverage(&p, &o, &huge, RAST_COVERAGE_U8, out, 4, s, need),
+                RAST_E_SIZE);
+    }
+    CHECK(rast_coverage_scratch_size(&o, RAST_MAX_POINTS + 1, 4, 4, &need) == RAST_E_TOO_MANY);
+    CHECK(rast_coverage_scratch_size(&o, 3, -1, 4, &need) == RAST_E_SIZE);
+    CHECK(rast_coverage_scratch_size(&o, 3, 4, 4, NULL) == RAST_E_NULL);
+    CHECK(rast_aa_method_info(RAST_AA_SS8, &name) == RAST_OK && strcmp(name, "ss8") == 0);
+    CHECK(rast_aa_method_info(RAST_AA_COUNT_, &name) == RAST_E_ARG);
+    /* an empty clip writes nothing and is not an error */
+    clip.x1 = 0;
+    o.subpixel_bits = 4;
+    CHECK(rast_coverage_scratch_size(&o, 3, 0, 4, &need) == RAST_OK);
+    s = scratch_for(need);
+    REFUSED(rast_polygon_coverage(&p, &o, &clip, RAST_COVERAGE_U8, out, 4, s, need), RAST_OK);
+#undef REFUSED
+}
+
+/* ---- spans with coverage values ---------------------------------------------------- */
+
+typedef struct span_img {
+    uint8_t img[H][W];
+    rast_rect clip;
+    int32_t y, x1, calls, ok;
+} span_img;
+
+static void take_span(void *user, int32_t y, int32_t x0, int32_t x1, const uint8_t *v)
+{
+    span_img *s = (span_img *)user;
+    int32_t x;
+    s->calls++;
+    if (x0 >= x1 || y < s->clip.y0 || y >= s->clip.y1 || x0 < s->clip.x0 || x1 > s->clip.x1 ||
+        (y == s->y && x0 <= s->x1) || y < s->y) {
+        s->ok = 0;
+        return;
+    }
+    for (x = x0; x < x1; x++) {
+        if (!v[x - x0]) s->ok = 0;
+        s->img[y - s->clip.y0][x - s->clip.x0] = v[x - x0];
+    }
+    s->y = y;
+    s->x1 = x1;
+}
+
+static void test_spans(void)
+{
+    int iter, n = check_count(150);
+    for (iter = 0; iter < n; iter++) {
+        rast_point pts[9];
+        uint32_t size = 9;
+        rast_polygon p = {pts, &size, 1};
+        rast_coverage_opts o;
+        rast_rect clip;
+        uint8_t want[H][W];
+        span_img s;
+        size_t need;
+        unsigned char *sc;
+        int32_t i, m = (int32_t)(rng() % 3);
+        for (i = 0; i < 9; i++) {
+            pts[i].x = (int32_t)(rng() % ((W + 4) * 16)) - 32;
+            pts[i].y = (int32_t)(rng() % ((H + 4) * 16)) - 32;
+        }
+        memset(&o, 0, sizeof o);
+        o.method = m == 0 ? RAST_AA_AREA : m == 1 ? RAST_AA_SS4 : RAST_AA_ACCUMULATE;
+        o.rule = (rast_fill_rule)(rng() % 2);
+        o.subpixel_bits = 4;
+        clip.x0 = (int32_t)(rng() % 3) - 1;
+        clip.y0 = (int32_t)(rng() % 3) - 1;
+        clip.x1 = clip.x0 + W - 2;
+        clip.y1 = clip.y0 + H - 2;
+        CHECK(cover(&p, NULL, 0, &o, &clip, RAST_COVERAGE_U8, &want[0][0], W) == RAST_OK);
+        memset(&s, 0, sizeof s);
+        s.clip = clip;
+        s.y = INT32_MIN;
+        s.ok = 1;
+        CHECK(rast_coverage_scratch_size(&o, 9, W - 2, H - 2, &need) == RAST_OK);
+        sc = scratch_for(need);
+        CHECK(rast_polygon_coverage_spans(&p, &o, &clip, take_span, &s, sc, need) == RAST_OK);
+        CHECK(scratch_guard_ok(sc, need));
+        CHECK(s.ok);
+        for (i = 0; i < H - 2; i++) CHECK(memcmp(s.img[i], want[i], W - 2) == 0);
+        /* errors: nothing handed on */
+        s.calls = 0;
+        CHECK(rast_polygon_coverage_spans(&p, &o, &clip, NULL, &s, sc, need) == RAST_E_NULL);
+        CHECK(rast_polygon_coverage_spans(&p, &o, &clip, take_span, &s, sc, need - 1) ==
+              RAST_E_SCRATCH);
+        o.rule = (rast_fill_rule)5;
+        CHECK(rast_polygon_coverage_spans(&p, &o, &clip, take_span, &s, sc, need) == RAST_E_ARG);
+        CHECK(s.calls == 0);
+    }
+}
+
+int main(void)
+{
+    test_rectangles();
+    test_ss();
+    test_mesh();
+    test_translation();
+    test_errors();
+    test_spans();
+    return check_report("test_coverage");
+}

@@ -1,0 +1,309 @@
+"""Anti-aliased coverage (DESIGN.md section 1a) against the exact oracles of
+tests/oracle_coverage.py: "area" within its documented bound of
+floor(a*M + 1/2) (|out - M a| <= 1/2 everywhere), every "ssK" bit for bit,
+"accumulate" where nothing overlaps, triangle batches as one region."""
+
+import math
+from fractions import Fraction
+
+import numpy as np
+import pytest
+from hypothesis import given, settings, strategies as st
+
+import oracle_coverage as oc
+import rastrum
+import strategies as S_
+
+F = Fraction
+M_OF = {np.uint8: 255, np.uint16: 65535}
+
+
+def _n_m(rings, subpixel_bits, triangles=False):
+    """Edges and crossing pairs of the whole scene: at least the n and m of
+    any row (the bound of rastrum.h is per row)."""
+    rl = oc.oracle.snapped_rings(rings, subpixel_bits)
+    edges = oc._edges(rl)
+    m = 0
+    for p in range(len(edges)):
+        for q in range(p + 1, len(edges)):
+            y = oc._crossing_y(edges[p], edges[q])
+            if y is not None and max(edges[p][1], edges[q][1]) < y < min(edges[p][3], edges[q][3]):
+                m += 1
+    return len(edges), m
+
+
+def check_area(out, exact, M, n, m, what):
+    """out == floor(a M + 1/2), except at a tie within the bound, where it
+    may be one level off; and always |out - M a| <= 1/2 + bound."""
+    bound = F(n + m + 1, 2 ** 58) * M
+    bad = []
+    for (j, i), a in np.ndenumerate(exact):
+        v = int(out[j, i])
+        want = oc.level(a, M)
+        if v == want:
+            continue
+        x = a * M + F(1, 2)
+        near = abs(x - round(x)) <= bound
+        if not (near and abs(v - want) == 1 and abs(v - a * M) <= F(1, 2) + bound):
+            bad.append(((j, i), v, want, float(a)))
+    assert not bad, "%s: %d pixel(s) off, first: %s" % (what, len(bad), bad[:5])
+
+
+def exact_area(rings, shape, rule, s, triangles=False):
+    return oc.coverage_exact(rings, shape, rule=rule, subpixel_bits=s, triangles=triangles)
+
+
+# ---- the oracle checks itself ------------------------------------------------
+
+@settings(max_examples=S_.examples(30))
+@given(st.integers(1, 7), st.integers(1, 7), st.integers(3, 9), st.integers(0, 2 ** 32 - 1))
+def test_oracle_slabs_equal_clipping_on_simple_polygons(h, w, n, seed):
+    """Two independent exact references agree where both apply: a convex
+    polygon (angles sorted around a centre) and a hole inside it."""
+    rnd = np.random.default_rng(seed)
+    c = rnd.uniform(0, [w, h])
+    ang = np.sort(rnd.uniform(0, 2 * np.pi, n))
+    r = rnd.uniform(0.3, 3.0)
+    outer = np.stack([c[0] + r * np.cos(ang), c[1] + r * np.sin(ang)], 1)
+    g = outer.mean(axis=0)  # inside the convex polygon: the hole stays inside
+    hole = (outer - g) * 0.4 + g
+    for rl in ([outer], [outer, hole[::-1]]):
+        for rule in ("evenodd", "nonzero"):
+            a = oc.coverage_exact(rl, (h, w), rule=rule)
+            b = oc.coverage_clip(rl, (h, w))
+            assert (a == b).all()
+
+
+def test_oracle_overlaps():
+    sq = [(1, 1), (3, 1), (3, 3), (1, 3)]
+    once = oc.coverage_exact([sq], (4, 4))
+    assert once[1, 1] == 1 and once[0, 0] == 0 and sum(once.ravel()) == 4
+    assert (oc.coverage_exact([sq, sq], (4, 4), rule="nonzero") == once).all()
+    assert (oc.coverage_exact([sq, sq], (4, 4), rule="evenodd") == 0).all()
+    # a pentagram: its centre pentagon is winding 2 (in under non-zero only)
+    star = [(10 + 8 * math.sin(k * 4 * math.pi / 5), 10 - 8 * math.cos(k * 4 * math.pi / 5))
+            for k in range(5)]
+    eo = oc.coverage_exact([star], (20, 20), rule="evenodd")
+    nz = oc.coverage_exact([star], (20, 20), rule="nonzero")
+    assert sum(nz.ravel()) > sum(eo.ravel())
+    assert nz[9, 9] == 1 and eo[9, 9] == 0
+
+
+# ---- area --------------------------------------------------------------------
+
+DTYPES = [np.uint8, np.uint16]
+
+
+@settings(max_examples=S_.examples(60))
+@given(st.data(), st.sampled_from([0, 2, 8]), st.sampled_from(["evenodd", "nonzero"]),
+       st.sampled_from(DTYPES))
+def test_area_equals_oracle(data, s, rule, dtype):
+    rl, shape = data.draw(S_.scenes(s, 0.5, max_h=10, max_w=10))
+    out = rastrum.polygon_coverage(rl, shape, rule=rule, subpixel_bits=s, dtype=dtype)
+    assert out.dtype == dtype and out.shape == shape
+    n, m = _n_m(rl, s)
+    check_area(out, exact_area(rl, shape, rule, s), M_OF[dtype], n, m, S_.lit(rl))
+
+
+def overlap_scenes():
+    sq = [(1.25, 1.5), (6.5, 1.5), (6.5, 5.75), (1.25, 5.75)]
+    star = [(5 + 4.3 * math.sin(k * 4 * math.pi / 5), 5 - 4.3 * math.cos(k * 4 * math.pi / 5))
+            for k in range(5)]
+    rnd = np.random.default_rng(12)
+    tris = [rnd.uniform(0, 10, (3, 2)) for _ in range(12)]
+    circle = [(5 + 3.7 * math.cos(t), 5 + 3.7 * math.sin(t)) for t in np.linspace(0, 6.28, 40)]
+    return {
+        "square twice": [sq, sq],
+        "square and its reverse": [sq, sq[::-1]],
+        "pentagram": [star],
+        "12 overlapping triangles in one path": tris,
+        "circle with a coincident half": [circle, circle[:20]],
+        "collinear overlapping edges": [[(1, 1), (8, 1), (8, 4), (1, 4)],
+                                        [(3, 1), (9, 1), (9, 7), (3, 7)]],
+    }
+
+
+@pytest.mark.parametrize("rule", ["evenodd", "nonzero"])
+@pytest.mark.parametrize("name", sorted(overlap_scenes()))
+def test_area_overlap_scenes(name, rule):
+    rl = overlap_scenes()[name]
+    for dtype in DTYPES:
+        out = rastrum.polygon_coverage(rl, (10, 10), rule=rule, dtype=dtype)
+        n, m = _n_m(rl, 8)
+        check_area(out, exact_area(rl, (10, 10), rule, 8), M_OF[dtype], n, m, name)
+
+
+def test_area_float_is_the_fixed_point_value():
+    rl = overlap_scenes()["pentagram"]
+    exact = exact_area(rl, (10, 10), "nonzero", 8)
+    n, m = _n_m(rl, 8)
+    f64 = rastrum.polygon_coverage(rl, (10, 10), rule="nonzero", dtype=np.float64)
+    f32 = rastrum.polygon_coverage(rl, (10, 10), rule="nonzero", dtype=np.float32)
+    assert f64.dtype == np.float64 and f32.dtype == np.float32
+    for (j, i), a in np.ndenumerate(exact):
+        assert abs(F(float(f64[j, i])) - a) <= F(n + m + 2, 2 ** 58) + F(1, 2 ** 52)
+        assert abs(F(float(f32[j, i])) - a) <= F(1, 2 ** 23)
+
+
+@settings(max_examples=S_.examples(30))
+@given(st.integers(0, 4), st.integers(-3, 3), st.integers(-3, 3), st.integers(1, 3))
+def test_area_corners_and_range_limit(s, dx, dy, k):
+    """Vertices on pixel corners and edges, and rings reaching the range's
+    ends (the visible part must still be exact)."""
+    lim = S_.limit_px(s)
+    rl = [[(-lim, -lim), (lim, 2 + dy * 0.5), (1 + dx * 0.5, lim)],
+          [(1 + k, 1), (4, 1 + k * 0.5), (4, 5), (1, 4)]]
+    for rule in ("evenodd", "nonzero"):
+        out = rastrum.polygon_coverage(rl, (6, 6), rule=rule, subpixel_bits=s, dtype=np.uint16)
+        n, m = _n_m(rl, s)
+        check_area(out, exact_area(rl, (6, 6), rule, s), 65535, n, m, rl)
+
+
+def test_area_examples():
+    # half a pixel, a full one, none; a rectangle [0.5, 2) x [0, 1)
+    assert rastrum.polygon_coverage([(0.5, 0), (2, 0), (2, 1), (0.5, 1)], (1, 3)).tolist() == \
+        [[128, 255, 0]]
+    # a triangle over one pixel: half of it
+    assert rastrum.polygon_coverage([(0, 0), (1, 0), (0, 1)], (1, 1), dtype=np.float64)[0, 0] == 0.5
+    # empty input, empty shape
+    assert rastrum.polygon_coverage([], (2, 3)).tolist() == [[0] * 3] * 2
+    assert rastrum.polygon_coverage([(0, 0), (1, 0), (0, 1)], (0, 4)).shape == (0, 4)
+
+
+# ---- supersampling -------------------------------------------------------------
+
+@settings(max_examples=S_.examples(60))
+@given(st.data(), st.sampled_from([0, 1, 3, 8]), st.sampled_from([0.5, 0.0]),
+       st.sampled_from(["evenodd", "nonzero"]), st.sampled_from([2, 4, 8, 16]),
+       st.sampled_from(DTYPES))
+def test_ss_equals_binary_oracle_on_finer_grid(data, s, o, rule, k, dtype):
+    rl, shape = data.draw(S_.scenes(max(s, 4), o, max_h=8, max_w=8))
+    if k == 16:
+        shape = (min(shape[0], 4), min(shape[1], 4))
+    try:
+        out = rastrum.polygon_coverage(rl, shape, rule=rule, method="ss%d" % k, subpixel_bits=s,
+                                       sample_offset=o, dtype=dtype)
+    except rastrum.InputError:
+        # scaled by k, a far vertex may leave the range (documented)
+        lim = S_.COORD_MAX >> max(0, k.bit_length() - 1 - s)
+        pts = [c for r in oc.oracle.snapped_rings(rl, s) for p in r for c in p]
+        assert any(abs(c * (1 << s)) > lim for c in pts)
+        return
+    want = oc.coverage_ss(rl, shape, k, rule=rule, subpixel_bits=s, sample_offset=o,
+                          M=M_OF[dtype])
+    S_.assert_same(out.astype(np.int64), want, "ss%d %s" % (k, S_.lit(rl)))
+
+
+def test_ss_float():
+    rl = overlap_scenes()["pentagram"]
+    f = rastrum.polygon_coverage(rl, (10, 10), method="ss4", rule="nonzero", dtype=np.float64)
+    counts = oc.coverage_ss(rl, (10, 10), 4, rule="nonzero", M=16)  # count itself
+    assert (f * 16 == counts).all()
+
+
+# ---- accumulate ----------------------------------------------------------------
+
+@settings(max_examples=S_.examples(30))
+@given(st.integers(1, 9), st.integers(1, 9), st.integers(3, 9), st.integers(0, 2 ** 32 - 1),
+       st.sampled_from(["evenodd", "nonzero"]), st.booleans())
+def test_accumulate_exact_without_overlaps(h, w, n, seed, rule, hole):
+    rnd = np.random.default_rng(seed)
+    c = rnd.uniform(0, [w, h])
+    ang = np.sort(rnd.uniform(0, 2 * np.pi, n))
+    outer = np.stack([c[0] + 3 * np.cos(ang), c[1] + 3 * np.sin(ang)], 1)
+    g = outer.mean(axis=0)
+    rl = [outer, ((outer - g) * 0.3 + g)[::-1]] if hole else [outer]
+    out = rastrum.polygon_coverage(rl, (h, w), rule=rule, method="accumulate")
+    nn, m = _n_m(rl, 8)
+    check_area(out, exact_area(rl, (h, w), rule, 8), 255, nn, m, rl)
+
+
+def test_accumulate_is_wrong_on_overlaps_as_documented():
+    sc = overlap_scenes()
+    twice = rastrum.polygon_coverage(sc["square twice"], (10, 10), rule="evenodd", method="accumulate")
+    area = rastrum.polygon_coverage(sc["square twice"], (10, 10), rule="evenodd")
+    assert (area == 0).all() and twice.max() > 0  # the ghost outline
+    star_acc = rastrum.polygon_coverage(sc["pentagram"], (10, 10), rule="nonzero", method="accumulate")
+    star = rastrum.polygon_coverage(sc["pentagram"], (10, 10), rule="nonzero")
+    assert (star_acc != star).any()
+
+
+# ---- triangle batches: one region ------------------------------------------------
+
+def test_triangulated_square_has_no_seams():
+    rnd = np.random.default_rng(5)
+    g = np.linspace(1, 9, 7)
+    pts = np.array([[x, y] for y in g for x in g]) + rnd.uniform(-0.3, 0.3, (49, 2)) * \
+        np.array([[(0 < i % 7 < 6) and (0 < i // 7 < 6)] for i in range(49)])
+    tris = []
+    for r in range(6):
+        for c in range(6):
+            a, b, d, e = r * 7 + c, r * 7 + c + 1, r * 7 + c + 8, r * 7 + c + 7
+            t1, t2 = [pts[a], pts[b], pts[d]], [pts[a], pts[d], pts[e]]
+            tris += [t1, t2[::-1] if (r + c) % 2 else t2]  # mixed orientations
+    for method in ("area", "ss4", "accumulate"):
+        out = rastrum.triangles_coverage(np.array(tris), (10, 10), method=method)
+        assert (out[1:9, 1:9] == 255).all(), method
+        assert out[0].sum() == 0 and out[:, 0].sum() == 0
+    exact = exact_area(tris, (10, 10), "nonzero", 8, triangles=True)
+    assert sum(exact.ravel()) == 64
+
+
+@settings(max_examples=S_.examples(40))
+@given(st.integers(1, 8), st.integers(1, 8), st.integers(1, 6), st.integers(0, 2 ** 32 - 1),
+       st.sampled_from(["area", "ss2", "ss8"]))
+def test_triangles_union_equals_oracle(h, w, n, seed, method):
+    rnd = np.random.default_rng(seed)
+    tris = rnd.uniform(-1, 9, (n, 3, 2))
+    if n > 1:
+        tris[1] = tris[0][[0, 2, 1]]  # a triangle twice, reversed: still the union
+    out = rastrum.triangles_coverage(tris, (h, w), method=method)
+    if method == "area":
+        nn, m = _n_m(list(tris), 8)
+        check_area(out, exact_area(list(tris), (h, w), "nonzero", 8, triangles=True), 255, nn, m,
+                   tris.tolist())
+    else:
+        k = int(method[2:])
+        want = oc.coverage_ss(list(tris), (h, w), k, triangles=True)
+        S_.assert_same(out.astype(np.int64), want, tris.tolist())
+
+
+# ---- entry points and bad input ----------------------------------------------
+
+def test_algorithms_table():
+    for entry in ("polygon_coverage", "triangles_coverage"):
+        assert set(rastrum.ALGORITHMS[entry]) == {"area", "ss2", "ss4", "ss8", "ss16", "accumulate"}
+
+
+@pytest.mark.parametrize("kw, text", [
+    (dict(method="ss3"), "area, ss2, ss4, ss8, ss16, accumulate"),
+    (dict(method=None), "choose one of"),
+    (dict(rule="odd"), "rule"),
+    (dict(dtype=np.int32), "dtype"),
+    (dict(subpixel_bits=17), "subpixel_bits"),
+    (dict(sample_offset=0.25), "sample_offset"),
+])
+def test_bad_options(kw, text):
+    with pytest.raises(ValueError, match=text):
+        rastrum.polygon_coverage([(0, 0), (1, 0), (0, 1)], (2, 2), **kw)
+    kw.pop("rule", None)
+    if kw:
+        with pytest.raises(ValueError, match=text):
+            rastrum.triangles_coverage([[(0, 0), (1, 0), (0, 1)]], (2, 2), **kw)
+
+
+def test_bad_geometry():
+    with pytest.raises(ValueError, match="NaN"):
+        rastrum.polygon_coverage([(0, 0), (1, float("nan")), (0, 1)], (2, 2))
+    with pytest.raises(ValueError, match="outside the range"):
+        rastrum.polygon_coverage([(0, 0), (1e9, 0), (0, 1)], (2, 2))
+    with pytest.raises(ValueError, match="triangle 0, vertex 2"):
+        rastrum.triangles_coverage([[(0, 0), (1, 0), (0, float("inf"))]], (2, 2))
+    with pytest.raises(ValueError, match="shape"):
+        rastrum.polygon_coverage([(0, 0), (1, 0), (0, 1)], (-1, 2))
+    with pytest.raises(ValueError, match="shape"):
+        rastrum.triangles_coverage(np.zeros((2, 3)), (2, 2))
+    # ss16 with S = 0 scales the vertices by 16: the range shrinks by 16
+    with pytest.raises(ValueError, match="range"):
+        rastrum.polygon_coverage([(0, 0), (2 ** 26, 0), (0, 1)], (2, 2), method="ss16",
+                                 subpixel_bits=0)

@@ -15,6 +15,9 @@
 #   make display-example a 320x240 RGB565 display fed spans band by band (run by test-c)
 #   make fuzz-check      libFuzzer targets (clang): the corpus, then FUZZ_SECONDS=20 each
 #   make fuzz-regress    the fuzz targets over the corpus without libFuzzer (gcc, sanitizers)
+#   make fuzz-long       each libFuzzer target for FUZZ_SECONDS (default 600), two at a time;
+#                        executions and coverage to bench/fuzz-long.txt, corpus merged (-merge=1)
+#   make race-check      seed fills racing a writer thread, under ASan+UBSan and under TSan
 
 CC      ?= cc
 PYTHON  ?= python3
@@ -54,7 +57,7 @@ PY_CLEAN := rm -rf build/lib.* build/temp.* build/bdist.*
 C_TESTS := $(patsubst tests/c/%.c,build/tests/%,$(wildcard tests/c/test_*.c))
 SAN     := -fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer -g
 
-.PHONY: fuzz-check fuzz-regress display-example valgrind valgrind-py firmware-check cross-check all lib test test-c test-install test-py demo asan asan-c asan-py strict install uninstall example clean
+.PHONY: race-check fuzz-long fuzz-check fuzz-regress display-example valgrind valgrind-py firmware-check cross-check all lib test test-c test-install test-py demo asan asan-c asan-py strict install uninstall example clean
 
 all: lib
 lib: build/librastrum.a build/librastrum.so
@@ -214,6 +217,35 @@ fuzz-check:
 	      "in $(FUZZ_SECONDS) s, 0 crashes"; \
 	  else tail -40 build/fuzz/$$t.log; echo "$$t: crashed (build/fuzz/$$t.log)"; exit 1; fi; \
 	done
+
+# fuzz-long: each target for FUZZ_SECONDS (default 10 minutes), FUZZ_JOBS
+# at a time, niced; the logs go to FUZZ_LOG_DIR and one line per target
+# (executions, coverage, corpus size, crashes) to FUZZ_LONG_OUT.  New
+# inputs are merged into the committed corpus with -merge=1 (which keeps
+# only inputs that add coverage, so the corpus stays small).
+FUZZ_JOBS ?= 2
+FUZZ_LOG_DIR ?= build/fuzz-long
+FUZZ_LONG_OUT ?= bench/fuzz-long.txt
+fuzz-long:
+	@FUZZ_CC="$(FUZZ_CC)" FUZZ_SECONDS="$(if $(filter command line,$(origin FUZZ_SECONDS)),$(FUZZ_SECONDS),600)" \
+	  FUZZ_JOBS="$(FUZZ_JOBS)" FUZZ_LOG_DIR="$(FUZZ_LOG_DIR)" FUZZ_LONG_OUT="$(FUZZ_LONG_OUT)" \
+	  tools/fuzz-long.sh $(FUZZ_TARGETS)
+
+# The racing-writer test (tests/race/): a thread writes the target while
+# rast_flood_fill / rast_boundary_fill run, RACE_SECONDS in all, under
+# ASan + UBSan ($(CC)) and under TSan (clang), the writer's race on the
+# pixels being the one suppression (tests/race/tsan.supp).
+RACE_SECONDS ?= 2
+RACE_FLAGS := -std=c99 -D_POSIX_C_SOURCE=200809L -Wall -Wextra -Werror -O1 -g -pthread \
+              -Icsrc/include -Icsrc/src
+race-check:
+	@mkdir -p build/race
+	@$(CC) $(RACE_FLAGS) $(SAN) tests/race/test_race.c $(SRC) -o build/race/test_race_asan
+	@echo "== build/race/test_race_asan (asan+ubsan)"; ./build/race/test_race_asan $(RACE_SECONDS)
+	@$(FUZZ_CC) $(RACE_FLAGS) -fsanitize=thread tests/race/test_race.c $(SRC) -o build/race/test_race_tsan
+	@echo "== build/race/test_race_tsan (tsan)"; \
+	  TSAN_OPTIONS="suppressions=tests/race/tsan.supp halt_on_error=1 exitcode=66" \
+	  ./build/race/test_race_tsan $(RACE_SECONDS)
 
 # ---- install ----------------------------------------------------------------------
 build/rastrum.pc: rastrum.pc.in csrc/include/rastrum.h

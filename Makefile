@@ -13,7 +13,7 @@
 #   make uninstall       the reverse
 #   make example         the pkg-config example (after make install)
 #   make display-example a 320x240 RGB565 display fed spans band by band (run by test-c)
-#   make fuzz-check      libFuzzer targets (clang): the corpus, then FUZZ_SECONDS=20 each
+#   make fuzz-check      libFuzzer targets (clang): the corpus, then FUZZ_SECONDS=20 each (CI: 30)
 #   make fuzz-regress    the fuzz targets over the corpus without libFuzzer (gcc, sanitizers)
 #   make fuzz-long       each libFuzzer target for FUZZ_SECONDS (default 600), two at a time;
 #                        executions and coverage to bench/fuzz-long.txt, corpus merged (-merge=1)
@@ -164,8 +164,12 @@ valgrind: $(C_TESTS)
 # valgrind would not follow into), PYTHONMALLOC=malloc so that memcheck
 # sees every allocation, and the suppressions of CPython's own noise
 # (tools/valgrind-python.supp; never a frame of rastrum).  A few minutes.
-VALGRIND_PY_TESTS ?= tests/test_bad_input.py tests/test_threads.py tests/test_snapping.py
-VALGRIND_PY_K ?= NaN or empty or Fortran or snap
+# Issue 18 adds the depth-buffer rows (the heap overflow), the checked
+# depth property, exact snapping and the public-API fuzz test.
+VALGRIND_PY_TESTS ?= tests/test_bad_input.py tests/test_threads.py tests/test_snapping.py \
+                     tests/test_hardening2.py tests/test_fuzz_api.py
+VALGRIND_PY_K ?= NaN or empty or Fortran or snap or (other_bad_input and depth) or depth_int64 \
+                 or depth_reshaped or depth_set_by_hand or half_minus or public_api
 valgrind-py:
 	rm -rf build/valgrind-py
 	$(PY_CLEAN)

@@ -479,6 +479,14 @@ OTHER = [
      rastrum.InputError, r"11 pixels.*max_pixels=10"),
     ("line_pixels", "max_pixels=11 for 11", lambda: rastrum.line_pixels((0, 0), (10, 0), subpixel_bits=0,
                                                                         sample_offset=0, max_pixels=11), None, None),
+    # found by test_fuzz_api: a 2-D memoryview clip raised NotImplementedError, an array precision
+    # ValueError (truth value of an array)
+    ("line_pixels", "clip a 2-D memoryview", lambda: rastrum.line_pixels((0, 0), (5, 0), clip=memoryview(
+        np.zeros((2, 2), np.int64))), rastrum.InputError, r"clip"),
+    ("line_pixels", "clip a 1-D memoryview", lambda: rastrum.line_pixels((0, 0), (5, 0), clip=memoryview(
+        np.array([0, 0, 3, 3], np.int64))), None, None),
+    ("Canvas.fill_triangles", "precision an array", lambda: rastrum.Canvas(4, 4).fill_triangles(
+        [[(0, 0), (4, 0), (0, 4)]], 7, precision=np.zeros(3)), rastrum.InputError, r"precision"),
     ("line_pixels", "max_pixels=-1", lambda: rastrum.line_pixels((0, 0), (1, 0), max_pixels=-1),
      rastrum.InputError, r"max_pixels"),
     ("line_pixels", "max_pixels=1.5", lambda: rastrum.line_pixels((0, 0), (1, 0), max_pixels=1.5),

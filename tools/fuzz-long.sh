@@ -11,6 +11,7 @@ set -uo pipefail
 : "${FUZZ_CC:=clang}" "${FUZZ_SECONDS:=600}" "${FUZZ_JOBS:=2}"
 : "${FUZZ_LOG_DIR:=build/fuzz-long}" "${FUZZ_LONG_OUT:=bench/fuzz-long.txt}"
 mkdir -p "$FUZZ_LOG_DIR" build/fuzz-long-bin
+rev=$(git rev-parse --short HEAD 2>/dev/null)  # the sources the binaries are built from
 for t in "$@"; do
   "$FUZZ_CC" -std=c99 -Wall -Wextra -Werror -g -O1 -fsanitize=fuzzer,address,undefined \
     -fno-sanitize-recover=all -Icsrc/include -Icsrc/src -Itests/c tests/fuzz/$t.c csrc/src/*.c \
@@ -33,7 +34,7 @@ wait
 status=0
 {
   echo "# make fuzz-long: $(date -u '+%Y-%m-%d %H:%M UTC'), FUZZ_SECONDS=$FUZZ_SECONDS each, $FUZZ_JOBS at a time (nice 19), $(nproc) cores"
-  echo "# $($FUZZ_CC --version | head -1); libFuzzer + ASan + UBSan; git $(git rev-parse --short HEAD 2>/dev/null)"
+  echo "# $($FUZZ_CC --version | head -1); libFuzzer + ASan + UBSan; built from git $rev"
   printf '# %-16s %12s %8s %8s %10s %8s %s\n' target executions exec/s cov ft corpus crashes
   for t in "$@"; do
     log="$FUZZ_LOG_DIR/$t.log"

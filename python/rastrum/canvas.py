@@ -292,7 +292,7 @@ class Canvas:
         """
         opts = _triangles.tri_opts(algorithm, subpixel_bits, sample_offset, rounding, boundary)
         batch = _triangles.tris_f64(tris)
-        if vertex_colors is None and depth is None and precision == "exact" and (
+        if vertex_colors is None and depth is None and isinstance(precision, str) and precision == "exact" and (
                 color is None or np.ndim(color) < 2):
             if color is None:
                 raise InputError("fill_triangles needs color or vertex_colors")

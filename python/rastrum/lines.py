@@ -70,7 +70,7 @@ def _clip_rect(clip):
         rect.x0, rect.y0, rect.x1, rect.y1 = -m, -m, m, m
         return rect
     try:
-        values = [v for v in clip]
+        values = [v for v in _core.as_numpy(clip)]
     except TypeError:
         values = None
     if (

@@ -18,8 +18,11 @@
 #   make single          build/single/rastrum.[ch]: the whole core in one file
 #   make test-single     the C tests against the single-file build
 #   make display-qemu    the display example on an emulated Cortex-M (qemu-system-arm)
-#   make fuzz-check      libFuzzer targets (clang): the corpus, then FUZZ_SECONDS=20 each
+#   make fuzz-check      libFuzzer targets (clang): the corpus, then FUZZ_SECONDS=20 each (CI: 30)
 #   make fuzz-regress    the fuzz targets over the corpus without libFuzzer (gcc, sanitizers)
+#   make fuzz-long       each libFuzzer target for FUZZ_SECONDS (default 600), two at a time;
+#                        executions and coverage to bench/fuzz-long.txt, corpus merged (-merge=1)
+#   make race-check      seed fills racing a writer thread, under ASan+UBSan and under TSan
 
 CC      ?= cc
 
@@ -82,7 +85,7 @@ $(CURDIR)/.venv/bin/python:
 C_TESTS := $(patsubst tests/c/%.c,build/tests/%,$(wildcard tests/c/test_*.c))
 SAN     := -fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer -g
 
-.PHONY: bench docs bench-precision bench-precision-callgrind single test-single display-qemu fuzz-check fuzz-regress display-example valgrind valgrind-py firmware-check cross-check all lib test test-c test-install test-py demo asan asan-c asan-py strict install uninstall example clean
+.PHONY: race-check fuzz-long bench docs bench-precision bench-precision-callgrind single test-single display-qemu fuzz-check fuzz-regress display-example valgrind valgrind-py firmware-check cross-check all lib test test-c test-install test-py demo asan asan-c asan-py strict install uninstall example clean
 
 all: lib
 lib: build/librastrum.a build/librastrum.so
@@ -206,8 +209,12 @@ valgrind: $(C_TESTS)
 # valgrind would not follow into), PYTHONMALLOC=malloc so that memcheck
 # sees every allocation, and the suppressions of CPython's own noise
 # (tools/valgrind-python.supp; never a frame of rastrum).  A few minutes.
-VALGRIND_PY_TESTS ?= tests/test_bad_input.py tests/test_threads.py tests/test_snapping.py
-VALGRIND_PY_K ?= NaN or empty or Fortran or snap
+# Issue 18 adds the depth-buffer rows (the heap overflow), the checked
+# depth property, exact snapping and the public-API fuzz test.
+VALGRIND_PY_TESTS ?= tests/test_bad_input.py tests/test_threads.py tests/test_snapping.py \
+                     tests/test_hardening2.py tests/test_fuzz_api.py
+VALGRIND_PY_K ?= NaN or empty or Fortran or snap or (other_bad_input and depth) or depth_int64 \
+                 or depth_reshaped or depth_set_by_hand or half_minus or public_api
 valgrind-py: | $(VENV)
 	rm -rf build/valgrind-py
 	$(PYTHON) -m pip install --quiet --disable-pip-version-check $(PY_TEST_DEPS)
@@ -301,6 +308,35 @@ fuzz-check:
 	      "in $(FUZZ_SECONDS) s, 0 crashes"; \
 	  else tail -40 build/fuzz/$$t.log; echo "$$t: crashed (build/fuzz/$$t.log)"; exit 1; fi; \
 	done
+
+# fuzz-long: each target for FUZZ_SECONDS (default 10 minutes), FUZZ_JOBS
+# at a time, niced; the logs go to FUZZ_LOG_DIR and one line per target
+# (executions, coverage, corpus size, crashes) to FUZZ_LONG_OUT.  New
+# inputs are merged into the committed corpus with -merge=1 (which keeps
+# only inputs that add coverage, so the corpus stays small).
+FUZZ_JOBS ?= 2
+FUZZ_LOG_DIR ?= build/fuzz-long
+FUZZ_LONG_OUT ?= bench/fuzz-long.txt
+fuzz-long:
+	@FUZZ_CC="$(FUZZ_CC)" FUZZ_SECONDS="$(if $(filter command line,$(origin FUZZ_SECONDS)),$(FUZZ_SECONDS),600)" \
+	  FUZZ_JOBS="$(FUZZ_JOBS)" FUZZ_LOG_DIR="$(FUZZ_LOG_DIR)" FUZZ_LONG_OUT="$(FUZZ_LONG_OUT)" \
+	  tools/fuzz-long.sh $(FUZZ_TARGETS)
+
+# The racing-writer test (tests/race/): a thread writes the target while
+# rast_flood_fill / rast_boundary_fill run, RACE_SECONDS in all, under
+# ASan + UBSan ($(CC)) and under TSan (clang), the writer's race on the
+# pixels being the one suppression (tests/race/tsan.supp).
+RACE_SECONDS ?= 2
+RACE_FLAGS := -std=c99 -D_POSIX_C_SOURCE=200809L -Wall -Wextra -Werror -O1 -g -pthread \
+              -Icsrc/include -Icsrc/src
+race-check:
+	@mkdir -p build/race
+	@$(CC) $(RACE_FLAGS) $(SAN) tests/race/test_race.c $(SRC) -o build/race/test_race_asan
+	@echo "== build/race/test_race_asan (asan+ubsan)"; ./build/race/test_race_asan $(RACE_SECONDS)
+	@$(FUZZ_CC) $(RACE_FLAGS) -fsanitize=thread tests/race/test_race.c $(SRC) -o build/race/test_race_tsan
+	@echo "== build/race/test_race_tsan (tsan)"; \
+	  TSAN_OPTIONS="suppressions=tests/race/tsan.supp halt_on_error=1 exitcode=66" \
+	  ./build/race/test_race_tsan $(RACE_SECONDS)
 
 # ---- install ----------------------------------------------------------------------
 # The .pc file and the CMake package are written for the PREFIX, LIBDIR and

@@ -14,6 +14,8 @@ and options decide which generic rows apply; add explicit rows for inputs
 of its own.
 """
 
+import decimal
+import fractions
 import math
 import re
 
@@ -55,7 +57,7 @@ ARG = {"ring": r"\brings\b", "tris": r"\btris\b", "tri": r"\btri\b", "seg": r"\b
 VCOLORS = np.array([[(255, 0, 0), (0, 255, 0), (0, 0, 255)], [(9, 9, 9), (200, 100, 0), (0, 50, 250)]])
 RCOLORS = np.array([(255, 0, 0), (0, 255, 0), (0, 0, 255), (90, 90, 90)])
 PCOLORS = np.array([(255, 0, 0), (0, 255, 0), (0, 0, 255), (90, 90, 90)])
-DEPTHS = np.array([(1.0, 2.0, 3.0), (-5.0, 0.0, 7.5)])
+DEPTHS = np.array([(1.0, 2.0, 3.0), (-5.0, 0.0, 8.0)])
 EDGE = (1, 2, 3)
 
 
@@ -151,6 +153,25 @@ def _replace(fn):
     return lambda g: g[:-1] + (fn(g[-1]),)
 
 
+def _object_last(value):
+    """The last argument as an object array (Python numbers) with `value`
+    as its last coordinate (issue 18: never converted silently)."""
+    def change(g):
+        a = np.array(np.asarray(g[-1]).tolist(), dtype=object)
+        a.reshape(-1)[-2] = value
+        return g[:-1] + (a,)
+    return change
+
+
+def _as_objects(kind):
+    """The last argument's values as exact objects of `kind` (Fraction,
+    Decimal): the same values, so the same pixels."""
+    def fn(a):
+        a = np.asarray(a)
+        return np.array([kind(v) for v in a.reshape(-1).tolist()], dtype=object).reshape(a.shape)
+    return fn
+
+
 def _strided(a):
     """The same values as a non-contiguous view (every other element)."""
     big = np.zeros(a.shape[:-1] + (2 * a.shape[-1],))
@@ -191,6 +212,22 @@ GEOMETRY = {
     "dtype str": (_replace(lambda a: np.asarray(a).astype(str)),
                   {"seed": SEED_INTS, "*": (RAISE, rastrum.InputError, r"real numbers|pair")}),
     "None": (_replace(lambda a: None), {"seed": SEED_PAIR, "*": (RAISE, rastrum.InputError, r"must")}),
+    # Issue 18: Python ints of any size, bools and strings inside object
+    # arrays, memoryviews, exact numbers.
+    "int 2**1024": (_object_last(2 ** 1024), {"seed": (RAISE, rastrum.InputError, r"outside"),
+                                              "*": (RAISE, rastrum.InputError, r"range")}),
+    "-(int 2**1024)": (_object_last(-2 ** 1024), {"seed": (RAISE, rastrum.InputError, r"outside"),
+                                                  "*": (RAISE, rastrum.InputError, r"range")}),
+    "object array with a bool": (_object_last(True), {"seed": SEED_INTS,
+                                                      "*": (RAISE, rastrum.InputError, r"real numbers.*bool")}),
+    "object array with a str": (_object_last("1.5"), {"seed": SEED_INTS,
+                                                      "*": (RAISE, rastrum.InputError, r"real numbers.*str")}),
+    "object array with None": (_object_last(None), {"seed": SEED_INTS,
+                                                    "*": (RAISE, rastrum.InputError, r"real numbers")}),
+    "memoryview": (_replace(lambda a: memoryview(np.ascontiguousarray(a))), {"*": (SAME,)}),
+    "Fraction objects": (_replace(_as_objects(fractions.Fraction)), {"seed": SEED_INTS, "*": (SAME,)}),
+    "Decimal objects": (_replace(_as_objects(decimal.Decimal)), {"seed": SEED_INTS, "*": (SAME,)}),
+    "longdouble": (_replace(lambda a: np.asarray(a, np.longdouble)), {"seed": SEED_INTS, "*": (SAME,)}),
     "wrong last axis (3)": (_replace(lambda a: np.concatenate([a, a[..., :1]], axis=-1)),
                             {"seed": SEED_PAIR, "*": SHAPE_ERR}),
     "too few vertices": (_replace(lambda a: a[..., :1] if a.ndim == 1 else a[:, :2] if a.ndim == 3
@@ -507,6 +544,65 @@ OTHER = [
                                                                         format="label"),
      rastrum.InputError, r"contiguous"),
     ("Canvas.wrap", "a list", lambda: rastrum.Canvas.wrap([[0, 0], [0, 0]]), rastrum.InputError, r"array"),
+    ("line_pixels", "more than max_pixels", lambda: rastrum.line_pixels((0, 0), (2 ** 27 - 1, 0), subpixel_bits=0),
+     rastrum.InputError, r"max_pixels"),
+    ("line_pixels", "max_pixels=10 for 11", lambda: rastrum.line_pixels((0, 0), (10, 0), subpixel_bits=0,
+                                                                        sample_offset=0, max_pixels=10),
+     rastrum.InputError, r"11 pixels.*max_pixels=10"),
+    ("line_pixels", "max_pixels=11 for 11", lambda: rastrum.line_pixels((0, 0), (10, 0), subpixel_bits=0,
+                                                                        sample_offset=0, max_pixels=11), None, None),
+    # found by test_fuzz_api: a 2-D memoryview clip raised NotImplementedError, an array precision
+    # ValueError (truth value of an array)
+    ("line_pixels", "clip a 2-D memoryview", lambda: rastrum.line_pixels((0, 0), (5, 0), clip=memoryview(
+        np.zeros((2, 2), np.int64))), rastrum.InputError, r"clip"),
+    ("line_pixels", "clip a 1-D memoryview", lambda: rastrum.line_pixels((0, 0), (5, 0), clip=memoryview(
+        np.array([0, 0, 3, 3], np.int64))), None, None),
+    ("Canvas.fill_triangles", "precision an array", lambda: rastrum.Canvas(4, 4).fill_triangles(
+        [[(0, 0), (4, 0), (0, 4)]], 7, precision=np.zeros(3)), rastrum.InputError, r"precision"),
+    ("line_pixels", "max_pixels=-1", lambda: rastrum.line_pixels((0, 0), (1, 0), max_pixels=-1),
+     rastrum.InputError, r"max_pixels"),
+    ("line_pixels", "max_pixels=1.5", lambda: rastrum.line_pixels((0, 0), (1, 0), max_pixels=1.5),
+     rastrum.InputError, r"max_pixels"),
+    ("line_pixels", "max_pixels=True", lambda: rastrum.line_pixels((0, 0), (1, 0), max_pixels=True),
+     rastrum.InputError, r"max_pixels"),
+    ("Canvas.wrap", "a memoryview", lambda: rastrum.Canvas.wrap(memoryview(np.zeros((4, 5), np.uint8))),
+     rastrum.InputError, r"array"),
+    # a row stride past the core's int32 (issue 18: was OverflowError); no
+    # byte of the view is touched
+    ("Canvas.wrap", "row stride 2**31", lambda: rastrum.Canvas.wrap(np.lib.stride_tricks.as_strided(
+        np.zeros(8, np.uint8), shape=(2, 2), strides=(2 ** 31, 1))), rastrum.InputError, r"stride"),
+    # Canvas.depth: a checked property (issue 18: a (1, 4) array overflowed the heap)
+    ("Canvas.depth", "shape (1, 4)", lambda: _set_depth(np.full((1, 4), 2 ** 31 - 1, np.int32)),
+     rastrum.InputError, r"depth.*shape"),
+    ("Canvas.depth", "int64", lambda: _set_depth(np.zeros(SHAPE, np.int64)), rastrum.InputError,
+     r"depth.*int32"),
+    ("Canvas.depth", "float32", lambda: _set_depth(np.zeros(SHAPE, np.float32)), rastrum.InputError,
+     r"depth.*int32"),
+    ("Canvas.depth", "big-endian int32", lambda: _set_depth(np.zeros(SHAPE, ">i4")), rastrum.InputError,
+     r"depth.*byte order"),
+    ("Canvas.depth", "transposed shape", lambda: _set_depth(np.zeros(SHAPE[::-1], np.int32)),
+     rastrum.InputError, r"depth.*shape"),
+    ("Canvas.depth", "Fortran order", lambda: _set_depth(np.asfortranarray(np.zeros(SHAPE, np.int32))),
+     rastrum.InputError, r"depth.*contiguous"),
+    ("Canvas.depth", "column stride", lambda: _set_depth(np.zeros((SHAPE[0], 2 * SHAPE[1]), np.int32)[:, ::2]),
+     rastrum.InputError, r"depth.*contiguous"),
+    ("Canvas.depth", "read-only", lambda: _set_depth(_ro(np.zeros(SHAPE, np.int32))), rastrum.InputError,
+     r"depth.*writable"),
+    ("Canvas.depth", "a list", lambda: _set_depth(np.zeros(SHAPE, np.int32).tolist()), rastrum.InputError,
+     r"depth.*array"),
+    ("Canvas.depth", "a memoryview", lambda: _set_depth(memoryview(np.zeros(SHAPE, np.int32))),
+     rastrum.InputError, r"depth.*array"),
+    ("Canvas.depth", "an int", lambda: _set_depth(0), rastrum.InputError, r"depth"),
+    ("Canvas.depth", "(H, W) int32", lambda: _set_depth(np.zeros(SHAPE, np.int32)), None, None),
+    ("Canvas.depth", "None", lambda: _set_depth(None), None, None),
+    # depths are int32: a fraction is refused, never rounded (0.4 and 0.2 tied)
+    ("Canvas.fill_triangles", "depth 0.4 and 0.2", lambda: rastrum.Canvas(4, 4).fill_triangles(
+        [[(0, 0), (4, 0), (0, 4)]], 7, depth=[[0.4, 0.2, 0]]), rastrum.InputError, r"depth.*integers.*2\*\*"),
+    ("Canvas.fill_triangles", "depth Fraction 1/3", lambda: rastrum.Canvas(4, 4).fill_triangles(
+        [[(0, 0), (4, 0), (0, 4)]], 7, depth=np.array([[fractions.Fraction(1, 3), 0, 0]], object)),
+     rastrum.InputError, r"depth.*integers"),
+    ("Canvas.fill_triangles", "depth 5.0 (an integer)", lambda: rastrum.Canvas(4, 4).fill_triangles(
+        [[(0, 0), (4, 0), (0, 4)]], 7, depth=[[5.0, 1, 2]]), None, None),
     ("Canvas.wrap", "read-only", _wrap_then(_ro), rastrum.InputError, r"writable"),
     ("Canvas.wrap", "broadcast (read-only)", lambda: rastrum.Canvas.wrap(
         np.broadcast_to(np.zeros(3, np.uint8), (4, 5, 3))), rastrum.InputError, r"writable"),
@@ -537,6 +633,20 @@ EXTRA_COVERED |= {"rasterize", "IDENTITY"}
 # Issue 14's names have their rows beside their tests: tests/test_coco.py
 # (every rastrum.coco name) and tests/test_ml.py (masks, labels).
 EXTRA_COVERED |= {"coco", "masks", "labels"}
+
+
+def _set_depth(value):
+    """Set Canvas.depth on a canvas of SHAPE; the buffer and the pixels must
+    be as they were when it raises."""
+    canvas = rastrum.Canvas(SHAPE[1], SHAPE[0], format="gray8")
+    canvas.fill_triangles([[(0, 0), (12, 0), (0, 10)]], 7, depth=[[1, 2, 3]])
+    before, depth = canvas.array.copy(), canvas.depth
+    try:
+        canvas.depth = value
+    except rastrum.InputError:
+        assert canvas.depth is depth and np.array_equal(canvas.array, before)
+        raise
+    assert canvas.depth is value
 
 
 @pytest.mark.parametrize("name,label,call,exc,pattern", OTHER, ids=["%s | %s" % (r[0], r[1]) for r in OTHER])
@@ -678,6 +788,8 @@ OBJ_ROWS = [
      r":5: normal index 2 out of range"),
     ("some faces with normals", "v 0 0 0\nv 1 0 0\nv 0 1 0\nvn 0 0 1\nf 1//1 2//1 3//1\nf 1 2 3\n",
      r": some faces give normals and others do not"),
+    # issue 18: a face past max_face_corners (65536) is refused, not fanned
+    ("face of 65537 corners", "v 0 0 0\nf" + " 1" * 65537 + "\n", r":2: a face of more than max_face_corners"),
 ]
 
 

@@ -187,7 +187,8 @@ enum {
     X(RAST_E_SCRATCH, -9, "scratch buffer too small")                          \
     X(RAST_E_ALIGN, -10, "scratch buffer is not aligned to RAST_SCRATCH_ALIGN") \
     X(RAST_E_TOO_MANY, -11, "more than RAST_MAX_POINTS vertices")             \
-    X(RAST_E_WIDE, -12, "not offered for 64-bit vertices (rast_polygon64: algorithm aet, exact rounding, exact or conservative boundary)")
+    X(RAST_E_WIDE, -12, "not offered for 64-bit vertices (rast_polygon64: algorithm aet, exact rounding, exact or conservative boundary)") \
+    X(RAST_E_WORK, -13, "seed fill stopped: work limit reached or the target changed during the call")
 
 #define RAST__STATUS_ENUM(name, value, text) name = value,
 typedef enum rast_status { RAST_STATUS_LIST(RAST__STATUS_ENUM) RAST_STATUS_END_ = 1 } rast_status;
@@ -1251,9 +1252,12 @@ RAST_API rast_status rast_polygon_coverage_spans(const rast_polygon *polygon,
  * ignored and undefined on return; may be NULL when stack_bytes is 0) holds
  * the span fill's pending row ranges, 16 bytes each.  With less than
  * rast_seed_stack_size() the fill may run out of it; then it goes on in
- * fixed memory and still fills exactly the region (only slower: up to the
- * region's contour length per pixel where the region is one pixel thin).
- * Any size is correct, 0 included.
+ * fixed memory and still fills exactly the region (only slower: about 6
+ * units of work per pixel on a maze of one-pixel corridors, against 1
+ * with enough stack; the proven worst case is far larger, see
+ * rast_seed_fill_limited).  Any size is correct, 0 included.  If another
+ * writer changes the target during the call, see rast_seed_fill_limited:
+ * the call stays in the clip and returns, RAST_OK or RAST_E_WORK.
  *
  * Errors, returned before anything is written: RAST_E_NULL (target,
  * value, or boundary for rast_boundary_fill), RAST_E_SIZE and
@@ -1289,6 +1293,31 @@ RAST_API rast_status rast_flood_fill(const rast_target *target, int32_t x, int32
 RAST_API rast_status rast_boundary_fill(const rast_target *target, int32_t x, int32_t y,
                                         const void *value, const void *boundary,
                                         int connectivity, void *stack, size_t stack_bytes);
+
+/* Either fill with a limit on its work: `boundary` NULL is rast_flood_fill,
+ * else rast_boundary_fill.  A unit of work is a pixel written, or a step
+ * of the fixed-memory fallback (a move, or a contour step per group).  The
+ * span fill (enough stack) does at most one unit per pixel of the region;
+ * the fallback a few per pixel on the inputs measured (bench/maze.c: 6.5
+ * on a maze of one-pixel corridors), but its proven bound is O(area^3),
+ * which max_work lets a caller cut short.  If the work would pass max_work, the fill stops there and
+ * returns RAST_E_WORK, the region partly filled.  *work (when `work` is
+ * not NULL) gets the units done; 0 on an error before the fill.
+ *
+ * A target that changes during the call (another thread, an interrupt or
+ * DMA writing the pixels): every fill still writes only `value`, only to
+ * clip pixels it has just read as inside, never a run past the clip, and
+ * stops with RAST_E_WORK once it has written more pixels than the clip
+ * holds, or the fallback has made more than `area` moves without a write
+ * or a contour walk longer than 4 (area + 1) (none of which can happen on
+ * an unchanging target); the pixels then filled are unspecified.  So a
+ * call's time is bounded by a function of the clip's area whatever
+ * another writer does: O(area) with enough stack, O(area^3) steps (and
+ * max_work) with the fallback.  Other errors as rast_flood_fill. */
+RAST_API rast_status rast_seed_fill_limited(const rast_target *target, int32_t x, int32_t y,
+                                           const void *value, const void *boundary,
+                                           int connectivity, void *stack, size_t stack_bytes,
+                                           uint64_t max_work, uint64_t *work);
 
 #ifdef __cplusplus
 }

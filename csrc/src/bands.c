@@ -41,9 +41,9 @@ static rast_status rast__prim_need(const rast_prim *p, int32_t width, int32_t ro
             npoints += p->polygon.ring_sizes[k];
             if (npoints > RAST_MAX_POINTS) return RAST_E_TOO_MANY;
         }
-        return rast_scratch_size(p->fill, (uint32_t)npoints, width, rows, need);
+        return rast__fill_need(p->fill, (uint32_t)npoints, width, rows, need);
     case RAST_PRIM_TRIANGLES:
-        return rast_tri_scratch_size(p->tri, width, rows, need);
+        return rast__tri_fill_need(p->tri, width, rows, need);
     case RAST_PRIM_POLYLINE:
         if (!p->line) return RAST_E_NULL;
         if ((unsigned)p->line->algorithm >= RAST_LINE_COUNT_) return RAST_E_ALGORITHM;

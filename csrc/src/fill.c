@@ -43,6 +43,30 @@ static rast_status rast__check_polygon(const rast_polygon *p, uint32_t *npoints)
     return RAST_OK;
 }
 
+/* The scratch a fill needs for a clip of width x height: one formula for
+ * every entry point. */
+static size_t rast__need(const rast__algo *al, const rast_fill_opts *opts, uint32_t npoints,
+                         int32_t width, int32_t height)
+{
+    size_t need = al->scratch(npoints, width, height);
+    if (opts->boundary != RAST_BOUNDARY_EXACT)
+        need = rast__size_add(need, rast__bound_scratch(npoints, height));
+    return need;
+}
+
+rast_status rast__fill_need(const rast_fill_opts *opts, uint32_t npoints, int32_t width,
+                            int32_t height, size_t *bytes)
+{
+    const rast__algo *al;
+    rast__grid g;
+    rast_status st = rast__check_opts(opts, &g, &al);
+    if (st != RAST_OK) return st;
+    if (width < 0 || height < 0) return RAST_E_SIZE;
+    if (npoints > RAST_MAX_POINTS) return RAST_E_TOO_MANY;
+    *bytes = rast__need(al, opts, npoints, width, height);
+    return RAST_OK;
+}
+
 rast_status rast_scratch_size(const rast_fill_opts *opts, uint32_t npoints,
                               int32_t width, int32_t height, size_t *bytes)
 {
@@ -54,11 +78,7 @@ rast_status rast_scratch_size(const rast_fill_opts *opts, uint32_t npoints,
     if (st != RAST_OK) return st;
     if (width < 0 || height < 0 || width > RAST_MAX_DIM || height > RAST_MAX_DIM)
         return RAST_E_SIZE;
-    if (npoints > RAST_MAX_POINTS) return RAST_E_TOO_MANY;
-    *bytes = al->scratch(npoints, width, height);
-    if (opts->boundary != RAST_BOUNDARY_EXACT)
-        *bytes = rast__size_add(*bytes, rast__bound_scratch(npoints, height));
-    return RAST_OK;
+    return rast__fill_need(opts, npoints, width, height, bytes);
 }
 
 /* Check the polygon, options and scratch for a clip; run the filler. */
@@ -79,9 +99,7 @@ static rast_status rast__fill(const void *polygon, const rast_fill_opts *opts,
     if (st != RAST_OK) return st;
     st = rast__check_polygon(poly, &npoints);
     if (st != RAST_OK) return st;
-    need = al->scratch(npoints, clip->x1 - clip->x0, clip->y1 - clip->y0);
-    if (opts->boundary != RAST_BOUNDARY_EXACT)
-        need = rast__size_add(need, rast__bound_scratch(npoints, clip->y1 - clip->y0));
+    need = rast__need(al, opts, npoints, clip->x1 - clip->x0, clip->y1 - clip->y0);
     st = rast__scratch_check(scratch, scratch_bytes, need);
     if (st != RAST_OK) return st;
     if (clip->x0 >= clip->x1 || clip->y0 >= clip->y1) return RAST_OK;

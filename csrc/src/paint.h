@@ -41,6 +41,16 @@ typedef struct rast__solid {
  * empty. */
 rast_status rast__span_clip(const rast_rect *clip, rast_rect *c);
 
+/* The scratch a polygon (triangle batch) fill needs for a clip of width x
+ * height, any size rast__span_clip passes (up to 2 RAST_MAX_DIM): the
+ * entry points' own formula, for rast_render_bands* too, so that a scene
+ * accepts every clip its primitives' entry points accept.  Checks the
+ * options; RAST_E_SIZE for a negative side. */
+rast_status rast__fill_need(const rast_fill_opts *opts, uint32_t npoints, int32_t width,
+                            int32_t height, size_t *bytes);
+rast_status rast__tri_fill_need(const rast_tri_opts *opts, int32_t width, int32_t height,
+                                size_t *bytes);
+
 /* Check a target (as rast_target_init would) and cut its clip to it. */
 rast_status rast__target_check(const rast_target *t, rast_rect *clip);
 

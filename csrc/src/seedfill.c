@@ -28,10 +28,15 @@
  * exact for every format, also for one with two values (after filling, a
  * pixel that had the fill value before looks like a filled one; the
  * method never needs to tell them apart).  Cost: O(1) memory; time per
- * pixel O(1) where the region is at least 2 pixels thick, up to the
- * length of a contour where it is a thin curve (a maze's corridors), so
- * O(area x perimeter) in the worst case.  Give enough stack (see
- * rast_seed_stack_size) and it never runs.
+ * pixel O(1) where the region is at least 2 pixels thick.  Where it is a
+ * thin curve (a maze's corridors) a pixel that would cut it needs contour
+ * walks; the walks stop at the first contour pixel that may be filled at
+ * once (a dead end, a corner) and the fill goes there (issue 18: a 1024^2
+ * maze with no stack went from minutes to half a second, 8192^2 from
+ * hours to ~25 s; bench/maze.c).  The proven bound stays large (see "work
+ * and a changing target" below), so rast_seed_fill_limited takes a
+ * caller's limit.  Give enough stack (see rast_seed_stack_size) and the
+ * fallback never runs.
  */
 #include <string.h>
 
@@ -56,6 +61,12 @@ typedef struct rast__seed {
     int32_t ex, ey;             /* a pixel the contour walk treats as outside */
     unsigned char value[4];     /* the fill value's bytes */
     const rast__format *fmt;    /* its writer (fill), for all but COUNT16 */
+    /* Bounds on the work (see "work and a changing target" below). */
+    uint64_t area;              /* the clip's pixels */
+    uint64_t written;           /* pixels written so far */
+    uint64_t work, max_work;    /* work units so far; the caller's limit */
+    uint64_t idle;              /* fixed-memory steps since the last write */
+    rast_status stop;           /* RAST_OK, or why the fill stopped */
 } rast__seed;
 
 static uint32_t rast__seed_read(const unsigned char *p, int32_t bpp)
@@ -104,10 +115,42 @@ static int rast__seed_in_ex(const rast__seed *s, int32_t x, int32_t y)
     return (x != s->ex || y != s->ey) && rast__seed_in(s, x, y);
 }
 
-/* Write the fill value over columns [x0, x1) of row y. */
-static void rast__seed_write(const rast__seed *s, int32_t y, int32_t x0, int32_t x1)
+/* ---- work and a changing target ---------------------------------------------
+ * Each pixel is written only after it was read as inside, and every run
+ * written is [l, r] with cx0 <= l <= x <= r < cx1 for a column x already
+ * read as inside: whatever the pixels read, a write stays in the clip and
+ * its length is at least 1.  On an unchanging target a written pixel is
+ * never inside again, so a fill writes at most `area` pixels; the
+ * fixed-memory fill makes at most `area` moves between two writes and
+ * a contour walk at most 4 (area + 1) steps.  A count past one of these
+ * can only come from another writer changing the target during the call:
+ * the fill stops there (RAST_E_WORK).  Every write, move and contour step
+ * is a unit of work; past the caller's max_work the fill stops too. */
+static int rast__seed_spend(rast__seed *s, uint64_t units)
+{
+    if (s->stop != RAST_OK) return 1;
+    if (units > s->max_work - s->work) {
+        s->stop = RAST_E_WORK;
+        return 1;
+    }
+    s->work += units;
+    return 0;
+}
+
+/* Write the fill value over columns [x0, x1) of row y (x0 < x1), unless
+ * the work limit or the pixel budget is reached. */
+static void rast__seed_write(rast__seed *s, int32_t y, int32_t x0, int32_t x1)
 {
     unsigned char *row = s->base + (ptrdiff_t)y * s->stride;
+    uint64_t n = (uint64_t)(x1 - x0);
+    if (s->stop != RAST_OK) return;
+    if (n > s->area - s->written) { /* more than the clip: the target changed */
+        s->stop = RAST_E_WORK;
+        return;
+    }
+    if (rast__seed_spend(s, n)) return;
+    s->written += n;
+    s->idle = 0;
     if (s->bpp == 1) { /* gray8: the common case, a bare memset */
         memset(row + x0, s->value[0], (size_t)(x1 - x0));
     } else if (s->fmt) {
@@ -308,18 +351,52 @@ static int rast__crack_step(const rast__seed *s, rast__crack *c, int32_t x, int3
  * Otherwise 0, and *go is a neighbour in the first component found closed
  * that does not hold neighbour `from` (-1: any): the smallest such part,
  * and the walks cost about twice its contour. */
+/* Does filling (px, py) keep its inside neighbours connected within its
+ * 3 x 3 neighbourhood (at most one group)?  Then it is a pixel the
+ * fixed-memory fill may fill at once, wherever it is in the component. */
+static int rast__seed_simple(const rast__seed *s, int32_t px, int32_t py)
+{
+    int32_t gid[8];
+    return rast__seed_groups(s, px, py, gid) <= 1;
+}
+
 static int rast__seed_joined(rast__seed *s, int32_t x, int32_t y, const int32_t gid[8],
-                             int32_t k, int32_t from, int32_t *go)
+                             int32_t k, int32_t from, int32_t *go, int32_t *jx, int32_t *jy)
 {
     rast__crack c[4];
-    uint32_t want = (1u << k) - 1u, open = want, back = from >= 0 ? 1u << gid[from] : 0;
+    /* gid[from] < 0 only if the target changed (the pixel left behind is
+     * inside): then any part will do. */
+    uint32_t want = (1u << k) - 1u, open = want;
+    uint32_t back = from >= 0 && gid[from] >= 0 ? 1u << gid[from] : 0;
     int32_t g, i;
+    uint64_t steps = 0;
     for (g = 0; g < k; g++) rast__crack_start(&c[g], x, y, gid, g);
     s->ex = x;
     s->ey = y;
     for (;;) {
+        /* A contour of the clip has at most 4 (area + 1) sides; a walk
+         * longer than that is one over a target that changed. */
+        if (++steps > 4 * (s->area + 1)) s->stop = RAST_E_WORK;
+        if (rast__seed_spend(s, (uint64_t)k)) {
+            s->ex = s->cx0 - 1;
+            return 0;
+        }
         for (g = 0; g < k; g++) {
-            if (!(open & (1u << g)) || !rast__crack_step(s, &c[g], x, y, gid)) continue;
+            int closed;
+            if (!(open & (1u << g))) continue;
+            closed = rast__crack_step(s, &c[g], x, y, gid);
+            /* A pixel of the contour that may be filled at once (a dead
+             * end of a corridor, a corner): go there instead of walking
+             * on.  This keeps a maze of one-pixel corridors from costing
+             * a contour per pixel: its dead ends are found as the walks
+             * pass them. */
+            if ((c[g].x != x || c[g].y != y) && rast__seed_simple(s, c[g].x, c[g].y)) {
+                *jx = c[g].x;
+                *jy = c[g].y;
+                s->ex = s->cx0 - 1;
+                return 2;
+            }
+            if (!closed) continue;
             if (c[g].seen == want) {
                 s->ex = s->cx0 - 1;
                 return 1;
@@ -347,16 +424,30 @@ static void rast__component(rast__seed *s, int32_t x, int32_t y)
 {
     int32_t gid[8], from = -1;
     for (;;) {
-        int32_t k = rast__seed_groups(s, x, y, gid), i;
+        int32_t k = rast__seed_groups(s, x, y, gid), i = 0, j, jx = 0, jy = 0;
+        /* At most `area` moves between two writes (each enters a strictly
+         * smaller part); more, or the limit: stop. */
+        if (++s->idle > s->area) s->stop = RAST_E_WORK;
+        if (rast__seed_spend(s, 1)) return;
         if (k == 0) {
             rast__seed_write(s, y, x, x + 1);
             return;
         }
-        if (k == 1 || rast__seed_joined(s, x, y, gid, k, from, &i)) {
+        j = k == 1 ? 1 : rast__seed_joined(s, x, y, gid, k, from, &i, &jx, &jy);
+        if (j == 2) { /* a pixel that may be filled, found on a contour */
+            if (s->stop != RAST_OK) return;
+            x = jx;
+            y = jy;
+            from = -1;
+            continue;
+        }
+        if (j) {
             rast__seed_write(s, y, x, x + 1);
+            if (s->stop != RAST_OK) return;
             for (i = 0; gid[i] < 0 || (!s->e && (i & 1)); i++) continue;
             from = -1;
         } else {
+            if (s->stop != RAST_OK) return;
             from = (i + 4) & 7; /* where we come from, seen from the next pixel */
         }
         x += rast__rx[i];
@@ -392,24 +483,28 @@ static void rast__span_push(rast__seed *s, rast__span_stack *st, int32_t y, int3
     }
     x = xl - s->e < s->cx0 ? s->cx0 : xl - s->e;
     end = xr + s->e + 1 > s->cx1 ? s->cx1 : xr + s->e + 1;
-    for (x = rast__seed_next_in(s, ny, x, end); x < end; x = rast__seed_next_in(s, ny, x + 1, end))
+    for (x = rast__seed_next_in(s, ny, x, end); x < end && s->stop == RAST_OK;
+         x = rast__seed_next_in(s, ny, x + 1, end))
         rast__component(s, x, ny);
 }
 
+/* The seed (x, y) was read as inside once, by the setup: it is not read
+ * again, so the first run [l, r] holds x whatever the pixel is now. */
 static void rast__span_fill(rast__seed *s, int32_t x, int32_t y, rast__span_stack *st)
 {
-    int32_t l = rast__seed_run_left(s, y, x, s->cx0);
-    int32_t r = rast__seed_next_out(s, y, x, s->cx1) - 1;
+    int32_t l = rast__seed_run_left(s, y, x - 1, s->cx0);
+    int32_t r = rast__seed_next_out(s, y, x + 1, s->cx1) - 1;
     rast__seed_write(s, y, l, r + 1);
     rast__span_push(s, st, y, l, r, 1);
     rast__span_push(s, st, y, l, r, -1);
-    while (st->n) {
+    while (st->n && s->stop == RAST_OK) {
         rast__span_entry en = st->e[--st->n];
         int32_t ny = en.y + en.dy;
         int32_t lo = en.xl - s->e < s->cx0 ? s->cx0 : en.xl - s->e;
         int32_t end = en.xr + s->e + 1 > s->cx1 ? s->cx1 : en.xr + s->e + 1;
         x = rast__seed_next_in(s, ny, lo, end);
-        while (x < end) {
+        while (x < end && s->stop == RAST_OK) {
+            /* x was read as inside: the run [l, r] holds it. */
             l = x == lo ? rast__seed_run_left(s, ny, x - 1, s->cx0) : x;
             r = rast__seed_next_out(s, ny, x + 1, s->cx1) - 1;
             rast__seed_write(s, ny, l, r + 1);
@@ -494,25 +589,33 @@ static rast_status rast__seed_setup(rast__seed *s, const rast_target *target, in
 
 static rast_status rast__seed_run(const rast_target *target, int32_t x, int32_t y,
                                   const void *value, const void *boundary, int connectivity,
-                                  void *stack, size_t stack_bytes)
+                                  void *stack, size_t stack_bytes, uint64_t max_work,
+                                  uint64_t *work)
 {
     rast__seed s;
     rast__span_stack st;
     int noop = 0;
     rast_status status = rast__seed_setup(&s, target, x, y, value, boundary, connectivity,
                                           stack, stack_bytes, &noop);
-    if (status != RAST_OK || noop) return status;
+    if (status != RAST_OK) return status;
+    if (work) *work = 0;
+    if (noop) return RAST_OK;
+    s.area = (uint64_t)(s.cx1 - s.cx0) * (uint64_t)(s.cy1 - s.cy0);
+    s.max_work = max_work;
+    s.stop = RAST_OK;
     st.e = (rast__span_entry *)stack;
     st.n = 0;
     st.cap = stack_bytes / sizeof(rast__span_entry);
     rast__span_fill(&s, x, y, &st);
-    return RAST_OK;
+    if (work) *work = s.work;
+    return s.stop;
 }
 
 rast_status rast_flood_fill(const rast_target *target, int32_t x, int32_t y, const void *value,
                             int connectivity, void *stack, size_t stack_bytes)
 {
-    return rast__seed_run(target, x, y, value, NULL, connectivity, stack, stack_bytes);
+    return rast__seed_run(target, x, y, value, NULL, connectivity, stack, stack_bytes,
+                          UINT64_MAX, NULL);
 }
 
 rast_status rast_boundary_fill(const rast_target *target, int32_t x, int32_t y,
@@ -520,5 +623,15 @@ rast_status rast_boundary_fill(const rast_target *target, int32_t x, int32_t y,
                                void *stack, size_t stack_bytes)
 {
     if (!boundary) return RAST_E_NULL;
-    return rast__seed_run(target, x, y, value, boundary, connectivity, stack, stack_bytes);
+    return rast__seed_run(target, x, y, value, boundary, connectivity, stack, stack_bytes,
+                          UINT64_MAX, NULL);
+}
+
+rast_status rast_seed_fill_limited(const rast_target *target, int32_t x, int32_t y,
+                                   const void *value, const void *boundary, int connectivity,
+                                   void *stack, size_t stack_bytes, uint64_t max_work,
+                                   uint64_t *work)
+{
+    return rast__seed_run(target, x, y, value, boundary, connectivity, stack, stack_bytes,
+                          max_work, work);
 }

@@ -56,6 +56,19 @@ rast_status rast_tri_scratch_size(const rast_tri_opts *opts, int32_t width, int3
     if (st != RAST_OK) return st;
     if (width < 0 || height < 0 || width > RAST_MAX_DIM || height > RAST_MAX_DIM)
         return RAST_E_SIZE;
+    return rast__tri_fill_need(opts, width, height, bytes);
+}
+
+rast_status rast__tri_fill_need(const rast_tri_opts *opts, int32_t width, int32_t height,
+                                size_t *bytes)
+{
+    const rast__tri_algo *al;
+    rast__grid g;
+    rast_status st;
+    if (!opts) return RAST_E_NULL;
+    st = rast__tri_check_opts(opts, &g, &al);
+    if (st != RAST_OK) return st;
+    if (width < 0 || height < 0) return RAST_E_SIZE;
     *bytes = rast__tri_need(al, opts, width, height);
     return RAST_OK;
 }

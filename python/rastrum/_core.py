@@ -5,6 +5,9 @@ written), snaps float coordinates to the 1/2^S grid, builds the C structs
 and translates status codes into exceptions.
 """
 
+import decimal
+import fractions
+import math
 import numbers
 import warnings
 
@@ -139,7 +142,10 @@ def sample_code(sample_offset):
     """RAST_SAMPLE_* for a sample offset of 0.5 or 0, or InputError."""
     sample = None
     if isinstance(sample_offset, numbers.Real) and not isinstance(sample_offset, (bool, np.bool_)):
-        sample = SAMPLE_OFFSETS.get(float(sample_offset))
+        try:
+            sample = SAMPLE_OFFSETS.get(float(sample_offset))
+        except OverflowError:  # an int past float64
+            sample = None
     if sample is None:
         raise InputError("sample_offset must be 0.5 (pixel centres) or 0, not %r" % (sample_offset,))
     return sample
@@ -153,23 +159,96 @@ def boundary_code(boundary):
     return BOUNDARIES[_name(boundary, "boundary", BOUNDARIES)]
 
 
+# Every snapping boundary, (m - 1/2) / 2**S for S in 0..RAST_MAX_SUBPIXEL_BITS,
+# is a multiple of 2**-GRID_BITS.
+GRID_BITS = 17
+_GRID = 1 << GRID_BITS
+_NEAR_RANGE = 1 << 28  # past RAST_COORD_MAX pixels at every S
+
+
+def exact_double(v):
+    """A float64 that snaps, at every subpixel_bits S in 0..16, as the exact
+    value of `v` does: floor(v * 2**S + 1/2) in exact arithmetic.
+
+    `v` is an int (any size), a Fraction, a Decimal, a numpy float of any
+    width (longdouble) or another real number.  A float64 is itself.  An
+    exact value on the 2**-17 grid (every boundary lies on it) is
+    representable and returned as it is; any other lies strictly between
+    two grid points g < v < g + 2**-17, and so does g + 2**-18, which is
+    returned: it is on the same side of every boundary as v.  Values far
+    outside the range (|v| >= 2**28) come back as a float64 that is outside
+    it too (+-1.8e308 when they do not fit one).  Raises TypeError for
+    anything else: bools, strings, complex, None."""
+    if isinstance(v, (bool, np.bool_)) or isinstance(v, (str, bytes)):
+        raise TypeError("not a real number")
+    if type(v) is float or isinstance(v, np.float64):
+        return float(v)
+    if isinstance(v, decimal.Decimal):
+        if v.is_nan():  # float() refuses a signalling NaN
+            return math.nan
+        if v.is_infinite():
+            return float(v)
+        exact = fractions.Fraction(v)
+    elif isinstance(v, np.floating):
+        if not np.isfinite(v):
+            return float(v)
+        exact = fractions.Fraction(*v.as_integer_ratio())
+    elif isinstance(v, (numbers.Rational, np.integer)):
+        exact = fractions.Fraction(int(v)) if isinstance(v, np.integer) else fractions.Fraction(v)
+    elif isinstance(v, numbers.Real):
+        return float(v)
+    else:
+        raise TypeError("not a real number")
+    if abs(exact) >= _NEAR_RANGE:
+        try:
+            return float(exact)
+        except OverflowError:
+            return 1.7976931348623157e308 if exact > 0 else -1.7976931348623157e308
+    t = exact * _GRID
+    f = math.floor(t)
+    if f == t:
+        return float(exact)  # at most 28 + 17 bits: exact
+    return (f + 0.5) / _GRID
+
+
+def _exact_array(a, what, shape_text):
+    """An object or long-double array as float64 through exact_double."""
+    flat = a.reshape(-1)
+    out = np.empty(flat.shape, np.float64)
+    try:
+        for i, v in enumerate(flat):
+            out[i] = exact_double(v)
+    except TypeError:
+        raise InputError("%s must be %s of real numbers, not %r (%s)"
+                         % (what, shape_text, v, type(v).__name__)) from None
+    return out.reshape(a.shape)
+
+
+def as_numpy(x):
+    """np.asarray(x), with a memoryview (or another buffer) read through
+    numpy rather than iterated (a 2-D memoryview cannot be)."""
+    if isinstance(x, memoryview):
+        return np.asarray(x)
+    return x
+
+
 def real_array(x, what, shape_text):
     """`x` as a float64 array, C-contiguous (a copy when it is not), or
-    InputError naming `what`: coordinates must be real numbers (ints or
-    floats; bool, complex, strings and None are refused, not converted)."""
+    InputError naming `what`: coordinates must be real numbers (ints of any
+    size, floats of any width, Fraction, Decimal; bool, complex, strings and
+    None are refused, not converted, also inside object arrays).  Values
+    that are not float64 are converted by exact_double, so that they snap
+    as their exact value does."""
     if x is None:
         raise InputError("%s must be %s of numbers, not None" % (what, shape_text))
     try:
         a = np.asarray(x)
-    except (TypeError, ValueError):  # e.g. ragged nesting
+    except (TypeError, ValueError, OverflowError):  # e.g. ragged nesting
         raise InputError("%s must be %s of numbers" % (what, shape_text)) from None
     kind = a.dtype.kind
-    if kind == "O":
-        try:
-            a = a.astype(np.float64)
-        except (TypeError, ValueError):
-            raise InputError("%s must be %s of real numbers" % (what, shape_text)) from None
-    elif kind not in "iuf":
+    if kind == "O" or (kind == "f" and a.dtype.itemsize > 8):
+        return _exact_array(a, what, shape_text)
+    if kind not in "iuf":
         raise InputError("%s must be %s of real numbers (int or float), not dtype %s"
                          % (what, shape_text, a.dtype))
     return np.ascontiguousarray(a, dtype=np.float64)
@@ -232,13 +311,13 @@ def cached_opts(kind, make, *args):
     key = (kind,) + args + tuple(type(a) for a in args)
     try:
         return _OPTS_CACHE[key]
-    except (KeyError, TypeError):
+    except (KeyError, TypeError, ValueError):  # ValueError: a writable memoryview
         pass
     opts = make(*args)
     if len(_OPTS_CACHE) < 4096:
         try:
             _OPTS_CACHE[key] = opts
-        except TypeError:
+        except (TypeError, ValueError):
             pass
     return opts
 
@@ -279,7 +358,7 @@ def int_pair(pair, not_pair, not_ints):
     """Two ints (numpy ints too, never bools) from `pair`, or InputError
     with the message `not_pair` or `not_ints` % (pair,)."""
     try:
-        a, b = pair
+        a, b = as_numpy(pair)
     except (TypeError, ValueError):
         raise InputError(not_pair % (pair,)) from None
     for v in (a, b):
@@ -346,6 +425,7 @@ def _ring_list(rings, holes=None):
         if holes is not None:
             holes.extend(flags)
         return out
+    rings = as_numpy(rings)
     if isinstance(rings, np.ndarray):
         if rings.ndim == 2:
             out = [rings]
@@ -432,6 +512,9 @@ def make_target(array, fmt, width=None):
     if width is not None:  # mono1: the array holds packed bytes, not pixels
         w = width
     stride = array.strides[0] if h > 1 else format_stride(fmt, w)
+    if abs(stride) > INT32_MAX:
+        raise InputError("the array's row stride, %d bytes, does not fit the core's int32 "
+                         "stride (at most 2**31-1): copy the array first" % stride)
     if not array.size:
         pixels = ffi.NULL
     elif array.flags.c_contiguous:
@@ -479,10 +562,12 @@ def bad_point_message(what, pts, k, s, sizes=None, wide=False):
     elif x in (_INF, -_INF) or y in (_INF, -_INF):
         why = "is infinite, not a finite number"
     elif wide:
-        why = ("is outside the range +-%.9g pixels (|coordinate| must stay below 2**28 pixels "
+        why = ("is outside the range +-%r pixels (|coordinate| must stay below 2**28 pixels "
                "at every subpixel_bits; subpixel_bits=%d)" % (((1 << (s + lib.RAST_COORD64_PIXEL_BITS)) - 1) / float(1 << s), s))
     else:
-        why = ("is outside the range +-%.6g pixels (|coordinate| * 2**subpixel_bits must stay "
+        # the limit exactly (a dyadic float's repr is exact): at S = 10 it is
+        # 131071.9990234375, which %g would print as 131072
+        why = ("is outside the range +-%r pixels (|coordinate| * 2**subpixel_bits must stay "
                "below 2**27; subpixel_bits=%d)" % (lib.RAST_COORD_MAX / float(1 << s), s))
     return "%s: %s(%r, %r) %s" % (what, where, x, y, why)
 
@@ -545,6 +630,7 @@ def mask_polygon(shape, rings, opts, s):
     return mask
 
 
+INT32_MAX = 2**31 - 1
 
 
 def fill_polygon_gouraud(target, rings, colors, opts, shade, s):

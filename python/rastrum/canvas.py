@@ -224,7 +224,7 @@ class Canvas:
         else:
             self._code = _core.FORMATS[fmt]
             self._target = _core.make_target(array, self._code, width if fmt == "mono1" else None)
-        self.depth = None
+        self._depth = None
 
     @property
     def array(self):
@@ -250,7 +250,40 @@ class Canvas:
     def clear_depth(self):
         """Forget the depth buffer: the next depth-tested fill starts afresh
         (``depth`` back to None)."""
-        self.depth = None
+        self._depth = None
+
+    @property
+    def depth(self):
+        """The depth buffer: None (none yet), or an (H, W) int32 array, C
+        contiguous and writable, that depth-tested fills read and write.
+
+        It may be set to such an array (or None); anything else raises
+        InputError and leaves the buffer as it was: another shape, dtype
+        (int64 too: C reads 4-byte pixels), byte order or layout, a
+        read-only array, or not an array.  The buffer is checked again on
+        every fill that uses it (an array can be reshaped in place)."""
+        return self._depth
+
+    @depth.setter
+    def depth(self, value):
+        self._depth = self._checked_depth(value)
+
+    def _checked_depth(self, value):
+        if value is None:
+            return None
+        shape = (self.height, self.width)
+        if not isinstance(value, np.ndarray):
+            raise InputError("depth must be None or an (H, W) = %s int32 numpy array, not %s"
+                             % (shape, type(value).__name__))
+        if value.dtype != np.int32 or not value.dtype.isnative:
+            raise InputError("depth must have dtype int32 (native byte order), not %s" % value.dtype)
+        if value.shape != shape:
+            raise InputError("depth must have the canvas's shape (H, W) = %s, not %s" % (shape, value.shape))
+        if not value.flags.c_contiguous:
+            raise InputError("depth must be C-contiguous (np.ascontiguousarray)")
+        if not value.flags.writeable:
+            raise InputError("depth must be writable")
+        return value
 
     @property
     def width(self):
@@ -381,7 +414,7 @@ class Canvas:
         opts = _triangles.tri_opts(algorithm, subpixel_bits, sample_offset, rounding, boundary)
         batch = _triangles.tris_f64(tris)
         precision = _core.shading_precision(shading, precision)
-        if vertex_colors is None and depth is None and precision == "exact" and (
+        if vertex_colors is None and depth is None and isinstance(precision, str) and precision == "exact" and (
                 color is None or np.ndim(color) < 2):
             if color is None:
                 raise InputError("fill_triangles needs color or vertex_colors")
@@ -406,12 +439,12 @@ class Canvas:
         z = zbuf = None
         if depth is not None:
             z = _shade.depths(depth, n)
-            zbuf = self.depth
+            zbuf = self._checked_depth(self._depth)
             if zbuf is None:  # kept only once a call has succeeded with it
                 zbuf = np.full((self.height, self.width), _shade.INT32_MAX, np.int32)
         _shade.fill(self._writable(), batch, colors, z, zbuf, opts, sopts)
         if z is not None:
-            self.depth = zbuf
+            self._depth = zbuf
 
     def fill_rect_gouraud(self, rect, corner_colors, *, method="bilinear", shading="gouraud",
                           precision="exact", fraction_bits=16, subpixel_bits=8, sample_offset=0.5):
@@ -588,6 +621,7 @@ class Canvas:
 
 def _pixel_bytes(color, fmt):
     """The pixel's bytes for `color` in format `fmt`, or InputError."""
+    color = _core.as_numpy(color)
     if fmt == "mono1":
         if isinstance(color, (bool, np.bool_)) or not isinstance(color, (int, np.integer)):
             raise InputError("colour %r: format mono1 needs an int (0 off, else on)" % (color,))

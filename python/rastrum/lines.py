@@ -70,7 +70,7 @@ def _clip_rect(clip):
         rect.x0, rect.y0, rect.x1, rect.y1 = -m, -m, m, m
         return rect
     try:
-        values = [v for v in clip]
+        values = [v for v in _core.as_numpy(clip)]
     except TypeError:
         values = None
     if (
@@ -86,7 +86,11 @@ def _clip_rect(clip):
     return rect
 
 
-def line_pixels(p0, p1, *, algorithm="bresenham", subpixel_bits=8, sample_offset=0.5, clip=None):
+MAX_LINE_PIXELS = 1 << 24
+
+
+def line_pixels(p0, p1, *, algorithm="bresenham", subpixel_bits=8, sample_offset=0.5, clip=None,
+                max_pixels=MAX_LINE_PIXELS):
     """The pixels of the segment p0 -> p1, in order from p0.
 
     Under "bresenham" these are exactly the library's line (the one
@@ -112,6 +116,11 @@ def line_pixels(p0, p1, *, algorithm="bresenham", subpixel_bits=8, sample_offset
         classic line, both endpoints included).
     clip : (x0, y0, x1, y1) or None
         Only the pixels with x0 <= x < x1 and y0 <= y < y1; None for all.
+    max_pixels : int or None
+        The most pixels returned (default 2**24, 128 MiB of output): a
+        segment with more (in the clip) raises InputError before anything
+        is allocated, since one call with far endpoints could ask for
+        gigabytes.  None: no limit.
 
     Returns
     -------
@@ -123,7 +132,7 @@ def line_pixels(p0, p1, *, algorithm="bresenham", subpixel_bits=8, sample_offset
     InputError (a ValueError)
         Naming the argument: p0 or p1 not a pair of real numbers, NaN,
         infinite or out of range; a bad clip; an unknown name or option
-        value.
+        value; more pixels than max_pixels.
 
     Examples
     --------
@@ -137,10 +146,16 @@ def line_pixels(p0, p1, *, algorithm="bresenham", subpixel_bits=8, sample_offset
     s = opts.subpixel_bits
     a, b = snap_point(p0, s, "p0"), snap_point(p1, s, "p1")
     rect = _clip_rect(clip)
+    if max_pixels is not None and (isinstance(max_pixels, (bool, np.bool_))
+                                   or not isinstance(max_pixels, (int, np.integer)) or max_pixels < 0):
+        raise InputError("max_pixels must be an int >= 0 or None, not %r" % (max_pixels,))
     count = ffi.new("size_t *")
     st = lib.rast_line_pixels(a, b, opts, rect, ffi.NULL, 0, count)
     if st != lib.RAST_E_SCRATCH:
         _core._check(st)
+    if max_pixels is not None and count[0] > max_pixels:
+        raise InputError("line_pixels: the segment has %d pixels, more than max_pixels=%d (pass "
+                         "max_pixels=None, or a larger int, to get them)" % (count[0], max_pixels))
     out = np.empty((count[0], 2), np.int32)
     if count[0]:
         _core._check(lib.rast_line_pixels(a, b, opts, rect, ffi.from_buffer("int32_t[]", out), count[0], count))

@@ -140,7 +140,10 @@ def _count(v, name, least):
 
 # ---- OBJ ----------------------------------------------------------------------------
 
-def read_obj(source):
+MAX_FACE_CORNERS = 1 << 16
+
+
+def read_obj(source, *, max_face_corners=MAX_FACE_CORNERS):
     """Read a Wavefront OBJ mesh: (vertices (V, 3), faces (F, 3), normals (V, 3) or None).
 
     `source` is a path or a text file object.  Understood: ``v x y z [w]``,
@@ -154,28 +157,40 @@ def read_obj(source):
     others); a vertex no face uses gets (0, 0, 0).
 
     Raises InputError naming the line for a malformed number, a face of
-    fewer than 3 corners, an index of 0 or out of range, or faces that give
-    normals for some corners but not others.
+    fewer than 3 corners or more than `max_face_corners` (default 65536: a
+    face is fanned into corners - 2 triangles, and one 30 MB line of
+    corners would otherwise take gigabytes; None for no limit), an index
+    of 0 or out of range, or faces that give normals for some corners but
+    not others.
     """
+    if max_face_corners is not None and (
+            isinstance(max_face_corners, (bool, np.bool_)) or not isinstance(max_face_corners, (int, np.integer))
+            or max_face_corners < 3):
+        raise InputError("max_face_corners must be an int >= 3 or None, not %r" % (max_face_corners,))
     if isinstance(source, (str, os.PathLike)):
         with open(source, "r", encoding="utf-8") as f:
             try:
-                return _read_obj(f, str(source))
+                return _read_obj(f, str(source), max_face_corners)
             except UnicodeDecodeError as e:
                 raise InputError("%s: not a text (UTF-8) OBJ file: %s" % (source, e)) from None
     if not hasattr(source, "read"):
         raise InputError("source must be a path or a text file object, not %r" % (source,))
-    return _read_obj(source, getattr(source, "name", "<obj>"))
+    return _read_obj(source, getattr(source, "name", "<obj>"), max_face_corners)
 
 
-def _read_obj(f, name):
+def _read_obj(f, name, max_corners=None):
     vs, vns, corners = [], [], []  # corners: per face, list of (v, n or None)
     for lineno, line in enumerate(f, 1):
         line = line.split("#", 1)[0].strip()
         if not line:
             continue
-        parts = line.split()
+        # At most max_corners + 1 fields (the rest of the line stays one
+        # string): a face past the limit is found without splitting it all.
+        parts = line.split() if max_corners is None else line.split(None, max_corners + 1)
         tag, args = parts[0], parts[1:]
+        if max_corners is not None and tag == "f" and len(args) > max_corners:
+            raise InputError("%s:%d: a face of more than max_face_corners=%d corners (pass a larger "
+                             "max_face_corners, or None, to read it)" % (name, lineno, max_corners))
         where = "%s:%d" % (name, lineno)
         if tag in ("v", "vn"):
             if len(args) < 3 or (tag == "vn" and len(args) != 3) or len(args) > 4:

@@ -84,14 +84,28 @@ def to_rgba(a, what):
 
 
 def depths(depth, n):
-    """(n, 3) numbers rounded half up to int32 (floor(d + 1/2)), checked."""
+    """(n, 3) integers in int32, checked.  Depths are compared as int32:
+    a value that is not an integer is refused, never rounded (0.4 and 0.2
+    would tie), with a message naming a scale that makes them integers
+    without losing their order."""
     d = _core.real_array(depth, "depth", "an (N, 3) array-like")
     if d.shape != (n, 3):
         raise InputError("depth must have shape (N, 3) = (%d, 3), not %s" % (n, d.shape))
-    z = np.floor(d + 0.5)
-    if not np.all(np.isfinite(z)) or (z.size and (z.min() < INT32_MIN or z.max() > INT32_MAX)):
-        raise InputError("depth values must be finite and round to int32 (-2**31..2**31-1)")
-    return np.ascontiguousarray(z, dtype=np.int32)
+    if not np.all(np.isfinite(d)) or (d.size and (d.min() < INT32_MIN or d.max() > INT32_MAX)):
+        raise InputError("depth values must be finite integers in int32 (-2**31..2**31-1)")
+    # (a Fraction, Decimal or longdouble with a fraction comes from
+    # real_array as a float64 with one: exact_double keeps it off the grid)
+    if not np.array_equal(np.floor(d), d):
+        big = float(np.max(np.abs(d))) if d.size else 0.0
+        k = 0
+        while k < 30 and big * 2.0 ** (k + 1) < INT32_MAX:
+            k += 1
+        raise InputError(
+            "depth values must be integers (they are compared as int32, so 0.4 and 0.2 would "
+            "tie if rounded): scale them yourself, e.g. np.round(depth * 2**%d) (largest "
+            "|depth| %r), or give integer depths" % (k, big))
+    return np.ascontiguousarray(d, dtype=np.int32)
+
 
 
 def fill(target, tris, colors, z, zbuf, opts, sopts):

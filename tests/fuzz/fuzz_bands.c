@@ -6,7 +6,8 @@
  * (target, guards) equal those of drawing each primitive with its own
  * entry point into the whole clip, and so do the spans painted; with less,
  * or with a bad primitive anywhere, an error and not one byte or span
- * written.  The primitives' own pixels are checked against the references
+ * written.  Sometimes also the widest clip, -RAST_MAX_DIM..RAST_MAX_DIM
+ * across: the scene's spans are its primitives' own (issue 18).  The primitives' own pixels are checked against the references
  * by the other fuzz targets.
  */
 #include "fuzz.h"
@@ -42,6 +43,80 @@ static void paint(void *user, const rast_prim *prim, int32_t y, int32_t x0, int3
             fz_set(p->t, p->t->mem, x, y, (const unsigned char *)prim->pixel);
         }
     }
+}
+
+/* Spans as an order-free digest (count and a sum of hashes): the wide
+ * clip's spans of the scene against those of the primitives' own span
+ * entry points (issue 18: the scene refused clips they accept). */
+typedef struct {
+    uint64_t count, sum;
+    const rast_prim *prims;
+    uint32_t index;
+} digest;
+
+static void digest_add(digest *d, uint32_t i, int32_t y, int32_t x0, int32_t x1)
+{
+    uint64_t hsh = 1469598103934665603u;
+    hsh = (hsh ^ i) * 1099511628211u;
+    hsh = (hsh ^ (uint32_t)y) * 1099511628211u;
+    hsh = (hsh ^ (uint32_t)x0) * 1099511628211u;
+    hsh = (hsh ^ (uint32_t)x1) * 1099511628211u;
+    d->count++;
+    d->sum += hsh ^ (hsh >> 29);
+}
+
+static void digest_prim(void *user, const rast_prim *prim, int32_t y, int32_t x0, int32_t x1)
+{
+    digest *d = (digest *)user;
+    FZ_ASSERT(x0 < x1);
+    digest_add(d, (uint32_t)(prim - d->prims), y, x0, x1);
+}
+
+static void digest_one(void *user, int32_t y, int32_t x0, int32_t x1)
+{
+    digest *d = (digest *)user;
+    FZ_ASSERT(x0 < x1);
+    digest_add(d, d->index, y, x0, x1);
+}
+
+static void wide_clip(const rast_prim *prims, uint32_t n, int32_t y0, int32_t y1)
+{
+    rast_rect wide;
+    digest a, b;
+    uint32_t i;
+    int all_ok = 1;
+    rast_status st;
+    wide.x0 = -RAST_MAX_DIM;
+    wide.x1 = RAST_MAX_DIM;
+    wide.y0 = y0;
+    wide.y1 = y1;
+    memset(&a, 0, sizeof a);
+    memset(&b, 0, sizeof b);
+    a.prims = b.prims = prims;
+    /* Too slow there: the per-sample algorithms walk every column, and a
+     * polyline's pixels are all visible (up to 2^28 of them). */
+    for (i = 0; i < n; i++)
+        if (prims[i].kind == RAST_PRIM_POLYLINE ||
+            (prims[i].kind == RAST_PRIM_POLYGON && (prims[i].fill->algorithm == RAST_ALGO_CROSSING ||
+                                                    prims[i].fill->algorithm == RAST_ALGO_WINDING)))
+            return;
+    for (i = 0; i < n && all_ok; i++) {
+        const rast_prim *p = &prims[i];
+        a.index = i;
+        if (p->kind == RAST_PRIM_POLYGON)
+            st = rast_fill_polygon_spans(&p->polygon, p->fill, &wide, digest_one, &a, big, sizeof big);
+        else if (p->kind == RAST_PRIM_TRIANGLES)
+            st = rast_fill_triangles_spans(p->points, p->count, p->tri, &wide, digest_one, &a, big,
+                                           sizeof big);
+        else
+            st = rast_draw_polyline_spans(p->points, p->count, p->closed, p->line, &wide,
+                                          digest_one, &a);
+        all_ok = st == RAST_OK;
+    }
+    st = rast_render_bands_spans(prims, n, &wide, y1 - y0, digest_prim, &b, big,
+                                 sizeof big, NULL);
+    if (all_ok) FZ_ASSERT(st == RAST_OK && a.count == b.count && a.sum == b.sum);
+    FZ_ASSERT(st != RAST_E_SIZE);
 }
 
 static rast_status draw_full(fz_target *t, const rast_prim *p, uint32_t n)
@@ -168,6 +243,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         return 0;
     }
     FZ_ASSERT(st == RAST_OK && st_spans == RAST_OK);
+    if (fz_below(&in, 4) == 0 && ft.cut.y0 < ft.cut.y1) wide_clip(prims, n, ft.cut.y0, ft.cut.y1);
     FZ_ASSERT(stats.peak_scratch <= bytes);
     FZ_ASSERT(memcmp(ft.mem, ft2.mem, sizeof ft.mem) == 0);
     FZ_ASSERT(memcmp(ft3.mem, ft2.mem, sizeof ft.mem) == 0);

@@ -18,7 +18,7 @@
 #define SF_MAXDIM 32
 
 static fz_target ft;
-static unsigned char expect[sizeof ft.mem];
+static unsigned char expect[sizeof ft.mem], mixed[sizeof ft.mem];
 static fz_scratch stack;
 static int32_t queue[SF_MAXDIM * SF_MAXDIM];
 static unsigned char seen[SF_MAXDIM * SF_MAXDIM];
@@ -70,6 +70,8 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     size_t need = 0, bytes;
     rast_status st;
     void *mem;
+    int32_t limited;
+    uint64_t limit, work = 0, region = 0, changed = 0;
 
     w = 1 + fz_below(&in, SF_MAXDIM);
     h = 1 + fz_below(&in, SF_MAXDIM);
@@ -116,7 +118,14 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     mem = fz_scratch_init(&stack, bytes + 8);
     if (misalign && bytes) mem = (unsigned char *)mem + 4;
     if (null_stack && bytes) mem = NULL;
-    if (boundary)
+    /* rast_seed_fill_limited (issue 18), with no limit or one that may cut
+     * the fill short. */
+    limited = fz_below(&in, 3);
+    limit = limited == 2 ? (uint64_t)fz_below(&in, 2 * w * h + 8) : UINT64_MAX;
+    if (limited)
+        st = rast_seed_fill_limited(&ft.t, sx, sy, value, boundary ? edge : NULL, conn, mem, bytes,
+                                    limit, &work);
+    else if (boundary)
         st = rast_boundary_fill(&ft.t, sx, sy, value, edge, conn, mem, bytes);
     else
         st = rast_flood_fill(&ft.t, sx, sy, value, conn, mem, bytes);
@@ -132,7 +141,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         FZ_ASSERT(fz_untouched(&ft));
         return 0;
     }
-    FZ_ASSERT(st == RAST_OK);
+    FZ_ASSERT(st == RAST_OK || (st == RAST_E_WORK && limited == 2));
 
     /* the reference: breadth-first from the seed over the cut clip */
     memcpy(expect, ft.before, sizeof expect);
@@ -159,7 +168,31 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
                 }
         }
 #undef INSIDE
+        region = (uint64_t)tail;
+    }
+    if (st == RAST_E_WORK) {
+        /* Stopped: only pixels of the region got the value, at most
+         * `limit` of them (one unit of work each), and the region was
+         * more work than that. */
+        memcpy(mixed, ft.before, sizeof mixed);
+        for (y = 0; y < h; y++)
+            for (x = 0; x < w; x++)
+                if (get(&ft, ft.mem, x, y) != get(&ft, ft.before, x, y)) {
+                    put(&ft, mixed, x, y, value);
+                    changed++;
+                }
+        FZ_ASSERT(memcmp(mixed, ft.mem, sizeof mixed) == 0);
+        for (y = 0; y < h; y++)
+            for (x = 0; x < w; x++)
+                if (get(&ft, ft.mem, x, y) != get(&ft, ft.before, x, y))
+                    FZ_ASSERT(get(&ft, expect, x, y) == get(&ft, ft.mem, x, y));
+        FZ_ASSERT(changed <= limit && work <= limit && region > changed);
+        return 0;
     }
     FZ_ASSERT(memcmp(expect, ft.mem, sizeof expect) == 0);
+    if (limited) {
+        FZ_ASSERT(work <= limit && work >= region);
+        if (stack_mode == 0 && bytes == need && !misalign) FZ_ASSERT(work == region);
+    }
     return 0;
 }

@@ -1,0 +1,168 @@
+"""A Python-level fuzz test (issue 18): hypothesis throws arbitrary values
+at every public drawing call's arguments and at Canvas.depth -- good
+values, wrong shapes and dtypes, huge and tiny numbers, NaN, bools,
+strings, None, memoryviews, exact numbers, non-contiguous and read-only
+arrays -- over a canvas wrapped around a slice of a guard-patterned array.
+
+Whatever the input, a call either works or raises InputError (a
+ValueError) -- never another exception, never a crash -- and when it
+raises, not one byte of the array (guards included) nor the depth buffer
+has changed; when it works, the guard bytes around the canvas are still
+untouched.  `make asan-py` runs it with the extension built under
+AddressSanitizer + UBSan, and `make valgrind-py` under memcheck: an
+out-of-bounds access anywhere below the checks is a report there.
+"""
+
+from __future__ import annotations
+
+import decimal
+from fractions import Fraction
+
+import numpy as np
+from hypothesis import HealthCheck, given, settings, strategies as st
+
+import rastrum
+
+H, W = 9, 11
+FORMATS = ["gray8", "rgb888", "rgba8888"]
+
+
+def _arrays(draw_shape):
+    """Arrays of many dtypes and layouts, of a drawn shape."""
+    return st.builds(_make_array, draw_shape, st.sampled_from(
+        ["f8", "f4", "i4", "i8", "u1", "u2", "?", "c16", "O", "U3", "longdouble", "i2", ">i4"]),
+        st.integers(0, 2 ** 32 - 1), st.sampled_from(["plain", "strided", "fortran", "readonly", "mv"]))
+
+
+def _make_array(shape, dtype, seed, layout):
+    rng = np.random.default_rng(seed)
+    a = rng.uniform(-20, 20, size=shape)
+    if dtype == "O":
+        a = np.array([Fraction(v).limit_denominator(1000) for v in a.reshape(-1).tolist()] or [],
+                     dtype=object).reshape(shape)
+    elif dtype == "longdouble":
+        a = a.astype(np.longdouble)
+    else:
+        a = a.astype(dtype)
+    if layout == "strided" and a.ndim:
+        big = np.zeros(a.shape[:-1] + (2 * a.shape[-1],), a.dtype)
+        big[..., ::2] = a
+        a = big[..., ::2]
+    elif layout == "fortran":
+        a = np.asfortranarray(a)
+    elif layout == "readonly":
+        a = a.copy()
+        a.setflags(write=False)
+    elif layout == "mv" and a.dtype.kind in "fiu" and a.dtype.isnative:
+        return memoryview(np.ascontiguousarray(a))
+    return a
+
+
+SCALARS = st.one_of(
+    st.integers(-300, 300), st.integers(-(2 ** 70), 2 ** 70), st.just(2 ** 1024), st.just(-(2 ** 1024)),
+    st.floats(allow_nan=True, allow_infinity=True), st.booleans(), st.none(), st.text(max_size=3),
+    st.fractions(max_denominator=2 ** 70), st.decimals(allow_nan=True, places=3),
+    st.just(np.longdouble(0.5) - np.longdouble(2.0) ** -60), st.complex_numbers(max_magnitude=10),
+    st.just(np.int64(2 ** 62)), st.just(np.float32(3.5)))
+
+SHAPES = st.lists(st.integers(0, 5), min_size=0, max_size=4).map(tuple)
+VALUES = st.one_of(
+    SCALARS,
+    st.lists(SCALARS, max_size=4),
+    st.lists(st.tuples(SCALARS, SCALARS), max_size=5),
+    _arrays(SHAPES),
+    _arrays(st.sampled_from([(3, 2), (4, 2), (1, 3, 2), (2, 3, 2), (2, 3), (2, 3, 4), (4,), (2,)])),
+)
+
+
+def good_or(value_strategy, good):
+    """Mostly good values, so that the other arguments get exercised too."""
+    return st.one_of(st.just(good), value_strategy)
+
+
+RING = np.array([(1.5, 1.0), (10.0, 2.25), (4.0, 8.5)])
+TRIS = np.array([[(1.5, 1.0), (10.0, 2.25), (4.0, 8.5)]])
+CALLS = {
+    "fill_polygon": lambda c, a: c.fill_polygon(a[0], a[1], subpixel_bits=a[2], algorithm=a[3], rule=a[4]),
+    "fill_triangle": lambda c, a: c.fill_triangle(a[0], a[1], subpixel_bits=a[2], sample_offset=a[3]),
+    "fill_triangles": lambda c, a: c.fill_triangles(a[0], a[1], subpixel_bits=a[2]),
+    "fill_triangles(depth)": lambda c, a: c.fill_triangles(a[0], vertex_colors=a[1], depth=a[2],
+                                                           precision=a[3]),
+    "fill_rect_gouraud": lambda c, a: c.fill_rect_gouraud(a[0], a[1], precision=a[2], fraction_bits=a[3]),
+    "line": lambda c, a: c.line(a[0], a[1], a[2], subpixel_bits=a[3]),
+    "polyline": lambda c, a: c.polyline(a[0], a[1], closed=a[2], subpixel_bits=a[3]),
+    "flood_fill": lambda c, a: c.flood_fill(a[0], a[1], connectivity=a[2]),
+    "boundary_fill": lambda c, a: c.boundary_fill(a[0], a[1], a[2], connectivity=a[3]),
+    "depth=": lambda c, a: setattr(c, "depth", a[0]),
+    "polygon_mask": lambda c, a: rastrum.polygon_mask(a[0], a[1], subpixel_bits=a[2]),
+    "triangles_mask": lambda c, a: rastrum.triangles_mask(a[0], a[1], mode=a[2]),
+    "line_pixels": lambda c, a: rastrum.line_pixels(a[0], a[1], clip=a[2], max_pixels=a[3]),
+    "point_in_triangle": lambda c, a: rastrum.point_in_triangle(a[0], a[1], method=a[2]),
+}
+GOOD = {
+    "fill_polygon": (RING, 7, 8, "aet", "evenodd"),
+    "fill_triangle": (TRIS[0], 7, 8, 0.5),
+    "fill_triangles": (TRIS, 7, 8),
+    "fill_triangles(depth)": (TRIS, np.full((1, 3, 3), 9), [[1, 2, 3]], "exact"),
+    "fill_rect_gouraud": ((1, 1, 8, 7), [0, 80, 160, 240], "exact", 16),
+    "line": ((0.5, 0.5), (9.5, 6.5), 5, 8),
+    "polyline": (RING, 5, True, 8),
+    "flood_fill": ((3, 4), 7, 4),
+    "boundary_fill": ((3, 4), 7, 9, 8),
+    "depth=": (np.zeros((H, W), np.int32),),
+    "polygon_mask": (RING, (H, W), 8),
+    "triangles_mask": (TRIS, (H, W), "set"),
+    "line_pixels": ((0, 0), (9, 4), None, 1000),
+    "point_in_triangle": ((3, 3), TRIS[0], "owner"),
+}
+
+
+@st.composite
+def calls(draw):
+    name = draw(st.sampled_from(sorted(CALLS)))
+    good = GOOD[name]
+    args = tuple(draw(good_or(VALUES | st.sampled_from(
+        ["aet", "edgeflag", "nonzero", "exact", "fixed", "flat", "set", "add", "owner", "bogus"]), g))
+        for g in good)
+    fmt = draw(st.sampled_from(FORMATS))
+    with_depth = draw(st.booleans())
+    return name, args, fmt, with_depth
+
+
+def _canvas(fmt, with_depth):
+    channels = {"gray8": (), "rgb888": (3,), "rgba8888": (4,)}[fmt]
+    big = (np.arange((H + 4) * (W + 4) * int(np.prod(channels or (1,)))) % 251).astype(np.uint8)
+    big = big.reshape((H + 4, W + 4) + channels)
+    canvas = rastrum.Canvas.wrap(big[2:2 + H, 2:2 + W], format=fmt)
+    if with_depth:
+        canvas.depth = np.full((H, W), 5, np.int32)
+    return big, canvas
+
+
+def _guards(big):
+    return np.concatenate([big[:2].reshape(-1), big[-2:].reshape(-1), big[:, :2].reshape(-1),
+                           big[:, -2:].reshape(-1)])
+
+
+@settings(suppress_health_check=list(HealthCheck), deadline=None,
+          max_examples=10 * settings.default.max_examples)  # a fuzz test: ten times the profile
+@given(calls())
+def test_public_api_takes_anything(call):
+    name, args, fmt, with_depth = call
+    big, canvas = _canvas(fmt, with_depth)
+    before, guards = big.copy(), _guards(big).copy()
+    depth = None if canvas.depth is None else canvas.depth.copy()
+    try:
+        CALLS[name](canvas, args)
+    except rastrum.InputError as e:
+        assert isinstance(e, ValueError) and str(e)
+        assert np.array_equal(big, before), "%s raised but wrote pixels" % name
+        if depth is None:
+            assert canvas.depth is None
+        else:
+            assert np.array_equal(canvas.depth, depth)
+        return
+    except rastrum.RastrumError as e:  # only the seed fill's work limit may stop a call
+        assert name.endswith("fill") and "work limit" in str(e), e
+        return
+    assert np.array_equal(_guards(big), guards), "%s wrote outside the canvas" % name

@@ -354,3 +354,27 @@ def test_gis_scale_exact_on_float_input():
             off[S] += int((rastrum.polygon_mask(p, (h, w), subpixel_bits=S) != exact).sum())
     assert off[32] == 0
     assert off[8] > 0
+
+
+def test_exact_numbers_snap_exactly_on_the_64_bit_path():
+    """A Fraction just below an S = 32 snapping boundary (0.5 + 2**-33,
+    less 2**-60) snaps to 0.5, so the left edge keeps column 0's sample
+    (0.5); its nearest float64 is the boundary itself, which snaps up and
+    would lose the column.  Exact values are converted to a float64 on the
+    same side of every boundary (within 2**19 pixels)."""
+    x0 = Fraction(1, 2) + Fraction(1, 2 ** 33) - Fraction(1, 2 ** 60)
+    assert float(x0) == 0.5 + 2.0 ** -33  # the float64 alone would round up
+    values = [x0]
+    if np.finfo(np.longdouble).nmant >= 60:  # x86's 80-bit long double holds it exactly
+        values.append(np.longdouble(x0.numerator) / np.longdouble(x0.denominator))
+    for v in values:
+        ring = [(v, 0), (3, 0), (3, 2), (v, 2)]
+        got = rastrum.polygon_mask(ring, (2, 4), subpixel_bits=32)
+        # the oracle's snap of the exact value is 0.5 itself (its rings go
+        # through float64, so it is given the snapped vertex)
+        assert snap(x0, 32) == 2 ** 31
+        want = oracle_mask([[(0.5, 0), (3, 0), (3, 2), (0.5, 2)]], (2, 4), subpixel_bits=32)
+        np.testing.assert_array_equal(got, want)
+        assert got[:, 0].all()
+    float_only = rastrum.polygon_mask([(float(x0), 0), (3, 0), (3, 2), (float(x0), 2)], (2, 4), subpixel_bits=32)
+    assert not float_only[:, 0].any()

@@ -164,11 +164,19 @@ def boundary_code(boundary):
 GRID_BITS = 17
 _GRID = 1 << GRID_BITS
 _NEAR_RANGE = 1 << 28  # past RAST_COORD_MAX pixels at every S
+# The 64-bit path's boundaries (S up to 32) are multiples of 2**-33; a
+# point between two of them, g + 2**-34, is a float64 while |v| < 2**19.
+GRID64_BITS = 33
+_GRID64 = 1 << GRID64_BITS
+_NEAR64 = 1 << 19
 
 
 def exact_double(v):
     """A float64 that snaps, at every subpixel_bits S in 0..16, as the exact
-    value of `v` does: floor(v * 2**S + 1/2) in exact arithmetic.
+    value of `v` does: floor(v * 2**S + 1/2) in exact arithmetic; and at
+    every S in 0..32 (the 64-bit path) where |v| < 2**19 pixels.  (Past
+    2**19 pixels no float64 can stand for every value at S > 16: there a
+    value between two 2**-33 grid points snaps as the float64 given.)
 
     `v` is an int (any size), a Fraction, a Decimal, a numpy float of any
     width (longdouble) or another real number.  A float64 is itself.  An
@@ -204,11 +212,12 @@ def exact_double(v):
             return float(exact)
         except OverflowError:
             return 1.7976931348623157e308 if exact > 0 else -1.7976931348623157e308
-    t = exact * _GRID
+    grid = _GRID64 if abs(exact) < _NEAR64 else _GRID
+    t = exact * grid
     f = math.floor(t)
     if f == t:
-        return float(exact)  # at most 28 + 17 bits: exact
-    return (f + 0.5) / _GRID
+        return float(exact)  # at most 28 + 17 (or 19 + 33) bits: exact
+    return (f + 0.5) / grid
 
 
 def _exact_array(a, what, shape_text):

@@ -376,7 +376,7 @@ long rastpy_burn_gdal_lines(void *out, int32_t height, int32_t width, int64_t ro
         }
         l.n = 0;
         rastpy_gdal_line_walk(ij + 2 * s, last + s, e - s, height, width, rastpy_line_collect, &l);
-        qsort(l.buf, l.n, sizeof *l.buf, rastpy_cmp_i64);
+        if (l.n > 1) qsort(l.buf, l.n, sizeof *l.buf, rastpy_cmp_i64); /* (l.buf is NULL while n is 0) */
         for (i = 0; i < l.n; i++)
             if (i == 0 || l.buf[i] != l.buf[i - 1])
                 l.b.put(&l.b, l.b.out + l.buf[i] / width * row_stride, part[s],

@@ -342,6 +342,7 @@ static void rast__cov_steps(rast__cedge *e)
     e->rowx = INT32_MIN;
     e->cX = INT64_MIN;
     e->crow = INT32_MIN;
+    e->cn = -1;
 }
 
 /* e's abscissa at the end tn of a piece that starts at t (where it is

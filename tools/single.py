@@ -18,6 +18,7 @@ ROOT = os.path.normpath(os.path.join(os.path.dirname(os.path.abspath(__file__)),
 SRC = os.path.join(ROOT, "csrc", "src")
 INC = os.path.join(ROOT, "csrc", "include")
 LOCAL = re.compile(r'^\s*#\s*include\s+"([^"]+)"\s*$')
+DEFINE = re.compile(r'^\s*#\s*define\s+(\w+)', re.M)
 
 
 def read(path):
@@ -67,13 +68,22 @@ def main(outdir):
              " * rastrum.h beside it: cc -std=c99 -c rastrum.c.  Integer only, no heap, no\n"
              " * stdio; needs <stdint.h>, <stddef.h> and <string.h>.\n */\n",
              '#include "rastrum.h"\n']
+    in_headers = set()
     for name in headers_in_order():
+        in_headers |= set(DEFINE.findall(read(os.path.join(SRC, name))))
         parts.append("\n/* ==== %s ==== */\n" % name)
         parts.append(strip_local(read(os.path.join(SRC, name)), name))
     for name in sorted(os.listdir(SRC)):
         if name.endswith(".c"):
+            text = read(os.path.join(SRC, name))
             parts.append("\n/* ==== %s ==== */\n" % name)
-            parts.append(strip_local(read(os.path.join(SRC, name)), name))
+            parts.append(strip_local(text, name))
+            # A source file's own macros (not the headers') end with it, as
+            # they would in its own translation unit (a short name like G
+            # must not reach the next file).
+            names = sorted(set(DEFINE.findall(text)) - in_headers)
+            if names:
+                parts.append("".join("#undef %s\n" % n for n in names))
     with open(os.path.join(outdir, "rastrum.c"), "w", encoding="utf-8") as f:
         f.write("".join(parts))
     with open(os.path.join(outdir, "rastrum.h"), "w", encoding="utf-8") as f:

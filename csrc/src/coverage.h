@@ -166,12 +166,6 @@ static inline void rast__cov_store(rast_coverage_format f, unsigned char *row, i
         ((uint64_t *)(void *)row)[k] = v;
 }
 
-static inline void rast__cov_put(const rast__cov_out *o, unsigned char *row, int32_t k,
-                                 uint64_t a62)
-{
-    rast__cov_store(o->format, row, k, rast__cov_level(o->format, a62));
-}
-
 static inline unsigned char *rast__cov_row(const rast__cov_out *o, int32_t y)
 {
     return o->base + (ptrdiff_t)(y - o->clip.y0) * o->stride;

@@ -35,7 +35,7 @@ static int rast__i128_lt(rast__i128 a, rast__i128 b)
     return a.lo < b.lo;
 }
 
-static rast__i128 rast__i128_sub(rast__i128 a, rast__i128 b)
+static rast__i128 rast__sp_i128_sub(rast__i128 a, rast__i128 b)
 {
     return rast__i128_add(a, rast__i128_neg(b));
 }
@@ -68,13 +68,13 @@ static int32_t rast__i128_small_div(rast__i128 n, rast__i128 d, rast__i128 *rem)
     for (b = 9; b >= 0; b--) {
         rast__i128 s = rast__i128_shl(d, b);
         if (!rast__i128_lt(n, s)) {
-            n = rast__i128_sub(n, s);
+            n = rast__sp_i128_sub(n, s);
             q += (int32_t)1 << b;
         }
     }
     if (neg && (n.hi | n.lo)) {
         q = -q - 1;
-        n = rast__i128_sub(d, n);
+        n = rast__sp_i128_sub(d, n);
     } else if (neg) {
         q = -q;
     }
@@ -157,7 +157,7 @@ static void rast__poly_shade_span(void *user, int32_t row, const rast__edge *l, 
         int64_t A;
         rast__edge_at_row(s, l->next, yc, &el);
         rast__edge_at_row(s, r->next, yc, &er);
-        G = rast__i128_sub(rast__i128_mul(er.Q, el.dy), rast__i128_mul(el.Q, er.dy));
+        G = rast__sp_i128_sub(rast__i128_mul(er.Q, el.dy), rast__i128_mul(el.Q, er.dy));
         D = rast__i128_mul_wide(G, el.dy);
         A = xs * el.dy - el.Q;
         /* Textbook rounding owns a sample up to half a pixel left of Xl
@@ -168,7 +168,7 @@ static void rast__poly_shade_span(void *user, int32_t row, const rast__edge *l, 
          * which is inside [Xl, Xr). */
         if (A < 0) {
             for (ch = 0; ch < 4; ch++) {
-                rast__i128 E = rast__i128_sub(rast__i128_mul(er.P[ch], el.dy), rast__i128_mul(el.P[ch], er.dy));
+                rast__i128 E = rast__sp_i128_sub(rast__i128_mul(er.P[ch], el.dy), rast__i128_mul(el.P[ch], er.dy));
                 rast__i128 N = rast__i128_add(rast__i128_mul_wide(G, el.P[ch]), rast__i128_mul_wide(E, A));
                 rast__i128 rem;
                 N = rast__i128_add(N, rast__i128_mul_wide(G, el.dy / 2));
@@ -186,7 +186,7 @@ static void rast__poly_shade_span(void *user, int32_t row, const rast__edge *l, 
             A += (int64_t)g->unit * el.dy;
         }
         for (ch = 0; ch < 4; ch++) {
-            rast__i128 E = rast__i128_sub(rast__i128_mul(er.P[ch], el.dy), rast__i128_mul(el.P[ch], er.dy));
+            rast__i128 E = rast__sp_i128_sub(rast__i128_mul(er.P[ch], el.dy), rast__i128_mul(el.P[ch], er.dy));
             rast__i128 N = rast__i128_add(rast__i128_mul_wide(G, el.P[ch]), rast__i128_mul_wide(E, A));
             /* + D/2: D = dl G with dl even */
             N = rast__i128_add(N, rast__i128_mul_wide(G, el.dy / 2));
@@ -203,7 +203,7 @@ static void rast__poly_shade_span(void *user, int32_t row, const rast__edge *l, 
             q[ch] += sq[ch];
             R[ch] = rast__i128_add(R[ch], SR[ch]);
             if (!rast__i128_lt(R[ch], D)) {
-                R[ch] = rast__i128_sub(R[ch], D);
+                R[ch] = rast__sp_i128_sub(R[ch], D);
                 q[ch]++;
             }
         }

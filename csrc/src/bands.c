@@ -32,7 +32,11 @@ static rast_status rast__prim_need(const rast_prim *p, int32_t width, int32_t ro
             npoints += p->polygon64.ring_sizes[k];
             if (npoints > RAST_MAX_POINTS) return RAST_E_TOO_MANY;
         }
-        return rast_scratch_size64(p->fill, (uint32_t)npoints, width, rows, need);
+        /* Its scratch does not depend on the width; a span clip may be
+         * wider than RAST_MAX_DIM (up to twice it), which the public size
+         * function refuses. */
+        return rast_scratch_size64(p->fill, (uint32_t)npoints, width > RAST_MAX_DIM ? RAST_MAX_DIM : width,
+                                   rows, need);
     }
     switch (p->kind) {
     case RAST_PRIM_POLYGON:

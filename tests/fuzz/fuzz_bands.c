@@ -105,6 +105,9 @@ static void wide_clip(const rast_prim *prims, uint32_t n, int32_t y0, int32_t y1
         a.index = i;
         if (p->kind == RAST_PRIM_POLYGON)
             st = rast_fill_polygon_spans(&p->polygon, p->fill, &wide, digest_one, &a, big, sizeof big);
+        else if (p->kind == RAST_PRIM_POLYGON64)
+            st = rast_fill_polygon64_spans(&p->polygon64, p->fill, &wide, digest_one, &a, big,
+                                           sizeof big);
         else if (p->kind == RAST_PRIM_TRIANGLES)
             st = rast_fill_triangles_spans(p->points, p->count, p->tri, &wide, digest_one, &a, big,
                                            sizeof big);

@@ -1165,7 +1165,7 @@ typedef enum rast_coverage_format {
     RAST_COVERAGE_U8 = 0,   /* uint8_t, floor(a 255 + 1/2) */
     RAST_COVERAGE_U16 = 1,  /* uint16_t, floor(a 65535 + 1/2) */
     RAST_COVERAGE_FIX62 = 2 /* uint64_t, a in units of 2^-62 (0 .. 2^62),
-                               truncated; for float output */
+                               truncated; for callers that want a real number */
 } rast_coverage_format;
 
 /* Zero-initialised means: area, even-odd, S = 0, samples at integer

@@ -1185,7 +1185,7 @@ RAST_API rast_status rast_aa_method_info(rast_aa_method method, const char **nam
  * (a triangle batch: 3 per triangle) and a clip `width` x `height`: for
  * area and accumulate, 224 bytes per vertex and 33 per clip column (never
  * the rows); for ssK, the AET's scratch on the K-times finer clip
- * (rast_scratch_size), 5 bytes per clip column, 8 per level of count
+ * (rast_scratch_size), 5 bytes and a bit per clip column, 8 per level of count
  * (K^2 + 1) and a copy of the
  * vertices.  Errors: RAST_E_NULL, RAST_E_ARG (method, rule or sample),
  * RAST_E_SUBPIXEL, RAST_E_SIZE, RAST_E_TOO_MANY. */

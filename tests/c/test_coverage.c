@@ -178,6 +178,85 @@ static void test_ss(void)
     }
 }
 
+/* The same on a clip wider than 64 columns (the flush walks a bit per
+ * column, 64 to a word) and away from the origin, in every format: the
+ * runs between marked columns, their ends at the clip's edges and the
+ * values of each format. */
+#define WW 150
+static void test_ss_wide(void)
+{
+    int iter, n = check_count(60);
+    static uint16_t fine[4 * 3][4 * WW];
+    static uint64_t out[3][WW];
+    for (iter = 0; iter < n; iter++) {
+        int32_t kb = 1 + (int32_t)(rng() % 2), K = 1 << kb, s = (int32_t)(rng() % 3), g = 1 << s;
+        int32_t np = 3 + (int32_t)(rng() % 8), i, j, h = 3;
+        rast_coverage_format f = (rast_coverage_format)(rng() % 3);
+        static const int32_t fsize[3] = {1, 2, 8};
+        rast_point pts[10], big[10];
+        uint32_t size = (uint32_t)np;
+        rast_polygon poly = {pts, &size, 1}, bigp = {big, &size, 1};
+        rast_coverage_opts o;
+        rast_fill_opts fo;
+        rast_rect clip;
+        rast_target t;
+        size_t need;
+        unsigned char *sc;
+        clip.x0 = (int32_t)(rng() % 140) - 100;
+        clip.y0 = (int32_t)(rng() % 9) - 4;
+        clip.x1 = clip.x0 + WW;
+        clip.y1 = clip.y0 + h;
+        for (i = 0; i < np; i++) {
+            /* x beyond the clip on either side now and then; the reference
+             * gets the polygon moved by whole pixels to the clip's origin */
+            int32_t x = (int32_t)(rng() % (uint32_t)((WW + 20) * g)) - 10 * g + clip.x0 * g;
+            int32_t y = (int32_t)(rng() % (uint32_t)((h + 4) * g)) - 2 * g + clip.y0 * g;
+            pts[i].x = x;
+            pts[i].y = y;
+            x -= clip.x0 * g;
+            y -= clip.y0 * g;
+            big[i].x = s >= kb ? x : x * (K >> s);
+            big[i].y = s >= kb ? y : y * (K >> s);
+        }
+        memset(&o, 0, sizeof o);
+        o.method = (rast_aa_method)(RAST_AA_SS2 + kb - 1);
+        o.rule = (rast_fill_rule)(rng() % 2);
+        o.subpixel_bits = s;
+        o.sample = (rast_sample)(rng() % 2);
+        memset(out, 0xA5, sizeof out);
+        CHECK(cover(&poly, NULL, 0, &o, &clip, f, &out[0][0], (ptrdiff_t)sizeof out[0]) == RAST_OK);
+        memset(fine, 0, sizeof fine);
+        CHECK(rast_target_init(&t, fine, WW * K, h * K, (int32_t)sizeof fine[0],
+                               RAST_FORMAT_COUNT16) == RAST_OK);
+        memset(&fo, 0, sizeof fo);
+        fo.algorithm = RAST_ALGO_XSCAN;
+        fo.rule = o.rule;
+        fo.subpixel_bits = s >= kb ? s - kb : 0;
+        fo.sample = o.sample;
+        CHECK(rast_scratch_size(&fo, size, WW * K, h * K, &need) == RAST_OK);
+        sc = scratch_for(need);
+        CHECK(rast_fill_polygon(&t, &bigp, &fo, NULL, sc, need) == RAST_OK);
+        for (j = 0; j < h; j++) {
+            const unsigned char *row = (const unsigned char *)out[j];
+            for (i = 0; i < WW; i++) {
+                uint64_t c = 0, got;
+                int32_t u, v;
+                for (v = 0; v < K; v++)
+                    for (u = 0; u < K; u++) c += fine[j * K + v][i * K + u];
+                got = f == RAST_COVERAGE_U8    ? row[i]
+                      : f == RAST_COVERAGE_U16 ? ((const uint16_t *)(const void *)row)[i]
+                                               : out[j][i];
+                CHECK(got == (f == RAST_COVERAGE_FIX62 ? c << (62 - 2 * kb)
+                                                       : level(c, (uint64_t)K * K,
+                                                               f == RAST_COVERAGE_U8 ? 255 : 65535)));
+            }
+            /* nothing written after the clip's last column */
+            for (i = WW * fsize[f]; i < (int32_t)sizeof out[0]; i++) CHECK(row[i] == 0xA5);
+        }
+    }
+}
+#undef WW
+
 /* ---- triangle batches ------------------------------------------------------------ */
 
 static void test_mesh(void)
@@ -420,6 +499,7 @@ int main(void)
 {
     test_rectangles();
     test_ss();
+    test_ss_wide();
     test_mesh();
     test_translation();
     test_errors();

@@ -232,9 +232,9 @@ static rast_status rast__cov_run(const rast_polygon *poly, const rast_point *tri
         if (tris) {
             uint32_t k, m = 0;
             for (k = 0; k < ntris; k++)
-                if (rast__cov_tri(&tris[3 * k], &q[3 * m])) sizes[m++] = 3;
+                if (rast__cov_tri(&tris[3 * k], &q[3 * m])) m++;
             rast__cov_scale(q, 3 * m, scale, q);
-            fine.nrings = m;
+            return rast__cov_ss_tris(q, m, s < kb ? 0 : s - kb, kb, opts->sample, o, &arena);
         } else {
             rast__cov_scale(poly->points, npoints, scale, q);
             fine.nrings = poly->nrings;

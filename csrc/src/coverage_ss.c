@@ -89,8 +89,9 @@ static inline void rast__ss_end(rast__ss *ss, int32_t x, int32_t sg)
     ss->mark[(i + 1) >> 6] |= (uint64_t)1 << ((i + 1) & 63);
 }
 
-/* Fine row y's clip-relative run [x0, x1) (not empty) into the counts. */
-static void rast__ss_put(rast__ss *ss, int32_t y, int32_t x0, int32_t x1)
+/* Runs of clip-relative fine row y come next: flush the output row before
+ * when it is another. */
+static void rast__ss_row(rast__ss *ss, int32_t y)
 {
     int32_t row = y >> ss->kbits;
     if (row != ss->row) {
@@ -98,6 +99,12 @@ static void rast__ss_put(rast__ss *ss, int32_t y, int32_t x0, int32_t x1)
         rast__cov_zero_rows(ss->o, ss->o->clip.y0 + ss->next, ss->o->clip.y0 + row);
         ss->row = row;
     }
+}
+
+/* Fine row y's clip-relative run [x0, x1) (not empty) into the counts. */
+static void rast__ss_put(rast__ss *ss, int32_t y, int32_t x0, int32_t x1)
+{
+    rast__ss_row(ss, y);
     rast__ss_end(ss, x0, 1);
     rast__ss_end(ss, x1, -1);
 }
@@ -126,15 +133,59 @@ static inline void rast__ss_span(void *user, int32_t y, const rast__edge *l, con
     ss->px1 = x1;
 }
 
+/* 64-bit words of a fine row's bits (triangle batches), one spare. */
+static size_t rast__ss_bitwords(int32_t width, int32_t kbits)
+{
+    return ((size_t)width << kbits) / 64 + 1;
+}
+
 size_t rast__cov_ss_scratch(uint32_t npoints, int32_t kbits, int32_t width, int32_t height)
 {
     if ((int64_t)width << kbits > RAST_MAX_DIM || (int64_t)height << kbits > RAST_MAX_DIM)
         return (size_t)-1;
+    /* The triangles' records (rast__cov_ss_tris) take what the AET's edge
+     * tables take: three edges per triangle, twice; the fine row's bits
+     * are theirs alone. */
     return rast__size_add(
-        rast__aet_scratch(npoints, width << kbits, height << kbits),
+        rast__size_add(rast__aet_scratch(npoints, width << kbits, height << kbits),
+                       rast__align(rast__ss_bitwords(width, kbits) * 8)),
         rast__size_add(rast__align(rast__size_mul((size_t)width + 2, sizeof(int32_t))),
                        rast__size_add(rast__align(((size_t)(width + 1) / 64 + 1) * 8),
                                       ((size_t)1 << (2 * kbits)) * 8 + 8)));
+}
+
+/* The counters out of the arena, cleared, and the fine clip (*fine). */
+static rast_status rast__ss_begin(rast__ss *ss, int32_t kbits, const rast__cov_out *o,
+                                  rast__arena *arena, rast_rect *fine)
+{
+    int32_t k, w = o->clip.x1 - o->clip.x0;
+    ss->o = o;
+    ss->kbits = kbits;
+    ss->row = -1;
+    ss->next = 0;
+    ss->py = ss->px0 = ss->px1 = 0;
+    ss->d = (int32_t *)rast__take(arena, ((size_t)w + 2) * sizeof(int32_t));
+    ss->mark = (uint64_t *)rast__take(arena, ((size_t)(w + 1) / 64 + 1) * 8);
+    ss->level = (uint64_t *)rast__take(arena, (((size_t)1 << (2 * kbits)) + 1) * sizeof(uint64_t));
+    if (!ss->d || !ss->mark || !ss->level) return RAST_E_SCRATCH;
+    memset(ss->d, 0, ((size_t)w + 2) * sizeof(int32_t));
+    memset(ss->mark, 0, ((size_t)(w + 1) / 64 + 1) * 8);
+    /* count / k^2 is exactly count 2^(62 - 2 kbits) / 2^62 */
+    for (k = 0; k <= (int32_t)1 << (2 * kbits); k++)
+        ss->level[k] = rast__cov_level(o->format, (uint64_t)k << (62 - 2 * kbits));
+    fine->x0 = ss->fx0 = o->clip.x0 * ((int32_t)1 << kbits);
+    fine->y0 = ss->fy0 = o->clip.y0 * ((int32_t)1 << kbits);
+    fine->x1 = ss->fx1 = o->clip.x1 * ((int32_t)1 << kbits);
+    fine->y1 = o->clip.y1 * ((int32_t)1 << kbits);
+    return RAST_OK;
+}
+
+/* The last output rows: the one being counted, then zeros to the clip's end. */
+static void rast__ss_finish(rast__ss *ss)
+{
+    if (ss->px0 < ss->px1) rast__ss_put(ss, ss->py, ss->px0, ss->px1);
+    if (ss->row >= 0) rast__ss_flush(ss);
+    rast__cov_zero_rows(ss->o, ss->o->clip.y0 + ss->next, ss->o->clip.y1);
 }
 
 rast_status rast__cov_ss(const rast_polygon *poly, uint32_t npoints, int32_t s,
@@ -144,32 +195,209 @@ rast_status rast__cov_ss(const rast_polygon *poly, uint32_t npoints, int32_t s,
     rast__ss ss;
     rast__grid g;
     rast_rect fine;
-    rast_status st;
-    int32_t k, w = o->clip.x1 - o->clip.x0;
-    st = rast__grid_init(&g, s, sample, RAST_ROUND_EXACT, RAST_BOUNDARY_EXACT);
+    rast_status st = rast__grid_init(&g, s, sample, RAST_ROUND_EXACT, RAST_BOUNDARY_EXACT);
+    if (st == RAST_OK) st = rast__ss_begin(&ss, kbits, o, arena, &fine);
     if (st != RAST_OK) return st;
-    ss.o = o;
-    ss.kbits = kbits;
-    ss.row = -1;
-    ss.next = 0;
-    ss.py = ss.px0 = ss.px1 = 0;
-    ss.d = (int32_t *)rast__take(arena, ((size_t)w + 2) * sizeof(int32_t));
-    ss.mark = (uint64_t *)rast__take(arena, ((size_t)(w + 1) / 64 + 1) * 8);
-    ss.level = (uint64_t *)rast__take(arena, (((size_t)1 << (2 * kbits)) + 1) * sizeof(uint64_t));
-    if (!ss.d || !ss.mark || !ss.level) return RAST_E_SCRATCH;
-    memset(ss.d, 0, ((size_t)w + 2) * sizeof(int32_t));
-    memset(ss.mark, 0, ((size_t)(w + 1) / 64 + 1) * 8);
-    /* count / k^2 is exactly count 2^(62 - 2 kbits) / 2^62 */
-    for (k = 0; k <= (int32_t)1 << (2 * kbits); k++)
-        ss.level[k] = rast__cov_level(o->format, (uint64_t)k << (62 - 2 * kbits));
-    fine.x0 = ss.fx0 = o->clip.x0 * ((int32_t)1 << kbits);
-    fine.y0 = ss.fy0 = o->clip.y0 * ((int32_t)1 << kbits);
-    fine.x1 = ss.fx1 = o->clip.x1 * ((int32_t)1 << kbits);
-    fine.y1 = o->clip.y1 * ((int32_t)1 << kbits);
     st = rast__aet_walk(poly, npoints, &g, rule, &fine, arena, rast__ss_span, NULL, &ss, NULL);
     if (st != RAST_OK) return st;
-    if (ss.px0 < ss.px1) rast__ss_put(&ss, ss.py, ss.px0, ss.px1);
-    if (ss.row >= 0) rast__ss_flush(&ss);
-    rast__cov_zero_rows(o, o->clip.y0 + ss.next, o->clip.y1);
+    rast__ss_finish(&ss);
+    return RAST_OK;
+}
+
+/* ---- triangle batches ----------------------------------------------------
+ * The union of the triangles, each walked on its own: a sample is inside
+ * the union (non-zero, every triangle turned the same way) iff it is inside
+ * one of them, since the winding number is the sum of the triangles' and
+ * each is 0 or 1.  On a fine row each active triangle's run [x of one edge,
+ * x of the other) sets bits in a row of bits; the row's runs of set bits
+ * then go into the counts.  No sort of edges by column (the AET's cost
+ * when many triangles overlap): a fine row costs its triangles and a pass
+ * over the words they touched. */
+
+/* A triangle on the fine grid: e[0] the edge from its top to its bottom
+ * vertex, e[1] the other edge crossing the current row, e[2] the edge
+ * below the middle vertex while e[1] is the one above it (e[0].next: 1 iff
+ * e[2] is still to come). */
+typedef struct rast__ss_tri {
+    rast__edge e[3];
+} rast__ss_tri;
+
+/* Set up triangle t (vertices turned one way, not degenerate) on rows
+ * [lo, hi) into *r; 0 when it crosses none of them. */
+static int rast__ss_tri_setup(rast__ss_tri *r, const rast_point *t, const rast__grid *g,
+                              int32_t lo, int32_t hi)
+{
+    rast_point v[3], x;
+    int64_t row[3];
+    int32_t k;
+    v[0] = t[0];
+    v[1] = t[1];
+    v[2] = t[2];
+    if (v[0].y > v[1].y) { x = v[0]; v[0] = v[1]; v[1] = x; }
+    if (v[1].y > v[2].y) { x = v[1]; v[1] = v[2]; v[2] = x; }
+    if (v[0].y > v[1].y) { x = v[0]; v[0] = v[1]; v[1] = x; }
+    for (k = 0; k < 3; k++) {
+        row[k] = rast__row_at_or_after(2 * (int64_t)v[k].y, g);
+        if (row[k] < lo) row[k] = lo;
+        if (row[k] > hi) row[k] = hi;
+    }
+    if (row[0] >= row[2]) return 0;
+    /* the long edge's rows are the short edges' rows, one after the other */
+    rast__edge_start_tri(&r->e[0], v[0], v[2], 1, (int32_t)row[0], (int32_t)row[2], g);
+    if (row[0] < row[1]) {
+        rast__edge_start_tri(&r->e[1], v[0], v[1], 1, (int32_t)row[0], (int32_t)row[1], g);
+        r->e[0].next = row[1] < row[2];
+        if (r->e[0].next)
+            rast__edge_start_tri(&r->e[2], v[1], v[2], 1, (int32_t)row[1], (int32_t)row[2], g);
+    } else {
+        rast__edge_start_tri(&r->e[1], v[1], v[2], 1, (int32_t)row[1], (int32_t)row[2], g);
+        r->e[0].next = 0;
+    }
+    return 1;
+}
+
+/* Set bits [a, b) (a < b) of a row of words. */
+static inline void rast__ss_bits(uint64_t *bits, int32_t a, int32_t b)
+{
+    int32_t ka = a >> 6, kb = (b - 1) >> 6, k;
+    uint64_t ma = ~(uint64_t)0 << (a & 63), mb = ~(uint64_t)0 >> (63 - ((b - 1) & 63));
+    if (ka == kb) {
+        bits[ka] |= ma & mb;
+        return;
+    }
+    bits[ka] |= ma;
+    for (k = ka + 1; k < kb; k++) bits[k] = ~(uint64_t)0;
+    bits[kb] |= mb;
+}
+
+/* The same, keeping the bits touched within [*lo, *hi). */
+static inline void rast__ss_pending(uint64_t *bits, int32_t a, int32_t b, int32_t *lo, int32_t *hi)
+{
+    rast__ss_bits(bits, a, b);
+    if (a < *lo) *lo = a;
+    if (b > *hi) *hi = b;
+}
+
+/* Clip-relative fine row y's set bits, words [k0, k1], into the counts as
+ * runs, the words cleared. */
+static void rast__ss_bit_runs(rast__ss *ss, int32_t y, uint64_t *bits, int32_t k0, int32_t k1)
+{
+    uint64_t carry = 0;
+    int32_t k;
+    rast__ss_row(ss, y);
+    for (k = k0; k <= k1; k++) {
+        uint64_t w = bits[k], t = w ^ ((w << 1) | carry);
+        bits[k] = 0;
+        carry = w >> 63;
+        while (t) {
+            int32_t p = (int32_t)rast__ctz64(t);
+            t &= t - 1;
+            rast__ss_end(ss, k * 64 + p, (w >> p) & 1 ? 1 : -1);
+        }
+    }
+    if (carry) rast__ss_end(ss, (k1 + 1) * 64, -1);
+}
+
+/* The left end of a triangle's run on its current row. */
+static inline int32_t rast__ss_left(const rast__ss_tri *r)
+{
+    return r->e[0].x < r->e[1].x ? r->e[0].x : r->e[1].x;
+}
+
+/* Triangle t joins the n active ones act[] where its run's left end
+ * keeps them in order (they drift out of it as edges cross: the order
+ * only lets neighbours' runs join before their bits are set, it changes
+ * no value); returns n + 1. */
+static int32_t rast__ss_insert(const rast__ss_tri *table, int32_t *act, int32_t n, int32_t t)
+{
+    int32_t lo = 0, hi = n, x = rast__ss_left(&table[t]);
+    while (lo < hi) {
+        int32_t mid = lo + (hi - lo) / 2;
+        if (rast__ss_left(&table[act[mid]]) <= x)
+            lo = mid + 1;
+        else
+            hi = mid;
+    }
+    memmove(act + lo + 1, act + lo, (size_t)(n - lo) * sizeof *act);
+    act[lo] = t;
+    return n + 1;
+}
+
+rast_status rast__cov_ss_tris(const rast_point *tris, uint32_t ntris, int32_t s, int32_t kbits,
+                              rast_sample sample, const rast__cov_out *o, rast__arena *arena)
+{
+    rast__ss ss;
+    rast__grid g;
+    rast_rect fine;
+    rast__ss_tri *stage, *table;
+    int32_t *bucket, *act;
+    uint64_t *bits;
+    uint32_t k;
+    int32_t j, n = 0, nact = 0, first = 0, rows;
+    rast_status st = rast__grid_init(&g, s, sample, RAST_ROUND_EXACT, RAST_BOUNDARY_EXACT);
+    if (st == RAST_OK) st = rast__ss_begin(&ss, kbits, o, arena, &fine);
+    if (st != RAST_OK) return st;
+    rows = fine.y1 - fine.y0;
+    /* the same room as the AET's tables: two edge records per vertex */
+    stage = (rast__ss_tri *)rast__take(arena, (size_t)ntris * 3 * sizeof(rast__edge));
+    table = (rast__ss_tri *)rast__take(arena, (size_t)ntris * 3 * sizeof(rast__edge));
+    bucket = (int32_t *)rast__take(arena, ((size_t)rows + 1) * sizeof(int32_t));
+    bits = (uint64_t *)rast__take(arena, rast__ss_bitwords(o->clip.x1 - o->clip.x0, kbits) * 8);
+    if ((ntris && (!stage || !table)) || !bucket || !bits) return RAST_E_SCRATCH;
+    memset(bucket, 0, ((size_t)rows + 1) * sizeof(int32_t));
+    memset(bits, 0, rast__ss_bitwords(o->clip.x1 - o->clip.x0, kbits) * 8);
+    /* the triangles grouped by first row (a counting sort) */
+    for (k = 0; k < ntris; k++)
+        if (rast__ss_tri_setup(&stage[n], &tris[3 * k], &g, fine.y0, fine.y1))
+            bucket[stage[n++].e[0].row - fine.y0 + 1]++;
+    for (j = 0; j < rows; j++) bucket[j + 1] += bucket[j];
+    for (j = 0; j < n; j++) table[bucket[stage[j].e[0].row - fine.y0]++] = stage[j];
+    /* now bucket[j] is where row j's run ends; the active triangles are
+     * indices into table[], in stage's room */
+    act = (int32_t *)(void *)stage;
+    for (j = 0; j < rows && (nact || first < n); j++) {
+        const int32_t next = fine.y0 + j + 1, fx0 = ss.fx0, fx1 = ss.fx1;
+        int32_t i, m, lo = INT32_MAX, hi = -1, pa = 0, pb = 0;
+        /* few active: in order of their left ends, so that neighbours' runs
+         * join; many (they overlap anyway): in table order, which walks
+         * the records in memory order */
+        for (; first < bucket[j]; first++)
+            if (nact < 256)
+                nact = rast__ss_insert(table, act, nact, first);
+            else
+                act[nact++] = first;
+        if (!nact) continue;
+        for (i = 0, m = 0; i < nact; i++) {
+            rast__ss_tri *r = &table[act[i]];
+            int32_t a = r->e[0].x, b = r->e[1].x, c = a < b ? a : b;
+            b = a < b ? b : a;
+            a = c < fx0 ? fx0 : c;
+            if (b > fx1) b = fx1;
+            /* a run that meets the pending one joins it (neighbours in a
+             * mesh come one after the other): fewer read-modify-writes of
+             * the same word */
+            if (a <= pb && b >= pa) {
+                pa = a < pa ? a : pa;
+                pb = b > pb ? b : pb;
+            } else if (a < b) {
+                if (pa < pb) rast__ss_pending(bits, pa - fx0, pb - fx0, &lo, &hi);
+                pa = a;
+                pb = b;
+            }
+            if (r->e[0].end == next) continue; /* done: dropped */
+            rast__edge_step(&r->e[0]);
+            if (r->e[1].end == next) {
+                r->e[1] = r->e[2];
+                r->e[0].next = 0;
+            } else {
+                rast__edge_step(&r->e[1]);
+            }
+            act[m++] = act[i];
+        }
+        nact = m;
+        if (pa < pb) rast__ss_pending(bits, pa - fx0, pb - fx0, &lo, &hi);
+        if (hi >= 0) rast__ss_bit_runs(&ss, j, bits, lo >> 6, (hi - 1) >> 6);
+    }
+    rast__ss_finish(&ss);
     return RAST_OK;
 }

@@ -257,6 +257,94 @@ static void test_ss_wide(void)
 }
 #undef WW
 
+/* Triangle batches by supersampling: the union of the triangles, each
+ * filled on its own ("xscan" on the vertices scaled by k, overwriting a
+ * byte target: a union, whatever overlaps) and counted.  Overlapping,
+ * repeated in the other orientation, degenerate, with horizontal edges,
+ * reaching past the clip, on a clip off the origin wider than a word of
+ * bits, in every format. */
+#define WT 140
+static void test_ss_triangles(void)
+{
+    int iter, n = check_count(80);
+    static uint8_t fine[8 * 4][8 * WT];
+    static uint64_t out[4][WT];
+    for (iter = 0; iter < n; iter++) {
+        int32_t kb = 1 + (int32_t)(rng() % 3), K = 1 << kb, s = (int32_t)(rng() % 4), g = 1 << s;
+        int32_t nt = (int32_t)(rng() % 7), i, j, h = 4;
+        rast_coverage_format f = (rast_coverage_format)(rng() % 3);
+        rast_point tris[3 * 6], big[3 * 6];
+        rast_coverage_opts o;
+        rast_fill_opts fo;
+        rast_rect clip;
+        rast_target t;
+        uint8_t one = 1;
+        clip.x0 = (int32_t)(rng() % 100) - 60;
+        clip.y0 = (int32_t)(rng() % 9) - 4;
+        clip.x1 = clip.x0 + WT;
+        clip.y1 = clip.y0 + h;
+        for (i = 0; i < 3 * nt; i++) {
+            int32_t x = (int32_t)(rng() % (uint32_t)((WT + 20) * g)) - 10 * g;
+            int32_t y = (int32_t)(rng() % (uint32_t)((h + 4) * g)) - 2 * g;
+            if (i % 3 && rng() % 4 == 0) y = big[i - 1].y; /* a horizontal edge */
+            big[i].x = x;
+            big[i].y = y;
+        }
+        if (nt > 1 && rng() % 2) { /* a triangle twice, the other way round */
+            big[3] = big[0];
+            big[4] = big[2];
+            big[5] = big[1];
+        }
+        if (nt > 2 && rng() % 3 == 0) big[8] = big[7]; /* degenerate */
+        for (i = 0; i < 3 * nt; i++) {
+            tris[i].x = big[i].x + clip.x0 * g;
+            tris[i].y = big[i].y + clip.y0 * g;
+            big[i].x = s >= kb ? big[i].x : big[i].x * (K >> s);
+            big[i].y = s >= kb ? big[i].y : big[i].y * (K >> s);
+        }
+        memset(&o, 0, sizeof o);
+        o.method = (rast_aa_method)(RAST_AA_SS2 + kb - 1);
+        o.rule = (rast_fill_rule)(rng() % 2); /* ignored */
+        o.subpixel_bits = s;
+        o.sample = (rast_sample)(rng() % 2);
+        memset(out, 0xA5, sizeof out);
+        CHECK(cover(NULL, nt ? tris : NULL, (uint32_t)nt, &o, &clip, f, &out[0][0],
+                    (ptrdiff_t)sizeof out[0]) == RAST_OK);
+        memset(fine, 0, sizeof fine);
+        CHECK(rast_target_init(&t, fine, WT * K, h * K, (int32_t)sizeof fine[0], RAST_FORMAT_GRAY8) ==
+              RAST_OK);
+        memset(&fo, 0, sizeof fo);
+        fo.algorithm = RAST_ALGO_XSCAN;
+        fo.subpixel_bits = s >= kb ? s - kb : 0;
+        fo.sample = o.sample;
+        for (i = 0; i < nt; i++) {
+            uint32_t three = 3;
+            rast_polygon p = {&big[3 * i], &three, 1};
+            size_t need;
+            unsigned char *sc;
+            CHECK(rast_scratch_size(&fo, 3, WT * K, h * K, &need) == RAST_OK);
+            sc = scratch_for(need);
+            CHECK(rast_fill_polygon(&t, &p, &fo, &one, sc, need) == RAST_OK);
+        }
+        for (j = 0; j < h; j++) {
+            const unsigned char *row = (const unsigned char *)out[j];
+            for (i = 0; i < WT; i++) {
+                uint64_t c = 0, got;
+                int32_t u, v;
+                for (v = 0; v < K; v++)
+                    for (u = 0; u < K; u++) c += fine[j * K + v][i * K + u];
+                got = f == RAST_COVERAGE_U8    ? row[i]
+                      : f == RAST_COVERAGE_U16 ? ((const uint16_t *)(const void *)row)[i]
+                                               : out[j][i];
+                CHECK(got == (f == RAST_COVERAGE_FIX62 ? c << (62 - 2 * kb)
+                                                       : level(c, (uint64_t)K * K,
+                                                               f == RAST_COVERAGE_U8 ? 255 : 65535)));
+            }
+        }
+    }
+}
+#undef WT
+
 /* ---- triangle batches ------------------------------------------------------------ */
 
 static void test_mesh(void)
@@ -500,6 +588,7 @@ int main(void)
     test_rectangles();
     test_ss();
     test_ss_wide();
+    test_ss_triangles();
     test_mesh();
     test_translation();
     test_errors();

@@ -11,8 +11,9 @@
  *  - area: translation by whole pixels translates the values exactly;
  *  - errors: every status, nothing written, scratch exact and its guard
  *    bytes intact;
- *  - rast_polygon_coverage_spans: the same values as the image, in ordered
- *    runs of values not 0 inside the clip.
+ *  - rast_polygon_coverage_spans and rast_triangles_coverage_spans, every
+ *    method: the same values as the image, in ordered runs of values not 0
+ *    inside the clip.
  */
 #include <stdint.h>
 #include <string.h>
@@ -535,9 +536,12 @@ static void take_span(void *user, int32_t y, int32_t x0, int32_t x1, const uint8
     s->x1 = x1;
 }
 
+/* Both spans calls (a polygon of 9 vertices, or the batch of 3 triangles
+ * they make), every method, against the image rast_polygon_coverage or
+ * rast_triangles_coverage writes. */
 static void test_spans(void)
 {
-    int iter, n = check_count(150);
+    int iter, n = check_count(300);
     for (iter = 0; iter < n; iter++) {
         rast_point pts[9];
         uint32_t size = 9;
@@ -548,37 +552,64 @@ static void test_spans(void)
         span_img s;
         size_t need;
         unsigned char *sc;
-        int32_t i, m = (int32_t)(rng() % 3);
+        int32_t i, tri = (int32_t)(rng() % 2);
+        rast_polygon *pp = tri ? NULL : &p;
         for (i = 0; i < 9; i++) {
             pts[i].x = (int32_t)(rng() % ((W + 4) * 16)) - 32;
             pts[i].y = (int32_t)(rng() % ((H + 4) * 16)) - 32;
         }
         memset(&o, 0, sizeof o);
-        o.method = m == 0 ? RAST_AA_AREA : m == 1 ? RAST_AA_SS4 : RAST_AA_ACCUMULATE;
+        o.method = (rast_aa_method)(rng() % RAST_AA_COUNT_);
         o.rule = (rast_fill_rule)(rng() % 2);
         o.subpixel_bits = 4;
+        o.sample = (rast_sample)(rng() % 2);
         clip.x0 = (int32_t)(rng() % 3) - 1;
         clip.y0 = (int32_t)(rng() % 3) - 1;
         clip.x1 = clip.x0 + W - 2;
         clip.y1 = clip.y0 + H - 2;
-        CHECK(cover(&p, NULL, 0, &o, &clip, RAST_COVERAGE_U8, &want[0][0], W) == RAST_OK);
+        CHECK(cover(pp, pts, 3, &o, &clip, RAST_COVERAGE_U8, &want[0][0], W) == RAST_OK);
         memset(&s, 0, sizeof s);
         s.clip = clip;
         s.y = INT32_MIN;
         s.ok = 1;
         CHECK(rast_coverage_scratch_size(&o, 9, W - 2, H - 2, &need) == RAST_OK);
         sc = scratch_for(need);
-        CHECK(rast_polygon_coverage_spans(&p, &o, &clip, take_span, &s, sc, need) == RAST_OK);
+        CHECK((tri ? rast_triangles_coverage_spans(pts, 3, &o, &clip, take_span, &s, sc, need)
+                   : rast_polygon_coverage_spans(&p, &o, &clip, take_span, &s, sc, need)) ==
+              RAST_OK);
         CHECK(scratch_guard_ok(sc, need));
         CHECK(s.ok);
         for (i = 0; i < H - 2; i++) CHECK(memcmp(s.img[i], want[i], W - 2) == 0);
         /* errors: nothing handed on */
         s.calls = 0;
-        CHECK(rast_polygon_coverage_spans(&p, &o, &clip, NULL, &s, sc, need) == RAST_E_NULL);
-        CHECK(rast_polygon_coverage_spans(&p, &o, &clip, take_span, &s, sc, need - 1) ==
-              RAST_E_SCRATCH);
-        o.rule = (rast_fill_rule)5;
-        CHECK(rast_polygon_coverage_spans(&p, &o, &clip, take_span, &s, sc, need) == RAST_E_ARG);
+        if (tri) {
+            CHECK(rast_triangles_coverage_spans(pts, 3, &o, &clip, NULL, &s, sc, need) ==
+                  RAST_E_NULL);
+            CHECK(rast_triangles_coverage_spans(pts, 3, &o, NULL, take_span, &s, sc, need) ==
+                  RAST_E_NULL);
+            CHECK(rast_triangles_coverage_spans(NULL, 3, &o, &clip, take_span, &s, sc, need) ==
+                  RAST_E_NULL);
+            CHECK(rast_triangles_coverage_spans(pts, 3, &o, &clip, take_span, &s, sc, need - 1) ==
+                  RAST_E_SCRATCH);
+            CHECK(rast_triangles_coverage_spans(pts, RAST_MAX_POINTS / 3 + 1, &o, &clip, take_span,
+                                                &s, sc, need) == RAST_E_TOO_MANY);
+            /* none: nothing to hand on, and no error */
+            CHECK(rast_triangles_coverage_spans(NULL, 0, &o, &clip, take_span, &s, sc, need) ==
+                  RAST_OK);
+            pts[4].x = RAST_COORD_MAX + 1;
+            CHECK(rast_triangles_coverage_spans(pts, 3, &o, &clip, take_span, &s, sc, need) ==
+                  RAST_E_RANGE);
+            o.rule = (rast_fill_rule)5;
+            CHECK(rast_triangles_coverage_spans(pts, 3, &o, &clip, take_span, &s, sc, need) ==
+                  RAST_E_ARG);
+        } else {
+            CHECK(rast_polygon_coverage_spans(&p, &o, &clip, NULL, &s, sc, need) == RAST_E_NULL);
+            CHECK(rast_polygon_coverage_spans(&p, &o, &clip, take_span, &s, sc, need - 1) ==
+                  RAST_E_SCRATCH);
+            o.rule = (rast_fill_rule)5;
+            CHECK(rast_polygon_coverage_spans(&p, &o, &clip, take_span, &s, sc, need) ==
+                  RAST_E_ARG);
+        }
         CHECK(s.calls == 0);
     }
 }

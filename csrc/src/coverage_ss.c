@@ -25,7 +25,7 @@ typedef struct rast__ss {
     int32_t *d;      /* the output row's counts as differences, clip
                         columns, two more at the end (a run ending at the
                         clip's right edge touches d[w + 1], with 0) */
-    uint64_t *mark;  /* bit i: d[i] may not be 0 */
+    uint64_t *mark;  /* bit i: d[i] or d[i + 1] may not be 0 (i <= w) */
     uint64_t *level; /* the value of each count 0..k^2 */
     int32_t kbits;
     int32_t fx0, fx1, fy0; /* the fine clip's columns and first row */
@@ -36,13 +36,16 @@ typedef struct rast__ss {
 } rast__ss;
 
 /* Pixels [k0, k1) of a clip row get value v. */
-static void rast__ss_run(rast_coverage_format f, unsigned char *row, int32_t k0, int32_t k1,
-                         uint64_t v)
+static inline void rast__ss_run(rast_coverage_format f, unsigned char *row, int32_t k0,
+                                int32_t k1, uint64_t v)
 {
     int32_t k;
-    if (k0 >= k1) return;
     if (f == RAST_COVERAGE_U8) {
-        memset(row + k0, (int)v, (size_t)(k1 - k0));
+        if (k1 - k0 > 16) {
+            memset(row + k0, (int)v, (size_t)(k1 - k0));
+        } else {
+            for (k = k0; k < k1; k++) row[k] = (unsigned char)v;
+        }
     } else if (f == RAST_COVERAGE_U16) {
         uint16_t *p = (uint16_t *)(void *)row;
         for (k = k0; k < k1; k++) p[k] = (uint16_t)v;
@@ -52,25 +55,34 @@ static void rast__ss_run(rast_coverage_format f, unsigned char *row, int32_t k0,
     }
 }
 
+/* Write the output row: a marked column i is where a run's end changed
+ * d[i] and d[i + 1] (rast__ss_end), so the count is constant from one
+ * marked column's successor to the next marked column. */
 static void rast__ss_flush(rast__ss *ss)
 {
     const rast__cov_out *o = ss->o;
+    const rast_coverage_format f = o->format;
     const int32_t y = o->clip.y0 + ss->row;
+    const uint64_t *level = ss->level;
     unsigned char *row = rast__cov_row(o, y);
-    int32_t w = o->clip.x1 - o->clip.x0, words = (w + 1) / 64 + 1, k, at = 0, count = 0;
+    int32_t *d = ss->d;
+    int32_t w = o->clip.x1 - o->clip.x0, words = w / 64 + 1, k, at = 0, count = 0;
     for (k = 0; k < words; k++) {
         uint64_t m = ss->mark[k];
         ss->mark[k] = 0;
         while (m) {
             int32_t i = k * 64 + (int32_t)rast__ctz64(m);
             m &= m - 1;
-            rast__ss_run(o->format, row, at, i < w ? i : w, ss->level[count]);
-            count += ss->d[i];
-            ss->d[i] = 0;
-            at = i;
+            rast__ss_run(f, row, at, i, level[count]);
+            count += d[i];
+            d[i] = 0;
+            if (i < w) rast__ss_run(f, row, i, i + 1, level[count]);
+            count += d[i + 1];
+            d[i + 1] = 0;
+            at = i + 1;
         }
     }
-    rast__ss_run(o->format, row, at, w, ss->level[0]);
+    rast__ss_run(f, row, at, w, level[0]);
     ss->next = ss->row + 1;
     rast__cov_row_done(o, y);
 }
@@ -85,8 +97,7 @@ static inline void rast__ss_end(rast__ss *ss, int32_t x, int32_t sg)
     int32_t i = x >> kb, f = x & (((int32_t)1 << kb) - 1);
     ss->d[i] += sg * (((int32_t)1 << kb) - f);
     ss->d[i + 1] += sg * f;
-    ss->mark[i >> 6] |= (uint64_t)1 << (i & 63);
-    ss->mark[(i + 1) >> 6] |= (uint64_t)1 << ((i + 1) & 63);
+    ss->mark[i >> 6] |= (uint64_t)1 << (i & 63); /* i + 1 goes with it */
 }
 
 /* Runs of clip-relative fine row y come next: flush the output row before
@@ -150,7 +161,7 @@ size_t rast__cov_ss_scratch(uint32_t npoints, int32_t kbits, int32_t width, int3
         rast__size_add(rast__aet_scratch(npoints, width << kbits, height << kbits),
                        rast__align(rast__ss_bitwords(width, kbits) * 8)),
         rast__size_add(rast__align(rast__size_mul((size_t)width + 2, sizeof(int32_t))),
-                       rast__size_add(rast__align(((size_t)(width + 1) / 64 + 1) * 8),
+                       rast__size_add(rast__align(((size_t)width / 64 + 1) * 8),
                                       ((size_t)1 << (2 * kbits)) * 8 + 8)));
 }
 
@@ -165,11 +176,11 @@ static rast_status rast__ss_begin(rast__ss *ss, int32_t kbits, const rast__cov_o
     ss->next = 0;
     ss->py = ss->px0 = ss->px1 = 0;
     ss->d = (int32_t *)rast__take(arena, ((size_t)w + 2) * sizeof(int32_t));
-    ss->mark = (uint64_t *)rast__take(arena, ((size_t)(w + 1) / 64 + 1) * 8);
+    ss->mark = (uint64_t *)rast__take(arena, ((size_t)w / 64 + 1) * 8);
     ss->level = (uint64_t *)rast__take(arena, (((size_t)1 << (2 * kbits)) + 1) * sizeof(uint64_t));
     if (!ss->d || !ss->mark || !ss->level) return RAST_E_SCRATCH;
     memset(ss->d, 0, ((size_t)w + 2) * sizeof(int32_t));
-    memset(ss->mark, 0, ((size_t)(w + 1) / 64 + 1) * 8);
+    memset(ss->mark, 0, ((size_t)w / 64 + 1) * 8);
     /* count / k^2 is exactly count 2^(62 - 2 kbits) / 2^62 */
     for (k = 0; k <= (int32_t)1 << (2 * kbits); k++)
         ss->level[k] = rast__cov_level(o->format, (uint64_t)k << (62 - 2 * kbits));
@@ -222,13 +233,13 @@ typedef struct rast__ss_tri {
     rast__edge e[3];
 } rast__ss_tri;
 
-/* Set up triangle t (vertices turned one way, not degenerate) on rows
- * [lo, hi) into *r; 0 when it crosses none of them. */
-static int rast__ss_tri_setup(rast__ss_tri *r, const rast_point *t, const rast__grid *g,
-                              int32_t lo, int32_t hi)
+/* Triangle t (vertices turned one way, not degenerate) with its vertices
+ * sorted by y into v[] and their rows, cut to [lo, hi), into row[];
+ * 0 when it crosses none of those rows. */
+static int rast__ss_tri_rows(const rast_point *t, const rast__grid *g, int32_t lo, int32_t hi,
+                             rast_point *v, int32_t *row)
 {
-    rast_point v[3], x;
-    int64_t row[3];
+    rast_point x;
     int32_t k;
     v[0] = t[0];
     v[1] = t[1];
@@ -237,23 +248,26 @@ static int rast__ss_tri_setup(rast__ss_tri *r, const rast_point *t, const rast__
     if (v[1].y > v[2].y) { x = v[1]; v[1] = v[2]; v[2] = x; }
     if (v[0].y > v[1].y) { x = v[0]; v[0] = v[1]; v[1] = x; }
     for (k = 0; k < 3; k++) {
-        row[k] = rast__row_at_or_after(2 * (int64_t)v[k].y, g);
-        if (row[k] < lo) row[k] = lo;
-        if (row[k] > hi) row[k] = hi;
+        int64_t r = rast__row_at_or_after(2 * (int64_t)v[k].y, g);
+        row[k] = (int32_t)(r < lo ? lo : r > hi ? hi : r);
     }
-    if (row[0] >= row[2]) return 0;
+    return row[0] < row[2];
+}
+
+/* Its edges into *r, from rast__ss_tri_rows' v[] and row[]. */
+static void rast__ss_tri_setup(rast__ss_tri *r, const rast_point *v, const int32_t *row,
+                               const rast__grid *g)
+{
     /* the long edge's rows are the short edges' rows, one after the other */
-    rast__edge_start_tri(&r->e[0], v[0], v[2], 1, (int32_t)row[0], (int32_t)row[2], g);
+    rast__edge_start_tri(&r->e[0], v[0], v[2], 1, row[0], row[2], g);
     if (row[0] < row[1]) {
-        rast__edge_start_tri(&r->e[1], v[0], v[1], 1, (int32_t)row[0], (int32_t)row[1], g);
+        rast__edge_start_tri(&r->e[1], v[0], v[1], 1, row[0], row[1], g);
         r->e[0].next = row[1] < row[2];
-        if (r->e[0].next)
-            rast__edge_start_tri(&r->e[2], v[1], v[2], 1, (int32_t)row[1], (int32_t)row[2], g);
+        if (r->e[0].next) rast__edge_start_tri(&r->e[2], v[1], v[2], 1, row[1], row[2], g);
     } else {
-        rast__edge_start_tri(&r->e[1], v[1], v[2], 1, (int32_t)row[1], (int32_t)row[2], g);
+        rast__edge_start_tri(&r->e[1], v[1], v[2], 1, row[1], row[2], g);
         r->e[0].next = 0;
     }
-    return 1;
 }
 
 /* Set bits [a, b) (a < b) of a row of words. */
@@ -329,7 +343,7 @@ rast_status rast__cov_ss_tris(const rast_point *tris, uint32_t ntris, int32_t s,
     rast__ss ss;
     rast__grid g;
     rast_rect fine;
-    rast__ss_tri *stage, *table;
+    rast__ss_tri *table;
     int32_t *bucket, *act;
     uint64_t *bits;
     uint32_t k;
@@ -338,23 +352,33 @@ rast_status rast__cov_ss_tris(const rast_point *tris, uint32_t ntris, int32_t s,
     if (st == RAST_OK) st = rast__ss_begin(&ss, kbits, o, arena, &fine);
     if (st != RAST_OK) return st;
     rows = fine.y1 - fine.y0;
-    /* the same room as the AET's tables: two edge records per vertex */
-    stage = (rast__ss_tri *)rast__take(arena, (size_t)ntris * 3 * sizeof(rast__edge));
-    table = (rast__ss_tri *)rast__take(arena, (size_t)ntris * 3 * sizeof(rast__edge));
+    /* within the room of the AET's tables (two edge records per vertex):
+     * a record per triangle (three edges) and an index per triangle */
+    table = (rast__ss_tri *)rast__take(arena, (size_t)ntris * sizeof(rast__ss_tri));
+    act = (int32_t *)rast__take(arena, (size_t)ntris * sizeof(int32_t));
     bucket = (int32_t *)rast__take(arena, ((size_t)rows + 1) * sizeof(int32_t));
     bits = (uint64_t *)rast__take(arena, rast__ss_bitwords(o->clip.x1 - o->clip.x0, kbits) * 8);
-    if ((ntris && (!stage || !table)) || !bucket || !bits) return RAST_E_SCRATCH;
+    if ((ntris && (!table || !act)) || !bucket || !bits) return RAST_E_SCRATCH;
     memset(bucket, 0, ((size_t)rows + 1) * sizeof(int32_t));
     memset(bits, 0, rast__ss_bitwords(o->clip.x1 - o->clip.x0, kbits) * 8);
-    /* the triangles grouped by first row (a counting sort) */
-    for (k = 0; k < ntris; k++)
-        if (rast__ss_tri_setup(&stage[n], &tris[3 * k], &g, fine.y0, fine.y1))
-            bucket[stage[n++].e[0].row - fine.y0 + 1]++;
+    /* the triangles grouped by first row (a counting sort: counted, then
+     * set up where their row's run goes) */
+    for (k = 0; k < ntris; k++) {
+        rast_point v[3];
+        int32_t row[3];
+        if (rast__ss_tri_rows(&tris[3 * k], &g, fine.y0, fine.y1, v, row)) {
+            bucket[row[0] - fine.y0 + 1]++;
+            n++;
+        }
+    }
     for (j = 0; j < rows; j++) bucket[j + 1] += bucket[j];
-    for (j = 0; j < n; j++) table[bucket[stage[j].e[0].row - fine.y0]++] = stage[j];
-    /* now bucket[j] is where row j's run ends; the active triangles are
-     * indices into table[], in stage's room */
-    act = (int32_t *)(void *)stage;
+    for (k = 0; k < ntris; k++) {
+        rast_point v[3];
+        int32_t row[3];
+        if (rast__ss_tri_rows(&tris[3 * k], &g, fine.y0, fine.y1, v, row))
+            rast__ss_tri_setup(&table[bucket[row[0] - fine.y0]++], v, row, &g);
+    }
+    /* now bucket[j] is where row j's run ends */
     for (j = 0; j < rows && (nact || first < n); j++) {
         const int32_t next = fine.y0 + j + 1, fx0 = ss.fx0, fx1 = ss.fx1;
         int32_t i, m, lo = INT32_MAX, hi = -1, pa = 0, pb = 0;

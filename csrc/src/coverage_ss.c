@@ -159,7 +159,7 @@ size_t rast__cov_ss_scratch(uint32_t npoints, int32_t kbits, int32_t width, int3
      * are theirs alone. */
     return rast__size_add(
         rast__size_add(rast__aet_scratch(npoints, width << kbits, height << kbits),
-                       rast__align(rast__ss_bitwords(width, kbits) * 8)),
+                       rast__align(rast__ss_bitwords(width, kbits) * 8 << kbits)),
         rast__size_add(rast__align(rast__size_mul((size_t)width + 2, sizeof(int32_t))),
                        rast__size_add(rast__align(((size_t)width / 64 + 1) * 8),
                                       ((size_t)1 << (2 * kbits)) * 8 + 8)));
@@ -347,20 +347,23 @@ rast_status rast__cov_ss_tris(const rast_point *tris, uint32_t ntris, int32_t s,
     int32_t *bucket, *act;
     uint64_t *bits;
     uint32_t k;
-    int32_t j, n = 0, nact = 0, first = 0, rows;
+    int32_t j, b0, n = 0, nact = 0, first = 0, rows, pa[16], pb[16];
+    const int32_t K = (int32_t)1 << kbits;
+    size_t wpr;
     rast_status st = rast__grid_init(&g, s, sample, RAST_ROUND_EXACT, RAST_BOUNDARY_EXACT);
     if (st == RAST_OK) st = rast__ss_begin(&ss, kbits, o, arena, &fine);
     if (st != RAST_OK) return st;
     rows = fine.y1 - fine.y0;
+    wpr = rast__ss_bitwords(o->clip.x1 - o->clip.x0, kbits);
     /* within the room of the AET's tables (two edge records per vertex):
      * a record per triangle (three edges) and an index per triangle */
     table = (rast__ss_tri *)rast__take(arena, (size_t)ntris * sizeof(rast__ss_tri));
     act = (int32_t *)rast__take(arena, (size_t)ntris * sizeof(int32_t));
     bucket = (int32_t *)rast__take(arena, ((size_t)rows + 1) * sizeof(int32_t));
-    bits = (uint64_t *)rast__take(arena, rast__ss_bitwords(o->clip.x1 - o->clip.x0, kbits) * 8);
+    bits = (uint64_t *)rast__take(arena, (size_t)K * wpr * 8);
     if ((ntris && (!table || !act)) || !bucket || !bits) return RAST_E_SCRATCH;
     memset(bucket, 0, ((size_t)rows + 1) * sizeof(int32_t));
-    memset(bits, 0, rast__ss_bitwords(o->clip.x1 - o->clip.x0, kbits) * 8);
+    memset(bits, 0, (size_t)K * wpr * 8);
     /* the triangles grouped by first row (a counting sort: counted, then
      * set up where their row's run goes) */
     for (k = 0; k < ntris; k++) {
@@ -378,49 +381,63 @@ rast_status rast__cov_ss_tris(const rast_point *tris, uint32_t ntris, int32_t s,
         if (rast__ss_tri_rows(&tris[3 * k], &g, fine.y0, fine.y1, v, row))
             rast__ss_tri_setup(&table[bucket[row[0] - fine.y0]++], v, row, &g);
     }
-    /* now bucket[j] is where row j's run ends */
-    for (j = 0; j < rows && (nact || first < n); j++) {
-        const int32_t next = fine.y0 + j + 1, fx0 = ss.fx0, fx1 = ss.fx1;
-        int32_t i, m, lo = INT32_MAX, hi = -1, pa = 0, pb = 0;
+    /* now bucket[j] is where row j's run ends.  An output row (K fine
+     * rows) at a time: each active triangle's record is read once, its K
+     * rows walked with its edges in registers; each fine row keeps a
+     * pending run that the triangles' runs meeting it join. */
+    for (b0 = 0; b0 < rows && (nact || first < n); b0 += K) {
+        const int32_t b1 = b0 + K, top = fine.y0 + b0, fx0 = ss.fx0, fx1 = ss.fx1;
+        int32_t i, m, t, lo = INT32_MAX, hi = -1;
         /* few active: in order of their left ends, so that neighbours' runs
          * join; many (they overlap anyway): in table order, which walks
          * the records in memory order */
-        for (; first < bucket[j]; first++)
+        for (; first < bucket[b1 - 1]; first++)
             if (nact < 256)
                 nact = rast__ss_insert(table, act, nact, first);
             else
                 act[nact++] = first;
         if (!nact) continue;
+        for (t = 0; t < K; t++) pa[t] = pb[t] = 0;
         for (i = 0, m = 0; i < nact; i++) {
             rast__ss_tri *r = &table[act[i]];
-            int32_t a = r->e[0].x, b = r->e[1].x, c = a < b ? a : b;
-            b = a < b ? b : a;
-            a = c < fx0 ? fx0 : c;
-            if (b > fx1) b = fx1;
-            /* a run that meets the pending one joins it (neighbours in a
-             * mesh come one after the other): fewer read-modify-writes of
-             * the same word */
-            if (a <= pb && b >= pa) {
-                pa = a < pa ? a : pa;
-                pb = b > pb ? b : pb;
-            } else if (a < b) {
-                if (pa < pb) rast__ss_pending(bits, pa - fx0, pb - fx0, &lo, &hi);
-                pa = a;
-                pb = b;
+            rast__edge l = r->e[0], e = r->e[1];
+            int32_t next = l.next, y = l.row, end = l.end < top + K ? l.end : top + K;
+            for (; y < end; y++) {
+                int32_t a = l.x < e.x ? l.x : e.x, b = l.x < e.x ? e.x : l.x;
+                t = y - top;
+                a = a < fx0 ? fx0 : a;
+                b = b > fx1 ? fx1 : b;
+                if (a <= pb[t] && b >= pa[t]) {
+                    pa[t] = a < pa[t] ? a : pa[t];
+                    pb[t] = b > pb[t] ? b : pb[t];
+                } else if (a < b) {
+                    if (pa[t] < pb[t])
+                        rast__ss_pending(bits + (size_t)t * wpr, pa[t] - fx0, pb[t] - fx0, &lo, &hi);
+                    pa[t] = a;
+                    pb[t] = b;
+                }
+                rast__edge_step(&l);
+                if (e.end == y + 1 && next) {
+                    e = r->e[2];
+                    next = 0;
+                } else {
+                    rast__edge_step(&e);
+                }
             }
-            if (r->e[0].end == next) continue; /* done: dropped */
-            rast__edge_step(&r->e[0]);
-            if (r->e[1].end == next) {
-                r->e[1] = r->e[2];
-                r->e[0].next = 0;
-            } else {
-                rast__edge_step(&r->e[1]);
-            }
+            if (y == l.end) continue; /* done: dropped */
+            l.row = y;
+            l.next = next;
+            r->e[0] = l;
+            r->e[1] = e;
             act[m++] = act[i];
         }
         nact = m;
-        if (pa < pb) rast__ss_pending(bits, pa - fx0, pb - fx0, &lo, &hi);
-        if (hi >= 0) rast__ss_bit_runs(&ss, j, bits, lo >> 6, (hi - 1) >> 6);
+        for (t = 0; t < K; t++)
+            if (pa[t] < pb[t])
+                rast__ss_pending(bits + (size_t)t * wpr, pa[t] - fx0, pb[t] - fx0, &lo, &hi);
+        if (hi < 0) continue;
+        for (t = 0; t < K; t++)
+            rast__ss_bit_runs(&ss, b0 + t, bits + (size_t)t * wpr, lo >> 6, (hi - 1) >> 6);
     }
     rast__ss_finish(&ss);
     return RAST_OK;

@@ -31,8 +31,6 @@ typedef struct rast__ss {
     int32_t fx0, fx1, fy0; /* the fine clip's columns and first row */
     int32_t row;           /* the output row (clip-relative); -1 before the first */
     int32_t next;          /* the first output row (clip-relative) not written yet */
-    int32_t py, px0, px1;  /* the pending run: fine row py, clip-relative
-                              fine columns [px0, px1); px0 == px1 none */
 } rast__ss;
 
 /* Pixels [k0, k1) of a clip row get value v. */
@@ -120,28 +118,15 @@ static void rast__ss_put(rast__ss *ss, int32_t y, int32_t x0, int32_t x1)
     rast__ss_end(ss, x1, -1);
 }
 
-/* The run [l->x, r->x) of fine row y.  Runs that touch (a mesh's
- * triangles side by side under non-zero) are joined first: one run costs
- * the same whatever its length. */
+/* The run [l->x, r->x) of fine row y.  (Runs that touch need not be
+ * joined: their ends' differences cancel.) */
 static inline void rast__ss_span(void *user, int32_t y, const rast__edge *l, const rast__edge *r)
 {
     rast__ss *ss = (rast__ss *)user;
     int32_t x0 = l->x, x1 = r->x;
     if (x0 < ss->fx0) x0 = ss->fx0;
     if (x1 > ss->fx1) x1 = ss->fx1;
-    if (x0 >= x1) return;
-    /* clip-relative from here: non-negative, so shifts divide */
-    x0 -= ss->fx0;
-    x1 -= ss->fx0;
-    y -= ss->fy0;
-    if (y == ss->py && x0 <= ss->px1) {
-        if (x1 > ss->px1) ss->px1 = x1;
-        return;
-    }
-    if (ss->px0 < ss->px1) rast__ss_put(ss, ss->py, ss->px0, ss->px1);
-    ss->py = y;
-    ss->px0 = x0;
-    ss->px1 = x1;
+    if (x0 < x1) rast__ss_put(ss, y - ss->fy0, x0 - ss->fx0, x1 - ss->fx0);
 }
 
 /* 64-bit words of a fine row's bits (triangle batches), one spare. */
@@ -174,7 +159,6 @@ static rast_status rast__ss_begin(rast__ss *ss, int32_t kbits, const rast__cov_o
     ss->kbits = kbits;
     ss->row = -1;
     ss->next = 0;
-    ss->py = ss->px0 = ss->px1 = 0;
     ss->d = (int32_t *)rast__take(arena, ((size_t)w + 2) * sizeof(int32_t));
     ss->mark = (uint64_t *)rast__take(arena, ((size_t)w / 64 + 1) * 8);
     ss->level = (uint64_t *)rast__take(arena, (((size_t)1 << (2 * kbits)) + 1) * sizeof(uint64_t));
@@ -194,7 +178,6 @@ static rast_status rast__ss_begin(rast__ss *ss, int32_t kbits, const rast__cov_o
 /* The last output rows: the one being counted, then zeros to the clip's end. */
 static void rast__ss_finish(rast__ss *ss)
 {
-    if (ss->px0 < ss->px1) rast__ss_put(ss, ss->py, ss->px0, ss->px1);
     if (ss->row >= 0) rast__ss_flush(ss);
     rast__cov_zero_rows(ss->o, ss->o->clip.y0 + ss->next, ss->o->clip.y1);
 }

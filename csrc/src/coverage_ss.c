@@ -208,13 +208,37 @@ rast_status rast__cov_ss(const rast_polygon *poly, uint32_t npoints, int32_t s,
  * when many triangles overlap): a fine row costs its triangles and a pass
  * over the words they touched. */
 
-/* A triangle on the fine grid: e[0] the edge from its top to its bottom
- * vertex, e[1] the other edge crossing the current row, e[2] the edge
- * below the middle vertex while e[1] is the one above it (e[0].next: 1 iff
- * e[2] is still to come). */
+/* A triangle on the fine grid, what its walk reads on every output row
+ * (the table of them is walked once per output row: the smaller, the
+ * fewer bytes read): edge 0 from its top to its bottom vertex and edge 1
+ * the other edge crossing the current row (rast__edge's fields that
+ * change or step), the current row, and whether the edge below the
+ * middle vertex (kept apart, in `low`) is still to come. */
 typedef struct rast__ss_tri {
-    rast__edge e[3];
+    int64_t e[2], dr[2], q[2];
+    int32_t x[2], step[2], end[2];
+    int32_t row, next;
 } rast__ss_tri;
+
+static inline void rast__ss_get(const rast__ss_tri *t, int k, rast__edge *ed)
+{
+    ed->e = t->e[k];
+    ed->dr = t->dr[k];
+    ed->q = t->q[k];
+    ed->x = t->x[k];
+    ed->step = t->step[k];
+    ed->end = t->end[k];
+}
+
+static inline void rast__ss_set(rast__ss_tri *t, int k, const rast__edge *ed)
+{
+    t->e[k] = ed->e;
+    t->dr[k] = ed->dr;
+    t->q[k] = ed->q;
+    t->x[k] = ed->x;
+    t->step[k] = ed->step;
+    t->end[k] = ed->end;
+}
 
 /* Triangle t (vertices turned one way, not degenerate) with its vertices
  * sorted by y into v[] and their rows, cut to [lo, hi), into row[];
@@ -237,20 +261,23 @@ static int rast__ss_tri_rows(const rast_point *t, const rast__grid *g, int32_t l
     return row[0] < row[2];
 }
 
-/* Its edges into *r, from rast__ss_tri_rows' v[] and row[]. */
-static void rast__ss_tri_setup(rast__ss_tri *r, const rast_point *v, const int32_t *row,
-                               const rast__grid *g)
+/* Its edges into *r and *low, from rast__ss_tri_rows' v[] and row[]. */
+static void rast__ss_tri_setup(rast__ss_tri *r, rast__edge *low, const rast_point *v,
+                               const int32_t *row, const rast__grid *g)
 {
+    rast__edge ed;
     /* the long edge's rows are the short edges' rows, one after the other */
-    rast__edge_start_tri(&r->e[0], v[0], v[2], 1, row[0], row[2], g);
+    rast__edge_start_tri(&ed, v[0], v[2], 1, row[0], row[2], g);
+    rast__ss_set(r, 0, &ed);
+    r->row = row[0];
+    r->next = row[0] < row[1] && row[1] < row[2];
     if (row[0] < row[1]) {
-        rast__edge_start_tri(&r->e[1], v[0], v[1], 1, row[0], row[1], g);
-        r->e[0].next = row[1] < row[2];
-        if (r->e[0].next) rast__edge_start_tri(&r->e[2], v[1], v[2], 1, row[1], row[2], g);
+        rast__edge_start_tri(&ed, v[0], v[1], 1, row[0], row[1], g);
+        if (r->next) rast__edge_start_tri(low, v[1], v[2], 1, row[1], row[2], g);
     } else {
-        rast__edge_start_tri(&r->e[1], v[1], v[2], 1, row[1], row[2], g);
-        r->e[0].next = 0;
+        rast__edge_start_tri(&ed, v[1], v[2], 1, row[1], row[2], g);
     }
+    rast__ss_set(r, 1, &ed);
 }
 
 /* Set bits [a, b) (a < b) of a row of words. */
@@ -298,7 +325,7 @@ static void rast__ss_bit_runs(rast__ss *ss, int32_t y, uint64_t *bits, int32_t k
 /* The left end of a triangle's run on its current row. */
 static inline int32_t rast__ss_left(const rast__ss_tri *r)
 {
-    return r->e[0].x < r->e[1].x ? r->e[0].x : r->e[1].x;
+    return r->x[0] < r->x[1] ? r->x[0] : r->x[1];
 }
 
 /* Triangle t joins the n active ones act[] where its run's left end
@@ -327,6 +354,7 @@ rast_status rast__cov_ss_tris(const rast_point *tris, uint32_t ntris, int32_t s,
     rast__grid g;
     rast_rect fine;
     rast__ss_tri *table;
+    rast__edge *low;
     int32_t *bucket, *act;
     uint64_t *bits;
     uint32_t k;
@@ -341,10 +369,11 @@ rast_status rast__cov_ss_tris(const rast_point *tris, uint32_t ntris, int32_t s,
     /* within the room of the AET's tables (two edge records per vertex):
      * a record per triangle (three edges) and an index per triangle */
     table = (rast__ss_tri *)rast__take(arena, (size_t)ntris * sizeof(rast__ss_tri));
+    low = (rast__edge *)rast__take(arena, (size_t)ntris * sizeof(rast__edge));
     act = (int32_t *)rast__take(arena, (size_t)ntris * sizeof(int32_t));
     bucket = (int32_t *)rast__take(arena, ((size_t)rows + 1) * sizeof(int32_t));
     bits = (uint64_t *)rast__take(arena, (size_t)K * wpr * 8);
-    if ((ntris && (!table || !act)) || !bucket || !bits) return RAST_E_SCRATCH;
+    if ((ntris && (!table || !low || !act)) || !bucket || !bits) return RAST_E_SCRATCH;
     memset(bucket, 0, ((size_t)rows + 1) * sizeof(int32_t));
     memset(bits, 0, (size_t)K * wpr * 8);
     /* the triangles grouped by first row (a counting sort: counted, then
@@ -361,8 +390,10 @@ rast_status rast__cov_ss_tris(const rast_point *tris, uint32_t ntris, int32_t s,
     for (k = 0; k < ntris; k++) {
         rast_point v[3];
         int32_t row[3];
-        if (rast__ss_tri_rows(&tris[3 * k], &g, fine.y0, fine.y1, v, row))
-            rast__ss_tri_setup(&table[bucket[row[0] - fine.y0]++], v, row, &g);
+        if (rast__ss_tri_rows(&tris[3 * k], &g, fine.y0, fine.y1, v, row)) {
+            int32_t at = bucket[row[0] - fine.y0]++;
+            rast__ss_tri_setup(&table[at], &low[at], v, row, &g);
+        }
     }
     /* now bucket[j] is where row j's run ends.  An output row (K fine
      * rows) at a time: each active triangle's record is read once, its K
@@ -383,8 +414,11 @@ rast_status rast__cov_ss_tris(const rast_point *tris, uint32_t ntris, int32_t s,
         for (t = 0; t < K; t++) pa[t] = pb[t] = 0;
         for (i = 0, m = 0; i < nact; i++) {
             rast__ss_tri *r = &table[act[i]];
-            rast__edge l = r->e[0], e = r->e[1];
-            int32_t next = l.next, y = l.row, end = l.end < top + K ? l.end : top + K;
+            rast__edge l, e;
+            int32_t next = r->next, y = r->row, end;
+            rast__ss_get(r, 0, &l);
+            rast__ss_get(r, 1, &e);
+            end = l.end < top + K ? l.end : top + K;
             for (; y < end; y++) {
                 int32_t a = l.x < e.x ? l.x : e.x, b = l.x < e.x ? e.x : l.x;
                 t = y - top;
@@ -401,17 +435,17 @@ rast_status rast__cov_ss_tris(const rast_point *tris, uint32_t ntris, int32_t s,
                 }
                 rast__edge_step(&l);
                 if (e.end == y + 1 && next) {
-                    e = r->e[2];
+                    e = low[act[i]];
                     next = 0;
                 } else {
                     rast__edge_step(&e);
                 }
             }
             if (y == l.end) continue; /* done: dropped */
-            l.row = y;
-            l.next = next;
-            r->e[0] = l;
-            r->e[1] = e;
+            r->row = y;
+            r->next = next;
+            rast__ss_set(r, 0, &l);
+            rast__ss_set(r, 1, &e);
             act[m++] = act[i];
         }
         nact = m;

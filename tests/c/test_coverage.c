@@ -179,6 +179,52 @@ static void test_ss(void)
     }
 }
 
+/* Random ssK options for k = 2^kb and S = s (either rule and sample
+ * offset) in *o, and in *fo the reference's: "xscan" on the vertices
+ * scaled by k, read with S' = max(S - kb, 0) bits. */
+static void ss_opts(int32_t kb, int32_t s, rast_coverage_opts *o, rast_fill_opts *fo)
+{
+    memset(o, 0, sizeof *o);
+    o->method = (rast_aa_method)(RAST_AA_SS2 + kb - 1);
+    o->rule = (rast_fill_rule)(rng() % 2);
+    o->subpixel_bits = s;
+    o->sample = (rast_sample)(rng() % 2);
+    memset(fo, 0, sizeof *fo);
+    fo->algorithm = RAST_ALGO_XSCAN;
+    fo->rule = o->rule;
+    fo->subpixel_bits = s >= kb ? s - kb : 0;
+    fo->sample = o->sample;
+}
+
+/* Each value of an ssK image `out` (w x h clip pixels, rows of `ow`
+ * uint64_t words, format f) against the sub-samples counted in `fine` (the
+ * clip k = 2^kb times finer, rows of `fs` bytes of uint16_t counts, or of
+ * uint8_t 0/1 when `bytes`). */
+static void check_ss_image(const uint64_t *out, int32_t ow, int32_t w, int32_t h,
+                           rast_coverage_format f, int32_t kb, const void *fine, size_t fs,
+                           int bytes)
+{
+    const int32_t K = 1 << kb;
+    int32_t i, j, u, v;
+    for (j = 0; j < h; j++) {
+        const unsigned char *row = (const unsigned char *)(out + (ptrdiff_t)j * ow);
+        for (i = 0; i < w; i++) {
+            uint64_t c = 0, got;
+            for (v = 0; v < K; v++)
+                for (u = 0; u < K; u++) {
+                    const unsigned char *fr = (const unsigned char *)fine + (size_t)(j * K + v) * fs;
+                    c += bytes ? fr[i * K + u] : ((const uint16_t *)(const void *)fr)[i * K + u];
+                }
+            got = f == RAST_COVERAGE_U8    ? row[i]
+                  : f == RAST_COVERAGE_U16 ? ((const uint16_t *)(const void *)row)[i]
+                                           : out[(ptrdiff_t)j * ow + i];
+            CHECK(got == (f == RAST_COVERAGE_FIX62
+                              ? c << (62 - 2 * kb)
+                              : level(c, (uint64_t)K * K, f == RAST_COVERAGE_U8 ? 255 : 65535)));
+        }
+    }
+}
+
 /* The same on a clip wider than 64 columns (the flush walks a bit per
  * column, 64 to a word) and away from the origin, in every format: the
  * runs between marked columns, their ends at the clip's edges and the
@@ -219,41 +265,19 @@ static void test_ss_wide(void)
             big[i].x = s >= kb ? x : x * (K >> s);
             big[i].y = s >= kb ? y : y * (K >> s);
         }
-        memset(&o, 0, sizeof o);
-        o.method = (rast_aa_method)(RAST_AA_SS2 + kb - 1);
-        o.rule = (rast_fill_rule)(rng() % 2);
-        o.subpixel_bits = s;
-        o.sample = (rast_sample)(rng() % 2);
+        ss_opts(kb, s, &o, &fo);
         memset(out, 0xA5, sizeof out);
         CHECK(cover(&poly, NULL, 0, &o, &clip, f, &out[0][0], (ptrdiff_t)sizeof out[0]) == RAST_OK);
         memset(fine, 0, sizeof fine);
         CHECK(rast_target_init(&t, fine, WW * K, h * K, (int32_t)sizeof fine[0],
                                RAST_FORMAT_COUNT16) == RAST_OK);
-        memset(&fo, 0, sizeof fo);
-        fo.algorithm = RAST_ALGO_XSCAN;
-        fo.rule = o.rule;
-        fo.subpixel_bits = s >= kb ? s - kb : 0;
-        fo.sample = o.sample;
         CHECK(rast_scratch_size(&fo, size, WW * K, h * K, &need) == RAST_OK);
         sc = scratch_for(need);
         CHECK(rast_fill_polygon(&t, &bigp, &fo, NULL, sc, need) == RAST_OK);
-        for (j = 0; j < h; j++) {
-            const unsigned char *row = (const unsigned char *)out[j];
-            for (i = 0; i < WW; i++) {
-                uint64_t c = 0, got;
-                int32_t u, v;
-                for (v = 0; v < K; v++)
-                    for (u = 0; u < K; u++) c += fine[j * K + v][i * K + u];
-                got = f == RAST_COVERAGE_U8    ? row[i]
-                      : f == RAST_COVERAGE_U16 ? ((const uint16_t *)(const void *)row)[i]
-                                               : out[j][i];
-                CHECK(got == (f == RAST_COVERAGE_FIX62 ? c << (62 - 2 * kb)
-                                                       : level(c, (uint64_t)K * K,
-                                                               f == RAST_COVERAGE_U8 ? 255 : 65535)));
-            }
-            /* nothing written after the clip's last column */
-            for (i = WW * fsize[f]; i < (int32_t)sizeof out[0]; i++) CHECK(row[i] == 0xA5);
-        }
+        check_ss_image(&out[0][0], WW, WW, h, f, kb, fine, sizeof fine[0], 0);
+        for (j = 0; j < h; j++) /* nothing written after the clip's last column */
+            for (i = WW * fsize[f]; i < (int32_t)sizeof out[0]; i++)
+                CHECK(((const unsigned char *)out[j])[i] == 0xA5);
     }
 }
 #undef WW
@@ -272,7 +296,7 @@ static void test_ss_triangles(void)
     static uint64_t out[4][WT];
     for (iter = 0; iter < n; iter++) {
         int32_t kb = 1 + (int32_t)(rng() % 3), K = 1 << kb, s = (int32_t)(rng() % 4), g = 1 << s;
-        int32_t nt = (int32_t)(rng() % 7), i, j, h = 4;
+        int32_t nt = (int32_t)(rng() % 7), i, h = 4;
         rast_coverage_format f = (rast_coverage_format)(rng() % 3);
         rast_point tris[3 * 6], big[3 * 6];
         rast_coverage_opts o;
@@ -303,21 +327,14 @@ static void test_ss_triangles(void)
             big[i].x = s >= kb ? big[i].x : big[i].x * (K >> s);
             big[i].y = s >= kb ? big[i].y : big[i].y * (K >> s);
         }
-        memset(&o, 0, sizeof o);
-        o.method = (rast_aa_method)(RAST_AA_SS2 + kb - 1);
-        o.rule = (rast_fill_rule)(rng() % 2); /* ignored */
-        o.subpixel_bits = s;
-        o.sample = (rast_sample)(rng() % 2);
+        ss_opts(kb, s, &o, &fo); /* o.rule: ignored */
+        fo.rule = RAST_RULE_EVENODD; /* one triangle: either */
         memset(out, 0xA5, sizeof out);
         CHECK(cover(NULL, nt ? tris : NULL, (uint32_t)nt, &o, &clip, f, &out[0][0],
                     (ptrdiff_t)sizeof out[0]) == RAST_OK);
         memset(fine, 0, sizeof fine);
         CHECK(rast_target_init(&t, fine, WT * K, h * K, (int32_t)sizeof fine[0], RAST_FORMAT_GRAY8) ==
               RAST_OK);
-        memset(&fo, 0, sizeof fo);
-        fo.algorithm = RAST_ALGO_XSCAN;
-        fo.subpixel_bits = s >= kb ? s - kb : 0;
-        fo.sample = o.sample;
         for (i = 0; i < nt; i++) {
             uint32_t three = 3;
             rast_polygon p = {&big[3 * i], &three, 1};
@@ -327,21 +344,7 @@ static void test_ss_triangles(void)
             sc = scratch_for(need);
             CHECK(rast_fill_polygon(&t, &p, &fo, &one, sc, need) == RAST_OK);
         }
-        for (j = 0; j < h; j++) {
-            const unsigned char *row = (const unsigned char *)out[j];
-            for (i = 0; i < WT; i++) {
-                uint64_t c = 0, got;
-                int32_t u, v;
-                for (v = 0; v < K; v++)
-                    for (u = 0; u < K; u++) c += fine[j * K + v][i * K + u];
-                got = f == RAST_COVERAGE_U8    ? row[i]
-                      : f == RAST_COVERAGE_U16 ? ((const uint16_t *)(const void *)row)[i]
-                                               : out[j][i];
-                CHECK(got == (f == RAST_COVERAGE_FIX62 ? c << (62 - 2 * kb)
-                                                       : level(c, (uint64_t)K * K,
-                                                               f == RAST_COVERAGE_U8 ? 255 : 65535)));
-            }
-        }
+        check_ss_image(&out[0][0], WT, WT, h, f, kb, fine, sizeof fine[0], 1);
     }
 }
 #undef WT

@@ -415,10 +415,11 @@ rast_status rast__cov_ss_tris(const rast_point *tris, uint32_t ntris, int32_t s,
         for (i = 0, m = 0; i < nact; i++) {
             rast__ss_tri *r = &table[act[i]];
             rast__edge l, e;
-            int32_t next = r->next, y = r->row, end;
+            int32_t y = r->row, end, sw, low_in = 0;
             rast__ss_get(r, 0, &l);
             rast__ss_get(r, 1, &e);
             end = l.end < top + K ? l.end : top + K;
+            sw = r->next ? e.end : INT32_MAX; /* where the edge below the middle takes over */
             for (; y < end; y++) {
                 int32_t a = l.x < e.x ? l.x : e.x, b = l.x < e.x ? e.x : l.x;
                 t = y - top;
@@ -434,18 +435,27 @@ rast_status rast__cov_ss_tris(const rast_point *tris, uint32_t ntris, int32_t s,
                     pb[t] = b;
                 }
                 rast__edge_step(&l);
-                if (e.end == y + 1 && next) {
+                if (y + 1 == sw) {
                     e = low[act[i]];
-                    next = 0;
+                    sw = INT32_MAX;
+                    low_in = 1;
                 } else {
                     rast__edge_step(&e);
                 }
             }
             if (y == l.end) continue; /* done: dropped */
+            /* what changed: the edges' positions (all of edge 1 once the
+             * lower edge took over) and the row */
             r->row = y;
-            r->next = next;
-            rast__ss_set(r, 0, &l);
-            rast__ss_set(r, 1, &e);
+            r->e[0] = l.e;
+            r->x[0] = l.x;
+            if (low_in) {
+                rast__ss_set(r, 1, &e);
+                r->next = 0;
+            } else {
+                r->e[1] = e.e;
+                r->x[1] = e.x;
+            }
             act[m++] = act[i];
         }
         nact = m;

@@ -294,14 +294,6 @@ static inline void rast__ss_bits(uint64_t *bits, int32_t a, int32_t b)
     bits[kb] |= mb;
 }
 
-/* The same, keeping the bits touched within [*lo, *hi). */
-static inline void rast__ss_pending(uint64_t *bits, int32_t a, int32_t b, int32_t *lo, int32_t *hi)
-{
-    rast__ss_bits(bits, a, b);
-    if (a < *lo) *lo = a;
-    if (b > *hi) *hi = b;
-}
-
 /* Clip-relative fine row y's set bits, words [k0, k1], into the counts as
  * runs, the words cleared. */
 static void rast__ss_bit_runs(rast__ss *ss, int32_t y, uint64_t *bits, int32_t k0, int32_t k1)
@@ -401,7 +393,7 @@ rast_status rast__cov_ss_tris(const rast_point *tris, uint32_t ntris, int32_t s,
      * pending run that the triangles' runs meeting it join. */
     for (b0 = 0; b0 < rows && (nact || first < n); b0 += K) {
         const int32_t b1 = b0 + K, top = fine.y0 + b0, fx0 = ss.fx0, fx1 = ss.fx1;
-        int32_t i, m, t, lo = INT32_MAX, hi = -1;
+        int32_t i, m, t, lo = INT32_MAX, hi = INT32_MIN;
         /* few active: in order of their left ends, so that neighbours' runs
          * join; many (they overlap anyway): in table order, which walks
          * the records in memory order */
@@ -425,12 +417,15 @@ rast_status rast__cov_ss_tris(const rast_point *tris, uint32_t ntris, int32_t s,
                 t = y - top;
                 a = a < fx0 ? fx0 : a;
                 b = b > fx1 ? fx1 : b;
+                if (a < b) { /* the columns any run reaches */
+                    lo = a < lo ? a : lo;
+                    hi = b > hi ? b : hi;
+                }
                 if (a <= pb[t] && b >= pa[t]) {
                     pa[t] = a < pa[t] ? a : pa[t];
                     pb[t] = b > pb[t] ? b : pb[t];
                 } else if (a < b) {
-                    if (pa[t] < pb[t])
-                        rast__ss_pending(bits + (size_t)t * wpr, pa[t] - fx0, pb[t] - fx0, &lo, &hi);
+                    if (pa[t] < pb[t]) rast__ss_bits(bits + (size_t)t * wpr, pa[t] - fx0, pb[t] - fx0);
                     pa[t] = a;
                     pb[t] = b;
                 }
@@ -460,11 +455,11 @@ rast_status rast__cov_ss_tris(const rast_point *tris, uint32_t ntris, int32_t s,
         }
         nact = m;
         for (t = 0; t < K; t++)
-            if (pa[t] < pb[t])
-                rast__ss_pending(bits + (size_t)t * wpr, pa[t] - fx0, pb[t] - fx0, &lo, &hi);
-        if (hi < 0) continue;
+            if (pa[t] < pb[t]) rast__ss_bits(bits + (size_t)t * wpr, pa[t] - fx0, pb[t] - fx0);
+        if (lo >= hi) continue; /* no run */
         for (t = 0; t < K; t++)
-            rast__ss_bit_runs(&ss, b0 + t, bits + (size_t)t * wpr, lo >> 6, (hi - 1) >> 6);
+            rast__ss_bit_runs(&ss, b0 + t, bits + (size_t)t * wpr, (lo - fx0) >> 6,
+                              (hi - fx0 - 1) >> 6);
     }
     rast__ss_finish(&ss);
     return RAST_OK;

@@ -1185,8 +1185,8 @@ RAST_API rast_status rast_aa_method_info(rast_aa_method method, const char **nam
  * (a triangle batch: 3 per triangle) and a clip `width` x `height`: for
  * area and accumulate, 224 bytes per vertex and 33 per clip column (never
  * the rows); for ssK, the AET's scratch on the K-times finer clip
- * (rast_scratch_size), 5 bytes, a bit and K/8 bytes per clip column, 8
- * per level of count (K^2 + 1) and a copy of the vertices.  Errors: RAST_E_NULL, RAST_E_ARG (method, rule or sample),
+ * (rast_scratch_size), 5 bytes, a bit and K^2/8 bytes per clip column,
+ * 8 per level of count (K^2 + 1) and a copy of the vertices.  Errors: RAST_E_NULL, RAST_E_ARG (method, rule or sample),
  * RAST_E_SUBPIXEL, RAST_E_SIZE, RAST_E_TOO_MANY. */
 RAST_API rast_status rast_coverage_scratch_size(const rast_coverage_opts *opts,
                                                 uint32_t npoints, int32_t width,

@@ -139,8 +139,8 @@ size_t rast__cov_ss_scratch(uint32_t npoints, int32_t kbits, int32_t width, int3
 {
     if ((int64_t)width << kbits > RAST_MAX_DIM || (int64_t)height << kbits > RAST_MAX_DIM)
         return (size_t)-1;
-    /* The triangles' records (rast__cov_ss_tris) take what the AET's edge
-     * tables take: three edges per triangle, twice; the fine row's bits
+    /* The triangles' records (rast__cov_ss_tris) take less than the AET's
+     * edge tables (two edge records per vertex); the k fine rows of bits
      * are theirs alone. */
     return rast__size_add(
         rast__size_add(rast__aet_scratch(npoints, width << kbits, height << kbits),
@@ -206,7 +206,8 @@ rast_status rast__cov_ss(const rast_polygon *poly, uint32_t npoints, int32_t s,
  * x of the other) sets bits in a row of bits; the row's runs of set bits
  * then go into the counts.  No sort of edges by column (the AET's cost
  * when many triangles overlap): a fine row costs its triangles and a pass
- * over the words they touched. */
+ * over the words they touched.  The k fine rows of an output row are
+ * walked together, a triangle at a time (rows of bits for each). */
 
 /* A triangle on the fine grid, what its walk reads on every output row
  * (the table of them is walked once per output row: the smaller, the

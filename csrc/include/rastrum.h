@@ -1185,9 +1185,8 @@ RAST_API rast_status rast_aa_method_info(rast_aa_method method, const char **nam
  * (a triangle batch: 3 per triangle) and a clip `width` x `height`: for
  * area and accumulate, 224 bytes per vertex and 33 per clip column (never
  * the rows); for ssK, the AET's scratch on the K-times finer clip
- * (rast_scratch_size), 5 bytes per clip column, 8 per level of count
- * (K^2 + 1) and a copy of the
- * vertices.  Errors: RAST_E_NULL, RAST_E_ARG (method, rule or sample),
+ * (rast_scratch_size), 5 bytes, a bit and K^2/8 bytes per clip column,
+ * 8 per level of count (K^2 + 1) and a copy of the vertices.  Errors: RAST_E_NULL, RAST_E_ARG (method, rule or sample),
  * RAST_E_SUBPIXEL, RAST_E_SIZE, RAST_E_TOO_MANY. */
 RAST_API rast_status rast_coverage_scratch_size(const rast_coverage_opts *opts,
                                                 uint32_t npoints, int32_t width,
@@ -1232,6 +1231,19 @@ RAST_API rast_status rast_polygon_coverage_spans(const rast_polygon *polygon,
                                                  const rast_rect *clip,
                                                  rast_coverage_span_fn span, void *user,
                                                  void *scratch, size_t scratch_bytes);
+
+/* The same for the union of a triangle batch (as rast_triangles_coverage):
+ * its rows' runs of coverage not 0 handed to `span`, the values those
+ * rast_triangles_coverage writes with RAST_COVERAGE_U8.  ntris may be 0
+ * (tris may then be NULL: nothing is handed on).  Scratch as
+ * rast_triangles_coverage (rast_coverage_scratch_size() for 3 ntris
+ * vertices and the clip).  Errors as rast_triangles_coverage, RAST_E_NULL
+ * also for span, all before the first span. */
+RAST_API rast_status rast_triangles_coverage_spans(const rast_point *tris, uint32_t ntris,
+                                                   const rast_coverage_opts *opts,
+                                                   const rast_rect *clip,
+                                                   rast_coverage_span_fn span, void *user,
+                                                   void *scratch, size_t scratch_bytes);
 
 /* ---- region fill -------------------------------------------------------------
  * Seed fill (seed 001 section 3.6): starting at the seed pixel (x, y),

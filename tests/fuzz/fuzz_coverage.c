@@ -13,8 +13,9 @@
  *    overlapping, either orientation): the exact area by cells;
  *  - area on any polygon: translating it (and the clip) by whole pixels,
  *    and (even-odd) reversing its rings, gives the same bytes;
- *  - rast_polygon_coverage_spans (uint8): the same values, in ordered runs
- *    of values not 0 inside the clip.
+ *  - rast_polygon_coverage_spans and rast_triangles_coverage_spans
+ *    (uint8): the same values, in ordered runs of values not 0 inside the
+ *    clip.
  */
 #include "fuzz.h"
 
@@ -175,12 +176,15 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         for (x = cw * fmt_size[f]; x < stride; x++) FZ_ASSERT(out[y * stride + x] == FZ_GUARD);
     for (k = (uint32_t)(ch * stride); k < sizeof out; k++) FZ_ASSERT(out[k] == FZ_GUARD);
 
-    if (f == RAST_COVERAGE_U8 && shape != 2) { /* the spans call: the same values */
+    if (f == RAST_COVERAGE_U8) { /* the spans call: the same values */
         void *mem = fz_scratch_init(&scratch, need);
         memset(&cspans, 0, sizeof cspans);
         cspans.clip = clip;
         cspans.y = INT32_MIN;
-        FZ_ASSERT(rast_polygon_coverage_spans(&pg, &o, &clip, fz_cspan, &cspans, mem, need) == RAST_OK);
+        FZ_ASSERT((shape == 2 ? rast_triangles_coverage_spans(pts, ntris, &o, &clip, fz_cspan,
+                                                              &cspans, mem, need)
+                              : rast_polygon_coverage_spans(&pg, &o, &clip, fz_cspan, &cspans,
+                                                            mem, need)) == RAST_OK);
         fz_scratch_check(&scratch);
         for (y = 0; y < ch; y++)
             FZ_ASSERT(memcmp(cspans.img + y * CW, out + y * stride, (size_t)cw) == 0);

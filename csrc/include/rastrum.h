@@ -1233,6 +1233,48 @@ RAST_API rast_status rast_polygon_coverage_spans(const rast_polygon *polygon,
                                                  rast_coverage_span_fn span, void *user,
                                                  void *scratch, size_t scratch_bytes);
 
+/* The same runs for the union of `ntris` triangles (as rast_triangles_coverage:
+ * one region, opts->rule ignored); errors as rast_polygon_coverage_spans. */
+RAST_API rast_status rast_triangles_coverage_spans(const rast_point *tris, uint32_t ntris,
+                                                   const rast_coverage_opts *opts,
+                                                   const rast_rect *clip,
+                                                   rast_coverage_span_fn span, void *user,
+                                                   void *scratch, size_t scratch_bytes);
+
+/* ---- anti-aliased fills: coverage painted into a target (coverage_paint.c) ---
+ * rast_fill_polygon and rast_fill_triangles with coverage instead of the
+ * binary rule: each pixel of target->clip whose coverage level
+ * c = floor(a 255 + 1/2) (the RAST_COVERAGE_U8 value of `opts`' method,
+ * exactly as rast_polygon_coverage / rast_triangles_coverage give it) is
+ * not 0 is painted with `pixel` weighted by c; pixels with c = 0 are not
+ * touched.  Per format:
+ *  - GRAY8, RGB888, RGBA8888: every byte (channel) d of the pixel becomes
+ *    floor((s c + d (255 - c) + 127) / 255), s the value's byte: the
+ *    nearest integer to the exact source-over mix (never a tie); c = 255
+ *    writes s.  RGBA8888's A byte is mixed like the others (the value's
+ *    alpha is stored, as by rast_fill_polygon, not applied as opacity).
+ *  - RGB565: the same formula on each of R, G, B in their own levels
+ *    (0..31, 0..63, 0..31), the value's bits over the pixel's.
+ *  - MONO1: a threshold: the pixel gets the value iff c >= 128 (more than
+ *    half the pixel covered); else untouched.
+ *  - COUNT16: 1 added (saturating) wherever c > 0; `pixel` ignored (may
+ *    be NULL).
+ * A triangle batch is one region (its union), so a mesh drawn in one call
+ * has no seams and no double blending.  Scratch: rast_coverage_scratch_size
+ * (opts, npoints, clip width, clip height) (3 vertices per triangle).
+ * Errors, all before anything is written: those of rast_polygon_coverage
+ * (RAST_E_ARG for a bad method, rule or sample), and those of the target
+ * (RAST_E_NULL, RAST_E_SIZE, RAST_E_FORMAT; RAST_E_NULL for a NULL pixel
+ * except COUNT16).  The binary entry points are unchanged. */
+RAST_API rast_status rast_fill_polygon_aa(const rast_target *target,
+                                          const rast_polygon *polygon,
+                                          const rast_coverage_opts *opts, const void *pixel,
+                                          void *scratch, size_t scratch_bytes);
+RAST_API rast_status rast_fill_triangles_aa(const rast_target *target,
+                                            const rast_point *tris, uint32_t ntris,
+                                            const rast_coverage_opts *opts, const void *pixel,
+                                            void *scratch, size_t scratch_bytes);
+
 /* ---- region fill -------------------------------------------------------------
  * Seed fill (seed 001 section 3.6): starting at the seed pixel (x, y),
  * write `value` over a connected region of target->clip.  Pixels are

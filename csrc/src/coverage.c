@@ -303,24 +303,31 @@ rast_status rast_triangles_coverage(const rast_point *tris, uint32_t ntris,
                          scratch_bytes);
 }
 
-rast_status rast_polygon_coverage_spans(const rast_polygon *polygon,
-                                        const rast_coverage_opts *opts, const rast_rect *clip,
-                                        rast_coverage_span_fn span, void *user, void *scratch,
-                                        size_t scratch_bytes)
+rast_status rast__cov_spans(const rast_polygon *poly, const rast_point *tris, uint32_t ntris,
+                            const rast_coverage_opts *opts, const rast_rect *clip,
+                            rast_coverage_span_fn span, void *user, void *scratch,
+                            size_t scratch_bytes)
 {
+    static const rast_point none[3] = {{0, 0}, {0, 0}, {0, 0}};
     rast__cov_out o;
     rast_status st;
     uint32_t n = 0;
-    if (!polygon || !span || !clip) return RAST_E_NULL;
-    st = rast__cov_count(polygon, &n);
-    if (st != RAST_OK) return st;
+    if (!span || !clip) return RAST_E_NULL;
+    if (poly) {
+        st = rast__cov_count(poly, &n);
+        if (st != RAST_OK) return st;
+    } else {
+        if (ntris > RAST_MAX_POINTS / 3) return RAST_E_TOO_MANY;
+        if (ntris > 0 && !tris) return RAST_E_NULL;
+        n = 3 * ntris;
+    }
     /* the row buffer at the scratch's start (rast__cov_run skips it) */
     st = rast__cov_begin(opts, clip, RAST_COVERAGE_U8, NULL, 0, n, scratch,
                          scratch_bytes, &o, 1);
     if (st != RAST_OK) return st;
     {
         int32_t kb = rast__aa_kbits(opts->method);
-        st = rast__cov_check_points(polygon->points, n,
+        st = rast__cov_check_points(poly ? poly->points : tris, n,
                                     kb > opts->subpixel_bits ? kb - opts->subpixel_bits : 0);
     }
     if (st != RAST_OK) return st;
@@ -329,5 +336,23 @@ rast_status rast_polygon_coverage_spans(const rast_polygon *polygon,
     o.format = RAST_COVERAGE_U8;
     o.span = span;
     o.user = user;
-    return rast__cov_run(polygon, NULL, 0, n, opts, &o, scratch, scratch_bytes);
+    return rast__cov_run(poly, poly ? NULL : (ntris ? tris : none), ntris, n, opts, &o, scratch,
+                         scratch_bytes);
+}
+
+rast_status rast_polygon_coverage_spans(const rast_polygon *polygon,
+                                        const rast_coverage_opts *opts, const rast_rect *clip,
+                                        rast_coverage_span_fn span, void *user, void *scratch,
+                                        size_t scratch_bytes)
+{
+    if (!polygon) return RAST_E_NULL;
+    return rast__cov_spans(polygon, NULL, 0, opts, clip, span, user, scratch, scratch_bytes);
+}
+
+rast_status rast_triangles_coverage_spans(const rast_point *tris, uint32_t ntris,
+                                          const rast_coverage_opts *opts, const rast_rect *clip,
+                                          rast_coverage_span_fn span, void *user, void *scratch,
+                                          size_t scratch_bytes)
+{
+    return rast__cov_spans(NULL, tris, ntris, opts, clip, span, user, scratch, scratch_bytes);
 }

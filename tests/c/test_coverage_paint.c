@@ -1,0 +1,338 @@
+/*
+ * test_coverage_paint.c - anti-aliased fills (rast_fill_polygon_aa,
+ * rast_fill_triangles_aa) and rast_triangles_coverage_spans:
+ *  - every format: the painted target equals the documented rule applied,
+ *    in this file's own code, to the coverage levels that
+ *    rast_polygon_coverage / rast_triangles_coverage give for the same
+ *    clip (checked against exact references in test_coverage.c): channels
+ *    floor((s c + d (255 - c) + 127) / 255) (rgb565 per 5/6/5 field),
+ *    mono1 set iff c >= 128, count16 + 1 iff c > 0; pixels with c = 0,
+ *    outside the clip, in the row padding and in guard rows are untouched
+ *    (mono1: to the bit);
+ *  - every method, both rules, random overlapping rings;
+ *  - rast_triangles_coverage_spans: the image's values in ordered runs;
+ *  - errors: every status before anything is written.
+ */
+#include <stdint.h>
+#include <string.h>
+
+#define CHECK_RNG_SEED 1213u
+#include "check.h"
+#include "rastrum.h"
+
+#define GUARD 0x5A
+static uint64_t scratch_mem[1 << 17];
+#include "scratch.h"
+
+#define W 13
+#define H 11
+#define PAD 3   /* guard rows above and below, guard bytes after each row */
+#define MAXB 4  /* bytes of the widest pixel */
+#define STRIDE (W * MAXB + 2 * PAD) /* even: 16-bit rows stay aligned */
+#define SIZE ((H + 2 * PAD) * STRIDE)
+
+static unsigned mix(unsigned s, unsigned d, unsigned c)
+{
+    return (s * c + d * (255 - c) + 127) / 255;
+}
+
+/* The pixel (x, y) of `mem` (row y at (y + PAD) * STRIDE) expected after
+ * painting `value` with coverage c over `before`. */
+static void expect(rast_format f, const unsigned char *before, unsigned char *after, int x, int y,
+                   unsigned c, const unsigned char *value)
+{
+    const unsigned char *b = before + (ptrdiff_t)(y + PAD) * STRIDE;
+    unsigned char *a = after + (ptrdiff_t)(y + PAD) * STRIDE;
+    int k;
+    switch (f) {
+    case RAST_FORMAT_GRAY8:
+    case RAST_FORMAT_RGB888:
+    case RAST_FORMAT_RGBA8888: {
+        int n = f == RAST_FORMAT_GRAY8 ? 1 : f == RAST_FORMAT_RGB888 ? 3 : 4;
+        for (k = 0; k < n; k++) a[x * n + k] = (unsigned char)mix(value[k], b[x * n + k], c);
+        break;
+    }
+    case RAST_FORMAT_RGB565: {
+        uint16_t d, s, o;
+        memcpy(&d, b + 2 * x, 2);
+        memcpy(&s, value, 2);
+        o = (uint16_t)(mix(s >> 11, d >> 11, c) << 11 | mix((s >> 5) & 63, (d >> 5) & 63, c) << 5 |
+                       mix(s & 31, d & 31, c));
+        memcpy(a + 2 * x, &o, 2);
+        break;
+    }
+    case RAST_FORMAT_COUNT16: {
+        uint16_t d;
+        memcpy(&d, b + 2 * x, 2);
+        if (c > 0 && d < 65535) d++;
+        memcpy(a + 2 * x, &d, 2);
+        break;
+    }
+    default: { /* MONO1 */
+        unsigned m = 0x80u >> (x % 8);
+        if (c >= 128) a[x / 8] = (unsigned char)(value[0] ? a[x / 8] | m : a[x / 8] & ~m);
+        break;
+    }
+    }
+}
+
+/* 8-byte aligned (16-bit formats need 2) */
+static uint64_t mem[3][SIZE / 8 + 1];
+#define before ((unsigned char *)mem[0])
+#define got ((unsigned char *)mem[1])
+#define want ((unsigned char *)mem[2])
+
+static rast_status paint(const rast_target *t, const rast_polygon *p, const rast_point *tris,
+                         uint32_t ntris, const rast_coverage_opts *o, const void *pixel)
+{
+    size_t need;
+    unsigned char *s;
+    uint32_t np = p ? 0 : 3 * ntris, k;
+    rast_status st;
+    if (p)
+        for (k = 0; k < p->nrings; k++) np += p->ring_sizes[k];
+    st = rast_coverage_scratch_size(o, np, t->clip.x1 - t->clip.x0, t->clip.y1 - t->clip.y0, &need);
+    if (st != RAST_OK) return st;
+    s = scratch_for(need);
+    st = p ? rast_fill_polygon_aa(t, p, o, pixel, s, need)
+           : rast_fill_triangles_aa(t, tris, ntris, o, pixel, s, need);
+    CHECK(scratch_guard_ok(s, need));
+    return st;
+}
+
+static void coverage(const rast_polygon *p, const rast_point *tris, uint32_t ntris,
+                     const rast_coverage_opts *o, const rast_rect *clip, uint8_t *cov)
+{
+    size_t need;
+    unsigned char *s;
+    uint32_t np = p ? 0 : 3 * ntris, k;
+    if (p)
+        for (k = 0; k < p->nrings; k++) np += p->ring_sizes[k];
+    CHECK(rast_coverage_scratch_size(o, np, clip->x1 - clip->x0, clip->y1 - clip->y0, &need) ==
+          RAST_OK);
+    s = scratch_for(need);
+    CHECK((p ? rast_polygon_coverage(p, o, clip, RAST_COVERAGE_U8, cov, W, s, need)
+             : rast_triangles_coverage(tris, ntris, o, clip, RAST_COVERAGE_U8, cov, W, s, need)) ==
+          RAST_OK);
+}
+
+static void random_opts(rast_coverage_opts *o)
+{
+    memset(o, 0, sizeof *o);
+    o->method = (rast_aa_method)(rng() % RAST_AA_COUNT_);
+    o->rule = (rast_fill_rule)(rng() % 2);
+    o->subpixel_bits = (int32_t)(rng() % 5);
+    o->sample = (rast_sample)(rng() % 2);
+}
+
+static void test_formats(void)
+{
+    int iter, n = check_count(600);
+    for (iter = 0; iter < n; iter++) {
+        rast_format f = (rast_format)(iter % RAST_FORMAT_COUNT_);
+        rast_point pts[12];
+        uint32_t sizes[3], nr = 1 + rng() % 3, k, np = 0;
+        rast_polygon poly;
+        rast_coverage_opts o;
+        rast_target t;
+        rast_rect clip;
+        uint8_t cov[H * W];
+        unsigned char value[MAXB];
+        int tri = iter % 7 == 3, x, y;
+        size_t i;
+        random_opts(&o);
+        for (k = 0; k < nr; k++) {
+            uint32_t m = 3 + rng() % 2, j;
+            sizes[k] = m;
+            for (j = 0; j < m; j++, np++) {
+                pts[np].x = (int32_t)(rng() % (uint32_t)((W + 4) << o.subpixel_bits)) -
+                            (2 << o.subpixel_bits);
+                pts[np].y = (int32_t)(rng() % (uint32_t)((H + 4) << o.subpixel_bits)) -
+                            (2 << o.subpixel_bits);
+            }
+        }
+        poly.points = pts;
+        poly.ring_sizes = sizes;
+        poly.nrings = nr;
+        for (i = 0; i < SIZE; i++) before[i] = (unsigned char)rng();
+        for (k = 0; k < MAXB; k++) value[k] = (unsigned char)rng();
+        if (iter % 5 == 0) memset(value, 255, sizeof value); /* opaque white */
+        CHECK(rast_target_init(&t, before + PAD * STRIDE, W, H, STRIDE, f) == RAST_OK);
+        /* a clip inside the target, often the whole */
+        if (rng() % 2) {
+            t.clip.x0 = (int32_t)(rng() % 5);
+            t.clip.y0 = (int32_t)(rng() % 4);
+            t.clip.x1 = W - (int32_t)(rng() % 5);
+            t.clip.y1 = H - (int32_t)(rng() % 4);
+        }
+        clip = t.clip;
+        memset(cov, 0, sizeof cov);
+        coverage(tri ? NULL : &poly, pts, np / 3, &o, &clip, cov);
+        memcpy(want, before, SIZE);
+        for (y = clip.y0; y < clip.y1; y++)
+            for (x = clip.x0; x < clip.x1; x++)
+                expect(f, before, want, x, y, cov[(y - clip.y0) * W + (x - clip.x0)], value);
+        memcpy(got, before, SIZE);
+        t.pixels = got + PAD * STRIDE;
+        CHECK(paint(&t, tri ? NULL : &poly, pts, np / 3, &o, value) == RAST_OK);
+        CHECK(memcmp(got, want, SIZE) == 0);
+    }
+}
+
+/* A coverage of 0 and 255 everywhere: a triangulated square paints its
+ * pixels with exactly the value (no seam blended twice) and leaves the rest. */
+static void test_square(void)
+{
+    static const rast_point sq[6] = {{16, 16}, {144, 16}, {144, 112}, {16, 16}, {144, 112}, {16, 112}};
+    rast_coverage_opts o;
+    rast_target t;
+    unsigned char v[3] = {10, 200, 30};
+    int x, y, m, ok = 1;
+    for (m = 0; m < RAST_AA_COUNT_; m++) {
+        memset(&o, 0, sizeof o);
+        o.method = (rast_aa_method)m;
+        o.subpixel_bits = 4;
+        memset(got, 77, SIZE);
+        CHECK(rast_target_init(&t, got + PAD * STRIDE, W, H, STRIDE, RAST_FORMAT_RGB888) == RAST_OK);
+        CHECK(paint(&t, NULL, sq, 2, &o, v) == RAST_OK);
+        for (y = 0; y < H; y++)
+            for (x = 0; x < W; x++) {
+                const unsigned char *p = got + (y + PAD) * STRIDE + 3 * x;
+                int in = x >= 1 && x < 9 && y >= 1 && y < 7;
+                if (in ? memcmp(p, v, 3) != 0 : (p[0] != 77 || p[1] != 77 || p[2] != 77)) ok = 0;
+            }
+    }
+    CHECK(ok);
+}
+
+/* ---- rast_triangles_coverage_spans ------------------------------------------------ */
+
+typedef struct runs {
+    uint8_t img[H * W];
+    int32_t last_y, last_x1, bad;
+    rast_rect clip;
+} runs;
+
+static void on_run(void *user, int32_t y, int32_t x0, int32_t x1, const uint8_t *v)
+{
+    runs *r = (runs *)user;
+    int32_t x;
+    if (y < r->last_y || (y == r->last_y && x0 <= r->last_x1) || x0 >= x1 || x0 < r->clip.x0 ||
+        x1 > r->clip.x1 || y < r->clip.y0 || y >= r->clip.y1)
+        r->bad = 1;
+    r->last_y = y;
+    r->last_x1 = x1;
+    for (x = x0; x < x1 && !r->bad; x++) {
+        if (!v[x - x0]) r->bad = 1;
+        r->img[(y - r->clip.y0) * W + (x - r->clip.x0)] = v[x - x0];
+    }
+}
+
+static void test_spans(void)
+{
+    int iter, n = check_count(100);
+    for (iter = 0; iter < n; iter++) {
+        rast_point tris[12];
+        rast_coverage_opts o;
+        rast_rect clip = {-2, 1, W - 2, H};
+        uint8_t cov[H * W];
+        runs r;
+        size_t need;
+        unsigned char *s;
+        uint32_t nt = 1 + rng() % 4, k;
+        random_opts(&o);
+        for (k = 0; k < 3 * nt; k++) {
+            tris[k].x = (int32_t)(rng() % (uint32_t)((W + 2) << o.subpixel_bits)) - (3 << o.subpixel_bits);
+            tris[k].y = (int32_t)(rng() % (uint32_t)((H + 2) << o.subpixel_bits));
+        }
+        memset(cov, 0, sizeof cov);
+        coverage(NULL, tris, nt, &o, &clip, cov);
+        memset(&r, 0, sizeof r);
+        r.last_y = clip.y0 - 1;
+        r.clip = clip;
+        CHECK(rast_coverage_scratch_size(&o, 3 * nt, W, H - 1, &need) == RAST_OK);
+        s = scratch_for(need);
+        CHECK(rast_triangles_coverage_spans(tris, nt, &o, &clip, on_run, &r, s, need) == RAST_OK);
+        CHECK(scratch_guard_ok(s, need));
+        CHECK(!r.bad);
+        CHECK(memcmp(r.img, cov, sizeof cov) == 0);
+    }
+}
+
+/* ---- errors: nothing written ------------------------------------------------------- */
+
+static void no_run(void *user, int32_t y, int32_t x0, int32_t x1, const uint8_t *v)
+{
+    (void)y, (void)x0, (void)x1, (void)v;
+    *(int *)user = 1;
+}
+
+static void test_errors(void)
+{
+    static const rast_point tri[3] = {{0, 0}, {64, 0}, {0, 64}};
+    const uint32_t three = 3;
+    rast_polygon p = {tri, &three, 1};
+    rast_coverage_opts o;
+    rast_target t;
+    rast_rect clip = {0, 0, 4, 4};
+    size_t need;
+    unsigned char *s, v = 200;
+    int called = 0;
+    memset(&o, 0, sizeof o);
+    o.subpixel_bits = 4;
+    CHECK(rast_coverage_scratch_size(&o, 3, W, H, &need) == RAST_OK);
+    s = scratch_for(need);
+    memset(before, 0xAB, SIZE);
+    memcpy(got, before, SIZE);
+    CHECK(rast_target_init(&t, got + PAD * STRIDE, W, H, STRIDE, RAST_FORMAT_GRAY8) == RAST_OK);
+#define REFUSED(call, status) CHECK((call) == (status) && memcmp(got, before, SIZE) == 0)
+    REFUSED(rast_fill_polygon_aa(&t, &p, &o, &v, s, need - 1), RAST_E_SCRATCH);
+    REFUSED(rast_fill_polygon_aa(&t, &p, &o, &v, s + 1, need), RAST_E_ALIGN);
+    REFUSED(rast_fill_polygon_aa(&t, &p, &o, NULL, s, need), RAST_E_NULL);
+    REFUSED(rast_fill_polygon_aa(NULL, &p, &o, &v, s, need), RAST_E_NULL);
+    REFUSED(rast_fill_polygon_aa(&t, NULL, &o, &v, s, need), RAST_E_NULL);
+    REFUSED(rast_fill_polygon_aa(&t, &p, NULL, &v, s, need), RAST_E_NULL);
+    REFUSED(rast_fill_triangles_aa(&t, NULL, 1, &o, &v, s, need), RAST_E_NULL);
+    REFUSED(rast_fill_triangles_aa(&t, tri, RAST_MAX_POINTS, &o, &v, s, need), RAST_E_TOO_MANY);
+    o.method = RAST_AA_COUNT_;
+    REFUSED(rast_fill_polygon_aa(&t, &p, &o, &v, s, need), RAST_E_ARG);
+    o.method = RAST_AA_AREA;
+    o.rule = (rast_fill_rule)2;
+    REFUSED(rast_fill_polygon_aa(&t, &p, &o, &v, s, need), RAST_E_ARG);
+    o.rule = RAST_RULE_EVENODD;
+    o.subpixel_bits = 17;
+    REFUSED(rast_fill_triangles_aa(&t, tri, 1, &o, &v, s, need), RAST_E_SUBPIXEL);
+    o.subpixel_bits = 4;
+    {
+        rast_point far[3] = {{0, 0}, {RAST_COORD_MAX + 1, 0}, {0, 64}};
+        rast_polygon pf = {far, &three, 1};
+        REFUSED(rast_fill_polygon_aa(&t, &pf, &o, &v, s, need), RAST_E_RANGE);
+        REFUSED(rast_fill_triangles_aa(&t, far, 1, &o, &v, s, need), RAST_E_RANGE);
+    }
+    t.format = (rast_format)RAST_FORMAT_COUNT_;
+    REFUSED(rast_fill_polygon_aa(&t, &p, &o, &v, s, need), RAST_E_FORMAT);
+    t.format = RAST_FORMAT_GRAY8;
+    t.stride = W - 1;
+    REFUSED(rast_fill_polygon_aa(&t, &p, &o, &v, s, need), RAST_E_SIZE);
+    t.stride = STRIDE;
+    /* COUNT16 takes no value */
+    CHECK(rast_target_init(&t, got + PAD * STRIDE, W, H, STRIDE, RAST_FORMAT_COUNT16) == RAST_OK);
+    CHECK(rast_fill_polygon_aa(&t, &p, &o, NULL, s, need) == RAST_OK);
+    CHECK(memcmp(got, before, SIZE) != 0);
+    /* the spans call: errors before the first run */
+    CHECK(rast_triangles_coverage_spans(tri, 1, &o, &clip, NULL, &called, s, need) == RAST_E_NULL);
+    CHECK(rast_triangles_coverage_spans(tri, 1, &o, NULL, no_run, &called, s, need) == RAST_E_NULL);
+    CHECK(rast_triangles_coverage_spans(tri, 1, &o, &clip, no_run, &called, s, 0) == RAST_E_SCRATCH);
+    CHECK(!called);
+    CHECK(rast_triangles_coverage_spans(tri, 1, &o, &clip, no_run, &called, s, need) == RAST_OK);
+    CHECK(called);
+}
+
+int main(void)
+{
+    test_formats();
+    test_square();
+    test_spans();
+    test_errors();
+    return check_report("test_coverage_paint");
+}

@@ -993,6 +993,14 @@ typedef struct rast_prim {
     const rast_line_opts *line;    /* RAST_PRIM_POLYLINE */
     const void *pixel;
     rast_polygon64 polygon64;      /* RAST_PRIM_POLYGON64 */
+    /* RAST_PRIM_POLYGON, RAST_PRIM_TRIANGLES: NULL (zero-initialised) draws
+     * the binary fill with `fill` / `tri`; otherwise the anti-aliased one
+     * with these coverage options (rast_fill_polygon_aa,
+     * rast_fill_triangles_aa; `fill` / `tri` are then not read), its
+     * scratch rast_coverage_scratch_size for the band.  Only
+     * rast_render_bands paints it; rast_render_bands_spans and the other
+     * kinds refuse a non-NULL aa (RAST_E_ARG). */
+    const struct rast_coverage_opts *aa;
 } rast_prim;
 
 /* A span of primitive `prim` (a pointer into the caller's array) in row y,
@@ -1013,7 +1021,8 @@ typedef struct rast_band_stats {
 /* Scratch bytes that draw every primitive of the scene in a band of
  * `band_rows` rows and `width` columns without halving: the largest need of
  * one primitive (polygons: rast_scratch_size, rast_scratch_size64; triangles:
- * rast_tri_scratch_size; polylines: none).  band_rows = 1 gives the least
+ * rast_tri_scratch_size; polylines: none; anti-aliased ones, prim->aa:
+ * rast_coverage_scratch_size).  band_rows = 1 gives the least
  * scratch with which rast_render_bands succeeds.  n may be 0 (prims may
  * then be NULL).  Errors: RAST_E_NULL, RAST_E_ARG (an unknown kind,
  * band_rows < 1), RAST_E_SIZE (width or band_rows past RAST_MAX_DIM, or a
@@ -1028,8 +1037,11 @@ RAST_API rast_status rast_scene_scratch_size(const rast_prim *prims, uint32_t n,
  * drawing the primitives in order with their own entry points.  `scratch`
  * aligned to RAST_SCRATCH_ALIGN; `stats` may be NULL.  Errors, all before
  * anything is written: those of each primitive's entry point,
- * RAST_E_ARG (an unknown kind, band_rows < 1), RAST_E_SCRATCH (some
- * primitive does not fit even a one-row band). */
+ * RAST_E_ARG (an unknown kind, band_rows < 1, aa on a kind other than
+ * polygon and triangles), RAST_E_SCRATCH (some primitive does not fit even
+ * a one-row band).  Anti-aliased primitives blend into what the ones
+ * before them drew, band by band: the same pixels as one full call (a
+ * pixel's coverage depends on its row alone). */
 RAST_API rast_status rast_render_bands(const rast_target *target, const rast_prim *prims,
                                        uint32_t n, int32_t band_rows, void *scratch,
                                        size_t scratch_bytes, rast_band_stats *stats);
@@ -1038,8 +1050,9 @@ RAST_API rast_status rast_render_bands(const rast_target *target, const rast_pri
  * with a framebuffer of a band, or none): band by band, in each band the
  * primitives in order, each primitive's spans as its own spans call gives
  * them.  The clip as for rast_fill_polygon_spans; errors as
- * rast_render_bands, RAST_E_NULL also for clip or span, all before the
- * first span. */
+ * rast_render_bands, RAST_E_NULL also for clip or span, RAST_E_ARG for an
+ * anti-aliased primitive (a span carries no coverage: use
+ * rast_polygon_coverage_spans), all before the first span. */
 RAST_API rast_status rast_render_bands_spans(const rast_prim *prims, uint32_t n,
                                              const rast_rect *clip, int32_t band_rows,
                                              rast_prim_span_fn span, void *user,

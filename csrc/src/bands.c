@@ -16,6 +16,16 @@
  */
 #include "paint.h"
 
+/* An anti-aliased primitive's scratch for a band (rast_coverage_scratch_size;
+ * a span clip's width past RAST_MAX_DIM never gets here: the spans call
+ * refuses aa). */
+static rast_status rast__cov_need_band(const rast_coverage_opts *aa, uint64_t npoints,
+                                       int32_t width, int32_t rows, size_t *need)
+{
+    if (npoints > RAST_MAX_POINTS) return RAST_E_TOO_MANY;
+    return rast_coverage_scratch_size(aa, (uint32_t)npoints, width, rows, need);
+}
+
 /* Scratch that primitive p needs for a band of `rows` rows and `width`
  * columns (also checks its kind and options). */
 static rast_status rast__prim_need(const rast_prim *p, int32_t width, int32_t rows,
@@ -23,6 +33,8 @@ static rast_status rast__prim_need(const rast_prim *p, int32_t width, int32_t ro
 {
     uint64_t npoints = 0;
     uint32_t k;
+    /* coverage is for 32-bit polygons and triangle batches */
+    if (p->aa && p->kind != RAST_PRIM_POLYGON && p->kind != RAST_PRIM_TRIANGLES) return RAST_E_ARG;
     /* 64-bit polygons outside the switch: a switch of four cases makes
      * GCC's Thumb-1 code call a case-table helper (__gnu_thumb1_case_uqi)
      * that firmware-check does not allow. */
@@ -45,8 +57,10 @@ static rast_status rast__prim_need(const rast_prim *p, int32_t width, int32_t ro
             npoints += p->polygon.ring_sizes[k];
             if (npoints > RAST_MAX_POINTS) return RAST_E_TOO_MANY;
         }
+        if (p->aa) return rast__cov_need_band(p->aa, npoints, width, rows, need);
         return rast__fill_need(p->fill, (uint32_t)npoints, width, rows, need);
     case RAST_PRIM_TRIANGLES:
+        if (p->aa) return rast__cov_need_band(p->aa, 3 * (uint64_t)p->count, width, rows, need);
         return rast__tri_fill_need(p->tri, width, rows, need);
     case RAST_PRIM_POLYLINE:
         if (!p->line) return RAST_E_NULL;
@@ -112,6 +126,11 @@ static rast_status rast__prim_draw(rast__scene *s, const rast_prim *p, const ras
         if (p->kind == RAST_PRIM_POLYGON64) /* (outside the switch: see rast__prim_need) */
             return rast_fill_polygon64(&t, &p->polygon64, p->fill, p->pixel, s->scratch,
                                        s->bytes);
+        if (p->aa && p->kind == RAST_PRIM_POLYGON)
+            return rast_fill_polygon_aa(&t, &p->polygon, p->aa, p->pixel, s->scratch, s->bytes);
+        if (p->aa) /* RAST_PRIM_TRIANGLES: rast__prim_need refused the others */
+            return rast_fill_triangles_aa(&t, p->points, p->count, p->aa, p->pixel, s->scratch,
+                                          s->bytes);
         switch (p->kind) {
         case RAST_PRIM_POLYGON:
             return rast_fill_polygon(&t, &p->polygon, p->fill, p->pixel, s->scratch, s->bytes);
@@ -125,6 +144,7 @@ static rast_status rast__prim_draw(rast__scene *s, const rast_prim *p, const ras
         }
     }
     s->prim = p;
+    if (p->aa) return RAST_E_ARG; /* a span has no coverage values */
     if (p->kind == RAST_PRIM_POLYGON64)
         return rast_fill_polygon64_spans(&p->polygon64, p->fill, band, rast__scene_span, s,
                                          s->scratch, s->bytes);

@@ -11,6 +11,11 @@
  *    (mono1: to the bit);
  *  - every method, both rules, random overlapping rings;
  *  - rast_triangles_coverage_spans: the image's values in ordered runs;
+ *  - scenes with anti-aliased primitives (rast_prim.aa) drawn band by band
+ *    (rows of 1, 5, 16 and all, and a scratch that forces halving): the
+ *    same bytes as each primitive's own entry point into the whole target,
+ *    in order; the scratch a function of the edges and the band, not of
+ *    the coordinates; the spans call refuses them;
  *  - errors: every status before anything is written.
  */
 #include <stdint.h>
@@ -328,11 +333,170 @@ static void test_errors(void)
     CHECK(called);
 }
 
+/* ---- scenes band by band ----------------------------------------------------------- */
+
+#define BW 40
+#define BH 37
+#define BSTRIDE (BW * 3 + 4)
+static unsigned char band_full[BH * BSTRIDE], band_got[BH * BSTRIDE];
+static uint64_t band_scratch[1 << 15];
+
+typedef struct bscene {
+    rast_prim prims[6];
+    rast_point pts[6][12];
+    uint32_t sizes[6][2];
+    rast_coverage_opts aa[6];
+    rast_fill_opts fill[6];
+    unsigned char pixel[6][3];
+    uint32_t n;
+} bscene;
+
+static void band_scene(bscene *sc, int32_t far)
+{
+    uint32_t i, k;
+    memset(sc, 0, sizeof *sc);
+    sc->n = 6;
+    for (i = 0; i < sc->n; i++) {
+        rast_prim *p = &sc->prims[i];
+        int tri = i % 3 == 2;
+        random_opts(&sc->aa[i]);
+        sc->aa[i].subpixel_bits = 4;
+        for (k = 0; k < 12; k++) {
+            sc->pts[i][k].x = (int32_t)(rng() % ((BW + 8) << 4)) - (4 << 4);
+            sc->pts[i][k].y = (int32_t)(rng() % ((BH + 8) << 4)) - (4 << 4);
+        }
+        if (far && i == 1) sc->pts[i][3].y = RAST_COORD_MAX >> 4 << 4; /* reaching far down */
+        for (k = 0; k < 3; k++) sc->pixel[i][k] = (unsigned char)rng();
+        p->pixel = sc->pixel[i];
+        if (tri) {
+            p->kind = RAST_PRIM_TRIANGLES;
+            p->points = sc->pts[i];
+            p->count = 4;
+            p->aa = &sc->aa[i];
+        } else {
+            sc->sizes[i][0] = 5;
+            sc->sizes[i][1] = 7;
+            p->kind = RAST_PRIM_POLYGON;
+            p->polygon.points = sc->pts[i];
+            p->polygon.ring_sizes = sc->sizes[i];
+            p->polygon.nrings = 2;
+            sc->fill[i].subpixel_bits = 4;
+            sc->fill[i].rule = sc->aa[i].rule;
+            p->fill = &sc->fill[i];
+            p->aa = i == 3 ? NULL : &sc->aa[i]; /* one binary polygon among them */
+        }
+    }
+}
+
+static void test_bands(void)
+{
+    int iter, n = check_count(40);
+    for (iter = 0; iter < n; iter++) {
+        static const int32_t rows[5] = {1, 5, 16, BH, 3};
+        bscene sc;
+        rast_target t;
+        size_t need, bytes;
+        uint32_t i;
+        int r;
+        band_scene(&sc, 0);
+        /* the primitives one after the other into the whole target */
+        memset(band_full, 90, sizeof band_full);
+        CHECK(rast_target_init(&t, band_full, BW, BH, BSTRIDE, RAST_FORMAT_RGB888) == RAST_OK);
+        for (i = 0; i < sc.n; i++) {
+            const rast_prim *p = &sc.prims[i];
+            uint32_t np = p->kind == RAST_PRIM_TRIANGLES ? 3 * p->count : 12;
+            unsigned char *s = (unsigned char *)band_scratch;
+            if (p->aa) {
+                CHECK(rast_coverage_scratch_size(p->aa, np, BW, BH, &need) == RAST_OK);
+                CHECK(need <= sizeof band_scratch);
+                CHECK((p->kind == RAST_PRIM_POLYGON
+                           ? rast_fill_polygon_aa(&t, &p->polygon, p->aa, p->pixel, s, need)
+                           : rast_fill_triangles_aa(&t, p->points, p->count, p->aa, p->pixel, s,
+                                                    need)) == RAST_OK);
+            } else {
+                CHECK(rast_scratch_size(p->fill, np, BW, BH, &need) == RAST_OK);
+                CHECK(rast_fill_polygon(&t, &p->polygon, p->fill, p->pixel, s, need) == RAST_OK);
+            }
+        }
+        for (r = 0; r < 5; r++) {
+            rast_band_stats stats;
+            CHECK(rast_scene_scratch_size(sc.prims, sc.n, rows[r], BW, &need) == RAST_OK);
+            bytes = need;
+            if (r == 4) { /* between one row's need and the band's: halved bands */
+                CHECK(rast_scene_scratch_size(sc.prims, sc.n, 1, BW, &bytes) == RAST_OK);
+                CHECK(rast_scene_scratch_size(sc.prims, sc.n, 32, BW, &need) == RAST_OK);
+                bytes = (bytes + need) / 2 / RAST_SCRATCH_ALIGN * RAST_SCRATCH_ALIGN;
+            }
+            memset(band_got, 90, sizeof band_got);
+            t.pixels = band_got;
+            CHECK(rast_render_bands(&t, sc.prims, sc.n, r == 4 ? 32 : rows[r], band_scratch, bytes,
+                                    &stats) == RAST_OK);
+            CHECK(stats.peak_scratch <= bytes);
+            CHECK(memcmp(band_got, band_full, sizeof band_got) == 0);
+        }
+        /* the need grows with the edges and the band, not the coordinates */
+        {
+            bscene far;
+            size_t near_need, far_need;
+            rng_state ^= 0x9E3779B9u;
+            band_scene(&far, 1);
+            CHECK(rast_scene_scratch_size(far.prims, far.n, 5, BW, &far_need) == RAST_OK);
+            far.pts[1][3].y = 3;
+            CHECK(rast_scene_scratch_size(far.prims, far.n, 5, BW, &near_need) == RAST_OK);
+            CHECK(far_need == near_need);
+        }
+    }
+}
+
+static void prim_span(void *user, const rast_prim *prim, int32_t y, int32_t x0, int32_t x1)
+{
+    (void)prim, (void)y, (void)x0, (void)x1;
+    *(int *)user = 1;
+}
+
+static void test_band_errors(void)
+{
+    bscene sc;
+    rast_target t;
+    rast_rect clip = {0, 0, BW, BH};
+    size_t need;
+    int called = 0;
+    band_scene(&sc, 0);
+    CHECK(rast_scene_scratch_size(sc.prims, sc.n, 4, BW, &need) == RAST_OK);
+    /* the spans call has no coverage to hand on */
+    CHECK(rast_render_bands_spans(sc.prims, sc.n, &clip, 4, prim_span, &called, band_scratch, need,
+                                  NULL) == RAST_E_ARG);
+    CHECK(!called);
+    /* aa on a polyline; a bad method at the end: nothing written */
+    memset(band_full, 90, sizeof band_full);
+    memcpy(band_got, band_full, sizeof band_got);
+    CHECK(rast_target_init(&t, band_got, BW, BH, BSTRIDE, RAST_FORMAT_RGB888) == RAST_OK);
+    sc.aa[4].method = RAST_AA_COUNT_;
+    CHECK(rast_render_bands(&t, sc.prims, sc.n, 4, band_scratch, need, NULL) == RAST_E_ARG);
+    CHECK(rast_scene_scratch_size(sc.prims, sc.n, 4, BW, &need) == RAST_E_ARG);
+    sc.aa[4].method = RAST_AA_SS4;
+    sc.prims[5].kind = RAST_PRIM_POLYLINE;
+    sc.prims[5].count = 3;
+    {
+        rast_line_opts lo;
+        memset(&lo, 0, sizeof lo);
+        sc.prims[5].line = &lo;
+        CHECK(rast_scene_scratch_size(sc.prims, sc.n, 4, BW, &need) == RAST_E_ARG);
+        CHECK(rast_render_bands(&t, sc.prims, sc.n, 4, band_scratch, sizeof band_scratch, NULL) ==
+              RAST_E_ARG);
+        sc.prims[5].aa = NULL; /* a binary polyline is fine */
+        CHECK(rast_scene_scratch_size(sc.prims, sc.n, 4, BW, &need) == RAST_OK);
+    }
+    CHECK(memcmp(band_got, band_full, sizeof band_got) == 0);
+}
+
 int main(void)
 {
     test_formats();
     test_square();
     test_spans();
     test_errors();
+    test_bands();
+    test_band_errors();
     return check_report("test_coverage_paint");
 }

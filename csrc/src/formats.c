@@ -72,10 +72,14 @@ static void rast__gray8_put(unsigned char *row, int32_t x, int32_t n, const unsi
     for (k = 0; k < n; k++) row[x + k] = rgba[4 * k];
 }
 
+/* One byte a pixel: a loop the compiler vectorises (the division by the
+ * constant 255 is a multiply). */
 static void rast__gray8_blend(unsigned char *row, int32_t x0, int32_t x1, const uint8_t *cov,
                               const unsigned char *v)
 {
-    rast__blend_bytes(row, x0, x1, cov, v, 1);
+    unsigned s = v[0];
+    int32_t i;
+    for (i = x0; i < x1; i++) row[i] = (unsigned char)rast__blend8(s, row[i], cov[i - x0]);
 }
 
 /* ---- rgb888: R, G, B bytes ------------------------------------------------- */

@@ -1,8 +1,8 @@
 /*
  * test_coverage_paint.c - anti-aliased fills (rast_fill_polygon_aa,
  * rast_fill_triangles_aa) and rast_triangles_coverage_spans:
- *  - every format: the painted target equals the documented rule applied,
- *    in this file's own code, to the coverage levels that
+ *  - every format: the painted target equals the documented rule applied
+ *    (blend_ref.h, written from the docs) to the coverage levels that
  *    rast_polygon_coverage / rast_triangles_coverage give for the same
  *    clip (checked against exact references in test_coverage.c): channels
  *    floor((s c + d (255 - c) + 127) / 255) (rgb565 per 5/6/5 field),
@@ -22,6 +22,7 @@
 #include <string.h>
 
 #define CHECK_RNG_SEED 1213u
+#include "blend_ref.h"
 #include "check.h"
 #include "rastrum.h"
 
@@ -35,51 +36,6 @@ static uint64_t scratch_mem[1 << 17];
 #define MAXB 4  /* bytes of the widest pixel */
 #define STRIDE (W * MAXB + 2 * PAD) /* even: 16-bit rows stay aligned */
 #define SIZE ((H + 2 * PAD) * STRIDE)
-
-static unsigned mix(unsigned s, unsigned d, unsigned c)
-{
-    return (s * c + d * (255 - c) + 127) / 255;
-}
-
-/* The pixel (x, y) of `mem` (row y at (y + PAD) * STRIDE) expected after
- * painting `value` with coverage c over `before`. */
-static void expect(rast_format f, const unsigned char *before, unsigned char *after, int x, int y,
-                   unsigned c, const unsigned char *value)
-{
-    const unsigned char *b = before + (ptrdiff_t)(y + PAD) * STRIDE;
-    unsigned char *a = after + (ptrdiff_t)(y + PAD) * STRIDE;
-    int k;
-    switch (f) {
-    case RAST_FORMAT_GRAY8:
-    case RAST_FORMAT_RGB888:
-    case RAST_FORMAT_RGBA8888: {
-        int n = f == RAST_FORMAT_GRAY8 ? 1 : f == RAST_FORMAT_RGB888 ? 3 : 4;
-        for (k = 0; k < n; k++) a[x * n + k] = (unsigned char)mix(value[k], b[x * n + k], c);
-        break;
-    }
-    case RAST_FORMAT_RGB565: {
-        uint16_t d, s, o;
-        memcpy(&d, b + 2 * x, 2);
-        memcpy(&s, value, 2);
-        o = (uint16_t)(mix(s >> 11, d >> 11, c) << 11 | mix((s >> 5) & 63, (d >> 5) & 63, c) << 5 |
-                       mix(s & 31, d & 31, c));
-        memcpy(a + 2 * x, &o, 2);
-        break;
-    }
-    case RAST_FORMAT_COUNT16: {
-        uint16_t d;
-        memcpy(&d, b + 2 * x, 2);
-        if (c > 0 && d < 65535) d++;
-        memcpy(a + 2 * x, &d, 2);
-        break;
-    }
-    default: { /* MONO1 */
-        unsigned m = 0x80u >> (x % 8);
-        if (c >= 128) a[x / 8] = (unsigned char)(value[0] ? a[x / 8] | m : a[x / 8] & ~m);
-        break;
-    }
-    }
-}
 
 /* 8-byte aligned (16-bit formats need 2) */
 static uint64_t mem[3][SIZE / 8 + 1];
@@ -176,7 +132,8 @@ static void test_formats(void)
         memcpy(want, before, SIZE);
         for (y = clip.y0; y < clip.y1; y++)
             for (x = clip.x0; x < clip.x1; x++)
-                expect(f, before, want, x, y, cov[(y - clip.y0) * W + (x - clip.x0)], value);
+                blend_ref(f, want + (y + PAD) * STRIDE, x, cov[(y - clip.y0) * W + (x - clip.x0)],
+                          value);
         memcpy(got, before, SIZE);
         t.pixels = got + PAD * STRIDE;
         CHECK(paint(&t, tri ? NULL : &poly, pts, np / 3, &o, value) == RAST_OK);

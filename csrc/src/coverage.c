@@ -303,10 +303,13 @@ rast_status rast_triangles_coverage(const rast_point *tris, uint32_t ntris,
                          scratch_bytes);
 }
 
-rast_status rast__cov_spans(const rast_polygon *poly, const rast_point *tris, uint32_t ntris,
-                            const rast_coverage_opts *opts, const rast_rect *clip,
-                            rast_coverage_span_fn span, void *user, void *scratch,
-                            size_t scratch_bytes)
+/* The spans calls: `poly`, or when it is NULL the union of the ntris
+ * triangles at tris, inside `clip`, its runs of uint8 values not 0 handed
+ * to `span` row by row; every check before the first run. */
+static rast_status rast__cov_spans(const rast_polygon *poly, const rast_point *tris,
+                                   uint32_t ntris, const rast_coverage_opts *opts,
+                                   const rast_rect *clip, rast_coverage_span_fn span, void *user,
+                                   void *scratch, size_t scratch_bytes)
 {
     static const rast_point none[3] = {{0, 0}, {0, 0}, {0, 0}};
     rast__cov_out o;

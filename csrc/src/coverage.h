@@ -140,17 +140,6 @@ typedef struct rast__cov_out {
     void *user;
 } rast__cov_out;
 
-/* The spans calls (rast_polygon_coverage_spans, rast_triangles_coverage_spans
- * and the painting entry points of coverage_paint.c): `poly`, or when it is
- * NULL the union of the ntris triangles at tris, inside `clip`, its runs of
- * uint8 values not 0 handed to `span` row by row.  Every check (options,
- * clip, geometry, scratch: rast_coverage_scratch_size for the clip) before
- * the first run. */
-rast_status rast__cov_spans(const rast_polygon *poly, const rast_point *tris, uint32_t ntris,
-                            const rast_coverage_opts *opts, const rast_rect *clip,
-                            rast_coverage_span_fn span, void *user, void *scratch,
-                            size_t scratch_bytes);
-
 /* Row y is complete: hand its runs of values not 0 to o->span, if any. */
 void rast__cov_row_done(const rast__cov_out *o, int32_t y);
 

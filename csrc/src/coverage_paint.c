@@ -1,10 +1,10 @@
 /*
  * coverage_paint.c - anti-aliased fills (rastrum.h, "anti-aliased
  * fills"): the coverage of a polygon or a triangle batch, row by row as
- * runs of uint8 levels (rast__cov_spans), painted into a target by its
- * format's blend function (formats.c).  Every check before the first run.
+ * runs of uint8 levels (rast_polygon_coverage_spans,
+ * rast_triangles_coverage_spans), painted into a target by its format's
+ * blend function (formats.c).  Every check before the first run.
  */
-#include "coverage.h"
 #include "paint.h"
 
 /* The painter: the target's rows and format, and the value. */
@@ -36,8 +36,11 @@ static rast_status rast__fill_aa(const rast_target *target, const rast_polygon *
     p.stride = target->stride;
     memset(p.value, 0, sizeof p.value);
     if (p.fmt->value) memcpy(p.value, pixel, (size_t)p.fmt->value);
-    return rast__cov_spans(poly, tris, ntris, opts, &clip, rast__aa_run, &p, scratch,
-                           scratch_bytes);
+    if (poly)
+        return rast_polygon_coverage_spans(poly, opts, &clip, rast__aa_run, &p, scratch,
+                                           scratch_bytes);
+    return rast_triangles_coverage_spans(tris, ntris, opts, &clip, rast__aa_run, &p, scratch,
+                                         scratch_bytes);
 }
 
 rast_status rast_fill_polygon_aa(const rast_target *target, const rast_polygon *polygon,

@@ -997,9 +997,10 @@ typedef struct rast_prim {
      * the binary fill with `fill` / `tri`; otherwise the anti-aliased one
      * with these coverage options (rast_fill_polygon_aa,
      * rast_fill_triangles_aa; `fill` / `tri` are then not read), its
-     * scratch rast_coverage_scratch_size for the band.  Only
-     * rast_render_bands paints it; rast_render_bands_spans and the other
-     * kinds refuse a non-NULL aa (RAST_E_ARG). */
+     * scratch rast_coverage_scratch_size for the band.  rast_render_bands
+     * paints it, rast_render_bands_coverage hands on its values;
+     * rast_render_bands_spans and the other kinds refuse a non-NULL aa
+     * (RAST_E_ARG). */
     const struct rast_coverage_opts *aa;
 } rast_prim;
 
@@ -1052,12 +1053,29 @@ RAST_API rast_status rast_render_bands(const rast_target *target, const rast_pri
  * them.  The clip as for rast_fill_polygon_spans; errors as
  * rast_render_bands, RAST_E_NULL also for clip or span, RAST_E_ARG for an
  * anti-aliased primitive (a span carries no coverage: use
- * rast_polygon_coverage_spans), all before the first span. */
+ * rast_render_bands_coverage), all before the first span. */
 RAST_API rast_status rast_render_bands_spans(const rast_prim *prims, uint32_t n,
                                              const rast_rect *clip, int32_t band_rows,
                                              rast_prim_span_fn span, void *user,
                                              void *scratch, size_t scratch_bytes,
                                              rast_band_stats *stats);
+
+/* The same with coverage (a display driver that blends, band by band):
+ * as rast_render_bands_spans, each span handed to `span` with `values`:
+ * NULL for a binary primitive's span (every pixel of it fully the
+ * primitive's), and for an anti-aliased one (prim->aa) the uint8 levels
+ * 1..255 of its pixels x0..x1-1, the runs rast_polygon_coverage_spans /
+ * rast_triangles_coverage_spans give for the band (valid during the call
+ * only).  Errors as rast_render_bands_spans (an anti-aliased primitive is
+ * accepted here), RAST_E_SIZE also for an anti-aliased primitive in a clip
+ * wider than RAST_MAX_DIM, all before the first span. */
+typedef void (*rast_prim_coverage_fn)(void *user, const rast_prim *prim, int32_t y, int32_t x0,
+                                      int32_t x1, const uint8_t *values);
+RAST_API rast_status rast_render_bands_coverage(const rast_prim *prims, uint32_t n,
+                                                const rast_rect *clip, int32_t band_rows,
+                                                rast_prim_coverage_fn span, void *user,
+                                                void *scratch, size_t scratch_bytes,
+                                                rast_band_stats *stats);
 
 /* ---- pycocotools' polygon rule (coco.c) --------------------------------------
  * Not the exact rule: the rule with which pycocotools (cocoapi maskApi.c,

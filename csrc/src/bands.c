@@ -90,10 +90,12 @@ rast_status rast_scene_scratch_size(const rast_prim *prims, uint32_t n, int32_t 
     return RAST_OK;
 }
 
-/* Where the primitives go: a target (spans == NULL) or a span callback. */
+/* Where the primitives go: a target (target not NULL), a span callback
+ * (span) or a coverage callback (cspan). */
 typedef struct rast__scene {
     const rast_target *target;
     rast_prim_span_fn span;
+    rast_prim_coverage_fn cspan;
     void *user;
     const rast_prim *prim; /* the primitive being drawn, for the callback */
     void *scratch;
@@ -101,10 +103,11 @@ typedef struct rast__scene {
 } rast__scene;
 
 static void rast__scene_init(rast__scene *s, const rast_target *target, rast_prim_span_fn span,
-                             void *user, void *scratch, size_t bytes)
+                             rast_prim_coverage_fn cspan, void *user, void *scratch, size_t bytes)
 {
     s->target = target;
     s->span = span;
+    s->cspan = cspan;
     s->user = user;
     s->prim = NULL;
     s->scratch = scratch;
@@ -114,7 +117,14 @@ static void rast__scene_init(rast__scene *s, const rast_target *target, rast_pri
 static void rast__scene_span(void *user, int32_t y, int32_t x0, int32_t x1)
 {
     const rast__scene *s = (const rast__scene *)user;
-    s->span(s->user, s->prim, y, x0, x1);
+    if (s->span) s->span(s->user, s->prim, y, x0, x1);
+    else s->cspan(s->user, s->prim, y, x0, x1, NULL); /* binary: all of each pixel */
+}
+
+static void rast__scene_cov(void *user, int32_t y, int32_t x0, int32_t x1, const uint8_t *values)
+{
+    const rast__scene *s = (const rast__scene *)user;
+    s->cspan(s->user, s->prim, y, x0, x1, values);
 }
 
 /* Draw primitive p inside `band` (inside the clip) through its entry point. */
@@ -144,7 +154,13 @@ static rast_status rast__prim_draw(rast__scene *s, const rast_prim *p, const ras
         }
     }
     s->prim = p;
-    if (p->aa) return RAST_E_ARG; /* a span has no coverage values */
+    if (p->aa && !s->cspan) return RAST_E_ARG; /* a span has no coverage values */
+    if (p->aa && p->kind == RAST_PRIM_POLYGON)
+        return rast_polygon_coverage_spans(&p->polygon, p->aa, band, rast__scene_cov, s,
+                                           s->scratch, s->bytes);
+    if (p->aa) /* RAST_PRIM_TRIANGLES: rast__prim_need refused the others */
+        return rast_triangles_coverage_spans(p->points, p->count, p->aa, band, rast__scene_cov, s,
+                                             s->scratch, s->bytes);
     if (p->kind == RAST_PRIM_POLYGON64)
         return rast_fill_polygon64_spans(&p->polygon64, p->fill, band, rast__scene_span, s,
                                          s->scratch, s->bytes);
@@ -233,20 +249,41 @@ rast_status rast_render_bands(const rast_target *target, const rast_prim *prims,
     rast_rect clip;
     rast_status st = rast__target_check(target, &clip);
     if (st != RAST_OK) return st;
-    rast__scene_init(&s, target, NULL, NULL, scratch, scratch_bytes);
+    rast__scene_init(&s, target, NULL, NULL, NULL, scratch, scratch_bytes);
     return rast__render(&s, prims, n, &clip, band_rows, stats);
+}
+
+/* The spans calls: a checked clip, the scene to `span` or `cspan`. */
+static rast_status rast__render_to(const rast_prim *prims, uint32_t n, const rast_rect *clip,
+                                   int32_t band_rows, rast_prim_span_fn span,
+                                   rast_prim_coverage_fn cspan, void *user, void *scratch,
+                                   size_t scratch_bytes, rast_band_stats *stats)
+{
+    rast__scene s;
+    rast_rect c;
+    rast_status st;
+    if (!clip || (!span && !cspan)) return RAST_E_NULL;
+    st = rast__span_clip(clip, &c);
+    if (st != RAST_OK) return st;
+    rast__scene_init(&s, NULL, span, cspan, user, scratch, scratch_bytes);
+    return rast__render(&s, prims, n, &c, band_rows, stats);
 }
 
 rast_status rast_render_bands_spans(const rast_prim *prims, uint32_t n, const rast_rect *clip,
                                     int32_t band_rows, rast_prim_span_fn span, void *user,
                                     void *scratch, size_t scratch_bytes, rast_band_stats *stats)
 {
-    rast__scene s;
-    rast_rect c;
-    rast_status st;
-    if (!clip || !span) return RAST_E_NULL;
-    st = rast__span_clip(clip, &c);
-    if (st != RAST_OK) return st;
-    rast__scene_init(&s, NULL, span, user, scratch, scratch_bytes);
-    return rast__render(&s, prims, n, &c, band_rows, stats);
+    if (!span) return RAST_E_NULL;
+    return rast__render_to(prims, n, clip, band_rows, span, NULL, user, scratch, scratch_bytes,
+                           stats);
+}
+
+rast_status rast_render_bands_coverage(const rast_prim *prims, uint32_t n, const rast_rect *clip,
+                                       int32_t band_rows, rast_prim_coverage_fn span, void *user,
+                                       void *scratch, size_t scratch_bytes,
+                                       rast_band_stats *stats)
+{
+    if (!span) return RAST_E_NULL;
+    return rast__render_to(prims, n, clip, band_rows, NULL, span, user, scratch, scratch_bytes,
+                           stats);
 }

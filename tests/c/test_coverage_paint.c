@@ -15,7 +15,9 @@
  *    (rows of 1, 5, 16 and all, and a scratch that forces halving): the
  *    same bytes as each primitive's own entry point into the whole target,
  *    in order; the scratch a function of the edges and the band, not of
- *    the coordinates; the spans call refuses them;
+ *    the coordinates; the spans call refuses them, and
+ *    rast_render_bands_coverage hands on their values (and NULL for the
+ *    binary ones) so that painting them by the rule gives the same bytes;
  *  - errors: every status before anything is written.
  */
 #include <stdint.h>
@@ -345,6 +347,31 @@ static void band_scene(bscene *sc, int32_t far)
     }
 }
 
+/* rast_render_bands_coverage painted by blend_ref into band_got (NULL
+ * values: a binary span, every pixel level 255). */
+typedef struct cov_painter {
+    const rast_prim *prims;
+    uint32_t n;
+    int bad;
+} cov_painter;
+
+static void cov_paint(void *user, const rast_prim *prim, int32_t y, int32_t x0, int32_t x1,
+                      const uint8_t *values)
+{
+    cov_painter *c = (cov_painter *)user;
+    int32_t x;
+    if (prim < c->prims || prim >= c->prims + c->n || x0 >= x1 || x0 < 0 || x1 > BW || y < 0 ||
+        y >= BH || (values == NULL) != (prim->aa == NULL)) {
+        c->bad = 1;
+        return;
+    }
+    for (x = x0; x < x1; x++) {
+        if (values && !values[x - x0]) c->bad = 1;
+        blend_ref(RAST_FORMAT_RGB888, band_got + y * BSTRIDE, x, values ? values[x - x0] : 255,
+                  (const unsigned char *)prim->pixel);
+    }
+}
+
 static void test_bands(void)
 {
     int iter, n = check_count(40);
@@ -390,6 +417,17 @@ static void test_bands(void)
                                     &stats) == RAST_OK);
             CHECK(stats.peak_scratch <= bytes);
             CHECK(memcmp(band_got, band_full, sizeof band_got) == 0);
+            /* the same scene's coverage runs, painted by the documented rule */
+            {
+                cov_painter c = {sc.prims, 0, 0};
+                rast_rect clip = {0, 0, BW, BH};
+                c.n = sc.n;
+                memset(band_got, 90, sizeof band_got);
+                CHECK(rast_render_bands_coverage(sc.prims, sc.n, &clip, r == 4 ? 32 : rows[r], cov_paint,
+                                                 &c, band_scratch, bytes, NULL) == RAST_OK);
+                CHECK(!c.bad);
+                CHECK(memcmp(band_got, band_full, sizeof band_got) == 0);
+            }
         }
         /* the need grows with the edges and the band, not the coordinates */
         {
@@ -423,6 +461,17 @@ static void test_band_errors(void)
     /* the spans call has no coverage to hand on */
     CHECK(rast_render_bands_spans(sc.prims, sc.n, &clip, 4, prim_span, &called, band_scratch, need,
                                   NULL) == RAST_E_ARG);
+    CHECK(!called);
+    CHECK(rast_render_bands_coverage(sc.prims, sc.n, &clip, 4, NULL, &called, band_scratch, need,
+                                     NULL) == RAST_E_NULL);
+    CHECK(rast_render_bands_coverage(sc.prims, sc.n, NULL, 4, cov_paint, &called, band_scratch,
+                                     need, NULL) == RAST_E_NULL);
+    {
+        /* an anti-aliased primitive in a clip wider than RAST_MAX_DIM */
+        rast_rect wide = {-RAST_MAX_DIM, 0, RAST_MAX_DIM, 4};
+        CHECK(rast_render_bands_coverage(sc.prims, sc.n, &wide, 4, cov_paint, &called,
+                                         band_scratch, sizeof band_scratch, NULL) == RAST_E_SIZE);
+    }
     CHECK(!called);
     /* aa on a polyline; a bad method at the end: nothing written */
     memset(band_full, 90, sizeof band_full);

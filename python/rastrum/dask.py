@@ -277,7 +277,7 @@ def rasterize(
         if values is not None and not isinstance(values, str):
             raise InputError("values: a dask-geopandas frame takes a column name, not %s"
                              % type(values).__name__)
-        if not hasattr(shapes, "geometry") and values is not None:
+        if getattr(shapes._meta, "ndim", 2) == 1 and values is not None:  # a GeoSeries
             raise InputError("values=%r: a column name needs a GeoDataFrame" % (values,))
         if values is not None and values not in shapes.columns:
             raise InputError("values=%r is not a column of the GeoDataFrame; columns: %s"

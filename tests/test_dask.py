@@ -272,8 +272,8 @@ def test_blocks_carry_only_the_shapes_that_meet_them():
         p = lay.block_parts(b)
         if len(p):
             carried[divmod(b, len(edges_c) - 1)] = p.feature.tolist()
-    # the pixels of each shape's floored bounds, widened by one (snapping may move a vertex by
-    # 2^-33 px across a pixel edge): the first square's 0..6 meet block (0, 0); the second's
+    # the pixels of each shape's floored bounds, widened by one (slack: snapping to the 2^-32 grid
+    # keeps a vertex on its side of a pixel edge): the first square's 0..6 meet block (0, 0); the second's
     # columns 40..50 and rows 32..40 the blocks (3..4, 4..5); the point's 78..80, 58..60 (the
     # raster ends at 79, 59) block (5, 7); nothing else
     assert carried == {(0, 0): [0], (3, 4): [1], (3, 5): [1], (4, 4): [1], (4, 5): [1], (5, 7): [2]}
@@ -337,3 +337,24 @@ def test_bad_input_dask_geopandas():
     a = rastrum.dask.rasterize(ddf, (H, W), chunks=20, values="v", dtype="uint8", transform=t)
     with pytest.raises(InputError, match=r"partition \d: shapes: feature \d+: value -?\d+ does not fit dtype uint8"):
         a.compute(scheduler="sync")
+
+
+def test_dask_geopandas_spatial_partitions_skip_blocks():
+    """With spatial_partitions (a hull per partition), a block chains only
+    the partitions whose hulls meet it: fewer tasks, the same pixels."""
+    gpd = pytest.importorskip("geopandas")
+    dgpd = pytest.importorskip("dask_geopandas")
+    shapely_geometry = pytest.importorskip("shapely.geometry")
+    shapes, t = layer("rotated", seed=21, dtype="int16")
+    order = np.argsort([shapely_geometry.shape(g).centroid.x for g, _ in shapes], kind="stable")
+    shapes = [shapes[k] for k in order]  # spatially sorted: each partition covers a part of the raster
+    gdf = gpd.GeoDataFrame({"v": [v for _, v in shapes]}, geometry=[shapely_geometry.shape(g) for g, _ in shapes])
+    ddf = dgpd.from_geopandas(gdf, npartitions=4, sort=False)
+    plain = rastrum.dask.rasterize(ddf, (H, W), transform=t, chunks=(10, 16), values="v", merge_alg="add")
+    ddf.calculate_spatial_partitions()
+    assert ddf.spatial_partitions is not None
+    skipping = rastrum.dask.rasterize(ddf, (H, W), transform=t, chunks=(10, 16), values="v", merge_alg="add")
+    assert len(skipping.__dask_graph__()) < len(plain.__dask_graph__())
+    want = rastrum.rasterize(gdf, (H, W), transform=t, values="v", merge_alg="add")
+    assert_same(skipping.compute(scheduler="sync"), want)
+    assert_same(plain.compute(scheduler="sync"), want)

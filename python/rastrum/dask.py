@@ -82,8 +82,11 @@ class _Parts:
 
 class _Layer:
     """Parts and the blocks each meets: a part meets the blocks that its
-    bounds, floored and widened by one pixel, overlap (a polygon's pixels,
-    exact or all_touched, a line's and a point's, all lie in them)."""
+    bounds, floored and widened by one pixel, overlap.  A polygon's pixels
+    (exact or all_touched), a line's and a point's lie within its floored
+    bounds (snapping to the 1/2^32 grid never moves a vertex across a pixel
+    edge, integers being on the grid); the extra pixel is slack that costs
+    a few more shapes at block borders."""
 
     def __init__(self, parts, row_edges, col_edges):
         self.parts = parts
@@ -157,6 +160,36 @@ def _read_partition(frame, p, values, default_value, fill, dt, inv, row_edges, c
         raise InputError("partition %d: %s" % (p, e)) from None
     parts = _Parts(px, ring_sizes, part_rings, kind, vals[feature], feature, geom)
     return _Layer(parts, row_edges, col_edges)
+
+
+def _partition_blocks(frame, inv, row_edges, col_edges):
+    """Per partition, the set of blocks its shapes may meet, from the
+    frame's spatial_partitions (dask-geopandas: a hull per partition, set
+    by calculate_spatial_partitions, spatial_shuffle or read_parquet), or
+    None (every partition meets every block).  An affine map keeps a hull
+    convex, so the bounds of its mapped vertices, floored and widened by a
+    pixel, hold every pixel of its shapes."""
+    hulls = getattr(frame, "spatial_partitions", None)
+    if hulls is None or len(hulls) != frame.npartitions:
+        return None
+    import shapely
+
+    out = []
+    for hull in hulls:
+        if hull is None or hull.is_empty:
+            out.append(set())
+            continue
+        xy = shapely.get_coordinates(hull)
+        px = np.c_[inv[0] + xy[:, 0] * inv[1] + xy[:, 1] * inv[2], inv[3] + xy[:, 0] * inv[4] + xy[:, 1] * inv[5]]
+        if not np.isfinite(px).all():
+            return None
+        lo, hi = np.floor(px.min(axis=0)) - 1, np.floor(px.max(axis=0)) + 1
+        bi0, bi1, ok_i = _Layer._span(lo[1:], hi[1:], row_edges)
+        bj0, bj1, ok_j = _Layer._span(lo[:1], hi[:1], col_edges)
+        nbj = len(col_edges) - 1
+        out.append({i * nbj + j for i in range(bi0[0], bi1[0] + 1) for j in range(bj0[0], bj1[0] + 1)}
+                   if ok_i[0] and ok_j[0] else set())
+    return out
 
 
 # ---- the public function -----------------------------------------------------------------------
@@ -312,12 +345,14 @@ def rasterize(
     read = dask.delayed(_read_partition, pure=False)
     layers = [read(part, p, values, default_value, fill, dt, inv, row_edges, col_edges)
               for p, part in enumerate(shapes.to_delayed())]
+    meets = _partition_blocks(shapes, inv, row_edges, col_edges)
     step = dask.delayed(_burn_partition_block, pure=False)
 
     def chain(b, shape, origin):
         acc = None
-        for lay in layers:
-            acc = step(acc, lay, b, shape, origin, *args)
+        for p, lay in enumerate(layers):
+            if meets is None or b in meets[p]:
+                acc = step(acc, lay, b, shape, origin, *args)
         return acc if acc is not None else dask.delayed(_burn_block, pure=False)(None, None, shape, origin, *args)
 
     return da.block(blocks(chain))

@@ -358,3 +358,27 @@ def test_dask_geopandas_spatial_partitions_skip_blocks():
     want = rastrum.rasterize(gdf, (H, W), transform=t, values="v", merge_alg="add")
     assert_same(skipping.compute(scheduler="sync"), want)
     assert_same(plain.compute(scheduler="sync"), want)
+
+
+def test_example_writes_the_geotiff(tmp_path):
+    """examples/dask_geotiff.py: the tiled GeoTIFF holds the array, on the
+    local scheduler (da.store into windows)."""
+    rasterio = pytest.importorskip("rasterio")
+    pytest.importorskip("dask_geopandas")
+    import importlib.util
+    import os
+
+    path = os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), "examples", "dask_geotiff.py")
+    spec = importlib.util.spec_from_file_location("dask_geotiff", path)
+    ex = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(ex)
+    t = ex.Affine(10.0, 0.0, 500000.0, 0.0, -10.0, 4600000.0)
+    ddf = ex.layer(300, 96, t)
+    a = rastrum.dask.rasterize(ddf, (96, 112), transform=t, chunks=(32, 48), values="v", dtype="uint16")
+    ex.write_geotiff(a, str(tmp_path / "out.tif"), t)
+    with rasterio.open(tmp_path / "out.tif") as src:
+        assert src.profile["tiled"] and (src.profile["blockxsize"], src.profile["blockysize"]) == (48, 32)
+        got = src.read(1)
+    want = rastrum.rasterize(ddf.compute(), (96, 112), transform=t, values="v", dtype="uint16")
+    assert want.any() and not want.all()
+    assert_same(got, want)

@@ -17,17 +17,18 @@ How the work is split (docs/dask.md):
   carries only the parts whose bounds meet the block (a vectorised bounds
   test against the chunk edges), in input order;
 * a dask-geopandas GeoDataFrame or GeoSeries is never collected: one task
-  per partition reads it (its parts and their bounds), then each block is
-  burnt partition after partition, in a chain of tasks (partition 0's
-  parts into the fill, then partition 1's into that, ...), each taking
-  only the parts of its partition that meet the block.  Burning in order
-  into the running block is exactly burning every shape in input order,
-  so "replace" keeps the input order across partitions and "add" adds in
-  the same order (saturation and float rounding included).
+  per partition reads it (its parts and their bounds); for each block, a
+  small task per partition takes the partition's parts that meet the
+  block (on the worker that holds the partition), and the block's task
+  burns them into the fill partition after partition.  Burning in order is
+  exactly burning every shape in input order, so "replace" keeps the input
+  order across partitions and "add" adds in the same order (saturation and
+  float rounding included).  With the frame's spatial_partitions, only the
+  partitions whose hulls meet the block take part.
 
-A task holds its block (two with a chain: the one before and its copy) and
-the parts that meet it, never the whole raster; a dask-geopandas partition
-is held by its reading task until the blocks have taken their parts.
+A block's task holds its block and the parts that meet it, never the whole
+raster or the whole layer; a dask-geopandas partition is held by its
+reading task's result until the blocks have taken their parts.
 """
 
 from __future__ import annotations
@@ -129,23 +130,22 @@ class _Layer:
 
 # ---- tasks -------------------------------------------------------------------------------------
 
-def _burn_block(acc, parts, shape, origin, fill, dt, merge, all_touched, rule):
-    """The block at origin (row, column) of the whole raster: acc (the block
-    so far; None: the fill) with `parts` burnt into a copy of it."""
-    if acc is None:
-        target = np.full(shape, fill, dt)
-    elif parts is None or not len(parts):
-        return acc
-    else:
-        target = acc.copy()
-    if parts is not None and len(parts) and 0 not in shape:
-        _burn.burn(target, parts.px, parts.ring_sizes, parts.part_rings, parts.kind, parts.values,
-                   parts.feature, parts.geom, merge, all_touched, rule, gis._Progress(None, 0), origin)
+def _burn_block(shape, origin, fill, dt, merge, all_touched, rule, *subsets):
+    """The block of `shape` at origin (row, column) of the whole raster: the
+    fill, then each _Parts of `subsets` burnt in turn (a dask-geopandas
+    frame: one per partition, in partition order)."""
+    target = np.full(shape, fill, dt)
+    if 0 in shape:
+        return target
+    for parts in subsets:
+        if len(parts):  # each on its own: geometry numbers are a partition's own
+            _burn.burn(target, parts.px, parts.ring_sizes, parts.part_rings, parts.kind, parts.values,
+                       parts.feature, parts.geom, merge, all_touched, rule, gis._Progress(None, 0), origin)
     return target
 
 
-def _burn_partition_block(acc, layer, b, shape, origin, fill, dt, merge, all_touched, rule):
-    return _burn_block(acc, layer.block_parts(b), shape, origin, fill, dt, merge, all_touched, rule)
+def _block_parts(layer, b):
+    return layer.block_parts(b)
 
 
 def _read_partition(frame, p, values, default_value, fill, dt, inv, row_edges, col_edges):
@@ -336,26 +336,23 @@ def rasterize(
                                  (r, c), dtype=dt)
                  for j, c in enumerate(cols)] for i, r in enumerate(rows)]
 
+    burn = dask.delayed(_burn_block, pure=False)
     if not frame:
         layer = _Layer(_Parts(px, ring_sizes, part_rings, kind, vals[feature], feature, geom),
                        row_edges, col_edges)
-        burn = dask.delayed(_burn_block, pure=False)
-        return da.block(blocks(lambda b, shape, origin: burn(None, layer.block_parts(b), shape, origin, *args)))
+        return da.block(blocks(lambda b, shape, origin: burn(shape, origin, *args, layer.block_parts(b))))
 
     read = dask.delayed(_read_partition, pure=False)
     layers = [read(part, p, values, default_value, fill, dt, inv, row_edges, col_edges)
               for p, part in enumerate(shapes.to_delayed())]
     meets = _partition_blocks(shapes, inv, row_edges, col_edges)
-    step = dask.delayed(_burn_partition_block, pure=False)
+    take = dask.delayed(_block_parts, pure=False)
 
-    def chain(b, shape, origin):
-        acc = None
-        for p, lay in enumerate(layers):
-            if meets is None or b in meets[p]:
-                acc = step(acc, lay, b, shape, origin, *args)
-        return acc if acc is not None else dask.delayed(_burn_block, pure=False)(None, None, shape, origin, *args)
+    def block(b, shape, origin):
+        return burn(shape, origin, *args, *[take(lay, b) for p, lay in enumerate(layers)
+                                            if meets is None or b in meets[p]])
 
-    return da.block(blocks(chain))
+    return da.block(blocks(block))
 
 
 def to_xarray(array, transform=IDENTITY, *, crs=None, name=None):

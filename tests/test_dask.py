@@ -382,3 +382,20 @@ def test_example_writes_the_geotiff(tmp_path):
     want = rastrum.rasterize(ddf.compute(), (96, 112), transform=t, values="v", dtype="uint16")
     assert want.any() and not want.all()
     assert_same(got, want)
+
+
+def test_blocks_are_not_burnt_on_shifted_floats():
+    """Why a block is burnt on the whole raster's coordinates with the block
+    as the clip: v - 40.0 is inexact for v = 2^-33 - 2^-60 (it rounds to
+    -40 + 2^-33, a snapping tie), so a block at column 40 burnt on shifted
+    floats would snap that vertex to 2^-32 instead of 0, and move the edge
+    off the sample point (40.5, 20.5) that it passes through exactly."""
+    v = 2.0 ** -33 - 2.0 ** -60
+    assert v - 40.0 == -40.0 + 2.0 ** -33  # rounded
+    tri = {"type": "Polygon", "coordinates": [[(v, 0.5), (81.0, 40.5), (81.0, 0.5), (v, 0.5)]]}
+    whole = rastrum.rasterize([tri], (H, W), dtype="uint8")
+    assert whole[20, 40] == 1  # on the edge, left closed: inside (the exact rule on the snapped vertex 0)
+    shifted = {"type": "Polygon", "coordinates": [[(x - 40.0, y) for x, y in tri["coordinates"][0]]]}
+    assert rastrum.rasterize([shifted], (H, 40), dtype="uint8")[20, 0] == 0  # the hazard is real
+    got = rastrum.dask.rasterize([tri], (H, W), chunks=(H, 40), dtype="uint8").compute(scheduler="sync")
+    assert_same(got, whole)

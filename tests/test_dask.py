@@ -399,3 +399,22 @@ def test_blocks_are_not_burnt_on_shifted_floats():
     assert rastrum.rasterize([shifted], (H, 40), dtype="uint8")[20, 0] == 0  # the hazard is real
     got = rastrum.dask.rasterize([tri], (H, W), chunks=(H, 40), dtype="uint8").compute(scheduler="sync")
     assert_same(got, whole)
+
+
+def test_misaligned_coordinates_are_burnt_from_an_aligned_copy():
+    """Arrays unpickled from a dask.distributed message may be misaligned
+    (UBSan found it: the glue reads doubles); the burn aligns them.  Under
+    make asan-py, UBSan aborts here without the aligned copy."""
+    shapes, t = layer("rotated", seed=4)
+    geoms, vals = rastrum.gis._split_shapes(shapes, 1, 0, None)
+    xy, ring_sizes, part_rings, kind, feature, geom = rastrum.gis._flatten(geoms)
+    inv = rastrum.gis._inverse(rastrum.gis._transform6(t))
+    px = rastrum.gis._pixels(xy, inv, ring_sizes, part_rings, feature)
+    raw = np.zeros(px.nbytes + 1, np.uint8)[1:]
+    odd = raw.view(np.float64).reshape(px.shape)
+    odd[...] = px
+    assert not odd.flags.aligned
+    values = rastrum.gis._values(vals, np.dtype("int32"))[feature]
+    parts = rastrum.dask._Parts(odd, ring_sizes, part_rings, kind, values, feature, geom)
+    got = rastrum.dask._burn_block((H, 40), (0, 40), 0, np.dtype("int32"), "replace", False, "evenodd", parts)
+    assert_same(got, rastrum.rasterize(shapes, (H, W), transform=t, dtype="int32")[:, 40:])

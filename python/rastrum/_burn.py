@@ -56,7 +56,8 @@ def _polygons(target, px, ring_sizes, part_rings, values, merge, boundary, rule,
     as burning the whole plane)."""
     opts = _core.fill_opts("aet", rule, SUBPIXEL_BITS, 0.5, "exact", boundary)
     h, w = target.shape
-    xy = np.ascontiguousarray(px)
+    # aligned too: an array unpickled from a dask.distributed message may not be (C reads doubles)
+    xy = np.require(px, np.float64, ["C", "A"])
     sizes = np.ascontiguousarray(ring_sizes, np.uint32)
     prings = np.ascontiguousarray(part_rings, np.uint32)
     v = np.ascontiguousarray(values, dtype=target.dtype)

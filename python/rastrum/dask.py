@@ -165,7 +165,7 @@ def _read_partition(frame, p, values, default_value, fill, dt, inv, row_edges, c
 def _partition_blocks(frame, inv, row_edges, col_edges):
     """Per partition, the set of blocks its shapes may meet, from the
     frame's spatial_partitions (dask-geopandas: a hull per partition, set
-    by calculate_spatial_partitions, spatial_shuffle or read_parquet), or
+    by calculate_spatial_partitions or spatial_shuffle), or
     None (every partition meets every block).  An affine map keeps a hull
     convex, so the bounds of its mapped vertices, floored and widened by a
     pixel, hold every pixel of its shapes."""

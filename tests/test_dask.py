@@ -418,3 +418,12 @@ def test_misaligned_coordinates_are_burnt_from_an_aligned_copy():
     parts = rastrum.dask._Parts(odd, ring_sizes, part_rings, kind, values, feature, geom)
     got = rastrum.dask._burn_block((H, 40), (0, 40), 0, np.dtype("int32"), "replace", False, "evenodd", parts)
     assert_same(got, rastrum.rasterize(shapes, (H, W), transform=t, dtype="int32")[:, 40:])
+
+
+def test_dask_geopandas_empty_partition():
+    gdf, ddf, t = _random_frame(3, 3)
+    first = ddf.partitions[0].compute()
+    some = ddf[ddf.index > first.index.max()]  # partition 0 left empty
+    assert some.map_partitions(len).compute().tolist()[0] == 0
+    a = rastrum.dask.rasterize(some, (H, W), transform=t, chunks=(25, 30), values="v")
+    assert_same(a.compute(scheduler="sync"), rastrum.rasterize(some.compute(), (H, W), transform=t, values="v"))

@@ -19,6 +19,9 @@ the rasterisation's wall time (median of --repeat), polygons/s and
 pixels/s per core, the peak resident memory of each worker process
 (ru_maxrss) before and after the job (the layer's share is the "before").
 
+With --whole, rastrum.rasterize of the whole job in one process and one
+call (the raster held in memory), its blocks checked against the dask run.
+
 Beside it, in the same run: rasterio.features.rasterize and
 rastrum.rasterize for a 1/100 slice of the same job (the top 1/100 of the
 rows, all columns, the polygons that meet it, on one core), the dask
@@ -40,6 +43,7 @@ try:
     import dask_geopandas  # noqa: F401  (registers the GeoDataFrame backend)
     import distributed
     import geopandas as gpd
+    import pandas as pd
     import shapely
     from affine import Affine
 except ImportError:  # pragma: no cover
@@ -161,6 +165,22 @@ def rasterio_slice(args):
     return out
 
 
+def whole_in_process(args, first):
+    """rastrum.rasterize of the whole job in this process, one call (the
+    raster held: size^2 x 2 bytes), its blocks' summaries checked against
+    the dask run's."""
+    per = [args.n // args.partitions + (p < args.n % args.partitions) for p in range(args.partitions)]
+    gdf = pd.concat([make_stripe(p, per[p], args.size, args.partitions, args.seed) for p in range(args.partitions)],
+                    ignore_index=True)
+    t0 = time.perf_counter()
+    whole = rastrum.rasterize(gdf, (args.size, args.size), transform=transform(), values="v", dtype="uint16")
+    t = time.perf_counter() - t0
+    c = args.chunk
+    same = all(first[i, j, 0] == np.count_nonzero(whole[i * c:(i + 1) * c, j * c:(j + 1) * c])
+               for i in range(first.shape[0]) for j in range(first.shape[1]))
+    return t, same
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--quick", action="store_true", help="20,000 polygons into 4,000 x 4,000")
@@ -171,6 +191,8 @@ def main():
     ap.add_argument("--workers", default="1,2")
     ap.add_argument("--repeat", type=int, default=3)
     ap.add_argument("--seed", type=int, default=2026)
+    ap.add_argument("--whole", action="store_true",
+                    help="also rastrum.rasterize of the whole job in this process (holds the raster)")
     args = ap.parse_args()
     if args.quick:
         args.n, args.size, args.chunk, args.partitions, args.repeat = 20_000, 4_000, 1_000, 8, 1
@@ -196,6 +218,12 @@ def main():
         if not same:
             sys.exit("the blocks differ between cluster sizes")
     print("    burnt pixels: %d of %d (%.1f%%)" % (first[..., 0].sum(), px, 100.0 * first[..., 0].sum() / px))
+    if args.whole:
+        t, same = whole_in_process(args, first)
+        print("rastrum.rasterize of the whole job in one process, one call: %.2f s (the 1-worker dask run: %.2fx "
+              "that); its blocks' non-zero counts equal the dask run's: %s" % (t, base / t, same))
+        if not same:
+            sys.exit("rastrum.rasterize of the whole differs from the dask blocks")
     s = rasterio_slice(args)
     off_self = int(np.count_nonzero(s["mine"] != top))
     print("1/100 slice (%d x %d, %d polygons meet it), one core: rastrum.rasterize %.3f s; dask slice pixels "

@@ -16,7 +16,9 @@ sum come back), and the two cluster sizes must agree block for block.
 
 Printed per cluster size (1, then 2 worker processes of one thread):
 the rasterisation's wall time (median of --repeat), polygons/s and
-pixels/s per core, the peak resident memory of each worker process
+pixels/s per core, the workers' CPU time per job (getrusage: less
+disturbed by other load on a shared machine than the wall time) and the
+polygons and pixels per CPU second, the peak resident memory of each worker process
 (ru_maxrss) before and after the job (the layer's share is the "before").
 
 With --whole, rastrum.rasterize of the whole job in one process and one
@@ -113,6 +115,11 @@ def _maxrss_mb():
     return resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024.0
 
 
+def _cpu_s():
+    r = resource.getrusage(resource.RUSAGE_SELF)
+    return r.ru_utime + r.ru_stime
+
+
 def run_cluster(workers, args):
     with distributed.LocalCluster(n_workers=workers, threads_per_worker=1, processes=True,
                                   dashboard_address=":0", memory_limit=0) as cluster, \
@@ -122,6 +129,7 @@ def run_cluster(workers, args):
         distributed.wait(ddf)
         ddf.spatial_partitions = stripe_boxes(args.size, args.partitions)
         before = client.run(_maxrss_mb)
+        cpu0 = sum(client.run(_cpu_s).values())
         times = []
         for _ in range(args.repeat):
             a = rastrum.dask.rasterize(ddf, (args.size, args.size), transform=transform(), chunks=args.chunk,
@@ -131,10 +139,11 @@ def run_cluster(workers, args):
             t = time.perf_counter()
             summary = s.compute()
             times.append(time.perf_counter() - t)
+        cpu = (sum(client.run(_cpu_s).values()) - cpu0) / args.repeat
         after = client.run(_maxrss_mb)
         slice_rows = args.size // 100
         top = a[:slice_rows].compute()
-    return times, summary, before, after, top
+    return times, summary, before, after, top, cpu
 
 
 def rasterio_slice(args):
@@ -204,7 +213,7 @@ def main():
     first = None
     base = None
     for workers in [int(w) for w in args.workers.split(",")]:
-        times, summary, before, after, top = run_cluster(workers, args)
+        times, summary, before, after, top, cpu = run_cluster(workers, args)
         t = statistics.median(times)
         if first is None:
             first, base = summary, t
@@ -213,6 +222,8 @@ def main():
               "speed-up %.2fx vs 1; blocks equal to the first run's: %s"
               % (workers, t, len(times), ", ".join("%.2f" % x for x in times), args.n / t / workers,
                  px / t / workers, base / t, same))
+        print("    worker CPU time %.2f s per job (all workers): %.0f polygons and %.3g pixels per CPU second"
+              % (cpu, args.n / cpu, px / cpu))
         print("    peak RSS per worker (MB): before %s, after %s"
               % (", ".join("%.0f" % v for v in before.values()), ", ".join("%.0f" % v for v in after.values())))
         if not same:

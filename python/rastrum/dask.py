@@ -33,9 +33,8 @@ reading task's result until the blocks have taken their parts.
 
 from __future__ import annotations
 
-import math
 import numbers
-from typing import Any, Optional, Sequence, Tuple, Union
+from typing import Any, Sequence, Tuple, Union
 
 import numpy as np
 
@@ -241,7 +240,7 @@ def rasterize(
     dtype: Any = None,
     values: Union[str, Sequence[Union[int, float, None]], None] = None,
     rule: str = "evenodd",
-):
+) -> "dask.array.Array":
     """Burn shapes into a lazy 2-D ``dask.array.Array``, block by block.
 
     The computed array equals ``rastrum.rasterize(shapes, out_shape,
@@ -355,7 +354,7 @@ def rasterize(
     return da.block(blocks(block))
 
 
-def to_xarray(array, transform=IDENTITY, *, crs=None, name=None):
+def to_xarray(array: Any, transform: Any = IDENTITY, *, crs: Any = None, name: Any = None) -> "xarray.DataArray":
     """The raster as an ``xarray.DataArray`` with dims ("y", "x") and the
     world coordinates of the pixel centres (a north-up or south-up
     transform: no rotation or shear); with rioxarray installed, its

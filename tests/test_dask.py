@@ -293,6 +293,8 @@ def test_to_xarray():
         assert tuple(da.rio.transform())[:6] == t and da.rio.crs.to_epsg() == 3857
     with pytest.raises(InputError, match="rotated or sheared"):
         rastrum.dask.to_xarray(a, ROTATED)
+    with pytest.raises(InputError, match=r"to_xarray: array must be 2-D \(rows, columns\), not \(2, 3, 4\)"):
+        rastrum.dask.to_xarray(np.zeros((2, 3, 4)), t)
 
 
 # ---- bad input --------------------------------------------------------------------------------

@@ -199,6 +199,21 @@ def test_connectivity_is_keyword_only():
         e.flood_fill((0, 0), 6, 8, 4)
 
 
+def test_connectivity_not_an_integer_is_an_input_error():
+    """An array (hypothesis found np.zeros((3, 2)) given by position) used
+    to reach numpy's "truth value ... ambiguous"; a float or string slipped
+    through as 4.  Each is an InputError naming the value, nothing drawn."""
+    c = rastrum.Canvas((5, 5), format="gray8")
+    for bad in (np.zeros((3, 2)), 4.0, "4", None, True):
+        with pytest.raises(rastrum.InputError, match="connectivity must be 4 or 8"):
+            c.flood_fill((3, 4), 7, connectivity=bad)
+        with pytest.raises(rastrum.InputError, match="connectivity must be 4 or 8"):
+            c.boundary_fill((3, 4), 7, 1, connectivity=bad)
+    assert not c.array.any()
+    c.flood_fill((3, 4), 7, connectivity=np.int64(8))
+    assert (c.array == 7).all()
+
+
 # ---- triangles_mask has one dtype; the count has its own name ------------------------------
 
 def test_triangles_mask_is_bool_and_triangles_count_is_uint16():

@@ -685,7 +685,10 @@ def seed_fill(target, seed, pixel, boundary, connectivity, stack_bytes=None):
 
     `stack_bytes` None: what the clip needs, up to SEED_STACK_CAP."""
     x, y = seed_point(seed, target)
-    if isinstance(connectivity, (bool, np.bool_)) or connectivity not in (4, 8):
+    # an integer 4 or 8 only: `in` would compare an array element-wise
+    # (and raise numpy's "truth value ... ambiguous" instead of saying which)
+    if (isinstance(connectivity, (bool, np.bool_)) or not isinstance(connectivity, (int, np.integer))
+            or connectivity not in (4, 8)):
         raise InputError("connectivity must be 4 or 8, not %r" % (connectivity,))
     if stack_bytes is None:
         need = ffi.new("size_t *")

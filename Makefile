@@ -131,9 +131,10 @@ test-install: lib
 	@tools/test-install.sh
 
 # PY_TEST_EXTRAS: the extras the tests run with.  All of them by default:
-# the optional inputs (shapely, affine, tqdm) and the peers the compatibility
-# tests compare with (rasterio, geopandas, pycocotools); with fewer
-# (PY_TEST_EXTRAS=test) those tests skip.
+# the optional inputs (shapely, affine, tqdm), the peers the compatibility
+# tests compare with (rasterio, geopandas, pycocotools) and Dask
+# (dask.distributed, dask-geopandas, xarray, rioxarray) for rastrum.dask;
+# with fewer (PY_TEST_EXTRAS=test) those tests skip.
 PY_TEST_EXTRAS ?= test,gis,compat-test,dask
 test-py: | $(VENV)
 	$(PY_CLEAN)

@@ -140,7 +140,7 @@ def polygon_mask(rings, shape, *, rule="evenodd", algorithm="aet", subpixel_bits
         h, w = shape
         n = len(rings)
         if type(h) is int and type(w) is int and 0 < h <= _MAX_DIM and 0 < w <= _MAX_DIM and n >= 3:
-            mask = _empty(shape, bool)
+            mask = _empty(shape, _BOOL)
             if not _mask_call(_from_buffer(mask), h, w, _from_buffer(_DOUBLES, rings), n, opts):
                 return mask
     return _core.mask_polygon(_core.shape2(shape), rings, opts, opts.subpixel_bits)
@@ -152,7 +152,7 @@ _AET, _EVENODD, _S8, _HALF, _EXACT = (polygon_mask.__kwdefaults__[k] for k in (
 assert polygon_mask.__kwdefaults__["boundary"] is _EXACT
 _DEFAULT_OPTS = _core.fill_opts(_AET, _EVENODD, _S8, _HALF, _EXACT, _EXACT)
 _ndarray, _empty = _core.np.ndarray, _core.np.empty
-_F64 = _core.np.dtype(_core.np.float64)
+_F64, _BOOL = _core.np.dtype(_core.np.float64), _core.np.dtype(bool)
 _MAX_DIM = lib.RAST_MAX_DIM
 _PACKED = (16, 8)
 _DOUBLES = _core.ffi.typeof("double[]")

@@ -11,6 +11,7 @@ import pytest
 from hypothesis import given, strategies as st
 
 import rastrum
+from rastrum import ml
 from oracle import oracle_mask, snapped_rings
 
 coord = st.one_of(st.integers(-4, 24).map(float), st.floats(-4, 24, allow_nan=False).map(lambda v: round(v, 2)))
@@ -171,3 +172,47 @@ def test_progress_without_tqdm(monkeypatch):
     monkeypatch.setattr(builtins, "__import__", no_tqdm)
     with pytest.raises(rastrum.InputError, match="tqdm"):
         rastrum.masks([SQ], SHAPE, progress=True)
+
+
+def _general(polys):
+    """The same polygons in a form the packed fast path does not take (one
+    Python list of (x, y) tuples per ring): the general, per-polygon path."""
+    return [[[tuple(map(float, p)) for p in r] for r in poly] for poly in polys]
+
+
+@given(st.lists(polygon, min_size=1, max_size=5), st.sampled_from(["union", "evenodd", "nonzero"]))
+def test_packed_fast_path_equals_general_path_and_oracle(polys, rule):
+    """masks/labels pack a batch of float64 arrays (or lists of them, as
+    coco.rings makes them) with a few C-level passes; other inputs go
+    polygon by polygon.  Both give the oracle's pixels."""
+    polys = [[r for r in p] for p in polys]
+    assert ml._packed(polys) is not None and ml._packed(_general(polys)) is None  # both paths run
+    fast = rastrum.masks(polys, SHAPE, rule=rule)
+    assert np.array_equal(fast, rastrum.masks(_general(polys), SHAPE, rule=rule))
+    for k, p in enumerate(polys):
+        want = union_oracle(p, SHAPE) if rule == "union" else oracle_mask(p, SHAPE, rule=rule)
+        assert np.array_equal(fast[k], want)
+    one_ring = [p[0] for p in polys]  # a list of (N, 2) arrays: one ring each
+    assert np.array_equal(rastrum.masks(one_ring, SHAPE, rule=rule),
+                          rastrum.masks([[r] for r in one_ring], SHAPE, rule=rule))
+    assert np.array_equal(rastrum.labels(one_ring, SHAPE, rule=rule),
+                          rastrum.labels(_general([[r] for r in one_ring]), SHAPE, rule=rule))
+
+
+def test_packed_fast_path_leaves_other_arrays_to_the_general_path():
+    """Only float64 (N, 2) rings are packed directly: other dtypes convert
+    exactly or are refused by the general path, contours are reshaped,
+    empty rings dropped, and an error names the polygon's index in the
+    whole batch (also when progress draws it in chunks)."""
+    sq = np.array([[2, 2], [12, 2], [12, 10], [2, 10]], float)
+    want = oracle_mask([sq], SHAPE)
+    for ring in (sq.astype(np.float32), sq.astype(np.int64), sq.astype(">f8"), sq.reshape(-1, 1, 2),
+                 np.asfortranarray(sq), sq[::-1][::-1]):
+        assert np.array_equal(rastrum.masks([sq, ring], SHAPE), np.stack([want, want]))
+        assert np.array_equal(rastrum.masks([[sq], [ring, np.zeros((0, 2))]], SHAPE), np.stack([want, want]))
+    with pytest.raises(rastrum.InputError, match=r"polygon 1: .*bool"):
+        rastrum.masks([sq, sq.astype(bool)], SHAPE)
+    polys = [sq] * 250 + [sq * np.nan]
+    for progress in (False, lambda done, total: None):
+        with pytest.raises(rastrum.InputError, match=r"polygon 250: ring 0, point 0 .*NaN"):
+            rastrum.masks(polys, SHAPE, progress=progress)

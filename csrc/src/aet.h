@@ -119,8 +119,13 @@ static inline void rast__aet_sweep(rast__edge *edges, rast__edge *aet, int32_t *
                                    rast_fill_rule rule, rast__aet_span_fn span,
                                    rast__aet_order_fn order, void *user)
 {
-    int32_t j, first, nactive = 0, k;
-    for (j = row0; j < row1; j++) bucket[j - row0 + 1] += bucket[j - row0];
+    int32_t j, first, nactive = 0, k, run = 0;
+    /* (the running sum in a register: through memory, each row waited
+     * for the store of the one before) */
+    for (j = 0; j <= row1 - row0; j++) {
+        run += bucket[j];
+        bucket[j] = run;
+    }
     /* Placing an edge moves its row's start on: bucket[r] ends up where
      * row r's run ends. */
     for (k = 0; k < nedges; k++) edges[bucket[aet[k].row - row0]++] = aet[k];
@@ -156,7 +161,9 @@ static inline void rast__aet_sweep(rast__edge *edges, rast__edge *aet, int32_t *
             m += aet[n].end == j + 1;
         }
         if (m) {
-            for (n = 0, m = 0; n < nactive; n++)
+            /* from the first edge that ends: no edge copied onto itself */
+            for (m = 0; aet[m].end != j + 1;) m++;
+            for (n = m + 1; n < nactive; n++)
                 if (aet[n].end != j + 1) aet[m++] = aet[n];
             nactive = m;
         }

@@ -81,41 +81,60 @@ rast_status rast_scratch_size(const rast_fill_opts *opts, uint32_t npoints,
     return rast__fill_need(opts, npoints, width, height, bytes);
 }
 
+rast_status rast__fill_prepare(const rast_fill_opts *opts, rast__fill_setup *f)
+{
+    f->opts = opts;
+    return rast__check_opts(opts, &f->g, &f->al);
+}
+
+size_t rast__fill_scratch(const rast__fill_setup *f, uint32_t npoints, int32_t width,
+                          int32_t height)
+{
+    return rast__need(f->al, f->opts, npoints, width, height);
+}
+
+rast_status rast__fill_checked(const rast__fill_setup *f, const rast_polygon *poly,
+                               uint32_t npoints, const rast_rect *clip, rast__row_fn fn,
+                               void *user, void *scratch, size_t scratch_bytes)
+{
+    rast__sink sink;
+    rast__arena arena;
+    rast_status st;
+
+    rast__sink_init(&sink, fn, user, clip);
+    arena.p = (unsigned char *)scratch;
+    arena.left = scratch_bytes;
+    if (f->opts->boundary == RAST_BOUNDARY_EXACT)
+        return f->al->fill(poly, npoints, &f->g, f->opts->rule, clip, &sink, &arena);
+    {
+        rast__bound b;
+        st = rast__bound_begin(&b, poly, npoints, &f->g, f->opts->boundary, clip, &sink, &arena);
+        if (st == RAST_OK) st = f->al->fill(poly, npoints, &f->g, f->opts->rule, clip, &b.in, &arena);
+        if (st == RAST_OK) rast__bound_end(&b);
+        return st;
+    }
+}
+
 /* Check the polygon, options and scratch for a clip; run the filler. */
 static rast_status rast__fill(const void *polygon, const rast_fill_opts *opts,
                               const rast_rect *clip, rast__row_fn fn, void *user,
                               void *scratch, size_t scratch_bytes)
 {
     const rast_polygon *poly = (const rast_polygon *)polygon;
-    const rast__algo *al;
-    rast__grid g;
-    rast__sink sink;
-    rast__arena arena;
+    rast__fill_setup f;
     uint32_t npoints;
     size_t need;
     rast_status st;
 
-    st = rast__check_opts(opts, &g, &al);
+    st = rast__fill_prepare(opts, &f);
     if (st != RAST_OK) return st;
     st = rast__check_polygon(poly, &npoints);
     if (st != RAST_OK) return st;
-    need = rast__need(al, opts, npoints, clip->x1 - clip->x0, clip->y1 - clip->y0);
+    need = rast__need(f.al, opts, npoints, clip->x1 - clip->x0, clip->y1 - clip->y0);
     st = rast__scratch_check(scratch, scratch_bytes, need);
     if (st != RAST_OK) return st;
     if (clip->x0 >= clip->x1 || clip->y0 >= clip->y1) return RAST_OK;
-
-    rast__sink_init(&sink, fn, user, clip);
-    arena.p = (unsigned char *)scratch;
-    arena.left = scratch_bytes;
-    if (opts->boundary == RAST_BOUNDARY_EXACT)
-        return al->fill(poly, npoints, &g, opts->rule, clip, &sink, &arena);
-    {
-        rast__bound b;
-        st = rast__bound_begin(&b, poly, npoints, &g, opts->boundary, clip, &sink, &arena);
-        if (st == RAST_OK) st = al->fill(poly, npoints, &g, opts->rule, clip, &b.in, &arena);
-        if (st == RAST_OK) rast__bound_end(&b);
-        return st;
-    }
+    return rast__fill_checked(&f, poly, npoints, clip, fn, user, scratch, scratch_bytes);
 }
 
 rast_status rast__fill_target(const rast_target *target, const void *polygon,
@@ -185,51 +204,61 @@ static int64_t rast__pixel_floor(int32_t v, int32_t s)
     return rast__floordiv(v, (int64_t)1 << s);
 }
 
-rast_status rast_fill_bounds(const rast_fill_opts *opts, const rast_polygon *polygon,
-                             const rast_rect *clip, rast_rect *bounds)
+rast_status rast__fill_measure(const rast__fill_setup *f, const rast_polygon *polygon,
+                               const rast_rect *clip, uint32_t *npoints, rast_rect *bounds)
 {
-    const rast__algo *al;
-    rast__grid g;
+    const rast_point *pts;
     rast_rect c, out;
     rast__box box;
-    uint32_t npoints, i;
+    uint64_t n = 0;
+    uint32_t k, i;
+    int32_t minx, maxx, miny, maxy;
     rast_status st;
 
-    if (!clip || !bounds) return RAST_E_NULL;
-    st = rast__check_opts(opts, &g, &al);
-    if (st != RAST_OK) return st;
-    st = rast__check_polygon(polygon, &npoints);
-    if (st != RAST_OK) return st;
+    /* rast__check_polygon's checks, in its order, the range on the extent */
+    if (!polygon) return RAST_E_NULL;
+    if (polygon->nrings > 0 && !polygon->ring_sizes) return RAST_E_NULL;
+    for (k = 0; k < polygon->nrings; k++) {
+        n += polygon->ring_sizes[k];
+        if (n > RAST_MAX_POINTS) return RAST_E_TOO_MANY;
+    }
+    if (n > 0 && !polygon->points) return RAST_E_NULL;
+    pts = polygon->points;
+    minx = maxx = miny = maxy = 0;
+    if (n > 0) {
+        minx = maxx = pts[0].x;
+        miny = maxy = pts[0].y;
+    }
+    for (i = 1; i < (uint32_t)n; i++) {
+        if (pts[i].x < minx) minx = pts[i].x;
+        if (pts[i].x > maxx) maxx = pts[i].x;
+        if (pts[i].y < miny) miny = pts[i].y;
+        if (pts[i].y > maxy) maxy = pts[i].y;
+    }
+    if (minx < -RAST_COORD_MAX || maxx > RAST_COORD_MAX || miny < -RAST_COORD_MAX ||
+        maxy > RAST_COORD_MAX)
+        return RAST_E_RANGE;
+    *npoints = (uint32_t)n;
     st = rast__span_clip(clip, &c);
     if (st != RAST_OK) return st;
     out.x0 = out.x1 = c.x0; /* empty unless something below says otherwise */
     out.y0 = out.y1 = c.y0;
-    if (opts->boundary == RAST_BOUNDARY_EXACT) {
+    if (f->opts->boundary == RAST_BOUNDARY_EXACT) {
         /* The box the fillers themselves work in (poly.h). */
-        if (rast__poly_box(polygon, npoints, &g, &c, &box)) {
+        if (n > 0 && rast__box_of(minx, maxx, miny, maxy, &f->g, &c, &box)) {
             out.x0 = box.col0;
             out.x1 = box.col1;
             out.y0 = box.row0;
             out.y1 = box.row1;
         }
-    } else if (npoints > 0) {
+    } else if (n > 0) {
         /* The edges' pixels too: a pixel of the library's line, or one that
          * an edge passes through, lies within a pixel of the vertices'
          * pixel hull [floor(min), floor(max)]; and so does every sample the
          * fill owns under either rounding.  One more pixel each side. */
-        const rast_point *pts = polygon->points;
-        int32_t minx = pts[0].x, maxx = pts[0].x, miny = pts[0].y, maxy = pts[0].y;
-        int64_t x0, x1, y0, y1;
-        for (i = 1; i < npoints; i++) {
-            if (pts[i].x < minx) minx = pts[i].x;
-            if (pts[i].x > maxx) maxx = pts[i].x;
-            if (pts[i].y < miny) miny = pts[i].y;
-            if (pts[i].y > maxy) maxy = pts[i].y;
-        }
-        x0 = rast__pixel_floor(minx, opts->subpixel_bits) - 1;
-        x1 = rast__pixel_floor(maxx, opts->subpixel_bits) + 2;
-        y0 = rast__pixel_floor(miny, opts->subpixel_bits) - 1;
-        y1 = rast__pixel_floor(maxy, opts->subpixel_bits) + 2;
+        int32_t s = f->opts->subpixel_bits;
+        int64_t x0 = rast__pixel_floor(minx, s) - 1, x1 = rast__pixel_floor(maxx, s) + 2;
+        int64_t y0 = rast__pixel_floor(miny, s) - 1, y1 = rast__pixel_floor(maxy, s) + 2;
         if (x0 < c.x0) x0 = c.x0;
         if (x1 > c.x1) x1 = c.x1;
         if (y0 < c.y0) y0 = c.y0;
@@ -243,4 +272,17 @@ rast_status rast_fill_bounds(const rast_fill_opts *opts, const rast_polygon *pol
     }
     *bounds = out;
     return RAST_OK;
+}
+
+rast_status rast_fill_bounds(const rast_fill_opts *opts, const rast_polygon *polygon,
+                             const rast_rect *clip, rast_rect *bounds)
+{
+    rast__fill_setup f;
+    uint32_t npoints;
+    rast_status st;
+
+    if (!clip || !bounds) return RAST_E_NULL;
+    st = rast__fill_prepare(opts, &f);
+    if (st != RAST_OK) return st;
+    return rast__fill_measure(&f, polygon, clip, &npoints, bounds);
 }

@@ -111,6 +111,31 @@ rast_status rast__tri_fill(const rast_point *tris, uint32_t ntris, const rast_tr
  * the filler into the row painter.  rast__fill_target checks the target
  * and paints `pixel` (with `opaque`, `background` elsewhere in the clip);
  * rast__fill_spans hands the spans to a user callback. */
+/* A polygon fill's options, checked once for many polygons (batch.c):
+ * the algorithm and the grid. */
+struct rast__algo;
+typedef struct rast__fill_setup {
+    const rast_fill_opts *opts;
+    const struct rast__algo *al;
+    rast__grid g;
+} rast__fill_setup;
+/* Check the options (the errors of rast_scratch_size's) into *f. */
+rast_status rast__fill_prepare(const rast_fill_opts *opts, rast__fill_setup *f);
+/* rast_fill_bounds with checked options: check the polygon (its vertex
+ * count, then every vertex's range, from one pass over them) and the span
+ * clip, and give its bounds there and its vertex count. */
+rast_status rast__fill_measure(const rast__fill_setup *f, const rast_polygon *polygon,
+                               const rast_rect *clip, uint32_t *npoints, rast_rect *bounds);
+/* The scratch a fill of npoints vertices needs in a width x height clip. */
+size_t rast__fill_scratch(const rast__fill_setup *f, uint32_t npoints, int32_t width,
+                          int32_t height);
+/* Fill a polygon that rast__fill_measure passed (npoints its count) in a
+ * non-empty clip within its span clip, with aligned scratch of at least
+ * rast__fill_scratch bytes for that clip: nothing is checked again. */
+rast_status rast__fill_checked(const rast__fill_setup *f, const rast_polygon *polygon,
+                               uint32_t npoints, const rast_rect *clip, rast__row_fn fn,
+                               void *user, void *scratch, size_t scratch_bytes);
+
 typedef rast_status (*rast__fill_any_fn)(const void *polygon, const rast_fill_opts *opts,
                                          const rast_rect *clip, rast__row_fn fn, void *user,
                                          void *scratch, size_t scratch_bytes);

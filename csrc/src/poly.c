@@ -15,7 +15,6 @@ int rast__poly_box(const rast_polygon *poly, uint32_t npoints, const rast__grid 
 {
     const rast_point *pts = poly->points;
     int32_t minx, maxx, miny, maxy;
-    int64_t r;
     uint32_t i;
 
     if (npoints == 0) return 0;
@@ -27,6 +26,13 @@ int rast__poly_box(const rast_polygon *poly, uint32_t npoints, const rast__grid 
         if (pts[i].y < miny) miny = pts[i].y;
         if (pts[i].y > maxy) maxy = pts[i].y;
     }
+    return rast__box_of(minx, maxx, miny, maxy, g, clip, box);
+}
+
+int rast__box_of(int32_t minx, int32_t maxx, int32_t miny, int32_t maxy, const rast__grid *g,
+                 const rast_rect *clip, rast__box *box)
+{
+    int64_t r;
     /* Rows: those whose sample some edge crosses, ymin <= yc < ymax. */
     r = rast__row_at_or_after(2 * (int64_t)miny, g);
     box->row0 = r > clip->y0 ? (int32_t)r : clip->y0;

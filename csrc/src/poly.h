@@ -30,6 +30,9 @@ typedef struct rast__box {
 
 int rast__poly_box(const rast_polygon *poly, uint32_t npoints, const rast__grid *g,
                    const rast_rect *clip, rast__box *box);
+/* The same box from the vertices' extent (min and max of x and y). */
+int rast__box_of(int32_t minx, int32_t maxx, int32_t miny, int32_t maxy, const rast__grid *g,
+                 const rast_rect *clip, rast__box *box);
 
 /* A non-horizontal edge as the per-row (no DDA) fillers keep it, in
  * internal (doubled) units: (x0, y0) is the upper end (smaller y), dy > 0,

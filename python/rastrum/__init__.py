@@ -127,8 +127,13 @@ def polygon_mask(rings, shape, *, rule="evenodd", algorithm="aet", subpixel_bits
     # dict lookup instead of the general cache's (which also keys on the
     # types, so that True or 8.0 are still refused: here only an int S and
     # a float offset take the quick way).
-    key = (algorithm, rule, subpixel_bits, sample_offset, rounding, boundary)
-    opts = _MASK_OPTS.get(key) if type(subpixel_bits) is int and type(sample_offset) is float else None
+    # The defaults themselves (the very objects): no key to build and hash.
+    if algorithm is _AET and rule is _EVENODD and subpixel_bits is _S8 and sample_offset is _HALF \
+            and rounding is _EXACT and boundary is _EXACT:
+        opts = _DEFAULT_OPTS
+    else:
+        key = (algorithm, rule, subpixel_bits, sample_offset, rounding, boundary)
+        opts = _MASK_OPTS.get(key) if type(subpixel_bits) is int and type(sample_offset) is float else None
     if opts is None:
         opts = _core.fill_opts(algorithm, rule, subpixel_bits, sample_offset, rounding, boundary)
         if type(subpixel_bits) is int and type(sample_offset) is float and len(_MASK_OPTS) < 256:
@@ -143,15 +148,19 @@ def polygon_mask(rings, shape, *, rule="evenodd", algorithm="aet", subpixel_bits
         h, w = shape
         n = len(rings)
         if type(h) is int and type(w) is int and 0 < h <= _MAX_DIM and 0 < w <= _MAX_DIM and n >= 3:
-            mask = _empty(shape, bool)
+            mask = _empty(shape, _BOOL)
             if not _mask_call(_from_buffer(mask), h, w, _from_buffer(_DOUBLES, rings), n, opts):
                 return mask
     return _core.mask_polygon(_core.shape2(shape), rings, opts, opts.subpixel_bits)
 
 
 _MASK_OPTS = {}
+_AET, _EVENODD, _S8, _HALF, _EXACT = (polygon_mask.__kwdefaults__[k] for k in (
+    "algorithm", "rule", "subpixel_bits", "sample_offset", "rounding"))
+assert polygon_mask.__kwdefaults__["boundary"] is _EXACT
+_DEFAULT_OPTS = _core.fill_opts(_AET, _EVENODD, _S8, _HALF, _EXACT, _EXACT)
 _ndarray, _empty = _core.np.ndarray, _core.np.empty
-_F64 = _core.np.dtype(_core.np.float64)
+_F64, _BOOL = _core.np.dtype(_core.np.float64), _core.np.dtype(bool)
 _MAX_DIM = lib.RAST_MAX_DIM
 _PACKED = (16, 8)
 _DOUBLES = _core.ffi.typeof("double[]")

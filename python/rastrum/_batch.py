@@ -31,6 +31,17 @@ DTYPES = {
 MERGES = {"replace": lib.RASTPY_MERGE_REPLACE, "add": lib.RASTPY_MERGE_ADD}
 
 
+def pack(polygons):
+    """(points float64 (P, 2), ring sizes uint32 (R,), rings per polygon
+    uint32 (N,)) of a list of polygons, each a list of C-contiguous float64
+    (N, 2) rings."""
+    rings = [r for poly in polygons for r in poly]
+    poly_rings = np.fromiter(map(len, polygons), np.uint32, len(polygons))
+    sizes = np.fromiter(map(len, rings), np.uint32, len(rings))
+    pts = np.concatenate(rings) if rings else np.zeros((0, 2))
+    return pts, sizes, poly_rings
+
+
 def burn(out, polygons, opts, values=None, merge="replace", planes=False, what="polygon", orient=None):
     """Burn `polygons` into `out` (numpy, native byte order, rows of
     contiguous elements, writable).
@@ -42,6 +53,15 @@ def burn(out, polygons, opts, values=None, merge="replace", planes=False, what="
     polygon k goes into out[k]; else out is (H, W).  Errors name `what` and
     the polygon's index; out is untouched then.
     """
+    return burn_packed(out, *pack(polygons), opts, values, merge, planes, what, orient)
+
+
+def burn_packed(out, pts, sizes, poly_rings, opts, values=None, merge="replace", planes=False,
+                what="polygon", orient=None, first=0):
+    """`burn` of a batch already packed (see `pack`): pts a C-contiguous
+    float64 (P, 2) array, sizes and poly_rings uint32.  Errors name polygon
+    first + k for the batch's polygon k."""
+    npolys = len(poly_rings)
     dt = DTYPES.get(out.dtype)
     if dt is None or not out.dtype.isnative:
         raise InputError("cannot burn into an array of dtype %s" % out.dtype)
@@ -50,30 +70,26 @@ def burn(out, polygons, opts, values=None, merge="replace", planes=False, what="
     if out.ndim != (3 if planes else 2):
         raise InputError("the output array must be %s, not shape %s"
                          % ("(N, H, W)" if planes else "(H, W)", out.shape))
-    if planes and out.shape[0] != len(polygons):
-        raise InputError("%d %ss for %d planes" % (len(polygons), what, out.shape[0]))
+    if planes and out.shape[0] != npolys:
+        raise InputError("%d %ss for %d planes" % (npolys, what, out.shape[0]))
     h, w = out.shape[-2:]
     if w > 1 and out.strides[-1] != out.itemsize:
         raise InputError("the output array's rows must be contiguous (strides %s)" % (out.strides,))
     if values is not None:
         values = np.ascontiguousarray(values, dtype=out.dtype)
-        if values.shape != (len(polygons),):
-            raise InputError("%d values for %d %ss" % (values.size, len(polygons), what))
-    rings = [r for poly in polygons for r in poly]
-    poly_rings = np.fromiter((len(p) for p in polygons), np.uint32, len(polygons))
-    sizes = np.fromiter((len(r) for r in rings), np.uint32, len(rings))
-    pts = np.concatenate(rings) if rings else np.zeros((0, 2))
-    if not len(polygons) or not h or not w:
+        if values.shape != (npolys,):
+            raise InputError("%d values for %d %ss" % (values.size, npolys, what))
+    if not npolys or not h or not w:
         return out
     failed = ffi.new("uint32_t *", 0xFFFFFFFF)
     # The 64-bit path (S up to 32, +-2**28 pixels) when S or the coordinates
     # need it: the same pixels where both apply (_core.use_wide).  Turning
     # rings (orient, rastrum.masks' union) is 32-bit only.
     args = (ffi.cast("void *", out.__array_interface__["data"][0]), h, w,
-            out.strides[-2] if h > 1 else 0, out.strides[0] if planes and len(polygons) > 1 else 0,
+            out.strides[-2] if h > 1 else 0, out.strides[0] if planes and npolys > 1 else 0,
             dt, MERGES[merge], ffi.from_buffer(values) if values is not None else ffi.NULL,
             ffi.from_buffer("double[]", pts), len(pts), ffi.from_buffer("uint32_t[]", sizes),
-            len(sizes), ffi.from_buffer("uint32_t[]", poly_rings), len(polygons), opts, failed)
+            len(sizes), ffi.from_buffer("uint32_t[]", poly_rings), npolys, opts, failed)
     wide = orient is None and use_wide(opts, pts)
     if orient is None:
         result = (lib.rastpy_burn_polygons64 if wide else lib.rastpy_burn_polygons)(*args)
@@ -87,15 +103,16 @@ def burn(out, polygons, opts, values=None, merge="replace", planes=False, what="
         ring = int(np.searchsorted(ends, k, side="right"))
         poly = int(np.searchsorted(np.cumsum(poly_rings), ring, side="right"))
         first_ring = int(poly_rings[:poly].sum())
+        name = "%s %d" % (what, first + poly)
         raise InputError(bad_point_message(
-            "%s %d" % (what, poly), pts[ends[ring] - sizes[ring]:ends[ring]],
+            name, pts[ends[ring] - sizes[ring]:ends[ring]],
             int(k - (ends[ring] - sizes[ring])), opts.subpixel_bits,
-            None, wide).replace("%s %d: " % (what, poly), "%s %d: ring %d, " % (what, poly, ring - first_ring)))
+            None, wide).replace(name + ": ", "%s: ring %d, " % (name, ring - first_ring)))
     if result == lib.RASTPY_E_NOMEM:
-        raise MemoryError("rastrum: no memory for a batch of %d %ss" % (len(polygons), what))
+        raise MemoryError("rastrum: no memory for a batch of %d %ss" % (npolys, what))
     if failed[0] != 0xFFFFFFFF:
         try:
             _check(result)
         except InputError as e:
-            raise InputError("%s %d: %s" % (what, failed[0], e)) from None
+            raise InputError("%s %d: %s" % (what, first + failed[0], e)) from None
     _check(result)

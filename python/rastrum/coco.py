@@ -25,6 +25,8 @@ from . import _core
 from ._core import InputError
 from ._native import ffi, lib
 
+_F64 = np.dtype(np.float64)
+
 __all__ = ["encode", "decode", "area", "toBbox", "merge", "iou", "frPyObjects", "rings"]
 
 
@@ -446,13 +448,13 @@ def rings(segmentation):
     if not isinstance(segmentation, (list, tuple, np.ndarray)):
         raise InputError("rings: segmentation must be a list of flat [x0, y0, ...] lists, not %s"
                          % type(segmentation).__name__)
-    if len(segmentation) and np.ndim(segmentation[0]) == 0:
+    if len(segmentation) and type(segmentation[0]) is not list and np.ndim(segmentation[0]) == 0:
         segmentation = [segmentation]
     out = []
     for k, p in enumerate(segmentation):
         a = np.asarray(p) if type(p) is list else None
-        if a is not None and a.ndim == 1 and a.dtype.kind == "f":  # the usual: floats, quickly
-            out.append(a[: a.shape[0] // 2 * 2].reshape(-1, 2).astype(np.float64, copy=False))
+        if a is not None and a.dtype is _F64 and a.ndim == 1:  # the usual: floats, quickly
+            out.append(a.reshape(-1, 2) if not a.shape[0] & 1 else a[:-1].reshape(-1, 2))
             continue
         a = _core.real_array(p, "rings: part %d" % k, "a flat [x0, y0, x1, y1, ...] list")
         if a.ndim != 1:

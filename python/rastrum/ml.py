@@ -7,6 +7,8 @@ batch engine (``rastrum._batch``): all polygons checked, then drawn in one
 C call, exactly (DESIGN section 1).
 """
 
+from itertools import chain
+
 import numpy as np
 
 from . import _batch, _core
@@ -16,9 +18,45 @@ _F64 = np.dtype(np.float64)
 _RULES = ("union", "evenodd", "nonzero")
 
 
+def _packed(polygons):
+    """The batch packed for the C call when every polygon is a float64
+    (N, 2) array (one ring) or every one a list of them, as
+    ``coco.rings`` makes them: (points (P, 2), ring sizes, rings per
+    polygon), each ring a part.  None for anything else (the general path
+    then checks and names what is wrong).  A handful of C-level passes over
+    the list instead of Python per polygon: a batch of 10,000 instances
+    spends its time drawing, not here."""
+    types = set(map(type, polygons))
+    if types == {np.ndarray}:
+        rings, poly_rings = polygons, None
+    elif types == {list}:
+        rings = list(chain.from_iterable(polygons))
+        if set(map(type, rings)) != {np.ndarray}:
+            return None
+        poly_rings = np.fromiter(map(len, polygons), np.uint32, len(polygons))
+    else:
+        return None
+    sizes = np.fromiter(map(len, rings), np.uint32, len(rings))
+    if not len(sizes) or not sizes.all():
+        return None  # empty rings are dropped: the general path
+    try:
+        # casting="no": float64 rings only (bool, object, other widths take
+        # the general path, which converts exactly or refuses); equal
+        # dimensions, so a (P, 2) result means every ring was (N, 2)
+        pts = np.concatenate(rings, dtype=_F64, casting="no")
+    except (TypeError, ValueError):
+        return None
+    if pts.ndim != 2 or pts.shape[1] != 2:
+        return None
+    if poly_rings is None:
+        poly_rings = np.ones(len(rings), np.uint32)
+    return pts, sizes, poly_rings, np.ones(len(sizes), np.int8)
+
+
 def _polygons(polygons, what):
-    """(list of lists of float64 (N, 2) rings, orientation int8 per ring)
-    for the union rule: +1 for parts, -1 for holes (geometries' interiors)."""
+    """The batch packed: (points float64 (P, 2), ring sizes uint32, rings
+    per polygon uint32, orientation int8 per ring) for the union rule: +1
+    for parts, -1 for holes (geometries' interiors)."""
     if isinstance(polygons, np.ndarray):
         if polygons.ndim != 3 or polygons.shape[-1] != 2:
             raise InputError("%s: an array of polygons must be (N, K, 2) (N rings of K points), "
@@ -32,19 +70,11 @@ def _polygons(polygons, what):
         raise InputError("%s: polygons must be a list of polygons (each a list of (N, 2) rings, an "
                          "(N, 2) ring, an (N, 1, 2) contour or a shapely polygon), not %s"
                          % (what, type(polygons).__name__)) from None
+    packed = _packed(polygons)
+    if packed is not None:
+        return packed
     out, orient = [], []
     for k, p in enumerate(polygons):
-        if type(p) is np.ndarray and p.dtype == _F64 and p.ndim == 2 and p.shape[1] == 2 \
-                and p.flags.c_contiguous:
-            out.append([p] if len(p) else [])
-            if len(p):
-                orient.append(1)
-            continue
-        if type(p) is list and p and all(type(r) is np.ndarray and r.dtype == _F64 and r.ndim == 2
-                                         and r.shape[1] == 2 and r.flags.c_contiguous and len(r) for r in p):
-            out.append(p)  # rings as coco.rings makes them
-            orient.extend([1] * len(p))
-            continue
         holes = []
         try:
             rings = _core.rings_f64(p, holes)
@@ -52,7 +82,7 @@ def _polygons(polygons, what):
             raise InputError("%s: polygon %d: %s" % (what, k, e)) from None
         out.append(rings)
         orient.extend(-1 if h else 1 for h in holes)
-    return out, np.array(orient, np.int8)
+    return _batch.pack(out) + (np.array(orient, np.int8),)
 
 
 def _progress(progress, total):
@@ -90,21 +120,30 @@ def _opts(rule, algorithm, subpixel_bits, sample_offset, what):
     return _core.fill_opts(algorithm, "nonzero" if rule == "union" else rule, subpixel_bits, sample_offset)
 
 
-def _burn(out, polys, orient, opts, rule, values, merge, planes, what, report):
+def _burn(out, packed, opts, rule, values, merge, planes, what, report):
     """Burn in chunks (one when no progress is shown); orientation per
     ring for the union rule."""
-    n = len(polys)
+    pts, sizes, poly_rings, orient = packed
+    n = len(poly_rings)
     if not n:
         return
-    ring_at = np.zeros(n + 1, np.int64)
-    if rule == "union" and n:
-        np.cumsum([len(p) for p in polys], out=ring_at[1:])
-    for i0, i1 in _chunks(n, report):
-        _batch.burn(out[i0:i1] if planes else out, polys[i0:i1], opts,
-                    None if values is None else values[i0:i1], merge, planes, what,
-                    orient[ring_at[i0]:ring_at[i1]] if rule == "union" else None)
+    chunks = _chunks(n, report)
+    if len(chunks) == 1:
+        _batch.burn_packed(out, pts, sizes, poly_rings, opts, values, merge, planes, what,
+                           orient if rule == "union" else None)
         if report is not None:
-            report(i1)
+            report(n)
+        return
+    ring_at = np.zeros(n + 1, np.int64)
+    np.cumsum(poly_rings, out=ring_at[1:])
+    pt_at = np.zeros(len(sizes) + 1, np.int64)
+    np.cumsum(sizes, out=pt_at[1:])
+    for i0, i1 in chunks:
+        r0, r1 = ring_at[i0], ring_at[i1]
+        _batch.burn_packed(out[i0:i1] if planes else out, pts[pt_at[r0]:pt_at[r1]], sizes[r0:r1],
+                           poly_rings[i0:i1], opts, None if values is None else values[i0:i1], merge,
+                           planes, what, orient[r0:r1] if rule == "union" else None, i0)
+        report(i1)
 
 
 def masks(polygons, shape, *, rule="union", algorithm="aet", subpixel_bits=8, sample_offset=0.5,
@@ -150,9 +189,10 @@ def masks(polygons, shape, *, rule="union", algorithm="aet", subpixel_bits=8, sa
     """
     opts = _opts(rule, algorithm, subpixel_bits, sample_offset, "masks")
     h, w = _core.shape2(shape)
-    polys, orient = _polygons(polygons, "masks")
-    out = np.zeros((len(polys), h, w), bool)
-    _burn(out, polys, orient, opts, rule, None, "replace", True, "polygon", _progress(progress, len(polys)))
+    packed = _polygons(polygons, "masks")
+    n = len(packed[2])
+    out = np.zeros((n, h, w), bool)
+    _burn(out, packed, opts, rule, None, "replace", True, "polygon", _progress(progress, n))
     return out
 
 
@@ -193,8 +233,8 @@ def labels(polygons, shape, values=None, dtype=np.int32, *, overlap=False, rule=
         raise InputError("labels: dtype %r is not a numpy dtype" % (dtype,)) from None
     if dtype not in _batch.DTYPES or dtype == np.bool_:
         raise InputError("labels: dtype must be one of uint8..int64, float32, float64, not %s" % dtype)
-    polys, orient = _polygons(polygons, "labels")
-    n = len(polys)
+    packed = _polygons(polygons, "labels")
+    n = len(packed[2])
     if values is None:
         vals = np.arange(1, n + 1).astype(dtype)
     else:
@@ -206,10 +246,10 @@ def labels(polygons, shape, values=None, dtype=np.int32, *, overlap=False, rule=
         vals = v.astype(dtype)
     out = np.zeros((h, w), dtype)
     report = _progress(progress, n * (2 if overlap else 1))
-    _burn(out, polys, orient, opts, rule, vals, "replace", False, "polygon", report)
+    _burn(out, packed, opts, rule, vals, "replace", False, "polygon", report)
     if not overlap:
         return out
     count = np.zeros((h, w), np.uint16)
-    _burn(count, polys, orient, opts, rule, None, "add", False, "polygon",
+    _burn(count, packed, opts, rule, None, "add", False, "polygon",
           None if report is None else (lambda done: report(n + done)))
     return out, count

@@ -36,7 +36,8 @@
  * wrap), and `carry`, the cover of everything left of the clip. */
 typedef struct rast__cells {
     rast__i128 *cover, *area, carry;
-    int32_t x0, x1, cmin, cmax; /* clip columns; columns touched */
+    uint64_t *bits;             /* the columns touched, one bit each */
+    int32_t x0, x1, wmin, wmax; /* clip columns; the words of bits touched */
     int32_t h;                  /* H = G - S */
     int32_t p;                  /* P = 2^S */
     int accumulate;
@@ -136,7 +137,7 @@ static uint64_t rast__cov_t_val(const rast__tstep *s, uint64_t lo, uint64_t hi)
 
 /* One cell's share: from fraction f0 at t0 to f1 at t1 (V, 0..2^G) in
  * column col, sign s. */
-static void rast__cells_add(rast__cells *c, int32_t col, uint64_t f0, uint64_t f1,
+static inline void rast__cells_add(rast__cells *c, int32_t col, uint64_t f0, uint64_t f1,
                             uint64_t t0, uint64_t t1, int32_t s)
 {
     uint64_t dy = t1 - t0;
@@ -154,8 +155,9 @@ static void rast__cells_add(rast__cells *c, int32_t col, uint64_t f0, uint64_t f
     col -= c->x0;
     c->cover[col] = rast__i128_add(c->cover[col], cv);
     c->area[col] = rast__i128_add(c->area[col], ar);
-    if (col < c->cmin) c->cmin = col;
-    if (col > c->cmax) c->cmax = col;
+    c->bits[col >> 6] |= (uint64_t)1 << (col & 63);
+    if ((col >> 6) < c->wmin) c->wmin = col >> 6;
+    if ((col >> 6) > c->wmax) c->wmax = col >> 6;
 }
 
 /* The piece of edge e from (xa, ta) to (xb, tb) (V, U; ta < tb), sign s,
@@ -270,41 +272,53 @@ static void rast__cov_fill(rast_coverage_format f, unsigned char *row, int32_t k
         for (k = k0; k < k1; k++) rast__cov_store(f, row, k, v);
 }
 
-static int rast__cells_empty(const rast__cells *c, int32_t k)
+/* The lowest set bit's index (b != 0). */
+static int32_t rast__ctz64(uint64_t b)
 {
-    return !(c->cover[k].lo | c->cover[k].hi | c->area[k].lo | c->area[k].hi);
+#if defined(__GNUC__) || defined(__clang__)
+    return (int32_t)__builtin_ctzll(b);
+#else
+    int32_t n = 0;
+    while (!(b & 1)) {
+        b >>= 1;
+        n++;
+    }
+    return n;
+#endif
 }
 
-/* Row y's values from the cells, which are then cleared.  Between cells
- * that add something (inside a span, or outside the shape) the value is
- * the running cover's: one computation and a fill per run. */
+/* Row y's values from the cells, which are then cleared.  Only the cells
+ * touched (their bits, in column order) add something; between them (inside
+ * a span, or outside the shape) the value is the running cover's: one
+ * computation and a fill per run.  A touched cell whose sums are 0 gives
+ * the run's value too, so the bits only save the scan. */
 static void rast__cells_emit(rast__cells *c, const rast__cov_out *o, int32_t y, rast_fill_rule rule)
 {
     unsigned char *row = rast__cov_row(o, y);
     const rast__i128 zero = rast__i128_u64(0);
     const rast_coverage_format f = o->format;
     rast__i128 acc = c->carry;
-    int32_t k = c->cmin <= c->cmax ? c->cmin : c->x1 - c->x0, w = c->x1 - c->x0;
-    rast__cov_fill(f, row, 0, k, rast__cov_level(f, rast__cells_a62(c, acc, zero, rule)));
-    while (k <= c->cmax) {
-        if (rast__cells_empty(c, k)) {
-            int32_t k2 = k + 1;
-            while (k2 <= c->cmax && rast__cells_empty(c, k2)) k2++;
-            rast__cov_fill(f, row, k, k2, rast__cov_level(f, rast__cells_a62(c, acc, zero, rule)));
-            k = k2;
-            continue;
+    int32_t k = 0, wi, w = c->x1 - c->x0;
+    for (wi = c->wmin; wi <= c->wmax; wi++) {
+        uint64_t b = c->bits[wi];
+        c->bits[wi] = 0;
+        while (b) {
+            int32_t col = (wi << 6) + rast__ctz64(b);
+            b &= b - 1;
+            if (col > k)
+                rast__cov_fill(f, row, k, col, rast__cov_level(f, rast__cells_a62(c, acc, zero, rule)));
+            acc = rast__i128_add(acc, c->cover[col]);
+            rast__cov_store(f, row, col, rast__cov_level(f, rast__cells_a62(c, acc, c->area[col], rule)));
+            c->cover[col] = c->area[col] = zero;
+            k = col + 1;
         }
-        acc = rast__i128_add(acc, c->cover[k]);
-        rast__cov_store(f, row, k, rast__cov_level(f, rast__cells_a62(c, acc, c->area[k], rule)));
-        c->cover[k] = c->area[k] = zero;
-        k++;
     }
     if (k < w)
         rast__cov_fill(f, row, k, w, rast__cov_level(f, rast__cells_a62(c, acc, zero, rule)));
     rast__cov_row_done(o, y);
     c->carry = zero;
-    c->cmin = INT32_MAX;
-    c->cmax = -1;
+    c->wmin = INT32_MAX;
+    c->wmax = -1;
 }
 
 /* x advanced by a whole row: from a row's top to the next (exact). */
@@ -407,6 +421,7 @@ size_t rast__cov_area_scratch(uint32_t n, int32_t width)
     size_t b = rast__align(rast__size_mul(n, sizeof(rast__cedge)));
     b = rast__size_add(b, 6 * rast__align(rast__size_mul(n, sizeof(int32_t))));
     b = rast__size_add(b, rast__align(rast__size_mul(n, sizeof(uint64_t))));
+    b = rast__size_add(b, rast__align(rast__size_mul(((size_t)width + 63) / 64, sizeof(uint64_t))));
     return rast__size_add(b, 2 * rast__align(rast__size_mul((size_t)width, sizeof(rast__i128))));
 }
 
@@ -668,15 +683,17 @@ rast_status rast__cov_area(rast__cedge *e, uint32_t n, int32_t s, rast_fill_rule
     sw.ct = (uint64_t *)rast__take(arena, (size_t)n * sizeof(uint64_t));
     c.cover = (rast__i128 *)rast__take(arena, (size_t)width * sizeof(rast__i128));
     c.area = (rast__i128 *)rast__take(arena, (size_t)width * sizeof(rast__i128));
+    c.bits = (uint64_t *)rast__take(arena, ((size_t)width + 63) / 64 * sizeof(uint64_t));
     if ((n && (!order || !row || !sw.live || !sw.wb || !sw.h || !sw.hidx || !sw.ct)) || !c.cover ||
-        !c.area)
+        !c.area || !c.bits)
         return RAST_E_SCRATCH;
     for (k = 0; k < width; k++) c.cover[k] = c.area[k] = rast__i128_u64(0);
+    for (k = 0; k < (width + 63) / 64; k++) c.bits[k] = 0;
     c.carry = rast__i128_u64(0);
     c.x0 = o->clip.x0;
     c.x1 = o->clip.x1;
-    c.cmin = INT32_MAX;
-    c.cmax = -1;
+    c.wmin = INT32_MAX;
+    c.wmax = -1;
     c.h = G - s;
     c.p = (int32_t)1 << s;
     c.accumulate = accumulate;

@@ -647,6 +647,264 @@ static void rast__cov_row_area(rast__cells *c, rast__cedge *e, int32_t *row, int
     }
 }
 
+/* ---- the fast row --------------------------------------------------------
+ *
+ * When the winding number takes, everywhere in the row's strip, only the
+ * values 0 and one s (+1 or -1), the inside is where it is s, under both
+ * rules, and the sweep above would find no crossing (two edges crossing make
+ * four winding values around the crossing, at most two of them in {0, s})
+ * and give every edge one sign, dir * s, from the row's top to its bottom:
+ * an edge enters the inside (winding 0 to s: dir = s, sign +1) or leaves it
+ * (s to 0: dir = -s, sign -1).  The row is then each edge's part, whole,
+ * added with sign dir * s: the same cells and the same roundings as the
+ * sweep makes for a piece (only its two ends' abscissae are rounded, and a
+ * column crossing's ordinate), so the bound of the sweep holds (with fewer
+ * roundings where the sweep would cut the piece at a vertex inside the
+ * row).  In rows without a vertex inside, the values are the sweep's, bit
+ * for bit.
+ *
+ * The test, all exact, costs a pass over the row's edges: each edge's part
+ * in the strip lies in the abscissae [lo, hi) (V units: the floors at its
+ * two ends, hi one more); the edges, sorted by lo, fall into groups whose
+ * ranges overlap, and distinct groups cannot meet.  A group is accepted when
+ * it is
+ *   - edges that all span the strip, in the same order at its top and at
+ *     its bottom (exact comparisons; equal at one end at most): they do not
+ *     cross inside, and the winding number between neighbours is the sum
+ *     of the directions on the left;
+ *   - two edges that share an end inside the strip: a chain (one ends where
+ *     the other starts, the same direction: y-monotone) or a cusp (both
+ *     start, or both end, there; opposite directions; not collinear), the
+ *     winding number inside the cusp being the one on its left plus its
+ *     left branch's direction.
+ * Every winding number met, from the left, must be 0 or s; else (overlaps,
+ * crossings, several vertices close together, horizontal edges inside the
+ * strip) the row is swept. */
+
+/* The range [lo, hi) of e's part (e->x at its top, e->xn at its bottom). */
+static rast__i128 rast__fast_lo(const rast__cedge *e)
+{
+    return rast__i128_cmp(e->x, e->xn) <= 0 ? e->x : e->xn;
+}
+
+static rast__i128 rast__fast_hi(const rast__cedge *e)
+{
+    return rast__i128_add(rast__i128_cmp(e->x, e->xn) >= 0 ? e->x : e->xn, rast__i128_u64(1));
+}
+
+/* The exact abscissae x + r/dy of a and b: -1, 0, 1 as a's is smaller,
+ * equal, larger. */
+static int rast__fast_cmpx(rast__i128 xa, int64_t ra, const rast__cedge *a, rast__i128 xb,
+                           int64_t rb, const rast__cedge *b)
+{
+    int c = rast__i128_cmp(xa, xb);
+    int64_t l, r;
+    if (c) return c;
+    l = ra * b->dy;
+    r = rb * a->dy;
+    return (l > r) - (l < r);
+}
+
+/* Winding number w met: 0 or the row's one sign *s (set by the first). */
+static int rast__fast_ok(int32_t w, int32_t *s)
+{
+    if (w == 0) return 1;
+    if (w != 1 && w != -1) return 0;
+    if (*s == 0) *s = w;
+    return w == *s;
+}
+
+/* Edges g[0..m) (sorted by lo) of a group, all spanning the strip: sort
+ * them by their top abscissa (insertion: a few), check the order at the
+ * bottom, and walk the windings from *w. */
+static int rast__fast_full(const rast__cedge *e, int32_t *g, int32_t m, int32_t *w, int32_t *s)
+{
+    int32_t k;
+    for (k = 1; k < m; k++) {
+        int32_t id = g[k], q = k;
+        const rast__cedge *a = &e[id];
+        while (q > 0) {
+            const rast__cedge *b = &e[g[q - 1]];
+            int c = rast__fast_cmpx(a->x, a->r, a, b->x, b->r, b);
+            if (c > 0 || (c == 0 && rast__fast_cmpx(a->xn, a->rn, a, b->xn, b->rn, b) >= 0)) break;
+            g[q] = g[q - 1];
+            q--;
+        }
+        g[q] = id;
+    }
+    for (k = 0; k < m; k++) {
+        const rast__cedge *a = &e[g[k]];
+        if (k + 1 < m) {
+            const rast__cedge *b = &e[g[k + 1]];
+            int ct = rast__fast_cmpx(a->x, a->r, a, b->x, b->r, b);
+            int cb = rast__fast_cmpx(a->xn, a->rn, a, b->xn, b->rn, b);
+            if (ct > 0 || cb > 0 || (ct == 0 && cb == 0)) return 0;
+        }
+        *w += a->dir;
+        if (!rast__fast_ok(*w, s)) return 0;
+    }
+    return 1;
+}
+
+/* At most this many ordinates inside a fast row where an edge starts or
+ * ends (more: the row is swept), and this many edges in a group that has
+ * such an edge. */
+#define RAST__FAST_CUTS 8
+#define RAST__FAST_MIXED 8
+
+/* A group g[0..m) with edges starting or ending inside the strip, at the
+ * ordinates u[1..nu-1) (u[0] = 0, u[nu-1] = T): in each slab between two
+ * of them its edges there span the slab; they must be in the same order at
+ * the slab's top and bottom (exact abscissae), and the windings walked from
+ * w[i], the slab's winding on the group's left, which then becomes the one
+ * on its right. */
+static int rast__fast_mixed(rast__cedge *e, const int32_t *g, int32_t m, const uint64_t *u,
+                            int32_t nu, int64_t Yj, const rast__cells *c, int32_t *w, int32_t *s)
+{
+    rast__i128 xa[RAST__FAST_MIXED], xb[RAST__FAST_MIXED];
+    int64_t ra[RAST__FAST_MIXED], rb[RAST__FAST_MIXED];
+    int32_t id[RAST__FAST_MIXED], i, k, n;
+    if (m > RAST__FAST_MIXED) return 0;
+    for (i = 0; i + 1 < nu; i++) {
+        for (k = 0, n = 0; k < m; k++) { /* the edges over the slab, by top then bottom */
+            const rast__cedge *ed = &e[g[k]];
+            int64_t rel0 = (int64_t)ed->yt - Yj, rel1 = (int64_t)ed->yt + ed->dy - Yj;
+            uint64_t t0 = rel0 <= 0 ? 0 : (uint64_t)rel0 << c->h;
+            uint64_t t1 = rel1 >= c->p ? T : (uint64_t)rel1 << c->h;
+            rast__i128 x0, x1;
+            int64_t r0, r1;
+            int32_t q = n;
+            if (t0 > u[i] || t1 < u[i + 1]) continue;
+            if (t0 == u[i]) {
+                x0 = ed->x;
+                r0 = ed->r;
+            } else {
+                rast__cov_x_at(ed, Yj, u[i], c->h, &x0, &r0);
+            }
+            if (t1 == u[i + 1]) {
+                x1 = ed->xn;
+                r1 = ed->rn;
+            } else {
+                rast__cov_x_at(ed, Yj, u[i + 1], c->h, &x1, &r1);
+            }
+            while (q > 0) {
+                const rast__cedge *b = &e[id[q - 1]];
+                int ct = rast__fast_cmpx(x0, r0, ed, xa[q - 1], ra[q - 1], b);
+                if (ct > 0 || (ct == 0 && rast__fast_cmpx(x1, r1, ed, xb[q - 1], rb[q - 1], b) >= 0))
+                    break;
+                id[q] = id[q - 1];
+                xa[q] = xa[q - 1];
+                ra[q] = ra[q - 1];
+                xb[q] = xb[q - 1];
+                rb[q] = rb[q - 1];
+                q--;
+            }
+            id[q] = g[k];
+            xa[q] = x0;
+            ra[q] = r0;
+            xb[q] = x1;
+            rb[q] = r1;
+            n++;
+        }
+        for (k = 0; k < n; k++) {
+            if (k + 1 < n) {
+                const rast__cedge *a = &e[id[k]], *b = &e[id[k + 1]];
+                int ct = rast__fast_cmpx(xa[k], ra[k], a, xa[k + 1], ra[k + 1], b);
+                int cb = rast__fast_cmpx(xb[k], rb[k], a, xb[k + 1], rb[k + 1], b);
+                if (ct > 0 || cb > 0 || (ct == 0 && cb == 0)) return 0;
+            }
+            w[i] += e[id[k]].dir;
+            if (!rast__fast_ok(w[i], s)) return 0;
+        }
+    }
+    return 1;
+}
+
+/* The row's edges, as a fast row if it is one (else 0, nothing added; the
+ * edges' caches stay valid for the sweep, row[] reordered). */
+static int rast__cov_row_fast(rast__cells *c, rast__cedge *e, int32_t *row, int32_t nrow,
+                              int32_t j)
+{
+    const int64_t Yj = (int64_t)j * c->p;
+    uint64_t u[RAST__FAST_CUTS + 2];
+    int32_t w[RAST__FAST_CUTS + 1];
+    int32_t k, g, i, nu = 1, s = 0;
+    u[0] = 0;
+    for (k = 0; k < nrow; k++) { /* the ends of each part, sorted by lo */
+        rast__cedge *ed = &e[row[k]];
+        int64_t rel0 = (int64_t)ed->yt - Yj, rel1 = (int64_t)ed->yt + ed->dy - Yj;
+        uint64_t t0 = rel0 <= 0 ? 0 : (uint64_t)rel0 << c->h;
+        uint64_t t1 = rel1 >= c->p ? T : (uint64_t)rel1 << c->h;
+        uint64_t cut[2];
+        int32_t id = row[k], q = k, z;
+        rast__i128 lo;
+        if (ed->rowx != j || ed->tx != t0) {
+            rast__cov_x_at(ed, Yj, t0, c->h, &ed->x, &ed->r);
+            ed->rowx = j;
+            ed->tx = t0;
+        }
+        rast__cov_x_end(ed, Yj, t0, t1, c->h);
+        cut[0] = t0;
+        cut[1] = t1 == T ? 0 : t1;
+        for (z = 0; z < 2; z++) { /* the ordinates inside, sorted, once each */
+            int32_t y = nu;
+            if (!cut[z]) continue;
+            while (y > 1 && u[y - 1] > cut[z]) y--;
+            if (u[y - 1] == cut[z]) continue;
+            if (nu > RAST__FAST_CUTS) return 0;
+            memmove(u + y + 1, u + y, (size_t)(nu - y) * sizeof *u);
+            u[y] = cut[z];
+            nu++;
+        }
+        lo = rast__fast_lo(ed);
+        while (q > 0 && rast__i128_cmp(lo, rast__fast_lo(&e[row[q - 1]])) < 0) {
+            row[q] = row[q - 1];
+            q--;
+        }
+        row[q] = id;
+    }
+    u[nu++] = T;
+    for (i = 0; i + 1 < nu; i++) w[i] = 0;
+    for (k = 0; k < nrow; k = g) { /* the groups, left to right */
+        rast__i128 hi = rast__fast_hi(&e[row[k]]);
+        int32_t full = 1, m;
+        for (g = k; g < nrow; g++) {
+            const rast__cedge *ed = &e[row[g]];
+            if (g > k && rast__i128_cmp(rast__fast_lo(ed), hi) >= 0) break;
+            if (rast__i128_cmp(rast__fast_hi(ed), hi) > 0) hi = rast__fast_hi(ed);
+            if (ed->yt > Yj || (int64_t)ed->yt + ed->dy < Yj + c->p) full = 0;
+        }
+        m = g - k;
+        if (full) { /* the same in every slab: walked once per winding on its left */
+            int32_t sum = 0, walked[2] = {0, 0}, z;
+            for (z = 0; z < m; z++) sum += e[row[k + z]].dir;
+            for (i = 0; i + 1 < nu; i++) {
+                int32_t w0 = w[i]; /* 0 or s */
+                if (!walked[w0 != 0]) {
+                    int32_t ww = w0;
+                    if (!rast__fast_full(e, row + k, m, &ww, &s)) return 0;
+                    walked[w0 != 0] = 1;
+                }
+                w[i] = w0 + sum;
+                if (!rast__fast_ok(w[i], &s)) return 0;
+            }
+        } else if (!rast__fast_mixed(e, row + k, m, u, nu, Yj, c, w, &s)) {
+            return 0;
+        }
+    }
+    for (i = 0; i + 1 < nu; i++)
+        if (w[i] != 0) return 0;
+    if (s == 0) return 0;
+    for (k = 0; k < nrow; k++) { /* the parts, whole */
+        rast__cedge *ed = &e[row[k]];
+        int64_t rel1 = (int64_t)ed->yt + ed->dy - Yj;
+        uint64_t t1 = rel1 >= c->p ? T : (uint64_t)rel1 << c->h;
+        rast__cells_piece(c, ed, Yj, ed->x, ed->tx, ed->xn, t1, ed->dir * s);
+        rast__cov_x_keep(ed, j, t1);
+    }
+    return 1;
+}
+
 /* The row's accumulation: every edge, whole, signed by its direction. */
 static void rast__cov_row_acc(rast__cells *c, rast__cedge *e, const int32_t *row, int32_t nrow,
                               int32_t j)
@@ -732,7 +990,7 @@ rast_status rast__cov_area(rast__cedge *e, uint32_t n, int32_t s, rast_fill_rule
         if (nrow) {
             if (accumulate)
                 rast__cov_row_acc(&c, e, row, nrow, j);
-            else
+            else if (!rast__cov_row_fast(&c, e, row, nrow, j))
                 rast__cov_row_area(&c, e, row, nrow, &sw, j, rule);
         }
         rast__cells_emit(&c, o, j, rule);

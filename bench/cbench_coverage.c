@@ -4,7 +4,9 @@
  * triangles, random overlapping triangles).  Used to tune coverage_area.c:
  *   make cbench-coverage              (wall clock, medians)
  *   valgrind --tool=callgrind build/cbench_coverage 1 SCENE METHOD
- * counts instructions of one call of one scene. */
+ * counts instructions of one call of one scene (SCENE: one of the names
+ * below, trisN for N random triangles, or a file of rings: its count, then
+ * each ring's size and vertices in 1/256 pixel). */
 #define _POSIX_C_SOURCE 199309L
 #include <math.h>
 #include <stdint.h>
@@ -133,6 +135,19 @@ static uint32_t scene(const char *name, uint32_t *nrings, int *tris)
         *tris = 1;
         return k;
     }
+    { /* a file: the ring count, then each ring's size and its vertices (fixed, S = 8) */
+        FILE *f = fopen(name, "r");
+        uint32_t r, i;
+        if (f && fscanf(f, "%u", nrings) == 1) {
+            for (r = 0; r < *nrings && r < MAXP; r++) {
+                if (fscanf(f, "%u", &sizes[r]) != 1) break;
+                for (i = 0; i < sizes[r] && n < MAXP; i++, n++)
+                    if (fscanf(f, "%d %d", &pts[n].x, &pts[n].y) != 2) break;
+            }
+            fclose(f);
+            return n;
+        }
+    }
     fprintf(stderr, "unknown scene %s\n", name);
     exit(2);
 }
@@ -180,7 +195,7 @@ int main(int argc, char **argv)
     for (s = 0; s < 6; s++) {
         uint32_t nrings = 1, n;
         int tris;
-        if (argc > 2 && strcmp(argv[2], all[s]) && strncmp(argv[2], "tris", 4)) continue;
+        if (argc > 2 && strcmp(argv[2], all[s]) && s + 1 < 6) continue;
         n = scene(argc > 2 ? argv[2] : all[s], &nrings, &tris);
         for (mi = 0; mi < 2; mi++) {
             double t[64];

@@ -51,8 +51,14 @@ static void rast__cov_x_at(const rast__cedge *e, int64_t Yj, uint64_t t, int32_t
 {
     rast__i128 base = rast__i128_shl(rast__i128_from(e->xt), h), y, q;
     uint32_t rem;
-    if (e->dx == 0) {
+    if (e->dx == 0 || (!(t & (((uint64_t)1 << h) - 1)) && (int64_t)e->yt == Yj + (int64_t)(t >> h))) {
+        /* vertical, or at its top */
         *x = base;
+        *r = 0;
+        return;
+    }
+    if (!(t & (((uint64_t)1 << h) - 1)) && (int64_t)e->yt + e->dy == Yj + (int64_t)(t >> h)) {
+        *x = rast__i128_shl(rast__i128_from((int64_t)e->xt + e->dx), h); /* its bottom */
         *r = 0;
         return;
     }
@@ -749,68 +755,64 @@ static int rast__fast_full(const rast__cedge *e, int32_t *g, int32_t m, int32_t 
 /* At most this many ordinates inside a fast row where an edge starts or
  * ends (more: the row is swept), and this many edges in a group that has
  * such an edge. */
-#define RAST__FAST_CUTS 8
-#define RAST__FAST_MIXED 8
+#define RAST__FAST_CUTS 32
+#define RAST__FAST_MIXED 32
 
 /* A group g[0..m) with edges starting or ending inside the strip, at the
  * ordinates u[1..nu-1) (u[0] = 0, u[nu-1] = T): in each slab between two
  * of them its edges there span the slab; they must be in the same order at
- * the slab's top and bottom (exact abscissae), and the windings walked from
- * w[i], the slab's winding on the group's left, which then becomes the one
- * on its right. */
-static int rast__fast_mixed(rast__cedge *e, const int32_t *g, int32_t m, const uint64_t *u,
+ * the slab's top and bottom (exact abscissae, by cross multiplication), and
+ * the windings walked from w[i], the slab's winding on the group's left,
+ * which then becomes the one on its right. */
+/* e's abscissa at ordinate Y (fixed units, within its extent) times its
+ * dy: exact, |.| < 2^57. */
+static int64_t rast__fast_num(const rast__cedge *e, int64_t Y)
+{
+    return (int64_t)e->xt * e->dy + (int64_t)e->dx * (Y - e->yt);
+}
+
+/* The abscissae na/a->dy and nb/b->dy compared exactly: -1, 0, 1. */
+static int rast__fast_cmpn(int64_t na, const rast__cedge *a, int64_t nb, const rast__cedge *b)
+{
+    return rast__i128_cmp(rast__i128_mul(na, b->dy), rast__i128_mul(nb, a->dy));
+}
+
+static int rast__fast_mixed(const rast__cedge *e, const int32_t *g, int32_t m, const uint64_t *u,
                             int32_t nu, int64_t Yj, const rast__cells *c, int32_t *w, int32_t *s)
 {
-    rast__i128 xa[RAST__FAST_MIXED], xb[RAST__FAST_MIXED];
-    int64_t ra[RAST__FAST_MIXED], rb[RAST__FAST_MIXED];
+    int64_t na[RAST__FAST_MIXED], nb[RAST__FAST_MIXED];
     int32_t id[RAST__FAST_MIXED], i, k, n;
     if (m > RAST__FAST_MIXED) return 0;
     for (i = 0; i + 1 < nu; i++) {
+        /* the slab [Ya, Yb] (fixed units: the ordinates inside the row are
+         * vertices', multiples of 2^H) */
+        const int64_t Ya = Yj + (int64_t)(u[i] >> c->h), Yb = Yj + (int64_t)(u[i + 1] >> c->h);
         for (k = 0, n = 0; k < m; k++) { /* the edges over the slab, by top then bottom */
             const rast__cedge *ed = &e[g[k]];
-            int64_t rel0 = (int64_t)ed->yt - Yj, rel1 = (int64_t)ed->yt + ed->dy - Yj;
-            uint64_t t0 = rel0 <= 0 ? 0 : (uint64_t)rel0 << c->h;
-            uint64_t t1 = rel1 >= c->p ? T : (uint64_t)rel1 << c->h;
-            rast__i128 x0, x1;
-            int64_t r0, r1;
+            int64_t x0, x1;
             int32_t q = n;
-            if (t0 > u[i] || t1 < u[i + 1]) continue;
-            if (t0 == u[i]) {
-                x0 = ed->x;
-                r0 = ed->r;
-            } else {
-                rast__cov_x_at(ed, Yj, u[i], c->h, &x0, &r0);
-            }
-            if (t1 == u[i + 1]) {
-                x1 = ed->xn;
-                r1 = ed->rn;
-            } else {
-                rast__cov_x_at(ed, Yj, u[i + 1], c->h, &x1, &r1);
-            }
+            if (ed->yt > Ya || (int64_t)ed->yt + ed->dy < Yb) continue;
+            x0 = rast__fast_num(ed, Ya);
+            x1 = rast__fast_num(ed, Yb);
             while (q > 0) {
                 const rast__cedge *b = &e[id[q - 1]];
-                int ct = rast__fast_cmpx(x0, r0, ed, xa[q - 1], ra[q - 1], b);
-                if (ct > 0 || (ct == 0 && rast__fast_cmpx(x1, r1, ed, xb[q - 1], rb[q - 1], b) >= 0))
-                    break;
+                int ct = rast__fast_cmpn(x0, ed, na[q - 1], b);
+                if (ct > 0 || (ct == 0 && rast__fast_cmpn(x1, ed, nb[q - 1], b) >= 0)) break;
                 id[q] = id[q - 1];
-                xa[q] = xa[q - 1];
-                ra[q] = ra[q - 1];
-                xb[q] = xb[q - 1];
-                rb[q] = rb[q - 1];
+                na[q] = na[q - 1];
+                nb[q] = nb[q - 1];
                 q--;
             }
             id[q] = g[k];
-            xa[q] = x0;
-            ra[q] = r0;
-            xb[q] = x1;
-            rb[q] = r1;
+            na[q] = x0;
+            nb[q] = x1;
             n++;
         }
         for (k = 0; k < n; k++) {
             if (k + 1 < n) {
                 const rast__cedge *a = &e[id[k]], *b = &e[id[k + 1]];
-                int ct = rast__fast_cmpx(xa[k], ra[k], a, xa[k + 1], ra[k + 1], b);
-                int cb = rast__fast_cmpx(xb[k], rb[k], a, xb[k + 1], rb[k + 1], b);
+                int ct = rast__fast_cmpn(na[k], a, na[k + 1], b);
+                int cb = rast__fast_cmpn(nb[k], a, nb[k + 1], b);
                 if (ct > 0 || cb > 0 || (ct == 0 && cb == 0)) return 0;
             }
             w[i] += e[id[k]].dir;

@@ -109,6 +109,7 @@ typedef struct rast__cedge {
     int64_t cX;
     uint32_t crem;
     rast__i128 xT; /* the edge's line at the bottom of the row (xT + rT/dy) */
+    rast__i128 lo, hi; /* a fast row's range of the edge's part (coverage_area.c) */
     int64_t rT;
     int32_t sg;    /* the sign of its current piece (+1 enters, -1 leaves the inside, 0 neither) */
     uint64_t ctime; /* its crossing time with edge cn in row crow (a cache) */

@@ -149,15 +149,17 @@ static inline void rast__cells_add(rast__cells *c, int32_t col, uint64_t f0, uin
     uint64_t dy = t1 - t0;
     rast__i128 cv, ar;
     if (dy == 0 || col >= c->x1) return;
-    cv = rast__i128_u64(dy);
-    if (s < 0) cv = rast__i128_neg(cv);
+    cv = rast__i128_from(s < 0 ? -(int64_t)dy : (int64_t)dy); /* dy <= 2^60 */
     if (col < c->x0) {
         c->carry = rast__i128_add(c->carry, cv);
         return;
     }
-    ar = rast__i128_mul((int64_t)(f0 + f1), (int64_t)dy);
-    if (c->accumulate) ar = rast__i128_sar(ar, 59);
-    if (s < 0) ar = rast__i128_neg(ar);
+    if (c->accumulate) { /* rounded down, then signed */
+        ar = rast__i128_sar(rast__i128_mul((int64_t)(f0 + f1), (int64_t)dy), 59);
+        if (s < 0) ar = rast__i128_neg(ar);
+    } else { /* f0 + f1 <= 2^61 */
+        ar = rast__i128_mul(s < 0 ? -(int64_t)(f0 + f1) : (int64_t)(f0 + f1), (int64_t)dy);
+    }
     col -= c->x0;
     c->cover[col] = rast__i128_add(c->cover[col], cv);
     c->area[col] = rast__i128_add(c->area[col], ar);
@@ -168,12 +170,14 @@ static inline void rast__cells_add(rast__cells *c, int32_t col, uint64_t f0, uin
 
 /* The piece of edge e from (xa, ta) to (xb, tb) (V, U; ta < tb), sign s,
  * split at the pixel columns it crosses. */
-static void rast__cells_piece(rast__cells *c, rast__cedge *e, int64_t Yj, rast__i128 xa,
+static inline void rast__cells_piece(rast__cells *c, rast__cedge *e, int64_t Yj, rast__i128 xa,
                               uint64_t ta, rast__i128 xb, uint64_t tb, int32_t s)
 {
     const uint64_t fmask = T - 1;
-    rast__i128 ca128 = rast__i128_sar(xa, G), cb128 = rast__i128_sar(xb, G);
-    int64_t ca = (int64_t)ca128.lo, cb = (int64_t)cb128.lo; /* |column| < 2^28 */
+    /* the columns floor(x / 2^G): |column| < 2^28, so the low word of the
+     * shifted value, read as two's complement, is it */
+    int64_t ca = (int64_t)((xa.hi << (64 - G)) | (xa.lo >> G));
+    int64_t cb = (int64_t)((xb.hi << (64 - G)) | (xb.lo >> G));
     uint64_t fa = xa.lo & fmask, fb = xb.lo & fmask, t = ta;
     int64_t col;
     rast__tstep st;
@@ -243,12 +247,17 @@ static void rast__cells_piece(rast__cells *c, rast__cedge *e, int64_t Yj, rast__
 
 /* a 2^62 from the running cover and a cell's area (see rast__cells),
  * the rule applied when accumulating, clamped to [0, 2^62]. */
-static uint64_t rast__cells_a62(const rast__cells *c, rast__i128 acc, rast__i128 area,
-                                rast_fill_rule rule)
+static inline uint64_t rast__cells_a62(const rast__cells *c, rast__i128 acc, rast__i128 area,
+                                       rast_fill_rule rule)
 {
     const rast__i128 one = rast__i128_u64((uint64_t)1 << 62);
     rast__i128 v;
-    if (c->accumulate) { /* a 2^62 = 4 cover - area / 2^59 */
+    if (!c->accumulate) { /* a 2^121 = 2^61 cover - area, then down to 2^62 */
+        v = rast__i128_sar(rast__i128_sub(rast__i128_shl(acc, 61), area), 59);
+        if (rast__i128_neg_p(v)) return 0;
+        if (v.hi || v.lo > ((uint64_t)1 << 62)) return (uint64_t)1 << 62;
+        return v.lo;
+    } else { /* a 2^62 = 4 cover - area / 2^59 */
         v = rast__i128_sub(rast__i128_shl(acc, 2), area);
         /* |w| integrated, then the rule */
         if (rast__i128_neg_p(v)) v = rast__i128_neg(v);
@@ -258,8 +267,6 @@ static uint64_t rast__cells_a62(const rast__cells *c, rast__i128 acc, rast__i128
             uint64_t m = v.lo & (((uint64_t)1 << 63) - 1); /* mod 2 */
             v = rast__i128_u64(m > ((uint64_t)1 << 62) ? ((uint64_t)1 << 63) - m : m);
         }
-    } else { /* a 2^121 = 2^61 cover - area, then down to 2^62 */
-        v = rast__i128_sar(rast__i128_sub(rast__i128_shl(acc, 61), area), 59);
     }
     if (rast__i128_neg_p(v)) return 0;
     if (rast__i128_cmp(v, one) > 0) return (uint64_t)1 << 62;
@@ -687,15 +694,13 @@ static void rast__cov_row_area(rast__cells *c, rast__cedge *e, int32_t *row, int
  * crossings, several vertices close together, horizontal edges inside the
  * strip) the row is swept. */
 
-/* The range [lo, hi) of e's part (e->x at its top, e->xn at its bottom). */
-static rast__i128 rast__fast_lo(const rast__cedge *e)
+/* The range [lo, hi) of e's part (e->x at its top, e->xn at its bottom),
+ * into e->lo, e->hi. */
+static void rast__fast_range(rast__cedge *e)
 {
-    return rast__i128_cmp(e->x, e->xn) <= 0 ? e->x : e->xn;
-}
-
-static rast__i128 rast__fast_hi(const rast__cedge *e)
-{
-    return rast__i128_add(rast__i128_cmp(e->x, e->xn) >= 0 ? e->x : e->xn, rast__i128_u64(1));
+    int c = rast__i128_cmp(e->x, e->xn);
+    e->lo = c <= 0 ? e->x : e->xn;
+    e->hi = rast__i128_add(c >= 0 ? e->x : e->xn, rast__i128_u64(1));
 }
 
 /* The exact abscissae x + r/dy of a and b: -1, 0, 1 as a's is smaller,
@@ -858,8 +863,9 @@ static int rast__cov_row_fast(rast__cells *c, rast__cedge *e, int32_t *row, int3
             u[y] = cut[z];
             nu++;
         }
-        lo = rast__fast_lo(ed);
-        while (q > 0 && rast__i128_cmp(lo, rast__fast_lo(&e[row[q - 1]])) < 0) {
+        rast__fast_range(ed);
+        lo = ed->lo;
+        while (q > 0 && rast__i128_cmp(lo, e[row[q - 1]].lo) < 0) {
             row[q] = row[q - 1];
             q--;
         }
@@ -868,12 +874,12 @@ static int rast__cov_row_fast(rast__cells *c, rast__cedge *e, int32_t *row, int3
     u[nu++] = T;
     for (i = 0; i + 1 < nu; i++) w[i] = 0;
     for (k = 0; k < nrow; k = g) { /* the groups, left to right */
-        rast__i128 hi = rast__fast_hi(&e[row[k]]);
+        rast__i128 hi = e[row[k]].hi;
         int32_t full = 1, m;
         for (g = k; g < nrow; g++) {
             const rast__cedge *ed = &e[row[g]];
-            if (g > k && rast__i128_cmp(rast__fast_lo(ed), hi) >= 0) break;
-            if (rast__i128_cmp(rast__fast_hi(ed), hi) > 0) hi = rast__fast_hi(ed);
+            if (g > k && rast__i128_cmp(ed->lo, hi) >= 0) break;
+            if (rast__i128_cmp(ed->hi, hi) > 0) hi = ed->hi;
             if (ed->yt > Yj || (int64_t)ed->yt + ed->dy < Yj + c->p) full = 0;
         }
         m = g - k;

@@ -465,6 +465,60 @@ static void rast__cov_sort_tops(int32_t *ix, const rast__cedge *e, uint32_t n)
     }
 }
 
+/* a before b by (xt, dx, dy): the order in which coincident edges of
+ * one top are neighbours. */
+static int rast__cov_key_before(const rast__cedge *a, const rast__cedge *b)
+{
+    if (a->xt != b->xt) return a->xt < b->xt;
+    if (a->dx != b->dx) return a->dx < b->dx;
+    return a->dy < b->dy;
+}
+
+/* Coincident edges of opposite directions (a mesh's inner edges, two rings
+ * sharing a side) change no winding number on either side, and their cells
+ * would cancel exactly (the same pieces, signs opposite): both go, and the
+ * rows they were in may be fast rows.  order[0..n) is sorted by top; each
+ * run of one top is sorted by (xt, dx, dy) (Shell sort, in place), so that
+ * coincident edges are neighbours; in each block of them as many pairs go
+ * as there are edges of the rarer direction.  The rest, in order, are
+ * counted back. */
+static uint32_t rast__cov_cancel(int32_t *order, const rast__cedge *e, uint32_t n)
+{
+    uint32_t a = 0, b, p, q, gap, out = 0;
+    while (a < n) {
+        for (b = a + 1; b < n && e[order[b]].yt == e[order[a]].yt; b++) {
+        }
+        for (gap = (b - a) / 2; gap > 0; gap = gap == 2 ? 1 : gap * 5 / 11) {
+            for (p = a + gap; p < b; p++) {
+                int32_t v = order[p];
+                for (q = p; q >= a + gap && rast__cov_key_before(&e[v], &e[order[q - gap]]); q -= gap)
+                    order[q] = order[q - gap];
+                order[q] = v;
+            }
+        }
+        for (p = a; p < b;) { /* a block of coincident edges: [p, q) */
+            const rast__cedge *x = &e[order[p]];
+            int32_t bal = 0, kept;
+            for (q = p; q < b && e[order[q]].xt == x->xt && e[order[q]].dx == x->dx &&
+                        e[order[q]].dy == x->dy;
+                 q++)
+                bal += e[order[q]].dir;
+            /* keep |bal| edges of the commoner direction */
+            for (kept = 0; p < q; p++) {
+                int32_t d = e[order[p]].dir;
+                if ((bal > 0 && d > 0) || (bal < 0 && d < 0)) {
+                    if (kept < (bal > 0 ? bal : -bal)) {
+                        order[out++] = order[p];
+                        kept++;
+                    }
+                }
+            }
+        }
+        a = b;
+    }
+    return out;
+}
+
 /* The sweep's arrays, by position in the row's order: the edges (live),
  * the winding number left of each (wb), and the crossing time of each
  * position with the next (ct; NONE: not before the next vertex), kept in
@@ -937,7 +991,7 @@ rast_status rast__cov_area(rast__cedge *e, uint32_t n, int32_t s, rast_fill_rule
     rast__cells c;
     rast__sweep sw;
     int32_t *order, *row, nrow = 0, j, ja, jb, k, width = o->clip.x1 - o->clip.x0;
-    uint32_t i, next = 0;
+    uint32_t i, next = 0, nlive;
     int64_t ymin, ymax;
 
     order = (int32_t *)rast__take(arena, (size_t)n * sizeof(int32_t));
@@ -977,6 +1031,7 @@ rast_status rast__cov_area(rast__cedge *e, uint32_t n, int32_t s, rast_fill_rule
         if ((int64_t)e[i].yt + e[i].dy > ymax) ymax = (int64_t)e[i].yt + e[i].dy;
     }
     rast__cov_sort_tops(order, e, n);
+    nlive = rast__cov_cancel(order, e, n);
     /* Rows whose strip the edges reach: floor(ymin / P) .. ceil(ymax / P). */
     ymin = rast__floordiv(ymin, c.p);
     ymax = rast__ceildiv(ymax, c.p);
@@ -991,7 +1046,7 @@ rast_status rast__cov_area(rast__cedge *e, uint32_t n, int32_t s, rast_fill_rule
         for (k = 0, m = 0; k < nrow; k++)
             if ((int64_t)e[row[k]].yt + e[row[k]].dy > Yj) row[m++] = row[k];
         nrow = m;
-        while (next < n && e[order[next]].yt < Yj + c.p) {
+        while (next < nlive && e[order[next]].yt < Yj + c.p) {
             if ((int64_t)e[order[next]].yt + e[order[next]].dy > Yj) row[nrow++] = order[next];
             next++;
         }

@@ -881,8 +881,25 @@ static int rast__fast_mixed(const rast__cedge *e, const int32_t *g, int32_t m, c
     return 1;
 }
 
-/* The row's edges, as a fast row if it is one (else 0, nothing added; the
- * edges' caches stay valid for the sweep, row[] reordered). */
+/* A fast row's parts, whole, each with the sign dir * s. */
+static void rast__fast_add(rast__cells *c, rast__cedge *e, const int32_t *row, int32_t nrow,
+                           int32_t j, int32_t s)
+{
+    const int64_t Yj = (int64_t)j * c->p;
+    int32_t k;
+    for (k = 0; k < nrow; k++) {
+        rast__cedge *ed = &e[row[k]];
+        int64_t rel1 = (int64_t)ed->yt + ed->dy - Yj;
+        uint64_t t1 = rel1 >= c->p ? T : (uint64_t)rel1 << c->h;
+        rast__cells_piece(c, ed, Yj, ed->x, ed->tx, ed->xn, t1, ed->dir * s);
+        rast__cov_x_keep(ed, j, t1);
+    }
+}
+
+/* The row's edges, as a fast row if it is one: its s (+1 or -1), its parts
+ * added, row[] left to right (groups in order, each by its top then its
+ * bottom abscissae); else 0, nothing added, the edges' caches valid for the
+ * sweep, row[] reordered. */
 static int rast__cov_row_fast(rast__cells *c, rast__cedge *e, int32_t *row, int32_t nrow,
                               int32_t j)
 {
@@ -957,13 +974,39 @@ static int rast__cov_row_fast(rast__cells *c, rast__cedge *e, int32_t *row, int3
     for (i = 0; i + 1 < nu; i++)
         if (w[i] != 0) return 0;
     if (s == 0) return 0;
-    for (k = 0; k < nrow; k++) { /* the parts, whole */
+    rast__fast_add(c, e, row, nrow, j, s);
+    return s;
+}
+
+/* The row after a fast row, with the same edges, none of them starting or
+ * ending inside it: its order at the top is the last row's at the bottom
+ * (non-decreasing, row[] as the last row left it), so the windings between
+ * neighbours are the last row's, all 0 or s, as long as the order holds to
+ * the bottom.  Fast (1, its parts added) if every edge spans the row and
+ * each is strictly right of its left neighbour at the top and not left of
+ * it at the bottom (exact); else 0, nothing added, the caches valid. */
+static int rast__cov_row_cont(rast__cells *c, rast__cedge *e, const int32_t *row, int32_t nrow,
+                              int32_t j, int32_t s)
+{
+    const int64_t Yj = (int64_t)j * c->p;
+    int32_t k;
+    for (k = 0; k < nrow; k++) {
         rast__cedge *ed = &e[row[k]];
-        int64_t rel1 = (int64_t)ed->yt + ed->dy - Yj;
-        uint64_t t1 = rel1 >= c->p ? T : (uint64_t)rel1 << c->h;
-        rast__cells_piece(c, ed, Yj, ed->x, ed->tx, ed->xn, t1, ed->dir * s);
-        rast__cov_x_keep(ed, j, t1);
+        if (ed->yt > Yj || (int64_t)ed->yt + ed->dy < Yj + c->p) return 0;
+        if (ed->rowx != j || ed->tx != 0) {
+            rast__cov_x_at(ed, Yj, 0, c->h, &ed->x, &ed->r);
+            ed->rowx = j;
+            ed->tx = 0;
+        }
+        rast__cov_x_end(ed, Yj, 0, T, c->h);
+        if (k > 0) {
+            const rast__cedge *a = &e[row[k - 1]];
+            if (rast__fast_cmpx(a->x, a->r, a, ed->x, ed->r, ed) >= 0 ||
+                rast__fast_cmpx(a->xn, a->rn, a, ed->xn, ed->rn, ed) > 0)
+                return 0;
+        }
     }
+    rast__fast_add(c, e, row, nrow, j, s);
     return 1;
 }
 
@@ -992,6 +1035,7 @@ rast_status rast__cov_area(rast__cedge *e, uint32_t n, int32_t s, rast_fill_rule
     rast__sweep sw;
     int32_t *order, *row, nrow = 0, j, ja, jb, k, width = o->clip.x1 - o->clip.x0;
     uint32_t i, next = 0, nlive;
+    int32_t fast = 0, same; /* the last row's s if it was a fast row; its edges kept */
     int64_t ymin, ymax;
 
     order = (int32_t *)rast__take(arena, (size_t)n * sizeof(int32_t));
@@ -1045,16 +1089,24 @@ rast_status rast__cov_area(rast__cedge *e, uint32_t n, int32_t s, rast_fill_rule
          * above its bottom. */
         for (k = 0, m = 0; k < nrow; k++)
             if ((int64_t)e[row[k]].yt + e[row[k]].dy > Yj) row[m++] = row[k];
+        same = m == nrow;
         nrow = m;
         while (next < nlive && e[order[next]].yt < Yj + c.p) {
-            if ((int64_t)e[order[next]].yt + e[order[next]].dy > Yj) row[nrow++] = order[next];
+            if ((int64_t)e[order[next]].yt + e[order[next]].dy > Yj) {
+                row[nrow++] = order[next];
+                same = 0;
+            }
             next++;
         }
         if (nrow) {
-            if (accumulate)
+            if (accumulate) {
                 rast__cov_row_acc(&c, e, row, nrow, j);
-            else if (!rast__cov_row_fast(&c, e, row, nrow, j))
-                rast__cov_row_area(&c, e, row, nrow, &sw, j, rule);
+            } else if (!(fast && same && rast__cov_row_cont(&c, e, row, nrow, j, fast))) {
+                fast = rast__cov_row_fast(&c, e, row, nrow, j);
+                if (!fast) rast__cov_row_area(&c, e, row, nrow, &sw, j, rule);
+            }
+        } else {
+            fast = 0;
         }
         rast__cells_emit(&c, o, j, rule);
     }

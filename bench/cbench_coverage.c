@@ -15,24 +15,12 @@
 #include <string.h>
 #include <time.h>
 
+#include "cbench_time.h"
 #include "rastrum.h"
 
 #define SIZE 512
 #define PI 3.14159265358979323846
 #define MAXP 40000
-
-static double now(void)
-{
-    struct timespec t;
-    clock_gettime(CLOCK_MONOTONIC, &t);
-    return (double)t.tv_sec + (double)t.tv_nsec * 1e-9;
-}
-
-static int cmp(const void *a, const void *b)
-{
-    double x = *(const double *)a, y = *(const double *)b;
-    return (x > y) - (x < y);
-}
 
 static rast_point pts[MAXP];
 static uint32_t sizes[MAXP];
@@ -188,14 +176,15 @@ static rast_status draw(uint32_t npoints, uint32_t nrings, int tris, rast_aa_met
 
 int main(int argc, char **argv)
 {
-    static const char *const all[] = {"circle", "star", "holes", "twice", "mesh", "tris1000"};
+    /* the scenes run by default; trisN and files only when named */
+    static const char *const all[] = {"circle", "star", "holes", "twice", "mesh", "named"};
     static const char *const mname[] = {"area", "accumulate"};
     static const rast_aa_method meth[] = {RAST_AA_AREA, RAST_AA_ACCUMULATE};
     int reps = argc > 1 ? atoi(argv[1]) : 15, s, mi;
     for (s = 0; s < 6; s++) {
         uint32_t nrings = 1, n;
         int tris;
-        if (argc > 2 && strcmp(argv[2], all[s]) && s + 1 < 6) continue;
+        if (argc > 2 ? strcmp(argv[2], all[s]) && s + 1 < 6 : s + 1 == 6) continue;
         n = scene(argc > 2 ? argv[2] : all[s], &nrings, &tris);
         for (mi = 0; mi < 2; mi++) {
             double t[64];

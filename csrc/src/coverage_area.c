@@ -26,6 +26,7 @@
  * Right where no parts of the region overlap.
  */
 #include "coverage.h"
+#include "poly.h" /* rast__ctz64 */
 
 #define G RAST__COV_G
 #define T ((uint64_t)1 << G)
@@ -285,21 +286,6 @@ static void rast__cov_fill(rast_coverage_format f, unsigned char *row, int32_t k
         for (k = k0; k < k1; k++) rast__cov_store(f, row, k, v);
 }
 
-/* The lowest set bit's index (b != 0). */
-static int32_t rast__ctz64(uint64_t b)
-{
-#if defined(__GNUC__) || defined(__clang__)
-    return (int32_t)__builtin_ctzll(b);
-#else
-    int32_t n = 0;
-    while (!(b & 1)) {
-        b >>= 1;
-        n++;
-    }
-    return n;
-#endif
-}
-
 /* Row y's values from the cells, which are then cleared.  Only the cells
  * touched (their bits, in column order) add something; between them (inside
  * a span, or outside the shape) the value is the running cover's: one
@@ -316,7 +302,7 @@ static void rast__cells_emit(rast__cells *c, const rast__cov_out *o, int32_t y, 
         uint64_t b = c->bits[wi];
         c->bits[wi] = 0;
         while (b) {
-            int32_t col = (wi << 6) + rast__ctz64(b);
+            int32_t col = (wi << 6) + (int32_t)rast__ctz64(b);
             b &= b - 1;
             if (col > k)
                 rast__cov_fill(f, row, k, col, rast__cov_level(f, rast__cells_a62(c, acc, zero, rule)));

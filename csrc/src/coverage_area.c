@@ -20,6 +20,13 @@
  * the edges, the crossings' positions before rounding, the sums, which
  * are 128-bit and modular: the true per-pixel result is small).
  *
+ * Most rows need no sweep: where the winding number only takes 0 and one
+ * sign of 1 in the strip ("fast rows", below: the test is exact), every
+ * edge bounds the inside all the way through the row, and its part is
+ * added whole, as the sweep would add it with no event inside the row.
+ * Before any row, coincident edges of opposite directions cancel
+ * (rast__cov_cancel).
+ *
  * Accumulate.  The same cells, but every edge adds its whole part in the
  * row with the sign of its direction: the sum is the integral of the
  * winding number over the pixel, turned into a coverage by the rule.

@@ -83,6 +83,7 @@ $(CURDIR)/.venv/bin/python:
 	$(CURDIR)/.venv/bin/python -m pip install --quiet --disable-pip-version-check --upgrade pip setuptools wheel cffi
 
 C_TESTS := $(patsubst tests/c/%.c,build/tests/%,$(wildcard tests/c/test_*.c))
+comma   := ,
 SAN     := -fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer -g
 
 .PHONY: race-check fuzz-long bench docs bench-precision cbench-coverage bench-precision-callgrind single test-single display-qemu fuzz-check fuzz-regress display-example valgrind valgrind-py firmware-check cross-check all lib test test-c test-install test-py demo asan asan-c asan-py strict install uninstall example clean
@@ -168,11 +169,18 @@ docs: | $(VENV)
 # ---- sanitizers --------------------------------------------------------------
 asan: asan-c asan-py
 
+# core_lib DIR, COMPILER AND FLAGS: the core compiled once into DIR/librastrum.a
+# for the test programs of one instrumented run to link (compiling it again
+# for each of them was most of those runs' time).
+core_lib = rm -rf $(1) && mkdir -p $(1)/obj && \
+  for f in $(SRC); do $(2) -Icsrc/include -Icsrc/src -c $$f -o $(1)/obj/$$(basename $$f .c).o || exit 1; done && \
+  ar rcs $(1)/librastrum.a $(1)/obj/*.o
+
 asan-c:
-	@mkdir -p build/asan
+	@$(call core_lib,build/asan/core,$(CC) $(WARN) -Wno-conversion -O1 $(SAN))
 	@for t in $(wildcard tests/c/test_*.c); do \
 	  n=build/asan/$$(basename $$t .c); \
-	  $(CC) $(WARN) -Wno-conversion -O1 $(SAN) -Icsrc/include -Icsrc/src -Itests/c $$t $(SRC) -o $$n || exit 1; \
+	  $(CC) $(WARN) -Wno-conversion -O1 $(SAN) -Icsrc/include -Icsrc/src -Itests/c $$t build/asan/core/librastrum.a -o $$n || exit 1; \
 	  echo "== $$n (asan+ubsan)"; ./$$n || exit 1; \
 	done
 
@@ -296,18 +304,20 @@ FUZZ_CC ?= clang
 FUZZ_INC := -Icsrc/include -Icsrc/src -Itests/c
 
 fuzz-regress:
-	@mkdir -p build/fuzz-regress
+	@$(call core_lib,build/fuzz-regress/core,$(CC) -std=c99 -Wall -Wextra -Werror -O1 $(SAN))
 	@for t in $(FUZZ_TARGETS); do \
-	  $(CC) -std=c99 -Wall -Wextra -Werror -O1 $(SAN) $(FUZZ_INC) tests/fuzz/$$t.c tests/fuzz/driver.c $(SRC) \
-	    -o build/fuzz-regress/$$t || exit 1; \
+	  $(CC) -std=c99 -Wall -Wextra -Werror -O1 $(SAN) $(FUZZ_INC) tests/fuzz/$$t.c tests/fuzz/driver.c \
+	    build/fuzz-regress/core/librastrum.a -o build/fuzz-regress/$$t || exit 1; \
 	  ./build/fuzz-regress/$$t tests/fuzz/corpus/$$t || exit 1; \
 	done
 
 fuzz-check:
 	@mkdir -p build/fuzz
+	@$(call core_lib,build/fuzz/core,$(FUZZ_CC) -std=c99 -Wall -Wextra -Werror -g -O1 \
+	  -fsanitize=fuzzer-no-link$(comma)address$(comma)undefined -fno-sanitize-recover=all)
 	@for t in $(FUZZ_TARGETS); do \
 	  $(FUZZ_CC) -std=c99 -Wall -Wextra -Werror -g -O1 -fsanitize=fuzzer,address,undefined -fno-sanitize-recover=all \
-	    $(FUZZ_INC) tests/fuzz/$$t.c $(SRC) -o build/fuzz/$$t || exit 1; \
+	    $(FUZZ_INC) tests/fuzz/$$t.c build/fuzz/core/librastrum.a -o build/fuzz/$$t || exit 1; \
 	  rm -rf build/fuzz/new_$$t; mkdir -p build/fuzz/new_$$t; \
 	  if ./build/fuzz/$$t -max_total_time=$(FUZZ_SECONDS) -timeout=20 -print_final_stats=1 \
 	       -artifact_prefix=build/fuzz/$$t- build/fuzz/new_$$t tests/fuzz/corpus/$$t \

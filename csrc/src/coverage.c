@@ -232,9 +232,9 @@ static rast_status rast__cov_run(const rast_polygon *poly, const rast_point *tri
         if (tris) {
             uint32_t k, m = 0;
             for (k = 0; k < ntris; k++)
-                if (rast__cov_tri(&tris[3 * k], &q[3 * m])) sizes[m++] = 3;
+                if (rast__cov_tri(&tris[3 * k], &q[3 * m])) m++;
             rast__cov_scale(q, 3 * m, scale, q);
-            fine.nrings = m;
+            return rast__cov_ss_tris(q, m, s < kb ? 0 : s - kb, kb, opts->sample, o, &arena);
         } else {
             rast__cov_scale(poly->points, npoints, scale, q);
             fine.nrings = poly->nrings;
@@ -260,25 +260,47 @@ static rast_status rast__cov_count(const rast_polygon *polygon, uint32_t *npoint
     return RAST_OK;
 }
 
+/* What every entry point does once its geometry is counted: options,
+ * output and scratch checked (rast__cov_begin), the vertices checked,
+ * then the method run.  `span` not NULL: the values go to it, row by row,
+ * through a row buffer at the scratch's start (rast__cov_run skips it). */
+static rast_status rast__cov_entry(const rast_polygon *poly, const rast_point *tris,
+                                   uint32_t ntris, uint32_t n, const rast_coverage_opts *opts,
+                                   const rast_rect *clip, rast_coverage_format format, void *out,
+                                   ptrdiff_t stride, rast_coverage_span_fn span, void *user,
+                                   void *scratch, size_t scratch_bytes)
+{
+    static const rast_point none[3] = {{0, 0}, {0, 0}, {0, 0}};
+    rast__cov_out o;
+    int32_t kb;
+    rast_status st = rast__cov_begin(opts, clip, span ? RAST_COVERAGE_U8 : format, out, stride, n,
+                                     scratch, scratch_bytes, &o, span != NULL);
+    if (st != RAST_OK) return st;
+    kb = rast__aa_kbits(opts->method);
+    st = rast__cov_check_points(poly ? poly->points : tris, n,
+                                kb > opts->subpixel_bits ? kb - opts->subpixel_bits : 0);
+    if (st != RAST_OK) return st;
+    if (span) {
+        o.base = (unsigned char *)scratch;
+        o.stride = 0;
+        o.span = span;
+        o.user = user;
+    }
+    if (!poly && !ntris) tris = none;
+    return rast__cov_run(poly, tris, ntris, n, opts, &o, scratch, scratch_bytes);
+}
+
 rast_status rast_polygon_coverage(const rast_polygon *polygon, const rast_coverage_opts *opts,
                                   const rast_rect *clip, rast_coverage_format format, void *out,
                                   ptrdiff_t stride, void *scratch, size_t scratch_bytes)
 {
-    rast__cov_out o;
     uint32_t n = 0;
     rast_status st;
     if (!polygon) return RAST_E_NULL;
     st = rast__cov_count(polygon, &n);
     if (st != RAST_OK) return st;
-    st = rast__cov_begin(opts, clip, format, out, stride, n, scratch, scratch_bytes, &o, 0);
-    if (st != RAST_OK) return st;
-    {
-        int32_t kb = rast__aa_kbits(opts->method);
-        st = rast__cov_check_points(polygon->points, n,
-                                    kb > opts->subpixel_bits ? kb - opts->subpixel_bits : 0);
-    }
-    if (st != RAST_OK) return st;
-    return rast__cov_run(polygon, NULL, 0, n, opts, &o, scratch, scratch_bytes);
+    return rast__cov_entry(polygon, NULL, 0, n, opts, clip, format, out, stride, NULL, NULL,
+                           scratch, scratch_bytes);
 }
 
 rast_status rast_triangles_coverage(const rast_point *tris, uint32_t ntris,
@@ -286,21 +308,10 @@ rast_status rast_triangles_coverage(const rast_point *tris, uint32_t ntris,
                                     rast_coverage_format format, void *out, ptrdiff_t stride,
                                     void *scratch, size_t scratch_bytes)
 {
-    static const rast_point none[3] = {{0, 0}, {0, 0}, {0, 0}};
-    rast__cov_out o;
-    rast_status st;
     if (ntris > RAST_MAX_POINTS / 3) return RAST_E_TOO_MANY;
     if (ntris > 0 && !tris) return RAST_E_NULL;
-    st = rast__cov_begin(opts, clip, format, out, stride, 3 * ntris, scratch, scratch_bytes, &o, 0);
-    if (st != RAST_OK) return st;
-    {
-        int32_t kb = rast__aa_kbits(opts->method);
-        st = rast__cov_check_points(tris, 3 * ntris,
-                                    kb > opts->subpixel_bits ? kb - opts->subpixel_bits : 0);
-    }
-    if (st != RAST_OK) return st;
-    return rast__cov_run(NULL, ntris ? tris : none, ntris, 3 * ntris, opts, &o, scratch,
-                         scratch_bytes);
+    return rast__cov_entry(NULL, tris, ntris, 3 * ntris, opts, clip, format, out, stride, NULL,
+                           NULL, scratch, scratch_bytes);
 }
 
 rast_status rast_polygon_coverage_spans(const rast_polygon *polygon,
@@ -308,26 +319,23 @@ rast_status rast_polygon_coverage_spans(const rast_polygon *polygon,
                                         rast_coverage_span_fn span, void *user, void *scratch,
                                         size_t scratch_bytes)
 {
-    rast__cov_out o;
     rast_status st;
     uint32_t n = 0;
     if (!polygon || !span || !clip) return RAST_E_NULL;
     st = rast__cov_count(polygon, &n);
     if (st != RAST_OK) return st;
-    /* the row buffer at the scratch's start (rast__cov_run skips it) */
-    st = rast__cov_begin(opts, clip, RAST_COVERAGE_U8, NULL, 0, n, scratch,
-                         scratch_bytes, &o, 1);
-    if (st != RAST_OK) return st;
-    {
-        int32_t kb = rast__aa_kbits(opts->method);
-        st = rast__cov_check_points(polygon->points, n,
-                                    kb > opts->subpixel_bits ? kb - opts->subpixel_bits : 0);
-    }
-    if (st != RAST_OK) return st;
-    o.base = (unsigned char *)scratch;
-    o.stride = 0;
-    o.format = RAST_COVERAGE_U8;
-    o.span = span;
-    o.user = user;
-    return rast__cov_run(polygon, NULL, 0, n, opts, &o, scratch, scratch_bytes);
+    return rast__cov_entry(polygon, NULL, 0, n, opts, clip, RAST_COVERAGE_U8, NULL, 0, span, user,
+                           scratch, scratch_bytes);
+}
+
+rast_status rast_triangles_coverage_spans(const rast_point *tris, uint32_t ntris,
+                                          const rast_coverage_opts *opts, const rast_rect *clip,
+                                          rast_coverage_span_fn span, void *user, void *scratch,
+                                          size_t scratch_bytes)
+{
+    if (!span || !clip) return RAST_E_NULL;
+    if (ntris > RAST_MAX_POINTS / 3) return RAST_E_TOO_MANY;
+    if (ntris > 0 && !tris) return RAST_E_NULL;
+    return rast__cov_entry(NULL, tris, ntris, 3 * ntris, opts, clip, RAST_COVERAGE_U8, NULL, 0,
+                           span, user, scratch, scratch_bytes);
 }

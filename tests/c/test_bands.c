@@ -383,6 +383,10 @@ static void test_demo_scenes(void)
                         sc.tri[i].boundary = (rast_boundary)boundary;
                     }
                     for (k = 0; k < NK; k++) {
+                        /* the quick run (valgrind, qemu): one band height
+                         * of the first four in turn, and the whole clip */
+                        if (check_count(5) < 5 && k != NK - 1 && k != (which + s + algo + rule) % (NK - 1))
+                            continue;
                         compare(&sc, RAST_FORMAT_RGB888, &whole, band_heights[k], SCRATCH_BYTES);
                         compare(&sc, RAST_FORMAT_COUNT16, &window, band_heights[k], SCRATCH_BYTES);
                     }

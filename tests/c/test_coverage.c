@@ -11,8 +11,9 @@
  *  - area: translation by whole pixels translates the values exactly;
  *  - errors: every status, nothing written, scratch exact and its guard
  *    bytes intact;
- *  - rast_polygon_coverage_spans: the same values as the image, in ordered
- *    runs of values not 0 inside the clip.
+ *  - rast_polygon_coverage_spans and rast_triangles_coverage_spans, every
+ *    method: the same values as the image, in ordered runs of values not 0
+ *    inside the clip.
  */
 #include <stdint.h>
 #include <string.h>
@@ -177,6 +178,176 @@ static void test_ss(void)
             }
     }
 }
+
+/* Random ssK options for k = 2^kb and S = s (either rule and sample
+ * offset) in *o, and in *fo the reference's: "xscan" on the vertices
+ * scaled by k, read with S' = max(S - kb, 0) bits. */
+static void ss_opts(int32_t kb, int32_t s, rast_coverage_opts *o, rast_fill_opts *fo)
+{
+    memset(o, 0, sizeof *o);
+    o->method = (rast_aa_method)(RAST_AA_SS2 + kb - 1);
+    o->rule = (rast_fill_rule)(rng() % 2);
+    o->subpixel_bits = s;
+    o->sample = (rast_sample)(rng() % 2);
+    memset(fo, 0, sizeof *fo);
+    fo->algorithm = RAST_ALGO_XSCAN;
+    fo->rule = o->rule;
+    fo->subpixel_bits = s >= kb ? s - kb : 0;
+    fo->sample = o->sample;
+}
+
+/* Each value of an ssK image `out` (w x h clip pixels, rows of `ow`
+ * uint64_t words, format f) against the sub-samples counted in `fine` (the
+ * clip k = 2^kb times finer, rows of `fs` bytes of uint16_t counts, or of
+ * uint8_t 0/1 when `bytes`). */
+static void check_ss_image(const uint64_t *out, int32_t ow, int32_t w, int32_t h,
+                           rast_coverage_format f, int32_t kb, const void *fine, size_t fs,
+                           int bytes)
+{
+    const int32_t K = 1 << kb;
+    int32_t i, j, u, v;
+    for (j = 0; j < h; j++) {
+        const unsigned char *row = (const unsigned char *)(out + (ptrdiff_t)j * ow);
+        for (i = 0; i < w; i++) {
+            uint64_t c = 0, got;
+            for (v = 0; v < K; v++)
+                for (u = 0; u < K; u++) {
+                    const unsigned char *fr = (const unsigned char *)fine + (size_t)(j * K + v) * fs;
+                    c += bytes ? fr[i * K + u] : ((const uint16_t *)(const void *)fr)[i * K + u];
+                }
+            got = f == RAST_COVERAGE_U8    ? row[i]
+                  : f == RAST_COVERAGE_U16 ? ((const uint16_t *)(const void *)row)[i]
+                                           : out[(ptrdiff_t)j * ow + i];
+            CHECK(got == (f == RAST_COVERAGE_FIX62
+                              ? c << (62 - 2 * kb)
+                              : level(c, (uint64_t)K * K, f == RAST_COVERAGE_U8 ? 255 : 65535)));
+        }
+    }
+}
+
+/* The same on a clip wider than 64 columns (the flush walks a bit per
+ * column, 64 to a word) and away from the origin, in every format: the
+ * runs between marked columns, their ends at the clip's edges and the
+ * values of each format. */
+#define WW 150
+static void test_ss_wide(void)
+{
+    int iter, n = check_count(60);
+    static uint16_t fine[4 * 3][4 * WW];
+    static uint64_t out[3][WW];
+    for (iter = 0; iter < n; iter++) {
+        int32_t kb = 1 + (int32_t)(rng() % 2), K = 1 << kb, s = (int32_t)(rng() % 3), g = 1 << s;
+        int32_t np = 3 + (int32_t)(rng() % 8), i, j, h = 3;
+        rast_coverage_format f = (rast_coverage_format)(rng() % 3);
+        static const int32_t fsize[3] = {1, 2, 8};
+        rast_point pts[10], big[10];
+        uint32_t size = (uint32_t)np;
+        rast_polygon poly = {pts, &size, 1}, bigp = {big, &size, 1};
+        rast_coverage_opts o;
+        rast_fill_opts fo;
+        rast_rect clip;
+        rast_target t;
+        size_t need;
+        unsigned char *sc;
+        clip.x0 = (int32_t)(rng() % 140) - 100;
+        clip.y0 = (int32_t)(rng() % 9) - 4;
+        clip.x1 = clip.x0 + WW;
+        clip.y1 = clip.y0 + h;
+        for (i = 0; i < np; i++) {
+            /* x beyond the clip on either side now and then; the reference
+             * gets the polygon moved by whole pixels to the clip's origin */
+            int32_t x = (int32_t)(rng() % (uint32_t)((WW + 20) * g)) - 10 * g + clip.x0 * g;
+            int32_t y = (int32_t)(rng() % (uint32_t)((h + 4) * g)) - 2 * g + clip.y0 * g;
+            pts[i].x = x;
+            pts[i].y = y;
+            x -= clip.x0 * g;
+            y -= clip.y0 * g;
+            big[i].x = s >= kb ? x : x * (K >> s);
+            big[i].y = s >= kb ? y : y * (K >> s);
+        }
+        ss_opts(kb, s, &o, &fo);
+        memset(out, 0xA5, sizeof out);
+        CHECK(cover(&poly, NULL, 0, &o, &clip, f, &out[0][0], (ptrdiff_t)sizeof out[0]) == RAST_OK);
+        memset(fine, 0, sizeof fine);
+        CHECK(rast_target_init(&t, fine, WW * K, h * K, (int32_t)sizeof fine[0],
+                               RAST_FORMAT_COUNT16) == RAST_OK);
+        CHECK(rast_scratch_size(&fo, size, WW * K, h * K, &need) == RAST_OK);
+        sc = scratch_for(need);
+        CHECK(rast_fill_polygon(&t, &bigp, &fo, NULL, sc, need) == RAST_OK);
+        check_ss_image(&out[0][0], WW, WW, h, f, kb, fine, sizeof fine[0], 0);
+        for (j = 0; j < h; j++) /* nothing written after the clip's last column */
+            for (i = WW * fsize[f]; i < (int32_t)sizeof out[0]; i++)
+                CHECK(((const unsigned char *)out[j])[i] == 0xA5);
+    }
+}
+#undef WW
+
+/* Triangle batches by supersampling: the union of the triangles, each
+ * filled on its own ("xscan" on the vertices scaled by k, overwriting a
+ * byte target: a union, whatever overlaps) and counted.  Overlapping,
+ * repeated in the other orientation, degenerate, with horizontal edges,
+ * reaching past the clip, on a clip off the origin wider than a word of
+ * bits, in every format. */
+#define WT 140
+static void test_ss_triangles(void)
+{
+    int iter, n = check_count(80);
+    static uint8_t fine[8 * 4][8 * WT];
+    static uint64_t out[4][WT];
+    for (iter = 0; iter < n; iter++) {
+        int32_t kb = 1 + (int32_t)(rng() % 3), K = 1 << kb, s = (int32_t)(rng() % 4), g = 1 << s;
+        int32_t nt = (int32_t)(rng() % 7), i, h = 4;
+        rast_coverage_format f = (rast_coverage_format)(rng() % 3);
+        rast_point tris[3 * 6], big[3 * 6];
+        rast_coverage_opts o;
+        rast_fill_opts fo;
+        rast_rect clip;
+        rast_target t;
+        uint8_t one = 1;
+        clip.x0 = (int32_t)(rng() % 100) - 60;
+        clip.y0 = (int32_t)(rng() % 9) - 4;
+        clip.x1 = clip.x0 + WT;
+        clip.y1 = clip.y0 + h;
+        for (i = 0; i < 3 * nt; i++) {
+            int32_t x = (int32_t)(rng() % (uint32_t)((WT + 20) * g)) - 10 * g;
+            int32_t y = (int32_t)(rng() % (uint32_t)((h + 4) * g)) - 2 * g;
+            if (i % 3 && rng() % 4 == 0) y = big[i - 1].y; /* a horizontal edge */
+            big[i].x = x;
+            big[i].y = y;
+        }
+        if (nt > 1 && rng() % 2) { /* a triangle twice, the other way round */
+            big[3] = big[0];
+            big[4] = big[2];
+            big[5] = big[1];
+        }
+        if (nt > 2 && rng() % 3 == 0) big[8] = big[7]; /* degenerate */
+        for (i = 0; i < 3 * nt; i++) {
+            tris[i].x = big[i].x + clip.x0 * g;
+            tris[i].y = big[i].y + clip.y0 * g;
+            big[i].x = s >= kb ? big[i].x : big[i].x * (K >> s);
+            big[i].y = s >= kb ? big[i].y : big[i].y * (K >> s);
+        }
+        ss_opts(kb, s, &o, &fo); /* o.rule: ignored */
+        fo.rule = RAST_RULE_EVENODD; /* one triangle: either */
+        memset(out, 0xA5, sizeof out);
+        CHECK(cover(NULL, nt ? tris : NULL, (uint32_t)nt, &o, &clip, f, &out[0][0],
+                    (ptrdiff_t)sizeof out[0]) == RAST_OK);
+        memset(fine, 0, sizeof fine);
+        CHECK(rast_target_init(&t, fine, WT * K, h * K, (int32_t)sizeof fine[0], RAST_FORMAT_GRAY8) ==
+              RAST_OK);
+        for (i = 0; i < nt; i++) {
+            uint32_t three = 3;
+            rast_polygon p = {&big[3 * i], &three, 1};
+            size_t need;
+            unsigned char *sc;
+            CHECK(rast_scratch_size(&fo, 3, WT * K, h * K, &need) == RAST_OK);
+            sc = scratch_for(need);
+            CHECK(rast_fill_polygon(&t, &p, &fo, &one, sc, need) == RAST_OK);
+        }
+        check_ss_image(&out[0][0], WT, WT, h, f, kb, fine, sizeof fine[0], 1);
+    }
+}
+#undef WT
 
 /* ---- triangle batches ------------------------------------------------------------ */
 
@@ -368,9 +539,12 @@ static void take_span(void *user, int32_t y, int32_t x0, int32_t x1, const uint8
     s->x1 = x1;
 }
 
+/* Both spans calls (a polygon of 9 vertices, or the batch of 3 triangles
+ * they make), every method, against the image rast_polygon_coverage or
+ * rast_triangles_coverage writes. */
 static void test_spans(void)
 {
-    int iter, n = check_count(150);
+    int iter, n = check_count(300);
     for (iter = 0; iter < n; iter++) {
         rast_point pts[9];
         uint32_t size = 9;
@@ -381,37 +555,64 @@ static void test_spans(void)
         span_img s;
         size_t need;
         unsigned char *sc;
-        int32_t i, m = (int32_t)(rng() % 3);
+        int32_t i, tri = (int32_t)(rng() % 2);
+        rast_polygon *pp = tri ? NULL : &p;
         for (i = 0; i < 9; i++) {
             pts[i].x = (int32_t)(rng() % ((W + 4) * 16)) - 32;
             pts[i].y = (int32_t)(rng() % ((H + 4) * 16)) - 32;
         }
         memset(&o, 0, sizeof o);
-        o.method = m == 0 ? RAST_AA_AREA : m == 1 ? RAST_AA_SS4 : RAST_AA_ACCUMULATE;
+        o.method = (rast_aa_method)(rng() % RAST_AA_COUNT_);
         o.rule = (rast_fill_rule)(rng() % 2);
         o.subpixel_bits = 4;
+        o.sample = (rast_sample)(rng() % 2);
         clip.x0 = (int32_t)(rng() % 3) - 1;
         clip.y0 = (int32_t)(rng() % 3) - 1;
         clip.x1 = clip.x0 + W - 2;
         clip.y1 = clip.y0 + H - 2;
-        CHECK(cover(&p, NULL, 0, &o, &clip, RAST_COVERAGE_U8, &want[0][0], W) == RAST_OK);
+        CHECK(cover(pp, pts, 3, &o, &clip, RAST_COVERAGE_U8, &want[0][0], W) == RAST_OK);
         memset(&s, 0, sizeof s);
         s.clip = clip;
         s.y = INT32_MIN;
         s.ok = 1;
         CHECK(rast_coverage_scratch_size(&o, 9, W - 2, H - 2, &need) == RAST_OK);
         sc = scratch_for(need);
-        CHECK(rast_polygon_coverage_spans(&p, &o, &clip, take_span, &s, sc, need) == RAST_OK);
+        CHECK((tri ? rast_triangles_coverage_spans(pts, 3, &o, &clip, take_span, &s, sc, need)
+                   : rast_polygon_coverage_spans(&p, &o, &clip, take_span, &s, sc, need)) ==
+              RAST_OK);
         CHECK(scratch_guard_ok(sc, need));
         CHECK(s.ok);
         for (i = 0; i < H - 2; i++) CHECK(memcmp(s.img[i], want[i], W - 2) == 0);
         /* errors: nothing handed on */
         s.calls = 0;
-        CHECK(rast_polygon_coverage_spans(&p, &o, &clip, NULL, &s, sc, need) == RAST_E_NULL);
-        CHECK(rast_polygon_coverage_spans(&p, &o, &clip, take_span, &s, sc, need - 1) ==
-              RAST_E_SCRATCH);
-        o.rule = (rast_fill_rule)5;
-        CHECK(rast_polygon_coverage_spans(&p, &o, &clip, take_span, &s, sc, need) == RAST_E_ARG);
+        if (tri) {
+            CHECK(rast_triangles_coverage_spans(pts, 3, &o, &clip, NULL, &s, sc, need) ==
+                  RAST_E_NULL);
+            CHECK(rast_triangles_coverage_spans(pts, 3, &o, NULL, take_span, &s, sc, need) ==
+                  RAST_E_NULL);
+            CHECK(rast_triangles_coverage_spans(NULL, 3, &o, &clip, take_span, &s, sc, need) ==
+                  RAST_E_NULL);
+            CHECK(rast_triangles_coverage_spans(pts, 3, &o, &clip, take_span, &s, sc, need - 1) ==
+                  RAST_E_SCRATCH);
+            CHECK(rast_triangles_coverage_spans(pts, RAST_MAX_POINTS / 3 + 1, &o, &clip, take_span,
+                                                &s, sc, need) == RAST_E_TOO_MANY);
+            /* none: nothing to hand on, and no error */
+            CHECK(rast_triangles_coverage_spans(NULL, 0, &o, &clip, take_span, &s, sc, need) ==
+                  RAST_OK);
+            pts[4].x = RAST_COORD_MAX + 1;
+            CHECK(rast_triangles_coverage_spans(pts, 3, &o, &clip, take_span, &s, sc, need) ==
+                  RAST_E_RANGE);
+            o.rule = (rast_fill_rule)5;
+            CHECK(rast_triangles_coverage_spans(pts, 3, &o, &clip, take_span, &s, sc, need) ==
+                  RAST_E_ARG);
+        } else {
+            CHECK(rast_polygon_coverage_spans(&p, &o, &clip, NULL, &s, sc, need) == RAST_E_NULL);
+            CHECK(rast_polygon_coverage_spans(&p, &o, &clip, take_span, &s, sc, need - 1) ==
+                  RAST_E_SCRATCH);
+            o.rule = (rast_fill_rule)5;
+            CHECK(rast_polygon_coverage_spans(&p, &o, &clip, take_span, &s, sc, need) ==
+                  RAST_E_ARG);
+        }
         CHECK(s.calls == 0);
     }
 }
@@ -420,6 +621,8 @@ int main(void)
 {
     test_rectangles();
     test_ss();
+    test_ss_wide();
+    test_ss_triangles();
     test_mesh();
     test_translation();
     test_errors();

@@ -132,6 +132,9 @@ static void test_comb(void)
                 uint32_t n = make_comb(teeth[a], s, rev);
                 rast_polygon p = {comb, &n, 1};
                 rast_rect clip = {0, 0, W, H};
+                /* the quick run (valgrind, qemu): the 1,500-tooth comb on
+                 * one grid, one direction */
+                if (check_count(5) < 5 && a == 2 && (gi != 0 || rev != 0)) continue;
                 for (rule = 0; rule < 2; rule++) {
                     /* the reference once, then every algorithm against it */
                     static unsigned char ref[W * H];

@@ -175,7 +175,7 @@ def _trace(rings, move, line, close):
 def _paths(rings, tris):
     """The paths a peer fills: the scene as one path, or for "each" (the
     mesh drawn triangle by triangle) one path per triangle, each blended
-    source-over onto the last (the seams of issue 12's third point)."""
+    source-over onto the last (the seams a renderer without a union leaves)."""
     return [[r] for r in rings] if tris == "each" else [rings]
 
 

@@ -134,7 +134,7 @@ test-install: lib
 # the optional inputs (shapely, affine, tqdm) and the peers the compatibility
 # tests compare with (rasterio, geopandas, pycocotools); with fewer
 # (PY_TEST_EXTRAS=test) those tests skip.
-PY_TEST_EXTRAS ?= test,gis,compat-test
+PY_TEST_EXTRAS ?= test,gis,compat-test,dask
 test-py: | $(VENV)
 	$(PY_CLEAN)
 	$(PYTHON) -m pip install --quiet --disable-pip-version-check '.[$(PY_TEST_EXTRAS)]'

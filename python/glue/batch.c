@@ -26,6 +26,7 @@
 typedef struct rastpy_burn {
     unsigned char *out;
     int64_t row_stride, plane_stride;
+    int32_t x0, y0; /* the window's origin: span (y, x) is at out's row y - y0, column x - x0 */
     const unsigned char *values; /* NULL: 1 */
     void (*put)(const struct rastpy_burn *b, unsigned char *row, uint32_t k, int32_t x0,
                 int32_t x1);
@@ -118,7 +119,8 @@ static const rastpy_put_fn rastpy_puts[10][3] = {
 static void rastpy_burn_span(void *user, uint32_t k, int32_t y, int32_t x0, int32_t x1)
 {
     const rastpy_burn *b = (const rastpy_burn *)user;
-    b->put(b, b->out + (int64_t)k * b->plane_stride + (int64_t)y * b->row_stride, k, x0, x1);
+    b->put(b, b->out + (int64_t)k * b->plane_stride + (int64_t)(y - b->y0) * b->row_stride, k,
+           x0 - b->x0, x1 - b->x0);
 }
 
 /* Snap xy (npoints points) to int32 (wide == 0) or int64 (wide == 1) into
@@ -233,8 +235,11 @@ static void rastpy_orient(int32_t *pts, const uint32_t *ring_sizes, size_t nring
 
 /* Every burn: the points snapped to int32 (rast_polygon, wide == 0) or to
  * int64 (rast_polygon64, wide == 1), the same tables, the same spans; with
- * `orient` (32-bit only), the rings turned first (rastpy_orient). */
-static long rastpy_burn_any(void *out, int32_t height, int32_t width, int64_t row_stride,
+ * `orient` (32-bit only), the rings turned first (rastpy_orient).  out is
+ * the window of rows y0 .. y0 + height - 1, columns x0 .. x0 + width - 1
+ * of the plane the points live in (the clip). */
+static long rastpy_burn_any(void *out, int32_t y0, int32_t x0, int32_t height, int32_t width,
+                            int64_t row_stride,
                             int64_t plane_stride, int dtype, int merge, const void *values,
                             const double *xy, size_t npoints, const uint32_t *ring_sizes,
                             size_t nrings, const uint32_t *poly_rings, uint32_t npolys,
@@ -251,15 +256,17 @@ static long rastpy_burn_any(void *out, int32_t height, int32_t width, int64_t ro
     if (dtype < RASTPY_DT_U8 || dtype > RASTPY_DT_F64 || merge < RASTPY_MERGE_REPLACE ||
         merge > RASTPY_MERGE_ADD_SAT || (orient && wide))
         return RAST_E_ARG;
-    if (height < 0 || width < 0) return RAST_E_SIZE;
+    if (height < 0 || width < 0 || y0 < -RAST_MAX_DIM || y0 > RAST_MAX_DIM - height ||
+        x0 < -RAST_MAX_DIM || x0 > RAST_MAX_DIM - width)
+        return RAST_E_SIZE;
     bad = rastpy_table_any(xy, npoints, ring_sizes, nrings, poly_rings, npolys,
                            opts ? opts->subpixel_bits : 0, wide, &polys, &pts);
     if (bad) return bad;
     if (orient) rastpy_orient((int32_t *)pts, ring_sizes, nrings, orient);
-    clip.x0 = 0;
-    clip.y0 = 0;
-    clip.x1 = width;
-    clip.y1 = height;
+    clip.x0 = x0;
+    clip.y0 = y0;
+    clip.x1 = x0 + width;
+    clip.y1 = y0 + height;
     st = wide ? rast_polygons64_scratch_size((const rast_polygon64 *)polys, npolys, opts, &clip, &need,
                                              failed)
               : rast_polygons_scratch_size((const rast_polygon *)polys, npolys, opts, &clip, &need, failed);
@@ -269,6 +276,8 @@ static long rastpy_burn_any(void *out, int32_t height, int32_t width, int64_t ro
         b.out = (unsigned char *)out;
         b.row_stride = row_stride;
         b.plane_stride = plane_stride;
+        b.x0 = x0;
+        b.y0 = y0;
         b.values = (const unsigned char *)values;
         b.put = rastpy_puts[dtype - 1][merge];
         st = wide ? rast_fill_polygons64_spans((const rast_polygon64 *)polys, npolys, opts, &clip,
@@ -288,8 +297,8 @@ long rastpy_burn_polygons(void *out, int32_t height, int32_t width, int64_t row_
                           size_t nrings, const uint32_t *poly_rings, uint32_t npolys,
                           const rast_fill_opts *opts, uint32_t *failed)
 {
-    return rastpy_burn_any(out, height, width, row_stride, plane_stride, dtype, merge, values, xy,
-                           npoints, ring_sizes, nrings, poly_rings, npolys, opts, failed, 0, NULL);
+    return rastpy_burn_any(out, 0, 0, height, width, row_stride, plane_stride, dtype, merge, values,
+                           xy, npoints, ring_sizes, nrings, poly_rings, npolys, opts, failed, 0, NULL);
 }
 
 long rastpy_burn_polygons64(void *out, int32_t height, int32_t width, int64_t row_stride,
@@ -298,7 +307,17 @@ long rastpy_burn_polygons64(void *out, int32_t height, int32_t width, int64_t ro
                             size_t nrings, const uint32_t *poly_rings, uint32_t npolys,
                             const rast_fill_opts *opts, uint32_t *failed)
 {
-    return rastpy_burn_any(out, height, width, row_stride, plane_stride, dtype, merge, values, xy,
+    return rastpy_burn_any(out, 0, 0, height, width, row_stride, plane_stride, dtype, merge, values,
+                           xy, npoints, ring_sizes, nrings, poly_rings, npolys, opts, failed, 1, NULL);
+}
+
+long rastpy_burn_polygons64_at(void *out, int32_t y0, int32_t x0, int32_t height, int32_t width,
+                               int64_t row_stride, int dtype, int merge, const void *values,
+                               const double *xy, size_t npoints, const uint32_t *ring_sizes,
+                               size_t nrings, const uint32_t *poly_rings, uint32_t npolys,
+                               const rast_fill_opts *opts, uint32_t *failed)
+{
+    return rastpy_burn_any(out, y0, x0, height, width, row_stride, 0, dtype, merge, values, xy,
                            npoints, ring_sizes, nrings, poly_rings, npolys, opts, failed, 1, NULL);
 }
 
@@ -309,8 +328,8 @@ long rastpy_burn_polygons_oriented(void *out, int32_t height, int32_t width, int
                                    const rast_fill_opts *opts, uint32_t *failed,
                                    const int8_t *orient)
 {
-    return rastpy_burn_any(out, height, width, row_stride, plane_stride, dtype, merge, values, xy,
-                           npoints, ring_sizes, nrings, poly_rings, npolys, opts, failed, 0, orient);
+    return rastpy_burn_any(out, 0, 0, height, width, row_stride, plane_stride, dtype, merge, values,
+                           xy, npoints, ring_sizes, nrings, poly_rings, npolys, opts, failed, 0, orient);
 }
 
 typedef struct rastpy_line_burn {
@@ -351,6 +370,8 @@ long rastpy_burn_gdal_lines(void *out, int32_t height, int32_t width, int64_t ro
     l.b.out = (unsigned char *)out;
     l.b.row_stride = row_stride;
     l.b.plane_stride = 0;
+    l.b.x0 = 0;
+    l.b.y0 = 0;
     l.b.values = (const unsigned char *)values;
     l.b.put = rastpy_puts[dtype - 1][merge];
     l.part = part;

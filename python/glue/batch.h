@@ -41,6 +41,17 @@ long rastpy_burn_polygons64(void *out, int32_t height, int32_t width, int64_t ro
                             const double *xy, size_t npoints, const uint32_t *ring_sizes,
                             size_t nrings, const uint32_t *poly_rings, uint32_t npolys,
                             const rast_fill_opts *opts, uint32_t *failed);
+/* rastpy_burn_polygons64 into a window of the plane (one plane): out is
+ * height x width pixels, its pixel (0, 0) being the plane's pixel (y0, x0)
+ * (row, column), and the window is the clip: every pixel equals the one
+ * of burning the whole plane (the same snapped points, the same rule), so
+ * tiles burnt apart assemble to the whole (rastrum.dask.rasterize).  The
+ * window must lie within +-RAST_MAX_DIM, else RAST_E_SIZE. */
+long rastpy_burn_polygons64_at(void *out, int32_t y0, int32_t x0, int32_t height, int32_t width,
+                               int64_t row_stride, int dtype, int merge, const void *values,
+                               const double *xy, size_t npoints, const uint32_t *ring_sizes,
+                               size_t nrings, const uint32_t *poly_rings, uint32_t npolys,
+                               const rast_fill_opts *opts, uint32_t *failed);
 /* Lines burnt as GDAL burns them (gdalline.c's walk over ij, last and
  * npoints), segment k's pixels with values[part[k]] through the span
  * writers of rastpy_burn_polygons (dtype, merge as there; values not

@@ -49,18 +49,22 @@ _KIND_POLYGON, _KIND_LINE, _KIND_POINT = 0, 1, 2
 
 # ---- polygons --------------------------------------------------------------------------------
 
-def _polygons(target, px, ring_sizes, part_rings, values, merge, boundary, rule):
-    """Polygon parts through rastpy_burn_polygons64 in one C call."""
+def _polygons(target, px, ring_sizes, part_rings, values, merge, boundary, rule, origin=(0, 0)):
+    """Polygon parts through rastpy_burn_polygons64 in one C call; target
+    is the window of the plane whose pixel (0, 0) is the plane's pixel
+    origin = (row, column), and the window is the clip (the same pixels
+    as burning the whole plane)."""
     opts = _core.fill_opts("aet", rule, SUBPIXEL_BITS, 0.5, "exact", boundary)
     h, w = target.shape
-    xy = np.ascontiguousarray(px)
+    # aligned too: an array unpickled from a dask.distributed message may not be (C reads doubles)
+    xy = np.require(px, np.float64, ["C", "A"])
     sizes = np.ascontiguousarray(ring_sizes, np.uint32)
     prings = np.ascontiguousarray(part_rings, np.uint32)
     v = np.ascontiguousarray(values, dtype=target.dtype)
     failed = ffi.new("uint32_t *")
-    result = lib.rastpy_burn_polygons64(
-        ffi.cast("void *", target.__array_interface__["data"][0]), h, w,
-        target.strides[0], 0, _DTYPES[target.dtype.name], _MERGES[merge], ffi.from_buffer(v),
+    result = lib.rastpy_burn_polygons64_at(
+        ffi.cast("void *", target.__array_interface__["data"][0]), origin[0], origin[1], h, w,
+        target.strides[0], _DTYPES[target.dtype.name], _MERGES[merge], ffi.from_buffer(v),
         ffi.from_buffer("double[]", xy), len(xy), ffi.from_buffer("uint32_t[]", sizes), len(sizes),
         ffi.from_buffer("uint32_t[]", prings), len(prings), opts, failed)
     if result == lib.RASTPY_E_NOMEM:
@@ -71,14 +75,17 @@ def _polygons(target, px, ring_sizes, part_rings, values, merge, boundary, rule)
 
 
 def burn(target, px, ring_sizes, part_rings, kind, values, feature, geom, merge, all_touched, rule,
-         progress):
+         progress, origin=(0, 0)):
     """Burn every part in order (see the module's docstring).  feature: the
     index in shapes of each part (for progress); geom: the geometry it
-    belongs to (a collection's members are geometries of their own)."""
+    belongs to (a collection's members are geometries of their own).
+    origin: the (row, column) of target's pixel (0, 0) in the pixel
+    coordinates of px: target is that window of the whole raster, burnt
+    with exactly the whole raster's pixels (rastrum.dask)."""
     if not (target.flags.aligned and target.strides[1] == target.itemsize and target.strides[0] > 0):
         work = np.ascontiguousarray(target)  # a transposed or reversed view: burn a copy
         burn(work, px, ring_sizes, part_rings, kind, values, feature, geom, merge, all_touched, rule,
-             progress)
+             progress, origin)
         target[...] = work
         return
     h, w = target.shape
@@ -113,22 +120,24 @@ def burn(target, px, ring_sizes, part_rings, kind, values, feature, geom, merge,
             sub_rings = part_rings[p:q]
             if all_touched and (kind[p:q] == _KIND_LINE).any():
                 sub_px, sub_sizes = _there_and_back(sub_px, sub_sizes, kind[p:q], sub_rings)
-            _polygons(target, sub_px, sub_sizes, sub_rings, values[p:q], merge, boundary, rule)
+            _polygons(target, sub_px, sub_sizes, sub_rings, values[p:q], merge, boundary, rule, origin)
         else:
             while q < n and not polyish[q] and q - p < chunk:
                 q += 1
-            _lines_points(target, px, pt_start, ring_start, kind, values, geom, p, q, merge)
+            _lines_points(target, px, pt_start, ring_start, kind, values, geom, p, q, merge, origin)
         p = q
         progress(int(feature[q - 1]) + 1 if q < n else progress.total)
 
 
 # ---- lines and points (GDAL's rules, python/glue/gdalline.c) ---------------------------
 
-def _lines_points(target, px, pt_start, ring_start, kind, values, geom, p, q, merge):
+def _lines_points(target, px, pt_start, ring_start, kind, values, geom, p, q, merge, origin=(0, 0)):
     """Parts p..q-1 (lines and points) in one go: their pixels in order,
     each with its part's value; in "add" a line geometry (a LineString, or
     the lines of a MultiLineString) burns each pixel once, a point each
-    time, as GDAL does."""
+    time, as GDAL does.  A window at origin (row, column): the walk is on
+    the pixels (floors) less the origin, integers, so it steps through the
+    same pixels as on the whole raster and keeps those in the window."""
     h, w = target.shape
     a = pt_start[ring_start[p]]
     sub = px[a:pt_start[ring_start[q]]]
@@ -146,6 +155,8 @@ def _lines_points(target, px, pt_start, ring_start, kind, values, geom, p, q, me
     last2 = np.repeat(last, rep).astype(np.int8)
     last2[first[~is_line]] = 1
     ij = np.ascontiguousarray(np.floor(np.repeat(sub, rep, axis=0)), dtype=np.int64)
+    if origin != (0, 0):
+        ij -= np.array([origin[1], origin[0]], np.int64)
     part = np.ascontiguousarray(np.repeat(part_of - p, rep), dtype=np.uint32)
     vals = np.ascontiguousarray(values[p:q], dtype=target.dtype)
     if merge == "add" and is_line.any():

@@ -591,17 +591,7 @@ def rasterize(
     fill_v = _fits(fill, dt, "fill")
     vals = _values(vals, dt)
     xy, ring_sizes, part_rings, kind, feature, geom = _flatten(geoms)
-    if len(xy):
-        px = np.empty_like(xy)
-        x, y = xy[:, 0], xy[:, 1]
-        with np.errstate(invalid="ignore", over="ignore"):  # inf * 0: named below
-            px[:, 0] = inv[0] + x * inv[1] + y * inv[2]
-            px[:, 1] = inv[3] + x * inv[4] + y * inv[5]
-        if not np.abs(px).max() <= _burn.COORD_LIMIT:  # also NaN
-            bad = ~(np.isfinite(px).all(axis=1) & (np.abs(px) <= _burn.COORD_LIMIT).all(axis=1))
-            _coordinate_error(xy, px, int(np.flatnonzero(bad)[0]), ring_sizes, part_rings, feature)
-    else:
-        px = xy
+    px = _pixels(xy, inv, ring_sizes, part_rings, feature)
     bar = _Progress(progress, len(geoms))
     if new:
         h, w, dt = target
@@ -615,6 +605,23 @@ def rasterize(
     finally:
         bar.close()
     return target
+
+
+def _pixels(xy, inv, ring_sizes, part_rings, feature):
+    """The float64 pixel coordinates of world positions xy under the
+    inverse transform inv (_inverse), or InputError naming the feature of
+    the first one that is not finite or lies outside the range."""
+    if not len(xy):
+        return xy
+    px = np.empty_like(xy)
+    x, y = xy[:, 0], xy[:, 1]
+    with np.errstate(invalid="ignore", over="ignore"):  # inf * 0: named below
+        px[:, 0] = inv[0] + x * inv[1] + y * inv[2]
+        px[:, 1] = inv[3] + x * inv[4] + y * inv[5]
+    if not np.abs(px).max() <= _burn.COORD_LIMIT:  # also NaN
+        bad = ~(np.isfinite(px).all(axis=1) & (np.abs(px) <= _burn.COORD_LIMIT).all(axis=1))
+        _coordinate_error(xy, px, int(np.flatnonzero(bad)[0]), ring_sizes, part_rings, feature)
+    return px
 
 
 def _coordinate_error(xy, px, k, ring_sizes, part_rings, feature):

@@ -1,0 +1,391 @@
+"""rastrum.dask: :func:`rasterize` as a lazy Dask array, equal to
+:func:`rastrum.rasterize` pixel for pixel for any chunking.
+
+Every block is burnt by the same C code as the whole raster, on the same
+float64 pixel coordinates (the whole raster's inverse transform, snapped
+to the same 1/2^32 pixel grid), with the block as the clip window: the
+coordinates are never shifted by the block's offset (a float subtraction
+would move the snapping), the C call is told where the block lies.  Lines
+and points take the whole raster's pixel walk, shifted by the block's
+offset in integers.  So a pixel is decided by the same rule on the same
+numbers whichever block it falls in.
+
+How the work is split (docs/dask.md):
+
+* in-memory shapes (a list, a GeoSeries, a GeoDataFrame) are read and
+  checked on the client, as rastrum.rasterize reads them; each block's task
+  carries only the parts whose bounds meet the block (a vectorised bounds
+  test against the chunk edges), in input order;
+* a dask-geopandas GeoDataFrame or GeoSeries is never collected: one task
+  per partition reads it (its parts and their bounds); for each block, a
+  small task per partition takes the partition's parts that meet the
+  block (on the worker that holds the partition), and the block's task
+  burns them into the fill partition after partition.  Burning in order is
+  exactly burning every shape in input order, so "replace" keeps the input
+  order across partitions and "add" adds in the same order (saturation and
+  float rounding included).  With the frame's spatial_partitions, only the
+  partitions whose hulls meet the block take part.
+
+A block's task holds its block and the parts that meet it, never the whole
+raster or the whole layer; a dask-geopandas partition is held by its
+reading task's result until the blocks have taken their parts.
+"""
+
+from __future__ import annotations
+
+import numbers
+from typing import Any, Sequence, Tuple, Union
+
+import numpy as np
+
+from . import _burn, _core, gis
+from ._core import InputError
+from .gis import IDENTITY
+
+__all__ = ["rasterize", "to_xarray"]
+
+
+# ---- the parts of a layer, and which blocks they meet ------------------------------------------
+
+def _ranges(starts, stops):
+    """The concatenation of arange(starts[k], stops[k]) over k, vectorised."""
+    lens = stops - starts
+    total = int(lens.sum())
+    if total == 0:
+        return np.zeros(0, np.int64)
+    offs = np.cumsum(lens) - lens
+    return np.repeat(starts - offs, lens) + np.arange(total)
+
+
+class _Parts:
+    """Parts in burning order (as _burn.burn takes them): float64 pixel
+    coordinates px, ring_sizes, part_rings, kind, value, feature, geometry."""
+
+    __slots__ = ("px", "ring_sizes", "part_rings", "kind", "values", "feature", "geom")
+
+    def __init__(self, px, ring_sizes, part_rings, kind, values, feature, geom):
+        self.px, self.ring_sizes, self.part_rings = px, ring_sizes, part_rings
+        self.kind, self.values, self.feature, self.geom = kind, values, feature, geom
+
+    def __len__(self):
+        return len(self.part_rings)
+
+    def take(self, parts, ring_start, pt_start):
+        """The parts of index `parts` (ascending), with their rings and
+        points (ring_start, pt_start: where each part's rings and each
+        ring's points begin, one more at the end)."""
+        rings = _ranges(ring_start[parts], ring_start[parts + 1])
+        points = _ranges(pt_start[rings], pt_start[rings + 1])
+        return _Parts(self.px[points], self.ring_sizes[rings], self.part_rings[parts], self.kind[parts],
+                      self.values[parts], self.feature[parts], self.geom[parts])
+
+
+class _Layer:
+    """Parts and the blocks each meets: a part meets the blocks that its
+    bounds, floored and widened by one pixel, overlap.  A polygon's pixels
+    (exact or all_touched), a line's and a point's lie within its floored
+    bounds (snapping to the 1/2^32 grid never moves a vertex across a pixel
+    edge, integers being on the grid); the extra pixel is slack that costs
+    a few more shapes at block borders."""
+
+    def __init__(self, parts, row_edges, col_edges):
+        self.parts = parts
+        n = len(parts)
+        nbj = len(col_edges) - 1
+        self.ring_start = np.concatenate([[0], np.cumsum(parts.part_rings)]).astype(np.int64)
+        self.pt_start = np.concatenate([[0], np.cumsum(parts.ring_sizes)]).astype(np.int64)
+        if n == 0:
+            self.order = np.zeros(0, np.int64)
+            self.start = np.zeros((len(row_edges) - 1) * nbj + 1, np.int64)
+            return
+        first = self.pt_start[self.ring_start[:-1]]
+        lo = np.floor(np.minimum.reduceat(parts.px, first, axis=0)) - 1  # (col, row)
+        hi = np.floor(np.maximum.reduceat(parts.px, first, axis=0)) + 1
+        bi0, bi1, ok_i = self._span(lo[:, 1], hi[:, 1], row_edges)
+        bj0, bj1, ok_j = self._span(lo[:, 0], hi[:, 0], col_edges)
+        ok = ok_i & ok_j
+        ncols = np.where(ok, bj1 - bj0 + 1, 0)
+        counts = np.where(ok, bi1 - bi0 + 1, 0) * ncols
+        part = np.repeat(np.arange(n), counts)
+        t = np.arange(len(part)) - np.repeat(np.cumsum(counts) - counts, counts)
+        block = (bi0[part] + t // ncols[part]) * nbj + bj0[part] + t % ncols[part]
+        order = np.argsort(block, kind="stable")  # parts stay in input order within a block
+        self.order = part[order]
+        self.start = np.searchsorted(block[order], np.arange((len(row_edges) - 1) * nbj + 1))
+
+    @staticmethod
+    def _span(lo, hi, edges):
+        """First and last block index of [lo, hi] (pixel indices, inclusive)
+        along one axis, and whether it meets the raster at all."""
+        ok = (hi >= 0) & (lo < edges[-1])
+        b0 = np.clip(np.searchsorted(edges, lo, side="right") - 1, 0, len(edges) - 2)
+        b1 = np.clip(np.searchsorted(edges, hi, side="right") - 1, 0, len(edges) - 2)
+        return b0, b1, ok
+
+    def block_parts(self, b):
+        """The parts that meet block b (linear index), in input order."""
+        return self.parts.take(self.order[self.start[b]:self.start[b + 1]], self.ring_start, self.pt_start)
+
+
+# ---- tasks -------------------------------------------------------------------------------------
+
+def _burn_block(shape, origin, fill, dt, merge, all_touched, rule, *subsets):
+    """The block of `shape` at origin (row, column) of the whole raster: the
+    fill, then each _Parts of `subsets` burnt in turn (a dask-geopandas
+    frame: one per partition, in partition order)."""
+    target = np.full(shape, fill, dt)
+    if 0 in shape:
+        return target
+    for parts in subsets:
+        if len(parts):  # each on its own: geometry numbers are a partition's own
+            _burn.burn(target, parts.px, parts.ring_sizes, parts.part_rings, parts.kind, parts.values,
+                       parts.feature, parts.geom, merge, all_touched, rule, gis._Progress(None, 0), origin)
+    return target
+
+
+def _block_parts(layer, b):
+    return layer.block_parts(b)
+
+
+def _read_partition(frame, p, values, default_value, fill, dt, inv, row_edges, col_edges):
+    """Partition p of a dask-geopandas frame as a _Layer (its shapes read and
+    checked as rastrum.rasterize reads them)."""
+    try:
+        geoms, vals = gis._split_shapes(frame, default_value, fill, values)
+        vals = gis._values(vals, dt)
+        xy, ring_sizes, part_rings, kind, feature, geom = gis._flatten(geoms)
+        px = gis._pixels(xy, inv, ring_sizes, part_rings, feature)
+    except InputError as e:
+        raise InputError("partition %d: %s" % (p, e)) from None
+    parts = _Parts(px, ring_sizes, part_rings, kind, vals[feature], feature, geom)
+    return _Layer(parts, row_edges, col_edges)
+
+
+def _partition_blocks(frame, inv, row_edges, col_edges):
+    """Per partition, the set of blocks its shapes may meet, from the
+    frame's spatial_partitions (dask-geopandas: a hull per partition, set
+    by calculate_spatial_partitions or spatial_shuffle), or
+    None (every partition meets every block).  An affine map keeps a hull
+    convex, so the bounds of its mapped vertices, floored and widened by a
+    pixel, hold every pixel of its shapes."""
+    hulls = getattr(frame, "spatial_partitions", None)
+    if hulls is None or len(hulls) != frame.npartitions:
+        return None
+    import shapely
+
+    out = []
+    for hull in hulls:
+        if hull is None or hull.is_empty:
+            out.append(set())
+            continue
+        xy = shapely.get_coordinates(hull)
+        px = np.c_[inv[0] + xy[:, 0] * inv[1] + xy[:, 1] * inv[2], inv[3] + xy[:, 0] * inv[4] + xy[:, 1] * inv[5]]
+        if not np.isfinite(px).all():
+            return None
+        lo, hi = np.floor(px.min(axis=0)) - 1, np.floor(px.max(axis=0)) + 1
+        bi0, bi1, ok_i = _Layer._span(lo[1:], hi[1:], row_edges)
+        bj0, bj1, ok_j = _Layer._span(lo[:1], hi[:1], col_edges)
+        nbj = len(col_edges) - 1
+        out.append({i * nbj + j for i in range(bi0[0], bi1[0] + 1) for j in range(bj0[0], bj1[0] + 1)}
+                   if ok_i[0] and ok_j[0] else set())
+    return out
+
+
+# ---- the public function -----------------------------------------------------------------------
+
+def _is_dask_frame(shapes):
+    return hasattr(shapes, "npartitions") and hasattr(shapes, "to_delayed")
+
+
+def _chunks(chunks, shape, dt):
+    """Dask's normalised chunks for `shape`, or InputError."""
+    import dask.array as da
+
+    if chunks is None:
+        raise InputError("chunks must be given: rows and columns per block, e.g. 4096 or (4096, 8192), "
+                         "or dask's forms ((rows, ...), (columns, ...)) or 'auto'")
+    try:
+        norm = da.core.normalize_chunks(chunks, shape=shape, dtype=dt)
+    except (ValueError, TypeError) as e:
+        raise InputError("chunks %r do not fit out_shape %r: %s" % (chunks, shape, e)) from None
+    if len(norm) != 2 or tuple(map(sum, norm)) != tuple(shape):
+        raise InputError("chunks %r do not fit out_shape %r: the rows' and columns' chunks must sum "
+                         "to %d and %d" % (chunks, shape, shape[0], shape[1]))
+    for axis, sizes in zip(("rows", "columns"), norm):
+        if any(not isinstance(c, numbers.Integral) or c <= 0 for c in sizes):
+            raise InputError("chunks %r: every chunk of the %s must be a whole number > 0, not %r"
+                             % (chunks, axis, sizes))
+    return norm
+
+
+def _frame_dtype(shapes, values, default_value):
+    """rastrum.rasterize's default dtype for a dask-geopandas frame, read
+    from its meta: float64 when the value column (or default_value) is a
+    float, else int64."""
+    if values is None:
+        return np.dtype(np.float64 if isinstance(default_value, (float, np.floating)) else np.int64)
+    return np.dtype(np.float64 if shapes._meta[values].dtype.kind == "f" else np.int64)
+
+
+def rasterize(
+    shapes: Any,
+    out_shape: Tuple[int, int],
+    *,
+    transform: Any = IDENTITY,
+    chunks: Any = None,
+    fill: Union[int, float] = 0,
+    all_touched: bool = False,
+    merge_alg: Any = "replace",
+    default_value: Union[int, float] = 1,
+    dtype: Any = None,
+    values: Union[str, Sequence[Union[int, float, None]], None] = None,
+    rule: str = "evenodd",
+) -> "dask.array.Array":
+    """Burn shapes into a lazy 2-D ``dask.array.Array``, block by block.
+
+    The computed array equals ``rastrum.rasterize(shapes, out_shape,
+    transform=transform, fill=fill, all_touched=all_touched,
+    merge_alg=merge_alg, default_value=default_value, dtype=dtype,
+    values=values, rule=rule)`` pixel for pixel, for any chunking.
+
+    Parameters
+    ----------
+    shapes : geometries, (geometry, value) pairs, a GeoSeries or GeoDataFrame, or a dask-geopandas one
+        As :func:`rastrum.rasterize`.  In-memory shapes are read and checked
+        now (bad input raises here); a dask-geopandas GeoDataFrame or
+        GeoSeries is read partition by partition by the tasks (bad input
+        raises at compute time, naming the partition), never collected.
+    out_shape : (int, int)
+        (height, width) of the whole raster.
+    transform : affine.Affine or 6 numbers (a, b, c, d, e, f)
+        The whole raster's transform, as :func:`rastrum.rasterize`.
+    chunks : int, tuple or str
+        The blocks, in any form ``dask.array`` takes with ``shape=out_shape``:
+        4096, (2048, 4096), ((rows, ...), (columns, ...)) (irregular), "auto".
+    fill, all_touched, merge_alg, default_value, rule
+        As :func:`rastrum.rasterize`.
+    dtype : one of rastrum.gis.DTYPES, optional
+        As :func:`rastrum.rasterize`; for a dask-geopandas frame the default
+        comes from the value column's dtype (float64 for floats, else int64).
+    values : str or sequence, optional
+        A column name (GeoDataFrame, dask-geopandas too) or, for in-memory
+        shapes, one value per shape.
+
+    Returns
+    -------
+    dask.array.Array (H, W) of dtype, chunked as `chunks`.
+
+    Raises
+    ------
+    InputError (a ValueError)
+        As :func:`rastrum.rasterize`, and for chunks that do not fit
+        out_shape.
+
+    Examples
+    --------
+    >>> import rastrum.dask
+    >>> square = {"type": "Polygon", "coordinates": [[(1, 1), (4, 1), (4, 3), (1, 3), (1, 1)]]}
+    >>> a = rastrum.dask.rasterize([(square, 7)], (4, 5), chunks=(2, 3), dtype="uint8")
+    >>> a.chunks
+    ((2, 2), (3, 2))
+    >>> a.compute()
+    array([[0, 0, 0, 0, 0],
+           [0, 7, 7, 7, 0],
+           [0, 7, 7, 7, 0],
+           [0, 0, 0, 0, 0]], dtype=uint8)
+    """
+    import dask
+    import dask.array as da
+
+    merge = gis._merge_name(merge_alg)
+    _core._name(rule, "fill rule", _core.RULES)
+    if not isinstance(all_touched, (bool, np.bool_)):
+        raise InputError("all_touched must be True or False, not %r" % (all_touched,))
+    all_touched = bool(all_touched)
+    inv = gis._inverse(gis._transform6(transform))
+    gis._real(fill, "fill")
+    frame = _is_dask_frame(shapes)
+    if frame:
+        if values is not None and not isinstance(values, str):
+            raise InputError("values: a dask-geopandas frame takes a column name, not %s"
+                             % type(values).__name__)
+        if getattr(shapes._meta, "ndim", 2) == 1 and values is not None:  # a GeoSeries
+            raise InputError("values=%r: a column name needs a GeoDataFrame" % (values,))
+        if values is not None and values not in shapes.columns:
+            raise InputError("values=%r is not a column of the GeoDataFrame; columns: %s"
+                             % (values, ", ".join(map(str, shapes.columns))))
+        gis._real(default_value, "default_value")
+        if dtype is None:
+            dtype = _frame_dtype(shapes, values, default_value)
+        (h, w, dt), _ = gis._out_array(None, out_shape, dtype, fill, [])
+    else:
+        geoms, vals = gis._split_shapes(shapes, default_value, fill, values)
+        (h, w, dt), _ = gis._out_array(None, out_shape, dtype, fill, vals)
+        vals = gis._values(vals, dt)
+        xy, ring_sizes, part_rings, kind, feature, geom = gis._flatten(geoms)
+        px = gis._pixels(xy, inv, ring_sizes, part_rings, feature)
+    fill_v = gis._fits(fill, dt, "fill")
+    rows, cols = _chunks(chunks, (h, w), dt)
+    row_edges = np.concatenate([[0], np.cumsum(rows)]).astype(np.int64)
+    col_edges = np.concatenate([[0], np.cumsum(cols)]).astype(np.int64)
+    args = (fill_v, dt, merge, all_touched, rule)
+
+    def blocks(make):
+        return [[da.from_delayed(make(i * len(cols) + j, (r, c), (int(row_edges[i]), int(col_edges[j]))),
+                                 (r, c), dtype=dt)
+                 for j, c in enumerate(cols)] for i, r in enumerate(rows)]
+
+    burn = dask.delayed(_burn_block, pure=False)
+    if not frame:
+        layer = _Layer(_Parts(px, ring_sizes, part_rings, kind, vals[feature], feature, geom),
+                       row_edges, col_edges)
+        return da.block(blocks(lambda b, shape, origin: burn(shape, origin, *args, layer.block_parts(b))))
+
+    read = dask.delayed(_read_partition, pure=False)
+    layers = [read(part, p, values, default_value, fill, dt, inv, row_edges, col_edges)
+              for p, part in enumerate(shapes.to_delayed())]
+    meets = _partition_blocks(shapes, inv, row_edges, col_edges)
+    take = dask.delayed(_block_parts, pure=False)
+
+    def block(b, shape, origin):
+        return burn(shape, origin, *args, *[take(lay, b) for p, lay in enumerate(layers)
+                                            if meets is None or b in meets[p]])
+
+    return da.block(blocks(block))
+
+
+def to_xarray(array: Any, transform: Any = IDENTITY, *, crs: Any = None, name: Any = None) -> "xarray.DataArray":
+    """The raster as an ``xarray.DataArray`` with dims ("y", "x") and the
+    world coordinates of the pixel centres (a north-up or south-up
+    transform: no rotation or shear); with rioxarray installed, its
+    transform (and crs, if given) are written too (``.rio``).
+
+    >>> import rastrum.dask
+    >>> a = rastrum.dask.rasterize([], (2, 3), chunks=2, transform=(10, 0, 100, 0, -10, 50))
+    >>> rastrum.dask.to_xarray(a, (10, 0, 100, 0, -10, 50)).x.values.tolist()
+    [105.0, 115.0, 125.0]
+    """
+    try:
+        import xarray as xr
+    except ImportError:
+        raise InputError("to_xarray needs xarray (pip install 'rastrum[dask]')") from None
+    a, b, c, d, e, f = gis._transform6(transform)
+    if b != 0.0 or d != 0.0:
+        raise InputError("to_xarray: transform %r is rotated or sheared; x and y coordinates need "
+                         "b = d = 0" % ((a, b, c, d, e, f),))
+    if getattr(array, "ndim", None) != 2:
+        raise InputError("to_xarray: array must be 2-D (rows, columns), not %r" % (getattr(array, "shape", array),))
+    h, w = array.shape
+    x = c + a * (np.arange(w) + 0.5)
+    y = f + e * (np.arange(h) + 0.5)
+    out = xr.DataArray(array, dims=("y", "x"), coords={"y": y, "x": x}, name=name)
+    try:
+        import rioxarray  # noqa: F401  (registers .rio)
+    except ImportError:
+        return out
+    import affine
+
+    out = out.rio.write_transform(affine.Affine(a, b, c, d, e, f))
+    if crs is not None:
+        out = out.rio.write_crs(crs)
+    return out

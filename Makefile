@@ -86,7 +86,7 @@ C_TESTS := $(patsubst tests/c/%.c,build/tests/%,$(wildcard tests/c/test_*.c))
 comma   := ,
 SAN     := -fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer -g
 
-.PHONY: race-check fuzz-long bench docs bench-precision bench-precision-callgrind single test-single display-qemu fuzz-check fuzz-regress display-example valgrind valgrind-py firmware-check cross-check all lib test test-c test-install test-py demo asan asan-c asan-py strict install uninstall example clean
+.PHONY: race-check fuzz-long bench docs bench-precision cbench-coverage bench-precision-callgrind single test-single display-qemu fuzz-check fuzz-regress display-example valgrind valgrind-py firmware-check cross-check all lib test test-c test-install test-py demo asan asan-c asan-py strict install uninstall example clean
 
 all: lib
 lib: build/librastrum.a build/librastrum.so
@@ -269,6 +269,15 @@ display-qemu: single display-example
 ROUNDS ?= 31
 build/bench_precision: bench/bench_precision.c build/librastrum.a
 	@$(CC) $(WARN) -O2 -Icsrc/include $< build/librastrum.a -o $@
+
+# The coverage scenes ("area" and "accumulate") in C alone: medians and an
+# image hash per scene, so that two builds can be compared bit for bit;
+# `valgrind --tool=callgrind build/cbench_coverage 1 star area` counts one call.
+build/cbench_coverage: bench/cbench_coverage.c bench/cbench_time.h build/librastrum.a
+	@$(CC) $(WARN) -O2 -Icsrc/include $< build/librastrum.a -lm -o $@
+
+cbench-coverage: build/cbench_coverage
+	@./build/cbench_coverage
 
 bench-precision: build/bench_precision
 	@./build/bench_precision $(ROUNDS)

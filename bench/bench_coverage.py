@@ -2,9 +2,9 @@
 
     python bench/bench_coverage.py [--size 512] [--reps 7] [--plot docs/coverage_frontier.png]
 
-For each scene (issue 12: a 64-gon circle, a 200-spike star, a disc with
-holes, four glyphs, the overlap scenes, 10,000 triangles in one path, a
-mesh in one call) it prints, per method, the median time (ms), its ratio to
+For each scene (a 64-gon circle, a 200-spike star, a disc with holes,
+four glyphs, the overlap scenes, 10,000 triangles in one path, a mesh in
+one call and the same mesh drawn per triangle by the peers) it prints, per method, the median time (ms), its ratio to
 a memset of the same buffer and to the fastest peer, and the coverage
 error in 1/255 against the reference: the max, the mean, and the number of
 pixels off by more than 1/255.
@@ -15,11 +15,16 @@ vertices snapped to 2^-16 pixel, so within about 2^-16 of the exact area of
 the unsnapped input: far below 1/255.
 
 Peers (skipped when not installed; `pip install .[bench]`): Blend2D
-(blend2d-python), skia-python, AGG (aggdraw, no pen), Pillow drawing 4x and
-16x larger and reducing (box filter).  Every peer draws the same float
-vertices as one path with the scene's fill rule.  Timings are medians of
---reps runs measured in one process; the machine may be noisy: compare
-ratios within one run.
+(blend2d-python), skia-python, AGG (aggdraw, no pen), FreeType (freetype-py:
+its smooth rasteriser, FT_Outline_Get_Bitmap on an outline of line
+segments), Pillow drawing 4x and 16x larger and reducing (box filter).
+Every peer draws the same float vertices as one path with the scene's fill
+rule - except in "mesh 32x32, peers per triangle", where each peer draws the
+mesh triangle by triangle, each blended source-over onto the last, as a
+renderer without a union would (the seams), while rastrum still draws the
+union in one call; Pillow paints each polygon into one binary image at 4x or
+16x, which is a union too.  Timings are medians of --reps runs measured in
+one process; the machine may be noisy: compare ratios within one run.
 """
 
 import argparse
@@ -129,6 +134,9 @@ def scenes(size):
         "pentagram, nonzero": ([penta], "nonzero", False),
         "10,000 triangles, one path": (list(tris), "nonzero", True),
         "mesh 32x32 in one call": (list(np.array(mesh)), "nonzero", True),
+        # the same mesh, the peers drawing it triangle by triangle (source-over):
+        # rastrum still one call, the union
+        "mesh 32x32, peers per triangle": (list(np.array(mesh)), "nonzero", "each"),
     }
     try:
         out["glyphs 'Rast'"] = (_glyph_rings("Rast", size), "nonzero", False)
@@ -164,6 +172,13 @@ def _trace(rings, move, line, close):
         close()
 
 
+def _paths(rings, tris):
+    """The paths a peer fills: the scene as one path, or for "each" (the
+    mesh drawn triangle by triangle) one path per triangle, each blended
+    source-over onto the last (the seams a renderer without a union leaves)."""
+    return [[r] for r in rings] if tris == "each" else [rings]
+
+
 def peers():
     out = {}
     try:
@@ -175,9 +190,10 @@ def peers():
             ctx.clear_all()
             ctx.fill_rule = b.BLFillRule.NON_ZERO if rule == "nonzero" else b.BLFillRule.EVEN_ODD
             ctx.set_fill_style((255, 255, 255, 255))
-            p = b.BLPath()
-            _trace(rings, p.move_to, p.line_to, p.close)
-            ctx.fill_path(p)
+            for group in _paths(rings, tris):  # each a fill, blended source-over
+                p = b.BLPath()
+                _trace(group, p.move_to, p.line_to, p.close)
+                ctx.fill_path(p)
             ctx.flush()
             return img.getDataAsNumPy().reshape(size, size)
         out["Blend2D"] = blend2d_draw
@@ -190,10 +206,12 @@ def peers():
             arr = np.zeros((size, size), np.uint8)
             surface = skia.Surface(arr, colorType=skia.ColorType.kAlpha_8_ColorType)
             canvas = surface.getCanvas()
-            path = skia.Path()
-            path.setFillType(skia.PathFillType.kWinding if rule == "nonzero" else skia.PathFillType.kEvenOdd)
-            _trace(rings, path.moveTo, path.lineTo, path.close)
-            canvas.drawPath(path, skia.Paint(AntiAlias=True, Color=skia.ColorWHITE))
+            paint = skia.Paint(AntiAlias=True, Color=skia.ColorWHITE)
+            for group in _paths(rings, tris):
+                path = skia.Path()
+                path.setFillType(skia.PathFillType.kWinding if rule == "nonzero" else skia.PathFillType.kEvenOdd)
+                _trace(group, path.moveTo, path.lineTo, path.close)
+                canvas.drawPath(path, paint)
             surface.flushAndSubmit() if hasattr(surface, "flushAndSubmit") else None
             return arr
         skia_draw([np.array([(0, 0), (4, 0), (0, 4)], float)], "nonzero", False, 8)
@@ -208,13 +226,18 @@ def peers():
             img = Image.new("L", (size, size), 0)
             d = aggdraw.Draw(img)
             brush = aggdraw.Brush(255)
-            path = aggdraw.Path()
-            _trace(rings, path.moveto, path.lineto, path.close)
-            d.path(path, None, brush)
+            for group in _paths(rings, tris):
+                path = aggdraw.Path()
+                _trace(group, path.moveto, path.lineto, path.close)
+                d.path(path, None, brush)
             d.flush()
             return np.asarray(img)
         out["AGG (aggdraw)"] = agg_draw
     except ImportError:
+        pass
+    try:
+        out["FreeType"] = _freetype_peer()
+    except Exception:
         pass
     from PIL import Image, ImageDraw
 
@@ -229,6 +252,74 @@ def peers():
     out["Pillow 4x"] = pillow(4)
     out["Pillow 16x"] = pillow(16)
     return out
+
+
+def _freetype_peer():
+    """FreeType's own rasteriser (the "smooth" one that renders glyphs):
+    the rings as an FT_Outline of line segments (26.6 fixed point, y flipped:
+    FreeType's y grows upward), rendered by FT_Outline_Get_Bitmap into a
+    gray bitmap.  At most 32,767 points (FT_Outline counts them in a short)."""
+    import ctypes
+    import freetype
+    from freetype import ft_structs as fs
+    from freetype.raw import FT_Outline_Get_Bitmap
+
+    lib = freetype.get_handle()
+
+    def draw(rings, rule, tris, size):
+        if tris == "each":  # each triangle in its own bitmap, composited source-over
+            out = np.zeros((size, size), np.float64)
+            for r in rings:
+                r = np.asarray(r, float)
+                x0, y0 = np.floor(r.min(0)).astype(int)
+                x1, y1 = np.ceil(r.max(0)).astype(int)
+                w, h = x1 - x0, y1 - y0
+                if w <= 0 or h <= 0:
+                    continue
+                a = one(r - (x0, y0), rule, w, h).astype(np.float64)
+                sub = out[y0:y1, x0:x1]
+                sub[...] = a + sub * (255 - a) / 255
+            return np.round(out).astype(np.uint8)
+        return one(rings, rule, size, size)
+
+    def one(rings, rule, width, height):
+        if isinstance(rings, np.ndarray):
+            rings = [rings]
+        rings = [np.asarray(r, float) for r in rings]
+        pts = np.concatenate(rings)
+        n = len(pts)
+        if n > 32767:
+            raise ValueError("FT_Outline holds at most 32,767 points, %d given" % n)
+        vec = (fs.FT_Vector * n)()
+        flat = np.empty((n, 2), np.dtype("i%d" % ctypes.sizeof(ctypes.c_long)))  # FT_Pos
+        flat[:, 0] = np.round(pts[:, 0] * 64)
+        flat[:, 1] = np.round((height - pts[:, 1]) * 64)
+        ctypes.memmove(vec, flat.ctypes.data, ctypes.sizeof(vec))
+        tags = (ctypes.c_ubyte * n)(*([1] * n))  # every point on the curve: segments
+        ends = np.cumsum([len(r) for r in rings]) - 1
+        contours = (ctypes.c_short * len(rings))(*ends.tolist())
+        outline = fs.FT_Outline()
+        outline.n_contours = len(rings)
+        outline.n_points = n
+        outline.points = vec
+        outline.tags = tags
+        outline.contours = contours
+        outline.flags = 0x2 if rule == "evenodd" else 0  # FT_OUTLINE_EVEN_ODD_FILL
+        buf = np.zeros((height, width), np.uint8)
+        bm = fs.FT_Bitmap()
+        bm.rows = height
+        bm.width = width
+        bm.pitch = width
+        bm.buffer = buf.ctypes.data_as(ctypes.POINTER(ctypes.c_ubyte))
+        bm.num_grays = 256
+        bm.pixel_mode = 2  # FT_PIXEL_MODE_GRAY
+        err = FT_Outline_Get_Bitmap(lib, ctypes.byref(outline), ctypes.byref(bm))
+        if err:
+            raise RuntimeError("FT_Outline_Get_Bitmap: error %d" % err)
+        return buf
+
+    draw([np.array([(0, 0), (4, 0), (0, 4)], float)], "nonzero", False, 8)
+    return draw
 
 
 AREA_MAX_EDGES = 20000

@@ -23,25 +23,13 @@
 #include <string.h>
 #include <time.h>
 
+#include "cbench_time.h"
 #include "rastrum.h"
 
 #define NPATHS 4
 static const int path_s[NPATHS] = {8, 8, 24, 32}; /* path 0: 32-bit; 1..3: 64-bit */
 static const char *const path_name[NPATHS] = {"int32 S=8", "int64 S=8", "int64 S=24",
                                               "int64 S=32"};
-
-static double now(void)
-{
-    struct timespec t;
-    clock_gettime(CLOCK_MONOTONIC, &t);
-    return (double)t.tv_sec + (double)t.tv_nsec * 1e-9;
-}
-
-static int cmp(const void *a, const void *b)
-{
-    double x = *(const double *)a, y = *(const double *)b;
-    return (x > y) - (x < y);
-}
 
 static uint64_t scratch[1 << 19];
 

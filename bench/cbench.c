@@ -8,20 +8,8 @@
 #include <string.h>
 #include <time.h>
 
+#include "cbench_time.h"
 #include "rastrum.h"
-
-static double now(void)
-{
-    struct timespec t;
-    clock_gettime(CLOCK_MONOTONIC, &t);
-    return (double)t.tv_sec + (double)t.tv_nsec * 1e-9;
-}
-
-static int cmp(const void *a, const void *b)
-{
-    double x = *(const double *)a, y = *(const double *)b;
-    return (x > y) - (x < y);
-}
 
 static uint64_t scratch[1 << 18];
 

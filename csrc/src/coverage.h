@@ -101,23 +101,27 @@ static inline rast__i128 rast__i128_u64(uint64_t v)
  * x + r/dy in V units, 0 <= r < dy) and at the end of the current piece
  * (xn, rn). */
 typedef struct rast__cedge {
+    /* what every row reads, together (the first two cache lines) */
     rast__i128 x, xn;
+    rast__i128 lo, hi; /* a fast row's range of the edge's part (coverage_area.c) */
+    int64_t r, rn;
+    uint64_t tx;  /* the t of x, r in row `rowx` */
+    int32_t rowx; /* see tx; INT32_MIN: not cached */
+    int32_t xt, yt, dx, dy, dir;
     rast__i128 xs; /* x grows by xs + xsr/dy from a row's top to the next */
+    int64_t xsr;
+    /* the column stepper (cells) */
     rast__i128 ts; /* t grows by ts + tsr/|dx| from a column to the next */
     rast__i128 ct; /* the column stepper left at vertical cX: t (U from the
                       top) = ct + crem/|dx|; see coverage_area.c */
     int64_t cX;
-    uint32_t crem;
+    uint32_t crem, tsr;
+    /* the sweep's */
     rast__i128 xT; /* the edge's line at the bottom of the row (xT + rT/dy) */
     int64_t rT;
     int32_t sg;    /* the sign of its current piece (+1 enters, -1 leaves the inside, 0 neither) */
-    uint64_t ctime; /* its crossing time with edge cn in row crow (a cache) */
     int32_t cn, crow;
-    int64_t r, rn, xsr;
-    uint64_t tx;  /* the t of x, r in row `rowx` */
-    uint32_t tsr;
-    int32_t rowx; /* see tx; INT32_MIN: not cached */
-    int32_t xt, yt, dx, dy, dir;
+    uint64_t ctime; /* its crossing time with edge cn in row crow (a cache) */
 } rast__cedge;
 
 /* The edges of a polygon's rings (rule: the caller's) or of a triangle

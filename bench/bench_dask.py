@@ -19,7 +19,12 @@ the rasterisation's wall time (median of --repeat), polygons/s and
 pixels/s per core, the workers' CPU time per job (getrusage: less
 disturbed by other load on a shared machine than the wall time) and the
 polygons and pixels per CPU second, the peak resident memory of each worker process
-(ru_maxrss) before and after the job (the layer's share is the "before").
+(ru_maxrss) before and after the job (the layer's share is the "before"),
+and, from one more (untimed) run with a worker plugin that resets
+tracemalloc's peak when a task starts and reads it when the task ends,
+each kind of task's peak of traced allocations (numpy arrays and Python
+objects; the C glue's few kilobytes of edge scratch are not traced):
+the median and the largest over its tasks.
 
 With --whole, rastrum.rasterize of the whole job in one process and one
 call (the raster held in memory), its blocks checked against the dask run.
@@ -120,6 +125,48 @@ def _cpu_s():
     return r.ru_utime + r.ru_stime
 
 
+class TaskMemory(distributed.WorkerPlugin):
+    """Per task, the peak of tracemalloc's traced memory while it ran (one
+    thread per worker: tasks do not overlap)."""
+
+    name = "rastrum-task-memory"
+
+    def setup(self, worker):
+        import tracemalloc
+
+        self.tm = tracemalloc
+        self.peaks = []
+        tracemalloc.start()
+
+    def transition(self, key, start, finish, **kwargs):
+        if finish == "executing":
+            self.tm.reset_peak()
+        elif start == "executing":
+            self.peaks.append((dask.utils.key_split(key), self.tm.get_traced_memory()[1]))
+
+    def teardown(self, worker):
+        self.tm.stop()
+
+
+def _task_peaks(dask_worker):
+    return dask_worker.plugins[TaskMemory.name].peaks
+
+
+def task_memory(client, ddf, args):
+    """One untimed run with TaskMemory: {task kind: (count, median MB, max MB)}."""
+    client.register_plugin(TaskMemory())
+    a = rastrum.dask.rasterize(ddf, (args.size, args.size), transform=transform(), chunks=args.chunk,
+                               values="v", dtype="uint16")
+    a.map_blocks(_summary, new_axis=2, chunks=((1,) * a.numblocks[0], (1,) * a.numblocks[1], (2,)),
+                 dtype=np.uint64).compute()
+    kinds = {}
+    for peaks in client.run(_task_peaks).values():
+        for kind, peak in peaks:
+            kinds.setdefault(kind, []).append(peak / 2.0 ** 20)
+    client.unregister_worker_plugin(TaskMemory.name)
+    return {k: (len(v), statistics.median(v), max(v)) for k, v in sorted(kinds.items())}
+
+
 def run_cluster(workers, args):
     with distributed.LocalCluster(n_workers=workers, threads_per_worker=1, processes=True,
                                   dashboard_address=":0", memory_limit=0) as cluster, \
@@ -143,7 +190,8 @@ def run_cluster(workers, args):
         after = client.run(_maxrss_mb)
         slice_rows = args.size // 100
         top = a[:slice_rows].compute()
-    return times, summary, before, after, top, cpu
+        tasks = task_memory(client, ddf, args)
+    return times, summary, before, after, top, cpu, tasks
 
 
 def rasterio_slice(args):
@@ -213,7 +261,7 @@ def main():
     first = None
     base = None
     for workers in [int(w) for w in args.workers.split(",")]:
-        times, summary, before, after, top, cpu = run_cluster(workers, args)
+        times, summary, before, after, top, cpu, tasks = run_cluster(workers, args)
         t = statistics.median(times)
         if first is None:
             first, base = summary, t
@@ -226,6 +274,9 @@ def main():
               % (cpu, args.n / cpu, px / cpu))
         print("    peak RSS per worker (MB): before %s, after %s"
               % (", ".join("%.0f" % v for v in before.values()), ", ".join("%.0f" % v for v in after.values())))
+        for kind, (count, med, top_mb) in tasks.items():
+            print("    per-task peak traced memory, %s (%d tasks): median %.1f MB, largest %.1f MB"
+                  % (kind, count, med, top_mb))
         if not same:
             sys.exit("the blocks differ between cluster sizes")
     print("    burnt pixels: %d of %d (%.1f%%)" % (first[..., 0].sum(), px, 100.0 * first[..., 0].sum() / px))

@@ -484,7 +484,7 @@ AWAITING_ROWS = set()
 def test_every_public_drawing_name_has_an_entry():
     """A new public function or Canvas method fails here until it has an
     Entry (or is listed as not drawing)."""
-    not_drawing = {"Canvas", "ALGORITHMS", "RastrumError", "InputError", "__version__",
+    not_drawing = {"Canvas", "ALGORITHMS", "AA_METHODS", "RastrumError", "InputError", "__version__",
                    "Canvas.wrap", "Canvas.to_image", "Canvas.save", "Canvas.array", "Canvas.width",
                    "Canvas.height", "Canvas.format"}
     public = {n for n in rastrum.__all__} | {
@@ -625,6 +625,7 @@ OTHER = [
      r"No such file|nonexistent"),
     ("Canvas.to_image", "an empty canvas", lambda: rastrum.Canvas(0, 0).to_image(), None, None),
     ("ALGORITHMS", "unknown entry point", lambda: rastrum.ALGORITHMS["bogus"], KeyError, r"bogus"),
+    ("AA_METHODS", "unknown entry point", lambda: rastrum.AA_METHODS["bogus"], KeyError, r"bogus"),
 ]
 EXTRA_COVERED = {row[0] for row in OTHER} | {"render_mesh", "scene", "Canvas.packed", "Canvas.clear_depth"}
 # rasterize's rows (every kind of bad geometry, value, dtype, transform and

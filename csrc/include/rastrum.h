@@ -993,6 +993,15 @@ typedef struct rast_prim {
     const rast_line_opts *line;    /* RAST_PRIM_POLYLINE */
     const void *pixel;
     rast_polygon64 polygon64;      /* RAST_PRIM_POLYGON64 */
+    /* RAST_PRIM_POLYGON, RAST_PRIM_TRIANGLES: NULL (zero-initialised) draws
+     * the binary fill with `fill` / `tri`; otherwise the anti-aliased one
+     * with these coverage options (rast_fill_polygon_aa,
+     * rast_fill_triangles_aa; `fill` / `tri` are then not read), its
+     * scratch rast_coverage_scratch_size for the band.  rast_render_bands
+     * paints it, rast_render_bands_coverage hands on its values;
+     * rast_render_bands_spans and the other kinds refuse a non-NULL aa
+     * (RAST_E_ARG). */
+    const struct rast_coverage_opts *aa;
 } rast_prim;
 
 /* A span of primitive `prim` (a pointer into the caller's array) in row y,
@@ -1013,7 +1022,8 @@ typedef struct rast_band_stats {
 /* Scratch bytes that draw every primitive of the scene in a band of
  * `band_rows` rows and `width` columns without halving: the largest need of
  * one primitive (polygons: rast_scratch_size, rast_scratch_size64; triangles:
- * rast_tri_scratch_size; polylines: none).  band_rows = 1 gives the least
+ * rast_tri_scratch_size; polylines: none; anti-aliased ones, prim->aa:
+ * rast_coverage_scratch_size).  band_rows = 1 gives the least
  * scratch with which rast_render_bands succeeds.  n may be 0 (prims may
  * then be NULL).  Errors: RAST_E_NULL, RAST_E_ARG (an unknown kind,
  * band_rows < 1), RAST_E_SIZE (width or band_rows past RAST_MAX_DIM, or a
@@ -1028,8 +1038,11 @@ RAST_API rast_status rast_scene_scratch_size(const rast_prim *prims, uint32_t n,
  * drawing the primitives in order with their own entry points.  `scratch`
  * aligned to RAST_SCRATCH_ALIGN; `stats` may be NULL.  Errors, all before
  * anything is written: those of each primitive's entry point,
- * RAST_E_ARG (an unknown kind, band_rows < 1), RAST_E_SCRATCH (some
- * primitive does not fit even a one-row band). */
+ * RAST_E_ARG (an unknown kind, band_rows < 1, aa on a kind other than
+ * polygon and triangles), RAST_E_SCRATCH (some primitive does not fit even
+ * a one-row band).  Anti-aliased primitives blend into what the ones
+ * before them drew, band by band: the same pixels as one full call (a
+ * pixel's coverage depends on its row alone). */
 RAST_API rast_status rast_render_bands(const rast_target *target, const rast_prim *prims,
                                        uint32_t n, int32_t band_rows, void *scratch,
                                        size_t scratch_bytes, rast_band_stats *stats);
@@ -1038,13 +1051,31 @@ RAST_API rast_status rast_render_bands(const rast_target *target, const rast_pri
  * with a framebuffer of a band, or none): band by band, in each band the
  * primitives in order, each primitive's spans as its own spans call gives
  * them.  The clip as for rast_fill_polygon_spans; errors as
- * rast_render_bands, RAST_E_NULL also for clip or span, all before the
- * first span. */
+ * rast_render_bands, RAST_E_NULL also for clip or span, RAST_E_ARG for an
+ * anti-aliased primitive (a span carries no coverage: use
+ * rast_render_bands_coverage), all before the first span. */
 RAST_API rast_status rast_render_bands_spans(const rast_prim *prims, uint32_t n,
                                              const rast_rect *clip, int32_t band_rows,
                                              rast_prim_span_fn span, void *user,
                                              void *scratch, size_t scratch_bytes,
                                              rast_band_stats *stats);
+
+/* The same with coverage (a display driver that blends, band by band):
+ * as rast_render_bands_spans, each span handed to `span` with `values`:
+ * NULL for a binary primitive's span (every pixel of it fully the
+ * primitive's), and for an anti-aliased one (prim->aa) the uint8 levels
+ * 1..255 of its pixels x0..x1-1, the runs rast_polygon_coverage_spans /
+ * rast_triangles_coverage_spans give for the band (valid during the call
+ * only).  Errors as rast_render_bands_spans (an anti-aliased primitive is
+ * accepted here), RAST_E_SIZE also for an anti-aliased primitive in a clip
+ * wider than RAST_MAX_DIM, all before the first span. */
+typedef void (*rast_prim_coverage_fn)(void *user, const rast_prim *prim, int32_t y, int32_t x0,
+                                      int32_t x1, const uint8_t *values);
+RAST_API rast_status rast_render_bands_coverage(const rast_prim *prims, uint32_t n,
+                                                const rast_rect *clip, int32_t band_rows,
+                                                rast_prim_coverage_fn span, void *user,
+                                                void *scratch, size_t scratch_bytes,
+                                                rast_band_stats *stats);
 
 /* ---- pycocotools' polygon rule (coco.c) --------------------------------------
  * Not the exact rule: the rule with which pycocotools (cocoapi maskApi.c,
@@ -1244,6 +1275,40 @@ RAST_API rast_status rast_triangles_coverage_spans(const rast_point *tris, uint3
                                                    const rast_rect *clip,
                                                    rast_coverage_span_fn span, void *user,
                                                    void *scratch, size_t scratch_bytes);
+
+/* ---- anti-aliased fills: coverage painted into a target (coverage_paint.c) ---
+ * rast_fill_polygon and rast_fill_triangles with coverage instead of the
+ * binary rule: each pixel of target->clip whose coverage level
+ * c = floor(a 255 + 1/2) (the RAST_COVERAGE_U8 value of `opts`' method,
+ * exactly as rast_polygon_coverage / rast_triangles_coverage give it) is
+ * not 0 is painted with `pixel` weighted by c; pixels with c = 0 are not
+ * touched.  Per format:
+ *  - GRAY8, RGB888, RGBA8888: every byte (channel) d of the pixel becomes
+ *    floor((s c + d (255 - c) + 127) / 255), s the value's byte: the
+ *    nearest integer to the exact source-over mix (never a tie); c = 255
+ *    writes s.  RGBA8888's A byte is mixed like the others (the value's
+ *    alpha is stored, as by rast_fill_polygon, not applied as opacity).
+ *  - RGB565: the same formula on each of R, G, B in their own levels
+ *    (0..31, 0..63, 0..31), the value's bits over the pixel's.
+ *  - MONO1: a threshold: the pixel gets the value iff c >= 128 (more than
+ *    half the pixel covered); else untouched.
+ *  - COUNT16: 1 added (saturating) wherever c > 0; `pixel` ignored (may
+ *    be NULL).
+ * A triangle batch is one region (its union), so a mesh drawn in one call
+ * has no seams and no double blending.  Scratch: rast_coverage_scratch_size
+ * (opts, npoints, clip width, clip height) (3 vertices per triangle).
+ * Errors, all before anything is written: those of rast_polygon_coverage
+ * (RAST_E_ARG for a bad method, rule or sample), and those of the target
+ * (RAST_E_NULL, RAST_E_SIZE, RAST_E_FORMAT; RAST_E_NULL for a NULL pixel
+ * except COUNT16).  The binary entry points are unchanged. */
+RAST_API rast_status rast_fill_polygon_aa(const rast_target *target,
+                                          const rast_polygon *polygon,
+                                          const rast_coverage_opts *opts, const void *pixel,
+                                          void *scratch, size_t scratch_bytes);
+RAST_API rast_status rast_fill_triangles_aa(const rast_target *target,
+                                            const rast_point *tris, uint32_t ntris,
+                                            const rast_coverage_opts *opts, const void *pixel,
+                                            void *scratch, size_t scratch_bytes);
 
 /* ---- region fill -------------------------------------------------------------
  * Seed fill (seed 001 section 3.6): starting at the seed pixel (x, y),

@@ -16,6 +16,16 @@
  */
 #include "paint.h"
 
+/* An anti-aliased primitive's scratch for a band (rast_coverage_scratch_size;
+ * a span clip's width past RAST_MAX_DIM never gets here: the spans call
+ * refuses aa). */
+static rast_status rast__cov_need_band(const rast_coverage_opts *aa, uint64_t npoints,
+                                       int32_t width, int32_t rows, size_t *need)
+{
+    if (npoints > RAST_MAX_POINTS) return RAST_E_TOO_MANY;
+    return rast_coverage_scratch_size(aa, (uint32_t)npoints, width, rows, need);
+}
+
 /* Scratch that primitive p needs for a band of `rows` rows and `width`
  * columns (also checks its kind and options). */
 static rast_status rast__prim_need(const rast_prim *p, int32_t width, int32_t rows,
@@ -23,6 +33,8 @@ static rast_status rast__prim_need(const rast_prim *p, int32_t width, int32_t ro
 {
     uint64_t npoints = 0;
     uint32_t k;
+    /* coverage is for 32-bit polygons and triangle batches */
+    if (p->aa && p->kind != RAST_PRIM_POLYGON && p->kind != RAST_PRIM_TRIANGLES) return RAST_E_ARG;
     /* 64-bit polygons outside the switch: a switch of four cases makes
      * GCC's Thumb-1 code call a case-table helper (__gnu_thumb1_case_uqi)
      * that firmware-check does not allow. */
@@ -45,8 +57,10 @@ static rast_status rast__prim_need(const rast_prim *p, int32_t width, int32_t ro
             npoints += p->polygon.ring_sizes[k];
             if (npoints > RAST_MAX_POINTS) return RAST_E_TOO_MANY;
         }
+        if (p->aa) return rast__cov_need_band(p->aa, npoints, width, rows, need);
         return rast__fill_need(p->fill, (uint32_t)npoints, width, rows, need);
     case RAST_PRIM_TRIANGLES:
+        if (p->aa) return rast__cov_need_band(p->aa, 3 * (uint64_t)p->count, width, rows, need);
         return rast__tri_fill_need(p->tri, width, rows, need);
     case RAST_PRIM_POLYLINE:
         if (!p->line) return RAST_E_NULL;
@@ -76,10 +90,12 @@ rast_status rast_scene_scratch_size(const rast_prim *prims, uint32_t n, int32_t 
     return RAST_OK;
 }
 
-/* Where the primitives go: a target (spans == NULL) or a span callback. */
+/* Where the primitives go: a target (target not NULL), a span callback
+ * (span) or a coverage callback (cspan). */
 typedef struct rast__scene {
     const rast_target *target;
     rast_prim_span_fn span;
+    rast_prim_coverage_fn cspan;
     void *user;
     const rast_prim *prim; /* the primitive being drawn, for the callback */
     void *scratch;
@@ -87,10 +103,11 @@ typedef struct rast__scene {
 } rast__scene;
 
 static void rast__scene_init(rast__scene *s, const rast_target *target, rast_prim_span_fn span,
-                             void *user, void *scratch, size_t bytes)
+                             rast_prim_coverage_fn cspan, void *user, void *scratch, size_t bytes)
 {
     s->target = target;
     s->span = span;
+    s->cspan = cspan;
     s->user = user;
     s->prim = NULL;
     s->scratch = scratch;
@@ -100,7 +117,14 @@ static void rast__scene_init(rast__scene *s, const rast_target *target, rast_pri
 static void rast__scene_span(void *user, int32_t y, int32_t x0, int32_t x1)
 {
     const rast__scene *s = (const rast__scene *)user;
-    s->span(s->user, s->prim, y, x0, x1);
+    if (s->span) s->span(s->user, s->prim, y, x0, x1);
+    else s->cspan(s->user, s->prim, y, x0, x1, NULL); /* binary: all of each pixel */
+}
+
+static void rast__scene_cov(void *user, int32_t y, int32_t x0, int32_t x1, const uint8_t *values)
+{
+    const rast__scene *s = (const rast__scene *)user;
+    s->cspan(s->user, s->prim, y, x0, x1, values);
 }
 
 /* Draw primitive p inside `band` (inside the clip) through its entry point. */
@@ -112,6 +136,11 @@ static rast_status rast__prim_draw(rast__scene *s, const rast_prim *p, const ras
         if (p->kind == RAST_PRIM_POLYGON64) /* (outside the switch: see rast__prim_need) */
             return rast_fill_polygon64(&t, &p->polygon64, p->fill, p->pixel, s->scratch,
                                        s->bytes);
+        if (p->aa && p->kind == RAST_PRIM_POLYGON)
+            return rast_fill_polygon_aa(&t, &p->polygon, p->aa, p->pixel, s->scratch, s->bytes);
+        if (p->aa) /* RAST_PRIM_TRIANGLES: rast__prim_need refused the others */
+            return rast_fill_triangles_aa(&t, p->points, p->count, p->aa, p->pixel, s->scratch,
+                                          s->bytes);
         switch (p->kind) {
         case RAST_PRIM_POLYGON:
             return rast_fill_polygon(&t, &p->polygon, p->fill, p->pixel, s->scratch, s->bytes);
@@ -125,6 +154,13 @@ static rast_status rast__prim_draw(rast__scene *s, const rast_prim *p, const ras
         }
     }
     s->prim = p;
+    if (p->aa && !s->cspan) return RAST_E_ARG; /* a span has no coverage values */
+    if (p->aa && p->kind == RAST_PRIM_POLYGON)
+        return rast_polygon_coverage_spans(&p->polygon, p->aa, band, rast__scene_cov, s,
+                                           s->scratch, s->bytes);
+    if (p->aa) /* RAST_PRIM_TRIANGLES: rast__prim_need refused the others */
+        return rast_triangles_coverage_spans(p->points, p->count, p->aa, band, rast__scene_cov, s,
+                                             s->scratch, s->bytes);
     if (p->kind == RAST_PRIM_POLYGON64)
         return rast_fill_polygon64_spans(&p->polygon64, p->fill, band, rast__scene_span, s,
                                          s->scratch, s->bytes);
@@ -213,20 +249,41 @@ rast_status rast_render_bands(const rast_target *target, const rast_prim *prims,
     rast_rect clip;
     rast_status st = rast__target_check(target, &clip);
     if (st != RAST_OK) return st;
-    rast__scene_init(&s, target, NULL, NULL, scratch, scratch_bytes);
+    rast__scene_init(&s, target, NULL, NULL, NULL, scratch, scratch_bytes);
     return rast__render(&s, prims, n, &clip, band_rows, stats);
+}
+
+/* The spans calls: a checked clip, the scene to `span` or `cspan`. */
+static rast_status rast__render_to(const rast_prim *prims, uint32_t n, const rast_rect *clip,
+                                   int32_t band_rows, rast_prim_span_fn span,
+                                   rast_prim_coverage_fn cspan, void *user, void *scratch,
+                                   size_t scratch_bytes, rast_band_stats *stats)
+{
+    rast__scene s;
+    rast_rect c;
+    rast_status st;
+    if (!clip || (!span && !cspan)) return RAST_E_NULL;
+    st = rast__span_clip(clip, &c);
+    if (st != RAST_OK) return st;
+    rast__scene_init(&s, NULL, span, cspan, user, scratch, scratch_bytes);
+    return rast__render(&s, prims, n, &c, band_rows, stats);
 }
 
 rast_status rast_render_bands_spans(const rast_prim *prims, uint32_t n, const rast_rect *clip,
                                     int32_t band_rows, rast_prim_span_fn span, void *user,
                                     void *scratch, size_t scratch_bytes, rast_band_stats *stats)
 {
-    rast__scene s;
-    rast_rect c;
-    rast_status st;
-    if (!clip || !span) return RAST_E_NULL;
-    st = rast__span_clip(clip, &c);
-    if (st != RAST_OK) return st;
-    rast__scene_init(&s, NULL, span, user, scratch, scratch_bytes);
-    return rast__render(&s, prims, n, &c, band_rows, stats);
+    if (!span) return RAST_E_NULL;
+    return rast__render_to(prims, n, clip, band_rows, span, NULL, user, scratch, scratch_bytes,
+                           stats);
+}
+
+rast_status rast_render_bands_coverage(const rast_prim *prims, uint32_t n, const rast_rect *clip,
+                                       int32_t band_rows, rast_prim_coverage_fn span, void *user,
+                                       void *scratch, size_t scratch_bytes,
+                                       rast_band_stats *stats)
+{
+    if (!span) return RAST_E_NULL;
+    return rast__render_to(prims, n, clip, band_rows, NULL, span, user, scratch, scratch_bytes,
+                           stats);
 }

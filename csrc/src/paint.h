@@ -22,7 +22,23 @@ typedef struct rast__format {
     void (*pack)(const unsigned char *rgba, unsigned char *v);
     /* columns [x, x + n) of `row` from n RGBA colours (4 bytes each) */
     void (*put)(unsigned char *row, int32_t x, int32_t n, const unsigned char *rgba);
+    /* columns [x0, x1) of `row` painted with the value v weighted by the
+     * coverage levels cov[0 .. x1 - x0) (uint8, floor(a 255 + 1/2)):
+     * channels blended by rast__blend8, MONO1 thresholded, COUNT16 counted
+     * (see rast_fill_polygon_aa) */
+    void (*blend)(unsigned char *row, int32_t x0, int32_t x1, const uint8_t *cov,
+                  const unsigned char *v);
 } rast__format;
+
+/* One channel of level s (the fill's) over level d (the pixel's) with
+ * coverage level a (0..255): floor((s a + d (255 - a) + 127) / 255), the
+ * nearest integer to the exact mix (s a + d (255 - a)) / 255, which is
+ * never a tie (255 is odd).  a = 255 gives s, a = 0 gives d; levels up to
+ * 255 (an 8-bit channel, or rgb565's 5- and 6-bit ones). */
+static inline unsigned rast__blend8(unsigned s, unsigned d, unsigned a)
+{
+    return (s * a + d * (255u - a) + 127u) / 255u;
+}
 
 extern const rast__format rast__formats[RAST_FORMAT_COUNT_];
 

@@ -1,28 +1,42 @@
 /* Binding glue of the coverage calls (not part of the core): snapping,
  * scratch from malloc, and one C call per Python call, writing a whole
- * (height, width) array of uint8, uint16 or uint64 (2^-62 units). */
+ * (height, width) array of uint8, uint16 or uint64 (2^-62 units), or
+ * painting the coverage into a target (rast_fill_polygon_aa,
+ * rast_fill_triangles_aa). */
 
 #include <stdlib.h>
 #include "coverage.h"
 
 static const int32_t rastpy_cov_size[3] = {1, 2, 8};
 
-static long rastpy_coverage(void *out, int32_t height, int32_t width, int format,
-                            const double *xy, uint32_t npoints, const uint32_t *ring_sizes,
-                            uint32_t nrings, int triangles, const rast_coverage_opts *opts)
-{
+/* Where the values go: an array (target NULL: out, format, its clip) or a
+ * target painted with `pixel`. */
+typedef struct rastpy_cov_dest {
+    void *out;
+    int format;
     rast_rect clip;
+    const rast_target *target;
+    const void *pixel;
+} rastpy_cov_dest;
+
+static long rastpy_coverage(const rastpy_cov_dest *d, const double *xy, uint32_t npoints,
+                            const uint32_t *ring_sizes, uint32_t nrings, int triangles,
+                            const rast_coverage_opts *opts)
+{
     rast_polygon poly;
     rast_status st;
     size_t need;
     int32_t *pts;
     void *scratch;
     long bad;
-    if (format < 0 || format > 2) return RAST_E_ARG;
-    clip.x0 = clip.y0 = 0;
-    clip.x1 = width;
-    clip.y1 = height;
-    st = rast_coverage_scratch_size(opts, npoints, width, height, &need);
+    const rast_rect *clip = d->target ? &d->target->clip : &d->clip;
+    ptrdiff_t stride = 0;
+    if (!d->target) {
+        if (d->format < 0 || d->format > 2) return RAST_E_ARG;
+        stride = (ptrdiff_t)(d->clip.x1 - d->clip.x0) * rastpy_cov_size[d->format];
+    }
+    st = rast_coverage_scratch_size(opts, npoints, clip->x1 - clip->x0, clip->y1 - clip->y0,
+                                    &need);
     if (st != RAST_OK) return st;
     pts = (int32_t *)malloc((size_t)npoints * sizeof(rast_point) + 1);
     if (!pts) return RASTPY_E_NOMEM;
@@ -36,31 +50,77 @@ static long rastpy_coverage(void *out, int32_t height, int32_t width, int format
         free(pts);
         return RASTPY_E_NOMEM;
     }
-    if (triangles) {
-        st = rast_triangles_coverage((const rast_point *)(void *)pts, npoints / 3, opts, &clip,
-                                     (rast_coverage_format)format, out,
-                                     (ptrdiff_t)width * rastpy_cov_size[format], scratch, need);
-    } else {
-        poly.points = (const rast_point *)(void *)pts;
-        poly.ring_sizes = ring_sizes ? ring_sizes : &npoints;
-        poly.nrings = ring_sizes ? nrings : 1;
-        st = rast_polygon_coverage(&poly, opts, &clip, (rast_coverage_format)format, out,
-                                   (ptrdiff_t)width * rastpy_cov_size[format], scratch, need);
-    }
+    poly.points = (const rast_point *)(void *)pts;
+    poly.ring_sizes = ring_sizes ? ring_sizes : &npoints;
+    poly.nrings = ring_sizes ? nrings : 1;
+    if (d->target && triangles)
+        st = rast_fill_triangles_aa(d->target, poly.points, npoints / 3, opts, d->pixel, scratch,
+                                    need);
+    else if (d->target)
+        st = rast_fill_polygon_aa(d->target, &poly, opts, d->pixel, scratch, need);
+    else if (triangles)
+        st = rast_triangles_coverage(poly.points, npoints / 3, opts, clip,
+                                     (rast_coverage_format)d->format, d->out, stride, scratch,
+                                     need);
+    else
+        st = rast_polygon_coverage(&poly, opts, clip, (rast_coverage_format)d->format, d->out,
+                                   stride, scratch, need);
     free(scratch);
     free(pts);
     return st;
+}
+
+static rastpy_cov_dest rastpy_array(void *out, int32_t height, int32_t width, int format)
+{
+    rastpy_cov_dest d;
+    d.out = out;
+    d.format = format;
+    d.clip.x0 = d.clip.y0 = 0;
+    d.clip.x1 = width;
+    d.clip.y1 = height;
+    d.target = NULL;
+    d.pixel = NULL;
+    return d;
+}
+
+static rastpy_cov_dest rastpy_paint(const rast_target *target, const void *pixel)
+{
+    rastpy_cov_dest d = rastpy_array(NULL, 0, 0, 0);
+    d.target = target;
+    d.pixel = pixel;
+    return d;
 }
 
 long rastpy_polygon_coverage(void *out, int32_t height, int32_t width, int format,
                              const double *xy, uint32_t npoints, const uint32_t *ring_sizes,
                              uint32_t nrings, const rast_coverage_opts *opts)
 {
-    return rastpy_coverage(out, height, width, format, xy, npoints, ring_sizes, nrings, 0, opts);
+    rastpy_cov_dest d = rastpy_array(out, height, width, format);
+    return rastpy_coverage(&d, xy, npoints, ring_sizes, nrings, 0, opts);
 }
 
 long rastpy_triangles_coverage(void *out, int32_t height, int32_t width, int format,
                                const double *xy, uint32_t ntris, const rast_coverage_opts *opts)
 {
-    return rastpy_coverage(out, height, width, format, xy, 3 * ntris, NULL, 0, 1, opts);
+    rastpy_cov_dest d = rastpy_array(out, height, width, format);
+    return rastpy_coverage(&d, xy, 3 * ntris, NULL, 0, 1, opts);
+}
+
+long rastpy_fill_polygon_aa(const rast_target *target, const double *xy, uint32_t npoints,
+                            const uint32_t *ring_sizes, uint32_t nrings,
+                            const rast_coverage_opts *opts, const void *pixel)
+{
+    rastpy_cov_dest d;
+    if (!target) return RAST_E_NULL;
+    d = rastpy_paint(target, pixel);
+    return rastpy_coverage(&d, xy, npoints, ring_sizes, nrings, 0, opts);
+}
+
+long rastpy_fill_triangles_aa(const rast_target *target, const double *xy, uint32_t ntris,
+                              const rast_coverage_opts *opts, const void *pixel)
+{
+    rastpy_cov_dest d;
+    if (!target) return RAST_E_NULL;
+    d = rastpy_paint(target, pixel);
+    return rastpy_coverage(&d, xy, 3 * ntris, NULL, 0, 1, opts);
 }

@@ -1,6 +1,7 @@
 /* coverage.h - the binding glue of the coverage entry points
  * (python/glue/coverage.c): snap float64 input, take scratch from malloc,
- * one call to rast_polygon_coverage or rast_triangles_coverage.
+ * one call to rast_polygon_coverage or rast_triangles_coverage (an array),
+ * or to rast_fill_polygon_aa or rast_fill_triangles_aa (a target).
  * Results as rastpy.h's: 0, a negative status (or RASTPY_E_NOMEM), or
  * k + 1 when point k is bad. */
 #ifndef RASTPY_COVERAGE_H
@@ -15,6 +16,11 @@ long rastpy_polygon_coverage(void *out, int32_t height, int32_t width, int forma
 long rastpy_triangles_coverage(void *out, int32_t height, int32_t width, int format,
                                const double *xy, uint32_t ntris,
                                const rast_coverage_opts *opts);
+long rastpy_fill_polygon_aa(const rast_target *target, const double *xy, uint32_t npoints,
+                            const uint32_t *ring_sizes, uint32_t nrings,
+                            const rast_coverage_opts *opts, const void *pixel);
+long rastpy_fill_triangles_aa(const rast_target *target, const double *xy, uint32_t ntris,
+                              const rast_coverage_opts *opts, const void *pixel);
 /* cdef-end */
 
 #endif

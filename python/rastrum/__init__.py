@@ -18,11 +18,11 @@ from . import coco
 from .ml import labels, masks
 from .scene import render_mesh
 from .gis import rasterize, IDENTITY
-from .coverage import METHODS as _COVERAGE_METHODS, polygon_coverage, triangles_coverage
+from .coverage import AA_ENTRIES as _AA_ENTRIES, METHODS as _COVERAGE_METHODS, polygon_coverage, triangles_coverage
 
 __all__ = ["polygon_mask", "triangles_mask", "triangles_count", "line_pixels", "point_in_triangle", "Canvas",
            "ALGORITHMS", "RastrumError", "InputError", "__version__", "render_mesh", "scene", "rasterize",
-           "IDENTITY", "coco", "masks", "labels", "polygon_coverage", "triangles_coverage"]
+           "IDENTITY", "coco", "masks", "labels", "polygon_coverage", "triangles_coverage", "AA_METHODS"]
 
 _v = lib.rast_version_number()
 __version__ = "%d.%d.%d" % (_v // 10000, _v // 100 % 100, _v % 100)
@@ -43,6 +43,14 @@ ALGORITHMS["Canvas.line"] = {"bresenham": (), "dda": ()}
 # a triangle batch is one region (a union), whatever the rule.
 ALGORITHMS["polygon_coverage"] = {name: ("evenodd", "nonzero") for name in _COVERAGE_METHODS}
 ALGORITHMS["triangles_coverage"] = {name: ("evenodd", "nonzero") for name in _COVERAGE_METHODS}
+
+#: The Canvas fills that take ``aa=`` (anti-aliased: coverage blended into
+#: the pixels), and for each the methods ``aa`` accepts with the fill rules
+#: each takes.  ``aa=None`` (the default) is the binary fill of
+#: ``ALGORITHMS``; shaded fills (vertex colours, depth, per-triangle colours)
+#: have no ``aa=``.
+AA_METHODS = {entry: {name: ("evenodd", "nonzero") for name in _COVERAGE_METHODS}
+              for entry in _AA_ENTRIES}
 
 def polygon_mask(rings, shape, *, rule="evenodd", algorithm="aet", subpixel_bits=8, sample_offset=0.5,
                  rounding="exact", boundary="exact"):

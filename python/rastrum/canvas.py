@@ -5,6 +5,7 @@ import functools
 import numpy as np
 
 from . import _core
+from . import coverage as _coverage
 from . import lines as _lines
 from . import shade as _shade
 from . import triangles as _triangles
@@ -29,6 +30,8 @@ def _label_spill(method):
         names = method.__code__.co_varnames[1:method.__code__.co_argcount]
         kwargs.update(zip(names, args))
         color = kwargs.get("color", None)
+        if kwargs.get("aa") is not None:
+            raise InputError("a label canvas holds labels, which do not blend: aa=None")
         if kwargs.get("vertex_colors") is not None or kwargs.get("depth") is not None:
             raise InputError("a label canvas has no channels to shade: give one int color")
         value = np.frombuffer(self._value_bytes(color), self._array.dtype)[0]
@@ -297,14 +300,46 @@ class Canvas:
     def format(self):
         return self._format
 
+    def _fill_aa(self, geometry, color, aa, rule, subpixel_bits, sample_offset, entry, *,
+                 vertex_colors=None, depth=None, **binary_only):
+        """An anti-aliased fill (``aa=`` not None) of a polygon's rings, or of
+        a checked (N, 3, 2) triangle batch for the triangle entries."""
+        if vertex_colors is not None or depth is not None:
+            raise InputError("%s: aa=%r paints one colour; vertex_colors and depth are for binary "
+                             "shaded fills (aa=None)" % (entry, aa))
+        opts = _coverage.aa_opts(aa, rule, subpixel_bits, sample_offset, entry, binary_only)
+        if self._format == "label":
+            raise InputError("a label canvas holds labels, which do not blend: aa=None")
+        if color is None:
+            raise InputError("%s needs color" % entry)
+        if np.ndim(color) >= 2:
+            raise InputError("%s: aa=%r takes one colour for the whole batch, not one per triangle"
+                             % (entry, aa))
+        pixel = self._pixel(color)
+        if entry == "Canvas.fill_polygon":
+            _coverage.fill_polygon_aa(self._writable(), geometry, pixel, opts)
+        else:
+            _coverage.fill_triangles_aa(self._writable(), geometry, pixel, opts,
+                                        "tri" if entry == "Canvas.fill_triangle" else "tris")
+
     @_label_spill
     def fill_polygon(self, rings, color=None, *, rule="evenodd", algorithm="aet", subpixel_bits=8,
                      sample_offset=0.5, rounding="exact", boundary="exact", vertex_colors=None,
-                     shading="gouraud", precision="exact"):
+                     shading="gouraud", precision="exact", aa=None):
         """Paint `color` on every pixel whose sample is inside the polygon.
 
         Arguments as :func:`rastrum.polygon_mask`.  Nothing is written when
         an argument is bad (an InputError says which; see the class).
+
+        With `aa` (one of ``AA_METHODS["Canvas.fill_polygon"]``: "area",
+        "ss2".."ss16", "accumulate"; see :func:`rastrum.polygon_coverage`)
+        the fill is anti-aliased: each pixel's coverage level c (0..255, as
+        ``polygon_coverage(..., method=aa)`` gives it for the same `rule`,
+        `subpixel_bits` and `sample_offset`) weights `color`: every channel
+        d becomes (s*c + d*(255 - c) + 127) // 255 (rgb565: on its 5/6/5
+        bits; rgba8888: alpha too), mono1 takes the colour where c >= 128,
+        pixels with c = 0 are untouched.  `algorithm`, `rounding`,
+        `boundary` and `vertex_colors` are for binary fills (aa=None) only.
 
         With `vertex_colors` instead of `color`: one colour per vertex, an
         (N, C) array-like for the N vertices of all rings in order (or a
@@ -316,6 +351,12 @@ class Canvas:
         `vertex_colors`, as for :meth:`fill_triangle` and
         :meth:`fill_triangles`.
         """
+        if aa is not None:
+            self._fill_aa(rings, color, aa, rule, subpixel_bits, sample_offset, "Canvas.fill_polygon",
+                          algorithm=(algorithm, "aet"), rounding=(rounding, "exact"),
+                          boundary=(boundary, "exact"), shading=(shading, "gouraud"),
+                          precision=(precision, "exact"), vertex_colors=vertex_colors)
+            return
         opts = _core.fill_opts(algorithm, rule, subpixel_bits, sample_offset, rounding, boundary)
         if vertex_colors is not None:
             from . import shading as _shading
@@ -335,7 +376,7 @@ class Canvas:
     @_label_spill
     def fill_triangle(self, tri, color=None, *, vertex_colors=None, shading="gouraud", precision="exact",
                       fraction_bits=16, algorithm="edge", subpixel_bits=8, sample_offset=0.5,
-                      rounding="exact", boundary="exact"):
+                      rounding="exact", boundary="exact", aa=None):
         """Paint `color` on every pixel the triangle `tri` owns.
 
         `tri` is three (x, y) vertices, in either winding order; the other
@@ -343,8 +384,15 @@ class Canvas:
         triangle paints nothing.  Nothing is written when an argument is bad.
         Give exactly one of `color` and `vertex_colors` (a (3, C) array, a
         colour per vertex, shaded as by :meth:`fill_triangles`), as for
-        :meth:`fill_polygon`.
+        :meth:`fill_polygon`.  `aa`: anti-aliased, as :meth:`fill_triangles`.
         """
+        if aa is not None:
+            self._fill_aa(_triangles.tris_f64(tri, single=True), color, aa, "nonzero", subpixel_bits,
+                          sample_offset, "Canvas.fill_triangle", algorithm=(algorithm, "edge"),
+                          rounding=(rounding, "exact"), boundary=(boundary, "exact"),
+                          shading=(shading, "gouraud"), precision=(precision, "exact"),
+                          vertex_colors=vertex_colors)
+            return
         if vertex_colors is not None:
             if color is not None:
                 raise InputError("fill_triangle takes exactly one of color and vertex_colors")
@@ -364,7 +412,7 @@ class Canvas:
     @_label_spill
     def fill_triangles(self, tris, color=None, *, vertex_colors=None, shading="gouraud", precision="exact",
                        fraction_bits=16, depth=None, algorithm="edge", subpixel_bits=8, sample_offset=0.5,
-                       rounding="exact", boundary="exact"):
+                       rounding="exact", boundary="exact", aa=None):
         """Paint every pixel owned by a triangle of the batch.
 
         `tris` is an (N, 3, 2) array-like of (x, y) vertices, drawn in one C
@@ -400,6 +448,15 @@ class Canvas:
         buffer's, which then takes it.  ``clear_depth()`` drops the buffer.
         Without `depth`, nothing depth-related is made or computed.
 
+        `aa`: one of ``AA_METHODS["Canvas.fill_triangles"]`` ("area",
+        "ss2".."ss16", "accumulate") paints one `color` anti-aliased over
+        the batch's coverage as :func:`rastrum.triangles_coverage` gives it:
+        the batch is ONE region (its union), so a mesh drawn in one call
+        has no seams and nothing is blended twice.  The blend is
+        :meth:`fill_polygon`'s.  `algorithm`, `rounding`, `boundary`,
+        `vertex_colors`, `depth` and per-triangle colours are for binary
+        fills (aa=None) only.
+
         Examples
         --------
         >>> import rastrum
@@ -411,6 +468,13 @@ class Canvas:
                [9, 9, 9, 9, 0, 0],
                [9, 9, 9, 9, 0, 0]], dtype=uint8)
         """
+        if aa is not None:
+            self._fill_aa(_triangles.tris_f64(tris), color, aa, "nonzero", subpixel_bits, sample_offset,
+                          "Canvas.fill_triangles", algorithm=(algorithm, "edge"),
+                          rounding=(rounding, "exact"), boundary=(boundary, "exact"),
+                          shading=(shading, "gouraud"), precision=(precision, "exact"),
+                          vertex_colors=vertex_colors, depth=depth)
+            return
         opts = _triangles.tri_opts(algorithm, subpixel_bits, sample_offset, rounding, boundary)
         batch = _triangles.tris_f64(tris)
         precision = _core.shading_precision(shading, precision)

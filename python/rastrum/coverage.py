@@ -74,6 +74,14 @@ def _check(result, pts, opts, what, sizes):
     _core._check_glue(result, pts, opts.subpixel_bits, what, sizes)
 
 
+def _ntris(batch):
+    """The triangles of an (N, 3, 2) batch, at most what one call takes."""
+    n = batch.shape[0]
+    if 3 * n > lib.RAST_MAX_POINTS:
+        raise InputError("%d triangles; at most %d per call" % (n, lib.RAST_MAX_POINTS // 3))
+    return n
+
+
 def _finish(raw, d):
     if d in (_U8, _U16):
         return raw
@@ -163,9 +171,7 @@ def triangles_coverage(tris, shape, *, method="area", subpixel_bits=8, sample_of
     d = _dtype(dtype)
     h, w = _core.shape2(shape)
     t = tris_f64(tris)
-    n = t.shape[0]
-    if 3 * n > lib.RAST_MAX_POINTS:
-        raise InputError("%d triangles; at most %d per call" % (n, lib.RAST_MAX_POINTS // 3))
+    n = _ntris(t)
     fmt = _DTYPES[d]
     raw = np.empty((h, w), _C_DTYPE[fmt])
     if n == 0:
@@ -177,3 +183,50 @@ def triangles_coverage(tris, shape, *, method="area", subpixel_bits=8, sample_of
     if result:
         _check(result, t.reshape(-1, 2), opts, "tris", 3)
     return _finish(raw, d)
+
+
+# ---- anti-aliased Canvas fills (aa=) -----------------------------------------------
+
+#: Canvas fills that take ``aa=``, and for each the methods it accepts
+#: (with the fill rules each takes; a triangle batch is one region, a union,
+#: whatever the rule).  ``aa=None`` (the default) is the binary fill of
+#: ``ALGORITHMS``; shaded fills (``vertex_colors=``, ``depth=``, per-triangle
+#: colours) have no ``aa=``.
+AA_ENTRIES = ("Canvas.fill_polygon", "Canvas.fill_triangle", "Canvas.fill_triangles")
+
+
+def aa_opts(aa, rule, subpixel_bits, sample_offset, entry, binary_only):
+    """The coverage options of ``aa=`` for `entry`, or InputError.
+
+    `binary_only` maps the names of arguments that only binary fills take
+    to (value given, default string): any not at its default is refused,
+    naming the alternatives."""
+    if not isinstance(aa, str) or aa not in METHODS:
+        raise InputError("aa=%r for %s: choose None (binary, the default) or one of: %s"
+                         % (aa, entry, ", ".join(METHODS)))
+    for name, (value, default) in binary_only.items():
+        if not (isinstance(value, str) and value == default):
+            raise InputError("%s: %s=%r is for binary fills (aa=None); with aa=%r leave it out "
+                             "(%s=%r)" % (entry, name, value, aa, name, default))
+    return _opts(aa, rule, subpixel_bits, sample_offset, entry)
+
+
+def fill_polygon_aa(target, rings, pixel, opts):
+    """rast_fill_polygon_aa of `rings` (as polygon_mask takes them)."""
+    pts, sizes, nrings = _core._points(rings)
+    if not nrings:
+        return
+    result = lib.rastpy_fill_polygon_aa(target, ffi.from_buffer("double[]", pts), len(pts), sizes,
+                                        nrings, opts, pixel)
+    if result:
+        _check(result, pts, opts, "rings", [len(pts)] if nrings == 1 else sizes)
+
+
+def fill_triangles_aa(target, batch, pixel, opts, what="tris"):
+    """rast_fill_triangles_aa of the (N, 3, 2) float64 `batch`, one region."""
+    n = _ntris(batch)
+    if n == 0:
+        return
+    result = lib.rastpy_fill_triangles_aa(target, ffi.from_buffer("double[]", batch), n, opts, pixel)
+    if result:
+        _check(result, batch.reshape(-1, 2), opts, what, 3)

@@ -18,8 +18,13 @@
  *    many (columns covered on every fine row, triangles inside skipped);
  *  - rast_polygon_coverage_spans and rast_triangles_coverage_spans
  *    (uint8): the same values, in ordered runs of values not 0 inside the
- *    clip.
+ *    clip;
+ *  - rast_fill_polygon_aa / rast_fill_triangles_aa (uint8, a clip inside
+ *    the target): a target of any format with fuzzed pixels becomes the
+ *    documented blend (tests/c/blend_ref.h) of those values, nothing
+ *    around the clip written.
  */
+#include "blend_ref.h"
 #include "fuzz.h"
 
 #define MAXPTS 24
@@ -84,6 +89,43 @@ static rast_status run(const rast_polygon *pg, const rast_point *tris, uint32_t 
                         : rast_triangles_coverage(tris, ntris, o, clip, f, buf, stride, mem, bytes);
     fz_scratch_check(&scratch);
     return st;
+}
+
+/* The uint8 values in `out` (stride `stride`) painted into a target of a
+ * fuzzed format and fuzzed pixels whose clip is `clip`: the target must
+ * become blend_ref of them, its guards and the pixels outside the clip
+ * untouched (fz_target's frame). */
+static fz_target paint_t;
+static unsigned char paint_want[sizeof paint_t.mem];
+
+static void paint_check(fz_in *in, const rast_polygon *pg, const rast_point *tris, uint32_t ntris,
+                        int triangles, const rast_coverage_opts *o, const rast_rect *clip,
+                        ptrdiff_t stride, size_t need)
+{
+    rast_format pf = (rast_format)fz_below(in, RAST_FORMAT_COUNT_);
+    unsigned char value[4];
+    int32_t x, y, row = 0;
+    size_t k;
+    void *mem;
+    rast_status st;
+    fz_target_init(&paint_t, clip->x1, clip->y1, pf, clip);
+    if (pf == RAST_FORMAT_MONO1) rast_format_stride(pf, clip->x1, &row);
+    else row = clip->x1 * paint_t.bpp;
+    for (y = 0; y < clip->y1; y++)
+        for (x = 0; x < row; x++)
+            ((unsigned char *)paint_t.t.pixels)[y * paint_t.t.stride + x] = (unsigned char)fz_u8(in);
+    for (k = 0; k < 4; k++) value[k] = (unsigned char)fz_u8(in);
+    memcpy(paint_want, paint_t.mem, sizeof paint_want);
+    for (y = clip->y0; y < clip->y1; y++)
+        for (x = clip->x0; x < clip->x1; x++)
+            blend_ref(pf, paint_want + ((unsigned char *)paint_t.t.pixels - paint_t.mem) + y * paint_t.t.stride,
+                      x, out[(y - clip->y0) * stride + (x - clip->x0)], value);
+    mem = fz_scratch_init(&scratch, need);
+    st = triangles ? rast_fill_triangles_aa(&paint_t.t, tris, ntris, o, value, mem, need)
+                   : rast_fill_polygon_aa(&paint_t.t, pg, o, value, mem, need);
+    fz_scratch_check(&scratch);
+    FZ_ASSERT(st == RAST_OK);
+    FZ_ASSERT(memcmp(paint_t.mem, paint_want, sizeof paint_want) == 0);
 }
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
@@ -213,6 +255,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         for (y = 0; y < ch; y++)
             FZ_ASSERT(memcmp(cspans.img + y * CW, out + y * stride, (size_t)cw) == 0);
     }
+    if (f == RAST_COVERAGE_U8 && clip.x0 >= 0 && clip.y0 >= 0) paint_check(&in, &pg, pts, ntris, shape == 2, &o, &clip, stride, need);
     if (kb) { /* the per-sample reference, k times finer */
         const int32_t K = 1 << kb, sf = o.subpixel_bits >= kb ? o.subpixel_bits - kb : 0;
         uint32_t base = 0, t;

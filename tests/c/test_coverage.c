@@ -282,9 +282,49 @@ static void test_ss_wide(void)
 }
 #undef WW
 
-/* Triangle batches by supersampling: the union of the triangles, each
- * filled on its own ("xscan" on the vertices scaled by k, overwriting a
- * byte target: a union, whatever overlaps) and counted.  Overlapping,
+/* A triangle batch big[0 .. 3 nt) (clip-relative, S = s) by ssK (k =
+ * 2^kb) into out (the clip, rows of ow words, format f; tris[] holds the
+ * batch moved to the clip) against the union of its triangles, each filled
+ * on its own ("xscan" on the vertices scaled by k, overwriting a byte
+ * target: a union, whatever overlaps) into fine (rows of fs bytes), big[]
+ * scaled by k on the way. */
+static void check_ss_batch(rast_point *big, rast_point *tris, int32_t nt, int32_t kb, int32_t s,
+                           rast_coverage_format f, const rast_rect *clip, uint64_t *out,
+                           int32_t ow, uint8_t *fine, size_t fs)
+{
+    const int32_t K = 1 << kb, g = 1 << s, w = clip->x1 - clip->x0, h = clip->y1 - clip->y0;
+    rast_coverage_opts o;
+    rast_fill_opts fo;
+    rast_target t;
+    uint8_t one = 1;
+    int32_t i;
+    for (i = 0; i < 3 * nt; i++) {
+        tris[i].x = big[i].x + clip->x0 * g;
+        tris[i].y = big[i].y + clip->y0 * g;
+        big[i].x = s >= kb ? big[i].x : big[i].x * (K >> s);
+        big[i].y = s >= kb ? big[i].y : big[i].y * (K >> s);
+    }
+    ss_opts(kb, s, &o, &fo); /* o.rule: ignored */
+    fo.rule = RAST_RULE_EVENODD; /* one triangle: either */
+    memset(out, 0xA5, (size_t)h * (size_t)ow * 8);
+    CHECK(cover(NULL, nt ? tris : NULL, (uint32_t)nt, &o, clip, f, out, (ptrdiff_t)ow * 8) ==
+          RAST_OK);
+    memset(fine, 0, (size_t)(h * K) * fs);
+    CHECK(rast_target_init(&t, fine, w * K, h * K, (int32_t)fs, RAST_FORMAT_GRAY8) == RAST_OK);
+    for (i = 0; i < nt; i++) {
+        uint32_t three = 3;
+        rast_polygon p = {&big[3 * i], &three, 1};
+        size_t need;
+        unsigned char *sc;
+        CHECK(rast_scratch_size(&fo, 3, w * K, h * K, &need) == RAST_OK);
+        sc = scratch_for(need);
+        CHECK(rast_fill_polygon(&t, &p, &fo, &one, sc, need) == RAST_OK);
+    }
+    check_ss_image(out, ow, w, h, f, kb, fine, fs, 1);
+}
+
+/* Triangle batches by supersampling against the union of the triangles
+ * (check_ss_batch).  Overlapping,
  * repeated in the other orientation, degenerate, with horizontal edges,
  * reaching past the clip, on a clip off the origin wider than a word of
  * bits, in every format. */
@@ -295,15 +335,11 @@ static void test_ss_triangles(void)
     static uint8_t fine[8 * 4][8 * WT];
     static uint64_t out[4][WT];
     for (iter = 0; iter < n; iter++) {
-        int32_t kb = 1 + (int32_t)(rng() % 3), K = 1 << kb, s = (int32_t)(rng() % 4), g = 1 << s;
+        int32_t kb = 1 + (int32_t)(rng() % 3), s = (int32_t)(rng() % 4), g = 1 << s;
         int32_t nt = (int32_t)(rng() % 7), i, h = 4;
         rast_coverage_format f = (rast_coverage_format)(rng() % 3);
         rast_point tris[3 * 6], big[3 * 6];
-        rast_coverage_opts o;
-        rast_fill_opts fo;
         rast_rect clip;
-        rast_target t;
-        uint8_t one = 1;
         clip.x0 = (int32_t)(rng() % 100) - 60;
         clip.y0 = (int32_t)(rng() % 9) - 4;
         clip.x1 = clip.x0 + WT;
@@ -321,30 +357,7 @@ static void test_ss_triangles(void)
             big[5] = big[1];
         }
         if (nt > 2 && rng() % 3 == 0) big[8] = big[7]; /* degenerate */
-        for (i = 0; i < 3 * nt; i++) {
-            tris[i].x = big[i].x + clip.x0 * g;
-            tris[i].y = big[i].y + clip.y0 * g;
-            big[i].x = s >= kb ? big[i].x : big[i].x * (K >> s);
-            big[i].y = s >= kb ? big[i].y : big[i].y * (K >> s);
-        }
-        ss_opts(kb, s, &o, &fo); /* o.rule: ignored */
-        fo.rule = RAST_RULE_EVENODD; /* one triangle: either */
-        memset(out, 0xA5, sizeof out);
-        CHECK(cover(NULL, nt ? tris : NULL, (uint32_t)nt, &o, &clip, f, &out[0][0],
-                    (ptrdiff_t)sizeof out[0]) == RAST_OK);
-        memset(fine, 0, sizeof fine);
-        CHECK(rast_target_init(&t, fine, WT * K, h * K, (int32_t)sizeof fine[0], RAST_FORMAT_GRAY8) ==
-              RAST_OK);
-        for (i = 0; i < nt; i++) {
-            uint32_t three = 3;
-            rast_polygon p = {&big[3 * i], &three, 1};
-            size_t need;
-            unsigned char *sc;
-            CHECK(rast_scratch_size(&fo, 3, WT * K, h * K, &need) == RAST_OK);
-            sc = scratch_for(need);
-            CHECK(rast_fill_polygon(&t, &p, &fo, &one, sc, need) == RAST_OK);
-        }
-        check_ss_image(&out[0][0], WT, WT, h, f, kb, fine, sizeof fine[0], 1);
+        check_ss_batch(big, tris, nt, kb, s, f, &clip, &out[0][0], WT, &fine[0][0], sizeof fine[0]);
     }
 }
 #undef WT
@@ -365,14 +378,10 @@ static void test_ss_many_triangles(void)
     static uint64_t out[HM][WM];
     static rast_point tris[3 * 600], big[3 * 600];
     for (iter = 0; iter < n; iter++) {
-        int32_t kb = 1 + (int32_t)(rng() % 4), K = 1 << kb, s = (int32_t)(rng() % 3), g = 1 << s;
+        int32_t kb = 1 + (int32_t)(rng() % 4), s = (int32_t)(rng() % 3), g = 1 << s;
         int32_t nt = 300 + (int32_t)(rng() % 300), i, hosts = 1 + (int32_t)(rng() % 3);
         rast_coverage_format f = (rast_coverage_format)(rng() % 3);
-        rast_coverage_opts o;
-        rast_fill_opts fo;
         rast_rect clip;
-        rast_target t;
-        uint8_t one = 1;
         clip.x0 = (int32_t)(rng() % 40) - 20;
         clip.y0 = (int32_t)(rng() % 9) - 4;
         clip.x1 = clip.x0 + WM;
@@ -423,30 +432,7 @@ static void test_ss_many_triangles(void)
                 v[1].y = v[0].y;
             }
         }
-        for (i = 0; i < 3 * nt; i++) {
-            tris[i].x = big[i].x + clip.x0 * g;
-            tris[i].y = big[i].y + clip.y0 * g;
-            big[i].x = s >= kb ? big[i].x : big[i].x * (K >> s);
-            big[i].y = s >= kb ? big[i].y : big[i].y * (K >> s);
-        }
-        ss_opts(kb, s, &o, &fo);
-        fo.rule = RAST_RULE_EVENODD;
-        memset(out, 0xA5, sizeof out);
-        CHECK(cover(NULL, tris, (uint32_t)nt, &o, &clip, f, &out[0][0], (ptrdiff_t)sizeof out[0]) ==
-              RAST_OK);
-        memset(fine, 0, sizeof fine);
-        CHECK(rast_target_init(&t, fine, WM * K, HM * K, (int32_t)sizeof fine[0], RAST_FORMAT_GRAY8) ==
-              RAST_OK);
-        for (i = 0; i < nt; i++) {
-            uint32_t three = 3;
-            rast_polygon p = {&big[3 * i], &three, 1};
-            size_t need;
-            unsigned char *sc;
-            CHECK(rast_scratch_size(&fo, 3, WM * K, HM * K, &need) == RAST_OK);
-            sc = scratch_for(need);
-            CHECK(rast_fill_polygon(&t, &p, &fo, &one, sc, need) == RAST_OK);
-        }
-        check_ss_image(&out[0][0], WM, WM, HM, f, kb, fine, sizeof fine[0], 1);
+        check_ss_batch(big, tris, nt, kb, s, f, &clip, &out[0][0], WM, &fine[0][0], sizeof fine[0]);
     }
 }
 #undef WM

@@ -255,7 +255,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         for (y = 0; y < ch; y++)
             FZ_ASSERT(memcmp(cspans.img + y * CW, out + y * stride, (size_t)cw) == 0);
     }
-    if (f == RAST_COVERAGE_U8 && clip.x0 >= 0 && clip.y0 >= 0) paint_check(&in, &pg, pts, ntris, shape == 2, &o, &clip, stride, need);
+    if (f == RAST_COVERAGE_U8 && clip.x0 >= 0 && clip.y0 >= 0) paint_check(&in, &pg, tris, ntris, shape == 2, &o, &clip, stride, need);
     if (kb) { /* the per-sample reference, k times finer */
         const int32_t K = 1 << kb, sf = o.subpixel_bits >= kb ? o.subpixel_bits - kb : 0;
         uint32_t base = 0, t;

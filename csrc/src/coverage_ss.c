@@ -511,15 +511,15 @@ rast_status rast__cov_ss_tris(const rast_point *tris, uint32_t ntris, int32_t s,
                 t = y - top;
                 a = a < fx0 ? fx0 : a;
                 b = b > fx1 ? fx1 : b;
-                if (a < b) { /* the columns any run reaches */
-                    lo = a < lo ? a : lo;
-                    hi = b > hi ? b : hi;
-                }
                 if (a <= pb[t] && b >= pa[t]) {
                     pa[t] = a < pa[t] ? a : pa[t];
                     pb[t] = b > pb[t] ? b : pb[t];
                 } else if (a < b) {
-                    if (pa[t] < pb[t]) rast__ss_bits(bits + (size_t)t * wpr, pa[t] - fx0, pb[t] - fx0);
+                    if (pa[t] < pb[t]) { /* into the bits; lo, hi: the columns they reach */
+                        rast__ss_bits(bits + (size_t)t * wpr, pa[t] - fx0, pb[t] - fx0);
+                        lo = pa[t] < lo ? pa[t] : lo;
+                        hi = pb[t] > hi ? pb[t] : hi;
+                    }
                     pa[t] = a;
                     pb[t] = b;
                 }
@@ -551,8 +551,16 @@ rast_status rast__cov_ss_tris(const rast_point *tris, uint32_t ntris, int32_t s,
         }
         nact = m;
         for (t = 0; t < K; t++) {
-            if (pa[t] < pb[t]) rast__ss_bits(bits + (size_t)t * wpr, pa[t] - fx0, pb[t] - fx0);
-            if (fa < fb) rast__ss_bits(bits + (size_t)t * wpr, fa - fx0, fb - fx0);
+            if (pa[t] < pb[t]) {
+                rast__ss_bits(bits + (size_t)t * wpr, pa[t] - fx0, pb[t] - fx0);
+                lo = pa[t] < lo ? pa[t] : lo;
+                hi = pb[t] > hi ? pb[t] : hi;
+            }
+            if (fa < fb) {
+                rast__ss_bits(bits + (size_t)t * wpr, fa - fx0, fb - fx0);
+                lo = fa < lo ? fa : lo;
+                hi = fb > hi ? fb : hi;
+            }
         }
         if (lo >= hi) continue; /* no run */
         for (t = 0; t < K; t++)

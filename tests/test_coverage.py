@@ -279,6 +279,28 @@ def test_triangles_union_equals_oracle(h, w, n, seed, method):
         S_.assert_same(out.astype(np.int64), want, tris.tolist())
 
 
+@settings(max_examples=S_.examples(12))
+@given(st.integers(1, 6), st.integers(1, 8), st.integers(0, 2 ** 32 - 1),
+       st.sampled_from(["ss2", "ss4", "ss8"]))
+def test_many_overlapping_triangles_equal_oracle(h, w, seed, method):
+    # hundreds active on a row (the walk then skips triangles inside columns
+    # covered on every fine row): two wide ones across the rows, many drawn
+    # in toward their centres (some poking out), slivers, one reversed
+    rnd = np.random.default_rng(seed)
+    big = rnd.uniform(-1, w + 1, (2, 3, 2))
+    big[:, 0, 1], big[:, 1, 1] = -1, h + 1
+    centre = big.mean(1)
+    many = [centre[i % 2] + (big[i % 2] - centre[i % 2]) * rnd.uniform(0.05, 1.0)
+            + rnd.uniform(-0.05, 0.05, (3, 2)) for i in range(280)]
+    x = rnd.uniform(-1, w + 1, 20)
+    slivers = [[(a, -1), (a + 0.1, h + 1), (a + rnd.uniform(-2, 2), rnd.uniform(-1, h + 1))] for a in x]
+    tris = np.concatenate([big, np.array(many), np.array(slivers), big[:1, [0, 2, 1]]])
+    rnd.shuffle(tris)
+    out = rastrum.triangles_coverage(tris, (h, w), method=method)
+    want = oc.coverage_ss(list(tris), (h, w), int(method[2:]), triangles=True)
+    S_.assert_same(out.astype(np.int64), want, tris.tolist())
+
+
 # ---- entry points and bad input ----------------------------------------------
 
 def test_algorithms_table():

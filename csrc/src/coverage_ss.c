@@ -217,9 +217,29 @@ rast_status rast__cov_ss(const rast_polygon *poly, uint32_t npoints, int32_t s,
  * middle vertex (kept apart, in `low`) is still to come. */
 typedef struct rast__ss_tri {
     int64_t e[2], dr[2], q[2];
-    int32_t x[2], step[2], end[2];
+    int64_t drk[2]; /* the edges' growth over k rows (rast__ss_jump); -1: not
+                       worked out yet, -2: too far to take */
+    int32_t x[2], step[2], end[2], stepk[2];
     int32_t row, next;
 } rast__ss_tri;
+
+/* Edge k of triangle r (held in *ed) moved k rows on: one step of the
+ * DDA with the growth of k rows, K dr = c q + drk (0 <= drk < q), whole
+ * columns K step + c (worked out once); 0 when they do not fit. */
+static inline int rast__ss_jump(rast__ss_tri *r, int k, rast__edge *ed, int32_t K)
+{
+    int64_t e;
+    if (r->drk[k] == -1) {
+        const int64_t n = (int64_t)K * ed->dr, whole = (int64_t)K * ed->step + n / ed->q;
+        r->drk[k] = whole > -((int64_t)1 << 29) && whole < ((int64_t)1 << 29) ? n % ed->q : -2;
+        r->stepk[k] = (int32_t)(r->drk[k] == -2 ? 0 : whole);
+    }
+    if (r->drk[k] == -2) return 0;
+    e = ed->e - r->drk[k];
+    ed->x += r->stepk[k] + (int32_t)(e < 0);
+    ed->e = e + (ed->q & -(int64_t)(e < 0));
+    return 1;
+}
 
 static inline void rast__ss_get(const rast__ss_tri *t, int k, rast__edge *ed)
 {
@@ -271,6 +291,7 @@ static void rast__ss_tri_setup(rast__ss_tri *r, rast__edge *low, const rast_poin
     rast__edge_start_tri(&ed, v[0], v[2], 1, row[0], row[2], g);
     rast__ss_set(r, 0, &ed);
     r->row = row[0];
+    r->drk[0] = r->drk[1] = -1;
     r->next = row[0] < row[1] && row[1] < row[2];
     if (row[0] < row[1]) {
         rast__edge_start_tri(&ed, v[0], v[1], 1, row[0], row[1], g);
@@ -340,6 +361,44 @@ static int32_t rast__ss_insert(const rast__ss_tri *table, int32_t *act, int32_t 
     return n + 1;
 }
 
+/* Many triangles active on an output row overlap, and most of their runs
+ * lie inside others': F = [fa, fb) holds columns covered on all k fine
+ * rows of the output row (set on each at its end).  A triangle whose
+ * edges are straight across the k rows (no vertex between) has runs whose
+ * ends move one way across them (a straight edge's column is a monotone
+ * function of the row), so the first and the last row bound them all: it
+ * covers on every row the columns between the inner bounds of its ends,
+ * and when its runs on the first and last row lie in F so do all of them,
+ * and it is skipped, its edges only stepped. */
+
+/* The run of a triangle on a fine row, [*a, *b): between the columns of
+ * its edges l and e, clipped to [fx0, fx1]. */
+static inline void rast__ss_run_of(const rast__edge *l, const rast__edge *e, int32_t fx0,
+                                   int32_t fx1, int32_t *a, int32_t *b)
+{
+    int32_t x0 = l->x < e->x ? l->x : e->x, x1 = l->x < e->x ? e->x : l->x;
+    *a = x0 < fx0 ? fx0 : x0;
+    *b = x1 > fx1 ? fx1 : x1;
+}
+
+/* Columns [a, b) (a < b) covered on all k fine rows into F: F grows when
+ * they meet it, or they take its place when more (F's columns then go
+ * into the k rows of bits, of wpr words each). */
+static void rast__ss_grow(uint64_t *bits, size_t wpr, int32_t K, int32_t fx0, int32_t a,
+                          int32_t b, int32_t *fa, int32_t *fb)
+{
+    int32_t t;
+    if (*fa < *fb && a <= *fb && b >= *fa) {
+        *fa = a < *fa ? a : *fa;
+        *fb = b > *fb ? b : *fb;
+    } else if (*fa >= *fb) {
+        if (*fa < *fb)
+            for (t = 0; t < K; t++) rast__ss_bits(bits + (size_t)t * wpr, *fa - fx0, *fb - fx0);
+        *fa = a;
+        *fb = b;
+    }
+}
+
 rast_status rast__cov_ss_tris(const rast_point *tris, uint32_t ntris, int32_t s, int32_t kbits,
                               rast_sample sample, const rast__cov_out *o, rast__arena *arena)
 {
@@ -394,7 +453,7 @@ rast_status rast__cov_ss_tris(const rast_point *tris, uint32_t ntris, int32_t s,
      * pending run that the triangles' runs meeting it join. */
     for (b0 = 0; b0 < rows && (nact || first < n); b0 += K) {
         const int32_t b1 = b0 + K, top = fine.y0 + b0, fx0 = ss.fx0, fx1 = ss.fx1;
-        int32_t i, m, t, lo = INT32_MAX, hi = INT32_MIN;
+        int32_t i, m, t, lo = INT32_MAX, hi = INT32_MIN, fa, fb, overlap;
         /* few active: in order of their left ends, so that neighbours' runs
          * join; many (they overlap anyway): in table order, which walks
          * the records in memory order */
@@ -404,7 +463,9 @@ rast_status rast__cov_ss_tris(const rast_point *tris, uint32_t ntris, int32_t s,
             else
                 act[nact++] = first;
         if (!nact) continue;
+        overlap = nact >= 256;
         for (t = 0; t < K; t++) pa[t] = pb[t] = 0;
+        fa = fb = 0;
         for (i = 0, m = 0; i < nact; i++) {
             rast__ss_tri *r = &table[act[i]];
             rast__edge l, e;
@@ -413,20 +474,52 @@ rast_status rast__cov_ss_tris(const rast_point *tris, uint32_t ntris, int32_t s,
             rast__ss_get(r, 1, &e);
             end = l.end < top + K ? l.end : top + K;
             sw = r->next ? e.end : INT32_MAX; /* where the edge below the middle takes over */
+            if (overlap && y == top && end == top + K && sw >= top + K) {
+                /* straight across the K rows: F (see above) */
+                rast__edge l2 = l, e2 = e;
+                if (rast__ss_jump(r, 0, &l2, K) && rast__ss_jump(r, 1, &e2, K)) {
+                    int32_t u0, v0, u1, v1;
+                    rast__ss_run_of(&l, &e, fx0, fx1, &u0, &v0);
+                    rast__ss_run_of(&l2, &e2, fx0, fx1, &u1, &v1);
+                    if (u0 >= fa && v0 <= fb && u1 >= fa && v1 <= fb) { /* inside F: skipped */
+                        l = l2;
+                        y = top + K;
+                        if (y == sw) {
+                            e = low[act[i]];
+                            low_in = 1;
+                        } else {
+                            e = e2;
+                        }
+                        goto walked;
+                    }
+                    /* covered on every row: from the rightmost place of
+                     * the left edge to the leftmost of the right one */
+                    if (l.x < e.x) {
+                        u0 = l.x > l2.x ? l.x : l2.x;
+                        v0 = e.x < e2.x ? e.x : e2.x;
+                    } else {
+                        u0 = e.x > e2.x ? e.x : e2.x;
+                        v0 = l.x < l2.x ? l.x : l2.x;
+                    }
+                    u0 = u0 < fx0 ? fx0 : u0;
+                    v0 = v0 > fx1 ? fx1 : v0;
+                    if (u0 < v0 && l.x != e.x) rast__ss_grow(bits, wpr, K, fx0, u0, v0, &fa, &fb);
+                }
+            }
             for (; y < end; y++) {
                 int32_t a = l.x < e.x ? l.x : e.x, b = l.x < e.x ? e.x : l.x;
                 t = y - top;
                 a = a < fx0 ? fx0 : a;
                 b = b > fx1 ? fx1 : b;
-                if (a < b) { /* the columns any run reaches */
-                    lo = a < lo ? a : lo;
-                    hi = b > hi ? b : hi;
-                }
                 if (a <= pb[t] && b >= pa[t]) {
                     pa[t] = a < pa[t] ? a : pa[t];
                     pb[t] = b > pb[t] ? b : pb[t];
                 } else if (a < b) {
-                    if (pa[t] < pb[t]) rast__ss_bits(bits + (size_t)t * wpr, pa[t] - fx0, pb[t] - fx0);
+                    if (pa[t] < pb[t]) { /* into the bits; lo, hi: the columns they reach */
+                        rast__ss_bits(bits + (size_t)t * wpr, pa[t] - fx0, pb[t] - fx0);
+                        lo = pa[t] < lo ? pa[t] : lo;
+                        hi = pb[t] > hi ? pb[t] : hi;
+                    }
                     pa[t] = a;
                     pb[t] = b;
                 }
@@ -439,6 +532,7 @@ rast_status rast__cov_ss_tris(const rast_point *tris, uint32_t ntris, int32_t s,
                     rast__edge_step(&e);
                 }
             }
+        walked:
             if (y == l.end) continue; /* done: dropped */
             /* what changed: the edges' positions (all of edge 1 once the
              * lower edge took over) and the row */
@@ -447,6 +541,7 @@ rast_status rast__cov_ss_tris(const rast_point *tris, uint32_t ntris, int32_t s,
             r->x[0] = l.x;
             if (low_in) {
                 rast__ss_set(r, 1, &e);
+                r->drk[1] = -1;
                 r->next = 0;
             } else {
                 r->e[1] = e.e;
@@ -455,8 +550,18 @@ rast_status rast__cov_ss_tris(const rast_point *tris, uint32_t ntris, int32_t s,
             act[m++] = act[i];
         }
         nact = m;
-        for (t = 0; t < K; t++)
-            if (pa[t] < pb[t]) rast__ss_bits(bits + (size_t)t * wpr, pa[t] - fx0, pb[t] - fx0);
+        for (t = 0; t < K; t++) {
+            if (pa[t] < pb[t]) {
+                rast__ss_bits(bits + (size_t)t * wpr, pa[t] - fx0, pb[t] - fx0);
+                lo = pa[t] < lo ? pa[t] : lo;
+                hi = pb[t] > hi ? pb[t] : hi;
+            }
+            if (fa < fb) {
+                rast__ss_bits(bits + (size_t)t * wpr, fa - fx0, fb - fx0);
+                lo = fa < lo ? fa : lo;
+                hi = fb > hi ? fb : hi;
+            }
+        }
         if (lo >= hi) continue; /* no run */
         for (t = 0; t < K; t++)
             rast__ss_bit_runs(&ss, b0 + t, bits + (size_t)t * wpr, (lo - fx0) >> 6,

@@ -282,9 +282,49 @@ static void test_ss_wide(void)
 }
 #undef WW
 
-/* Triangle batches by supersampling: the union of the triangles, each
- * filled on its own ("xscan" on the vertices scaled by k, overwriting a
- * byte target: a union, whatever overlaps) and counted.  Overlapping,
+/* A triangle batch big[0 .. 3 nt) (clip-relative, S = s) by ssK (k =
+ * 2^kb) into out (the clip, rows of ow words, format f; tris[] holds the
+ * batch moved to the clip) against the union of its triangles, each filled
+ * on its own ("xscan" on the vertices scaled by k, overwriting a byte
+ * target: a union, whatever overlaps) into fine (rows of fs bytes), big[]
+ * scaled by k on the way. */
+static void check_ss_batch(rast_point *big, rast_point *tris, int32_t nt, int32_t kb, int32_t s,
+                           rast_coverage_format f, const rast_rect *clip, uint64_t *out,
+                           int32_t ow, uint8_t *fine, size_t fs)
+{
+    const int32_t K = 1 << kb, g = 1 << s, w = clip->x1 - clip->x0, h = clip->y1 - clip->y0;
+    rast_coverage_opts o;
+    rast_fill_opts fo;
+    rast_target t;
+    uint8_t one = 1;
+    int32_t i;
+    for (i = 0; i < 3 * nt; i++) {
+        tris[i].x = big[i].x + clip->x0 * g;
+        tris[i].y = big[i].y + clip->y0 * g;
+        big[i].x = s >= kb ? big[i].x : big[i].x * (K >> s);
+        big[i].y = s >= kb ? big[i].y : big[i].y * (K >> s);
+    }
+    ss_opts(kb, s, &o, &fo); /* o.rule: ignored */
+    fo.rule = RAST_RULE_EVENODD; /* one triangle: either */
+    memset(out, 0xA5, (size_t)h * (size_t)ow * 8);
+    CHECK(cover(NULL, nt ? tris : NULL, (uint32_t)nt, &o, clip, f, out, (ptrdiff_t)ow * 8) ==
+          RAST_OK);
+    memset(fine, 0, (size_t)(h * K) * fs);
+    CHECK(rast_target_init(&t, fine, w * K, h * K, (int32_t)fs, RAST_FORMAT_GRAY8) == RAST_OK);
+    for (i = 0; i < nt; i++) {
+        uint32_t three = 3;
+        rast_polygon p = {&big[3 * i], &three, 1};
+        size_t need;
+        unsigned char *sc;
+        CHECK(rast_scratch_size(&fo, 3, w * K, h * K, &need) == RAST_OK);
+        sc = scratch_for(need);
+        CHECK(rast_fill_polygon(&t, &p, &fo, &one, sc, need) == RAST_OK);
+    }
+    check_ss_image(out, ow, w, h, f, kb, fine, fs, 1);
+}
+
+/* Triangle batches by supersampling against the union of the triangles
+ * (check_ss_batch).  Overlapping,
  * repeated in the other orientation, degenerate, with horizontal edges,
  * reaching past the clip, on a clip off the origin wider than a word of
  * bits, in every format. */
@@ -295,15 +335,11 @@ static void test_ss_triangles(void)
     static uint8_t fine[8 * 4][8 * WT];
     static uint64_t out[4][WT];
     for (iter = 0; iter < n; iter++) {
-        int32_t kb = 1 + (int32_t)(rng() % 3), K = 1 << kb, s = (int32_t)(rng() % 4), g = 1 << s;
+        int32_t kb = 1 + (int32_t)(rng() % 3), s = (int32_t)(rng() % 4), g = 1 << s;
         int32_t nt = (int32_t)(rng() % 7), i, h = 4;
         rast_coverage_format f = (rast_coverage_format)(rng() % 3);
         rast_point tris[3 * 6], big[3 * 6];
-        rast_coverage_opts o;
-        rast_fill_opts fo;
         rast_rect clip;
-        rast_target t;
-        uint8_t one = 1;
         clip.x0 = (int32_t)(rng() % 100) - 60;
         clip.y0 = (int32_t)(rng() % 9) - 4;
         clip.x1 = clip.x0 + WT;
@@ -321,33 +357,86 @@ static void test_ss_triangles(void)
             big[5] = big[1];
         }
         if (nt > 2 && rng() % 3 == 0) big[8] = big[7]; /* degenerate */
-        for (i = 0; i < 3 * nt; i++) {
-            tris[i].x = big[i].x + clip.x0 * g;
-            tris[i].y = big[i].y + clip.y0 * g;
-            big[i].x = s >= kb ? big[i].x : big[i].x * (K >> s);
-            big[i].y = s >= kb ? big[i].y : big[i].y * (K >> s);
-        }
-        ss_opts(kb, s, &o, &fo); /* o.rule: ignored */
-        fo.rule = RAST_RULE_EVENODD; /* one triangle: either */
-        memset(out, 0xA5, sizeof out);
-        CHECK(cover(NULL, nt ? tris : NULL, (uint32_t)nt, &o, &clip, f, &out[0][0],
-                    (ptrdiff_t)sizeof out[0]) == RAST_OK);
-        memset(fine, 0, sizeof fine);
-        CHECK(rast_target_init(&t, fine, WT * K, h * K, (int32_t)sizeof fine[0], RAST_FORMAT_GRAY8) ==
-              RAST_OK);
-        for (i = 0; i < nt; i++) {
-            uint32_t three = 3;
-            rast_polygon p = {&big[3 * i], &three, 1};
-            size_t need;
-            unsigned char *sc;
-            CHECK(rast_scratch_size(&fo, 3, WT * K, h * K, &need) == RAST_OK);
-            sc = scratch_for(need);
-            CHECK(rast_fill_polygon(&t, &p, &fo, &one, sc, need) == RAST_OK);
-        }
-        check_ss_image(&out[0][0], WT, WT, h, f, kb, fine, sizeof fine[0], 1);
+        check_ss_batch(big, tris, nt, kb, s, f, &clip, &out[0][0], WT, &fine[0][0], sizeof fine[0]);
     }
 }
 #undef WT
+
+/* Batches of many triangles (more than 256 on an output row: the walk then
+ * keeps columns covered on all k fine rows and skips triangles inside them):
+ * a few wide ones across the clip's rows, many inside them (about: some
+ * reach out), slivers across their edges and elsewhere, repeats the other
+ * way round, degenerate ones and horizontal edges, vertices inside output
+ * rows, some reaching past the clip, against the same reference as
+ * above. */
+#define WM 90
+#define HM 6
+static void test_ss_many_triangles(void)
+{
+    int iter, n = check_count(40);
+    static uint8_t fine[16 * HM][16 * WM];
+    static uint64_t out[HM][WM];
+    static rast_point tris[3 * 600], big[3 * 600];
+    for (iter = 0; iter < n; iter++) {
+        int32_t kb = 1 + (int32_t)(rng() % 4), s = (int32_t)(rng() % 3), g = 1 << s;
+        int32_t nt = 300 + (int32_t)(rng() % 300), i, hosts = 1 + (int32_t)(rng() % 3);
+        rast_coverage_format f = (rast_coverage_format)(rng() % 3);
+        rast_rect clip;
+        clip.x0 = (int32_t)(rng() % 40) - 20;
+        clip.y0 = (int32_t)(rng() % 9) - 4;
+        clip.x1 = clip.x0 + WM;
+        clip.y1 = clip.y0 + HM;
+        for (i = 0; i < nt; i++) {
+            rast_point *v = &big[3 * i];
+            int32_t k, kind = (int32_t)(rng() % 10);
+            if (i < hosts) { /* a few wide ones, across the clip's rows */
+                int32_t x0 = (int32_t)(rng() % (uint32_t)(WM * g)) - 10 * g;
+                v[0].x = x0 + (int32_t)(rng() % (uint32_t)(40 * g));
+                v[0].y = -2 * g - (int32_t)(rng() % (uint32_t)(2 * g));
+                v[1].x = x0;
+                v[1].y = (HM + 2) * g + (int32_t)(rng() % (uint32_t)(2 * g));
+                v[2].x = x0 + 15 * g + (int32_t)(rng() % (uint32_t)(30 * g));
+                v[2].y = (int32_t)(rng() % (uint32_t)((HM + 4) * g)) - 2 * g;
+                if (rng() % 2) v[0].x = v[1].x; /* a vertical edge */
+            } else if (kind < 4) { /* inside (about) one of the wide ones */
+                const rast_point *h = &big[3 * (int32_t)(rng() % (uint32_t)hosts)];
+                int32_t cx = (h[0].x + h[1].x + h[2].x) / 3, cy = (h[0].y + h[1].y + h[2].y) / 3;
+                int32_t num = 1 + (int32_t)(rng() % 7); /* 1/8 .. 7/8 of the way out */
+                for (k = 0; k < 3; k++) {
+                    v[k].x = cx + (h[k].x - cx) * num / 8 + (int32_t)(rng() % 3) - 1;
+                    v[k].y = cy + (h[k].y - cy) * num / 8 + (int32_t)(rng() % 3) - 1;
+                }
+            } else if (kind < 8) { /* a sliver, tall or short, anywhere */
+                int32_t cx = (int32_t)(rng() % (uint32_t)((WM + 10) * g)) - 5 * g;
+                int32_t w = 1 + (int32_t)(rng() % (uint32_t)(2 * g + 1));
+                int32_t tall = rng() % 3 ? (HM + 4) * g : 3 * g;
+                for (k = 0; k < 3; k++) {
+                    v[k].x = cx + (int32_t)(rng() % (uint32_t)(2 * w + 1)) - w + (k == 2 ? 3 * w : 0);
+                    v[k].y = (int32_t)(rng() % (uint32_t)(tall + 1)) - 2 * g;
+                }
+                v[2].x += (int32_t)(rng() % (uint32_t)(12 * g + 1)) - 6 * g; /* sloping */
+            } else if (kind < 6) { /* one of the wide ones, grown a little */
+                const rast_point *h = &big[3 * (int32_t)(rng() % (uint32_t)hosts)];
+                for (k = 0; k < 3; k++) v[k] = h[k];
+                v[rng() % 3].x += (int32_t)(rng() % 3) - 1;
+            } else if (i > 0 && kind == 8) { /* the one before, the other way round */
+                v[0] = big[3 * i - 3];
+                v[1] = big[3 * i - 1];
+                v[2] = big[3 * i - 2];
+            } else { /* degenerate, or a horizontal edge */
+                for (k = 0; k < 3; k++) {
+                    v[k].x = (int32_t)(rng() % (uint32_t)((WM + 10) * g)) - 5 * g;
+                    v[k].y = (int32_t)(rng() % (uint32_t)((HM + 4) * g)) - 2 * g;
+                }
+                v[2] = rng() % 2 ? v[1] : v[2];
+                v[1].y = v[0].y;
+            }
+        }
+        check_ss_batch(big, tris, nt, kb, s, f, &clip, &out[0][0], WM, &fine[0][0], sizeof fine[0]);
+    }
+}
+#undef WM
+#undef HM
 
 /* ---- triangle batches ------------------------------------------------------------ */
 
@@ -623,6 +712,7 @@ int main(void)
     test_ss();
     test_ss_wide();
     test_ss_triangles();
+    test_ss_many_triangles();
     test_mesh();
     test_translation();
     test_errors();

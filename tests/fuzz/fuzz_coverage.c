@@ -13,6 +13,9 @@
  *    overlapping, either orientation): the exact area by cells;
  *  - area on any polygon: translating it (and the clip) by whole pixels,
  *    and (even-odd) reversing its rings, gives the same bytes;
+ *  - triangle batches also many times over (copies drawn in toward their
+ *    centres), so that hundreds are active on a row, the walk's way with
+ *    many (columns covered on every fine row, triangles inside skipped);
  *  - rast_polygon_coverage_spans and rast_triangles_coverage_spans
  *    (uint8): the same values, in ordered runs of values not 0 inside the
  *    clip;
@@ -28,7 +31,10 @@
 #define CW 8 /* largest clip side */
 #define PADB 8 /* padding bytes after each row */
 
+#define REPS 301 /* copies of a batch of one triangle: more than 256 active */
+
 static fz_scratch scratch;
+static rast_point many[MAXPTS * REPS], fine[MAXPTS * REPS];
 static unsigned char out[(CW * 8 + PADB) * CW + 64], out2[(CW * 8 + PADB) * CW + 64];
 
 static const int32_t fmt_size[3] = {1, 2, 8};
@@ -125,7 +131,7 @@ static void paint_check(fz_in *in, const rast_polygon *pg, const rast_point *tri
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 {
     fz_in in = {data, size, 0};
-    rast_point pts[MAXPTS], moved[MAXPTS], fine[MAXPTS];
+    rast_point pts[MAXPTS], moved[MAXPTS], *tris = pts;
     uint32_t rings[3], nrings = 0, npts = 0, k, ntris = 0;
     int32_t rx0[4], ry0[4], rx1[4], ry1[4], sg[4], nrect = 0;
     rast_polygon pg;
@@ -190,6 +196,23 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         ntris = (uint32_t)fz_below(&in, MAXPTS / 3 + 1);
         npts = 3 * ntris;
         for (k = 0; k < npts; k++) pts[k] = fz_point(&in, o.subpixel_bits, CW);
+        if (ntris && fz_u8(&in) & 1 && !in.out_of_range) {
+            /* copy r of each, (r mod 4) / 8 of the way in to its centre */
+            uint32_t reps = (REPS - 1) / ntris + 1, r, t, v;
+            for (r = 0; r < reps; r++)
+                for (t = 0; t < ntris; t++) {
+                    const rast_point *a = &pts[3 * t];
+                    int64_t cx = ((int64_t)a[0].x + a[1].x + a[2].x) / 3;
+                    int64_t cy = ((int64_t)a[0].y + a[1].y + a[2].y) / 3;
+                    for (v = 0; v < 3; v++) {
+                        rast_point *q = &many[3 * (r * ntris + t) + v];
+                        q->x = (int32_t)(a[v].x + (cx - a[v].x) * (int64_t)(r % 4) / 8);
+                        q->y = (int32_t)(a[v].y + (cy - a[v].y) * (int64_t)(r % 4) / 8);
+                    }
+                }
+            tris = many;
+            ntris *= reps;
+        }
     }
     for (k = 0; k < npts && scale; k++)
         if (fz_in_range(pts[k]) && (pts[k].x > RAST_COORD_MAX >> scale || pts[k].x < -(RAST_COORD_MAX >> scale) ||
@@ -199,12 +222,13 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     pg.ring_sizes = rings;
     pg.nrings = nrings;
 
-    FZ_ASSERT(rast_coverage_scratch_size(&o, npts, cw, ch, &need) == RAST_OK);
+    FZ_ASSERT(rast_coverage_scratch_size(&o, shape == 2 ? 3 * ntris : npts, cw, ch, &need) ==
+              RAST_OK);
     FZ_ASSERT(need <= FZ_SCRATCH_MAX);
     bytes = short_scratch && need >= 8 ? need - 8 : need;
     stride = (ptrdiff_t)cw * fmt_size[f] + PADB;
     memset(out, FZ_GUARD, sizeof out);
-    st = run(shape == 2 ? NULL : &pg, pts, ntris, &o, &clip, f, out, stride, bytes);
+    st = run(shape == 2 ? NULL : &pg, tris, ntris, &o, &clip, f, out, stride, bytes);
     if (in.out_of_range || scaled_out || bytes < need) {
         FZ_ASSERT(st != RAST_OK);
         if (in.out_of_range + scaled_out + (bytes < need) == 1)
@@ -223,7 +247,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         memset(&cspans, 0, sizeof cspans);
         cspans.clip = clip;
         cspans.y = INT32_MIN;
-        FZ_ASSERT((shape == 2 ? rast_triangles_coverage_spans(pts, ntris, &o, &clip, fz_cspan,
+        FZ_ASSERT((shape == 2 ? rast_triangles_coverage_spans(tris, ntris, &o, &clip, fz_cspan,
                                                               &cspans, mem, need)
                               : rast_polygon_coverage_spans(&pg, &o, &clip, fz_cspan, &cspans,
                                                             mem, need)) == RAST_OK);
@@ -231,13 +255,14 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         for (y = 0; y < ch; y++)
             FZ_ASSERT(memcmp(cspans.img + y * CW, out + y * stride, (size_t)cw) == 0);
     }
-    if (f == RAST_COVERAGE_U8 && clip.x0 >= 0 && clip.y0 >= 0) paint_check(&in, &pg, pts, ntris, shape == 2, &o, &clip, stride, need);
+    if (f == RAST_COVERAGE_U8 && clip.x0 >= 0 && clip.y0 >= 0) paint_check(&in, &pg, tris, ntris, shape == 2, &o, &clip, stride, need);
     if (kb) { /* the per-sample reference, k times finer */
         const int32_t K = 1 << kb, sf = o.subpixel_bits >= kb ? o.subpixel_bits - kb : 0;
         uint32_t base = 0, t;
-        for (k = 0; k < npts; k++) {
-            fine[k].x = pts[k].x * (1 << scale);
-            fine[k].y = pts[k].y * (1 << scale);
+        const rast_point *src = shape == 2 ? tris : pts;
+        for (k = 0; k < (shape == 2 ? 3 * ntris : npts); k++) {
+            fine[k].x = src[k].x * (1 << scale);
+            fine[k].y = src[k].y * (1 << scale);
         }
         for (y = 0; y < ch; y++)
             for (x = 0; x < cw; x++) {

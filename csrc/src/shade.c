@@ -65,6 +65,8 @@ typedef struct rast__chan {
 typedef struct rast__shade {
     unsigned char *base;
     ptrdiff_t stride;
+    int32_t ox, oy;          /* the pixel at base: (0, 0) for a target, a
+                                band's corner for rast__shade_band */
     const rast__format *fmt;
     int32_t *zbuf;
     ptrdiff_t zstride;       /* target width */
@@ -261,7 +263,7 @@ static int rast__chan_start(const rast__shade *s, const rast__chan *ch, int fixe
 
 static void rast__shade_span(rast__shade *s, int32_t y, int32_t xa, int32_t xb)
 {
-    unsigned char *row = s->base + (ptrdiff_t)y * s->stride;
+    unsigned char *row = s->base + (ptrdiff_t)(y - s->oy) * s->stride;
     int32_t *zrow = s->zbuf ? s->zbuf + (ptrdiff_t)y * s->zstride : NULL;
     unsigned char buf[4 * RAST__SHADE_RUN];
     int64_t val[RAST__SHADE_RUN];
@@ -277,7 +279,7 @@ static void rast__shade_span(rast__shade *s, int32_t y, int32_t xa, int32_t xb)
         for (x = xa; x < xb; x += RAST__SHADE_RUN) {
             int32_t n = xb - x < RAST__SHADE_RUN ? xb - x : RAST__SHADE_RUN;
             rast__fixed_colours(s, q, nch, n, buf);
-            s->fmt->put(row, x, n, buf);
+            s->fmt->put(row, x - s->ox, n, buf);
         }
         return;
     }
@@ -297,7 +299,7 @@ static void rast__shade_span(rast__shade *s, int32_t y, int32_t xa, int32_t xb)
             for (k = 0; k < n; k++) buf[4 * k + c] = (unsigned char)val[k];
         }
         if (!zrow) {
-            s->fmt->put(row, x, n, buf);
+            s->fmt->put(row, x - s->ox, n, buf);
             continue;
         }
         c = RAST__CH_Z;
@@ -317,7 +319,7 @@ static void rast__shade_span(rast__shade *s, int32_t y, int32_t xa, int32_t xb)
                 continue;
             }
             for (e = k + 1; e < n && pass[e]; e++) {}
-            s->fmt->put(row, x + k, e - k, buf + 4 * k);
+            s->fmt->put(row, x + k - s->ox, e - k, buf + 4 * k);
             k = e;
         }
     }
@@ -331,14 +333,14 @@ static void rast__packed_row(const rast__shade *s, int32_t y, const int32_t *xs,
 {
     const uint64_t m0 = 0x00FF000000FF0000u, m1 = 0xFF000000FF000000u;
     const uint64_t sx0 = s->pkx[0], sx1 = s->pkx[1];
-    unsigned char *row = s->base + (ptrdiff_t)y * s->stride;
+    unsigned char *row = s->base + (ptrdiff_t)(y - s->oy) * s->stride;
     uint64_t r0 = s->pk0[0] + (uint64_t)(int64_t)y * s->pky[0];
     uint64_t r1 = s->pk0[1] + (uint64_t)(int64_t)y * s->pky[1];
     int32_t k;
     for (k = 0; k < n; k++) {
         int32_t x = xs[2 * k], xb = xs[2 * k + 1];
         uint64_t p0 = r0 + (uint64_t)(int64_t)x * sx0, p1 = r1 + (uint64_t)(int64_t)x * sx1;
-        unsigned char *o = row + (ptrdiff_t)x * 4;
+        unsigned char *o = row + (ptrdiff_t)(x - s->ox) * 4;
         for (; x < xb; x++, o += 4) {
             uint64_t w = (p0 & m0) | (p1 & m1);
             uint32_t px = (uint32_t)(w >> 16) | (uint32_t)(w >> 32);
@@ -357,7 +359,7 @@ static void rast__packed_row(const rast__shade *s, int32_t y, const int32_t *xs,
 static void rast__exact_packed_row(const rast__shade *s, int32_t y, const int32_t *xs, int32_t n)
 {
     const int64_t D = s->D;
-    unsigned char *row = s->base + (ptrdiff_t)y * s->stride;
+    unsigned char *row = s->base + (ptrdiff_t)(y - s->oy) * s->stride;
     uint32_t sxp = 0;
     int64_t rowk[4];
     int32_t c, k;
@@ -369,7 +371,7 @@ static void rast__exact_packed_row(const rast__shade *s, int32_t y, const int32_
         int32_t x = xs[2 * k], xb = xs[2 * k + 1];
         int64_t r[4];
         uint32_t qp = 0;
-        unsigned char *o = row + (ptrdiff_t)x * 4;
+        unsigned char *o = row + (ptrdiff_t)(x - s->ox) * 4;
         for (c = 0; c < 4; c++) {
             int64_t q = rast__recip_floordiv(&s->rd, rowk[c] + (int64_t)(x - s->imin) * s->egx[c],
                                              &r[c]);
@@ -664,6 +666,51 @@ static int rast__shade_begin(void *user, const rast_point *t, uint32_t k, const 
     return 1;
 }
 
+/* The painter for a checked format with colour, pixels at base (stride
+ * bytes a row) holding pixel (ox, oy) of the target's plane, clip `clip`. */
+static rast_status rast__shade_setup(rast__shade *s, rast_format format, unsigned char *base,
+                                     ptrdiff_t stride, int32_t ox, int32_t oy,
+                                     const rast_rect *clip, const uint8_t *colors,
+                                     const int32_t *z, int32_t *zbuf, int32_t zstride,
+                                     const rast_tri_opts *opts, const rast_shade_opts *shade)
+{
+    int32_t c;
+    if ((unsigned)shade->precision > RAST_PRECISION_FLAT) return RAST_E_ARG;
+    if (shade->precision == RAST_PRECISION_FIXED &&
+        (shade->fraction_bits < 1 || shade->fraction_bits > 16))
+        return RAST_E_ARG;
+    memset(s, 0, sizeof *s);
+    s->fmt = &rast__formats[format];
+    if (!s->fmt->put) return RAST_E_FORMAT;
+    s->base = base;
+    s->stride = stride;
+    s->ox = ox;
+    s->oy = oy;
+    s->zbuf = zbuf;
+    s->zstride = zstride;
+    s->colors = colors;
+    s->z = z;
+    s->prec = shade->precision;
+    s->F = shade->fraction_bits;
+    s->nch = s->fmt->channels;
+    for (c = 0; c < 4; c++) {
+        s->ch[c].lo = 0;
+        s->ch[c].hi = 255;
+    }
+    s->ch[RAST__CH_Z].lo = INT32_MIN;
+    s->ch[RAST__CH_Z].hi = INT32_MAX;
+    /* the clip (the flat painter's too) */
+    s->solid.clip = *clip;
+    {
+        const uint32_t one = 1;
+        unsigned char low;
+        memcpy(&low, &one, 1);
+        s->packable = low == 1 && format == RAST_FORMAT_RGBA8888 &&
+                      s->prec != RAST_PRECISION_FLAT && !z && opts->boundary == RAST_BOUNDARY_EXACT;
+    }
+    return RAST_OK;
+}
+
 rast_status rast_fill_triangles_shaded(const rast_target *target, const rast_point *tris,
                                        uint32_t ntris, const uint8_t *colors, const int32_t *z,
                                        int32_t *zbuf, const rast_tri_opts *opts,
@@ -673,34 +720,14 @@ rast_status rast_fill_triangles_shaded(const rast_target *target, const rast_poi
     rast__shade s;
     rast_rect clip;
     rast_status st;
-    int32_t c;
 
     if (!target || !opts || !shade || (ntris > 0 && (!tris || !colors))) return RAST_E_NULL;
     if (!z != !zbuf) return RAST_E_NULL;
     st = rast__target_check(target, &clip);
     if (st != RAST_OK) return st;
-    if ((unsigned)shade->precision > RAST_PRECISION_FLAT) return RAST_E_ARG;
-    if (shade->precision == RAST_PRECISION_FIXED &&
-        (shade->fraction_bits < 1 || shade->fraction_bits > 16))
-        return RAST_E_ARG;
-    memset(&s, 0, sizeof s);
-    s.fmt = &rast__formats[target->format];
-    if (!s.fmt->put) return RAST_E_FORMAT;
-    s.base = (unsigned char *)target->pixels;
-    s.stride = target->stride;
-    s.zbuf = zbuf;
-    s.zstride = target->width;
-    s.colors = colors;
-    s.z = z;
-    s.prec = shade->precision;
-    s.F = shade->fraction_bits;
-    s.nch = s.fmt->channels;
-    for (c = 0; c < 4; c++) {
-        s.ch[c].lo = 0;
-        s.ch[c].hi = 255;
-    }
-    s.ch[RAST__CH_Z].lo = INT32_MIN;
-    s.ch[RAST__CH_Z].hi = INT32_MAX;
+    st = rast__shade_setup(&s, target->format, (unsigned char *)target->pixels, target->stride,
+                           0, 0, &clip, colors, z, zbuf, target->width, opts, shade);
+    if (st != RAST_OK) return st;
     /* The solid painter: the flat colour without depth, and the clip. */
     {
         static const unsigned char zero[4] = {0, 0, 0, 0};
@@ -708,13 +735,19 @@ rast_status rast_fill_triangles_shaded(const rast_target *target, const rast_poi
         if (st != RAST_OK) return st;
     }
     s.flat = s.prec == RAST_PRECISION_FLAT && !z;
-    {
-        const uint32_t one = 1;
-        unsigned char low;
-        memcpy(&low, &one, 1);
-        s.packable = low == 1 && target->format == RAST_FORMAT_RGBA8888 &&
-                     s.prec != RAST_PRECISION_FLAT && !z && opts->boundary == RAST_BOUNDARY_EXACT;
-    }
     return rast__tri_fill(tris, ntris, opts, &clip, rast__shade_row, &s, NULL, rast__shade_begin,
                           scratch, scratch_bytes);
+}
+
+rast_status rast__shade_band(unsigned char *rgba, ptrdiff_t stride, const rast_rect *band,
+                             const rast_point *tris, uint32_t ntris, const uint8_t *colors,
+                             const rast_tri_opts *opts, const rast_shade_opts *shade,
+                             rast__tri_filler_fn filler, void *scratch, size_t scratch_bytes)
+{
+    rast__shade s;
+    rast_status st = rast__shade_setup(&s, RAST_FORMAT_RGBA8888, rgba, stride, band->x0,
+                                       band->y0, band, colors, NULL, NULL, 0, opts, shade);
+    if (st != RAST_OK) return st;
+    return filler(tris, ntris, opts, band, rast__shade_row, &s, NULL, rast__shade_begin, scratch,
+                  scratch_bytes);
 }

@@ -372,7 +372,9 @@ class Canvas:
         d becomes (s*c + d*(255 - c) + 127) // 255 (rgb565: on its 5/6/5
         bits; rgba8888: alpha too), mono1 takes the colour where c >= 128,
         pixels with c = 0 are untouched.  `algorithm`, `rounding`,
-        `boundary` and `vertex_colors` are for binary fills (aa=None) only.
+        `boundary` and `vertex_colors` are for binary fills (aa=None) only
+        (for colours per vertex, triangulate and use :meth:`fill_triangles`
+        with `vertex_colors` and `aa`).
 
         With `vertex_colors` instead of `color`: one colour per vertex, an
         (N, C) array-like for the N vertices of all rings in order (or a
@@ -486,9 +488,16 @@ class Canvas:
         the batch's coverage as :func:`rastrum.triangles_coverage` gives it:
         the batch is ONE region (its union), so a mesh drawn in one call
         has no seams and nothing is blended twice.  The blend is
-        :meth:`fill_polygon`'s.  `algorithm`, `rounding`, `boundary`,
-        `vertex_colors`, `depth` and per-triangle colours are for binary
-        fills (aa=None) only.
+        :meth:`fill_polygon`'s.  With `vertex_colors` instead of `color`
+        (shading "gouraud" or "flat", precision "exact") each pixel's
+        colour is blended: where the binary rule gives its sample to a
+        triangle, exactly the binary shaded fill's colour; on the
+        silhouette (covered, sample outside every triangle), the last
+        triangle touching the pixel's closed square, its plane extended to
+        the sample, rounded as the binary fill, clamped to 0..255 (see
+        docs/coverage.md).  `algorithm`, `rounding`, `boundary`, `depth`,
+        fixed precision and per-triangle colours are for binary fills
+        (aa=None) only.
 
         Examples
         --------

@@ -29,11 +29,11 @@ import oracle_shade
 import rastrum
 import strategies as S_
 from oracle import snap
+from test_coverage_paint import mix, random_canvas  # the blend written from the docs; guarded canvases
 
 METHODS = ["area", "ss2", "ss4", "ss8", "ss16", "accumulate"]
 FORMATS = ["gray8", "rgb888", "rgba8888", "rgb565", "mono1"]
 NCH = {"gray8": 1, "mono1": 1, "rgb888": 3, "rgb565": 3, "rgba8888": 4}
-MARGIN = 2
 
 
 def _snapped(tri, S):
@@ -90,11 +90,6 @@ def reference_colors(tris, colors, shape, S, o, shading, cov):
     return out
 
 
-def mix(s, d, c):
-    s, d, c = (np.asarray(v, np.int64) for v in (s, d, c))
-    return (s * c + d * (255 - c) + 127) // 255
-
-
 def blended(fmt, before, rgba, cov):
     """The documented blend of per-pixel colours rgba (H, W, 4) with cov."""
     src = oracle_shade.pack(np.where(rgba < 0, 0, rgba), fmt).astype(np.int64)
@@ -111,30 +106,6 @@ def blended(fmt, before, rgba, cov):
     if out.ndim == 3:
         keep = keep[..., None]
     return np.where(keep, d, out).astype(before.dtype)
-
-
-def random_canvas(fmt, shape, rng):
-    """A canvas wrapping the inside of a bigger random array (mono1: a
-    random packed canvas), and a check that nothing outside was written."""
-    h, w = shape
-    if fmt == "mono1":
-        c = rastrum.Canvas((h, w), format="mono1")
-        c.packed[...] = rng.integers(0, 256, c.packed.shape, dtype=np.uint8)
-        pad = c.packed[:, -1].copy()
-        bits = (0xFF >> (w % 8)) if w % 8 else 0
-        return c, lambda: np.array_equal(c.packed[:, -1] & bits, pad & bits)
-    full = (h + 2 * MARGIN, w + 2 * MARGIN)
-    if fmt == "rgb565":
-        big = rng.integers(0, 65536, full, dtype=np.uint16)
-    elif fmt == "gray8":
-        big = rng.integers(0, 256, full, dtype=np.uint8)
-    else:
-        big = rng.integers(0, 256, full + (NCH[fmt],), dtype=np.uint8)
-    keep = big.copy()
-    c = rastrum.Canvas.wrap(big[MARGIN:-MARGIN, MARGIN:-MARGIN], format=fmt if fmt == "rgb565" else None)
-    outside = np.ones(full, bool)
-    outside[MARGIN:-MARGIN, MARGIN:-MARGIN] = False
-    return c, lambda: np.array_equal(big[outside], keep[outside])
 
 
 def checked_coverage(tris, shape, method, S, o):

@@ -1338,7 +1338,9 @@ RAST_API rast_status rast_fill_triangles_aa(const rast_target *target,
  * Memory: the colours of a band of min(16, clip height) rows, 4 bytes a
  * pixel, beside the coverage scratch of that band:
  * rast_shaded_aa_scratch_size.  The clip is done band by band (each
- * band recomputes every triangle's coverage and colour in it).
+ * band recomputes the coverage and colours of the triangles that reach
+ * it); given more scratch, the bands grow (doubling, up to the clip's
+ * height) while it holds them: fewer bands, less work, the same pixels.
  * Errors, all before anything is written: those of
  * rast_fill_triangles_aa, RAST_E_NULL (shade; colors with ntris > 0),
  * RAST_E_FORMAT (COUNT16), RAST_E_ARG (a precision other than EXACT and

@@ -113,10 +113,11 @@ typedef rast_status (*rast__tri_filler_fn)(const rast_point *tris, uint32_t ntri
                                            const rast__solid *gray8, rast__tri_begin_fn begin,
                                            void *scratch, size_t scratch_bytes);
 
-/* The pixels whose closed square [i, i+1] x [j, j+1] meets the closed
- * triangle, for each triangle in turn (rows top to bottom, one span a
- * row), cut to `clip`: the silhouette filler of the anti-aliased shaded
- * fill.  Checks as rast__tri_fill; needs no scratch; gray8 unused. */
+/* The pixels whose closed square [i, i+1] x [j, j+1] meets an edge (a
+ * closed segment) of the triangle, for each non-degenerate triangle in
+ * turn (rows top to bottom, a span per edge in the row, possibly
+ * overlapping), cut to `clip`: the silhouette filler of the anti-aliased
+ * shaded fill.  Checks as rast__tri_fill; needs no scratch; gray8 unused. */
 rast_status rast__tri_touching(const rast_point *tris, uint32_t ntris, const rast_tri_opts *opts,
                                const rast_rect *clip, rast__row_fn fn, void *user,
                                const rast__solid *gray8, rast__tri_begin_fn begin,

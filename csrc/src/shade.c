@@ -98,6 +98,7 @@ typedef struct rast__shade {
     int64_t ek[4], egx[4], egy[4], esx[4], etx[4];
     /* flat without depth: a solid painter */
     int32_t flat;
+    int32_t cull;            /* skip triangles whose rows miss the clip (bands) */
     rast__solid solid;
     rast__row_fn solid_fn;
 } rast__shade;
@@ -608,6 +609,14 @@ static int rast__shade_begin(void *user, const rast_point *t, uint32_t k, const 
     s->unit = g->unit;
     s->shift = g->shift;
     s->off = g->off;
+    if (s->cull) { /* a band: a triangle whose rows (and a pixel to spare) miss it */
+        int64_t y1 = y0 + ey1, y2 = y0 + ey2;
+        int64_t lo = y0 < y1 ? (y0 < y2 ? y0 : y2) : (y1 < y2 ? y1 : y2);
+        int64_t hi = y0 > y1 ? (y0 > y2 ? y0 : y2) : (y1 > y2 ? y1 : y2);
+        if (hi < ((int64_t)s->solid.clip.y0 - 1) * s->unit ||
+            lo > ((int64_t)s->solid.clip.y1 + 1) * s->unit)
+            return 0;
+    }
 
     if (s->flat) {
         s->fmt->pack(col, s->solid.value);
@@ -748,6 +757,7 @@ rast_status rast__shade_band(unsigned char *rgba, ptrdiff_t stride, const rast_r
     rast_status st = rast__shade_setup(&s, RAST_FORMAT_RGBA8888, rgba, stride, band->x0,
                                        band->y0, band, colors, NULL, NULL, 0, opts, shade);
     if (st != RAST_OK) return st;
+    s.cull = 1;
     return filler(tris, ntris, opts, band, rast__shade_row, &s, NULL, rast__shade_begin, scratch,
                   scratch_bytes);
 }

@@ -5,18 +5,23 @@
  *
  * For each band of rows, the colour of every pixel goes into an RGBA
  * band in the caller's scratch in two passes of the Gouraud painter
- * (shade.c): first each triangle over the pixels it touches (closed
- * square meets closed triangle, rast__tri_touching below), the plane
+ * (shade.c): first each triangle over the pixels whose closed square
+ * meets one of its edges (rast__tri_touching below), the plane
  * extrapolated and clamped, later triangles over earlier ones; then the
  * binary shaded fill on top, so every pixel a triangle owns has exactly
- * the binary colour.  The coverage spans of the band then blend the
+ * the binary colour.  The first pass gives a pixel the colour the
+ * definition asks for (the last triangle whose closed region meets its
+ * closed square) wherever no triangle owns it: a triangle that meets the
+ * square but none of whose edges does holds the whole square inside, so
+ * it owns the pixel's sample.  The coverage spans of the band then blend the
  * colour into the target by the format's blend (formats.c).
  */
 #include <string.h>
 
 #include "paint.h"
 
-/* Rows of colour a band holds. */
+/* Rows of colour a band holds at the least (rast_shaded_aa_scratch_size);
+ * a bigger scratch doubles them while it holds them. */
 #define RAST__AA_SHADE_ROWS 16
 
 /* floor(a / u), ceil(a / u) for u > 0 */
@@ -72,30 +77,34 @@ rast_status rast__tri_touching(const rast_point *tris, uint32_t ntris, const ras
         if (j0 > j1) continue;
         if (begin && !begin(user, t, k, &g)) continue;
         for (j = j0; j <= j1; j++) {
-            int64_t yt = j * u, yb = yt + u, lo = INT64_MAX, hi = INT64_MIN;
-            int32_t xs[2];
+            const int64_t yt = j * u, yb = yt + u;
             for (m = 0; m < 3; m++) {
                 const rast_point *a = &t[m], *b = &t[(m + 1) % 3];
-                if (a->y >= yt && a->y <= yb) rast__touch_x(a->x, 1, u, &lo, &hi);
+                int64_t lo = INT64_MAX, hi = INT64_MIN;
+                int32_t xs[2];
                 if (a->y > b->y) {
                     const rast_point *c = a;
                     a = b;
                     b = c;
                 }
-                /* the edge's crossings of the strip's closed sides */
+                if (b->y < yt || a->y > yb) continue; /* the edge misses the strip */
+                /* its part in the strip: its ends inside, its crossings of
+                 * the strip's closed sides */
+                if (a->y >= yt) rast__touch_x(a->x, 1, u, &lo, &hi);
+                if (b->y <= yb) rast__touch_x(b->x, 1, u, &lo, &hi);
                 if (a->y < yt && yt < b->y)
                     rast__touch_x((int64_t)a->x * (b->y - a->y) + (yt - a->y) * (b->x - a->x),
                                   b->y - a->y, u, &lo, &hi);
                 if (a->y < yb && yb < b->y)
                     rast__touch_x((int64_t)a->x * (b->y - a->y) + (yb - a->y) * (b->x - a->x),
                                   b->y - a->y, u, &lo, &hi);
+                if (lo < clip->x0) lo = clip->x0;
+                if (hi > clip->x1 - 1) hi = clip->x1 - 1;
+                if (lo > hi) continue;
+                xs[0] = (int32_t)lo;
+                xs[1] = (int32_t)(hi + 1);
+                fn(user, (int32_t)j, xs, 1);
             }
-            if (lo < clip->x0) lo = clip->x0;
-            if (hi > clip->x1 - 1) hi = clip->x1 - 1;
-            if (lo > hi) continue;
-            xs[0] = (int32_t)lo;
-            xs[1] = (int32_t)(hi + 1);
-            fn(user, (int32_t)j, xs, 1);
         }
     }
     return RAST_OK;
@@ -117,7 +126,15 @@ static void rast__aa_shade_run(void *user, int32_t y, int32_t x0, int32_t x1, co
     unsigned char *row = p->base + (ptrdiff_t)y * p->stride;
     const unsigned char *col =
         p->rgba + (ptrdiff_t)(y - p->band.y0) * p->rgba_stride + (ptrdiff_t)(x0 - p->band.x0) * 4;
-    int32_t x;
+    int32_t x, c, n = p->fmt->value;
+    if (p->fmt->bits == 8 * n && p->fmt->channels == n) {
+        /* GRAY8, RGB888, RGBA8888: a colour packs to its first n levels,
+         * each blended as the format's blend does (rast__blend8) */
+        unsigned char *o = row + (ptrdiff_t)x0 * n;
+        for (x = x0; x < x1; x++, col += 4, o += n)
+            for (c = 0; c < n; c++) o[c] = (unsigned char)rast__blend8(col[c], o[c], cov[x - x0]);
+        return;
+    }
     for (x = x0; x < x1; x++, col += 4) {
         unsigned char v[4] = {0, 0, 0, 0};
         p->fmt->pack(col, v);
@@ -125,12 +142,11 @@ static void rast__aa_shade_run(void *user, int32_t y, int32_t x0, int32_t x1, co
     }
 }
 
-/* Bytes of the coverage part (aligned) and the whole, for a clip
- * width x height: the band's rows. */
+/* Bytes of the coverage part (aligned) and the whole, for a band of
+ * `rows` rows of `width` pixels. */
 static rast_status rast__aa_shade_need(const rast_coverage_opts *opts, uint32_t ntris,
-                                       int32_t width, int32_t height, size_t *cov, size_t *all)
+                                       int32_t width, int32_t rows, size_t *cov, size_t *all)
 {
-    int32_t rows = height < RAST__AA_SHADE_ROWS ? height : RAST__AA_SHADE_ROWS;
     rast_status st;
     if (ntris > RAST_MAX_POINTS / 3) return RAST_E_TOO_MANY;
     st = rast_coverage_scratch_size(opts, 3 * ntris, width, rows, cov);
@@ -147,7 +163,9 @@ rast_status rast_shaded_aa_scratch_size(const rast_coverage_opts *opts, uint32_t
     if (!bytes) return RAST_E_NULL;
     if (width < 0 || height < 0 || width > RAST_MAX_DIM || height > RAST_MAX_DIM)
         return RAST_E_SIZE;
-    return rast__aa_shade_need(opts, ntris, width, height, &cov, bytes);
+    return rast__aa_shade_need(opts, ntris, width,
+                               height < RAST__AA_SHADE_ROWS ? height : RAST__AA_SHADE_ROWS, &cov,
+                               bytes);
 }
 
 rast_status rast_fill_triangles_shaded_aa(const rast_target *target, const rast_point *tris,
@@ -160,7 +178,7 @@ rast_status rast_fill_triangles_shaded_aa(const rast_target *target, const rast_
     rast_rect clip;
     rast_tri_opts exact, touch;
     size_t cov_bytes, need;
-    int32_t width, y;
+    int32_t width, height, rows, y;
     rast_status st;
 
     if (!target || !opts || !shade || (ntris > 0 && (!tris || !colors))) return RAST_E_NULL;
@@ -171,10 +189,21 @@ rast_status rast_fill_triangles_shaded_aa(const rast_target *target, const rast_
     p.fmt = &rast__formats[target->format];
     if (!p.fmt->pack) return RAST_E_FORMAT;
     width = clip.x1 - clip.x0;
-    st = rast__aa_shade_need(opts, ntris, width, clip.y1 - clip.y0, &cov_bytes, &need);
+    height = clip.y1 - clip.y0;
+    rows = height < RAST__AA_SHADE_ROWS ? height : RAST__AA_SHADE_ROWS;
+    st = rast__aa_shade_need(opts, ntris, width, rows, &cov_bytes, &need);
     if (st != RAST_OK) return st;
     st = rast__scratch_check(scratch, scratch_bytes, need);
     if (st != RAST_OK) return st;
+    while (rows < height) { /* as many rows as the scratch holds: fewer bands */
+        int32_t more = rows > height / 2 ? height : 2 * rows;
+        size_t c2, n2;
+        if (rast__aa_shade_need(opts, ntris, width, more, &c2, &n2) != RAST_OK ||
+            n2 > scratch_bytes)
+            break;
+        rows = more;
+        cov_bytes = c2;
+    }
     if (clip.y0 >= clip.y1 || width == 0) /* nothing to paint: the checks only */
         return rast_triangles_coverage_spans(tris, ntris, opts, &clip, rast__aa_shade_run, &p,
                                              scratch, cov_bytes);
@@ -195,11 +224,11 @@ rast_status rast_fill_triangles_shaded_aa(const rast_target *target, const rast_
     /* Band by band; every check is made by the first band's calls, before
      * its coverage call writes (the later bands repeat them on the same
      * input and pass). */
-    for (y = clip.y0; y < clip.y1; y += RAST__AA_SHADE_ROWS) {
+    for (y = clip.y0; y < clip.y1; y += rows) {
         unsigned char *rgba = (unsigned char *)scratch + cov_bytes;
         p.band = clip;
         p.band.y0 = y;
-        if (clip.y1 - y > RAST__AA_SHADE_ROWS) p.band.y1 = y + RAST__AA_SHADE_ROWS;
+        if (clip.y1 - y > rows) p.band.y1 = y + rows;
         memset(rgba, 0, (size_t)width * 4 * (size_t)(p.band.y1 - p.band.y0));
         st = rast__shade_band(rgba, p.rgba_stride, &p.band, tris, ntris, colors, &touch, shade,
                               rast__tri_touching, NULL, 0);

@@ -270,7 +270,9 @@ static void test_full_is_binary(void)
 }
 
 /* Band and clip invariance: the whole target equals clips of 1, 7 and 16
- * rows drawn one after the other; a window writes nothing outside it. */
+ * rows drawn one after the other, and the whole drawn with a scratch that
+ * holds taller bands (about 32 rows, or all 40); a window writes nothing
+ * outside it. */
 static void test_clips(void)
 {
     static const int32_t rows[3] = {1, 7, 16};
@@ -299,6 +301,17 @@ static void test_clips(void)
         target(&t, got, f, H);
         target(&u, want, f, H);
         CHECK(shaded_aa(&t, tris, n, colors, &o, &sh) == RAST_OK);
+        for (r = 0; r < 2; r++) {
+            size_t need;
+            unsigned char *s;
+            CHECK(rast_shaded_aa_scratch_size(&o, n, W, H, &need) == RAST_OK);
+            need += r ? need + 4 * W * H : 4 * W * 16; /* room for 32 rows, or all */
+            memcpy(want, before, SIZE);
+            s = scratch_for(need);
+            CHECK(rast_fill_triangles_shaded_aa(&u, tris, n, colors, &o, &sh, s, need) == RAST_OK);
+            CHECK(scratch_guard_ok(s, need));
+            CHECK(memcmp(got, want, SIZE) == 0);
+        }
         for (r = 0; r < 3; r++) {
             int32_t y;
             memcpy(want, before, SIZE);

@@ -66,7 +66,8 @@ typedef struct rast__shade {
     unsigned char *base;
     ptrdiff_t stride;
     int32_t ox, oy;          /* the pixel at base: (0, 0) for a target, a
-                                band's corner for rast__shade_band */
+                                band's corner for rast__shade_band; the
+                                packed rows take (0, 0) (packable) */
     const rast__format *fmt;
     int32_t *zbuf;
     ptrdiff_t zstride;       /* target width */
@@ -334,14 +335,14 @@ static void rast__packed_row(const rast__shade *s, int32_t y, const int32_t *xs,
 {
     const uint64_t m0 = 0x00FF000000FF0000u, m1 = 0xFF000000FF000000u;
     const uint64_t sx0 = s->pkx[0], sx1 = s->pkx[1];
-    unsigned char *row = s->base + (ptrdiff_t)(y - s->oy) * s->stride;
+    unsigned char *row = s->base + (ptrdiff_t)y * s->stride;
     uint64_t r0 = s->pk0[0] + (uint64_t)(int64_t)y * s->pky[0];
     uint64_t r1 = s->pk0[1] + (uint64_t)(int64_t)y * s->pky[1];
     int32_t k;
     for (k = 0; k < n; k++) {
         int32_t x = xs[2 * k], xb = xs[2 * k + 1];
         uint64_t p0 = r0 + (uint64_t)(int64_t)x * sx0, p1 = r1 + (uint64_t)(int64_t)x * sx1;
-        unsigned char *o = row + (ptrdiff_t)(x - s->ox) * 4;
+        unsigned char *o = row + (ptrdiff_t)x * 4;
         for (; x < xb; x++, o += 4) {
             uint64_t w = (p0 & m0) | (p1 & m1);
             uint32_t px = (uint32_t)(w >> 16) | (uint32_t)(w >> 32);
@@ -360,7 +361,7 @@ static void rast__packed_row(const rast__shade *s, int32_t y, const int32_t *xs,
 static void rast__exact_packed_row(const rast__shade *s, int32_t y, const int32_t *xs, int32_t n)
 {
     const int64_t D = s->D;
-    unsigned char *row = s->base + (ptrdiff_t)(y - s->oy) * s->stride;
+    unsigned char *row = s->base + (ptrdiff_t)y * s->stride;
     uint32_t sxp = 0;
     int64_t rowk[4];
     int32_t c, k;
@@ -372,7 +373,7 @@ static void rast__exact_packed_row(const rast__shade *s, int32_t y, const int32_
         int32_t x = xs[2 * k], xb = xs[2 * k + 1];
         int64_t r[4];
         uint32_t qp = 0;
-        unsigned char *o = row + (ptrdiff_t)(x - s->ox) * 4;
+        unsigned char *o = row + (ptrdiff_t)x * 4;
         for (c = 0; c < 4; c++) {
             int64_t q = rast__recip_floordiv(&s->rd, rowk[c] + (int64_t)(x - s->imin) * s->egx[c],
                                              &r[c]);
@@ -714,7 +715,7 @@ static rast_status rast__shade_setup(rast__shade *s, rast_format format, unsigne
         const uint32_t one = 1;
         unsigned char low;
         memcpy(&low, &one, 1);
-        s->packable = low == 1 && format == RAST_FORMAT_RGBA8888 &&
+        s->packable = low == 1 && format == RAST_FORMAT_RGBA8888 && ox == 0 && oy == 0 &&
                       s->prec != RAST_PRECISION_FLAT && !z && opts->boundary == RAST_BOUNDARY_EXACT;
     }
     return RAST_OK;

@@ -1310,6 +1310,50 @@ RAST_API rast_status rast_fill_triangles_aa(const rast_target *target,
                                             const rast_coverage_opts *opts, const void *pixel,
                                             void *scratch, size_t scratch_bytes);
 
+/* ---- anti-aliased shaded triangles (shade_aa.c) -------------------------------
+ * rast_fill_triangles_shaded with coverage instead of the binary rule: a
+ * triangle batch's union coverage (as rast_fill_triangles_aa) times a
+ * Gouraud colour per pixel.  For each pixel of target->clip whose coverage
+ * level c (the RAST_COVERAGE_U8 value rast_triangles_coverage gives with
+ * `opts`) is not 0:
+ *  - the colour: if the binary rule gives the pixel's sample point (at the
+ *    offset opts->sample, S = opts->subpixel_bits, exact rounding) to a
+ *    triangle, exactly the colour rast_fill_triangles_shaded writes there
+ *    (the last such triangle in batch order: its interpolation at the
+ *    sample, shade->precision); else (a silhouette pixel) the last
+ *    non-degenerate triangle in batch order whose closed region meets the
+ *    pixel's closed square [i, i+1] x [j, j+1] (there is one wherever
+ *    c > 0), its interpolation evaluated at the sample point (outside the
+ *    triangle: the plane's value) with the same rounding, clamped to
+ *    0..255 per channel;
+ *  - that colour, packed as rast_fill_triangles_shaded packs it (GRAY8,
+ *    MONO1: R; RGB565: top bits), is blended with c as rast_fill_polygon_aa
+ *    blends a value (channel floor((s c + d (255 - c) + 127) / 255); MONO1
+ *    written iff c >= 128).
+ * Pixels with c = 0 are not touched.  A mesh drawn in one call has no
+ * seams: its coverage is that of the union.
+ * shade->precision: RAST_PRECISION_EXACT or RAST_PRECISION_FLAT (vertex
+ * 0's colour for every pixel of a triangle); FIXED is not offered
+ * (RAST_E_ARG).  No depth.
+ * Memory: the colours of a band of min(16, clip height) rows, 4 bytes a
+ * pixel, beside the coverage scratch of that band:
+ * rast_shaded_aa_scratch_size.  The clip is done band by band (each
+ * band recomputes the coverage and colours of the triangles that reach
+ * it); given more scratch, the bands grow (doubling, up to the clip's
+ * height) while it holds them: fewer bands, less work, the same pixels.
+ * Errors, all before anything is written: those of
+ * rast_fill_triangles_aa, RAST_E_NULL (shade; colors with ntris > 0),
+ * RAST_E_FORMAT (COUNT16), RAST_E_ARG (a precision other than EXACT and
+ * FLAT). */
+RAST_API rast_status rast_shaded_aa_scratch_size(const rast_coverage_opts *opts, uint32_t ntris,
+                                                 int32_t width, int32_t height, size_t *bytes);
+RAST_API rast_status rast_fill_triangles_shaded_aa(const rast_target *target,
+                                                   const rast_point *tris, uint32_t ntris,
+                                                   const uint8_t *colors,
+                                                   const rast_coverage_opts *opts,
+                                                   const rast_shade_opts *shade,
+                                                   void *scratch, size_t scratch_bytes);
+
 /* ---- region fill -------------------------------------------------------------
  * Seed fill (seed 001 section 3.6): starting at the seed pixel (x, y),
  * write `value` over a connected region of target->clip.  Pixels are

@@ -105,6 +105,33 @@ rast_status rast__tri_fill(const rast_point *tris, uint32_t ntris, const rast_tr
                            const rast__solid *gray8, rast__tri_begin_fn begin,
                            void *scratch, size_t scratch_bytes);
 
+/* A triangle filler as rast__tri_fill (its signature): rast__tri_fill
+ * itself, or rast__tri_touching (shade_aa.c). */
+typedef rast_status (*rast__tri_filler_fn)(const rast_point *tris, uint32_t ntris,
+                                           const rast_tri_opts *opts, const rast_rect *clip,
+                                           rast__row_fn fn, void *user,
+                                           const rast__solid *gray8, rast__tri_begin_fn begin,
+                                           void *scratch, size_t scratch_bytes);
+
+/* The pixels whose closed square [i, i+1] x [j, j+1] meets an edge (a
+ * closed segment) of the triangle, for each non-degenerate triangle in
+ * turn (rows top to bottom, a span per edge in the row, possibly
+ * overlapping), cut to `clip`: the silhouette filler of the anti-aliased
+ * shaded fill.  Checks as rast__tri_fill; needs no scratch; gray8 unused. */
+rast_status rast__tri_touching(const rast_point *tris, uint32_t ntris, const rast_tri_opts *opts,
+                               const rast_rect *clip, rast__row_fn fn, void *user,
+                               const rast__solid *gray8, rast__tri_begin_fn begin,
+                               void *scratch, size_t scratch_bytes);
+
+/* The Gouraud painter (shade.c) fed by `filler`, into RGBA8888 colours:
+ * pixel (band->x0 + i, band->y0 + j) at rgba + j stride + 4 i, every
+ * pixel of `band` the filler gives written (clamped to 0..255).  Checks
+ * as rast_fill_triangles_shaded (no depth). */
+rast_status rast__shade_band(unsigned char *rgba, ptrdiff_t stride, const rast_rect *band,
+                             const rast_point *tris, uint32_t ntris, const uint8_t *colors,
+                             const rast_tri_opts *opts, const rast_shade_opts *shade,
+                             rast__tri_filler_fn filler, void *scratch, size_t scratch_bytes);
+
 /* The polygon entry points' common part (fill.c), for 32-bit polygons
  * (fill.c) and 64-bit ones (poly64.c): `fill` checks the polygon (a
  * rast_polygon or rast_polygon64), options and scratch for a clip and runs

@@ -65,6 +65,9 @@ typedef struct rast__chan {
 typedef struct rast__shade {
     unsigned char *base;
     ptrdiff_t stride;
+    int32_t ox, oy;          /* the pixel at base: (0, 0) for a target, a
+                                band's corner for rast__shade_band; the
+                                packed rows take (0, 0) (packable) */
     const rast__format *fmt;
     int32_t *zbuf;
     ptrdiff_t zstride;       /* target width */
@@ -96,6 +99,7 @@ typedef struct rast__shade {
     int64_t ek[4], egx[4], egy[4], esx[4], etx[4];
     /* flat without depth: a solid painter */
     int32_t flat;
+    int32_t cull;            /* skip triangles whose rows miss the clip (bands) */
     rast__solid solid;
     rast__row_fn solid_fn;
 } rast__shade;
@@ -261,7 +265,7 @@ static int rast__chan_start(const rast__shade *s, const rast__chan *ch, int fixe
 
 static void rast__shade_span(rast__shade *s, int32_t y, int32_t xa, int32_t xb)
 {
-    unsigned char *row = s->base + (ptrdiff_t)y * s->stride;
+    unsigned char *row = s->base + (ptrdiff_t)(y - s->oy) * s->stride;
     int32_t *zrow = s->zbuf ? s->zbuf + (ptrdiff_t)y * s->zstride : NULL;
     unsigned char buf[4 * RAST__SHADE_RUN];
     int64_t val[RAST__SHADE_RUN];
@@ -277,7 +281,7 @@ static void rast__shade_span(rast__shade *s, int32_t y, int32_t xa, int32_t xb)
         for (x = xa; x < xb; x += RAST__SHADE_RUN) {
             int32_t n = xb - x < RAST__SHADE_RUN ? xb - x : RAST__SHADE_RUN;
             rast__fixed_colours(s, q, nch, n, buf);
-            s->fmt->put(row, x, n, buf);
+            s->fmt->put(row, x - s->ox, n, buf);
         }
         return;
     }
@@ -297,7 +301,7 @@ static void rast__shade_span(rast__shade *s, int32_t y, int32_t xa, int32_t xb)
             for (k = 0; k < n; k++) buf[4 * k + c] = (unsigned char)val[k];
         }
         if (!zrow) {
-            s->fmt->put(row, x, n, buf);
+            s->fmt->put(row, x - s->ox, n, buf);
             continue;
         }
         c = RAST__CH_Z;
@@ -317,7 +321,7 @@ static void rast__shade_span(rast__shade *s, int32_t y, int32_t xa, int32_t xb)
                 continue;
             }
             for (e = k + 1; e < n && pass[e]; e++) {}
-            s->fmt->put(row, x + k, e - k, buf + 4 * k);
+            s->fmt->put(row, x + k - s->ox, e - k, buf + 4 * k);
             k = e;
         }
     }
@@ -606,6 +610,14 @@ static int rast__shade_begin(void *user, const rast_point *t, uint32_t k, const 
     s->unit = g->unit;
     s->shift = g->shift;
     s->off = g->off;
+    if (s->cull) { /* a band: a triangle whose rows (and a pixel to spare) miss it */
+        int64_t y1 = y0 + ey1, y2 = y0 + ey2;
+        int64_t lo = y0 < y1 ? (y0 < y2 ? y0 : y2) : (y1 < y2 ? y1 : y2);
+        int64_t hi = y0 > y1 ? (y0 > y2 ? y0 : y2) : (y1 > y2 ? y1 : y2);
+        if (hi < ((int64_t)s->solid.clip.y0 - 1) * s->unit ||
+            lo > ((int64_t)s->solid.clip.y1 + 1) * s->unit)
+            return 0;
+    }
 
     if (s->flat) {
         s->fmt->pack(col, s->solid.value);
@@ -664,6 +676,51 @@ static int rast__shade_begin(void *user, const rast_point *t, uint32_t k, const 
     return 1;
 }
 
+/* The painter for a checked format with colour, pixels at base (stride
+ * bytes a row) holding pixel (ox, oy) of the target's plane, clip `clip`. */
+static rast_status rast__shade_setup(rast__shade *s, rast_format format, unsigned char *base,
+                                     ptrdiff_t stride, int32_t ox, int32_t oy,
+                                     const rast_rect *clip, const uint8_t *colors,
+                                     const int32_t *z, int32_t *zbuf, int32_t zstride,
+                                     const rast_tri_opts *opts, const rast_shade_opts *shade)
+{
+    int32_t c;
+    if ((unsigned)shade->precision > RAST_PRECISION_FLAT) return RAST_E_ARG;
+    if (shade->precision == RAST_PRECISION_FIXED &&
+        (shade->fraction_bits < 1 || shade->fraction_bits > 16))
+        return RAST_E_ARG;
+    memset(s, 0, sizeof *s);
+    s->fmt = &rast__formats[format];
+    if (!s->fmt->put) return RAST_E_FORMAT;
+    s->base = base;
+    s->stride = stride;
+    s->ox = ox;
+    s->oy = oy;
+    s->zbuf = zbuf;
+    s->zstride = zstride;
+    s->colors = colors;
+    s->z = z;
+    s->prec = shade->precision;
+    s->F = shade->fraction_bits;
+    s->nch = s->fmt->channels;
+    for (c = 0; c < 4; c++) {
+        s->ch[c].lo = 0;
+        s->ch[c].hi = 255;
+    }
+    s->ch[RAST__CH_Z].lo = INT32_MIN;
+    s->ch[RAST__CH_Z].hi = INT32_MAX;
+    /* the clip (the flat painter's too) */
+    s->solid.clip = *clip;
+    {
+        const uint32_t one = 1;
+        unsigned char low;
+        memcpy(&low, &one, 1);
+        s->packable = low == 1 && format == RAST_FORMAT_RGBA8888 && ox == 0 && oy == 0 &&
+                      s->prec != RAST_PRECISION_FLAT && !z && opts->boundary == RAST_BOUNDARY_EXACT;
+    }
+    return RAST_OK;
+}
+
 rast_status rast_fill_triangles_shaded(const rast_target *target, const rast_point *tris,
                                        uint32_t ntris, const uint8_t *colors, const int32_t *z,
                                        int32_t *zbuf, const rast_tri_opts *opts,
@@ -673,34 +730,14 @@ rast_status rast_fill_triangles_shaded(const rast_target *target, const rast_poi
     rast__shade s;
     rast_rect clip;
     rast_status st;
-    int32_t c;
 
     if (!target || !opts || !shade || (ntris > 0 && (!tris || !colors))) return RAST_E_NULL;
     if (!z != !zbuf) return RAST_E_NULL;
     st = rast__target_check(target, &clip);
     if (st != RAST_OK) return st;
-    if ((unsigned)shade->precision > RAST_PRECISION_FLAT) return RAST_E_ARG;
-    if (shade->precision == RAST_PRECISION_FIXED &&
-        (shade->fraction_bits < 1 || shade->fraction_bits > 16))
-        return RAST_E_ARG;
-    memset(&s, 0, sizeof s);
-    s.fmt = &rast__formats[target->format];
-    if (!s.fmt->put) return RAST_E_FORMAT;
-    s.base = (unsigned char *)target->pixels;
-    s.stride = target->stride;
-    s.zbuf = zbuf;
-    s.zstride = target->width;
-    s.colors = colors;
-    s.z = z;
-    s.prec = shade->precision;
-    s.F = shade->fraction_bits;
-    s.nch = s.fmt->channels;
-    for (c = 0; c < 4; c++) {
-        s.ch[c].lo = 0;
-        s.ch[c].hi = 255;
-    }
-    s.ch[RAST__CH_Z].lo = INT32_MIN;
-    s.ch[RAST__CH_Z].hi = INT32_MAX;
+    st = rast__shade_setup(&s, target->format, (unsigned char *)target->pixels, target->stride,
+                           0, 0, &clip, colors, z, zbuf, target->width, opts, shade);
+    if (st != RAST_OK) return st;
     /* The solid painter: the flat colour without depth, and the clip. */
     {
         static const unsigned char zero[4] = {0, 0, 0, 0};
@@ -708,13 +745,20 @@ rast_status rast_fill_triangles_shaded(const rast_target *target, const rast_poi
         if (st != RAST_OK) return st;
     }
     s.flat = s.prec == RAST_PRECISION_FLAT && !z;
-    {
-        const uint32_t one = 1;
-        unsigned char low;
-        memcpy(&low, &one, 1);
-        s.packable = low == 1 && target->format == RAST_FORMAT_RGBA8888 &&
-                     s.prec != RAST_PRECISION_FLAT && !z && opts->boundary == RAST_BOUNDARY_EXACT;
-    }
     return rast__tri_fill(tris, ntris, opts, &clip, rast__shade_row, &s, NULL, rast__shade_begin,
                           scratch, scratch_bytes);
+}
+
+rast_status rast__shade_band(unsigned char *rgba, ptrdiff_t stride, const rast_rect *band,
+                             const rast_point *tris, uint32_t ntris, const uint8_t *colors,
+                             const rast_tri_opts *opts, const rast_shade_opts *shade,
+                             rast__tri_filler_fn filler, void *scratch, size_t scratch_bytes)
+{
+    rast__shade s;
+    rast_status st = rast__shade_setup(&s, RAST_FORMAT_RGBA8888, rgba, stride, band->x0,
+                                       band->y0, band, colors, NULL, NULL, 0, opts, shade);
+    if (st != RAST_OK) return st;
+    s.cull = 1;
+    return filler(tris, ntris, opts, band, rast__shade_row, &s, NULL, rast__shade_begin, scratch,
+                  scratch_bytes);
 }

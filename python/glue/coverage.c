@@ -2,7 +2,7 @@
  * scratch from malloc, and one C call per Python call, writing a whole
  * (height, width) array of uint8, uint16 or uint64 (2^-62 units), or
  * painting the coverage into a target (rast_fill_polygon_aa,
- * rast_fill_triangles_aa). */
+ * rast_fill_triangles_aa, rast_fill_triangles_shaded_aa). */
 
 #include <stdlib.h>
 #include "coverage.h"
@@ -10,13 +10,16 @@
 static const int32_t rastpy_cov_size[3] = {1, 2, 8};
 
 /* Where the values go: an array (target NULL: out, format, its clip) or a
- * target painted with `pixel`. */
+ * target painted with `pixel`, or (colors not NULL) shaded with the
+ * vertex colours `colors` and `shade`. */
 typedef struct rastpy_cov_dest {
     void *out;
     int format;
     rast_rect clip;
     const rast_target *target;
     const void *pixel;
+    const uint8_t *colors;
+    const rast_shade_opts *shade;
 } rastpy_cov_dest;
 
 static long rastpy_coverage(const rastpy_cov_dest *d, const double *xy, uint32_t npoints,
@@ -35,8 +38,12 @@ static long rastpy_coverage(const rastpy_cov_dest *d, const double *xy, uint32_t
         if (d->format < 0 || d->format > 2) return RAST_E_ARG;
         stride = (ptrdiff_t)(d->clip.x1 - d->clip.x0) * rastpy_cov_size[d->format];
     }
-    st = rast_coverage_scratch_size(opts, npoints, clip->x1 - clip->x0, clip->y1 - clip->y0,
-                                    &need);
+    if (d->colors)
+        st = rast_shaded_aa_scratch_size(opts, npoints / 3, clip->x1 - clip->x0,
+                                         clip->y1 - clip->y0, &need);
+    else
+        st = rast_coverage_scratch_size(opts, npoints, clip->x1 - clip->x0, clip->y1 - clip->y0,
+                                        &need);
     if (st != RAST_OK) return st;
     pts = (int32_t *)malloc((size_t)npoints * sizeof(rast_point) + 1);
     if (!pts) return RASTPY_E_NOMEM;
@@ -53,7 +60,10 @@ static long rastpy_coverage(const rastpy_cov_dest *d, const double *xy, uint32_t
     poly.points = (const rast_point *)(void *)pts;
     poly.ring_sizes = ring_sizes ? ring_sizes : &npoints;
     poly.nrings = ring_sizes ? nrings : 1;
-    if (d->target && triangles)
+    if (d->colors)
+        st = rast_fill_triangles_shaded_aa(d->target, poly.points, npoints / 3, d->colors, opts,
+                                           d->shade, scratch, need);
+    else if (d->target && triangles)
         st = rast_fill_triangles_aa(d->target, poly.points, npoints / 3, opts, d->pixel, scratch,
                                     need);
     else if (d->target)
@@ -80,6 +90,8 @@ static rastpy_cov_dest rastpy_array(void *out, int32_t height, int32_t width, in
     d.clip.y1 = height;
     d.target = NULL;
     d.pixel = NULL;
+    d.colors = NULL;
+    d.shade = NULL;
     return d;
 }
 
@@ -122,5 +134,17 @@ long rastpy_fill_triangles_aa(const rast_target *target, const double *xy, uint3
     rastpy_cov_dest d;
     if (!target) return RAST_E_NULL;
     d = rastpy_paint(target, pixel);
+    return rastpy_coverage(&d, xy, 3 * ntris, NULL, 0, 1, opts);
+}
+
+long rastpy_fill_triangles_shaded_aa(const rast_target *target, const double *xy, uint32_t ntris,
+                                     const uint8_t *colors, const rast_coverage_opts *opts,
+                                     const rast_shade_opts *shade)
+{
+    rastpy_cov_dest d;
+    if (!target || !colors || !shade) return RAST_E_NULL;
+    d = rastpy_paint(target, NULL);
+    d.colors = colors;
+    d.shade = shade;
     return rastpy_coverage(&d, xy, 3 * ntris, NULL, 0, 1, opts);
 }

@@ -1,7 +1,8 @@
 /* coverage.h - the binding glue of the coverage entry points
  * (python/glue/coverage.c): snap float64 input, take scratch from malloc,
  * one call to rast_polygon_coverage or rast_triangles_coverage (an array),
- * or to rast_fill_polygon_aa or rast_fill_triangles_aa (a target).
+ * or to rast_fill_polygon_aa, rast_fill_triangles_aa or
+ * rast_fill_triangles_shaded_aa (a target).
  * Results as rastpy.h's: 0, a negative status (or RASTPY_E_NOMEM), or
  * k + 1 when point k is bad. */
 #ifndef RASTPY_COVERAGE_H
@@ -21,6 +22,9 @@ long rastpy_fill_polygon_aa(const rast_target *target, const double *xy, uint32_
                             const rast_coverage_opts *opts, const void *pixel);
 long rastpy_fill_triangles_aa(const rast_target *target, const double *xy, uint32_t ntris,
                               const rast_coverage_opts *opts, const void *pixel);
+long rastpy_fill_triangles_shaded_aa(const rast_target *target, const double *xy, uint32_t ntris,
+                                     const uint8_t *colors, const rast_coverage_opts *opts,
+                                     const rast_shade_opts *shade);
 /* cdef-end */
 
 #endif

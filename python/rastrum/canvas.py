@@ -304,12 +304,24 @@ class Canvas:
                  vertex_colors=None, depth=None, **binary_only):
         """An anti-aliased fill (``aa=`` not None) of a polygon's rings, or of
         a checked (N, 3, 2) triangle batch for the triangle entries."""
-        if vertex_colors is not None or depth is not None:
-            raise InputError("%s: aa=%r paints one colour; vertex_colors and depth are for binary "
-                             "shaded fills (aa=None)" % (entry, aa))
+        if depth is not None:
+            raise InputError("%s: depth is for binary shaded fills (aa=None); with aa=%r leave "
+                             "it out (draw the batch back to front)" % (entry, aa))
+        if vertex_colors is not None and entry == "Canvas.fill_polygon":
+            raise InputError("Canvas.fill_polygon: aa=%r paints one colour; vertex_colors is for "
+                             "binary shaded polygons (aa=None), or triangulate the polygon and "
+                             "use fill_triangles(..., vertex_colors=..., aa=%r)" % (aa, aa))
+        shading = binary_only.pop("shading", ("gouraud", "gouraud"))[0]
+        precision = binary_only.pop("precision", ("exact", "exact"))[0]
+        if vertex_colors is None:  # one colour: no shading to choose
+            binary_only.update(shading=(shading, "gouraud"), precision=(precision, "exact"))
         opts = _coverage.aa_opts(aa, rule, subpixel_bits, sample_offset, entry, binary_only)
         if self._format == "label":
             raise InputError("a label canvas holds labels, which do not blend: aa=None")
+        if vertex_colors is not None:
+            self._fill_shaded_aa(geometry, color, vertex_colors, shading, precision, aa, opts,
+                                 entry)
+            return
         if color is None:
             raise InputError("%s needs color" % entry)
         if np.ndim(color) >= 2:
@@ -321,6 +333,27 @@ class Canvas:
         else:
             _coverage.fill_triangles_aa(self._writable(), geometry, pixel, opts,
                                         "tri" if entry == "Canvas.fill_triangle" else "tris")
+
+    def _fill_shaded_aa(self, batch, color, vertex_colors, shading, precision, aa, opts, entry):
+        """Gouraud (or flat) colour times the batch's coverage
+        (rast_fill_triangles_shaded_aa)."""
+        if color is not None:
+            raise InputError("%s takes exactly one of color and vertex_colors" % entry)
+        precision = _core.shading_precision(shading, precision)
+        if not isinstance(precision, str) or precision not in ("exact", "flat"):
+            raise InputError("%s: aa=%r shades with precision \"exact\" (or shading=\"flat\"), "
+                             "not %r; precision=\"fixed\" is for binary fills (aa=None)"
+                             % (entry, aa, precision))
+        channels = _CHANNELS.get(self._format, 0)
+        if not channels:
+            raise InputError("format %s has no colours to shade" % self._format)
+        if entry == "Canvas.fill_triangle":
+            vc = np.asarray(vertex_colors)
+            vertex_colors = vc[None] if vc.ndim == 2 else vc
+        colors = _shade.rgba(vertex_colors, batch.shape[0], True, self._format, channels)
+        _coverage.fill_triangles_shaded_aa(self._writable(), batch, colors, opts,
+                                           _shade.shade_opts(precision, 16),
+                                           "tri" if entry == "Canvas.fill_triangle" else "tris")
 
     @_label_spill
     def fill_polygon(self, rings, color=None, *, rule="evenodd", algorithm="aet", subpixel_bits=8,
@@ -339,7 +372,9 @@ class Canvas:
         d becomes (s*c + d*(255 - c) + 127) // 255 (rgb565: on its 5/6/5
         bits; rgba8888: alpha too), mono1 takes the colour where c >= 128,
         pixels with c = 0 are untouched.  `algorithm`, `rounding`,
-        `boundary` and `vertex_colors` are for binary fills (aa=None) only.
+        `boundary` and `vertex_colors` are for binary fills (aa=None) only
+        (for colours per vertex, triangulate and use :meth:`fill_triangles`
+        with `vertex_colors` and `aa`).
 
         With `vertex_colors` instead of `color`: one colour per vertex, an
         (N, C) array-like for the N vertices of all rings in order (or a
@@ -453,9 +488,16 @@ class Canvas:
         the batch's coverage as :func:`rastrum.triangles_coverage` gives it:
         the batch is ONE region (its union), so a mesh drawn in one call
         has no seams and nothing is blended twice.  The blend is
-        :meth:`fill_polygon`'s.  `algorithm`, `rounding`, `boundary`,
-        `vertex_colors`, `depth` and per-triangle colours are for binary
-        fills (aa=None) only.
+        :meth:`fill_polygon`'s.  With `vertex_colors` instead of `color`
+        (shading "gouraud" or "flat", precision "exact") each pixel's
+        colour is blended: where the binary rule gives its sample to a
+        triangle, exactly the binary shaded fill's colour; on the
+        silhouette (covered, sample outside every triangle), the last
+        triangle touching the pixel's closed square, its plane extended to
+        the sample, rounded as the binary fill, clamped to 0..255 (see
+        docs/coverage.md).  `algorithm`, `rounding`, `boundary`, `depth`,
+        fixed precision and per-triangle colours are for binary fills
+        (aa=None) only.
 
         Examples
         --------

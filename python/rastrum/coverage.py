@@ -190,8 +190,10 @@ def triangles_coverage(tris, shape, *, method="area", subpixel_bits=8, sample_of
 #: Canvas fills that take ``aa=``, and for each the methods it accepts
 #: (with the fill rules each takes; a triangle batch is one region, a union,
 #: whatever the rule).  ``aa=None`` (the default) is the binary fill of
-#: ``ALGORITHMS``; shaded fills (``vertex_colors=``, ``depth=``, per-triangle
-#: colours) have no ``aa=``.
+#: ``ALGORITHMS``.  The triangle fills take ``aa=`` with ``vertex_colors=``
+#: too (Gouraud colour times coverage; shading "gouraud" or "flat",
+#: precision "exact"); ``depth=``, per-triangle colours, fixed precision and
+#: shaded polygons have no ``aa=``.
 AA_ENTRIES = ("Canvas.fill_polygon", "Canvas.fill_triangle", "Canvas.fill_triangles")
 
 
@@ -228,5 +230,17 @@ def fill_triangles_aa(target, batch, pixel, opts, what="tris"):
     if n == 0:
         return
     result = lib.rastpy_fill_triangles_aa(target, ffi.from_buffer("double[]", batch), n, opts, pixel)
+    if result:
+        _check(result, batch.reshape(-1, 2), opts, what, 3)
+
+
+def fill_triangles_shaded_aa(target, batch, colors, opts, sopts, what="tris"):
+    """rast_fill_triangles_shaded_aa of the (N, 3, 2) float64 `batch` with
+    the (N, 3, 4) uint8 RGBA vertex `colors`: one region, a colour per pixel."""
+    n = _ntris(batch)
+    if n == 0:
+        return
+    result = lib.rastpy_fill_triangles_shaded_aa(target, ffi.from_buffer("double[]", batch), n,
+                                                 ffi.from_buffer("uint8_t[]", colors), opts, sopts)
     if result:
         _check(result, batch.reshape(-1, 2), opts, what, 3)

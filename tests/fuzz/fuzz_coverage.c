@@ -22,7 +22,10 @@
  *  - rast_fill_polygon_aa / rast_fill_triangles_aa (uint8, a clip inside
  *    the target): a target of any format with fuzzed pixels becomes the
  *    documented blend (tests/c/blend_ref.h) of those values, nothing
- *    around the clip written.
+ *    around the clip written;
+ *  - rast_fill_triangles_shaded_aa with one colour at every vertex (exact
+ *    or flat): the same bytes as rast_fill_triangles_aa with that colour
+ *    packed (rast_pack_color), for every colour format.
  */
 #include "blend_ref.h"
 #include "fuzz.h"
@@ -96,7 +99,42 @@ static rast_status run(const rast_polygon *pg, const rast_point *tris, uint32_t 
  * become blend_ref of them, its guards and the pixels outside the clip
  * untouched (fz_target's frame). */
 static fz_target paint_t;
-static unsigned char paint_want[sizeof paint_t.mem];
+static unsigned char paint_want[sizeof paint_t.mem], paint_before[sizeof paint_t.mem];
+static uint8_t shade_colors[4 * MAXPTS];
+
+/* The shaded anti-aliased batch with `rgba` at every vertex, over the
+ * pixels of paint_before: the blend of that colour packed, as
+ * rast_fill_triangles_aa paints it (paint_want for that value). */
+static void shade_check(fz_in *in, const rast_point *tris, uint32_t ntris,
+                        const rast_coverage_opts *o, const rast_rect *clip, ptrdiff_t stride)
+{
+    rast_shade_opts sh;
+    unsigned char rgba[4], value[4] = {0, 0, 0, 0};
+    int32_t x, y;
+    size_t k, need;
+    void *mem;
+    for (k = 0; k < 4; k++) rgba[k] = (unsigned char)fz_u8(in);
+    memset(&sh, 0, sizeof sh);
+    sh.precision = fz_u8(in) & 1 ? RAST_PRECISION_FLAT : RAST_PRECISION_EXACT;
+    for (k = 0; k < 3 * (size_t)ntris; k++) memcpy(shade_colors + 4 * k, rgba, 4);
+    if (paint_t.t.format == RAST_FORMAT_COUNT16) return; /* no colour: test_shaded_aa.c */
+    FZ_ASSERT(rast_pack_color(paint_t.t.format, rgba, value) == RAST_OK);
+    memcpy(paint_t.mem, paint_before, sizeof paint_before);
+    memcpy(paint_want, paint_before, sizeof paint_want);
+    for (y = clip->y0; y < clip->y1; y++)
+        for (x = clip->x0; x < clip->x1; x++)
+            blend_ref(paint_t.t.format,
+                      paint_want + ((unsigned char *)paint_t.t.pixels - paint_t.mem) + y * paint_t.t.stride,
+                      x, out[(y - clip->y0) * stride + (x - clip->x0)], value);
+    FZ_ASSERT(rast_shaded_aa_scratch_size(o, ntris, clip->x1 - clip->x0, clip->y1 - clip->y0,
+                                          &need) == RAST_OK);
+    FZ_ASSERT(need <= FZ_SCRATCH_MAX);
+    mem = fz_scratch_init(&scratch, need);
+    FZ_ASSERT(rast_fill_triangles_shaded_aa(&paint_t.t, tris, ntris, shade_colors, o, &sh, mem,
+                                            need) == RAST_OK);
+    fz_scratch_check(&scratch);
+    FZ_ASSERT(memcmp(paint_t.mem, paint_want, sizeof paint_want) == 0);
+}
 
 static void paint_check(fz_in *in, const rast_polygon *pg, const rast_point *tris, uint32_t ntris,
                         int triangles, const rast_coverage_opts *o, const rast_rect *clip,
@@ -116,6 +154,7 @@ static void paint_check(fz_in *in, const rast_polygon *pg, const rast_point *tri
             ((unsigned char *)paint_t.t.pixels)[y * paint_t.t.stride + x] = (unsigned char)fz_u8(in);
     for (k = 0; k < 4; k++) value[k] = (unsigned char)fz_u8(in);
     memcpy(paint_want, paint_t.mem, sizeof paint_want);
+    memcpy(paint_before, paint_t.mem, sizeof paint_before);
     for (y = clip->y0; y < clip->y1; y++)
         for (x = clip->x0; x < clip->x1; x++)
             blend_ref(pf, paint_want + ((unsigned char *)paint_t.t.pixels - paint_t.mem) + y * paint_t.t.stride,
@@ -126,6 +165,7 @@ static void paint_check(fz_in *in, const rast_polygon *pg, const rast_point *tri
     fz_scratch_check(&scratch);
     FZ_ASSERT(st == RAST_OK);
     FZ_ASSERT(memcmp(paint_t.mem, paint_want, sizeof paint_want) == 0);
+    if (triangles) shade_check(in, tris, ntris, o, clip, stride);
 }
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)

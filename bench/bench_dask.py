@@ -22,9 +22,10 @@ polygons and pixels per CPU second, the peak resident memory of each worker proc
 (ru_maxrss) before and after the job (the layer's share is the "before"),
 and, from one more (untimed) run with a worker plugin that resets
 tracemalloc's peak when a task starts and reads it when the task ends,
-each kind of task's peak of traced allocations (numpy arrays and Python
-objects; the C glue's few kilobytes of edge scratch are not traced):
-the median and the largest over its tasks.
+each kind of task's peak of traced allocations above what its worker
+held when it started (numpy arrays and Python objects; the C glue's few
+kilobytes of edge scratch are not traced): the median and the largest
+over its tasks.
 
 With --whole, rastrum.rasterize of the whole job in one process and one
 call (the raster held in memory), its blocks checked against the dask run.
@@ -126,8 +127,9 @@ def _cpu_s():
 
 
 class TaskMemory(distributed.WorkerPlugin):
-    """Per task, the peak of tracemalloc's traced memory while it ran (one
-    thread per worker: tasks do not overlap)."""
+    """Per task, the peak of tracemalloc's traced memory while it ran, above
+    what the worker held as it started (one thread per worker: tasks do not
+    overlap)."""
 
     name = "rastrum-task-memory"
 
@@ -141,8 +143,9 @@ class TaskMemory(distributed.WorkerPlugin):
     def transition(self, key, start, finish, **kwargs):
         if finish == "executing":
             self.tm.reset_peak()
+            self.base = self.tm.get_traced_memory()[0]  # what the worker holds already
         elif start == "executing":
-            self.peaks.append((dask.utils.key_split(key), self.tm.get_traced_memory()[1]))
+            self.peaks.append((dask.utils.key_split(key), self.tm.get_traced_memory()[1] - self.base))
 
     def teardown(self, worker):
         self.tm.stop()
@@ -275,7 +278,8 @@ def main():
         print("    peak RSS per worker (MB): before %s, after %s"
               % (", ".join("%.0f" % v for v in before.values()), ", ".join("%.0f" % v for v in after.values())))
         for kind, (count, med, top_mb) in tasks.items():
-            print("    per-task peak traced memory, %s (%d tasks): median %.1f MB, largest %.1f MB"
+            print("    per-task peak traced memory (above the worker's), %s (%d tasks): median %.1f MB, "
+                  "largest %.1f MB"
                   % (kind, count, med, top_mb))
         if not same:
             sys.exit("the blocks differ between cluster sizes")

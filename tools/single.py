@@ -17,7 +17,7 @@ import sys
 ROOT = os.path.normpath(os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
 SRC = os.path.join(ROOT, "csrc", "src")
 INC = os.path.join(ROOT, "csrc", "include")
-LOCAL = re.compile(r'^\s*#\s*include\s+"([^"]+)"\s*$')
+LOCAL = re.compile(r'^\s*#\s*include\s+"([^"]+)"\s*(/\*.*\*/\s*)?$')
 DEFINE = re.compile(r'^\s*#\s*define\s+(\w+)', re.M)
 
 

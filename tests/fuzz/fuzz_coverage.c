@@ -100,7 +100,7 @@ static rast_status run(const rast_polygon *pg, const rast_point *tris, uint32_t 
  * untouched (fz_target's frame). */
 static fz_target paint_t;
 static unsigned char paint_want[sizeof paint_t.mem], paint_before[sizeof paint_t.mem];
-static uint8_t shade_colors[4 * MAXPTS];
+static uint8_t shade_colors[4 * MAXPTS * REPS]; /* a batch may be replicated REPS times */
 
 /* The shaded anti-aliased batch with `rgba` at every vertex, over the
  * pixels of paint_before: the blend of that colour packed, as

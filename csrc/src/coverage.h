@@ -122,6 +122,10 @@ typedef struct rast__cedge {
     int32_t sg;    /* the sign of its current piece (+1 enters, -1 leaves the inside, 0 neither) */
     int32_t cn, crow;
     uint64_t ctime; /* its crossing time with edge cn in row crow (a cache) */
+    /* the quick column stepper (coverage_area.c, 2^-30 pixel units): at
+     * vertical qX, t from the top = qt + qtr/|dx|; per column qts + qtsr/|dx| */
+    int64_t qt, qX, qts;
+    uint32_t qtr, qtsr;
 } rast__cedge;
 
 /* The edges of a polygon's rings (rule: the caller's) or of a triangle

@@ -980,6 +980,41 @@ static inline uint64_t rast__q_level(const rast__cells *c, int64_t v, uint64_t w
     return lev;
 }
 
+/* The quick cells of a fast row into a uint8 row (the common case, without
+ * branches): a fast row's values lie in [-E, 1 + E] (E M 2^51 <= win / 2 <
+ * 2^49), where v 255 + 2^50 needs no clamp to give the levels 0 .. 255.
+ * Returns 1 when a level is not certain. */
+static int rast__q_row_u8(rast__cells *c, unsigned char *row, uint64_t win)
+{
+    const uint64_t fm = (uint64_t)QONE - 1, lim = (uint64_t)QONE - 2 * win, half = (uint64_t)1 << 50;
+    uint64_t acc = c->qcarry, bad = 0, x;
+    int32_t k = 0, wi, w = c->x1 - c->x0;
+    for (wi = c->wmin; wi <= c->wmax; wi++) {
+        uint64_t b = c->bits[wi];
+        c->bits[wi] = 0;
+        while (b) {
+            int32_t col = (wi << 6) + (int32_t)rast__ctz64(b);
+            rast__i128 *cell = &c->cover[col];
+            b &= b - 1;
+            if (col > k) { /* a run: the running cover's value */
+                x = (acc << 21) * 255 + half;
+                bad |= (uint64_t)((x & fm) - win > lim);
+                memset(row + k, (int)(x >> 51), (size_t)(col - k));
+            }
+            acc += cell->lo;
+            x = ((acc << 21) - cell->hi) * 255 + half;
+            bad |= (uint64_t)((x & fm) - win > lim);
+            row[col] = (unsigned char)(x >> 51);
+            cell->lo = cell->hi = 0;
+            k = col + 1;
+        }
+    }
+    x = (acc << 21) * 255 + half;
+    bad |= (uint64_t)((x & fm) - win > lim);
+    if (k < w) memset(row + k, (int)(x >> 51), (size_t)(w - k));
+    return bad != 0;
+}
+
 /* The quick cells into row y, then cleared: 1 (the row is done, handed
  * on), or 0 when a level is not certain (the row is left to the exact
  * way; its values written here are all written again). */
@@ -991,21 +1026,27 @@ static int rast__q_emit(rast__cells *c, int32_t y, int32_t nrow)
     uint64_t acc = c->qcarry, win = ((uint64_t)nrow + 1) * c->quick << 24;
     int32_t k = 0, wi, w = c->x1 - c->x0;
     int amb = 0;
-    for (wi = c->wmin; wi <= c->wmax; wi++) {
-        uint64_t b = c->bits[wi];
-        c->bits[wi] = 0;
-        while (b) {
-            int32_t col = (wi << 6) + (int32_t)rast__ctz64(b);
-            rast__i128 *cell = &c->cover[col];
-            b &= b - 1;
-            if (col > k) rast__cov_fill(f, row, k, col, rast__q_level(c, (int64_t)(acc << 21), win, &amb));
-            acc += cell->lo;
-            rast__cov_store(f, row, col, rast__q_level(c, (int64_t)((acc << 21) - cell->hi), win, &amb));
-            cell->lo = cell->hi = 0;
-            k = col + 1;
+    if (f == RAST_COVERAGE_U8 && !c->accumulate) {
+        amb = rast__q_row_u8(c, row, win);
+    } else {
+        for (wi = c->wmin; wi <= c->wmax; wi++) {
+            uint64_t b = c->bits[wi];
+            c->bits[wi] = 0;
+            while (b) {
+                int32_t col = (wi << 6) + (int32_t)rast__ctz64(b);
+                rast__i128 *cell = &c->cover[col];
+                b &= b - 1;
+                if (col > k)
+                    rast__cov_fill(f, row, k, col, rast__q_level(c, (int64_t)(acc << 21), win, &amb));
+                acc += cell->lo;
+                rast__cov_store(f, row, col,
+                                rast__q_level(c, (int64_t)((acc << 21) - cell->hi), win, &amb));
+                cell->lo = cell->hi = 0;
+                k = col + 1;
+            }
         }
+        if (k < w) rast__cov_fill(f, row, k, w, rast__q_level(c, (int64_t)(acc << 21), win, &amb));
     }
-    if (k < w) rast__cov_fill(f, row, k, w, rast__q_level(c, (int64_t)(acc << 21), win, &amb));
     c->qcarry = 0;
     c->wmin = INT32_MAX;
     c->wmax = -1;

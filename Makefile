@@ -50,12 +50,12 @@ WARN    := -std=c99 -pedantic -Wall -Wextra -Werror -Wshadow -Wdouble-promotion 
 CFLAGS  ?= -O2
 ALL_CFLAGS = $(WARN) $(CFLAGS) -Icsrc/include -Icsrc/src
 
-SRC     := $(wildcard csrc/src/*.c)
+SRC     := $(wildcard csrc/src/*/*.c)
 # The Python binding's C glue (not the core: it may use double and malloc),
 # built into the extension by python/rastrum/_build.py and checked by make
 # strict with the same warnings.
 GLUE_SRC := $(wildcard python/glue/*.c)
-HDR     := csrc/include/rastrum.h $(wildcard csrc/src/*.h)
+HDR     := csrc/include/rastrum.h $(wildcard csrc/src/*/*.h)
 OBJ     := $(SRC:csrc/src/%.c=build/obj/%.o)
 PIC_OBJ := $(SRC:csrc/src/%.c=build/pic/%.o)
 

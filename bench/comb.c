@@ -4,7 +4,7 @@
  * and prints the pixel count; run it under `valgrind --tool=callgrind` to
  * count instructions (repeatable, unlike a timer):
  *
- *   cc -O2 -std=c99 -Icsrc/include bench/comb.c csrc/src/*.c -o build/comb
+ *   cc -O2 -std=c99 -Icsrc/include bench/comb.c csrc/src/*/*.c -o build/comb
  *   valgrind --tool=callgrind --callgrind-out-file=/dev/null build/comb 10000
  */
 #include <stdio.h>

@@ -1,4 +1,4 @@
-""""area" coverage where its fast rows decide (csrc/src/coverage_area.c): a
+""""area" coverage where its fast rows decide (csrc/src/coverage/coverage_area.c): a
 row whose winding number takes only 0 and one sign of 1 is added edge by
 edge without the sweep, and coincident edges of opposite directions cancel
 before it.  These scenes are built so that the test for a fast row meets

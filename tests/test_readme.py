@@ -78,8 +78,7 @@ def test_c_block(page, k, code, tmp_path):
     src = tmp_path / "example.c"
     src.write_text(code if "int main(" in code else code + "\nint main(void) { return draw(); }\n")
     exe = tmp_path / "example"
-    sources = [os.path.join(ROOT, "csrc", "src", f) for f in sorted(os.listdir(os.path.join(ROOT, "csrc", "src")))
-               if f.endswith(".c")]
+    sources = sorted(glob.glob(os.path.join(ROOT, "csrc", "src", "*", "*.c")))
     subprocess.run(
         [cc, "-std=c99", "-pedantic", "-Wall", "-Wextra", "-Werror", "-I", os.path.join(ROOT, "csrc", "include"), "-I",
          os.path.join(ROOT, "csrc", "src"), str(src)] + sources + ["-o", str(exe)],

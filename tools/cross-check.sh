@@ -10,7 +10,7 @@
 set -eu
 out=${1:-build/cross}
 flags="-std=c99 -pedantic -Wall -Wextra -Werror -O2 -Icsrc/include -Icsrc/src -Itests/c"
-src=$(ls csrc/src/*.c)
+src=$(ls csrc/src/*/*.c)
 rm -rf "$out"; mkdir -p "$out"
 
 # shellcheck disable=SC2086

@@ -31,7 +31,7 @@ for t in $(printf '%s\n' "$targets" | tr ' ' '~'); do
   total=0
   printf '\n%s (%s %s -Os)\n' "$name" "$cc" "$flags"
   printf '  %-14s %8s\n' file ".text B"
-  for src in csrc/src/*.c; do
+  for src in csrc/src/*/*.c; do
     obj="$out/$name/$(basename "$src" .c).o"
     # shellcheck disable=SC2086
     $cc $common $flags -c "$src" -o "$obj"

@@ -14,7 +14,7 @@ mkdir -p "$FUZZ_LOG_DIR" build/fuzz-long-bin
 rev=$(git rev-parse --short HEAD 2>/dev/null)  # the sources the binaries are built from
 for t in "$@"; do
   "$FUZZ_CC" -std=c99 -Wall -Wextra -Werror -g -O1 -fsanitize=fuzzer,address,undefined \
-    -fno-sanitize-recover=all -Icsrc/include -Icsrc/src -Itests/c tests/fuzz/$t.c csrc/src/*.c \
+    -fno-sanitize-recover=all -Icsrc/include -Icsrc/src -Itests/c tests/fuzz/$t.c csrc/src/*/*.c \
     -o build/fuzz-long-bin/$t || exit 1
 done
 run_one() {

@@ -2,8 +2,8 @@
 """single.py - the whole core as one translation unit (make single).
 
 Writes OUTDIR/rastrum.h (the public header, as is) and OUTDIR/rastrum.c:
-the internal headers of csrc/src in the order they include each other,
-then every csrc/src/*.c, with the project's own #include lines dropped (the
+the internal headers of csrc/src/*/ in the order they include each other,
+then every csrc/src/*/*.c, with the project's own #include lines dropped (the
 text they named is already above).  Generated, never edited by hand: drop
 the two files into a firmware build, as lz4.c and ftgrays.c are dropped in.
 
@@ -26,6 +26,14 @@ def read(path):
         return f.read()
 
 
+def sources(ext):
+    """The core's files ending in ext, as paths relative to csrc/src (the
+    names its #include lines use): base/, fillers/, coverage/, painters/,
+    entry/, in that order of folders' names, sorted within each."""
+    return sorted(os.path.relpath(os.path.join(d, f), SRC).replace(os.sep, "/")
+                  for d, _, files in os.walk(SRC) for f in files if f.endswith(ext))
+
+
 def headers_in_order():
     """Internal headers, each after the ones it includes."""
     done, order = set(), []
@@ -42,9 +50,8 @@ def headers_in_order():
         done.add(name)
         order.append(name)
 
-    for name in sorted(os.listdir(SRC)):
-        if name.endswith(".h"):
-            visit(name)
+    for name in sources(".h"):
+        visit(name)
     return order
 
 
@@ -73,17 +80,16 @@ def main(outdir):
         in_headers |= set(DEFINE.findall(read(os.path.join(SRC, name))))
         parts.append("\n/* ==== %s ==== */\n" % name)
         parts.append(strip_local(read(os.path.join(SRC, name)), name))
-    for name in sorted(os.listdir(SRC)):
-        if name.endswith(".c"):
-            text = read(os.path.join(SRC, name))
-            parts.append("\n/* ==== %s ==== */\n" % name)
-            parts.append(strip_local(text, name))
-            # A source file's own macros (not the headers') end with it, as
-            # they would in its own translation unit (a short name like G
-            # must not reach the next file).
-            names = sorted(set(DEFINE.findall(text)) - in_headers)
-            if names:
-                parts.append("".join("#undef %s\n" % n for n in names))
+    for name in sources(".c"):
+        text = read(os.path.join(SRC, name))
+        parts.append("\n/* ==== %s ==== */\n" % name)
+        parts.append(strip_local(text, name))
+        # A source file's own macros (not the headers') end with it, as
+        # they would in its own translation unit (a short name like G
+        # must not reach the next file).
+        names = sorted(set(DEFINE.findall(text)) - in_headers)
+        if names:
+            parts.append("".join("#undef %s\n" % n for n in names))
     with open(os.path.join(outdir, "rastrum.c"), "w", encoding="utf-8") as f:
         f.write("".join(parts))
     with open(os.path.join(outdir, "rastrum.h"), "w", encoding="utf-8") as f:

@@ -63,7 +63,7 @@ ffibuilder.cdef(_cdef() + _glue_cdef())
 ffibuilder.set_source(
     "rastrum._native",
     "".join('#include "%s"\n' % os.path.basename(h) for h in sorted(glob.glob(os.path.join(GLUE, "*.h")))),
-    sources=sorted(_path(p) for p in glob.glob(os.path.join(CSRC, "src", "*.c")) + glob.glob(os.path.join(GLUE, "*.c"))),
+    sources=sorted(_path(p) for p in glob.glob(os.path.join(CSRC, "src", "*", "*.c")) + glob.glob(os.path.join(GLUE, "*.c"))),
     include_dirs=[_path(os.path.join(CSRC, "include")), _path(os.path.join(CSRC, "src")), _path(GLUE)],
     extra_compile_args=["-std=c99", "-O2", "-fvisibility=hidden"] + shlex.split(os.environ.get("RASTRUM_CFLAGS", "")),
     extra_link_args=shlex.split(os.environ.get("RASTRUM_LDFLAGS", "")),

@@ -10,7 +10,7 @@
 #define CHECK_RNG_SEED 4242u
 #include "check.h"
 #include "ref.h"
-#include "internal.h" /* rast__line_rows, rast__line_run: the line by formula */
+#include "base/internal.h" /* rast__line_rows, rast__line_run: the line by formula */
 #include "rastrum.h"
 
 #define GUARD 0xA5

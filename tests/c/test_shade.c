@@ -12,7 +12,7 @@
 #define CHECK_RNG_SEED 77u
 #include "check.h"
 #include "ref.h"
-#include "wide.h" /* rast__recip_floordiv, rast__i128_floordiv */
+#include "base/wide.h" /* rast__recip_floordiv, rast__i128_floordiv */
 
 #define GUARD 0xA5
 #define PAD 16

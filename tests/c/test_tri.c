@@ -9,7 +9,7 @@
 #define CHECK_RNG_SEED 2024u
 #include "check.h"
 #include "ref.h"
-#include "internal.h" /* rast__tri_span_flags, rast__grid_init */
+#include "base/internal.h" /* rast__tri_span_flags, rast__grid_init */
 
 #define GUARD 0xA5
 #define PAD 8

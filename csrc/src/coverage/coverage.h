@@ -1,0 +1,207 @@
+/*
+ * coverage.h - anti-aliased coverage (DESIGN section 1a): what the
+ * coverage entry points (coverage.c), the exact-area and accumulation
+ * sweeps (coverage_area.c) and supersampling (coverage_ss.c) share.
+ * Not installed.
+ *
+ * Units of the area sweep.  Vertices are in fixed units of 1/P pixel,
+ * P = 2^S.  Inside a pixel row j (the strip j <= y < j + 1 pixels), an
+ * ordinate is t, in units U = 2^-G pixel from the row's top (0 <= t <= T =
+ * 2^G); an abscissa is in units V = 2^-G pixel from x = 0, a signed 128-bit
+ * integer (|x| < 2^88).  G = 60, so that a product of a fraction of a
+ * pixel in V (< 2^61 for a sum of two) and a height in U (<= 2^60) fits
+ * 128 bits.  Fixed units become U and V by a shift of H = G - S bits.
+ */
+#ifndef RAST_COVERAGE_H
+#define RAST_COVERAGE_H
+
+#include "base/internal.h"
+#include "base/wide.h"
+
+#define RAST__COV_G 60
+
+/* ---- 128-bit helpers (on wide.h's two's-complement rast__i128) --------- */
+
+static inline rast__i128 rast__i128_sub(rast__i128 a, rast__i128 b)
+{
+    return rast__i128_add(a, rast__i128_neg(b));
+}
+
+/* -1, 0 or 1 as a < b, a == b, a > b (signed). */
+static inline int rast__i128_cmp(rast__i128 a, rast__i128 b)
+{
+    if (a.hi != b.hi) return (int64_t)a.hi < (int64_t)b.hi ? -1 : 1;
+    if (a.lo != b.lo) return a.lo < b.lo ? -1 : 1;
+    return 0;
+}
+
+static inline int rast__i128_neg_p(rast__i128 a)
+{
+    return (int)(a.hi >> 63);
+}
+
+/* floor(a / 2^n), 0 < n < 64 (an arithmetic shift written without one:
+ * C99 leaves >> of a negative value to the implementation). */
+static inline rast__i128 rast__i128_sar(rast__i128 a, int32_t n)
+{
+    rast__i128 r;
+    uint64_t fill = (a.hi >> 63) ? ~(~(uint64_t)0 >> n) : 0;
+    r.lo = (a.lo >> n) | (a.hi << (64 - n));
+    r.hi = (a.hi >> n) | fill;
+    return r;
+}
+
+/* a * b for a >= 0 (the caller keeps it below 2^127) and b < 2^32. */
+static inline rast__i128 rast__u128_mul32(rast__i128 a, uint32_t b)
+{
+    const uint64_t m = 0xFFFFFFFFu;
+    uint64_t p0 = (a.lo & m) * b, p1 = (a.lo >> 32) * b + (p0 >> 32);
+    rast__i128 r;
+    r.lo = (p0 & m) | (p1 << 32);
+    r.hi = a.hi * b + (p1 >> 32);
+    return r;
+}
+
+/* floor(a / d) for a >= 0 and 0 < d < 2^32; *rem = a mod d.  Four 64-bit
+ * divisions of 32-bit limbs (no 128-bit divide: firmware has none). */
+static inline rast__i128 rast__u128_div32(rast__i128 a, uint32_t d, uint32_t *rem)
+{
+    const uint64_t m = 0xFFFFFFFFu;
+    uint64_t limb[4], q[4], r = 0;
+    int k;
+    rast__i128 out;
+    limb[0] = a.hi >> 32;
+    limb[1] = a.hi & m;
+    limb[2] = a.lo >> 32;
+    limb[3] = a.lo & m;
+    for (k = 0; k < 4; k++) {
+        uint64_t cur = (r << 32) | limb[k];
+        q[k] = cur / d;
+        r = cur % d;
+    }
+    out.hi = (q[0] << 32) | q[1];
+    out.lo = (q[2] << 32) | q[3];
+    *rem = (uint32_t)r;
+    return out;
+}
+
+static inline rast__i128 rast__i128_u64(uint64_t v)
+{
+    rast__i128 r;
+    r.hi = 0;
+    r.lo = v;
+    return r;
+}
+
+/* ---- edges -------------------------------------------------------------- */
+
+/* A non-horizontal edge, top end first (dy > 0), fixed units; `dir` the
+ * direction of the original edge (+1 down).  The sweep caches the edge's
+ * abscissa at the ordinate t it is at (x, r: the exact abscissa is
+ * x + r/dy in V units, 0 <= r < dy) and at the end of the current piece
+ * (xn, rn). */
+typedef struct rast__cedge {
+    /* what every row reads, together (the first three cache lines) */
+    rast__i128 x, xn;
+    rast__i128 lo, hi; /* a fast row's range of the edge's part (coverage_area.c) */
+    int64_t r, rn;
+    uint64_t tx;  /* the t of x, r in row `rowx` */
+    int32_t rowx; /* see tx; INT32_MIN: not cached */
+    int32_t xt, yt, dx, dy, dir;
+    /* the quick column stepper (coverage_area.c, 2^-30 pixel units): at
+     * vertical qX, t from the top = qt + qtr/|dx|; per column qts + qtsr/|dx| */
+    int64_t qt, qX, qts;
+    uint32_t qtr, qtsr;
+    rast__i128 xs; /* x grows by xs + xsr/dy from a row's top to the next */
+    int64_t xsr;
+    /* the column stepper (cells) */
+    rast__i128 ts; /* t grows by ts + tsr/|dx| from a column to the next */
+    rast__i128 ct; /* the column stepper left at vertical cX: t (U from the
+                      top) = ct + crem/|dx|; see coverage_area.c */
+    int64_t cX;
+    uint32_t crem, tsr;
+    /* the sweep's */
+    rast__i128 xT; /* the edge's line at the bottom of the row (xT + rT/dy) */
+    int64_t rT;
+    int32_t sg;    /* the sign of its current piece (+1 enters, -1 leaves the inside, 0 neither) */
+    int32_t cn, crow;
+    uint64_t ctime; /* its crossing time with edge cn in row crow (a cache) */
+} rast__cedge;
+
+/* The edges of a polygon's rings (rule: the caller's) or of a triangle
+ * batch (each triangle turned to one orientation, so that the non-zero
+ * rule gives the union) into e[] (room for every vertex); returns how many
+ * are not horizontal. */
+uint32_t rast__cov_edges_polygon(const rast_polygon *poly, rast__cedge *e);
+uint32_t rast__cov_edges_triangles(const rast_point *tris, uint32_t ntris, rast__cedge *e);
+
+/* ---- where the values go ----------------------------------------------- */
+
+typedef struct rast__cov_out {
+    unsigned char *base; /* pixel (clip.x0, clip.y0) */
+    ptrdiff_t stride;
+    rast_coverage_format format;
+    rast_rect clip;
+    /* rast_polygon_coverage_spans: base is one row (stride 0), handed on
+     * by rast__cov_row_done; NULL otherwise */
+    rast_coverage_span_fn span;
+    void *user;
+} rast__cov_out;
+
+/* Row y is complete: hand its runs of values not 0 to o->span, if any. */
+void rast__cov_row_done(const rast__cov_out *o, int32_t y);
+
+/* The value stored for coverage a62 / 2^62 (0 <= a62 <= 2^62): a62 itself
+ * (FIX62), or floor((a62 M + 2^61) / 2^62), in 128 bits (a62 M < 2^78). */
+static inline uint64_t rast__cov_level(rast_coverage_format f, uint64_t a62)
+{
+    rast__i128 p;
+    if (f == RAST_COVERAGE_FIX62) return a62;
+    p = rast__i128_mul((int64_t)a62, f == RAST_COVERAGE_U8 ? 255 : 65535);
+    p = rast__i128_add(p, rast__i128_u64((uint64_t)1 << 61));
+    return rast__i128_sar(p, 62).lo;
+}
+
+/* Column k of a clip row gets value v (rast__cov_level's). */
+static inline void rast__cov_store(rast_coverage_format f, unsigned char *row, int32_t k,
+                                   uint64_t v)
+{
+    if (f == RAST_COVERAGE_U8)
+        row[k] = (unsigned char)v;
+    else if (f == RAST_COVERAGE_U16)
+        ((uint16_t *)(void *)row)[k] = (uint16_t)v;
+    else
+        ((uint64_t *)(void *)row)[k] = v;
+}
+
+static inline unsigned char *rast__cov_row(const rast__cov_out *o, int32_t y)
+{
+    return o->base + (ptrdiff_t)(y - o->clip.y0) * o->stride;
+}
+
+/* Every pixel of rows [y0, y1) of the clip gets 0. */
+void rast__cov_zero_rows(const rast__cov_out *o, int32_t y0, int32_t y1);
+
+/* ---- the methods -------------------------------------------------------- */
+
+/* Exact area (accumulate = 0) or signed-area accumulation (accumulate =
+ * 1) of the n edges e[] under `rule`, S = s, into o (a non-empty clip).
+ * Work memory from `arena`: rast__cov_area_scratch(n, clip width). */
+size_t rast__cov_area_scratch(uint32_t n, int32_t width);
+rast_status rast__cov_area(rast__cedge *e, uint32_t n, int32_t s, rast_fill_rule rule,
+                           int accumulate, const rast__cov_out *o, rast__arena *arena);
+
+/* Supersampling k x k (k = 2^kbits) of `poly` (a polygon in range, already
+ * scaled or not: see coverage_ss.c) into o. */
+size_t rast__cov_ss_scratch(uint32_t npoints, int32_t kbits, int32_t width, int32_t height);
+rast_status rast__cov_ss(const rast_polygon *poly, uint32_t npoints, int32_t s,
+                         int32_t kbits, rast_fill_rule rule, rast_sample sample,
+                         const rast__cov_out *o, rast__arena *arena);
+
+/* The same for the union of ntris triangles tris[3k..3k+2] on the fine
+ * grid (turned one way, none degenerate), each walked on its own instead
+ * of through the AET.  Scratch as rast__cov_ss_scratch(3 ntris, ...). */
+rast_status rast__cov_ss_tris(const rast_point *tris, uint32_t ntris, int32_t s, int32_t kbits,
+                              rast_sample sample, const rast__cov_out *o, rast__arena *arena);
+
+#endif /* RAST_COVERAGE_H */

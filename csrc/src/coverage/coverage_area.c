@@ -1,0 +1,1505 @@
+/*
+ * coverage_area.c - exact area coverage ("area") and signed-area
+ * accumulation ("accumulate"), row by row (DESIGN section 1a; the bound in
+ * rastrum.h).
+ *
+ * Area.  Pixel row j is the strip j <= y < j + 1.  Its edges (those whose
+ * open y extent meets the strip) are swept from the strip's top: at the
+ * current ordinate t they are put in their exact order just below t (by
+ * abscissa, then slope), and the sweep goes on to the next event: an
+ * edge's end or start, or the first crossing of two neighbours (only
+ * neighbours can cross first).  Between t and that event no two edges
+ * cross, so the region is a union of trapezoids [L(y), R(y)] bounded by
+ * the edges where the winding number enters and leaves "inside" (every
+ * edge under even-odd; under non-zero those where it leaves or returns to
+ * 0): coverage counts what lies right of each left boundary minus what
+ * lies right of each right boundary, per column, as FreeType counts its
+ * cells (cover and area per cell, then a running sum along the row).  A
+ * crossing's ordinate is rounded up to the grid of 2^-60 pixel, abscissae
+ * at the pieces' ends down to it; everything else is exact (the order of
+ * the edges, the crossings' positions before rounding, the sums, which
+ * are 128-bit and modular: the true per-pixel result is small).
+ *
+ * Most rows need no sweep: where the winding number only takes 0 and one
+ * sign of 1 in the strip ("fast rows", below: the test is exact), every
+ * edge bounds the inside all the way through the row, and its part is
+ * added whole, as the sweep would add it with no event inside the row.
+ * Before any row, coincident edges of opposite directions cancel
+ * (rast__cov_cancel).
+ *
+ * Accumulate.  The same cells, but every edge adds its whole part in the
+ * row with the sign of its direction: the sum is the integral of the
+ * winding number over the pixel, turned into a coverage by the rule.
+ * Right where no parts of the region overlap.
+ */
+#include "coverage/coverage.h"
+#include "fillers/poly.h" /* rast__ctz64 */
+
+#define G RAST__COV_G
+#define T ((uint64_t)1 << G)
+
+/* The row's cells: for clip column c (index c - x0), cover (sum of signed
+ * heights, U) and area (sum of signed (f0 + f1) heights, U V; or, when
+ * accumulating, that over 2^59 per piece, so that deep overlaps do not
+ * wrap), and `carry`, the cover of everything left of the clip. */
+typedef struct rast__cells {
+    rast__i128 *cover, *area, carry;
+    uint64_t *bits;             /* the columns touched, one bit each */
+    int32_t x0, x1, wmin, wmax; /* clip columns; the words of bits touched */
+    int32_t h;                  /* H = G - S */
+    int32_t p;                  /* P = 2^S */
+    int accumulate;
+    /* the quick accumulation (below): its cells are cover[].lo (cover)
+     * and cover[].hi (area), its carry qcarry; o and rule for its emit,
+     * quick its level's M (0: not used), emitted set when it has written
+     * the row */
+    uint64_t qcarry;
+    const rast__cov_out *o;
+    rast_fill_rule rule;
+    uint32_t quick;
+    int emitted;
+} rast__cells;
+
+/* x at ordinate t (U, from the top of the row whose top is Yj, fixed
+ * units) of edge e, which must reach t: floor in V into *x, the rest r/dy
+ * into *r. */
+static void rast__cov_x_at(const rast__cedge *e, int64_t Yj, uint64_t t, int32_t h,
+                           rast__i128 *x, int64_t *r)
+{
+    rast__i128 base = rast__i128_shl(rast__i128_from(e->xt), h), y, q;
+    uint32_t rem;
+    if (e->dx == 0 || (!(t & (((uint64_t)1 << h) - 1)) && (int64_t)e->yt == Yj + (int64_t)(t >> h))) {
+        /* vertical, or at its top */
+        *x = base;
+        *r = 0;
+        return;
+    }
+    if (!(t & (((uint64_t)1 << h) - 1)) && (int64_t)e->yt + e->dy == Yj + (int64_t)(t >> h)) {
+        *x = rast__i128_shl(rast__i128_from((int64_t)e->xt + e->dx), h); /* its bottom */
+        *r = 0;
+        return;
+    }
+    /* Y = height below the top, U units (>= 0, < 2^89). */
+    y = rast__i128_add(rast__i128_shl(rast__i128_from(Yj - e->yt), h), rast__i128_u64(t));
+    q = rast__u128_div32(rast__u128_mul32(y, (uint32_t)(e->dx < 0 ? -e->dx : e->dx)),
+                         (uint32_t)e->dy, &rem);
+    if (e->dx > 0) {
+        *x = rast__i128_add(base, q);
+        *r = rem;
+    } else if (rem) {
+        *x = rast__i128_sub(rast__i128_sub(base, q), rast__i128_from(1));
+        *r = e->dy - (int64_t)rem;
+    } else {
+        *x = rast__i128_sub(base, q);
+        *r = 0;
+    }
+}
+
+/* The ordinates (U from the row's top at Yj) where e meets the verticals
+ * x = X, X + 1, ... (dx > 0) or X, X - 1, ... (dx < 0) pixels, which lie
+ * between its ends: floor(|X P - xt| dy 2^H / |dx|) - (Yj - yt) 2^H, the
+ * first by a division, the next ones by adding e->ts, e->tsr (the step
+ * dy 2^G / |dx|) with the remainder carried: exact, without a division
+ * per column. */
+typedef struct rast__tstep {
+    rast__i128 t, off; /* t from the edge's top; off: the row's top from it */
+    rast__cedge *e;
+    uint32_t rem, adx;
+    int64_t X;
+} rast__tstep;
+
+/* Start at vertical X: the edge's own stepper when it stands there (the
+ * piece before ended in this column), else a division. */
+static void rast__cov_t_first(rast__cedge *e, int64_t Yj, int64_t X, const rast__cells *c,
+                              rast__tstep *s)
+{
+    s->e = e;
+    s->X = X;
+    s->adx = (uint32_t)(e->dx < 0 ? -e->dx : e->dx);
+    s->off = rast__i128_shl(rast__i128_from(Yj - e->yt), c->h);
+    if (e->cX == X) {
+        s->t = e->ct;
+        s->rem = e->crem;
+    } else {
+        int64_t w = X * c->p - e->xt;
+        if (w < 0) w = -w;
+        s->t = rast__u128_div32(rast__i128_shl(rast__i128_mul(w, e->dy), c->h), s->adx, &s->rem);
+    }
+}
+
+static void rast__cov_t_next(rast__tstep *s)
+{
+    const rast__cedge *e = s->e;
+    s->t = rast__i128_add(s->t, e->ts);
+    s->rem += e->tsr;
+    if (s->rem >= s->adx) {
+        s->rem -= s->adx;
+        s->t = rast__i128_add(s->t, rast__i128_u64(1));
+    }
+    s->X += e->dx > 0 ? 1 : -1;
+}
+
+/* Leave the stepper with its edge for the next piece. */
+static void rast__cov_t_keep(const rast__tstep *s)
+{
+    s->e->ct = s->t;
+    s->e->crem = s->rem;
+    s->e->cX = s->X;
+}
+
+/* The stepper's ordinate from the row's top, kept in [lo, hi]: the column
+ * crossings of a piece are in its range (a floor of an exact value
+ * between its ends); this only guards it. */
+static uint64_t rast__cov_t_val(const rast__tstep *s, uint64_t lo, uint64_t hi)
+{
+    rast__i128 t = rast__i128_sub(s->t, s->off);
+    if (rast__i128_neg_p(t) || (!t.hi && t.lo < lo)) return lo;
+    if (t.hi || t.lo > hi) return hi;
+    return t.lo;
+}
+
+/* One cell's share: from fraction f0 at t0 to f1 at t1 (V, 0..2^G) in
+ * column col, sign s. */
+static inline void rast__cells_add(rast__cells *c, int32_t col, uint64_t f0, uint64_t f1,
+                            uint64_t t0, uint64_t t1, int32_t s)
+{
+    uint64_t dy = t1 - t0;
+    rast__i128 cv, ar;
+    if (dy == 0 || col >= c->x1) return;
+    cv = rast__i128_from(s < 0 ? -(int64_t)dy : (int64_t)dy); /* dy <= 2^60 */
+    if (col < c->x0) {
+        c->carry = rast__i128_add(c->carry, cv);
+        return;
+    }
+    if (c->accumulate) { /* rounded down, then signed */
+        ar = rast__i128_sar(rast__i128_mul((int64_t)(f0 + f1), (int64_t)dy), 59);
+        if (s < 0) ar = rast__i128_neg(ar);
+    } else { /* f0 + f1 <= 2^61 */
+        ar = rast__i128_mul(s < 0 ? -(int64_t)(f0 + f1) : (int64_t)(f0 + f1), (int64_t)dy);
+    }
+    col -= c->x0;
+    c->cover[col] = rast__i128_add(c->cover[col], cv);
+    c->area[col] = rast__i128_add(c->area[col], ar);
+    c->bits[col >> 6] |= (uint64_t)1 << (col & 63);
+    if ((col >> 6) < c->wmin) c->wmin = col >> 6;
+    if ((col >> 6) > c->wmax) c->wmax = col >> 6;
+}
+
+/* The piece of edge e from (xa, ta) to (xb, tb) (V, U; ta < tb), sign s,
+ * split at the pixel columns it crosses. */
+static inline void rast__cells_piece(rast__cells *c, rast__cedge *e, int64_t Yj, rast__i128 xa,
+                              uint64_t ta, rast__i128 xb, uint64_t tb, int32_t s)
+{
+    const uint64_t fmask = T - 1;
+    /* the columns floor(x / 2^G): |column| < 2^28, so the low word of the
+     * shifted value, read as two's complement, is it */
+    int64_t ca = (int64_t)((xa.hi << (64 - G)) | (xa.lo >> G));
+    int64_t cb = (int64_t)((xb.hi << (64 - G)) | (xb.lo >> G));
+    uint64_t fa = xa.lo & fmask, fb = xb.lo & fmask, t = ta;
+    int64_t col;
+    rast__tstep st;
+    if (ta >= tb) return;
+    if (ca == cb) {
+        rast__cells_add(c, (int32_t)ca, fa, fb, ta, tb, s);
+        return;
+    }
+    if (ca < c->x0 && cb < c->x0) { /* all left of the clip: its cover */
+        rast__cells_add(c, c->x0 - 1, 0, 0, ta, tb, s);
+        return;
+    }
+    if (ca < cb) { /* going right: the verticals ca + 1, ..., cb */
+        if (ca >= c->x1) return;
+        col = ca;
+        if (col < c->x0) { /* the part left of the clip: its cover */
+            uint64_t tx;
+            rast__cov_t_first(e, Yj, c->x0, c, &st);
+            tx = rast__cov_t_val(&st, t, tb);
+            rast__cells_add(c, c->x0 - 1, 0, 0, t, tx, s);
+            t = tx;
+            col = c->x0;
+            fa = 0;
+            rast__cov_t_next(&st);
+        } else {
+            rast__cov_t_first(e, Yj, col + 1, c, &st);
+        }
+        for (; col < cb; col++) {
+            uint64_t tx;
+            if (col >= c->x1) return;
+            tx = rast__cov_t_val(&st, t, tb);
+            rast__cells_add(c, (int32_t)col, fa, T, t, tx, s);
+            t = tx;
+            fa = 0;
+            rast__cov_t_next(&st);
+        }
+        rast__cov_t_keep(&st);
+        rast__cells_add(c, (int32_t)cb, 0, fb, t, tb, s);
+    } else { /* going left: the verticals ca, ..., cb + 1 */
+        if (cb >= c->x1) return;
+        col = ca;
+        if (col >= c->x1) { /* the part right of the clip adds nothing */
+            rast__cov_t_first(e, Yj, c->x1, c, &st);
+            t = rast__cov_t_val(&st, t, tb);
+            col = c->x1 - 1;
+            fa = T;
+            rast__cov_t_next(&st);
+        } else {
+            rast__cov_t_first(e, Yj, col, c, &st);
+        }
+        for (; col > cb; col--) {
+            uint64_t tx;
+            if (col < c->x0) { /* the rest is left of the clip */
+                rast__cells_add(c, c->x0 - 1, 0, 0, t, tb, s);
+                return;
+            }
+            tx = rast__cov_t_val(&st, t, tb);
+            rast__cells_add(c, (int32_t)col, fa, 0, t, tx, s);
+            t = tx;
+            fa = T;
+            rast__cov_t_next(&st);
+        }
+        rast__cov_t_keep(&st);
+        rast__cells_add(c, (int32_t)cb, T, fb, t, tb, s);
+    }
+}
+
+/* a 2^62 from the running cover and a cell's area (see rast__cells),
+ * the rule applied when accumulating, clamped to [0, 2^62]. */
+static inline uint64_t rast__cells_a62(const rast__cells *c, rast__i128 acc, rast__i128 area,
+                                       rast_fill_rule rule)
+{
+    const rast__i128 one = rast__i128_u64((uint64_t)1 << 62);
+    rast__i128 v;
+    if (!c->accumulate) { /* a 2^121 = 2^61 cover - area, then down to 2^62 */
+        v = rast__i128_sar(rast__i128_sub(rast__i128_shl(acc, 61), area), 59);
+        if (rast__i128_neg_p(v)) return 0;
+        if (v.hi || v.lo > ((uint64_t)1 << 62)) return (uint64_t)1 << 62;
+        return v.lo;
+    } else { /* a 2^62 = 4 cover - area / 2^59 */
+        v = rast__i128_sub(rast__i128_shl(acc, 2), area);
+        /* |w| integrated, then the rule */
+        if (rast__i128_neg_p(v)) v = rast__i128_neg(v);
+        if (rule == RAST_RULE_NONZERO) {
+            if (rast__i128_cmp(v, one) > 0) v = one;
+        } else {
+            uint64_t m = v.lo & (((uint64_t)1 << 63) - 1); /* mod 2 */
+            v = rast__i128_u64(m > ((uint64_t)1 << 62) ? ((uint64_t)1 << 63) - m : m);
+        }
+    }
+    if (rast__i128_neg_p(v)) return 0;
+    if (rast__i128_cmp(v, one) > 0) return (uint64_t)1 << 62;
+    return v.lo;
+}
+
+/* Columns [k0, k1) of a clip row get value v. */
+static void rast__cov_fill(rast_coverage_format f, unsigned char *row, int32_t k0, int32_t k1,
+                           uint64_t v)
+{
+    int32_t k;
+    if (k0 >= k1) return;
+    if (f == RAST_COVERAGE_U8)
+        memset(row + k0, (int)v, (size_t)(k1 - k0));
+    else
+        for (k = k0; k < k1; k++) rast__cov_store(f, row, k, v);
+}
+
+/* Row y's values from the cells, which are then cleared.  Only the cells
+ * touched (their bits, in column order) add something; between them (inside
+ * a span, or outside the shape) the value is the running cover's: one
+ * computation and a fill per run.  A touched cell whose sums are 0 gives
+ * the run's value too, so the bits only save the scan. */
+static void rast__cells_emit(rast__cells *c, const rast__cov_out *o, int32_t y, rast_fill_rule rule)
+{
+    unsigned char *row = rast__cov_row(o, y);
+    const rast__i128 zero = rast__i128_u64(0);
+    const rast_coverage_format f = o->format;
+    rast__i128 acc = c->carry;
+    int32_t k = 0, wi, w = c->x1 - c->x0;
+    for (wi = c->wmin; wi <= c->wmax; wi++) {
+        uint64_t b = c->bits[wi];
+        c->bits[wi] = 0;
+        while (b) {
+            int32_t col = (wi << 6) + (int32_t)rast__ctz64(b);
+            b &= b - 1;
+            if (col > k)
+                rast__cov_fill(f, row, k, col, rast__cov_level(f, rast__cells_a62(c, acc, zero, rule)));
+            acc = rast__i128_add(acc, c->cover[col]);
+            rast__cov_store(f, row, col, rast__cov_level(f, rast__cells_a62(c, acc, c->area[col], rule)));
+            c->cover[col] = c->area[col] = zero;
+            k = col + 1;
+        }
+    }
+    if (k < w)
+        rast__cov_fill(f, row, k, w, rast__cov_level(f, rast__cells_a62(c, acc, zero, rule)));
+    rast__cov_row_done(o, y);
+    c->carry = zero;
+    c->wmin = INT32_MAX;
+    c->wmax = -1;
+}
+
+/* x advanced by a whole row: from a row's top to the next (exact). */
+static void rast__cov_x_row(const rast__cedge *e, rast__i128 *x, int64_t *r)
+{
+    *x = rast__i128_add(*x, e->xs);
+    *r += e->xsr;
+    if (*r >= e->dy) {
+        *r -= e->dy;
+        *x = rast__i128_add(*x, rast__i128_u64(1));
+    }
+}
+
+/* The per-row and per-column steps of e (see rast__cedge). */
+static void rast__cov_steps(rast__cedge *e)
+{
+    uint32_t adx = (uint32_t)(e->dx < 0 ? -e->dx : e->dx), rem;
+    rast__i128 q = rast__u128_div32(rast__u128_mul32(rast__i128_u64(T), adx), (uint32_t)e->dy, &rem);
+    if (e->dx >= 0) {
+        e->xs = q;
+        e->xsr = rem;
+    } else if (rem) {
+        e->xs = rast__i128_neg(rast__i128_add(q, rast__i128_u64(1)));
+        e->xsr = e->dy - (int64_t)rem;
+    } else {
+        e->xs = rast__i128_neg(q);
+        e->xsr = 0;
+    }
+    e->ts = rast__i128_u64(0);
+    e->tsr = 0;
+    if (adx) {
+        e->ts = rast__u128_div32(rast__u128_mul32(rast__i128_u64(T), (uint32_t)e->dy), adx, &rem);
+        e->tsr = rem;
+    }
+    e->qts = 0;
+    e->qtsr = 0;
+    if (adx) { /* dy 2^30 / |dx| < 2^58 */
+        uint64_t a = (uint64_t)e->dy << 30;
+        e->qts = (int64_t)(a / adx);
+        e->qtsr = (uint32_t)(a % adx);
+    }
+    e->qX = INT64_MIN;
+    e->rowx = INT32_MIN;
+    e->cX = INT64_MIN;
+    e->crow = INT32_MIN;
+    e->cn = -1;
+}
+
+/* e's abscissa at the end tn of a piece that starts at t (where it is
+ * cached) into xn, rn: a row's step when the piece is the whole row. */
+static void rast__cov_x_end(rast__cedge *e, int64_t Yj, uint64_t t, uint64_t tn, int32_t h)
+{
+    if (t == 0 && tn == T) {
+        e->xn = e->x;
+        e->rn = e->r;
+        rast__cov_x_row(e, &e->xn, &e->rn);
+    } else {
+        rast__cov_x_at(e, Yj, tn, h, &e->xn, &e->rn);
+    }
+}
+
+/* Cache xn, rn as the abscissa at tn of row j (the top of row j + 1 when
+ * tn is the bottom). */
+static void rast__cov_x_keep(rast__cedge *e, int32_t j, uint64_t tn)
+{
+    e->x = e->xn;
+    e->r = e->rn;
+    e->rowx = tn == T ? j + 1 : j;
+    e->tx = tn == T ? 0 : tn;
+}
+
+/* Is a strictly before b just below the ordinate both have cached? */
+static int rast__cov_before(const rast__cedge *a, const rast__cedge *b)
+{
+    int c = rast__i128_cmp(a->x, b->x);
+    int64_t l, r;
+    if (c) return c < 0;
+    l = a->r * b->dy;
+    r = b->r * a->dy;
+    if (l != r) return l < r;
+    return (int64_t)a->dx * b->dy < (int64_t)b->dx * a->dy;
+}
+
+/* The first ordinate after t (U; up to T) where a, left of b just below
+ * t, crosses it; T when they do not cross inside the row. */
+static uint64_t rast__cov_cross(const rast__cedge *a, const rast__cedge *b, int64_t Yj,
+                                uint64_t t, const rast__cells *c)
+{
+    int64_t D = (int64_t)a->dx * b->dy - (int64_t)b->dx * a->dy, q0, r0, qq, rr;
+    rast__i128 N;
+    uint64_t tc;
+    if (D <= 0) return T; /* a is not steeper to the right: no crossing */
+    /* The crossing's ordinate y = Yj + N / D (fixed units). */
+    N = rast__i128_mul((int64_t)(b->xt - a->xt) * a->dy, b->dy);
+    N = rast__i128_add(N, rast__i128_mul((a->yt - Yj) * a->dx, b->dy));
+    N = rast__i128_sub(N, rast__i128_mul((b->yt - Yj) * b->dx, a->dy));
+    if (!rast__i128_floordiv(N, D, &q0, &r0)) return T;
+    if (q0 < 0 || q0 >= c->p) return T; /* not inside the row (q0 < 0 cannot be) */
+    /* t = ceil(N 2^H / D) = q0 2^H + ceil(r0 2^H / D). */
+    rast__i128_floordiv(rast__i128_shl(rast__i128_from(r0), c->h), D, &qq, &rr);
+    tc = ((uint64_t)q0 << c->h) + (uint64_t)qq + (rr > 0);
+    if (tc <= t) tc = t + 1;
+    return tc > T ? T : tc;
+}
+
+size_t rast__cov_area_scratch(uint32_t n, int32_t width)
+{
+    size_t b = rast__align(rast__size_mul(n, sizeof(rast__cedge)));
+    b = rast__size_add(b, 6 * rast__align(rast__size_mul(n, sizeof(int32_t))));
+    b = rast__size_add(b, rast__align(rast__size_mul(n, sizeof(uint64_t))));
+    b = rast__size_add(b, rast__align(rast__size_mul(((size_t)width + 63) / 64, sizeof(uint64_t))));
+    return rast__size_add(b, 2 * rast__align(rast__size_mul((size_t)width, sizeof(rast__i128))));
+}
+
+/* Heapsort of the indices ix[0..n) by the edges' top ordinate. */
+static void rast__cov_sift(int32_t *ix, const rast__cedge *e, uint32_t root, uint32_t n)
+{
+    int32_t v = ix[root];
+    for (;;) {
+        uint32_t ch = 2 * root + 1;
+        if (ch >= n) break;
+        if (ch + 1 < n && e[ix[ch + 1]].yt > e[ix[ch]].yt) ch++;
+        if (e[ix[ch]].yt <= e[v].yt) break;
+        ix[root] = ix[ch];
+        root = ch;
+    }
+    ix[root] = v;
+}
+
+static void rast__cov_sort_tops(int32_t *ix, const rast__cedge *e, uint32_t n)
+{
+    uint32_t i;
+    for (i = n / 2; i-- > 0;) rast__cov_sift(ix, e, i, n);
+    for (i = n; i-- > 1;) {
+        int32_t s = ix[0];
+        ix[0] = ix[i];
+        ix[i] = s;
+        rast__cov_sift(ix, e, 0, i);
+    }
+}
+
+/* a before b by (xt, dx, dy): the order in which coincident edges of
+ * one top are neighbours. */
+static int rast__cov_key_before(const rast__cedge *a, const rast__cedge *b)
+{
+    if (a->xt != b->xt) return a->xt < b->xt;
+    if (a->dx != b->dx) return a->dx < b->dx;
+    return a->dy < b->dy;
+}
+
+/* Coincident edges of opposite directions (a mesh's inner edges, two rings
+ * sharing a side) change no winding number on either side, and their cells
+ * would cancel exactly (the same pieces, signs opposite): both go, and the
+ * rows they were in may be fast rows.  order[0..n) is sorted by top; each
+ * run of one top is sorted by (xt, dx, dy) (Shell sort, in place), so that
+ * coincident edges are neighbours; in each block of them as many pairs go
+ * as there are edges of the rarer direction.  The rest, in order, are
+ * counted back. */
+static uint32_t rast__cov_cancel(int32_t *order, const rast__cedge *e, uint32_t n)
+{
+    uint32_t a = 0, b, p, q, gap, out = 0;
+    while (a < n) {
+        for (b = a + 1; b < n && e[order[b]].yt == e[order[a]].yt; b++) {
+        }
+        for (gap = (b - a) / 2; gap > 0; gap = gap == 2 ? 1 : gap * 5 / 11) {
+            for (p = a + gap; p < b; p++) {
+                int32_t v = order[p];
+                for (q = p; q >= a + gap && rast__cov_key_before(&e[v], &e[order[q - gap]]); q -= gap)
+                    order[q] = order[q - gap];
+                order[q] = v;
+            }
+        }
+        for (p = a; p < b;) { /* a block of coincident edges: [p, q) */
+            const rast__cedge *x = &e[order[p]];
+            int32_t bal = 0, kept;
+            for (q = p; q < b && e[order[q]].xt == x->xt && e[order[q]].dx == x->dx &&
+                        e[order[q]].dy == x->dy;
+                 q++)
+                bal += e[order[q]].dir;
+            /* keep |bal| edges of the commoner direction */
+            for (kept = 0; p < q; p++) {
+                int32_t d = e[order[p]].dir;
+                if ((bal > 0 && d > 0) || (bal < 0 && d < 0)) {
+                    if (kept < (bal > 0 ? bal : -bal)) {
+                        order[out++] = order[p];
+                        kept++;
+                    }
+                }
+            }
+        }
+        a = b;
+    }
+    return out;
+}
+
+/* The sweep's arrays, by position in the row's order: the edges (live),
+ * the winding number left of each (wb), and the crossing time of each
+ * position with the next (ct; NONE: not before the next vertex), kept in
+ * a heap of positions (h, hidx its inverse, m entries). */
+typedef struct rast__sweep {
+    int32_t *live, *wb, *h, *hidx;
+    uint64_t *ct;
+    int32_t m;
+} rast__sweep;
+
+#define NONE (T + 1)
+
+static void rast__heap_swap(rast__sweep *w, int32_t i, int32_t k)
+{
+    int32_t a = w->h[i], b = w->h[k];
+    w->h[i] = b;
+    w->h[k] = a;
+    w->hidx[b] = i;
+    w->hidx[a] = k;
+}
+
+static void rast__heap_up(rast__sweep *w, int32_t i)
+{
+    while (i > 0) {
+        int32_t p = (i - 1) / 2;
+        if (w->ct[w->h[p]] <= w->ct[w->h[i]]) break;
+        rast__heap_swap(w, p, i);
+        i = p;
+    }
+}
+
+static void rast__heap_down(rast__sweep *w, int32_t i)
+{
+    for (;;) {
+        int32_t l = 2 * i + 1, r = l + 1, m = i;
+        if (l < w->m && w->ct[w->h[l]] < w->ct[w->h[m]]) m = l;
+        if (r < w->m && w->ct[w->h[r]] < w->ct[w->h[m]]) m = r;
+        if (m == i) break;
+        rast__heap_swap(w, i, m);
+        i = m;
+    }
+}
+
+static void rast__heap_set(rast__sweep *w, int32_t pos, uint64_t v)
+{
+    uint64_t old = w->ct[pos];
+    w->ct[pos] = v;
+    if (v < old)
+        rast__heap_up(w, w->hidx[pos]);
+    else if (v > old)
+        rast__heap_down(w, w->hidx[pos]);
+}
+
+/* The sign of an edge's piece with winding wb on its left. */
+static int32_t rast__cov_sign(rast_fill_rule rule, int32_t wb, int32_t dir)
+{
+    if (rule == RAST_RULE_EVENODD) return (wb & 1) ? -1 : 1;
+    return wb == 0 ? 1 : (wb + dir == 0) ? -1 : 0;
+}
+
+/* When a, left of b (edge ib) just after t, crosses it before tv (else
+ * NONE).  Lines in order at the row's bottom do not cross in between.  The
+ * crossing does not depend on t (a pair in order just after t crosses
+ * after it), so each edge keeps the last one it computed, for its right
+ * neighbour: a vertex event, which sorts the row again, finds most pairs
+ * unchanged. */
+static uint64_t rast__cov_pair(rast__cedge *a, int32_t ib, const rast__cedge *b, int64_t Yj,
+                               int32_t j, uint64_t t, uint64_t tv, const rast__cells *c)
+{
+    uint64_t tc;
+    if (a->cn == ib && a->crow == j) {
+        tc = a->ctime;
+    } else {
+        int cmp = rast__i128_cmp(a->xT, b->xT);
+        tc = (cmp < 0 || (cmp == 0 && a->rT * b->dy <= b->rT * a->dy)) ? NONE
+                                                                          : rast__cov_cross(a, b, Yj, 0, c);
+        a->cn = ib;
+        a->crow = j;
+        a->ctime = tc;
+    }
+    if (tc <= t) tc = t + 1;
+    return tc < tv ? tc : NONE;
+}
+
+/* Edge e's piece sign becomes s at tc: the piece so far is added. */
+static void rast__cov_resign(rast__cells *c, rast__cedge *e, int64_t Yj, int32_t j, uint64_t tc,
+                             int32_t s)
+{
+    if (s == e->sg) return;
+    rast__cov_x_at(e, Yj, tc, c->h, &e->xn, &e->rn);
+    if (e->sg) rast__cells_piece(c, e, Yj, e->x, e->tx, e->xn, tc, e->sg);
+    e->x = e->xn;
+    e->r = e->rn;
+    e->rowx = j;
+    e->tx = tc;
+    e->sg = s;
+}
+
+/* The row's sweep (area): edges row[0..nrow) of row j.  Between vertex
+ * events (an edge starting or ending inside the row) the order changes
+ * only where neighbours cross: the earliest crossing comes off the heap,
+ * the two edges swap, and only they can change sign (the winding number
+ * between them is the only one that changes); an edge's piece runs from
+ * one change of its sign to the next. */
+static void rast__cov_row_area(rast__cells *c, rast__cedge *e, int32_t *row, int32_t nrow,
+                               rast__sweep *sw, int32_t j, rast_fill_rule rule)
+{
+    const int64_t Yj = (int64_t)j * c->p;
+    int32_t *live = sw->live;
+    uint64_t t = 0;
+    int32_t k;
+    for (k = 0; k < nrow; k++) { /* every line at the row's bottom */
+        rast__cedge *ed = &e[row[k]];
+        if (ed->rowx == j && ed->tx == 0) {
+            ed->xT = ed->x;
+            ed->rT = ed->r;
+            rast__cov_x_row(ed, &ed->xT, &ed->rT);
+        } else {
+            rast__cov_x_at(ed, Yj, T, c->h, &ed->xT, &ed->rT);
+        }
+    }
+    while (t < T) {
+        uint64_t tv = T;
+        int32_t n = 0, wsum = 0, rest = nrow; /* live[rest..nrow): the others */
+        /* The edges reaching below t, in order; the next start or end. */
+        for (k = 0; k < nrow; k++) {
+            rast__cedge *ed = &e[row[k]];
+            int64_t rel0 = (int64_t)ed->yt - Yj, rel1 = (int64_t)ed->yt + ed->dy - Yj;
+            uint64_t t0 = rel0 <= 0 ? 0 : (uint64_t)rel0 << c->h;
+            uint64_t t1 = rel1 >= c->p ? T : (uint64_t)rel1 << c->h;
+            if (t0 > t || t1 <= t) {
+                if (t0 > t && t0 < tv) tv = t0;
+                live[--rest] = row[k];
+                continue;
+            }
+            if (t1 < tv) tv = t1;
+            if (ed->rowx != j || ed->tx != t) {
+                rast__cov_x_at(ed, Yj, t, c->h, &ed->x, &ed->r);
+                ed->rowx = j;
+                ed->tx = t;
+            }
+            {   /* insertion, by the exact order below t */
+                int32_t m = n++, id = row[k];
+                while (m > 0 && rast__cov_before(ed, &e[live[m - 1]])) {
+                    live[m] = live[m - 1];
+                    m--;
+                }
+                live[m] = id;
+            }
+        }
+        /* Windings and signs; every piece starts at t. */
+        for (k = 0; k < n; k++) {
+            rast__cedge *ed = &e[live[k]];
+            sw->wb[k] = wsum;
+            ed->sg = rast__cov_sign(rule, wsum, ed->dir);
+            wsum += ed->dir;
+        }
+        /* The neighbours' crossings before tv, in a heap. */
+        sw->m = n > 0 ? n - 1 : 0;
+        for (k = 0; k < sw->m; k++) {
+            sw->ct[k] = rast__cov_pair(&e[live[k]], live[k + 1], &e[live[k + 1]], Yj, j, t, tv, c);
+            sw->h[k] = k;
+            sw->hidx[k] = k;
+        }
+        for (k = sw->m / 2; k-- > 0;) rast__heap_down(sw, k);
+        while (sw->m > 0 && sw->ct[sw->h[0]] < tv) {
+            int32_t p = sw->h[0], ia = live[p], ib = live[p + 1];
+            uint64_t tc = sw->ct[p];
+            rast__cedge *a = &e[ia], *b = &e[ib];
+            live[p] = ib;
+            live[p + 1] = ia;
+            sw->wb[p + 1] = sw->wb[p] + b->dir;
+            rast__cov_resign(c, b, Yj, j, tc, rast__cov_sign(rule, sw->wb[p], b->dir));
+            rast__cov_resign(c, a, Yj, j, tc, rast__cov_sign(rule, sw->wb[p + 1], a->dir));
+            rast__heap_set(sw, p, NONE);
+            if (p > 0)
+                rast__heap_set(sw, p - 1, rast__cov_pair(&e[live[p - 1]], ib, b, Yj, j, tc, tv, c));
+            if (p + 2 < n)
+                rast__heap_set(sw, p + 1, rast__cov_pair(a, live[p + 2], &e[live[p + 2]], Yj, j, tc, tv, c));
+        }
+        /* The open pieces end at tv. */
+        for (k = 0; k < n; k++) {
+            rast__cedge *ed = &e[live[k]];
+            rast__cov_x_end(ed, Yj, ed->tx, tv, c->h);
+            if (ed->sg) rast__cells_piece(c, ed, Yj, ed->x, ed->tx, ed->xn, tv, ed->sg);
+            rast__cov_x_keep(ed, j, tv);
+        }
+        /* The row's edges in this order, so that the next sort (here, or
+         * in the next row) has little to do. */
+        memcpy(row, live, (size_t)n * sizeof *row);
+        for (k = rest; k < nrow; k++) row[n + k - rest] = live[k];
+        t = tv;
+    }
+}
+
+/* ---- the quick accumulation ----------------------------------------------
+ *
+ * Rows whose parts are added whole (fast rows, and every row when
+ * accumulating) are first added in 64-bit arithmetic on a grid of 2^-30
+ * pixel (Q = 2^-30; G = 60 above): a part's ends' abscissae and its column
+ * crossings' ordinates are the floors of the exact values on that grid (the
+ * 128-bit floors shifted, or a 64-bit stepper), the ends' ordinates (0, 1
+ * or a vertex's, S <= 16) exact; per column, cover += dy and area +=
+ * floor((f0 + f1) dy / 2^10), modular, so that a pixel's value is
+ * v = a 2^51 = 2^21 cover - area.  Each part moves a pixel's value by less
+ * than 2 Q + 2^-51 < 2^-28 from its exact share (a rounded crossing or end
+ * moves the trapezoid right of it by less than Q times the column's width,
+ * and a part meets a pixel at two such points at most); with n parts in
+ * the row, |v 2^-51 - a| < n 2^-28.  The level floor(a M + 1/2) is then
+ * known unless a' M + 1/2 lies within (n + 1) M 2^-27 of an integer (a tie,
+ * or nearly): then the row is added again the exact way above, and only
+ * then.  So a row's levels are floor(a M + 1/2) where the quick values
+ * decide them, the exact sweep's elsewhere: the bound holds unchanged.
+ * (FIX62 output, 4096 parts or more in a row, or (n + 1) M >= 2^25: the
+ * exact way only.) */
+#define QF 30
+#define QT ((uint64_t)1 << QF)
+#define QONE ((int64_t)1 << 51)
+
+/* floor(v / 2^QF) for |v| < 2^62 (no >> of a negative value) */
+static inline int64_t rast__q_col(int64_t v)
+{
+    return (int64_t)(((uint64_t)v + ((uint64_t)1 << 62)) >> QF) - ((int64_t)1 << 32);
+}
+
+/* floor(x / 2^30) of a 128-bit abscissa in V units (|x| < 2^88). */
+static inline int64_t rast__q_x(rast__i128 x)
+{
+    return (int64_t)rast__i128_sar(x, 60 - QF).lo;
+}
+
+/* e's quick stepper at vertical X (which e's x range reaches: |X P - xt|
+ * <= |dx|): t = floor(|X P - xt| dy 2^HQ / |dx|), HQ = 30 - S, in two
+ * 64-bit divisions (|X P - xt| dy < 2^56, the remainder times 2^HQ < 2^58). */
+static void rast__q_t_first(rast__cedge *e, int64_t X, const rast__cells *c)
+{
+    const int32_t hq = QF - (G - c->h);
+    uint64_t adx = (uint64_t)(e->dx < 0 ? -(int64_t)e->dx : e->dx);
+    int64_t w = X * c->p - e->xt;
+    uint64_t a = (uint64_t)(w < 0 ? -w : w) * (uint64_t)e->dy, r = (a % adx) << hq;
+    e->qt = (int64_t)(((a / adx) << hq) + r / adx);
+    e->qtr = (uint32_t)(r % adx);
+    e->qX = X;
+}
+
+static inline void rast__q_t_next(rast__cedge *e)
+{
+    uint32_t adx = (uint32_t)(e->dx < 0 ? -e->dx : e->dx);
+    e->qt += e->qts;
+    e->qtr += e->qtsr;
+    if (e->qtr >= adx) {
+        e->qtr -= adx;
+        e->qt++;
+    }
+    e->qX += e->dx > 0 ? 1 : -1;
+}
+
+/* The stepper's ordinate from the row's top (off: the row's top from the
+ * edge's), kept in [lo, hi]. */
+static inline uint64_t rast__q_t_val(const rast__cedge *e, int64_t off, uint64_t lo, uint64_t hi)
+{
+    int64_t t = e->qt - off;
+    if (t < (int64_t)lo) return lo;
+    if (t > (int64_t)hi) return hi;
+    return (uint64_t)t;
+}
+
+static inline void rast__q_add(rast__cells *c, int64_t col, uint64_t f0, uint64_t f1, uint64_t t0,
+                               uint64_t t1, int32_t s)
+{
+    uint64_t dy = t1 - t0, ar;
+    rast__i128 *cell;
+    if (dy == 0 || col >= c->x1) return;
+    if (col < c->x0) {
+        c->qcarry += s < 0 ? 0 - dy : dy;
+        return;
+    }
+    ar = ((f0 + f1) * dy) >> 10; /* < 2^61 before the shift */
+    col -= c->x0;
+    cell = &c->cover[col];
+    if (s < 0) {
+        cell->lo -= dy;
+        cell->hi -= ar;
+    } else {
+        cell->lo += dy;
+        cell->hi += ar;
+    }
+    c->bits[col >> 6] |= (uint64_t)1 << (col & 63);
+    if ((int32_t)(col >> 6) < c->wmin) c->wmin = (int32_t)(col >> 6);
+    if ((int32_t)(col >> 6) > c->wmax) c->wmax = (int32_t)(col >> 6);
+}
+
+/* The piece from column ca (fraction fa, ordinate ta) to cb != ca (fb,
+ * tb), both inside the clip: rast__q_piece's loops with the stepper in
+ * registers and no clip tests. */
+static void rast__q_inner(rast__cells *c, rast__cedge *e, int64_t off, int64_t ca, int64_t cb,
+                          uint64_t fa, uint64_t fb, uint64_t ta, uint64_t tb, int32_t s)
+{
+    const uint32_t adx = (uint32_t)(e->dx < 0 ? -e->dx : e->dx);
+    const int64_t step = ca < cb ? 1 : -1, X = ca < cb ? ca + 1 : ca;
+    const uint64_t neg = s < 0 ? ~(uint64_t)0 : 0; /* x ^ neg - neg: x signed by s */
+    rast__i128 *cell = c->cover;
+    uint64_t *bits = c->bits;
+    const int64_t x0 = c->x0;
+    uint64_t t = ta, f = fa, fend = ca < cb ? QT : 0;
+    int64_t qt, col, lo = ca < cb ? ca : cb, hi = ca < cb ? cb : ca;
+    uint32_t qtr;
+    if (e->qX != X) rast__q_t_first(e, X, c);
+    qt = e->qt - off;
+    qtr = e->qtr;
+    for (col = ca; col != cb; col += step) {
+        uint64_t tx = qt < (int64_t)t ? t : qt > (int64_t)tb ? tb : (uint64_t)qt, dy = tx - t;
+        uint64_t ar = ((f + fend) * dy) >> 10;
+        int64_t k = col - x0;
+        cell[k].lo += (dy ^ neg) - neg;
+        cell[k].hi += (ar ^ neg) - neg;
+        bits[k >> 6] |= (uint64_t)1 << (k & 63);
+        t = tx;
+        f = QT - fend;
+        qt += e->qts;
+        qtr += e->qtsr;
+        if (qtr >= adx) {
+            qtr -= adx;
+            qt++;
+        }
+    }
+    {
+        uint64_t dy = tb - t, ar = ((f + fb) * dy) >> 10;
+        int64_t k = cb - x0;
+        cell[k].lo += (dy ^ neg) - neg;
+        cell[k].hi += (ar ^ neg) - neg;
+        bits[k >> 6] |= (uint64_t)1 << (k & 63);
+    }
+    e->qt = qt + off;
+    e->qtr = qtr;
+    e->qX = X + (cb - ca);
+    lo = (lo - x0) >> 6;
+    hi = (hi - x0) >> 6;
+    if ((int32_t)lo < c->wmin) c->wmin = (int32_t)lo;
+    if ((int32_t)hi > c->wmax) c->wmax = (int32_t)hi;
+}
+
+/* rast__cells_piece, the quick way: xa, xb in units of 2^-30 pixel, ta,
+ * tb of 2^-30 pixel from the row's top. */
+static void rast__q_piece(rast__cells *c, rast__cedge *e, int64_t Yj, int64_t xa, uint64_t ta,
+                          int64_t xb, uint64_t tb, int32_t s)
+{
+    const uint64_t fm = QT - 1;
+    const int32_t hq = QF - (G - c->h);
+    int64_t ca = rast__q_col(xa), cb = rast__q_col(xb), col;
+    int64_t off = (Yj - e->yt) * ((int64_t)1 << hq);
+    uint64_t fa = (uint64_t)xa & fm, fb = (uint64_t)xb & fm, t = ta;
+    if (ta >= tb) return;
+    if (ca == cb) {
+        rast__q_add(c, ca, fa, fb, ta, tb, s);
+        return;
+    }
+    if (ca < c->x0 && cb < c->x0) {
+        rast__q_add(c, c->x0 - 1, 0, 0, ta, tb, s);
+        return;
+    }
+    if (ca >= c->x0 && cb >= c->x0 && ca < c->x1 && cb < c->x1) { /* inside the clip */
+        rast__q_inner(c, e, off, ca, cb, fa, fb, ta, tb, s);
+        return;
+    }
+    if (ca < cb) { /* going right: the verticals ca + 1, ..., cb */
+        if (ca >= c->x1) return;
+        col = ca;
+        if (col < c->x0) {
+            uint64_t tx;
+            if (e->qX != c->x0) rast__q_t_first(e, c->x0, c);
+            tx = rast__q_t_val(e, off, t, tb);
+            rast__q_add(c, c->x0 - 1, 0, 0, t, tx, s);
+            t = tx;
+            col = c->x0;
+            fa = 0;
+            rast__q_t_next(e);
+        } else if (e->qX != col + 1) {
+            rast__q_t_first(e, col + 1, c);
+        }
+        for (; col < cb; col++) {
+            uint64_t tx;
+            if (col >= c->x1) return;
+            tx = rast__q_t_val(e, off, t, tb);
+            rast__q_add(c, col, fa, QT, t, tx, s);
+            t = tx;
+            fa = 0;
+            rast__q_t_next(e);
+        }
+        rast__q_add(c, cb, 0, fb, t, tb, s);
+    } else { /* going left: the verticals ca, ..., cb + 1 */
+        if (cb >= c->x1) return;
+        col = ca;
+        if (col >= c->x1) {
+            if (e->qX != c->x1) rast__q_t_first(e, c->x1, c);
+            t = rast__q_t_val(e, off, t, tb);
+            col = c->x1 - 1;
+            fa = QT;
+            rast__q_t_next(e);
+        } else if (e->qX != col) {
+            rast__q_t_first(e, col, c);
+        }
+        for (; col > cb; col--) {
+            uint64_t tx;
+            if (col < c->x0) {
+                rast__q_add(c, c->x0 - 1, 0, 0, t, tb, s);
+                return;
+            }
+            tx = rast__q_t_val(e, off, t, tb);
+            rast__q_add(c, col, fa, 0, t, tx, s);
+            t = tx;
+            fa = QT;
+            rast__q_t_next(e);
+        }
+        rast__q_add(c, cb, QT, fb, t, tb, s);
+    }
+}
+
+/* The level of v (a 2^51, the rule applied when accumulating); *amb set
+ * when a tie is within win / 2^51 of it (see above). */
+static inline uint64_t rast__q_level(const rast__cells *c, int64_t v, uint64_t win, int *amb)
+{
+    const uint64_t fm = (uint64_t)QONE - 1;
+    uint64_t x, fr, lev;
+    if (c->accumulate) {
+        if (v < 0) v = -v;
+        if (c->rule == RAST_RULE_NONZERO) {
+            if (v > QONE) v = QONE;
+        } else {
+            v &= 2 * QONE - 1; /* mod 2 */
+            if (v > QONE) v = 2 * QONE - v;
+        }
+    } else if (v < 0) {
+        v = 0;
+    } else if (v > QONE) {
+        v = QONE;
+    }
+    if (c->quick == 255) {
+        x = (uint64_t)v * 255 + ((uint64_t)1 << 50);
+        lev = x >> 51;
+        fr = x & fm;
+    } else {
+        rast__i128 p = rast__i128_add(rast__i128_mul(v, (int64_t)c->quick),
+                                      rast__i128_u64((uint64_t)1 << 50));
+        lev = rast__i128_sar(p, 51).lo;
+        fr = p.lo & fm;
+    }
+    if (fr < win || fr > (uint64_t)QONE - win) *amb = 1;
+    return lev;
+}
+
+/* The quick cells of a fast row into a uint8 row (the common case, without
+ * branches): a fast row's values lie in [-E, 1 + E] (E M 2^51 <= win / 2 <
+ * 2^49), where v 255 + 2^50 needs no clamp to give the levels 0 .. 255.
+ * Returns 1 when a level is not certain. */
+static int rast__q_row_u8(rast__cells *c, unsigned char *row, uint64_t win)
+{
+    const uint64_t fm = (uint64_t)QONE - 1, lim = (uint64_t)QONE - 2 * win, half = (uint64_t)1 << 50;
+    uint64_t acc = c->qcarry, bad = 0, x;
+    int32_t k = 0, wi, w = c->x1 - c->x0;
+    for (wi = c->wmin; wi <= c->wmax; wi++) {
+        uint64_t b = c->bits[wi];
+        c->bits[wi] = 0;
+        while (b) {
+            int32_t col = (wi << 6) + (int32_t)rast__ctz64(b);
+            rast__i128 *cell = &c->cover[col];
+            b &= b - 1;
+            if (col > k) { /* a run: the running cover's value */
+                x = (acc << 21) * 255 + half;
+                bad |= (uint64_t)((x & fm) - win > lim);
+                memset(row + k, (int)(x >> 51), (size_t)(col - k));
+            }
+            acc += cell->lo;
+            x = ((acc << 21) - cell->hi) * 255 + half;
+            bad |= (uint64_t)((x & fm) - win > lim);
+            row[col] = (unsigned char)(x >> 51);
+            cell->lo = cell->hi = 0;
+            k = col + 1;
+        }
+    }
+    x = (acc << 21) * 255 + half;
+    bad |= (uint64_t)((x & fm) - win > lim);
+    if (k < w) memset(row + k, (int)(x >> 51), (size_t)(w - k));
+    return bad != 0;
+}
+
+/* The quick cells into row y, then cleared: 1 (the row is done, handed
+ * on), or 0 when a level is not certain (the row is left to the exact
+ * way; its values written here are all written again). */
+static int rast__q_emit(rast__cells *c, int32_t y, int32_t nrow)
+{
+    const rast__cov_out *o = c->o;
+    const rast_coverage_format f = o->format;
+    unsigned char *row = rast__cov_row(o, y);
+    uint64_t acc = c->qcarry, win = ((uint64_t)nrow + 1) * c->quick << 24;
+    int32_t k = 0, wi, w = c->x1 - c->x0;
+    int amb = 0;
+    if (f == RAST_COVERAGE_U8 && !c->accumulate) {
+        amb = rast__q_row_u8(c, row, win);
+    } else {
+        for (wi = c->wmin; wi <= c->wmax; wi++) {
+            uint64_t b = c->bits[wi];
+            c->bits[wi] = 0;
+            while (b) {
+                int32_t col = (wi << 6) + (int32_t)rast__ctz64(b);
+                rast__i128 *cell = &c->cover[col];
+                b &= b - 1;
+                if (col > k)
+                    rast__cov_fill(f, row, k, col, rast__q_level(c, (int64_t)(acc << 21), win, &amb));
+                acc += cell->lo;
+                rast__cov_store(f, row, col,
+                                rast__q_level(c, (int64_t)((acc << 21) - cell->hi), win, &amb));
+                cell->lo = cell->hi = 0;
+                k = col + 1;
+            }
+        }
+        if (k < w) rast__cov_fill(f, row, k, w, rast__q_level(c, (int64_t)(acc << 21), win, &amb));
+    }
+    c->qcarry = 0;
+    c->wmin = INT32_MAX;
+    c->wmax = -1;
+    if (amb) return 0;
+    rast__cov_row_done(o, y);
+    c->emitted = 1;
+    return 1;
+}
+
+/* May a row of nrow parts be added the quick way? */
+static int rast__q_may(const rast__cells *c, int32_t nrow)
+{
+    return c->quick && nrow < 4096 && ((uint64_t)nrow + 1) * c->quick < ((uint64_t)1 << 25);
+}
+
+/* ---- the fast row --------------------------------------------------------
+ *
+ * When the winding number takes, everywhere in the row's strip, only the
+ * values 0 and one s (+1 or -1), the inside is where it is s, under both
+ * rules, and the sweep above would find no crossing (two edges crossing make
+ * four winding values around the crossing, at most two of them in {0, s})
+ * and give every edge one sign, dir * s, from the row's top to its bottom:
+ * an edge enters the inside (winding 0 to s: dir = s, sign +1) or leaves it
+ * (s to 0: dir = -s, sign -1).  The row is then each edge's part, whole,
+ * added with sign dir * s: the same cells and the same roundings as the
+ * sweep makes for a piece (only its two ends' abscissae are rounded, and a
+ * column crossing's ordinate), so the bound of the sweep holds (with fewer
+ * roundings where the sweep would cut the piece at a vertex inside the
+ * row).  In rows without a vertex inside, the values are the sweep's, bit
+ * for bit.
+ *
+ * The test, all exact, costs a pass over the row's edges: each edge's part
+ * in the strip lies in the abscissae [lo, hi) (V units: the floors at its
+ * two ends, hi one more); the edges, sorted by lo, fall into groups whose
+ * ranges overlap, and distinct groups cannot meet.  A group is accepted when
+ * it is
+ *   - edges that all span the strip, in the same order at its top and at
+ *     its bottom (exact comparisons; equal at one end at most): they do not
+ *     cross inside, and the winding number between neighbours is the sum
+ *     of the directions on the left;
+ *   - two edges that share an end inside the strip: a chain (one ends where
+ *     the other starts, the same direction: y-monotone) or a cusp (both
+ *     start, or both end, there; opposite directions; not collinear), the
+ *     winding number inside the cusp being the one on its left plus its
+ *     left branch's direction.
+ * Every winding number met, from the left, must be 0 or s; else (overlaps,
+ * crossings, several vertices close together, horizontal edges inside the
+ * strip) the row is swept. */
+
+/* The range [lo, hi) of e's part (e->x at its top, e->xn at its bottom),
+ * into e->lo, e->hi. */
+static void rast__fast_range(rast__cedge *e)
+{
+    int c = rast__i128_cmp(e->x, e->xn);
+    e->lo = c <= 0 ? e->x : e->xn;
+    e->hi = rast__i128_add(c >= 0 ? e->x : e->xn, rast__i128_u64(1));
+}
+
+/* The exact abscissae x + r/dy of a and b: -1, 0, 1 as a's is smaller,
+ * equal, larger. */
+static int rast__fast_cmpx(rast__i128 xa, int64_t ra, const rast__cedge *a, rast__i128 xb,
+                           int64_t rb, const rast__cedge *b)
+{
+    int c = rast__i128_cmp(xa, xb);
+    int64_t l, r;
+    if (c) return c;
+    l = ra * b->dy;
+    r = rb * a->dy;
+    return (l > r) - (l < r);
+}
+
+/* Winding number w met: 0 or the row's one sign *s (set by the first). */
+static int rast__fast_ok(int32_t w, int32_t *s)
+{
+    if (w == 0) return 1;
+    if (w != 1 && w != -1) return 0;
+    if (*s == 0) *s = w;
+    return w == *s;
+}
+
+/* Edges g[0..m) (sorted by lo) of a group, all spanning the strip: sort
+ * them by their top abscissa (insertion: a few), check the order at the
+ * bottom, and walk the windings from *w. */
+static int rast__fast_full(const rast__cedge *e, int32_t *g, int32_t m, int32_t *w, int32_t *s)
+{
+    int32_t k;
+    for (k = 1; k < m; k++) {
+        int32_t id = g[k], q = k;
+        const rast__cedge *a = &e[id];
+        while (q > 0) {
+            const rast__cedge *b = &e[g[q - 1]];
+            int c = rast__fast_cmpx(a->x, a->r, a, b->x, b->r, b);
+            if (c > 0 || (c == 0 && rast__fast_cmpx(a->xn, a->rn, a, b->xn, b->rn, b) >= 0)) break;
+            g[q] = g[q - 1];
+            q--;
+        }
+        g[q] = id;
+    }
+    for (k = 0; k < m; k++) {
+        const rast__cedge *a = &e[g[k]];
+        if (k + 1 < m) {
+            const rast__cedge *b = &e[g[k + 1]];
+            int ct = rast__fast_cmpx(a->x, a->r, a, b->x, b->r, b);
+            int cb = rast__fast_cmpx(a->xn, a->rn, a, b->xn, b->rn, b);
+            if (ct > 0 || cb > 0 || (ct == 0 && cb == 0)) return 0;
+        }
+        *w += a->dir;
+        if (!rast__fast_ok(*w, s)) return 0;
+    }
+    return 1;
+}
+
+/* At most this many ordinates inside a fast row where an edge starts or
+ * ends (more: the row is swept), and this many edges in a group that has
+ * such an edge. */
+#define RAST__FAST_CUTS 32
+#define RAST__FAST_MIXED 32
+
+/* A group g[0..m) with edges starting or ending inside the strip, at the
+ * ordinates u[1..nu-1) (u[0] = 0, u[nu-1] = T): in each slab between two
+ * of them its edges there span the slab; they must be in the same order at
+ * the slab's top and bottom (exact abscissae, by cross multiplication), and
+ * the windings walked from w[i], the slab's winding on the group's left,
+ * which then becomes the one on its right. */
+/* e's abscissa at ordinate Y (fixed units, within its extent) times its
+ * dy: exact, |.| < 2^57. */
+static int64_t rast__fast_num(const rast__cedge *e, int64_t Y)
+{
+    return (int64_t)e->xt * e->dy + (int64_t)e->dx * (Y - e->yt);
+}
+
+/* The abscissae na/a->dy and nb/b->dy compared exactly: -1, 0, 1. */
+static int rast__fast_cmpn(int64_t na, const rast__cedge *a, int64_t nb, const rast__cedge *b)
+{
+    return rast__i128_cmp(rast__i128_mul(na, b->dy), rast__i128_mul(nb, a->dy));
+}
+
+static int rast__fast_mixed(const rast__cedge *e, const int32_t *g, int32_t m, const uint64_t *u,
+                            int32_t nu, int64_t Yj, const rast__cells *c, int32_t *w, int32_t *s)
+{
+    int64_t na[RAST__FAST_MIXED], nb[RAST__FAST_MIXED];
+    int32_t id[RAST__FAST_MIXED], i, k, n;
+    if (m > RAST__FAST_MIXED) return 0;
+    for (i = 0; i + 1 < nu; i++) {
+        /* the slab [Ya, Yb] (fixed units: the ordinates inside the row are
+         * vertices', multiples of 2^H) */
+        const int64_t Ya = Yj + (int64_t)(u[i] >> c->h), Yb = Yj + (int64_t)(u[i + 1] >> c->h);
+        for (k = 0, n = 0; k < m; k++) { /* the edges over the slab, by top then bottom */
+            const rast__cedge *ed = &e[g[k]];
+            int64_t x0, x1;
+            int32_t q = n;
+            if (ed->yt > Ya || (int64_t)ed->yt + ed->dy < Yb) continue;
+            x0 = rast__fast_num(ed, Ya);
+            x1 = rast__fast_num(ed, Yb);
+            while (q > 0) {
+                const rast__cedge *b = &e[id[q - 1]];
+                int ct = rast__fast_cmpn(x0, ed, na[q - 1], b);
+                if (ct > 0 || (ct == 0 && rast__fast_cmpn(x1, ed, nb[q - 1], b) >= 0)) break;
+                id[q] = id[q - 1];
+                na[q] = na[q - 1];
+                nb[q] = nb[q - 1];
+                q--;
+            }
+            id[q] = g[k];
+            na[q] = x0;
+            nb[q] = x1;
+            n++;
+        }
+        for (k = 0; k < n; k++) {
+            if (k + 1 < n) {
+                const rast__cedge *a = &e[id[k]], *b = &e[id[k + 1]];
+                int ct = rast__fast_cmpn(na[k], a, na[k + 1], b);
+                int cb = rast__fast_cmpn(nb[k], a, nb[k + 1], b);
+                if (ct > 0 || cb > 0 || (ct == 0 && cb == 0)) return 0;
+            }
+            w[i] += e[id[k]].dir;
+            if (!rast__fast_ok(w[i], s)) return 0;
+        }
+    }
+    return 1;
+}
+
+/* A fast row's parts, whole, each with the sign dir * s. */
+static void rast__fast_add(rast__cells *c, rast__cedge *e, const int32_t *row, int32_t nrow,
+                           int32_t j, int32_t s)
+{
+    const int64_t Yj = (int64_t)j * c->p;
+    int32_t k;
+    if (rast__q_may(c, nrow)) {
+        for (k = 0; k < nrow; k++) {
+            rast__cedge *ed = &e[row[k]];
+            int64_t rel1 = (int64_t)ed->yt + ed->dy - Yj;
+            uint64_t t1 = rel1 >= c->p ? T : (uint64_t)rel1 << c->h;
+            rast__q_piece(c, ed, Yj, rast__q_x(ed->x), ed->tx >> (G - QF), rast__q_x(ed->xn),
+                          t1 >> (G - QF), ed->dir * s);
+        }
+        if (rast__q_emit(c, j, nrow)) {
+            for (k = 0; k < nrow; k++) {
+                rast__cedge *ed = &e[row[k]];
+                int64_t rel1 = (int64_t)ed->yt + ed->dy - Yj;
+                rast__cov_x_keep(ed, j, rel1 >= c->p ? T : (uint64_t)rel1 << c->h);
+            }
+            return;
+        }
+    }
+    for (k = 0; k < nrow; k++) {
+        rast__cedge *ed = &e[row[k]];
+        int64_t rel1 = (int64_t)ed->yt + ed->dy - Yj;
+        uint64_t t1 = rel1 >= c->p ? T : (uint64_t)rel1 << c->h;
+        rast__cells_piece(c, ed, Yj, ed->x, ed->tx, ed->xn, t1, ed->dir * s);
+        rast__cov_x_keep(ed, j, t1);
+    }
+}
+
+/* The row's edges, as a fast row if it is one: its s (+1 or -1), its parts
+ * added, row[] left to right (groups in order, each by its top then its
+ * bottom abscissae); else 0, nothing added, the edges' caches valid for the
+ * sweep, row[] reordered. */
+static int rast__cov_row_fast(rast__cells *c, rast__cedge *e, int32_t *row, int32_t nrow,
+                              int32_t j)
+{
+    const int64_t Yj = (int64_t)j * c->p;
+    uint64_t u[RAST__FAST_CUTS + 2];
+    int32_t w[RAST__FAST_CUTS + 1];
+    int32_t k, g, i, nu = 1, s = 0;
+    u[0] = 0;
+    for (k = 0; k < nrow; k++) { /* the ends of each part, sorted by lo */
+        rast__cedge *ed = &e[row[k]];
+        int64_t rel0 = (int64_t)ed->yt - Yj, rel1 = (int64_t)ed->yt + ed->dy - Yj;
+        uint64_t t0 = rel0 <= 0 ? 0 : (uint64_t)rel0 << c->h;
+        uint64_t t1 = rel1 >= c->p ? T : (uint64_t)rel1 << c->h;
+        uint64_t cut[2];
+        int32_t id = row[k], q = k, z;
+        rast__i128 lo;
+        if (ed->rowx != j || ed->tx != t0) {
+            rast__cov_x_at(ed, Yj, t0, c->h, &ed->x, &ed->r);
+            ed->rowx = j;
+            ed->tx = t0;
+        }
+        rast__cov_x_end(ed, Yj, t0, t1, c->h);
+        cut[0] = t0;
+        cut[1] = t1 == T ? 0 : t1;
+        for (z = 0; z < 2; z++) { /* the ordinates inside, sorted, once each */
+            int32_t y = nu;
+            if (!cut[z]) continue;
+            while (y > 1 && u[y - 1] > cut[z]) y--;
+            if (u[y - 1] == cut[z]) continue;
+            if (nu > RAST__FAST_CUTS) return 0;
+            memmove(u + y + 1, u + y, (size_t)(nu - y) * sizeof *u);
+            u[y] = cut[z];
+            nu++;
+        }
+        rast__fast_range(ed);
+        lo = ed->lo;
+        while (q > 0 && rast__i128_cmp(lo, e[row[q - 1]].lo) < 0) {
+            row[q] = row[q - 1];
+            q--;
+        }
+        row[q] = id;
+    }
+    u[nu++] = T;
+    for (i = 0; i + 1 < nu; i++) w[i] = 0;
+    for (k = 0; k < nrow; k = g) { /* the groups, left to right */
+        rast__i128 hi = e[row[k]].hi;
+        int32_t full = 1, m;
+        for (g = k; g < nrow; g++) {
+            const rast__cedge *ed = &e[row[g]];
+            if (g > k && rast__i128_cmp(ed->lo, hi) >= 0) break;
+            if (rast__i128_cmp(ed->hi, hi) > 0) hi = ed->hi;
+            if (ed->yt > Yj || (int64_t)ed->yt + ed->dy < Yj + c->p) full = 0;
+        }
+        m = g - k;
+        if (full) { /* the same in every slab: walked once per winding on its left */
+            int32_t sum = 0, walked[2] = {0, 0}, z;
+            for (z = 0; z < m; z++) sum += e[row[k + z]].dir;
+            for (i = 0; i + 1 < nu; i++) {
+                int32_t w0 = w[i]; /* 0 or s */
+                if (!walked[w0 != 0]) {
+                    int32_t ww = w0;
+                    if (!rast__fast_full(e, row + k, m, &ww, &s)) return 0;
+                    walked[w0 != 0] = 1;
+                }
+                w[i] = w0 + sum;
+                if (!rast__fast_ok(w[i], &s)) return 0;
+            }
+        } else if (!rast__fast_mixed(e, row + k, m, u, nu, Yj, c, w, &s)) {
+            return 0;
+        }
+    }
+    for (i = 0; i + 1 < nu; i++)
+        if (w[i] != 0) return 0;
+    if (s == 0) return 0;
+    rast__fast_add(c, e, row, nrow, j, s);
+    return s;
+}
+
+/* The row after a fast row, with the same edges, none of them starting or
+ * ending inside it: its order at the top is the last row's at the bottom
+ * (non-decreasing, row[] as the last row left it), so the windings between
+ * neighbours are the last row's, all 0 or s, as long as the order holds to
+ * the bottom.  Fast (1, its parts added) if every edge spans the row and
+ * each is strictly right of its left neighbour at the top and not left of
+ * it at the bottom (exact); else 0, nothing added, the caches valid. */
+static int rast__cov_row_cont(rast__cells *c, rast__cedge *e, const int32_t *row, int32_t nrow,
+                              int32_t j, int32_t s)
+{
+    const int64_t Yj = (int64_t)j * c->p;
+    int32_t k;
+    for (k = 0; k < nrow; k++) {
+        rast__cedge *ed = &e[row[k]];
+        if (ed->yt > Yj || (int64_t)ed->yt + ed->dy < Yj + c->p) return 0;
+        if (ed->rowx != j || ed->tx != 0) {
+            rast__cov_x_at(ed, Yj, 0, c->h, &ed->x, &ed->r);
+            ed->rowx = j;
+            ed->tx = 0;
+        }
+        rast__cov_x_end(ed, Yj, 0, T, c->h);
+        if (k > 0) {
+            const rast__cedge *a = &e[row[k - 1]];
+            if (rast__fast_cmpx(a->x, a->r, a, ed->x, ed->r, ed) >= 0 ||
+                rast__fast_cmpx(a->xn, a->rn, a, ed->xn, ed->rn, ed) > 0)
+                return 0;
+        }
+    }
+    rast__fast_add(c, e, row, nrow, j, s);
+    return 1;
+}
+
+/* The row's accumulation: every edge, whole, signed by its direction. */
+static void rast__cov_row_acc(rast__cells *c, rast__cedge *e, const int32_t *row, int32_t nrow,
+                              int32_t j)
+{
+    const int64_t Yj = (int64_t)j * c->p;
+    int quick = rast__q_may(c, nrow);
+    int32_t k;
+    for (k = 0; k < nrow; k++) {
+        rast__cedge *ed = &e[row[k]];
+        int64_t rel0 = (int64_t)ed->yt - Yj, rel1 = (int64_t)ed->yt + ed->dy - Yj;
+        uint64_t t0 = rel0 <= 0 ? 0 : (uint64_t)rel0 << c->h;
+        uint64_t t1 = rel1 >= c->p ? T : (uint64_t)rel1 << c->h;
+        if (ed->rowx != j || ed->tx != t0) {
+            rast__cov_x_at(ed, Yj, t0, c->h, &ed->x, &ed->r);
+            ed->rowx = j;
+            ed->tx = t0;
+        }
+        rast__cov_x_end(ed, Yj, t0, t1, c->h);
+        if (quick)
+            rast__q_piece(c, ed, Yj, rast__q_x(ed->x), t0 >> (G - QF), rast__q_x(ed->xn),
+                          t1 >> (G - QF), ed->dir);
+        else {
+            rast__cells_piece(c, ed, Yj, ed->x, t0, ed->xn, t1, ed->dir);
+            rast__cov_x_keep(ed, j, t1);
+        }
+    }
+    if (!quick) return;
+    quick = rast__q_emit(c, j, nrow);
+    for (k = 0; k < nrow; k++) {
+        rast__cedge *ed = &e[row[k]];
+        int64_t rel1 = (int64_t)ed->yt + ed->dy - Yj;
+        uint64_t t1 = rel1 >= c->p ? T : (uint64_t)rel1 << c->h;
+        if (!quick) rast__cells_piece(c, ed, Yj, ed->x, ed->tx, ed->xn, t1, ed->dir);
+        rast__cov_x_keep(ed, j, t1);
+    }
+}
+
+rast_status rast__cov_area(rast__cedge *e, uint32_t n, int32_t s, rast_fill_rule rule,
+                           int accumulate, const rast__cov_out *o, rast__arena *arena)
+{
+    rast__cells c;
+    rast__sweep sw;
+    int32_t *order, *row, nrow = 0, j, ja, jb, k, width = o->clip.x1 - o->clip.x0;
+    uint32_t i, next = 0, nlive;
+    int32_t fast = 0, same; /* the last row's s if it was a fast row; its edges kept */
+    int64_t ymin, ymax;
+
+    order = (int32_t *)rast__take(arena, (size_t)n * sizeof(int32_t));
+    row = (int32_t *)rast__take(arena, (size_t)n * sizeof(int32_t));
+    sw.live = (int32_t *)rast__take(arena, (size_t)n * sizeof(int32_t));
+    sw.wb = (int32_t *)rast__take(arena, (size_t)n * sizeof(int32_t));
+    sw.h = (int32_t *)rast__take(arena, (size_t)n * sizeof(int32_t));
+    sw.hidx = (int32_t *)rast__take(arena, (size_t)n * sizeof(int32_t));
+    sw.ct = (uint64_t *)rast__take(arena, (size_t)n * sizeof(uint64_t));
+    c.cover = (rast__i128 *)rast__take(arena, (size_t)width * sizeof(rast__i128));
+    c.area = (rast__i128 *)rast__take(arena, (size_t)width * sizeof(rast__i128));
+    c.bits = (uint64_t *)rast__take(arena, ((size_t)width + 63) / 64 * sizeof(uint64_t));
+    if ((n && (!order || !row || !sw.live || !sw.wb || !sw.h || !sw.hidx || !sw.ct)) || !c.cover ||
+        !c.area || !c.bits)
+        return RAST_E_SCRATCH;
+    for (k = 0; k < width; k++) c.cover[k] = c.area[k] = rast__i128_u64(0);
+    for (k = 0; k < (width + 63) / 64; k++) c.bits[k] = 0;
+    c.carry = rast__i128_u64(0);
+    c.x0 = o->clip.x0;
+    c.x1 = o->clip.x1;
+    c.wmin = INT32_MAX;
+    c.wmax = -1;
+    c.h = G - s;
+    c.p = (int32_t)1 << s;
+    c.accumulate = accumulate;
+    c.qcarry = 0;
+    c.o = o;
+    c.rule = rule;
+    c.quick = o->format == RAST_COVERAGE_U8 ? 255 : o->format == RAST_COVERAGE_U16 ? 65535 : 0;
+    c.emitted = 0;
+
+    if (n == 0) {
+        rast__cov_zero_rows(o, o->clip.y0, o->clip.y1);
+        return RAST_OK;
+    }
+    ymin = e[0].yt;
+    ymax = (int64_t)e[0].yt + e[0].dy;
+    for (i = 0; i < n; i++) {
+        order[i] = (int32_t)i;
+        rast__cov_steps(&e[i]);
+        if (e[i].yt < ymin) ymin = e[i].yt;
+        if ((int64_t)e[i].yt + e[i].dy > ymax) ymax = (int64_t)e[i].yt + e[i].dy;
+    }
+    rast__cov_sort_tops(order, e, n);
+    nlive = rast__cov_cancel(order, e, n);
+    /* Rows whose strip the edges reach: floor(ymin / P) .. ceil(ymax / P). */
+    ymin = rast__floordiv(ymin, c.p);
+    ymax = rast__ceildiv(ymax, c.p);
+    ja = ymin > o->clip.y0 ? (int32_t)(ymin < o->clip.y1 ? ymin : o->clip.y1) : o->clip.y0;
+    jb = ymax < o->clip.y1 ? (int32_t)(ymax > ja ? ymax : ja) : o->clip.y1;
+    rast__cov_zero_rows(o, o->clip.y0, ja);
+    for (j = ja; j < jb; j++) {
+        const int64_t Yj = (int64_t)j * c.p;
+        int32_t m;
+        /* Drop the edges that end above the row; take those that start
+         * above its bottom. */
+        for (k = 0, m = 0; k < nrow; k++)
+            if ((int64_t)e[row[k]].yt + e[row[k]].dy > Yj) row[m++] = row[k];
+        same = m == nrow;
+        nrow = m;
+        while (next < nlive && e[order[next]].yt < Yj + c.p) {
+            if ((int64_t)e[order[next]].yt + e[order[next]].dy > Yj) {
+                row[nrow++] = order[next];
+                same = 0;
+            }
+            next++;
+        }
+        if (nrow) {
+            if (accumulate) {
+                rast__cov_row_acc(&c, e, row, nrow, j);
+            } else if (!(fast && same && rast__cov_row_cont(&c, e, row, nrow, j, fast))) {
+                fast = rast__cov_row_fast(&c, e, row, nrow, j);
+                if (!fast) rast__cov_row_area(&c, e, row, nrow, &sw, j, rule);
+            }
+        } else {
+            fast = 0;
+        }
+        if (!c.emitted) rast__cells_emit(&c, o, j, rule);
+        c.emitted = 0;
+    }
+    rast__cov_zero_rows(o, jb, o->clip.y1);
+    return RAST_OK;
+}

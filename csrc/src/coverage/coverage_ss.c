@@ -1,0 +1,572 @@
+/*
+ * coverage_ss.c - k x k supersampling ("ss2" .. "ss16"): the binary rule
+ * (DESIGN section 1) on a grid k times finer, counted per pixel.
+ *
+ * The fine grid's pixel (I, J) is pixel (I / k, J / k) of the output and
+ * its sample sits at ((I + o) / k, (J + o) / k): exactly sub-sample
+ * (I mod k, J mod k) of section 1a.  The polygon arrives on that grid
+ * already (coverage.c scales its vertices by k exactly); the exact AET
+ * walk (aet.h) hands its runs straight to rast__ss_span, row by row, and
+ * a row of counters (one output row) adds them up.
+ *
+ * The counters are kept as differences (count[i] = d[0] + ... + d[i]), so
+ * a run costs at most four additions whatever its length, and a bit per
+ * column marks the differences not 0.  Flushing an output row walks only
+ * the marked columns: between two of them the count is constant, and its
+ * value is written as one run (a memset for uint8_t).  A row costs its
+ * runs plus a pass over its pixels at memset speed.
+ */
+#include "coverage/coverage.h"
+#include "fillers/aet.h"
+#include "fillers/poly.h"
+
+typedef struct rast__ss {
+    const rast__cov_out *o;
+    int32_t *d;      /* the output row's counts as differences, clip
+                        columns, two more at the end (a run ending at the
+                        clip's right edge touches d[w + 1], with 0) */
+    uint64_t *mark;  /* bit i: d[i] or d[i + 1] may not be 0 (i <= w) */
+    uint64_t *level; /* the value of each count 0..k^2 */
+    int32_t kbits;
+    int32_t fx0, fx1, fy0; /* the fine clip's columns and first row */
+    int32_t row;           /* the output row (clip-relative); -1 before the first */
+    int32_t next;          /* the first output row (clip-relative) not written yet */
+} rast__ss;
+
+/* Pixels [k0, k1) of a clip row get value v. */
+static inline void rast__ss_run(rast_coverage_format f, unsigned char *row, int32_t k0,
+                                int32_t k1, uint64_t v)
+{
+    int32_t k;
+    if (f == RAST_COVERAGE_U8) {
+        if (k1 - k0 > 16) {
+            memset(row + k0, (int)v, (size_t)(k1 - k0));
+        } else {
+            for (k = k0; k < k1; k++) row[k] = (unsigned char)v;
+        }
+    } else if (f == RAST_COVERAGE_U16) {
+        uint16_t *p = (uint16_t *)(void *)row;
+        for (k = k0; k < k1; k++) p[k] = (uint16_t)v;
+    } else {
+        uint64_t *p = (uint64_t *)(void *)row;
+        for (k = k0; k < k1; k++) p[k] = v;
+    }
+}
+
+/* Write the output row: a marked column i is where a run's end changed
+ * d[i] and d[i + 1] (rast__ss_end), so the count is constant from one
+ * marked column's successor to the next marked column. */
+static void rast__ss_flush(rast__ss *ss)
+{
+    const rast__cov_out *o = ss->o;
+    const rast_coverage_format f = o->format;
+    const int32_t y = o->clip.y0 + ss->row;
+    const uint64_t *level = ss->level;
+    unsigned char *row = rast__cov_row(o, y);
+    int32_t *d = ss->d;
+    int32_t w = o->clip.x1 - o->clip.x0, words = w / 64 + 1, k, at = 0, count = 0;
+    for (k = 0; k < words; k++) {
+        uint64_t m = ss->mark[k];
+        ss->mark[k] = 0;
+        while (m) {
+            int32_t i = k * 64 + (int32_t)rast__ctz64(m);
+            m &= m - 1;
+            rast__ss_run(f, row, at, i, level[count]);
+            count += d[i];
+            d[i] = 0;
+            if (i < w) rast__ss_run(f, row, i, i + 1, level[count]);
+            count += d[i + 1];
+            d[i + 1] = 0;
+            at = i + 1;
+        }
+    }
+    rast__ss_run(f, row, at, w, level[0]);
+    ss->next = ss->row + 1;
+    rast__cov_row_done(o, y);
+}
+
+/* A run's end at clip-relative fine column x, sign sg (+1 where a run
+ * starts, -1 where it ends): the count of pixel i = x / k changes by
+ * sg (k - x mod k) and that of every pixel after it by sg k, i.e. d[i]
+ * by the first and d[i + 1] by the rest. */
+static inline void rast__ss_end(rast__ss *ss, int32_t x, int32_t sg)
+{
+    const int32_t kb = ss->kbits;
+    int32_t i = x >> kb, f = x & (((int32_t)1 << kb) - 1);
+    ss->d[i] += sg * (((int32_t)1 << kb) - f);
+    ss->d[i + 1] += sg * f;
+    ss->mark[i >> 6] |= (uint64_t)1 << (i & 63); /* i + 1 goes with it */
+}
+
+/* Runs of clip-relative fine row y come next: flush the output row before
+ * when it is another. */
+static void rast__ss_row(rast__ss *ss, int32_t y)
+{
+    int32_t row = y >> ss->kbits;
+    if (row != ss->row) {
+        if (ss->row >= 0) rast__ss_flush(ss);
+        rast__cov_zero_rows(ss->o, ss->o->clip.y0 + ss->next, ss->o->clip.y0 + row);
+        ss->row = row;
+    }
+}
+
+/* Fine row y's clip-relative run [x0, x1) (not empty) into the counts. */
+static void rast__ss_put(rast__ss *ss, int32_t y, int32_t x0, int32_t x1)
+{
+    rast__ss_row(ss, y);
+    rast__ss_end(ss, x0, 1);
+    rast__ss_end(ss, x1, -1);
+}
+
+/* The run [l->x, r->x) of fine row y.  (Runs that touch need not be
+ * joined: their ends' differences cancel.) */
+static inline void rast__ss_span(void *user, int32_t y, const rast__edge *l, const rast__edge *r)
+{
+    rast__ss *ss = (rast__ss *)user;
+    int32_t x0 = l->x, x1 = r->x;
+    if (x0 < ss->fx0) x0 = ss->fx0;
+    if (x1 > ss->fx1) x1 = ss->fx1;
+    if (x0 < x1) rast__ss_put(ss, y - ss->fy0, x0 - ss->fx0, x1 - ss->fx0);
+}
+
+/* 64-bit words of a fine row's bits (triangle batches), one spare. */
+static size_t rast__ss_bitwords(int32_t width, int32_t kbits)
+{
+    return ((size_t)width << kbits) / 64 + 1;
+}
+
+size_t rast__cov_ss_scratch(uint32_t npoints, int32_t kbits, int32_t width, int32_t height)
+{
+    if ((int64_t)width << kbits > RAST_MAX_DIM || (int64_t)height << kbits > RAST_MAX_DIM)
+        return (size_t)-1;
+    /* The triangles' records (rast__cov_ss_tris) take less than the AET's
+     * edge tables (two edge records per vertex); the k fine rows of bits
+     * are theirs alone. */
+    return rast__size_add(
+        rast__size_add(rast__aet_scratch(npoints, width << kbits, height << kbits),
+                       rast__align(rast__ss_bitwords(width, kbits) * 8 << kbits)),
+        rast__size_add(rast__align(rast__size_mul((size_t)width + 2, sizeof(int32_t))),
+                       rast__size_add(rast__align(((size_t)width / 64 + 1) * 8),
+                                      ((size_t)1 << (2 * kbits)) * 8 + 8)));
+}
+
+/* The counters out of the arena, cleared, and the fine clip (*fine). */
+static rast_status rast__ss_begin(rast__ss *ss, int32_t kbits, const rast__cov_out *o,
+                                  rast__arena *arena, rast_rect *fine)
+{
+    int32_t k, w = o->clip.x1 - o->clip.x0;
+    ss->o = o;
+    ss->kbits = kbits;
+    ss->row = -1;
+    ss->next = 0;
+    ss->d = (int32_t *)rast__take(arena, ((size_t)w + 2) * sizeof(int32_t));
+    ss->mark = (uint64_t *)rast__take(arena, ((size_t)w / 64 + 1) * 8);
+    ss->level = (uint64_t *)rast__take(arena, (((size_t)1 << (2 * kbits)) + 1) * sizeof(uint64_t));
+    if (!ss->d || !ss->mark || !ss->level) return RAST_E_SCRATCH;
+    memset(ss->d, 0, ((size_t)w + 2) * sizeof(int32_t));
+    memset(ss->mark, 0, ((size_t)w / 64 + 1) * 8);
+    /* count / k^2 is exactly count 2^(62 - 2 kbits) / 2^62 */
+    for (k = 0; k <= (int32_t)1 << (2 * kbits); k++)
+        ss->level[k] = rast__cov_level(o->format, (uint64_t)k << (62 - 2 * kbits));
+    fine->x0 = ss->fx0 = o->clip.x0 * ((int32_t)1 << kbits);
+    fine->y0 = ss->fy0 = o->clip.y0 * ((int32_t)1 << kbits);
+    fine->x1 = ss->fx1 = o->clip.x1 * ((int32_t)1 << kbits);
+    fine->y1 = o->clip.y1 * ((int32_t)1 << kbits);
+    return RAST_OK;
+}
+
+/* The last output rows: the one being counted, then zeros to the clip's end. */
+static void rast__ss_finish(rast__ss *ss)
+{
+    if (ss->row >= 0) rast__ss_flush(ss);
+    rast__cov_zero_rows(ss->o, ss->o->clip.y0 + ss->next, ss->o->clip.y1);
+}
+
+rast_status rast__cov_ss(const rast_polygon *poly, uint32_t npoints, int32_t s,
+                         int32_t kbits, rast_fill_rule rule, rast_sample sample,
+                         const rast__cov_out *o, rast__arena *arena)
+{
+    rast__ss ss;
+    rast__grid g;
+    rast_rect fine;
+    rast_status st = rast__grid_init(&g, s, sample, RAST_ROUND_EXACT, RAST_BOUNDARY_EXACT);
+    if (st == RAST_OK) st = rast__ss_begin(&ss, kbits, o, arena, &fine);
+    if (st != RAST_OK) return st;
+    st = rast__aet_walk(poly, npoints, &g, rule, &fine, arena, rast__ss_span, NULL, &ss, NULL);
+    if (st != RAST_OK) return st;
+    rast__ss_finish(&ss);
+    return RAST_OK;
+}
+
+/* ---- triangle batches ----------------------------------------------------
+ * The union of the triangles, each walked on its own: a sample is inside
+ * the union (non-zero, every triangle turned the same way) iff it is inside
+ * one of them, since the winding number is the sum of the triangles' and
+ * each is 0 or 1.  On a fine row each active triangle's run [x of one edge,
+ * x of the other) sets bits in a row of bits; the row's runs of set bits
+ * then go into the counts.  No sort of edges by column (the AET's cost
+ * when many triangles overlap): a fine row costs its triangles and a pass
+ * over the words they touched.  The k fine rows of an output row are
+ * walked together, a triangle at a time (rows of bits for each). */
+
+/* A triangle on the fine grid, what its walk reads on every output row
+ * (the table of them is walked once per output row: the smaller, the
+ * fewer bytes read): edge 0 from its top to its bottom vertex and edge 1
+ * the other edge crossing the current row (rast__edge's fields that
+ * change or step), the current row, and whether the edge below the
+ * middle vertex (kept apart, in `low`) is still to come. */
+typedef struct rast__ss_tri {
+    int64_t e[2], dr[2], q[2];
+    int64_t drk[2]; /* the edges' growth over k rows (rast__ss_jump); -1: not
+                       worked out yet, -2: too far to take */
+    int32_t x[2], step[2], end[2], stepk[2];
+    int32_t row, next;
+} rast__ss_tri;
+
+/* Edge k of triangle r (held in *ed) moved k rows on: one step of the
+ * DDA with the growth of k rows, K dr = c q + drk (0 <= drk < q), whole
+ * columns K step + c (worked out once); 0 when they do not fit. */
+static inline int rast__ss_jump(rast__ss_tri *r, int k, rast__edge *ed, int32_t K)
+{
+    int64_t e;
+    if (r->drk[k] == -1) {
+        const int64_t n = (int64_t)K * ed->dr, whole = (int64_t)K * ed->step + n / ed->q;
+        r->drk[k] = whole > -((int64_t)1 << 29) && whole < ((int64_t)1 << 29) ? n % ed->q : -2;
+        r->stepk[k] = (int32_t)(r->drk[k] == -2 ? 0 : whole);
+    }
+    if (r->drk[k] == -2) return 0;
+    e = ed->e - r->drk[k];
+    ed->x += r->stepk[k] + (int32_t)(e < 0);
+    ed->e = e + (ed->q & -(int64_t)(e < 0));
+    return 1;
+}
+
+static inline void rast__ss_get(const rast__ss_tri *t, int k, rast__edge *ed)
+{
+    ed->e = t->e[k];
+    ed->dr = t->dr[k];
+    ed->q = t->q[k];
+    ed->x = t->x[k];
+    ed->step = t->step[k];
+    ed->end = t->end[k];
+}
+
+static inline void rast__ss_set(rast__ss_tri *t, int k, const rast__edge *ed)
+{
+    t->e[k] = ed->e;
+    t->dr[k] = ed->dr;
+    t->q[k] = ed->q;
+    t->x[k] = ed->x;
+    t->step[k] = ed->step;
+    t->end[k] = ed->end;
+}
+
+/* Triangle t (vertices turned one way, not degenerate) with its vertices
+ * sorted by y into v[] and their rows, cut to [lo, hi), into row[];
+ * 0 when it crosses none of those rows. */
+static int rast__ss_tri_rows(const rast_point *t, const rast__grid *g, int32_t lo, int32_t hi,
+                             rast_point *v, int32_t *row)
+{
+    rast_point x;
+    int32_t k;
+    v[0] = t[0];
+    v[1] = t[1];
+    v[2] = t[2];
+    if (v[0].y > v[1].y) { x = v[0]; v[0] = v[1]; v[1] = x; }
+    if (v[1].y > v[2].y) { x = v[1]; v[1] = v[2]; v[2] = x; }
+    if (v[0].y > v[1].y) { x = v[0]; v[0] = v[1]; v[1] = x; }
+    for (k = 0; k < 3; k++) {
+        int64_t r = rast__row_at_or_after(2 * (int64_t)v[k].y, g);
+        row[k] = (int32_t)(r < lo ? lo : r > hi ? hi : r);
+    }
+    return row[0] < row[2];
+}
+
+/* Its edges into *r and *low, from rast__ss_tri_rows' v[] and row[]. */
+static void rast__ss_tri_setup(rast__ss_tri *r, rast__edge *low, const rast_point *v,
+                               const int32_t *row, const rast__grid *g)
+{
+    rast__edge ed;
+    /* the long edge's rows are the short edges' rows, one after the other */
+    rast__edge_start_tri(&ed, v[0], v[2], 1, row[0], row[2], g);
+    rast__ss_set(r, 0, &ed);
+    r->row = row[0];
+    r->drk[0] = r->drk[1] = -1;
+    r->next = row[0] < row[1] && row[1] < row[2];
+    if (row[0] < row[1]) {
+        rast__edge_start_tri(&ed, v[0], v[1], 1, row[0], row[1], g);
+        if (r->next) rast__edge_start_tri(low, v[1], v[2], 1, row[1], row[2], g);
+    } else {
+        rast__edge_start_tri(&ed, v[1], v[2], 1, row[1], row[2], g);
+    }
+    rast__ss_set(r, 1, &ed);
+}
+
+/* Set bits [a, b) (a < b) of a row of words. */
+static inline void rast__ss_bits(uint64_t *bits, int32_t a, int32_t b)
+{
+    int32_t ka = a >> 6, kb = (b - 1) >> 6, k;
+    uint64_t ma = ~(uint64_t)0 << (a & 63), mb = ~(uint64_t)0 >> (63 - ((b - 1) & 63));
+    if (ka == kb) {
+        bits[ka] |= ma & mb;
+        return;
+    }
+    bits[ka] |= ma;
+    for (k = ka + 1; k < kb; k++) bits[k] = ~(uint64_t)0;
+    bits[kb] |= mb;
+}
+
+/* Clip-relative fine row y's set bits, words [k0, k1], into the counts as
+ * runs, the words cleared. */
+static void rast__ss_bit_runs(rast__ss *ss, int32_t y, uint64_t *bits, int32_t k0, int32_t k1)
+{
+    uint64_t carry = 0;
+    int32_t k;
+    rast__ss_row(ss, y);
+    for (k = k0; k <= k1; k++) {
+        uint64_t w = bits[k], t = w ^ ((w << 1) | carry);
+        bits[k] = 0;
+        carry = w >> 63;
+        while (t) {
+            int32_t p = (int32_t)rast__ctz64(t);
+            t &= t - 1;
+            rast__ss_end(ss, k * 64 + p, (w >> p) & 1 ? 1 : -1);
+        }
+    }
+    if (carry) rast__ss_end(ss, (k1 + 1) * 64, -1);
+}
+
+/* The left end of a triangle's run on its current row. */
+static inline int32_t rast__ss_left(const rast__ss_tri *r)
+{
+    return r->x[0] < r->x[1] ? r->x[0] : r->x[1];
+}
+
+/* Triangle t joins the n active ones act[] where its run's left end
+ * keeps them in order (they drift out of it as edges cross: the order
+ * only lets neighbours' runs join before their bits are set, it changes
+ * no value); returns n + 1. */
+static int32_t rast__ss_insert(const rast__ss_tri *table, int32_t *act, int32_t n, int32_t t)
+{
+    int32_t lo = 0, hi = n, x = rast__ss_left(&table[t]);
+    while (lo < hi) {
+        int32_t mid = lo + (hi - lo) / 2;
+        if (rast__ss_left(&table[act[mid]]) <= x)
+            lo = mid + 1;
+        else
+            hi = mid;
+    }
+    memmove(act + lo + 1, act + lo, (size_t)(n - lo) * sizeof *act);
+    act[lo] = t;
+    return n + 1;
+}
+
+/* Many triangles active on an output row overlap, and most of their runs
+ * lie inside others': F = [fa, fb) holds columns covered on all k fine
+ * rows of the output row (set on each at its end).  A triangle whose
+ * edges are straight across the k rows (no vertex between) has runs whose
+ * ends move one way across them (a straight edge's column is a monotone
+ * function of the row), so the first and the last row bound them all: it
+ * covers on every row the columns between the inner bounds of its ends,
+ * and when its runs on the first and last row lie in F so do all of them,
+ * and it is skipped, its edges only stepped. */
+
+/* The run of a triangle on a fine row, [*a, *b): between the columns of
+ * its edges l and e, clipped to [fx0, fx1]. */
+static inline void rast__ss_run_of(const rast__edge *l, const rast__edge *e, int32_t fx0,
+                                   int32_t fx1, int32_t *a, int32_t *b)
+{
+    int32_t x0 = l->x < e->x ? l->x : e->x, x1 = l->x < e->x ? e->x : l->x;
+    *a = x0 < fx0 ? fx0 : x0;
+    *b = x1 > fx1 ? fx1 : x1;
+}
+
+/* Columns [a, b) (a < b) covered on all k fine rows into F: F grows when
+ * they meet it, or they take its place when more (F's columns then go
+ * into the k rows of bits, of wpr words each). */
+static void rast__ss_grow(uint64_t *bits, size_t wpr, int32_t K, int32_t fx0, int32_t a,
+                          int32_t b, int32_t *fa, int32_t *fb)
+{
+    int32_t t;
+    if (*fa < *fb && a <= *fb && b >= *fa) {
+        *fa = a < *fa ? a : *fa;
+        *fb = b > *fb ? b : *fb;
+    } else if (*fa >= *fb) {
+        if (*fa < *fb)
+            for (t = 0; t < K; t++) rast__ss_bits(bits + (size_t)t * wpr, *fa - fx0, *fb - fx0);
+        *fa = a;
+        *fb = b;
+    }
+}
+
+rast_status rast__cov_ss_tris(const rast_point *tris, uint32_t ntris, int32_t s, int32_t kbits,
+                              rast_sample sample, const rast__cov_out *o, rast__arena *arena)
+{
+    rast__ss ss;
+    rast__grid g;
+    rast_rect fine;
+    rast__ss_tri *table;
+    rast__edge *low;
+    int32_t *bucket, *act;
+    uint64_t *bits;
+    uint32_t k;
+    int32_t j, b0, n = 0, nact = 0, first = 0, rows, pa[16], pb[16];
+    const int32_t K = (int32_t)1 << kbits;
+    size_t wpr;
+    rast_status st = rast__grid_init(&g, s, sample, RAST_ROUND_EXACT, RAST_BOUNDARY_EXACT);
+    if (st == RAST_OK) st = rast__ss_begin(&ss, kbits, o, arena, &fine);
+    if (st != RAST_OK) return st;
+    rows = fine.y1 - fine.y0;
+    wpr = rast__ss_bitwords(o->clip.x1 - o->clip.x0, kbits);
+    /* within the room of the AET's tables (two edge records per vertex):
+     * a record per triangle (three edges) and an index per triangle */
+    table = (rast__ss_tri *)rast__take(arena, (size_t)ntris * sizeof(rast__ss_tri));
+    low = (rast__edge *)rast__take(arena, (size_t)ntris * sizeof(rast__edge));
+    act = (int32_t *)rast__take(arena, (size_t)ntris * sizeof(int32_t));
+    bucket = (int32_t *)rast__take(arena, ((size_t)rows + 1) * sizeof(int32_t));
+    bits = (uint64_t *)rast__take(arena, (size_t)K * wpr * 8);
+    if ((ntris && (!table || !low || !act)) || !bucket || !bits) return RAST_E_SCRATCH;
+    memset(bucket, 0, ((size_t)rows + 1) * sizeof(int32_t));
+    memset(bits, 0, (size_t)K * wpr * 8);
+    /* the triangles grouped by first row (a counting sort: counted, then
+     * set up where their row's run goes) */
+    for (k = 0; k < ntris; k++) {
+        rast_point v[3];
+        int32_t row[3];
+        if (rast__ss_tri_rows(&tris[3 * k], &g, fine.y0, fine.y1, v, row)) {
+            bucket[row[0] - fine.y0 + 1]++;
+            n++;
+        }
+    }
+    for (j = 0; j < rows; j++) bucket[j + 1] += bucket[j];
+    for (k = 0; k < ntris; k++) {
+        rast_point v[3];
+        int32_t row[3];
+        if (rast__ss_tri_rows(&tris[3 * k], &g, fine.y0, fine.y1, v, row)) {
+            int32_t at = bucket[row[0] - fine.y0]++;
+            rast__ss_tri_setup(&table[at], &low[at], v, row, &g);
+        }
+    }
+    /* now bucket[j] is where row j's run ends.  An output row (K fine
+     * rows) at a time: each active triangle's record is read once, its K
+     * rows walked with its edges in registers; each fine row keeps a
+     * pending run that the triangles' runs meeting it join. */
+    for (b0 = 0; b0 < rows && (nact || first < n); b0 += K) {
+        const int32_t b1 = b0 + K, top = fine.y0 + b0, fx0 = ss.fx0, fx1 = ss.fx1;
+        int32_t i, m, t, lo = INT32_MAX, hi = INT32_MIN, fa, fb, overlap;
+        /* few active: in order of their left ends, so that neighbours' runs
+         * join; many (they overlap anyway): in table order, which walks
+         * the records in memory order */
+        for (; first < bucket[b1 - 1]; first++)
+            if (nact < 256)
+                nact = rast__ss_insert(table, act, nact, first);
+            else
+                act[nact++] = first;
+        if (!nact) continue;
+        overlap = nact >= 256;
+        for (t = 0; t < K; t++) pa[t] = pb[t] = 0;
+        fa = fb = 0;
+        for (i = 0, m = 0; i < nact; i++) {
+            rast__ss_tri *r = &table[act[i]];
+            rast__edge l, e;
+            int32_t y = r->row, end, sw, low_in = 0;
+            rast__ss_get(r, 0, &l);
+            rast__ss_get(r, 1, &e);
+            end = l.end < top + K ? l.end : top + K;
+            sw = r->next ? e.end : INT32_MAX; /* where the edge below the middle takes over */
+            if (overlap && y == top && end == top + K && sw >= top + K) {
+                /* straight across the K rows: F (see above) */
+                rast__edge l2 = l, e2 = e;
+                if (rast__ss_jump(r, 0, &l2, K) && rast__ss_jump(r, 1, &e2, K)) {
+                    int32_t u0, v0, u1, v1;
+                    rast__ss_run_of(&l, &e, fx0, fx1, &u0, &v0);
+                    rast__ss_run_of(&l2, &e2, fx0, fx1, &u1, &v1);
+                    if (u0 >= fa && v0 <= fb && u1 >= fa && v1 <= fb) { /* inside F: skipped */
+                        l = l2;
+                        y = top + K;
+                        if (y == sw) {
+                            e = low[act[i]];
+                            low_in = 1;
+                        } else {
+                            e = e2;
+                        }
+                        goto walked;
+                    }
+                    /* covered on every row: from the rightmost place of
+                     * the left edge to the leftmost of the right one */
+                    if (l.x < e.x) {
+                        u0 = l.x > l2.x ? l.x : l2.x;
+                        v0 = e.x < e2.x ? e.x : e2.x;
+                    } else {
+                        u0 = e.x > e2.x ? e.x : e2.x;
+                        v0 = l.x < l2.x ? l.x : l2.x;
+                    }
+                    u0 = u0 < fx0 ? fx0 : u0;
+                    v0 = v0 > fx1 ? fx1 : v0;
+                    if (u0 < v0 && l.x != e.x) rast__ss_grow(bits, wpr, K, fx0, u0, v0, &fa, &fb);
+                }
+            }
+            for (; y < end; y++) {
+                int32_t a = l.x < e.x ? l.x : e.x, b = l.x < e.x ? e.x : l.x;
+                t = y - top;
+                a = a < fx0 ? fx0 : a;
+                b = b > fx1 ? fx1 : b;
+                if (a <= pb[t] && b >= pa[t]) {
+                    pa[t] = a < pa[t] ? a : pa[t];
+                    pb[t] = b > pb[t] ? b : pb[t];
+                } else if (a < b) {
+                    if (pa[t] < pb[t]) { /* into the bits; lo, hi: the columns they reach */
+                        rast__ss_bits(bits + (size_t)t * wpr, pa[t] - fx0, pb[t] - fx0);
+                        lo = pa[t] < lo ? pa[t] : lo;
+                        hi = pb[t] > hi ? pb[t] : hi;
+                    }
+                    pa[t] = a;
+                    pb[t] = b;
+                }
+                rast__edge_step(&l);
+                if (y + 1 == sw) {
+                    e = low[act[i]];
+                    sw = INT32_MAX;
+                    low_in = 1;
+                } else {
+                    rast__edge_step(&e);
+                }
+            }
+        walked:
+            if (y == l.end) continue; /* done: dropped */
+            /* what changed: the edges' positions (all of edge 1 once the
+             * lower edge took over) and the row */
+            r->row = y;
+            r->e[0] = l.e;
+            r->x[0] = l.x;
+            if (low_in) {
+                rast__ss_set(r, 1, &e);
+                r->drk[1] = -1;
+                r->next = 0;
+            } else {
+                r->e[1] = e.e;
+                r->x[1] = e.x;
+            }
+            act[m++] = act[i];
+        }
+        nact = m;
+        for (t = 0; t < K; t++) {
+            if (pa[t] < pb[t]) {
+                rast__ss_bits(bits + (size_t)t * wpr, pa[t] - fx0, pb[t] - fx0);
+                lo = pa[t] < lo ? pa[t] : lo;
+                hi = pb[t] > hi ? pb[t] : hi;
+            }
+            if (fa < fb) {
+                rast__ss_bits(bits + (size_t)t * wpr, fa - fx0, fb - fx0);
+                lo = fa < lo ? fa : lo;
+                hi = fb > hi ? fb : hi;
+            }
+        }
+        if (lo >= hi) continue; /* no run */
+        for (t = 0; t < K; t++)
+            rast__ss_bit_runs(&ss, b0 + t, bits + (size_t)t * wpr, (lo - fx0) >> 6,
+                              (hi - fx0 - 1) >> 6);
+    }
+    rast__ss_finish(&ss);
+    return RAST_OK;
+}

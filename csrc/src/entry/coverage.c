@@ -1,0 +1,341 @@
+/*
+ * coverage.c - the coverage entry points (rastrum.h, "anti-aliased
+ * coverage"): check everything, build the edges (or the fine-grid
+ * polygon), then run the method.  Every error is found here, before a
+ * value is written.
+ */
+#include "coverage/coverage.h"
+#include "painters/paint.h"
+
+static const char *const rast__aa_names[RAST_AA_COUNT_] = {"area", "ss2", "ss4",
+                                                           "ss8", "ss16", "accumulate"};
+
+rast_status rast_aa_method_info(rast_aa_method method, const char **name)
+{
+    if ((unsigned)method >= RAST_AA_COUNT_) return RAST_E_ARG;
+    if (name) *name = rast__aa_names[method];
+    return RAST_OK;
+}
+
+/* log2 of k for the supersampling methods, 0 for the others. */
+static int32_t rast__aa_kbits(rast_aa_method m)
+{
+    return (m >= RAST_AA_SS2 && m <= RAST_AA_SS16) ? (int32_t)(m - RAST_AA_SS2) + 1 : 0;
+}
+
+static rast_status rast__cov_check_opts(const rast_coverage_opts *o)
+{
+    if (!o) return RAST_E_NULL;
+    if ((unsigned)o->method >= RAST_AA_COUNT_) return RAST_E_ARG;
+    if ((unsigned)o->rule > RAST_RULE_NONZERO) return RAST_E_ARG;
+    if (o->subpixel_bits < 0 || o->subpixel_bits > RAST_MAX_SUBPIXEL_BITS) return RAST_E_SUBPIXEL;
+    if (o->sample != RAST_SAMPLE_CORNER && o->sample != RAST_SAMPLE_CENTER) return RAST_E_ARG;
+    return RAST_OK;
+}
+
+static size_t rast__cov_need(const rast_coverage_opts *o, uint32_t npoints, int32_t width,
+                             int32_t height)
+{
+    int32_t kb = rast__aa_kbits(o->method);
+    /* the spans call's row buffer first */
+    size_t row = rast__align((size_t)width);
+    if (!kb) return rast__size_add(row, rast__cov_area_scratch(npoints, width));
+    /* the fine-grid copy of the vertices and ring sizes, then the count */
+    return rast__size_add(row, rast__size_add(rast__align(rast__size_mul(npoints, sizeof(rast_point))),
+                          rast__size_add(rast__align(rast__size_mul(npoints, sizeof(uint32_t))),
+                                         rast__cov_ss_scratch(npoints, kb, width, height))));
+}
+
+rast_status rast_coverage_scratch_size(const rast_coverage_opts *opts, uint32_t npoints,
+                                       int32_t width, int32_t height, size_t *bytes)
+{
+    rast_status st;
+    if (!bytes) return RAST_E_NULL;
+    st = rast__cov_check_opts(opts);
+    if (st != RAST_OK) return st;
+    if (width < 0 || height < 0 || width > RAST_MAX_DIM || height > RAST_MAX_DIM)
+        return RAST_E_SIZE;
+    if (npoints > RAST_MAX_POINTS) return RAST_E_TOO_MANY;
+    *bytes = rast__cov_need(opts, npoints, width, height);
+    return RAST_OK;
+}
+
+void rast__cov_row_done(const rast__cov_out *o, int32_t y)
+{
+    const unsigned char *row = o->base;
+    int32_t k = 0, w = o->clip.x1 - o->clip.x0;
+    if (!o->span) return;
+    while (k < w) {
+        int32_t k0;
+        while (k < w && !row[k]) k++;
+        k0 = k;
+        while (k < w && row[k]) k++;
+        if (k > k0) o->span(o->user, y, o->clip.x0 + k0, o->clip.x0 + k, row + k0);
+    }
+}
+
+void rast__cov_zero_rows(const rast__cov_out *o, int32_t y0, int32_t y1)
+{
+    static const int32_t size[3] = {1, 2, 8};
+    int32_t y;
+    if (o->span) return; /* nothing to hand on */
+    for (y = y0; y < y1; y++)
+        memset(rast__cov_row(o, y), 0,
+               (size_t)(o->clip.x1 - o->clip.x0) * (size_t)size[o->format]);
+}
+
+static rast_status rast__cov_check_points(const rast_point *p, uint32_t n, int32_t scale)
+{
+    const int32_t lim = RAST_COORD_MAX >> scale;
+    uint32_t i;
+    for (i = 0; i < n; i++)
+        if (p[i].x < -RAST_COORD_MAX || p[i].x > RAST_COORD_MAX || p[i].y < -RAST_COORD_MAX ||
+            p[i].y > RAST_COORD_MAX)
+            return RAST_E_RANGE;
+    if (scale)
+        for (i = 0; i < n; i++)
+            if (p[i].x < -lim || p[i].x > lim || p[i].y < -lim || p[i].y > lim)
+                return RAST_E_RANGE;
+    return RAST_OK;
+}
+
+/* Everything but the geometry: options, output, clip, and (given the
+ * vertex count) the scratch.  *o is set up for the cut clip. */
+static rast_status rast__cov_begin(const rast_coverage_opts *opts, const rast_rect *clip,
+                                   rast_coverage_format format, void *out, ptrdiff_t stride,
+                                   uint32_t npoints, void *scratch, size_t scratch_bytes,
+                                   rast__cov_out *o, int spans)
+{
+    static const int32_t size[3] = {1, 2, 8};
+    rast_status st = rast__cov_check_opts(opts);
+    int32_t kb, w, h;
+    if (st != RAST_OK) return st;
+    if (!clip) return RAST_E_NULL;
+    if ((unsigned)format > RAST_COVERAGE_FIX62) return RAST_E_ARG;
+    st = rast__span_clip(clip, &o->clip);
+    if (st != RAST_OK) return st;
+    kb = rast__aa_kbits(opts->method);
+    if (kb) {
+        const int32_t lim = RAST_MAX_DIM >> kb;
+        if (o->clip.x0 < -lim || o->clip.x1 > lim || o->clip.y0 < -lim || o->clip.y1 > lim)
+            return RAST_E_SIZE;
+    }
+    w = o->clip.x1 - o->clip.x0;
+    h = o->clip.y1 - o->clip.y0;
+    if (npoints > RAST_MAX_POINTS) return RAST_E_TOO_MANY;
+    if (w > 0 && h > 0 && !spans) {
+        if (!out) return RAST_E_NULL;
+        if (stride % size[format] || (uintptr_t)out % (uintptr_t)size[format] ||
+            stride < (ptrdiff_t)w * size[format])
+            return RAST_E_ARG;
+    }
+    st = rast__scratch_check(scratch, scratch_bytes, rast__cov_need(opts, npoints, w, h));
+    if (st != RAST_OK) return st;
+    o->base = (unsigned char *)out;
+    o->stride = stride;
+    o->format = format;
+    o->span = NULL;
+    o->user = NULL;
+    return RAST_OK;
+}
+
+uint32_t rast__cov_edges_polygon(const rast_polygon *poly, rast__cedge *e)
+{
+    uint32_t k, i, base, n = 0;
+    for (k = 0, base = 0; k < poly->nrings; base += poly->ring_sizes[k], k++) {
+        uint32_t size = poly->ring_sizes[k];
+        for (i = 0; i < size; i++) {
+            rast_point a = poly->points[base + i];
+            rast_point b = poly->points[base + (i + 1 == size ? 0 : i + 1)];
+            rast__cedge *ed = &e[n];
+            if (a.y == b.y) continue;
+            ed->dir = 1;
+            if (a.y > b.y) {
+                rast_point t = a;
+                a = b;
+                b = t;
+                ed->dir = -1;
+            }
+            ed->xt = a.x;
+            ed->yt = a.y;
+            ed->dx = b.x - a.x;
+            ed->dy = b.y - a.y;
+            n++;
+        }
+    }
+    return n;
+}
+
+/* Triangle k with its vertices in the order that makes its signed area
+ * positive; 0 when it is degenerate (its edges would cancel). */
+static int rast__cov_tri(const rast_point *t, rast_point *v)
+{
+    int64_t cross = (int64_t)(t[1].x - t[0].x) * (t[2].y - t[0].y) -
+                    (int64_t)(t[1].y - t[0].y) * (t[2].x - t[0].x);
+    if (cross == 0) return 0;
+    v[0] = t[0];
+    v[1] = cross > 0 ? t[1] : t[2];
+    v[2] = cross > 0 ? t[2] : t[1];
+    return 1;
+}
+
+uint32_t rast__cov_edges_triangles(const rast_point *tris, uint32_t ntris, rast__cedge *e)
+{
+    uint32_t k, n = 0;
+    uint32_t three = 3;
+    for (k = 0; k < ntris; k++) {
+        rast_point v[3];
+        rast_polygon p;
+        if (!rast__cov_tri(&tris[3 * k], v)) continue;
+        p.points = v;
+        p.ring_sizes = &three;
+        p.nrings = 1;
+        n += rast__cov_edges_polygon(&p, e + n);
+    }
+    return n;
+}
+
+/* The fine-grid copy for supersampling: the vertices times 2^(kb - S)
+ * when S < kb (else the same integers, read with S - kb bits). */
+static void rast__cov_scale(const rast_point *p, uint32_t n, int32_t scale, rast_point *q)
+{
+    uint32_t i;
+    for (i = 0; i < n; i++) {
+        q[i].x = (int32_t)((uint32_t)p[i].x << scale);
+        q[i].y = (int32_t)((uint32_t)p[i].y << scale);
+    }
+}
+
+static rast_status rast__cov_run(const rast_polygon *poly, const rast_point *tris, uint32_t ntris,
+                                 uint32_t npoints, const rast_coverage_opts *opts,
+                                 const rast__cov_out *o, void *scratch, size_t scratch_bytes)
+{
+    rast__arena arena;
+    int32_t kb = rast__aa_kbits(opts->method), s = opts->subpixel_bits;
+    rast_fill_rule rule = tris ? RAST_RULE_NONZERO : opts->rule;
+    if (o->clip.x0 >= o->clip.x1 || o->clip.y0 >= o->clip.y1) return RAST_OK;
+    arena.p = (unsigned char *)scratch;
+    arena.left = scratch_bytes;
+    if (!rast__take(&arena, (size_t)(o->clip.x1 - o->clip.x0))) return RAST_E_SCRATCH; /* the row */
+    if (!kb) {
+        rast__cedge *e = (rast__cedge *)rast__take(&arena, (size_t)npoints * sizeof(rast__cedge));
+        uint32_t n;
+        if (npoints && !e) return RAST_E_SCRATCH;
+        n = tris ? rast__cov_edges_triangles(tris, ntris, e) : rast__cov_edges_polygon(poly, e);
+        return rast__cov_area(e, n, s, rule, opts->method == RAST_AA_ACCUMULATE, o, &arena);
+    } else {
+        int32_t scale = s < kb ? kb - s : 0;
+        rast_point *q = (rast_point *)rast__take(&arena, (size_t)npoints * sizeof(rast_point));
+        uint32_t *sizes = (uint32_t *)rast__take(&arena, (size_t)npoints * sizeof(uint32_t));
+        rast_polygon fine;
+        if (npoints && (!q || !sizes)) return RAST_E_SCRATCH;
+        if (tris) {
+            uint32_t k, m = 0;
+            for (k = 0; k < ntris; k++)
+                if (rast__cov_tri(&tris[3 * k], &q[3 * m])) m++;
+            rast__cov_scale(q, 3 * m, scale, q);
+            return rast__cov_ss_tris(q, m, s < kb ? 0 : s - kb, kb, opts->sample, o, &arena);
+        } else {
+            rast__cov_scale(poly->points, npoints, scale, q);
+            fine.nrings = poly->nrings;
+        }
+        fine.points = q;
+        fine.ring_sizes = tris ? sizes : poly->ring_sizes;
+        return rast__cov_ss(&fine, npoints, s < kb ? 0 : s - kb, kb, rule, opts->sample, o, &arena);
+    }
+}
+
+/* The polygon's vertices, counted and its pointers checked. */
+static rast_status rast__cov_count(const rast_polygon *polygon, uint32_t *npoints)
+{
+    uint64_t n = 0;
+    uint32_t k;
+    if (polygon->nrings > 0 && !polygon->ring_sizes) return RAST_E_NULL;
+    for (k = 0; k < polygon->nrings; k++) {
+        n += polygon->ring_sizes[k];
+        if (n > RAST_MAX_POINTS) return RAST_E_TOO_MANY;
+    }
+    if (n > 0 && !polygon->points) return RAST_E_NULL;
+    *npoints = (uint32_t)n;
+    return RAST_OK;
+}
+
+/* What every entry point does once its geometry is counted: options,
+ * output and scratch checked (rast__cov_begin), the vertices checked,
+ * then the method run.  `span` not NULL: the values go to it, row by row,
+ * through a row buffer at the scratch's start (rast__cov_run skips it). */
+static rast_status rast__cov_entry(const rast_polygon *poly, const rast_point *tris,
+                                   uint32_t ntris, uint32_t n, const rast_coverage_opts *opts,
+                                   const rast_rect *clip, rast_coverage_format format, void *out,
+                                   ptrdiff_t stride, rast_coverage_span_fn span, void *user,
+                                   void *scratch, size_t scratch_bytes)
+{
+    static const rast_point none[3] = {{0, 0}, {0, 0}, {0, 0}};
+    rast__cov_out o;
+    int32_t kb;
+    rast_status st = rast__cov_begin(opts, clip, span ? RAST_COVERAGE_U8 : format, out, stride, n,
+                                     scratch, scratch_bytes, &o, span != NULL);
+    if (st != RAST_OK) return st;
+    kb = rast__aa_kbits(opts->method);
+    st = rast__cov_check_points(poly ? poly->points : tris, n,
+                                kb > opts->subpixel_bits ? kb - opts->subpixel_bits : 0);
+    if (st != RAST_OK) return st;
+    if (span) {
+        o.base = (unsigned char *)scratch;
+        o.stride = 0;
+        o.span = span;
+        o.user = user;
+    }
+    if (!poly && !ntris) tris = none;
+    return rast__cov_run(poly, tris, ntris, n, opts, &o, scratch, scratch_bytes);
+}
+
+rast_status rast_polygon_coverage(const rast_polygon *polygon, const rast_coverage_opts *opts,
+                                  const rast_rect *clip, rast_coverage_format format, void *out,
+                                  ptrdiff_t stride, void *scratch, size_t scratch_bytes)
+{
+    uint32_t n = 0;
+    rast_status st;
+    if (!polygon) return RAST_E_NULL;
+    st = rast__cov_count(polygon, &n);
+    if (st != RAST_OK) return st;
+    return rast__cov_entry(polygon, NULL, 0, n, opts, clip, format, out, stride, NULL, NULL,
+                           scratch, scratch_bytes);
+}
+
+rast_status rast_triangles_coverage(const rast_point *tris, uint32_t ntris,
+                                    const rast_coverage_opts *opts, const rast_rect *clip,
+                                    rast_coverage_format format, void *out, ptrdiff_t stride,
+                                    void *scratch, size_t scratch_bytes)
+{
+    if (ntris > RAST_MAX_POINTS / 3) return RAST_E_TOO_MANY;
+    if (ntris > 0 && !tris) return RAST_E_NULL;
+    return rast__cov_entry(NULL, tris, ntris, 3 * ntris, opts, clip, format, out, stride, NULL,
+                           NULL, scratch, scratch_bytes);
+}
+
+rast_status rast_polygon_coverage_spans(const rast_polygon *polygon,
+                                        const rast_coverage_opts *opts, const rast_rect *clip,
+                                        rast_coverage_span_fn span, void *user, void *scratch,
+                                        size_t scratch_bytes)
+{
+    rast_status st;
+    uint32_t n = 0;
+    if (!polygon || !span || !clip) return RAST_E_NULL;
+    st = rast__cov_count(polygon, &n);
+    if (st != RAST_OK) return st;
+    return rast__cov_entry(polygon, NULL, 0, n, opts, clip, RAST_COVERAGE_U8, NULL, 0, span, user,
+                           scratch, scratch_bytes);
+}
+
+rast_status rast_triangles_coverage_spans(const rast_point *tris, uint32_t ntris,
+                                          const rast_coverage_opts *opts, const rast_rect *clip,
+                                          rast_coverage_span_fn span, void *user, void *scratch,
+                                          size_t scratch_bytes)
+{
+    if (!span || !clip) return RAST_E_NULL;
+    if (ntris > RAST_MAX_POINTS / 3) return RAST_E_TOO_MANY;
+    if (ntris > 0 && !tris) return RAST_E_NULL;
+    return rast__cov_entry(NULL, tris, ntris, 3 * ntris, opts, clip, RAST_COVERAGE_U8, NULL, 0,
+                           span, user, scratch, scratch_bytes);
+}

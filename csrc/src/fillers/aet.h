@@ -1,0 +1,243 @@
+/*
+ * aet.h - the active edge table walk (seed 001, section 3.4), shared by
+ * the AET filler (aet.c) and the colour-interpolating polygon fill
+ * (shade_poly.c).  Static inline so that each user's span function is
+ * inlined into its own copy of the loop: the plain fill pays no call per
+ * span.  Not installed.
+ *
+ * A bucket edge table holds each edge under the first visible row it
+ * crosses; the active edge table holds the edges crossing the current row,
+ * sorted by their crossing column.  Each row: move the row's bucket into the
+ * AET, pair the crossings into spans (even-odd) or sum their directions
+ * (non-zero), then drop the edges that end and step the others one row down
+ * with the exact DDA.  Insertion sort keeps the AET ordered: from one row to
+ * the next the order changes only where edges cross, so it is nearly sorted.
+ *
+ * Edges that start on the same row join the AET together: the edge table
+ * is grouped by first row (a counting sort, so a row's new edges are one
+ * run of the table), the run is sorted by column in place (a heapsort when
+ * it is long) and merged into the AET from the back.  That is
+ * O(k log k + n) for k new edges and n active ones, where inserting them
+ * one by one cost O(k n): 20,000 teeth of a comb hanging from one row took
+ * ~10^9 record moves.  The AET's room stages the edges while the table is
+ * grouped, so the scratch is what it was (RAST_AET_SCRATCH_BOUND).
+ */
+#ifndef RAST_AET_H
+#define RAST_AET_H
+
+#include "base/internal.h"
+
+/* One inside run of row `row`: columns [l->x, r->x) (possibly empty),
+ * bounded on the left by the crossing of edge l and on the right by that
+ * of edge r.  Even-odd: the crossings 2k and 2k+1 of the row; non-zero:
+ * the crossing where the winding number leaves 0 and the one where it
+ * comes back.  An edge's `next` is its index in the walk's edge table
+ * (see `src`); `order` may be NULL.  Runs come row by row, in increasing x. */
+typedef void (*rast__aet_span_fn)(void *user, int32_t row, const rast__edge *l,
+                                  const rast__edge *r);
+
+/* Called for each row with its active edges sorted by column, before the
+ * row's runs are formed; it may reorder edges of EQUAL column (which
+ * changes no pixel, only which edges bound the runs). */
+typedef void (*rast__aet_order_fn)(void *user, int32_t row, rast__edge *aet, int32_t n);
+
+/* The walk: every run of `poly` inside `clip` to `span`.  Scratch as
+ * rast__aet_scratch.  With `src` (room for 2 * npoints) not NULL, the edge
+ * of index k is the ring edge from vertex src[2k] to vertex src[2k+1]
+ * (indices into poly->points). */
+/* Insertion sort of the AET by crossing column.  The edges are held by
+ * value: comparisons read consecutive records and stepping walks the array
+ * in order; a record moves only when its edge crosses another. */
+static inline void rast__aet_sort(rast__edge *aet, int32_t n)
+{
+    int32_t i, k;
+    for (i = 1; i < n; i++) {
+        if (aet[i - 1].x > aet[i].x) {
+            rast__edge v = aet[i];
+            for (k = i; k > 0 && aet[k - 1].x > v.x; k--) aet[k] = aet[k - 1];
+            aet[k] = v;
+        }
+    }
+}
+
+/* Heapsort of e[0..n) by crossing column: in place, O(n log n) at worst. */
+static inline void rast__aet_sift(rast__edge *e, int32_t root, int32_t n)
+{
+    rast__edge v = e[root];
+    for (;;) {
+        int32_t c = 2 * root + 1;
+        if (c >= n) break;
+        if (c + 1 < n && e[c + 1].x > e[c].x) c++;
+        if (e[c].x <= v.x) break;
+        e[root] = e[c];
+        root = c;
+    }
+    e[root] = v;
+}
+
+static inline void rast__aet_heapsort(rast__edge *e, int32_t n)
+{
+    int32_t i;
+    for (i = n / 2; i-- > 0;) rast__aet_sift(e, i, n);
+    for (i = n - 1; i > 0; i--) {
+        rast__edge t = e[0];
+        e[0] = e[i];
+        e[i] = t;
+        rast__aet_sift(e, 0, i);
+    }
+}
+
+/* Sort the k edges add[] by column (insertion for a few, a heapsort for
+ * many: it bounds the worst case) and merge them into the n sorted ones of
+ * aet[] (room for n + k), from the back; an edge goes after active ones of
+ * equal column.  Returns n + k. */
+static inline int32_t rast__aet_join(rast__edge *aet, int32_t n, rast__edge *add, int32_t k)
+{
+    const int32_t total = n + k;
+    int32_t m = total;
+    if (k > 16)
+        rast__aet_heapsort(add, k);
+    else
+        rast__aet_sort(add, k); /* few: insertion is quicker */
+    for (n--, k--; k >= 0;) {
+        if (n >= 0 && aet[n].x > add[k].x)
+            aet[--m] = aet[n--];
+        else
+            aet[--m] = add[k--];
+    }
+    return total;
+}
+
+/* The walk once the edge table is set up: nedges edge records in aet[]
+ * (each with `row` its first row in [row0, row1)), bucket[r - row0 + 1]
+ * holding how many start on row r (bucket[0] = 0).  Groups the table by
+ * first row into edges[], then walks rows [row0, row1).  Shared by the
+ * 32-bit walk below and the 64-bit one (poly64.c): after the setup the
+ * walk is the same integers. */
+static inline void rast__aet_sweep(rast__edge *edges, rast__edge *aet, int32_t *bucket,
+                                   int32_t nedges, int32_t row0, int32_t row1,
+                                   rast_fill_rule rule, rast__aet_span_fn span,
+                                   rast__aet_order_fn order, void *user)
+{
+    int32_t j, first, nactive = 0, k, run = 0;
+    /* (the running sum in a register: through memory, each row waited
+     * for the store of the one before) */
+    for (j = 0; j <= row1 - row0; j++) {
+        run += bucket[j];
+        bucket[j] = run;
+    }
+    /* Placing an edge moves its row's start on: bucket[r] ends up where
+     * row r's run ends. */
+    for (k = 0; k < nedges; k++) edges[bucket[aet[k].row - row0]++] = aet[k];
+
+    for (j = row0, first = 0; j < row1; j++) {
+        int32_t m, n, last = bucket[j - row0];
+
+        /* Edges starting on this row join the AET: sort them, then merge
+         * from the back (an edge goes after active ones of equal column). */
+        if (last != first) {
+            nactive = rast__aet_join(aet, nactive, &edges[first], last - first);
+            first = last;
+        }
+        if (nactive == 0) continue;
+        if (order) order(user, j, aet, nactive);
+
+        /* Spans: sample i is inside iff the crossings with x <= i make it so. */
+        if (rule == RAST_RULE_EVENODD) {
+            for (n = 0; n + 1 < nactive; n += 2) span(user, j, &aet[n], &aet[n + 1]);
+        } else {
+            int32_t w = 0, start = 0;
+            for (n = 0; n < nactive; n++) {
+                if (w == 0) start = n;
+                w += aet[n].dir;
+                if (w == 0) span(user, j, &aet[start], &aet[n]);
+            }
+        }
+
+        /* Step every edge to the next row; drop those that end here (few
+         * rows have any, so the compaction is a separate, rare pass). */
+        for (n = 0, m = 0; n < nactive; n++) {
+            rast__edge_step(&aet[n]);
+            m += aet[n].end == j + 1;
+        }
+        if (m) {
+            /* from the first edge that ends: no edge copied onto itself */
+            for (m = 0; aet[m].end != j + 1;) m++;
+            for (n = m + 1; n < nactive; n++)
+                if (aet[n].end != j + 1) aet[m++] = aet[n];
+            nactive = m;
+        }
+        rast__aet_sort(aet, nactive);
+    }
+}
+
+/* The walk's tables out of the arena: the edge table and the AET (an edge
+ * record per vertex each) and the buckets of rows [row0, row1], cleared.
+ * 0 when the arena is too small. */
+static inline int rast__aet_tables(rast__arena *arena, uint32_t npoints, int32_t row0,
+                                   int32_t row1, rast__edge **edges, rast__edge **aet,
+                                   int32_t **bucket)
+{
+    *edges = (rast__edge *)rast__take(arena, (size_t)npoints * sizeof(rast__edge));
+    *aet = (rast__edge *)rast__take(arena, (size_t)npoints * sizeof(rast__edge));
+    *bucket = (int32_t *)rast__take(arena, ((size_t)(row1 - row0) + 1) * sizeof(int32_t));
+    if (!*edges || !*aet || !*bucket) return 0;
+    memset(*bucket, 0, ((size_t)(row1 - row0) + 1) * sizeof(int32_t));
+    return 1;
+}
+
+static inline rast_status rast__aet_walk(const rast_polygon *poly, uint32_t npoints,
+                                         const rast__grid *g, rast_fill_rule rule,
+                                         const rast_rect *clip, rast__arena *arena,
+                                         rast__aet_span_fn span, rast__aet_order_fn order,
+                                         void *user, int32_t *src)
+{
+    const rast_point *pts = poly->points;
+    rast__edge *edges, *aet;
+    int32_t *bucket;
+    int32_t miny, maxy, row0, row1, nedges = 0;
+    uint32_t i, k, base;
+    int64_t r;
+
+    if (npoints == 0) return RAST_OK;
+
+    /* Visible rows: the clip's rows that the polygon's y extent reaches. */
+    miny = maxy = pts[0].y;
+    for (i = 1; i < npoints; i++) {
+        if (pts[i].y < miny) miny = pts[i].y;
+        if (pts[i].y > maxy) maxy = pts[i].y;
+    }
+    r = rast__row_at_or_after(2 * (int64_t)miny, g);
+    row0 = r > clip->y0 ? (int32_t)r : clip->y0;
+    r = rast__row_at_or_after(2 * (int64_t)maxy, g);
+    row1 = r < clip->y1 ? (int32_t)r : clip->y1;
+    if (row0 >= row1) return RAST_OK;
+
+    if (!rast__aet_tables(arena, npoints, row0, row1, &edges, &aet, &bucket))
+        return RAST_E_SCRATCH;
+
+    /* The edge table, grouped by first visible row: set the edges up in
+     * the AET's room (`next` holding each edge's index, see `src`), count
+     * them per row, and place each row's run at bucket[row] (the counts'
+     * running sum). */
+    for (k = 0, base = 0; k < poly->nrings; base += poly->ring_sizes[k], k++) {
+        uint32_t n = poly->ring_sizes[k];
+        for (i = 0; i < n; i++) {
+            rast__edge *ed = &aet[nedges];
+            rast_point a = pts[base + i];
+            rast_point b = pts[base + (i + 1 == n ? 0 : i + 1)];
+            if (rast__edge_setup(ed, a, b, g, row0, row1)) {
+                if (src) {
+                    src[2 * nedges] = (int32_t)(base + i);
+                    src[2 * nedges + 1] = (int32_t)(base + (i + 1 == n ? 0 : i + 1));
+                }
+                ed->next = nedges++;
+                bucket[ed->row - row0 + 1]++;
+            }
+        }
+    }
+    rast__aet_sweep(edges, aet, bucket, nedges, row0, row1, rule, span, order, user);
+    return RAST_OK;
+}
+
+#endif /* RAST_AET_H */

@@ -1,0 +1,280 @@
+/*
+ * formats.c - the pixel formats: how a value is laid out in memory, how a
+ * span of one value is written, how an 8-bit RGBA colour becomes a value,
+ * how a run of shaded colours is stored, and how a run of anti-aliased
+ * coverage paints the value.  Adding a format is one more
+ * enumerator in rastrum.h and one more row of rast__formats here, with its
+ * functions beside it; the painters (paint.c, shade.c) only read the table.
+ */
+#include <string.h>
+
+#include "painters/paint.h"
+
+/* Fill n pixels of `bytes` bytes each with the pattern already written in
+ * the first pixel, doubling the copied run each time: long spans become a
+ * handful of large memcpy calls. */
+static void rast__replicate(unsigned char *p, size_t bytes, size_t n)
+{
+    size_t done = bytes, total = bytes * n;
+    while (done < total) {
+        size_t c = done < total - done ? done : total - done;
+        memcpy(p + done, p, c);
+        done += c;
+    }
+}
+
+/* Columns [x0, x1) of a row of `bytes`-byte pixels, all equal to value. */
+static void rast__put(unsigned char *row, int32_t x0, int32_t x1, const unsigned char *value,
+                      int32_t bytes)
+{
+    unsigned char *p = row + (ptrdiff_t)x0 * bytes;
+    if (x1 <= x0) return;
+    memcpy(p, value, (size_t)bytes);
+    rast__replicate(p, (size_t)bytes, (size_t)(x1 - x0));
+}
+
+/* Columns [x0, x1) of a row of `bytes`-byte pixels, each byte blended
+ * toward the value's byte by the pixel's coverage (rast__blend8): every
+ * byte a channel of 0..255, A included. */
+static void rast__blend_bytes(unsigned char *row, int32_t x0, int32_t x1, const uint8_t *cov,
+                              const unsigned char *v, int32_t bytes)
+{
+    unsigned char *p = row + (ptrdiff_t)x0 * bytes;
+    int32_t k, c;
+    for (k = 0; k < x1 - x0; k++, p += bytes)
+        for (c = 0; c < bytes; c++) p[c] = (unsigned char)rast__blend8(v[c], p[c], cov[k]);
+}
+
+/* ---- gray8: one byte; shaded from R ---------------------------------------- */
+
+/* Masks are the common case: a bare memset per span, no call per span. */
+static void rast__gray8_row(void *user, int32_t y, const int32_t *xs, int32_t n)
+{
+    const rast__solid *s = (const rast__solid *)user;
+    unsigned char *row = s->base + (ptrdiff_t)y * s->stride;
+    int32_t k;
+    for (k = 0; k < n; k++) memset(row + xs[2 * k], s->value[0], (size_t)(xs[2 * k + 1] - xs[2 * k]));
+}
+
+static void rast__gray8_fill(unsigned char *row, int32_t x0, int32_t x1, const unsigned char *v)
+{
+    if (x1 > x0) memset(row + x0, v[0], (size_t)(x1 - x0));
+}
+
+static void rast__gray8_pack(const unsigned char *rgba, unsigned char *v)
+{
+    v[0] = rgba[0];
+}
+
+static void rast__gray8_put(unsigned char *row, int32_t x, int32_t n, const unsigned char *rgba)
+{
+    int32_t k;
+    for (k = 0; k < n; k++) row[x + k] = rgba[4 * k];
+}
+
+/* One byte a pixel: a loop the compiler vectorises (the division by the
+ * constant 255 is a multiply). */
+static void rast__gray8_blend(unsigned char *row, int32_t x0, int32_t x1, const uint8_t *cov,
+                              const unsigned char *v)
+{
+    unsigned s = v[0];
+    int32_t i;
+    for (i = x0; i < x1; i++) row[i] = (unsigned char)rast__blend8(s, row[i], cov[i - x0]);
+}
+
+/* ---- rgb888: R, G, B bytes ------------------------------------------------- */
+
+static void rast__rgb888_fill(unsigned char *row, int32_t x0, int32_t x1, const unsigned char *v)
+{
+    rast__put(row, x0, x1, v, 3);
+}
+
+static void rast__rgb888_pack(const unsigned char *rgba, unsigned char *v)
+{
+    memcpy(v, rgba, 3);
+}
+
+static void rast__rgb888_put(unsigned char *row, int32_t x, int32_t n, const unsigned char *rgba)
+{
+    unsigned char *p = row + (ptrdiff_t)x * 3;
+    int32_t k;
+    for (k = 0; k < n; k++) {
+        p[3 * k] = rgba[4 * k];
+        p[3 * k + 1] = rgba[4 * k + 1];
+        p[3 * k + 2] = rgba[4 * k + 2];
+    }
+}
+
+static void rast__rgb888_blend(unsigned char *row, int32_t x0, int32_t x1, const uint8_t *cov,
+                               const unsigned char *v)
+{
+    rast__blend_bytes(row, x0, x1, cov, v, 3);
+}
+
+/* ---- rgba8888: R, G, B, A bytes; shading stores the interpolated A -------- */
+
+static void rast__rgba8888_fill(unsigned char *row, int32_t x0, int32_t x1, const unsigned char *v)
+{
+    rast__put(row, x0, x1, v, 4);
+}
+
+static void rast__rgba8888_pack(const unsigned char *rgba, unsigned char *v)
+{
+    memcpy(v, rgba, 4);
+}
+
+static void rast__rgba8888_put(unsigned char *row, int32_t x, int32_t n, const unsigned char *rgba)
+{
+    memcpy(row + (ptrdiff_t)x * 4, rgba, (size_t)n * 4);
+}
+
+static void rast__rgba8888_blend(unsigned char *row, int32_t x0, int32_t x1, const uint8_t *cov,
+                                 const unsigned char *v)
+{
+    rast__blend_bytes(row, x0, x1, cov, v, 4);
+}
+
+/* ---- count16: a native uint16_t; a fill adds 1 (saturating) ---------------- */
+
+/* v + 1 - carry keeps the loop free of branches, so the compiler
+ * vectorises it. */
+static void rast__count16_fill(unsigned char *row, int32_t x0, int32_t x1, const unsigned char *v)
+{
+    uint16_t *p = (uint16_t *)(void *)row;
+    int32_t i;
+    (void)v;
+    for (i = x0; i < x1; i++) {
+        uint32_t c = (uint32_t)p[i] + 1u;
+        p[i] = (uint16_t)(c - (c >> 16));
+    }
+}
+
+/* A count adds 1 wherever the coverage is not 0. */
+static void rast__count16_blend(unsigned char *row, int32_t x0, int32_t x1, const uint8_t *cov,
+                                const unsigned char *v)
+{
+    uint16_t *p = (uint16_t *)(void *)row;
+    int32_t i;
+    (void)v;
+    for (i = x0; i < x1; i++) {
+        uint32_t c = (uint32_t)p[i] + (cov[i - x0] != 0);
+        p[i] = (uint16_t)(c - (c >> 16));
+    }
+}
+
+/* ---- rgb565: a native uint16_t, R in bits 15-11, G 10-5, B 4-0 ------------- */
+
+/* A pixel value is its two bytes in memory (a native uint16_t), so a span
+ * is a plain 2-byte pattern. */
+static void rast__rgb565_fill(unsigned char *row, int32_t x0, int32_t x1, const unsigned char *v)
+{
+    rast__put(row, x0, x1, v, 2);
+}
+
+/* The top 5, 6 and 5 bits of R, G and B (truncation, not rounding: 255
+ * stays full scale and 0..7 of R all give 0). */
+static uint16_t rast__rgb565(const unsigned char *rgba)
+{
+    return (uint16_t)(((unsigned)(rgba[0] >> 3) << 11) | ((unsigned)(rgba[1] >> 2) << 5) |
+                      (unsigned)(rgba[2] >> 3));
+}
+
+static void rast__rgb565_pack(const unsigned char *rgba, unsigned char *v)
+{
+    uint16_t p = rast__rgb565(rgba);
+    memcpy(v, &p, 2);
+}
+
+static void rast__rgb565_put(unsigned char *row, int32_t x, int32_t n, const unsigned char *rgba)
+{
+    uint16_t *p = (uint16_t *)(void *)row + x;
+    int32_t k;
+    for (k = 0; k < n; k++) p[k] = rast__rgb565(rgba + 4 * k);
+}
+
+/* Each of R, G and B blended in its own levels (0..31, 0..63, 0..31) by
+ * rast__blend8, the value's bits over the pixel's. */
+static void rast__rgb565_blend(unsigned char *row, int32_t x0, int32_t x1, const uint8_t *cov,
+                               const unsigned char *v)
+{
+    uint16_t *p = (uint16_t *)(void *)row;
+    uint16_t s;
+    unsigned sr, sg, sb;
+    int32_t i;
+    memcpy(&s, v, 2);
+    sr = (unsigned)s >> 11;
+    sg = ((unsigned)s >> 5) & 63u;
+    sb = (unsigned)s & 31u;
+    for (i = x0; i < x1; i++) {
+        unsigned d = p[i], a = cov[i - x0];
+        p[i] = (uint16_t)((rast__blend8(sr, d >> 11, a) << 11) |
+                          (rast__blend8(sg, (d >> 5) & 63u, a) << 5) | rast__blend8(sb, d & 31u, a));
+    }
+}
+
+/* ---- mono1: one bit, MSB first: pixel x is bit 7 - x%8 of byte x/8 --------- */
+
+/* A value is one byte, "on" iff it is not 0.  The partial bytes at the
+ * span's ends are masked; the bytes between are a memset. */
+static void rast__mono1_fill(unsigned char *row, int32_t x0, int32_t x1, const unsigned char *v)
+{
+    int32_t b0 = x0 >> 3, b1 = (x1 - 1) >> 3;
+    unsigned head = 0xFFu >> (x0 & 7), tail = (0xFF00u >> (((x1 - 1) & 7) + 1)) & 0xFFu;
+    unsigned char on = v[0] ? 0xFF : 0x00;
+    if (x1 <= x0) return;
+    if (b0 == b1) {
+        unsigned m = head & tail;
+        row[b0] = (unsigned char)((row[b0] & ~m) | (on & m));
+        return;
+    }
+    row[b0] = (unsigned char)((row[b0] & ~head) | (on & head));
+    if (b1 > b0 + 1) memset(row + b0 + 1, on, (size_t)(b1 - b0 - 1));
+    row[b1] = (unsigned char)((row[b1] & ~tail) | (on & tail));
+}
+
+/* A colour is on iff R >= 128: its top bit, as rgb565 takes top bits. */
+static void rast__mono1_pack(const unsigned char *rgba, unsigned char *v)
+{
+    v[0] = (unsigned char)(rgba[0] >> 7);
+}
+
+static void rast__mono1_put(unsigned char *row, int32_t x, int32_t n, const unsigned char *rgba)
+{
+    int32_t k;
+    for (k = 0; k < n; k++) {
+        int32_t i = x + k;
+        unsigned m = 0x80u >> (i & 7);
+        row[i >> 3] = (unsigned char)((row[i >> 3] & ~m) | (rgba[4 * k] & 0x80u ? m : 0u));
+    }
+}
+
+/* A threshold, not a blend: the pixels with coverage level >= 128 (more
+ * than half the pixel: a > 127.5 / 255) get the value, the others are
+ * left alone. */
+static void rast__mono1_blend(unsigned char *row, int32_t x0, int32_t x1, const uint8_t *cov,
+                              const unsigned char *v)
+{
+    int32_t i = x0;
+    while (i < x1) {
+        int32_t i0;
+        while (i < x1 && cov[i - x0] < 128) i++;
+        i0 = i;
+        while (i < x1 && cov[i - x0] >= 128) i++;
+        rast__mono1_fill(row, i0, i, v);
+    }
+}
+
+/* ---- the table, in rast_format order ---------------------------------------- */
+
+const rast__format rast__formats[RAST_FORMAT_COUNT_] = {
+    /* bits value channels row             fill                 pack                 put
+       blend */
+    {8, 1, 1, rast__gray8_row, rast__gray8_fill, rast__gray8_pack, rast__gray8_put,
+     rast__gray8_blend},
+    {24, 3, 3, NULL, rast__rgb888_fill, rast__rgb888_pack, rast__rgb888_put, rast__rgb888_blend},
+    {32, 4, 4, NULL, rast__rgba8888_fill, rast__rgba8888_pack, rast__rgba8888_put,
+     rast__rgba8888_blend},
+    {16, 0, 0, NULL, rast__count16_fill, NULL, NULL, rast__count16_blend},
+    {16, 2, 3, NULL, rast__rgb565_fill, rast__rgb565_pack, rast__rgb565_put, rast__rgb565_blend},
+    {1, 1, 1, NULL, rast__mono1_fill, rast__mono1_pack, rast__mono1_put, rast__mono1_blend},
+};

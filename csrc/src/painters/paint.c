@@ -1,0 +1,178 @@
+/*
+ * paint.c - targets and painters: WHAT a span writes.  Painters take a
+ * row's spans at once (one call per row, not per span).  The solid painter
+ * writes one value over the spans; the opaque painter also writes the
+ * background between them, so that every clip pixel is written once.
+ *
+ * The pixel formats themselves are rows of rast__formats (formats.c);
+ * nothing here depends on a particular one.
+ */
+#include <string.h>
+
+#include "painters/paint.h"
+
+/* Any format's solid row: its span function over each span. */
+static void rast__solid_row(void *user, int32_t y, const int32_t *xs, int32_t n)
+{
+    const rast__solid *s = (const rast__solid *)user;
+    unsigned char *row = s->base + (ptrdiff_t)y * s->stride;
+    int32_t k;
+    for (k = 0; k < n; k++) s->fmt->fill(row, xs[2 * k], xs[2 * k + 1], s->value);
+}
+
+/* ---- opaque: every clip pixel written once, value or background --------- */
+
+/* Whole background rows after the last row written, up to (not including)
+ * row `to`.  A row with spans is cleared whole too and its spans written
+ * over it: the row is in L1 by then, so the second write is nearly free,
+ * and it takes one memset per row instead of one per gap. */
+static void rast__opaque_rows(rast__solid *s, int32_t to)
+{
+    for (s->row++; s->row < to; s->row++)
+        s->fmt->fill(s->base + (ptrdiff_t)s->row * s->stride, s->clip.x0, s->clip.x1,
+                     s->background);
+}
+
+static void rast__opaque_row(void *user, int32_t y, const int32_t *xs, int32_t n)
+{
+    rast__solid *s = (rast__solid *)user;
+    if (y != s->row) { /* a new row (a long row may come in parts) */
+        rast__opaque_rows(s, y + 1);
+        s->row = y;
+    }
+    if (s->fmt->row) s->fmt->row(user, y, xs, n);
+    else rast__solid_row(user, y, xs, n);
+}
+
+void rast__opaque_finish(rast__solid *s)
+{
+    rast__opaque_rows(s, s->clip.y1);
+}
+
+rast_status rast_format_bytes(rast_format format, int32_t *bytes)
+{
+    if (!bytes) return RAST_E_NULL;
+    if ((unsigned)format >= RAST_FORMAT_COUNT_) return RAST_E_FORMAT;
+    *bytes = rast__formats[format].value ? rast__formats[format].value
+                                         : rast__formats[format].bits / 8;
+    return RAST_OK;
+}
+
+rast_status rast_format_stride(rast_format format, int32_t width, int32_t *bytes)
+{
+    int64_t b;
+    if (!bytes) return RAST_E_NULL;
+    if ((unsigned)format >= RAST_FORMAT_COUNT_) return RAST_E_FORMAT;
+    if (width < 0 || width > RAST_MAX_DIM) return RAST_E_SIZE;
+    b = ((int64_t)width * rast__formats[format].bits + 7) / 8;
+    if (b > INT32_MAX) return RAST_E_SIZE;
+    *bytes = (int32_t)b;
+    return RAST_OK;
+}
+
+rast_status rast_pack_color(rast_format format, const uint8_t *rgba, void *pixel)
+{
+    if (!rgba || !pixel) return RAST_E_NULL;
+    if ((unsigned)format >= RAST_FORMAT_COUNT_ || !rast__formats[format].pack)
+        return RAST_E_FORMAT;
+    rast__formats[format].pack(rgba, (unsigned char *)pixel);
+    return RAST_OK;
+}
+
+rast_status rast_target_init(rast_target *t, void *pixels, int32_t width,
+                             int32_t height, int32_t stride, rast_format format)
+{
+    rast_target v;
+    int32_t row;
+    rast_status st;
+
+    if (!t) return RAST_E_NULL;
+    if ((unsigned)format >= RAST_FORMAT_COUNT_) return RAST_E_FORMAT;
+    if (height < 0 || height > RAST_MAX_DIM) return RAST_E_SIZE;
+    st = rast_format_stride(format, width, &row);
+    if (st != RAST_OK) return st;
+    if (stride < 0 || stride < row) return RAST_E_SIZE;
+    if ((uint64_t)stride * (uint64_t)height > (uint64_t)PTRDIFF_MAX) return RAST_E_SIZE;
+    if (!pixels && width > 0 && height > 0) return RAST_E_NULL;
+    /* 16-bit pixels (COUNT16, RGB565) are uint16_t: every row must start
+     * 2-byte aligned. */
+    if (rast__formats[format].bits == 16 &&
+        (stride % 2 != 0 || (uintptr_t)pixels % sizeof(uint16_t) != 0))
+        return RAST_E_SIZE;
+    v.pixels = pixels;
+    v.width = width;
+    v.height = height;
+    v.stride = stride;
+    v.format = format;
+    v.clip.x0 = 0;
+    v.clip.y0 = 0;
+    v.clip.x1 = width;
+    v.clip.y1 = height;
+    *t = v;
+    return RAST_OK;
+}
+
+rast_status rast__span_clip(const rast_rect *clip, rast_rect *out)
+{
+    rast_rect c = *clip;
+    if (c.x0 < -RAST_MAX_DIM || c.x0 > RAST_MAX_DIM || c.x1 < -RAST_MAX_DIM ||
+        c.x1 > RAST_MAX_DIM || c.y0 < -RAST_MAX_DIM || c.y0 > RAST_MAX_DIM ||
+        c.y1 < -RAST_MAX_DIM || c.y1 > RAST_MAX_DIM)
+        return RAST_E_SIZE;
+    if (c.x1 < c.x0) c.x1 = c.x0;
+    if (c.y1 < c.y0) c.y1 = c.y0;
+    *out = c;
+    return RAST_OK;
+}
+
+rast_status rast__target_check(const rast_target *t, rast_rect *clip)
+{
+    rast_target v;
+    rast_status st;
+    rast_rect c;
+
+    if (!t) return RAST_E_NULL;
+    /* Re-validate through the one constructor: a hand-filled struct gets
+     * exactly the checks an initialised one did. */
+    st = rast_target_init(&v, t->pixels, t->width, t->height, t->stride, t->format);
+    if (st != RAST_OK) return st;
+    c = t->clip;
+    if (c.x0 < 0) c.x0 = 0;
+    if (c.y0 < 0) c.y0 = 0;
+    if (c.x1 > t->width) c.x1 = t->width;
+    if (c.y1 > t->height) c.y1 = t->height;
+    if (c.x1 < c.x0) c.x1 = c.x0;
+    if (c.y1 < c.y0) c.y1 = c.y0;
+    *clip = c;
+    return RAST_OK;
+}
+
+rast_status rast__solid_init(rast__solid *s, const rast_target *t, const rast_rect *clip,
+                             const void *pixel, const void *background, rast__row_fn *fn)
+{
+    const rast__format *f = &rast__formats[t->format];
+    /* A count has no value to write and no background to restore. */
+    if (!f->value && background) return RAST_E_FORMAT;
+    if (f->value && !pixel) return RAST_E_NULL;
+    memset(s, 0, sizeof *s);
+    s->base = (unsigned char *)t->pixels;
+    s->stride = t->stride;
+    s->fmt = f;
+    s->clip = *clip;
+    if (f->value) memcpy(s->value, pixel, (size_t)f->value);
+    if (background) {
+        memcpy(s->background, background, (size_t)f->value);
+        s->row = clip->y0 - 1; /* the last row written */
+        *fn = rast__opaque_row;
+    } else {
+        *fn = f->row ? f->row : rast__solid_row;
+    }
+    return RAST_OK;
+}
+
+void rast__user_row(void *user, int32_t y, const int32_t *xs, int32_t n)
+{
+    const rast__user_spans *u = (const rast__user_spans *)user;
+    int32_t k;
+    for (k = 0; k < n; k++) u->fn(u->user, y, xs[2 * k], xs[2 * k + 1]);
+}

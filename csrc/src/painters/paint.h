@@ -1,0 +1,177 @@
+/*
+ * paint.h - the pixel formats, the solid painter and the target checks
+ * shared with the dispatchers.
+ */
+#ifndef RAST_PAINT_H
+#define RAST_PAINT_H
+
+#include "base/internal.h"
+
+/* A pixel format (formats.c has one row per rast_format).  Rows are
+ * addressed by their first byte; x is a column.  A pixel VALUE is what the
+ * `pixel` arguments hold: `value` bytes in the format's own encoding. */
+typedef struct rast__format {
+    int32_t bits;     /* bits of memory per pixel: 1, 8, 16, 24, 32 */
+    int32_t value;    /* bytes of a pixel value; 0: the format takes none (COUNT16) */
+    int32_t channels; /* RGBA channels a shaded fill interpolates (R, RGB, RGBA); 0: none */
+    rast__row_fn row; /* a solid row painter of its own (user: rast__solid), or NULL
+                         for the generic one calling `fill` per span */
+    /* columns [x0, x1) of `row` set to the value v (COUNT16: plus 1) */
+    void (*fill)(unsigned char *row, int32_t x0, int32_t x1, const unsigned char *v);
+    /* an 8-bit RGBA colour as a pixel value; NULL if the format has none */
+    void (*pack)(const unsigned char *rgba, unsigned char *v);
+    /* columns [x, x + n) of `row` from n RGBA colours (4 bytes each) */
+    void (*put)(unsigned char *row, int32_t x, int32_t n, const unsigned char *rgba);
+    /* columns [x0, x1) of `row` painted with the value v weighted by the
+     * coverage levels cov[0 .. x1 - x0) (uint8, floor(a 255 + 1/2)):
+     * channels blended by rast__blend8, MONO1 thresholded, COUNT16 counted
+     * (see rast_fill_polygon_aa) */
+    void (*blend)(unsigned char *row, int32_t x0, int32_t x1, const uint8_t *cov,
+                  const unsigned char *v);
+} rast__format;
+
+/* One channel of level s (the fill's) over level d (the pixel's) with
+ * coverage level a (0..255): floor((s a + d (255 - a) + 127) / 255), the
+ * nearest integer to the exact mix (s a + d (255 - a)) / 255, which is
+ * never a tie (255 is odd).  a = 255 gives s, a = 0 gives d; levels up to
+ * 255 (an 8-bit channel, or rgb565's 5- and 6-bit ones). */
+static inline unsigned rast__blend8(unsigned s, unsigned d, unsigned a)
+{
+    return (s * a + d * (255u - a) + 127u) / 255u;
+}
+
+extern const rast__format rast__formats[RAST_FORMAT_COUNT_];
+
+typedef struct rast__solid {
+    unsigned char *base;
+    ptrdiff_t stride;
+    const rast__format *fmt;
+    unsigned char value[4];       /* inside */
+    unsigned char background[4];  /* outside (opaque painter only) */
+    rast_rect clip;
+    int32_t row;                  /* opaque: the last row written */
+} rast__solid;
+
+/* A span callback's clip: coordinates within +-RAST_MAX_DIM (so that its
+ * width and height fit int32_t) else RAST_E_SIZE; an inverted one is made
+ * empty. */
+rast_status rast__span_clip(const rast_rect *clip, rast_rect *c);
+
+/* The scratch a polygon (triangle batch) fill needs for a clip of width x
+ * height, any size rast__span_clip passes (up to 2 RAST_MAX_DIM): the
+ * entry points' own formula, for rast_render_bands* too, so that a scene
+ * accepts every clip its primitives' entry points accept.  Checks the
+ * options; RAST_E_SIZE for a negative side. */
+rast_status rast__fill_need(const rast_fill_opts *opts, uint32_t npoints, int32_t width,
+                            int32_t height, size_t *bytes);
+rast_status rast__tri_fill_need(const rast_tri_opts *opts, int32_t width, int32_t height,
+                                size_t *bytes);
+
+/* Check a target (as rast_target_init would) and cut its clip to it. */
+rast_status rast__target_check(const rast_target *t, rast_rect *clip);
+
+/* The painter for rast_fill_polygon_spans: hands each span of a row to
+ * the user's rast_span_fn. */
+typedef struct rast__user_spans {
+    rast_span_fn fn;
+    void *user;
+} rast__user_spans;
+void rast__user_row(void *user, int32_t y, const int32_t *xs, int32_t n);
+
+/* A painter writing `pixel` (a value of the target's format) over spans of
+ * a checked target and clip: fills *s and the row function to pass it to.
+ * With a non-NULL `background` it is the opaque painter: every clip pixel
+ * is written, and rast__opaque_finish must follow a successful fill.
+ * RAST_FORMAT_COUNT16 adds 1 per covered pixel instead and ignores `pixel`
+ * (it may be NULL); it has no opaque painter (RAST_E_FORMAT).  Otherwise
+ * RAST_E_NULL for a NULL pixel. */
+rast_status rast__solid_init(rast__solid *s, const rast_target *t, const rast_rect *clip,
+                             const void *pixel, const void *background, rast__row_fn *fn);
+void rast__opaque_finish(rast__solid *s);
+
+/* Called before triangle k (vertices t, grid g) is filled, with the
+ * painter's `user`: set the painter up for it; 0 skips the triangle. */
+typedef int (*rast__tri_begin_fn)(void *user, const rast_point *t, uint32_t k,
+                                  const rast__grid *g);
+
+/* The triangle batch behind every triangle entry point (trifill.c): check
+ * the batch, options and scratch for `clip` (non-empty or empty, cut to the
+ * target or a span clip), then run the filler on each triangle in turn,
+ * calling `begin` first when it is not NULL, its spans going to `fn`.
+ * `gray8`, when not NULL, is the solid painter `user` of a GRAY8 target:
+ * the sink then writes its pixels inline (rast__sink_direct8). */
+rast_status rast__tri_fill(const rast_point *tris, uint32_t ntris, const rast_tri_opts *opts,
+                           const rast_rect *clip, rast__row_fn fn, void *user,
+                           const rast__solid *gray8, rast__tri_begin_fn begin,
+                           void *scratch, size_t scratch_bytes);
+
+/* A triangle filler as rast__tri_fill (its signature): rast__tri_fill
+ * itself, or rast__tri_touching (shade_aa.c). */
+typedef rast_status (*rast__tri_filler_fn)(const rast_point *tris, uint32_t ntris,
+                                           const rast_tri_opts *opts, const rast_rect *clip,
+                                           rast__row_fn fn, void *user,
+                                           const rast__solid *gray8, rast__tri_begin_fn begin,
+                                           void *scratch, size_t scratch_bytes);
+
+/* The pixels whose closed square [i, i+1] x [j, j+1] meets an edge (a
+ * closed segment) of the triangle, for each non-degenerate triangle in
+ * turn (rows top to bottom, a span per edge in the row, possibly
+ * overlapping), cut to `clip`: the silhouette filler of the anti-aliased
+ * shaded fill.  Checks as rast__tri_fill; needs no scratch; gray8 unused. */
+rast_status rast__tri_touching(const rast_point *tris, uint32_t ntris, const rast_tri_opts *opts,
+                               const rast_rect *clip, rast__row_fn fn, void *user,
+                               const rast__solid *gray8, rast__tri_begin_fn begin,
+                               void *scratch, size_t scratch_bytes);
+
+/* The Gouraud painter (shade.c) fed by `filler`, into RGBA8888 colours:
+ * pixel (band->x0 + i, band->y0 + j) at rgba + j stride + 4 i, every
+ * pixel of `band` the filler gives written (clamped to 0..255).  Checks
+ * as rast_fill_triangles_shaded (no depth). */
+rast_status rast__shade_band(unsigned char *rgba, ptrdiff_t stride, const rast_rect *band,
+                             const rast_point *tris, uint32_t ntris, const uint8_t *colors,
+                             const rast_tri_opts *opts, const rast_shade_opts *shade,
+                             rast__tri_filler_fn filler, void *scratch, size_t scratch_bytes);
+
+/* The polygon entry points' common part (fill.c), for 32-bit polygons
+ * (fill.c) and 64-bit ones (poly64.c): `fill` checks the polygon (a
+ * rast_polygon or rast_polygon64), options and scratch for a clip and runs
+ * the filler into the row painter.  rast__fill_target checks the target
+ * and paints `pixel` (with `opaque`, `background` elsewhere in the clip);
+ * rast__fill_spans hands the spans to a user callback. */
+/* A polygon fill's options, checked once for many polygons (batch.c):
+ * the algorithm and the grid. */
+struct rast__algo;
+typedef struct rast__fill_setup {
+    const rast_fill_opts *opts;
+    const struct rast__algo *al;
+    rast__grid g;
+} rast__fill_setup;
+/* Check the options (the errors of rast_scratch_size's) into *f. */
+rast_status rast__fill_prepare(const rast_fill_opts *opts, rast__fill_setup *f);
+/* rast_fill_bounds with checked options: check the polygon (its vertex
+ * count, then every vertex's range, from one pass over them) and the span
+ * clip, and give its bounds there and its vertex count. */
+rast_status rast__fill_measure(const rast__fill_setup *f, const rast_polygon *polygon,
+                               const rast_rect *clip, uint32_t *npoints, rast_rect *bounds);
+/* The scratch a fill of npoints vertices needs in a width x height clip. */
+size_t rast__fill_scratch(const rast__fill_setup *f, uint32_t npoints, int32_t width,
+                          int32_t height);
+/* Fill a polygon that rast__fill_measure passed (npoints its count) in a
+ * non-empty clip within its span clip, with aligned scratch of at least
+ * rast__fill_scratch bytes for that clip: nothing is checked again. */
+rast_status rast__fill_checked(const rast__fill_setup *f, const rast_polygon *polygon,
+                               uint32_t npoints, const rast_rect *clip, rast__row_fn fn,
+                               void *user, void *scratch, size_t scratch_bytes);
+
+typedef rast_status (*rast__fill_any_fn)(const void *polygon, const rast_fill_opts *opts,
+                                         const rast_rect *clip, rast__row_fn fn, void *user,
+                                         void *scratch, size_t scratch_bytes);
+rast_status rast__fill_target(const rast_target *target, const void *polygon,
+                              const rast_fill_opts *opts, const void *pixel,
+                              const void *background, int opaque, rast__fill_any_fn fill,
+                              void *scratch, size_t scratch_bytes);
+rast_status rast__fill_spans(const void *polygon, const rast_fill_opts *opts,
+                             const rast_rect *clip, rast_span_fn span, void *user,
+                             rast__fill_any_fn fill, void *scratch, size_t scratch_bytes);
+
+#endif /* RAST_PAINT_H */

@@ -1,0 +1,244 @@
+/*
+ * shade_aa.c - anti-aliased Gouraud triangle batches (rastrum.h,
+ * rast_fill_triangles_shaded_aa): the batch's union coverage (the
+ * coverage spans) times a colour per pixel, band by band.
+ *
+ * For each band of rows, the colour of every pixel goes into an RGBA
+ * band in the caller's scratch in two passes of the Gouraud painter
+ * (shade.c): first each triangle over the pixels whose closed square
+ * meets one of its edges (rast__tri_touching below), the plane
+ * extrapolated and clamped, later triangles over earlier ones; then the
+ * binary shaded fill on top, so every pixel a triangle owns has exactly
+ * the binary colour.  The first pass gives a pixel the colour the
+ * definition asks for (the last triangle whose closed region meets its
+ * closed square) wherever no triangle owns it: a triangle that meets the
+ * square but none of whose edges does holds the whole square inside, so
+ * it owns the pixel's sample.  The coverage spans of the band then blend the
+ * colour into the target by the format's blend (formats.c).
+ */
+#include <string.h>
+
+#include "painters/paint.h"
+
+/* Rows of colour a band holds at the least (rast_shaded_aa_scratch_size);
+ * a bigger scratch doubles them while it holds them. */
+#define RAST__AA_SHADE_ROWS 16
+
+/* floor(a / u), ceil(a / u) for u > 0 */
+static int64_t rast__fl(int64_t a, int64_t u) { return rast__floordiv(a, u); }
+static int64_t rast__cl(int64_t a, int64_t u) { return -rast__floordiv(-a, u); }
+
+/* Widen [*lo, *hi] by the pixels whose closed column [i, i+1] holds the
+ * abscissa num / den (fixed point, den > 0) for unit u: i from
+ * ceil(X) - 1 to floor(X), X = num / (den u). */
+static void rast__touch_x(int64_t num, int64_t den, int64_t u, int64_t *lo, int64_t *hi)
+{
+    int64_t a = rast__cl(rast__cl(num, den), u) - 1, b = rast__fl(rast__fl(num, den), u);
+    if (a < *lo) *lo = a;
+    if (b > *hi) *hi = b;
+}
+
+rast_status rast__tri_touching(const rast_point *tris, uint32_t ntris, const rast_tri_opts *opts,
+                               const rast_rect *clip, rast__row_fn fn, void *user,
+                               const rast__solid *gray8, rast__tri_begin_fn begin,
+                               void *scratch, size_t scratch_bytes)
+{
+    rast__grid g;
+    uint64_t i, n = 3 * (uint64_t)ntris;
+    uint32_t k;
+    int64_t u;
+    rast_status st = rast__grid_init(&g, opts->subpixel_bits, opts->sample, opts->rounding,
+                                     opts->boundary);
+    (void)gray8;
+    (void)scratch;
+    (void)scratch_bytes;
+    if (st != RAST_OK) return st;
+    for (i = 0; i < n; i++)
+        if (tris[i].x < -RAST_COORD_MAX || tris[i].x > RAST_COORD_MAX ||
+            tris[i].y < -RAST_COORD_MAX || tris[i].y > RAST_COORD_MAX)
+            return RAST_E_RANGE;
+    if (clip->x0 >= clip->x1 || clip->y0 >= clip->y1) return RAST_OK;
+    u = (int64_t)1 << opts->subpixel_bits;
+    for (k = 0; k < ntris; k++) {
+        const rast_point *t = tris + 3 * (size_t)k;
+        int64_t ymin = t[0].y, ymax = t[0].y, j, j0, j1;
+        int m;
+        if ((int64_t)(t[1].x - t[0].x) * (t[2].y - t[0].y) ==
+            (int64_t)(t[1].y - t[0].y) * (t[2].x - t[0].x))
+            continue; /* degenerate: no area, no plane */
+        for (m = 1; m < 3; m++) {
+            if (t[m].y < ymin) ymin = t[m].y;
+            if (t[m].y > ymax) ymax = t[m].y;
+        }
+        j0 = rast__cl(ymin, u) - 1;
+        j1 = rast__fl(ymax, u);
+        if (j0 < clip->y0) j0 = clip->y0;
+        if (j1 > clip->y1 - 1) j1 = clip->y1 - 1;
+        if (j0 > j1) continue;
+        if (begin && !begin(user, t, k, &g)) continue;
+        for (j = j0; j <= j1; j++) {
+            const int64_t yt = j * u, yb = yt + u;
+            for (m = 0; m < 3; m++) {
+                const rast_point *a = &t[m], *b = &t[(m + 1) % 3];
+                int64_t lo = INT64_MAX, hi = INT64_MIN;
+                int32_t xs[2];
+                if (a->y > b->y) {
+                    const rast_point *c = a;
+                    a = b;
+                    b = c;
+                }
+                if (b->y < yt || a->y > yb) continue; /* the edge misses the strip */
+                /* its part in the strip: its ends inside, its crossings of
+                 * the strip's closed sides */
+                if (a->y >= yt) rast__touch_x(a->x, 1, u, &lo, &hi);
+                if (b->y <= yb) rast__touch_x(b->x, 1, u, &lo, &hi);
+                if (a->y < yt && yt < b->y)
+                    rast__touch_x((int64_t)a->x * (b->y - a->y) + (yt - a->y) * (b->x - a->x),
+                                  b->y - a->y, u, &lo, &hi);
+                if (a->y < yb && yb < b->y)
+                    rast__touch_x((int64_t)a->x * (b->y - a->y) + (yb - a->y) * (b->x - a->x),
+                                  b->y - a->y, u, &lo, &hi);
+                if (lo < clip->x0) lo = clip->x0;
+                if (hi > clip->x1 - 1) hi = clip->x1 - 1;
+                if (lo > hi) continue;
+                xs[0] = (int32_t)lo;
+                xs[1] = (int32_t)(hi + 1);
+                fn(user, (int32_t)j, xs, 1);
+            }
+        }
+    }
+    return RAST_OK;
+}
+
+/* The band's colours, and the target they are blended into. */
+typedef struct rast__aa_shade {
+    unsigned char *base;
+    ptrdiff_t stride;
+    const rast__format *fmt;
+    const unsigned char *rgba; /* the band's colours */
+    ptrdiff_t rgba_stride;
+    rast_rect band;
+} rast__aa_shade;
+
+static void rast__aa_shade_run(void *user, int32_t y, int32_t x0, int32_t x1, const uint8_t *cov)
+{
+    const rast__aa_shade *p = (const rast__aa_shade *)user;
+    unsigned char *row = p->base + (ptrdiff_t)y * p->stride;
+    const unsigned char *col =
+        p->rgba + (ptrdiff_t)(y - p->band.y0) * p->rgba_stride + (ptrdiff_t)(x0 - p->band.x0) * 4;
+    int32_t x, c, n = p->fmt->value;
+    if (p->fmt->bits == 8 * n && p->fmt->channels == n) {
+        /* GRAY8, RGB888, RGBA8888: a colour packs to its first n levels,
+         * each blended as the format's blend does (rast__blend8) */
+        unsigned char *o = row + (ptrdiff_t)x0 * n;
+        for (x = x0; x < x1; x++, col += 4, o += n)
+            for (c = 0; c < n; c++) o[c] = (unsigned char)rast__blend8(col[c], o[c], cov[x - x0]);
+        return;
+    }
+    for (x = x0; x < x1; x++, col += 4) {
+        unsigned char v[4] = {0, 0, 0, 0};
+        p->fmt->pack(col, v);
+        p->fmt->blend(row, x, x + 1, cov + (x - x0), v);
+    }
+}
+
+/* Bytes of the coverage part (aligned) and the whole, for a band of
+ * `rows` rows of `width` pixels. */
+static rast_status rast__aa_shade_need(const rast_coverage_opts *opts, uint32_t ntris,
+                                       int32_t width, int32_t rows, size_t *cov, size_t *all)
+{
+    rast_status st;
+    if (ntris > RAST_MAX_POINTS / 3) return RAST_E_TOO_MANY;
+    st = rast_coverage_scratch_size(opts, 3 * ntris, width, rows, cov);
+    if (st != RAST_OK) return st;
+    *cov = rast__align(*cov);
+    *all = rast__size_add(*cov, rast__size_mul(rast__size_mul((size_t)width, 4), (size_t)rows));
+    return RAST_OK;
+}
+
+rast_status rast_shaded_aa_scratch_size(const rast_coverage_opts *opts, uint32_t ntris,
+                                        int32_t width, int32_t height, size_t *bytes)
+{
+    size_t cov;
+    if (!bytes) return RAST_E_NULL;
+    if (width < 0 || height < 0 || width > RAST_MAX_DIM || height > RAST_MAX_DIM)
+        return RAST_E_SIZE;
+    return rast__aa_shade_need(opts, ntris, width,
+                               height < RAST__AA_SHADE_ROWS ? height : RAST__AA_SHADE_ROWS, &cov,
+                               bytes);
+}
+
+rast_status rast_fill_triangles_shaded_aa(const rast_target *target, const rast_point *tris,
+                                          uint32_t ntris, const uint8_t *colors,
+                                          const rast_coverage_opts *opts,
+                                          const rast_shade_opts *shade, void *scratch,
+                                          size_t scratch_bytes)
+{
+    rast__aa_shade p;
+    rast_rect clip;
+    rast_tri_opts exact, touch;
+    size_t cov_bytes, need;
+    int32_t width, height, rows, y;
+    rast_status st;
+
+    if (!target || !opts || !shade || (ntris > 0 && (!tris || !colors))) return RAST_E_NULL;
+    st = rast__target_check(target, &clip);
+    if (st != RAST_OK) return st;
+    if (shade->precision != RAST_PRECISION_EXACT && shade->precision != RAST_PRECISION_FLAT)
+        return RAST_E_ARG;
+    p.fmt = &rast__formats[target->format];
+    if (!p.fmt->pack) return RAST_E_FORMAT;
+    width = clip.x1 - clip.x0;
+    height = clip.y1 - clip.y0;
+    rows = height < RAST__AA_SHADE_ROWS ? height : RAST__AA_SHADE_ROWS;
+    st = rast__aa_shade_need(opts, ntris, width, rows, &cov_bytes, &need);
+    if (st != RAST_OK) return st;
+    st = rast__scratch_check(scratch, scratch_bytes, need);
+    if (st != RAST_OK) return st;
+    while (rows < height) { /* as many rows as the scratch holds: fewer bands */
+        int32_t more = rows > height / 2 ? height : 2 * rows;
+        size_t c2, n2;
+        if (rast__aa_shade_need(opts, ntris, width, more, &c2, &n2) != RAST_OK ||
+            n2 > scratch_bytes)
+            break;
+        rows = more;
+        cov_bytes = c2;
+    }
+    if (clip.y0 >= clip.y1 || width == 0) /* nothing to paint: the checks only */
+        return rast_triangles_coverage_spans(tris, ntris, opts, &clip, rast__aa_shade_run, &p,
+                                             scratch, cov_bytes);
+
+    memset(&exact, 0, sizeof exact);
+    exact.algorithm = RAST_TRI_EDGE;
+    exact.subpixel_bits = opts->subpixel_bits;
+    exact.sample = opts->sample;
+    exact.rounding = RAST_ROUND_EXACT;
+    exact.boundary = RAST_BOUNDARY_EXACT;
+    touch = exact;
+    touch.boundary = RAST_BOUNDARY_CONSERVATIVE; /* not the packed painter: it clamps */
+
+    p.base = (unsigned char *)target->pixels;
+    p.stride = target->stride;
+    p.rgba = (unsigned char *)scratch + cov_bytes;
+    p.rgba_stride = (ptrdiff_t)width * 4;
+    /* Band by band; every check is made by the first band's calls, before
+     * its coverage call writes (the later bands repeat them on the same
+     * input and pass). */
+    for (y = clip.y0; y < clip.y1; y += rows) {
+        unsigned char *rgba = (unsigned char *)scratch + cov_bytes;
+        p.band = clip;
+        p.band.y0 = y;
+        if (clip.y1 - y > rows) p.band.y1 = y + rows;
+        memset(rgba, 0, (size_t)width * 4 * (size_t)(p.band.y1 - p.band.y0));
+        st = rast__shade_band(rgba, p.rgba_stride, &p.band, tris, ntris, colors, &touch, shade,
+                              rast__tri_touching, NULL, 0);
+        if (st != RAST_OK) return st;
+        st = rast__shade_band(rgba, p.rgba_stride, &p.band, tris, ntris, colors, &exact, shade,
+                              rast__tri_fill, NULL, 0);
+        if (st != RAST_OK) return st;
+        st = rast_triangles_coverage_spans(tris, ntris, opts, &p.band, rast__aa_shade_run, &p,
+                                           scratch, cov_bytes);
+        if (st != RAST_OK) return st;
+    }
+    return RAST_OK;
+}

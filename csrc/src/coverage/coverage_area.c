@@ -742,7 +742,7 @@ static void rast__cov_row_area(rast__cells *c, rast__cedge *e, int32_t *row, int
  * or nearly): then the row is added again the exact way above, and only
  * then.  So a row's levels are floor(a M + 1/2) where the quick values
  * decide them, the exact sweep's elsewhere: the bound holds unchanged.
- * (FIX62 output, 4096 parts or more in a row, or (n + 1) M >= 2^25: the
+ * (FIX62 output, 512 parts or more in a row, or (n + 1) M >= 2^25: the
  * exact way only.) */
 #define QF 30
 #define QT ((uint64_t)1 << QF)
@@ -1056,10 +1056,11 @@ static int rast__q_emit(rast__cells *c, int32_t y, int32_t nrow)
     return 1;
 }
 
-/* May a row of nrow parts be added the quick way? */
+/* May a row of nrow parts be added the quick way?  (The bound needs
+ * (n + 1) M < 2^25; past 511 parts a row would too often be added twice.) */
 static int rast__q_may(const rast__cells *c, int32_t nrow)
 {
-    return c->quick && nrow < 4096 && ((uint64_t)nrow + 1) * c->quick < ((uint64_t)1 << 25);
+    return c->quick && nrow < 512 && ((uint64_t)nrow + 1) * c->quick < ((uint64_t)1 << 25);
 }
 
 /* ---- the fast row --------------------------------------------------------

@@ -949,7 +949,7 @@ static void rast__q_piece(rast__cells *c, rast__cedge *e, int64_t Yj, int64_t xa
 
 /* The level of v (a 2^51, the rule applied when accumulating); *amb set
  * when a tie is within win / 2^51 of it (see above). */
-static inline uint64_t rast__q_level(const rast__cells *c, int64_t v, uint64_t win, int *amb)
+static inline uint64_t rast__q_level(const rast__cells *c, int64_t v, uint64_t win, uint64_t *amb)
 {
     const uint64_t fm = (uint64_t)QONE - 1;
     uint64_t x, fr, lev;
@@ -980,38 +980,50 @@ static inline uint64_t rast__q_level(const rast__cells *c, int64_t v, uint64_t w
     return lev;
 }
 
-/* The quick cells of a fast row into a uint8 row (the common case, without
- * branches): a fast row's values lie in [-E, 1 + E] (E M 2^51 <= win / 2 <
- * 2^49), where v 255 + 2^50 needs no clamp to give the levels 0 .. 255.
- * Returns 1 when a level is not certain. */
-static int rast__q_row_u8(rast__cells *c, unsigned char *row, uint64_t win)
+/* The level of a fast row's value v in uint8, without branches: such
+ * values lie in [-E, 1 + E] (E M 2^51 <= win / 2 < 2^49), where v 255 +
+ * 2^50 needs no clamp to give the levels 0 .. 255; *bad set as
+ * rast__q_level sets *amb. */
+static inline uint64_t rast__q_u8(uint64_t v, uint64_t win, uint64_t *bad)
 {
-    const uint64_t fm = (uint64_t)QONE - 1, lim = (uint64_t)QONE - 2 * win, half = (uint64_t)1 << 50;
-    uint64_t acc = c->qcarry, bad = 0, x;
-    int32_t k = 0, wi, w = c->x1 - c->x0;
+    const uint64_t x = v * 255 + ((uint64_t)1 << 50);
+    *bad |= (uint64_t)((x & ((uint64_t)QONE - 1)) - win > (uint64_t)QONE - 2 * win);
+    return x >> 51;
+}
+
+/* Columns [k0, k1) of the row get the level of v; u8: rast__q_u8's. */
+static inline void rast__q_run(const rast__cells *c, unsigned char *row, int32_t k0, int32_t k1,
+                               uint64_t v, uint64_t win, const int u8, uint64_t *bad)
+{
+    if (k0 >= k1) return;
+    if (!u8)
+        rast__cov_fill(c->o->format, row, k0, k1, rast__q_level(c, (int64_t)v, win, bad));
+    else if (k1 == k0 + 1)
+        row[k0] = (unsigned char)rast__q_u8(v, win, bad);
+    else
+        memset(row + k0, (int)rast__q_u8(v, win, bad), (size_t)(k1 - k0));
+}
+
+/* The quick cells into row y's values, then cleared; u8 (a constant at
+ * each call, so that the compiler makes two loops of this one): a fast
+ * row into uint8, by rast__q_u8.  Returns 1 when a level is not certain. */
+static inline int rast__q_scan(rast__cells *c, unsigned char *row, uint64_t win, const int u8)
+{
+    uint64_t acc = c->qcarry, bad = 0;
+    int32_t k = 0, wi;
     for (wi = c->wmin; wi <= c->wmax; wi++) {
         uint64_t b = c->bits[wi];
         c->bits[wi] = 0;
-        while (b) {
+        for (; b; b &= b - 1) {
             int32_t col = (wi << 6) + (int32_t)rast__ctz64(b);
-            rast__i128 *cell = &c->cover[col];
-            b &= b - 1;
-            if (col > k) { /* a run: the running cover's value */
-                x = (acc << 21) * 255 + half;
-                bad |= (uint64_t)((x & fm) - win > lim);
-                memset(row + k, (int)(x >> 51), (size_t)(col - k));
-            }
-            acc += cell->lo;
-            x = ((acc << 21) - cell->hi) * 255 + half;
-            bad |= (uint64_t)((x & fm) - win > lim);
-            row[col] = (unsigned char)(x >> 51);
-            cell->lo = cell->hi = 0;
+            rast__q_run(c, row, k, col, acc << 21, win, u8, &bad); /* the run before it */
+            acc += c->cover[col].lo;
+            rast__q_run(c, row, col, col + 1, (acc << 21) - c->cover[col].hi, win, u8, &bad);
+            c->cover[col].lo = c->cover[col].hi = 0;
             k = col + 1;
         }
     }
-    x = (acc << 21) * 255 + half;
-    bad |= (uint64_t)((x & fm) - win > lim);
-    if (k < w) memset(row + k, (int)(x >> 51), (size_t)(w - k));
+    rast__q_run(c, row, k, c->x1 - c->x0, acc << 21, win, u8, &bad);
     return bad != 0;
 }
 
@@ -1021,32 +1033,10 @@ static int rast__q_row_u8(rast__cells *c, unsigned char *row, uint64_t win)
 static int rast__q_emit(rast__cells *c, int32_t y, int32_t nrow)
 {
     const rast__cov_out *o = c->o;
-    const rast_coverage_format f = o->format;
     unsigned char *row = rast__cov_row(o, y);
-    uint64_t acc = c->qcarry, win = ((uint64_t)nrow + 1) * c->quick << 24;
-    int32_t k = 0, wi, w = c->x1 - c->x0;
-    int amb = 0;
-    if (f == RAST_COVERAGE_U8 && !c->accumulate) {
-        amb = rast__q_row_u8(c, row, win);
-    } else {
-        for (wi = c->wmin; wi <= c->wmax; wi++) {
-            uint64_t b = c->bits[wi];
-            c->bits[wi] = 0;
-            while (b) {
-                int32_t col = (wi << 6) + (int32_t)rast__ctz64(b);
-                rast__i128 *cell = &c->cover[col];
-                b &= b - 1;
-                if (col > k)
-                    rast__cov_fill(f, row, k, col, rast__q_level(c, (int64_t)(acc << 21), win, &amb));
-                acc += cell->lo;
-                rast__cov_store(f, row, col,
-                                rast__q_level(c, (int64_t)((acc << 21) - cell->hi), win, &amb));
-                cell->lo = cell->hi = 0;
-                k = col + 1;
-            }
-        }
-        if (k < w) rast__cov_fill(f, row, k, w, rast__q_level(c, (int64_t)(acc << 21), win, &amb));
-    }
+    uint64_t win = ((uint64_t)nrow + 1) * c->quick << 24;
+    int amb = o->format == RAST_COVERAGE_U8 && !c->accumulate ? rast__q_scan(c, row, win, 1)
+                                                              : rast__q_scan(c, row, win, 0);
     c->qcarry = 0;
     c->wmin = INT32_MAX;
     c->wmax = -1;

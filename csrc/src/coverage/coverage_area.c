@@ -995,13 +995,15 @@ static inline uint64_t rast__q_u8(uint64_t v, uint64_t win, uint64_t *bad)
 static inline void rast__q_run(const rast__cells *c, unsigned char *row, int32_t k0, int32_t k1,
                                uint64_t v, uint64_t win, const int u8, uint64_t *bad)
 {
+    uint64_t lev;
     if (k0 >= k1) return;
-    if (!u8)
-        rast__cov_fill(c->o->format, row, k0, k1, rast__q_level(c, (int64_t)v, win, bad));
-    else if (k1 == k0 + 1)
-        row[k0] = (unsigned char)rast__q_u8(v, win, bad);
+    lev = u8 ? rast__q_u8(v, win, bad) : rast__q_level(c, (int64_t)v, win, bad);
+    if (k1 > k0 + 1)
+        rast__cov_fill(u8 ? RAST_COVERAGE_U8 : c->o->format, row, k0, k1, lev);
+    else if (u8)
+        row[k0] = (unsigned char)lev;
     else
-        memset(row + k0, (int)rast__q_u8(v, win, bad), (size_t)(k1 - k0));
+        rast__cov_store(c->o->format, row, k0, lev);
 }
 
 /* The quick cells into row y's values, then cleared; u8 (a constant at

@@ -348,13 +348,28 @@ static void rast__cov_x_row(const rast__cedge *e, rast__i128 *x, int64_t *r)
 }
 
 /* The per-row and per-column steps of e (see rast__cedge). */
+/* floor(n 2^60 / d) into *q, the remainder into *rem, for 0 <= n, 0 < d,
+ * both < 2^28: two 64-bit divisions (n 2^30 < 2^58, and the first
+ * remainder times 2^30 < 2^58); *q30, *rem30: floor(n 2^30 / d) and its
+ * remainder on the way. */
+static void rast__cov_step60(uint64_t n, uint64_t d, rast__i128 *q, uint64_t *rem, uint64_t *q30,
+                             uint64_t *rem30)
+{
+    const uint64_t a = n << 30, r = (a % d) << 30;
+    *q30 = a / d;
+    *rem30 = a % d;
+    *q = rast__i128_add(rast__i128_shl(rast__i128_u64(*q30), 30), rast__i128_u64(r / d));
+    *rem = r % d;
+}
+
 static void rast__cov_steps(rast__cedge *e)
 {
-    uint32_t adx = (uint32_t)(e->dx < 0 ? -e->dx : e->dx), rem;
-    rast__i128 q = rast__u128_div32(rast__u128_mul32(rast__i128_u64(T), adx), (uint32_t)e->dy, &rem);
+    uint64_t adx = (uint64_t)(e->dx < 0 ? -(int64_t)e->dx : e->dx), rem, q30, r30;
+    rast__i128 q;
+    rast__cov_step60(adx, (uint64_t)e->dy, &q, &rem, &q30, &r30);
     if (e->dx >= 0) {
         e->xs = q;
-        e->xsr = rem;
+        e->xsr = (int64_t)rem;
     } else if (rem) {
         e->xs = rast__i128_neg(rast__i128_add(q, rast__i128_u64(1)));
         e->xsr = e->dy - (int64_t)rem;
@@ -364,16 +379,13 @@ static void rast__cov_steps(rast__cedge *e)
     }
     e->ts = rast__i128_u64(0);
     e->tsr = 0;
-    if (adx) {
-        e->ts = rast__u128_div32(rast__u128_mul32(rast__i128_u64(T), (uint32_t)e->dy), adx, &rem);
-        e->tsr = rem;
-    }
     e->qts = 0;
     e->qtsr = 0;
-    if (adx) { /* dy 2^30 / |dx| < 2^58 */
-        uint64_t a = (uint64_t)e->dy << 30;
-        e->qts = (int64_t)(a / adx);
-        e->qtsr = (uint32_t)(a % adx);
+    if (adx) { /* the column steps: dy 2^60 / |dx|, and dy 2^30 / |dx| for the quick way */
+        rast__cov_step60((uint64_t)e->dy, adx, &e->ts, &rem, &q30, &r30);
+        e->tsr = (uint32_t)rem;
+        e->qts = (int64_t)q30;
+        e->qtsr = (uint32_t)r30;
     }
     e->qX = INT64_MIN;
     e->rowx = INT32_MIN;

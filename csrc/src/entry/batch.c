@@ -140,6 +140,7 @@ static rast_status rast__batch_fill(rast__polys *ps, uint32_t n, const rast_fill
                                     void *scratch, size_t scratch_bytes, uint32_t *failed)
 {
     rast__batch ctx;
+    rast__painter painter;
     rast_rect c, b;
     size_t most, need;
     uint32_t k, npoints;
@@ -162,6 +163,9 @@ static rast_status rast__batch_fill(rast__polys *ps, uint32_t n, const rast_fill
 
     ctx.span = span;
     ctx.user = user;
+    memset(&painter, 0, sizeof painter);
+    painter.full = rast__batch_row;
+    painter.user = &ctx;
     for (k = 0; k < n; k++) {
         ctx.index = k;
         /* checked above: the bounds again, the polygon drawn in them */
@@ -174,8 +178,7 @@ static rast_status rast__batch_fill(rast__polys *ps, uint32_t n, const rast_fill
             const rast_polygon *p = (const rast_polygon *)ps->p + k;
             rast__fill_measure(&ps->f, p, &c, &npoints, &b);
             if (b.x0 == b.x1 || b.y0 == b.y1) continue;
-            st = rast__fill_checked(&ps->f, p, npoints, &b, rast__batch_row, &ctx, scratch,
-                                    scratch_bytes);
+            st = rast__fill_checked(&ps->f, p, npoints, &b, &painter, scratch, scratch_bytes);
         }
         if (st != RAST_OK) return st; /* not reached: everything was checked */
     }

@@ -64,13 +64,13 @@ void rast__cov_row_done(const rast__cov_out *o, int32_t y)
 {
     const unsigned char *row = o->base;
     int32_t k = 0, w = o->clip.x1 - o->clip.x0;
-    if (!o->span) return;
+    if (!o->paint) return;
     while (k < w) {
         int32_t k0;
         while (k < w && !row[k]) k++;
         k0 = k;
         while (k < w && row[k]) k++;
-        if (k > k0) o->span(o->user, y, o->clip.x0 + k0, o->clip.x0 + k, row + k0);
+        if (k > k0) o->paint->levels(o->paint->user, y, o->clip.x0 + k0, o->clip.x0 + k, row + k0);
     }
 }
 
@@ -78,7 +78,7 @@ void rast__cov_zero_rows(const rast__cov_out *o, int32_t y0, int32_t y1)
 {
     static const int32_t size[3] = {1, 2, 8};
     int32_t y;
-    if (o->span) return; /* nothing to hand on */
+    if (o->paint) return; /* nothing to hand on */
     for (y = y0; y < y1; y++)
         memset(rast__cov_row(o, y), 0,
                (size_t)(o->clip.x1 - o->clip.x0) * (size_t)size[o->format]);
@@ -134,8 +134,7 @@ static rast_status rast__cov_begin(const rast_coverage_opts *opts, const rast_re
     o->base = (unsigned char *)out;
     o->stride = stride;
     o->format = format;
-    o->span = NULL;
-    o->user = NULL;
+    o->paint = NULL;
     return RAST_OK;
 }
 
@@ -262,29 +261,29 @@ static rast_status rast__cov_count(const rast_polygon *polygon, uint32_t *npoint
 
 /* What every entry point does once its geometry is counted: options,
  * output and scratch checked (rast__cov_begin), the vertices checked,
- * then the method run.  `span` not NULL: the values go to it, row by row,
- * through a row buffer at the scratch's start (rast__cov_run skips it). */
+ * then the method run.  `paint` not NULL: the levels go to it, row by
+ * row, through a row buffer at the scratch's start (rast__cov_run skips
+ * it). */
 static rast_status rast__cov_entry(const rast_polygon *poly, const rast_point *tris,
                                    uint32_t ntris, uint32_t n, const rast_coverage_opts *opts,
                                    const rast_rect *clip, rast_coverage_format format, void *out,
-                                   ptrdiff_t stride, rast_coverage_span_fn span, void *user,
-                                   void *scratch, size_t scratch_bytes)
+                                   ptrdiff_t stride, const rast__painter *paint, void *scratch,
+                                   size_t scratch_bytes)
 {
     static const rast_point none[3] = {{0, 0}, {0, 0}, {0, 0}};
     rast__cov_out o;
     int32_t kb;
-    rast_status st = rast__cov_begin(opts, clip, span ? RAST_COVERAGE_U8 : format, out, stride, n,
-                                     scratch, scratch_bytes, &o, span != NULL);
+    rast_status st = rast__cov_begin(opts, clip, paint ? RAST_COVERAGE_U8 : format, out, stride, n,
+                                     scratch, scratch_bytes, &o, paint != NULL);
     if (st != RAST_OK) return st;
     kb = rast__aa_kbits(opts->method);
     st = rast__cov_check_points(poly ? poly->points : tris, n,
                                 kb > opts->subpixel_bits ? kb - opts->subpixel_bits : 0);
     if (st != RAST_OK) return st;
-    if (span) {
+    if (paint) {
         o.base = (unsigned char *)scratch;
         o.stride = 0;
-        o.span = span;
-        o.user = user;
+        o.paint = paint;
     }
     if (!poly && !ntris) tris = none;
     return rast__cov_run(poly, tris, ntris, n, opts, &o, scratch, scratch_bytes);
@@ -299,8 +298,8 @@ rast_status rast_polygon_coverage(const rast_polygon *polygon, const rast_covera
     if (!polygon) return RAST_E_NULL;
     st = rast__cov_count(polygon, &n);
     if (st != RAST_OK) return st;
-    return rast__cov_entry(polygon, NULL, 0, n, opts, clip, format, out, stride, NULL, NULL,
-                           scratch, scratch_bytes);
+    return rast__cov_entry(polygon, NULL, 0, n, opts, clip, format, out, stride, NULL, scratch,
+                           scratch_bytes);
 }
 
 rast_status rast_triangles_coverage(const rast_point *tris, uint32_t ntris,
@@ -311,7 +310,25 @@ rast_status rast_triangles_coverage(const rast_point *tris, uint32_t ntris,
     if (ntris > RAST_MAX_POINTS / 3) return RAST_E_TOO_MANY;
     if (ntris > 0 && !tris) return RAST_E_NULL;
     return rast__cov_entry(NULL, tris, ntris, 3 * ntris, opts, clip, format, out, stride, NULL,
-                           NULL, scratch, scratch_bytes);
+                           scratch, scratch_bytes);
+}
+
+rast_status rast__cov_paint(const rast_polygon *poly, const rast_point *tris, uint32_t ntris,
+                            const rast_coverage_opts *opts, const rast_rect *clip,
+                            const rast__painter *p, void *scratch, size_t scratch_bytes)
+{
+    uint32_t n = 0;
+    rast_status st;
+    if (poly) {
+        st = rast__cov_count(poly, &n);
+        if (st != RAST_OK) return st;
+    } else {
+        if (ntris > RAST_MAX_POINTS / 3) return RAST_E_TOO_MANY;
+        if (ntris > 0 && !tris) return RAST_E_NULL;
+        n = 3 * ntris;
+    }
+    return rast__cov_entry(poly, tris, ntris, n, opts, clip, RAST_COVERAGE_U8, NULL, 0, p, scratch,
+                           scratch_bytes);
 }
 
 rast_status rast_polygon_coverage_spans(const rast_polygon *polygon,
@@ -319,13 +336,11 @@ rast_status rast_polygon_coverage_spans(const rast_polygon *polygon,
                                         rast_coverage_span_fn span, void *user, void *scratch,
                                         size_t scratch_bytes)
 {
-    rast_status st;
-    uint32_t n = 0;
+    rast__user_spans u;
+    rast__painter p;
     if (!polygon || !span || !clip) return RAST_E_NULL;
-    st = rast__cov_count(polygon, &n);
-    if (st != RAST_OK) return st;
-    return rast__cov_entry(polygon, NULL, 0, n, opts, clip, RAST_COVERAGE_U8, NULL, 0, span, user,
-                           scratch, scratch_bytes);
+    rast__user_cov_painter(&u, span, user, &p);
+    return rast__cov_paint(polygon, NULL, 0, opts, clip, &p, scratch, scratch_bytes);
 }
 
 rast_status rast_triangles_coverage_spans(const rast_point *tris, uint32_t ntris,
@@ -333,9 +348,9 @@ rast_status rast_triangles_coverage_spans(const rast_point *tris, uint32_t ntris
                                           rast_coverage_span_fn span, void *user, void *scratch,
                                           size_t scratch_bytes)
 {
+    rast__user_spans u;
+    rast__painter p;
     if (!span || !clip) return RAST_E_NULL;
-    if (ntris > RAST_MAX_POINTS / 3) return RAST_E_TOO_MANY;
-    if (ntris > 0 && !tris) return RAST_E_NULL;
-    return rast__cov_entry(NULL, tris, ntris, 3 * ntris, opts, clip, RAST_COVERAGE_U8, NULL, 0,
-                           span, user, scratch, scratch_bytes);
+    rast__user_cov_painter(&u, span, user, &p);
+    return rast__cov_paint(NULL, tris, ntris, opts, clip, &p, scratch, scratch_bytes);
 }

@@ -224,7 +224,7 @@ static rast_status rast__aet64_fill(const rast_polygon64 *poly, uint32_t npoints
 
 /* Check the polygon, options and scratch for a clip; run the filler. */
 static rast_status rast__fill64(const void *polygon, const rast_fill_opts *opts,
-                                const rast_rect *clip, rast__row_fn fn, void *user,
+                                const rast_rect *clip, const rast__painter *p,
                                 void *scratch, size_t scratch_bytes)
 {
     const rast_polygon64 *poly = (const rast_polygon64 *)polygon;
@@ -243,7 +243,7 @@ static rast_status rast__fill64(const void *polygon, const rast_fill_opts *opts,
     if (st != RAST_OK) return st;
     if (clip->x0 >= clip->x1 || clip->y0 >= clip->y1) return RAST_OK;
 
-    rast__sink_init(&sink, fn, user, clip);
+    rast__sink_init(&sink, p, clip);
     arena.p = (unsigned char *)scratch;
     arena.left = scratch_bytes;
     if (opts->boundary == RAST_BOUNDARY_EXACT) {

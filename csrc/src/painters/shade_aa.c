@@ -39,9 +39,8 @@ static void rast__touch_x(int64_t num, int64_t den, int64_t u, int64_t *lo, int6
 }
 
 rast_status rast__tri_touching(const rast_point *tris, uint32_t ntris, const rast_tri_opts *opts,
-                               const rast_rect *clip, rast__row_fn fn, void *user,
-                               const rast__solid *gray8, rast__tri_begin_fn begin,
-                               void *scratch, size_t scratch_bytes)
+                               const rast_rect *clip, const rast__painter *p,
+                               rast__tri_begin_fn begin, void *scratch, size_t scratch_bytes)
 {
     rast__grid g;
     uint64_t i, n = 3 * (uint64_t)ntris;
@@ -49,7 +48,6 @@ rast_status rast__tri_touching(const rast_point *tris, uint32_t ntris, const ras
     int64_t u;
     rast_status st = rast__grid_init(&g, opts->subpixel_bits, opts->sample, opts->rounding,
                                      opts->boundary);
-    (void)gray8;
     (void)scratch;
     (void)scratch_bytes;
     if (st != RAST_OK) return st;
@@ -75,7 +73,7 @@ rast_status rast__tri_touching(const rast_point *tris, uint32_t ntris, const ras
         if (j0 < clip->y0) j0 = clip->y0;
         if (j1 > clip->y1 - 1) j1 = clip->y1 - 1;
         if (j0 > j1) continue;
-        if (begin && !begin(user, t, k, &g)) continue;
+        if (begin && !begin(p->user, t, k, &g)) continue;
         for (j = j0; j <= j1; j++) {
             const int64_t yt = j * u, yb = yt + u;
             for (m = 0; m < 3; m++) {
@@ -103,7 +101,7 @@ rast_status rast__tri_touching(const rast_point *tris, uint32_t ntris, const ras
                 if (lo > hi) continue;
                 xs[0] = (int32_t)lo;
                 xs[1] = (int32_t)(hi + 1);
-                fn(user, (int32_t)j, xs, 1);
+                p->full(p->user, (int32_t)j, xs, 1);
             }
         }
     }
@@ -175,6 +173,7 @@ rast_status rast_fill_triangles_shaded_aa(const rast_target *target, const rast_
                                           size_t scratch_bytes)
 {
     rast__aa_shade p;
+    rast__painter paint;
     rast_rect clip;
     rast_tri_opts exact, touch;
     size_t cov_bytes, need;
@@ -204,9 +203,12 @@ rast_status rast_fill_triangles_shaded_aa(const rast_target *target, const rast_
         rows = more;
         cov_bytes = c2;
     }
+    /* The painter of the band's colours times the coverage: levels runs. */
+    memset(&paint, 0, sizeof paint);
+    paint.levels = rast__aa_shade_run;
+    paint.user = &p;
     if (clip.y0 >= clip.y1 || width == 0) /* nothing to paint: the checks only */
-        return rast_triangles_coverage_spans(tris, ntris, opts, &clip, rast__aa_shade_run, &p,
-                                             scratch, cov_bytes);
+        return rast__cov_paint(NULL, tris, ntris, opts, &clip, &paint, scratch, cov_bytes);
 
     memset(&exact, 0, sizeof exact);
     exact.algorithm = RAST_TRI_EDGE;
@@ -236,8 +238,7 @@ rast_status rast_fill_triangles_shaded_aa(const rast_target *target, const rast_
         st = rast__shade_band(rgba, p.rgba_stride, &p.band, tris, ntris, colors, &exact, shade,
                               rast__tri_fill, NULL, 0);
         if (st != RAST_OK) return st;
-        st = rast_triangles_coverage_spans(tris, ntris, opts, &p.band, rast__aa_shade_run, &p,
-                                           scratch, cov_bytes);
+        st = rast__cov_paint(NULL, tris, ntris, opts, &p.band, &paint, scratch, cov_bytes);
         if (st != RAST_OK) return st;
     }
     return RAST_OK;

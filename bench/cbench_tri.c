@@ -10,7 +10,13 @@
  *               painter);
  *   which 5:    the same batch to a span callback;
  *   which 6:    100 random 20..60-gons into the GRAY8 target
- *               (rast_fill_polygon, AET).
+ *               (rast_fill_polygon, AET);
+ *   which 7, 8: those polygons with a colour per vertex
+ *               (rast_fill_polygon_gouraud, 7 exact, 8 flat) into an
+ *               RGB888 target;
+ *   which 9, 10: 400 random rectangles (up to 120 px) shaded bilinearly
+ *               (rast_fill_rect_gouraud, 9 exact, 10 fixed, F = 12) into
+ *               an RGB888 target.
  *   cc -O2 -std=c11 -Icsrc/include bench/cbench_tri.c build/librastrum.a -o cbench_tri
  *   valgrind --tool=callgrind ./cbench_tri WHICH */
 #include <stdio.h>
@@ -79,8 +85,8 @@ int main(int argc, char **argv)
     memset(&o, 0, sizeof o);
     o.subpixel_bits = 8;
     o.algorithm = which <= 2 ? (rast_tri_algorithm)which : RAST_TRI_EDGE;
-    rast_target_init(&t, img, 512, 512, which == 4 ? 512 * 3 : 512,
-                     which == 4 ? RAST_FORMAT_RGB888 : RAST_FORMAT_GRAY8);
+    rast_target_init(&t, img, 512, 512, which == 4 || which >= 7 ? 512 * 3 : 512,
+                     which == 4 || which >= 7 ? RAST_FORMAT_RGB888 : RAST_FORMAT_GRAY8);
     if (which == 3) {
         t.clip.x0 = 3;
         t.clip.x1 = 509;
@@ -92,20 +98,41 @@ int main(int argc, char **argv)
     } else if (which == 5) {
         rast_rect clip = {0, 0, 512, 512};
         st = rast_fill_triangles_spans(tris, NT, &o, &clip, span, NULL, scratch, sizeof scratch);
+    } else if (which >= 9) {
+        rast_shade_opts so;
+        uint8_t col[16];
+        uint32_t k;
+        memset(&so, 0, sizeof so);
+        so.precision = which == 9 ? RAST_PRECISION_EXACT : RAST_PRECISION_FIXED;
+        so.fraction_bits = 12;
+        for (k = 0; k < 400 && st == RAST_OK; k++) {
+            rast_point p0 = at(rnd(400 * 256), rnd(400 * 256));
+            rast_point p1 = at(p0.x + rnd(120 * 256), p0.y + rnd(120 * 256));
+            for (i = 0; i < 16; i++) col[i] = (uint8_t)rnd(256);
+            st = rast_fill_rect_gouraud(&t, p0, p1, col, &o, &so);
+        }
     } else {
         rast_fill_opts fo;
+        rast_shade_opts so;
+        static uint8_t col[4 * 60];
         static rast_point pts[60];
         uint32_t k;
         memset(&fo, 0, sizeof fo);
         fo.subpixel_bits = 8;
+        memset(&so, 0, sizeof so);
+        so.precision = which == 8 ? RAST_PRECISION_FLAT : RAST_PRECISION_EXACT;
         for (k = 0; k < 100 && st == RAST_OK; k++) {
             uint32_t m = 20 + (uint32_t)rnd(41);
             rast_polygon p;
             for (i = 0; i < m; i++) pts[i] = at(rnd(512 * 256), rnd(512 * 256));
+            for (i = 0; i < 4 * m; i++) col[i] = (uint8_t)rnd(256);
             p.points = pts;
             p.ring_sizes = &m;
             p.nrings = 1;
-            st = rast_fill_polygon(&t, &p, &fo, v, scratch, sizeof scratch);
+            if (which == 6)
+                st = rast_fill_polygon(&t, &p, &fo, v, scratch, sizeof scratch);
+            else
+                st = rast_fill_polygon_gouraud(&t, &p, col, &fo, &so, scratch, sizeof scratch);
         }
     }
     for (i = 0; i < sizeof img; i++) sum += img[i] * (i % 251);

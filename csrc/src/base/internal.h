@@ -602,6 +602,13 @@ int rast__tri_span_flags(const rast_point *t, const rast__grid *g,
                          int32_t row_lo, int32_t row_hi, int32_t *span_left,
                          int32_t *span_right, int32_t *r0, int32_t *r1);
 
+/* The rectangle filler (rect.c): the pixels of the rectangle
+ * [x0, x0 + w) x [y0, y0 + h) (internal units, w, h > 0, every corner
+ * within the input range), those of its polygon fill, cut to `clip`
+ * (maybe empty), row by row from the top, a full run per row to painter p. */
+void rast__rect_fill(int64_t x0, int64_t y0, int64_t w, int64_t h, const rast__grid *g,
+                     const rast_rect *clip, const rast__painter *p);
+
 /* The AET filler (aet.c). */
 rast_status rast__aet_fill(const rast_polygon *poly, uint32_t npoints,
                            const rast__grid *g, rast_fill_rule rule,

@@ -169,6 +169,19 @@ rast_status rast__fill_checked(const rast__fill_setup *f, const rast_polygon *po
                                uint32_t npoints, const rast_rect *clip, const rast__painter *p,
                                void *scratch, size_t scratch_bytes);
 
+/* The same for 64-bit polygons (poly64.c): the options checked once into
+ * the grid; a polygon checked and measured (rast_fill_bounds64 with checked
+ * options); its scratch; and its fill, nothing checked again. */
+rast_status rast__fill64_prepare(const rast_fill_opts *opts, rast__grid64 *g);
+rast_status rast__fill64_measure(const rast_fill_opts *opts, const rast__grid64 *g,
+                                 const rast_polygon64 *polygon, const rast_rect *clip,
+                                 uint32_t *npoints, rast_rect *bounds);
+size_t rast__fill64_scratch(const rast_fill_opts *opts, uint32_t npoints, int32_t height);
+rast_status rast__fill64_checked(const rast_polygon64 *poly, uint32_t npoints,
+                                 const rast_fill_opts *opts, const rast__grid64 *g,
+                                 const rast_rect *clip, const rast__painter *p, void *scratch,
+                                 size_t scratch_bytes);
+
 typedef rast_status (*rast__fill_any_fn)(const void *polygon, const rast_fill_opts *opts,
                                          const rast_rect *clip, const rast__painter *p,
                                          void *scratch, size_t scratch_bytes);

@@ -100,11 +100,12 @@ static rast_status rast__cov_check_points(const rast_point *p, uint32_t n, int32
 }
 
 /* Everything but the geometry: options, output, clip, and (given the
- * vertex count) the scratch.  *o is set up for the cut clip. */
+ * vertex count) the scratch, for the clip's rows or, when fewer, `rows`
+ * rows (a band of it).  *o is set up for the cut clip. */
 static rast_status rast__cov_begin(const rast_coverage_opts *opts, const rast_rect *clip,
                                    rast_coverage_format format, void *out, ptrdiff_t stride,
                                    uint32_t npoints, void *scratch, size_t scratch_bytes,
-                                   rast__cov_out *o, int spans)
+                                   rast__cov_out *o, int spans, int32_t rows)
 {
     static const int32_t size[3] = {1, 2, 8};
     rast_status st = rast__cov_check_opts(opts);
@@ -129,7 +130,8 @@ static rast_status rast__cov_begin(const rast_coverage_opts *opts, const rast_re
             stride < (ptrdiff_t)w * size[format])
             return RAST_E_ARG;
     }
-    st = rast__scratch_check(scratch, scratch_bytes, rast__cov_need(opts, npoints, w, h));
+    st = rast__scratch_check(scratch, scratch_bytes,
+                             rast__cov_need(opts, npoints, w, h < rows ? h : rows));
     if (st != RAST_OK) return st;
     o->base = (unsigned char *)out;
     o->stride = stride;
@@ -264,29 +266,47 @@ static rast_status rast__cov_count(const rast_polygon *polygon, uint32_t *npoint
  * then the method run.  `paint` not NULL: the levels go to it, row by
  * row, through a row buffer at the scratch's start (rast__cov_run skips
  * it). */
+static rast_status rast__cov_check(const rast_polygon *poly, const rast_point *tris, uint32_t n,
+                                   const rast_coverage_opts *opts, const rast_rect *clip,
+                                   rast_coverage_format format, void *out, ptrdiff_t stride,
+                                   int paint, void *scratch, size_t scratch_bytes,
+                                   rast__cov_out *o, int32_t rows)
+{
+    int32_t kb;
+    rast_status st = rast__cov_begin(opts, clip, paint ? RAST_COVERAGE_U8 : format, out, stride, n,
+                                     scratch, scratch_bytes, o, paint, rows);
+    if (st != RAST_OK) return st;
+    kb = rast__aa_kbits(opts->method);
+    return rast__cov_check_points(poly ? poly->points : tris, n,
+                                  kb > opts->subpixel_bits ? kb - opts->subpixel_bits : 0);
+}
+
+/* The method run into *o (checked), or into painter `paint`. */
+static rast_status rast__cov_go(const rast_polygon *poly, const rast_point *tris, uint32_t ntris,
+                                uint32_t n, const rast_coverage_opts *opts, rast__cov_out *o,
+                                const rast__painter *paint, void *scratch, size_t scratch_bytes)
+{
+    static const rast_point none[3] = {{0, 0}, {0, 0}, {0, 0}};
+    if (paint) {
+        o->base = (unsigned char *)scratch;
+        o->stride = 0;
+        o->paint = paint;
+    }
+    if (!poly && !ntris) tris = none;
+    return rast__cov_run(poly, tris, ntris, n, opts, o, scratch, scratch_bytes);
+}
+
 static rast_status rast__cov_entry(const rast_polygon *poly, const rast_point *tris,
                                    uint32_t ntris, uint32_t n, const rast_coverage_opts *opts,
                                    const rast_rect *clip, rast_coverage_format format, void *out,
                                    ptrdiff_t stride, const rast__painter *paint, void *scratch,
                                    size_t scratch_bytes)
 {
-    static const rast_point none[3] = {{0, 0}, {0, 0}, {0, 0}};
     rast__cov_out o;
-    int32_t kb;
-    rast_status st = rast__cov_begin(opts, clip, paint ? RAST_COVERAGE_U8 : format, out, stride, n,
-                                     scratch, scratch_bytes, &o, paint != NULL);
+    rast_status st = rast__cov_check(poly, tris, n, opts, clip, format, out, stride, paint != NULL,
+                                     scratch, scratch_bytes, &o, INT32_MAX);
     if (st != RAST_OK) return st;
-    kb = rast__aa_kbits(opts->method);
-    st = rast__cov_check_points(poly ? poly->points : tris, n,
-                                kb > opts->subpixel_bits ? kb - opts->subpixel_bits : 0);
-    if (st != RAST_OK) return st;
-    if (paint) {
-        o.base = (unsigned char *)scratch;
-        o.stride = 0;
-        o.paint = paint;
-    }
-    if (!poly && !ntris) tris = none;
-    return rast__cov_run(poly, tris, ntris, n, opts, &o, scratch, scratch_bytes);
+    return rast__cov_go(poly, tris, ntris, n, opts, &o, paint, scratch, scratch_bytes);
 }
 
 rast_status rast_polygon_coverage(const rast_polygon *polygon, const rast_coverage_opts *opts,
@@ -313,22 +333,58 @@ rast_status rast_triangles_coverage(const rast_point *tris, uint32_t ntris,
                            scratch, scratch_bytes);
 }
 
-rast_status rast__cov_paint(const rast_polygon *poly, const rast_point *tris, uint32_t ntris,
-                            const rast_coverage_opts *opts, const rast_rect *clip,
-                            const rast__painter *p, void *scratch, size_t scratch_bytes)
+/* The checks of the painting entry points (geometry counted, then
+ * rast__cov_check), *o set up for the clip. */
+static rast_status rast__cov_paint_prepare(const rast_polygon *poly, const rast_point *tris,
+                                           uint32_t ntris, const rast_coverage_opts *opts,
+                                           const rast_rect *clip, int32_t rows, void *scratch,
+                                           size_t scratch_bytes, uint32_t *npoints,
+                                           rast__cov_out *o)
 {
-    uint32_t n = 0;
     rast_status st;
     if (poly) {
-        st = rast__cov_count(poly, &n);
+        st = rast__cov_count(poly, npoints);
         if (st != RAST_OK) return st;
     } else {
         if (ntris > RAST_MAX_POINTS / 3) return RAST_E_TOO_MANY;
         if (ntris > 0 && !tris) return RAST_E_NULL;
-        n = 3 * ntris;
+        *npoints = 3 * ntris;
     }
-    return rast__cov_entry(poly, tris, ntris, n, opts, clip, RAST_COVERAGE_U8, NULL, 0, p, scratch,
-                           scratch_bytes);
+    return rast__cov_check(poly, tris, *npoints, opts, clip, RAST_COVERAGE_U8, NULL, 0, 1, scratch,
+                           scratch_bytes, o, rows);
+}
+
+rast_status rast__cov_paint_check(const rast_polygon *poly, const rast_point *tris,
+                                  uint32_t ntris, const rast_coverage_opts *opts,
+                                  const rast_rect *clip, int32_t rows, void *scratch,
+                                  size_t scratch_bytes, uint32_t *npoints)
+{
+    rast__cov_out o;
+    return rast__cov_paint_prepare(poly, tris, ntris, opts, clip, rows, scratch, scratch_bytes,
+                                   npoints, &o);
+}
+
+rast_status rast__cov_paint_checked(const rast_polygon *poly, const rast_point *tris,
+                                    uint32_t ntris, uint32_t npoints,
+                                    const rast_coverage_opts *opts, const rast_rect *clip,
+                                    const rast__painter *p, void *scratch, size_t scratch_bytes)
+{
+    rast__cov_out o;
+    o.clip = *clip;
+    o.format = RAST_COVERAGE_U8;
+    return rast__cov_go(poly, tris, ntris, npoints, opts, &o, p, scratch, scratch_bytes);
+}
+
+rast_status rast__cov_paint(const rast_polygon *poly, const rast_point *tris, uint32_t ntris,
+                            const rast_coverage_opts *opts, const rast_rect *clip,
+                            const rast__painter *p, void *scratch, size_t scratch_bytes)
+{
+    rast__cov_out o;
+    uint32_t n = 0;
+    rast_status st = rast__cov_paint_prepare(poly, tris, ntris, opts, clip, INT32_MAX, scratch,
+                                             scratch_bytes, &n, &o);
+    if (st != RAST_OK) return st;
+    return rast__cov_go(poly, tris, ntris, n, opts, &o, p, scratch, scratch_bytes);
 }
 
 rast_status rast_polygon_coverage_spans(const rast_polygon *polygon,

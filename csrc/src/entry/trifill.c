@@ -87,24 +87,41 @@ static rast_status rast__tri_check_range(const rast_point *tris, uint32_t ntris)
     return RAST_OK;
 }
 
+rast_status rast__tri_check(const rast_point *tris, uint32_t ntris, const rast_tri_opts *opts,
+                            const rast_rect *clip, rast__grid *g, void *scratch,
+                            size_t scratch_bytes)
+{
+    const rast__tri_algo *al;
+    rast_status st = rast__tri_check_range(tris, ntris);
+    if (st != RAST_OK) return st;
+    st = rast__tri_check_opts(opts, g, &al);
+    if (st != RAST_OK) return st;
+    return rast__scratch_check(scratch, scratch_bytes,
+                               rast__tri_need(al, opts, clip->x1 - clip->x0, clip->y1 - clip->y0));
+}
+
 rast_status rast__tri_fill(const rast_point *tris, uint32_t ntris, const rast_tri_opts *opts,
                            const rast_rect *clip, const rast__painter *p,
                            rast__tri_begin_fn begin, void *scratch, size_t scratch_bytes)
 {
-    const rast__tri_algo *al;
     rast__grid g;
+    rast_status st = rast__tri_check(tris, ntris, opts, clip, &g, scratch, scratch_bytes);
+    if (st != RAST_OK) return st;
+    return rast__tri_fill_checked(tris, ntris, opts, &g, clip, p, begin, scratch, scratch_bytes);
+}
+
+rast_status rast__tri_fill_checked(const rast_point *tris, uint32_t ntris,
+                                   const rast_tri_opts *opts, const rast__grid *gp,
+                                   const rast_rect *clip, const rast__painter *p,
+                                   rast__tri_begin_fn begin, void *scratch, size_t scratch_bytes)
+{
+    const rast__tri_algo *al = &rast__tri_algos[opts->algorithm];
+    const rast__grid g = *gp;
     rast__sink sink;
     rast__arena arena;
     uint32_t k;
     rast_status st;
 
-    st = rast__tri_check_range(tris, ntris);
-    if (st != RAST_OK) return st;
-    st = rast__tri_check_opts(opts, &g, &al);
-    if (st != RAST_OK) return st;
-    st = rast__scratch_check(scratch, scratch_bytes,
-                             rast__tri_need(al, opts, clip->x1 - clip->x0, clip->y1 - clip->y0));
-    if (st != RAST_OK) return st;
     if (clip->x0 >= clip->x1 || clip->y0 >= clip->y1) return RAST_OK;
 
     rast__sink_init(&sink, p, clip);

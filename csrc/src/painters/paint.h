@@ -111,32 +111,45 @@ typedef int (*rast__tri_begin_fn)(void *user, const rast_point *t, uint32_t k,
 rast_status rast__tri_fill(const rast_point *tris, uint32_t ntris, const rast_tri_opts *opts,
                            const rast_rect *clip, const rast__painter *p,
                            rast__tri_begin_fn begin, void *scratch, size_t scratch_bytes);
+/* The same in two steps: rast__tri_fill's checks (the grid into *g), and
+ * the fill with nothing checked (a clip no larger than the checked one). */
+rast_status rast__tri_check(const rast_point *tris, uint32_t ntris, const rast_tri_opts *opts,
+                            const rast_rect *clip, rast__grid *g, void *scratch,
+                            size_t scratch_bytes);
+rast_status rast__tri_fill_checked(const rast_point *tris, uint32_t ntris,
+                                   const rast_tri_opts *opts, const rast__grid *g,
+                                   const rast_rect *clip, const rast__painter *p,
+                                   rast__tri_begin_fn begin, void *scratch, size_t scratch_bytes);
 
-/* A triangle filler as rast__tri_fill (its signature): rast__tri_fill
- * itself, or rast__tri_touching (shade_aa.c). */
+/* A checked triangle filler as rast__tri_fill_checked (its signature):
+ * rast__tri_fill_checked itself, or rast__tri_touching (shade_aa.c). */
 typedef rast_status (*rast__tri_filler_fn)(const rast_point *tris, uint32_t ntris,
-                                           const rast_tri_opts *opts, const rast_rect *clip,
-                                           const rast__painter *p, rast__tri_begin_fn begin,
-                                           void *scratch, size_t scratch_bytes);
+                                           const rast_tri_opts *opts, const rast__grid *g,
+                                           const rast_rect *clip, const rast__painter *p,
+                                           rast__tri_begin_fn begin, void *scratch,
+                                           size_t scratch_bytes);
 
 /* The pixels whose closed square [i, i+1] x [j, j+1] meets an edge (a
  * closed segment) of the triangle, for each non-degenerate triangle in
  * turn (rows top to bottom, a span per edge in the row, possibly
  * overlapping), cut to `clip`: the silhouette filler of the anti-aliased
- * shaded fill.  Checks as rast__tri_fill; needs no scratch; the painter's
- * full entry only. */
+ * shaded fill.  A checked filler (the batch and options passed
+ * rast__tri_check; g their grid, given to `begin`); needs no scratch;
+ * the painter's full entry only. */
 rast_status rast__tri_touching(const rast_point *tris, uint32_t ntris, const rast_tri_opts *opts,
-                               const rast_rect *clip, const rast__painter *p,
+                               const rast__grid *g, const rast_rect *clip, const rast__painter *p,
                                rast__tri_begin_fn begin, void *scratch, size_t scratch_bytes);
 
 /* The Gouraud painter (shade.c) fed by `filler`, into RGBA8888 colours:
  * pixel (band->x0 + i, band->y0 + j) at rgba + j stride + 4 i, every
- * pixel of `band` the filler gives written (clamped to 0..255).  Checks
- * as rast_fill_triangles_shaded (no depth). */
+ * pixel of `band` the filler gives written (clamped to 0..255).  The
+ * batch and `opts` passed rast__tri_check (g their grid); `shade`'s
+ * precision is checked (as rast_fill_triangles_shaded's, no depth). */
 rast_status rast__shade_band(unsigned char *rgba, ptrdiff_t stride, const rast_rect *band,
                              const rast_point *tris, uint32_t ntris, const uint8_t *colors,
-                             const rast_tri_opts *opts, const rast_shade_opts *shade,
-                             rast__tri_filler_fn filler, void *scratch, size_t scratch_bytes);
+                             const rast_tri_opts *opts, const rast__grid *g,
+                             const rast_shade_opts *shade, rast__tri_filler_fn filler,
+                             void *scratch, size_t scratch_bytes);
 
 /* The polygon entry points' common part (fill.c), for 32-bit polygons
  * (fill.c) and 64-bit ones (poly64.c): `fill` checks the polygon (a
@@ -202,5 +215,18 @@ rast_status rast__fill_spans(const void *polygon, const rast_fill_opts *opts,
 rast_status rast__cov_paint(const rast_polygon *poly, const rast_point *tris, uint32_t ntris,
                             const rast_coverage_opts *opts, const rast_rect *clip,
                             const rast__painter *p, void *scratch, size_t scratch_bytes);
+/* The same in two steps, for a caller painting the same geometry band by
+ * band: every check, once, for the whole clip, with the scratch for a band
+ * of `rows` rows (*npoints: the vertex count); then each band (rows of the
+ * checked clip, at most `rows` of them) painted with nothing checked
+ * again. */
+rast_status rast__cov_paint_check(const rast_polygon *poly, const rast_point *tris,
+                                  uint32_t ntris, const rast_coverage_opts *opts,
+                                  const rast_rect *clip, int32_t rows, void *scratch,
+                                  size_t scratch_bytes, uint32_t *npoints);
+rast_status rast__cov_paint_checked(const rast_polygon *poly, const rast_point *tris,
+                                    uint32_t ntris, uint32_t npoints,
+                                    const rast_coverage_opts *opts, const rast_rect *clip,
+                                    const rast__painter *p, void *scratch, size_t scratch_bytes);
 
 #endif /* RAST_PAINT_H */

@@ -762,8 +762,9 @@ rast_status rast_fill_triangles_shaded(const rast_target *target, const rast_poi
 
 rast_status rast__shade_band(unsigned char *rgba, ptrdiff_t stride, const rast_rect *band,
                              const rast_point *tris, uint32_t ntris, const uint8_t *colors,
-                             const rast_tri_opts *opts, const rast_shade_opts *shade,
-                             rast__tri_filler_fn filler, void *scratch, size_t scratch_bytes)
+                             const rast_tri_opts *opts, const rast__grid *g,
+                             const rast_shade_opts *shade, rast__tri_filler_fn filler,
+                             void *scratch, size_t scratch_bytes)
 {
     rast__shade s;
     rast__painter p;
@@ -771,6 +772,6 @@ rast_status rast__shade_band(unsigned char *rgba, ptrdiff_t stride, const rast_r
                                        band->y0, band, colors, NULL, NULL, 0, opts, shade);
     if (st != RAST_OK) return st;
     s.cull = 1;
-    return filler(tris, ntris, opts, band, rast__shade_painter(&s, &p), rast__shade_begin,
+    return filler(tris, ntris, opts, g, band, rast__shade_painter(&s, &p), rast__shade_begin,
                   scratch, scratch_bytes);
 }

@@ -26,6 +26,20 @@ static void fill_random(unsigned char *p, size_t n)
     for (k = 0; k < n; k++) p[k] = (unsigned char)rng();
 }
 
+/* Random pixels in a, the same in b, and the solid painter of `value` over
+ * each (W x H, format f): a into *pa, b into *pb. */
+static void two_painters(int f, int32_t stride, const unsigned char *value, rast__solid *sa,
+                         rast__painter *pa, rast__solid *sb, rast__painter *pb)
+{
+    rast_target ta, tb;
+    fill_random(a, sizeof a);
+    memcpy(b, a, sizeof a);
+    CHECK(rast_target_init(&ta, a, W, H, stride, (rast_format)f) == RAST_OK);
+    CHECK(rast_target_init(&tb, b, W, H, stride, (rast_format)f) == RAST_OK);
+    CHECK(rast__solid_init(sa, &ta, &ta.clip, value, NULL, pa) == RAST_OK);
+    CHECK(rast__solid_init(sb, &tb, &tb.clip, value, NULL, pb) == RAST_OK);
+}
+
 static void levels_vs_full(void)
 {
     static uint8_t full[W];
@@ -35,18 +49,12 @@ static void levels_vs_full(void)
         int32_t stride;
         if (rast_format_stride((rast_format)f, W, &stride) != RAST_OK) continue;
         for (rep = 0; rep < 200; rep++) {
-            rast_target ta, tb;
             rast__solid sa, sb;
             rast__painter pa, pb;
             unsigned char value[4];
             int32_t xs[2], y = (int32_t)(rng() % H);
             fill_random(value, sizeof value);
-            fill_random(a, sizeof a);
-            memcpy(b, a, sizeof a);
-            CHECK(rast_target_init(&ta, a, W, H, stride, (rast_format)f) == RAST_OK);
-            CHECK(rast_target_init(&tb, b, W, H, stride, (rast_format)f) == RAST_OK);
-            CHECK(rast__solid_init(&sa, &ta, &ta.clip, value, NULL, &pa) == RAST_OK);
-            CHECK(rast__solid_init(&sb, &tb, &tb.clip, value, NULL, &pb) == RAST_OK);
+            two_painters(f, stride, value, &sa, &pa, &sb, &pb);
             CHECK(pa.full != NULL && pa.levels != NULL);
             xs[0] = (int32_t)(rng() % W);
             xs[1] = xs[0] + 1 + (int32_t)(rng() % (uint32_t)(W - xs[0]));
@@ -144,17 +152,11 @@ static void coverage_vs_public(void)
         o.rule = (rep / 6) % 2 ? RAST_RULE_NONZERO : RAST_RULE_EVENODD;
         fill_random(value, sizeof value);
         for (f = 0; f < RAST_FORMAT_COUNT_; f++) {
-            rast_target ta, tb;
             rast__solid sa, sb;
             rast__painter pa, pb;
             int32_t stride;
             if (rast_format_stride((rast_format)f, W, &stride) != RAST_OK) continue;
-            fill_random(a, sizeof a);
-            memcpy(b, a, sizeof a);
-            CHECK(rast_target_init(&ta, a, W, H, stride, (rast_format)f) == RAST_OK);
-            CHECK(rast_target_init(&tb, b, W, H, stride, (rast_format)f) == RAST_OK);
-            CHECK(rast__solid_init(&sa, &ta, &ta.clip, value, NULL, &pa) == RAST_OK);
-            CHECK(rast__solid_init(&sb, &tb, &tb.clip, value, NULL, &pb) == RAST_OK);
+            two_painters(f, stride, value, &sa, &pa, &sb, &pb);
             CHECK(rast__cov_paint(&poly, NULL, 0, &o, &clip, &pa, scratch, sizeof scratch) ==
                   RAST_OK);
             CHECK(rast_polygon_coverage_spans(&poly, &o, &clip, blend_span, &pb, scratch,

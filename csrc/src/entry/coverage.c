@@ -395,7 +395,7 @@ rast_status rast_polygon_coverage_spans(const rast_polygon *polygon,
     rast__user_spans u;
     rast__painter p;
     if (!polygon || !span || !clip) return RAST_E_NULL;
-    rast__user_cov_painter(&u, span, user, &p);
+    rast__user_painter(&u, NULL, span, user, &p);
     return rast__cov_paint(polygon, NULL, 0, opts, clip, &p, scratch, scratch_bytes);
 }
 
@@ -407,6 +407,6 @@ rast_status rast_triangles_coverage_spans(const rast_point *tris, uint32_t ntris
     rast__user_spans u;
     rast__painter p;
     if (!span || !clip) return RAST_E_NULL;
-    rast__user_cov_painter(&u, span, user, &p);
+    rast__user_painter(&u, NULL, span, user, &p);
     return rast__cov_paint(NULL, tris, ntris, opts, clip, &p, scratch, scratch_bytes);
 }

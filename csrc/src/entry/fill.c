@@ -168,7 +168,7 @@ rast_status rast__fill_spans(const void *polygon, const rast_fill_opts *opts,
     if (!clip || !span) return RAST_E_NULL;
     st = rast__span_clip(clip, &c);
     if (st != RAST_OK) return st;
-    rast__user_painter(&u, span, user, &p);
+    rast__user_painter(&u, span, NULL, user, &p);
     return fill(polygon, opts, &c, &p, scratch, scratch_bytes);
 }
 

@@ -337,7 +337,7 @@ rast_status rast_draw_polyline_spans(const rast_point *points, uint32_t npoints,
     if (!clip || !span) return RAST_E_NULL;
     st = rast__span_clip(clip, &c);
     if (st != RAST_OK) return st;
-    rast__user_painter(&u, span, user, &p);
+    rast__user_painter(&u, span, NULL, user, &p);
     return rast__polyline(points, npoints, closed, &g, opts, &c, &p);
 }
 

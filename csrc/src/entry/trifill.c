@@ -180,6 +180,6 @@ rast_status rast_fill_triangles_spans(const rast_point *tris, uint32_t ntris,
     if (!opts || !clip || !span || (ntris > 0 && !tris)) return RAST_E_NULL;
     st = rast__span_clip(clip, &c);
     if (st != RAST_OK) return st;
-    rast__user_painter(&u, span, user, &p);
+    rast__user_painter(&u, span, NULL, user, &p);
     return rast__tri_fill(tris, ntris, opts, &c, &p, NULL, scratch, scratch_bytes);
 }

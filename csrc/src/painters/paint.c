@@ -202,23 +202,14 @@ static void rast__user_levels(void *user, int32_t y, int32_t x0, int32_t x1, con
     u->cov(u->user, y, x0, x1, cov);
 }
 
-void rast__user_painter(rast__user_spans *u, rast_span_fn fn, void *user, rast__painter *p)
+void rast__user_painter(rast__user_spans *u, rast_span_fn fn, rast_coverage_span_fn cov,
+                        void *user, rast__painter *p)
 {
     memset(p, 0, sizeof *p);
     u->fn = fn;
-    u->cov = NULL;
+    u->cov = cov;
     u->user = user;
-    p->full = rast__user_row;
-    p->user = u;
-}
-
-void rast__user_cov_painter(rast__user_spans *u, rast_coverage_span_fn fn, void *user,
-                            rast__painter *p)
-{
-    memset(p, 0, sizeof *p);
-    u->fn = NULL;
-    u->cov = fn;
-    u->user = user;
-    p->levels = rast__user_levels;
+    if (fn) p->full = rast__user_row;
+    if (cov) p->levels = rast__user_levels;
     p->user = u;
 }

@@ -70,19 +70,17 @@ rast_status rast__tri_fill_need(const rast_tri_opts *opts, int32_t width, int32_
 /* Check a target (as rast_target_init would) and cut its clip to it. */
 rast_status rast__target_check(const rast_target *t, rast_rect *clip);
 
-/* The painter of the span entry points (rast_fill_polygon_spans, ...):
- * hands each full run to the user's rast_span_fn; and that of the
- * coverage span entry points (rast_polygon_coverage_spans, ...): hands
- * each levels run to the user's rast_coverage_span_fn.  *p is set up
- * with *u as its user. */
+/* The painter of the user's callbacks: each full run to `fn` (the span
+ * entry points, rast_fill_polygon_spans, ...), each levels run to `cov`
+ * (the coverage span entry points, rast_polygon_coverage_spans, ...);
+ * the entry of a NULL one is NULL.  *p is set up with *u as its user. */
 typedef struct rast__user_spans {
     rast_span_fn fn;
     rast_coverage_span_fn cov;
     void *user;
 } rast__user_spans;
-void rast__user_painter(rast__user_spans *u, rast_span_fn fn, void *user, rast__painter *p);
-void rast__user_cov_painter(rast__user_spans *u, rast_coverage_span_fn fn, void *user,
-                            rast__painter *p);
+void rast__user_painter(rast__user_spans *u, rast_span_fn fn, rast_coverage_span_fn cov,
+                        void *user, rast__painter *p);
 
 /* The solid painter: `pixel` (a value of the target's format) over the
  * runs of a checked target and clip, a full run written, a levels run

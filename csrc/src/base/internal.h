@@ -472,6 +472,15 @@ static inline size_t rast__align(size_t n)
     return (n + (RAST_SCRATCH_ALIGN - 1)) & ~(size_t)(RAST_SCRATCH_ALIGN - 1);
 }
 
+/* An arena over the caller's whole scratch. */
+static inline rast__arena rast__arena_of(void *scratch, size_t bytes)
+{
+    rast__arena a;
+    a.p = (unsigned char *)scratch;
+    a.left = bytes;
+    return a;
+}
+
 static inline void *rast__take(rast__arena *a, size_t n)
 {
     void *p;

@@ -98,12 +98,10 @@ rast_status rast__fill_checked(const rast__fill_setup *f, const rast_polygon *po
                                void *scratch, size_t scratch_bytes)
 {
     rast__sink sink;
-    rast__arena arena;
+    rast__arena arena = rast__arena_of(scratch, scratch_bytes);
     rast_status st;
 
     rast__sink_init(&sink, p, clip);
-    arena.p = (unsigned char *)scratch;
-    arena.left = scratch_bytes;
     if (f->opts->boundary == RAST_BOUNDARY_EXACT)
         return f->al->fill(poly, npoints, &f->g, f->opts->rule, clip, &sink, &arena);
     {

@@ -248,12 +248,10 @@ rast_status rast__fill64_checked(const rast_polygon64 *poly, uint32_t npoints,
                                  size_t scratch_bytes)
 {
     rast__sink sink;
-    rast__arena arena;
+    rast__arena arena = rast__arena_of(scratch, scratch_bytes);
     rast_status st;
 
     rast__sink_init(&sink, p, clip);
-    arena.p = (unsigned char *)scratch;
-    arena.left = scratch_bytes;
     if (opts->boundary == RAST_BOUNDARY_EXACT) {
         st = rast__aet64_fill(poly, npoints, g, opts->rule, clip, &sink, &arena);
         rast__sink_flush(&sink);

@@ -6,9 +6,10 @@
  *    a triangle batch fed through it gives the pixels the same batch gives
  *    through the painter's full entry, clipped or not, each algorithm.
  *  - The coverage pipeline (rast__cov_paint) feeding the solid painter
- *    gives the pixels of the public route: the coverage spans
- *    (rast_polygon_coverage_spans) blended by a callback through the
- *    format's own levels entry. */
+ *    (levels runs, and full runs for long stretches covered whole) gives
+ *    the pixels of the public route: the coverage spans
+ *    (rast_polygon_coverage_spans, whole runs of levels) blended by a
+ *    callback through the format's own levels entry. */
 #include <string.h>
 
 #include "check.h"

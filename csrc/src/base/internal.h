@@ -252,7 +252,8 @@ static inline int rast__edge_setup_inline(rast__edge *ed, rast_point a, rast_poi
  *    floor(a 255 + 1/2), none of them 0), what a coverage method gives.
  * A painter is one struct with an entry for each (rast__painter); the
  * binary fillers feed its full entry through a sink (below), the coverage
- * methods its levels entry through rast__cov_out (coverage/coverage.h). */
+ * methods its levels entry, and its full entry with long stretches
+ * covered whole, through rast__cov_row_done (coverage/coverage.h). */
 
 /* A painter's full entry: the spans of row y, xs[2k] <= i < xs[2k+1] for
  * k < n, in increasing x, each non-empty, none touching the next. */

@@ -144,8 +144,10 @@ typedef struct rast__cov_out {
     const rast__painter *paint;
 } rast__cov_out;
 
-/* Row y is complete: hand its runs of values not 0 to the painter's
- * levels entry, if there is a painter. */
+/* Row y is complete: hand its runs of values not 0 to the painter, if
+ * there is one: to its levels entry, except that a stretch of 255 at
+ * least RAST__COV_FULL_MIN long goes to its full entry when it has one
+ * (the same pixels: a blend at 255 writes what a fill writes). */
 void rast__cov_row_done(const rast__cov_out *o, int32_t y);
 
 /* The value stored for coverage a62 / 2^62 (0 <= a62 <= 2^62): a62 itself

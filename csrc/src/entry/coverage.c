@@ -60,17 +60,43 @@ rast_status rast_coverage_scratch_size(const rast_coverage_opts *opts, uint32_t 
     return RAST_OK;
 }
 
+/* A stretch of level 255 at least this long goes to a painter's full
+ * entry (a fill: a memset for one-byte pixels) instead of its levels
+ * entry (a blend per pixel); shorter ones stay in their levels run, where
+ * a blend of a few pixels costs less than another call.  The pixels are
+ * the same either way: a blend at 255 writes what a fill writes. */
+#define RAST__COV_FULL_MIN 16
+
 void rast__cov_row_done(const rast__cov_out *o, int32_t y)
 {
     const unsigned char *row = o->base;
-    int32_t k = 0, w = o->clip.x1 - o->clip.x0;
-    if (!o->paint) return;
+    const rast__painter *p = o->paint;
+    int32_t k = 0, w = o->clip.x1 - o->clip.x0, x0 = o->clip.x0;
+    if (!p) return;
+    /* Each run of levels not 0 to the levels entry; when the painter takes
+     * full runs too, its long stretches of 255 go to the full entry (one
+     * pass: `start` is the first column not handed on yet). */
     while (k < w) {
-        int32_t k0;
+        int32_t start;
         while (k < w && !row[k]) k++;
-        k0 = k;
-        while (k < w && row[k]) k++;
-        if (k > k0) o->paint->levels(o->paint->user, y, o->clip.x0 + k0, o->clip.x0 + k, row + k0);
+        start = k;
+        while (k < w && row[k]) {
+            if (row[k] == 255 && p->full) {
+                int32_t f = k;
+                while (k < w && row[k] == 255) k++;
+                if (k - f >= RAST__COV_FULL_MIN) {
+                    int32_t xs[2];
+                    if (f > start) p->levels(p->user, y, x0 + start, x0 + f, row + start);
+                    xs[0] = x0 + f;
+                    xs[1] = x0 + k;
+                    p->full(p->user, y, xs, 1);
+                    start = k;
+                }
+            } else {
+                k++;
+            }
+        }
+        if (k > start) p->levels(p->user, y, x0 + start, x0 + k, row + start);
     }
 }
 

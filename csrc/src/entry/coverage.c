@@ -71,29 +71,34 @@ void rast__cov_row_done(const rast__cov_out *o, int32_t y)
 {
     const unsigned char *row = o->base;
     const rast__painter *p = o->paint;
-    int32_t k = 0, w = o->clip.x1 - o->clip.x0, x0 = o->clip.x0;
+    int32_t k = 0, w, x0;
+    unsigned lim;
     if (!p) return;
+    w = o->clip.x1 - o->clip.x0;
+    x0 = o->clip.x0;
     /* Each run of levels not 0 to the levels entry; when the painter takes
-     * full runs too, its long stretches of 255 go to the full entry (one
-     * pass: `start` is the first column not handed on yet). */
+     * full runs too, its long stretches of 255 go to the full entry.  One
+     * pass, one test a pixel: levels 1..lim go on (lim 254 when a 255 must
+     * stop the scan, else 255); `start` is the first column not handed on
+     * yet. */
+    lim = p->full ? 254u : 255u;
     while (k < w) {
         int32_t start;
         while (k < w && !row[k]) k++;
         start = k;
-        while (k < w && row[k]) {
-            if (row[k] == 255 && p->full) {
-                int32_t f = k;
-                while (k < w && row[k] == 255) k++;
-                if (k - f >= RAST__COV_FULL_MIN) {
-                    int32_t xs[2];
-                    if (f > start) p->levels(p->user, y, x0 + start, x0 + f, row + start);
-                    xs[0] = x0 + f;
-                    xs[1] = x0 + k;
-                    p->full(p->user, y, xs, 1);
-                    start = k;
-                }
-            } else {
-                k++;
+        for (;;) {
+            int32_t f;
+            while (k < w && (unsigned)row[k] - 1u < lim) k++;
+            if (k == w || row[k] != 255) break; /* a 255 stops it only for a full entry */
+            f = k;
+            while (k < w && row[k] == 255) k++;
+            if (k - f >= RAST__COV_FULL_MIN) {
+                int32_t xs[2];
+                if (f > start) p->levels(p->user, y, x0 + start, x0 + f, row + start);
+                xs[0] = x0 + f;
+                xs[1] = x0 + k;
+                p->full(p->user, y, xs, 1);
+                start = k;
             }
         }
         if (k > start) p->levels(p->user, y, x0 + start, x0 + k, row + start);

@@ -43,6 +43,11 @@ def method_error(method, entry, supported):
 
 
 def _opts(method, rule, subpixel_bits, sample_offset, entry):
+    """A checked, read-only ``rast_coverage_opts *`` (cached: a hit skips the checks)."""
+    return _core.cached_opts("coverage", _make_opts, method, rule, subpixel_bits, sample_offset, entry)
+
+
+def _make_opts(method, rule, subpixel_bits, sample_offset, entry):
     if not isinstance(method, str) or method not in METHODS:
         raise method_error(method, entry, list(METHODS))
     opts = ffi.new("rast_coverage_opts *")

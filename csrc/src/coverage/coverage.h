@@ -101,13 +101,17 @@ static inline rast__i128 rast__i128_u64(uint64_t v)
  * x + r/dy in V units, 0 <= r < dy) and at the end of the current piece
  * (xn, rn). */
 typedef struct rast__cedge {
-    /* what every row reads, together (the first two cache lines) */
+    /* what every row reads, together (the first three cache lines) */
     rast__i128 x, xn;
     rast__i128 lo, hi; /* a fast row's range of the edge's part (coverage_area.c) */
     int64_t r, rn;
     uint64_t tx;  /* the t of x, r in row `rowx` */
     int32_t rowx; /* see tx; INT32_MIN: not cached */
     int32_t xt, yt, dx, dy, dir;
+    /* the quick column stepper (coverage_area.c, 2^-30 pixel units): at
+     * vertical qX, t from the top = qt + qtr/|dx|; per column qts + qtsr/|dx| */
+    int64_t qt, qX, qts;
+    uint32_t qtr, qtsr;
     rast__i128 xs; /* x grows by xs + xsr/dy from a row's top to the next */
     int64_t xsr;
     /* the column stepper (cells) */

@@ -49,6 +49,15 @@ typedef struct rast__cells {
     int32_t h;                  /* H = G - S */
     int32_t p;                  /* P = 2^S */
     int accumulate;
+    /* the quick accumulation (below): its cells are cover[].lo (cover)
+     * and cover[].hi (area), its carry qcarry; o and rule for its emit,
+     * quick its level's M (0: not used), emitted set when it has written
+     * the row */
+    uint64_t qcarry;
+    const rast__cov_out *o;
+    rast_fill_rule rule;
+    uint32_t quick;
+    int emitted;
 } rast__cells;
 
 /* x at ordinate t (U, from the top of the row whose top is Yj, fixed
@@ -339,13 +348,28 @@ static void rast__cov_x_row(const rast__cedge *e, rast__i128 *x, int64_t *r)
 }
 
 /* The per-row and per-column steps of e (see rast__cedge). */
+/* floor(n 2^60 / d) into *q, the remainder into *rem, for 0 <= n, 0 < d,
+ * both < 2^28: two 64-bit divisions (n 2^30 < 2^58, and the first
+ * remainder times 2^30 < 2^58); *q30, *rem30: floor(n 2^30 / d) and its
+ * remainder on the way. */
+static void rast__cov_step60(uint64_t n, uint64_t d, rast__i128 *q, uint64_t *rem, uint64_t *q30,
+                             uint64_t *rem30)
+{
+    const uint64_t a = n << 30, r = (a % d) << 30;
+    *q30 = a / d;
+    *rem30 = a % d;
+    *q = rast__i128_add(rast__i128_shl(rast__i128_u64(*q30), 30), rast__i128_u64(r / d));
+    *rem = r % d;
+}
+
 static void rast__cov_steps(rast__cedge *e)
 {
-    uint32_t adx = (uint32_t)(e->dx < 0 ? -e->dx : e->dx), rem;
-    rast__i128 q = rast__u128_div32(rast__u128_mul32(rast__i128_u64(T), adx), (uint32_t)e->dy, &rem);
+    uint64_t adx = (uint64_t)(e->dx < 0 ? -(int64_t)e->dx : e->dx), rem, q30, r30;
+    rast__i128 q;
+    rast__cov_step60(adx, (uint64_t)e->dy, &q, &rem, &q30, &r30);
     if (e->dx >= 0) {
         e->xs = q;
-        e->xsr = rem;
+        e->xsr = (int64_t)rem;
     } else if (rem) {
         e->xs = rast__i128_neg(rast__i128_add(q, rast__i128_u64(1)));
         e->xsr = e->dy - (int64_t)rem;
@@ -355,10 +379,15 @@ static void rast__cov_steps(rast__cedge *e)
     }
     e->ts = rast__i128_u64(0);
     e->tsr = 0;
-    if (adx) {
-        e->ts = rast__u128_div32(rast__u128_mul32(rast__i128_u64(T), (uint32_t)e->dy), adx, &rem);
-        e->tsr = rem;
+    e->qts = 0;
+    e->qtsr = 0;
+    if (adx) { /* the column steps: dy 2^60 / |dx|, and dy 2^30 / |dx| for the quick way */
+        rast__cov_step60((uint64_t)e->dy, adx, &e->ts, &rem, &q30, &r30);
+        e->tsr = (uint32_t)rem;
+        e->qts = (int64_t)q30;
+        e->qtsr = (uint32_t)r30;
     }
+    e->qX = INT64_MIN;
     e->rowx = INT32_MIN;
     e->cX = INT64_MIN;
     e->crow = INT32_MIN;
@@ -707,6 +736,337 @@ static void rast__cov_row_area(rast__cells *c, rast__cedge *e, int32_t *row, int
     }
 }
 
+/* ---- the quick accumulation ----------------------------------------------
+ *
+ * Rows whose parts are added whole (fast rows, and every row when
+ * accumulating) are first added in 64-bit arithmetic on a grid of 2^-30
+ * pixel (Q = 2^-30; G = 60 above): a part's ends' abscissae and its column
+ * crossings' ordinates are the floors of the exact values on that grid (the
+ * 128-bit floors shifted, or a 64-bit stepper), the ends' ordinates (0, 1
+ * or a vertex's, S <= 16) exact; per column, cover += dy and area +=
+ * floor((f0 + f1) dy / 2^10), modular, so that a pixel's value is
+ * v = a 2^51 = 2^21 cover - area.  Each part moves a pixel's value by less
+ * than 2 Q + 2^-51 < 2^-28 from its exact share (a rounded crossing or end
+ * moves the trapezoid right of it by less than Q times the column's width,
+ * and a part meets a pixel at two such points at most); with n parts in
+ * the row, |v 2^-51 - a| < n 2^-28.  The level floor(a M + 1/2) is then
+ * known unless a' M + 1/2 lies within (n + 1) M 2^-27 of an integer (a tie,
+ * or nearly): then the row is added again the exact way above, and only
+ * then.  So a row's levels are floor(a M + 1/2) where the quick values
+ * decide them, the exact sweep's elsewhere: the bound holds unchanged.
+ * (FIX62 output, 512 parts or more in a row, or (n + 1) M >= 2^25: the
+ * exact way only.) */
+#define QF 30
+#define QT ((uint64_t)1 << QF)
+#define QONE ((int64_t)1 << 51)
+
+/* floor(v / 2^QF) for |v| < 2^62 (no >> of a negative value) */
+static inline int64_t rast__q_col(int64_t v)
+{
+    return (int64_t)(((uint64_t)v + ((uint64_t)1 << 62)) >> QF) - ((int64_t)1 << 32);
+}
+
+/* floor(x / 2^30) of a 128-bit abscissa in V units (|x| < 2^88). */
+static inline int64_t rast__q_x(rast__i128 x)
+{
+    return (int64_t)rast__i128_sar(x, 60 - QF).lo;
+}
+
+/* e's quick stepper at vertical X (which e's x range reaches: |X P - xt|
+ * <= |dx|): t = floor(|X P - xt| dy 2^HQ / |dx|), HQ = 30 - S, in two
+ * 64-bit divisions (|X P - xt| dy < 2^56, the remainder times 2^HQ < 2^58). */
+static void rast__q_t_first(rast__cedge *e, int64_t X, const rast__cells *c)
+{
+    const int32_t hq = QF - (G - c->h);
+    uint64_t adx = (uint64_t)(e->dx < 0 ? -(int64_t)e->dx : e->dx);
+    int64_t w = X * c->p - e->xt;
+    uint64_t a = (uint64_t)(w < 0 ? -w : w) * (uint64_t)e->dy, r = (a % adx) << hq;
+    e->qt = (int64_t)(((a / adx) << hq) + r / adx);
+    e->qtr = (uint32_t)(r % adx);
+    e->qX = X;
+}
+
+static inline void rast__q_t_next(rast__cedge *e)
+{
+    uint32_t adx = (uint32_t)(e->dx < 0 ? -e->dx : e->dx);
+    e->qt += e->qts;
+    e->qtr += e->qtsr;
+    if (e->qtr >= adx) {
+        e->qtr -= adx;
+        e->qt++;
+    }
+    e->qX += e->dx > 0 ? 1 : -1;
+}
+
+/* The stepper's ordinate from the row's top (off: the row's top from the
+ * edge's), kept in [lo, hi]. */
+static inline uint64_t rast__q_t_val(const rast__cedge *e, int64_t off, uint64_t lo, uint64_t hi)
+{
+    int64_t t = e->qt - off;
+    if (t < (int64_t)lo) return lo;
+    if (t > (int64_t)hi) return hi;
+    return (uint64_t)t;
+}
+
+static inline void rast__q_add(rast__cells *c, int64_t col, uint64_t f0, uint64_t f1, uint64_t t0,
+                               uint64_t t1, int32_t s)
+{
+    uint64_t dy = t1 - t0, ar;
+    rast__i128 *cell;
+    if (dy == 0 || col >= c->x1) return;
+    if (col < c->x0) {
+        c->qcarry += s < 0 ? 0 - dy : dy;
+        return;
+    }
+    ar = ((f0 + f1) * dy) >> 10; /* < 2^61 before the shift */
+    col -= c->x0;
+    cell = &c->cover[col];
+    if (s < 0) {
+        cell->lo -= dy;
+        cell->hi -= ar;
+    } else {
+        cell->lo += dy;
+        cell->hi += ar;
+    }
+    c->bits[col >> 6] |= (uint64_t)1 << (col & 63);
+    if ((int32_t)(col >> 6) < c->wmin) c->wmin = (int32_t)(col >> 6);
+    if ((int32_t)(col >> 6) > c->wmax) c->wmax = (int32_t)(col >> 6);
+}
+
+/* The piece from column ca (fraction fa, ordinate ta) to cb != ca (fb,
+ * tb), both inside the clip: rast__q_piece's loops with the stepper in
+ * registers and no clip tests. */
+static void rast__q_inner(rast__cells *c, rast__cedge *e, int64_t off, int64_t ca, int64_t cb,
+                          uint64_t fa, uint64_t fb, uint64_t ta, uint64_t tb, int32_t s)
+{
+    const uint32_t adx = (uint32_t)(e->dx < 0 ? -e->dx : e->dx);
+    const int64_t step = ca < cb ? 1 : -1, X = ca < cb ? ca + 1 : ca;
+    const uint64_t neg = s < 0 ? ~(uint64_t)0 : 0; /* x ^ neg - neg: x signed by s */
+    rast__i128 *cell = c->cover;
+    uint64_t *bits = c->bits;
+    const int64_t x0 = c->x0;
+    uint64_t t = ta, f = fa, fend = ca < cb ? QT : 0;
+    int64_t qt, col, lo = ca < cb ? ca : cb, hi = ca < cb ? cb : ca;
+    uint32_t qtr;
+    if (e->qX != X) rast__q_t_first(e, X, c);
+    qt = e->qt - off;
+    qtr = e->qtr;
+    for (col = ca; col != cb; col += step) {
+        uint64_t tx = qt < (int64_t)t ? t : qt > (int64_t)tb ? tb : (uint64_t)qt, dy = tx - t;
+        uint64_t ar = ((f + fend) * dy) >> 10;
+        int64_t k = col - x0;
+        cell[k].lo += (dy ^ neg) - neg;
+        cell[k].hi += (ar ^ neg) - neg;
+        bits[k >> 6] |= (uint64_t)1 << (k & 63);
+        t = tx;
+        f = QT - fend;
+        qt += e->qts;
+        qtr += e->qtsr;
+        if (qtr >= adx) {
+            qtr -= adx;
+            qt++;
+        }
+    }
+    {
+        uint64_t dy = tb - t, ar = ((f + fb) * dy) >> 10;
+        int64_t k = cb - x0;
+        cell[k].lo += (dy ^ neg) - neg;
+        cell[k].hi += (ar ^ neg) - neg;
+        bits[k >> 6] |= (uint64_t)1 << (k & 63);
+    }
+    e->qt = qt + off;
+    e->qtr = qtr;
+    e->qX = X + (cb - ca);
+    lo = (lo - x0) >> 6;
+    hi = (hi - x0) >> 6;
+    if ((int32_t)lo < c->wmin) c->wmin = (int32_t)lo;
+    if ((int32_t)hi > c->wmax) c->wmax = (int32_t)hi;
+}
+
+/* rast__cells_piece, the quick way: xa, xb in units of 2^-30 pixel, ta,
+ * tb of 2^-30 pixel from the row's top. */
+static void rast__q_piece(rast__cells *c, rast__cedge *e, int64_t Yj, int64_t xa, uint64_t ta,
+                          int64_t xb, uint64_t tb, int32_t s)
+{
+    const uint64_t fm = QT - 1;
+    const int32_t hq = QF - (G - c->h);
+    int64_t ca = rast__q_col(xa), cb = rast__q_col(xb), col;
+    int64_t off = (Yj - e->yt) * ((int64_t)1 << hq);
+    uint64_t fa = (uint64_t)xa & fm, fb = (uint64_t)xb & fm, t = ta;
+    if (ta >= tb) return;
+    if (ca == cb) {
+        rast__q_add(c, ca, fa, fb, ta, tb, s);
+        return;
+    }
+    if (ca < c->x0 && cb < c->x0) {
+        rast__q_add(c, c->x0 - 1, 0, 0, ta, tb, s);
+        return;
+    }
+    if (ca >= c->x0 && cb >= c->x0 && ca < c->x1 && cb < c->x1) { /* inside the clip */
+        rast__q_inner(c, e, off, ca, cb, fa, fb, ta, tb, s);
+        return;
+    }
+    if (ca < cb) { /* going right: the verticals ca + 1, ..., cb */
+        if (ca >= c->x1) return;
+        col = ca;
+        if (col < c->x0) {
+            uint64_t tx;
+            if (e->qX != c->x0) rast__q_t_first(e, c->x0, c);
+            tx = rast__q_t_val(e, off, t, tb);
+            rast__q_add(c, c->x0 - 1, 0, 0, t, tx, s);
+            t = tx;
+            col = c->x0;
+            fa = 0;
+            rast__q_t_next(e);
+        } else if (e->qX != col + 1) {
+            rast__q_t_first(e, col + 1, c);
+        }
+        for (; col < cb; col++) {
+            uint64_t tx;
+            if (col >= c->x1) return;
+            tx = rast__q_t_val(e, off, t, tb);
+            rast__q_add(c, col, fa, QT, t, tx, s);
+            t = tx;
+            fa = 0;
+            rast__q_t_next(e);
+        }
+        rast__q_add(c, cb, 0, fb, t, tb, s);
+    } else { /* going left: the verticals ca, ..., cb + 1 */
+        if (cb >= c->x1) return;
+        col = ca;
+        if (col >= c->x1) {
+            if (e->qX != c->x1) rast__q_t_first(e, c->x1, c);
+            t = rast__q_t_val(e, off, t, tb);
+            col = c->x1 - 1;
+            fa = QT;
+            rast__q_t_next(e);
+        } else if (e->qX != col) {
+            rast__q_t_first(e, col, c);
+        }
+        for (; col > cb; col--) {
+            uint64_t tx;
+            if (col < c->x0) {
+                rast__q_add(c, c->x0 - 1, 0, 0, t, tb, s);
+                return;
+            }
+            tx = rast__q_t_val(e, off, t, tb);
+            rast__q_add(c, col, fa, 0, t, tx, s);
+            t = tx;
+            fa = QT;
+            rast__q_t_next(e);
+        }
+        rast__q_add(c, cb, QT, fb, t, tb, s);
+    }
+}
+
+/* The level of v (a 2^51, the rule applied when accumulating); *amb set
+ * when a tie is within win / 2^51 of it (see above). */
+static inline uint64_t rast__q_level(const rast__cells *c, int64_t v, uint64_t win, uint64_t *amb)
+{
+    const uint64_t fm = (uint64_t)QONE - 1;
+    uint64_t x, fr, lev;
+    if (c->accumulate) {
+        if (v < 0) v = -v;
+        if (c->rule == RAST_RULE_NONZERO) {
+            if (v > QONE) v = QONE;
+        } else {
+            v &= 2 * QONE - 1; /* mod 2 */
+            if (v > QONE) v = 2 * QONE - v;
+        }
+    } else if (v < 0) {
+        v = 0;
+    } else if (v > QONE) {
+        v = QONE;
+    }
+    if (c->quick == 255) {
+        x = (uint64_t)v * 255 + ((uint64_t)1 << 50);
+        lev = x >> 51;
+        fr = x & fm;
+    } else {
+        rast__i128 p = rast__i128_add(rast__i128_mul(v, (int64_t)c->quick),
+                                      rast__i128_u64((uint64_t)1 << 50));
+        lev = rast__i128_sar(p, 51).lo;
+        fr = p.lo & fm;
+    }
+    if (fr < win || fr > (uint64_t)QONE - win) *amb = 1;
+    return lev;
+}
+
+/* The level of a fast row's value v in uint8, without branches: such
+ * values lie in [-E, 1 + E] (E M 2^51 <= win / 2 < 2^49), where v 255 +
+ * 2^50 needs no clamp to give the levels 0 .. 255; *bad set as
+ * rast__q_level sets *amb. */
+static inline uint64_t rast__q_u8(uint64_t v, uint64_t win, uint64_t *bad)
+{
+    const uint64_t x = v * 255 + ((uint64_t)1 << 50);
+    *bad |= (uint64_t)((x & ((uint64_t)QONE - 1)) - win > (uint64_t)QONE - 2 * win);
+    return x >> 51;
+}
+
+/* Columns [k0, k1) of the row get the level of v; u8: rast__q_u8's. */
+static inline void rast__q_run(const rast__cells *c, unsigned char *row, int32_t k0, int32_t k1,
+                               uint64_t v, uint64_t win, const int u8, uint64_t *bad)
+{
+    uint64_t lev;
+    if (k0 >= k1) return;
+    lev = u8 ? rast__q_u8(v, win, bad) : rast__q_level(c, (int64_t)v, win, bad);
+    if (k1 > k0 + 1)
+        rast__cov_fill(u8 ? RAST_COVERAGE_U8 : c->o->format, row, k0, k1, lev);
+    else if (u8)
+        row[k0] = (unsigned char)lev;
+    else
+        rast__cov_store(c->o->format, row, k0, lev);
+}
+
+/* The quick cells into row y's values, then cleared; u8 (a constant at
+ * each call, so that the compiler makes two loops of this one): a fast
+ * row into uint8, by rast__q_u8.  Returns 1 when a level is not certain. */
+static inline int rast__q_scan(rast__cells *c, unsigned char *row, uint64_t win, const int u8)
+{
+    uint64_t acc = c->qcarry, bad = 0;
+    int32_t k = 0, wi;
+    for (wi = c->wmin; wi <= c->wmax; wi++) {
+        uint64_t b = c->bits[wi];
+        c->bits[wi] = 0;
+        for (; b; b &= b - 1) {
+            int32_t col = (wi << 6) + (int32_t)rast__ctz64(b);
+            rast__q_run(c, row, k, col, acc << 21, win, u8, &bad); /* the run before it */
+            acc += c->cover[col].lo;
+            rast__q_run(c, row, col, col + 1, (acc << 21) - c->cover[col].hi, win, u8, &bad);
+            c->cover[col].lo = c->cover[col].hi = 0;
+            k = col + 1;
+        }
+    }
+    rast__q_run(c, row, k, c->x1 - c->x0, acc << 21, win, u8, &bad);
+    return bad != 0;
+}
+
+/* The quick cells into row y, then cleared: 1 (the row is done, handed
+ * on), or 0 when a level is not certain (the row is left to the exact
+ * way; its values written here are all written again). */
+static int rast__q_emit(rast__cells *c, int32_t y, int32_t nrow)
+{
+    const rast__cov_out *o = c->o;
+    unsigned char *row = rast__cov_row(o, y);
+    uint64_t win = ((uint64_t)nrow + 1) * c->quick << 24;
+    int amb = o->format == RAST_COVERAGE_U8 && !c->accumulate ? rast__q_scan(c, row, win, 1)
+                                                              : rast__q_scan(c, row, win, 0);
+    c->qcarry = 0;
+    c->wmin = INT32_MAX;
+    c->wmax = -1;
+    if (amb) return 0;
+    rast__cov_row_done(o, y);
+    c->emitted = 1;
+    return 1;
+}
+
+/* May a row of nrow parts be added the quick way?  (The bound needs
+ * (n + 1) M < 2^25; past 511 parts a row would too often be added twice.) */
+static int rast__q_may(const rast__cells *c, int32_t nrow)
+{
+    return c->quick && nrow < 512 && ((uint64_t)nrow + 1) * c->quick < ((uint64_t)1 << 25);
+}
+
 /* ---- the fast row --------------------------------------------------------
  *
  * When the winding number takes, everywhere in the row's strip, only the
@@ -880,6 +1240,23 @@ static void rast__fast_add(rast__cells *c, rast__cedge *e, const int32_t *row, i
 {
     const int64_t Yj = (int64_t)j * c->p;
     int32_t k;
+    if (rast__q_may(c, nrow)) {
+        for (k = 0; k < nrow; k++) {
+            rast__cedge *ed = &e[row[k]];
+            int64_t rel1 = (int64_t)ed->yt + ed->dy - Yj;
+            uint64_t t1 = rel1 >= c->p ? T : (uint64_t)rel1 << c->h;
+            rast__q_piece(c, ed, Yj, rast__q_x(ed->x), ed->tx >> (G - QF), rast__q_x(ed->xn),
+                          t1 >> (G - QF), ed->dir * s);
+        }
+        if (rast__q_emit(c, j, nrow)) {
+            for (k = 0; k < nrow; k++) {
+                rast__cedge *ed = &e[row[k]];
+                int64_t rel1 = (int64_t)ed->yt + ed->dy - Yj;
+                rast__cov_x_keep(ed, j, rel1 >= c->p ? T : (uint64_t)rel1 << c->h);
+            }
+            return;
+        }
+    }
     for (k = 0; k < nrow; k++) {
         rast__cedge *ed = &e[row[k]];
         int64_t rel1 = (int64_t)ed->yt + ed->dy - Yj;
@@ -1008,15 +1385,34 @@ static void rast__cov_row_acc(rast__cells *c, rast__cedge *e, const int32_t *row
                               int32_t j)
 {
     const int64_t Yj = (int64_t)j * c->p;
+    int quick = rast__q_may(c, nrow);
     int32_t k;
     for (k = 0; k < nrow; k++) {
         rast__cedge *ed = &e[row[k]];
         int64_t rel0 = (int64_t)ed->yt - Yj, rel1 = (int64_t)ed->yt + ed->dy - Yj;
         uint64_t t0 = rel0 <= 0 ? 0 : (uint64_t)rel0 << c->h;
         uint64_t t1 = rel1 >= c->p ? T : (uint64_t)rel1 << c->h;
-        if (ed->rowx != j || ed->tx != t0) rast__cov_x_at(ed, Yj, t0, c->h, &ed->x, &ed->r);
+        if (ed->rowx != j || ed->tx != t0) {
+            rast__cov_x_at(ed, Yj, t0, c->h, &ed->x, &ed->r);
+            ed->rowx = j;
+            ed->tx = t0;
+        }
         rast__cov_x_end(ed, Yj, t0, t1, c->h);
-        rast__cells_piece(c, ed, Yj, ed->x, t0, ed->xn, t1, ed->dir);
+        if (quick)
+            rast__q_piece(c, ed, Yj, rast__q_x(ed->x), t0 >> (G - QF), rast__q_x(ed->xn),
+                          t1 >> (G - QF), ed->dir);
+        else {
+            rast__cells_piece(c, ed, Yj, ed->x, t0, ed->xn, t1, ed->dir);
+            rast__cov_x_keep(ed, j, t1);
+        }
+    }
+    if (!quick) return;
+    quick = rast__q_emit(c, j, nrow);
+    for (k = 0; k < nrow; k++) {
+        rast__cedge *ed = &e[row[k]];
+        int64_t rel1 = (int64_t)ed->yt + ed->dy - Yj;
+        uint64_t t1 = rel1 >= c->p ? T : (uint64_t)rel1 << c->h;
+        if (!quick) rast__cells_piece(c, ed, Yj, ed->x, ed->tx, ed->xn, t1, ed->dir);
         rast__cov_x_keep(ed, j, t1);
     }
 }
@@ -1054,6 +1450,11 @@ rast_status rast__cov_area(rast__cedge *e, uint32_t n, int32_t s, rast_fill_rule
     c.h = G - s;
     c.p = (int32_t)1 << s;
     c.accumulate = accumulate;
+    c.qcarry = 0;
+    c.o = o;
+    c.rule = rule;
+    c.quick = o->format == RAST_COVERAGE_U8 ? 255 : o->format == RAST_COVERAGE_U16 ? 65535 : 0;
+    c.emitted = 0;
 
     if (n == 0) {
         rast__cov_zero_rows(o, o->clip.y0, o->clip.y1);
@@ -1101,7 +1502,8 @@ rast_status rast__cov_area(rast__cedge *e, uint32_t n, int32_t s, rast_fill_rule
         } else {
             fast = 0;
         }
-        rast__cells_emit(&c, o, j, rule);
+        if (!c.emitted) rast__cells_emit(&c, o, j, rule);
+        c.emitted = 0;
     }
     rast__cov_zero_rows(o, jb, o->clip.y1);
     return RAST_OK;

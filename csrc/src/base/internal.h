@@ -243,33 +243,69 @@ static inline int rast__edge_setup_inline(rast__edge *ed, rast_point a, rast_poi
 #define rast__edge_setup_tri rast__edge_setup_inline
 #endif
 
-/* A painter's entry: the spans of row y, xs[2k] <= i < xs[2k+1] for
+/* ---- the pipeline: fillers -> sink -> painter ------------------------------
+ * A filler decides WHICH pixels a primitive covers and how much; a painter
+ * decides WHAT they get.  Between them runs (y, x0, x1) carry a coverage:
+ *  - a full run: every pixel of [x0, x1) covered whole (what a binary
+ *    filler gives), handed on a row at a time as spans;
+ *  - a levels run: pixel x0 + k covered cov[k] / 255 (uint8 levels,
+ *    floor(a 255 + 1/2), none of them 0), what a coverage method gives.
+ * A painter is one struct with an entry for each (rast__painter); the
+ * binary fillers feed its full entry through a sink (below), the coverage
+ * methods its levels entry, and its full entry with long stretches
+ * covered whole, through rast__cov_row_done (coverage/coverage.h). */
+
+/* A painter's full entry: the spans of row y, xs[2k] <= i < xs[2k+1] for
  * k < n, in increasing x, each non-empty, none touching the next. */
 typedef void (*rast__row_fn)(void *user, int32_t y, const int32_t *xs, int32_t n);
+
+/* A painter's levels entry: columns [x0, x1) of row y (x0 < x1), pixel
+ * x0 + k with coverage level cov[k] (1..255). */
+typedef void (*rast__levels_fn)(void *user, int32_t y, int32_t x0, int32_t x1,
+                                const uint8_t *cov);
+
+/* A painter.  `full` and `levels` take `user`; an entry a painter has no
+ * use for is NULL (the opaque painter and a rast_span_fn take full runs
+ * only, a rast_coverage_span_fn levels runs only: no public call feeds
+ * them the other kind).
+ *
+ * `bytes`, when not NULL, is the painter's fast kind, which a sink may
+ * take instead of calling `full` (rast__rows_put): its full runs set
+ * one-byte pixels to `value`, rows of `stride` bytes from `bytes` (a row
+ * run is one memset at bytes + y stride + x0).  The solid painter of a
+ * one-byte format says so (paint.c); a filler only sees "one-byte rows",
+ * never a format.  The same pixels as `full`, without the indirect call,
+ * the painter's loop and its reloads for a run of a few pixels.  The
+ * library memset is also the fastest way to write a few bytes of unknown
+ * count on common CPUs: overlapping 1..8-byte stores inline were slower,
+ * their size tests mispredicting. */
+typedef struct rast__painter {
+    rast__row_fn full;
+    rast__levels_fn levels;
+    void *user;
+    unsigned char *bytes;
+    ptrdiff_t stride;
+    unsigned char value;
+} rast__painter;
 
 /* Spans a sink gathers before handing them on; a longer row goes in parts. */
 #define RAST__SINK_SPANS 64
 
-/* Where spans go.  A filler calls rast__sink_span for each inside run of a
- * row, rows in increasing order and runs in increasing x; the sink clips to
- * the clip columns, merges runs that touch, and hands each row's spans to
- * the painter in one call. */
+/* Where a binary filler's runs go.  A filler calls rast__sink_span for
+ * each inside run of a row, rows in increasing order and runs in
+ * increasing x; the sink clips to the clip columns, merges runs that
+ * touch, and hands each row's spans to the painter's full entry in one
+ * call.  A triangle filler hands one run per row through rast__rows_put /
+ * rast__rows_emit instead, which take the painter's fast kind when it has
+ * one. */
 typedef struct rast__sink {
-    rast__row_fn fn;
+    rast__row_fn fn;  /* the painter's full entry and its user */
     void *user;
     int32_t cx0, cx1; /* clip columns */
     int32_t y;        /* row of the gathered spans */
     int32_t n;        /* spans gathered */
     int32_t xs[2 * RAST__SINK_SPANS];
-    /* A fast path behind rast__rows_put, set by rast__sink_direct8 when
-     * `fn` is the solid painter of a one-byte format: rows of pixels at
-     * direct + y * stride, each run written by one memset in the
-     * filler's loop instead of through `fn` (the same pixels, without an
-     * indirect call, the painter's loop and its reloads for a run of a
-     * few pixels).  The library memset is also the fastest way to write a
-     * few bytes of unknown count on common CPUs: overlapping 1..8-byte
-     * stores inline were slower, their size tests mispredicting.  NULL
-     * otherwise: every run goes to `fn`. */
+    /* the painter's fast kind (rast__painter::bytes), NULL when none */
     unsigned char *direct;
     ptrdiff_t stride;
     int value;
@@ -313,7 +349,7 @@ static inline void rast__sink_span(rast__sink *s, int32_t y, int32_t x0, int32_t
  * the sink must be empty (flushed); the runs bypass its gathering. */
 typedef struct rast__rows {
     rast__sink *sink;
-    unsigned char *direct; /* see rast__sink::direct */
+    unsigned char *direct; /* the painter's fast kind (rast__painter::bytes) */
     ptrdiff_t stride;
     int value;
     int32_t cx0, cx1;
@@ -398,28 +434,19 @@ static inline size_t rast__size_add(size_t a, size_t b)
     return a > (size_t)-1 - b ? (size_t)-1 : a + b;
 }
 
-/* A sink handing the spans inside `clip`'s columns to `fn`. */
-static inline void rast__sink_init(rast__sink *s, rast__row_fn fn, void *user,
-                                   const rast_rect *clip)
+/* A sink handing the runs inside `clip`'s columns to painter p (its full
+ * entry, or its fast kind). */
+static inline void rast__sink_init(rast__sink *s, const rast__painter *p, const rast_rect *clip)
 {
-    s->fn = fn;
-    s->user = user;
+    s->fn = p->full;
+    s->user = p->user;
     s->cx0 = clip->x0;
     s->cx1 = clip->x1;
     s->y = clip->y0;
     s->n = 0;
-    s->direct = NULL;
-}
-
-/* Turn on the sink's inline path (see rast__sink::direct) for one-byte
- * pixels `value` in rows of `stride` bytes from `base`; only for the solid
- * painter of such a target, which writes the same. */
-static inline void rast__sink_direct8(rast__sink *s, unsigned char *base, ptrdiff_t stride,
-                                      unsigned char value)
-{
-    s->direct = base;
-    s->stride = stride;
-    s->value = value;
+    s->direct = p->bytes;
+    s->stride = p->stride;
+    s->value = p->value;
 }
 
 /* A caller's scratch, checked before anything is written: at least `need`
@@ -444,6 +471,15 @@ static inline size_t rast__align(size_t n)
 {
     if (n > (size_t)-1 - (RAST_SCRATCH_ALIGN - 1)) return (size_t)-1;
     return (n + (RAST_SCRATCH_ALIGN - 1)) & ~(size_t)(RAST_SCRATCH_ALIGN - 1);
+}
+
+/* An arena over the caller's whole scratch. */
+static inline rast__arena rast__arena_of(void *scratch, size_t bytes)
+{
+    rast__arena a;
+    a.p = (unsigned char *)scratch;
+    a.left = bytes;
+    return a;
 }
 
 static inline void *rast__take(rast__arena *a, size_t n)
@@ -575,6 +611,13 @@ size_t rast__tri_edgeflag_scratch(int32_t width, int32_t height);
 int rast__tri_span_flags(const rast_point *t, const rast__grid *g,
                          int32_t row_lo, int32_t row_hi, int32_t *span_left,
                          int32_t *span_right, int32_t *r0, int32_t *r1);
+
+/* The rectangle filler (rect.c): the pixels of the rectangle
+ * [x0, x0 + w) x [y0, y0 + h) (internal units, w, h > 0, every corner
+ * within the input range), those of its polygon fill, cut to `clip`
+ * (maybe empty), row by row from the top, a full run per row to painter p. */
+void rast__rect_fill(int64_t x0, int64_t y0, int64_t w, int64_t h, const rast__grid *g,
+                     const rast_rect *clip, const rast__painter *p);
 
 /* The AET filler (aet.c). */
 rast_status rast__aet_fill(const rast_polygon *poly, uint32_t npoints,

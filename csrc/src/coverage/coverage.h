@@ -142,13 +142,16 @@ typedef struct rast__cov_out {
     ptrdiff_t stride;
     rast_coverage_format format;
     rast_rect clip;
-    /* rast_polygon_coverage_spans: base is one row (stride 0), handed on
-     * by rast__cov_row_done; NULL otherwise */
-    rast_coverage_span_fn span;
-    void *user;
+    /* a painter (rast__cov_paint: the span entry points, the anti-aliased
+     * fills): base is one row of U8 levels (stride 0), handed on by
+     * rast__cov_row_done as levels runs; NULL for an array */
+    const rast__painter *paint;
 } rast__cov_out;
 
-/* Row y is complete: hand its runs of values not 0 to o->span, if any. */
+/* Row y is complete: hand its runs of values not 0 to the painter, if
+ * there is one: to its levels entry, except that a stretch of 255 at
+ * least RAST__COV_FULL_MIN long goes to its full entry when it has one
+ * (the same pixels: a blend at 255 writes what a fill writes). */
 void rast__cov_row_done(const rast__cov_out *o, int32_t y);
 
 /* The value stored for coverage a62 / 2^62 (0 <= a62 <= 2^62): a62 itself

@@ -5,22 +5,26 @@
  * is right for a display fed a few rows at a time and wrong for 20,000
  * small polygons burnt into one large raster: there each polygon should be
  * set up once, over the rows it covers.  So here each polygon's clip is cut
- * to rast_fill_bounds (its box within the clip) and it is drawn by
- * rast_fill_polygon_spans in one go; the scratch is that of the largest
- * polygon's own box.  A caller that does want bands passes a band as the
- * clip.
+ * to its bounds (rast_fill_bounds: its box within the clip) and it is
+ * filled in one go; the scratch is that of the largest polygon's own box.
+ * A caller that does want bands passes a band as the clip.
  *
- * Every polygon is checked, and its scratch compared with what the caller
- * gave, before the first span: the call draws the whole batch or nothing.
+ * The options are checked once, every polygon once (in the pass that
+ * measures it), and its scratch compared with what the caller gave,
+ * before the first span: the call draws the whole batch or nothing.  The
+ * drawing pass measures each polygon's bounds again and fills it through
+ * the checked fill (rast__fill_checked, rast__fill64_checked), which
+ * checks nothing.
  */
 #include "painters/paint.h"
 
-/* A batch of rast_polygon (wide == 0) or rast_polygon64 (wide == 1);
- * for 32-bit ones the options checked once (f). */
+/* A batch of rast_polygon (wide == 0) or rast_polygon64 (wide == 1),
+ * with the options checked once (f, or g64 for 64-bit ones). */
 typedef struct rast__polys {
     const void *p;
     int wide;
     rast__fill_setup f;
+    rast__grid64 g64;
 } rast__polys;
 
 static rast__polys rast__polys_of(const void *p, int wide)
@@ -32,34 +36,26 @@ static rast__polys rast__polys_of(const void *p, int wide)
 }
 
 /* What polygon k of the batch needs in span clip c: its bounds, vertex
- * count and scratch.  A 32-bit polygon is checked and measured in one pass
- * over its vertices (rast__fill_measure), with the options checked once
- * for the batch. */
+ * count and scratch.  The polygon is checked and measured in one pass
+ * over its vertices (rast__fill_measure, rast__fill64_measure), with the
+ * options checked once for the batch. */
 static rast_status rast__batch_need(const rast__polys *ps, uint32_t k, const rast_fill_opts *opts,
                                     const rast_rect *c, rast_rect *b, uint32_t *npoints,
                                     size_t *need)
 {
-    const uint32_t *sizes;
-    uint32_t i, nrings;
     rast_status st;
     *npoints = 0;
-    if (!ps->wide) {
+    if (!ps->wide)
         st = rast__fill_measure(&ps->f, (const rast_polygon *)ps->p + k, c, npoints, b);
-        if (st != RAST_OK) return st;
-        /* rast_scratch_size's limit on the clip's sides */
-        if (b->x1 - b->x0 > RAST_MAX_DIM || b->y1 - b->y0 > RAST_MAX_DIM) return RAST_E_SIZE;
-        *need = rast__fill_scratch(&ps->f, *npoints, b->x1 - b->x0, b->y1 - b->y0);
-        return RAST_OK;
-    } else {
-        const rast_polygon64 *p = (const rast_polygon64 *)ps->p + k;
-        st = rast_fill_bounds64(opts, p, c, b);
-        sizes = p->ring_sizes;
-        nrings = p->nrings;
-    }
+    else
+        st = rast__fill64_measure(opts, &ps->g64, (const rast_polygon64 *)ps->p + k, c, npoints,
+                                  b);
     if (st != RAST_OK) return st;
-    /* rast_fill_bounds64 has checked the ring sizes and their sum. */
-    for (i = 0; i < nrings; i++) *npoints += sizes[i];
-    return rast_scratch_size64(opts, *npoints, b->x1 - b->x0, b->y1 - b->y0, need);
+    /* rast_scratch_size's (rast_scratch_size64's) limit on the clip's sides */
+    if (b->x1 - b->x0 > RAST_MAX_DIM || b->y1 - b->y0 > RAST_MAX_DIM) return RAST_E_SIZE;
+    *need = ps->wide ? rast__fill64_scratch(opts, *npoints, b->y1 - b->y0)
+                     : rast__fill_scratch(&ps->f, *npoints, b->x1 - b->x0, b->y1 - b->y0);
+    return RAST_OK;
 }
 
 /* The batch's checks and its largest need; *failed names the polygon. */
@@ -74,7 +70,7 @@ static rast_status rast__batch_check(rast__polys *ps, uint32_t n, const rast_fil
     st = rast__span_clip(clip, &c);
     if (st != RAST_OK) return st;
     /* The options are the batch's: their errors name no polygon. */
-    st = ps->wide ? rast_scratch_size64(opts, 0, 0, 0, most) : rast__fill_prepare(opts, &ps->f);
+    st = ps->wide ? rast__fill64_prepare(opts, &ps->g64) : rast__fill_prepare(opts, &ps->f);
     if (st != RAST_OK) return st;
     *most = 0;
     for (k = 0; k < n; k++) {
@@ -121,13 +117,7 @@ typedef struct rast__batch {
     uint32_t index;
 } rast__batch;
 
-static void rast__batch_span(void *user, int32_t y, int32_t x0, int32_t x1)
-{
-    const rast__batch *b = (const rast__batch *)user;
-    b->span(b->user, b->index, y, x0, x1);
-}
-
-/* The same as the painter of a 32-bit polygon's row of spans. */
+/* The painter: each full run to the batch's callback, with the index. */
 static void rast__batch_row(void *user, int32_t y, const int32_t *xs, int32_t n)
 {
     const rast__batch *b = (const rast__batch *)user;
@@ -140,6 +130,7 @@ static rast_status rast__batch_fill(rast__polys *ps, uint32_t n, const rast_fill
                                     void *scratch, size_t scratch_bytes, uint32_t *failed)
 {
     rast__batch ctx;
+    rast__painter painter;
     rast_rect c, b;
     size_t most, need;
     uint32_t k, npoints;
@@ -162,20 +153,23 @@ static rast_status rast__batch_fill(rast__polys *ps, uint32_t n, const rast_fill
 
     ctx.span = span;
     ctx.user = user;
+    memset(&painter, 0, sizeof painter);
+    painter.full = rast__batch_row;
+    painter.user = &ctx;
     for (k = 0; k < n; k++) {
         ctx.index = k;
         /* checked above: the bounds again, the polygon drawn in them */
         if (ps->wide) {
-            rast__batch_need(ps, k, opts, &c, &b, &npoints, &need);
+            const rast_polygon64 *p = (const rast_polygon64 *)ps->p + k;
+            rast__fill64_measure(opts, &ps->g64, p, &c, &npoints, &b);
             if (b.x0 == b.x1 || b.y0 == b.y1) continue;
-            st = rast_fill_polygon64_spans((const rast_polygon64 *)ps->p + k, opts, &b,
-                                           rast__batch_span, &ctx, scratch, scratch_bytes);
+            st = rast__fill64_checked(p, npoints, opts, &ps->g64, &b, &painter, scratch,
+                                      scratch_bytes);
         } else {
             const rast_polygon *p = (const rast_polygon *)ps->p + k;
             rast__fill_measure(&ps->f, p, &c, &npoints, &b);
             if (b.x0 == b.x1 || b.y0 == b.y1) continue;
-            st = rast__fill_checked(&ps->f, p, npoints, &b, rast__batch_row, &ctx, scratch,
-                                    scratch_bytes);
+            st = rast__fill_checked(&ps->f, p, npoints, &b, &painter, scratch, scratch_bytes);
         }
         if (st != RAST_OK) return st; /* not reached: everything was checked */
     }

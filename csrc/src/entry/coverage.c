@@ -60,17 +60,48 @@ rast_status rast_coverage_scratch_size(const rast_coverage_opts *opts, uint32_t 
     return RAST_OK;
 }
 
+/* A stretch of level 255 at least this long goes to a painter's full
+ * entry (a fill: a memset for one-byte pixels) instead of its levels
+ * entry (a blend per pixel); shorter ones stay in their levels run, where
+ * a blend of a few pixels costs less than another call.  The pixels are
+ * the same either way: a blend at 255 writes what a fill writes. */
+#define RAST__COV_FULL_MIN 16
+
 void rast__cov_row_done(const rast__cov_out *o, int32_t y)
 {
     const unsigned char *row = o->base;
-    int32_t k = 0, w = o->clip.x1 - o->clip.x0;
-    if (!o->span) return;
+    const rast__painter *p = o->paint;
+    int32_t k = 0, w, x0;
+    unsigned lim;
+    if (!p) return;
+    w = o->clip.x1 - o->clip.x0;
+    x0 = o->clip.x0;
+    /* Each run of levels not 0 to the levels entry; when the painter takes
+     * full runs too, its long stretches of 255 go to the full entry.  One
+     * pass, one test a pixel: levels 1..lim go on (lim 254 when a 255 must
+     * stop the scan, else 255); `start` is the first column not handed on
+     * yet. */
+    lim = p->full ? 254u : 255u;
     while (k < w) {
-        int32_t k0;
+        int32_t start;
         while (k < w && !row[k]) k++;
-        k0 = k;
-        while (k < w && row[k]) k++;
-        if (k > k0) o->span(o->user, y, o->clip.x0 + k0, o->clip.x0 + k, row + k0);
+        start = k;
+        for (;;) {
+            int32_t f;
+            while (k < w && (unsigned)row[k] - 1u < lim) k++;
+            if (k == w || row[k] != 255) break; /* a 255 stops it only for a full entry */
+            f = k;
+            while (k < w && row[k] == 255) k++;
+            if (k - f >= RAST__COV_FULL_MIN) {
+                int32_t xs[2];
+                if (f > start) p->levels(p->user, y, x0 + start, x0 + f, row + start);
+                xs[0] = x0 + f;
+                xs[1] = x0 + k;
+                p->full(p->user, y, xs, 1);
+                start = k;
+            }
+        }
+        if (k > start) p->levels(p->user, y, x0 + start, x0 + k, row + start);
     }
 }
 
@@ -78,7 +109,7 @@ void rast__cov_zero_rows(const rast__cov_out *o, int32_t y0, int32_t y1)
 {
     static const int32_t size[3] = {1, 2, 8};
     int32_t y;
-    if (o->span) return; /* nothing to hand on */
+    if (o->paint) return; /* nothing to hand on */
     for (y = y0; y < y1; y++)
         memset(rast__cov_row(o, y), 0,
                (size_t)(o->clip.x1 - o->clip.x0) * (size_t)size[o->format]);
@@ -100,11 +131,12 @@ static rast_status rast__cov_check_points(const rast_point *p, uint32_t n, int32
 }
 
 /* Everything but the geometry: options, output, clip, and (given the
- * vertex count) the scratch.  *o is set up for the cut clip. */
+ * vertex count) the scratch, for the clip's rows or, when fewer, `rows`
+ * rows (a band of it).  *o is set up for the cut clip. */
 static rast_status rast__cov_begin(const rast_coverage_opts *opts, const rast_rect *clip,
                                    rast_coverage_format format, void *out, ptrdiff_t stride,
                                    uint32_t npoints, void *scratch, size_t scratch_bytes,
-                                   rast__cov_out *o, int spans)
+                                   rast__cov_out *o, int spans, int32_t rows)
 {
     static const int32_t size[3] = {1, 2, 8};
     rast_status st = rast__cov_check_opts(opts);
@@ -129,13 +161,13 @@ static rast_status rast__cov_begin(const rast_coverage_opts *opts, const rast_re
             stride < (ptrdiff_t)w * size[format])
             return RAST_E_ARG;
     }
-    st = rast__scratch_check(scratch, scratch_bytes, rast__cov_need(opts, npoints, w, h));
+    st = rast__scratch_check(scratch, scratch_bytes,
+                             rast__cov_need(opts, npoints, w, h < rows ? h : rows));
     if (st != RAST_OK) return st;
     o->base = (unsigned char *)out;
     o->stride = stride;
     o->format = format;
-    o->span = NULL;
-    o->user = NULL;
+    o->paint = NULL;
     return RAST_OK;
 }
 
@@ -262,32 +294,50 @@ static rast_status rast__cov_count(const rast_polygon *polygon, uint32_t *npoint
 
 /* What every entry point does once its geometry is counted: options,
  * output and scratch checked (rast__cov_begin), the vertices checked,
- * then the method run.  `span` not NULL: the values go to it, row by row,
- * through a row buffer at the scratch's start (rast__cov_run skips it). */
+ * then the method run.  `paint` not NULL: the levels go to it, row by
+ * row, through a row buffer at the scratch's start (rast__cov_run skips
+ * it). */
+static rast_status rast__cov_check(const rast_polygon *poly, const rast_point *tris, uint32_t n,
+                                   const rast_coverage_opts *opts, const rast_rect *clip,
+                                   rast_coverage_format format, void *out, ptrdiff_t stride,
+                                   int paint, void *scratch, size_t scratch_bytes,
+                                   rast__cov_out *o, int32_t rows)
+{
+    int32_t kb;
+    rast_status st = rast__cov_begin(opts, clip, paint ? RAST_COVERAGE_U8 : format, out, stride, n,
+                                     scratch, scratch_bytes, o, paint, rows);
+    if (st != RAST_OK) return st;
+    kb = rast__aa_kbits(opts->method);
+    return rast__cov_check_points(poly ? poly->points : tris, n,
+                                  kb > opts->subpixel_bits ? kb - opts->subpixel_bits : 0);
+}
+
+/* The method run into *o (checked), or into painter `paint`. */
+static rast_status rast__cov_go(const rast_polygon *poly, const rast_point *tris, uint32_t ntris,
+                                uint32_t n, const rast_coverage_opts *opts, rast__cov_out *o,
+                                const rast__painter *paint, void *scratch, size_t scratch_bytes)
+{
+    static const rast_point none[3] = {{0, 0}, {0, 0}, {0, 0}};
+    if (paint) {
+        o->base = (unsigned char *)scratch;
+        o->stride = 0;
+        o->paint = paint;
+    }
+    if (!poly && !ntris) tris = none;
+    return rast__cov_run(poly, tris, ntris, n, opts, o, scratch, scratch_bytes);
+}
+
 static rast_status rast__cov_entry(const rast_polygon *poly, const rast_point *tris,
                                    uint32_t ntris, uint32_t n, const rast_coverage_opts *opts,
                                    const rast_rect *clip, rast_coverage_format format, void *out,
-                                   ptrdiff_t stride, rast_coverage_span_fn span, void *user,
-                                   void *scratch, size_t scratch_bytes)
+                                   ptrdiff_t stride, const rast__painter *paint, void *scratch,
+                                   size_t scratch_bytes)
 {
-    static const rast_point none[3] = {{0, 0}, {0, 0}, {0, 0}};
     rast__cov_out o;
-    int32_t kb;
-    rast_status st = rast__cov_begin(opts, clip, span ? RAST_COVERAGE_U8 : format, out, stride, n,
-                                     scratch, scratch_bytes, &o, span != NULL);
+    rast_status st = rast__cov_check(poly, tris, n, opts, clip, format, out, stride, paint != NULL,
+                                     scratch, scratch_bytes, &o, INT32_MAX);
     if (st != RAST_OK) return st;
-    kb = rast__aa_kbits(opts->method);
-    st = rast__cov_check_points(poly ? poly->points : tris, n,
-                                kb > opts->subpixel_bits ? kb - opts->subpixel_bits : 0);
-    if (st != RAST_OK) return st;
-    if (span) {
-        o.base = (unsigned char *)scratch;
-        o.stride = 0;
-        o.span = span;
-        o.user = user;
-    }
-    if (!poly && !ntris) tris = none;
-    return rast__cov_run(poly, tris, ntris, n, opts, &o, scratch, scratch_bytes);
+    return rast__cov_go(poly, tris, ntris, n, opts, &o, paint, scratch, scratch_bytes);
 }
 
 rast_status rast_polygon_coverage(const rast_polygon *polygon, const rast_coverage_opts *opts,
@@ -299,8 +349,8 @@ rast_status rast_polygon_coverage(const rast_polygon *polygon, const rast_covera
     if (!polygon) return RAST_E_NULL;
     st = rast__cov_count(polygon, &n);
     if (st != RAST_OK) return st;
-    return rast__cov_entry(polygon, NULL, 0, n, opts, clip, format, out, stride, NULL, NULL,
-                           scratch, scratch_bytes);
+    return rast__cov_entry(polygon, NULL, 0, n, opts, clip, format, out, stride, NULL, scratch,
+                           scratch_bytes);
 }
 
 rast_status rast_triangles_coverage(const rast_point *tris, uint32_t ntris,
@@ -311,7 +361,61 @@ rast_status rast_triangles_coverage(const rast_point *tris, uint32_t ntris,
     if (ntris > RAST_MAX_POINTS / 3) return RAST_E_TOO_MANY;
     if (ntris > 0 && !tris) return RAST_E_NULL;
     return rast__cov_entry(NULL, tris, ntris, 3 * ntris, opts, clip, format, out, stride, NULL,
-                           NULL, scratch, scratch_bytes);
+                           scratch, scratch_bytes);
+}
+
+/* The checks of the painting entry points (geometry counted, then
+ * rast__cov_check), *o set up for the clip. */
+static rast_status rast__cov_paint_prepare(const rast_polygon *poly, const rast_point *tris,
+                                           uint32_t ntris, const rast_coverage_opts *opts,
+                                           const rast_rect *clip, int32_t rows, void *scratch,
+                                           size_t scratch_bytes, uint32_t *npoints,
+                                           rast__cov_out *o)
+{
+    rast_status st;
+    if (poly) {
+        st = rast__cov_count(poly, npoints);
+        if (st != RAST_OK) return st;
+    } else {
+        if (ntris > RAST_MAX_POINTS / 3) return RAST_E_TOO_MANY;
+        if (ntris > 0 && !tris) return RAST_E_NULL;
+        *npoints = 3 * ntris;
+    }
+    return rast__cov_check(poly, tris, *npoints, opts, clip, RAST_COVERAGE_U8, NULL, 0, 1, scratch,
+                           scratch_bytes, o, rows);
+}
+
+rast_status rast__cov_paint_check(const rast_polygon *poly, const rast_point *tris,
+                                  uint32_t ntris, const rast_coverage_opts *opts,
+                                  const rast_rect *clip, int32_t rows, void *scratch,
+                                  size_t scratch_bytes, uint32_t *npoints)
+{
+    rast__cov_out o;
+    return rast__cov_paint_prepare(poly, tris, ntris, opts, clip, rows, scratch, scratch_bytes,
+                                   npoints, &o);
+}
+
+rast_status rast__cov_paint_checked(const rast_polygon *poly, const rast_point *tris,
+                                    uint32_t ntris, uint32_t npoints,
+                                    const rast_coverage_opts *opts, const rast_rect *clip,
+                                    const rast__painter *p, void *scratch, size_t scratch_bytes)
+{
+    rast__cov_out o;
+    o.clip = *clip;
+    o.format = RAST_COVERAGE_U8;
+    return rast__cov_go(poly, tris, ntris, npoints, opts, &o, p, scratch, scratch_bytes);
+}
+
+rast_status rast__cov_paint(const rast_polygon *poly, const rast_point *tris, uint32_t ntris,
+                            const rast_coverage_opts *opts, const rast_rect *clip,
+                            const rast__painter *p, void *scratch, size_t scratch_bytes)
+{
+    rast__cov_out o;
+    uint32_t n = 0;
+    rast_status st = rast__cov_paint_prepare(poly, tris, ntris, opts, clip, INT32_MAX, scratch,
+                                             scratch_bytes, &n, &o);
+    if (st != RAST_OK) return st;
+    return rast__cov_go(poly, tris, ntris, n, opts, &o, p, scratch, scratch_bytes);
 }
 
 rast_status rast_polygon_coverage_spans(const rast_polygon *polygon,
@@ -319,13 +423,11 @@ rast_status rast_polygon_coverage_spans(const rast_polygon *polygon,
                                         rast_coverage_span_fn span, void *user, void *scratch,
                                         size_t scratch_bytes)
 {
-    rast_status st;
-    uint32_t n = 0;
+    rast__user_spans u;
+    rast__painter p;
     if (!polygon || !span || !clip) return RAST_E_NULL;
-    st = rast__cov_count(polygon, &n);
-    if (st != RAST_OK) return st;
-    return rast__cov_entry(polygon, NULL, 0, n, opts, clip, RAST_COVERAGE_U8, NULL, 0, span, user,
-                           scratch, scratch_bytes);
+    rast__user_painter(&u, NULL, span, user, &p);
+    return rast__cov_paint(polygon, NULL, 0, opts, clip, &p, scratch, scratch_bytes);
 }
 
 rast_status rast_triangles_coverage_spans(const rast_point *tris, uint32_t ntris,
@@ -333,9 +435,9 @@ rast_status rast_triangles_coverage_spans(const rast_point *tris, uint32_t ntris
                                           rast_coverage_span_fn span, void *user, void *scratch,
                                           size_t scratch_bytes)
 {
+    rast__user_spans u;
+    rast__painter p;
     if (!span || !clip) return RAST_E_NULL;
-    if (ntris > RAST_MAX_POINTS / 3) return RAST_E_TOO_MANY;
-    if (ntris > 0 && !tris) return RAST_E_NULL;
-    return rast__cov_entry(NULL, tris, ntris, 3 * ntris, opts, clip, RAST_COVERAGE_U8, NULL, 0,
-                           span, user, scratch, scratch_bytes);
+    rast__user_painter(&u, NULL, span, user, &p);
+    return rast__cov_paint(NULL, tris, ntris, opts, clip, &p, scratch, scratch_bytes);
 }

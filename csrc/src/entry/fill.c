@@ -94,16 +94,14 @@ size_t rast__fill_scratch(const rast__fill_setup *f, uint32_t npoints, int32_t w
 }
 
 rast_status rast__fill_checked(const rast__fill_setup *f, const rast_polygon *poly,
-                               uint32_t npoints, const rast_rect *clip, rast__row_fn fn,
-                               void *user, void *scratch, size_t scratch_bytes)
+                               uint32_t npoints, const rast_rect *clip, const rast__painter *p,
+                               void *scratch, size_t scratch_bytes)
 {
     rast__sink sink;
-    rast__arena arena;
+    rast__arena arena = rast__arena_of(scratch, scratch_bytes);
     rast_status st;
 
-    rast__sink_init(&sink, fn, user, clip);
-    arena.p = (unsigned char *)scratch;
-    arena.left = scratch_bytes;
+    rast__sink_init(&sink, p, clip);
     if (f->opts->boundary == RAST_BOUNDARY_EXACT)
         return f->al->fill(poly, npoints, &f->g, f->opts->rule, clip, &sink, &arena);
     {
@@ -117,7 +115,7 @@ rast_status rast__fill_checked(const rast__fill_setup *f, const rast_polygon *po
 
 /* Check the polygon, options and scratch for a clip; run the filler. */
 static rast_status rast__fill(const void *polygon, const rast_fill_opts *opts,
-                              const rast_rect *clip, rast__row_fn fn, void *user,
+                              const rast_rect *clip, const rast__painter *p,
                               void *scratch, size_t scratch_bytes)
 {
     const rast_polygon *poly = (const rast_polygon *)polygon;
@@ -134,7 +132,7 @@ static rast_status rast__fill(const void *polygon, const rast_fill_opts *opts,
     st = rast__scratch_check(scratch, scratch_bytes, need);
     if (st != RAST_OK) return st;
     if (clip->x0 >= clip->x1 || clip->y0 >= clip->y1) return RAST_OK;
-    return rast__fill_checked(&f, poly, npoints, clip, fn, user, scratch, scratch_bytes);
+    return rast__fill_checked(&f, poly, npoints, clip, p, scratch, scratch_bytes);
 }
 
 rast_status rast__fill_target(const rast_target *target, const void *polygon,
@@ -143,16 +141,16 @@ rast_status rast__fill_target(const rast_target *target, const void *polygon,
                               void *scratch, size_t scratch_bytes)
 {
     rast__solid solid;
-    rast__row_fn fn;
+    rast__painter p;
     rast_rect clip;
     rast_status st;
 
     st = rast__target_check(target, &clip);
     if (st != RAST_OK) return st;
     if (opaque && !background) return RAST_E_NULL;
-    st = rast__solid_init(&solid, target, &clip, pixel, background, &fn);
+    st = rast__solid_init(&solid, target, &clip, pixel, background, &p);
     if (st != RAST_OK) return st;
-    st = fill(polygon, opts, &clip, fn, &solid, scratch, scratch_bytes);
+    st = fill(polygon, opts, &clip, &p, scratch, scratch_bytes);
     if (st == RAST_OK && opaque && clip.x0 < clip.x1) rast__opaque_finish(&solid);
     return st;
 }
@@ -162,14 +160,14 @@ rast_status rast__fill_spans(const void *polygon, const rast_fill_opts *opts,
                              rast__fill_any_fn fill, void *scratch, size_t scratch_bytes)
 {
     rast__user_spans u;
+    rast__painter p;
     rast_rect c;
     rast_status st;
     if (!clip || !span) return RAST_E_NULL;
     st = rast__span_clip(clip, &c);
     if (st != RAST_OK) return st;
-    u.fn = span;
-    u.user = user;
-    return fill(polygon, opts, &c, rast__user_row, &u, scratch, scratch_bytes);
+    rast__user_painter(&u, span, NULL, user, &p);
+    return fill(polygon, opts, &c, &p, scratch, scratch_bytes);
 }
 
 rast_status rast_fill_polygon(const rast_target *target, const rast_polygon *polygon,

@@ -225,8 +225,10 @@ static int rast__in_range(rast_point p)
 /* Hand the line's pixels inside clip to a painter, one span per run of
  * pixels in a row (x-major lines) or per pixel (y-major ones). */
 static void rast__line_paint(rast_point a, rast_point b, const rast__grid *g, int dda,
-                             const rast_rect *clip, rast__row_fn fn, void *user)
+                             const rast_rect *clip, const rast__painter *p)
 {
+    const rast__row_fn fn = p->full;
+    void *const user = p->user;
     rast__lwalk w;
     int64_t k, row, left, right;
     int32_t xs[2];
@@ -267,13 +269,13 @@ static void rast__line_paint(rast_point a, rast_point b, const rast__grid *g, in
 /* Check the options, the target and the pixel; set up the painter. */
 static rast_status rast__line_begin(const rast_target *target, const rast_line_opts *opts,
                                     const void *pixel, rast__grid *g, rast_rect *clip,
-                                    rast__solid *solid, rast__row_fn *fn)
+                                    rast__solid *solid, rast__painter *p)
 {
     rast_status st = rast__line_check(opts, g);
     if (st != RAST_OK) return st;
     st = rast__target_check(target, clip);
     if (st != RAST_OK) return st;
-    return rast__solid_init(solid, target, clip, pixel, NULL, fn);
+    return rast__solid_init(solid, target, clip, pixel, NULL, p);
 }
 
 rast_status rast_draw_line(const rast_target *target, rast_point a, rast_point b,
@@ -282,19 +284,19 @@ rast_status rast_draw_line(const rast_target *target, rast_point a, rast_point b
     rast__grid g;
     rast_rect clip;
     rast__solid solid;
-    rast__row_fn fn;
-    rast_status st = rast__line_begin(target, opts, pixel, &g, &clip, &solid, &fn);
+    rast__painter p;
+    rast_status st = rast__line_begin(target, opts, pixel, &g, &clip, &solid, &p);
     if (st != RAST_OK) return st;
     if (!rast__in_range(a) || !rast__in_range(b)) return RAST_E_RANGE;
-    rast__line_paint(a, b, &g, opts->algorithm == RAST_LINE_DDA, &clip, fn, &solid);
+    rast__line_paint(a, b, &g, opts->algorithm == RAST_LINE_DDA, &clip, &p);
     return RAST_OK;
 }
 
-/* Check the points, then hand every segment's pixels inside clip to fn
- * (the options are checked). */
+/* Check the points, then hand every segment's pixels inside clip to
+ * painter p (the options are checked). */
 static rast_status rast__polyline(const rast_point *points, uint32_t npoints, int closed,
                                   const rast__grid *g, const rast_line_opts *opts,
-                                  const rast_rect *clip, rast__row_fn fn, void *user)
+                                  const rast_rect *clip, const rast__painter *p)
 {
     uint32_t k;
     int dda = opts->algorithm == RAST_LINE_DDA;
@@ -303,9 +305,9 @@ static rast_status rast__polyline(const rast_point *points, uint32_t npoints, in
     for (k = 0; k < npoints; k++)
         if (!rast__in_range(points[k])) return RAST_E_RANGE;
     for (k = 0; k + 1 < npoints; k++)
-        rast__line_paint(points[k], points[k + 1], g, dda, clip, fn, user);
+        rast__line_paint(points[k], points[k + 1], g, dda, clip, p);
     if (closed && npoints > 0)
-        rast__line_paint(points[npoints - 1], points[0], g, dda, clip, fn, user);
+        rast__line_paint(points[npoints - 1], points[0], g, dda, clip, p);
     return RAST_OK;
 }
 
@@ -316,10 +318,10 @@ rast_status rast_draw_polyline(const rast_target *target, const rast_point *poin
     rast__grid g;
     rast_rect clip;
     rast__solid solid;
-    rast__row_fn fn;
-    rast_status st = rast__line_begin(target, opts, pixel, &g, &clip, &solid, &fn);
+    rast__painter p;
+    rast_status st = rast__line_begin(target, opts, pixel, &g, &clip, &solid, &p);
     if (st != RAST_OK) return st;
-    return rast__polyline(points, npoints, closed, &g, opts, &clip, fn, &solid);
+    return rast__polyline(points, npoints, closed, &g, opts, &clip, &p);
 }
 
 rast_status rast_draw_polyline_spans(const rast_point *points, uint32_t npoints, int closed,
@@ -328,15 +330,15 @@ rast_status rast_draw_polyline_spans(const rast_point *points, uint32_t npoints,
 {
     rast__grid g;
     rast__user_spans u;
+    rast__painter p;
     rast_rect c;
     rast_status st = rast__line_check(opts, &g);
     if (st != RAST_OK) return st;
     if (!clip || !span) return RAST_E_NULL;
     st = rast__span_clip(clip, &c);
     if (st != RAST_OK) return st;
-    u.fn = span;
-    u.user = user;
-    return rast__polyline(points, npoints, closed, &g, opts, &c, rast__user_row, &u);
+    rast__user_painter(&u, span, NULL, user, &p);
+    return rast__polyline(points, npoints, closed, &g, opts, &c, &p);
 }
 
 rast_status rast_line_pixels(rast_point a, rast_point b, const rast_line_opts *opts,

@@ -61,12 +61,11 @@ static rast_status rast__check_opts64(const rast_fill_opts *o, rast__grid64 *g)
     return RAST_OK;
 }
 
-/* Count the vertices and check that every one is in range. */
-static rast_status rast__check_polygon64(const rast_polygon64 *p, int32_t s, uint32_t *npoints)
+/* Count the vertices (checking the pointers). */
+static rast_status rast__count_polygon64(const rast_polygon64 *p, uint32_t *npoints)
 {
-    const int64_t lim = RAST_COORD64_MAX(s);
     uint64_t n = 0;
-    uint32_t k, i;
+    uint32_t k;
     if (!p) return RAST_E_NULL;
     if (p->nrings > 0 && !p->ring_sizes) return RAST_E_NULL;
     for (k = 0; k < p->nrings; k++) {
@@ -74,11 +73,22 @@ static rast_status rast__check_polygon64(const rast_polygon64 *p, int32_t s, uin
         if (n > RAST_MAX_POINTS) return RAST_E_TOO_MANY;
     }
     if (n > 0 && !p->points) return RAST_E_NULL;
-    for (i = 0; i < (uint32_t)n; i++) {
+    *npoints = (uint32_t)n;
+    return RAST_OK;
+}
+
+/* Count the vertices and check that every one is in range. */
+static rast_status rast__check_polygon64(const rast_polygon64 *p, int32_t s, uint32_t *npoints)
+{
+    const int64_t lim = RAST_COORD64_MAX(s);
+    uint32_t n = 0, i;
+    rast_status st = rast__count_polygon64(p, &n);
+    if (st != RAST_OK) return st;
+    for (i = 0; i < n; i++) {
         int64_t x = p->points[i].x, y = p->points[i].y;
         if (x < -lim || x > lim || y < -lim || y > lim) return RAST_E_RANGE;
     }
-    *npoints = (uint32_t)n;
+    *npoints = n;
     return RAST_OK;
 }
 
@@ -222,15 +232,47 @@ static rast_status rast__aet64_fill(const rast_polygon64 *poly, uint32_t npoints
     return RAST_OK;
 }
 
+rast_status rast__fill64_prepare(const rast_fill_opts *opts, rast__grid64 *g)
+{
+    return rast__check_opts64(opts, g);
+}
+
+size_t rast__fill64_scratch(const rast_fill_opts *opts, uint32_t npoints, int32_t height)
+{
+    return rast__scratch64(opts, npoints, height);
+}
+
+rast_status rast__fill64_checked(const rast_polygon64 *poly, uint32_t npoints,
+                                 const rast_fill_opts *opts, const rast__grid64 *g,
+                                 const rast_rect *clip, const rast__painter *p, void *scratch,
+                                 size_t scratch_bytes)
+{
+    rast__sink sink;
+    rast__arena arena = rast__arena_of(scratch, scratch_bytes);
+    rast_status st;
+
+    rast__sink_init(&sink, p, clip);
+    if (opts->boundary == RAST_BOUNDARY_EXACT) {
+        st = rast__aet64_fill(poly, npoints, g, opts->rule, clip, &sink, &arena);
+        rast__sink_flush(&sink);
+        return st;
+    }
+    {
+        rast__bound b;
+        st = rast__bound_begin64(&b, poly, npoints, g, clip, &sink, &arena);
+        if (st == RAST_OK) st = rast__aet64_fill(poly, npoints, g, opts->rule, clip, &b.in, &arena);
+        if (st == RAST_OK) rast__bound_end(&b);
+        return st;
+    }
+}
+
 /* Check the polygon, options and scratch for a clip; run the filler. */
 static rast_status rast__fill64(const void *polygon, const rast_fill_opts *opts,
-                                const rast_rect *clip, rast__row_fn fn, void *user,
+                                const rast_rect *clip, const rast__painter *p,
                                 void *scratch, size_t scratch_bytes)
 {
     const rast_polygon64 *poly = (const rast_polygon64 *)polygon;
     rast__grid64 g;
-    rast__sink sink;
-    rast__arena arena;
     uint32_t npoints;
     rast_status st;
 
@@ -242,22 +284,7 @@ static rast_status rast__fill64(const void *polygon, const rast_fill_opts *opts,
                              rast__scratch64(opts, npoints, clip->y1 - clip->y0));
     if (st != RAST_OK) return st;
     if (clip->x0 >= clip->x1 || clip->y0 >= clip->y1) return RAST_OK;
-
-    rast__sink_init(&sink, fn, user, clip);
-    arena.p = (unsigned char *)scratch;
-    arena.left = scratch_bytes;
-    if (opts->boundary == RAST_BOUNDARY_EXACT) {
-        st = rast__aet64_fill(poly, npoints, &g, opts->rule, clip, &sink, &arena);
-        rast__sink_flush(&sink);
-        return st;
-    }
-    {
-        rast__bound b;
-        st = rast__bound_begin64(&b, poly, npoints, &g, clip, &sink, &arena);
-        if (st == RAST_OK) st = rast__aet64_fill(poly, npoints, &g, opts->rule, clip, &b.in, &arena);
-        if (st == RAST_OK) rast__bound_end(&b);
-        return st;
-    }
+    return rast__fill64_checked(poly, npoints, opts, &g, clip, p, scratch, scratch_bytes);
 }
 
 rast_status rast_fill_polygon64(const rast_target *target, const rast_polygon64 *polygon,
@@ -288,32 +315,50 @@ rast_status rast_fill_polygon64_spans(const rast_polygon64 *polygon, const rast_
 rast_status rast_fill_bounds64(const rast_fill_opts *opts, const rast_polygon64 *polygon,
                                const rast_rect *clip, rast_rect *bounds)
 {
-    const int64_t bias = (int64_t)1 << 62;
     rast__grid64 g;
-    rast_rect c, out;
-    uint32_t npoints, i;
-    int64_t lo[2], hi[2], x0, x1, y0, y1;
+    uint32_t npoints;
     rast_status st;
 
     if (!clip || !bounds) return RAST_E_NULL;
     st = rast__check_opts64(opts, &g);
     if (st != RAST_OK) return st;
-    st = rast__check_polygon64(polygon, opts->subpixel_bits, &npoints);
+    return rast__fill64_measure(opts, &g, polygon, clip, &npoints, bounds);
+}
+
+rast_status rast__fill64_measure(const rast_fill_opts *opts, const rast__grid64 *gp,
+                                 const rast_polygon64 *polygon, const rast_rect *clip,
+                                 uint32_t *npoints, rast_rect *bounds)
+{
+    const int64_t bias = (int64_t)1 << 62;
+    const rast__grid64 g = *gp;
+    rast_rect c, out;
+    uint32_t i;
+    int64_t lo[2], hi[2], x0, x1, y0, y1;
+    rast_status st;
+
+    /* rast__check_polygon64's checks, in its order, the range on the
+     * extent (one pass over the vertices) */
+    st = rast__count_polygon64(polygon, npoints);
     if (st != RAST_OK) return st;
-    st = rast__span_clip(clip, &c);
-    if (st != RAST_OK) return st;
-    out.x0 = out.x1 = c.x0; /* empty unless something below says otherwise */
-    out.y0 = out.y1 = c.y0;
-    if (npoints > 0) {
+    lo[0] = hi[0] = lo[1] = hi[1] = 0;
+    if (*npoints > 0) {
         const rast_point64 *pts = polygon->points;
+        const int64_t lim = RAST_COORD64_MAX(opts->subpixel_bits);
         lo[0] = hi[0] = pts[0].x;
         lo[1] = hi[1] = pts[0].y;
-        for (i = 1; i < npoints; i++) {
+        for (i = 1; i < *npoints; i++) {
             if (pts[i].x < lo[0]) lo[0] = pts[i].x;
             if (pts[i].x > hi[0]) hi[0] = pts[i].x;
             if (pts[i].y < lo[1]) lo[1] = pts[i].y;
             if (pts[i].y > hi[1]) hi[1] = pts[i].y;
         }
+        if (lo[0] < -lim || hi[0] > lim || lo[1] < -lim || hi[1] > lim) return RAST_E_RANGE;
+    }
+    st = rast__span_clip(clip, &c);
+    if (st != RAST_OK) return st;
+    out.x0 = out.x1 = c.x0; /* empty unless something below says otherwise */
+    out.y0 = out.y1 = c.y0;
+    if (*npoints > 0) {
         if (opts->boundary == RAST_BOUNDARY_EXACT) {
             /* The AET's rows; columns from the first column counting a
              * crossing at min x to the one counting max x (poly.h). */

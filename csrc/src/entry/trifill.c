@@ -87,32 +87,47 @@ static rast_status rast__tri_check_range(const rast_point *tris, uint32_t ntris)
     return RAST_OK;
 }
 
-rast_status rast__tri_fill(const rast_point *tris, uint32_t ntris, const rast_tri_opts *opts,
-                           const rast_rect *clip, rast__row_fn fn, void *user,
-                           const rast__solid *gray8, rast__tri_begin_fn begin,
-                           void *scratch, size_t scratch_bytes)
+rast_status rast__tri_check(const rast_point *tris, uint32_t ntris, const rast_tri_opts *opts,
+                            const rast_rect *clip, rast__grid *g, void *scratch,
+                            size_t scratch_bytes)
 {
     const rast__tri_algo *al;
+    rast_status st = rast__tri_check_range(tris, ntris);
+    if (st != RAST_OK) return st;
+    st = rast__tri_check_opts(opts, g, &al);
+    if (st != RAST_OK) return st;
+    return rast__scratch_check(scratch, scratch_bytes,
+                               rast__tri_need(al, opts, clip->x1 - clip->x0, clip->y1 - clip->y0));
+}
+
+rast_status rast__tri_fill(const rast_point *tris, uint32_t ntris, const rast_tri_opts *opts,
+                           const rast_rect *clip, const rast__painter *p,
+                           rast__tri_begin_fn begin, void *scratch, size_t scratch_bytes)
+{
     rast__grid g;
+    rast_status st = rast__tri_check(tris, ntris, opts, clip, &g, scratch, scratch_bytes);
+    if (st != RAST_OK) return st;
+    return rast__tri_fill_checked(tris, ntris, opts, &g, clip, p, begin, scratch, scratch_bytes);
+}
+
+rast_status rast__tri_fill_checked(const rast_point *tris, uint32_t ntris,
+                                   const rast_tri_opts *opts, const rast__grid *gp,
+                                   const rast_rect *clip, const rast__painter *p,
+                                   rast__tri_begin_fn begin, void *scratch, size_t scratch_bytes)
+{
+    const rast__tri_algo *al = &rast__tri_algos[opts->algorithm];
+    const rast__grid g = *gp;
     rast__sink sink;
     rast__arena arena;
     uint32_t k;
     rast_status st;
 
-    st = rast__tri_check_range(tris, ntris);
-    if (st != RAST_OK) return st;
-    st = rast__tri_check_opts(opts, &g, &al);
-    if (st != RAST_OK) return st;
-    st = rast__scratch_check(scratch, scratch_bytes,
-                             rast__tri_need(al, opts, clip->x1 - clip->x0, clip->y1 - clip->y0));
-    if (st != RAST_OK) return st;
     if (clip->x0 >= clip->x1 || clip->y0 >= clip->y1) return RAST_OK;
 
-    rast__sink_init(&sink, fn, user, clip);
-    if (gray8) rast__sink_direct8(&sink, gray8->base, gray8->stride, gray8->value[0]);
+    rast__sink_init(&sink, p, clip);
     for (k = 0; k < ntris; k++) {
         const rast_point *t = tris + 3 * (size_t)k;
-        if (begin && !begin(user, t, k, &g)) continue;
+        if (begin && !begin(p->user, t, k, &g)) continue;
         /* Fillers leave the sink empty (rast__rows_put, or a flush), so one
          * triangle's spans never merge with the next one's: COUNT16 counts
          * both. */
@@ -141,18 +156,16 @@ rast_status rast_fill_triangles(const rast_target *target, const rast_point *tri
                                 size_t scratch_bytes)
 {
     rast__solid solid;
-    rast__row_fn fn;
+    rast__painter p;
     rast_rect clip;
     rast_status st;
 
     if (!target || !opts || (ntris > 0 && !tris)) return RAST_E_NULL;
     st = rast__target_check(target, &clip);
     if (st != RAST_OK) return st;
-    st = rast__solid_init(&solid, target, &clip, pixel, NULL, &fn);
+    st = rast__solid_init(&solid, target, &clip, pixel, NULL, &p);
     if (st != RAST_OK) return st;
-    return rast__tri_fill(tris, ntris, opts, &clip, fn, &solid,
-                          target->format == RAST_FORMAT_GRAY8 ? &solid : NULL, NULL, scratch,
-                          scratch_bytes);
+    return rast__tri_fill(tris, ntris, opts, &clip, &p, NULL, scratch, scratch_bytes);
 }
 
 rast_status rast_fill_triangles_spans(const rast_point *tris, uint32_t ntris,
@@ -161,13 +174,12 @@ rast_status rast_fill_triangles_spans(const rast_point *tris, uint32_t ntris,
                                       size_t scratch_bytes)
 {
     rast__user_spans u;
+    rast__painter p;
     rast_rect c;
     rast_status st;
     if (!opts || !clip || !span || (ntris > 0 && !tris)) return RAST_E_NULL;
     st = rast__span_clip(clip, &c);
     if (st != RAST_OK) return st;
-    u.fn = span;
-    u.user = user;
-    return rast__tri_fill(tris, ntris, opts, &c, rast__user_row, &u, NULL, NULL, scratch,
-                          scratch_bytes);
+    rast__user_painter(&u, span, NULL, user, &p);
+    return rast__tri_fill(tris, ntris, opts, &c, &p, NULL, scratch, scratch_bytes);
 }

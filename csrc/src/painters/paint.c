@@ -1,8 +1,11 @@
 /*
- * paint.c - targets and painters: WHAT a span writes.  Painters take a
- * row's spans at once (one call per row, not per span).  The solid painter
- * writes one value over the spans; the opaque painter also writes the
- * background between them, so that every clip pixel is written once.
+ * paint.c - targets and painters: WHAT a run writes.  A painter
+ * (rast__painter, internal.h) takes a row's full runs at once (one call
+ * per row, not per span) and a levels run at a time.  The solid painter
+ * writes one value over full runs and blends it by a levels run's
+ * coverage (the format's blend); the opaque painter also writes the
+ * background between full runs, so that every clip pixel is written once;
+ * the user painters hand runs to the caller's callbacks.
  *
  * The pixel formats themselves are rows of rast__formats (formats.c);
  * nothing here depends on a particular one.
@@ -18,6 +21,13 @@ static void rast__solid_row(void *user, int32_t y, const int32_t *xs, int32_t n)
     unsigned char *row = s->base + (ptrdiff_t)y * s->stride;
     int32_t k;
     for (k = 0; k < n; k++) s->fmt->fill(row, xs[2 * k], xs[2 * k + 1], s->value);
+}
+
+/* Any format's levels run: its blend (formats.c). */
+static void rast__solid_levels(void *user, int32_t y, int32_t x0, int32_t x1, const uint8_t *cov)
+{
+    const rast__solid *s = (const rast__solid *)user;
+    s->fmt->blend(s->base + (ptrdiff_t)y * s->stride, x0, x1, cov, s->value);
 }
 
 /* ---- opaque: every clip pixel written once, value or background --------- */
@@ -148,7 +158,7 @@ rast_status rast__target_check(const rast_target *t, rast_rect *clip)
 }
 
 rast_status rast__solid_init(rast__solid *s, const rast_target *t, const rast_rect *clip,
-                             const void *pixel, const void *background, rast__row_fn *fn)
+                             const void *pixel, const void *background, rast__painter *p)
 {
     const rast__format *f = &rast__formats[t->format];
     /* A count has no value to write and no background to restore. */
@@ -160,19 +170,46 @@ rast_status rast__solid_init(rast__solid *s, const rast_target *t, const rast_re
     s->fmt = f;
     s->clip = *clip;
     if (f->value) memcpy(s->value, pixel, (size_t)f->value);
+    memset(p, 0, sizeof *p);
+    p->user = s;
     if (background) {
         memcpy(s->background, background, (size_t)f->value);
         s->row = clip->y0 - 1; /* the last row written */
-        *fn = rast__opaque_row;
+        p->full = rast__opaque_row;
     } else {
-        *fn = f->row ? f->row : rast__solid_row;
+        p->full = f->row ? f->row : rast__solid_row;
+        p->levels = rast__solid_levels;
+        /* One byte a pixel, one byte a value: a full run is a memset. */
+        if (f->bits == 8 && f->value == 1) {
+            p->bytes = s->base;
+            p->stride = s->stride;
+            p->value = s->value[0];
+        }
     }
     return RAST_OK;
 }
 
-void rast__user_row(void *user, int32_t y, const int32_t *xs, int32_t n)
+static void rast__user_row(void *user, int32_t y, const int32_t *xs, int32_t n)
 {
     const rast__user_spans *u = (const rast__user_spans *)user;
     int32_t k;
     for (k = 0; k < n; k++) u->fn(u->user, y, xs[2 * k], xs[2 * k + 1]);
+}
+
+static void rast__user_levels(void *user, int32_t y, int32_t x0, int32_t x1, const uint8_t *cov)
+{
+    const rast__user_spans *u = (const rast__user_spans *)user;
+    u->cov(u->user, y, x0, x1, cov);
+}
+
+void rast__user_painter(rast__user_spans *u, rast_span_fn fn, rast_coverage_span_fn cov,
+                        void *user, rast__painter *p)
+{
+    memset(p, 0, sizeof *p);
+    u->fn = fn;
+    u->cov = cov;
+    u->user = user;
+    if (fn) p->full = rast__user_row;
+    if (cov) p->levels = rast__user_levels;
+    p->user = u;
 }

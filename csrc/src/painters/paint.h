@@ -70,23 +70,30 @@ rast_status rast__tri_fill_need(const rast_tri_opts *opts, int32_t width, int32_
 /* Check a target (as rast_target_init would) and cut its clip to it. */
 rast_status rast__target_check(const rast_target *t, rast_rect *clip);
 
-/* The painter for rast_fill_polygon_spans: hands each span of a row to
- * the user's rast_span_fn. */
+/* The painter of the user's callbacks: each full run to `fn` (the span
+ * entry points, rast_fill_polygon_spans, ...), each levels run to `cov`
+ * (the coverage span entry points, rast_polygon_coverage_spans, ...);
+ * the entry of a NULL one is NULL.  *p is set up with *u as its user. */
 typedef struct rast__user_spans {
     rast_span_fn fn;
+    rast_coverage_span_fn cov;
     void *user;
 } rast__user_spans;
-void rast__user_row(void *user, int32_t y, const int32_t *xs, int32_t n);
+void rast__user_painter(rast__user_spans *u, rast_span_fn fn, rast_coverage_span_fn cov,
+                        void *user, rast__painter *p);
 
-/* A painter writing `pixel` (a value of the target's format) over spans of
- * a checked target and clip: fills *s and the row function to pass it to.
- * With a non-NULL `background` it is the opaque painter: every clip pixel
- * is written, and rast__opaque_finish must follow a successful fill.
- * RAST_FORMAT_COUNT16 adds 1 per covered pixel instead and ignores `pixel`
- * (it may be NULL); it has no opaque painter (RAST_E_FORMAT).  Otherwise
- * RAST_E_NULL for a NULL pixel. */
+/* The solid painter: `pixel` (a value of the target's format) over the
+ * runs of a checked target and clip, a full run written, a levels run
+ * blended by the format's blend (formats.c): fills *s and the painter *p
+ * (user s; with the fast kind for a one-byte format).  With a non-NULL
+ * `background` it is the opaque painter (full runs only): every clip
+ * pixel is written, and rast__opaque_finish must follow a successful
+ * fill.  RAST_FORMAT_COUNT16 adds 1 per covered pixel instead (a levels
+ * run: per pixel not 0) and ignores `pixel` (it may be NULL); it has no
+ * opaque painter (RAST_E_FORMAT).  Otherwise RAST_E_NULL for a NULL
+ * pixel. */
 rast_status rast__solid_init(rast__solid *s, const rast_target *t, const rast_rect *clip,
-                             const void *pixel, const void *background, rast__row_fn *fn);
+                             const void *pixel, const void *background, rast__painter *p);
 void rast__opaque_finish(rast__solid *s);
 
 /* Called before triangle k (vertices t, grid g) is filled, with the
@@ -97,40 +104,50 @@ typedef int (*rast__tri_begin_fn)(void *user, const rast_point *t, uint32_t k,
 /* The triangle batch behind every triangle entry point (trifill.c): check
  * the batch, options and scratch for `clip` (non-empty or empty, cut to the
  * target or a span clip), then run the filler on each triangle in turn,
- * calling `begin` first when it is not NULL, its spans going to `fn`.
- * `gray8`, when not NULL, is the solid painter `user` of a GRAY8 target:
- * the sink then writes its pixels inline (rast__sink_direct8). */
+ * calling `begin` (with the painter's user) first when it is not NULL, its
+ * runs going to painter p. */
 rast_status rast__tri_fill(const rast_point *tris, uint32_t ntris, const rast_tri_opts *opts,
-                           const rast_rect *clip, rast__row_fn fn, void *user,
-                           const rast__solid *gray8, rast__tri_begin_fn begin,
-                           void *scratch, size_t scratch_bytes);
+                           const rast_rect *clip, const rast__painter *p,
+                           rast__tri_begin_fn begin, void *scratch, size_t scratch_bytes);
+/* The same in two steps: rast__tri_fill's checks (the grid into *g), and
+ * the fill with nothing checked (a clip no larger than the checked one). */
+rast_status rast__tri_check(const rast_point *tris, uint32_t ntris, const rast_tri_opts *opts,
+                            const rast_rect *clip, rast__grid *g, void *scratch,
+                            size_t scratch_bytes);
+rast_status rast__tri_fill_checked(const rast_point *tris, uint32_t ntris,
+                                   const rast_tri_opts *opts, const rast__grid *g,
+                                   const rast_rect *clip, const rast__painter *p,
+                                   rast__tri_begin_fn begin, void *scratch, size_t scratch_bytes);
 
-/* A triangle filler as rast__tri_fill (its signature): rast__tri_fill
- * itself, or rast__tri_touching (shade_aa.c). */
+/* A checked triangle filler as rast__tri_fill_checked (its signature):
+ * rast__tri_fill_checked itself, or rast__tri_touching (shade_aa.c). */
 typedef rast_status (*rast__tri_filler_fn)(const rast_point *tris, uint32_t ntris,
-                                           const rast_tri_opts *opts, const rast_rect *clip,
-                                           rast__row_fn fn, void *user,
-                                           const rast__solid *gray8, rast__tri_begin_fn begin,
-                                           void *scratch, size_t scratch_bytes);
+                                           const rast_tri_opts *opts, const rast__grid *g,
+                                           const rast_rect *clip, const rast__painter *p,
+                                           rast__tri_begin_fn begin, void *scratch,
+                                           size_t scratch_bytes);
 
 /* The pixels whose closed square [i, i+1] x [j, j+1] meets an edge (a
  * closed segment) of the triangle, for each non-degenerate triangle in
  * turn (rows top to bottom, a span per edge in the row, possibly
  * overlapping), cut to `clip`: the silhouette filler of the anti-aliased
- * shaded fill.  Checks as rast__tri_fill; needs no scratch; gray8 unused. */
+ * shaded fill.  A checked filler (the batch and options passed
+ * rast__tri_check; g their grid, given to `begin`); needs no scratch;
+ * the painter's full entry only. */
 rast_status rast__tri_touching(const rast_point *tris, uint32_t ntris, const rast_tri_opts *opts,
-                               const rast_rect *clip, rast__row_fn fn, void *user,
-                               const rast__solid *gray8, rast__tri_begin_fn begin,
-                               void *scratch, size_t scratch_bytes);
+                               const rast__grid *g, const rast_rect *clip, const rast__painter *p,
+                               rast__tri_begin_fn begin, void *scratch, size_t scratch_bytes);
 
 /* The Gouraud painter (shade.c) fed by `filler`, into RGBA8888 colours:
  * pixel (band->x0 + i, band->y0 + j) at rgba + j stride + 4 i, every
- * pixel of `band` the filler gives written (clamped to 0..255).  Checks
- * as rast_fill_triangles_shaded (no depth). */
+ * pixel of `band` the filler gives written (clamped to 0..255).  The
+ * batch and `opts` passed rast__tri_check (g their grid); `shade`'s
+ * precision is checked (as rast_fill_triangles_shaded's, no depth). */
 rast_status rast__shade_band(unsigned char *rgba, ptrdiff_t stride, const rast_rect *band,
                              const rast_point *tris, uint32_t ntris, const uint8_t *colors,
-                             const rast_tri_opts *opts, const rast_shade_opts *shade,
-                             rast__tri_filler_fn filler, void *scratch, size_t scratch_bytes);
+                             const rast_tri_opts *opts, const rast__grid *g,
+                             const rast_shade_opts *shade, rast__tri_filler_fn filler,
+                             void *scratch, size_t scratch_bytes);
 
 /* The polygon entry points' common part (fill.c), for 32-bit polygons
  * (fill.c) and 64-bit ones (poly64.c): `fill` checks the polygon (a
@@ -160,11 +177,24 @@ size_t rast__fill_scratch(const rast__fill_setup *f, uint32_t npoints, int32_t w
  * non-empty clip within its span clip, with aligned scratch of at least
  * rast__fill_scratch bytes for that clip: nothing is checked again. */
 rast_status rast__fill_checked(const rast__fill_setup *f, const rast_polygon *polygon,
-                               uint32_t npoints, const rast_rect *clip, rast__row_fn fn,
-                               void *user, void *scratch, size_t scratch_bytes);
+                               uint32_t npoints, const rast_rect *clip, const rast__painter *p,
+                               void *scratch, size_t scratch_bytes);
+
+/* The same for 64-bit polygons (poly64.c): the options checked once into
+ * the grid; a polygon checked and measured (rast_fill_bounds64 with checked
+ * options); its scratch; and its fill, nothing checked again. */
+rast_status rast__fill64_prepare(const rast_fill_opts *opts, rast__grid64 *g);
+rast_status rast__fill64_measure(const rast_fill_opts *opts, const rast__grid64 *g,
+                                 const rast_polygon64 *polygon, const rast_rect *clip,
+                                 uint32_t *npoints, rast_rect *bounds);
+size_t rast__fill64_scratch(const rast_fill_opts *opts, uint32_t npoints, int32_t height);
+rast_status rast__fill64_checked(const rast_polygon64 *poly, uint32_t npoints,
+                                 const rast_fill_opts *opts, const rast__grid64 *g,
+                                 const rast_rect *clip, const rast__painter *p, void *scratch,
+                                 size_t scratch_bytes);
 
 typedef rast_status (*rast__fill_any_fn)(const void *polygon, const rast_fill_opts *opts,
-                                         const rast_rect *clip, rast__row_fn fn, void *user,
+                                         const rast_rect *clip, const rast__painter *p,
                                          void *scratch, size_t scratch_bytes);
 rast_status rast__fill_target(const rast_target *target, const void *polygon,
                               const rast_fill_opts *opts, const void *pixel,
@@ -173,5 +203,28 @@ rast_status rast__fill_target(const rast_target *target, const void *polygon,
 rast_status rast__fill_spans(const void *polygon, const rast_fill_opts *opts,
                              const rast_rect *clip, rast_span_fn span, void *user,
                              rast__fill_any_fn fill, void *scratch, size_t scratch_bytes);
+
+/* The coverage pipeline (coverage.c): a polygon (poly not NULL) or a
+ * triangle batch's coverage inside `clip` (a span clip, cut to nothing
+ * else) handed to painter p's levels entry, row by row, each run of
+ * levels not 0.  Every check of rast_polygon_coverage_spans /
+ * rast_triangles_coverage_spans (but the callback's) before the first
+ * run. */
+rast_status rast__cov_paint(const rast_polygon *poly, const rast_point *tris, uint32_t ntris,
+                            const rast_coverage_opts *opts, const rast_rect *clip,
+                            const rast__painter *p, void *scratch, size_t scratch_bytes);
+/* The same in two steps, for a caller painting the same geometry band by
+ * band: every check, once, for the whole clip, with the scratch for a band
+ * of `rows` rows (*npoints: the vertex count); then each band (rows of the
+ * checked clip, at most `rows` of them) painted with nothing checked
+ * again. */
+rast_status rast__cov_paint_check(const rast_polygon *poly, const rast_point *tris,
+                                  uint32_t ntris, const rast_coverage_opts *opts,
+                                  const rast_rect *clip, int32_t rows, void *scratch,
+                                  size_t scratch_bytes, uint32_t *npoints);
+rast_status rast__cov_paint_checked(const rast_polygon *poly, const rast_point *tris,
+                                    uint32_t ntris, uint32_t npoints,
+                                    const rast_coverage_opts *opts, const rast_rect *clip,
+                                    const rast__painter *p, void *scratch, size_t scratch_bytes);
 
 #endif /* RAST_PAINT_H */

@@ -101,7 +101,7 @@ typedef struct rast__shade {
     int32_t flat;
     int32_t cull;            /* skip triangles whose rows miss the clip (bands) */
     rast__solid solid;
-    rast__row_fn solid_fn;
+    rast__painter solid_p;   /* its full entry (user: &solid) */
 } rast__shade;
 
 /* Bits of |v| (0 for 0): the compiler's count-leading-zeros, or (other
@@ -441,7 +441,7 @@ static void rast__shade_row(void *user, int32_t y, const int32_t *xs, int32_t n)
     rast__shade *s = (rast__shade *)user;
     int32_t k;
     if (s->flat) {
-        s->solid_fn(&s->solid, y, xs, n);
+        s->solid_p.full(&s->solid, y, xs, n);
         return;
     }
     if (s->packed == 1) {
@@ -453,6 +453,16 @@ static void rast__shade_row(void *user, int32_t y, const int32_t *xs, int32_t n)
         return;
     }
     for (k = 0; k < n; k++) rast__shade_span(s, y, xs[2 * k], xs[2 * k + 1]);
+}
+
+/* The Gouraud painter *p of s: full runs only (the triangle fillers'
+ * spans); its user s, which rast__shade_begin sets up per triangle. */
+static const rast__painter *rast__shade_painter(rast__shade *s, rast__painter *p)
+{
+    memset(p, 0, sizeof *p);
+    p->full = rast__shade_row;
+    p->user = s;
+    return p;
 }
 
 /* The pixels a triangle's spans may reach, one axis: its vertices' extent
@@ -728,6 +738,7 @@ rast_status rast_fill_triangles_shaded(const rast_target *target, const rast_poi
                                        size_t scratch_bytes)
 {
     rast__shade s;
+    rast__painter p;
     rast_rect clip;
     rast_status st;
 
@@ -741,24 +752,26 @@ rast_status rast_fill_triangles_shaded(const rast_target *target, const rast_poi
     /* The solid painter: the flat colour without depth, and the clip. */
     {
         static const unsigned char zero[4] = {0, 0, 0, 0};
-        st = rast__solid_init(&s.solid, target, &clip, zero, NULL, &s.solid_fn);
+        st = rast__solid_init(&s.solid, target, &clip, zero, NULL, &s.solid_p);
         if (st != RAST_OK) return st;
     }
     s.flat = s.prec == RAST_PRECISION_FLAT && !z;
-    return rast__tri_fill(tris, ntris, opts, &clip, rast__shade_row, &s, NULL, rast__shade_begin,
+    return rast__tri_fill(tris, ntris, opts, &clip, rast__shade_painter(&s, &p), rast__shade_begin,
                           scratch, scratch_bytes);
 }
 
 rast_status rast__shade_band(unsigned char *rgba, ptrdiff_t stride, const rast_rect *band,
                              const rast_point *tris, uint32_t ntris, const uint8_t *colors,
-                             const rast_tri_opts *opts, const rast_shade_opts *shade,
-                             rast__tri_filler_fn filler, void *scratch, size_t scratch_bytes)
+                             const rast_tri_opts *opts, const rast__grid *g,
+                             const rast_shade_opts *shade, rast__tri_filler_fn filler,
+                             void *scratch, size_t scratch_bytes)
 {
     rast__shade s;
+    rast__painter p;
     rast_status st = rast__shade_setup(&s, RAST_FORMAT_RGBA8888, rgba, stride, band->x0,
                                        band->y0, band, colors, NULL, NULL, 0, opts, shade);
     if (st != RAST_OK) return st;
     s.cull = 1;
-    return filler(tris, ntris, opts, band, rast__shade_row, &s, NULL, rast__shade_begin, scratch,
-                  scratch_bytes);
+    return filler(tris, ntris, opts, g, band, rast__shade_painter(&s, &p), rast__shade_begin,
+                  scratch, scratch_bytes);
 }

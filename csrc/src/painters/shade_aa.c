@@ -39,24 +39,13 @@ static void rast__touch_x(int64_t num, int64_t den, int64_t u, int64_t *lo, int6
 }
 
 rast_status rast__tri_touching(const rast_point *tris, uint32_t ntris, const rast_tri_opts *opts,
-                               const rast_rect *clip, rast__row_fn fn, void *user,
-                               const rast__solid *gray8, rast__tri_begin_fn begin,
-                               void *scratch, size_t scratch_bytes)
+                               const rast__grid *g, const rast_rect *clip, const rast__painter *p,
+                               rast__tri_begin_fn begin, void *scratch, size_t scratch_bytes)
 {
-    rast__grid g;
-    uint64_t i, n = 3 * (uint64_t)ntris;
     uint32_t k;
     int64_t u;
-    rast_status st = rast__grid_init(&g, opts->subpixel_bits, opts->sample, opts->rounding,
-                                     opts->boundary);
-    (void)gray8;
     (void)scratch;
     (void)scratch_bytes;
-    if (st != RAST_OK) return st;
-    for (i = 0; i < n; i++)
-        if (tris[i].x < -RAST_COORD_MAX || tris[i].x > RAST_COORD_MAX ||
-            tris[i].y < -RAST_COORD_MAX || tris[i].y > RAST_COORD_MAX)
-            return RAST_E_RANGE;
     if (clip->x0 >= clip->x1 || clip->y0 >= clip->y1) return RAST_OK;
     u = (int64_t)1 << opts->subpixel_bits;
     for (k = 0; k < ntris; k++) {
@@ -75,7 +64,7 @@ rast_status rast__tri_touching(const rast_point *tris, uint32_t ntris, const ras
         if (j0 < clip->y0) j0 = clip->y0;
         if (j1 > clip->y1 - 1) j1 = clip->y1 - 1;
         if (j0 > j1) continue;
-        if (begin && !begin(user, t, k, &g)) continue;
+        if (begin && !begin(p->user, t, k, g)) continue;
         for (j = j0; j <= j1; j++) {
             const int64_t yt = j * u, yb = yt + u;
             for (m = 0; m < 3; m++) {
@@ -103,7 +92,7 @@ rast_status rast__tri_touching(const rast_point *tris, uint32_t ntris, const ras
                 if (lo > hi) continue;
                 xs[0] = (int32_t)lo;
                 xs[1] = (int32_t)(hi + 1);
-                fn(user, (int32_t)j, xs, 1);
+                p->full(p->user, (int32_t)j, xs, 1);
             }
         }
     }
@@ -175,8 +164,11 @@ rast_status rast_fill_triangles_shaded_aa(const rast_target *target, const rast_
                                           size_t scratch_bytes)
 {
     rast__aa_shade p;
+    rast__painter paint;
     rast_rect clip;
     rast_tri_opts exact, touch;
+    rast__grid g;
+    uint32_t npoints;
     size_t cov_bytes, need;
     int32_t width, height, rows, y;
     rast_status st;
@@ -204,9 +196,12 @@ rast_status rast_fill_triangles_shaded_aa(const rast_target *target, const rast_
         rows = more;
         cov_bytes = c2;
     }
+    /* The painter of the band's colours times the coverage: levels runs. */
+    memset(&paint, 0, sizeof paint);
+    paint.levels = rast__aa_shade_run;
+    paint.user = &p;
     if (clip.y0 >= clip.y1 || width == 0) /* nothing to paint: the checks only */
-        return rast_triangles_coverage_spans(tris, ntris, opts, &clip, rast__aa_shade_run, &p,
-                                             scratch, cov_bytes);
+        return rast__cov_paint(NULL, tris, ntris, opts, &clip, &paint, scratch, cov_bytes);
 
     memset(&exact, 0, sizeof exact);
     exact.algorithm = RAST_TRI_EDGE;
@@ -221,23 +216,29 @@ rast_status rast_fill_triangles_shaded_aa(const rast_target *target, const rast_
     p.stride = target->stride;
     p.rgba = (unsigned char *)scratch + cov_bytes;
     p.rgba_stride = (ptrdiff_t)width * 4;
-    /* Band by band; every check is made by the first band's calls, before
-     * its coverage call writes (the later bands repeat them on the same
-     * input and pass). */
+    /* Every check once, before anything is written: the batch and the
+     * binary options (the touching filler's differ only in the boundary,
+     * which is not in the grid), then the coverage's for the whole clip in
+     * bands of `rows` rows. */
+    st = rast__tri_check(tris, ntris, &exact, &clip, &g, NULL, 0);
+    if (st != RAST_OK) return st;
+    st = rast__cov_paint_check(NULL, tris, ntris, opts, &clip, rows, scratch, cov_bytes, &npoints);
+    if (st != RAST_OK) return st;
+    /* Band by band, nothing checked again. */
     for (y = clip.y0; y < clip.y1; y += rows) {
         unsigned char *rgba = (unsigned char *)scratch + cov_bytes;
         p.band = clip;
         p.band.y0 = y;
         if (clip.y1 - y > rows) p.band.y1 = y + rows;
         memset(rgba, 0, (size_t)width * 4 * (size_t)(p.band.y1 - p.band.y0));
-        st = rast__shade_band(rgba, p.rgba_stride, &p.band, tris, ntris, colors, &touch, shade,
+        st = rast__shade_band(rgba, p.rgba_stride, &p.band, tris, ntris, colors, &touch, &g, shade,
                               rast__tri_touching, NULL, 0);
         if (st != RAST_OK) return st;
-        st = rast__shade_band(rgba, p.rgba_stride, &p.band, tris, ntris, colors, &exact, shade,
-                              rast__tri_fill, NULL, 0);
+        st = rast__shade_band(rgba, p.rgba_stride, &p.band, tris, ntris, colors, &exact, &g, shade,
+                              rast__tri_fill_checked, NULL, 0);
         if (st != RAST_OK) return st;
-        st = rast_triangles_coverage_spans(tris, ntris, opts, &p.band, rast__aa_shade_run, &p,
-                                           scratch, cov_bytes);
+        st = rast__cov_paint_checked(NULL, tris, ntris, npoints, opts, &p.band, &paint, scratch,
+                                     cov_bytes);
         if (st != RAST_OK) return st;
     }
     return RAST_OK;

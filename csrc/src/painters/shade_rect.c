@@ -53,16 +53,126 @@ static rast_status rast__rect_check(const rast_target *target, rast_point p0, ra
     return rast__shade_format(target);
 }
 
+/* The bilinear Gouraud painter: what the rectangle's pixels get. */
+typedef struct rast__rect_shade {
+    const rast_target *target;
+    const uint8_t *colors;  /* as given: FLAT paints corner p0's */
+    const rast__grid *g;
+    rast_precision prec;
+    int32_t F;              /* FIXED: fraction bits */
+    int32_t c[4][4];        /* corner k, channel ch, with the corners put in order */
+    int64_t X0, Y0, W, H, D;
+    int64_t col0, rowtop;   /* the rectangle's first column and row, unclipped */
+} rast__rect_shade;
+
+/* Columns [r0, r1) of row j, all inside the rectangle's pixels. */
+static void rast__rect_span(const rast__rect_shade *s, int64_t j, int64_t r0, int64_t r1)
+{
+    const rast__grid *g = s->g;
+    const int64_t X0 = s->X0, Y0 = s->Y0, W = s->W, H = s->H, D = s->D;
+    unsigned char *p = (unsigned char *)s->target->pixels + (ptrdiff_t)j * s->target->stride;
+    unsigned char run[4 * RAST__SHADE_RUN];
+    int64_t b = j * g->unit + g->off - Y0;          /* 0 <= b < H */
+    /* 0 <= a < W, except under textbook rounding, which owns a first
+     * column whose sample is up to unit/2 left of X0 (a < 0): there the
+     * bilinear value is extrapolated and may leave 0..255 */
+    int64_t a = r0 * g->unit + g->off - X0;
+    int64_t i, n = r1 - r0;
+    int32_t x = (int32_t)r0, fill = 0, ch;
+
+    /* After each pixel's colour: store the run when it is full or the row
+     * ends. */
+#define RAST__RECT_EMIT()                                               \
+    do {                                                                \
+        if (++fill == RAST__SHADE_RUN || i + 1 == n) {                   \
+            rast__put_rgba(s->target, p, x, fill, run);                     \
+            x += fill;                                                  \
+            fill = 0;                                                   \
+        }                                                               \
+    } while (0)
+    if (s->prec == RAST_PRECISION_FLAT) {
+        for (i = 0; i < n; i++) {
+            for (ch = 0; ch < 4; ch++) run[4 * fill + ch] = s->colors[ch]; /* corner p0, as given */
+            RAST__RECT_EMIT();
+        }
+        return;
+    }
+    if (s->prec == RAST_PRECISION_EXACT) {
+        int64_t q[4], r[4], sq[4], sr[4];
+        for (ch = 0; ch < 4; ch++) {
+            int64_t slope = (H - b) * (s->c[1][ch] - s->c[0][ch]) + b * (s->c[2][ch] - s->c[3][ch]);
+            int64_t t = W * ((H - b) * s->c[0][ch] + b * s->c[3][ch]) + a * slope + D / 2;
+            int64_t step = (int64_t)g->unit * slope;
+            q[ch] = rast__floordiv(t, D); /* t < 0 only for a < 0 */
+            r[ch] = t - q[ch] * D;
+            sq[ch] = rast__floordiv(step, D);
+            sr[ch] = step - sq[ch] * D;
+        }
+        for (i = 0; i < n; i++) {
+            for (ch = 0; ch < 4; ch++) {
+                run[4 * fill + ch] = (unsigned char)(q[ch] < 0 ? 0 : q[ch] > 255 ? 255 : q[ch]);
+                q[ch] += sq[ch];
+                r[ch] += sr[ch];
+                if (r[ch] >= D) {
+                    r[ch] -= D;
+                    q[ch]++;
+                }
+            }
+            RAST__RECT_EMIT();
+        }
+        return;
+    }
+    /* Fixed: see the header.  k rows below the rectangle's first row,
+     * m columns right of its first column (unclipped, so that a clip
+     * does not change a value). */
+    {
+        const int32_t F = s->F;
+        int64_t first_b = s->rowtop * g->unit + g->off - Y0;
+        int64_t first_a = s->col0 * g->unit + g->off - X0;
+        int64_t krow = j - s->rowtop, m0 = r0 - s->col0;
+        int64_t cf[4], dc[4], half = ((int64_t)1 << F) >> 1, bias = (int64_t)1 << 41;
+        for (ch = 0; ch < 4; ch++) {
+            const int32_t *c0 = s->c[0], *c1 = s->c[1], *c2 = s->c[2], *c3 = s->c[3];
+            int64_t one = (int64_t)1 << F;
+            int64_t L = rast__floordiv(2 * (c0[ch] * H + first_b * (c3[ch] - c0[ch])) * one + H, 2 * H) +
+                        krow * rast__floordiv(2 * (int64_t)g->unit * (c3[ch] - c0[ch]) * one + H, 2 * H);
+            int64_t R = rast__floordiv(2 * (c1[ch] * H + first_b * (c2[ch] - c1[ch])) * one + H, 2 * H) +
+                        krow * rast__floordiv(2 * (int64_t)g->unit * (c2[ch] - c1[ch]) * one + H, 2 * H);
+            int64_t first = L + rast__floordiv(2 * (R - L) * first_a + W, 2 * W);
+            dc[ch] = rast__floordiv(2 * (R - L) * g->unit + W, 2 * W);
+            cf[ch] = first + m0 * dc[ch];
+        }
+        for (i = 0; i < n; i++) {
+            for (ch = 0; ch < 4; ch++) {
+                /* floor((C + one/2) / one) by a shift of the value made
+                 * non-negative by a multiple of one (|C| < 2^40) */
+                int64_t t = (int64_t)((uint64_t)(cf[ch] + half + bias) >> F) - (bias >> F);
+                run[4 * fill + ch] = (unsigned char)(t < 0 ? 0 : t > 255 ? 255 : t);
+                cf[ch] += dc[ch];
+            }
+            RAST__RECT_EMIT();
+        }
+    }
+#undef RAST__RECT_EMIT
+}
+
+/* The painter's full entry. */
+static void rast__rect_row(void *user, int32_t y, const int32_t *xs, int32_t n)
+{
+    const rast__rect_shade *s = (const rast__rect_shade *)user;
+    int32_t k;
+    for (k = 0; k < n; k++) rast__rect_span(s, y, xs[2 * k], xs[2 * k + 1]);
+}
+
 rast_status rast_fill_rect_gouraud(const rast_target *target, rast_point p0, rast_point p1,
                                    const uint8_t *colors, const rast_tri_opts *opts,
                                    const rast_shade_opts *shade)
 {
     rast__grid g;
     rast_rect clip;
-    int32_t c[4][4]; /* corner k, channel ch, with the corners put in order */
-    int32_t ch, k, F = 0;
-    int64_t X0, Y0, W, H, D, r0, r1, col0, col1, row0, row1, j;
-    unsigned char *base;
+    rast__rect_shade s;
+    rast__painter paint;
+    int32_t ch, k;
     rast_status st;
 
     st = rast__rect_check(target, p0, p1, colors, opts, shade, &g, &clip);
@@ -78,117 +188,27 @@ rast_status rast_fill_rect_gouraud(const rast_target *target, rast_point p0, ras
             int32_t src = k;
             if (flip_x) src = swap_x[src];
             if (flip_y) src = swap_y[src];
-            for (ch = 0; ch < 4; ch++) c[k][ch] = colors[4 * src + ch];
+            for (ch = 0; ch < 4; ch++) s.c[k][ch] = colors[4 * src + ch];
         }
-        X0 = 2 * (int64_t)(flip_x ? p1.x : p0.x);
-        Y0 = 2 * (int64_t)(flip_y ? p1.y : p0.y);
-        W = 2 * ((int64_t)p1.x - p0.x);
-        H = 2 * ((int64_t)p1.y - p0.y);
-        if (W < 0) W = -W;
-        if (H < 0) H = -H;
+        s.X0 = 2 * (int64_t)(flip_x ? p1.x : p0.x);
+        s.Y0 = 2 * (int64_t)(flip_y ? p1.y : p0.y);
+        s.W = 2 * ((int64_t)p1.x - p0.x);
+        s.H = 2 * ((int64_t)p1.y - p0.y);
+        if (s.W < 0) s.W = -s.W;
+        if (s.H < 0) s.H = -s.H;
     }
-
-    /* The polygon fill's pixels: columns counting the left side's crossing
-     * but not the right one's, rows from the top side (closed) to the
-     * bottom side (open). */
-    col0 = rast__cross_col(X0, 1, &g);
-    col1 = rast__cross_col(X0 + W, 1, &g);
-    row0 = rast__row_at_or_after(Y0, &g);
-    row1 = rast__row_at_or_after(Y0 + H, &g);
-    r0 = col0 > clip.x0 ? col0 : clip.x0;
-    r1 = col1 < clip.x1 ? col1 : clip.x1;
-    if (r0 >= r1) return RAST_OK;
-    if (row0 < clip.y0) row0 = clip.y0;
-    if (row1 > clip.y1) row1 = clip.y1;
-    if (row0 >= row1) return RAST_OK;
-
-    base = (unsigned char *)target->pixels;
-    D = W * H;
-    if (shade->precision == RAST_PRECISION_FIXED) F = shade->fraction_bits;
-
-    /* After each pixel's colour: store the run when it is full or the row
-     * ends. */
-#define RAST__RECT_EMIT()                                               \
-    do {                                                                \
-        if (++fill == RAST__SHADE_RUN || i + 1 == n) {                   \
-            rast__put_rgba(target, p, x, fill, run);                        \
-            x += fill;                                                  \
-            fill = 0;                                                   \
-        }                                                               \
-    } while (0)
-    for (j = row0; j < row1; j++) {
-        unsigned char *p = base + (ptrdiff_t)j * target->stride;
-        unsigned char run[4 * RAST__SHADE_RUN];
-        int64_t b = j * g.unit + g.off - Y0;          /* 0 <= b < H */
-        /* 0 <= a < W, except under textbook rounding, which owns a first
-         * column whose sample is up to unit/2 left of X0 (a < 0): there the
-         * bilinear value is extrapolated and may leave 0..255 */
-        int64_t a = r0 * g.unit + g.off - X0;
-        int64_t i, n = r1 - r0;
-        int32_t x = (int32_t)r0, fill = 0;
-
-        if (shade->precision == RAST_PRECISION_FLAT) {
-            for (i = 0; i < n; i++) {
-                for (ch = 0; ch < 4; ch++) run[4 * fill + ch] = colors[ch]; /* corner p0, as given */
-                RAST__RECT_EMIT();
-            }
-            continue;
-        }
-        if (shade->precision == RAST_PRECISION_EXACT) {
-            int64_t q[4], r[4], sq[4], sr[4];
-            for (ch = 0; ch < 4; ch++) {
-                int64_t slope = (H - b) * (c[1][ch] - c[0][ch]) + b * (c[2][ch] - c[3][ch]);
-                int64_t t = W * ((H - b) * c[0][ch] + b * c[3][ch]) + a * slope + D / 2;
-                int64_t step = (int64_t)g.unit * slope;
-                q[ch] = rast__floordiv(t, D); /* t < 0 only for a < 0 */
-                r[ch] = t - q[ch] * D;
-                sq[ch] = rast__floordiv(step, D);
-                sr[ch] = step - sq[ch] * D;
-            }
-            for (i = 0; i < n; i++) {
-                for (ch = 0; ch < 4; ch++) {
-                    run[4 * fill + ch] = (unsigned char)(q[ch] < 0 ? 0 : q[ch] > 255 ? 255 : q[ch]);
-                    q[ch] += sq[ch];
-                    r[ch] += sr[ch];
-                    if (r[ch] >= D) {
-                        r[ch] -= D;
-                        q[ch]++;
-                    }
-                }
-                RAST__RECT_EMIT();
-            }
-            continue;
-        }
-        /* Fixed: see the header.  k rows below the rectangle's first row,
-         * m columns right of its first column (unclipped, so that a clip
-         * does not change a value). */
-        {
-            int64_t first_b = rast__row_at_or_after(Y0, &g) * g.unit + g.off - Y0;
-            int64_t first_a = col0 * g.unit + g.off - X0;
-            int64_t krow = j - rast__row_at_or_after(Y0, &g), m0 = r0 - col0;
-            int64_t cf[4], dc[4], half = ((int64_t)1 << F) >> 1, bias = (int64_t)1 << 41;
-            for (ch = 0; ch < 4; ch++) {
-                int64_t one = (int64_t)1 << F;
-                int64_t L = rast__floordiv(2 * (c[0][ch] * H + first_b * (c[3][ch] - c[0][ch])) * one + H, 2 * H) +
-                            krow * rast__floordiv(2 * (int64_t)g.unit * (c[3][ch] - c[0][ch]) * one + H, 2 * H);
-                int64_t R = rast__floordiv(2 * (c[1][ch] * H + first_b * (c[2][ch] - c[1][ch])) * one + H, 2 * H) +
-                            krow * rast__floordiv(2 * (int64_t)g.unit * (c[2][ch] - c[1][ch]) * one + H, 2 * H);
-                int64_t first = L + rast__floordiv(2 * (R - L) * first_a + W, 2 * W);
-                dc[ch] = rast__floordiv(2 * (R - L) * g.unit + W, 2 * W);
-                cf[ch] = first + m0 * dc[ch];
-            }
-            for (i = 0; i < n; i++) {
-                for (ch = 0; ch < 4; ch++) {
-                    /* floor((C + one/2) / one) by a shift of the value made
-                     * non-negative by a multiple of one (|C| < 2^40) */
-                    int64_t t = (int64_t)((uint64_t)(cf[ch] + half + bias) >> F) - (bias >> F);
-                    run[4 * fill + ch] = (unsigned char)(t < 0 ? 0 : t > 255 ? 255 : t);
-                    cf[ch] += dc[ch];
-                }
-                RAST__RECT_EMIT();
-            }
-        }
-    }
-#undef RAST__RECT_EMIT
+    s.target = target;
+    s.colors = colors;
+    s.g = &g;
+    s.prec = shade->precision;
+    s.F = shade->precision == RAST_PRECISION_FIXED ? shade->fraction_bits : 0;
+    s.D = s.W * s.H;
+    s.col0 = rast__cross_col(s.X0, 1, &g);
+    s.rowtop = rast__row_at_or_after(s.Y0, &g);
+    memset(&paint, 0, sizeof paint);
+    paint.full = rast__rect_row;
+    paint.user = &s;
+    /* The rectangle filler feeds it the rectangle polygon's pixels. */
+    rast__rect_fill(s.X0, s.Y0, s.W, s.H, &g, &clip, &paint);
     return RAST_OK;
 }

@@ -17,6 +17,7 @@
 #   make display-example a 320x240 RGB565 display fed spans band by band (run by test-c)
 #   make single          build/single/rastrum.[ch]: the whole core in one file
 #   make test-single     the C tests against the single-file build
+#   make test-config     a cut build configuration: left-out features refused, kept ones unchanged
 #   make display-qemu    the display example on an emulated Cortex-M (qemu-system-arm)
 #   make fuzz-check      libFuzzer targets (clang): the corpus, then FUZZ_SECONDS=20 each (CI: 30)
 #   make fuzz-regress    the fuzz targets over the corpus without libFuzzer (gcc, sanitizers)
@@ -86,7 +87,7 @@ C_TESTS := $(patsubst tests/c/%.c,build/tests/%,$(wildcard tests/c/test_*.c))
 comma   := ,
 SAN     := -fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer -g
 
-.PHONY: race-check fuzz-long bench docs bench-precision cbench-coverage bench-precision-callgrind single test-single display-qemu fuzz-check fuzz-regress display-example valgrind valgrind-py firmware-check cross-check all lib test test-c test-install test-py demo asan asan-c asan-py strict install uninstall example clean
+.PHONY: test-config race-check fuzz-long bench docs bench-precision cbench-coverage bench-precision-callgrind single test-single display-qemu fuzz-check fuzz-regress display-example valgrind valgrind-py firmware-check cross-check all lib test test-c test-install test-py demo asan asan-c asan-py strict install uninstall example clean
 
 all: lib
 lib: build/librastrum.a build/librastrum.so
@@ -255,6 +256,25 @@ build/single/tests/%: tests/c/%.c build/single/rastrum.o tests/c/check.h tests/c
 
 test-single: $(SINGLE_TESTS)
 	@for t in $(SINGLE_TESTS); do echo "== $$t (single-file build)"; ./$$t || exit 1; done
+
+# A build configuration (csrc/src/base/config.h): tests/c/test_config.c
+# against the one-file library compiled with tests/c/config_cut.h checks
+# that the features it leaves out are refused cleanly; the pixels of the
+# kept ones must hash as in the full build's run.
+test-config: build/single/rastrum.c build/single/tests/test_config
+	@mkdir -p build/config
+	@for cc in gcc clang; do $$cc $(WARN) -O2 -DRAST_CONFIG_HEADER='"config_cut.h"' -Itests/c \
+	  -c build/single/rastrum.c -o build/config/rastrum.o || exit 1; done
+	@$(CC) $(WARN) -Wno-conversion -O2 -DRAST_CONFIG_HEADER='"config_cut.h"' -Ibuild/single \
+	  -Icsrc/src -Itests/c tests/c/test_config.c build/single/rastrum.c -o build/config/test_config
+	@./build/single/tests/test_config > build/config/full.txt
+	@./build/config/test_config > build/config/cut.txt
+	@grep '^scene ' build/config/full.txt > build/config/full.scenes
+	@grep '^scene ' build/config/cut.txt > build/config/cut.scenes
+	@cat build/config/cut.txt | grep -v '^scene '
+	@if cmp -s build/config/full.scenes build/config/cut.scenes; then \
+	  echo "test-config: $$(wc -l < build/config/cut.scenes) kept scenes hash as in the full build"; \
+	else diff build/config/full.scenes build/config/cut.scenes; echo "test-config: FAILED"; exit 1; fi
 
 # The display example on an emulated Cortex-M (qemu-system-arm, mps2-an385,
 # semihosting), from the single-file build; its frame hash must equal this

@@ -14,6 +14,7 @@
 #include <string.h>
 
 #include "rastrum.h"
+#include "base/config.h"
 
 /* For a filler's row loop and its setup: inlined whatever the compiler's
  * weighing of code size says, where it can be told (GCC, clang), so that

@@ -9,7 +9,8 @@
 #   make strict          the core and the Python glue under gcc and clang, -std=c99 -pedantic -Werror
 #   make valgrind        C tests under valgrind memcheck, then valgrind-py
 #   make valgrind-py     a quick profile of the Python tests under memcheck
-#   make firmware-check  the core for Cortex-M0 and rv32: no float, heap or stdio; .text sizes
+#   make firmware-check  the core for Cortex-M0 and rv32: no float, heap or stdio; .text sizes,
+#                        and what the firmware examples link (examples/firmware_*.c)
 #   make cross-check     C tests on 32-bit ARM and big-endian MIPS (qemu), same pixels as x86
 #   make install         PREFIX=/usr/local DESTDIR= : header, libraries, rastrum.pc, CMake package
 #   make uninstall       the reverse
@@ -260,8 +261,10 @@ test-single: $(SINGLE_TESTS)
 # A build configuration (csrc/src/base/config.h): tests/c/test_config.c
 # against the one-file library compiled with tests/c/config_cut.h checks
 # that the features it leaves out are refused cleanly; the pixels of the
-# kept ones must hash as in the full build's run.
-test-config: build/single/rastrum.c build/single/tests/test_config
+# kept ones must hash as in the full build's run.  Then each firmware
+# example under its own configuration header draws the picture it draws
+# with the full library.
+test-config: build/single/rastrum.c build/single/tests/test_config display-example
 	@mkdir -p build/config
 	@for cc in gcc clang; do $$cc $(WARN) -O2 -DRAST_CONFIG_HEADER='"config_cut.h"' -Itests/c \
 	  -c build/single/rastrum.c -o build/config/rastrum.o || exit 1; done
@@ -275,6 +278,25 @@ test-config: build/single/rastrum.c build/single/tests/test_config
 	@if cmp -s build/config/full.scenes build/config/cut.scenes; then \
 	  echo "test-config: $$(wc -l < build/config/cut.scenes) kept scenes hash as in the full build"; \
 	else diff build/config/full.scenes build/config/cut.scenes; echo "test-config: FAILED"; exit 1; fi
+	@for app in firmware_min firmware_tri firmware_lines; do \
+	  $(CC) $(WARN) -O2 -DFIRMWARE_PRINT -Iexamples -Ibuild/single examples/$$app.c \
+	    build/single/rastrum.c -o build/config/$$app-full || exit 1; \
+	  $(CC) $(WARN) -O2 -DFIRMWARE_PRINT -DRAST_CONFIG_HEADER="\"$${app}_conf.h\"" -Iexamples \
+	    -Ibuild/single examples/$$app.c build/single/rastrum.c -o build/config/$$app || exit 1; \
+	  f=$$(./build/config/$$app-full) || { echo "$$app: $$f"; exit 1; }; \
+	  c=$$(./build/config/$$app) || { echo "$$app (configured): $$c"; exit 1; }; \
+	  if [ "$$f" = "$$c" ]; then echo "test-config: $$app under $${app}_conf.h: $$c, as in the full build"; \
+	  else echo "test-config: $$app: '$$c' under $${app}_conf.h, '$$f' in the full build"; exit 1; fi; \
+	done
+	@$(CC) $(WARN) -O2 -DRAST_CONFIG_HEADER='"display_rgb565_conf.h"' -Iexamples -Ibuild/single \
+	  examples/display_rgb565.c build/single/rastrum.c -o build/config/display_rgb565
+	@./build/config/display_rgb565 build/config/display_rgb565.ppm > build/config/display.log
+	@./build/display_rgb565 build/config/display_full.ppm > build/config/display_full.log
+	@c=$$(sed -n 's/^frame hash: //p' build/config/display.log); \
+	f=$$(sed -n 's/^frame hash: //p' build/config/display_full.log); \
+	if [ -n "$$c" ] && [ "$$c" = "$$f" ]; then \
+	  echo "test-config: display_rgb565 under display_rgb565_conf.h: frame hash $$c, as in the full build"; \
+	else echo "test-config: display_rgb565: frame hash '$$c' under its configuration, '$$f' in the full build"; exit 1; fi
 
 # The display example on an emulated Cortex-M (qemu-system-arm, mps2-an385,
 # semihosting), from the single-file build; its frame hash must equal this

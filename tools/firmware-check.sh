@@ -4,7 +4,7 @@
 # every core file freestanding, lists the undefined symbols each object
 # needs (nm -u), fails on any that is not an integer-arithmetic helper or
 # memset/memcpy/memmove, and prints the .text bytes of each file and of the
-# whole core.
+# whole core; then the code typical applications link (tools/firmware/apps.sh).
 #
 #   tools/firmware-check.sh [OUTDIR]      (make firmware-check)
 set -eu
@@ -58,6 +58,11 @@ for t in $(printf '%s\n' "$targets" | tr ' ' '~'); do
   fi
   built=$((built + 1))
 done
+# What typical applications link, from the one-file build (tools/firmware/apps.sh).
+if [ -f build/single/rastrum.c ] && command -v arm-none-eabi-gcc >/dev/null 2>&1; then
+  echo
+  tools/firmware/apps.sh "$out/apps" || status=1
+fi
 [ "$built" -gt 0 ] || status=1
 [ "$status" -eq 0 ] && echo "firmware-check: ok" || echo "firmware-check: FAILED"
 exit "$status"

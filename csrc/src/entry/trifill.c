@@ -8,7 +8,7 @@
 #include "painters/paint.h"
 
 typedef struct rast__tri_algo {
-    const char *name;
+    char name[10]; /* in the row: see rast__algo (registry.h) */
     rast__tri_scratch_fn scratch;
     rast__tri_fill_fn fill;
 } rast__tri_algo;

@@ -44,7 +44,9 @@ for t in $(printf '%s\n' "$targets" | tr ' ' '~'); do
   if [ -f build/single/rastrum.c ]; then
     # shellcheck disable=SC2086
     $cc $common $flags -Ibuild/single -c build/single/rastrum.c -o "$out/$name/single.o"
-    printf '  %-14s %8d\n' "single file" "$($sz -A "$out/$name/single.o" | awk '$1 ~ /^\.text/ {s += $2} END {print s + 0}')"
+    whole=$($sz -A "$out/$name/single.o" | awk '$1 ~ /^\.text/ {s += $2} END {print s + 0}')
+    printf '  %-14s %8d\n' "single file" "$whole"
+    printf 'whole core %s: %d B\n' "$name" "$whole"
   fi
   # What the core as a whole needs from outside: undefined in some object,
   # defined in none.

@@ -53,9 +53,6 @@ link firmware_tri firmware_tri_conf.h examples/firmware_tri.c entry.o "--specs=n
 link firmware_lines firmware_lines_conf.h examples/firmware_lines.c entry.o "--specs=nano.specs --specs=nosys.specs"
 link display_rgb565 display_rgb565_conf.h examples/display_rgb565.c startup.o "--specs=rdimon.specs"
 link display_rgb565_full - examples/display_rgb565.c startup.o "--specs=rdimon.specs"
-printf 'whole core cortex-m0: %d B\n' \
-  "$(arm-none-eabi-size -A "$out/display_rgb565_full/rastrum.o" | awk '$1 ~ /^\.text/ {s += $2} END {print s + 0}')"
-echo "  (.text of the one-file build, every feature, nothing dropped)"
 
 # Every public function referenced (an application calling the whole
 # API): the core as linked, with every feature, and with the features the

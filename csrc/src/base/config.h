@@ -69,10 +69,14 @@
 #define RAST_CONFIG_POLYGON64 1
 #endif
 
-/* Is value v (a non-negative enumerator, or any unsigned value) kept in
- * mask m?  A constant when v is: the compiler folds the test, and a table
- * row or branch it guards refers to nothing when it is 0. */
-#define RAST__HAS(m, v) ((unsigned)(v) < 32u && (((unsigned long)(m) >> (unsigned)(v)) & 1u))
+/* Is value v (an enumerator, or a value already checked against its enum's
+ * count) kept in mask m?  A constant when v is: the compiler folds the
+ * test, and a table row or branch it guards refers to nothing when it is
+ * 0.  The default mask (all bits) is a constant 1 for any v, so that the
+ * default build's checks cost nothing. */
+#define RAST__HAS(m, v)                                                        \
+    ((unsigned long)(m) == 0xFFFFFFFFul ||                                     \
+     ((unsigned)(v) < 32u && (((unsigned long)(m) >> (unsigned)(v)) & 1u)))
 
 /* A boundary mode other than RAST_BOUNDARY_EXACT is kept. */
 #define RAST__BOUNDARY_MODES                                                   \

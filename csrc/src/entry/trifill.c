@@ -28,7 +28,7 @@ static const rast__tri_algo rast__tri_algos[RAST_TRI_COUNT_] = {
 
 rast_status rast_tri_algorithm_info(rast_tri_algorithm algorithm, const char **name)
 {
-    if ((unsigned)algorithm >= RAST_TRI_COUNT_ || !rast__tri_algos[algorithm].fill)
+    if ((unsigned)algorithm >= RAST_TRI_COUNT_ || !RAST__HAS(RAST_CONFIG_TRI_ALGORITHMS, algorithm))
         return RAST_E_ALGORITHM;
     if (name) *name = rast__tri_algos[algorithm].name;
     return RAST_OK;
@@ -39,8 +39,12 @@ static rast_status rast__tri_check_opts(const rast_tri_opts *o, rast__grid *g,
                                         const rast__tri_algo **algo)
 {
     rast_status st = rast__grid_init(g, o->subpixel_bits, o->sample, o->rounding, o->boundary);
+    /* A build without triangles always fails below: set *algo anyway, or
+     * the compiler warns that the callers use it unset. */
+    if (RAST_CONFIG_TRI_ALGORITHMS == 0) *algo = NULL;
     if (st != RAST_OK) return st;
-    if ((unsigned)o->algorithm >= RAST_TRI_COUNT_ || !rast__tri_algos[o->algorithm].fill)
+    if ((unsigned)o->algorithm >= RAST_TRI_COUNT_ ||
+        !RAST__HAS(RAST_CONFIG_TRI_ALGORITHMS, o->algorithm))
         return RAST_E_ALGORITHM;
     *algo = &rast__tri_algos[o->algorithm];
     return RAST_OK;

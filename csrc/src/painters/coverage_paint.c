@@ -31,7 +31,6 @@ static rast_status rast__fill_aa(const rast_target *target, const rast_polygon *
     rast_status st = rast__target_check(target, &clip);
     if (st != RAST_OK) return st;
     p.fmt = &rast__formats[target->format];
-    if (!p.fmt->blend) return RAST_E_ARG; /* anti-aliasing left out (base/config.h) */
     if (p.fmt->value && !pixel) return RAST_E_NULL;
     p.base = (unsigned char *)target->pixels;
     p.stride = target->stride;

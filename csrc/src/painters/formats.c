@@ -268,8 +268,9 @@ static void rast__mono1_blend(unsigned char *row, int32_t x0, int32_t x1, const 
 
 /* Format f's row as the build's configuration keeps it (base/config.h): all
  * zero when f is left out (RAST__FORMAT_KEPT refuses f before its row is
- * read); without shading no `put`, without anti-aliasing no `blend`, so
- * that the linker drops what nothing calls.  `pack` stays with the format:
+ * read); without shading no `put`, without anti-aliasing no `blend` (no
+ * method is kept then, and every call that would blend refuses its
+ * method first), so that the linker drops what nothing calls.  `pack` stays with the format:
  * rast_pack_color is how an application makes a pixel value.  A slot a
  * format has none of is a typed null (RAST__NO_*): `c ? NULL : NULL` would
  * be a void pointer, which ISO C does not let initialise a function

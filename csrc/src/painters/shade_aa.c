@@ -188,7 +188,6 @@ rast_status rast_fill_triangles_shaded_aa(const rast_target *target, const rast_
         return RAST_E_ARG;
     p.fmt = &rast__formats[target->format];
     if (!p.fmt->pack) return RAST_E_FORMAT;
-    if (!p.fmt->blend) return RAST_E_ARG; /* anti-aliasing left out (base/config.h) */
     width = clip.x1 - clip.x0;
     height = clip.y1 - clip.y0;
     rows = height < RAST__AA_SHADE_ROWS ? height : RAST__AA_SHADE_ROWS;

@@ -60,7 +60,8 @@ link display_rgb565_full - examples/display_rgb565.c startup.o "--specs=rdimon.s
 # those calls not referenced, RAST_CONFIG_AA_METHODS 0).
 api() {
   sed -n 's/^RAST_API .*[ *]\(rast_[a-z0-9_]*\)(.*/\1/p' csrc/include/rastrum.h | grep -Ev "$1" |
-    awk 'BEGIN { print "#include \"rastrum.h\""; print "typedef void (*fn)(void);"
+    awk 'BEGIN { print "#define RAST_STATIC_LINKING_ONLY"; print "#include \"rastrum.h\""
+                 print "typedef void (*fn)(void);"
                  print "volatile fn keep[] = {" }
          { printf "    (fn)%s,\n", $1 }
          END { print "};"; print "int main(void) { return keep[0] != 0; }" }'

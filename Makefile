@@ -259,25 +259,28 @@ test-single: $(SINGLE_TESTS)
 	@for t in $(SINGLE_TESTS); do echo "== $$t (single-file build)"; ./$$t || exit 1; done
 
 # A build configuration (csrc/src/base/config.h): tests/c/test_config.c
-# against the one-file library compiled with tests/c/config_cut.h checks
-# that the features it leaves out are refused cleanly; the pixels of the
-# kept ones must hash as in the full build's run.  Then each firmware
+# against the one-file library compiled with tests/c/config_cut.h, then
+# with examples/firmware_min_conf.h, checks that the features each leaves
+# out are refused cleanly; the pixels of the kept ones must hash as in the
+# full build's run.  Then each firmware
 # example under its own configuration header draws the picture it draws
 # with the full library.
 test-config: build/single/rastrum.c build/single/tests/test_config display-example
 	@mkdir -p build/config
-	@for cc in gcc clang; do $$cc $(WARN) -O2 -DRAST_CONFIG_HEADER='"config_cut.h"' -Itests/c \
-	  -c build/single/rastrum.c -o build/config/rastrum.o || exit 1; done
-	@$(CC) $(WARN) -Wno-conversion -O2 -DRAST_CONFIG_HEADER='"config_cut.h"' -Ibuild/single \
-	  -Icsrc/src -Itests/c tests/c/test_config.c build/single/rastrum.c -o build/config/test_config
 	@./build/single/tests/test_config > build/config/full.txt
-	@./build/config/test_config > build/config/cut.txt
-	@grep '^scene ' build/config/full.txt > build/config/full.scenes
-	@grep '^scene ' build/config/cut.txt > build/config/cut.scenes
-	@cat build/config/cut.txt | grep -v '^scene '
-	@if cmp -s build/config/full.scenes build/config/cut.scenes; then \
-	  echo "test-config: $$(wc -l < build/config/cut.scenes) kept scenes hash as in the full build"; \
-	else diff build/config/full.scenes build/config/cut.scenes; echo "test-config: FAILED"; exit 1; fi
+	@grep '^scene ' build/config/full.txt | sort > build/config/full.scenes
+	@for conf in config_cut firmware_min_conf; do \
+	  for cc in gcc clang; do $$cc $(WARN) -O2 -DRAST_CONFIG_HEADER="\"$$conf.h\"" -Itests/c -Iexamples \
+	    -c build/single/rastrum.c -o build/config/rastrum.o || exit 1; done; \
+	  $(CC) $(WARN) -Wno-conversion -O2 -DRAST_CONFIG_HEADER="\"$$conf.h\"" -Ibuild/single \
+	    -Icsrc/src -Itests/c -Iexamples tests/c/test_config.c build/single/rastrum.c -o build/config/test_$$conf || exit 1; \
+	  ./build/config/test_$$conf > build/config/$$conf.txt || { grep -v '^scene ' build/config/$$conf.txt; exit 1; }; \
+	  grep -v '^scene ' build/config/$$conf.txt; \
+	  grep '^scene ' build/config/$$conf.txt | sort > build/config/$$conf.scenes; \
+	  if [ -n "$$(comm -23 build/config/$$conf.scenes build/config/full.scenes)" ]; then \
+	    comm -23 build/config/$$conf.scenes build/config/full.scenes; echo "test-config: $$conf: FAILED"; exit 1; fi; \
+	  echo "test-config: $$conf.h: $$(wc -l < build/config/$$conf.scenes) kept scenes hash as in the full build"; \
+	done
 	@for app in firmware_min firmware_tri firmware_lines; do \
 	  $(CC) $(WARN) -O2 -DFIRMWARE_PRINT -Iexamples -Ibuild/single examples/$$app.c \
 	    build/single/rastrum.c -o build/config/$$app-full || exit 1; \

@@ -30,7 +30,7 @@
  *   RAST_CONFIG_AA_METHODS       rast_aa_method bits; 0 leaves out anti-aliasing
  *                                (and the formats' coverage blending): RAST_E_ARG
  *   RAST_CONFIG_SHADING          0 leaves out the formats' shaded stores
- *                                (Gouraud fills): RAST_E_FORMAT
+ *                                (Gouraud fills, also anti-aliased): RAST_E_FORMAT
  *   RAST_CONFIG_POLYGON64        0 leaves out 64-bit vertices (rast_polygon64):
  *                                RAST_E_WIDE
  * The entry points an application does not call cost nothing either way:

@@ -278,14 +278,20 @@ static void rast__mono1_blend(unsigned char *row, int32_t x0, int32_t x1, const 
 #define RAST__NO_ROW ((rast__row_fn)0)
 #define RAST__NO_PACK ((void (*)(const unsigned char *, unsigned char *))0)
 #define RAST__NO_PUT ((void (*)(unsigned char *, int32_t, int32_t, const unsigned char *))0)
-#define RAST__KEEP(f, x) (RAST__HAS(RAST_CONFIG_FORMATS, f) ? (x) : 0)
+/* The row of f is there: f is kept, or f is RGBA8888, the colours the
+ * anti-aliased shaded triangles shade a band into (shade_aa.c), when they
+ * are (the target format check still refuses a left-out RGBA8888). */
+#define RAST__ROW_KEPT(f)                                                      \
+    (RAST__HAS(RAST_CONFIG_FORMATS, f) ||                                      \
+     ((f) == RAST_FORMAT_RGBA8888 && RAST_CONFIG_SHADING && RAST_CONFIG_AA_METHODS))
+#define RAST__KEEP(f, x) (RAST__ROW_KEPT(f) ? (x) : 0)
 #define RAST__FORMAT_ROW(f, bits, value, channels, row, fill, pack, put, blend) \
     {RAST__KEEP(f, bits), RAST__KEEP(f, value), RAST__KEEP(f, channels), \
-     RAST__HAS(RAST_CONFIG_FORMATS, f) ? row : NULL, \
-     RAST__HAS(RAST_CONFIG_FORMATS, f) ? fill : NULL, \
-     RAST__HAS(RAST_CONFIG_FORMATS, f) ? pack : NULL, \
-     RAST__HAS(RAST_CONFIG_FORMATS, f) && RAST_CONFIG_SHADING ? put : NULL, \
-     RAST__HAS(RAST_CONFIG_FORMATS, f) && RAST_CONFIG_AA_METHODS ? blend : NULL}
+     RAST__ROW_KEPT(f) ? row : NULL, \
+     RAST__ROW_KEPT(f) ? fill : NULL, \
+     RAST__ROW_KEPT(f) ? pack : NULL, \
+     RAST__ROW_KEPT(f) && RAST_CONFIG_SHADING ? put : NULL, \
+     RAST__ROW_KEPT(f) && RAST_CONFIG_AA_METHODS ? blend : NULL}
 
 const rast__format rast__formats[RAST_FORMAT_COUNT_] = {
     /* format bits value channels row fill pack put blend */

@@ -9,7 +9,8 @@
 #   make strict          the core and the Python glue under gcc and clang, -std=c99 -pedantic -Werror
 #   make valgrind        C tests under valgrind memcheck, then valgrind-py
 #   make valgrind-py     a quick profile of the Python tests under memcheck
-#   make firmware-check  the core for Cortex-M0 and rv32: no float, heap or stdio; .text sizes
+#   make firmware-check  the core for Cortex-M0 and rv32: no float, heap or stdio; .text sizes,
+#                        and what the firmware examples link (examples/firmware_*.c)
 #   make cross-check     C tests on 32-bit ARM and big-endian MIPS (qemu), same pixels as x86
 #   make install         PREFIX=/usr/local DESTDIR= : header, libraries, rastrum.pc, CMake package
 #   make uninstall       the reverse
@@ -17,6 +18,7 @@
 #   make display-example a 320x240 RGB565 display fed spans band by band (run by test-c)
 #   make single          build/single/rastrum.[ch]: the whole core in one file
 #   make test-single     the C tests against the single-file build
+#   make test-config     a cut build configuration: left-out features refused, kept ones unchanged
 #   make display-qemu    the display example on an emulated Cortex-M (qemu-system-arm)
 #   make fuzz-check      libFuzzer targets (clang): the corpus, then FUZZ_SECONDS=20 each (CI: 30)
 #   make fuzz-regress    the fuzz targets over the corpus without libFuzzer (gcc, sanitizers)
@@ -86,7 +88,7 @@ C_TESTS := $(patsubst tests/c/%.c,build/tests/%,$(wildcard tests/c/test_*.c))
 comma   := ,
 SAN     := -fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer -g
 
-.PHONY: race-check fuzz-long bench docs bench-precision cbench-coverage bench-precision-callgrind single test-single display-qemu fuzz-check fuzz-regress display-example valgrind valgrind-py firmware-check cross-check all lib test test-c test-install test-py demo asan asan-c asan-py strict install uninstall example clean
+.PHONY: test-config race-check fuzz-long bench docs bench-precision cbench-coverage bench-precision-callgrind single test-single display-qemu fuzz-check fuzz-regress display-example valgrind valgrind-py firmware-check cross-check all lib test test-c test-install test-py demo asan asan-c asan-py strict install uninstall example clean
 
 all: lib
 lib: build/librastrum.a build/librastrum.so
@@ -255,6 +257,49 @@ build/single/tests/%: tests/c/%.c build/single/rastrum.o tests/c/check.h tests/c
 
 test-single: $(SINGLE_TESTS)
 	@for t in $(SINGLE_TESTS); do echo "== $$t (single-file build)"; ./$$t || exit 1; done
+
+# A build configuration (csrc/src/base/config.h): tests/c/test_config.c
+# against the one-file library compiled with tests/c/config_cut.h, then
+# with examples/firmware_min_conf.h, checks that the features each leaves
+# out are refused cleanly; the pixels of the kept ones must hash as in the
+# full build's run.  Then each firmware
+# example under its own configuration header draws the picture it draws
+# with the full library.
+test-config: build/single/rastrum.c build/single/tests/test_config display-example
+	@mkdir -p build/config
+	@./build/single/tests/test_config > build/config/full.txt
+	@grep '^scene ' build/config/full.txt | sort > build/config/full.scenes
+	@for conf in config_cut firmware_min_conf; do \
+	  for cc in gcc clang; do $$cc $(WARN) -O2 -DRAST_CONFIG_HEADER="\"$$conf.h\"" -Itests/c -Iexamples \
+	    -c build/single/rastrum.c -o build/config/rastrum.o || exit 1; done; \
+	  $(CC) $(WARN) -Wno-conversion -O2 -DRAST_CONFIG_HEADER="\"$$conf.h\"" -Ibuild/single \
+	    -Icsrc/src -Itests/c -Iexamples tests/c/test_config.c build/single/rastrum.c -o build/config/test_$$conf || exit 1; \
+	  ./build/config/test_$$conf > build/config/$$conf.txt || { grep -v '^scene ' build/config/$$conf.txt; exit 1; }; \
+	  grep -v '^scene ' build/config/$$conf.txt; \
+	  grep '^scene ' build/config/$$conf.txt | sort > build/config/$$conf.scenes; \
+	  if [ -n "$$(comm -23 build/config/$$conf.scenes build/config/full.scenes)" ]; then \
+	    comm -23 build/config/$$conf.scenes build/config/full.scenes; echo "test-config: $$conf: FAILED"; exit 1; fi; \
+	  echo "test-config: $$conf.h: $$(wc -l < build/config/$$conf.scenes) kept scenes hash as in the full build"; \
+	done
+	@for app in firmware_min firmware_tri firmware_lines; do \
+	  $(CC) $(WARN) -O2 -DFIRMWARE_PRINT -Iexamples -Ibuild/single examples/$$app.c \
+	    build/single/rastrum.c -o build/config/$$app-full || exit 1; \
+	  $(CC) $(WARN) -O2 -DFIRMWARE_PRINT -DRAST_CONFIG_HEADER="\"$${app}_conf.h\"" -Iexamples \
+	    -Ibuild/single examples/$$app.c build/single/rastrum.c -o build/config/$$app || exit 1; \
+	  f=$$(./build/config/$$app-full) || { echo "$$app: $$f"; exit 1; }; \
+	  c=$$(./build/config/$$app) || { echo "$$app (configured): $$c"; exit 1; }; \
+	  if [ "$$f" = "$$c" ]; then echo "test-config: $$app under $${app}_conf.h: $$c, as in the full build"; \
+	  else echo "test-config: $$app: '$$c' under $${app}_conf.h, '$$f' in the full build"; exit 1; fi; \
+	done
+	@$(CC) $(WARN) -O2 -DRAST_CONFIG_HEADER='"display_rgb565_conf.h"' -Iexamples -Ibuild/single \
+	  examples/display_rgb565.c build/single/rastrum.c -o build/config/display_rgb565
+	@./build/config/display_rgb565 build/config/display_rgb565.ppm > build/config/display.log
+	@./build/display_rgb565 build/config/display_full.ppm > build/config/display_full.log
+	@c=$$(sed -n 's/^frame hash: //p' build/config/display.log); \
+	f=$$(sed -n 's/^frame hash: //p' build/config/display_full.log); \
+	if [ -n "$$c" ] && [ "$$c" = "$$f" ]; then \
+	  echo "test-config: display_rgb565 under display_rgb565_conf.h: frame hash $$c, as in the full build"; \
+	else echo "test-config: display_rgb565: frame hash '$$c' under its configuration, '$$f' in the full build"; exit 1; fi
 
 # The display example on an emulated Cortex-M (qemu-system-arm, mps2-an385,
 # semihosting), from the single-file build; its frame hash must equal this

@@ -16,6 +16,7 @@
  * Integer only, no heap, no libm: it builds for a microcontroller as is
  * (minus the PPM writer).
  */
+#define RAST_STATIC_LINKING_ONLY /* RAST_EDGEFLAG_SCRATCH_BOUND (built with the library) */
 #include <stdint.h>
 #include <stdio.h>
 #include <string.h>

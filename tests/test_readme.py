@@ -91,3 +91,69 @@ def test_c_block(page, k, code, tmp_path):
         assert data.startswith(header) and len(data) == len(header) + 320 * 240
         pixels = data[len(header):]
         assert set(pixels) == {0, 255} and 0 < pixels.count(255) < 320 * 240
+
+
+CONF_PROBE = r"""
+#include <stdio.h>
+#include "rastrum.h"
+#include "%s"
+
+/* Each value is kept (its info call succeeds) iff the header's mask has
+ * its bit; 64-bit vertices iff RAST_CONFIG_POLYGON64. */
+int main(void)
+{
+    int v, bad = 0;
+    int32_t bytes;
+    size_t need;
+    rast_fill_opts o = {RAST_ALGO_AET, RAST_RULE_EVENODD, 0, RAST_SAMPLE_CENTER, RAST_ROUND_EXACT,
+                        RAST_BOUNDARY_EXACT};
+    for (v = 0; v < RAST_ALGO_COUNT_; v++)
+        bad |= (rast_algorithm_info((rast_algorithm)v, NULL, NULL) == RAST_OK) !=
+               (int)((RAST_CONFIG_ALGORITHMS >> v) & 1u);
+    for (v = 0; v < RAST_TRI_COUNT_; v++)
+        bad |= (rast_tri_algorithm_info((rast_tri_algorithm)v, NULL) == RAST_OK) !=
+               (int)((RAST_CONFIG_TRI_ALGORITHMS >> v) & 1u);
+    for (v = 0; v < RAST_AA_COUNT_; v++)
+        bad |= (rast_aa_method_info((rast_aa_method)v, NULL) == RAST_OK) !=
+               (int)((RAST_CONFIG_AA_METHODS >> v) & 1u);
+    for (v = 0; v < RAST_FORMAT_COUNT_; v++)
+        bad |= (rast_format_bytes((rast_format)v, &bytes) == RAST_OK) !=
+               (int)((RAST_CONFIG_FORMATS >> v) & 1u);
+    bad |= (rast_scratch_size64(&o, 3, 8, 8, &need) == RAST_OK) != (RAST_CONFIG_POLYGON64 != 0);
+    printf("%%s\n", bad ? "config probe: FAILED" : "config probe: ok");
+    return bad;
+}
+"""
+
+
+CONF_BLOCKS = [b for b in blocks("c") if "#define RAST_CONFIG_" in b[2] and "int main(" not in b[2]]
+
+
+def test_the_pages_show_a_configuration_header():
+    assert {p for p, k, c in CONF_BLOCKS} == {"README.md", "docs/c.md"}
+
+
+@pytest.mark.parametrize("page, k, conf", CONF_BLOCKS, ids=lambda v: str(v) if not isinstance(v, str) or
+                         len(v) < 40 else "code")
+def test_config_header_block(page, k, conf, tmp_path):
+    """A configuration header of the pages, as written: the core compiled
+    with it keeps exactly what it names, and the README's program (which
+    calls only what the headers keep: the AET into GRAY8) still builds and
+    runs against it."""
+    cc = shutil.which(os.environ.get("CC", "cc"))
+    if cc is None:
+        pytest.fail("no C compiler to build the docs' C examples")
+    (tmp_path / "my_rast_conf.h").write_text(conf)
+    (tmp_path / "probe.c").write_text(CONF_PROBE % "my_rast_conf.h")
+    quad = next(c for p, k, c in blocks("c") if p == "README.md" and '"quad.pgm"' in c)
+    (tmp_path / "quad.c").write_text(quad)
+    sources = sorted(glob.glob(os.path.join(ROOT, "csrc", "src", "*", "*.c")))
+    for name in ("probe", "quad"):
+        subprocess.run(
+            [cc, "-std=c99", "-pedantic", "-Wall", "-Wextra", "-Werror", '-DRAST_CONFIG_HEADER="my_rast_conf.h"',
+             "-I", str(tmp_path), "-I", os.path.join(ROOT, "csrc", "include"), "-I", os.path.join(ROOT, "csrc", "src"),
+             str(tmp_path / (name + ".c"))] + sources + ["-o", str(tmp_path / name)],
+            check=True,
+        )
+        subprocess.run([str(tmp_path / name)], check=True, cwd=tmp_path)
+    assert (tmp_path / "quad.pgm").exists()

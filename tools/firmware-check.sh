@@ -4,7 +4,7 @@
 # every core file freestanding, lists the undefined symbols each object
 # needs (nm -u), fails on any that is not an integer-arithmetic helper or
 # memset/memcpy/memmove, and prints the .text bytes of each file and of the
-# whole core.
+# whole core; then the code typical applications link (tools/firmware/apps.sh).
 #
 #   tools/firmware-check.sh [OUTDIR]      (make firmware-check)
 set -eu
@@ -44,7 +44,9 @@ for t in $(printf '%s\n' "$targets" | tr ' ' '~'); do
   if [ -f build/single/rastrum.c ]; then
     # shellcheck disable=SC2086
     $cc $common $flags -Ibuild/single -c build/single/rastrum.c -o "$out/$name/single.o"
-    printf '  %-14s %8d\n' "single file" "$($sz -A "$out/$name/single.o" | awk '$1 ~ /^\.text/ {s += $2} END {print s + 0}')"
+    whole=$($sz -A "$out/$name/single.o" | awk '$1 ~ /^\.text/ {s += $2} END {print s + 0}')
+    printf '  %-14s %8d\n' "single file" "$whole"
+    printf 'whole core %s: %d B\n' "$name" "$whole"
   fi
   # What the core as a whole needs from outside: undefined in some object,
   # defined in none.
@@ -58,6 +60,11 @@ for t in $(printf '%s\n' "$targets" | tr ' ' '~'); do
   fi
   built=$((built + 1))
 done
+# What typical applications link, from the one-file build (tools/firmware/apps.sh).
+if [ -f build/single/rastrum.c ] && command -v arm-none-eabi-gcc >/dev/null 2>&1; then
+  echo
+  tools/firmware/apps.sh "$out/apps" || status=1
+fi
 [ "$built" -gt 0 ] || status=1
 [ "$status" -eq 0 ] && echo "firmware-check: ok" || echo "firmware-check: FAILED"
 exit "$status"

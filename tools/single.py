@@ -74,6 +74,7 @@ def main(outdir):
              " * from csrc/ (do not edit: edit csrc/ and run `make single`).  Build it with\n"
              " * rastrum.h beside it: cc -std=c99 -c rastrum.c.  Integer only, no heap, no\n"
              " * stdio; needs <stdint.h>, <stddef.h> and <string.h>.\n */\n",
+             '#define RAST_STATIC_LINKING_ONLY /* the core sees the whole header */\n'
              '#include "rastrum.h"\n']
     in_headers = set()
     for name in headers_in_order():

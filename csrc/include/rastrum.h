@@ -60,6 +60,24 @@
  * Safety. No function writes outside target->clip (itself inside the
  * target), whatever the geometry.  Bad arguments return a negative
  * rast_status and write nothing.
+ *
+ * ---------------------------------------------------------------------------
+ * API tiers and the order of this header
+ * ---------------------------------------------------------------------------
+ *
+ * Stable: everything up to "What may change" at the end, by topic:
+ * conventions and units (limits, status codes, geometry), targets and pixel
+ * formats, polygons, triangles, lines, coverage and anti-aliasing, shading,
+ * scenes drawn band by band, region fill.  Within a major version these
+ * keep their names, signatures, layouts and meaning (new enumerators and
+ * calls may be added).
+ * May change: what follows RAST_STATIC_LINKING_ONLY (declared only when
+ * the includer defines it first, as lz4.h's LZ4_STATIC_LINKING_ONLY): the
+ * scratch bounds that spell out the fillers' internal layouts, and the
+ * building blocks of one consumer (pycocotools' rule).
+ * A build may also leave features out (pay for what you call: a
+ * RAST_CONFIG_HEADER of the application's own; docs/c.md); a call naming
+ * a left-out feature gets the status an unknown value gets.
  */
 #ifndef RASTRUM_H
 #define RASTRUM_H
@@ -94,6 +112,10 @@ extern "C" {
 #define RAST_VERSION_PATCH 0
 #define RAST_VERSION_NUMBER \
     (RAST_VERSION_MAJOR * 10000 + RAST_VERSION_MINOR * 100 + RAST_VERSION_PATCH)
+
+/* ==========================================================================
+ * Conventions and units: limits, status codes, geometry
+ * ========================================================================== */
 
 /* ---- limits ---------------------------------------------------------------
  * Constants are enumerators so that both C and the cffi layer see them. */
@@ -149,27 +171,6 @@ enum {
     ((size_t)(npoints) * 2 * RAST_AET_EDGE_BYTES +               \
      ((size_t)(height) + 1) * RAST_AET_ROW_BYTES + RAST_SCRATCH_ALIGN)
 
-/* The same for the other polygon algorithms (rast_scratch_size gives the
- * exact figure; these are never less).  For a clip `width` x `height`:
- *  - xscan: an edge record (32 bytes) and a crossing key (4) per vertex;
- *  - edgefill, fence: the mask, ONE BIT per clip pixel in 64-bit words;
- *  - edgeflag: the same bits (its flags; all even-odd needs), plus one
- *    counter per clip pixel for non-zero's direction sums, of 1 byte up to
- *    511 vertices, 2 up to 131071, 4 beyond (rast_scratch_size cannot see
- *    the rule, so it always counts them);
- *  - crossing, winding: two edge records (32 bytes each) per vertex. */
-#define RAST_XSCAN_SCRATCH_BOUND(npoints) \
-    ((size_t)(npoints) * 36 + 2 * RAST_SCRATCH_ALIGN)
-#define RAST_EDGEFILL_SCRATCH_BOUND(width, height) \
-    ((size_t)(height) * (((size_t)(width) + 63) / 64) * 8)
-#define RAST_FENCE_SCRATCH_BOUND(width, height) RAST_EDGEFILL_SCRATCH_BOUND(width, height)
-#define RAST_EDGEFLAG_SCRATCH_BOUND(npoints, width, height)                      \
-    (RAST_EDGEFILL_SCRATCH_BOUND(width, height) +                               \
-     (size_t)(width) * (size_t)(height) *                                       \
-         ((npoints) <= 511 ? 1u : (npoints) <= 131071 ? 2u : 4u) + RAST_SCRATCH_ALIGN)
-#define RAST_POINTWISE_SCRATCH_BOUND(npoints) \
-    ((size_t)(npoints) * 64 + RAST_SCRATCH_ALIGN)
-
 /* ---- status codes ----------------------------------------------------------
  * Every function returns one of these (RAST_OK = 0, errors negative), except
  * the three that return a version or a string.  rast_status_str() gives the
@@ -194,12 +195,27 @@ enum {
 typedef enum rast_status { RAST_STATUS_LIST(RAST__STATUS_ENUM) RAST_STATUS_END_ = 1 } rast_status;
 #undef RAST__STATUS_ENUM
 
-/* ---- basic types ---------------------------------------------------------- */
+/* The runtime version, RAST_VERSION_NUMBER of the library actually linked. */
+RAST_API int rast_version_number(void);
+
+/* The message of a status code; "unknown status" for a value not listed.
+ * The string is static: never free it. */
+RAST_API const char *rast_status_str(rast_status status);
+
+/* ---- geometry: points, rectangles, polygons, spans ------------------------ */
+
+/* A coordinate in fixed point: units of 1/2^S pixel, S the call's
+ * subpixel_bits (see Units).  |value| <= RAST_COORD_MAX. */
+typedef int32_t rast_fixed;
+
+/* A coordinate of the 64-bit vertices: units of 1/2^S pixel, S up to
+ * RAST_MAX_SUBPIXEL_BITS64, |value| <= RAST_COORD64_MAX(S). */
+typedef int64_t rast_fixed64;
 
 /* A vertex in fixed point: units of 1/2^S pixel. */
 typedef struct rast_point {
-    int32_t x;
-    int32_t y;
+    rast_fixed x;
+    rast_fixed y;
 } rast_point;
 
 /* A pixel rectangle, half open: columns x0 <= i < x1, rows y0 <= j < y1. */
@@ -223,8 +239,8 @@ typedef struct rast_polygon {
  * coordinates are floats at GIS scale: at S = 32 snapping moves a vertex
  * by at most 2^-33 pixel. */
 typedef struct rast_point64 {
-    int64_t x;
-    int64_t y;
+    rast_fixed64 x;
+    rast_fixed64 y;
 } rast_point64;
 
 /* A polygon of 64-bit vertices, laid out as rast_polygon. */
@@ -233,6 +249,95 @@ typedef struct rast_polygon64 {
     const uint32_t *ring_sizes;
     uint32_t nrings;
 } rast_polygon64;
+
+/* A span of samples in row y, columns x0 <= i < x1 (x0 < x1 always). */
+typedef void (*rast_span_fn)(void *user, int32_t y, int32_t x0, int32_t x1);
+
+/* ==========================================================================
+ * Targets and pixel formats
+ * ========================================================================== */
+
+/* ---- targets and pixel formats ------------------------------------------ */
+
+/* Pixel formats: bytes of one pixel, in memory order. */
+typedef enum rast_format {
+    RAST_FORMAT_GRAY8 = 0,    /* 1 byte; also a 0/1 mask */
+    RAST_FORMAT_RGB888 = 1,   /* 3 bytes: R, G, B */
+    RAST_FORMAT_RGBA8888 = 2, /* 4 bytes: R, G, B, A */
+    RAST_FORMAT_COUNT16 = 3,  /* 2 bytes, a native uint16_t: a fill adds 1 to
+                                 each pixel it covers (saturating at 65535) and
+                                 ignores the pixel value; overdraw made visible */
+    RAST_FORMAT_RGB565 = 4,   /* 2 bytes, a native uint16_t: R in bits 15-11,
+                                 G in 10-5, B in 4-0 (TFT displays); pixels
+                                 and stride 2-byte aligned */
+    RAST_FORMAT_MONO1 = 5,    /* 1 bit, 8 pixels a byte, MSB first: pixel x is
+                                 bit 7 - x%8 of byte x/8 of its row (e-paper);
+                                 a pixel value is 1 byte, "on" iff not 0 */
+    RAST_FORMAT_COUNT_ = 6
+} rast_format;
+
+/* A target: a view of caller-owned memory.  pixels points at pixel (0, 0);
+ * row j starts `stride` bytes after row j-1 (stride >= width * bytes per
+ * pixel; it may be larger, for padding or for a sub-view of a larger image).
+ * Nothing outside `clip` is ever read or written; rast_target_init sets the
+ * clip to the whole target, and a caller may narrow it (to draw into a band
+ * or a window).  A clip that reaches past the target is cut to it.
+ * RAST_FORMAT_MONO1 is the exception at the bit level: a byte holding both
+ * clip pixels and others is read and written back with the others' bits
+ * unchanged (so two threads must not draw into clips sharing a byte). */
+typedef struct rast_target {
+    void *pixels;
+    int32_t width;
+    int32_t height;
+    int32_t stride;
+    rast_format format;
+    rast_rect clip;
+} rast_target;
+
+/* Bytes of one pixel value of `format` into *bytes (1, 2, 3 or 4): what a
+ * `pixel` or `background` argument holds, in the format's own encoding.
+ * It is also the memory of one pixel, except for RAST_FORMAT_MONO1, which
+ * packs 8 pixels into a byte (see rast_format_stride); its value is one
+ * byte, 0 (off) or not 0 (on).
+ * RAST_E_FORMAT for an unknown format, RAST_E_NULL if bytes is NULL. */
+RAST_API rast_status rast_format_bytes(rast_format format, int32_t *bytes);
+
+/* The fewest bytes a row of `width` pixels of `format` takes, into *bytes:
+ * width * bytes per pixel, or ceil(width / 8) for RAST_FORMAT_MONO1 (the
+ * smallest valid stride).  Errors: RAST_E_NULL, RAST_E_FORMAT, RAST_E_SIZE
+ * (width outside 0..RAST_MAX_DIM, or a row past INT32_MAX bytes). */
+RAST_API rast_status rast_format_stride(rast_format format, int32_t width, int32_t *bytes);
+
+/* The pixel value of `format` for the 8-bit colour rgba[0..3] (R, G, B,
+ * A), into `pixel` (rast_format_bytes bytes), as the shaded fills store
+ * colours: GRAY8 takes R; RGB888 R, G, B; RGBA8888 all four; RGB565 the
+ * top 5, 6 and 5 bits of R, G and B (truncation: (R >> 3) << 11 |
+ * (G >> 2) << 5 | B >> 3, as a native uint16_t); MONO1 the top bit of R
+ * (on iff R >= 128).  Errors: RAST_E_NULL, RAST_E_FORMAT (unknown, or
+ * COUNT16, which has no colour). */
+RAST_API rast_status rast_pack_color(rast_format format, const uint8_t *rgba, void *pixel);
+
+/* Describe caller-owned memory as a target (see rast_target); clip = whole.
+ * width and height in 0..RAST_MAX_DIM pixels, stride in bytes with
+ * stride >= rast_format_stride(format, width) and stride * height fitting
+ * a ptrdiff_t.
+ * pixels may be NULL only when width or height is 0.  RAST_FORMAT_COUNT16
+ * and RAST_FORMAT_RGB565 pixels are uint16_t: pixels and stride must be
+ * multiples of 2 bytes.  RAST_FORMAT_MONO1 rows need stride >=
+ * ceil(width / 8) (rast_format_stride); a fill changes only the bits of
+ * the pixels it covers, never the padding bits after column width - 1.
+ * Errors: RAST_E_NULL (t, or pixels of a non-empty target), RAST_E_SIZE
+ * (also a misaligned 16-bit target), RAST_E_FORMAT; *t is untouched on
+ * error. */
+RAST_API rast_status rast_target_init(rast_target *t, void *pixels,
+                                      int32_t width, int32_t height,
+                                      int32_t stride, rast_format format);
+
+/* ==========================================================================
+ * Polygons: options, fills, 64-bit vertices, batches
+ * ========================================================================== */
+
+/* ---- polygon options ------------------------------------------------------ */
 
 typedef enum rast_fill_rule {
     RAST_RULE_EVENODD = 0, /* inside iff the winding number is odd */
@@ -303,132 +408,7 @@ typedef struct rast_fill_opts {
     rast_boundary boundary;
 } rast_fill_opts;
 
-/* Triangle algorithms.  All give the same pixels as the polygon fillers
- * give the triangle as a one-ring polygon (either rule). */
-typedef enum rast_tri_algorithm {
-    RAST_TRI_EDGE = 0,     /* bounding box + incremental edge functions (000, 002, 004) */
-    RAST_TRI_SWEEP = 1,    /* split at the middle vertex, exact DDA for both ends (000, 002) */
-    RAST_TRI_EDGEFLAG = 2, /* SpanLeft/SpanRight arrays per row, then fill (001 3.3) */
-    RAST_TRI_COUNT_ = 3
-} rast_tri_algorithm;
-
-/* Options of a triangle batch; zero-initialised as rast_fill_opts. */
-typedef struct rast_tri_opts {
-    rast_tri_algorithm algorithm;
-    int32_t subpixel_bits; /* S, 0..RAST_MAX_SUBPIXEL_BITS */
-    rast_sample sample;
-    rast_rounding rounding;
-    rast_boundary boundary;
-} rast_tri_opts;
-
-/* Line algorithms (see rast_draw_line for the pixels a line owns). */
-typedef enum rast_line_algorithm {
-    RAST_LINE_BRESENHAM = 0, /* integer error term; exactly the defined pixels */
-    RAST_LINE_DDA = 1,       /* fixed-point DDA (16 fraction bits): may differ */
-    RAST_LINE_COUNT_ = 2
-} rast_line_algorithm;
-
-typedef struct rast_line_opts {
-    rast_line_algorithm algorithm;
-    int32_t subpixel_bits; /* S of the endpoints */
-    rast_sample sample;
-} rast_line_opts;
-
-/* Point-in-triangle predicates (seeds 003, 004), all in exact integers. */
-typedef enum rast_predicate {
-    RAST_PRED_SAMESIDE = 0,    /* p on the same side of each edge as the third vertex */
-    RAST_PRED_CROSS = 1,       /* the three cross products have one sign */
-    RAST_PRED_AREA = 2,        /* |A(pab)| + |A(pbc)| + |A(pca)| == |A(abc)| */
-    RAST_PRED_BARYCENTRIC = 3, /* all barycentric coordinates >= 0 */
-    RAST_PRED_OWNER = 4,       /* the fill's own rule: top-left, as every filler */
-    RAST_PRED_COUNT_ = 5
-} rast_predicate;
-
-/* Pixel formats: bytes of one pixel, in memory order. */
-typedef enum rast_format {
-    RAST_FORMAT_GRAY8 = 0,    /* 1 byte; also a 0/1 mask */
-    RAST_FORMAT_RGB888 = 1,   /* 3 bytes: R, G, B */
-    RAST_FORMAT_RGBA8888 = 2, /* 4 bytes: R, G, B, A */
-    RAST_FORMAT_COUNT16 = 3,  /* 2 bytes, a native uint16_t: a fill adds 1 to
-                                 each pixel it covers (saturating at 65535) and
-                                 ignores the pixel value; overdraw made visible */
-    RAST_FORMAT_RGB565 = 4,   /* 2 bytes, a native uint16_t: R in bits 15-11,
-                                 G in 10-5, B in 4-0 (TFT displays); pixels
-                                 and stride 2-byte aligned */
-    RAST_FORMAT_MONO1 = 5,    /* 1 bit, 8 pixels a byte, MSB first: pixel x is
-                                 bit 7 - x%8 of byte x/8 of its row (e-paper);
-                                 a pixel value is 1 byte, "on" iff not 0 */
-    RAST_FORMAT_COUNT_ = 6
-} rast_format;
-
-/* A target: a view of caller-owned memory.  pixels points at pixel (0, 0);
- * row j starts `stride` bytes after row j-1 (stride >= width * bytes per
- * pixel; it may be larger, for padding or for a sub-view of a larger image).
- * Nothing outside `clip` is ever read or written; rast_target_init sets the
- * clip to the whole target, and a caller may narrow it (to draw into a band
- * or a window).  A clip that reaches past the target is cut to it.
- * RAST_FORMAT_MONO1 is the exception at the bit level: a byte holding both
- * clip pixels and others is read and written back with the others' bits
- * unchanged (so two threads must not draw into clips sharing a byte). */
-typedef struct rast_target {
-    void *pixels;
-    int32_t width;
-    int32_t height;
-    int32_t stride;
-    rast_format format;
-    rast_rect clip;
-} rast_target;
-
-/* A span of samples in row y, columns x0 <= i < x1 (x0 < x1 always). */
-typedef void (*rast_span_fn)(void *user, int32_t y, int32_t x0, int32_t x1);
-
-/* ---- functions ------------------------------------------------------------ */
-
-/* The runtime version, RAST_VERSION_NUMBER of the library actually linked. */
-RAST_API int rast_version_number(void);
-
-/* The message of a status code; "unknown status" for a value not listed.
- * The string is static: never free it. */
-RAST_API const char *rast_status_str(rast_status status);
-
-/* Bytes of one pixel value of `format` into *bytes (1, 2, 3 or 4): what a
- * `pixel` or `background` argument holds, in the format's own encoding.
- * It is also the memory of one pixel, except for RAST_FORMAT_MONO1, which
- * packs 8 pixels into a byte (see rast_format_stride); its value is one
- * byte, 0 (off) or not 0 (on).
- * RAST_E_FORMAT for an unknown format, RAST_E_NULL if bytes is NULL. */
-RAST_API rast_status rast_format_bytes(rast_format format, int32_t *bytes);
-
-/* The fewest bytes a row of `width` pixels of `format` takes, into *bytes:
- * width * bytes per pixel, or ceil(width / 8) for RAST_FORMAT_MONO1 (the
- * smallest valid stride).  Errors: RAST_E_NULL, RAST_E_FORMAT, RAST_E_SIZE
- * (width outside 0..RAST_MAX_DIM, or a row past INT32_MAX bytes). */
-RAST_API rast_status rast_format_stride(rast_format format, int32_t width, int32_t *bytes);
-
-/* The pixel value of `format` for the 8-bit colour rgba[0..3] (R, G, B,
- * A), into `pixel` (rast_format_bytes bytes), as the shaded fills store
- * colours: GRAY8 takes R; RGB888 R, G, B; RGBA8888 all four; RGB565 the
- * top 5, 6 and 5 bits of R, G and B (truncation: (R >> 3) << 11 |
- * (G >> 2) << 5 | B >> 3, as a native uint16_t); MONO1 the top bit of R
- * (on iff R >= 128).  Errors: RAST_E_NULL, RAST_E_FORMAT (unknown, or
- * COUNT16, which has no colour). */
-RAST_API rast_status rast_pack_color(rast_format format, const uint8_t *rgba, void *pixel);
-
-/* Describe caller-owned memory as a target (see rast_target); clip = whole.
- * width and height in 0..RAST_MAX_DIM pixels, stride in bytes with
- * stride >= rast_format_stride(format, width) and stride * height fitting
- * a ptrdiff_t.
- * pixels may be NULL only when width or height is 0.  RAST_FORMAT_COUNT16
- * and RAST_FORMAT_RGB565 pixels are uint16_t: pixels and stride must be
- * multiples of 2 bytes.  RAST_FORMAT_MONO1 rows need stride >=
- * ceil(width / 8) (rast_format_stride); a fill changes only the bits of
- * the pixels it covers, never the padding bits after column width - 1.
- * Errors: RAST_E_NULL (t, or pixels of a non-empty target), RAST_E_SIZE
- * (also a misaligned 16-bit target), RAST_E_FORMAT; *t is untouched on
- * error. */
-RAST_API rast_status rast_target_init(rast_target *t, void *pixels,
-                                      int32_t width, int32_t height,
-                                      int32_t stride, rast_format format);
+/* ---- polygon fills ---------------------------------------------------------- */
 
 /* Name ("aet", ...) and supported fill rules of an algorithm: bit r of
  * *rules is set iff rast_fill_rule r is supported.  Either output pointer
@@ -633,6 +613,28 @@ RAST_API rast_status rast_fill_polygons64_spans(const rast_polygon64 *polygons, 
                                                 void *scratch, size_t scratch_bytes,
                                                 uint32_t *failed);
 
+/* ==========================================================================
+ * Triangles
+ * ========================================================================== */
+
+/* Triangle algorithms.  All give the same pixels as the polygon fillers
+ * give the triangle as a one-ring polygon (either rule). */
+typedef enum rast_tri_algorithm {
+    RAST_TRI_EDGE = 0,     /* bounding box + incremental edge functions (000, 002, 004) */
+    RAST_TRI_SWEEP = 1,    /* split at the middle vertex, exact DDA for both ends (000, 002) */
+    RAST_TRI_EDGEFLAG = 2, /* SpanLeft/SpanRight arrays per row, then fill (001 3.3) */
+    RAST_TRI_COUNT_ = 3
+} rast_tri_algorithm;
+
+/* Options of a triangle batch; zero-initialised as rast_fill_opts. */
+typedef struct rast_tri_opts {
+    rast_tri_algorithm algorithm;
+    int32_t subpixel_bits; /* S, 0..RAST_MAX_SUBPIXEL_BITS */
+    rast_sample sample;
+    rast_rounding rounding;
+    rast_boundary boundary;
+} rast_tri_opts;
+
 /* ---- triangles --------------------------------------------------------------
  * A batch is `ntris` triangles, tris[3k], tris[3k+1], tris[3k+2], in fixed
  * point as polygon vertices (same units and range).  Each triangle owns
@@ -683,73 +685,58 @@ RAST_API rast_status rast_fill_triangles_spans(const rast_point *tris,
                                                void *scratch,
                                                size_t scratch_bytes);
 
-/* ---- shaded triangles (Gouraud, flat; optional depth) ------------------------
- * The same batch and the same coverage as rast_fill_triangles (every
- * algorithm, rounding and boundary mode: a shaded call writes exactly the
- * pixels the unshaded one writes, less those a depth test rejects), but
- * each pixel gets a colour interpolated from its triangle's three vertex
- * colours.
- *
- * Interpolation.  At the sample point p of a pixel, with the triangle's
- * snapped vertices v0, v1, v2 and the edge functions (twice the signed
- * areas) w0 = area(p, v1, v2), w1 = area(v0, p, v2), w2 = area(v0, v1, p),
- * a quantity with vertex values c0, c1, c2 has the exact rational value
- *     v = (w0 c0 + w1 c1 + w2 c2) / (w0 + w1 + w2)
- * (the barycentric interpolation, seeds 002-004; the triangle's plane
- * equation, seed 001 section 3.3.5).  Each channel is interpolated on its
- * own and stored as rast_pack_color stores a colour (RGBA8888 stores the
- * interpolated alpha; nothing is blended).  A sample outside its triangle
- * (textbook rounding, boundary modes) gets the plane's value there,
- * clamped to 0..255 (depth: to int32_t).  A degenerate triangle has no
- * plane: its pixels (boundary modes only) get vertex 0's values. */
-typedef enum rast_precision {
-    /* floor(v + 1/2), exactly: rational arithmetic in integers (128-bit
-     * products in two halves where int64_t would overflow) - the reference */
-    RAST_PRECISION_EXACT = 0,
-    /* fixed point with F = fraction_bits: the value at one corner of the
-     * triangle's box and the steps per column and per row rounded to
-     * 1/2^F, then additions only; a pixel is floor(value + 1/2) of the
-     * stepped value.  Off by a level or more where the steps' rounding
-     * errors add up (bench/bench_shade.py measures how far, per F).  A
-     * triangle whose steps do not fit 32 bits (slivers) is done exactly. */
-    RAST_PRECISION_FIXED = 1,
-    /* flat: the whole triangle in vertex 0's colour (seed 001 3.1.3);
-     * depth, if asked for, is still interpolated, exactly */
-    RAST_PRECISION_FLAT = 2
-} rast_precision;
+/* Point-in-triangle predicates (seeds 003, 004), all in exact integers. */
+typedef enum rast_predicate {
+    RAST_PRED_SAMESIDE = 0,    /* p on the same side of each edge as the third vertex */
+    RAST_PRED_CROSS = 1,       /* the three cross products have one sign */
+    RAST_PRED_AREA = 2,        /* |A(pab)| + |A(pbc)| + |A(pca)| == |A(abc)| */
+    RAST_PRED_BARYCENTRIC = 3, /* all barycentric coordinates >= 0 */
+    RAST_PRED_OWNER = 4,       /* the fill's own rule: top-left, as every filler */
+    RAST_PRED_COUNT_ = 5
+} rast_predicate;
 
-/* Zero-initialised means exact. */
-typedef struct rast_shade_opts {
-    rast_precision precision;
-    int32_t fraction_bits; /* F for RAST_PRECISION_FIXED, 1..16; else ignored */
-} rast_shade_opts;
+/* ---- predicates --------------------------------------------------------------
+ * Is point p inside triangle t[0..2] (fixed point, any units; coordinates
+ * within +-RAST_COORD_MAX)?  *inside gets 1 or 0.  The methods agree
+ * inside and outside a non-degenerate triangle and differ only on its
+ * boundary:
+ *  - SAMESIDE, CROSS, AREA, BARYCENTRIC: the closed triangle; a point on
+ *    an edge or a vertex is inside.  These four give the same answer for
+ *    every p and t (they are four computations of one set).
+ *  - OWNER: the fills' rule (Conventions) evaluated at a sample placed
+ *    exactly at p: p is inside iff rast_fill_triangles() of t would own a
+ *    sample there.  On the boundary that is top-left: points of a left
+ *    edge or of a horizontal top edge are in, of a right edge or of a
+ *    horizontal bottom edge out, a vertex as its row's crossings say; so
+ *    triangles sharing an edge never both own a point and never both miss
+ *    one.
+ * A degenerate triangle (zero area: collinear or repeated vertices)
+ * contains no point under every method.  (The seeds' formulas taken
+ * literally would not: SAMESIDE's "v1 . v2 >= 0" accepts the whole plane,
+ * CROSS and AREA the whole line through the vertices (the plane when all
+ * three coincide); the closed tests check the area first.  OWNER needs no
+ * check: the crossings cancel.)
+ * Either winding order.  Exact: no rounding, no overflow in range.
+ * Errors: RAST_E_NULL, RAST_E_RANGE, RAST_E_ARG (unknown method). */
+RAST_API rast_status rast_point_in_triangle(rast_point p, const rast_point *t,
+                                            rast_predicate method, int *inside);
 
-/* Fill `ntris` triangles as rast_fill_triangles does, shading each pixel.
- * colors: 3 * ntris vertex colours of 4 bytes, R, G, B, A, in the order of
- *   the vertices (vertex m of triangle k at colors[4 * (3k + m)]); a format
- *   uses the channels rast_pack_color reads (GRAY8 and MONO1: R; RGB888 and
- *   RGB565: R, G, B; RGBA8888: all) and ignores the others.  Colours are
- *   interpolated in 8-bit levels, then packed (RGB565: top bits; MONO1: on
- *   iff the level is >= 128).  COUNT16 has no colour: RAST_E_FORMAT.
- * z, zbuf: depth, both NULL (no depth: nothing depth-related is computed)
- *   or both given.  z holds 3 * ntris vertex depths (any int32_t), zbuf the
- *   depth of every pixel of the target, target->width * target->height
- *   int32_t, row j at zbuf + j * width.  A pixel is written iff its
- *   interpolated depth (same precision as the colour; exact for FLAT) is
- *   less than zbuf there (smaller is nearer; equal fails), and zbuf then
- *   takes that depth.  Start zbuf at INT32_MAX to accept everything once.
- *   Only pixels of the clip are read or written.
- * Scratch as rast_fill_triangles (rast_tri_scratch_size).
- * Errors, all before anything is written: those of rast_fill_triangles,
- * RAST_E_NULL (shade; colors with ntris > 0; exactly one of z and zbuf),
- * RAST_E_FORMAT (COUNT16), RAST_E_ARG (an unknown precision, or
- * fraction_bits outside 1..16 for FIXED). */
-RAST_API rast_status rast_fill_triangles_shaded(const rast_target *target,
-                                                const rast_point *tris, uint32_t ntris,
-                                                const uint8_t *colors, const int32_t *z,
-                                                int32_t *zbuf, const rast_tri_opts *opts,
-                                                const rast_shade_opts *shade,
-                                                void *scratch, size_t scratch_bytes);
+/* ==========================================================================
+ * Lines
+ * ========================================================================== */
+
+/* Line algorithms (see rast_draw_line for the pixels a line owns). */
+typedef enum rast_line_algorithm {
+    RAST_LINE_BRESENHAM = 0, /* integer error term; exactly the defined pixels */
+    RAST_LINE_DDA = 1,       /* fixed-point DDA (16 fraction bits): may differ */
+    RAST_LINE_COUNT_ = 2
+} rast_line_algorithm;
+
+typedef struct rast_line_opts {
+    rast_line_algorithm algorithm;
+    int32_t subpixel_bits; /* S of the endpoints */
+    rast_sample sample;
+} rast_line_opts;
 
 /* ---- lines -------------------------------------------------------------------
  * The pixels of the segment a -> b (fixed point, units 1/2^S, sample offset
@@ -812,130 +799,6 @@ RAST_API rast_status rast_line_pixels(rast_point a, rast_point b,
                                       const rast_rect *clip, int32_t *xy,
                                       size_t capacity, size_t *count);
 
-/* ---- predicates --------------------------------------------------------------
- * Is point p inside triangle t[0..2] (fixed point, any units; coordinates
- * within +-RAST_COORD_MAX)?  *inside gets 1 or 0.  The methods agree
- * inside and outside a non-degenerate triangle and differ only on its
- * boundary:
- *  - SAMESIDE, CROSS, AREA, BARYCENTRIC: the closed triangle; a point on
- *    an edge or a vertex is inside.  These four give the same answer for
- *    every p and t (they are four computations of one set).
- *  - OWNER: the fills' rule (Conventions) evaluated at a sample placed
- *    exactly at p: p is inside iff rast_fill_triangles() of t would own a
- *    sample there.  On the boundary that is top-left: points of a left
- *    edge or of a horizontal top edge are in, of a right edge or of a
- *    horizontal bottom edge out, a vertex as its row's crossings say; so
- *    triangles sharing an edge never both own a point and never both miss
- *    one.
- * A degenerate triangle (zero area: collinear or repeated vertices)
- * contains no point under every method.  (The seeds' formulas taken
- * literally would not: SAMESIDE's "v1 . v2 >= 0" accepts the whole plane,
- * CROSS and AREA the whole line through the vertices (the plane when all
- * three coincide); the closed tests check the area first.  OWNER needs no
- * check: the crossings cancel.)
- * Either winding order.  Exact: no rounding, no overflow in range.
- * Errors: RAST_E_NULL, RAST_E_RANGE, RAST_E_ARG (unknown method). */
-RAST_API rast_status rast_point_in_triangle(rast_point p, const rast_point *t,
-                                            rast_predicate method, int *inside);
-
-/* ---- Gouraud rectangles (shade_rect.c; seed 001 section 3.2.3) -------------
- * An axis-aligned rectangle with corners p0 and p1 (fixed point, units and
- * range as polygon vertices) and a colour at each corner, interpolated
- * bilinearly.  `colors` holds 4 RGBA colours (16 bytes), for the corners
- * (p0.x, p0.y), (p1.x, p0.y), (p1.x, p1.y), (p0.x, p1.y) in that order
- * (p0 need not be the top left: a colour stays with its corner).
- *
- * Pixels: exactly those rast_fill_polygon gives the rectangle's ring with
- * the same subpixel_bits, sample and rounding (the left and top sides in,
- * the right and bottom sides out: 左闭右开，下闭上开), so rectangles sharing
- * a side never both own a pixel.  p0.x == p1.x or p0.y == p1.y: nothing.
- *
- * Colour of a pixel whose sample is (xs, ys), with u = (xs - p0.x) /
- * (p1.x - p0.x) and v = (ys - p0.y) / (p1.y - p0.y) exact rationals, in
- * [0, 1] (u a little below 0 or above 1 under textbook rounding, see
- * below), per channel:
- *     c = (1-u)(1-v) c0 + u (1-v) c1 + u v c2 + (1-u) v c3
- *  - RAST_PRECISION_EXACT: floor(c + 1/2), exactly (rationals; integer
- *    quotient and remainder stepped along the row), clamped to 0..255
- *    (RAST_ROUND_TEXTBOOK owns a first column whose sample lies up to half
- *    a pixel left of the rectangle: u < 0 there, c extrapolated).
- *  - RAST_PRECISION_FIXED, F = fraction_bits (1..16), round(x) =
- *    floor(x + 1/2), one = 2^F: the textbook's stepping.  With the top
- *    left corner at (X0, Y0), width W and height H in pixels (corners put
- *    in order, colours following them) and b0, a0 the offsets of the
- *    rectangle's first sample row and column from Y0 and X0 (whatever the
- *    clip), the left side's colour at row k (0 = the first row) is
- *    L_k = round(L(b0) one) + k round((c3 - c0) one / H), the right side's
- *    R_k the same from c1 to c2, and in that row the pixel m columns right
- *    of the first has C = L_k + round((R_k - L_k) a0 / W)
- *    + m round((R_k - L_k) / W), written as clamp(floor((C + one/2) / one),
- *    0, 255).  Not exact: the increments are
- *    rounded (the error grows with the size and shrinks with F).
- *  - RAST_PRECISION_FLAT: c0 everywhere (seed 001's flat shading: one
- *    vertex's colour).
- * Each colour is stored as rast_pack_color stores it (GRAY8 and MONO1
- * take R, RGB565 the top bits; COUNT16 has no colour: RAST_E_FORMAT).
- *
- * opts: subpixel_bits, sample and rounding as for triangles; the algorithm
- * is not used (a rectangle needs none); boundary must be
- * RAST_BOUNDARY_EXACT.  Needs no scratch.  Never writes outside the clip.
- * Errors, before anything is written: RAST_E_NULL, RAST_E_SUBPIXEL,
- * RAST_E_ARG (bad sample, rounding, boundary, precision or fraction_bits),
- * RAST_E_RANGE (a coordinate past RAST_COORD_MAX, or a side longer than
- * RAST_GOURAUD_RECT_MAX_SIZE units, which keeps every product of the exact
- * interpolation inside int64_t), RAST_E_SIZE and RAST_E_FORMAT (a bad
- * target; RAST_FORMAT_COUNT16 has no colour). */
-enum {
-    RAST_GOURAUD_RECT_MAX_SIZE = 67108863 /* 2^26 - 1, input units */
-};
-RAST_API rast_status rast_fill_rect_gouraud(const rast_target *target, rast_point p0,
-                                            rast_point p1, const uint8_t *colors,
-                                            const rast_tri_opts *opts,
-                                            const rast_shade_opts *shade);
-
-/* ---- polygons with a colour per vertex (shade_poly.c; seed 001 3.4) ---------
- * The active edge table fill with Gouraud colours, edge then span: the
- * pixels are exactly rast_fill_polygon's with the same options (either
- * rule, holes, self-intersections), and the colour of a pixel is defined
- * row by row.  Its row's sample ordinate yc is crossed by the run's two
- * bounding edges: with the row's crossings sorted by exact abscissa (ties
- * by the index in polygon->points of the edge's first vertex, the edge
- * from vertex k to vertex k+1 of its ring having index k), under even-odd
- * the crossings 2k and 2k+1, under non-zero the crossing where the winding
- * number leaves 0 and the one where it returns to 0 (crossings in between
- * do not shade).  Each bounding edge, from vertex a to vertex b, has at yc
- * the exact colour ca + (yc - ya)(cb - ca)/(yb - ya) (linear along the
- * edge) at its exact crossing abscissa X (Conventions).  Along the run the
- * colour is linear in x between the left crossing (Xl, cl) and the right
- * one (Xr, cr): c = cl + (xs - Xl)(cr - cl)/(Xr - Xl) at the sample
- * abscissa xs, and the pixel gets floor(c + 1/2) per channel, exactly
- * (128-bit integers; no rounding before the last step), clamped to 0..255
- * (RAST_ROUND_TEXTBOOK owns a sample up to half a pixel left of Xl, where
- * the line is extrapolated).
- * For a triangle this is the same colour as the barycentric (plane)
- * interpolation: both are the unique affine function through the three
- * vertex colours, evaluated exactly.
- *
- * `colors`: 4 RGBA bytes per vertex, in the order of polygon->points.
- * opts: algorithm must be RAST_ALGO_AET (RAST_E_ALGORITHM), boundary
- * RAST_BOUNDARY_EXACT; rule, subpixel_bits, sample and rounding as for
- * rast_fill_polygon.  shade->precision: RAST_PRECISION_EXACT, or
- * RAST_PRECISION_FLAT (vertex 0's colour everywhere, seed 001's flat
- * shading); RAST_PRECISION_FIXED is not offered here (RAST_E_ARG).
- * Colours are stored as rast_pack_color stores them (COUNT16:
- * RAST_E_FORMAT).
- * Scratch: rast_polygon_gouraud_scratch_size() for the clip (the AET's and
- * 8 bytes per vertex).  Errors as rast_fill_polygon, all before anything
- * is written.  Never writes outside the clip. */
-RAST_API rast_status rast_polygon_gouraud_scratch_size(uint32_t npoints, int32_t width,
-                                                       int32_t height, size_t *bytes);
-RAST_API rast_status rast_fill_polygon_gouraud(const rast_target *target,
-                                               const rast_polygon *polygon,
-                                               const uint8_t *colors,
-                                               const rast_fill_opts *opts,
-                                               const rast_shade_opts *shade,
-                                               void *scratch, size_t scratch_bytes);
-
 /* ---- lines as spans ---------------------------------------------------------
  * The pixels rast_draw_polyline would draw (same segments, same algorithm),
  * inside `clip`, handed to `span` instead of painted: for each segment in
@@ -951,182 +814,9 @@ RAST_API rast_status rast_draw_polyline_spans(const rast_point *points, uint32_t
                                               const rast_rect *clip, rast_span_fn span,
                                               void *user);
 
-/* ---- scenes, rendered band by band --------------------------------------------
- * A scene is an array of primitives drawn in order, each over the ones
- * before it.  rast_render_bands cuts the clip into bands of `band_rows`
- * rows and draws every primitive into each band in turn, so the work memory
- * is that of one primitive in one band: it grows with the primitive's
- * vertices and the band's rows and width, never with the coordinates (a
- * polygon reaching y = +-2^27 costs what one inside the band costs).  The
- * pixels are exactly those of drawing each primitive in order into the
- * whole clip: every filler clips exactly, rows are independent.
- *
- * Bounded memory, no partial image.  When a primitive's scratch for a band
- * does not fit `scratch_bytes`, its band is halved (and halved again, down
- * to one row) and drawn in parts, as FreeType's rasteriser does.  Before
- * anything is written, every primitive is checked (as its own entry point
- * checks it) and its scratch for a one-row band compared with
- * `scratch_bytes`: so the call either draws the whole scene or returns an
- * error having written nothing. */
-typedef enum rast_prim_kind {
-    RAST_PRIM_POLYGON = 0,   /* `polygon` with `fill` (rast_fill_polygon) */
-    RAST_PRIM_TRIANGLES = 1, /* `count` triangles at `points` with `tri`
-                                (rast_fill_triangles) */
-    RAST_PRIM_POLYLINE = 2,  /* `count` points at `points`, `closed`, with
-                                `line` (rast_draw_polyline) */
-    RAST_PRIM_POLYGON64 = 3, /* `polygon64` with `fill` (rast_fill_polygon64) */
-    RAST_PRIM_COUNT_ = 4
-} rast_prim_kind;
-
-/* One primitive; only the fields of its kind are read.  `pixel` is the
- * value (target format bytes; NULL allowed for RAST_FORMAT_COUNT16 and for
- * the spans call, which hands the primitive to its callback instead).  The
- * library only reads it and what it points to. */
-typedef struct rast_prim {
-    rast_prim_kind kind;
-    rast_polygon polygon;          /* RAST_PRIM_POLYGON */
-    const rast_point *points;      /* RAST_PRIM_TRIANGLES, RAST_PRIM_POLYLINE */
-    uint32_t count;                /* triangles, or polyline points */
-    int32_t closed;                /* RAST_PRIM_POLYLINE: non-zero closes it */
-    const rast_fill_opts *fill;    /* RAST_PRIM_POLYGON */
-    const rast_tri_opts *tri;      /* RAST_PRIM_TRIANGLES */
-    const rast_line_opts *line;    /* RAST_PRIM_POLYLINE */
-    const void *pixel;
-    rast_polygon64 polygon64;      /* RAST_PRIM_POLYGON64 */
-    /* RAST_PRIM_POLYGON, RAST_PRIM_TRIANGLES: NULL (zero-initialised) draws
-     * the binary fill with `fill` / `tri`; otherwise the anti-aliased one
-     * with these coverage options (rast_fill_polygon_aa,
-     * rast_fill_triangles_aa; `fill` / `tri` are then not read), its
-     * scratch rast_coverage_scratch_size for the band.  rast_render_bands
-     * paints it, rast_render_bands_coverage hands on its values;
-     * rast_render_bands_spans and the other kinds refuse a non-NULL aa
-     * (RAST_E_ARG). */
-    const struct rast_coverage_opts *aa;
-} rast_prim;
-
-/* A span of primitive `prim` (a pointer into the caller's array) in row y,
- * columns x0 <= i < x1. */
-typedef void (*rast_prim_span_fn)(void *user, const rast_prim *prim, int32_t y,
-                                  int32_t x0, int32_t x1);
-
-/* What a band render did (optional output): the number of bands of
- * band_rows rows the clip was cut into, how many times a primitive's band
- * was halved to fit the scratch, and the most scratch bytes any primitive
- * asked for in the band it was drawn in (<= scratch_bytes). */
-typedef struct rast_band_stats {
-    uint32_t bands;
-    uint32_t splits;
-    size_t peak_scratch;
-} rast_band_stats;
-
-/* Scratch bytes that draw every primitive of the scene in a band of
- * `band_rows` rows and `width` columns without halving: the largest need of
- * one primitive (polygons: rast_scratch_size, rast_scratch_size64; triangles:
- * rast_tri_scratch_size; polylines: none; anti-aliased ones, prim->aa:
- * rast_coverage_scratch_size).  band_rows = 1 gives the least
- * scratch with which rast_render_bands succeeds.  n may be 0 (prims may
- * then be NULL).  Errors: RAST_E_NULL, RAST_E_ARG (an unknown kind,
- * band_rows < 1), RAST_E_SIZE (width or band_rows past RAST_MAX_DIM, or a
- * negative width), and those of
- * the scratch functions. */
-RAST_API rast_status rast_scene_scratch_size(const rast_prim *prims, uint32_t n,
-                                             int32_t band_rows, int32_t width,
-                                             size_t *bytes);
-
-/* Draw the scene into target->clip band by band (see above): each band is
- * the clip narrowed to rows [y, y + band_rows), top to bottom.  Pixels as
- * drawing the primitives in order with their own entry points.  `scratch`
- * aligned to RAST_SCRATCH_ALIGN; `stats` may be NULL.  Errors, all before
- * anything is written: those of each primitive's entry point,
- * RAST_E_ARG (an unknown kind, band_rows < 1, aa on a kind other than
- * polygon and triangles), RAST_E_SCRATCH (some primitive does not fit even
- * a one-row band).  Anti-aliased primitives blend into what the ones
- * before them drew, band by band: the same pixels as one full call (a
- * pixel's coverage depends on its row alone). */
-RAST_API rast_status rast_render_bands(const rast_target *target, const rast_prim *prims,
-                                       uint32_t n, int32_t band_rows, void *scratch,
-                                       size_t scratch_bytes, rast_band_stats *stats);
-
-/* The same coverage handed to `span` (firmware pushing spans to a display
- * with a framebuffer of a band, or none): band by band, in each band the
- * primitives in order, each primitive's spans as its own spans call gives
- * them.  The clip as for rast_fill_polygon_spans; errors as
- * rast_render_bands, RAST_E_NULL also for clip or span, RAST_E_ARG for an
- * anti-aliased primitive (a span carries no coverage: use
- * rast_render_bands_coverage), all before the first span. */
-RAST_API rast_status rast_render_bands_spans(const rast_prim *prims, uint32_t n,
-                                             const rast_rect *clip, int32_t band_rows,
-                                             rast_prim_span_fn span, void *user,
-                                             void *scratch, size_t scratch_bytes,
-                                             rast_band_stats *stats);
-
-/* The same with coverage (a display driver that blends, band by band):
- * as rast_render_bands_spans, each span handed to `span` with `values`:
- * NULL for a binary primitive's span (every pixel of it fully the
- * primitive's), and for an anti-aliased one (prim->aa) the uint8 levels
- * 1..255 of its pixels x0..x1-1, the runs rast_polygon_coverage_spans /
- * rast_triangles_coverage_spans give for the band (valid during the call
- * only).  Errors as rast_render_bands_spans (an anti-aliased primitive is
- * accepted here), RAST_E_SIZE also for an anti-aliased primitive in a clip
- * wider than RAST_MAX_DIM, all before the first span. */
-typedef void (*rast_prim_coverage_fn)(void *user, const rast_prim *prim, int32_t y, int32_t x0,
-                                      int32_t x1, const uint8_t *values);
-RAST_API rast_status rast_render_bands_coverage(const rast_prim *prims, uint32_t n,
-                                                const rast_rect *clip, int32_t band_rows,
-                                                rast_prim_coverage_fn span, void *user,
-                                                void *scratch, size_t scratch_bytes,
-                                                rast_band_stats *stats);
-
-/* ---- pycocotools' polygon rule (coco.c) --------------------------------------
- * Not the exact rule: the rule with which pycocotools (cocoapi maskApi.c,
- * rleFrPoly) turns a COCO polygon into a mask, reproduced bit for bit in
- * integers so that training masks equal the evaluation's.  Masks are
- * column-major, as COCO's run-length encoding (RLE) stores them: pixel
- * (row y, column x) of an height x width mask is position x * height + y.
- *
- * Input: the ring's vertices upsampled by 5 and rounded as pycocotools
- * rounds them, X = (int)(5 * x + 0.5) in C double arithmetic (truncation
- * toward zero), within +-RAST_COCO_COORD_MAX (about +-1.67 million
- * pixels); the ring is closed (the last vertex joins the first).
- * The rule: each edge is walked one fifth of a pixel at a time along its
- * longer axis, its other coordinate rounded as pycocotools' doubles round
- * it (reproduced exactly, ties included); where the walk steps from
- * X = 5c + 2 to 5c + 3, column c (0 <= c < width) gets a toggle at row
- * ceil((Y - 2) / 5) clamped to 0..height, Y the smaller of the two steps'
- * Y; a pixel is inside iff an odd number of its column's toggles are at or
- * above it.  Rings of 0, 1 or 2 points draw nothing.  Width 0 is
- * pycocotools' too: its unsigned width - 1 wraps, so every column c >= 0
- * takes toggles (counts past the empty mask, as pycocotools gives them).
- */
-enum {
-    RAST_COCO_COORD_MAX = 8388607 /* 2^23 - 1, in fifths of a pixel */
-};
-
-/* The toggle positions (x * height + row, row in 0..height) of one ring
- * under pycocotools' rule, in no particular order, into toggles[0..*count).
- * *count always gets the number of toggles (at most npoints * width); if it
- * is more than `capacity`, nothing is written and RAST_E_SCRATCH returned
- * (call again with more).  toggles may be NULL when capacity is 0.
- * height * width must fit 32 bits (COCO's counts are uint32).  Errors,
- * before anything is written: RAST_E_NULL, RAST_E_SIZE (a negative side or
- * height * width > 2^32 - 1), RAST_E_TOO_MANY, RAST_E_RANGE. */
-RAST_API rast_status rast_coco_ring_toggles(const rast_point *points, uint32_t npoints,
-                                            int32_t height, int32_t width, uint32_t *toggles,
-                                            size_t capacity, size_t *count);
-
-/* The run-length counts of the mask that toggles[0..count) (positions, any
- * order, any multiplicity) give a mask of `total` pixels, as pycocotools
- * makes them: the differences of the sorted positions with `total` among
- * them (uint32), a difference of 0 joining the runs either side of it.
- * When no position passes `total` these are COCO's canonical runs of the
- * positions of odd multiplicity: zeros first (a count of 0 when the mask
- * starts inside), then alternately ones and zeros, no other count 0; one
- * count (`total`) for an empty mask.  toggles is sorted in place (and
- * `scratch`, count uint32_t, used as work memory); counts must hold
- * count + 1 values; *ncounts gets how many were written.  Errors:
- * RAST_E_NULL. */
-RAST_API rast_status rast_coco_rle(uint32_t *toggles, size_t count, uint32_t total,
-                                   uint32_t *scratch, uint32_t *counts, size_t *ncounts);
+/* ==========================================================================
+ * Coverage and anti-aliasing
+ * ========================================================================== */
 
 /* ---- anti-aliased coverage (coverage*.c; DESIGN section 1a) ------------------
  * The binary rule (Conventions) says, per pixel, inside or outside.
@@ -1310,6 +1000,176 @@ RAST_API rast_status rast_fill_triangles_aa(const rast_target *target,
                                             const rast_coverage_opts *opts, const void *pixel,
                                             void *scratch, size_t scratch_bytes);
 
+/* ==========================================================================
+ * Shading: Gouraud triangles, rectangles, polygons
+ * ========================================================================== */
+
+/* ---- shaded triangles (Gouraud, flat; optional depth) ------------------------
+ * The same batch and the same coverage as rast_fill_triangles (every
+ * algorithm, rounding and boundary mode: a shaded call writes exactly the
+ * pixels the unshaded one writes, less those a depth test rejects), but
+ * each pixel gets a colour interpolated from its triangle's three vertex
+ * colours.
+ *
+ * Interpolation.  At the sample point p of a pixel, with the triangle's
+ * snapped vertices v0, v1, v2 and the edge functions (twice the signed
+ * areas) w0 = area(p, v1, v2), w1 = area(v0, p, v2), w2 = area(v0, v1, p),
+ * a quantity with vertex values c0, c1, c2 has the exact rational value
+ *     v = (w0 c0 + w1 c1 + w2 c2) / (w0 + w1 + w2)
+ * (the barycentric interpolation, seeds 002-004; the triangle's plane
+ * equation, seed 001 section 3.3.5).  Each channel is interpolated on its
+ * own and stored as rast_pack_color stores a colour (RGBA8888 stores the
+ * interpolated alpha; nothing is blended).  A sample outside its triangle
+ * (textbook rounding, boundary modes) gets the plane's value there,
+ * clamped to 0..255 (depth: to int32_t).  A degenerate triangle has no
+ * plane: its pixels (boundary modes only) get vertex 0's values. */
+typedef enum rast_precision {
+    /* floor(v + 1/2), exactly: rational arithmetic in integers (128-bit
+     * products in two halves where int64_t would overflow) - the reference */
+    RAST_PRECISION_EXACT = 0,
+    /* fixed point with F = fraction_bits: the value at one corner of the
+     * triangle's box and the steps per column and per row rounded to
+     * 1/2^F, then additions only; a pixel is floor(value + 1/2) of the
+     * stepped value.  Off by a level or more where the steps' rounding
+     * errors add up (bench/bench_shade.py measures how far, per F).  A
+     * triangle whose steps do not fit 32 bits (slivers) is done exactly. */
+    RAST_PRECISION_FIXED = 1,
+    /* flat: the whole triangle in vertex 0's colour (seed 001 3.1.3);
+     * depth, if asked for, is still interpolated, exactly */
+    RAST_PRECISION_FLAT = 2
+} rast_precision;
+
+/* Zero-initialised means exact. */
+typedef struct rast_shade_opts {
+    rast_precision precision;
+    int32_t fraction_bits; /* F for RAST_PRECISION_FIXED, 1..16; else ignored */
+} rast_shade_opts;
+
+/* Fill `ntris` triangles as rast_fill_triangles does, shading each pixel.
+ * colors: 3 * ntris vertex colours of 4 bytes, R, G, B, A, in the order of
+ *   the vertices (vertex m of triangle k at colors[4 * (3k + m)]); a format
+ *   uses the channels rast_pack_color reads (GRAY8 and MONO1: R; RGB888 and
+ *   RGB565: R, G, B; RGBA8888: all) and ignores the others.  Colours are
+ *   interpolated in 8-bit levels, then packed (RGB565: top bits; MONO1: on
+ *   iff the level is >= 128).  COUNT16 has no colour: RAST_E_FORMAT.
+ * z, zbuf: depth, both NULL (no depth: nothing depth-related is computed)
+ *   or both given.  z holds 3 * ntris vertex depths (any int32_t), zbuf the
+ *   depth of every pixel of the target, target->width * target->height
+ *   int32_t, row j at zbuf + j * width.  A pixel is written iff its
+ *   interpolated depth (same precision as the colour; exact for FLAT) is
+ *   less than zbuf there (smaller is nearer; equal fails), and zbuf then
+ *   takes that depth.  Start zbuf at INT32_MAX to accept everything once.
+ *   Only pixels of the clip are read or written.
+ * Scratch as rast_fill_triangles (rast_tri_scratch_size).
+ * Errors, all before anything is written: those of rast_fill_triangles,
+ * RAST_E_NULL (shade; colors with ntris > 0; exactly one of z and zbuf),
+ * RAST_E_FORMAT (COUNT16), RAST_E_ARG (an unknown precision, or
+ * fraction_bits outside 1..16 for FIXED). */
+RAST_API rast_status rast_fill_triangles_shaded(const rast_target *target,
+                                                const rast_point *tris, uint32_t ntris,
+                                                const uint8_t *colors, const int32_t *z,
+                                                int32_t *zbuf, const rast_tri_opts *opts,
+                                                const rast_shade_opts *shade,
+                                                void *scratch, size_t scratch_bytes);
+
+/* ---- Gouraud rectangles (shade_rect.c; seed 001 section 3.2.3) -------------
+ * An axis-aligned rectangle with corners p0 and p1 (fixed point, units and
+ * range as polygon vertices) and a colour at each corner, interpolated
+ * bilinearly.  `colors` holds 4 RGBA colours (16 bytes), for the corners
+ * (p0.x, p0.y), (p1.x, p0.y), (p1.x, p1.y), (p0.x, p1.y) in that order
+ * (p0 need not be the top left: a colour stays with its corner).
+ *
+ * Pixels: exactly those rast_fill_polygon gives the rectangle's ring with
+ * the same subpixel_bits, sample and rounding (the left and top sides in,
+ * the right and bottom sides out: 左闭右开，下闭上开), so rectangles sharing
+ * a side never both own a pixel.  p0.x == p1.x or p0.y == p1.y: nothing.
+ *
+ * Colour of a pixel whose sample is (xs, ys), with u = (xs - p0.x) /
+ * (p1.x - p0.x) and v = (ys - p0.y) / (p1.y - p0.y) exact rationals, in
+ * [0, 1] (u a little below 0 or above 1 under textbook rounding, see
+ * below), per channel:
+ *     c = (1-u)(1-v) c0 + u (1-v) c1 + u v c2 + (1-u) v c3
+ *  - RAST_PRECISION_EXACT: floor(c + 1/2), exactly (rationals; integer
+ *    quotient and remainder stepped along the row), clamped to 0..255
+ *    (RAST_ROUND_TEXTBOOK owns a first column whose sample lies up to half
+ *    a pixel left of the rectangle: u < 0 there, c extrapolated).
+ *  - RAST_PRECISION_FIXED, F = fraction_bits (1..16), round(x) =
+ *    floor(x + 1/2), one = 2^F: the textbook's stepping.  With the top
+ *    left corner at (X0, Y0), width W and height H in pixels (corners put
+ *    in order, colours following them) and b0, a0 the offsets of the
+ *    rectangle's first sample row and column from Y0 and X0 (whatever the
+ *    clip), the left side's colour at row k (0 = the first row) is
+ *    L_k = round(L(b0) one) + k round((c3 - c0) one / H), the right side's
+ *    R_k the same from c1 to c2, and in that row the pixel m columns right
+ *    of the first has C = L_k + round((R_k - L_k) a0 / W)
+ *    + m round((R_k - L_k) / W), written as clamp(floor((C + one/2) / one),
+ *    0, 255).  Not exact: the increments are
+ *    rounded (the error grows with the size and shrinks with F).
+ *  - RAST_PRECISION_FLAT: c0 everywhere (seed 001's flat shading: one
+ *    vertex's colour).
+ * Each colour is stored as rast_pack_color stores it (GRAY8 and MONO1
+ * take R, RGB565 the top bits; COUNT16 has no colour: RAST_E_FORMAT).
+ *
+ * opts: subpixel_bits, sample and rounding as for triangles; the algorithm
+ * is not used (a rectangle needs none); boundary must be
+ * RAST_BOUNDARY_EXACT.  Needs no scratch.  Never writes outside the clip.
+ * Errors, before anything is written: RAST_E_NULL, RAST_E_SUBPIXEL,
+ * RAST_E_ARG (bad sample, rounding, boundary, precision or fraction_bits),
+ * RAST_E_RANGE (a coordinate past RAST_COORD_MAX, or a side longer than
+ * RAST_GOURAUD_RECT_MAX_SIZE units, which keeps every product of the exact
+ * interpolation inside int64_t), RAST_E_SIZE and RAST_E_FORMAT (a bad
+ * target; RAST_FORMAT_COUNT16 has no colour). */
+enum {
+    RAST_GOURAUD_RECT_MAX_SIZE = 67108863 /* 2^26 - 1, input units */
+};
+RAST_API rast_status rast_fill_rect_gouraud(const rast_target *target, rast_point p0,
+                                            rast_point p1, const uint8_t *colors,
+                                            const rast_tri_opts *opts,
+                                            const rast_shade_opts *shade);
+
+/* ---- polygons with a colour per vertex (shade_poly.c; seed 001 3.4) ---------
+ * The active edge table fill with Gouraud colours, edge then span: the
+ * pixels are exactly rast_fill_polygon's with the same options (either
+ * rule, holes, self-intersections), and the colour of a pixel is defined
+ * row by row.  Its row's sample ordinate yc is crossed by the run's two
+ * bounding edges: with the row's crossings sorted by exact abscissa (ties
+ * by the index in polygon->points of the edge's first vertex, the edge
+ * from vertex k to vertex k+1 of its ring having index k), under even-odd
+ * the crossings 2k and 2k+1, under non-zero the crossing where the winding
+ * number leaves 0 and the one where it returns to 0 (crossings in between
+ * do not shade).  Each bounding edge, from vertex a to vertex b, has at yc
+ * the exact colour ca + (yc - ya)(cb - ca)/(yb - ya) (linear along the
+ * edge) at its exact crossing abscissa X (Conventions).  Along the run the
+ * colour is linear in x between the left crossing (Xl, cl) and the right
+ * one (Xr, cr): c = cl + (xs - Xl)(cr - cl)/(Xr - Xl) at the sample
+ * abscissa xs, and the pixel gets floor(c + 1/2) per channel, exactly
+ * (128-bit integers; no rounding before the last step), clamped to 0..255
+ * (RAST_ROUND_TEXTBOOK owns a sample up to half a pixel left of Xl, where
+ * the line is extrapolated).
+ * For a triangle this is the same colour as the barycentric (plane)
+ * interpolation: both are the unique affine function through the three
+ * vertex colours, evaluated exactly.
+ *
+ * `colors`: 4 RGBA bytes per vertex, in the order of polygon->points.
+ * opts: algorithm must be RAST_ALGO_AET (RAST_E_ALGORITHM), boundary
+ * RAST_BOUNDARY_EXACT; rule, subpixel_bits, sample and rounding as for
+ * rast_fill_polygon.  shade->precision: RAST_PRECISION_EXACT, or
+ * RAST_PRECISION_FLAT (vertex 0's colour everywhere, seed 001's flat
+ * shading); RAST_PRECISION_FIXED is not offered here (RAST_E_ARG).
+ * Colours are stored as rast_pack_color stores them (COUNT16:
+ * RAST_E_FORMAT).
+ * Scratch: rast_polygon_gouraud_scratch_size() for the clip (the AET's and
+ * 8 bytes per vertex).  Errors as rast_fill_polygon, all before anything
+ * is written.  Never writes outside the clip. */
+RAST_API rast_status rast_polygon_gouraud_scratch_size(uint32_t npoints, int32_t width,
+                                                       int32_t height, size_t *bytes);
+RAST_API rast_status rast_fill_polygon_gouraud(const rast_target *target,
+                                               const rast_polygon *polygon,
+                                               const uint8_t *colors,
+                                               const rast_fill_opts *opts,
+                                               const rast_shade_opts *shade,
+                                               void *scratch, size_t scratch_bytes);
+
 /* ---- anti-aliased shaded triangles (shade_aa.c) -------------------------------
  * rast_fill_triangles_shaded with coverage instead of the binary rule: a
  * triangle batch's union coverage (as rast_fill_triangles_aa) times a
@@ -1353,6 +1213,140 @@ RAST_API rast_status rast_fill_triangles_shaded_aa(const rast_target *target,
                                                    const rast_coverage_opts *opts,
                                                    const rast_shade_opts *shade,
                                                    void *scratch, size_t scratch_bytes);
+
+/* ==========================================================================
+ * Scenes, band by band
+ * ========================================================================== */
+
+/* ---- scenes, rendered band by band --------------------------------------------
+ * A scene is an array of primitives drawn in order, each over the ones
+ * before it.  rast_render_bands cuts the clip into bands of `band_rows`
+ * rows and draws every primitive into each band in turn, so the work memory
+ * is that of one primitive in one band: it grows with the primitive's
+ * vertices and the band's rows and width, never with the coordinates (a
+ * polygon reaching y = +-2^27 costs what one inside the band costs).  The
+ * pixels are exactly those of drawing each primitive in order into the
+ * whole clip: every filler clips exactly, rows are independent.
+ *
+ * Bounded memory, no partial image.  When a primitive's scratch for a band
+ * does not fit `scratch_bytes`, its band is halved (and halved again, down
+ * to one row) and drawn in parts, as FreeType's rasteriser does.  Before
+ * anything is written, every primitive is checked (as its own entry point
+ * checks it) and its scratch for a one-row band compared with
+ * `scratch_bytes`: so the call either draws the whole scene or returns an
+ * error having written nothing. */
+typedef enum rast_prim_kind {
+    RAST_PRIM_POLYGON = 0,   /* `polygon` with `fill` (rast_fill_polygon) */
+    RAST_PRIM_TRIANGLES = 1, /* `count` triangles at `points` with `tri`
+                                (rast_fill_triangles) */
+    RAST_PRIM_POLYLINE = 2,  /* `count` points at `points`, `closed`, with
+                                `line` (rast_draw_polyline) */
+    RAST_PRIM_POLYGON64 = 3, /* `polygon64` with `fill` (rast_fill_polygon64) */
+    RAST_PRIM_COUNT_ = 4
+} rast_prim_kind;
+
+/* One primitive; only the fields of its kind are read.  `pixel` is the
+ * value (target format bytes; NULL allowed for RAST_FORMAT_COUNT16 and for
+ * the spans call, which hands the primitive to its callback instead).  The
+ * library only reads it and what it points to. */
+typedef struct rast_prim {
+    rast_prim_kind kind;
+    rast_polygon polygon;          /* RAST_PRIM_POLYGON */
+    const rast_point *points;      /* RAST_PRIM_TRIANGLES, RAST_PRIM_POLYLINE */
+    uint32_t count;                /* triangles, or polyline points */
+    int32_t closed;                /* RAST_PRIM_POLYLINE: non-zero closes it */
+    const rast_fill_opts *fill;    /* RAST_PRIM_POLYGON */
+    const rast_tri_opts *tri;      /* RAST_PRIM_TRIANGLES */
+    const rast_line_opts *line;    /* RAST_PRIM_POLYLINE */
+    const void *pixel;
+    rast_polygon64 polygon64;      /* RAST_PRIM_POLYGON64 */
+    /* RAST_PRIM_POLYGON, RAST_PRIM_TRIANGLES: NULL (zero-initialised) draws
+     * the binary fill with `fill` / `tri`; otherwise the anti-aliased one
+     * with these coverage options (rast_fill_polygon_aa,
+     * rast_fill_triangles_aa; `fill` / `tri` are then not read), its
+     * scratch rast_coverage_scratch_size for the band.  rast_render_bands
+     * paints it, rast_render_bands_coverage hands on its values;
+     * rast_render_bands_spans and the other kinds refuse a non-NULL aa
+     * (RAST_E_ARG). */
+    const struct rast_coverage_opts *aa;
+} rast_prim;
+
+/* A span of primitive `prim` (a pointer into the caller's array) in row y,
+ * columns x0 <= i < x1. */
+typedef void (*rast_prim_span_fn)(void *user, const rast_prim *prim, int32_t y,
+                                  int32_t x0, int32_t x1);
+
+/* What a band render did (optional output): the number of bands of
+ * band_rows rows the clip was cut into, how many times a primitive's band
+ * was halved to fit the scratch, and the most scratch bytes any primitive
+ * asked for in the band it was drawn in (<= scratch_bytes). */
+typedef struct rast_band_stats {
+    uint32_t bands;
+    uint32_t splits;
+    size_t peak_scratch;
+} rast_band_stats;
+
+/* Scratch bytes that draw every primitive of the scene in a band of
+ * `band_rows` rows and `width` columns without halving: the largest need of
+ * one primitive (polygons: rast_scratch_size, rast_scratch_size64; triangles:
+ * rast_tri_scratch_size; polylines: none; anti-aliased ones, prim->aa:
+ * rast_coverage_scratch_size).  band_rows = 1 gives the least
+ * scratch with which rast_render_bands succeeds.  n may be 0 (prims may
+ * then be NULL).  Errors: RAST_E_NULL, RAST_E_ARG (an unknown kind,
+ * band_rows < 1), RAST_E_SIZE (width or band_rows past RAST_MAX_DIM, or a
+ * negative width), and those of
+ * the scratch functions. */
+RAST_API rast_status rast_scene_scratch_size(const rast_prim *prims, uint32_t n,
+                                             int32_t band_rows, int32_t width,
+                                             size_t *bytes);
+
+/* Draw the scene into target->clip band by band (see above): each band is
+ * the clip narrowed to rows [y, y + band_rows), top to bottom.  Pixels as
+ * drawing the primitives in order with their own entry points.  `scratch`
+ * aligned to RAST_SCRATCH_ALIGN; `stats` may be NULL.  Errors, all before
+ * anything is written: those of each primitive's entry point,
+ * RAST_E_ARG (an unknown kind, band_rows < 1, aa on a kind other than
+ * polygon and triangles), RAST_E_SCRATCH (some primitive does not fit even
+ * a one-row band).  Anti-aliased primitives blend into what the ones
+ * before them drew, band by band: the same pixels as one full call (a
+ * pixel's coverage depends on its row alone). */
+RAST_API rast_status rast_render_bands(const rast_target *target, const rast_prim *prims,
+                                       uint32_t n, int32_t band_rows, void *scratch,
+                                       size_t scratch_bytes, rast_band_stats *stats);
+
+/* The same coverage handed to `span` (firmware pushing spans to a display
+ * with a framebuffer of a band, or none): band by band, in each band the
+ * primitives in order, each primitive's spans as its own spans call gives
+ * them.  The clip as for rast_fill_polygon_spans; errors as
+ * rast_render_bands, RAST_E_NULL also for clip or span, RAST_E_ARG for an
+ * anti-aliased primitive (a span carries no coverage: use
+ * rast_render_bands_coverage), all before the first span. */
+RAST_API rast_status rast_render_bands_spans(const rast_prim *prims, uint32_t n,
+                                             const rast_rect *clip, int32_t band_rows,
+                                             rast_prim_span_fn span, void *user,
+                                             void *scratch, size_t scratch_bytes,
+                                             rast_band_stats *stats);
+
+/* The same with coverage (a display driver that blends, band by band):
+ * as rast_render_bands_spans, each span handed to `span` with `values`:
+ * NULL for a binary primitive's span (every pixel of it fully the
+ * primitive's), and for an anti-aliased one (prim->aa) the uint8 levels
+ * 1..255 of its pixels x0..x1-1, the runs rast_polygon_coverage_spans /
+ * rast_triangles_coverage_spans give for the band (valid during the call
+ * only).  Errors as rast_render_bands_spans (an anti-aliased primitive is
+ * accepted here), RAST_E_SIZE also for an anti-aliased primitive in a clip
+ * wider than RAST_MAX_DIM, all before the first span. */
+typedef void (*rast_prim_coverage_fn)(void *user, const rast_prim *prim, int32_t y, int32_t x0,
+                                      int32_t x1, const uint8_t *values);
+RAST_API rast_status rast_render_bands_coverage(const rast_prim *prims, uint32_t n,
+                                                const rast_rect *clip, int32_t band_rows,
+                                                rast_prim_coverage_fn span, void *user,
+                                                void *scratch, size_t scratch_bytes,
+                                                rast_band_stats *stats);
+
+/* ==========================================================================
+ * Region fill (seed fills)
+ * ========================================================================== */
 
 /* ---- region fill -------------------------------------------------------------
  * Seed fill (seed 001 section 3.6): starting at the seed pixel (x, y),
@@ -1445,3 +1439,101 @@ RAST_API rast_status rast_seed_fill_limited(const rast_target *target, int32_t x
 #endif
 
 #endif /* RASTRUM_H */
+
+/* ==========================================================================
+ * What may change: RAST_STATIC_LINKING_ONLY
+ *
+ * Declared only when the includer defines RAST_STATIC_LINKING_ONLY before
+ * including this header (as lz4.h's LZ4_STATIC_LINKING_ONLY): calls and
+ * constants that spell out the library's internals or serve one consumer,
+ * and may change in a minor release.  Link statically (or pin the exact
+ * version) when using them.
+ *  - the scratch bounds of the polygon algorithms other than the AET: they
+ *    are the fillers' internal layouts (RAST_AET_SCRATCH_BOUND, the AET's,
+ *    is stable, and rast_scratch_size is exact for every algorithm);
+ *  - pycocotools' polygon rule (the building blocks of rastrum.coco).
+ * ========================================================================== */
+#if defined(RAST_STATIC_LINKING_ONLY) && !defined(RASTRUM_H_STATIC_LINKING_ONLY)
+#define RASTRUM_H_STATIC_LINKING_ONLY
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/* The same for the other polygon algorithms (rast_scratch_size gives the
+ * exact figure; these are never less).  For a clip `width` x `height`:
+ *  - xscan: an edge record (32 bytes) and a crossing key (4) per vertex;
+ *  - edgefill, fence: the mask, ONE BIT per clip pixel in 64-bit words;
+ *  - edgeflag: the same bits (its flags; all even-odd needs), plus one
+ *    counter per clip pixel for non-zero's direction sums, of 1 byte up to
+ *    511 vertices, 2 up to 131071, 4 beyond (rast_scratch_size cannot see
+ *    the rule, so it always counts them);
+ *  - crossing, winding: two edge records (32 bytes each) per vertex. */
+#define RAST_XSCAN_SCRATCH_BOUND(npoints) \
+    ((size_t)(npoints) * 36 + 2 * RAST_SCRATCH_ALIGN)
+#define RAST_EDGEFILL_SCRATCH_BOUND(width, height) \
+    ((size_t)(height) * (((size_t)(width) + 63) / 64) * 8)
+#define RAST_FENCE_SCRATCH_BOUND(width, height) RAST_EDGEFILL_SCRATCH_BOUND(width, height)
+#define RAST_EDGEFLAG_SCRATCH_BOUND(npoints, width, height)                      \
+    (RAST_EDGEFILL_SCRATCH_BOUND(width, height) +                               \
+     (size_t)(width) * (size_t)(height) *                                       \
+         ((npoints) <= 511 ? 1u : (npoints) <= 131071 ? 2u : 4u) + RAST_SCRATCH_ALIGN)
+#define RAST_POINTWISE_SCRATCH_BOUND(npoints) \
+    ((size_t)(npoints) * 64 + RAST_SCRATCH_ALIGN)
+
+/* ---- pycocotools' polygon rule (coco.c) --------------------------------------
+ * Not the exact rule: the rule with which pycocotools (cocoapi maskApi.c,
+ * rleFrPoly) turns a COCO polygon into a mask, reproduced bit for bit in
+ * integers so that training masks equal the evaluation's.  Masks are
+ * column-major, as COCO's run-length encoding (RLE) stores them: pixel
+ * (row y, column x) of an height x width mask is position x * height + y.
+ *
+ * Input: the ring's vertices upsampled by 5 and rounded as pycocotools
+ * rounds them, X = (int)(5 * x + 0.5) in C double arithmetic (truncation
+ * toward zero), within +-RAST_COCO_COORD_MAX (about +-1.67 million
+ * pixels); the ring is closed (the last vertex joins the first).
+ * The rule: each edge is walked one fifth of a pixel at a time along its
+ * longer axis, its other coordinate rounded as pycocotools' doubles round
+ * it (reproduced exactly, ties included); where the walk steps from
+ * X = 5c + 2 to 5c + 3, column c (0 <= c < width) gets a toggle at row
+ * ceil((Y - 2) / 5) clamped to 0..height, Y the smaller of the two steps'
+ * Y; a pixel is inside iff an odd number of its column's toggles are at or
+ * above it.  Rings of 0, 1 or 2 points draw nothing.  Width 0 is
+ * pycocotools' too: its unsigned width - 1 wraps, so every column c >= 0
+ * takes toggles (counts past the empty mask, as pycocotools gives them).
+ */
+enum {
+    RAST_COCO_COORD_MAX = 8388607 /* 2^23 - 1, in fifths of a pixel */
+};
+
+/* The toggle positions (x * height + row, row in 0..height) of one ring
+ * under pycocotools' rule, in no particular order, into toggles[0..*count).
+ * *count always gets the number of toggles (at most npoints * width); if it
+ * is more than `capacity`, nothing is written and RAST_E_SCRATCH returned
+ * (call again with more).  toggles may be NULL when capacity is 0.
+ * height * width must fit 32 bits (COCO's counts are uint32).  Errors,
+ * before anything is written: RAST_E_NULL, RAST_E_SIZE (a negative side or
+ * height * width > 2^32 - 1), RAST_E_TOO_MANY, RAST_E_RANGE. */
+RAST_API rast_status rast_coco_ring_toggles(const rast_point *points, uint32_t npoints,
+                                            int32_t height, int32_t width, uint32_t *toggles,
+                                            size_t capacity, size_t *count);
+
+/* The run-length counts of the mask that toggles[0..count) (positions, any
+ * order, any multiplicity) give a mask of `total` pixels, as pycocotools
+ * makes them: the differences of the sorted positions with `total` among
+ * them (uint32), a difference of 0 joining the runs either side of it.
+ * When no position passes `total` these are COCO's canonical runs of the
+ * positions of odd multiplicity: zeros first (a count of 0 when the mask
+ * starts inside), then alternately ones and zeros, no other count 0; one
+ * count (`total`) for an empty mask.  toggles is sorted in place (and
+ * `scratch`, count uint32_t, used as work memory); counts must hold
+ * count + 1 values; *ncounts gets how many were written.  Errors:
+ * RAST_E_NULL. */
+RAST_API rast_status rast_coco_rle(uint32_t *toggles, size_t count, uint32_t total,
+                                   uint32_t *scratch, uint32_t *counts, size_t *ncounts);
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif /* RAST_STATIC_LINKING_ONLY */

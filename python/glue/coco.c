@@ -7,6 +7,7 @@
  * areas, boxes and IoUs, with pycocotools' arithmetic (uint32 counts,
  * double IoUs) so that the results are the same, and the exact rule's RLE
  * straight from the core's spans.  See coco.h for the buffer convention. */
+#define RAST_STATIC_LINKING_ONLY /* pycocotools' rule */
 #include <stdlib.h>
 #include <string.h>
 #include "batch.h"

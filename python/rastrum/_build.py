@@ -3,7 +3,8 @@
 The declarations are not written twice: they come from the public header,
 run through the C preprocessor with ``RAST_CDEF`` defined (which drops the
 system includes and the visibility attribute and expands the status
-X-macro).  Named by ``setup.py`` (``cffi_modules``).
+X-macro) and ``RAST_STATIC_LINKING_ONLY`` (the binding is built with the
+core, so it may use the part of the API that may change).  Named by ``setup.py`` (``cffi_modules``).
 
 Extra compiler and linker flags (a sanitizer build, say) come from the
 environment variables ``RASTRUM_CFLAGS`` and ``RASTRUM_LDFLAGS``.
@@ -30,7 +31,7 @@ def _compiler():
 
 
 def _cdef():
-    cmd = _compiler() + ["-E", "-P", "-DRAST_CDEF", "-x", "c", HEADER]
+    cmd = _compiler() + ["-E", "-P", "-DRAST_CDEF", "-DRAST_STATIC_LINKING_ONLY", "-x", "c", HEADER]
     out = subprocess.run(cmd, check=True, capture_output=True, text=True)
     return out.stdout
 
@@ -64,6 +65,8 @@ ffibuilder.set_source(
     "rastrum._native",
     "".join('#include "%s"\n' % os.path.basename(h) for h in sorted(glob.glob(os.path.join(GLUE, "*.h")))),
     sources=sorted(_path(p) for p in glob.glob(os.path.join(CSRC, "src", "*", "*.c")) + glob.glob(os.path.join(GLUE, "*.c"))),
+    # the binding uses the whole header, RAST_STATIC_LINKING_ONLY part included
+    define_macros=[("RAST_STATIC_LINKING_ONLY", None)],
     include_dirs=[_path(os.path.join(CSRC, "include")), _path(os.path.join(CSRC, "src")), _path(GLUE)],
     extra_compile_args=["-std=c99", "-O2", "-fvisibility=hidden"] + shlex.split(os.environ.get("RASTRUM_CFLAGS", "")),
     extra_link_args=shlex.split(os.environ.get("RASTRUM_LDFLAGS", "")),

@@ -7,6 +7,7 @@
  * target and after a scratch buffer of exactly the size asked for;
  * coordinates at +-RAST_COORD_MAX; thousands of vertices; errors.
  */
+#define RAST_STATIC_LINKING_ONLY /* the other algorithms' scratch bounds */
 #include <stdint.h>
 #include <stdlib.h>
 #include <string.h>

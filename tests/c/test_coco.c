@@ -4,6 +4,7 @@
  * description; test code may use double).  Small coordinates make the
  * doubles tie often; larger ones check the exact rounding elsewhere. */
 #define CHECK_RNG_SEED 14u
+#define RAST_STATIC_LINKING_ONLY /* pycocotools' rule */
 #include <string.h>
 #include "check.h"
 #include "rastrum.h"

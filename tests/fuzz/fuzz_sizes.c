@@ -9,6 +9,7 @@
  * rastrum.h says and never shrinks when the vertices, the width or the
  * height grow, and a scene needs the most any one of its primitives needs.
  */
+#define RAST_STATIC_LINKING_ONLY /* the other algorithms' scratch bounds */
 #include "fuzz.h"
 
 /* An int32 at or near a limit, or anything. */

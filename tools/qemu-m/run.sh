@@ -6,7 +6,8 @@
 # QEMU's mps2-an385 board with newlib's semihosting stdio, runs it under
 # qemu-system-arm, and checks that its frame hash equals the one the same
 # example prints on this machine.  Prints the image's sizes and the RAM it
-# used (static and stack high-water).
+# used (static and stack high-water).  Then the same for the firmware
+# examples, each under its own configuration header.
 #
 #   tools/qemu-m/run.sh OUTDIR
 set -eu
@@ -36,3 +37,27 @@ if [ -n "$m" ] && [ "$m" = "$p" ]; then
 else
   echo "display-qemu: frame hash '$m' on cortex-m != '$p' on this machine"; exit 1
 fi
+
+# The firmware examples (examples/firmware_*.c), each with the library cut
+# by its own configuration header, on the same board: the picture hash
+# each prints must equal the one the same program prints on this machine.
+for app in firmware_min firmware_tri firmware_lines; do
+  def="-DFIRMWARE_PRINT -DRAST_CONFIG_HEADER=\"${app}_conf.h\""
+  # shellcheck disable=SC2086
+  arm-none-eabi-gcc $cflags $def -Iexamples -Ibuild/single "examples/$app.c" build/single/rastrum.c \
+    "$out/startup.o" -T tools/qemu-m/mps2.ld -nostartfiles --specs=rdimon.specs \
+    -Wl,--gc-sections -o "$out/$app.elf"
+  # shellcheck disable=SC2086
+  ${CC:-cc} -std=c99 -O2 $def -Iexamples -Ibuild/single "examples/$app.c" build/single/rastrum.c \
+    -o "$out/$app-pc"
+  timeout 60 qemu-system-arm -M mps2-an385 -nographic -monitor none -serial none \
+    -semihosting-config enable=on,target=native -kernel "$out/$app.elf" > "$out/$app.log" 2>&1 || {
+    cat "$out/$app.log"; echo "display-qemu: $app failed under qemu"; exit 1; }
+  m=$(sed -n 's/^ok, picture hash //p' "$out/$app.log")
+  p=$("$out/$app-pc" | sed -n 's/^ok, picture hash //p')
+  if [ -n "$m" ] && [ "$m" = "$p" ]; then
+    echo "display-qemu: $app picture hash $m on cortex-m = $p on this machine: 1 passed, 0 failed"
+  else
+    echo "display-qemu: $app picture hash '$m' on cortex-m != '$p' on this machine"; exit 1
+  fi
+done

@@ -13,7 +13,16 @@
 
 #include <string.h>
 
+#define RAST_STATIC_LINKING_ONLY /* the library's own files see the whole header */
 #include "rastrum.h"
+#include "base/config.h"
+
+/* A coordinate in internal units: a rast_fixed doubled, 2^(S+1) to the
+ * pixel (|value| < 2^28 for a vertex, differences < 2^29), as FreeType's
+ * ftgrays.c names its TPos.  rast__dpos64 is the 64-bit vertices' (a
+ * rast_fixed64 doubled, |value| < 2^62). */
+typedef int32_t rast__dpos;
+typedef int64_t rast__dpos64;
 
 /* For a filler's row loop and its setup: inlined whatever the compiler's
  * weighing of code size says, where it can be told (GCC, clang), so that
@@ -171,8 +180,8 @@ static inline void rast__edge_start_inline(rast__edge *ed, rast_point top, rast_
                                            const rast__grid *g)
 {
     /* Internal units: |coordinate| < 2^28, differences < 2^29. */
-    int32_t xa = 2 * top.x, ya = 2 * top.y;
-    int32_t dx = 2 * bottom.x - xa, dy = 2 * bottom.y - ya;
+    rast__dpos xa = 2 * top.x, ya = 2 * top.y;
+    rast__dpos dx = 2 * bottom.x - xa, dy = 2 * bottom.y - ya;
     int32_t base, xr, step;
     int64_t q = (int64_t)dy * g->unit; /* < 2^46 */
     int64_t n, t, r;
@@ -559,7 +568,7 @@ typedef struct rast__grid64 {
 /* An edge of a 64-bit polygon for RAST_BOUNDARY_CONSERVATIVE: internal
  * (doubled) coordinates, a above b. */
 typedef struct rast__bound_edge64 {
-    int64_t ax, ay, bx, by;
+    rast__dpos64 ax, ay, bx, by;
     int32_t row, end, next, pad;
 } rast__bound_edge64;
 

@@ -64,7 +64,9 @@ static rast_status rast__prim_need(const rast_prim *p, int32_t width, int32_t ro
         return rast__tri_fill_need(p->tri, width, rows, need);
     case RAST_PRIM_POLYLINE:
         if (!p->line) return RAST_E_NULL;
-        if ((unsigned)p->line->algorithm >= RAST_LINE_COUNT_) return RAST_E_ALGORITHM;
+        if ((unsigned)p->line->algorithm >= RAST_LINE_COUNT_ ||
+            !RAST__HAS(RAST_CONFIG_LINE_ALGORITHMS, p->line->algorithm))
+            return RAST_E_ALGORITHM;
         *need = 0;
         return RAST_OK;
     default:

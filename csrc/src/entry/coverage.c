@@ -12,7 +12,8 @@ static const char *const rast__aa_names[RAST_AA_COUNT_] = {"area", "ss2", "ss4",
 
 rast_status rast_aa_method_info(rast_aa_method method, const char **name)
 {
-    if ((unsigned)method >= RAST_AA_COUNT_) return RAST_E_ARG;
+    if ((unsigned)method >= RAST_AA_COUNT_ || !RAST__HAS(RAST_CONFIG_AA_METHODS, method))
+        return RAST_E_ARG;
     if (name) *name = rast__aa_names[method];
     return RAST_OK;
 }
@@ -26,7 +27,8 @@ static int32_t rast__aa_kbits(rast_aa_method m)
 static rast_status rast__cov_check_opts(const rast_coverage_opts *o)
 {
     if (!o) return RAST_E_NULL;
-    if ((unsigned)o->method >= RAST_AA_COUNT_) return RAST_E_ARG;
+    if ((unsigned)o->method >= RAST_AA_COUNT_ || !RAST__HAS(RAST_CONFIG_AA_METHODS, o->method))
+        return RAST_E_ARG;
     if ((unsigned)o->rule > RAST_RULE_NONZERO) return RAST_E_ARG;
     if (o->subpixel_bits < 0 || o->subpixel_bits > RAST_MAX_SUBPIXEL_BITS) return RAST_E_SUBPIXEL;
     if (o->sample != RAST_SAMPLE_CORNER && o->sample != RAST_SAMPLE_CENTER) return RAST_E_ARG;

@@ -49,7 +49,7 @@ static size_t rast__need(const rast__algo *al, const rast_fill_opts *opts, uint3
                          int32_t width, int32_t height)
 {
     size_t need = al->scratch(npoints, width, height);
-    if (opts->boundary != RAST_BOUNDARY_EXACT)
+    if (RAST__BOUNDARY_MODES && opts->boundary != RAST_BOUNDARY_EXACT)
         need = rast__size_add(need, rast__bound_scratch(npoints, height));
     return need;
 }
@@ -102,7 +102,7 @@ rast_status rast__fill_checked(const rast__fill_setup *f, const rast_polygon *po
     rast_status st;
 
     rast__sink_init(&sink, p, clip);
-    if (f->opts->boundary == RAST_BOUNDARY_EXACT)
+    if (!RAST__BOUNDARY_MODES || f->opts->boundary == RAST_BOUNDARY_EXACT)
         return f->al->fill(poly, npoints, &f->g, f->opts->rule, clip, &sink, &arena);
     {
         rast__bound b;

@@ -208,10 +208,18 @@ static inline void rast__lwalk_next(rast__lwalk *w)
     }
 }
 
+/* The DDA walk, when the options ask for it and the build keeps it (the
+ * check refused it otherwise): a constant 0 when left out, so that its
+ * code goes. */
+#define RAST__LINE_DDA(o) \
+    (RAST__HAS(RAST_CONFIG_LINE_ALGORITHMS, RAST_LINE_DDA) && (o)->algorithm == RAST_LINE_DDA)
+
 static rast_status rast__line_check(const rast_line_opts *opts, rast__grid *g)
 {
     if (!opts) return RAST_E_NULL;
-    if ((unsigned)opts->algorithm >= RAST_LINE_COUNT_) return RAST_E_ALGORITHM;
+    if ((unsigned)opts->algorithm >= RAST_LINE_COUNT_ ||
+        !RAST__HAS(RAST_CONFIG_LINE_ALGORITHMS, opts->algorithm))
+        return RAST_E_ALGORITHM;
     return rast__grid_init(g, opts->subpixel_bits, opts->sample, RAST_ROUND_EXACT,
                            RAST_BOUNDARY_EXACT);
 }
@@ -288,7 +296,7 @@ rast_status rast_draw_line(const rast_target *target, rast_point a, rast_point b
     rast_status st = rast__line_begin(target, opts, pixel, &g, &clip, &solid, &p);
     if (st != RAST_OK) return st;
     if (!rast__in_range(a) || !rast__in_range(b)) return RAST_E_RANGE;
-    rast__line_paint(a, b, &g, opts->algorithm == RAST_LINE_DDA, &clip, &p);
+    rast__line_paint(a, b, &g, RAST__LINE_DDA(opts), &clip, &p);
     return RAST_OK;
 }
 
@@ -299,7 +307,7 @@ static rast_status rast__polyline(const rast_point *points, uint32_t npoints, in
                                   const rast_rect *clip, const rast__painter *p)
 {
     uint32_t k;
-    int dda = opts->algorithm == RAST_LINE_DDA;
+    int dda = RAST__LINE_DDA(opts);
     if (npoints > RAST_MAX_POINTS) return RAST_E_TOO_MANY;
     if (npoints > 0 && !points) return RAST_E_NULL;
     for (k = 0; k < npoints; k++)
@@ -354,7 +362,7 @@ rast_status rast_line_pixels(rast_point a, rast_point b, const rast_line_opts *o
     st = rast__span_clip(clip, &c);
     if (st != RAST_OK) return st;
     if (!rast__in_range(a) || !rast__in_range(b)) return RAST_E_RANGE;
-    rast__lwalk_init(&w, a, b, &g, opts->algorithm == RAST_LINE_DDA, &c);
+    rast__lwalk_init(&w, a, b, &g, RAST__LINE_DDA(opts), &c);
     *count = (size_t)w.n; /* <= 2^28 + 1 */
     if ((size_t)w.n > capacity) return RAST_E_SCRATCH;
     for (k = 0; k < w.n; k++) {

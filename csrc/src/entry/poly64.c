@@ -43,6 +43,7 @@ static rast_status rast__check_opts64(const rast_fill_opts *o, rast__grid64 *g)
     rast_status st;
     uint32_t rules;
     if (!o) return RAST_E_NULL;
+    if (!RAST_CONFIG_POLYGON64) return RAST_E_WIDE; /* left out (base/config.h) */
     st = rast_algorithm_info(o->algorithm, NULL, &rules);
     if (st != RAST_OK) return st;
     if ((unsigned)o->rule > RAST_RULE_NONZERO) return RAST_E_ARG;
@@ -51,7 +52,8 @@ static rast_status rast__check_opts64(const rast_fill_opts *o, rast__grid64 *g)
         return RAST_E_SUBPIXEL;
     if (o->sample != RAST_SAMPLE_CORNER && o->sample != RAST_SAMPLE_CENTER) return RAST_E_ARG;
     if ((unsigned)o->rounding > RAST_ROUND_TEXTBOOK) return RAST_E_ARG;
-    if ((unsigned)o->boundary > RAST_BOUNDARY_CONSERVATIVE) return RAST_E_ARG;
+    if ((unsigned)o->boundary > RAST_BOUNDARY_CONSERVATIVE || !RAST__BOUNDARY_KEPT(o->boundary))
+        return RAST_E_ARG;
     if (o->algorithm != RAST_ALGO_AET || o->rounding != RAST_ROUND_EXACT ||
         o->boundary == RAST_BOUNDARY_CLOSED)
         return RAST_E_WIDE;
@@ -95,7 +97,7 @@ static rast_status rast__check_polygon64(const rast_polygon64 *p, int32_t s, uin
 static size_t rast__scratch64(const rast_fill_opts *o, uint32_t npoints, int32_t height)
 {
     size_t need = rast__aet_scratch(npoints, 0, height);
-    if (o->boundary != RAST_BOUNDARY_EXACT)
+    if (RAST__BOUNDARY_MODES && o->boundary != RAST_BOUNDARY_EXACT)
         need = rast__size_add(need, rast__bound_scratch64(npoints, height));
     return need;
 }
@@ -252,7 +254,7 @@ rast_status rast__fill64_checked(const rast_polygon64 *poly, uint32_t npoints,
     rast_status st;
 
     rast__sink_init(&sink, p, clip);
-    if (opts->boundary == RAST_BOUNDARY_EXACT) {
+    if (!RAST__BOUNDARY_MODES || opts->boundary == RAST_BOUNDARY_EXACT) {
         st = rast__aet64_fill(poly, npoints, g, opts->rule, clip, &sink, &arena);
         rast__sink_flush(&sink);
         return st;

@@ -8,20 +8,28 @@
 #include "painters/paint.h"
 
 typedef struct rast__tri_algo {
-    const char *name;
+    char name[10]; /* in the row: see rast__algo (registry.h) */
     rast__tri_scratch_fn scratch;
     rast__tri_fill_fn fill;
 } rast__tri_algo;
 
+/* Algorithm a's row, or an empty one (no filler: "unknown") when the
+ * build's configuration leaves a out (base/config.h). */
+#define RAST__TRI_ROW(a, name, scratch, fill)                                  \
+    {name, RAST__HAS(RAST_CONFIG_TRI_ALGORITHMS, a) ? scratch : NULL,          \
+     RAST__HAS(RAST_CONFIG_TRI_ALGORITHMS, a) ? fill : NULL}
+
 static const rast__tri_algo rast__tri_algos[RAST_TRI_COUNT_] = {
-    {"edge", rast__tri_edge_scratch, rast__tri_edge_fill},
-    {"sweep", rast__tri_sweep_scratch, rast__tri_sweep_fill},
-    {"edgeflag", rast__tri_edgeflag_scratch, rast__tri_edgeflag_fill},
+    RAST__TRI_ROW(RAST_TRI_EDGE, "edge", rast__tri_edge_scratch, rast__tri_edge_fill),
+    RAST__TRI_ROW(RAST_TRI_SWEEP, "sweep", rast__tri_sweep_scratch, rast__tri_sweep_fill),
+    RAST__TRI_ROW(RAST_TRI_EDGEFLAG, "edgeflag", rast__tri_edgeflag_scratch,
+                  rast__tri_edgeflag_fill),
 };
 
 rast_status rast_tri_algorithm_info(rast_tri_algorithm algorithm, const char **name)
 {
-    if ((unsigned)algorithm >= RAST_TRI_COUNT_) return RAST_E_ALGORITHM;
+    if ((unsigned)algorithm >= RAST_TRI_COUNT_ || !RAST__HAS(RAST_CONFIG_TRI_ALGORITHMS, algorithm))
+        return RAST_E_ALGORITHM;
     if (name) *name = rast__tri_algos[algorithm].name;
     return RAST_OK;
 }
@@ -31,8 +39,13 @@ static rast_status rast__tri_check_opts(const rast_tri_opts *o, rast__grid *g,
                                         const rast__tri_algo **algo)
 {
     rast_status st = rast__grid_init(g, o->subpixel_bits, o->sample, o->rounding, o->boundary);
+    /* A build without triangles always fails below: set *algo anyway, or
+     * the compiler warns that the callers use it unset. */
+    if (RAST_CONFIG_TRI_ALGORITHMS == 0) *algo = NULL;
     if (st != RAST_OK) return st;
-    if ((unsigned)o->algorithm >= RAST_TRI_COUNT_) return RAST_E_ALGORITHM;
+    if ((unsigned)o->algorithm >= RAST_TRI_COUNT_ ||
+        !RAST__HAS(RAST_CONFIG_TRI_ALGORITHMS, o->algorithm))
+        return RAST_E_ALGORITHM;
     *algo = &rast__tri_algos[o->algorithm];
     return RAST_OK;
 }
@@ -41,7 +54,7 @@ static size_t rast__tri_need(const rast__tri_algo *al, const rast_tri_opts *o,
                              int32_t width, int32_t height)
 {
     size_t need = al->scratch(width, height);
-    if (o->boundary != RAST_BOUNDARY_EXACT) need = rast__size_add(need, rast__bound_scratch(3, height));
+    if (RAST__BOUNDARY_MODES && o->boundary != RAST_BOUNDARY_EXACT) need = rast__size_add(need, rast__bound_scratch(3, height));
     return need;
 }
 
@@ -133,7 +146,7 @@ rast_status rast__tri_fill_checked(const rast_point *tris, uint32_t ntris,
          * both. */
         arena.p = (unsigned char *)scratch;
         arena.left = scratch_bytes;
-        if (opts->boundary == RAST_BOUNDARY_EXACT) {
+        if (!RAST__BOUNDARY_MODES || opts->boundary == RAST_BOUNDARY_EXACT) {
             st = al->fill(t, &g, clip, &sink, &arena);
         } else {
             static const uint32_t three = 3;

@@ -8,14 +8,24 @@
 #define RAST__BOTH_RULES ((1u << RAST_RULE_EVENODD) | (1u << RAST_RULE_NONZERO))
 #define RAST__EVENODD (1u << RAST_RULE_EVENODD)
 
+/* A row of algorithm a, or an empty one (no filler: "unknown") when the
+ * build's configuration leaves a out (base/config.h). */
+#define RAST__ROW(a, name, rules, scratch, fill)                              \
+    {name, rules, RAST__HAS(RAST_CONFIG_ALGORITHMS, a) ? scratch : NULL,      \
+     RAST__HAS(RAST_CONFIG_ALGORITHMS, a) ? fill : NULL}
+
 static const rast__algo rast__algos[RAST_ALGO_COUNT_] = {
-    {"aet", RAST__BOTH_RULES, rast__aet_scratch, rast__aet_fill},
-    {"xscan", RAST__BOTH_RULES, rast__xscan_scratch, rast__xscan_fill},
-    {"edgefill", RAST__EVENODD, rast__complement_scratch, rast__edgefill_fill},
-    {"fence", RAST__EVENODD, rast__complement_scratch, rast__fence_fill},
-    {"edgeflag", RAST__BOTH_RULES, rast__edgeflag_scratch, rast__edgeflag_fill},
-    {"crossing", RAST__EVENODD, rast__pointwise_scratch, rast__crossing_fill},
-    {"winding", RAST__BOTH_RULES, rast__pointwise_scratch, rast__winding_fill},
+    RAST__ROW(RAST_ALGO_AET, "aet", RAST__BOTH_RULES, rast__aet_scratch, rast__aet_fill),
+    RAST__ROW(RAST_ALGO_XSCAN, "xscan", RAST__BOTH_RULES, rast__xscan_scratch, rast__xscan_fill),
+    RAST__ROW(RAST_ALGO_EDGEFILL, "edgefill", RAST__EVENODD, rast__complement_scratch,
+              rast__edgefill_fill),
+    RAST__ROW(RAST_ALGO_FENCE, "fence", RAST__EVENODD, rast__complement_scratch, rast__fence_fill),
+    RAST__ROW(RAST_ALGO_EDGEFLAG, "edgeflag", RAST__BOTH_RULES, rast__edgeflag_scratch,
+              rast__edgeflag_fill),
+    RAST__ROW(RAST_ALGO_CROSSING, "crossing", RAST__EVENODD, rast__pointwise_scratch,
+              rast__crossing_fill),
+    RAST__ROW(RAST_ALGO_WINDING, "winding", RAST__BOTH_RULES, rast__pointwise_scratch,
+              rast__winding_fill),
 };
 
 const rast__algo *rast__algo_get(rast_algorithm a)

@@ -7,7 +7,10 @@
 #include "base/internal.h"
 
 typedef struct rast__algo {
-    const char *name;
+    /* in the row, not a pointer: a pointer would keep every string
+     * literal of the build (they share one section) in a firmware image
+     * that never asks for a name */
+    char name[10];
     uint32_t rules; /* bit r set: rast_fill_rule r supported */
     rast__scratch_fn scratch;
     rast__polygon_fill_fn fill;

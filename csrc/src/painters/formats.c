@@ -266,15 +266,45 @@ static void rast__mono1_blend(unsigned char *row, int32_t x0, int32_t x1, const 
 
 /* ---- the table, in rast_format order ---------------------------------------- */
 
+/* Format f's row as the build's configuration keeps it (base/config.h): all
+ * zero when f is left out (RAST__FORMAT_KEPT refuses f before its row is
+ * read); without shading no `put`, without anti-aliasing no `blend` (no
+ * method is kept then, and every call that would blend refuses its
+ * method first), so that the linker drops what nothing calls.  `pack` stays with the format:
+ * rast_pack_color is how an application makes a pixel value.  A slot a
+ * format has none of is a typed null (RAST__NO_*): `c ? NULL : NULL` would
+ * be a void pointer, which ISO C does not let initialise a function
+ * pointer. */
+#define RAST__NO_ROW ((rast__row_fn)0)
+#define RAST__NO_PACK ((void (*)(const unsigned char *, unsigned char *))0)
+#define RAST__NO_PUT ((void (*)(unsigned char *, int32_t, int32_t, const unsigned char *))0)
+/* The row of f is there: f is kept, or f is RGBA8888, the colours the
+ * anti-aliased shaded triangles shade a band into (shade_aa.c), when they
+ * are (the target format check still refuses a left-out RGBA8888). */
+#define RAST__ROW_KEPT(f)                                                      \
+    (RAST__HAS(RAST_CONFIG_FORMATS, f) ||                                      \
+     ((f) == RAST_FORMAT_RGBA8888 && RAST_CONFIG_SHADING && RAST_CONFIG_AA_METHODS))
+#define RAST__KEEP(f, x) (RAST__ROW_KEPT(f) ? (x) : 0)
+#define RAST__FORMAT_ROW(f, bits, value, channels, row, fill, pack, put, blend) \
+    {RAST__KEEP(f, bits), RAST__KEEP(f, value), RAST__KEEP(f, channels), \
+     RAST__ROW_KEPT(f) ? row : NULL, \
+     RAST__ROW_KEPT(f) ? fill : NULL, \
+     RAST__ROW_KEPT(f) ? pack : NULL, \
+     RAST__ROW_KEPT(f) && RAST_CONFIG_SHADING ? put : NULL, \
+     RAST__ROW_KEPT(f) && RAST_CONFIG_AA_METHODS ? blend : NULL}
+
 const rast__format rast__formats[RAST_FORMAT_COUNT_] = {
-    /* bits value channels row             fill                 pack                 put
-       blend */
-    {8, 1, 1, rast__gray8_row, rast__gray8_fill, rast__gray8_pack, rast__gray8_put,
-     rast__gray8_blend},
-    {24, 3, 3, NULL, rast__rgb888_fill, rast__rgb888_pack, rast__rgb888_put, rast__rgb888_blend},
-    {32, 4, 4, NULL, rast__rgba8888_fill, rast__rgba8888_pack, rast__rgba8888_put,
-     rast__rgba8888_blend},
-    {16, 0, 0, NULL, rast__count16_fill, NULL, NULL, rast__count16_blend},
-    {16, 2, 3, NULL, rast__rgb565_fill, rast__rgb565_pack, rast__rgb565_put, rast__rgb565_blend},
-    {1, 1, 1, NULL, rast__mono1_fill, rast__mono1_pack, rast__mono1_put, rast__mono1_blend},
+    /* format bits value channels row fill pack put blend */
+    RAST__FORMAT_ROW(RAST_FORMAT_GRAY8, 8, 1, 1, rast__gray8_row, rast__gray8_fill,
+                     rast__gray8_pack, rast__gray8_put, rast__gray8_blend),
+    RAST__FORMAT_ROW(RAST_FORMAT_RGB888, 24, 3, 3, RAST__NO_ROW, rast__rgb888_fill,
+                     rast__rgb888_pack, rast__rgb888_put, rast__rgb888_blend),
+    RAST__FORMAT_ROW(RAST_FORMAT_RGBA8888, 32, 4, 4, RAST__NO_ROW, rast__rgba8888_fill,
+                     rast__rgba8888_pack, rast__rgba8888_put, rast__rgba8888_blend),
+    RAST__FORMAT_ROW(RAST_FORMAT_COUNT16, 16, 0, 0, RAST__NO_ROW, rast__count16_fill,
+                     RAST__NO_PACK, RAST__NO_PUT, rast__count16_blend),
+    RAST__FORMAT_ROW(RAST_FORMAT_RGB565, 16, 2, 3, RAST__NO_ROW, rast__rgb565_fill,
+                     rast__rgb565_pack, rast__rgb565_put, rast__rgb565_blend),
+    RAST__FORMAT_ROW(RAST_FORMAT_MONO1, 1, 1, 1, RAST__NO_ROW, rast__mono1_fill,
+                     rast__mono1_pack, rast__mono1_put, rast__mono1_blend),
 };

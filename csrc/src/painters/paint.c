@@ -62,7 +62,7 @@ void rast__opaque_finish(rast__solid *s)
 rast_status rast_format_bytes(rast_format format, int32_t *bytes)
 {
     if (!bytes) return RAST_E_NULL;
-    if ((unsigned)format >= RAST_FORMAT_COUNT_) return RAST_E_FORMAT;
+    if (!RAST__FORMAT_KEPT(format)) return RAST_E_FORMAT;
     *bytes = rast__formats[format].value ? rast__formats[format].value
                                          : rast__formats[format].bits / 8;
     return RAST_OK;
@@ -72,7 +72,7 @@ rast_status rast_format_stride(rast_format format, int32_t width, int32_t *bytes
 {
     int64_t b;
     if (!bytes) return RAST_E_NULL;
-    if ((unsigned)format >= RAST_FORMAT_COUNT_) return RAST_E_FORMAT;
+    if (!RAST__FORMAT_KEPT(format)) return RAST_E_FORMAT;
     if (width < 0 || width > RAST_MAX_DIM) return RAST_E_SIZE;
     b = ((int64_t)width * rast__formats[format].bits + 7) / 8;
     if (b > INT32_MAX) return RAST_E_SIZE;
@@ -83,7 +83,7 @@ rast_status rast_format_stride(rast_format format, int32_t width, int32_t *bytes
 rast_status rast_pack_color(rast_format format, const uint8_t *rgba, void *pixel)
 {
     if (!rgba || !pixel) return RAST_E_NULL;
-    if ((unsigned)format >= RAST_FORMAT_COUNT_ || !rast__formats[format].pack)
+    if (!RAST__FORMAT_KEPT(format) || !rast__formats[format].pack)
         return RAST_E_FORMAT;
     rast__formats[format].pack(rgba, (unsigned char *)pixel);
     return RAST_OK;
@@ -97,7 +97,7 @@ rast_status rast_target_init(rast_target *t, void *pixels, int32_t width,
     rast_status st;
 
     if (!t) return RAST_E_NULL;
-    if ((unsigned)format >= RAST_FORMAT_COUNT_) return RAST_E_FORMAT;
+    if (!RAST__FORMAT_KEPT(format)) return RAST_E_FORMAT;
     if (height < 0 || height > RAST_MAX_DIM) return RAST_E_SIZE;
     st = rast_format_stride(format, width, &row);
     if (st != RAST_OK) return st;

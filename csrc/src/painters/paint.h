@@ -42,6 +42,10 @@ static inline unsigned rast__blend8(unsigned s, unsigned d, unsigned a)
 
 extern const rast__format rast__formats[RAST_FORMAT_COUNT_];
 
+/* A known format that the build keeps (base/config.h). */
+#define RAST__FORMAT_KEPT(f) \
+    ((unsigned)(f) < RAST_FORMAT_COUNT_ && RAST__HAS(RAST_CONFIG_FORMATS, (f)))
+
 typedef struct rast__solid {
     unsigned char *base;
     ptrdiff_t stride;

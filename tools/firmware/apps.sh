@@ -72,6 +72,25 @@ printf '#define RAST_CONFIG_AA_METHODS 0u\n' > "$out/pre_aa_conf.h"
 link whole_api - "$out/all_api.c" entry.o "--specs=nano.specs --specs=nosys.specs"
 link whole_api_pre_aa pre_aa_conf.h "$out/pre_aa_api.c" entry.o "--specs=nano.specs --specs=nosys.specs"
 
+# Like for like with the core as it was before anti-aliasing, 64-bit
+# vertices, COCO and polygon batches (git c261dda, whose whole core linked
+# 49,794 B this way): its 31 public calls, today's library with the newer
+# features left out by configuration.
+old_api='rast_algorithm_info rast_boundary_fill rast_draw_line rast_draw_polyline
+rast_draw_polyline_spans rast_fill_bounds rast_fill_polygon rast_fill_polygon_gouraud
+rast_fill_polygon_opaque rast_fill_polygon_spans rast_fill_rect_gouraud rast_fill_triangles
+rast_fill_triangles_shaded rast_fill_triangles_spans rast_flood_fill rast_format_bytes
+rast_format_stride rast_line_pixels rast_pack_color rast_point_in_triangle
+rast_polygon_gouraud_scratch_size rast_render_bands rast_render_bands_spans
+rast_scene_scratch_size rast_scratch_size rast_seed_stack_size rast_status_str
+rast_target_init rast_tri_algorithm_info rast_tri_scratch_size rast_version_number'
+printf '%s\n' $old_api | awk 'BEGIN { print "#include \"rastrum.h\""; print "typedef void (*fn)(void);"
+                                      print "volatile fn keep[] = {" }
+                                { printf "    (fn)%s,\n", $1 }
+                                END { print "};"; print "int main(void) { return keep[0] != 0; }" }' > "$out/api_0_1.c"
+printf '#define RAST_CONFIG_AA_METHODS 0u\n#define RAST_CONFIG_POLYGON64 0\n' > "$out/api_0_1_conf.h"
+link api_0_1 api_0_1_conf.h "$out/api_0_1.c" entry.o "--specs=nano.specs --specs=nosys.specs"
+
 if [ "$min" -gt 4096 ]; then
   echo "firmware apps: firmware_min needs $min B of rastrum code, more than 4096"; status=1
 fi

@@ -27,11 +27,21 @@ def read(path):
 
 
 def sources(ext):
-    """The core's files ending in ext, as paths relative to csrc/src (the
-    names its #include lines use): base/, fillers/, coverage/, painters/,
-    entry/, in that order of folders' names, sorted within each."""
+    """The core's files ending in ext, as paths relative to csrc/src:
+    base/, fillers/, coverage/, painters/, entry/, in that order of folders'
+    names, sorted within each."""
     return sorted(os.path.relpath(os.path.join(d, f), SRC).replace(os.sep, "/")
                   for d, _, files in os.walk(SRC) for f in files if f.endswith(ext))
+
+
+def resolve(name, included):
+    """The path relative to csrc/src of what file `name` (relative to
+    csrc/src) names in an #include "...": the core's includes are relative
+    to the including file, as a compiler resolves them, so that csrc/
+    builds with no -I but csrc/include."""
+    if included == "rastrum.h":
+        return included
+    return os.path.normpath(os.path.join(os.path.dirname(name), included)).replace(os.sep, "/")
 
 
 def headers_in_order():
@@ -46,7 +56,7 @@ def headers_in_order():
         for line in read(os.path.join(SRC, name)).splitlines():
             m = LOCAL.match(line)
             if m:
-                visit(m.group(1), stack + (name,))
+                visit(resolve(name, m.group(1)), stack + (name,))
         done.add(name)
         order.append(name)
 
@@ -60,7 +70,7 @@ def strip_local(text, name):
     for line in text.splitlines():
         m = LOCAL.match(line)
         if m:
-            if not (m.group(1) == "rastrum.h" or os.path.exists(os.path.join(SRC, m.group(1)))):
+            if not (m.group(1) == "rastrum.h" or os.path.exists(os.path.join(SRC, resolve(name, m.group(1))))):
                 raise SystemExit("single.py: %s includes unknown %s" % (name, m.group(1)))
             out.append("/* (#include \"%s\": above) */" % m.group(1))
         else:

@@ -5,7 +5,7 @@
  * use directly; these are the out-of-line copies the polygon fillers
  * call.
  */
-#include "base/internal.h"
+#include "internal.h"
 
 void rast__edge_start(rast__edge *ed, rast_point top, rast_point bottom,
                       int32_t dir, int32_t first, int32_t end, const rast__grid *g)

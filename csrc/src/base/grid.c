@@ -1,7 +1,7 @@
 /*
  * grid.c - the options every entry point shares, checked once.
  */
-#include "base/internal.h"
+#include "internal.h"
 
 rast_status rast__grid_init(rast__grid *g, int32_t subpixel_bits, rast_sample sample,
                             rast_rounding rounding, rast_boundary boundary)

@@ -15,7 +15,7 @@
 
 #define RAST_STATIC_LINKING_ONLY /* the library's own files see the whole header */
 #include "rastrum.h"
-#include "base/config.h"
+#include "config.h"
 
 /* A coordinate in internal units: a rast_fixed doubled, 2^(S+1) to the
  * pixel (|value| < 2^28 for a vertex, differences < 2^29), as FreeType's

@@ -9,7 +9,7 @@
 #ifndef RAST_WIDE_H
 #define RAST_WIDE_H
 
-#include "base/internal.h"
+#include "internal.h"
 
 /* Two's complement: the value is hi * 2^64 + lo, hi read as signed. */
 typedef struct rast__i128 {

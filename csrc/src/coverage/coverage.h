@@ -15,8 +15,8 @@
 #ifndef RAST_COVERAGE_H
 #define RAST_COVERAGE_H
 
-#include "base/internal.h"
-#include "base/wide.h"
+#include "../base/internal.h"
+#include "../base/wide.h"
 
 #define RAST__COV_G 60
 

@@ -32,8 +32,8 @@
  * winding number over the pixel, turned into a coverage by the rule.
  * Right where no parts of the region overlap.
  */
-#include "coverage/coverage.h"
-#include "fillers/poly.h" /* rast__ctz64 */
+#include "coverage.h"
+#include "../fillers/poly.h" /* rast__ctz64 */
 
 #define G RAST__COV_G
 #define T ((uint64_t)1 << G)

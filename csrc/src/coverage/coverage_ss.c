@@ -16,9 +16,9 @@
  * value is written as one run (a memset for uint8_t).  A row costs its
  * runs plus a pass over its pixels at memset speed.
  */
-#include "coverage/coverage.h"
-#include "fillers/aet.h"
-#include "fillers/poly.h"
+#include "coverage.h"
+#include "../fillers/aet.h"
+#include "../fillers/poly.h"
 
 typedef struct rast__ss {
     const rast__cov_out *o;

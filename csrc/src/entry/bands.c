@@ -14,7 +14,7 @@
  * own entry point with an empty clip, which checks everything and draws
  * nothing, before the first band is drawn.
  */
-#include "painters/paint.h"
+#include "../painters/paint.h"
 
 /* An anti-aliased primitive's scratch for a band (rast_coverage_scratch_size;
  * a span clip's width past RAST_MAX_DIM never gets here: the spans call

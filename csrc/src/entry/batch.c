@@ -16,7 +16,7 @@
  * the checked fill (rast__fill_checked, rast__fill64_checked), which
  * checks nothing.
  */
-#include "painters/paint.h"
+#include "../painters/paint.h"
 
 /* A batch of rast_polygon (wide == 0) or rast_polygon64 (wide == 1),
  * with the options checked once (f, or g64 for 64-bit ones). */

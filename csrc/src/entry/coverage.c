@@ -4,8 +4,8 @@
  * polygon), then run the method.  Every error is found here, before a
  * value is written.
  */
-#include "coverage/coverage.h"
-#include "painters/paint.h"
+#include "../coverage/coverage.h"
+#include "../painters/paint.h"
 
 static const char *const rast__aa_names[RAST_AA_COUNT_] = {"area", "ss2", "ss4",
                                                            "ss8", "ss16", "accumulate"};

@@ -4,9 +4,9 @@
  * Every error is found here, before a filler runs and before any pixel is
  * written.
  */
-#include "painters/paint.h"
-#include "fillers/poly.h"
-#include "fillers/registry.h"
+#include "../painters/paint.h"
+#include "../fillers/poly.h"
+#include "../fillers/registry.h"
 
 static rast_status rast__check_opts(const rast_fill_opts *o, rast__grid *g,
                                     const rast__algo **algo)

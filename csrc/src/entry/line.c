@@ -37,7 +37,7 @@
  * Bounds (|input| <= 2^27 - 1, so |internal| < 2^28, differences < 2^29,
  * U <= 2^17) are written beside every product below.
  */
-#include "painters/paint.h"
+#include "../painters/paint.h"
 
 /* A line set up for walking: the steps [0, n) that are inside the clip,
  * renumbered so that step 0 is the first pixel drawn. */

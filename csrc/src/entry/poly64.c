@@ -32,9 +32,9 @@
  * once more (then drops it): |x + step + 1| < 2^30.  An edge with one
  * visible row never steps into another, and its step and dr are set to 0.
  */
-#include "fillers/aet.h"
-#include "painters/paint.h"
-#include "base/wide.h"
+#include "../fillers/aet.h"
+#include "../painters/paint.h"
+#include "../base/wide.h"
 
 /* The fill's options, checked, and the grid: RAST_E_NULL, RAST_E_ALGORITHM,
  * RAST_E_ARG, RAST_E_RULE, RAST_E_SUBPIXEL, RAST_E_WIDE. */

@@ -5,7 +5,7 @@
  * written.  Adding a triangle algorithm adds one row to rast__tri_algos
  * (and its file).
  */
-#include "painters/paint.h"
+#include "../painters/paint.h"
 
 typedef struct rast__tri_algo {
     char name[10]; /* in the row: see rast__algo (registry.h) */

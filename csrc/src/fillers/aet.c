@@ -8,7 +8,7 @@
  * Scratch: the edge table and the AET (an edge record each) and one bucket
  * per visible row (where its run of the table ends).
  */
-#include "fillers/aet.h"
+#include "aet.h"
 
 /* The edge record's size is part of the scratch contract in rastrum.h. */
 typedef char rast__aet_edge_size_check[sizeof(rast__edge) == RAST_AET_EDGE_BYTES ? 1 : -1];

@@ -25,7 +25,7 @@
 #ifndef RAST_AET_H
 #define RAST_AET_H
 
-#include "base/internal.h"
+#include "../base/internal.h"
 
 /* One inside run of row `row`: columns [l->x, r->x) (possibly empty),
  * bounded on the left by the crossing of edge l and on the right by that

@@ -14,7 +14,7 @@
  * Scratch: an edge record and an active slot per vertex, two run ends per
  * vertex, and a bucket head per clip row.
  */
-#include "base/wide.h"
+#include "../base/wide.h"
 
 static void rast__bound_row(void *user, int32_t y, const int32_t *xs, int32_t n);
 

@@ -33,7 +33,7 @@
  * column crossings are solved for directly.
  */
 
-#include "base/internal.h"
+#include "../base/internal.h"
 
 /* ---- IEEE binary64 at a tie, in 128-bit fixed point ------------------------ */
 

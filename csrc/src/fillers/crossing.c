@@ -25,7 +25,7 @@
  * Scratch: one rast__line (32 bytes) per vertex, twice: all the edges, and
  * the ones crossing the current row.
  */
-#include "fillers/poly.h"
+#include "poly.h"
 
 rast_status rast__crossing_fill(const rast_polygon *poly, uint32_t npoints,
                                 const rast__grid *g, rast_fill_rule rule,

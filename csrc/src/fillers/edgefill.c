@@ -19,7 +19,7 @@
  * run of bits is a few word XORs (64 pixels each) where bytes would be 64
  * times as many writes.  Only the box's part is cleared and used.
  */
-#include "fillers/poly.h"
+#include "poly.h"
 
 rast_status rast__edgefill_fill(const rast_polygon *poly, uint32_t npoints,
                                 const rast__grid *g, rast_fill_rule rule,

@@ -34,7 +34,7 @@
  * width x height; F as above.  rast_scratch_size cannot see the rule, so it
  * always asks for both; even-odd uses the bits only.
  */
-#include "fillers/poly.h"
+#include "poly.h"
 
 static size_t rast__flag_bytes(uint32_t npoints)
 {

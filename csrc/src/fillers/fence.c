@@ -19,7 +19,7 @@
  * Scratch: the same one-bit-per-pixel mask as edgefill.c, for the same
  * reasons (height x ceil(width / 64) x 8 bytes).
  */
-#include "fillers/poly.h"
+#include "poly.h"
 
 /* The fence, relative to the box: the column (first counting column) of
  * the vertex nearest the box's middle, clamped to [0, bits]. */

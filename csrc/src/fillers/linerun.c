@@ -12,7 +12,7 @@
  *     m(k) = floor((v(kU + O) - O + H) / U),
  *     v(u) = va + (u - ua) dv / du          (va when du = 0).
  */
-#include "base/internal.h"
+#include "../base/internal.h"
 
 typedef struct rast__axes {
     int64_t ua, va, du, dv; /* du >= 0, |dv| <= du */

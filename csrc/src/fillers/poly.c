@@ -4,7 +4,7 @@
  */
 #include <string.h>
 
-#include "fillers/poly.h"
+#include "poly.h"
 
 /* The record sizes are part of the scratch contract in rastrum.h
  * (RAST_XSCAN_SCRATCH_BOUND, RAST_POINTWISE_SCRATCH_BOUND). */

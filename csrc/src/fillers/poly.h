@@ -15,7 +15,7 @@
 #ifndef RAST_POLY_H
 #define RAST_POLY_H
 
-#include "base/internal.h"
+#include "../base/internal.h"
 
 /* The part of the clip a polygon can own: rows [row0, row1) and columns
  * [col0, col1).  A sample left of every crossing of its row, or right of

@@ -18,7 +18,7 @@
  * (the plane, when the three vertices coincide); only the seed's
  * barycentric code refuses it (its `abs(u.z) < 1` branch).
  */
-#include "base/internal.h"
+#include "../base/internal.h"
 
 /* (b - a) x (c - a): twice the signed area of abc; |.| < 2^57.
  * Positive when a, b, c turn clockwise on screen (y down). */

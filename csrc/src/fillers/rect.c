@@ -6,7 +6,7 @@
  *
  * Scratch: none.
  */
-#include "base/internal.h"
+#include "../base/internal.h"
 
 void rast__rect_fill(int64_t x0, int64_t y0, int64_t w, int64_t h, const rast__grid *g,
                      const rast_rect *clip, const rast__painter *p)

@@ -2,8 +2,8 @@
  * registry.c - the polygon algorithms by number: name, fill rules, scratch
  * size, filler.  Adding an algorithm adds one row here (and its file).
  */
-#include "fillers/poly.h"
-#include "fillers/registry.h"
+#include "poly.h"
+#include "registry.h"
 
 #define RAST__BOTH_RULES ((1u << RAST_RULE_EVENODD) | (1u << RAST_RULE_NONZERO))
 #define RAST__EVENODD (1u << RAST_RULE_EVENODD)

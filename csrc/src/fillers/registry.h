@@ -4,7 +4,7 @@
 #ifndef RAST_REGISTRY_H
 #define RAST_REGISTRY_H
 
-#include "base/internal.h"
+#include "../base/internal.h"
 
 typedef struct rast__algo {
     /* in the row, not a pointer: a pointer would keep every string

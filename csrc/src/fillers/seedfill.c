@@ -40,7 +40,7 @@
  */
 #include <string.h>
 
-#include "painters/paint.h"
+#include "../painters/paint.h"
 
 /* ---- pixels ----------------------------------------------------------------
  * A pixel is read as an integer of up to 32 bits; two pixels are equal iff

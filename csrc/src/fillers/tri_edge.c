@@ -35,7 +35,7 @@
  *
  * Scratch: none.
  */
-#include "base/internal.h"
+#include "../base/internal.h"
 
 size_t rast__tri_edge_scratch(int32_t width, int32_t height)
 {

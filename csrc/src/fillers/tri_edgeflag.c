@@ -13,7 +13,7 @@
  *
  * Scratch: the two arrays, one int32_t each per clip row.
  */
-#include "base/internal.h"
+#include "../base/internal.h"
 
 size_t rast__tri_edgeflag_scratch(int32_t width, int32_t height)
 {

@@ -31,7 +31,7 @@
  * cut to the clip, and per row the edges crossing that row); same scratch:
  * one rast__line per vertex, twice.
  */
-#include "fillers/poly.h"
+#include "poly.h"
 
 rast_status rast__winding_fill(const rast_polygon *poly, uint32_t npoints,
                                const rast__grid *g, rast_fill_rule rule,

@@ -14,7 +14,7 @@
  * Scratch: one rast__line (32 bytes) per vertex, and one uint32_t crossing
  * key per vertex (a row crosses at most every edge once).
  */
-#include "fillers/poly.h"
+#include "poly.h"
 
 size_t rast__xscan_scratch(uint32_t npoints, int32_t width, int32_t height)
 {

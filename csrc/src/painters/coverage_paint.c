@@ -6,7 +6,7 @@
  * same painter a binary fill feeds full runs.  Every check before the
  * first run.
  */
-#include "painters/paint.h"
+#include "paint.h"
 
 static rast_status rast__fill_aa(const rast_target *target, const rast_polygon *poly,
                                  const rast_point *tris, uint32_t ntris,

@@ -8,7 +8,7 @@
  */
 #include <string.h>
 
-#include "painters/paint.h"
+#include "paint.h"
 
 /* Fill n pixels of `bytes` bytes each with the pattern already written in
  * the first pixel, doubling the copied run each time: long spans become a

@@ -12,7 +12,7 @@
  */
 #include <string.h>
 
-#include "painters/paint.h"
+#include "paint.h"
 
 /* Any format's solid row: its span function over each span. */
 static void rast__solid_row(void *user, int32_t y, const int32_t *xs, int32_t n)

@@ -5,7 +5,7 @@
 #ifndef RAST_PAINT_H
 #define RAST_PAINT_H
 
-#include "base/internal.h"
+#include "../base/internal.h"
 
 /* A pixel format (formats.c has one row per rast_format).  Rows are
  * addressed by their first byte; x is a column.  A pixel VALUE is what the

@@ -47,8 +47,8 @@
  */
 #include <string.h>
 
-#include "painters/paint.h"
-#include "base/wide.h"
+#include "paint.h"
+#include "../base/wide.h"
 
 #define RAST__SHADE_RUN 64 /* pixels gathered before a format's put */
 #define RAST__CH_Z 4       /* channel index of the depth */

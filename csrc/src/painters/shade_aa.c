@@ -18,7 +18,7 @@
  */
 #include <string.h>
 
-#include "painters/paint.h"
+#include "paint.h"
 
 /* Rows of colour a band holds at the least (rast_shaded_aa_scratch_size);
  * a bigger scratch doubles them while it holds them. */

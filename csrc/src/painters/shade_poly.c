@@ -23,9 +23,9 @@
  * numerator grows by T = unit dl E (|T| < 2^113), less than 256 D: the
  * quotient and remainder (in [0, D)) are stepped, as the rectangle's.
  */
-#include "fillers/aet.h"
-#include "painters/shade_run.h"
-#include "base/wide.h"
+#include "../fillers/aet.h"
+#include "shade_run.h"
+#include "../base/wide.h"
 
 /* ---- 128-bit helpers beyond wide.h ------------------------------------------- */
 

@@ -23,7 +23,7 @@
  * per pixel, each increment rounded half up to 1/2^F; see the header for
  * the exact recipe the tests replay.
  */
-#include "painters/shade_run.h"
+#include "shade_run.h"
 
 static rast_status rast__rect_check(const rast_target *target, rast_point p0, rast_point p1,
                                     const uint8_t *colors, const rast_tri_opts *opts,

@@ -7,7 +7,7 @@
 #ifndef RAST_SHADE_RUN_H
 #define RAST_SHADE_RUN_H
 
-#include "painters/paint.h"
+#include "paint.h"
 
 /* Pixels a row's colours are gathered in before they are stored. */
 #define RAST__SHADE_RUN 64

@@ -10,9 +10,11 @@
  * (FreeType's gray_convert_glyph does the same); a one-row band that does
  * not fit is found before anything is drawn.
  *
- * Nothing is checked twice by hand: each primitive goes once through its
- * own entry point with an empty clip, which checks everything and draws
- * nothing, before the first band is drawn.
+ * Everything is checked once per call: each primitive goes once through
+ * its own entry point with an empty clip, which checks everything and
+ * draws nothing, before the first band is drawn; the bands then run the
+ * fillers behind those entry points with nothing checked again (the
+ * vertices are not re-read for their range band after band).
  */
 #include "../painters/paint.h"
 
@@ -181,6 +183,67 @@ static rast_status rast__prim_draw(rast__scene *s, const rast_prim *p, const ras
     }
 }
 
+/* The vertex count of a polygon that rast__prim_need has counted. */
+static uint32_t rast__ring_points(const uint32_t *sizes, uint32_t nrings)
+{
+    uint32_t k, n = 0;
+    for (k = 0; k < nrings; k++) n += sizes[k];
+    return n;
+}
+
+/* Draw primitive p, which rast__prim_draw has checked on the whole clip,
+ * inside `band` (non-empty, inside that clip, with enough scratch): its
+ * entry point's painter and filler with nothing checked again.  A
+ * polyline's checks are its drawing: it goes through its entry point. */
+static rast_status rast__prim_band(rast__scene *s, const rast_prim *p, const rast_rect *band)
+{
+    rast__solid solid;
+    rast__user_spans u;
+    rast__painter pt;
+    const int aa = RAST_CONFIG_AA_METHODS != 0 && p->aa != NULL;
+    rast_status st;
+
+    if (p->kind == RAST_PRIM_POLYLINE) return rast__prim_draw(s, p, band);
+    if (s->target) {
+        st = rast__solid_init(&solid, s->target, band, p->pixel, NULL, &pt);
+        if (st != RAST_OK) return st; /* not reached: checked with the scene */
+    } else {
+        s->prim = p;
+        rast__user_painter(&u, aa ? NULL : rast__scene_span, aa ? rast__scene_cov : NULL, s, &pt);
+    }
+    if (aa && p->kind == RAST_PRIM_POLYGON)
+        return rast__cov_paint_checked(&p->polygon, NULL, 0,
+                                       rast__ring_points(p->polygon.ring_sizes, p->polygon.nrings),
+                                       p->aa, band, &pt, s->scratch, s->bytes);
+    if (aa) /* RAST_PRIM_TRIANGLES */
+        return rast__cov_paint_checked(NULL, p->points, p->count, 3 * p->count, p->aa, band, &pt,
+                                       s->scratch, s->bytes);
+    if (RAST_CONFIG_POLYGON64 && p->kind == RAST_PRIM_POLYGON64) {
+        rast__grid64 g;
+        st = rast__fill64_prepare(p->fill, &g);
+        if (st != RAST_OK) return st; /* not reached */
+        return rast__fill64_checked(&p->polygon64,
+                                    rast__ring_points(p->polygon64.ring_sizes, p->polygon64.nrings),
+                                    p->fill, &g, band, &pt, s->scratch, s->bytes);
+    }
+    if (p->kind == RAST_PRIM_TRIANGLES) {
+        rast__grid g;
+        st = rast__grid_init(&g, p->tri->subpixel_bits, p->tri->sample, p->tri->rounding,
+                             p->tri->boundary);
+        if (st != RAST_OK) return st; /* not reached */
+        return rast__tri_fill_checked(p->points, p->count, p->tri, &g, band, &pt, NULL, s->scratch,
+                                      s->bytes);
+    }
+    {
+        rast__fill_setup f;
+        st = rast__fill_prepare(p->fill, &f);
+        if (st != RAST_OK) return st; /* not reached */
+        return rast__fill_checked(&f, &p->polygon,
+                                  rast__ring_points(p->polygon.ring_sizes, p->polygon.nrings), band,
+                                  &pt, s->scratch, s->bytes);
+    }
+}
+
 /* Check the whole scene, then draw it band by band into `clip` (checked,
  * non-inverted). */
 static rast_status rast__render(rast__scene *s, const rast_prim *prims, uint32_t n,
@@ -233,7 +296,8 @@ static rast_status rast__render(rast__scene *s, const rast_prim *prims, uint32_t
                 band.x1 = clip->x1;
                 band.y0 = r;
                 band.y1 = y + rows - r < sub ? y + rows : r + sub;
-                st = rast__prim_draw(s, &prims[i], &band);
+                if (width == 0) continue; /* nothing to draw, as each entry point */
+                st = rast__prim_band(s, &prims[i], &band);
                 if (st != RAST_OK) return st; /* not reached: checked above */
             }
         }

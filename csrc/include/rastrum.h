@@ -1234,7 +1234,9 @@ RAST_API rast_status rast_fill_triangles_shaded_aa(const rast_target *target,
  * anything is written, every primitive is checked (as its own entry point
  * checks it) and its scratch for a one-row band compared with
  * `scratch_bytes`: so the call either draws the whole scene or returns an
- * error having written nothing. */
+ * error having written nothing.  That check is the only one: the bands
+ * then run each primitive's filler without reading its vertices for
+ * their range again.  The scene's arrays must not change during the call. */
 typedef enum rast_prim_kind {
     RAST_PRIM_POLYGON = 0,   /* `polygon` with `fill` (rast_fill_polygon) */
     RAST_PRIM_TRIANGLES = 1, /* `count` triangles at `points` with `tri`

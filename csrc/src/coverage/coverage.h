@@ -112,6 +112,12 @@ typedef struct rast__cedge {
      * vertical qX, t from the top = qt + qtr/|dx|; per column qts + qtsr/|dx| */
     int64_t qt, qX, qts;
     uint32_t qtr, qtsr;
+    /* the quick row stepper (coverage_area.c, 2^-30 pixel units): the
+     * exact abscissa at the top of row qrow is qx + qxr/dy; it grows by
+     * qxs + qxsr/dy from a row's top to the next */
+    int64_t qx, qxs;
+    uint32_t qxr, qxsr;
+    int32_t qrow; /* INT32_MIN: not set */
     rast__i128 xs; /* x grows by xs + xsr/dy from a row's top to the next */
     int64_t xsr;
     /* the column stepper (cells) */

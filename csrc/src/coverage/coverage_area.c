@@ -387,6 +387,13 @@ static void rast__cov_steps(rast__cedge *e)
         e->qts = (int64_t)q30;
         e->qtsr = (uint32_t)r30;
     }
+    {   /* the quick row step: dx 2^30 / dy (|dx| < 2^28) */
+        int64_t qq, rr;
+        rast__floordivmod((int64_t)e->dx * ((int64_t)1 << 30), e->dy, &qq, &rr);
+        e->qxs = qq;
+        e->qxsr = (uint32_t)rr;
+    }
+    e->qrow = INT32_MIN;
     e->qX = INT64_MIN;
     e->rowx = INT32_MIN;
     e->cX = INT64_MIN;
@@ -770,6 +777,57 @@ static inline int64_t rast__q_col(int64_t v)
 static inline int64_t rast__q_x(rast__i128 x)
 {
     return (int64_t)rast__i128_sar(x, 60 - QF).lo;
+}
+
+/* e's exact abscissa at the top of row j (which e spans: yt <= j P < yt +
+ * dy), in 2^-30 pixel: qx + qxr/dy, the same floor rast__q_x takes of the
+ * 128-bit one.  Stepped from the row above, else two divisions (dx (jP -
+ * yt) < 2^56; the remainder times 2^(30 - S) < 2^58). */
+static inline int64_t rast__q_top(rast__cedge *e, int32_t j, const rast__cells *c)
+{
+    const int32_t hq = QF - (G - c->h);
+    if (e->qrow == j - 1) {
+        e->qx += e->qxs;
+        e->qxr += e->qxsr;
+        if (e->qxr >= (uint32_t)e->dy) {
+            e->qxr -= (uint32_t)e->dy;
+            e->qx++;
+        }
+        e->qrow = j;
+    } else if (e->qrow != j) {
+        int64_t q, r, q2, r2;
+        rast__floordivmod((int64_t)e->dx * ((int64_t)j * c->p - e->yt), e->dy, &q, &r);
+        rast__floordivmod(r * ((int64_t)1 << hq), e->dy, &q2, &r2);
+        e->qx = ((int64_t)e->xt + q) * ((int64_t)1 << hq) + q2;
+        e->qxr = (uint32_t)r2;
+        e->qrow = j;
+    }
+    return e->qx;
+}
+
+/* The quick abscissae of e's part in row j (rows Yj = j P): its ends'
+ * ordinates (2^-30 pixel from the row's top) into *ta, *tb, abscissae into
+ * *xa, *xb; the stepper is left at row j + 1's top when e reaches it. */
+static inline void rast__q_part(rast__cedge *e, int32_t j, const rast__cells *c, int64_t *xa,
+                                uint64_t *ta, int64_t *xb, uint64_t *tb)
+{
+    const int32_t hq = QF - (G - c->h);
+    const int64_t Yj = (int64_t)j * c->p;
+    int64_t rel0 = (int64_t)e->yt - Yj, rel1 = (int64_t)e->yt + e->dy - Yj;
+    if (rel0 > 0) {
+        *ta = (uint64_t)rel0 << hq;
+        *xa = (int64_t)e->xt * ((int64_t)1 << hq);
+    } else {
+        *ta = 0;
+        *xa = rast__q_top(e, j, c);
+    }
+    if (rel1 < c->p) {
+        *tb = (uint64_t)rel1 << hq;
+        *xb = ((int64_t)e->xt + e->dx) * ((int64_t)1 << hq);
+    } else {
+        *tb = QT;
+        *xb = rast__q_top(e, j + 1, c);
+    }
 }
 
 /* e's quick stepper at vertical X (which e's x range reaches: |X P - xt|
@@ -1380,13 +1438,25 @@ static int rast__cov_row_cont(rast__cells *c, rast__cedge *e, const int32_t *row
     return 1;
 }
 
-/* The row's accumulation: every edge, whole, signed by its direction. */
+/* The row's accumulation: every edge, whole, signed by its direction.
+ * The quick way steps each edge's abscissa from row to row in 64 bits
+ * (rast__q_top); only a row whose levels it cannot decide computes the
+ * 128-bit ones and is added again the exact way. */
 static void rast__cov_row_acc(rast__cells *c, rast__cedge *e, const int32_t *row, int32_t nrow,
                               int32_t j)
 {
     const int64_t Yj = (int64_t)j * c->p;
-    int quick = rast__q_may(c, nrow);
     int32_t k;
+    if (rast__q_may(c, nrow)) {
+        for (k = 0; k < nrow; k++) {
+            rast__cedge *ed = &e[row[k]];
+            int64_t xa, xb;
+            uint64_t ta, tb;
+            rast__q_part(ed, j, c, &xa, &ta, &xb, &tb);
+            rast__q_piece(c, ed, Yj, xa, ta, xb, tb, ed->dir);
+        }
+        if (rast__q_emit(c, j, nrow)) return;
+    }
     for (k = 0; k < nrow; k++) {
         rast__cedge *ed = &e[row[k]];
         int64_t rel0 = (int64_t)ed->yt - Yj, rel1 = (int64_t)ed->yt + ed->dy - Yj;
@@ -1398,21 +1468,7 @@ static void rast__cov_row_acc(rast__cells *c, rast__cedge *e, const int32_t *row
             ed->tx = t0;
         }
         rast__cov_x_end(ed, Yj, t0, t1, c->h);
-        if (quick)
-            rast__q_piece(c, ed, Yj, rast__q_x(ed->x), t0 >> (G - QF), rast__q_x(ed->xn),
-                          t1 >> (G - QF), ed->dir);
-        else {
-            rast__cells_piece(c, ed, Yj, ed->x, t0, ed->xn, t1, ed->dir);
-            rast__cov_x_keep(ed, j, t1);
-        }
-    }
-    if (!quick) return;
-    quick = rast__q_emit(c, j, nrow);
-    for (k = 0; k < nrow; k++) {
-        rast__cedge *ed = &e[row[k]];
-        int64_t rel1 = (int64_t)ed->yt + ed->dy - Yj;
-        uint64_t t1 = rel1 >= c->p ? T : (uint64_t)rel1 << c->h;
-        if (!quick) rast__cells_piece(c, ed, Yj, ed->x, ed->tx, ed->xn, t1, ed->dir);
+        rast__cells_piece(c, ed, Yj, ed->x, t0, ed->xn, t1, ed->dir);
         rast__cov_x_keep(ed, j, t1);
     }
 }

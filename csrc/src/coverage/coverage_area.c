@@ -817,16 +817,20 @@ static inline void rast__q_part(rast__cedge *e, int32_t j, const rast__cells *c,
     if (rel0 > 0) {
         *ta = (uint64_t)rel0 << hq;
         *xa = (int64_t)e->xt * ((int64_t)1 << hq);
+        e->qar = 0;
     } else {
         *ta = 0;
         *xa = rast__q_top(e, j, c);
+        e->qar = e->qxr;
     }
     if (rel1 < c->p) {
         *tb = (uint64_t)rel1 << hq;
         *xb = ((int64_t)e->xt + e->dx) * ((int64_t)1 << hq);
+        e->qbr = 0;
     } else {
         *tb = QT;
         *xb = rast__q_top(e, j + 1, c);
+        e->qbr = e->qxr;
     }
 }
 
@@ -1159,25 +1163,24 @@ static int rast__q_may(const rast__cells *c, int32_t nrow)
  * crossings, several vertices close together, horizontal edges inside the
  * strip) the row is swept. */
 
-/* The range [lo, hi) of e's part (e->x at its top, e->xn at its bottom),
- * into e->lo, e->hi. */
-static void rast__fast_range(rast__cedge *e)
+/* e's part in row j, quick units (rast__q_part), into e->qa .. e->qtb,
+ * and its range [qlo, qhi) (the floors at its two ends, qhi one more). */
+static void rast__fast_range(rast__cedge *e, int32_t j, const rast__cells *c)
 {
-    int c = rast__i128_cmp(e->x, e->xn);
-    e->lo = c <= 0 ? e->x : e->xn;
-    e->hi = rast__i128_add(c >= 0 ? e->x : e->xn, rast__i128_u64(1));
+    rast__q_part(e, j, c, &e->qa, &e->qta, &e->qb, &e->qtb);
+    e->qlo = e->qa < e->qb ? e->qa : e->qb;
+    e->qhi = (e->qa < e->qb ? e->qb : e->qa) + 1;
 }
 
-/* The exact abscissae x + r/dy of a and b: -1, 0, 1 as a's is smaller,
- * equal, larger. */
-static int rast__fast_cmpx(rast__i128 xa, int64_t ra, const rast__cedge *a, rast__i128 xb,
-                           int64_t rb, const rast__cedge *b)
+/* The exact abscissae xa + ra/dy and xb + rb/dy (quick units) of a and b:
+ * -1, 0, 1 as a's is smaller, equal, larger. */
+static int rast__fast_cmpx(int64_t xa, uint32_t ra, const rast__cedge *a, int64_t xb, uint32_t rb,
+                           const rast__cedge *b)
 {
-    int c = rast__i128_cmp(xa, xb);
     int64_t l, r;
-    if (c) return c;
-    l = ra * b->dy;
-    r = rb * a->dy;
+    if (xa != xb) return xa < xb ? -1 : 1;
+    l = (int64_t)ra * b->dy;
+    r = (int64_t)rb * a->dy;
     return (l > r) - (l < r);
 }
 
@@ -1201,8 +1204,8 @@ static int rast__fast_full(const rast__cedge *e, int32_t *g, int32_t m, int32_t 
         const rast__cedge *a = &e[id];
         while (q > 0) {
             const rast__cedge *b = &e[g[q - 1]];
-            int c = rast__fast_cmpx(a->x, a->r, a, b->x, b->r, b);
-            if (c > 0 || (c == 0 && rast__fast_cmpx(a->xn, a->rn, a, b->xn, b->rn, b) >= 0)) break;
+            int c = rast__fast_cmpx(a->qa, a->qar, a, b->qa, b->qar, b);
+            if (c > 0 || (c == 0 && rast__fast_cmpx(a->qb, a->qbr, a, b->qb, b->qbr, b) >= 0)) break;
             g[q] = g[q - 1];
             q--;
         }
@@ -1212,8 +1215,8 @@ static int rast__fast_full(const rast__cedge *e, int32_t *g, int32_t m, int32_t 
         const rast__cedge *a = &e[g[k]];
         if (k + 1 < m) {
             const rast__cedge *b = &e[g[k + 1]];
-            int ct = rast__fast_cmpx(a->x, a->r, a, b->x, b->r, b);
-            int cb = rast__fast_cmpx(a->xn, a->rn, a, b->xn, b->rn, b);
+            int ct = rast__fast_cmpx(a->qa, a->qar, a, b->qa, b->qar, b);
+            int cb = rast__fast_cmpx(a->qb, a->qbr, a, b->qb, b->qbr, b);
             if (ct > 0 || cb > 0 || (ct == 0 && cb == 0)) return 0;
         }
         *w += a->dir;
@@ -1292,7 +1295,31 @@ static int rast__fast_mixed(const rast__cedge *e, const int32_t *g, int32_t m, c
     return 1;
 }
 
-/* A fast row's parts, whole, each with the sign dir * s. */
+/* The parts of row j's edges, whole, each with the sign dir * s (dir
+ * alone for s = 0), the exact way (128-bit abscissae). */
+static void rast__row_exact(rast__cells *c, rast__cedge *e, const int32_t *row, int32_t nrow,
+                            int32_t j, int32_t s)
+{
+    const int64_t Yj = (int64_t)j * c->p;
+    int32_t k;
+    for (k = 0; k < nrow; k++) {
+        rast__cedge *ed = &e[row[k]];
+        int64_t rel0 = (int64_t)ed->yt - Yj, rel1 = (int64_t)ed->yt + ed->dy - Yj;
+        uint64_t t0 = rel0 <= 0 ? 0 : (uint64_t)rel0 << c->h;
+        uint64_t t1 = rel1 >= c->p ? T : (uint64_t)rel1 << c->h;
+        if (ed->rowx != j || ed->tx != t0) {
+            rast__cov_x_at(ed, Yj, t0, c->h, &ed->x, &ed->r);
+            ed->rowx = j;
+            ed->tx = t0;
+        }
+        rast__cov_x_end(ed, Yj, t0, t1, c->h);
+        rast__cells_piece(c, ed, Yj, ed->x, t0, ed->xn, t1, s ? ed->dir * s : ed->dir);
+        rast__cov_x_keep(ed, j, t1);
+    }
+}
+
+/* A fast row's parts (rast__fast_range has set them), whole, each with the
+ * sign dir * s. */
 static void rast__fast_add(rast__cells *c, rast__cedge *e, const int32_t *row, int32_t nrow,
                            int32_t j, int32_t s)
 {
@@ -1301,27 +1328,11 @@ static void rast__fast_add(rast__cells *c, rast__cedge *e, const int32_t *row, i
     if (rast__q_may(c, nrow)) {
         for (k = 0; k < nrow; k++) {
             rast__cedge *ed = &e[row[k]];
-            int64_t rel1 = (int64_t)ed->yt + ed->dy - Yj;
-            uint64_t t1 = rel1 >= c->p ? T : (uint64_t)rel1 << c->h;
-            rast__q_piece(c, ed, Yj, rast__q_x(ed->x), ed->tx >> (G - QF), rast__q_x(ed->xn),
-                          t1 >> (G - QF), ed->dir * s);
+            rast__q_piece(c, ed, Yj, ed->qa, ed->qta, ed->qb, ed->qtb, ed->dir * s);
         }
-        if (rast__q_emit(c, j, nrow)) {
-            for (k = 0; k < nrow; k++) {
-                rast__cedge *ed = &e[row[k]];
-                int64_t rel1 = (int64_t)ed->yt + ed->dy - Yj;
-                rast__cov_x_keep(ed, j, rel1 >= c->p ? T : (uint64_t)rel1 << c->h);
-            }
-            return;
-        }
+        if (rast__q_emit(c, j, nrow)) return;
     }
-    for (k = 0; k < nrow; k++) {
-        rast__cedge *ed = &e[row[k]];
-        int64_t rel1 = (int64_t)ed->yt + ed->dy - Yj;
-        uint64_t t1 = rel1 >= c->p ? T : (uint64_t)rel1 << c->h;
-        rast__cells_piece(c, ed, Yj, ed->x, ed->tx, ed->xn, t1, ed->dir * s);
-        rast__cov_x_keep(ed, j, t1);
-    }
+    rast__row_exact(c, e, row, nrow, j, s);
 }
 
 /* The row's edges, as a fast row if it is one: its s (+1 or -1), its parts
@@ -1343,13 +1354,7 @@ static int rast__cov_row_fast(rast__cells *c, rast__cedge *e, int32_t *row, int3
         uint64_t t1 = rel1 >= c->p ? T : (uint64_t)rel1 << c->h;
         uint64_t cut[2];
         int32_t id = row[k], q = k, z;
-        rast__i128 lo;
-        if (ed->rowx != j || ed->tx != t0) {
-            rast__cov_x_at(ed, Yj, t0, c->h, &ed->x, &ed->r);
-            ed->rowx = j;
-            ed->tx = t0;
-        }
-        rast__cov_x_end(ed, Yj, t0, t1, c->h);
+        int64_t lo;
         cut[0] = t0;
         cut[1] = t1 == T ? 0 : t1;
         for (z = 0; z < 2; z++) { /* the ordinates inside, sorted, once each */
@@ -1362,9 +1367,9 @@ static int rast__cov_row_fast(rast__cells *c, rast__cedge *e, int32_t *row, int3
             u[y] = cut[z];
             nu++;
         }
-        rast__fast_range(ed);
-        lo = ed->lo;
-        while (q > 0 && rast__i128_cmp(lo, e[row[q - 1]].lo) < 0) {
+        rast__fast_range(ed, j, c);
+        lo = ed->qlo;
+        while (q > 0 && lo < e[row[q - 1]].qlo) {
             row[q] = row[q - 1];
             q--;
         }
@@ -1373,12 +1378,12 @@ static int rast__cov_row_fast(rast__cells *c, rast__cedge *e, int32_t *row, int3
     u[nu++] = T;
     for (i = 0; i + 1 < nu; i++) w[i] = 0;
     for (k = 0; k < nrow; k = g) { /* the groups, left to right */
-        rast__i128 hi = e[row[k]].hi;
+        int64_t hi = e[row[k]].qhi;
         int32_t full = 1, m;
         for (g = k; g < nrow; g++) {
             const rast__cedge *ed = &e[row[g]];
-            if (g > k && rast__i128_cmp(ed->lo, hi) >= 0) break;
-            if (rast__i128_cmp(ed->hi, hi) > 0) hi = ed->hi;
+            if (g > k && ed->qlo >= hi) break;
+            if (ed->qhi > hi) hi = ed->qhi;
             if (ed->yt > Yj || (int64_t)ed->yt + ed->dy < Yj + c->p) full = 0;
         }
         m = g - k;
@@ -1421,16 +1426,11 @@ static int rast__cov_row_cont(rast__cells *c, rast__cedge *e, const int32_t *row
     for (k = 0; k < nrow; k++) {
         rast__cedge *ed = &e[row[k]];
         if (ed->yt > Yj || (int64_t)ed->yt + ed->dy < Yj + c->p) return 0;
-        if (ed->rowx != j || ed->tx != 0) {
-            rast__cov_x_at(ed, Yj, 0, c->h, &ed->x, &ed->r);
-            ed->rowx = j;
-            ed->tx = 0;
-        }
-        rast__cov_x_end(ed, Yj, 0, T, c->h);
+        rast__fast_range(ed, j, c);
         if (k > 0) {
             const rast__cedge *a = &e[row[k - 1]];
-            if (rast__fast_cmpx(a->x, a->r, a, ed->x, ed->r, ed) >= 0 ||
-                rast__fast_cmpx(a->xn, a->rn, a, ed->xn, ed->rn, ed) > 0)
+            if (rast__fast_cmpx(a->qa, a->qar, a, ed->qa, ed->qar, ed) >= 0 ||
+                rast__fast_cmpx(a->qb, a->qbr, a, ed->qb, ed->qbr, ed) > 0)
                 return 0;
         }
     }
@@ -1457,20 +1457,7 @@ static void rast__cov_row_acc(rast__cells *c, rast__cedge *e, const int32_t *row
         }
         if (rast__q_emit(c, j, nrow)) return;
     }
-    for (k = 0; k < nrow; k++) {
-        rast__cedge *ed = &e[row[k]];
-        int64_t rel0 = (int64_t)ed->yt - Yj, rel1 = (int64_t)ed->yt + ed->dy - Yj;
-        uint64_t t0 = rel0 <= 0 ? 0 : (uint64_t)rel0 << c->h;
-        uint64_t t1 = rel1 >= c->p ? T : (uint64_t)rel1 << c->h;
-        if (ed->rowx != j || ed->tx != t0) {
-            rast__cov_x_at(ed, Yj, t0, c->h, &ed->x, &ed->r);
-            ed->rowx = j;
-            ed->tx = t0;
-        }
-        rast__cov_x_end(ed, Yj, t0, t1, c->h);
-        rast__cells_piece(c, ed, Yj, ed->x, t0, ed->xn, t1, ed->dir);
-        rast__cov_x_keep(ed, j, t1);
-    }
+    rast__row_exact(c, e, row, nrow, j, 0);
 }
 
 rast_status rast__cov_area(rast__cedge *e, uint32_t n, int32_t s, rast_fill_rule rule,

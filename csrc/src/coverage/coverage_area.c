@@ -748,8 +748,9 @@ static void rast__cov_row_area(rast__cells *c, rast__cedge *e, int32_t *row, int
  * Rows whose parts are added whole (fast rows, and every row when
  * accumulating) are first added in 64-bit arithmetic on a grid of 2^-30
  * pixel (Q = 2^-30; G = 60 above): a part's ends' abscissae and its column
- * crossings' ordinates are the floors of the exact values on that grid (the
- * 128-bit floors shifted, or a 64-bit stepper), the ends' ordinates (0, 1
+ * crossings' ordinates are the floors of the exact values on that grid (a
+ * 64-bit stepper per edge from row to row, rast__q_top, and one from column
+ * to column, both carrying their remainder exactly), the ends' ordinates (0, 1
  * or a vertex's, S <= 16) exact; per column, cover += dy and area +=
  * floor((f0 + f1) dy / 2^10), modular, so that a pixel's value is
  * v = a 2^51 = 2^21 cover - area.  Each part moves a pixel's value by less
@@ -773,16 +774,10 @@ static inline int64_t rast__q_col(int64_t v)
     return (int64_t)(((uint64_t)v + ((uint64_t)1 << 62)) >> QF) - ((int64_t)1 << 32);
 }
 
-/* floor(x / 2^30) of a 128-bit abscissa in V units (|x| < 2^88). */
-static inline int64_t rast__q_x(rast__i128 x)
-{
-    return (int64_t)rast__i128_sar(x, 60 - QF).lo;
-}
-
 /* e's exact abscissa at the top of row j (which e spans: yt <= j P < yt +
- * dy), in 2^-30 pixel: qx + qxr/dy, the same floor rast__q_x takes of the
- * 128-bit one.  Stepped from the row above, else two divisions (dx (jP -
- * yt) < 2^56; the remainder times 2^(30 - S) < 2^58). */
+ * dy), in 2^-30 pixel: qx + qxr/dy (qx is the floor the 128-bit abscissa
+ * in V units gives shifted by 30).  Stepped from the row above, else two
+ * divisions (dx (jP - yt) < 2^56; the remainder times 2^(30 - S) < 2^58). */
 static inline int64_t rast__q_top(rast__cedge *e, int32_t j, const rast__cells *c)
 {
     const int32_t hq = QF - (G - c->h);

@@ -1060,7 +1060,25 @@ static inline uint64_t rast__q_u8(uint64_t v, uint64_t win, uint64_t *bad)
     return x >> 51;
 }
 
-/* Columns [k0, k1) of the row get the level of v; u8: rast__q_u8's. */
+/* How rast__q_scan turns a value into a level: rast__q_level (any format
+ * and rule), or into uint8 by rast__q_u8: a fast row's value, or an
+ * accumulated one with the rule applied first by rast__q_fold (non-zero:
+ * |v| up to 1; even-odd: |v| folded mod 2), as rast__q_level applies it. */
+enum { RAST__Q_ANY, RAST__Q_U8_FAST, RAST__Q_U8_NONZERO, RAST__Q_U8_EVENODD };
+
+/* v as rast__q_run takes it in `mode` (above): accumulated values with
+ * the rule applied, others as they are. */
+static inline uint64_t rast__q_fold(uint64_t v, const int mode)
+{
+    uint64_t a = (int64_t)v < 0 ? 0 - v : v;
+    if (mode == RAST__Q_U8_NONZERO) return a > (uint64_t)QONE ? (uint64_t)QONE : a;
+    if (mode != RAST__Q_U8_EVENODD) return v;
+    a &= 2 * (uint64_t)QONE - 1;
+    return a > (uint64_t)QONE ? 2 * (uint64_t)QONE - a : a;
+}
+
+/* Columns [k0, k1) of the row get the level of v (rast__q_fold's); u8: by
+ * rast__q_u8, else by rast__q_level. */
 static inline void rast__q_run(const rast__cells *c, unsigned char *row, int32_t k0, int32_t k1,
                                uint64_t v, uint64_t win, const int u8, uint64_t *bad)
 {
@@ -1075,11 +1093,12 @@ static inline void rast__q_run(const rast__cells *c, unsigned char *row, int32_t
         rast__cov_store(c->o->format, row, k0, lev);
 }
 
-/* The quick cells into row y's values, then cleared; u8 (a constant at
- * each call, so that the compiler makes two loops of this one): a fast
- * row into uint8, by rast__q_u8.  Returns 1 when a level is not certain. */
-static inline int rast__q_scan(rast__cells *c, unsigned char *row, uint64_t win, const int u8)
+/* The quick cells into row y's values, then cleared; mode (a constant at
+ * each call, so that the compiler makes a loop for each): rast__q_run's.
+ * Returns 1 when a level is not certain. */
+RAST__HOT int rast__q_scan(rast__cells *c, unsigned char *row, uint64_t win, const int mode)
 {
+    const int u8 = mode != RAST__Q_ANY;
     uint64_t acc = c->qcarry, bad = 0;
     int32_t k = 0, wi;
     for (wi = c->wmin; wi <= c->wmax; wi++) {
@@ -1087,15 +1106,38 @@ static inline int rast__q_scan(rast__cells *c, unsigned char *row, uint64_t win,
         c->bits[wi] = 0;
         for (; b; b &= b - 1) {
             int32_t col = (wi << 6) + (int32_t)rast__ctz64(b);
-            rast__q_run(c, row, k, col, acc << 21, win, u8, &bad); /* the run before it */
+            if (k < col) /* the run before it */
+                rast__q_run(c, row, k, col, rast__q_fold(acc << 21, mode), win, u8, &bad);
             acc += c->cover[col].lo;
-            rast__q_run(c, row, col, col + 1, (acc << 21) - c->cover[col].hi, win, u8, &bad);
+            rast__q_run(c, row, col, col + 1, rast__q_fold((acc << 21) - c->cover[col].hi, mode),
+                        win, u8, &bad);
             c->cover[col].lo = c->cover[col].hi = 0;
             k = col + 1;
         }
     }
-    rast__q_run(c, row, k, c->x1 - c->x0, acc << 21, win, u8, &bad);
+    rast__q_run(c, row, k, c->x1 - c->x0, rast__q_fold(acc << 21, mode), win, u8, &bad);
     return bad != 0;
+}
+
+/* rast__q_scan in each mode, a loop of its own each. */
+static int rast__q_scan_any(rast__cells *c, unsigned char *row, uint64_t win)
+{
+    return rast__q_scan(c, row, win, RAST__Q_ANY);
+}
+
+static int rast__q_scan_fast(rast__cells *c, unsigned char *row, uint64_t win)
+{
+    return rast__q_scan(c, row, win, RAST__Q_U8_FAST);
+}
+
+static int rast__q_scan_nonzero(rast__cells *c, unsigned char *row, uint64_t win)
+{
+    return rast__q_scan(c, row, win, RAST__Q_U8_NONZERO);
+}
+
+static int rast__q_scan_evenodd(rast__cells *c, unsigned char *row, uint64_t win)
+{
+    return rast__q_scan(c, row, win, RAST__Q_U8_EVENODD);
 }
 
 /* The quick cells into row y, then cleared: 1 (the row is done, handed
@@ -1106,8 +1148,15 @@ static int rast__q_emit(rast__cells *c, int32_t y, int32_t nrow)
     const rast__cov_out *o = c->o;
     unsigned char *row = rast__cov_row(o, y);
     uint64_t win = ((uint64_t)nrow + 1) * c->quick << 24;
-    int amb = o->format == RAST_COVERAGE_U8 && !c->accumulate ? rast__q_scan(c, row, win, 1)
-                                                              : rast__q_scan(c, row, win, 0);
+    int amb;
+    if (o->format != RAST_COVERAGE_U8)
+        amb = rast__q_scan_any(c, row, win);
+    else if (!c->accumulate)
+        amb = rast__q_scan_fast(c, row, win);
+    else if (c->rule == RAST_RULE_NONZERO)
+        amb = rast__q_scan_nonzero(c, row, win);
+    else
+        amb = rast__q_scan_evenodd(c, row, win);
     c->qcarry = 0;
     c->wmin = INT32_MAX;
     c->wmax = -1;

@@ -151,3 +151,59 @@ def test_big_circle_and_star_against_the_oracle():
     star = np.stack([c + r * np.cos(2 * math.pi * k / 40), c + r * np.sin(2 * math.pi * k / 40)], 1)
     for rl in ([circle.tolist()], [star.tolist()]):
         _check(rl, "nonzero", shape=(64, 64))
+
+
+# ---- the 64-bit row stepper (abscissae in 2^-30 pixel plus a remainder) ------
+
+def _near_parallel_bowtie(flip_x, flip_y):
+    """Two edges, 32 pixels long at subpixel_bits=16, that cross 32/65536
+    pixel below the top of row 20, where their abscissae differ by 2^-31
+    pixel: the same 2^-30 floor, so only the remainders order them.  Taken
+    as not crossing, the row's sliver above the crossing would be counted
+    with the wrong sign (an error near 2^-42, far above the bound)."""
+    u = 1.0 / 65536
+    x0, y = 8.0, 20.0
+    ring = [(x0, 2.0), (x0, 38.0), (x0 - u, y + 16 + 32 * u), (x0 + u, y - 16 + 32 * u)]
+    return [[(16 - x if flip_x else x, 40 - y if flip_y else y) for x, y in ring]]
+
+
+@pytest.mark.parametrize("rule", ["nonzero", "evenodd"])
+@pytest.mark.parametrize("flip_x", [False, True])
+@pytest.mark.parametrize("flip_y", [False, True])
+def test_fast_row_orders_by_remainder_below_the_quick_grid(rule, flip_x, flip_y):
+    from fractions import Fraction as F
+    rl = _near_parallel_bowtie(flip_x, flip_y)
+    exact = exact_area(rl, (40, 16), rule, 16)
+    n, m = _n_m(rl, 16)
+    f64 = rastrum.polygon_coverage(rl, (40, 16), rule=rule, subpixel_bits=16, dtype=np.float64)
+    for (j, i), a in np.ndenumerate(exact):
+        assert abs(F(float(f64[j, i])) - a) <= F(n + m + 2, 2 ** 58) + F(1, 2 ** 52), (j, i)
+    for dtype in (np.uint8, np.uint16):
+        out = rastrum.polygon_coverage(rl, (40, 16), rule=rule, subpixel_bits=16, dtype=dtype)
+        check_area(out, exact, M_OF[dtype], n, m, "bowtie")
+
+
+@settings(max_examples=S_.examples(15), deadline=None)
+@given(st.integers(0, 16), st.integers(1, 3), st.integers(0, 2 ** 32 - 1),
+       st.sampled_from(["nonzero", "evenodd"]), st.sampled_from(["area", "accumulate"]))
+def test_long_edges_stepped_row_to_row(s, k, seed, rule, method):
+    """Long thin slanted quads over many rows, every subpixel_bits, vertices
+    off the grid of the quick stepper: each row's abscissae come from the
+    row above by the 64-bit step (remainder carried), and must give the
+    exact area."""
+    rng = np.random.default_rng(seed)
+    h, w = 160, 6
+    rings = []
+    for _ in range(k):
+        x0, x1 = rng.uniform(0.2, w - 0.2, 2)
+        d = rng.uniform(0.3, 1.5)
+        ring = [(x0, -0.7), (x0 + d, -0.7), (x1 + d, h + 0.3), (x1, h + 0.3)]
+        rings.append(ring)
+    if method == "accumulate":
+        rings = rings[:1]  # nothing overlaps: accumulate is exact too
+    exact = exact_area(rings, (h, w), rule, s)
+    n, m = _n_m(rings, s)
+    for dtype in (np.uint8, np.uint16):
+        out = rastrum.polygon_coverage(rings, (h, w), rule=rule, method=method, subpixel_bits=s,
+                                       dtype=dtype)
+        check_area(out, exact, M_OF[dtype], n, m, "quads")

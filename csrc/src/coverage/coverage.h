@@ -103,7 +103,6 @@ static inline rast__i128 rast__i128_u64(uint64_t v)
 typedef struct rast__cedge {
     /* what every row reads, together (the first three cache lines) */
     rast__i128 x, xn;
-    rast__i128 lo, hi; /* a fast row's range of the edge's part (coverage_area.c) */
     int64_t r, rn;
     uint64_t tx;  /* the t of x, r in row `rowx` */
     int32_t rowx; /* see tx; INT32_MIN: not cached */
@@ -112,6 +111,18 @@ typedef struct rast__cedge {
      * vertical qX, t from the top = qt + qtr/|dx|; per column qts + qtsr/|dx| */
     int64_t qt, qX, qts;
     uint32_t qtr, qtsr;
+    /* the quick row stepper (coverage_area.c, 2^-30 pixel units): the
+     * exact abscissa at the top of row qrow is qx + qxr/dy; it grows by
+     * qxs + qxsr/dy from a row's top to the next */
+    int64_t qx, qxs;
+    uint32_t qxr, qxsr;
+    int32_t qrow; /* INT32_MIN: not set */
+    /* a fast row's part, quick units: from qa + qar/dy at ordinate qta to
+     * qb + qbr/dy at qtb (2^-30 pixel from the row's top); its abscissae
+     * in [qlo, qhi) */
+    int64_t qa, qb, qlo, qhi;
+    uint64_t qta, qtb;
+    uint32_t qar, qbr;
     rast__i128 xs; /* x grows by xs + xsr/dy from a row's top to the next */
     int64_t xsr;
     /* the column stepper (cells) */

@@ -387,6 +387,13 @@ static void rast__cov_steps(rast__cedge *e)
         e->qts = (int64_t)q30;
         e->qtsr = (uint32_t)r30;
     }
+    {   /* the quick row step: dx 2^30 / dy (|dx| < 2^28) */
+        int64_t qq, rr;
+        rast__floordivmod((int64_t)e->dx * ((int64_t)1 << 30), e->dy, &qq, &rr);
+        e->qxs = qq;
+        e->qxsr = (uint32_t)rr;
+    }
+    e->qrow = INT32_MIN;
     e->qX = INT64_MIN;
     e->rowx = INT32_MIN;
     e->cX = INT64_MIN;
@@ -741,8 +748,9 @@ static void rast__cov_row_area(rast__cells *c, rast__cedge *e, int32_t *row, int
  * Rows whose parts are added whole (fast rows, and every row when
  * accumulating) are first added in 64-bit arithmetic on a grid of 2^-30
  * pixel (Q = 2^-30; G = 60 above): a part's ends' abscissae and its column
- * crossings' ordinates are the floors of the exact values on that grid (the
- * 128-bit floors shifted, or a 64-bit stepper), the ends' ordinates (0, 1
+ * crossings' ordinates are the floors of the exact values on that grid (a
+ * 64-bit stepper per edge from row to row, rast__q_top, and one from column
+ * to column, both carrying their remainder exactly), the ends' ordinates (0, 1
  * or a vertex's, S <= 16) exact; per column, cover += dy and area +=
  * floor((f0 + f1) dy / 2^10), modular, so that a pixel's value is
  * v = a 2^51 = 2^21 cover - area.  Each part moves a pixel's value by less
@@ -766,10 +774,59 @@ static inline int64_t rast__q_col(int64_t v)
     return (int64_t)(((uint64_t)v + ((uint64_t)1 << 62)) >> QF) - ((int64_t)1 << 32);
 }
 
-/* floor(x / 2^30) of a 128-bit abscissa in V units (|x| < 2^88). */
-static inline int64_t rast__q_x(rast__i128 x)
+/* e's exact abscissa at the top of row j (which e spans: yt <= j P < yt +
+ * dy), in 2^-30 pixel: qx + qxr/dy (qx is the floor the 128-bit abscissa
+ * in V units gives shifted by 30).  Stepped from the row above, else two
+ * divisions (dx (jP - yt) < 2^56; the remainder times 2^(30 - S) < 2^58). */
+static inline int64_t rast__q_top(rast__cedge *e, int32_t j, const rast__cells *c)
 {
-    return (int64_t)rast__i128_sar(x, 60 - QF).lo;
+    const int32_t hq = QF - (G - c->h);
+    if (e->qrow == j - 1) {
+        e->qx += e->qxs;
+        e->qxr += e->qxsr;
+        if (e->qxr >= (uint32_t)e->dy) {
+            e->qxr -= (uint32_t)e->dy;
+            e->qx++;
+        }
+        e->qrow = j;
+    } else if (e->qrow != j) {
+        int64_t q, r, q2, r2;
+        rast__floordivmod((int64_t)e->dx * ((int64_t)j * c->p - e->yt), e->dy, &q, &r);
+        rast__floordivmod(r * ((int64_t)1 << hq), e->dy, &q2, &r2);
+        e->qx = ((int64_t)e->xt + q) * ((int64_t)1 << hq) + q2;
+        e->qxr = (uint32_t)r2;
+        e->qrow = j;
+    }
+    return e->qx;
+}
+
+/* The quick abscissae of e's part in row j (rows Yj = j P): its ends'
+ * ordinates (2^-30 pixel from the row's top) into *ta, *tb, abscissae into
+ * *xa, *xb; the stepper is left at row j + 1's top when e reaches it. */
+static inline void rast__q_part(rast__cedge *e, int32_t j, const rast__cells *c, int64_t *xa,
+                                uint64_t *ta, int64_t *xb, uint64_t *tb)
+{
+    const int32_t hq = QF - (G - c->h);
+    const int64_t Yj = (int64_t)j * c->p;
+    int64_t rel0 = (int64_t)e->yt - Yj, rel1 = (int64_t)e->yt + e->dy - Yj;
+    if (rel0 > 0) {
+        *ta = (uint64_t)rel0 << hq;
+        *xa = (int64_t)e->xt * ((int64_t)1 << hq);
+        e->qar = 0;
+    } else {
+        *ta = 0;
+        *xa = rast__q_top(e, j, c);
+        e->qar = e->qxr;
+    }
+    if (rel1 < c->p) {
+        *tb = (uint64_t)rel1 << hq;
+        *xb = ((int64_t)e->xt + e->dx) * ((int64_t)1 << hq);
+        e->qbr = 0;
+    } else {
+        *tb = QT;
+        *xb = rast__q_top(e, j + 1, c);
+        e->qbr = e->qxr;
+    }
 }
 
 /* e's quick stepper at vertical X (which e's x range reaches: |X P - xt|
@@ -1003,7 +1060,25 @@ static inline uint64_t rast__q_u8(uint64_t v, uint64_t win, uint64_t *bad)
     return x >> 51;
 }
 
-/* Columns [k0, k1) of the row get the level of v; u8: rast__q_u8's. */
+/* How rast__q_scan turns a value into a level: rast__q_level (any format
+ * and rule), or into uint8 by rast__q_u8: a fast row's value, or an
+ * accumulated one with the rule applied first by rast__q_fold (non-zero:
+ * |v| up to 1; even-odd: |v| folded mod 2), as rast__q_level applies it. */
+enum { RAST__Q_ANY, RAST__Q_U8_FAST, RAST__Q_U8_NONZERO, RAST__Q_U8_EVENODD };
+
+/* v as rast__q_run takes it in `mode` (above): accumulated values with
+ * the rule applied, others as they are. */
+static inline uint64_t rast__q_fold(uint64_t v, const int mode)
+{
+    uint64_t a = (int64_t)v < 0 ? 0 - v : v;
+    if (mode == RAST__Q_U8_NONZERO) return a > (uint64_t)QONE ? (uint64_t)QONE : a;
+    if (mode != RAST__Q_U8_EVENODD) return v;
+    a &= 2 * (uint64_t)QONE - 1;
+    return a > (uint64_t)QONE ? 2 * (uint64_t)QONE - a : a;
+}
+
+/* Columns [k0, k1) of the row get the level of v (rast__q_fold's); u8: by
+ * rast__q_u8, else by rast__q_level. */
 static inline void rast__q_run(const rast__cells *c, unsigned char *row, int32_t k0, int32_t k1,
                                uint64_t v, uint64_t win, const int u8, uint64_t *bad)
 {
@@ -1018,11 +1093,12 @@ static inline void rast__q_run(const rast__cells *c, unsigned char *row, int32_t
         rast__cov_store(c->o->format, row, k0, lev);
 }
 
-/* The quick cells into row y's values, then cleared; u8 (a constant at
- * each call, so that the compiler makes two loops of this one): a fast
- * row into uint8, by rast__q_u8.  Returns 1 when a level is not certain. */
-static inline int rast__q_scan(rast__cells *c, unsigned char *row, uint64_t win, const int u8)
+/* The quick cells into row y's values, then cleared; mode (a constant at
+ * each call, so that the compiler makes a loop for each): rast__q_run's.
+ * Returns 1 when a level is not certain. */
+RAST__HOT int rast__q_scan(rast__cells *c, unsigned char *row, uint64_t win, const int mode)
 {
+    const int u8 = mode != RAST__Q_ANY;
     uint64_t acc = c->qcarry, bad = 0;
     int32_t k = 0, wi;
     for (wi = c->wmin; wi <= c->wmax; wi++) {
@@ -1030,15 +1106,38 @@ static inline int rast__q_scan(rast__cells *c, unsigned char *row, uint64_t win,
         c->bits[wi] = 0;
         for (; b; b &= b - 1) {
             int32_t col = (wi << 6) + (int32_t)rast__ctz64(b);
-            rast__q_run(c, row, k, col, acc << 21, win, u8, &bad); /* the run before it */
+            if (k < col) /* the run before it */
+                rast__q_run(c, row, k, col, rast__q_fold(acc << 21, mode), win, u8, &bad);
             acc += c->cover[col].lo;
-            rast__q_run(c, row, col, col + 1, (acc << 21) - c->cover[col].hi, win, u8, &bad);
+            rast__q_run(c, row, col, col + 1, rast__q_fold((acc << 21) - c->cover[col].hi, mode),
+                        win, u8, &bad);
             c->cover[col].lo = c->cover[col].hi = 0;
             k = col + 1;
         }
     }
-    rast__q_run(c, row, k, c->x1 - c->x0, acc << 21, win, u8, &bad);
+    rast__q_run(c, row, k, c->x1 - c->x0, rast__q_fold(acc << 21, mode), win, u8, &bad);
     return bad != 0;
+}
+
+/* rast__q_scan in each mode, a loop of its own each. */
+static int rast__q_scan_any(rast__cells *c, unsigned char *row, uint64_t win)
+{
+    return rast__q_scan(c, row, win, RAST__Q_ANY);
+}
+
+static int rast__q_scan_fast(rast__cells *c, unsigned char *row, uint64_t win)
+{
+    return rast__q_scan(c, row, win, RAST__Q_U8_FAST);
+}
+
+static int rast__q_scan_nonzero(rast__cells *c, unsigned char *row, uint64_t win)
+{
+    return rast__q_scan(c, row, win, RAST__Q_U8_NONZERO);
+}
+
+static int rast__q_scan_evenodd(rast__cells *c, unsigned char *row, uint64_t win)
+{
+    return rast__q_scan(c, row, win, RAST__Q_U8_EVENODD);
 }
 
 /* The quick cells into row y, then cleared: 1 (the row is done, handed
@@ -1049,8 +1148,15 @@ static int rast__q_emit(rast__cells *c, int32_t y, int32_t nrow)
     const rast__cov_out *o = c->o;
     unsigned char *row = rast__cov_row(o, y);
     uint64_t win = ((uint64_t)nrow + 1) * c->quick << 24;
-    int amb = o->format == RAST_COVERAGE_U8 && !c->accumulate ? rast__q_scan(c, row, win, 1)
-                                                              : rast__q_scan(c, row, win, 0);
+    int amb;
+    if (o->format != RAST_COVERAGE_U8)
+        amb = rast__q_scan_any(c, row, win);
+    else if (!c->accumulate)
+        amb = rast__q_scan_fast(c, row, win);
+    else if (c->rule == RAST_RULE_NONZERO)
+        amb = rast__q_scan_nonzero(c, row, win);
+    else
+        amb = rast__q_scan_evenodd(c, row, win);
     c->qcarry = 0;
     c->wmin = INT32_MAX;
     c->wmax = -1;
@@ -1101,25 +1207,24 @@ static int rast__q_may(const rast__cells *c, int32_t nrow)
  * crossings, several vertices close together, horizontal edges inside the
  * strip) the row is swept. */
 
-/* The range [lo, hi) of e's part (e->x at its top, e->xn at its bottom),
- * into e->lo, e->hi. */
-static void rast__fast_range(rast__cedge *e)
+/* e's part in row j, quick units (rast__q_part), into e->qa .. e->qtb,
+ * and its range [qlo, qhi) (the floors at its two ends, qhi one more). */
+static void rast__fast_range(rast__cedge *e, int32_t j, const rast__cells *c)
 {
-    int c = rast__i128_cmp(e->x, e->xn);
-    e->lo = c <= 0 ? e->x : e->xn;
-    e->hi = rast__i128_add(c >= 0 ? e->x : e->xn, rast__i128_u64(1));
+    rast__q_part(e, j, c, &e->qa, &e->qta, &e->qb, &e->qtb);
+    e->qlo = e->qa < e->qb ? e->qa : e->qb;
+    e->qhi = (e->qa < e->qb ? e->qb : e->qa) + 1;
 }
 
-/* The exact abscissae x + r/dy of a and b: -1, 0, 1 as a's is smaller,
- * equal, larger. */
-static int rast__fast_cmpx(rast__i128 xa, int64_t ra, const rast__cedge *a, rast__i128 xb,
-                           int64_t rb, const rast__cedge *b)
+/* The exact abscissae xa + ra/dy and xb + rb/dy (quick units) of a and b:
+ * -1, 0, 1 as a's is smaller, equal, larger. */
+static int rast__fast_cmpx(int64_t xa, uint32_t ra, const rast__cedge *a, int64_t xb, uint32_t rb,
+                           const rast__cedge *b)
 {
-    int c = rast__i128_cmp(xa, xb);
     int64_t l, r;
-    if (c) return c;
-    l = ra * b->dy;
-    r = rb * a->dy;
+    if (xa != xb) return xa < xb ? -1 : 1;
+    l = (int64_t)ra * b->dy;
+    r = (int64_t)rb * a->dy;
     return (l > r) - (l < r);
 }
 
@@ -1143,8 +1248,8 @@ static int rast__fast_full(const rast__cedge *e, int32_t *g, int32_t m, int32_t 
         const rast__cedge *a = &e[id];
         while (q > 0) {
             const rast__cedge *b = &e[g[q - 1]];
-            int c = rast__fast_cmpx(a->x, a->r, a, b->x, b->r, b);
-            if (c > 0 || (c == 0 && rast__fast_cmpx(a->xn, a->rn, a, b->xn, b->rn, b) >= 0)) break;
+            int c = rast__fast_cmpx(a->qa, a->qar, a, b->qa, b->qar, b);
+            if (c > 0 || (c == 0 && rast__fast_cmpx(a->qb, a->qbr, a, b->qb, b->qbr, b) >= 0)) break;
             g[q] = g[q - 1];
             q--;
         }
@@ -1154,8 +1259,8 @@ static int rast__fast_full(const rast__cedge *e, int32_t *g, int32_t m, int32_t 
         const rast__cedge *a = &e[g[k]];
         if (k + 1 < m) {
             const rast__cedge *b = &e[g[k + 1]];
-            int ct = rast__fast_cmpx(a->x, a->r, a, b->x, b->r, b);
-            int cb = rast__fast_cmpx(a->xn, a->rn, a, b->xn, b->rn, b);
+            int ct = rast__fast_cmpx(a->qa, a->qar, a, b->qa, b->qar, b);
+            int cb = rast__fast_cmpx(a->qb, a->qbr, a, b->qb, b->qbr, b);
             if (ct > 0 || cb > 0 || (ct == 0 && cb == 0)) return 0;
         }
         *w += a->dir;
@@ -1234,7 +1339,31 @@ static int rast__fast_mixed(const rast__cedge *e, const int32_t *g, int32_t m, c
     return 1;
 }
 
-/* A fast row's parts, whole, each with the sign dir * s. */
+/* The parts of row j's edges, whole, each with the sign dir * s (dir
+ * alone for s = 0), the exact way (128-bit abscissae). */
+static void rast__row_exact(rast__cells *c, rast__cedge *e, const int32_t *row, int32_t nrow,
+                            int32_t j, int32_t s)
+{
+    const int64_t Yj = (int64_t)j * c->p;
+    int32_t k;
+    for (k = 0; k < nrow; k++) {
+        rast__cedge *ed = &e[row[k]];
+        int64_t rel0 = (int64_t)ed->yt - Yj, rel1 = (int64_t)ed->yt + ed->dy - Yj;
+        uint64_t t0 = rel0 <= 0 ? 0 : (uint64_t)rel0 << c->h;
+        uint64_t t1 = rel1 >= c->p ? T : (uint64_t)rel1 << c->h;
+        if (ed->rowx != j || ed->tx != t0) {
+            rast__cov_x_at(ed, Yj, t0, c->h, &ed->x, &ed->r);
+            ed->rowx = j;
+            ed->tx = t0;
+        }
+        rast__cov_x_end(ed, Yj, t0, t1, c->h);
+        rast__cells_piece(c, ed, Yj, ed->x, t0, ed->xn, t1, s ? ed->dir * s : ed->dir);
+        rast__cov_x_keep(ed, j, t1);
+    }
+}
+
+/* A fast row's parts (rast__fast_range has set them), whole, each with the
+ * sign dir * s. */
 static void rast__fast_add(rast__cells *c, rast__cedge *e, const int32_t *row, int32_t nrow,
                            int32_t j, int32_t s)
 {
@@ -1243,27 +1372,11 @@ static void rast__fast_add(rast__cells *c, rast__cedge *e, const int32_t *row, i
     if (rast__q_may(c, nrow)) {
         for (k = 0; k < nrow; k++) {
             rast__cedge *ed = &e[row[k]];
-            int64_t rel1 = (int64_t)ed->yt + ed->dy - Yj;
-            uint64_t t1 = rel1 >= c->p ? T : (uint64_t)rel1 << c->h;
-            rast__q_piece(c, ed, Yj, rast__q_x(ed->x), ed->tx >> (G - QF), rast__q_x(ed->xn),
-                          t1 >> (G - QF), ed->dir * s);
+            rast__q_piece(c, ed, Yj, ed->qa, ed->qta, ed->qb, ed->qtb, ed->dir * s);
         }
-        if (rast__q_emit(c, j, nrow)) {
-            for (k = 0; k < nrow; k++) {
-                rast__cedge *ed = &e[row[k]];
-                int64_t rel1 = (int64_t)ed->yt + ed->dy - Yj;
-                rast__cov_x_keep(ed, j, rel1 >= c->p ? T : (uint64_t)rel1 << c->h);
-            }
-            return;
-        }
+        if (rast__q_emit(c, j, nrow)) return;
     }
-    for (k = 0; k < nrow; k++) {
-        rast__cedge *ed = &e[row[k]];
-        int64_t rel1 = (int64_t)ed->yt + ed->dy - Yj;
-        uint64_t t1 = rel1 >= c->p ? T : (uint64_t)rel1 << c->h;
-        rast__cells_piece(c, ed, Yj, ed->x, ed->tx, ed->xn, t1, ed->dir * s);
-        rast__cov_x_keep(ed, j, t1);
-    }
+    rast__row_exact(c, e, row, nrow, j, s);
 }
 
 /* The row's edges, as a fast row if it is one: its s (+1 or -1), its parts
@@ -1285,13 +1398,7 @@ static int rast__cov_row_fast(rast__cells *c, rast__cedge *e, int32_t *row, int3
         uint64_t t1 = rel1 >= c->p ? T : (uint64_t)rel1 << c->h;
         uint64_t cut[2];
         int32_t id = row[k], q = k, z;
-        rast__i128 lo;
-        if (ed->rowx != j || ed->tx != t0) {
-            rast__cov_x_at(ed, Yj, t0, c->h, &ed->x, &ed->r);
-            ed->rowx = j;
-            ed->tx = t0;
-        }
-        rast__cov_x_end(ed, Yj, t0, t1, c->h);
+        int64_t lo;
         cut[0] = t0;
         cut[1] = t1 == T ? 0 : t1;
         for (z = 0; z < 2; z++) { /* the ordinates inside, sorted, once each */
@@ -1304,9 +1411,9 @@ static int rast__cov_row_fast(rast__cells *c, rast__cedge *e, int32_t *row, int3
             u[y] = cut[z];
             nu++;
         }
-        rast__fast_range(ed);
-        lo = ed->lo;
-        while (q > 0 && rast__i128_cmp(lo, e[row[q - 1]].lo) < 0) {
+        rast__fast_range(ed, j, c);
+        lo = ed->qlo;
+        while (q > 0 && lo < e[row[q - 1]].qlo) {
             row[q] = row[q - 1];
             q--;
         }
@@ -1315,12 +1422,12 @@ static int rast__cov_row_fast(rast__cells *c, rast__cedge *e, int32_t *row, int3
     u[nu++] = T;
     for (i = 0; i + 1 < nu; i++) w[i] = 0;
     for (k = 0; k < nrow; k = g) { /* the groups, left to right */
-        rast__i128 hi = e[row[k]].hi;
+        int64_t hi = e[row[k]].qhi;
         int32_t full = 1, m;
         for (g = k; g < nrow; g++) {
             const rast__cedge *ed = &e[row[g]];
-            if (g > k && rast__i128_cmp(ed->lo, hi) >= 0) break;
-            if (rast__i128_cmp(ed->hi, hi) > 0) hi = ed->hi;
+            if (g > k && ed->qlo >= hi) break;
+            if (ed->qhi > hi) hi = ed->qhi;
             if (ed->yt > Yj || (int64_t)ed->yt + ed->dy < Yj + c->p) full = 0;
         }
         m = g - k;
@@ -1363,16 +1470,11 @@ static int rast__cov_row_cont(rast__cells *c, rast__cedge *e, const int32_t *row
     for (k = 0; k < nrow; k++) {
         rast__cedge *ed = &e[row[k]];
         if (ed->yt > Yj || (int64_t)ed->yt + ed->dy < Yj + c->p) return 0;
-        if (ed->rowx != j || ed->tx != 0) {
-            rast__cov_x_at(ed, Yj, 0, c->h, &ed->x, &ed->r);
-            ed->rowx = j;
-            ed->tx = 0;
-        }
-        rast__cov_x_end(ed, Yj, 0, T, c->h);
+        rast__fast_range(ed, j, c);
         if (k > 0) {
             const rast__cedge *a = &e[row[k - 1]];
-            if (rast__fast_cmpx(a->x, a->r, a, ed->x, ed->r, ed) >= 0 ||
-                rast__fast_cmpx(a->xn, a->rn, a, ed->xn, ed->rn, ed) > 0)
+            if (rast__fast_cmpx(a->qa, a->qar, a, ed->qa, ed->qar, ed) >= 0 ||
+                rast__fast_cmpx(a->qb, a->qbr, a, ed->qb, ed->qbr, ed) > 0)
                 return 0;
         }
     }
@@ -1380,41 +1482,26 @@ static int rast__cov_row_cont(rast__cells *c, rast__cedge *e, const int32_t *row
     return 1;
 }
 
-/* The row's accumulation: every edge, whole, signed by its direction. */
+/* The row's accumulation: every edge, whole, signed by its direction.
+ * The quick way steps each edge's abscissa from row to row in 64 bits
+ * (rast__q_top); only a row whose levels it cannot decide computes the
+ * 128-bit ones and is added again the exact way. */
 static void rast__cov_row_acc(rast__cells *c, rast__cedge *e, const int32_t *row, int32_t nrow,
                               int32_t j)
 {
     const int64_t Yj = (int64_t)j * c->p;
-    int quick = rast__q_may(c, nrow);
     int32_t k;
-    for (k = 0; k < nrow; k++) {
-        rast__cedge *ed = &e[row[k]];
-        int64_t rel0 = (int64_t)ed->yt - Yj, rel1 = (int64_t)ed->yt + ed->dy - Yj;
-        uint64_t t0 = rel0 <= 0 ? 0 : (uint64_t)rel0 << c->h;
-        uint64_t t1 = rel1 >= c->p ? T : (uint64_t)rel1 << c->h;
-        if (ed->rowx != j || ed->tx != t0) {
-            rast__cov_x_at(ed, Yj, t0, c->h, &ed->x, &ed->r);
-            ed->rowx = j;
-            ed->tx = t0;
+    if (rast__q_may(c, nrow)) {
+        for (k = 0; k < nrow; k++) {
+            rast__cedge *ed = &e[row[k]];
+            int64_t xa, xb;
+            uint64_t ta, tb;
+            rast__q_part(ed, j, c, &xa, &ta, &xb, &tb);
+            rast__q_piece(c, ed, Yj, xa, ta, xb, tb, ed->dir);
         }
-        rast__cov_x_end(ed, Yj, t0, t1, c->h);
-        if (quick)
-            rast__q_piece(c, ed, Yj, rast__q_x(ed->x), t0 >> (G - QF), rast__q_x(ed->xn),
-                          t1 >> (G - QF), ed->dir);
-        else {
-            rast__cells_piece(c, ed, Yj, ed->x, t0, ed->xn, t1, ed->dir);
-            rast__cov_x_keep(ed, j, t1);
-        }
+        if (rast__q_emit(c, j, nrow)) return;
     }
-    if (!quick) return;
-    quick = rast__q_emit(c, j, nrow);
-    for (k = 0; k < nrow; k++) {
-        rast__cedge *ed = &e[row[k]];
-        int64_t rel1 = (int64_t)ed->yt + ed->dy - Yj;
-        uint64_t t1 = rel1 >= c->p ? T : (uint64_t)rel1 << c->h;
-        if (!quick) rast__cells_piece(c, ed, Yj, ed->x, ed->tx, ed->xn, t1, ed->dir);
-        rast__cov_x_keep(ed, j, t1);
-    }
+    rast__row_exact(c, e, row, nrow, j, 0);
 }
 
 rast_status rast__cov_area(rast__cedge *e, uint32_t n, int32_t s, rast_fill_rule rule,

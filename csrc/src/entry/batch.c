@@ -17,6 +17,7 @@
  * checks nothing.
  */
 #include "../painters/paint.h"
+#include "../fillers/small.h"
 
 /* A batch of rast_polygon (wide == 0) or rast_polygon64 (wide == 1),
  * with the options checked once (f, or g64 for 64-bit ones). */
@@ -135,6 +136,7 @@ static rast_status rast__batch_fill(rast__polys *ps, uint32_t n, const rast_fill
     size_t most, need;
     uint32_t k, npoints;
     rast_status st;
+    int small;
     if (!span) return RAST_E_NULL;
     st = rast__batch_check(ps, n, opts, clip, &most, failed);
     if (st != RAST_OK) return st;
@@ -151,6 +153,10 @@ static rast_status rast__batch_fill(rast__polys *ps, uint32_t n, const rast_fill
     st = rast__scratch_check(scratch, scratch_bytes, most);
     if (st != RAST_OK) return st;
 
+    /* Polygons of few vertices: the small filler (small.c), the AET's
+     * pixels, when the AET with the exact boundary is asked for. */
+    small = !ps->wide && opts->algorithm == RAST_ALGO_AET &&
+            (!RAST__BOUNDARY_MODES || opts->boundary == RAST_BOUNDARY_EXACT);
     ctx.span = span;
     ctx.user = user;
     memset(&painter, 0, sizeof painter);
@@ -169,6 +175,9 @@ static rast_status rast__batch_fill(rast__polys *ps, uint32_t n, const rast_fill
             const rast_polygon *p = (const rast_polygon *)ps->p + k;
             rast__fill_measure(&ps->f, p, &c, &npoints, &b);
             if (b.x0 == b.x1 || b.y0 == b.y1) continue;
+            if (small && rast__small_fill(p, npoints, &ps->f.g, opts->rule, &b, span, user, k,
+                                          scratch, scratch_bytes))
+                continue;
             st = rast__fill_checked(&ps->f, p, npoints, &b, &painter, scratch, scratch_bytes);
         }
         if (st != RAST_OK) return st; /* not reached: everything was checked */

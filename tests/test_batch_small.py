@@ -97,3 +97,33 @@ def test_labels_of_small_polygons_equal_the_oracle_in_order(polys):
     for k, p in enumerate(polys):
         want[oracle_mask(p, SHAPE, rule="nonzero")] = k + 1
     assert np.array_equal(lab, want)
+
+
+# ---- masks into an uninitialised array (merge "fresh") -----------------------
+
+@given(st.lists(polygon, min_size=1, max_size=5), st.sampled_from(["evenodd", "nonzero"]), st.booleans())
+def test_fresh_masks_write_every_byte(polys, rule, chunked):
+    # A dirty array: every byte must come out 0 or 1, the oracle's; polygons
+    # out of view, empty and of 1 or 2 points included by the strategy.
+    # `chunked` draws polygon by polygon (as with progress=), each call
+    # into its own planes.
+    from rastrum import ml
+    polys = polys + [[np.array([[40.0, 40.0], [50.0, 40.0], [45.0, 48.0]])]]  # out of view
+    out = np.full((len(polys),) + SHAPE, 0xAB, np.uint8)
+    packed = ml._polygons(polys, "masks")
+    opts = _core.fill_opts("aet", rule, 8, 0.5)
+    ml._burn(out, packed, opts, rule, None, "fresh", True, "polygon", (lambda done: None) if chunked else None)
+    for k, p in enumerate(polys):
+        assert np.array_equal(out[k], oracle_mask(p, SHAPE, rule=rule).astype(np.uint8)), k
+
+
+def test_fresh_needs_contiguous_uint8_planes():
+    import pytest
+    ring = [np.array([[1.0, 1.0], [6.0, 2.0], [3.0, 7.0]])]
+    opts = _core.fill_opts("aet", "evenodd", 8, 0.5)
+    base = np.full((2, 9, 12), 5, np.uint8)
+    for out in (base[:, :, :10], np.full((2, 9, 10), 5, np.int32)):
+        before = out.copy()
+        with pytest.raises(rastrum.InputError):
+            _batch.burn(out, [ring, ring], opts, merge="fresh", planes=True)
+        assert np.array_equal(out, before)

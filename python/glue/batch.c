@@ -322,6 +322,17 @@ static void rastpy_orient(int32_t *pts, const uint32_t *ring_sizes, size_t nring
     }
 }
 
+/* The exact scratch of a batch (rast_polygons_scratch_size and its 64-bit
+ * twin). */
+static rast_status rastpy_batch_need(const void *polys, uint32_t npolys, const rast_fill_opts *opts,
+                                     const rast_rect *clip, int wide, size_t *need, uint32_t *failed)
+{
+    return wide ? rast_polygons64_scratch_size((const rast_polygon64 *)polys, npolys, opts, clip,
+                                               need, failed)
+                : rast_polygons_scratch_size((const rast_polygon *)polys, npolys, opts, clip, need,
+                                             failed);
+}
+
 /* Every burn: the points snapped to int32 (rast_polygon, wide == 0) or to
  * int64 (rast_polygon64, wide == 1), the same tables, the same spans; with
  * `orient` (32-bit only), the rings turned first (rastpy_orient).  out is
@@ -361,9 +372,24 @@ static long rastpy_burn_any(void *out, int32_t y0, int32_t x0, int32_t height, i
     clip.y0 = y0;
     clip.x1 = x0 + width;
     clip.y1 = y0 + height;
-    st = wide ? rast_polygons64_scratch_size((const rast_polygon64 *)polys, npolys, opts, &clip, &need,
-                                             failed)
-              : rast_polygons_scratch_size((const rast_polygon *)polys, npolys, opts, &clip, &need, failed);
+    if (!wide && opts && opts->algorithm == RAST_ALGO_AET && opts->boundary == RAST_BOUNDARY_EXACT) {
+        /* The AET's published bound for the largest polygon and the
+         * window's rows, instead of a pass that measures every polygon
+         * (the fill checks them all anyway; should the bound ever fall
+         * short, the fill says so before drawing and the exact size is
+         * asked for below). */
+        size_t most = 0, ring = 0;
+        uint32_t k, r;
+        for (k = 0; k < npolys; k++) {
+            size_t n = 0;
+            for (r = 0; r < poly_rings[k]; r++) n += ring_sizes[ring++];
+            if (n > most) most = n;
+        }
+        need = RAST_AET_SCRATCH_BOUND(most, height);
+        st = RAST_OK;
+    } else {
+        st = rastpy_batch_need(polys, npolys, opts, &clip, wide, &need, failed);
+    }
     scratch = st == RAST_OK ? malloc(need + 1) : NULL;
     if (st == RAST_OK && !scratch) st = (rast_status)RASTPY_E_NOMEM;
     if (st == RAST_OK) {
@@ -381,6 +407,15 @@ static long rastpy_burn_any(void *out, int32_t y0, int32_t x0, int32_t height, i
                                                span, b, scratch, need, failed)
                   : rast_fill_polygons_spans((const rast_polygon *)polys, npolys, opts, &clip, span,
                                              b, scratch, need, failed);
+        if (st == RAST_E_SCRATCH) { /* (not reached while the bound holds) */
+            free(scratch);
+            st = rastpy_batch_need(polys, npolys, opts, &clip, wide, &need, failed);
+            scratch = st == RAST_OK ? malloc(need + 1) : NULL;
+            if (st == RAST_OK && !scratch) st = (rast_status)RASTPY_E_NOMEM;
+            if (st == RAST_OK)
+                st = rast_fill_polygons_spans((const rast_polygon *)polys, npolys, opts, &clip, span, b,
+                                              scratch, need, failed);
+        }
         /* the rest of the planes after the last span */
         if (st == RAST_OK && merge == RASTPY_MERGE_FRESH)
             rastpy_clear(f.b.out + f.at, (size_t)npolys * (size_t)height * (size_t)width - f.at);

@@ -106,12 +106,13 @@ int rast__small_fill(const rast_polygon *poly, uint32_t npoints, const rast__gri
 
     if (npoints > RAST__SMALL_POINTS || (size_t)npoints * sizeof(rast__edge) > bytes) return 0;
     room = (bytes - (size_t)npoints * sizeof(rast__edge)) / sizeof(int32_t);
-    /* The edges crossing the clip's rows. */
+    /* The edges crossing the clip's rows (set up as a triangle's are:
+     * inline, or out of line in a build for size). */
     for (k = 0, base = 0; k < poly->nrings; base += poly->ring_sizes[k], k++) {
         uint32_t n = poly->ring_sizes[k];
         for (i = 0; i < n; i++)
-            ne += rast__edge_setup_inline(&ed[ne], pts[base + i], pts[base + (i + 1 == n ? 0 : i + 1)],
-                                          g, row0, row1);
+            ne += rast__edge_setup_tri(&ed[ne], pts[base + i], pts[base + (i + 1 == n ? 0 : i + 1)],
+                                       g, row0, row1);
     }
     if (ne == 0) return 1;
     /* Rows per band: a count and ne slots each. */

@@ -10,9 +10,10 @@ taking turns (see `timed`), outputs checked:
    [<= 0.2x]; RLEs and masks must be identical;
 2. masks of 100 objects at 640 x 480: rastrum.masks (one call, from the
    COCO lists through coco.rings) against cv2.fillPoly in a loop [<= 0.5x],
-   and np.zeros of the output alone in the same turns (what both pay for a
-   fresh 30 MB array: clearing a reused block, or page faults on a new one,
-   whichever the allocator's state gives);
+   and np.zeros of the output alone in the same turns (what the cv2 loop
+   pays for a fresh 30 MB array: clearing a reused block, or page faults on
+   a new one, whichever the allocator's state gives; rastrum.masks writes
+   each byte of an uninitialised array once instead, at about that cost);
 3. labels of 10,000 instances on 1024 x 1024: rastrum.labels against
    cv2.fillPoly in a loop (with the float -> int32 conversion in the loop,
    and with the points converted beforehand) [<= 0.3x];
@@ -157,7 +158,7 @@ def row2(rng, quick):
     print("2. masks, 100 objects at 640x480: cv2.fillPoly loop %.2f ms, rastrum.masks %.2f ms: %.3fx "
           "[target <= 0.5x]; pixels off the exact oracle (first %d objects): rastrum %d, cv2 %d"
           % (1e3 * t["cv2"], 1e3 * t["rastrum"], t["rastrum"] / t["cv2"], len(sub), off_r, off_c))
-    print("   of which the fresh 30 MB output (np.zeros alone, same turns): %.2f ms; beyond it %.3fx"
+    print("   the fresh 30 MB output (np.zeros alone, same turns): %.2f ms; beyond it %.3fx"
           % (1e3 * t["zeros"], (t["rastrum"] - t["zeros"]) / max(t["cv2"] - t["zeros"], 1e-9)))
     print("   minor page faults of one call, as timed (the second of two): cv2 %d, rastrum %d, zeros %d"
           % tuple(faults(f) for f in (cv, ras, zeros)))

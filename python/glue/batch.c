@@ -146,6 +146,56 @@ RASTPY_PUTS(f64, double)
 
 typedef void (*rastpy_put_fn)(const rastpy_burn *, unsigned char *, uint32_t, int32_t, int32_t);
 
+/* RASTPY_MERGE_FRESH: the planes as one run of bytes, written up to `at`
+ * (every byte before it is final).  A span past `at` clears the gap and
+ * sets its own bytes; a span behind it (the spans come in order from the
+ * fillers of the batch, but nothing here relies on it) sets its bytes,
+ * which is what it would do to a cleared array. */
+typedef struct rastpy_fresh {
+    rastpy_burn b;
+    size_t at;
+} rastpy_fresh;
+
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
+/* Clear n bytes at p: the whole 64-byte lines of a long gap with
+ * non-temporal stores (SSE2), as the C library clears a large calloc'd
+ * block: a mask's planes are far larger than the cache, and ordinary
+ * stores would read every line before writing it. */
+static void rastpy_clear(unsigned char *p, size_t n)
+{
+#if defined(__SSE2__)
+    if (n >= 1024) {
+        unsigned char *end = p + n;
+        unsigned char *a = (unsigned char *)(((uintptr_t)p + 63) & ~(uintptr_t)63);
+        unsigned char *b = (unsigned char *)((uintptr_t)end & ~(uintptr_t)63);
+        const __m128i z = _mm_setzero_si128();
+        memset(p, 0, (size_t)(a - p));
+        for (; a < b; a += 64) {
+            _mm_stream_si128((__m128i *)(void *)a, z);
+            _mm_stream_si128((__m128i *)(void *)(a + 16), z);
+            _mm_stream_si128((__m128i *)(void *)(a + 32), z);
+            _mm_stream_si128((__m128i *)(void *)(a + 48), z);
+        }
+        memset(b, 0, (size_t)(end - b));
+        return;
+    }
+#endif
+    memset(p, 0, n);
+}
+
+static void rastpy_span_fresh(void *user, uint32_t k, int32_t y, int32_t x0, int32_t x1)
+{
+    rastpy_fresh *f = (rastpy_fresh *)user;
+    size_t start = (size_t)((int64_t)k * f->b.plane_stride + (int64_t)(y - f->b.y0) * f->b.row_stride +
+                            (x0 - f->b.x0)),
+           end = start + (size_t)(x1 - x0);
+    if (start > f->at) rastpy_clear(f->b.out + f->at, start - f->at);
+    memset(f->b.out + start, 1, end - start);
+    if (end > f->at) f->at = end;
+}
+
 /* Indexed by RASTPY_DT_* - 1, then by merge rule. */
 #define RASTPY_PUT_ROW(NAME) {rastpy_replace_##NAME, rastpy_add_##NAME, rastpy_addsat_##NAME}
 static const rastpy_put_fn rastpy_puts[10][3] = {
@@ -272,6 +322,17 @@ static void rastpy_orient(int32_t *pts, const uint32_t *ring_sizes, size_t nring
     }
 }
 
+/* The exact scratch of a batch (rast_polygons_scratch_size and its 64-bit
+ * twin). */
+static rast_status rastpy_batch_need(const void *polys, uint32_t npolys, const rast_fill_opts *opts,
+                                     const rast_rect *clip, int wide, size_t *need, uint32_t *failed)
+{
+    return wide ? rast_polygons64_scratch_size((const rast_polygon64 *)polys, npolys, opts, clip,
+                                               need, failed)
+                : rast_polygons_scratch_size((const rast_polygon *)polys, npolys, opts, clip, need,
+                                             failed);
+}
+
 /* Every burn: the points snapped to int32 (rast_polygon, wide == 0) or to
  * int64 (rast_polygon64, wide == 1), the same tables, the same spans; with
  * `orient` (32-bit only), the rings turned first (rastpy_orient).  out is
@@ -287,13 +348,18 @@ static long rastpy_burn_any(void *out, int32_t y0, int32_t x0, int32_t height, i
 {
     void *polys, *pts, *scratch;
     rast_rect clip;
-    rastpy_burn b;
+    rastpy_fresh f;
+    rastpy_burn *b = &f.b;
     size_t need = 0;
     long bad;
     rast_status st;
 
     if (dtype < RASTPY_DT_U8 || dtype > RASTPY_DT_F64 || merge < RASTPY_MERGE_REPLACE ||
-        merge > RASTPY_MERGE_ADD_SAT || (orient && wide))
+        merge > RASTPY_MERGE_FRESH || (orient && wide))
+        return RAST_E_ARG;
+    if (merge == RASTPY_MERGE_FRESH &&
+        (dtype != RASTPY_DT_U8 || values || (height > 1 && row_stride != width) ||
+         (npolys > 1 && plane_stride != (int64_t)height * width)))
         return RAST_E_ARG;
     if (height < 0 || width < 0 || y0 < -RAST_MAX_DIM || y0 > RAST_MAX_DIM - height ||
         x0 < -RAST_MAX_DIM || x0 > RAST_MAX_DIM - width)
@@ -306,25 +372,56 @@ static long rastpy_burn_any(void *out, int32_t y0, int32_t x0, int32_t height, i
     clip.y0 = y0;
     clip.x1 = x0 + width;
     clip.y1 = y0 + height;
-    st = wide ? rast_polygons64_scratch_size((const rast_polygon64 *)polys, npolys, opts, &clip, &need,
-                                             failed)
-              : rast_polygons_scratch_size((const rast_polygon *)polys, npolys, opts, &clip, &need, failed);
+    if (!wide && opts && opts->algorithm == RAST_ALGO_AET && opts->boundary == RAST_BOUNDARY_EXACT) {
+        /* The AET's published bound for the largest polygon and the
+         * window's rows, instead of a pass that measures every polygon
+         * (the fill checks them all anyway; should the bound ever fall
+         * short, the fill says so before drawing and the exact size is
+         * asked for below). */
+        size_t most = 0, ring = 0;
+        uint32_t k, r;
+        for (k = 0; k < npolys; k++) {
+            size_t n = 0;
+            for (r = 0; r < poly_rings[k]; r++) n += ring_sizes[ring++];
+            if (n > most) most = n;
+        }
+        need = RAST_AET_SCRATCH_BOUND(most, height);
+        st = RAST_OK;
+    } else {
+        st = rastpy_batch_need(polys, npolys, opts, &clip, wide, &need, failed);
+    }
     scratch = st == RAST_OK ? malloc(need + 1) : NULL;
     if (st == RAST_OK && !scratch) st = (rast_status)RASTPY_E_NOMEM;
     if (st == RAST_OK) {
-        b.out = (unsigned char *)out;
-        b.row_stride = row_stride;
-        b.plane_stride = plane_stride;
-        b.x0 = x0;
-        b.y0 = y0;
-        b.values = (const unsigned char *)values;
-        b.put = rastpy_puts[dtype - 1][merge];
+        const rast_batch_span_fn span =
+            merge == RASTPY_MERGE_FRESH ? rastpy_span_fresh : rastpy_spans[dtype - 1][merge];
+        b->out = (unsigned char *)out;
+        b->row_stride = merge == RASTPY_MERGE_FRESH ? width : row_stride;
+        b->plane_stride = merge == RASTPY_MERGE_FRESH ? (int64_t)height * width : plane_stride;
+        b->x0 = x0;
+        b->y0 = y0;
+        b->values = (const unsigned char *)values;
+        b->put = merge == RASTPY_MERGE_FRESH ? NULL : rastpy_puts[dtype - 1][merge];
+        f.at = 0;
         st = wide ? rast_fill_polygons64_spans((const rast_polygon64 *)polys, npolys, opts, &clip,
-                                               rastpy_spans[dtype - 1][merge], &b, scratch, need,
-                                               failed)
-                  : rast_fill_polygons_spans((const rast_polygon *)polys, npolys, opts, &clip,
-                                             rastpy_spans[dtype - 1][merge], &b, scratch, need,
-                                             failed);
+                                               span, b, scratch, need, failed)
+                  : rast_fill_polygons_spans((const rast_polygon *)polys, npolys, opts, &clip, span,
+                                             b, scratch, need, failed);
+        if (st == RAST_E_SCRATCH) { /* (not reached while the bound holds) */
+            free(scratch);
+            st = rastpy_batch_need(polys, npolys, opts, &clip, wide, &need, failed);
+            scratch = st == RAST_OK ? malloc(need + 1) : NULL;
+            if (st == RAST_OK && !scratch) st = (rast_status)RASTPY_E_NOMEM;
+            if (st == RAST_OK)
+                st = rast_fill_polygons_spans((const rast_polygon *)polys, npolys, opts, &clip, span, b,
+                                              scratch, need, failed);
+        }
+        /* the rest of the planes after the last span */
+        if (st == RAST_OK && merge == RASTPY_MERGE_FRESH)
+            rastpy_clear(f.b.out + f.at, (size_t)npolys * (size_t)height * (size_t)width - f.at);
+#if defined(__SSE2__)
+        if (merge == RASTPY_MERGE_FRESH) _mm_sfence(); /* the streamed stores before the return */
+#endif
     }
     free(scratch);
     free(polys);

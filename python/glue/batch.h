@@ -23,6 +23,13 @@
 /* Add as GDAL's rasterizer adds (rastrum.rasterize): integers saturate at
  * their type's limits instead of wrapping; floats as RASTPY_MERGE_ADD. */
 #define RASTPY_MERGE_ADD_SAT 2
+/* Masks into an uninitialised array (rastrum.masks): every byte of the
+ * planes written once, 1 inside a polygon, 0 elsewhere, instead of
+ * clearing the array first and writing the spans into it.  Only u8 with
+ * values NULL, into C-contiguous planes (row_stride == width,
+ * plane_stride == height * width), else RAST_E_ARG; out is then written
+ * only when the call succeeds, wholly. */
+#define RASTPY_MERGE_FRESH 3
 
 /* For the glue's own files (not for cffi): snap and lay out a polygon
  * table (batch.c). */

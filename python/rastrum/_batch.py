@@ -28,7 +28,7 @@ DTYPES = {
     np.dtype(np.float64): lib.RASTPY_DT_F64,
 }
 
-MERGES = {"replace": lib.RASTPY_MERGE_REPLACE, "add": lib.RASTPY_MERGE_ADD}
+MERGES = {"replace": lib.RASTPY_MERGE_REPLACE, "add": lib.RASTPY_MERGE_ADD, "fresh": lib.RASTPY_MERGE_FRESH}
 
 
 def pack(polygons):
@@ -49,7 +49,9 @@ def burn(out, polygons, opts, values=None, merge="replace", planes=False, what="
     polygons: a list; item k is a list of C-contiguous float64 (N, 2) rings
     (already checked by the caller; rings of fewer than 3 points enclose
     nothing).  values: None (1 everywhere) or a 1-D array of out.dtype, one
-    per polygon.  merge: "replace" or "add".  planes: out is (N, H, W) and
+    per polygon.  merge: "replace", "add", or "fresh" (out uninitialised
+    uint8 or bool (N, H, W), C-contiguous, planes, no values: every byte
+    written, 1 inside polygon k in plane k, 0 elsewhere).  planes: out is (N, H, W) and
     polygon k goes into out[k]; else out is (H, W).  Errors name `what` and
     the polygon's index; out is untouched then.
     """

@@ -282,6 +282,78 @@ static void test_ss_wide(void)
 }
 #undef WW
 
+/* Rows with many runs' ends (one a column in 8 or more: the uint8_t flush
+ * then sums every column of each 64 with a mark, and fills those without
+ * one at their count) on clips of 65 to 264 columns: a comb of teeth in
+ * the first 64 columns, one tooth inside column 63 from a fraction of it
+ * (its ends there change the count of column 64, in a word of 64 with no
+ * mark) to a column far right, or to the clip's right edge; both rules,
+ * every k, each format. */
+#define DW 264
+static void test_ss_dense(void)
+{
+    int iter, n = check_count(150);
+    static uint16_t fine[16 * 2][16 * DW];
+    static uint64_t out[2][DW];
+    for (iter = 0; iter < n; iter++) {
+        int32_t kb = 1 + (int32_t)(rng() % 4), K = 1 << kb, s = 1 + (int32_t)(rng() % 3), g = 1 << s;
+        int32_t w = 65 + (int32_t)(rng() % (DW - 65)), h = 2, nq = 8 + (int32_t)(rng() % 12), q, i;
+        rast_coverage_format f = (rast_coverage_format)(rng() % 4 == 0 ? rng() % 3 : 0);
+        rast_point pts[4 * 21], big[4 * 21];
+        uint32_t sizes[21];
+        rast_polygon poly = {pts, sizes, 0}, bigp = {big, sizes, 0};
+        rast_coverage_opts o;
+        rast_fill_opts fo;
+        rast_rect clip = {0, 0, 0, 0};
+        rast_target t;
+        size_t need;
+        unsigned char *sc;
+        clip.x1 = w;
+        clip.y1 = h;
+        for (q = 0; q <= nq; q++) {
+            int32_t x0, x1, y0 = -(int32_t)(rng() % (uint32_t)g), y1 = h * g + (int32_t)(rng() % (uint32_t)g);
+            if (q < nq) { /* a tooth in the first 64 columns */
+                x0 = (int32_t)(rng() % (uint32_t)(64 * g));
+                x1 = x0 + 1 + (int32_t)(rng() % (uint32_t)(2 * g));
+            } else { /* inside column 63 to far right, or to the edge */
+                x0 = 63 * g + 1 + (int32_t)(rng() % (uint32_t)(g - 1));
+                x1 = rng() % 2 ? w * g + (int32_t)(rng() % (uint32_t)(3 * g))
+                               : x0 + 64 * g + (int32_t)(rng() % (uint32_t)(64 * g));
+            }
+            if (rng() % 2) { /* either orientation */
+                int32_t x = x0;
+                x0 = x1;
+                x1 = x;
+            }
+            pts[4 * q].x = x0;
+            pts[4 * q].y = y0;
+            pts[4 * q + 1].x = x1;
+            pts[4 * q + 1].y = y0;
+            pts[4 * q + 2].x = x1;
+            pts[4 * q + 2].y = y1;
+            pts[4 * q + 3].x = x0 + (int32_t)(rng() % 3) - 1; /* not always straight */
+            pts[4 * q + 3].y = y1;
+            sizes[q] = 4;
+        }
+        poly.nrings = bigp.nrings = (uint32_t)nq + 1;
+        for (i = 0; i < 4 * (nq + 1); i++) {
+            big[i].x = s >= kb ? pts[i].x : pts[i].x * (K >> s);
+            big[i].y = s >= kb ? pts[i].y : pts[i].y * (K >> s);
+        }
+        ss_opts(kb, s, &o, &fo);
+        memset(out, 0xA5, sizeof out);
+        CHECK(cover(&poly, NULL, 0, &o, &clip, f, &out[0][0], (ptrdiff_t)sizeof out[0]) == RAST_OK);
+        memset(fine, 0, sizeof fine);
+        CHECK(rast_target_init(&t, fine, w * K, h * K, (int32_t)sizeof fine[0],
+                               RAST_FORMAT_COUNT16) == RAST_OK);
+        CHECK(rast_scratch_size(&fo, 4 * ((uint32_t)nq + 1), w * K, h * K, &need) == RAST_OK);
+        sc = scratch_for(need);
+        CHECK(rast_fill_polygon(&t, &bigp, &fo, NULL, sc, need) == RAST_OK);
+        check_ss_image(&out[0][0], DW, w, h, f, kb, fine, sizeof fine[0], 0);
+    }
+}
+#undef DW
+
 /* A triangle batch big[0 .. 3 nt) (clip-relative, S = s) by ssK (k =
  * 2^kb) into out (the clip, rows of ow words, format f; tris[] holds the
  * batch moved to the clip) against the union of its triangles, each filled
@@ -711,6 +783,7 @@ int main(void)
     test_rectangles();
     test_ss();
     test_ss_wide();
+    test_ss_dense();
     test_ss_triangles();
     test_ss_many_triangles();
     test_mesh();

@@ -31,6 +31,7 @@ typedef struct rast__ss {
     int32_t fx0, fx1, fy0; /* the fine clip's columns and first row */
     int32_t row;           /* the output row (clip-relative); -1 before the first */
     int32_t next;          /* the first output row (clip-relative) not written yet */
+    int32_t ends;          /* runs' ends in the output row so far */
 } rast__ss;
 
 /* Pixels [k0, k1) of a clip row get value v. */
@@ -56,6 +57,36 @@ static inline void rast__ss_run(rast_coverage_format f, unsigned char *row, int3
 /* Write the output row: a marked column i is where a run's end changed
  * d[i] and d[i + 1] (rast__ss_end), so the count is constant from one
  * marked column's successor to the next marked column. */
+/* A uint8_t row with many runs' ends (one a column in 8 or more): each
+ * 64 columns with a mark summed pixel by pixel (no branch a column),
+ * those without one a memset of their count, constant there. */
+static void rast__ss_flush_dense(rast__ss *ss, unsigned char *row, int32_t w, int32_t words)
+{
+    const uint64_t *level = ss->level;
+    int32_t *d = ss->d;
+    int32_t k, i, count = 0;
+    for (k = 0; k < words; k++) {
+        const int32_t a = k * 64, b = a + 64 < w ? a + 64 : w;
+        if (a >= w) {
+            /* the marks of column w (a run's end at the clip's edge) */
+        } else if (ss->mark[k]) {
+            for (i = a; i < b; i++) {
+                count += d[i];
+                d[i] = 0;
+                row[i] = (unsigned char)level[count];
+            }
+        } else { /* constant, but for a mark at a - 1 */
+            count += d[a];
+            d[a] = 0;
+            memset(row + a, (int)level[count], (size_t)(b - a));
+        }
+        ss->mark[k] = 0;
+    }
+    /* what is left of d: column w's, a run's end at the clip's right edge
+     * (d[w + 1] stays 0: such an end is at a column's start) */
+    d[w] = 0;
+}
+
 static void rast__ss_flush(rast__ss *ss)
 {
     const rast__cov_out *o = ss->o;
@@ -65,6 +96,14 @@ static void rast__ss_flush(rast__ss *ss)
     unsigned char *row = rast__cov_row(o, y);
     int32_t *d = ss->d;
     int32_t w = o->clip.x1 - o->clip.x0, words = w / 64 + 1, k, at = 0, count = 0;
+    if (f == RAST_COVERAGE_U8 && ss->ends * 8 >= w) {
+        rast__ss_flush_dense(ss, row, w, words);
+        ss->ends = 0;
+        ss->next = ss->row + 1;
+        rast__cov_row_done(o, y);
+        return;
+    }
+    ss->ends = 0;
     for (k = 0; k < words; k++) {
         uint64_t m = ss->mark[k];
         ss->mark[k] = 0;
@@ -96,6 +135,7 @@ static inline void rast__ss_end(rast__ss *ss, int32_t x, int32_t sg)
     ss->d[i] += sg * (((int32_t)1 << kb) - f);
     ss->d[i + 1] += sg * f;
     ss->mark[i >> 6] |= (uint64_t)1 << (i & 63); /* i + 1 goes with it */
+    ss->ends++;
 }
 
 /* Runs of clip-relative fine row y come next: flush the output row before
@@ -110,23 +150,31 @@ static void rast__ss_row(rast__ss *ss, int32_t y)
     }
 }
 
-/* Fine row y's clip-relative run [x0, x1) (not empty) into the counts. */
-static void rast__ss_put(rast__ss *ss, int32_t y, int32_t x0, int32_t x1)
-{
-    rast__ss_row(ss, y);
-    rast__ss_end(ss, x0, 1);
-    rast__ss_end(ss, x1, -1);
-}
-
-/* The run [l->x, r->x) of fine row y.  (Runs that touch need not be
- * joined: their ends' differences cancel.) */
+/* The run [l->x, r->x) of fine row y (its output row begun by
+ * rast__ss_begin_row).  (Runs that touch need not be joined: their ends'
+ * differences cancel.) */
 static inline void rast__ss_span(void *user, int32_t y, const rast__edge *l, const rast__edge *r)
 {
     rast__ss *ss = (rast__ss *)user;
     int32_t x0 = l->x, x1 = r->x;
+    (void)y;
     if (x0 < ss->fx0) x0 = ss->fx0;
     if (x1 > ss->fx1) x1 = ss->fx1;
-    if (x0 < x1) rast__ss_put(ss, y - ss->fy0, x0 - ss->fx0, x1 - ss->fx0);
+    if (x0 < x1) {
+        rast__ss_end(ss, x0 - ss->fx0, 1);
+        rast__ss_end(ss, x1 - ss->fx0, -1);
+    }
+}
+
+/* Called by the walk once a fine row, before its runs (the walk's order
+ * hook, which leaves the edges as they are): the output row is begun
+ * there, not at each run. */
+static inline void rast__ss_begin_row(void *user, int32_t y, rast__edge *aet, int32_t n)
+{
+    rast__ss *ss = (rast__ss *)user;
+    (void)aet;
+    (void)n;
+    rast__ss_row(ss, y - ss->fy0);
 }
 
 /* 64-bit words of a fine row's bits (triangle batches), one spare. */
@@ -159,6 +207,7 @@ static rast_status rast__ss_begin(rast__ss *ss, int32_t kbits, const rast__cov_o
     ss->kbits = kbits;
     ss->row = -1;
     ss->next = 0;
+    ss->ends = 0;
     ss->d = (int32_t *)rast__take(arena, ((size_t)w + 2) * sizeof(int32_t));
     ss->mark = (uint64_t *)rast__take(arena, ((size_t)w / 64 + 1) * 8);
     ss->level = (uint64_t *)rast__take(arena, (((size_t)1 << (2 * kbits)) + 1) * sizeof(uint64_t));
@@ -192,7 +241,8 @@ rast_status rast__cov_ss(const rast_polygon *poly, uint32_t npoints, int32_t s,
     rast_status st = rast__grid_init(&g, s, sample, RAST_ROUND_EXACT, RAST_BOUNDARY_EXACT);
     if (st == RAST_OK) st = rast__ss_begin(&ss, kbits, o, arena, &fine);
     if (st != RAST_OK) return st;
-    st = rast__aet_walk(poly, npoints, &g, rule, &fine, arena, rast__ss_span, NULL, &ss, NULL);
+    st = rast__aet_walk(poly, npoints, &g, rule, &fine, arena, rast__ss_span, rast__ss_begin_row,
+                        &ss, NULL);
     if (st != RAST_OK) return st;
     rast__ss_finish(&ss);
     return RAST_OK;

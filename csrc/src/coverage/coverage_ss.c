@@ -166,13 +166,23 @@ static void rast__ss_row(rast__ss *ss, int32_t y)
 static inline void rast__ss_span(void *user, int32_t y, const rast__edge *l, const rast__edge *r)
 {
     rast__ss *ss = (rast__ss *)user;
+    /* (the fields read once: a store through d could be to any int32_t) */
+    const int32_t kb = ss->kbits, K = (int32_t)1 << kb, fx0 = ss->fx0, fx1 = ss->fx1;
+    int32_t *d = ss->d;
+    uint64_t *mark = ss->mark;
     int32_t x0 = l->x, x1 = r->x;
     (void)y;
-    if (x0 < ss->fx0) x0 = ss->fx0;
-    if (x1 > ss->fx1) x1 = ss->fx1;
-    if (x0 < x1) {
-        rast__ss_end(ss, x0 - ss->fx0, 1);
-        rast__ss_end(ss, x1 - ss->fx0, -1);
+    x0 = (x0 < fx0 ? fx0 : x0) - fx0;
+    x1 = (x1 > fx1 ? fx1 : x1) - fx0;
+    if (x0 < x1) { /* rast__ss_end of each end */
+        const int32_t i0 = x0 >> kb, f0 = x0 & (K - 1), i1 = x1 >> kb, f1 = x1 & (K - 1);
+        d[i0] += K - f0;
+        d[i0 + 1] += f0;
+        d[i1] -= K - f1;
+        d[i1 + 1] -= f1;
+        mark[i0 >> 6] |= (uint64_t)1 << (i0 & 63);
+        mark[i1 >> 6] |= (uint64_t)1 << (i1 & 63);
+        ss->ends += 2;
     }
 }
 

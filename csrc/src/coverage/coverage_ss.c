@@ -14,7 +14,9 @@
  * column marks the differences not 0.  Flushing an output row walks only
  * the marked columns: between two of them the count is constant, and its
  * value is written as one run (a memset for uint8_t).  A row costs its
- * runs plus a pass over its pixels at memset speed.
+ * runs plus a pass over its pixels at memset speed.  (A uint8_t row with
+ * many runs' ends is summed column by column instead, where it has marks:
+ * rast__ss_flush_dense.)
  */
 #include "coverage.h"
 #include "../fillers/aet.h"

@@ -225,6 +225,26 @@ static void check_ss_image(const uint64_t *out, int32_t ow, int32_t w, int32_t h
     }
 }
 
+/* The reference for a polygon's ssK image `out` (w x h, rows of ow
+ * words, format f): bigp (npts vertices, clip-relative, scaled by k =
+ * 2^kb) filled by fo into `fine` (cleared first; w k x h k counts, rows of
+ * fs bytes), then every value checked (check_ss_image). */
+static void check_ss_polygon(const rast_polygon *bigp, uint32_t npts, const rast_fill_opts *fo,
+                             const uint64_t *out, int32_t ow, int32_t w, int32_t h,
+                             rast_coverage_format f, int32_t kb, uint16_t *fine, size_t fs)
+{
+    const int32_t K = 1 << kb;
+    rast_target t;
+    size_t need;
+    unsigned char *sc;
+    memset(fine, 0, fs * (size_t)(h * K));
+    CHECK(rast_target_init(&t, fine, w * K, h * K, (int32_t)fs, RAST_FORMAT_COUNT16) == RAST_OK);
+    CHECK(rast_scratch_size(fo, npts, w * K, h * K, &need) == RAST_OK);
+    sc = scratch_for(need);
+    CHECK(rast_fill_polygon(&t, bigp, fo, NULL, sc, need) == RAST_OK);
+    check_ss_image(out, ow, w, h, f, kb, fine, fs, 0);
+}
+
 /* The same on a clip wider than 64 columns (the flush walks a bit per
  * column, 64 to a word) and away from the origin, in every format: the
  * runs between marked columns, their ends at the clip's edges and the
@@ -246,9 +266,6 @@ static void test_ss_wide(void)
         rast_coverage_opts o;
         rast_fill_opts fo;
         rast_rect clip;
-        rast_target t;
-        size_t need;
-        unsigned char *sc;
         clip.x0 = (int32_t)(rng() % 140) - 100;
         clip.y0 = (int32_t)(rng() % 9) - 4;
         clip.x1 = clip.x0 + WW;
@@ -268,13 +285,8 @@ static void test_ss_wide(void)
         ss_opts(kb, s, &o, &fo);
         memset(out, 0xA5, sizeof out);
         CHECK(cover(&poly, NULL, 0, &o, &clip, f, &out[0][0], (ptrdiff_t)sizeof out[0]) == RAST_OK);
-        memset(fine, 0, sizeof fine);
-        CHECK(rast_target_init(&t, fine, WW * K, h * K, (int32_t)sizeof fine[0],
-                               RAST_FORMAT_COUNT16) == RAST_OK);
-        CHECK(rast_scratch_size(&fo, size, WW * K, h * K, &need) == RAST_OK);
-        sc = scratch_for(need);
-        CHECK(rast_fill_polygon(&t, &bigp, &fo, NULL, sc, need) == RAST_OK);
-        check_ss_image(&out[0][0], WW, WW, h, f, kb, fine, sizeof fine[0], 0);
+        check_ss_polygon(&bigp, size, &fo, &out[0][0], WW, WW, h, f, kb, &fine[0][0],
+                         sizeof fine[0]);
         for (j = 0; j < h; j++) /* nothing written after the clip's last column */
             for (i = WW * fsize[f]; i < (int32_t)sizeof out[0]; i++)
                 CHECK(((const unsigned char *)out[j])[i] == 0xA5);
@@ -305,9 +317,6 @@ static void test_ss_dense(void)
         rast_coverage_opts o;
         rast_fill_opts fo;
         rast_rect clip = {0, 0, 0, 0};
-        rast_target t;
-        size_t need;
-        unsigned char *sc;
         clip.x1 = w;
         clip.y1 = h;
         for (q = 0; q <= nq; q++) {
@@ -343,13 +352,8 @@ static void test_ss_dense(void)
         ss_opts(kb, s, &o, &fo);
         memset(out, 0xA5, sizeof out);
         CHECK(cover(&poly, NULL, 0, &o, &clip, f, &out[0][0], (ptrdiff_t)sizeof out[0]) == RAST_OK);
-        memset(fine, 0, sizeof fine);
-        CHECK(rast_target_init(&t, fine, w * K, h * K, (int32_t)sizeof fine[0],
-                               RAST_FORMAT_COUNT16) == RAST_OK);
-        CHECK(rast_scratch_size(&fo, 4 * ((uint32_t)nq + 1), w * K, h * K, &need) == RAST_OK);
-        sc = scratch_for(need);
-        CHECK(rast_fill_polygon(&t, &bigp, &fo, NULL, sc, need) == RAST_OK);
-        check_ss_image(&out[0][0], DW, w, h, f, kb, fine, sizeof fine[0], 0);
+        check_ss_polygon(&bigp, 4 * ((uint32_t)nq + 1), &fo, &out[0][0], DW, w, h, f, kb,
+                         &fine[0][0], sizeof fine[0]);
     }
 }
 #undef DW

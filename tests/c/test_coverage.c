@@ -438,6 +438,83 @@ static void test_ss_triangles(void)
 }
 #undef WT
 
+/* Meshes in one batch (a jittered grid of nx x ny cells, each cut by one
+ * of its diagonals, every triangle's vertices in a random order): their
+ * inner edges, given once each way, cancel, and what is left (the
+ * outline, at most half the edges) is walked as one polygon.  Jitter
+ * large enough to fold cells over their neighbours (overlaps), now and
+ * then a triangle repeated (either way round), a degenerate one or a
+ * stray one across the mesh, vertices on sample points (S = 0) or not,
+ * meshes past the clip's edges, against the union (check_ss_batch). */
+#define WG 140
+#define HG 6
+static void test_ss_mesh(void)
+{
+    int iter, n = check_count(150);
+    static uint8_t fine[8 * HG][8 * WG];
+    static uint64_t out[HG][WG];
+    for (iter = 0; iter < n; iter++) {
+        int32_t kb = 1 + (int32_t)(rng() % 3), s = (int32_t)(rng() % 4), g = 1 << s;
+        int32_t nx = 1 + (int32_t)(rng() % 6), ny = 1 + (int32_t)(rng() % 6), i, j, k, nt = 0;
+        int32_t cw = 2 + (int32_t)(rng() % 24), ch = 1 + (int32_t)(rng() % 3);
+        int32_t jit = (int32_t)(rng() % 3) * g / 2, x0, y0, h = 1 + (int32_t)(rng() % HG);
+        rast_coverage_format f = (rast_coverage_format)(rng() % 4 == 0 ? rng() % 3 : 0);
+        rast_point grid[7][7], tris[3 * 76], big[3 * 76];
+        rast_rect clip;
+        clip.x0 = (int32_t)(rng() % 40) - 20;
+        clip.y0 = (int32_t)(rng() % 9) - 4;
+        clip.x1 = clip.x0 + WG;
+        clip.y1 = clip.y0 + h;
+        x0 = (int32_t)(rng() % (uint32_t)(40 * g)) - 20 * g;
+        y0 = (int32_t)(rng() % (uint32_t)(4 * g)) - 2 * g;
+        for (i = 0; i <= ny; i++)
+            for (j = 0; j <= nx; j++) {
+                grid[i][j].x = x0 + j * cw * g + (jit ? (int32_t)(rng() % (uint32_t)(2 * jit + 1)) - jit : 0);
+                grid[i][j].y = y0 + i * ch * g + (jit ? (int32_t)(rng() % (uint32_t)(2 * jit + 1)) - jit : 0);
+            }
+        for (i = 0; i < ny; i++)
+            for (j = 0; j < nx; j++) {
+                const rast_point a = grid[i][j], b = grid[i][j + 1], c = grid[i + 1][j + 1],
+                                 d = grid[i + 1][j];
+                rast_point q[6];
+                if (rng() % 2) {
+                    q[0] = a, q[1] = b, q[2] = c, q[3] = a, q[4] = c, q[5] = d;
+                } else {
+                    q[0] = a, q[1] = b, q[2] = d, q[3] = b, q[4] = c, q[5] = d;
+                }
+                for (k = 0; k < 2; k++) { /* its vertices in a random order */
+                    const int32_t r = (int32_t)(rng() % 3), sw = (int32_t)(rng() % 2);
+                    big[3 * nt] = q[3 * k + r];
+                    big[3 * nt + 1] = q[3 * k + (r + 1 + sw) % 3];
+                    big[3 * nt + 2] = q[3 * k + (r + 2 - sw) % 3];
+                    nt++;
+                }
+            }
+        if (rng() % 3 == 0) { /* a triangle again, either way round */
+            big[3 * nt] = big[0];
+            big[3 * nt + 1] = big[rng() % 2 ? 1 : 2];
+            big[3 * nt + 2] = big[3 * nt + 1].x == big[1].x && big[3 * nt + 1].y == big[1].y ? big[2] : big[1];
+            nt++;
+        }
+        if (rng() % 3 == 0) { /* a degenerate one on a mesh vertex */
+            big[3 * nt] = grid[0][0];
+            big[3 * nt + 1] = grid[ny][nx];
+            big[3 * nt + 2] = grid[0][0];
+            nt++;
+        }
+        if (rng() % 4 == 0) { /* a stray one across the mesh */
+            for (k = 0; k < 3; k++) {
+                big[3 * nt + k].x = x0 + (int32_t)(rng() % (uint32_t)((nx * cw + 1) * g));
+                big[3 * nt + k].y = y0 + (int32_t)(rng() % (uint32_t)((ny * ch + 1) * g));
+            }
+            nt++;
+        }
+        check_ss_batch(big, tris, nt, kb, s, f, &clip, &out[0][0], WG, &fine[0][0], sizeof fine[0]);
+    }
+}
+#undef WG
+#undef HG
+
 /* Batches of many triangles (more than 256 on an output row: the walk then
  * keeps columns covered on all k fine rows and skips triangles inside them):
  * a few wide ones across the clip's rows, many inside them (about: some
@@ -789,6 +866,7 @@ int main(void)
     test_ss_wide();
     test_ss_dense();
     test_ss_triangles();
+    test_ss_mesh();
     test_ss_many_triangles();
     test_mesh();
     test_translation();

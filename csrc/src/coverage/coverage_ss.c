@@ -270,6 +270,118 @@ rast_status rast__cov_ss(const rast_polygon *poly, uint32_t npoints, int32_t s,
     return RAST_OK;
 }
 
+/* ---- triangle batches: shared edges cancel -------------------------------
+ * Every triangle turned the same way, the batch's winding number is the
+ * sum of the triangles' and the union is where it is not 0.  An edge a->b
+ * of one triangle and b->a of another (a mesh's inner edges) cross the
+ * same rows at the same columns in opposite directions: their parts of
+ * the winding cancel at every sample, and both can go.  When most edges
+ * go so (a mesh: only its outline is left), what is left is walked as a
+ * polygon under the non-zero rule (the AET), at the cost of its outline;
+ * else the triangles are walked each on its own (below). */
+
+/* An edge as a segment from its upper end to its lower one (by y, then
+ * x) and how many times it is in the batch that way less the other way. */
+typedef struct rast__ss_seg {
+    rast_point a, b;
+    int32_t n;
+} rast__ss_seg;
+
+static inline int rast__ss_seg_eq(const rast__ss_seg *p, const rast__ss_seg *q)
+{
+    return p->a.x == q->a.x && p->a.y == q->a.y && p->b.x == q->b.x && p->b.y == q->b.y;
+}
+
+/* A segment's slot in a table of 2^bits (its ends' coordinates mixed). */
+static inline uint32_t rast__ss_seg_hash(const rast__ss_seg *p, int32_t bits)
+{
+    uint64_t h = (uint64_t)(uint32_t)p->a.x * 0x9E3779B97F4A7C15u;
+    h = (h ^ (uint32_t)p->a.y) * 0xC2B2AE3D27D4EB4Fu;
+    h = (h ^ (uint32_t)p->b.x) * 0x165667B19E3779F9u;
+    h = (h ^ (uint32_t)p->b.y) * 0x9E3779B97F4A7C15u;
+    return (uint32_t)(h >> (64 - bits));
+}
+
+/* The batch's edges less those that cancel, walked as a polygon into the
+ * counts when at most half of them are left; returns 1 then (or -1: the
+ * arena too small), else 0 with the arena as it was. */
+static int rast__ss_cancel(rast__ss *ss, const rast_point *tris, uint32_t ntris,
+                           const rast__grid *g, const rast_rect *fine, rast__arena *arena)
+{
+    const rast__arena keep = *arena;
+    rast__ss_seg *seg;
+    rast__edge *edges, *aet;
+    int32_t *bucket, *slot, i, k, m = 0, left = 0, nedges = 0, row0, row1, tbits = 1,
+                                  miny = INT32_MAX, maxy = INT32_MIN;
+    int64_t r;
+    if (ntris == 0 || ntris > (uint32_t)INT32_MAX / 3) return 0;
+    seg = (rast__ss_seg *)rast__take(arena, (size_t)ntris * 3 * sizeof *seg);
+    if (!seg) {
+        *arena = keep;
+        return 0;
+    }
+    for (i = 0; i < (int32_t)ntris * 3; i++) {
+        const rast_point p = tris[i], q = tris[i % 3 == 2 ? i - 2 : i + 1];
+        const int fwd = p.y < q.y || (p.y == q.y && p.x < q.x);
+        seg[i].a = fwd ? p : q;
+        seg[i].b = fwd ? q : p;
+        seg[i].n = fwd ? 1 : -1;
+    }
+    /* equal segments summed into the first (a hash table of indices, at
+     * most half full); those at 0 gone */
+    while (((int64_t)1 << tbits) < (int64_t)ntris * 6) tbits++;
+    slot = (int32_t *)rast__take(arena, ((size_t)1 << tbits) * sizeof *slot);
+    if (!slot) {
+        *arena = keep;
+        return 0;
+    }
+    memset(slot, 0xFF, ((size_t)1 << tbits) * sizeof *slot); /* -1: free */
+    for (i = 0; i < (int32_t)ntris * 3; i++) {
+        uint32_t h = rast__ss_seg_hash(&seg[i], tbits);
+        while (slot[h] >= 0 && !rast__ss_seg_eq(&seg[slot[h]], &seg[i]))
+            h = (h + 1) & (((uint32_t)1 << tbits) - 1);
+        if (slot[h] < 0) {
+            slot[h] = i;
+        } else {
+            seg[slot[h]].n += seg[i].n;
+            seg[i].n = 0;
+        }
+    }
+    for (i = 0; i < (int32_t)ntris * 3; i++) {
+        const int32_t n = seg[i].n;
+        if (n != 0 && seg[i].a.y != seg[i].b.y) { /* (a horizontal edge crosses no row) */
+            seg[m] = seg[i];
+            left += n < 0 ? -n : n;
+            miny = seg[m].a.y < miny ? seg[m].a.y : miny;
+            maxy = seg[m].b.y > maxy ? seg[m].b.y : maxy;
+            m++;
+        }
+    }
+    if ((int64_t)left * 2 > (int64_t)ntris * 3) {
+        *arena = keep;
+        return 0;
+    }
+    if (left == 0) return 1;
+    r = rast__row_at_or_after(2 * (int64_t)miny, g);
+    row0 = r > fine->y0 ? (int32_t)r : fine->y0;
+    r = rast__row_at_or_after(2 * (int64_t)maxy, g);
+    row1 = r < fine->y1 ? (int32_t)r : fine->y1;
+    if (row0 >= row1) return 1;
+    if (!rast__aet_tables(arena, (uint32_t)left, row0, row1, &edges, &aet, &bucket)) return -1;
+    for (i = 0; i < m; i++)
+        for (k = 0; k < (seg[i].n < 0 ? -seg[i].n : seg[i].n); k++) {
+            rast__edge *ed = &aet[nedges];
+            if (seg[i].n > 0 ? rast__edge_setup(ed, seg[i].a, seg[i].b, g, row0, row1)
+                             : rast__edge_setup(ed, seg[i].b, seg[i].a, g, row0, row1)) {
+                ed->next = nedges++;
+                bucket[ed->row - row0 + 1]++;
+            }
+        }
+    rast__aet_sweep(edges, aet, bucket, nedges, row0, row1, RAST_RULE_NONZERO, rast__ss_span,
+                    rast__ss_begin_row, ss);
+    return 1;
+}
+
 /* ---- triangle batches ----------------------------------------------------
  * The union of the triangles, each walked on its own: a sample is inside
  * the union (non-zero, every triangle turned the same way) iff it is inside
@@ -488,6 +600,12 @@ rast_status rast__cov_ss_tris(const rast_point *tris, uint32_t ntris, int32_t s,
     rast_status st = rast__grid_init(&g, s, sample, RAST_ROUND_EXACT, RAST_BOUNDARY_EXACT);
     if (st == RAST_OK) st = rast__ss_begin(&ss, kbits, o, arena, &fine);
     if (st != RAST_OK) return st;
+    j = rast__ss_cancel(&ss, tris, ntris, &g, &fine, arena);
+    if (j < 0) return RAST_E_SCRATCH;
+    if (j > 0) {
+        rast__ss_finish(&ss);
+        return RAST_OK;
+    }
     rows = fine.y1 - fine.y0;
     wpr = rast__ss_bitwords(o->clip.x1 - o->clip.x0, kbits);
     /* within the room of the AET's tables (two edge records per vertex):

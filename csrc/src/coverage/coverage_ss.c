@@ -303,8 +303,10 @@ static inline uint32_t rast__ss_seg_hash(const rast__ss_seg *p, int32_t bits)
 }
 
 /* The batch's edges less those that cancel, walked as a polygon into the
- * counts when at most half of them are left; returns 1 then (or -1: the
- * arena too small), else 0 with the arena as it was. */
+ * counts when at most half of them are left; returns 1 then, else 0 with
+ * the arena as it was.  (Its memory, the segments, the table and the
+ * AET's for at most 3 ntris / 2 edges, is less than the AET's for 3 ntris
+ * edges that the scratch holds.) */
 static int rast__ss_cancel(rast__ss *ss, const rast_point *tris, uint32_t ntris,
                            const rast__grid *g, const rast_rect *fine, rast__arena *arena)
 {
@@ -367,7 +369,10 @@ static int rast__ss_cancel(rast__ss *ss, const rast_point *tris, uint32_t ntris,
     r = rast__row_at_or_after(2 * (int64_t)maxy, g);
     row1 = r < fine->y1 ? (int32_t)r : fine->y1;
     if (row0 >= row1) return 1;
-    if (!rast__aet_tables(arena, (uint32_t)left, row0, row1, &edges, &aet, &bucket)) return -1;
+    if (!rast__aet_tables(arena, (uint32_t)left, row0, row1, &edges, &aet, &bucket)) {
+        *arena = keep; /* (it fits: the triangles' own walk then says so) */
+        return 0;
+    }
     for (i = 0; i < m; i++)
         for (k = 0; k < (seg[i].n < 0 ? -seg[i].n : seg[i].n); k++) {
             rast__edge *ed = &aet[nedges];
@@ -600,9 +605,7 @@ rast_status rast__cov_ss_tris(const rast_point *tris, uint32_t ntris, int32_t s,
     rast_status st = rast__grid_init(&g, s, sample, RAST_ROUND_EXACT, RAST_BOUNDARY_EXACT);
     if (st == RAST_OK) st = rast__ss_begin(&ss, kbits, o, arena, &fine);
     if (st != RAST_OK) return st;
-    j = rast__ss_cancel(&ss, tris, ntris, &g, &fine, arena);
-    if (j < 0) return RAST_E_SCRATCH;
-    if (j > 0) {
+    if (rast__ss_cancel(&ss, tris, ntris, &g, &fine, arena)) {
         rast__ss_finish(&ss);
         return RAST_OK;
     }

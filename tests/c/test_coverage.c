@@ -225,6 +225,26 @@ static void check_ss_image(const uint64_t *out, int32_t ow, int32_t w, int32_t h
     }
 }
 
+/* The reference for a polygon's ssK image `out` (w x h, rows of ow
+ * words, format f): bigp (npts vertices, clip-relative, scaled by k =
+ * 2^kb) filled by fo into `fine` (cleared first; w k x h k counts, rows of
+ * fs bytes), then every value checked (check_ss_image). */
+static void check_ss_polygon(const rast_polygon *bigp, uint32_t npts, const rast_fill_opts *fo,
+                             const uint64_t *out, int32_t ow, int32_t w, int32_t h,
+                             rast_coverage_format f, int32_t kb, uint16_t *fine, size_t fs)
+{
+    const int32_t K = 1 << kb;
+    rast_target t;
+    size_t need;
+    unsigned char *sc;
+    memset(fine, 0, fs * (size_t)(h * K));
+    CHECK(rast_target_init(&t, fine, w * K, h * K, (int32_t)fs, RAST_FORMAT_COUNT16) == RAST_OK);
+    CHECK(rast_scratch_size(fo, npts, w * K, h * K, &need) == RAST_OK);
+    sc = scratch_for(need);
+    CHECK(rast_fill_polygon(&t, bigp, fo, NULL, sc, need) == RAST_OK);
+    check_ss_image(out, ow, w, h, f, kb, fine, fs, 0);
+}
+
 /* The same on a clip wider than 64 columns (the flush walks a bit per
  * column, 64 to a word) and away from the origin, in every format: the
  * runs between marked columns, their ends at the clip's edges and the
@@ -246,9 +266,6 @@ static void test_ss_wide(void)
         rast_coverage_opts o;
         rast_fill_opts fo;
         rast_rect clip;
-        rast_target t;
-        size_t need;
-        unsigned char *sc;
         clip.x0 = (int32_t)(rng() % 140) - 100;
         clip.y0 = (int32_t)(rng() % 9) - 4;
         clip.x1 = clip.x0 + WW;
@@ -268,19 +285,78 @@ static void test_ss_wide(void)
         ss_opts(kb, s, &o, &fo);
         memset(out, 0xA5, sizeof out);
         CHECK(cover(&poly, NULL, 0, &o, &clip, f, &out[0][0], (ptrdiff_t)sizeof out[0]) == RAST_OK);
-        memset(fine, 0, sizeof fine);
-        CHECK(rast_target_init(&t, fine, WW * K, h * K, (int32_t)sizeof fine[0],
-                               RAST_FORMAT_COUNT16) == RAST_OK);
-        CHECK(rast_scratch_size(&fo, size, WW * K, h * K, &need) == RAST_OK);
-        sc = scratch_for(need);
-        CHECK(rast_fill_polygon(&t, &bigp, &fo, NULL, sc, need) == RAST_OK);
-        check_ss_image(&out[0][0], WW, WW, h, f, kb, fine, sizeof fine[0], 0);
+        check_ss_polygon(&bigp, size, &fo, &out[0][0], WW, WW, h, f, kb, &fine[0][0],
+                         sizeof fine[0]);
         for (j = 0; j < h; j++) /* nothing written after the clip's last column */
             for (i = WW * fsize[f]; i < (int32_t)sizeof out[0]; i++)
                 CHECK(((const unsigned char *)out[j])[i] == 0xA5);
     }
 }
 #undef WW
+
+/* Rows with many runs' ends (one a column in 8 or more: the uint8_t flush
+ * then sums every column of each 64 with a mark, and fills those without
+ * one at their count) on clips of 65 to 264 columns: a comb of teeth in
+ * the first 64 columns, one tooth inside column 63 from a fraction of it
+ * (its ends there change the count of column 64, in a word of 64 with no
+ * mark) to a column far right, or to the clip's right edge; both rules,
+ * every k, each format. */
+#define DW 264
+static void test_ss_dense(void)
+{
+    int iter, n = check_count(150);
+    static uint16_t fine[16 * 2][16 * DW];
+    static uint64_t out[2][DW];
+    for (iter = 0; iter < n; iter++) {
+        int32_t kb = 1 + (int32_t)(rng() % 4), K = 1 << kb, s = 1 + (int32_t)(rng() % 3), g = 1 << s;
+        int32_t w = 65 + (int32_t)(rng() % (DW - 65)), h = 2, nq = 8 + (int32_t)(rng() % 12), q, i;
+        rast_coverage_format f = (rast_coverage_format)(rng() % 4 == 0 ? rng() % 3 : 0);
+        rast_point pts[4 * 21], big[4 * 21];
+        uint32_t sizes[21];
+        rast_polygon poly = {pts, sizes, 0}, bigp = {big, sizes, 0};
+        rast_coverage_opts o;
+        rast_fill_opts fo;
+        rast_rect clip = {0, 0, 0, 0};
+        clip.x1 = w;
+        clip.y1 = h;
+        for (q = 0; q <= nq; q++) {
+            int32_t x0, x1, y0 = -(int32_t)(rng() % (uint32_t)g), y1 = h * g + (int32_t)(rng() % (uint32_t)g);
+            if (q < nq) { /* a tooth in the first 64 columns */
+                x0 = (int32_t)(rng() % (uint32_t)(64 * g));
+                x1 = x0 + 1 + (int32_t)(rng() % (uint32_t)(2 * g));
+            } else { /* inside column 63 to far right, or to the edge */
+                x0 = 63 * g + 1 + (int32_t)(rng() % (uint32_t)(g - 1));
+                x1 = rng() % 2 ? w * g + (int32_t)(rng() % (uint32_t)(3 * g))
+                               : x0 + 64 * g + (int32_t)(rng() % (uint32_t)(64 * g));
+            }
+            if (rng() % 2) { /* either orientation */
+                int32_t x = x0;
+                x0 = x1;
+                x1 = x;
+            }
+            pts[4 * q].x = x0;
+            pts[4 * q].y = y0;
+            pts[4 * q + 1].x = x1;
+            pts[4 * q + 1].y = y0;
+            pts[4 * q + 2].x = x1;
+            pts[4 * q + 2].y = y1;
+            pts[4 * q + 3].x = x0 + (int32_t)(rng() % 3) - 1; /* not always straight */
+            pts[4 * q + 3].y = y1;
+            sizes[q] = 4;
+        }
+        poly.nrings = bigp.nrings = (uint32_t)nq + 1;
+        for (i = 0; i < 4 * (nq + 1); i++) {
+            big[i].x = s >= kb ? pts[i].x : pts[i].x * (K >> s);
+            big[i].y = s >= kb ? pts[i].y : pts[i].y * (K >> s);
+        }
+        ss_opts(kb, s, &o, &fo);
+        memset(out, 0xA5, sizeof out);
+        CHECK(cover(&poly, NULL, 0, &o, &clip, f, &out[0][0], (ptrdiff_t)sizeof out[0]) == RAST_OK);
+        check_ss_polygon(&bigp, 4 * ((uint32_t)nq + 1), &fo, &out[0][0], DW, w, h, f, kb,
+                         &fine[0][0], sizeof fine[0]);
+    }
+}
+#undef DW
 
 /* A triangle batch big[0 .. 3 nt) (clip-relative, S = s) by ssK (k =
  * 2^kb) into out (the clip, rows of ow words, format f; tris[] holds the
@@ -361,6 +437,83 @@ static void test_ss_triangles(void)
     }
 }
 #undef WT
+
+/* Meshes in one batch (a jittered grid of nx x ny cells, each cut by one
+ * of its diagonals, every triangle's vertices in a random order): their
+ * inner edges, given once each way, cancel, and what is left (the
+ * outline, at most half the edges) is walked as one polygon.  Jitter
+ * large enough to fold cells over their neighbours (overlaps), now and
+ * then a triangle repeated (either way round), a degenerate one or a
+ * stray one across the mesh, vertices on sample points (S = 0) or not,
+ * meshes past the clip's edges, against the union (check_ss_batch). */
+#define WG 140
+#define HG 6
+static void test_ss_mesh(void)
+{
+    int iter, n = check_count(150);
+    static uint8_t fine[8 * HG][8 * WG];
+    static uint64_t out[HG][WG];
+    for (iter = 0; iter < n; iter++) {
+        int32_t kb = 1 + (int32_t)(rng() % 3), s = (int32_t)(rng() % 4), g = 1 << s;
+        int32_t nx = 1 + (int32_t)(rng() % 6), ny = 1 + (int32_t)(rng() % 6), i, j, k, nt = 0;
+        int32_t cw = 2 + (int32_t)(rng() % 24), ch = 1 + (int32_t)(rng() % 3);
+        int32_t jit = (int32_t)(rng() % 3) * g / 2, x0, y0, h = 1 + (int32_t)(rng() % HG);
+        rast_coverage_format f = (rast_coverage_format)(rng() % 4 == 0 ? rng() % 3 : 0);
+        rast_point grid[7][7], tris[3 * 76], big[3 * 76];
+        rast_rect clip;
+        clip.x0 = (int32_t)(rng() % 40) - 20;
+        clip.y0 = (int32_t)(rng() % 9) - 4;
+        clip.x1 = clip.x0 + WG;
+        clip.y1 = clip.y0 + h;
+        x0 = (int32_t)(rng() % (uint32_t)(40 * g)) - 20 * g;
+        y0 = (int32_t)(rng() % (uint32_t)(4 * g)) - 2 * g;
+        for (i = 0; i <= ny; i++)
+            for (j = 0; j <= nx; j++) {
+                grid[i][j].x = x0 + j * cw * g + (jit ? (int32_t)(rng() % (uint32_t)(2 * jit + 1)) - jit : 0);
+                grid[i][j].y = y0 + i * ch * g + (jit ? (int32_t)(rng() % (uint32_t)(2 * jit + 1)) - jit : 0);
+            }
+        for (i = 0; i < ny; i++)
+            for (j = 0; j < nx; j++) {
+                const rast_point a = grid[i][j], b = grid[i][j + 1], c = grid[i + 1][j + 1],
+                                 d = grid[i + 1][j];
+                rast_point q[6];
+                if (rng() % 2) {
+                    q[0] = a, q[1] = b, q[2] = c, q[3] = a, q[4] = c, q[5] = d;
+                } else {
+                    q[0] = a, q[1] = b, q[2] = d, q[3] = b, q[4] = c, q[5] = d;
+                }
+                for (k = 0; k < 2; k++) { /* its vertices in a random order */
+                    const int32_t r = (int32_t)(rng() % 3), sw = (int32_t)(rng() % 2);
+                    big[3 * nt] = q[3 * k + r];
+                    big[3 * nt + 1] = q[3 * k + (r + 1 + sw) % 3];
+                    big[3 * nt + 2] = q[3 * k + (r + 2 - sw) % 3];
+                    nt++;
+                }
+            }
+        if (rng() % 3 == 0) { /* a triangle again, either way round */
+            big[3 * nt] = big[0];
+            big[3 * nt + 1] = big[rng() % 2 ? 1 : 2];
+            big[3 * nt + 2] = big[3 * nt + 1].x == big[1].x && big[3 * nt + 1].y == big[1].y ? big[2] : big[1];
+            nt++;
+        }
+        if (rng() % 3 == 0) { /* a degenerate one on a mesh vertex */
+            big[3 * nt] = grid[0][0];
+            big[3 * nt + 1] = grid[ny][nx];
+            big[3 * nt + 2] = grid[0][0];
+            nt++;
+        }
+        if (rng() % 4 == 0) { /* a stray one across the mesh */
+            for (k = 0; k < 3; k++) {
+                big[3 * nt + k].x = x0 + (int32_t)(rng() % (uint32_t)((nx * cw + 1) * g));
+                big[3 * nt + k].y = y0 + (int32_t)(rng() % (uint32_t)((ny * ch + 1) * g));
+            }
+            nt++;
+        }
+        check_ss_batch(big, tris, nt, kb, s, f, &clip, &out[0][0], WG, &fine[0][0], sizeof fine[0]);
+    }
+}
+#undef WG
+#undef HG
 
 /* Batches of many triangles (more than 256 on an output row: the walk then
  * keeps columns covered on all k fine rows and skips triangles inside them):
@@ -711,7 +864,9 @@ int main(void)
     test_rectangles();
     test_ss();
     test_ss_wide();
+    test_ss_dense();
     test_ss_triangles();
+    test_ss_mesh();
     test_ss_many_triangles();
     test_mesh();
     test_translation();

@@ -15,7 +15,9 @@
  *    and (even-odd) reversing its rings, gives the same bytes;
  *  - triangle batches also many times over (copies drawn in toward their
  *    centres), so that hundreds are active on a row, the walk's way with
- *    many (columns covered on every fine row, triangles inside skipped);
+ *    many (columns covered on every fine row, triangles inside skipped),
+ *    or made into a ladder mesh whose inner edges cancel (ssK then walks
+ *    its outline as a polygon);
  *  - rast_polygon_coverage_spans and rast_triangles_coverage_spans
  *    (uint8): the same values, in ordered runs of values not 0 inside the
  *    clip;
@@ -252,12 +254,39 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
                 }
             tris = many;
             ntris *= reps;
+        } else if (ntris >= 4 && fz_u8(&in) & 1 && !in.out_of_range) {
+            /* a ladder mesh: columns of two vertices (the points by pairs,
+             * sorted by x, the upper one above), each two neighbours a quad
+             * cut by one of its diagonals: its inner edges come once each
+             * way and cancel, the outline is left */
+            uint32_t m = ntris / 2, c, col[MAXPTS], t;
+            for (c = 0; c <= m; c++)
+                for (t = c, col[c] = c; t > 0 && pts[2 * col[t - 1]].x > pts[2 * c].x; t--) {
+                    col[t] = col[t - 1];
+                    col[t - 1] = c;
+                }
+            for (c = 0; c < m; c++) {
+                rast_point q[4], *v = &many[6 * c];
+                for (t = 0; t < 2; t++) {
+                    const rast_point a = pts[2 * col[c + t]], b = pts[2 * col[c + t] + 1];
+                    q[t].x = q[3 - t].x = a.x; /* q: upper left, upper right, lower right, lower left */
+                    q[t].y = a.y < b.y ? a.y : b.y;
+                    q[3 - t].y = a.y < b.y ? b.y : a.y;
+                }
+                t = fz_u8(&in) & 1;
+                v[0] = q[0], v[1] = q[1], v[2] = q[t ? 2 : 3];
+                v[3] = q[t ? 0 : 1], v[4] = q[2], v[5] = q[3];
+            }
+            tris = many;
+            ntris = 2 * m;
         }
     }
-    for (k = 0; k < npts && scale; k++)
-        if (fz_in_range(pts[k]) && (pts[k].x > RAST_COORD_MAX >> scale || pts[k].x < -(RAST_COORD_MAX >> scale) ||
-                                    pts[k].y > RAST_COORD_MAX >> scale || pts[k].y < -(RAST_COORD_MAX >> scale)))
+    for (k = 0; k < (shape == 2 ? 3 * ntris : npts) && scale; k++) { /* the points passed */
+        const rast_point p = shape == 2 ? tris[k] : pts[k];
+        if (fz_in_range(p) && (p.x > RAST_COORD_MAX >> scale || p.x < -(RAST_COORD_MAX >> scale) ||
+                               p.y > RAST_COORD_MAX >> scale || p.y < -(RAST_COORD_MAX >> scale)))
             scaled_out = 1;
+    }
     pg.points = pts;
     pg.ring_sizes = rings;
     pg.nrings = nrings;

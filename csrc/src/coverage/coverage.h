@@ -213,8 +213,10 @@ rast_status rast__cov_ss(const rast_polygon *poly, uint32_t npoints, int32_t s,
                          const rast__cov_out *o, rast__arena *arena);
 
 /* The same for the union of ntris triangles tris[3k..3k+2] on the fine
- * grid (turned one way, none degenerate), each walked on its own instead
- * of through the AET.  Scratch as rast__cov_ss_scratch(3 ntris, ...). */
+ * grid (turned one way, none degenerate): the edges left once those given
+ * both ways cancel through the AET when they are few (a mesh's outline),
+ * else each triangle walked on its own.  Scratch as
+ * rast__cov_ss_scratch(3 ntris, ...). */
 rast_status rast__cov_ss_tris(const rast_point *tris, uint32_t ntris, int32_t s, int32_t kbits,
                               rast_sample sample, const rast__cov_out *o, rast__arena *arena);
 

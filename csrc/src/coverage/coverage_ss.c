@@ -14,7 +14,9 @@
  * column marks the differences not 0.  Flushing an output row walks only
  * the marked columns: between two of them the count is constant, and its
  * value is written as one run (a memset for uint8_t).  A row costs its
- * runs plus a pass over its pixels at memset speed.
+ * runs plus a pass over its pixels at memset speed.  (A uint8_t row with
+ * many runs' ends is summed column by column instead, where it has marks:
+ * rast__ss_flush_dense.)
  */
 #include "coverage.h"
 #include "../fillers/aet.h"
@@ -31,6 +33,7 @@ typedef struct rast__ss {
     int32_t fx0, fx1, fy0; /* the fine clip's columns and first row */
     int32_t row;           /* the output row (clip-relative); -1 before the first */
     int32_t next;          /* the first output row (clip-relative) not written yet */
+    int32_t ends;          /* runs' ends in the output row so far */
 } rast__ss;
 
 /* Pixels [k0, k1) of a clip row get value v. */
@@ -56,6 +59,46 @@ static inline void rast__ss_run(rast_coverage_format f, unsigned char *row, int3
 /* Write the output row: a marked column i is where a run's end changed
  * d[i] and d[i + 1] (rast__ss_end), so the count is constant from one
  * marked column's successor to the next marked column. */
+/* A uint8_t row with many runs' ends (one a column in 8 or more): each
+ * 64 columns with a mark summed pixel by pixel (no branch a column),
+ * those without one a memset of their count, constant there. */
+static void rast__ss_flush_dense(rast__ss *ss, unsigned char *row, int32_t w, int32_t words)
+{
+    const uint64_t *level = ss->level;
+    int32_t *d = ss->d;
+    int32_t k, i, count = 0;
+    for (k = 0; k < words; k++) {
+        const int32_t a = k * 64, b = a + 64 < w ? a + 64 : w;
+        if (a >= w) {
+            /* the marks of column w (a run's end at the clip's edge) */
+        } else if (ss->mark[k]) {
+            /* four columns a step (the counts one after the other in
+             * registers), then the differences cleared at once */
+            for (i = a; i + 4 <= b; i += 4) {
+                const int32_t c0 = count + d[i], c1 = c0 + d[i + 1], c2 = c1 + d[i + 2];
+                count = c2 + d[i + 3];
+                row[i] = (unsigned char)level[c0];
+                row[i + 1] = (unsigned char)level[c1];
+                row[i + 2] = (unsigned char)level[c2];
+                row[i + 3] = (unsigned char)level[count];
+            }
+            for (; i < b; i++) {
+                count += d[i];
+                row[i] = (unsigned char)level[count];
+            }
+            memset(d + a, 0, (size_t)(b - a) * sizeof *d);
+        } else { /* constant, but for a mark at a - 1 */
+            count += d[a];
+            d[a] = 0;
+            memset(row + a, (int)level[count], (size_t)(b - a));
+        }
+        ss->mark[k] = 0;
+    }
+    /* what is left of d: column w's, a run's end at the clip's right edge
+     * (d[w + 1] stays 0: such an end is at a column's start) */
+    d[w] = 0;
+}
+
 static void rast__ss_flush(rast__ss *ss)
 {
     const rast__cov_out *o = ss->o;
@@ -65,6 +108,14 @@ static void rast__ss_flush(rast__ss *ss)
     unsigned char *row = rast__cov_row(o, y);
     int32_t *d = ss->d;
     int32_t w = o->clip.x1 - o->clip.x0, words = w / 64 + 1, k, at = 0, count = 0;
+    if (f == RAST_COVERAGE_U8 && (int64_t)ss->ends * 8 >= w) {
+        rast__ss_flush_dense(ss, row, w, words);
+        ss->ends = 0;
+        ss->next = ss->row + 1;
+        rast__cov_row_done(o, y);
+        return;
+    }
+    ss->ends = 0;
     for (k = 0; k < words; k++) {
         uint64_t m = ss->mark[k];
         ss->mark[k] = 0;
@@ -96,6 +147,7 @@ static inline void rast__ss_end(rast__ss *ss, int32_t x, int32_t sg)
     ss->d[i] += sg * (((int32_t)1 << kb) - f);
     ss->d[i + 1] += sg * f;
     ss->mark[i >> 6] |= (uint64_t)1 << (i & 63); /* i + 1 goes with it */
+    ss->ends++;
 }
 
 /* Runs of clip-relative fine row y come next: flush the output row before
@@ -110,23 +162,41 @@ static void rast__ss_row(rast__ss *ss, int32_t y)
     }
 }
 
-/* Fine row y's clip-relative run [x0, x1) (not empty) into the counts. */
-static void rast__ss_put(rast__ss *ss, int32_t y, int32_t x0, int32_t x1)
-{
-    rast__ss_row(ss, y);
-    rast__ss_end(ss, x0, 1);
-    rast__ss_end(ss, x1, -1);
-}
-
-/* The run [l->x, r->x) of fine row y.  (Runs that touch need not be
- * joined: their ends' differences cancel.) */
+/* The run [l->x, r->x) of fine row y (its output row begun by
+ * rast__ss_begin_row).  (Runs that touch need not be joined: their ends'
+ * differences cancel.) */
 static inline void rast__ss_span(void *user, int32_t y, const rast__edge *l, const rast__edge *r)
 {
     rast__ss *ss = (rast__ss *)user;
+    /* (the fields read once: a store through d could be to any int32_t) */
+    const int32_t kb = ss->kbits, K = (int32_t)1 << kb, fx0 = ss->fx0, fx1 = ss->fx1;
+    int32_t *d = ss->d;
+    uint64_t *mark = ss->mark;
     int32_t x0 = l->x, x1 = r->x;
-    if (x0 < ss->fx0) x0 = ss->fx0;
-    if (x1 > ss->fx1) x1 = ss->fx1;
-    if (x0 < x1) rast__ss_put(ss, y - ss->fy0, x0 - ss->fx0, x1 - ss->fx0);
+    (void)y;
+    x0 = (x0 < fx0 ? fx0 : x0) - fx0;
+    x1 = (x1 > fx1 ? fx1 : x1) - fx0;
+    if (x0 < x1) { /* rast__ss_end of each end */
+        const int32_t i0 = x0 >> kb, f0 = x0 & (K - 1), i1 = x1 >> kb, f1 = x1 & (K - 1);
+        d[i0] += K - f0;
+        d[i0 + 1] += f0;
+        d[i1] -= K - f1;
+        d[i1 + 1] -= f1;
+        mark[i0 >> 6] |= (uint64_t)1 << (i0 & 63);
+        mark[i1 >> 6] |= (uint64_t)1 << (i1 & 63);
+        ss->ends += 2;
+    }
+}
+
+/* Called by the walk once a fine row, before its runs (the walk's order
+ * hook, which leaves the edges as they are): the output row is begun
+ * there, not at each run. */
+static inline void rast__ss_begin_row(void *user, int32_t y, rast__edge *aet, int32_t n)
+{
+    rast__ss *ss = (rast__ss *)user;
+    (void)aet;
+    (void)n;
+    rast__ss_row(ss, y - ss->fy0);
 }
 
 /* 64-bit words of a fine row's bits (triangle batches), one spare. */
@@ -159,6 +229,7 @@ static rast_status rast__ss_begin(rast__ss *ss, int32_t kbits, const rast__cov_o
     ss->kbits = kbits;
     ss->row = -1;
     ss->next = 0;
+    ss->ends = 0;
     ss->d = (int32_t *)rast__take(arena, ((size_t)w + 2) * sizeof(int32_t));
     ss->mark = (uint64_t *)rast__take(arena, ((size_t)w / 64 + 1) * 8);
     ss->level = (uint64_t *)rast__take(arena, (((size_t)1 << (2 * kbits)) + 1) * sizeof(uint64_t));
@@ -192,10 +263,128 @@ rast_status rast__cov_ss(const rast_polygon *poly, uint32_t npoints, int32_t s,
     rast_status st = rast__grid_init(&g, s, sample, RAST_ROUND_EXACT, RAST_BOUNDARY_EXACT);
     if (st == RAST_OK) st = rast__ss_begin(&ss, kbits, o, arena, &fine);
     if (st != RAST_OK) return st;
-    st = rast__aet_walk(poly, npoints, &g, rule, &fine, arena, rast__ss_span, NULL, &ss, NULL);
+    st = rast__aet_walk(poly, npoints, &g, rule, &fine, arena, rast__ss_span, rast__ss_begin_row,
+                        &ss, NULL);
     if (st != RAST_OK) return st;
     rast__ss_finish(&ss);
     return RAST_OK;
+}
+
+/* ---- triangle batches: shared edges cancel -------------------------------
+ * Every triangle turned the same way, the batch's winding number is the
+ * sum of the triangles' and the union is where it is not 0.  An edge a->b
+ * of one triangle and b->a of another (a mesh's inner edges) cross the
+ * same rows at the same columns in opposite directions: their parts of
+ * the winding cancel at every sample, and both can go.  When most edges
+ * go so (a mesh: only its outline is left), what is left is walked as a
+ * polygon under the non-zero rule (the AET), at the cost of its outline;
+ * else the triangles are walked each on its own (below). */
+
+/* An edge as a segment from its upper end to its lower one (by y, then
+ * x) and how many times it is in the batch that way less the other way. */
+typedef struct rast__ss_seg {
+    rast_point a, b;
+    int32_t n;
+} rast__ss_seg;
+
+static inline int rast__ss_seg_eq(const rast__ss_seg *p, const rast__ss_seg *q)
+{
+    return p->a.x == q->a.x && p->a.y == q->a.y && p->b.x == q->b.x && p->b.y == q->b.y;
+}
+
+/* A segment's slot in a table of 2^bits (its ends' coordinates mixed). */
+static inline uint32_t rast__ss_seg_hash(const rast__ss_seg *p, int32_t bits)
+{
+    uint64_t h = (uint64_t)(uint32_t)p->a.x * 0x9E3779B97F4A7C15u;
+    h = (h ^ (uint32_t)p->a.y) * 0xC2B2AE3D27D4EB4Fu;
+    h = (h ^ (uint32_t)p->b.x) * 0x165667B19E3779F9u;
+    h = (h ^ (uint32_t)p->b.y) * 0x9E3779B97F4A7C15u;
+    return (uint32_t)(h >> (64 - bits));
+}
+
+/* The batch's edges less those that cancel, walked as a polygon into the
+ * counts when at most half of them are left; returns 1 then, else 0 with
+ * the arena as it was.  (Its memory, the segments, the table and the
+ * AET's for at most 3 ntris / 2 edges, is less than the AET's for 3 ntris
+ * edges that the scratch holds.) */
+static int rast__ss_cancel(rast__ss *ss, const rast_point *tris, uint32_t ntris,
+                           const rast__grid *g, const rast_rect *fine, rast__arena *arena)
+{
+    const rast__arena keep = *arena;
+    rast__ss_seg *seg;
+    rast__edge *edges, *aet;
+    int32_t *bucket, *slot, i, k, m = 0, left = 0, nedges = 0, row0, row1, tbits = 1,
+                                  miny = INT32_MAX, maxy = INT32_MIN;
+    int64_t r;
+    if (ntris == 0 || ntris > (uint32_t)INT32_MAX / 3) return 0;
+    seg = (rast__ss_seg *)rast__take(arena, (size_t)ntris * 3 * sizeof *seg);
+    if (!seg) {
+        *arena = keep;
+        return 0;
+    }
+    for (i = 0; i < (int32_t)ntris * 3; i++) {
+        const rast_point p = tris[i], q = tris[i % 3 == 2 ? i - 2 : i + 1];
+        const int fwd = p.y < q.y || (p.y == q.y && p.x < q.x);
+        seg[i].a = fwd ? p : q;
+        seg[i].b = fwd ? q : p;
+        seg[i].n = fwd ? 1 : -1;
+    }
+    /* equal segments summed into the first (a hash table of indices, at
+     * most half full); those at 0 gone */
+    while (((int64_t)1 << tbits) < (int64_t)ntris * 6) tbits++;
+    slot = (int32_t *)rast__take(arena, ((size_t)1 << tbits) * sizeof *slot);
+    if (!slot) {
+        *arena = keep;
+        return 0;
+    }
+    memset(slot, 0xFF, ((size_t)1 << tbits) * sizeof *slot); /* -1: free */
+    for (i = 0; i < (int32_t)ntris * 3; i++) {
+        uint32_t h = rast__ss_seg_hash(&seg[i], tbits);
+        while (slot[h] >= 0 && !rast__ss_seg_eq(&seg[slot[h]], &seg[i]))
+            h = (h + 1) & (((uint32_t)1 << tbits) - 1);
+        if (slot[h] < 0) {
+            slot[h] = i;
+        } else {
+            seg[slot[h]].n += seg[i].n;
+            seg[i].n = 0;
+        }
+    }
+    for (i = 0; i < (int32_t)ntris * 3; i++) {
+        const int32_t n = seg[i].n;
+        if (n != 0 && seg[i].a.y != seg[i].b.y) { /* (a horizontal edge crosses no row) */
+            seg[m] = seg[i];
+            left += n < 0 ? -n : n;
+            miny = seg[m].a.y < miny ? seg[m].a.y : miny;
+            maxy = seg[m].b.y > maxy ? seg[m].b.y : maxy;
+            m++;
+        }
+    }
+    if ((int64_t)left * 2 > (int64_t)ntris * 3) {
+        *arena = keep;
+        return 0;
+    }
+    if (left == 0) return 1;
+    r = rast__row_at_or_after(2 * (int64_t)miny, g);
+    row0 = r > fine->y0 ? (int32_t)r : fine->y0;
+    r = rast__row_at_or_after(2 * (int64_t)maxy, g);
+    row1 = r < fine->y1 ? (int32_t)r : fine->y1;
+    if (row0 >= row1) return 1;
+    if (!rast__aet_tables(arena, (uint32_t)left, row0, row1, &edges, &aet, &bucket)) {
+        *arena = keep; /* (it fits: the triangles' own walk then says so) */
+        return 0;
+    }
+    for (i = 0; i < m; i++)
+        for (k = 0; k < (seg[i].n < 0 ? -seg[i].n : seg[i].n); k++) {
+            rast__edge *ed = &aet[nedges];
+            if (seg[i].n > 0 ? rast__edge_setup(ed, seg[i].a, seg[i].b, g, row0, row1)
+                             : rast__edge_setup(ed, seg[i].b, seg[i].a, g, row0, row1)) {
+                ed->next = nedges++;
+                bucket[ed->row - row0 + 1]++;
+            }
+        }
+    rast__aet_sweep(edges, aet, bucket, nedges, row0, row1, RAST_RULE_NONZERO, rast__ss_span,
+                    rast__ss_begin_row, ss);
+    return 1;
 }
 
 /* ---- triangle batches ----------------------------------------------------
@@ -416,6 +605,10 @@ rast_status rast__cov_ss_tris(const rast_point *tris, uint32_t ntris, int32_t s,
     rast_status st = rast__grid_init(&g, s, sample, RAST_ROUND_EXACT, RAST_BOUNDARY_EXACT);
     if (st == RAST_OK) st = rast__ss_begin(&ss, kbits, o, arena, &fine);
     if (st != RAST_OK) return st;
+    if (rast__ss_cancel(&ss, tris, ntris, &g, &fine, arena)) {
+        rast__ss_finish(&ss);
+        return RAST_OK;
+    }
     rows = fine.y1 - fine.y0;
     wpr = rast__ss_bitwords(o->clip.x1 - o->clip.x0, kbits);
     /* within the room of the AET's tables (two edge records per vertex):

@@ -68,6 +68,93 @@ def _dtype(dtype):
     return d
 
 
+# ---- the quick path -------------------------------------------------------------
+# A call whose options were checked before (same values, same types) and
+# whose rings need no conversion goes straight to C: a dict lookup for the
+# options, a few comparisons for the arguments, one C call.  Anything else,
+# and any error status, takes the general path, which checks everything and
+# raises (so the messages are the general path's).
+
+# (method, rule, subpixel_bits, sample_offset, dtype) -> (opts, C format,
+# C array dtype, result dtype), filled by the general path once it has
+# checked them; only for str names, an int S and a float offset (so that
+# True, 8.0 or 0 still take the general path and its checks).
+_QUICK = {}
+_ndarray, _empty, _concatenate, _from_buffer = np.ndarray, np.empty, np.concatenate, ffi.from_buffer
+_DOUBLES = ffi.typeof("double[]")
+_PACKED = (16, 8)          # strides of a C-contiguous float64 (N, 2) array
+_PACKED_TRIS = (48, 16, 8)  # ... and of an (N, 3, 2) one
+_MAX_DIM, _MAX_POINTS = lib.RAST_MAX_DIM, lib.RAST_MAX_POINTS
+
+
+def _quick_key(method, rule, subpixel_bits, sample_offset, dtype):
+    """The _QUICK key of these arguments, or None when they may not take it."""
+    if type(subpixel_bits) is int and type(sample_offset) is float and type(method) is str \
+            and type(rule) is str:
+        return (method, rule, subpixel_bits, sample_offset, dtype)
+    return None
+
+
+def _quick(key):
+    """What _QUICK holds under `key` (None if nothing, or an unhashable dtype)."""
+    if key is None:
+        return None
+    try:
+        return _QUICK.get(key)
+    except TypeError:  # e.g. dtype=[...]
+        return None
+
+
+def _remember(key, opts, fmt, d):
+    if key is not None and len(_QUICK) < 256:
+        try:
+            _QUICK[key] = (opts, fmt, _C_DTYPE[fmt], d)
+        except TypeError:
+            pass
+
+
+def _plain_shape(shape):
+    """(h, w) of a tuple of two ints in 1..RAST_MAX_DIM, else None."""
+    if type(shape) is tuple and len(shape) == 2:
+        h, w = shape
+        if type(h) is int and type(w) is int and 0 < h <= _MAX_DIM and 0 < w <= _MAX_DIM:
+            return shape
+    return None
+
+
+def _plain_ring(r):
+    return type(r) is _ndarray and r.dtype is _F64 and r.ndim == 2 and r.shape[1] == 2 \
+        and r.shape[0] >= 3
+
+
+def quick_points(rings):
+    """(float64 points, ring sizes or NULL, number of rings) of rings that
+    need no checking or conversion: one float64 (N, 2) array with N >= 3
+    (C-contiguous), or a list of such arrays (any strides: they are
+    concatenated); None for anything else, which _core._points checks."""
+    if type(rings) is list:
+        if len(rings) == 1:
+            rings = rings[0]
+        else:
+            if not rings:
+                return None
+            for r in rings:
+                if not _plain_ring(r):
+                    return None
+            pts = _concatenate(rings)
+            if len(pts) > _MAX_POINTS:
+                return None
+            return pts, ffi.new("uint32_t[]", [len(r) for r in rings]), len(rings)
+    if _plain_ring(rings) and rings.strides == _PACKED and len(rings) <= _MAX_POINTS:
+        return rings, ffi.NULL, 1
+    return None
+
+
+def _points(rings):
+    quick = quick_points(rings)
+    return quick if quick is not None else _core._points(rings)
+
+
 def _check(result, pts, opts, what, sizes):
     if result == lib.RAST_E_RANGE:  # snapped in range, but not times k
         k = 1 << (opts.method - lib.RAST_AA_SS2 + 1)
@@ -138,11 +225,25 @@ def polygon_coverage(rings, shape, *, rule="evenodd", method="area", subpixel_bi
     >>> rastrum.polygon_coverage([(0.5, 0), (2, 0), (2, 1), (0.5, 1)], (1, 3))
     array([[128, 255,   0]], dtype=uint8)
     """
+    key = _quick_key(method, rule, subpixel_bits, sample_offset, dtype)
+    quick = _quick(key)
+    if quick is not None and _plain_shape(shape) is not None:
+        points = quick_points(rings)
+        if points is not None:
+            opts, fmt, c_dtype, d = quick
+            pts, sizes, nrings = points
+            h, w = shape
+            raw = _empty(shape, c_dtype)
+            if not _poly_call(_from_buffer(raw), h, w, fmt, _from_buffer(_DOUBLES, pts), len(pts),
+                              sizes, nrings, opts):
+                return raw if fmt != _FIX62 else _finish(raw, d)
+            # an error: the general path says which
     opts = _opts(method, rule, subpixel_bits, sample_offset, "polygon_coverage")
     d = _dtype(dtype)
-    h, w = _core.shape2(shape)
-    pts, sizes, nrings = _core._points(rings)
     fmt = _DTYPES[d]
+    _remember(key, opts, fmt, d)
+    h, w = _core.shape2(shape)
+    pts, sizes, nrings = _points(rings)
     raw = np.empty((h, w), _C_DTYPE[fmt])
     if not nrings:
         raw[...] = 0
@@ -172,12 +273,25 @@ def triangles_coverage(tris, shape, *, method="area", subpixel_bits=8, sample_of
     >>> rastrum.triangles_coverage(sq, (2, 2)).tolist()
     [[255, 255], [255, 255]]
     """
+    key = _quick_key(method, "nonzero", subpixel_bits, sample_offset, dtype)
+    quick = _quick(key)
+    if quick is not None and _plain_shape(shape) is not None and type(tris) is _ndarray \
+            and tris.dtype is _F64 and tris.strides == _PACKED_TRIS and tris.shape[1:] == (3, 2) \
+            and 0 < 3 * len(tris) <= _MAX_POINTS:
+        opts, fmt, c_dtype, d = quick
+        h, w = shape
+        raw = _empty(shape, c_dtype)
+        if not _tris_call(_from_buffer(raw), h, w, fmt, _from_buffer(_DOUBLES, tris), len(tris),
+                          opts):
+            return raw if fmt != _FIX62 else _finish(raw, d)
+        # an error: the general path says which
     opts = _opts(method, "nonzero", subpixel_bits, sample_offset, "triangles_coverage")
     d = _dtype(dtype)
+    fmt = _DTYPES[d]
+    _remember(key, opts, fmt, d)
     h, w = _core.shape2(shape)
     t = tris_f64(tris)
     n = _ntris(t)
-    fmt = _DTYPES[d]
     raw = np.empty((h, w), _C_DTYPE[fmt])
     if n == 0:
         raw[...] = 0
@@ -188,6 +302,10 @@ def triangles_coverage(tris, shape, *, method="area", subpixel_bits=8, sample_of
     if result:
         _check(result, t.reshape(-1, 2), opts, "tris", 3)
     return _finish(raw, d)
+
+
+_poly_call, _tris_call = lib.rastpy_polygon_coverage, lib.rastpy_triangles_coverage
+_FIX62 = lib.RAST_COVERAGE_FIX62
 
 
 # ---- anti-aliased Canvas fills (aa=) -----------------------------------------------
@@ -220,7 +338,7 @@ def aa_opts(aa, rule, subpixel_bits, sample_offset, entry, binary_only):
 
 def fill_polygon_aa(target, rings, pixel, opts):
     """rast_fill_polygon_aa of `rings` (as polygon_mask takes them)."""
-    pts, sizes, nrings = _core._points(rings)
+    pts, sizes, nrings = _points(rings)
     if not nrings:
         return
     result = lib.rastpy_fill_polygon_aa(target, ffi.from_buffer("double[]", pts), len(pts), sizes,

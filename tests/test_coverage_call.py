@@ -123,3 +123,27 @@ def test_empty_and_odd_input_still_take_the_general_path():
     f32 = rastrum.polygon_coverage(star.astype(np.float32), (17, 19))
     np.testing.assert_array_equal(f32, rastrum.polygon_coverage(star.astype(np.float32).tolist(), (17, 19)))
     assert rastrum.triangles_coverage(np.zeros((0, 3, 2)), (2, 2)).tolist() == [[0, 0], [0, 0]]
+
+
+def _fix62_values():
+    ties = [2 ** 53 + 1, 2 ** 53 + 3, 2 ** 54 + 2, 2 ** 54 + 6, 2 ** 62 - 1, 2 ** 61 + 2 ** 8 + 1]
+    rnd = np.random.default_rng(3)
+    return [0, 1, 2, 3, 2 ** 62] + ties + [int(v) for v in rnd.integers(0, 2 ** 62, 300, dtype=np.uint64)]
+
+
+def test_fix62_to_float_in_place_rounds_once_to_nearest():
+    """The float outputs: a = u / 2^62 rounded to the nearest float64 (ties
+    to even, as float(Fraction) does), float32 the nearest float32 of that."""
+    from fractions import Fraction
+    from rastrum._native import ffi, lib
+    u = _fix62_values()
+    buf = np.array(u, np.uint64)
+    lib.rastpy_fix62_to_double(ffi.from_buffer(buf), len(u))
+    want = np.array([float(Fraction(v, 2 ** 62)) for v in u])
+    np.testing.assert_array_equal(buf.view(np.float64), want)
+    # and through polygon_coverage: the float32 output is float32(float64 output)
+    star = _scene()[2]
+    f64 = rastrum.polygon_coverage(star, (17, 19), dtype=np.float64)
+    f32 = rastrum.polygon_coverage(star, (17, 19), dtype=np.float32)
+    np.testing.assert_array_equal(f32, f64.astype(np.float32))
+    assert f64.min() == 0 and f64.max() == 1 and ((f64 > 0) & (f64 < 1)).sum() > 20

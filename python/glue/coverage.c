@@ -5,6 +5,7 @@
  * rast_fill_triangles_aa, rast_fill_triangles_shaded_aa). */
 
 #include <stdlib.h>
+#include <string.h>
 #include "coverage.h"
 
 static const int32_t rastpy_cov_size[3] = {1, 2, 8};
@@ -78,6 +79,19 @@ static long rastpy_coverage(const rastpy_cov_dest *d, const double *xy, uint32_t
     free(scratch);
     free(pts);
     return st;
+}
+
+void rastpy_fix62_to_double(void *buf, size_t n)
+{
+    unsigned char *p = (unsigned char *)buf;
+    size_t i;
+    for (i = 0; i < n; i++, p += 8) {
+        uint64_t u;
+        double a;
+        memcpy(&u, p, 8);
+        a = (double)u * 0x1p-62;
+        memcpy(p, &a, 8);
+    }
 }
 
 static rastpy_cov_dest rastpy_array(void *out, int32_t height, int32_t width, int format)

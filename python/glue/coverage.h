@@ -25,6 +25,11 @@ long rastpy_fill_triangles_aa(const rast_target *target, const double *xy, uint3
 long rastpy_fill_triangles_shaded_aa(const rast_target *target, const double *xy, uint32_t ntris,
                                      const uint8_t *colors, const rast_coverage_opts *opts,
                                      const rast_shade_opts *shade);
+/* The n values of buf, a in units of 2^-62 as uint64_t (the
+ * RAST_COVERAGE_FIX62 output), turned in place into the double a: each
+ * integer rounded to the nearest double once, then scaled by 2^-62
+ * (exact).  Each value is read before its own 8 bytes are written. */
+void rastpy_fix62_to_double(void *buf, size_t n);
 /* cdef-end */
 
 #endif

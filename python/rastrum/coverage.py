@@ -178,8 +178,14 @@ def _finish(raw, d):
     if d in (_U8, _U16):
         return raw
     # a in units of 2^-62: to float exactly (a power of two scales exactly;
-    # the integer rounds to the nearest float64 once, or float32 once more)
-    return np.ldexp(raw.astype(np.float64), -62).astype(d, copy=False)
+    # the integer rounds to the nearest float64 once, or float32 once more).
+    # In place, over the uint64 array's own memory (C): a second array of
+    # that size (numpy's temporary for overlapping operands) costs more
+    # than the arithmetic, in fresh pages.
+    if raw.size:
+        lib.rastpy_fix62_to_double(_from_buffer(raw), raw.size)
+    out = raw.view(np.float64)
+    return out if d == _F64 else out.astype(d)
 
 
 def polygon_coverage(rings, shape, *, rule="evenodd", method="area", subpixel_bits=8,

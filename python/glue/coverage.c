@@ -29,7 +29,8 @@ static long rastpy_coverage(const rastpy_cov_dest *d, const double *xy, uint32_t
 {
     rast_polygon poly;
     rast_status st;
-    size_t need;
+    size_t need, head;
+    unsigned char *mem;
     int32_t *pts;
     void *scratch;
     long bad;
@@ -46,18 +47,18 @@ static long rastpy_coverage(const rastpy_cov_dest *d, const double *xy, uint32_t
         st = rast_coverage_scratch_size(opts, npoints, clip->x1 - clip->x0, clip->y1 - clip->y0,
                                         &need);
     if (st != RAST_OK) return st;
-    pts = (int32_t *)malloc((size_t)npoints * sizeof(rast_point) + 1);
-    if (!pts) return RASTPY_E_NOMEM;
+    /* one block: the snapped points, then (16-byte aligned) the scratch */
+    head = ((size_t)npoints * sizeof(rast_point) + 15) & ~(size_t)15;
+    if (need > (size_t)-1 - 1 - head) return RASTPY_E_NOMEM;
+    mem = (unsigned char *)malloc(head + need + 1);
+    if (!mem) return RASTPY_E_NOMEM;
+    pts = (int32_t *)(void *)mem;
     bad = rastpy_snap_points(xy, npoints, opts->subpixel_bits, pts);
     if (bad >= 0) {
-        free(pts);
+        free(mem);
         return bad + 1;
     }
-    scratch = malloc(need + 1);
-    if (!scratch) {
-        free(pts);
-        return RASTPY_E_NOMEM;
-    }
+    scratch = mem + head;
     poly.points = (const rast_point *)(void *)pts;
     poly.ring_sizes = ring_sizes ? ring_sizes : &npoints;
     poly.nrings = ring_sizes ? nrings : 1;
@@ -76,8 +77,7 @@ static long rastpy_coverage(const rastpy_cov_dest *d, const double *xy, uint32_t
     else
         st = rast_polygon_coverage(&poly, opts, clip, (rast_coverage_format)d->format, d->out,
                                    stride, scratch, need);
-    free(scratch);
-    free(pts);
+    free(mem);
     return st;
 }
 

@@ -147,3 +147,17 @@ def test_fix62_to_float_in_place_rounds_once_to_nearest():
     f32 = rastrum.polygon_coverage(star, (17, 19), dtype=np.float32)
     np.testing.assert_array_equal(f32, f64.astype(np.float32))
     assert f64.min() == 0 and f64.max() == 1 and ((f64 > 0) & (f64 < 1)).sum() > 20
+
+
+def test_canvas_aa_remembered_options_do_not_let_other_types_through():
+    c = rastrum.Canvas((8, 8), format="gray8")
+    tri = np.array([(1.0, 1.0), (6.5, 1.0), (2.0, 6.5)])
+    c.fill_polygon(tri, 200, aa="area")
+    before = c.array.copy()
+    for kwargs, words in (({"subpixel_bits": 8.0}, "subpixel_bits must be an int"),
+                          ({"sample_offset": True}, "sample_offset must be 0.5"),
+                          ({"rule": ["evenodd"]}, "rule")):
+        with pytest.raises(rastrum.InputError, match=words):
+            c.fill_polygon(tri, 200, aa="area", **kwargs)
+    np.testing.assert_array_equal(c.array, before)
+    assert before.max() > 0

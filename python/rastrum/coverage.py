@@ -43,8 +43,25 @@ def method_error(method, entry, supported):
 
 
 def _opts(method, rule, subpixel_bits, sample_offset, entry):
-    """A checked, read-only ``rast_coverage_opts *`` (cached: a hit skips the checks)."""
+    """A checked, read-only ``rast_coverage_opts *`` (cached: a hit skips the checks).
+
+    str names, an int S and a float offset are looked up by value alone
+    (a plain tuple: cheaper than the general cache's key, which adds the
+    types); anything else takes the general cache, which checks them."""
+    if type(subpixel_bits) is int and type(sample_offset) is float and type(method) is str \
+            and type(rule) is str:
+        key = (method, rule, subpixel_bits, sample_offset)
+        opts = _OPTS.get(key)
+        if opts is None:
+            opts = _core.cached_opts("coverage", _make_opts, method, rule, subpixel_bits,
+                                     sample_offset, entry)
+            if len(_OPTS) < 256:
+                _OPTS[key] = opts
+        return opts
     return _core.cached_opts("coverage", _make_opts, method, rule, subpixel_bits, sample_offset, entry)
+
+
+_OPTS = {}
 
 
 def _make_opts(method, rule, subpixel_bits, sample_offset, entry):

@@ -196,9 +196,9 @@ def _finish(raw, d):
         return raw
     # a in units of 2^-62: to float exactly (a power of two scales exactly;
     # the integer rounds to the nearest float64 once, or float32 once more).
-    # In place, over the uint64 array's own memory (C): a second array of
-    # that size (numpy's temporary for overlapping operands) costs more
-    # than the arithmetic, in fresh pages.
+    # In place, over the uint64 array's own memory (C): more arrays of that
+    # size (astype, ldexp, or numpy's temporary for a ufunc whose output
+    # overlaps its input) cost more than the arithmetic, in fresh pages.
     if raw.size:
         lib.rastpy_fix62_to_double(_from_buffer(raw), raw.size)
     out = raw.view(np.float64)

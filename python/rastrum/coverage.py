@@ -144,7 +144,7 @@ def _plain_ring(r):
         and r.shape[0] >= 3
 
 
-def quick_points(rings):
+def _quick_points(rings):
     """(float64 points, ring sizes or NULL, number of rings) of rings that
     need no checking or conversion: one float64 (N, 2) array with N >= 3
     (C-contiguous), or a list of such arrays (any strides: they are
@@ -168,7 +168,7 @@ def quick_points(rings):
 
 
 def _points(rings):
-    quick = quick_points(rings)
+    quick = _quick_points(rings)
     return quick if quick is not None else _core._points(rings)
 
 
@@ -251,7 +251,7 @@ def polygon_coverage(rings, shape, *, rule="evenodd", method="area", subpixel_bi
     key = _quick_key(method, rule, subpixel_bits, sample_offset, dtype)
     quick = _quick(key)
     if quick is not None and _plain_shape(shape) is not None:
-        points = quick_points(rings)
+        points = _quick_points(rings)
         if points is not None:
             opts, fmt, c_dtype, d = quick
             pts, sizes, nrings = points

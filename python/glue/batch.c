@@ -56,13 +56,23 @@ typedef struct rastpy_burn {
             memset(q, c, (size_t)(end - q));                                                 \
             return;                                                                          \
         }                                                                                    \
-        for (; end - q >= 4; q += 4) {                                                       \
+        if (end - q < 4) {                                                                   \
+            for (; q < end; q++) *q = v;                                                     \
+            return;                                                                          \
+        }                                                                                    \
+        for (; end - q > 4; q += 4) {                                                        \
             q[0] = v;                                                                        \
             q[1] = v;                                                                        \
             q[2] = v;                                                                        \
             q[3] = v;                                                                        \
         }                                                                                    \
-        for (; q < end; q++) *q = v;                                                         \
+        /* the last 1..4 elements as one group of four, ending at `end`                   \
+         * (overlapping the group before: a replace may write twice) */                     \
+        q = end - 4;                                                                         \
+        q[0] = v;                                                                            \
+        q[1] = v;                                                                            \
+        q[2] = v;                                                                            \
+        q[3] = v;                                                                            \
     }                                                                                        \
     static inline void rastpy_add_##NAME(const rastpy_burn *b, unsigned char *row, uint32_t k, \
                                   int32_t x0, int32_t x1)                                    \

@@ -7,6 +7,7 @@ batch engine (``rastrum._batch``): all polygons checked, then drawn in one
 C call, exactly (DESIGN section 1).
 """
 
+from array import array
 from itertools import chain
 
 import numpy as np
@@ -16,6 +17,12 @@ from ._core import InputError
 
 _F64 = np.dtype(np.float64)
 _RULES = ("union", "evenodd", "nonzero")
+
+
+def _lengths(items):
+    """len() of each item as uint32 (C unsigned int): array.array fills
+    from map() a quarter faster than np.fromiter converting each int."""
+    return np.frombuffer(array("I", map(len, items)), np.uintc).astype(np.uint32, copy=False)
 
 
 def _packed(polygons):
@@ -33,10 +40,10 @@ def _packed(polygons):
         rings = list(chain.from_iterable(polygons))
         if set(map(type, rings)) != {np.ndarray}:
             return None
-        poly_rings = np.fromiter(map(len, polygons), np.uint32, len(polygons))
+        poly_rings = _lengths(polygons)
     else:
         return None
-    sizes = np.fromiter(map(len, rings), np.uint32, len(rings))
+    sizes = _lengths(rings)
     if not len(sizes) or not sizes.all():
         return None  # empty rings are dropped: the general path
     try:

@@ -112,35 +112,6 @@ rast_status rast_polygons64_scratch_size(const rast_polygon64 *polygons, uint32_
     return st;
 }
 
-/* rast__fill_measure's bounds and count of a polygon it passed, with the
- * exact boundary, without its checks (the drawing pass of a batch). */
-static void rast__batch_bounds(const rast__fill_setup *f, const rast_polygon *p, const rast_rect *c,
-                               uint32_t *npoints, rast_rect *b)
-{
-    const rast_point *pts = p->points;
-    uint32_t n = 0, k, i;
-    rast__box box;
-    for (k = 0; k < p->nrings; k++) n += p->ring_sizes[k];
-    *npoints = n;
-    b->x0 = b->x1 = c->x0;
-    b->y0 = b->y1 = c->y0;
-    if (n > 0) {
-        int32_t minx = pts[0].x, maxx = pts[0].x, miny = pts[0].y, maxy = pts[0].y;
-        for (i = 1; i < n; i++) {
-            if (pts[i].x < minx) minx = pts[i].x;
-            if (pts[i].x > maxx) maxx = pts[i].x;
-            if (pts[i].y < miny) miny = pts[i].y;
-            if (pts[i].y > maxy) maxy = pts[i].y;
-        }
-        if (rast__box_of(minx, maxx, miny, maxy, &f->g, c, &box)) {
-            b->x0 = box.col0;
-            b->x1 = box.col1;
-            b->y0 = box.row0;
-            b->y1 = box.row1;
-        }
-    }
-}
-
 /* The batch's span callback, behind the per-polygon one. */
 typedef struct rast__batch {
     rast_batch_span_fn span;
@@ -186,7 +157,8 @@ static rast_status rast__batch_fill(rast__polys *ps, uint32_t n, const rast_fill
     /* Polygons of few vertices: the small filler (small.c), the AET's
      * pixels, when the AET with the exact boundary is asked for. */
     small = !ps->wide && opts->algorithm == RAST_ALGO_AET &&
-            (!RAST__BOUNDARY_MODES || opts->boundary == RAST_BOUNDARY_EXACT);
+            (!RAST__BOUNDARY_MODES || opts->boundary == RAST_BOUNDARY_EXACT) &&
+            c.x1 - c.x0 <= RAST_MAX_DIM && c.x0 < c.x1 && c.y0 < c.y1;
     ctx.span = span;
     ctx.user = user;
     memset(&painter, 0, sizeof painter);
@@ -203,14 +175,18 @@ static rast_status rast__batch_fill(rast__polys *ps, uint32_t n, const rast_fill
                                       scratch_bytes);
         } else {
             const rast_polygon *p = (const rast_polygon *)ps->p + k;
-            if (small)
-                rast__batch_bounds(&ps->f, p, &c, &npoints, &b);
-            else
-                rast__fill_measure(&ps->f, p, &c, &npoints, &b);
+            if (small) {
+                /* The small filler takes the span clip as it is (it
+                 * finds the rows from the edges, and clamps to any
+                 * columns): no pass over the points for the box. */
+                uint32_t r;
+                for (r = 0, npoints = 0; r < p->nrings; r++) npoints += p->ring_sizes[r];
+                if (rast__small_fill(p, npoints, &ps->f.g, opts->rule, &c, span, user, k, scratch,
+                                     scratch_bytes))
+                    continue;
+            }
+            rast__fill_measure(&ps->f, p, &c, &npoints, &b);
             if (b.x0 == b.x1 || b.y0 == b.y1) continue;
-            if (small && rast__small_fill(p, npoints, &ps->f.g, opts->rule, &b, span, user, k,
-                                          scratch, scratch_bytes))
-                continue;
             st = rast__fill_checked(&ps->f, p, npoints, &b, &painter, scratch, scratch_bytes);
         }
         if (st != RAST_OK) return st; /* not reached: everything was checked */

@@ -97,7 +97,8 @@ int rast__small_fill(const rast_polygon *poly, uint32_t npoints, const rast__gri
 {
     rast__edge *ed = (rast__edge *)scratch;
     const rast_point *pts = poly->points;
-    const int32_t row0 = clip->y0, row1 = clip->y1, c0 = clip->x0, c1 = clip->x1;
+    const int32_t c0 = clip->x0, c1 = clip->x1;
+    int32_t row0 = clip->y0, row1 = clip->y1;
     rast__small_row r;
     uint32_t *keys;
     int32_t *cnt, ne = 0, hb, j0;
@@ -115,6 +116,13 @@ int rast__small_fill(const rast_polygon *poly, uint32_t npoints, const rast__gri
                                        g, row0, row1);
     }
     if (ne == 0) return 1;
+    /* The rows the edges cross: the polygon's own, within the clip's. */
+    row0 = row1;
+    row1 = clip->y0;
+    for (k = 0; k < (uint32_t)ne; k++) {
+        if (ed[k].row < row0) row0 = ed[k].row;
+        if (ed[k].end > row1) row1 = ed[k].end;
+    }
     /* Rows per band: a count and ne slots each. */
     if (room < (size_t)ne + 1) return 0;
     hb = room / ((size_t)ne + 1) < (size_t)(row1 - row0) ? (int32_t)(room / ((size_t)ne + 1))

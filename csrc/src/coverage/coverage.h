@@ -205,6 +205,21 @@ size_t rast__cov_area_scratch(uint32_t n, int32_t width);
 rast_status rast__cov_area(rast__cedge *e, uint32_t n, int32_t s, rast_fill_rule rule,
                            int accumulate, const rast__cov_out *o, rast__arena *arena);
 
+/* Accumulation into uint8 or uint16 levels (coverage_acc.c), when
+ * rast__cov_acc_may: as rast__cov_area(..., accumulate = 1, ...), in the
+ * same scratch.  It sets each edge's steps by rast__cov_prep and sends a
+ * row whose levels its 64-bit cells cannot decide to
+ * rast__cov_acc_exact_row: the edges row[0..nrow) of row j, whole, the
+ * exact way, into row j of o (handed on), with cleared cells cover[],
+ * area[] (clip width each) and bits[] (a bit a column), left cleared. */
+int rast__cov_acc_may(const rast__cov_out *o, int32_t s);
+rast_status rast__cov_acc(rast__cedge *e, uint32_t n, int32_t s, rast_fill_rule rule,
+                          const rast__cov_out *o, rast__arena *arena);
+void rast__cov_prep(rast__cedge *e);
+void rast__cov_acc_exact_row(rast__cedge *e, const int32_t *row, int32_t nrow, int32_t j,
+                             int32_t s, rast_fill_rule rule, const rast__cov_out *o,
+                             rast__i128 *cover, rast__i128 *area, uint64_t *bits);
+
 /* Supersampling k x k (k = 2^kbits) of `poly` (a polygon in range, already
  * scaled or not: see coverage_ss.c) into o. */
 size_t rast__cov_ss_scratch(uint32_t npoints, int32_t kbits, int32_t width, int32_t height);

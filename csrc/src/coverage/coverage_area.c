@@ -1504,6 +1504,36 @@ static void rast__cov_row_acc(rast__cells *c, rast__cedge *e, const int32_t *row
     rast__row_exact(c, e, row, nrow, j, 0);
 }
 
+void rast__cov_prep(rast__cedge *e)
+{
+    rast__cov_steps(e);
+}
+
+void rast__cov_acc_exact_row(rast__cedge *e, const int32_t *row, int32_t nrow, int32_t j,
+                             int32_t s, rast_fill_rule rule, const rast__cov_out *o,
+                             rast__i128 *cover, rast__i128 *area, uint64_t *bits)
+{
+    rast__cells c;
+    c.cover = cover;
+    c.area = area;
+    c.bits = bits;
+    c.carry = rast__i128_u64(0);
+    c.x0 = o->clip.x0;
+    c.x1 = o->clip.x1;
+    c.wmin = INT32_MAX;
+    c.wmax = -1;
+    c.h = G - s;
+    c.p = (int32_t)1 << s;
+    c.accumulate = 1;
+    c.qcarry = 0;
+    c.o = o;
+    c.rule = rule;
+    c.quick = 0;
+    c.emitted = 0;
+    rast__row_exact(&c, e, row, nrow, j, 0);
+    rast__cells_emit(&c, o, j, rule);
+}
+
 rast_status rast__cov_area(rast__cedge *e, uint32_t n, int32_t s, rast_fill_rule rule,
                            int accumulate, const rast__cov_out *o, rast__arena *arena)
 {
@@ -1514,6 +1544,7 @@ rast_status rast__cov_area(rast__cedge *e, uint32_t n, int32_t s, rast_fill_rule
     int32_t fast = 0, same; /* the last row's s if it was a fast row; its edges kept */
     int64_t ymin, ymax;
 
+    if (accumulate && rast__cov_acc_may(o, s)) return rast__cov_acc(e, n, s, rule, o, arena);
     order = (int32_t *)rast__take(arena, (size_t)n * sizeof(int32_t));
     row = (int32_t *)rast__take(arena, (size_t)n * sizeof(int32_t));
     sw.live = (int32_t *)rast__take(arena, (size_t)n * sizeof(int32_t));

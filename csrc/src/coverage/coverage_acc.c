@@ -34,10 +34,12 @@
  * them all take the last sum's level (one fill).
  */
 #include "coverage.h"
+#include "../fillers/poly.h" /* rast__ctz64 */
 
 #define QF 30
 #define QT ((uint64_t)1 << QF)
 #define QONE ((int64_t)1 << 51)
+#define RAST__ACC_B 4 /* blocks of 2^B cells */
 
 /* floor(v / 2^QF) for |v| < 2^62 (no >> of a negative value) */
 static inline int64_t rast__acc_col(int64_t v)
@@ -48,6 +50,7 @@ static inline int64_t rast__acc_col(int64_t v)
 typedef struct rast__acc {
     uint64_t *acc;     /* clip width + 1 cells */
     int32_t x0, x1;    /* clip columns */
+    uint64_t *blk;     /* a bit for each block of 2^B cells touched */
     int32_t lo, hi;    /* cells touched this row: [lo, hi] (lo > hi: none) */
     int32_t p, hq;     /* P = 2^S; HQ = 30 - S */
 } rast__acc;
@@ -87,6 +90,16 @@ static void rast__acc_t_first(rast__cedge *e, int64_t X, const rast__acc *a)
     e->qX = X;
 }
 
+/* Cells [lo, hi] touched. */
+static inline void rast__acc_mark(rast__acc *a, int32_t lo, int32_t hi)
+{
+    int32_t b = lo >> RAST__ACC_B, bh = hi >> RAST__ACC_B;
+    if (lo < a->lo) a->lo = lo;
+    if (hi > a->hi) a->hi = hi;
+    a->blk[b >> 6] |= (uint64_t)1 << (b & 63);
+    for (b++; b <= bh; b++) a->blk[b >> 6] |= (uint64_t)1 << (b & 63);
+}
+
 /* One column's piece: fractions f0 .. f1, height dy, signed by neg (0 or
  * all ones); column k of the clip (0 <= k < width). */
 static inline void rast__acc_put(uint64_t *acc, int64_t k, uint64_t f0, uint64_t f1, uint64_t dy,
@@ -110,16 +123,14 @@ static void rast__acc_part(rast__acc *a, rast__cedge *e, int64_t off, int64_t xa
     if (ta >= tb) return;
     if (ca < a->x0 && cb < a->x0) { /* all left of the clip */
         acc[0] += (((tb - ta) << 21) ^ neg) - neg;
-        if (a->lo > 0) a->lo = 0;
-        if (a->hi < 0) a->hi = 0;
+        rast__acc_mark(a, 0, 0);
         return;
     }
     if (ca == cb) {
         if (ca >= a->x1) return;
         lo = hi = ca - a->x0;
         rast__acc_put(acc, lo, f, fb, tb - ta, neg);
-        if ((int32_t)lo < a->lo) a->lo = (int32_t)lo;
-        if ((int32_t)hi + 1 > a->hi) a->hi = (int32_t)hi + 1;
+        rast__acc_mark(a, (int32_t)lo, (int32_t)hi + 1);
         return;
     }
     adx = (uint32_t)(e->dx < 0 ? -e->dx : e->dx);
@@ -197,13 +208,12 @@ static void rast__acc_part(rast__acc *a, rast__cedge *e, int64_t off, int64_t xa
     } /* else the rest is right of the clip */
     lo = lo < a->x0 ? 0 : lo - a->x0;
     hi = (hi >= a->x1 ? a->x1 - 1 : hi) - a->x0 + 1;
-    if ((int32_t)lo < a->lo) a->lo = (int32_t)lo;
-    if ((int32_t)hi > a->hi) a->hi = (int32_t)hi;
+    rast__acc_mark(a, (int32_t)lo, (int32_t)hi);
 }
 
 /* The level of the running sum v (2^51 = one pixel) under the rule, M =
  * m; *bad set when a tie is within win / 2^51 of it. */
-static inline uint64_t rast__acc_level(int64_t v, rast_fill_rule rule, uint32_t m, uint64_t win,
+RAST__HOT uint64_t rast__acc_level(int64_t v, rast_fill_rule rule, uint32_t m, uint64_t win,
                                        uint64_t *bad)
 {
     uint64_t x = v < 0 ? 0 - (uint64_t)v : (uint64_t)v;
@@ -225,6 +235,73 @@ static inline uint64_t rast__acc_level(int64_t v, rast_fill_rule rule, uint32_t 
     return x >> 51;
 }
 
+/* Row y's uint8 levels from the cells in [lo, hi) (their blocks of 2^B
+ * marked in blk; a block not marked holds only zeros: one fill), which
+ * are cleared; the pixels left of lo get 0, those from hi on the last
+ * sum's level.  rule and m are constants at each call (one loop each).
+ * Returns a tie's flag (rast__acc_level's). */
+RAST__HOT uint64_t rast__acc_row(uint64_t *acc, const uint64_t *blk, unsigned char *row,
+                                 int32_t lo, int32_t hi, int32_t w, rast_fill_rule rule,
+                                 uint32_t m, uint64_t win)
+{
+    uint64_t bad = 0, lev = 0, v = 0;
+    uint16_t *r16 = (uint16_t *)(void *)row;
+    int32_t k = lo;
+    if (m == 255)
+        memset(row, 0, (size_t)lo);
+    else
+        for (k = 0; k < lo; k++) r16[k] = 0;
+    while (k < hi) {
+        int32_t b = k >> RAST__ACC_B, kend = (b + 1) << RAST__ACC_B;
+        if (kend > hi) kend = hi;
+        if ((blk[b >> 6] >> (b & 63)) & 1) {
+            for (; k < kend; k++) {
+                uint64_t d = acc[k];
+                if (d) {
+                    acc[k] = 0;
+                    v += d;
+                    lev = rast__acc_level((int64_t)v, rule, m, win, &bad);
+                }
+                if (m == 255)
+                    row[k] = (unsigned char)lev;
+                else
+                    r16[k] = (uint16_t)lev;
+            }
+        } else if (m == 255) { /* to the next block marked */
+            uint64_t bw = blk[b >> 6] >> (b & 63);
+            int32_t nb = b - (b & 63) + 64;
+            if (bw) {
+                nb = b + (int32_t)rast__ctz64(bw);
+            } else {
+                while ((nb << RAST__ACC_B) < hi && !blk[nb >> 6]) nb += 64;
+                if ((nb << RAST__ACC_B) < hi) nb += (int32_t)rast__ctz64(blk[nb >> 6]);
+            }
+            kend = nb << RAST__ACC_B < hi ? nb << RAST__ACC_B : hi;
+            memset(row + k, (int)lev, (size_t)(kend - k));
+            k = kend;
+        } else {
+            for (; k < kend; k++) r16[k] = (uint16_t)lev;
+        }
+    }
+    if (m == 255)
+        memset(row + hi, (int)lev, (size_t)(w - hi));
+    else
+        for (k = hi; k < w; k++) r16[k] = (uint16_t)lev;
+    return bad;
+}
+
+static uint64_t rast__acc_row_u8nz(uint64_t *acc, const uint64_t *blk, unsigned char *row,
+                                   int32_t lo, int32_t hi, int32_t w, uint64_t win)
+{
+    return rast__acc_row(acc, blk, row, lo, hi, w, RAST_RULE_NONZERO, 255, win);
+}
+
+static uint64_t rast__acc_row_u8eo(uint64_t *acc, const uint64_t *blk, unsigned char *row,
+                                   int32_t lo, int32_t hi, int32_t w, uint64_t win)
+{
+    return rast__acc_row(acc, blk, row, lo, hi, w, RAST_RULE_EVENODD, 255, win);
+}
+
 /* Row y from the cells touched, which are cleared: 1 when done (handed
  * on), 0 when a level is not certain (nothing handed on). */
 static int rast__acc_emit(rast__acc *a, const rast__cov_out *o, int32_t y, rast_fill_rule rule,
@@ -232,35 +309,18 @@ static int rast__acc_emit(rast__acc *a, const rast__cov_out *o, int32_t y, rast_
 {
     unsigned char *row = rast__cov_row(o, y);
     const int32_t w = a->x1 - a->x0;
-    const rast_coverage_format f = o->format;
-    uint64_t *acc = a->acc, bad = 0, lev = 0, v = 0;
+    uint64_t bad;
     int32_t k, lo = a->lo, hi = a->hi < w ? a->hi + 1 : w; /* [lo, hi) */
     if (lo >= hi) lo = hi = 0;
-    if (f == RAST_COVERAGE_U8) {
-        if (lo) memset(row, 0, (size_t)lo);
-        for (k = lo; k < hi; k++) {
-            uint64_t d = acc[k];
-            if (d) {
-                acc[k] = 0;
-                v += d;
-                lev = rast__acc_level((int64_t)v, rule, m, win, &bad);
-            }
-            row[k] = (unsigned char)lev;
-        }
-        if (hi < w) memset(row + hi, (int)rast__acc_level((int64_t)v, rule, m, win, &bad),
-                           (size_t)(w - hi));
-    } else {
-        uint16_t *r16 = (uint16_t *)(void *)row;
-        for (k = 0; k < lo; k++) r16[k] = 0;
-        for (k = lo; k < hi; k++) {
-            v += acc[k];
-            acc[k] = 0;
-            r16[k] = (uint16_t)rast__acc_level((int64_t)v, rule, m, win, &bad);
-        }
-        lev = rast__acc_level((int64_t)v, rule, m, win, &bad);
-        for (k = hi; k < w; k++) r16[k] = (uint16_t)lev;
-    }
-    acc[w] = 0;
+    if (o->format != RAST_COVERAGE_U8)
+        bad = rast__acc_row(a->acc, a->blk, row, lo, hi, w, rule, m, win);
+    else if (rule == RAST_RULE_NONZERO)
+        bad = rast__acc_row_u8nz(a->acc, a->blk, row, lo, hi, w, win);
+    else
+        bad = rast__acc_row_u8eo(a->acc, a->blk, row, lo, hi, w, win);
+    a->acc[w] = 0;
+    if (a->hi >= 0)
+        for (k = a->lo >> (RAST__ACC_B + 6); k <= a->hi >> (RAST__ACC_B + 6); k++) a->blk[k] = 0;
     a->lo = INT32_MAX;
     a->hi = -1;
     if (bad) return 0;
@@ -322,6 +382,7 @@ rast_status rast__cov_acc(rast__cedge *e, uint32_t n, int32_t s, rast_fill_rule 
     for (k = 0; k < width; k++) cover[k] = area[k] = rast__i128_u64(0);
     for (k = 0; k < (width + 63) / 64; k++) bits[k] = 0;
     a.acc = (uint64_t *)(void *)cover;
+    a.blk = bits; /* (w + 1 cells: ceil((w + 1) / 2^B) bits <= 64 ceil(w / 64)) */
     a.x0 = o->clip.x0;
     a.x1 = o->clip.x1;
     a.lo = INT32_MAX;

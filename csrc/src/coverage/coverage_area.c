@@ -1544,7 +1544,6 @@ rast_status rast__cov_area(rast__cedge *e, uint32_t n, int32_t s, rast_fill_rule
     int32_t fast = 0, same; /* the last row's s if it was a fast row; its edges kept */
     int64_t ymin, ymax;
 
-    if (accumulate && rast__cov_acc_may(o, s)) return rast__cov_acc(e, n, s, rule, o, arena);
     order = (int32_t *)rast__take(arena, (size_t)n * sizeof(int32_t));
     row = (int32_t *)rast__take(arena, (size_t)n * sizeof(int32_t));
     sw.live = (int32_t *)rast__take(arena, (size_t)n * sizeof(int32_t));

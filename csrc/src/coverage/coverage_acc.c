@@ -362,7 +362,7 @@ rast_status rast__cov_acc(rast__cedge *e, uint32_t n, int32_t s, rast_fill_rule 
     rast__acc a;
     rast__i128 *cover, *area;
     uint64_t *bits;
-    int32_t *order, *row, *tmp, *key, nrow = 0, j, ja, jb, k;
+    int32_t *order, *row, *tmp, *key, *last, nrow = 0, j, ja, jb, k, drop = INT32_MAX;
     uint32_t i, next = 0;
     int64_t ymin, ymax;
     /* the same blocks as rast__cov_area's (its scratch bound): the cells
@@ -372,13 +372,13 @@ rast_status rast__cov_acc(rast__cedge *e, uint32_t n, int32_t s, rast_fill_rule 
     row = (int32_t *)rast__take(arena, (size_t)n * sizeof(int32_t));
     tmp = (int32_t *)rast__take(arena, (size_t)n * sizeof(int32_t));
     key = (int32_t *)rast__take(arena, (size_t)n * sizeof(int32_t));
-    (void)rast__take(arena, (size_t)n * sizeof(int32_t));
+    last = (int32_t *)rast__take(arena, (size_t)n * sizeof(int32_t));
     (void)rast__take(arena, (size_t)n * sizeof(int32_t));
     (void)rast__take(arena, (size_t)n * sizeof(uint64_t));
     cover = (rast__i128 *)rast__take(arena, (size_t)width * sizeof(rast__i128));
     area = (rast__i128 *)rast__take(arena, (size_t)width * sizeof(rast__i128));
     bits = (uint64_t *)rast__take(arena, ((size_t)width + 63) / 64 * sizeof(uint64_t));
-    if ((n && (!order || !row || !tmp || !key)) || !cover || !area || !bits) return RAST_E_SCRATCH;
+    if ((n && (!order || !row || !tmp || !key || !last)) || !cover || !area || !bits) return RAST_E_SCRATCH;
     for (k = 0; k < width; k++) cover[k] = area[k] = rast__i128_u64(0);
     for (k = 0; k < (width + 63) / 64; k++) bits[k] = 0;
     a.acc = (uint64_t *)(void *)cover;
@@ -405,20 +405,30 @@ rast_status rast__cov_acc(rast__cedge *e, uint32_t n, int32_t s, rast_fill_rule 
     ymax = rast__ceildiv(ymax, a.p);
     ja = ymin > o->clip.y0 ? (int32_t)(ymin < o->clip.y1 ? ymin : o->clip.y1) : o->clip.y0;
     jb = ymax < o->clip.y1 ? (int32_t)(ymax > ja ? ymax : ja) : o->clip.y1;
-    for (i = 0; i < n; i++) { /* the row where each starts, from ja */
+    for (i = 0; i < n; i++) { /* the row where each starts, from ja; its last row */
         int64_t r = rast__floordiv(e[i].yt, a.p) - ja;
         key[i] = r < 0 ? 0 : (int32_t)r;
+        last[i] = (int32_t)(rast__ceildiv((int64_t)e[i].yt + e[i].dy, a.p) - 1);
     }
     rast__acc_sort(order, tmp, key, n);
     rast__cov_zero_rows(o, o->clip.y0, ja);
     for (j = ja; j < jb; j++) {
         const int64_t Yj = (int64_t)j * a.p;
         int32_t q;
-        for (k = 0, q = 0; k < nrow; k++)
-            if ((int64_t)e[row[k]].yt + e[row[k]].dy > Yj) row[q++] = row[k];
-        nrow = q;
+        if (j > drop) { /* an edge ended in the row above: drop those that did */
+            drop = INT32_MAX;
+            for (k = 0, q = 0; k < nrow; k++)
+                if (last[row[k]] >= j) {
+                    row[q++] = row[k];
+                    if (last[row[k]] < drop) drop = last[row[k]];
+                }
+            nrow = q;
+        }
         while (next < n && e[order[next]].yt < Yj + a.p) {
-            if ((int64_t)e[order[next]].yt + e[order[next]].dy > Yj) row[nrow++] = order[next];
+            if (last[order[next]] >= j) {
+                row[nrow++] = order[next];
+                if (last[order[next]] < drop) drop = last[order[next]];
+            }
             next++;
         }
         if (nrow < 512 && ((uint64_t)nrow + 1) * m < ((uint64_t)1 << 25)) {

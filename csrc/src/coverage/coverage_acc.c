@@ -55,39 +55,15 @@ typedef struct rast__acc {
     int32_t p, hq;     /* P = 2^S; HQ = 30 - S */
 } rast__acc;
 
-/* e's exact abscissa at the top of row j (yt <= j P < yt + dy) in Q units:
- * qx + qxr/dy; stepped from the row above, else two divisions. */
+/* rast__cov_qtop, rast__cov_qt_first with this engine's P and HQ */
 static inline int64_t rast__acc_top(rast__cedge *e, int32_t j, const rast__acc *a)
 {
-    if (e->qrow == j - 1) {
-        e->qx += e->qxs;
-        e->qxr += e->qxsr;
-        if (e->qxr >= (uint32_t)e->dy) {
-            e->qxr -= (uint32_t)e->dy;
-            e->qx++;
-        }
-        e->qrow = j;
-    } else if (e->qrow != j) {
-        int64_t q, r, q2, r2;
-        rast__floordivmod((int64_t)e->dx * ((int64_t)j * a->p - e->yt), e->dy, &q, &r);
-        rast__floordivmod(r * ((int64_t)1 << a->hq), e->dy, &q2, &r2);
-        e->qx = ((int64_t)e->xt + q) * ((int64_t)1 << a->hq) + q2;
-        e->qxr = (uint32_t)r2;
-        e->qrow = j;
-    }
-    return e->qx;
+    return rast__cov_qtop(e, j, a->p, a->hq);
 }
 
-/* e's column stepper at vertical X: t = floor(|X P - xt| dy 2^HQ / |dx|)
- * from e's top, Q units, in two 64-bit divisions. */
 static void rast__acc_t_first(rast__cedge *e, int64_t X, const rast__acc *a)
 {
-    uint64_t adx = (uint64_t)(e->dx < 0 ? -(int64_t)e->dx : e->dx);
-    int64_t w = X * a->p - e->xt;
-    uint64_t m = (uint64_t)(w < 0 ? -w : w) * (uint64_t)e->dy, r = (m % adx) << a->hq;
-    e->qt = (int64_t)(((m / adx) << a->hq) + r / adx);
-    e->qtr = (uint32_t)(r % adx);
-    e->qX = X;
+    rast__cov_qt_first(e, X, a->p, a->hq);
 }
 
 /* Cells [lo, hi] touched. */
@@ -364,7 +340,6 @@ rast_status rast__cov_acc(rast__cedge *e, uint32_t n, int32_t s, rast_fill_rule 
     uint64_t *bits;
     int32_t *order, *row, *tmp, *key, *last, nrow = 0, j, ja, jb, k, drop = INT32_MAX;
     uint32_t i, next = 0;
-    int64_t ymin, ymax;
     /* the same blocks as rast__cov_area's (its scratch bound): the cells
      * acc[] (width + 1 words) lie in cover[] (width pairs of words), which
      * the exact row finds cleared as it leaves it */
@@ -393,18 +368,7 @@ rast_status rast__cov_acc(rast__cedge *e, uint32_t n, int32_t s, rast_fill_rule 
         rast__cov_zero_rows(o, o->clip.y0, o->clip.y1);
         return RAST_OK;
     }
-    ymin = e[0].yt;
-    ymax = (int64_t)e[0].yt + e[0].dy;
-    for (i = 0; i < n; i++) {
-        rast__cov_prep(&e[i]);
-        order[i] = (int32_t)i;
-        if (e[i].yt < ymin) ymin = e[i].yt;
-        if ((int64_t)e[i].yt + e[i].dy > ymax) ymax = (int64_t)e[i].yt + e[i].dy;
-    }
-    ymin = rast__floordiv(ymin, a.p);
-    ymax = rast__ceildiv(ymax, a.p);
-    ja = ymin > o->clip.y0 ? (int32_t)(ymin < o->clip.y1 ? ymin : o->clip.y1) : o->clip.y0;
-    jb = ymax < o->clip.y1 ? (int32_t)(ymax > ja ? ymax : ja) : o->clip.y1;
+    rast__cov_rows(e, n, a.p, order, o, &ja, &jb);
     for (i = 0; i < n; i++) { /* the row where each starts, from ja; its last row */
         int64_t r = rast__floordiv(e[i].yt, a.p) - ja;
         key[i] = r < 0 ? 0 : (int32_t)r;

@@ -146,6 +146,45 @@ typedef struct rast__cedge {
 uint32_t rast__cov_edges_polygon(const rast_polygon *poly, rast__cedge *e);
 uint32_t rast__cov_edges_triangles(const rast_point *tris, uint32_t ntris, rast__cedge *e);
 
+/* The quick steppers (units Q = 2^-30 pixel; HQ = 30 - S, P = 2^S).  e's
+ * exact abscissa at the top of row j (which e spans: yt <= j P < yt + dy)
+ * is qx + qxr/dy: stepped from the row above by qxs + qxsr/dy, else two
+ * divisions (dx (jP - yt) < 2^56; the remainder times 2^HQ < 2^58). */
+static inline int64_t rast__cov_qtop(rast__cedge *e, int32_t j, int32_t p, int32_t hq)
+{
+    if (e->qrow == j - 1) {
+        e->qx += e->qxs;
+        e->qxr += e->qxsr;
+        if (e->qxr >= (uint32_t)e->dy) {
+            e->qxr -= (uint32_t)e->dy;
+            e->qx++;
+        }
+        e->qrow = j;
+    } else if (e->qrow != j) {
+        int64_t q, r, q2, r2;
+        rast__floordivmod((int64_t)e->dx * ((int64_t)j * p - e->yt), e->dy, &q, &r);
+        rast__floordivmod(r * ((int64_t)1 << hq), e->dy, &q2, &r2);
+        e->qx = ((int64_t)e->xt + q) * ((int64_t)1 << hq) + q2;
+        e->qxr = (uint32_t)r2;
+        e->qrow = j;
+    }
+    return e->qx;
+}
+
+/* e's column stepper at vertical X (which e's x range reaches: |X P - xt|
+ * <= |dx|): t = floor(|X P - xt| dy 2^HQ / |dx|) from e's top, qt + qtr/|dx|,
+ * in two 64-bit divisions (|X P - xt| dy < 2^56, the remainder times 2^HQ <
+ * 2^58). */
+static inline void rast__cov_qt_first(rast__cedge *e, int64_t X, int32_t p, int32_t hq)
+{
+    uint64_t adx = (uint64_t)(e->dx < 0 ? -(int64_t)e->dx : e->dx);
+    int64_t w = X * p - e->xt;
+    uint64_t m = (uint64_t)(w < 0 ? -w : w) * (uint64_t)e->dy, r = (m % adx) << hq;
+    e->qt = (int64_t)(((m / adx) << hq) + r / adx);
+    e->qtr = (uint32_t)(r % adx);
+    e->qX = X;
+}
+
 /* ---- where the values go ----------------------------------------------- */
 
 typedef struct rast__cov_out {
@@ -204,6 +243,24 @@ void rast__cov_zero_rows(const rast__cov_out *o, int32_t y0, int32_t y1);
 size_t rast__cov_area_scratch(uint32_t n, int32_t width);
 rast_status rast__cov_area(rast__cedge *e, uint32_t n, int32_t s, rast_fill_rule rule,
                            int accumulate, const rast__cov_out *o, rast__arena *arena);
+
+/* Accumulation into uint8 or uint16 levels (coverage_acc.c), when
+ * rast__cov_acc_may: as rast__cov_area(..., accumulate = 1, ...), in the
+ * same scratch.  It sets each edge's steps by rast__cov_rows and sends a
+ * row whose levels its 64-bit cells cannot decide to
+ * rast__cov_acc_exact_row: the edges row[0..nrow) of row j, whole, the
+ * exact way, into row j of o (handed on), with cleared cells cover[],
+ * area[] (clip width each) and bits[] (a bit a column), left cleared. */
+int rast__cov_acc_may(const rast__cov_out *o, int32_t s);
+rast_status rast__cov_acc(rast__cedge *e, uint32_t n, int32_t s, rast_fill_rule rule,
+                          const rast__cov_out *o, rast__arena *arena);
+/* Each edge's steps set, order[i] = i, and the rows [*ja, *jb) of the
+ * clip the edges' strips reach (n > 0). */
+void rast__cov_rows(rast__cedge *e, uint32_t n, int32_t p, int32_t *order, const rast__cov_out *o,
+                    int32_t *ja, int32_t *jb);
+void rast__cov_acc_exact_row(rast__cedge *e, const int32_t *row, int32_t nrow, int32_t j,
+                             int32_t s, rast_fill_rule rule, const rast__cov_out *o,
+                             rast__i128 *cover, rast__i128 *area, uint64_t *bits);
 
 /* Supersampling k x k (k = 2^kbits) of `poly` (a polygon in range, already
  * scaled or not: see coverage_ss.c) into o. */

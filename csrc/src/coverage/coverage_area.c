@@ -780,24 +780,7 @@ static inline int64_t rast__q_col(int64_t v)
  * divisions (dx (jP - yt) < 2^56; the remainder times 2^(30 - S) < 2^58). */
 static inline int64_t rast__q_top(rast__cedge *e, int32_t j, const rast__cells *c)
 {
-    const int32_t hq = QF - (G - c->h);
-    if (e->qrow == j - 1) {
-        e->qx += e->qxs;
-        e->qxr += e->qxsr;
-        if (e->qxr >= (uint32_t)e->dy) {
-            e->qxr -= (uint32_t)e->dy;
-            e->qx++;
-        }
-        e->qrow = j;
-    } else if (e->qrow != j) {
-        int64_t q, r, q2, r2;
-        rast__floordivmod((int64_t)e->dx * ((int64_t)j * c->p - e->yt), e->dy, &q, &r);
-        rast__floordivmod(r * ((int64_t)1 << hq), e->dy, &q2, &r2);
-        e->qx = ((int64_t)e->xt + q) * ((int64_t)1 << hq) + q2;
-        e->qxr = (uint32_t)r2;
-        e->qrow = j;
-    }
-    return e->qx;
+    return rast__cov_qtop(e, j, c->p, QF - (G - c->h));
 }
 
 /* The quick abscissae of e's part in row j (rows Yj = j P): its ends'
@@ -834,13 +817,7 @@ static inline void rast__q_part(rast__cedge *e, int32_t j, const rast__cells *c,
  * 64-bit divisions (|X P - xt| dy < 2^56, the remainder times 2^HQ < 2^58). */
 static void rast__q_t_first(rast__cedge *e, int64_t X, const rast__cells *c)
 {
-    const int32_t hq = QF - (G - c->h);
-    uint64_t adx = (uint64_t)(e->dx < 0 ? -(int64_t)e->dx : e->dx);
-    int64_t w = X * c->p - e->xt;
-    uint64_t a = (uint64_t)(w < 0 ? -w : w) * (uint64_t)e->dy, r = (a % adx) << hq;
-    e->qt = (int64_t)(((a / adx) << hq) + r / adx);
-    e->qtr = (uint32_t)(r % adx);
-    e->qX = X;
+    rast__cov_qt_first(e, X, c->p, QF - (G - c->h));
 }
 
 static inline void rast__q_t_next(rast__cedge *e)
@@ -1504,15 +1481,65 @@ static void rast__cov_row_acc(rast__cells *c, rast__cedge *e, const int32_t *row
     rast__row_exact(c, e, row, nrow, j, 0);
 }
 
+/* c's fields but its arrays: nothing added yet; quick where the format has it. */
+static void rast__cells_init(rast__cells *c, int32_t s, rast_fill_rule rule, int accumulate,
+                             const rast__cov_out *o)
+{
+    c->carry = rast__i128_u64(0);
+    c->x0 = o->clip.x0;
+    c->x1 = o->clip.x1;
+    c->wmin = INT32_MAX;
+    c->wmax = -1;
+    c->h = G - s;
+    c->p = (int32_t)1 << s;
+    c->accumulate = accumulate;
+    c->qcarry = 0;
+    c->o = o;
+    c->rule = rule;
+    c->quick = o->format == RAST_COVERAGE_U8 ? 255 : o->format == RAST_COVERAGE_U16 ? 65535 : 0;
+    c->emitted = 0;
+}
+
+void rast__cov_rows(rast__cedge *e, uint32_t n, int32_t p, int32_t *order, const rast__cov_out *o,
+                    int32_t *ja, int32_t *jb)
+{
+    int64_t ymin = e[0].yt, ymax = (int64_t)e[0].yt + e[0].dy;
+    uint32_t i;
+    for (i = 0; i < n; i++) {
+        order[i] = (int32_t)i;
+        rast__cov_steps(&e[i]);
+        if (e[i].yt < ymin) ymin = e[i].yt;
+        if ((int64_t)e[i].yt + e[i].dy > ymax) ymax = (int64_t)e[i].yt + e[i].dy;
+    }
+    /* Rows whose strip the edges reach: floor(ymin / P) .. ceil(ymax / P). */
+    ymin = rast__floordiv(ymin, p);
+    ymax = rast__ceildiv(ymax, p);
+    *ja = ymin > o->clip.y0 ? (int32_t)(ymin < o->clip.y1 ? ymin : o->clip.y1) : o->clip.y0;
+    *jb = ymax < o->clip.y1 ? (int32_t)(ymax > *ja ? ymax : *ja) : o->clip.y1;
+}
+
+void rast__cov_acc_exact_row(rast__cedge *e, const int32_t *row, int32_t nrow, int32_t j,
+                             int32_t s, rast_fill_rule rule, const rast__cov_out *o,
+                             rast__i128 *cover, rast__i128 *area, uint64_t *bits)
+{
+    rast__cells c;
+    c.cover = cover;
+    c.area = area;
+    c.bits = bits;
+    rast__cells_init(&c, s, rule, 1, o);
+    c.quick = 0;
+    rast__row_exact(&c, e, row, nrow, j, 0);
+    rast__cells_emit(&c, o, j, rule);
+}
+
 rast_status rast__cov_area(rast__cedge *e, uint32_t n, int32_t s, rast_fill_rule rule,
                            int accumulate, const rast__cov_out *o, rast__arena *arena)
 {
     rast__cells c;
     rast__sweep sw;
     int32_t *order, *row, nrow = 0, j, ja, jb, k, width = o->clip.x1 - o->clip.x0;
-    uint32_t i, next = 0, nlive;
+    uint32_t next = 0, nlive;
     int32_t fast = 0, same; /* the last row's s if it was a fast row; its edges kept */
-    int64_t ymin, ymax;
 
     order = (int32_t *)rast__take(arena, (size_t)n * sizeof(int32_t));
     row = (int32_t *)rast__take(arena, (size_t)n * sizeof(int32_t));
@@ -1529,39 +1556,15 @@ rast_status rast__cov_area(rast__cedge *e, uint32_t n, int32_t s, rast_fill_rule
         return RAST_E_SCRATCH;
     for (k = 0; k < width; k++) c.cover[k] = c.area[k] = rast__i128_u64(0);
     for (k = 0; k < (width + 63) / 64; k++) c.bits[k] = 0;
-    c.carry = rast__i128_u64(0);
-    c.x0 = o->clip.x0;
-    c.x1 = o->clip.x1;
-    c.wmin = INT32_MAX;
-    c.wmax = -1;
-    c.h = G - s;
-    c.p = (int32_t)1 << s;
-    c.accumulate = accumulate;
-    c.qcarry = 0;
-    c.o = o;
-    c.rule = rule;
-    c.quick = o->format == RAST_COVERAGE_U8 ? 255 : o->format == RAST_COVERAGE_U16 ? 65535 : 0;
-    c.emitted = 0;
+    rast__cells_init(&c, s, rule, accumulate, o);
 
     if (n == 0) {
         rast__cov_zero_rows(o, o->clip.y0, o->clip.y1);
         return RAST_OK;
     }
-    ymin = e[0].yt;
-    ymax = (int64_t)e[0].yt + e[0].dy;
-    for (i = 0; i < n; i++) {
-        order[i] = (int32_t)i;
-        rast__cov_steps(&e[i]);
-        if (e[i].yt < ymin) ymin = e[i].yt;
-        if ((int64_t)e[i].yt + e[i].dy > ymax) ymax = (int64_t)e[i].yt + e[i].dy;
-    }
+    rast__cov_rows(e, n, c.p, order, o, &ja, &jb);
     rast__cov_sort_tops(order, e, n);
     nlive = rast__cov_cancel(order, e, n);
-    /* Rows whose strip the edges reach: floor(ymin / P) .. ceil(ymax / P). */
-    ymin = rast__floordiv(ymin, c.p);
-    ymax = rast__ceildiv(ymax, c.p);
-    ja = ymin > o->clip.y0 ? (int32_t)(ymin < o->clip.y1 ? ymin : o->clip.y1) : o->clip.y0;
-    jb = ymax < o->clip.y1 ? (int32_t)(ymax > ja ? ymax : ja) : o->clip.y1;
     rast__cov_zero_rows(o, o->clip.y0, ja);
     for (j = ja; j < jb; j++) {
         const int64_t Yj = (int64_t)j * c.p;

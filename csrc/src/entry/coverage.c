@@ -256,6 +256,10 @@ static rast_status rast__cov_run(const rast_polygon *poly, const rast_point *tri
         uint32_t n;
         if (npoints && !e) return RAST_E_SCRATCH;
         n = tris ? rast__cov_edges_triangles(tris, ntris, e) : rast__cov_edges_polygon(poly, e);
+        /* a triangle batch's shared edges cancel in rast__cov_area's sweep
+         * before any row; a polygon's accumulation goes to rast__cov_acc */
+        if (opts->method == RAST_AA_ACCUMULATE && !tris && rast__cov_acc_may(o, s))
+            return rast__cov_acc(e, n, s, rule, o, &arena);
         return rast__cov_area(e, n, s, rule, opts->method == RAST_AA_ACCUMULATE, o, &arena);
     } else {
         int32_t scale = s < kb ? kb - s : 0;

@@ -1,0 +1,425 @@
+/*
+ * coverage_acc.c - signed-area accumulation ("accumulate") into uint8 or
+ * uint16 levels, one row of cells at a time (DESIGN section 1a; the bound
+ * in rastrum.h).
+ *
+ * The edges (rast__cedge, their steps set by rast__cov_prep) are ordered
+ * by the pixel row where they start with a radix sort (no heap, no
+ * cancelling: the integral does not need it).  Row by row, each edge that
+ * spans part of the row deposits that part into ONE array of 64-bit cells
+ * acc[]: for the piece of the part in column k, from fraction f0 to f1 of
+ * the pixel (Q = 2^-30 pixel units) over the height dy (Q units),
+ * acc[k] += s (dy 2^21 - ar) and acc[k + 1] += s ar, ar = floor((f0 + f1)
+ * dy / 2^10), s the edge's direction (a piece left of the clip adds s dy
+ * 2^21 to acc[0], one right of it nothing).  The running sum of acc[] at
+ * column k is then v = 2^21 cover - area of the cells coverage_area.c
+ * describes (its quick accumulation): the same sums, split between two
+ * cells, so v 2^-51 is within n 2^-28 of the exact integral a of the
+ * winding number over the pixel, n the row's parts: a part meets a pixel
+ * at two points at most (where it enters and leaves the column), each
+ * rounded to the grid of Q (its end's abscissa or its column crossing's
+ * ordinate, both floored exactly by integer steppers: abscissae from row
+ * to row, ordinates from column to column, quotient and remainder, no
+ * division per row or column), which moves the pixel's share by less
+ * than Q; the floor of ar adds less than 2^-51; 2 Q + 2^-51 < 2^-28.
+ * The level floor(a' M + 1/2) (a' the rule applied: non-zero min(|a|, 1),
+ * even-odd |a| folded mod 2, both moving a value by no more than they move
+ * a) is decided unless a' M + 1/2 is within (n + 1) M 2^-27 of an integer;
+ * any such pixel sends the whole row to the exact sweep
+ * (rast__cov_acc_exact_row), which writes it again.  The sums are modular
+ * in 64 bits: |a| <= n / 2 < 2^8 (n < 512), so v fits.
+ *
+ * The cells are cleared by the pass that reads them, which runs over the
+ * columns touched only; the pixels left of them are 0, those right of
+ * them all take the last sum's level (one fill).
+ */
+#include "coverage.h"
+#include "../fillers/poly.h" /* rast__ctz64 */
+
+#define QF 30
+#define QT ((uint64_t)1 << QF)
+#define QONE ((int64_t)1 << 51)
+#define RAST__ACC_B 4 /* blocks of 2^B cells */
+
+/* floor(v / 2^QF) for |v| < 2^62 (no >> of a negative value) */
+static inline int64_t rast__acc_col(int64_t v)
+{
+    return (int64_t)(((uint64_t)v + ((uint64_t)1 << 62)) >> QF) - ((int64_t)1 << 32);
+}
+
+typedef struct rast__acc {
+    uint64_t *acc;     /* clip width + 1 cells */
+    int32_t x0, x1;    /* clip columns */
+    uint64_t *blk;     /* a bit for each block of 2^B cells touched */
+    int32_t lo, hi;    /* cells touched this row: [lo, hi] (lo > hi: none) */
+    int32_t p, hq;     /* P = 2^S; HQ = 30 - S */
+} rast__acc;
+
+/* rast__cov_qtop, rast__cov_qt_first with this engine's P and HQ */
+static inline int64_t rast__acc_top(rast__cedge *e, int32_t j, const rast__acc *a)
+{
+    return rast__cov_qtop(e, j, a->p, a->hq);
+}
+
+static void rast__acc_t_first(rast__cedge *e, int64_t X, const rast__acc *a)
+{
+    rast__cov_qt_first(e, X, a->p, a->hq);
+}
+
+/* Cells [lo, hi] touched. */
+static inline void rast__acc_mark(rast__acc *a, int32_t lo, int32_t hi)
+{
+    int32_t b = lo >> RAST__ACC_B, bh = hi >> RAST__ACC_B;
+    if (lo < a->lo) a->lo = lo;
+    if (hi > a->hi) a->hi = hi;
+    a->blk[b >> 6] |= (uint64_t)1 << (b & 63);
+    for (b++; b <= bh; b++) a->blk[b >> 6] |= (uint64_t)1 << (b & 63);
+}
+
+/* One column's piece: fractions f0 .. f1, height dy, signed by neg (0 or
+ * all ones); column k of the clip (0 <= k < width). */
+static inline void rast__acc_put(uint64_t *acc, int64_t k, uint64_t f0, uint64_t f1, uint64_t dy,
+                                 uint64_t neg)
+{
+    uint64_t ar = ((f0 + f1) * dy) >> 10;
+    acc[k] += (((dy << 21) - ar) ^ neg) - neg;
+    acc[k + 1] += (ar ^ neg) - neg;
+}
+
+/* The part of e from (xa, ta) to (xb, tb) (Q units; t from the row's top,
+ * whose top is off below e's top), sign s. */
+static void rast__acc_part(rast__acc *a, rast__cedge *e, int64_t off, int64_t xa, uint64_t ta,
+                           int64_t xb, uint64_t tb, int32_t s)
+{
+    const uint64_t fm = QT - 1, neg = s < 0 ? ~(uint64_t)0 : 0;
+    uint64_t *acc = a->acc;
+    int64_t ca = rast__acc_col(xa), cb = rast__acc_col(xb), col, cend, step, lo, hi, qt;
+    uint64_t f = (uint64_t)xa & fm, fb = (uint64_t)xb & fm, t = ta, fin, fout;
+    uint32_t qtr, adx;
+    if (ta >= tb) return;
+    if (ca < a->x0 && cb < a->x0) { /* all left of the clip */
+        acc[0] += (((tb - ta) << 21) ^ neg) - neg;
+        rast__acc_mark(a, 0, 0);
+        return;
+    }
+    if (ca == cb) {
+        if (ca >= a->x1) return;
+        lo = hi = ca - a->x0;
+        rast__acc_put(acc, lo, f, fb, tb - ta, neg);
+        rast__acc_mark(a, (int32_t)lo, (int32_t)hi + 1);
+        return;
+    }
+    adx = (uint32_t)(e->dx < 0 ? -e->dx : e->dx);
+    if (ca < cb) { /* right: the verticals ca + 1 .. cb */
+        if (ca >= a->x1) return;
+        step = 1;
+        fin = 0;
+        fout = QT;
+        if (ca < a->x0) { /* to vertical x0 as cover left of the clip */
+            if (e->qX != a->x0) rast__acc_t_first(e, a->x0, a);
+            qt = e->qt - off;
+            t = qt < (int64_t)t ? t : qt > (int64_t)tb ? tb : (uint64_t)qt;
+            acc[0] += (((t - ta) << 21) ^ neg) - neg;
+            ca = a->x0;
+            f = 0;
+            e->qt += e->qts;
+            e->qtr += e->qtsr;
+            if (e->qtr >= adx) {
+                e->qtr -= adx;
+                e->qt++;
+            }
+            e->qX++;
+        } else if (e->qX != ca + 1) {
+            rast__acc_t_first(e, ca + 1, a);
+        }
+        cend = cb < a->x1 ? cb : a->x1;
+        lo = ca;
+        hi = cend;
+    } else { /* left: the verticals ca .. cb + 1 */
+        if (cb >= a->x1) return;
+        step = -1;
+        fin = QT;
+        fout = 0;
+        if (ca >= a->x1) { /* from vertical x1 */
+            if (e->qX != a->x1) rast__acc_t_first(e, a->x1, a);
+            qt = e->qt - off;
+            t = qt < (int64_t)t ? t : qt > (int64_t)tb ? tb : (uint64_t)qt;
+            ca = a->x1 - 1;
+            f = QT;
+            e->qt += e->qts;
+            e->qtr += e->qtsr;
+            if (e->qtr >= adx) {
+                e->qtr -= adx;
+                e->qt++;
+            }
+            e->qX--;
+        } else if (e->qX != ca) {
+            rast__acc_t_first(e, ca, a);
+        }
+        cend = cb >= a->x0 ? cb : a->x0 - 1;
+        lo = cend;
+        hi = ca;
+    }
+    qt = e->qt - off;
+    qtr = e->qtr;
+    for (col = ca; col != cend; col += step) {
+        uint64_t tx = qt < (int64_t)t ? t : qt > (int64_t)tb ? tb : (uint64_t)qt;
+        rast__acc_put(acc, col - a->x0, f, fout, tx - t, neg);
+        t = tx;
+        f = fin;
+        qt += e->qts;
+        qtr += e->qtsr;
+        if (qtr >= adx) {
+            qtr -= adx;
+            qt++;
+        }
+    }
+    e->qt = qt + off;
+    e->qtr = qtr;
+    e->qX += col - ca;
+    if (col == cb && col >= a->x0 && col < a->x1) { /* the last column, inside the clip */
+        rast__acc_put(acc, col - a->x0, f, fb, tb - t, neg);
+    } else if (col < a->x0) { /* the rest is left of the clip */
+        acc[0] += (((tb - t) << 21) ^ neg) - neg;
+    } /* else the rest is right of the clip */
+    lo = lo < a->x0 ? 0 : lo - a->x0;
+    hi = (hi >= a->x1 ? a->x1 - 1 : hi) - a->x0 + 1;
+    rast__acc_mark(a, (int32_t)lo, (int32_t)hi);
+}
+
+/* The level of the running sum v (2^51 = one pixel) under the rule, M =
+ * m; *bad set when a tie is within win / 2^51 of it. */
+RAST__HOT uint64_t rast__acc_level(int64_t v, rast_fill_rule rule, uint32_t m, uint64_t win,
+                                       uint64_t *bad)
+{
+    uint64_t x = v < 0 ? 0 - (uint64_t)v : (uint64_t)v;
+    if (rule == RAST_RULE_NONZERO) {
+        if (x > (uint64_t)QONE) x = (uint64_t)QONE;
+    } else {
+        x &= 2 * (uint64_t)QONE - 1;
+        if (x > (uint64_t)QONE) x = 2 * (uint64_t)QONE - x;
+    }
+    if (m == 255) {
+        x = x * 255 + ((uint64_t)1 << 50);
+    } else { /* x 65535 < 2^67: by halves */
+        uint64_t hi = (x >> 32) * 65535, lo = (x & 0xFFFFFFFFu) * 65535 + ((uint64_t)1 << 50);
+        uint64_t lev = (hi >> 19) + ((((hi & 0x7FFFF) << 32) + lo) >> 51), fr = ((hi << 32) + lo) & ((uint64_t)QONE - 1);
+        *bad |= (uint64_t)(fr - win > (uint64_t)QONE - 2 * win);
+        return lev;
+    }
+    *bad |= (uint64_t)((x & ((uint64_t)QONE - 1)) - win > (uint64_t)QONE - 2 * win);
+    return x >> 51;
+}
+
+/* Row y's uint8 levels from the cells in [lo, hi) (their blocks of 2^B
+ * marked in blk; a block not marked holds only zeros: one fill), which
+ * are cleared; the pixels left of lo get 0, those from hi on the last
+ * sum's level.  rule and m are constants at each call (one loop each).
+ * Returns a tie's flag (rast__acc_level's). */
+RAST__HOT uint64_t rast__acc_row(uint64_t *acc, const uint64_t *blk, unsigned char *row,
+                                 int32_t lo, int32_t hi, int32_t w, rast_fill_rule rule,
+                                 uint32_t m, uint64_t win)
+{
+    uint64_t bad = 0, lev = 0, v = 0;
+    uint16_t *r16 = (uint16_t *)(void *)row;
+    int32_t k = lo;
+    if (m == 255)
+        memset(row, 0, (size_t)lo);
+    else
+        for (k = 0; k < lo; k++) r16[k] = 0;
+    while (k < hi) {
+        int32_t b = k >> RAST__ACC_B, kend = (b + 1) << RAST__ACC_B;
+        if (kend > hi) kend = hi;
+        if ((blk[b >> 6] >> (b & 63)) & 1) {
+            for (; k < kend; k++) {
+                uint64_t d = acc[k];
+                if (d) {
+                    acc[k] = 0;
+                    v += d;
+                    lev = rast__acc_level((int64_t)v, rule, m, win, &bad);
+                }
+                if (m == 255)
+                    row[k] = (unsigned char)lev;
+                else
+                    r16[k] = (uint16_t)lev;
+            }
+        } else if (m == 255) { /* to the next block marked */
+            uint64_t bw = blk[b >> 6] >> (b & 63);
+            int32_t nb = b - (b & 63) + 64;
+            if (bw) {
+                nb = b + (int32_t)rast__ctz64(bw);
+            } else {
+                while ((nb << RAST__ACC_B) < hi && !blk[nb >> 6]) nb += 64;
+                if ((nb << RAST__ACC_B) < hi) nb += (int32_t)rast__ctz64(blk[nb >> 6]);
+            }
+            kend = nb << RAST__ACC_B < hi ? nb << RAST__ACC_B : hi;
+            memset(row + k, (int)lev, (size_t)(kend - k));
+            k = kend;
+        } else {
+            for (; k < kend; k++) r16[k] = (uint16_t)lev;
+        }
+    }
+    if (m == 255)
+        memset(row + hi, (int)lev, (size_t)(w - hi));
+    else
+        for (k = hi; k < w; k++) r16[k] = (uint16_t)lev;
+    return bad;
+}
+
+static uint64_t rast__acc_row_u8nz(uint64_t *acc, const uint64_t *blk, unsigned char *row,
+                                   int32_t lo, int32_t hi, int32_t w, uint64_t win)
+{
+    return rast__acc_row(acc, blk, row, lo, hi, w, RAST_RULE_NONZERO, 255, win);
+}
+
+static uint64_t rast__acc_row_u8eo(uint64_t *acc, const uint64_t *blk, unsigned char *row,
+                                   int32_t lo, int32_t hi, int32_t w, uint64_t win)
+{
+    return rast__acc_row(acc, blk, row, lo, hi, w, RAST_RULE_EVENODD, 255, win);
+}
+
+/* Row y from the cells touched, which are cleared: 1 when done (handed
+ * on), 0 when a level is not certain (nothing handed on). */
+static int rast__acc_emit(rast__acc *a, const rast__cov_out *o, int32_t y, rast_fill_rule rule,
+                          uint32_t m, uint64_t win)
+{
+    unsigned char *row = rast__cov_row(o, y);
+    const int32_t w = a->x1 - a->x0;
+    uint64_t bad;
+    int32_t k, lo = a->lo, hi = a->hi < w ? a->hi + 1 : w; /* [lo, hi) */
+    if (lo >= hi) lo = hi = 0;
+    if (o->format != RAST_COVERAGE_U8)
+        bad = rast__acc_row(a->acc, a->blk, row, lo, hi, w, rule, m, win);
+    else if (rule == RAST_RULE_NONZERO)
+        bad = rast__acc_row_u8nz(a->acc, a->blk, row, lo, hi, w, win);
+    else
+        bad = rast__acc_row_u8eo(a->acc, a->blk, row, lo, hi, w, win);
+    a->acc[w] = 0;
+    if (a->hi >= 0)
+        for (k = a->lo >> (RAST__ACC_B + 6); k <= a->hi >> (RAST__ACC_B + 6); k++) a->blk[k] = 0;
+    a->lo = INT32_MAX;
+    a->hi = -1;
+    if (bad) return 0;
+    rast__cov_row_done(o, y);
+    return 1;
+}
+
+/* Radix sort (8 bits a pass, as many as the largest key needs) of ix[0..n) by key[] (>= 0), tmp[] as room; the result in ix. */
+static void rast__acc_sort(int32_t *ix, int32_t *tmp, const int32_t *key, uint32_t n)
+{
+    uint32_t cnt[256], i, d, sh, top = 0;
+    for (i = 0; i < n; i++) top |= (uint32_t)key[i];
+    for (sh = 0; sh < 32 && (top >> sh); sh += 8) {
+        int32_t *t;
+        uint32_t sum = 0;
+        for (d = 0; d < 256; d++) cnt[d] = 0;
+        for (i = 0; i < n; i++) cnt[((uint32_t)key[ix[i]] >> sh) & 0xFF]++;
+        for (d = 0; d < 256; d++) {
+            uint32_t c = cnt[d];
+            cnt[d] = sum;
+            sum += c;
+        }
+        for (i = 0; i < n; i++) tmp[cnt[((uint32_t)key[ix[i]] >> sh) & 0xFF]++] = ix[i];
+        t = ix;
+        for (i = 0; i < n; i++) t[i] = tmp[i];
+    }
+}
+
+int rast__cov_acc_may(const rast__cov_out *o, int32_t s)
+{
+    return (o->format == RAST_COVERAGE_U8 || o->format == RAST_COVERAGE_U16) && s >= 0 && s <= 16;
+}
+
+rast_status rast__cov_acc(rast__cedge *e, uint32_t n, int32_t s, rast_fill_rule rule,
+                          const rast__cov_out *o, rast__arena *arena)
+{
+    const int32_t width = o->clip.x1 - o->clip.x0;
+    const uint32_t m = o->format == RAST_COVERAGE_U8 ? 255 : 65535;
+    rast__acc a;
+    rast__i128 *cover, *area;
+    uint64_t *bits;
+    int32_t *order, *row, *tmp, *key, *last, nrow = 0, j, ja, jb, k, drop = INT32_MAX;
+    uint32_t i, next = 0;
+    /* the same blocks as rast__cov_area's (its scratch bound): the cells
+     * acc[] (width + 1 words) lie in cover[] (width pairs of words), which
+     * the exact row finds cleared as it leaves it */
+    order = (int32_t *)rast__take(arena, (size_t)n * sizeof(int32_t));
+    row = (int32_t *)rast__take(arena, (size_t)n * sizeof(int32_t));
+    tmp = (int32_t *)rast__take(arena, (size_t)n * sizeof(int32_t));
+    key = (int32_t *)rast__take(arena, (size_t)n * sizeof(int32_t));
+    last = (int32_t *)rast__take(arena, (size_t)n * sizeof(int32_t));
+    (void)rast__take(arena, (size_t)n * sizeof(int32_t));
+    (void)rast__take(arena, (size_t)n * sizeof(uint64_t));
+    cover = (rast__i128 *)rast__take(arena, (size_t)width * sizeof(rast__i128));
+    area = (rast__i128 *)rast__take(arena, (size_t)width * sizeof(rast__i128));
+    bits = (uint64_t *)rast__take(arena, ((size_t)width + 63) / 64 * sizeof(uint64_t));
+    if ((n && (!order || !row || !tmp || !key || !last)) || !cover || !area || !bits) return RAST_E_SCRATCH;
+    for (k = 0; k < width; k++) cover[k] = area[k] = rast__i128_u64(0);
+    for (k = 0; k < (width + 63) / 64; k++) bits[k] = 0;
+    a.acc = (uint64_t *)(void *)cover;
+    a.blk = bits; /* (w + 1 cells: ceil((w + 1) / 2^B) bits <= 64 ceil(w / 64)) */
+    a.x0 = o->clip.x0;
+    a.x1 = o->clip.x1;
+    a.lo = INT32_MAX;
+    a.hi = -1;
+    a.p = (int32_t)1 << s;
+    a.hq = QF - s;
+    if (n == 0) {
+        rast__cov_zero_rows(o, o->clip.y0, o->clip.y1);
+        return RAST_OK;
+    }
+    rast__cov_rows(e, n, a.p, order, o, &ja, &jb);
+    for (i = 0; i < n; i++) { /* the row where each starts, from ja; its last row */
+        int64_t r = rast__floordiv(e[i].yt, a.p) - ja;
+        key[i] = r < 0 ? 0 : (int32_t)r;
+        last[i] = (int32_t)(rast__ceildiv((int64_t)e[i].yt + e[i].dy, a.p) - 1);
+    }
+    rast__acc_sort(order, tmp, key, n);
+    rast__cov_zero_rows(o, o->clip.y0, ja);
+    for (j = ja; j < jb; j++) {
+        const int64_t Yj = (int64_t)j * a.p;
+        int32_t q;
+        if (j > drop) { /* an edge ended in the row above: drop those that did */
+            drop = INT32_MAX;
+            for (k = 0, q = 0; k < nrow; k++)
+                if (last[row[k]] >= j) {
+                    row[q++] = row[k];
+                    if (last[row[k]] < drop) drop = last[row[k]];
+                }
+            nrow = q;
+        }
+        while (next < n && e[order[next]].yt < Yj + a.p) {
+            if (last[order[next]] >= j) {
+                row[nrow++] = order[next];
+                if (last[order[next]] < drop) drop = last[order[next]];
+            }
+            next++;
+        }
+        if (nrow < 512 && ((uint64_t)nrow + 1) * m < ((uint64_t)1 << 25)) {
+            for (k = 0; k < nrow; k++) {
+                rast__cedge *ed = &e[row[k]];
+                int64_t rel0 = (int64_t)ed->yt - Yj, rel1 = rel0 + ed->dy, xa, xb;
+                uint64_t ta, tb;
+                if (rel0 > 0) {
+                    ta = (uint64_t)rel0 << a.hq;
+                    xa = (int64_t)ed->xt * ((int64_t)1 << a.hq);
+                } else {
+                    ta = 0;
+                    xa = rast__acc_top(ed, j, &a);
+                }
+                if (rel1 < a.p) {
+                    tb = (uint64_t)rel1 << a.hq;
+                    xb = ((int64_t)ed->xt + ed->dx) * ((int64_t)1 << a.hq);
+                } else {
+                    tb = QT;
+                    xb = rast__acc_top(ed, j + 1, &a);
+                }
+                rast__acc_part(&a, ed, -rel0 * ((int64_t)1 << a.hq), xa, ta, xb, tb, ed->dir);
+            }
+            if (rast__acc_emit(&a, o, j, rule, m, ((uint64_t)nrow + 1) * m << 24)) continue;
+        }
+        rast__cov_acc_exact_row(e, row, nrow, j, s, rule, o, cover, area, bits);
+    }
+    rast__cov_zero_rows(o, jb, o->clip.y1);
+    return RAST_OK;
+}

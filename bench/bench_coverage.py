@@ -325,7 +325,12 @@ def _freetype_peer():
 AREA_MAX_EDGES = 20000
 
 
-def median_ms(f, reps):
+def median_ms(f, reps, warm=3):
+    """Median of reps timed calls of f, after `warm` untimed ones (every
+    method and peer alike: the first calls of a process run slower, and
+    the first scene's first method paid for it)."""
+    for _ in range(warm):
+        f()
     ts = []
     for _ in range(reps):
         t = time.perf_counter()

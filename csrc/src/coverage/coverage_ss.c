@@ -6,7 +6,7 @@
  * its sample sits at ((I + o) / k, (J + o) / k): exactly sub-sample
  * (I mod k, J mod k) of section 1a.  The polygon arrives on that grid
  * already (coverage.c scales its vertices by k exactly); the exact AET
- * walk (aet.h) hands its runs straight to rast__ss_span, row by row, and
+ * walk (aet.h) hands each row's edges, in order, to rast__ss_row_ends, and
  * a row of counters (one output row) adds them up.
  *
  * The counters are kept as differences (count[i] = d[0] + ... + d[i]), so
@@ -34,6 +34,9 @@ typedef struct rast__ss {
     int32_t row;           /* the output row (clip-relative); -1 before the first */
     int32_t next;          /* the first output row (clip-relative) not written yet */
     int32_t ends;          /* runs' ends in the output row so far */
+    int32_t evenodd;       /* the rule */
+    int32_t clip;          /* 0: every crossing within the clip's columns */
+    int32_t dense;         /* 1: uint8_t rows, all summed, no marks (rast__ss_dense) */
 } rast__ss;
 
 /* Pixels [k0, k1) of a clip row get value v. */
@@ -71,7 +74,7 @@ static void rast__ss_flush_dense(rast__ss *ss, unsigned char *row, int32_t w, in
         const int32_t a = k * 64, b = a + 64 < w ? a + 64 : w;
         if (a >= w) {
             /* the marks of column w (a run's end at the clip's edge) */
-        } else if (ss->mark[k]) {
+        } else if (ss->dense || ss->mark[k]) {
             /* four columns a step (the counts one after the other in
              * registers), then the differences cleared at once */
             for (i = a; i + 4 <= b; i += 4) {
@@ -108,7 +111,7 @@ static void rast__ss_flush(rast__ss *ss)
     unsigned char *row = rast__cov_row(o, y);
     int32_t *d = ss->d;
     int32_t w = o->clip.x1 - o->clip.x0, words = w / 64 + 1, k, at = 0, count = 0;
-    if (f == RAST_COVERAGE_U8 && (int64_t)ss->ends * 8 >= w) {
+    if (f == RAST_COVERAGE_U8 && (ss->dense || (int64_t)ss->ends * 8 >= w)) {
         rast__ss_flush_dense(ss, row, w, words);
         ss->ends = 0;
         ss->next = ss->row + 1;
@@ -162,41 +165,146 @@ static void rast__ss_row(rast__ss *ss, int32_t y)
     }
 }
 
-/* The run [l->x, r->x) of fine row y (its output row begun by
- * rast__ss_begin_row).  (Runs that touch need not be joined: their ends'
- * differences cancel.) */
-static inline void rast__ss_span(void *user, int32_t y, const rast__edge *l, const rast__edge *r)
+/* Run [x0, x1) of a fine row, clip-relative fine columns (x0 <= x1): its
+ * two ends counted (rast__ss_end; an empty run's two cancel), and marked
+ * unless `mark` is NULL (rast__ss_dense). */
+static inline void rast__ss_pair(int32_t *d, uint64_t *mark, int32_t kb, int32_t x0, int32_t x1)
 {
-    rast__ss *ss = (rast__ss *)user;
-    /* (the fields read once: a store through d could be to any int32_t) */
-    const int32_t kb = ss->kbits, K = (int32_t)1 << kb, fx0 = ss->fx0, fx1 = ss->fx1;
-    int32_t *d = ss->d;
-    uint64_t *mark = ss->mark;
-    int32_t x0 = l->x, x1 = r->x;
-    (void)y;
-    x0 = (x0 < fx0 ? fx0 : x0) - fx0;
-    x1 = (x1 > fx1 ? fx1 : x1) - fx0;
-    if (x0 < x1) { /* rast__ss_end of each end */
-        const int32_t i0 = x0 >> kb, f0 = x0 & (K - 1), i1 = x1 >> kb, f1 = x1 & (K - 1);
-        d[i0] += K - f0;
-        d[i0 + 1] += f0;
-        d[i1] -= K - f1;
-        d[i1 + 1] -= f1;
-        mark[i0 >> 6] |= (uint64_t)1 << (i0 & 63);
-        mark[i1 >> 6] |= (uint64_t)1 << (i1 & 63);
-        ss->ends += 2;
+    const int32_t K = (int32_t)1 << kb, c0 = x0 >> kb, c1 = x1 >> kb;
+    const int32_t f0 = x0 & (K - 1), f1 = x1 & (K - 1);
+    d[c0] += K - f0;
+    d[c0 + 1] += f0;
+    d[c1] -= K - f1;
+    d[c1 + 1] -= f1;
+    if (mark) {
+        mark[c0 >> 6] |= (uint64_t)1 << (c0 & 63);
+        mark[c1 >> 6] |= (uint64_t)1 << (c1 & 63);
     }
 }
 
-/* Called by the walk once a fine row, before its runs (the walk's order
- * hook, which leaves the edges as they are): the output row is begun
- * there, not at each run. */
-static inline void rast__ss_begin_row(void *user, int32_t y, rast__edge *aet, int32_t n)
+/* The runs of a non-zero row no end of which needs clamping, and the
+ * edges stepped: as rast__ss_row_ends.  1 when two edges changed places. */
+static inline int rast__ss_nz_in(rast__edge *aet, int32_t n, int32_t *d, uint64_t *mark,
+                                 int32_t kb, int32_t fx0)
+{
+    int32_t i, w = 0, x0 = 0, last = INT32_MIN, swapped = 0;
+    for (i = 0; i < n; i++) {
+        const int32_t x = aet[i].x;
+        if (w == 0) x0 = x;
+        w += aet[i].dir;
+        if (w == 0) rast__ss_pair(d, mark, kb, x0 - fx0, x - fx0);
+        rast__edge_step(&aet[i]);
+        swapped |= aet[i].x < last;
+        last = aet[i].x;
+    }
+    return swapped;
+}
+
+/* Fine row y's runs, from its active edges in order, and the edges
+ * stepped to the next row, in one pass (the walk's order hook, given no
+ * run function): even-odd, runs between edges 2k and 2k + 1; non-zero,
+ * from where the winding number leaves 0 to where it comes back.  The
+ * row's numbers are held in locals.  Clamping each end to the clip clamps
+ * the run (one wholly outside gets two ends that cancel); it is skipped
+ * when every crossing of the polygon is known to lie within the clip's
+ * columns (rast__ss_inside), as it mostly does. */
+static void rast__ss_row_ends(void *user, int32_t y, rast__edge *aet, int32_t n)
 {
     rast__ss *ss = (rast__ss *)user;
-    (void)aet;
-    (void)n;
+    const int32_t kb = ss->kbits, fx0 = ss->fx0, fx1 = ss->fx1;
+    int32_t *d = ss->d;
+    uint64_t *mark = ss->dense ? NULL : ss->mark;
+    int32_t i, w = 0, x0 = 0, last = INT32_MIN, swapped = 0;
     rast__ss_row(ss, y - ss->fy0);
+    ss->ends += n;
+    if (ss->evenodd && !ss->clip) {
+        for (i = 0; i + 1 < n; i += 2) {
+            rast__ss_pair(d, mark, kb, aet[i].x - fx0, aet[i + 1].x - fx0);
+            rast__edge_step(&aet[i]);
+            rast__edge_step(&aet[i + 1]);
+            swapped |= (aet[i].x < last) | (aet[i + 1].x < aet[i].x);
+            last = aet[i + 1].x;
+        }
+        if (i < n) { /* an odd edge out bounds no run */
+            rast__edge_step(&aet[i]);
+            swapped |= aet[i].x < last;
+        }
+    } else if (!ss->clip) {
+        /* (the commonest case, with the marks' test taken out of the loop) */
+        swapped = mark ? rast__ss_nz_in(aet, n, d, mark, kb, fx0)
+                       : rast__ss_nz_in(aet, n, d, NULL, kb, fx0);
+    } else {
+        for (i = 0; i < n; i++) {
+            int32_t x = aet[i].x;
+            x = (x < fx0 ? fx0 : x > fx1 ? fx1 : x) - fx0;
+            rast__edge_step(&aet[i]);
+            swapped |= aet[i].x < last;
+            last = aet[i].x;
+            if (ss->evenodd) {
+                if (!(i & 1)) {
+                    x0 = x;
+                    continue;
+                }
+            } else {
+                const int32_t was = w;
+                w += aet[i].dir;
+                if (was == 0) x0 = x;
+                if (w != 0) continue;
+            }
+            rast__ss_pair(d, mark, kb, x0, x);
+        }
+    }
+    if (swapped) rast__aet_sort(aet, n);
+}
+
+/* 1 when the polygon's output rows are expected to hold many runs' ends
+ * (one a column in 4 or more): its edges' heights summed (the crossings
+ * of all fine rows) times k over its height (k fine rows an output row).
+ * Such rows are written by rast__ss_flush_dense whole, and then the runs
+ * need no marks (a mark costs about as much as a run's end; with fewer
+ * ends, summing every column costs more than the marks save).  Only for
+ * uint8_t rows, which that flush writes; the choice changes no value. */
+static int rast__ss_dense(const rast_polygon *poly, const rast__ss *ss)
+{
+    const rast_point *p = poly->points;
+    uint64_t sum = 0;
+    int32_t lo, hi;
+    uint32_t k, i, base;
+    if (ss->o->format != RAST_COVERAGE_U8 || !poly->nrings) return 0;
+    lo = hi = p[0].y;
+    for (k = 0, base = 0; k < poly->nrings; base += poly->ring_sizes[k], k++) {
+        const uint32_t n = poly->ring_sizes[k];
+        for (i = 0; i < n; i++) {
+            const int32_t ya = p[base + i].y, yb = p[base + (i + 1 == n ? 0 : i + 1)].y;
+            sum += (uint64_t)(ya < yb ? (int64_t)yb - ya : (int64_t)ya - yb);
+            if (ya < lo) lo = ya;
+            if (ya > hi) hi = ya;
+        }
+    }
+    /* sum / (hi - lo) k 4 >= w (both sides below 2^63) */
+    return hi > lo && sum / (uint64_t)((int64_t)hi - lo) * ((uint64_t)4 << ss->kbits) >=
+                          (uint64_t)(ss->fx1 - ss->fx0) >> ss->kbits;
+}
+
+/* 1 when every crossing of the polygon (points on the fine grid, S
+ * fraction bits) lies within the fine clip's columns: the crossing of a
+ * row is the first column at or right of a point of an edge, so within a
+ * column of the points' extent. */
+static int rast__ss_inside(const rast_point *pts, uint32_t npoints, int32_t s,
+                           const rast__ss *ss)
+{
+    int32_t lo, hi;
+    uint32_t i;
+    if (npoints == 0) return 1;
+    lo = hi = pts[0].x;
+    for (i = 1; i < npoints; i++) {
+        if (pts[i].x < lo) lo = pts[i].x;
+        if (pts[i].x > hi) hi = pts[i].x;
+    }
+    /* every crossing's column lies in [floor(lo / 2^S) - 1,
+     * floor(hi / 2^S) + 1] */
+    return (int64_t)lo >= ((int64_t)ss->fx0 + 1) * ((int64_t)1 << s) &&
+           (int64_t)hi < ((int64_t)ss->fx1 - 1) * ((int64_t)1 << s);
 }
 
 /* 64-bit words of a fine row's bits (triangle batches), one spare. */
@@ -227,6 +335,9 @@ static rast_status rast__ss_begin(rast__ss *ss, int32_t kbits, const rast__cov_o
     int32_t k, w = o->clip.x1 - o->clip.x0;
     ss->o = o;
     ss->kbits = kbits;
+    ss->evenodd = 0; /* (triangle batches: non-zero, clamped, marked) */
+    ss->clip = 1;
+    ss->dense = 0;
     ss->row = -1;
     ss->next = 0;
     ss->ends = 0;
@@ -263,8 +374,11 @@ rast_status rast__cov_ss(const rast_polygon *poly, uint32_t npoints, int32_t s,
     rast_status st = rast__grid_init(&g, s, sample, RAST_ROUND_EXACT, RAST_BOUNDARY_EXACT);
     if (st == RAST_OK) st = rast__ss_begin(&ss, kbits, o, arena, &fine);
     if (st != RAST_OK) return st;
-    st = rast__aet_walk(poly, npoints, &g, rule, &fine, arena, rast__ss_span, rast__ss_begin_row,
-                        &ss, NULL);
+    ss.evenodd = rule == RAST_RULE_EVENODD;
+    ss.clip = !rast__ss_inside(poly->points, npoints, s, &ss);
+    ss.dense = rast__ss_dense(poly, &ss);
+    st = rast__aet_walk(poly, npoints, &g, rule, &fine, arena, NULL, rast__ss_row_ends, &ss,
+                        NULL);
     if (st != RAST_OK) return st;
     rast__ss_finish(&ss);
     return RAST_OK;
@@ -382,8 +496,8 @@ static int rast__ss_cancel(rast__ss *ss, const rast_point *tris, uint32_t ntris,
                 bucket[ed->row - row0 + 1]++;
             }
         }
-    rast__aet_sweep(edges, aet, bucket, nedges, row0, row1, RAST_RULE_NONZERO, rast__ss_span,
-                    rast__ss_begin_row, ss);
+    rast__aet_sweep(edges, aet, bucket, nedges, row0, row1, RAST_RULE_NONZERO, NULL,
+                    rast__ss_row_ends, ss);
     return 1;
 }
 

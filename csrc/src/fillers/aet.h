@@ -32,13 +32,18 @@
  * of edge r.  Even-odd: the crossings 2k and 2k+1 of the row; non-zero:
  * the crossing where the winding number leaves 0 and the one where it
  * comes back.  An edge's `next` is its index in the walk's edge table
- * (see `src`); `order` may be NULL.  Runs come row by row, in increasing x. */
+ * (see `src`); `order` may be NULL, `span` too (see the order hook).  Runs come row by row, in increasing x. */
 typedef void (*rast__aet_span_fn)(void *user, int32_t row, const rast__edge *l,
                                   const rast__edge *r);
 
 /* Called for each row with its active edges sorted by column, before the
  * row's runs are formed; it may reorder edges of EQUAL column (which
- * changes no pixel, only which edges bound the runs). */
+ * changes no pixel, only which edges bound the runs).  With `span` NULL
+ * it does the row's work itself instead: it forms the row's runs, steps
+ * every active edge to the next row (rast__edge_step) and leaves them
+ * sorted by column again (rast__aet_sort, needed only where two changed
+ * places), in one pass over them where it can; the walk then drops the
+ * edges that end. */
 typedef void (*rast__aet_order_fn)(void *user, int32_t row, rast__edge *aet, int32_t n);
 
 /* The walk: every run of `poly` inside `clip` to `span`.  Scratch as
@@ -120,6 +125,10 @@ static inline void rast__aet_sweep(rast__edge *edges, rast__edge *aet, int32_t *
                                    rast__aet_order_fn order, void *user)
 {
     int32_t j, first, nactive = 0, k, run = 0;
+    /* the first row after the current one that an active edge does not
+     * cross: only then is the AET compacted (an edge ends on few rows, and
+     * checking every edge on every row for it cost an eighth of a walk) */
+    int32_t soonest = row1;
     /* (the running sum in a register: through memory, each row waited
      * for the store of the one before) */
     for (j = 0; j <= row1 - row0; j++) {
@@ -136,38 +145,43 @@ static inline void rast__aet_sweep(rast__edge *edges, rast__edge *aet, int32_t *
         /* Edges starting on this row join the AET: sort them, then merge
          * from the back (an edge goes after active ones of equal column). */
         if (last != first) {
+            for (k = first; k < last; k++)
+                if (edges[k].end < soonest) soonest = edges[k].end;
             nactive = rast__aet_join(aet, nactive, &edges[first], last - first);
             first = last;
         }
         if (nactive == 0) continue;
         if (order) order(user, j, aet, nactive);
 
-        /* Spans: sample i is inside iff the crossings with x <= i make it so. */
-        if (rule == RAST_RULE_EVENODD) {
-            for (n = 0; n + 1 < nactive; n += 2) span(user, j, &aet[n], &aet[n + 1]);
-        } else {
-            int32_t w = 0, start = 0;
-            for (n = 0; n < nactive; n++) {
-                if (w == 0) start = n;
-                w += aet[n].dir;
-                if (w == 0) span(user, j, &aet[start], &aet[n]);
+        if (span) {
+            /* Spans: sample i is inside iff the crossings with x <= i make
+             * it so. */
+            if (rule == RAST_RULE_EVENODD) {
+                for (n = 0; n + 1 < nactive; n += 2) span(user, j, &aet[n], &aet[n + 1]);
+            } else {
+                int32_t w = 0, start = 0;
+                for (n = 0; n < nactive; n++) {
+                    if (w == 0) start = n;
+                    w += aet[n].dir;
+                    if (w == 0) span(user, j, &aet[start], &aet[n]);
+                }
             }
+            /* Step every edge to the next row. */
+            for (n = 0; n < nactive; n++) rast__edge_step(&aet[n]);
         }
 
-        /* Step every edge to the next row; drop those that end here (few
-         * rows have any, so the compaction is a separate, rare pass). */
-        for (n = 0, m = 0; n < nactive; n++) {
-            rast__edge_step(&aet[n]);
-            m += aet[n].end == j + 1;
-        }
-        if (m) {
-            /* from the first edge that ends: no edge copied onto itself */
-            for (m = 0; aet[m].end != j + 1;) m++;
-            for (n = m + 1; n < nactive; n++)
-                if (aet[n].end != j + 1) aet[m++] = aet[n];
+        /* Drop the edges that end here (few rows have any, so the
+         * compaction is a separate, rare pass, and finds the next such
+         * row). */
+        if (soonest == j + 1) {
+            for (soonest = row1, m = n = 0; n < nactive; n++) {
+                if (aet[n].end == j + 1) continue;
+                if (aet[n].end < soonest) soonest = aet[n].end;
+                aet[m++] = aet[n]; /* (onto itself until the first that ends) */
+            }
             nactive = m;
         }
-        rast__aet_sort(aet, nactive);
+        if (span) rast__aet_sort(aet, nactive);
     }
 }
 

@@ -57,6 +57,9 @@ SRC     := $(wildcard csrc/src/*/*.c)
 # built into the extension by python/rastrum/_build.py and checked by make
 # strict with the same warnings.
 GLUE_SRC := $(wildcard python/glue/*.c)
+# rastrum._seq, a CPython extension of its own (it reads Python lists; the
+# limited API), built by setup.py and checked by make strict likewise.
+EXT_SRC := $(wildcard python/ext/*.c)
 HDR     := csrc/include/rastrum.h $(wildcard csrc/src/*/*.h)
 OBJ     := $(SRC:csrc/src/%.c=build/obj/%.o)
 PIC_OBJ := $(SRC:csrc/src/%.c=build/pic/%.o)
@@ -202,9 +205,11 @@ asan-py: | $(VENV)
 
 # ---- strict builds -------------------------------------------------------------
 strict:
-	@for cc in gcc clang; do \
+	@pyinc=$$($(BASE_PYTHON) -c "import sysconfig; print(sysconfig.get_paths()['include'])") || exit 1; \
+	for cc in gcc clang; do \
 	  if command -v $$cc >/dev/null; then \
 	    for f in $(SRC) $(GLUE_SRC); do $$cc $(WARN) -O2 -Icsrc/include -Icsrc/src -Ipython/glue -c $$f -o /dev/null || exit 1; done; \
+	    for f in $(EXT_SRC); do $$cc $(WARN) -O2 -DPy_LIMITED_API=0x03090000 -I"$$pyinc" -c $$f -o /dev/null || exit 1; done; \
 	    echo "strict: $$cc ok"; \
 	  else echo "strict: $$cc not installed"; exit 1; fi; \
 	done

@@ -636,8 +636,9 @@ EXTRA_COVERED = {row[0] for row in OTHER} | {"render_mesh", "scene", "Canvas.pac
 # shape, out untouched) are in tests/test_rasterize.py.
 EXTRA_COVERED |= {"rasterize", "IDENTITY"}
 # Issue 14's names have their rows beside their tests: tests/test_coco.py
-# (every rastrum.coco name) and tests/test_ml.py (masks, labels).
-EXTRA_COVERED |= {"coco", "masks", "labels"}
+# (every rastrum.coco name) and tests/test_ml.py (masks, labels);
+# coco.polygons and the Polygons batch in tests/test_coco_polygons.py.
+EXTRA_COVERED |= {"coco", "masks", "labels", "Polygons"}
 
 
 def _set_depth(value):

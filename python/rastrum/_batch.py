@@ -42,6 +42,65 @@ def pack(polygons):
     return pts, sizes, poly_rings
 
 
+class Polygons:
+    """A batch of polygons already packed for the C call (what
+    ``rastrum.coco.polygons`` returns): ``rastrum.masks`` and
+    ``rastrum.labels`` draw it without converting or copying anything.
+    ``Polygons(points, ring_sizes, rings_per_polygon)`` makes one from the
+    tables below (checked: they must agree; rings of at least one point).
+
+    It is a read-only sequence: ``len(b)`` polygons, ``b[k]`` polygon k as a
+    list of float64 (N, 2) rings (views of the batch's points), iteration in
+    order.  Attributes: ``points`` (P, 2) float64, ``ring_sizes`` (R,)
+    uint32, ``rings_per_polygon`` (N,) uint32, each ring a part (parts are
+    united by ``rule="union"``).
+    """
+
+    __slots__ = ("points", "ring_sizes", "rings_per_polygon", "_ends", "_first")
+
+    def __init__(self, points, ring_sizes, rings_per_polygon):
+        # views: read-only below without touching the caller's arrays
+        points = np.ascontiguousarray(points, np.float64).view()
+        sizes = np.ascontiguousarray(ring_sizes, np.uint32).view()
+        counts = np.ascontiguousarray(rings_per_polygon, np.uint32).view()
+        if points.ndim != 2 or points.shape[1] != 2 or sizes.ndim != 1 or counts.ndim != 1:
+            raise InputError("Polygons: points must be (P, 2), ring_sizes and rings_per_polygon 1-D; got "
+                             "shapes %s, %s, %s" % (points.shape, sizes.shape, counts.shape))
+        if not sizes.all() or sizes.sum(dtype=np.int64) != len(points) or \
+                counts.sum(dtype=np.int64) != len(sizes):
+            raise InputError("Polygons: the tables disagree: %d points, ring sizes summing to %d (each >= 1), "
+                             "%d rings, rings per polygon summing to %d"
+                             % (len(points), sizes.sum(dtype=np.int64), len(sizes), counts.sum(dtype=np.int64)))
+        for a in (points, sizes, counts):
+            a.flags.writeable = False
+        self.points, self.ring_sizes, self.rings_per_polygon = points, sizes, counts
+        self._ends = np.cumsum(ring_sizes, dtype=np.int64)
+        self._first = np.concatenate(([0], np.cumsum(rings_per_polygon, dtype=np.int64)))
+
+    def __len__(self):
+        return len(self.rings_per_polygon)
+
+    def __getitem__(self, k):
+        k = range(len(self))[k]  # IndexError, negative indices, slices
+        if isinstance(k, range):
+            return [self[i] for i in k]
+        r0, r1 = int(self._first[k]), int(self._first[k + 1])
+        ends = self._ends[r0:r1].tolist()
+        starts = [int(self._ends[r0 - 1]) if r0 else 0] + ends[:-1]
+        return [self.points[a:b] for a, b in zip(starts, ends)]
+
+    def __iter__(self):
+        return (self[k] for k in range(len(self)))
+
+    def __repr__(self):
+        return "<rastrum polygons: %d polygons, %d rings, %d points>" % (
+            len(self), len(self.ring_sizes), len(self.points))
+
+    def packed(self):
+        """(points, ring sizes, rings per polygon, orientation +1 per ring)."""
+        return self.points, self.ring_sizes, self.rings_per_polygon, np.ones(len(self.ring_sizes), np.int8)
+
+
 def burn(out, polygons, opts, values=None, merge="replace", planes=False, what="polygon", orient=None):
     """Burn `polygons` into `out` (numpy, native byte order, rows of
     contiguous elements, writable).

@@ -11,7 +11,8 @@ pycocotools' own polygon rule (reproduced exactly in the integer core,
   (pixel centres, DESIGN section 1) instead, still as RLEs;
 - ``decode(..., out=array)``: decode into a caller's array (any layout);
 - ``rings(segmentation)``: a COCO polygon list as (N, 2) rings for
-  ``rastrum.masks`` and ``rastrum.labels``.
+  ``rastrum.masks`` and ``rastrum.labels``; ``polygons(segmentations)``:
+  a list of them as one packed batch for the same, read in one C pass.
 
 Every RLE is made straight from the filler's toggles or spans: no mask is
 materialised on the way.  Bad input raises ``rastrum.InputError`` (a
@@ -21,13 +22,13 @@ TypeErrors, IndexErrors or crashes.
 
 import numpy as np
 
-from . import _core
+from . import _batch, _core, _seq
 from ._core import InputError
 from ._native import ffi, lib
 
 _F64 = np.dtype(np.float64)
 
-__all__ = ["encode", "decode", "area", "toBbox", "merge", "iou", "frPyObjects", "rings"]
+__all__ = ["encode", "decode", "area", "toBbox", "merge", "iou", "frPyObjects", "rings", "polygons"]
 
 
 def _glue(result, what):
@@ -462,3 +463,42 @@ def rings(segmentation):
                              % (k, a.shape))
         out.append(a[: a.shape[0] // 2 * 2].reshape(-1, 2))
     return out
+
+
+def polygons(segmentations):
+    """COCO polygon segmentations, one per object, as one batch for
+    ``rastrum.masks`` and ``rastrum.labels``: the same polygons as
+    ``[rings(s) for s in segmentations]``, read in one C pass when they are
+    lists of floats and ints (numpy's conversion of a Python list costs
+    about a microsecond a call and 10 ns a number; this is a few ns a
+    number).  Parts without a point (fewer than 2 numbers) are left out.
+
+    Returns a ``rastrum.Polygons``: a sequence whose item k is object k's
+    rings (float64 (N, 2) arrays).  Bad input raises ``InputError`` naming
+    the object, as ``rings`` words it.
+
+    >>> import rastrum
+    >>> from rastrum import coco
+    >>> b = coco.polygons([[[1, 1, 6, 1, 6, 4]], [[0, 0, 3, 0, 3, 3, 0, 3], [4, 4, 6, 4, 6, 6]]])
+    >>> second = b[1]
+    >>> len(b), [len(p) for p in b], second[1].tolist()
+    (2, [1, 2], [[4.0, 4.0], [6.0, 4.0], [6.0, 6.0]])
+    >>> rastrum.masks(b, (8, 8)).sum(axis=(1, 2)).tolist()
+    [8, 12]
+    """
+    flat = _seq.flat(segmentations)
+    if flat is not None:
+        pts, sizes, counts = flat
+        return _batch.Polygons(np.frombuffer(pts, _F64).reshape(-1, 2), np.frombuffer(sizes, np.uint32),
+                               np.frombuffer(counts, np.uint32))
+    if isinstance(segmentations, (dict, str, bytes)) or not hasattr(segmentations, "__iter__"):
+        raise InputError("polygons: segmentations must be a list of COCO polygon segmentations (one per "
+                         "object), not %s" % type(segmentations).__name__)
+    objs = []
+    for k, s in enumerate(segmentations):
+        try:
+            objs.append([r for r in rings(s) if len(r)])
+        except InputError as e:
+            raise InputError("polygons: object %d: %s" % (k, e)) from None
+    pts, sizes, counts = _batch.pack(objs)
+    return _batch.Polygons(np.ascontiguousarray(pts, _F64).reshape(-1, 2), sizes, counts)

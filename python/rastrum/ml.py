@@ -64,6 +64,8 @@ def _polygons(polygons, what):
     """The batch packed: (points float64 (P, 2), ring sizes uint32, rings
     per polygon uint32, orientation int8 per ring) for the union rule: +1
     for parts, -1 for holes (geometries' interiors)."""
+    if isinstance(polygons, _batch.Polygons):
+        return polygons.packed()
     if isinstance(polygons, np.ndarray):
         if polygons.ndim != 3 or polygons.shape[-1] != 2:
             raise InputError("%s: an array of polygons must be (N, K, 2) (N rings of K points), "
@@ -164,7 +166,8 @@ def masks(polygons, shape, *, rule="union", algorithm="aet", subpixel_bits=8, sa
         (N, 2) array-like of (x, y), an (N, 1, 2) OpenCV contour, and a
         polygon may also be a shapely (Multi)Polygon or anything with
         ``__geo_interface__``.  A COCO segmentation (flat lists) becomes
-        rings through ``rastrum.coco.rings``.  Rings of 1 or 2 points draw
+        rings through ``rastrum.coco.rings``; a list of them, all at once
+        and fastest, through ``rastrum.coco.polygons``.  Rings of 1 or 2 points draw
         nothing.
     shape : (int, int)
         (height, width) of each mask.

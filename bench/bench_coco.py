@@ -9,7 +9,7 @@ taking turns (see `timed`), outputs checked:
    rastrum.coco against pycocotools.mask, the same three calls per object
    [<= 0.2x]; RLEs and masks must be identical;
 2. masks of 100 objects at 640 x 480: rastrum.masks (one call, from the
-   COCO lists through coco.rings) against cv2.fillPoly in a loop [<= 0.5x],
+   COCO lists through coco.polygons) against cv2.fillPoly in a loop [<= 0.5x],
    and np.zeros of the output alone in the same turns (what the cv2 loop
    pays for a fresh 30 MB array: clearing a reused block, or page faults on
    a new one, whichever the allocator's state gives; rastrum.masks writes
@@ -142,7 +142,7 @@ def row2(rng, quick):
         return out
 
     def ras():
-        return rastrum.masks([C.rings(s) for s in objs], (h, w))
+        return rastrum.masks(C.polygons(objs), (h, w))
 
     def zeros():  # the output alone, which both pay for
         return np.zeros((len(objs), h, w), np.uint8)

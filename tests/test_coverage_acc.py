@@ -9,13 +9,15 @@ pixel corners and half pixels (levels on a tie: those rows go to the exact
 sweep), slivers, collinear vertices, both orientations overlapping, far
 coordinates, both rules."""
 
+from fractions import Fraction as F
+
 import numpy as np
 import pytest
 from hypothesis import given, settings, strategies as st
 
 import rastrum
 import strategies as S_
-from test_coverage import M_OF, _accumulated, _n_m, check_area
+from test_coverage import M_OF, _accumulated, _n_m, check_area, exact_area
 from test_coverage_fast import _star_shaped
 
 SHAPE = (7, 9)
@@ -83,3 +85,34 @@ def test_a_level_on_a_tie_is_the_exact_ones():
         M = M_OF[dtype]
         assert (out[:, 2] == (M + 1) // 2).all() and (out[:, 3] == (M + 1) // 2).all()
         assert out[:, [0, 1, 4, 5, 6, 7, 8]].sum() == 0
+
+
+def _area2(ring):
+    return sum(x0 * y1 - x1 * y0 for (x0, y0), (x1, y1) in zip(ring, ring[1:] + ring[:1]))
+
+
+@pytest.mark.parametrize("method", ["accumulate", "area"])
+@pytest.mark.parametrize("rule", ["nonzero", "evenodd"])
+@pytest.mark.parametrize("orient", [1, -1])
+def test_a_level_just_past_a_tie_is_exact(method, rule, orient):
+    """Pixel (2, 1) of the quadrilateral is covered 83/170, a tie in both
+    formats (83/170 * 255 = 124.5, * 65535 = 31996.5) that is not a dyadic
+    number: the 64-bit cells, which floor each column crossing to 2^-30
+    pixel, land below it.  A triangle of area 2^-33 (legs of 2^-16 pixel)
+    in the same pixel, apart, lifts the exact value just past the tie, so
+    the level is the upper one, 2^-25 of a level from the tie: far outside
+    the documented bound, well inside the cells' error.  Only the exact
+    redo of the row gets it right (without it, 124 and 31996)."""
+    quad = [(2, 0), (2.125, 0), (3.08984375, 3.984375), (2, 3.984375)]
+    quad = quad if orient > 0 else quad[::-1]
+    d = 2 ** -16
+    tri = [(2.875, 1.5), (2.875, 1.5 + d), (2.875 + d, 1.5)]
+    tri = tri if (_area2(tri) > 0) == (_area2(quad) > 0) else tri[::-1]
+    rings = [quad, tri]
+    exact = exact_area(rings, (5, 5), rule, 16)
+    assert exact[1, 2] == F(83, 170) + F(1, 2 ** 33)
+    n, m = _n_m(rings, 16)
+    for dtype, want in ((np.uint8, 125), (np.uint16, 31997)):
+        out = rastrum.polygon_coverage(rings, (5, 5), rule=rule, method=method, dtype=dtype, subpixel_bits=16)
+        assert out[1, 2] == want
+        check_area(out, exact, M_OF[dtype], n, m, "%s %s" % (method, rule))

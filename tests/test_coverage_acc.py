@@ -116,3 +116,32 @@ def test_a_level_just_past_a_tie_is_exact(method, rule, orient):
         out = rastrum.polygon_coverage(rings, (5, 5), rule=rule, method=method, dtype=dtype, subpixel_bits=16)
         assert out[1, 2] == want
         check_area(out, exact, M_OF[dtype], n, m, "%s %s" % (method, rule))
+
+
+@pytest.mark.parametrize("rule", ["nonzero", "evenodd"])
+def test_long_shallow_parts_in_sparse_rows(rule):
+    """Rows with few parts mark the cells each part touches; a shallow
+    edge's part in a row spans hundreds of columns (several 64-bit words of
+    marks), and the marks of a part reaching into the last column stop
+    short of the cell past the clip.  Against the oracle, both formats."""
+    quad = [(1.3, 0.2), (299.7, 1.1), (299.1, 2.9), (2.2, 1.7)]
+    wedge = [(-40.5, 3.1), (330.25, 3.4), (-40.5, 3.9)]  # past both sides of the clip
+    _check([quad, wedge], rule, shape=(5, 300))
+
+
+@settings(max_examples=S_.examples(25), deadline=None)
+@given(st.integers(1, 2), st.integers(3, 4), st.integers(0, 2 ** 32 - 1),
+       st.sampled_from([1, 4, 256]), st.sampled_from(["evenodd", "nonzero"]))
+def test_sparse_rows_across_a_wide_clip(k, n, seed, snap, rule):
+    """At most 8 parts a row in 140 columns: every row takes the marked
+    (sparse) scan; rings stretched 20 times wider than tall, from left of
+    the clip to right of it."""
+    rnd = np.random.default_rng(seed)
+    rings = []
+    for _ in range(k):
+        c = rnd.uniform([-20, -2], [160, 8])
+        ring = _star_shaped(rnd, n, c, 0.5, rnd.uniform(1.0, 4.0), snap)
+        ring[:, 0] = c[0] + (ring[:, 0] - c[0]) * 20
+        ring = np.round(ring * snap) / snap
+        rings.append(ring.tolist() if rnd.integers(2) else ring.tolist()[::-1])
+    _check(rings, rule, shape=(6, 140))

@@ -39,7 +39,7 @@
 #define QF 30
 #define QT ((uint64_t)1 << QF)
 #define QONE ((int64_t)1 << 51)
-#define RAST__ACC_B 4 /* blocks of 2^B cells */
+#define RAST__ACC_DENSE 16
 
 /* floor(v / 2^QF) for |v| < 2^62 (no >> of a negative value) */
 static inline int64_t rast__acc_col(int64_t v)
@@ -50,9 +50,10 @@ static inline int64_t rast__acc_col(int64_t v)
 typedef struct rast__acc {
     uint64_t *acc;     /* clip width + 1 cells */
     int32_t x0, x1;    /* clip columns */
-    uint64_t *blk;     /* a bit for each block of 2^B cells touched */
+    uint64_t *blk;     /* a bit for each cell touched (the last, width, not: never read) */
     int32_t lo, hi;    /* cells touched this row: [lo, hi] (lo > hi: none) */
     int32_t p, hq;     /* P = 2^S; HQ = 30 - S */
+    int dense;         /* this row: no bits, every cell in [lo, hi] read */
 } rast__acc;
 
 /* rast__cov_qtop, rast__cov_qt_first with this engine's P and HQ */
@@ -66,14 +67,24 @@ static void rast__acc_t_first(rast__cedge *e, int64_t X, const rast__acc *a)
     rast__cov_qt_first(e, X, a->p, a->hq);
 }
 
-/* Cells [lo, hi] touched. */
+/* Cells [lo, hi] touched: their bits set unless the row is dense. */
 static inline void rast__acc_mark(rast__acc *a, int32_t lo, int32_t hi)
 {
-    int32_t b = lo >> RAST__ACC_B, bh = hi >> RAST__ACC_B;
+    int32_t w0, w1, last = a->x1 - a->x0 - 1;
     if (lo < a->lo) a->lo = lo;
     if (hi > a->hi) a->hi = hi;
-    a->blk[b >> 6] |= (uint64_t)1 << (b & 63);
-    for (b++; b <= bh; b++) a->blk[b >> 6] |= (uint64_t)1 << (b & 63);
+    if (a->dense) return;
+    if (hi > last) hi = last;
+    if (lo > hi) return;
+    w0 = lo >> 6;
+    w1 = hi >> 6;
+    if (w0 == w1) {
+        a->blk[w0] |= (~(uint64_t)0 << (lo & 63)) & (~(uint64_t)0 >> (63 - (hi & 63)));
+        return;
+    }
+    a->blk[w0] |= ~(uint64_t)0 << (lo & 63);
+    for (w0++; w0 < w1; w0++) a->blk[w0] = ~(uint64_t)0;
+    a->blk[w1] |= ~(uint64_t)0 >> (63 - (hi & 63));
 }
 
 /* One column's piece: fractions f0 .. f1, height dy, signed by neg (0 or
@@ -211,71 +222,78 @@ RAST__HOT uint64_t rast__acc_level(int64_t v, rast_fill_rule rule, uint32_t m, u
     return x >> 51;
 }
 
-/* Row y's uint8 levels from the cells in [lo, hi) (their blocks of 2^B
- * marked in blk; a block not marked holds only zeros: one fill), which
- * are cleared; the pixels left of lo get 0, those from hi on the last
- * sum's level.  rule and m are constants at each call (one loop each).
- * Returns a tie's flag (rast__acc_level's). */
-RAST__HOT uint64_t rast__acc_row(uint64_t *acc, const uint64_t *blk, unsigned char *row,
-                                 int32_t lo, int32_t hi, int32_t w, rast_fill_rule rule,
-                                 uint32_t m, uint64_t win)
+/* Columns [k0, k1) of the row at level lev. */
+static inline void rast__acc_fill(unsigned char *row, int32_t k0, int32_t k1, uint64_t lev, uint32_t m)
+{
+    uint16_t *r16 = (uint16_t *)(void *)row;
+    if (m == 255) {
+        if (k1 - k0 > 8)
+            memset(row + k0, (int)lev, (size_t)(k1 - k0));
+        else
+            for (; k0 < k1; k0++) row[k0] = (unsigned char)lev;
+    } else {
+        for (; k0 < k1; k0++) r16[k0] = (uint16_t)lev;
+    }
+}
+
+/* Row y's levels from the cells in [lo, hi) (dense: all read; else those
+ * whose bits are set in blk, the others holding 0), which are cleared with
+ * their bits; the pixels left of lo get 0, those from hi on the last sum's
+ * level.  rule and m are constants at each call (one loop each).  Returns
+ * a tie's flag (rast__acc_level's). */
+RAST__HOT uint64_t rast__acc_row(uint64_t *acc, uint64_t *blk, unsigned char *row, int32_t lo,
+                                 int32_t hi, int32_t w, int dense, rast_fill_rule rule, uint32_t m,
+                                 uint64_t win)
 {
     uint64_t bad = 0, lev = 0, v = 0;
     uint16_t *r16 = (uint16_t *)(void *)row;
-    int32_t k = lo;
-    if (m == 255)
-        memset(row, 0, (size_t)lo);
-    else
-        for (k = 0; k < lo; k++) r16[k] = 0;
-    while (k < hi) {
-        int32_t b = k >> RAST__ACC_B, kend = (b + 1) << RAST__ACC_B;
-        if (kend > hi) kend = hi;
-        if ((blk[b >> 6] >> (b & 63)) & 1) {
-            for (; k < kend; k++) {
-                uint64_t d = acc[k];
+    int32_t k = lo, wi;
+    rast__acc_fill(row, 0, lo, 0, m);
+    if (dense) { /* no branch on the cell: half of them are 0, at random */
+        for (; k < hi; k++) {
+            v += acc[k];
+            acc[k] = 0;
+            lev = rast__acc_level((int64_t)v, rule, m, win, &bad);
+            if (m == 255)
+                row[k] = (unsigned char)lev;
+            else
+                r16[k] = (uint16_t)lev;
+        }
+    } else if (lo < hi) {
+        for (wi = lo >> 6; wi <= (hi - 1) >> 6; wi++) {
+            uint64_t b = blk[wi];
+            blk[wi] = 0;
+            for (; b; b &= b - 1) {
+                int32_t col = (wi << 6) + (int32_t)rast__ctz64(b);
+                uint64_t d = acc[col];
+                if (col > k) rast__acc_fill(row, k, col, lev, m);
                 if (d) {
-                    acc[k] = 0;
+                    acc[col] = 0;
                     v += d;
                     lev = rast__acc_level((int64_t)v, rule, m, win, &bad);
                 }
                 if (m == 255)
-                    row[k] = (unsigned char)lev;
+                    row[col] = (unsigned char)lev;
                 else
-                    r16[k] = (uint16_t)lev;
+                    r16[col] = (uint16_t)lev;
+                k = col + 1;
             }
-        } else if (m == 255) { /* to the next block marked */
-            uint64_t bw = blk[b >> 6] >> (b & 63);
-            int32_t nb = b - (b & 63) + 64;
-            if (bw) {
-                nb = b + (int32_t)rast__ctz64(bw);
-            } else {
-                while ((nb << RAST__ACC_B) < hi && !blk[nb >> 6]) nb += 64;
-                if ((nb << RAST__ACC_B) < hi) nb += (int32_t)rast__ctz64(blk[nb >> 6]);
-            }
-            kend = nb << RAST__ACC_B < hi ? nb << RAST__ACC_B : hi;
-            memset(row + k, (int)lev, (size_t)(kend - k));
-            k = kend;
-        } else {
-            for (; k < kend; k++) r16[k] = (uint16_t)lev;
         }
     }
-    if (m == 255)
-        memset(row + hi, (int)lev, (size_t)(w - hi));
-    else
-        for (k = hi; k < w; k++) r16[k] = (uint16_t)lev;
+    rast__acc_fill(row, k, w, lev, m);
     return bad;
 }
 
-static uint64_t rast__acc_row_u8nz(uint64_t *acc, const uint64_t *blk, unsigned char *row,
-                                   int32_t lo, int32_t hi, int32_t w, uint64_t win)
+static uint64_t rast__acc_row_u8nz(uint64_t *acc, uint64_t *blk, unsigned char *row, int32_t lo,
+                                   int32_t hi, int32_t w, int dense, uint64_t win)
 {
-    return rast__acc_row(acc, blk, row, lo, hi, w, RAST_RULE_NONZERO, 255, win);
+    return rast__acc_row(acc, blk, row, lo, hi, w, dense, RAST_RULE_NONZERO, 255, win);
 }
 
-static uint64_t rast__acc_row_u8eo(uint64_t *acc, const uint64_t *blk, unsigned char *row,
-                                   int32_t lo, int32_t hi, int32_t w, uint64_t win)
+static uint64_t rast__acc_row_u8eo(uint64_t *acc, uint64_t *blk, unsigned char *row, int32_t lo,
+                                   int32_t hi, int32_t w, int dense, uint64_t win)
 {
-    return rast__acc_row(acc, blk, row, lo, hi, w, RAST_RULE_EVENODD, 255, win);
+    return rast__acc_row(acc, blk, row, lo, hi, w, dense, RAST_RULE_EVENODD, 255, win);
 }
 
 /* Row y from the cells touched, which are cleared: 1 when done (handed
@@ -286,17 +304,15 @@ static int rast__acc_emit(rast__acc *a, const rast__cov_out *o, int32_t y, rast_
     unsigned char *row = rast__cov_row(o, y);
     const int32_t w = a->x1 - a->x0;
     uint64_t bad;
-    int32_t k, lo = a->lo, hi = a->hi < w ? a->hi + 1 : w; /* [lo, hi) */
+    int32_t lo = a->lo, hi = a->hi < w ? a->hi + 1 : w; /* [lo, hi) */
     if (lo >= hi) lo = hi = 0;
     if (o->format != RAST_COVERAGE_U8)
-        bad = rast__acc_row(a->acc, a->blk, row, lo, hi, w, rule, m, win);
+        bad = rast__acc_row(a->acc, a->blk, row, lo, hi, w, a->dense, rule, m, win);
     else if (rule == RAST_RULE_NONZERO)
-        bad = rast__acc_row_u8nz(a->acc, a->blk, row, lo, hi, w, win);
+        bad = rast__acc_row_u8nz(a->acc, a->blk, row, lo, hi, w, a->dense, win);
     else
-        bad = rast__acc_row_u8eo(a->acc, a->blk, row, lo, hi, w, win);
+        bad = rast__acc_row_u8eo(a->acc, a->blk, row, lo, hi, w, a->dense, win);
     a->acc[w] = 0;
-    if (a->hi >= 0)
-        for (k = a->lo >> (RAST__ACC_B + 6); k <= a->hi >> (RAST__ACC_B + 6); k++) a->blk[k] = 0;
     a->lo = INT32_MAX;
     a->hi = -1;
     if (bad) return 0;
@@ -357,13 +373,14 @@ rast_status rast__cov_acc(rast__cedge *e, uint32_t n, int32_t s, rast_fill_rule 
     for (k = 0; k < width; k++) cover[k] = area[k] = rast__i128_u64(0);
     for (k = 0; k < (width + 63) / 64; k++) bits[k] = 0;
     a.acc = (uint64_t *)(void *)cover;
-    a.blk = bits; /* (w + 1 cells: ceil((w + 1) / 2^B) bits <= 64 ceil(w / 64)) */
+    a.blk = bits; /* (a bit for each of the first w cells: ceil(w / 64) words) */
     a.x0 = o->clip.x0;
     a.x1 = o->clip.x1;
     a.lo = INT32_MAX;
     a.hi = -1;
     a.p = (int32_t)1 << s;
     a.hq = QF - s;
+    a.dense = 0;
     if (n == 0) {
         rast__cov_zero_rows(o, o->clip.y0, o->clip.y1);
         return RAST_OK;
@@ -396,6 +413,11 @@ rast_status rast__cov_acc(rast__cedge *e, uint32_t n, int32_t s, rast_fill_rule 
             next++;
         }
         if (nrow < 512 && ((uint64_t)nrow + 1) * m < ((uint64_t)1 << 25)) {
+            /* Bits for the cells touched, so that the scan skips the
+             * others, unless the row's parts are many for its width
+             * (RAST__ACC_DENSE parts or more a pixel of width): then every
+             * cell from the first touched to the last is read. */
+            a.dense = (int64_t)nrow * RAST__ACC_DENSE >= width;
             for (k = 0; k < nrow; k++) {
                 rast__cedge *ed = &e[row[k]];
                 int64_t rel0 = (int64_t)ed->yt - Yj, rel1 = rel0 + ed->dy, xa, xb;

@@ -29,7 +29,8 @@ def _fix62(rings, shape, rule, method, s=8):
     opts.subpixel_bits = s
     opts.sample = lib.RAST_SAMPLE_CENTER
     res = lib.rastpy_polygon_coverage(ffi.from_buffer(raw), h, w, lib.RAST_COVERAGE_FIX62,
-                                      ffi.from_buffer("double[]", pts), len(pts), sizes, nrings, opts)
+                                      ffi.from_buffer("double[]", pts), len(pts), sizes, nrings, opts,
+                                      ffi.NULL)
     assert res == 0
     return raw
 

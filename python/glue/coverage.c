@@ -1,5 +1,5 @@
 /* Binding glue of the coverage calls (not part of the core): snapping,
- * scratch from malloc, and one C call per Python call, writing a whole
+ * scratch from the caller's rastpy_scratch (else malloc), and one C call per Python call, writing a whole
  * (height, width) array of uint8, uint16 or uint64 (2^-62 units), or
  * painting the coverage into a target (rast_fill_polygon_aa,
  * rast_fill_triangles_aa, rast_fill_triangles_shaded_aa). */
@@ -25,7 +25,7 @@ typedef struct rastpy_cov_dest {
 
 static long rastpy_coverage(const rastpy_cov_dest *d, const double *xy, uint32_t npoints,
                             const uint32_t *ring_sizes, uint32_t nrings, int triangles,
-                            const rast_coverage_opts *opts)
+                            const rast_coverage_opts *opts, rastpy_scratch *sc)
 {
     rast_polygon poly;
     rast_status st;
@@ -50,12 +50,15 @@ static long rastpy_coverage(const rastpy_cov_dest *d, const double *xy, uint32_t
     /* one block: the snapped points, then (16-byte aligned) the scratch */
     head = ((size_t)npoints * sizeof(rast_point) + 15) & ~(size_t)15;
     if (need > (size_t)-1 - 1 - head) return RASTPY_E_NOMEM;
-    mem = (unsigned char *)malloc(head + need + 1);
-    if (!mem) return RASTPY_E_NOMEM;
+    if (sc) sc->want = head + need + 1;
+    if (sc && sc->buf && head + need + 1 <= sc->size)
+        mem = (unsigned char *)sc->buf;
+    else if (!(mem = (unsigned char *)malloc(head + need + 1)))
+        return RASTPY_E_NOMEM;
     pts = (int32_t *)(void *)mem;
     bad = rastpy_snap_points(xy, npoints, opts->subpixel_bits, pts);
     if (bad >= 0) {
-        free(mem);
+        if (!sc || mem != sc->buf) free(mem);
         return bad + 1;
     }
     scratch = mem + head;
@@ -77,7 +80,7 @@ static long rastpy_coverage(const rastpy_cov_dest *d, const double *xy, uint32_t
     else
         st = rast_polygon_coverage(&poly, opts, clip, (rast_coverage_format)d->format, d->out,
                                    stride, scratch, need);
-    free(mem);
+    if (!sc || mem != sc->buf) free(mem);
     return st;
 }
 
@@ -119,46 +122,47 @@ static rastpy_cov_dest rastpy_paint(const rast_target *target, const void *pixel
 
 long rastpy_polygon_coverage(void *out, int32_t height, int32_t width, int format,
                              const double *xy, uint32_t npoints, const uint32_t *ring_sizes,
-                             uint32_t nrings, const rast_coverage_opts *opts)
+                             uint32_t nrings, const rast_coverage_opts *opts, rastpy_scratch *sc)
 {
     rastpy_cov_dest d = rastpy_array(out, height, width, format);
-    return rastpy_coverage(&d, xy, npoints, ring_sizes, nrings, 0, opts);
+    return rastpy_coverage(&d, xy, npoints, ring_sizes, nrings, 0, opts, sc);
 }
 
 long rastpy_triangles_coverage(void *out, int32_t height, int32_t width, int format,
-                               const double *xy, uint32_t ntris, const rast_coverage_opts *opts)
+                               const double *xy, uint32_t ntris, const rast_coverage_opts *opts,
+                               rastpy_scratch *sc)
 {
     rastpy_cov_dest d = rastpy_array(out, height, width, format);
-    return rastpy_coverage(&d, xy, 3 * ntris, NULL, 0, 1, opts);
+    return rastpy_coverage(&d, xy, 3 * ntris, NULL, 0, 1, opts, sc);
 }
 
 long rastpy_fill_polygon_aa(const rast_target *target, const double *xy, uint32_t npoints,
                             const uint32_t *ring_sizes, uint32_t nrings,
-                            const rast_coverage_opts *opts, const void *pixel)
+                            const rast_coverage_opts *opts, const void *pixel, rastpy_scratch *sc)
 {
     rastpy_cov_dest d;
     if (!target) return RAST_E_NULL;
     d = rastpy_paint(target, pixel);
-    return rastpy_coverage(&d, xy, npoints, ring_sizes, nrings, 0, opts);
+    return rastpy_coverage(&d, xy, npoints, ring_sizes, nrings, 0, opts, sc);
 }
 
 long rastpy_fill_triangles_aa(const rast_target *target, const double *xy, uint32_t ntris,
-                              const rast_coverage_opts *opts, const void *pixel)
+                              const rast_coverage_opts *opts, const void *pixel, rastpy_scratch *sc)
 {
     rastpy_cov_dest d;
     if (!target) return RAST_E_NULL;
     d = rastpy_paint(target, pixel);
-    return rastpy_coverage(&d, xy, 3 * ntris, NULL, 0, 1, opts);
+    return rastpy_coverage(&d, xy, 3 * ntris, NULL, 0, 1, opts, sc);
 }
 
 long rastpy_fill_triangles_shaded_aa(const rast_target *target, const double *xy, uint32_t ntris,
                                      const uint8_t *colors, const rast_coverage_opts *opts,
-                                     const rast_shade_opts *shade)
+                                     const rast_shade_opts *shade, rastpy_scratch *sc)
 {
     rastpy_cov_dest d;
     if (!target || !colors || !shade) return RAST_E_NULL;
     d = rastpy_paint(target, NULL);
     d.colors = colors;
     d.shade = shade;
-    return rastpy_coverage(&d, xy, 3 * ntris, NULL, 0, 1, opts);
+    return rastpy_coverage(&d, xy, 3 * ntris, NULL, 0, 1, opts, sc);
 }

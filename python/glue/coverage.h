@@ -11,20 +11,33 @@
 #include "rastpy.h"
 
 /* cdef-begin */
+/* Scratch the caller lends to the calls below (the last argument; NULL:
+ * each call takes its own from malloc and frees it).  buf (16-byte
+ * aligned, size bytes) is used when it is large enough, else malloc; the
+ * call sets want to the bytes it needed, so that the caller can keep a
+ * buffer that large for the next call.  (A block of a few hundred KB
+ * taken and freed on every call can be handed back to the system each
+ * time, and its pages then fault in again on the next: on some sizes that
+ * cost more than the fill.) */
+typedef struct rastpy_scratch {
+    void *buf;
+    size_t size;
+    size_t want;
+} rastpy_scratch;
 long rastpy_polygon_coverage(void *out, int32_t height, int32_t width, int format,
                              const double *xy, uint32_t npoints, const uint32_t *ring_sizes,
-                             uint32_t nrings, const rast_coverage_opts *opts);
+                             uint32_t nrings, const rast_coverage_opts *opts, rastpy_scratch *sc);
 long rastpy_triangles_coverage(void *out, int32_t height, int32_t width, int format,
                                const double *xy, uint32_t ntris,
-                               const rast_coverage_opts *opts);
+                               const rast_coverage_opts *opts, rastpy_scratch *sc);
 long rastpy_fill_polygon_aa(const rast_target *target, const double *xy, uint32_t npoints,
                             const uint32_t *ring_sizes, uint32_t nrings,
-                            const rast_coverage_opts *opts, const void *pixel);
+                            const rast_coverage_opts *opts, const void *pixel, rastpy_scratch *sc);
 long rastpy_fill_triangles_aa(const rast_target *target, const double *xy, uint32_t ntris,
-                              const rast_coverage_opts *opts, const void *pixel);
+                              const rast_coverage_opts *opts, const void *pixel, rastpy_scratch *sc);
 long rastpy_fill_triangles_shaded_aa(const rast_target *target, const double *xy, uint32_t ntris,
                                      const uint8_t *colors, const rast_coverage_opts *opts,
-                                     const rast_shade_opts *shade);
+                                     const rast_shade_opts *shade, rastpy_scratch *sc);
 /* The n values of buf, a in units of 2^-62 as uint64_t (the
  * RAST_COVERAGE_FIX62 output), turned in place into the double a: each
  * integer rounded to the nearest double once, then scaled by 2^-62

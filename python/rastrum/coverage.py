@@ -7,6 +7,8 @@ exactly and writes the whole array without the GIL), turn statuses into
 exceptions.  Nothing is returned half-written.
 """
 
+import threading
+
 import numpy as np
 
 from . import _core
@@ -102,6 +104,32 @@ _DOUBLES = ffi.typeof("double[]")
 _PACKED = (16, 8)          # strides of a C-contiguous float64 (N, 2) array
 _PACKED_TRIS = (48, 16, 8)  # ... and of an (N, 3, 2) one
 _MAX_DIM, _MAX_POINTS = lib.RAST_MAX_DIM, lib.RAST_MAX_POINTS
+
+# Scratch kept between calls, one block per thread (rastpy_scratch in
+# python/glue/coverage.h): a call that needs more than the block takes its
+# own from malloc, and the block then grows to what it needed, up to this
+# many bytes.  Without it a block of a few hundred KB taken and freed on
+# every call could go back to the system each time and fault its pages in
+# again on the next (79 page faults a call, 2.8 times the time, for
+# "area" on four glyphs at 512 x 512).
+_SCRATCH_KEEP = 32 << 20
+_tls = threading.local()
+
+
+def _scratch():
+    """This thread's rastpy_scratch."""
+    try:
+        return _tls.sc
+    except AttributeError:
+        sc = _tls.sc = ffi.new("rastpy_scratch *")
+        return sc
+
+
+def _grow(sc):
+    """After a call: keep a block as large as it wanted (within the cap)."""
+    if sc.size < sc.want <= _SCRATCH_KEEP:
+        _tls.buf = ffi.new("char[]", sc.want)  # (malloc'd: 16-byte aligned)
+        sc.buf, sc.size = _tls.buf, sc.want
 
 
 def _quick_key(method, rule, subpixel_bits, sample_offset, dtype):
@@ -257,8 +285,12 @@ def polygon_coverage(rings, shape, *, rule="evenodd", method="area", subpixel_bi
             pts, sizes, nrings = points
             h, w = shape
             raw = _empty(shape, c_dtype)
-            if not _poly_call(_from_buffer(raw), h, w, fmt, _from_buffer(_DOUBLES, pts), len(pts),
-                              sizes, nrings, opts):
+            sc = _scratch()
+            res = _poly_call(_from_buffer(raw), h, w, fmt, _from_buffer(_DOUBLES, pts), len(pts),
+                             sizes, nrings, opts, sc)
+            if sc.want > sc.size:
+                _grow(sc)
+            if not res:
                 return raw if fmt != _FIX62 else _finish(raw, d)
             # an error: the general path says which
     opts = _opts(method, rule, subpixel_bits, sample_offset, "polygon_coverage")
@@ -271,9 +303,11 @@ def polygon_coverage(rings, shape, *, rule="evenodd", method="area", subpixel_bi
     if not nrings:
         raw[...] = 0
         return _finish(raw, d)
+    sc = _scratch()
     result = lib.rastpy_polygon_coverage(
         ffi.from_buffer(raw) if h and w else ffi.NULL, h, w, fmt,
-        ffi.from_buffer("double[]", pts), len(pts), sizes, nrings, opts)
+        ffi.from_buffer("double[]", pts), len(pts), sizes, nrings, opts, sc)
+    _grow(sc)
     if result:
         _check(result, pts, opts, "rings", [len(pts)] if nrings == 1 else sizes)
     return _finish(raw, d)
@@ -304,8 +338,11 @@ def triangles_coverage(tris, shape, *, method="area", subpixel_bits=8, sample_of
         opts, fmt, c_dtype, d = quick
         h, w = shape
         raw = _empty(shape, c_dtype)
-        if not _tris_call(_from_buffer(raw), h, w, fmt, _from_buffer(_DOUBLES, tris), len(tris),
-                          opts):
+        sc = _scratch()
+        res = _tris_call(_from_buffer(raw), h, w, fmt, _from_buffer(_DOUBLES, tris), len(tris), opts, sc)
+        if sc.want > sc.size:
+            _grow(sc)
+        if not res:
             return raw if fmt != _FIX62 else _finish(raw, d)
         # an error: the general path says which
     opts = _opts(method, "nonzero", subpixel_bits, sample_offset, "triangles_coverage")
@@ -319,9 +356,11 @@ def triangles_coverage(tris, shape, *, method="area", subpixel_bits=8, sample_of
     if n == 0:
         raw[...] = 0
         return _finish(raw, d)
+    sc = _scratch()
     result = lib.rastpy_triangles_coverage(
         ffi.from_buffer(raw) if h and w else ffi.NULL, h, w, fmt,
-        ffi.from_buffer("double[]", t), n, opts)
+        ffi.from_buffer("double[]", t), n, opts, sc)
+    _grow(sc)
     if result:
         _check(result, t.reshape(-1, 2), opts, "tris", 3)
     return _finish(raw, d)
@@ -364,8 +403,10 @@ def fill_polygon_aa(target, rings, pixel, opts):
     pts, sizes, nrings = _points(rings)
     if not nrings:
         return
+    sc = _scratch()
     result = lib.rastpy_fill_polygon_aa(target, ffi.from_buffer("double[]", pts), len(pts), sizes,
-                                        nrings, opts, pixel)
+                                        nrings, opts, pixel, sc)
+    _grow(sc)
     if result:
         _check(result, pts, opts, "rings", [len(pts)] if nrings == 1 else sizes)
 
@@ -375,7 +416,9 @@ def fill_triangles_aa(target, batch, pixel, opts, what="tris"):
     n = _ntris(batch)
     if n == 0:
         return
-    result = lib.rastpy_fill_triangles_aa(target, ffi.from_buffer("double[]", batch), n, opts, pixel)
+    sc = _scratch()
+    result = lib.rastpy_fill_triangles_aa(target, ffi.from_buffer("double[]", batch), n, opts, pixel, sc)
+    _grow(sc)
     if result:
         _check(result, batch.reshape(-1, 2), opts, what, 3)
 
@@ -386,7 +429,9 @@ def fill_triangles_shaded_aa(target, batch, colors, opts, sopts, what="tris"):
     n = _ntris(batch)
     if n == 0:
         return
+    sc = _scratch()
     result = lib.rastpy_fill_triangles_shaded_aa(target, ffi.from_buffer("double[]", batch), n,
-                                                 ffi.from_buffer("uint8_t[]", colors), opts, sopts)
+                                                 ffi.from_buffer("uint8_t[]", colors), opts, sopts, sc)
+    _grow(sc)
     if result:
         _check(result, batch.reshape(-1, 2), opts, what, 3)

@@ -187,8 +187,19 @@ static inline void rast__ss_pair(int32_t *d, uint64_t *mark, int32_t kb, int32_t
 static inline int rast__ss_nz_in(rast__edge *aet, int32_t n, int32_t *d, uint64_t *mark,
                                  int32_t kb, int32_t fx0)
 {
-    int32_t i, w = 0, x0 = 0, last = INT32_MIN, swapped = 0;
-    for (i = 0; i < n; i++) {
+    int32_t i = 0, w = 0, x0 = 0, last = INT32_MIN, swapped = 0;
+    /* Pairs of edges of opposite directions, while they come: the winding
+     * number is back to 0 after each, so each pair bounds one run (most
+     * rows of most polygons are only such pairs); from the first pair
+     * that is not, edge by edge, the winding number counted from 0. */
+    for (; i + 1 < n && aet[i].dir + aet[i + 1].dir == 0; i += 2) {
+        rast__ss_pair(d, mark, kb, aet[i].x - fx0, aet[i + 1].x - fx0);
+        rast__edge_step(&aet[i]);
+        rast__edge_step(&aet[i + 1]);
+        swapped |= (aet[i].x < last) | (aet[i + 1].x < aet[i].x);
+        last = aet[i + 1].x;
+    }
+    for (; i < n; i++) {
         const int32_t x = aet[i].x;
         if (w == 0) x0 = x;
         w += aet[i].dir;

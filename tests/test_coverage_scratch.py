@@ -71,7 +71,7 @@ def test_the_block_grows_to_the_cap_and_no_further(monkeypatch):
 def test_threads_keep_their_own_blocks():
     shape = (60, 80)
     want = [_unlent(r, shape, "area") for r in SCENES]
-    bad, blocks = [], set()
+    bad, blocks, keep = [], set(), []
 
     def run(k):
         for i in range(30):
@@ -79,6 +79,7 @@ def test_threads_keep_their_own_blocks():
             if not np.array_equal(rastrum.polygon_coverage(SCENES[j], shape, method="area"), want[j]):
                 bad.append((k, j))
         blocks.add(int(ffi.cast("uintptr_t", C._scratch().buf)))
+        keep.append(C._tls.buf)  # alive past the thread: a later thread's block cannot reuse its memory
 
     ts = [threading.Thread(target=run, args=(k,)) for k in range(4)]
     for t in ts:

@@ -254,6 +254,10 @@ rast_status rast__cov_area(rast__cedge *e, uint32_t n, int32_t s, rast_fill_rule
 int rast__cov_acc_may(const rast__cov_out *o, int32_t s);
 rast_status rast__cov_acc(rast__cedge *e, uint32_t n, int32_t s, rast_fill_rule rule,
                           const rast__cov_out *o, rast__arena *arena);
+/* Stable radix sort (8 bits a pass, as many passes as the largest key
+ * needs) of the indices ix[0..n) by key[ix[i]], each key's bits read as
+ * unsigned; tmp[0..n) is room.  The result is in ix. */
+void rast__cov_radix_sort(int32_t *ix, int32_t *tmp, const int32_t *key, uint32_t n);
 /* Each edge's steps set, order[i] = i, and the rows [*ja, *jb) of the
  * clip the edges' strips reach (n > 0). */
 void rast__cov_rows(rast__cedge *e, uint32_t n, int32_t p, int32_t *order, const rast__cov_out *o,

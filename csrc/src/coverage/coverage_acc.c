@@ -320,8 +320,7 @@ static int rast__acc_emit(rast__acc *a, const rast__cov_out *o, int32_t y, rast_
     return 1;
 }
 
-/* Radix sort (8 bits a pass, as many as the largest key needs) of ix[0..n) by key[] (>= 0), tmp[] as room; the result in ix. */
-static void rast__acc_sort(int32_t *ix, int32_t *tmp, const int32_t *key, uint32_t n)
+void rast__cov_radix_sort(int32_t *ix, int32_t *tmp, const int32_t *key, uint32_t n)
 {
     uint32_t cnt[256], i, d, sh, top = 0;
     for (i = 0; i < n; i++) top |= (uint32_t)key[i];
@@ -391,7 +390,7 @@ rast_status rast__cov_acc(rast__cedge *e, uint32_t n, int32_t s, rast_fill_rule 
         key[i] = r < 0 ? 0 : (int32_t)r;
         last[i] = (int32_t)(rast__ceildiv((int64_t)e[i].yt + e[i].dy, a.p) - 1);
     }
-    rast__acc_sort(order, tmp, key, n);
+    rast__cov_radix_sort(order, tmp, key, n);
     rast__cov_zero_rows(o, o->clip.y0, ja);
     for (j = ja; j < jb; j++) {
         const int64_t Yj = (int64_t)j * a.p;

@@ -468,30 +468,18 @@ size_t rast__cov_area_scratch(uint32_t n, int32_t width)
 }
 
 /* Heapsort of the indices ix[0..n) by the edges' top ordinate. */
-static void rast__cov_sift(int32_t *ix, const rast__cedge *e, uint32_t root, uint32_t n)
+/* ix[0..n) ordered by the edges' tops (by a radix sort of yt - min yt:
+ * a few passes over the edges, where a heap sort took 8% of the
+ * instructions of "area" on four glyphs); tmp and key: room for n each. */
+static void rast__cov_sort_tops(int32_t *ix, int32_t *tmp, int32_t *key, const rast__cedge *e,
+                                uint32_t n)
 {
-    int32_t v = ix[root];
-    for (;;) {
-        uint32_t ch = 2 * root + 1;
-        if (ch >= n) break;
-        if (ch + 1 < n && e[ix[ch + 1]].yt > e[ix[ch]].yt) ch++;
-        if (e[ix[ch]].yt <= e[v].yt) break;
-        ix[root] = ix[ch];
-        root = ch;
-    }
-    ix[root] = v;
-}
-
-static void rast__cov_sort_tops(int32_t *ix, const rast__cedge *e, uint32_t n)
-{
+    int32_t ymin = n ? e[0].yt : 0;
     uint32_t i;
-    for (i = n / 2; i-- > 0;) rast__cov_sift(ix, e, i, n);
-    for (i = n; i-- > 1;) {
-        int32_t s = ix[0];
-        ix[0] = ix[i];
-        ix[i] = s;
-        rast__cov_sift(ix, e, 0, i);
-    }
+    for (i = 1; i < n; i++)
+        if (e[i].yt < ymin) ymin = e[i].yt;
+    for (i = 0; i < n; i++) key[i] = (int32_t)((uint32_t)e[i].yt - (uint32_t)ymin);
+    rast__cov_radix_sort(ix, tmp, key, n);
 }
 
 /* a before b by (xt, dx, dy): the order in which coincident edges of
@@ -1563,7 +1551,7 @@ rast_status rast__cov_area(rast__cedge *e, uint32_t n, int32_t s, rast_fill_rule
         return RAST_OK;
     }
     rast__cov_rows(e, n, c.p, order, o, &ja, &jb);
-    rast__cov_sort_tops(order, e, n);
+    rast__cov_sort_tops(order, row, sw.live, e, n); /* (row and live: room until the rows) */
     nlive = rast__cov_cancel(order, e, n);
     rast__cov_zero_rows(o, o->clip.y0, ja);
     for (j = ja; j < jb; j++) {

@@ -37,7 +37,7 @@ def test_kept_block_gives_the_same_output(method):
     shape = (60, 80)
     for rings in SCENES + SCENES[::-1]:  # growing, shrinking, growing again
         assert np.array_equal(rastrum.polygon_coverage(rings, shape, method=method), _unlent(rings, shape, method))
-    sc = C._scratch()
+    sc = C._tls.sc
     assert sc.size >= sc.want > 0 and sc.buf != ffi.NULL
 
 
@@ -52,7 +52,7 @@ def test_the_block_grows_to_the_cap_and_no_further(monkeypatch):
         shape, seen = (60, 80), []
         for r in SCENES:
             out = rastrum.polygon_coverage(r, shape, method="area")
-            sc = C._scratch()
+            sc = C._tls.sc
             seen.append((sc.want, sc.size, np.array_equal(out, _unlent(r, shape, "area"))))
         result["seen"] = seen
 
@@ -78,7 +78,7 @@ def test_threads_keep_their_own_blocks():
             j = (i + k) % len(SCENES)
             if not np.array_equal(rastrum.polygon_coverage(SCENES[j], shape, method="area"), want[j]):
                 bad.append((k, j))
-        blocks.add(int(ffi.cast("uintptr_t", C._scratch().buf)))
+        blocks.add(int(ffi.cast("uintptr_t", C._tls.sc.buf)))
         keep.append(C._tls.buf)  # alive past the thread: a later thread's block cannot reuse its memory
 
     ts = [threading.Thread(target=run, args=(k,)) for k in range(4)]

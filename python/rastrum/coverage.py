@@ -116,20 +116,18 @@ _SCRATCH_KEEP = 32 << 20
 _tls = threading.local()
 
 
-def _scratch():
-    """This thread's rastpy_scratch."""
+def _lent(fn, *args):
+    """fn(*args, this thread's scratch); after it, keep a block as large as
+    the call wanted (within the cap)."""
     try:
-        return _tls.sc
+        sc = _tls.sc
     except AttributeError:
         sc = _tls.sc = ffi.new("rastpy_scratch *")
-        return sc
-
-
-def _grow(sc):
-    """After a call: keep a block as large as it wanted (within the cap)."""
+    result = fn(*args, sc)
     if sc.size < sc.want <= _SCRATCH_KEEP:
         _tls.buf = ffi.new("char[]", sc.want)  # (malloc'd: 16-byte aligned)
         sc.buf, sc.size = _tls.buf, sc.want
+    return result
 
 
 def _quick_key(method, rule, subpixel_bits, sample_offset, dtype):
@@ -285,12 +283,8 @@ def polygon_coverage(rings, shape, *, rule="evenodd", method="area", subpixel_bi
             pts, sizes, nrings = points
             h, w = shape
             raw = _empty(shape, c_dtype)
-            sc = _scratch()
-            res = _poly_call(_from_buffer(raw), h, w, fmt, _from_buffer(_DOUBLES, pts), len(pts),
-                             sizes, nrings, opts, sc)
-            if sc.want > sc.size:
-                _grow(sc)
-            if not res:
+            if not _lent(_poly_call, _from_buffer(raw), h, w, fmt, _from_buffer(_DOUBLES, pts), len(pts),
+                         sizes, nrings, opts):
                 return raw if fmt != _FIX62 else _finish(raw, d)
             # an error: the general path says which
     opts = _opts(method, rule, subpixel_bits, sample_offset, "polygon_coverage")
@@ -303,11 +297,8 @@ def polygon_coverage(rings, shape, *, rule="evenodd", method="area", subpixel_bi
     if not nrings:
         raw[...] = 0
         return _finish(raw, d)
-    sc = _scratch()
-    result = lib.rastpy_polygon_coverage(
-        ffi.from_buffer(raw) if h and w else ffi.NULL, h, w, fmt,
-        ffi.from_buffer("double[]", pts), len(pts), sizes, nrings, opts, sc)
-    _grow(sc)
+    result = _lent(lib.rastpy_polygon_coverage, ffi.from_buffer(raw) if h and w else ffi.NULL, h, w, fmt,
+                   ffi.from_buffer("double[]", pts), len(pts), sizes, nrings, opts)
     if result:
         _check(result, pts, opts, "rings", [len(pts)] if nrings == 1 else sizes)
     return _finish(raw, d)
@@ -338,11 +329,7 @@ def triangles_coverage(tris, shape, *, method="area", subpixel_bits=8, sample_of
         opts, fmt, c_dtype, d = quick
         h, w = shape
         raw = _empty(shape, c_dtype)
-        sc = _scratch()
-        res = _tris_call(_from_buffer(raw), h, w, fmt, _from_buffer(_DOUBLES, tris), len(tris), opts, sc)
-        if sc.want > sc.size:
-            _grow(sc)
-        if not res:
+        if not _lent(_tris_call, _from_buffer(raw), h, w, fmt, _from_buffer(_DOUBLES, tris), len(tris), opts):
             return raw if fmt != _FIX62 else _finish(raw, d)
         # an error: the general path says which
     opts = _opts(method, "nonzero", subpixel_bits, sample_offset, "triangles_coverage")
@@ -356,11 +343,8 @@ def triangles_coverage(tris, shape, *, method="area", subpixel_bits=8, sample_of
     if n == 0:
         raw[...] = 0
         return _finish(raw, d)
-    sc = _scratch()
-    result = lib.rastpy_triangles_coverage(
-        ffi.from_buffer(raw) if h and w else ffi.NULL, h, w, fmt,
-        ffi.from_buffer("double[]", t), n, opts, sc)
-    _grow(sc)
+    result = _lent(lib.rastpy_triangles_coverage, ffi.from_buffer(raw) if h and w else ffi.NULL, h, w, fmt,
+                   ffi.from_buffer("double[]", t), n, opts)
     if result:
         _check(result, t.reshape(-1, 2), opts, "tris", 3)
     return _finish(raw, d)
@@ -403,10 +387,8 @@ def fill_polygon_aa(target, rings, pixel, opts):
     pts, sizes, nrings = _points(rings)
     if not nrings:
         return
-    sc = _scratch()
-    result = lib.rastpy_fill_polygon_aa(target, ffi.from_buffer("double[]", pts), len(pts), sizes,
-                                        nrings, opts, pixel, sc)
-    _grow(sc)
+    result = _lent(lib.rastpy_fill_polygon_aa, target, ffi.from_buffer("double[]", pts), len(pts), sizes,
+                   nrings, opts, pixel)
     if result:
         _check(result, pts, opts, "rings", [len(pts)] if nrings == 1 else sizes)
 
@@ -416,9 +398,7 @@ def fill_triangles_aa(target, batch, pixel, opts, what="tris"):
     n = _ntris(batch)
     if n == 0:
         return
-    sc = _scratch()
-    result = lib.rastpy_fill_triangles_aa(target, ffi.from_buffer("double[]", batch), n, opts, pixel, sc)
-    _grow(sc)
+    result = _lent(lib.rastpy_fill_triangles_aa, target, ffi.from_buffer("double[]", batch), n, opts, pixel)
     if result:
         _check(result, batch.reshape(-1, 2), opts, what, 3)
 
@@ -429,9 +409,7 @@ def fill_triangles_shaded_aa(target, batch, colors, opts, sopts, what="tris"):
     n = _ntris(batch)
     if n == 0:
         return
-    sc = _scratch()
-    result = lib.rastpy_fill_triangles_shaded_aa(target, ffi.from_buffer("double[]", batch), n,
-                                                 ffi.from_buffer("uint8_t[]", colors), opts, sopts, sc)
-    _grow(sc)
+    result = _lent(lib.rastpy_fill_triangles_shaded_aa, target, ffi.from_buffer("double[]", batch), n,
+                   ffi.from_buffer("uint8_t[]", colors), opts, sopts)
     if result:
         _check(result, batch.reshape(-1, 2), opts, what, 3)

@@ -1,8 +1,9 @@
 /* Binding glue of the coverage calls (not part of the core): snapping,
- * scratch from the caller's rastpy_scratch (else malloc), and one C call per Python call, writing a whole
- * (height, width) array of uint8, uint16 or uint64 (2^-62 units), or
- * painting the coverage into a target (rast_fill_polygon_aa,
- * rast_fill_triangles_aa, rast_fill_triangles_shaded_aa). */
+ * scratch lent by the caller (rastpy_scratch, else malloc), and one C
+ * call per Python call, writing a whole (height, width) array of uint8,
+ * uint16 or uint64 (2^-62 units), or painting the coverage into a target
+ * (rast_fill_polygon_aa, rast_fill_triangles_aa,
+ * rast_fill_triangles_shaded_aa). */
 
 #include <stdlib.h>
 #include <string.h>

@@ -74,8 +74,8 @@ class Polygons:
         for a in (points, sizes, counts):
             a.flags.writeable = False
         self.points, self.ring_sizes, self.rings_per_polygon = points, sizes, counts
-        self._ends = np.cumsum(ring_sizes, dtype=np.int64)
-        self._first = np.concatenate(([0], np.cumsum(rings_per_polygon, dtype=np.int64)))
+        self._ends = np.cumsum(sizes, dtype=np.int64)
+        self._first = np.concatenate(([0], np.cumsum(counts, dtype=np.int64)))
 
     def __len__(self):
         return len(self.rings_per_polygon)

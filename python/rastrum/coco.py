@@ -500,5 +500,4 @@ def polygons(segmentations):
             objs.append([r for r in rings(s) if len(r)])
         except InputError as e:
             raise InputError("polygons: object %d: %s" % (k, e)) from None
-    pts, sizes, counts = _batch.pack(objs)
-    return _batch.Polygons(np.ascontiguousarray(pts, _F64).reshape(-1, 2), sizes, counts)
+    return _batch.Polygons(*_batch.pack(objs))

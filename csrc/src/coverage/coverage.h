@@ -227,6 +227,17 @@ static inline void rast__cov_store(rast_coverage_format f, unsigned char *row, i
         ((uint64_t *)(void *)row)[k] = v;
 }
 
+/* Columns [k0, k1) of a clip row get value v: a memset for uint8 (byte
+ * stores for a run of 8 or fewer, shorter than the call). */
+static inline void rast__cov_fill(rast_coverage_format f, unsigned char *row, int32_t k0, int32_t k1,
+                                  uint64_t v)
+{
+    if (f == RAST_COVERAGE_U8 && k1 - k0 > 8)
+        memset(row + k0, (int)v, (size_t)(k1 - k0));
+    else
+        for (; k0 < k1; k0++) rast__cov_store(f, row, k0, v);
+}
+
 static inline unsigned char *rast__cov_row(const rast__cov_out *o, int32_t y)
 {
     return o->base + (ptrdiff_t)(y - o->clip.y0) * o->stride;

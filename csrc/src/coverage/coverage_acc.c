@@ -222,20 +222,6 @@ RAST__HOT uint64_t rast__acc_level(int64_t v, rast_fill_rule rule, uint32_t m, u
     return x >> 51;
 }
 
-/* Columns [k0, k1) of the row at level lev. */
-static inline void rast__acc_fill(unsigned char *row, int32_t k0, int32_t k1, uint64_t lev, uint32_t m)
-{
-    uint16_t *r16 = (uint16_t *)(void *)row;
-    if (m == 255) {
-        if (k1 - k0 > 8)
-            memset(row + k0, (int)lev, (size_t)(k1 - k0));
-        else
-            for (; k0 < k1; k0++) row[k0] = (unsigned char)lev;
-    } else {
-        for (; k0 < k1; k0++) r16[k0] = (uint16_t)lev;
-    }
-}
-
 /* Row y's levels from the cells in [lo, hi) (dense: all read; else those
  * whose bits are set in blk, the others holding 0), which are cleared with
  * their bits; the pixels left of lo get 0, those from hi on the last sum's
@@ -245,10 +231,11 @@ RAST__HOT uint64_t rast__acc_row(uint64_t *acc, uint64_t *blk, unsigned char *ro
                                  int32_t hi, int32_t w, int dense, rast_fill_rule rule, uint32_t m,
                                  uint64_t win)
 {
+    const rast_coverage_format f = m == 255 ? RAST_COVERAGE_U8 : RAST_COVERAGE_U16;
     uint64_t bad = 0, lev = 0, v = 0;
     uint16_t *r16 = (uint16_t *)(void *)row;
     int32_t k = lo, wi;
-    rast__acc_fill(row, 0, lo, 0, m);
+    rast__cov_fill(f, row, 0, lo, 0);
     if (dense) { /* no branch on the cell: half of them are 0, at random */
         for (; k < hi; k++) {
             v += acc[k];
@@ -266,7 +253,7 @@ RAST__HOT uint64_t rast__acc_row(uint64_t *acc, uint64_t *blk, unsigned char *ro
             for (; b; b &= b - 1) {
                 int32_t col = (wi << 6) + (int32_t)rast__ctz64(b);
                 uint64_t d = acc[col];
-                if (col > k) rast__acc_fill(row, k, col, lev, m);
+                if (col > k) rast__cov_fill(f, row, k, col, lev);
                 if (d) {
                     acc[col] = 0;
                     v += d;
@@ -280,7 +267,7 @@ RAST__HOT uint64_t rast__acc_row(uint64_t *acc, uint64_t *blk, unsigned char *ro
             }
         }
     }
-    rast__acc_fill(row, k, w, lev, m);
+    rast__cov_fill(f, row, k, w, lev);
     return bad;
 }
 

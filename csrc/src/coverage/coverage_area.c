@@ -291,17 +291,6 @@ static inline uint64_t rast__cells_a62(const rast__cells *c, rast__i128 acc, ras
 }
 
 /* Columns [k0, k1) of a clip row get value v. */
-static void rast__cov_fill(rast_coverage_format f, unsigned char *row, int32_t k0, int32_t k1,
-                           uint64_t v)
-{
-    int32_t k;
-    if (k0 >= k1) return;
-    if (f == RAST_COVERAGE_U8)
-        memset(row + k0, (int)v, (size_t)(k1 - k0));
-    else
-        for (k = k0; k < k1; k++) rast__cov_store(f, row, k, v);
-}
-
 /* Row y's values from the cells, which are then cleared.  Only the cells
  * touched (their bits, in column order) add something; between them (inside
  * a span, or outside the shape) the value is the running cover's: one

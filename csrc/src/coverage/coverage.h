@@ -107,6 +107,9 @@ typedef struct rast__cedge {
     uint64_t tx;  /* the t of x, r in row `rowx` */
     int32_t rowx; /* see tx; INT32_MIN: not cached */
     int32_t xt, yt, dx, dy, dir;
+    /* RAST__HZ_TOP, RAST__HZ_BOTTOM: that end is also an end of a
+     * horizontal (or empty) edge of its ring (a simple row, coverage_acc.c) */
+    int32_t hz;
     /* the quick column stepper (coverage_area.c, 2^-30 pixel units): at
      * vertical qX, t from the top = qt + qtr/|dx|; per column qts + qtsr/|dx| */
     int64_t qt, qX, qts;
@@ -138,6 +141,9 @@ typedef struct rast__cedge {
     int32_t cn, crow;
     uint64_t ctime; /* its crossing time with edge cn in row crow (a cache) */
 } rast__cedge;
+
+#define RAST__HZ_TOP 1
+#define RAST__HZ_BOTTOM 2
 
 /* The edges of a polygon's rings (rule: the caller's) or of a triangle
  * batch (each triangle turned to one orientation, so that the non-zero
@@ -265,6 +271,15 @@ rast_status rast__cov_area(rast__cedge *e, uint32_t n, int32_t s, rast_fill_rule
 int rast__cov_acc_may(const rast__cov_out *o, int32_t s);
 rast_status rast__cov_acc(rast__cedge *e, uint32_t n, int32_t s, rast_fill_rule rule,
                           const rast__cov_out *o, rast__arena *arena);
+/* Row j of "area" by the accumulation, when the row is simple (see
+ * coverage_acc.c) and its levels are certain: 1, written and handed on;
+ * else 0, nothing handed on (the row may be written), the cells clean.
+ * The edges row[0..nrow) of the row; acc[] (clip width + 1 words) and
+ * bits[] the cleared cells of rast__cov_acc; own[] (clip width words) the
+ * columns' marks, stamp a number no other row of the call has (none is 0). */
+int rast__cov_acc_area_row(rast__cedge *e, const int32_t *row, int32_t nrow, int32_t j, int32_t s,
+                           rast_fill_rule rule, const rast__cov_out *o, uint64_t *acc,
+                           uint64_t *bits, uint64_t *own, uint32_t stamp);
 /* Stable radix sort (8 bits a pass, as many passes as the largest key
  * needs) of the indices ix[0..n) by key[ix[i]], each key's bits read as
  * unsigned; tmp[0..n) is room.  The result is in ix. */

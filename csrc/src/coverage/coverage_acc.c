@@ -307,6 +307,105 @@ static int rast__acc_emit(rast__acc *a, const rast__cov_out *o, int32_t y, rast_
     return 1;
 }
 
+/* ---- "area" rows by the accumulation ------------------------------------
+ *
+ * The accumulation gives each pixel the integral of the winding number w
+ * over it, and the rule turns that into the pixel's coverage exactly when
+ * w takes, on the pixel, values in one interval [i, i + 1]: both rules are
+ * linear between consecutive integers.  Row j is "simple", and "area" takes
+ * it this way (rast__cov_acc_area_row), when
+ *   - no edge of the row ends strictly inside the strip at a vertex that a
+ *     horizontal (or empty) edge of its ring also ends at.  Then every ring
+ *     through a vertex inside the strip arrives there once and leaves once
+ *     by edges of the row, which add the same directions above the vertex
+ *     as below it: w just left of column c changes over the strip only
+ *     where an edge crosses or touches column c; and
+ *   - each column of the clip is met by (the x range of) at most one part,
+ *     or by two that share an end (anywhere) in one of the shapes a ring
+ *     makes there: a chain (one ends where the other starts; the same
+ *     direction) or a cusp (both start, or both end, there; opposite
+ *     directions).
+ * One part splits a pixel into two sides a step apart.  A chain's parts
+ * are never at one height together and step w the same way; a cusp's do
+ * not cross, and w steps up by one between them and back: two values
+ * again (collinear, they cancel where both run: one value there).  Anything else (three parts in a pixel, two side by side with one
+ * direction or that may cross, a horizontal edge inside the row) goes to
+ * the sweep.  own[] holds, for each column, the stamp of the row that last
+ * met it (high word) and the index in row[] of the part that did (low
+ * bits; RAST__OWN_PAIR: two did). */
+#define RAST__OWN_PAIR 0x80000000u
+
+/* Edges a and b, whose parts meet one column: a chain or a cusp? */
+static int rast__acc_partners(const rast__cedge *a, const rast__cedge *b)
+{
+    const int32_t axb = a->xt + a->dx, ayb = a->yt + a->dy, bxb = b->xt + b->dx, byb = b->yt + b->dy;
+    if ((axb == b->xt && ayb == b->yt) || (bxb == a->xt && byb == a->yt)) return a->dir == b->dir;
+    if ((a->xt == b->xt && a->yt == b->yt) || (axb == bxb && ayb == byb)) return a->dir != b->dir;
+    return 0;
+}
+
+int rast__cov_acc_area_row(rast__cedge *e, const int32_t *row, int32_t nrow, int32_t j, int32_t s,
+                           rast_fill_rule rule, const rast__cov_out *o, uint64_t *acc,
+                           uint64_t *bits, uint64_t *own, uint32_t stamp)
+{
+    const uint32_t m = o->format == RAST_COVERAGE_U8 ? 255 : 65535;
+    const uint64_t tag = (uint64_t)stamp << 32;
+    const int32_t w = o->clip.x1 - o->clip.x0;
+    rast__acc a;
+    int64_t Yj;
+    int32_t k, c;
+    if (nrow >= 512 || ((uint64_t)nrow + 1) * m >= ((uint64_t)1 << 25)) return 0;
+    a.acc = acc;
+    a.blk = bits;
+    a.x0 = o->clip.x0;
+    a.x1 = o->clip.x1;
+    a.lo = INT32_MAX;
+    a.hi = -1;
+    a.p = (int32_t)1 << s;
+    a.hq = QF - s;
+    a.dense = (int64_t)nrow * RAST__ACC_DENSE >= w;
+    Yj = (int64_t)j * a.p;
+    for (k = 0; k < nrow; k++) { /* the parts, and the test */
+        rast__cedge *ed = &e[row[k]];
+        int64_t rel0 = (int64_t)ed->yt - Yj, rel1 = rel0 + ed->dy, lo, hi;
+        if (rel0 > 0) {
+            if (ed->hz & RAST__HZ_TOP) return 0;
+            ed->qta = (uint64_t)rel0 << a.hq;
+            ed->qa = (int64_t)ed->xt * ((int64_t)1 << a.hq);
+        } else {
+            ed->qta = 0;
+            ed->qa = rast__acc_top(ed, j, &a);
+        }
+        if (rel1 < a.p) {
+            if (ed->hz & RAST__HZ_BOTTOM) return 0;
+            ed->qtb = (uint64_t)rel1 << a.hq;
+            ed->qb = ((int64_t)ed->xt + ed->dx) * ((int64_t)1 << a.hq);
+        } else {
+            ed->qtb = QT;
+            ed->qb = rast__acc_top(ed, j + 1, &a);
+        }
+        lo = rast__acc_col(ed->qa < ed->qb ? ed->qa : ed->qb) - a.x0;
+        hi = rast__acc_col(ed->qa < ed->qb ? ed->qb : ed->qa) - a.x0;
+        if (lo < 0) lo = 0;
+        if (hi >= w) hi = w - 1;
+        for (c = (int32_t)lo; c <= hi; c++) {
+            uint64_t v = own[c];
+            if ((v & ~(uint64_t)0xFFFFFFFFu) != tag)
+                own[c] = tag | (uint32_t)k;
+            else if ((v & RAST__OWN_PAIR) || !rast__acc_partners(&e[row[(uint32_t)v]], ed))
+                return 0;
+            else
+                own[c] = v | RAST__OWN_PAIR;
+        }
+    }
+    for (k = 0; k < nrow; k++) {
+        rast__cedge *ed = &e[row[k]];
+        rast__acc_part(&a, ed, -((int64_t)ed->yt - Yj) * ((int64_t)1 << a.hq), ed->qa, ed->qta,
+                       ed->qb, ed->qtb, ed->dir);
+    }
+    return rast__acc_emit(&a, o, j, rule, m, ((uint64_t)nrow + 1) * m << 24);
+}
+
 void rast__cov_radix_sort(int32_t *ix, int32_t *tmp, const int32_t *key, uint32_t n)
 {
     uint32_t cnt[256], i, d, sh, top = 0;

@@ -453,6 +453,7 @@ size_t rast__cov_area_scratch(uint32_t n, int32_t width)
     b = rast__size_add(b, 6 * rast__align(rast__size_mul(n, sizeof(int32_t))));
     b = rast__size_add(b, rast__align(rast__size_mul(n, sizeof(uint64_t))));
     b = rast__size_add(b, rast__align(rast__size_mul(((size_t)width + 63) / 64, sizeof(uint64_t))));
+    b = rast__size_add(b, rast__align(rast__size_mul((size_t)width, sizeof(uint64_t))));
     return rast__size_add(b, 2 * rast__align(rast__size_mul((size_t)width, sizeof(rast__i128))));
 }
 
@@ -1517,6 +1518,8 @@ rast_status rast__cov_area(rast__cedge *e, uint32_t n, int32_t s, rast_fill_rule
     int32_t *order, *row, nrow = 0, j, ja, jb, k, width = o->clip.x1 - o->clip.x0;
     uint32_t next = 0, nlive;
     int32_t fast = 0, same; /* the last row's s if it was a fast row; its edges kept */
+    uint64_t *own; /* simple rows (rast__cov_acc_area_row): the columns' marks */
+    const int simple = !accumulate && rast__cov_acc_may(o, s);
 
     order = (int32_t *)rast__take(arena, (size_t)n * sizeof(int32_t));
     row = (int32_t *)rast__take(arena, (size_t)n * sizeof(int32_t));
@@ -1528,10 +1531,12 @@ rast_status rast__cov_area(rast__cedge *e, uint32_t n, int32_t s, rast_fill_rule
     c.cover = (rast__i128 *)rast__take(arena, (size_t)width * sizeof(rast__i128));
     c.area = (rast__i128 *)rast__take(arena, (size_t)width * sizeof(rast__i128));
     c.bits = (uint64_t *)rast__take(arena, ((size_t)width + 63) / 64 * sizeof(uint64_t));
+    own = (uint64_t *)rast__take(arena, (size_t)width * sizeof(uint64_t));
     if ((n && (!order || !row || !sw.live || !sw.wb || !sw.h || !sw.hidx || !sw.ct)) || !c.cover ||
-        !c.area || !c.bits)
+        !c.area || !c.bits || !own)
         return RAST_E_SCRATCH;
     for (k = 0; k < width; k++) c.cover[k] = c.area[k] = rast__i128_u64(0);
+    for (k = 0; k < width; k++) own[k] = 0;
     for (k = 0; k < (width + 63) / 64; k++) c.bits[k] = 0;
     rast__cells_init(&c, s, rule, accumulate, o);
 
@@ -1562,6 +1567,11 @@ rast_status rast__cov_area(rast__cedge *e, uint32_t n, int32_t s, rast_fill_rule
         if (nrow) {
             if (accumulate) {
                 rast__cov_row_acc(&c, e, row, nrow, j);
+            } else if (simple && rast__cov_acc_area_row(e, row, nrow, j, s, rule, o,
+                                                        (uint64_t *)(void *)c.cover, c.bits, own,
+                                                        (uint32_t)(j - ja) + 1)) {
+                fast = 0;
+                c.emitted = 1;
             } else if (!(fast && same && rast__cov_row_cont(&c, e, row, nrow, j, fast))) {
                 fast = rast__cov_row_fast(&c, e, row, nrow, j);
                 if (!fast) rast__cov_row_area(&c, e, row, nrow, &sw, j, rule);

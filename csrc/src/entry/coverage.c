@@ -182,13 +182,19 @@ uint32_t rast__cov_edges_polygon(const rast_polygon *poly, rast__cedge *e)
             rast_point a = poly->points[base + i];
             rast_point b = poly->points[base + (i + 1 == size ? 0 : i + 1)];
             rast__cedge *ed = &e[n];
+            /* the ring's edges before a and after b horizontal (or empty)? */
+            uint32_t i2 = i + 2 < size ? i + 2 : (i + 2) % size;
+            int32_t ha = poly->points[base + (i == 0 ? size - 1 : i - 1)].y == a.y;
+            int32_t hb = poly->points[base + i2].y == b.y;
             if (a.y == b.y) continue;
             ed->dir = 1;
+            ed->hz = (ha ? RAST__HZ_TOP : 0) | (hb ? RAST__HZ_BOTTOM : 0);
             if (a.y > b.y) {
                 rast_point t = a;
                 a = b;
                 b = t;
                 ed->dir = -1;
+                ed->hz = (hb ? RAST__HZ_TOP : 0) | (ha ? RAST__HZ_BOTTOM : 0);
             }
             ed->xt = a.x;
             ed->yt = a.y;

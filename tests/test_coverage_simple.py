@@ -72,3 +72,16 @@ def test_rings_sharing_vertices(pool, picks, rule):
     pts = [(x + f, y + f / 2) for x, y, f in pool]
     rings = [[pts[i % len(pts)] for i in pick] for pick in picks]
     _check(rings, rule, shape=(9, 9))
+
+
+def test_a_run_whose_edges_cancelled():
+    """Triangles in one call: T1's horizontal side B-C lies inside row 4;
+    the edge before it in T1, A-B, cancels with T2's B-A, so no live edge
+    of the row owns the run; T3's left side crosses it in pixel (2, 4)
+    (windings 2, 1, 1 and 0 there)."""
+    tris = np.array([[(1, 1), (6, 4.5), (1, 4.5)], [(6, 4.5), (1, 1), (7, 1)],
+                     [(2.3, 2), (9, 8.8), (2.6, 8.8)]])
+    _check(tris.tolist(), "nonzero", triangles=True, shape=(9, 9))
+    acc = rastrum.triangles_coverage(tris, (9, 9), method="accumulate", dtype=np.float64)
+    exact = rastrum.triangles_coverage(tris, (9, 9), dtype=np.float64)
+    assert abs(acc[4, 2] - exact[4, 2]) > 0.01

@@ -108,8 +108,10 @@ typedef struct rast__cedge {
     int32_t rowx; /* see tx; INT32_MIN: not cached */
     int32_t xt, yt, dx, dy, dir;
     /* RAST__HZ_TOP, RAST__HZ_BOTTOM: that end is also an end of a
-     * horizontal (or empty) edge of its ring (a simple row, coverage_acc.c) */
-    int32_t hz;
+     * horizontal (or empty) edge of its ring; RAST__HZ_RUN: the ring's
+     * horizontal edges right after this edge (its original end) span the
+     * abscissae [hx0, hx1] (simple rows, coverage_acc.c) */
+    int32_t hz, hx0, hx1;
     /* the quick column stepper (coverage_area.c, 2^-30 pixel units): at
      * vertical qX, t from the top = qt + qtr/|dx|; per column qts + qtsr/|dx| */
     int64_t qt, qX, qts;
@@ -144,6 +146,13 @@ typedef struct rast__cedge {
 
 #define RAST__HZ_TOP 1
 #define RAST__HZ_BOTTOM 2
+#define RAST__HZ_RUN 4
+
+/* The ordinate of the run after e (RAST__HZ_RUN): that of e's original end. */
+static inline int32_t rast__run_y(const rast__cedge *e)
+{
+    return e->dir > 0 ? e->yt + e->dy : e->yt;
+}
 
 /* The edges of a polygon's rings (rule: the caller's) or of a triangle
  * batch (each triangle turned to one orientation, so that the non-zero
@@ -274,12 +283,15 @@ rast_status rast__cov_acc(rast__cedge *e, uint32_t n, int32_t s, rast_fill_rule 
 /* Row j of "area" by the accumulation, when the row is simple (see
  * coverage_acc.c) and its levels are certain: 1, written and handed on;
  * else 0, nothing handed on (the row may be written), the cells clean.
- * The edges row[0..nrow) of the row; acc[] (clip width + 1 words) and
- * bits[] the cleared cells of rast__cov_acc; own[] (clip width words) the
- * columns' marks, stamp a number no other row of the call has (none is 0). */
-int rast__cov_acc_area_row(rast__cedge *e, const int32_t *row, int32_t nrow, int32_t j, int32_t s,
-                           rast_fill_rule rule, const rast__cov_out *o, uint64_t *acc,
-                           uint64_t *bits, uint64_t *own, uint32_t stamp);
+ * The edges row[0..nrow) of the row; runs[0..nrun) the edges (with
+ * RAST__HZ_RUN, cancelled or not) whose runs lie strictly inside its strip;
+ * acc[] (clip width + 1 words) and bits[] the cleared cells of
+ * rast__cov_acc; own[] (clip width words) the columns' marks, stamp a
+ * number no other row of the call has (none is 0). */
+int rast__cov_acc_area_row(rast__cedge *e, const int32_t *row, int32_t nrow, const int32_t *runs,
+                           int32_t nrun, int32_t j, int32_t s, rast_fill_rule rule,
+                           const rast__cov_out *o, uint64_t *acc, uint64_t *bits, uint64_t *own,
+                           uint32_t stamp);
 /* Stable radix sort (8 bits a pass, as many passes as the largest key
  * needs) of the indices ix[0..n) by key[ix[i]], each key's bits read as
  * unsigned; tmp[0..n) is room.  The result is in ix. */

@@ -68,7 +68,7 @@ static void rast__acc_t_first(rast__cedge *e, int64_t X, const rast__acc *a)
 }
 
 /* Cells [lo, hi] touched: their bits set unless the row is dense. */
-static inline void rast__acc_mark(rast__acc *a, int32_t lo, int32_t hi)
+RAST__HOT void rast__acc_mark(rast__acc *a, int32_t lo, int32_t hi)
 {
     int32_t w0, w1, last = a->x1 - a->x0 - 1;
     if (lo < a->lo) a->lo = lo;
@@ -89,7 +89,7 @@ static inline void rast__acc_mark(rast__acc *a, int32_t lo, int32_t hi)
 
 /* One column's piece: fractions f0 .. f1, height dy, signed by neg (0 or
  * all ones); column k of the clip (0 <= k < width). */
-static inline void rast__acc_put(uint64_t *acc, int64_t k, uint64_t f0, uint64_t f1, uint64_t dy,
+RAST__HOT void rast__acc_put(uint64_t *acc, int64_t k, uint64_t f0, uint64_t f1, uint64_t dy,
                                  uint64_t neg)
 {
     uint64_t ar = ((f0 + f1) * dy) >> 10;
@@ -99,7 +99,7 @@ static inline void rast__acc_put(uint64_t *acc, int64_t k, uint64_t f0, uint64_t
 
 /* The part of e from (xa, ta) to (xb, tb) (Q units; t from the row's top,
  * whose top is off below e's top), sign s. */
-static void rast__acc_part(rast__acc *a, rast__cedge *e, int64_t off, int64_t xa, uint64_t ta,
+RAST__HOT void rast__acc_part(rast__acc *a, rast__cedge *e, int64_t off, int64_t xa, uint64_t ta,
                            int64_t xb, uint64_t tb, int32_t s)
 {
     const uint64_t fm = QT - 1, neg = s < 0 ? ~(uint64_t)0 : 0;
@@ -285,7 +285,7 @@ static uint64_t rast__acc_row_u8eo(uint64_t *acc, uint64_t *blk, unsigned char *
 
 /* Row y from the cells touched, which are cleared: 1 when done (handed
  * on), 0 when a level is not certain (nothing handed on). */
-static int rast__acc_emit(rast__acc *a, const rast__cov_out *o, int32_t y, rast_fill_rule rule,
+RAST__HOT int rast__acc_emit(rast__acc *a, const rast__cov_out *o, int32_t y, rast_fill_rule rule,
                           uint32_t m, uint64_t win)
 {
     unsigned char *row = rast__cov_row(o, y);
@@ -313,27 +313,38 @@ static int rast__acc_emit(rast__acc *a, const rast__cov_out *o, int32_t y, rast_
  * over it, and the rule turns that into the pixel's coverage exactly when
  * w takes, on the pixel, values in one interval [i, i + 1]: both rules are
  * linear between consecutive integers.  Row j is "simple", and "area" takes
- * it this way (rast__cov_acc_area_row), when
- *   - no edge of the row ends strictly inside the strip at a vertex that a
- *     horizontal (or empty) edge of its ring also ends at.  Then every ring
- *     through a vertex inside the strip arrives there once and leaves once
- *     by edges of the row, which add the same directions above the vertex
- *     as below it: w just left of column c changes over the strip only
- *     where an edge crosses or touches column c; and
- *   - each column of the clip is met by (the x range of) at most one part,
- *     or by two that share an end (anywhere) in one of the shapes a ring
- *     makes there: a chain (one ends where the other starts; the same
+ * it this way (rast__cov_acc_area_row), when each column of the clip is
+ * met by (the x range of) at most one "piece", or by two that a ring joins
+ * there.  The pieces are the edges' parts in the strip and the runs of a
+ * ring's horizontal edges strictly inside it; two pieces are joined when
+ *   - they are parts that share an end (anywhere) in one of the shapes a
+ *     ring makes: a chain (one ends where the other starts; the same
  *     direction) or a cusp (both start, or both end, there; opposite
- *     directions).
- * One part splits a pixel into two sides a step apart.  A chain's parts
+ *     directions); or
+ *   - they are a run and a part that ends at one of the run's ends, in the
+ *     pixel's column.
+ * Why: where two edges of a ring meet at a vertex inside the strip, and the
+ * ring goes on along no horizontal edge there, it arrives once and leaves
+ * once, by edges that add the same directions above the vertex as below
+ * it; a run moves that balance along its length.  So w just left of column
+ * c changes over the strip only where a piece crosses or touches column c.
+ * One piece splits a pixel into two sides a step apart.  A chain's parts
  * are never at one height together and step w the same way; a cusp's do
- * not cross, and w steps up by one between them and back: two values
- * again (collinear, they cancel where both run: one value there).  Anything else (three parts in a pixel, two side by side with one
- * direction or that may cross, a horizontal edge inside the row) goes to
- * the sweep.  own[] holds, for each column, the stamp of the row that last
- * met it (high word) and the index in row[] of the part that did (low
- * bits; RAST__OWN_PAIR: two did). */
+ * not cross, and w steps up by one between them and back (collinear, they
+ * cancel where both run); a part and a run joined in the pixel's column
+ * are one path through it, or meet on its left side at a vertex that no
+ * other edge reaches (one would be a third piece in the column), so that
+ * the sides above and below them join round it: two values each time.
+ * Anything else (three pieces in a pixel, two side by side with one
+ * direction or that may cross, two runs) goes to the sweep.
+ *
+ * The runs come from a list of the edges that each run follows in its ring
+ * (those edges may have cancelled: see rast__cov_cancel), not from the
+ * row's parts.  own[] holds, for each column, the stamp of the row that last met it
+ * (high word) and what met it (low word): the index in row[] of a part, or
+ * RAST__OWN_RUN for a run; RAST__OWN_PAIR once two did. */
 #define RAST__OWN_PAIR 0x80000000u
+#define RAST__OWN_RUN 0x40000000u
 
 /* Edges a and b, whose parts meet one column: a chain or a cusp? */
 static int rast__acc_partners(const rast__cedge *a, const rast__cedge *b)
@@ -344,9 +355,45 @@ static int rast__acc_partners(const rast__cedge *a, const rast__cedge *b)
     return 0;
 }
 
-int rast__cov_acc_area_row(rast__cedge *e, const int32_t *row, int32_t nrow, int32_t j, int32_t s,
-                           rast_fill_rule rule, const rast__cov_out *o, uint64_t *acc,
-                           uint64_t *bits, uint64_t *own, uint32_t stamp)
+/* Does edge e end at a run inside the strip of the row whose top is Yj,
+ * in column c? */
+static int rast__acc_joined(const rast__cedge *e, int64_t Yj, int32_t p, int64_t c)
+{
+    const int32_t xb = e->xt + e->dx;
+    if ((e->hz & RAST__HZ_TOP) && e->yt > Yj && rast__floordiv(e->xt, p) == c) return 1;
+    if ((e->hz & RAST__HZ_BOTTOM) && (int64_t)e->yt + e->dy < Yj + p && rast__floordiv(xb, p) == c)
+        return 1;
+    return 0;
+}
+
+/* Column c (of the clip) met by a piece, own[c]'s stamp tag: 1 if the
+ * column stays simple.  `part` is its index in row[] (or RAST__OWN_RUN). */
+RAST__HOT int rast__acc_meet(uint64_t *own, int32_t c, uint64_t tag, uint32_t part, const rast__cedge *e,
+                             const int32_t *row, int64_t Yj, int32_t p, int32_t x0)
+{
+    const uint64_t v = own[c];
+    uint32_t was;
+    if ((v & ~(uint64_t)0xFFFFFFFFu) != tag) {
+        own[c] = tag | part;
+        return 1;
+    }
+    was = (uint32_t)v;
+    if (was & RAST__OWN_PAIR) return 0;
+    if (was == RAST__OWN_RUN) {
+        if (part == RAST__OWN_RUN || !rast__acc_joined(&e[row[part]], Yj, p, (int64_t)c + x0)) return 0;
+    } else if (part == RAST__OWN_RUN) {
+        if (!rast__acc_joined(&e[row[was]], Yj, p, (int64_t)c + x0)) return 0;
+    } else if (!rast__acc_partners(&e[row[was]], &e[row[part]])) {
+        return 0;
+    }
+    own[c] = v | RAST__OWN_PAIR;
+    return 1;
+}
+
+int rast__cov_acc_area_row(rast__cedge *e, const int32_t *row, int32_t nrow, const int32_t *runs,
+                           int32_t nrun, int32_t j, int32_t s, rast_fill_rule rule,
+                           const rast__cov_out *o, uint64_t *acc, uint64_t *bits, uint64_t *own,
+                           uint32_t stamp)
 {
     const uint32_t m = o->format == RAST_COVERAGE_U8 ? 255 : 65535;
     const uint64_t tag = (uint64_t)stamp << 32;
@@ -369,7 +416,6 @@ int rast__cov_acc_area_row(rast__cedge *e, const int32_t *row, int32_t nrow, int
         rast__cedge *ed = &e[row[k]];
         int64_t rel0 = (int64_t)ed->yt - Yj, rel1 = rel0 + ed->dy, lo, hi;
         if (rel0 > 0) {
-            if (ed->hz & RAST__HZ_TOP) return 0;
             ed->qta = (uint64_t)rel0 << a.hq;
             ed->qa = (int64_t)ed->xt * ((int64_t)1 << a.hq);
         } else {
@@ -377,7 +423,6 @@ int rast__cov_acc_area_row(rast__cedge *e, const int32_t *row, int32_t nrow, int
             ed->qa = rast__acc_top(ed, j, &a);
         }
         if (rel1 < a.p) {
-            if (ed->hz & RAST__HZ_BOTTOM) return 0;
             ed->qtb = (uint64_t)rel1 << a.hq;
             ed->qb = ((int64_t)ed->xt + ed->dx) * ((int64_t)1 << a.hq);
         } else {
@@ -388,15 +433,16 @@ int rast__cov_acc_area_row(rast__cedge *e, const int32_t *row, int32_t nrow, int
         hi = rast__acc_col(ed->qa < ed->qb ? ed->qb : ed->qa) - a.x0;
         if (lo < 0) lo = 0;
         if (hi >= w) hi = w - 1;
-        for (c = (int32_t)lo; c <= hi; c++) {
-            uint64_t v = own[c];
-            if ((v & ~(uint64_t)0xFFFFFFFFu) != tag)
-                own[c] = tag | (uint32_t)k;
-            else if ((v & RAST__OWN_PAIR) || !rast__acc_partners(&e[row[(uint32_t)v]], ed))
-                return 0;
-            else
-                own[c] = v | RAST__OWN_PAIR;
-        }
+        for (c = (int32_t)lo; c <= hi; c++)
+            if (!rast__acc_meet(own, c, tag, (uint32_t)k, e, row, Yj, a.p, a.x0)) return 0;
+    }
+    for (k = 0; k < nrun; k++) { /* the runs' columns */
+        const rast__cedge *ed = &e[runs[k]];
+        int64_t lo = rast__floordiv(ed->hx0, a.p) - a.x0, hi = rast__floordiv(ed->hx1, a.p) - a.x0;
+        if (lo < 0) lo = 0;
+        if (hi >= w) hi = w - 1;
+        for (c = (int32_t)lo; c <= hi; c++)
+            if (!rast__acc_meet(own, c, tag, RAST__OWN_RUN, e, row, Yj, a.p, a.x0)) return 0;
     }
     for (k = 0; k < nrow; k++) {
         rast__cedge *ed = &e[row[k]];

@@ -450,7 +450,7 @@ static uint64_t rast__cov_cross(const rast__cedge *a, const rast__cedge *b, int6
 size_t rast__cov_area_scratch(uint32_t n, int32_t width)
 {
     size_t b = rast__align(rast__size_mul(n, sizeof(rast__cedge)));
-    b = rast__size_add(b, 6 * rast__align(rast__size_mul(n, sizeof(int32_t))));
+    b = rast__size_add(b, 7 * rast__align(rast__size_mul(n, sizeof(int32_t))));
     b = rast__size_add(b, rast__align(rast__size_mul(n, sizeof(uint64_t))));
     b = rast__size_add(b, rast__align(rast__size_mul(((size_t)width + 63) / 64, sizeof(uint64_t))));
     b = rast__size_add(b, rast__align(rast__size_mul((size_t)width, sizeof(uint64_t))));
@@ -1519,6 +1519,8 @@ rast_status rast__cov_area(rast__cedge *e, uint32_t n, int32_t s, rast_fill_rule
     uint32_t next = 0, nlive;
     int32_t fast = 0, same; /* the last row's s if it was a fast row; its edges kept */
     uint64_t *own; /* simple rows (rast__cov_acc_area_row): the columns' marks */
+    int32_t *runs, nrun = 0, rnext = 0, rend; /* and the runs, by ordinate */
+    int64_t bottom = INT64_MAX; /* the least of the row edges' bottom ordinates */
     const int simple = !accumulate && rast__cov_acc_may(o, s);
 
     order = (int32_t *)rast__take(arena, (size_t)n * sizeof(int32_t));
@@ -1532,8 +1534,9 @@ rast_status rast__cov_area(rast__cedge *e, uint32_t n, int32_t s, rast_fill_rule
     c.area = (rast__i128 *)rast__take(arena, (size_t)width * sizeof(rast__i128));
     c.bits = (uint64_t *)rast__take(arena, ((size_t)width + 63) / 64 * sizeof(uint64_t));
     own = (uint64_t *)rast__take(arena, (size_t)width * sizeof(uint64_t));
-    if ((n && (!order || !row || !sw.live || !sw.wb || !sw.h || !sw.hidx || !sw.ct)) || !c.cover ||
-        !c.area || !c.bits || !own)
+    runs = (int32_t *)rast__take(arena, (size_t)n * sizeof(int32_t));
+    if ((n && (!order || !row || !sw.live || !sw.wb || !sw.h || !sw.hidx || !sw.ct || !runs)) ||
+        !c.cover || !c.area || !c.bits || !own)
         return RAST_E_SCRATCH;
     for (k = 0; k < width; k++) c.cover[k] = c.area[k] = rast__i128_u64(0);
     for (k = 0; k < width; k++) own[k] = 0;
@@ -1547,29 +1550,54 @@ rast_status rast__cov_area(rast__cedge *e, uint32_t n, int32_t s, rast_fill_rule
     rast__cov_rows(e, n, c.p, order, o, &ja, &jb);
     rast__cov_sort_tops(order, row, sw.live, e, n); /* (row and live: room until the rows) */
     nlive = rast__cov_cancel(order, e, n);
+    if (simple) { /* the runs, by ordinate (wb and h: room until the rows) */
+        int32_t ymin = INT32_MAX;
+        for (k = 0; k < (int32_t)n; k++)
+            if (e[k].hz & RAST__HZ_RUN) {
+                runs[nrun++] = k;
+                if (rast__run_y(&e[k]) < ymin) ymin = rast__run_y(&e[k]);
+            }
+        for (k = 0; k < nrun; k++) sw.wb[runs[k]] = (int32_t)((uint32_t)rast__run_y(&e[runs[k]]) - (uint32_t)ymin);
+        rast__cov_radix_sort(runs, sw.h, sw.wb, (uint32_t)nrun);
+    }
     rast__cov_zero_rows(o, o->clip.y0, ja);
     for (j = ja; j < jb; j++) {
         const int64_t Yj = (int64_t)j * c.p;
         int32_t m;
-        /* Drop the edges that end above the row; take those that start
-         * above its bottom. */
-        for (k = 0, m = 0; k < nrow; k++)
-            if ((int64_t)e[row[k]].yt + e[row[k]].dy > Yj) row[m++] = row[k];
-        same = m == nrow;
-        nrow = m;
+        /* Drop the edges that end above the row (when one does, bottom is
+         * at or above the row's top); take those that start above its
+         * bottom. */
+        same = 1;
+        if (bottom <= Yj) {
+            bottom = INT64_MAX;
+            for (k = 0, m = 0; k < nrow; k++) {
+                const int64_t yb = (int64_t)e[row[k]].yt + e[row[k]].dy;
+                if (yb > Yj) {
+                    row[m++] = row[k];
+                    if (yb < bottom) bottom = yb;
+                }
+            }
+            same = m == nrow;
+            nrow = m;
+        }
         while (next < nlive && e[order[next]].yt < Yj + c.p) {
-            if ((int64_t)e[order[next]].yt + e[order[next]].dy > Yj) {
+            const int64_t yb = (int64_t)e[order[next]].yt + e[order[next]].dy;
+            if (yb > Yj) {
                 row[nrow++] = order[next];
+                if (yb < bottom) bottom = yb;
                 same = 0;
             }
             next++;
         }
+        while (rnext < nrun && rast__run_y(&e[runs[rnext]]) <= Yj) rnext++; /* the row's runs */
+        for (rend = rnext; rend < nrun && rast__run_y(&e[runs[rend]]) < Yj + c.p; rend++) {
+        }
         if (nrow) {
             if (accumulate) {
                 rast__cov_row_acc(&c, e, row, nrow, j);
-            } else if (simple && rast__cov_acc_area_row(e, row, nrow, j, s, rule, o,
-                                                        (uint64_t *)(void *)c.cover, c.bits, own,
-                                                        (uint32_t)(j - ja) + 1)) {
+            } else if (simple && rast__cov_acc_area_row(e, row, nrow, runs + rnext, rend - rnext, j, s,
+                                                        rule, o, (uint64_t *)(void *)c.cover, c.bits,
+                                                        own, (uint32_t)(j - ja) + 1)) {
                 fast = 0;
                 c.emitted = 1;
             } else if (!(fast && same && rast__cov_row_cont(&c, e, row, nrow, j, fast))) {

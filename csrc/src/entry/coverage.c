@@ -189,12 +189,24 @@ uint32_t rast__cov_edges_polygon(const rast_polygon *poly, rast__cedge *e)
             if (a.y == b.y) continue;
             ed->dir = 1;
             ed->hz = (ha ? RAST__HZ_TOP : 0) | (hb ? RAST__HZ_BOTTOM : 0);
+            if (hb) { /* the horizontal run after b: its abscissae */
+                uint32_t q = i2;
+                ed->hz |= RAST__HZ_RUN;
+                ed->hx0 = ed->hx1 = b.x;
+                for (;;) {
+                    int32_t x = poly->points[base + q].x;
+                    if (x < ed->hx0) ed->hx0 = x;
+                    if (x > ed->hx1) ed->hx1 = x;
+                    q = q + 1 < size ? q + 1 : 0;
+                    if (poly->points[base + q].y != b.y) break;
+                }
+            }
             if (a.y > b.y) {
                 rast_point t = a;
                 a = b;
                 b = t;
                 ed->dir = -1;
-                ed->hz = (hb ? RAST__HZ_TOP : 0) | (ha ? RAST__HZ_BOTTOM : 0);
+                ed->hz = (ed->hz & RAST__HZ_RUN) | (hb ? RAST__HZ_TOP : 0) | (ha ? RAST__HZ_BOTTOM : 0);
             }
             ed->xt = a.x;
             ed->yt = a.y;

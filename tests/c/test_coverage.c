@@ -859,6 +859,61 @@ static void test_spans(void)
     }
 }
 
+/* ---- what the scratch held before: nothing may depend on it ----------------- */
+
+/* A staircase (horizontal runs at 12 heights over 36 rows, keys past one
+ * byte of a radix pass), a ring across it and a triangle batch with
+ * shared sides, each drawn "area" with the scratch filled four ways
+ * before the call: the same bytes. */
+static void test_scratch_content(void)
+{
+    static const unsigned char fills[4] = {0x00, 0xFF, 0x5A, 0xA5};
+    rast_point pts[32];
+    uint32_t sizes[2], n = 0, k, fi;
+    rast_polygon p;
+    rast_rect clip = {0, 0, 40, 40};
+    static unsigned char first[40 * 40], out[40 * 40];
+    rast_point tris[12] = {{256, 256}, {2560, 1408}, {256, 1408}, {2560, 1408}, {256, 256}, {2816, 256},
+                           {768, 512}, {9000, 8000}, {1000, 8000}, {300, 9000}, {2000, 3000}, {9500, 9800}};
+    int shape, rule;
+    for (k = 0; k < 12; k++) { /* the staircase: down 3 pixels (+ 0.4), right 3, 12 times */
+        pts[n].x = (int32_t)(k * 3 * 256 + 128);
+        pts[n++].y = (int32_t)(k * 3 * 256 + 100);
+        pts[n].x = (int32_t)((k + 1) * 3 * 256 + 128);
+        pts[n++].y = (int32_t)(k * 3 * 256 + 100);
+    }
+    pts[n].x = 128, pts[n++].y = 36 * 256 + 100;
+    sizes[0] = n;
+    pts[n].x = 20 * 256, pts[n++].y = 50; /* a ring across it */
+    pts[n].x = 38 * 256, pts[n++].y = 30 * 256;
+    pts[n].x = 2 * 256, pts[n++].y = 38 * 256 + 77;
+    sizes[1] = 3;
+    p.points = pts;
+    p.ring_sizes = sizes;
+    for (shape = 0; shape < 2; shape++)
+        for (rule = 0; rule < 2; rule++) {
+            rast_coverage_opts o = {RAST_AA_AREA, rule ? RAST_RULE_NONZERO : RAST_RULE_EVENODD, 8,
+                                    RAST_SAMPLE_CENTER};
+            size_t need;
+            unsigned char *s;
+            p.nrings = 2;
+            CHECK(rast_coverage_scratch_size(&o, shape ? 12 : n, 40, 40, &need) == RAST_OK);
+            s = scratch_for(need);
+            CHECK(s != NULL);
+            if (!s) return;
+            for (fi = 0; fi < 4; fi++) {
+                memset(s, fills[fi], need);
+                CHECK((shape ? rast_triangles_coverage(tris, 4, &o, &clip, RAST_COVERAGE_U8, out, 40, s, need)
+                             : rast_polygon_coverage(&p, &o, &clip, RAST_COVERAGE_U8, out, 40, s, need)) ==
+                      RAST_OK);
+                if (fi == 0)
+                    memcpy(first, out, sizeof out);
+                else
+                    CHECK(memcmp(first, out, sizeof out) == 0);
+            }
+        }
+}
+
 int main(void)
 {
     test_rectangles();
@@ -872,5 +927,6 @@ int main(void)
     test_translation();
     test_errors();
     test_spans();
+    test_scratch_content();
     return check_report("test_coverage");
 }

@@ -13,6 +13,9 @@
  *    overlapping, either orientation): the exact area by cells;
  *  - area on any polygon: translating it (and the clip) by whole pixels,
  *    and (even-odd) reversing its rings, gives the same bytes;
+ *  - area in uint8 and uint16 (polygons, triangle batches): the level of
+ *    the 2^-62 fixed point of the same call, which never takes the
+ *    accumulation's rows (one off only at a tie within the bound);
  *  - triangle batches also many times over (copies drawn in toward their
  *    centres), so that hundreds are active on a row, the walk's way with
  *    many (columns covered on every fine row, triangles inside skipped),
@@ -371,6 +374,31 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
                         cells += o.rule == RAST_RULE_EVENODD ? (uint32_t)(w & 1) : (w != 0);
                     }
                 FZ_ASSERT(value_at(out, f, stride, x, y) == want_value(cells, (uint64_t)g * g, f));
+            }
+    }
+    if (o.method == RAST_AA_AREA && f != RAST_COVERAGE_FIX62) {
+        /* the levels against the 2^-62 fixed point, which never takes the
+         * accumulation's rows (simple rows, fast rows): floor(a M + 1/2)
+         * of it, or one off where a M + 1/2 is within the bound of an
+         * integer (the fixed point is within (n + m + 1) 2^-58 of a, n the
+         * edges, m their crossings: at most n (n - 1) / 2) */
+        const ptrdiff_t s62 = (ptrdiff_t)cw * 8 + PADB;
+        const uint64_t M = f == RAST_COVERAGE_U8 ? 255 : 65535;
+        const uint64_t n = shape == 2 ? 3 * (uint64_t)ntris : npts;
+        const uint64_t win = ((n + n * (n - 1) / 2 + 1) * M >> 12) + 2; /* 2^-46 level units */
+        memset(out2, FZ_GUARD, sizeof out2);
+        FZ_ASSERT(run(shape == 2 ? NULL : &pg, tris, ntris, &o, &clip, RAST_COVERAGE_FIX62, out2, s62,
+                      FZ_SCRATCH_MAX) == RAST_OK);
+        for (y = 0; y < ch; y++)
+            for (x = 0; x < cw; x++) {
+                const uint64_t a = value_at(out2, RAST_COVERAGE_FIX62, s62, x, y);
+                /* a M + 1/2 in 2^-46 level units (a < 2^63: no overflow) */
+                const uint64_t v = (a >> 16) * M + (((a & 0xFFFF) * M) >> 16) + ((uint64_t)1 << 45);
+                const uint64_t lev = v >> 46, fr = v & (((uint64_t)1 << 46) - 1);
+                const uint64_t got = value_at(out, f, stride, x, y);
+                if (got != lev)
+                    FZ_ASSERT((got + 1 == lev && fr < win) ||
+                              (got == lev + 1 && fr > ((uint64_t)1 << 46) - win));
             }
     }
     if (o.method == RAST_AA_AREA && shape != 2) {

@@ -455,7 +455,7 @@ int rast__cov_acc_area_row(rast__cedge *e, const int32_t *row, int32_t nrow, con
 void rast__cov_radix_sort(int32_t *ix, int32_t *tmp, const int32_t *key, uint32_t n)
 {
     uint32_t cnt[256], i, d, sh, top = 0;
-    for (i = 0; i < n; i++) top |= (uint32_t)key[i];
+    for (i = 0; i < n; i++) top |= (uint32_t)key[ix[i]];
     for (sh = 0; sh < 32 && (top >> sh); sh += 8) {
         int32_t *t;
         uint32_t sum = 0;

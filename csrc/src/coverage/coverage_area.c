@@ -1520,6 +1520,7 @@ rast_status rast__cov_area(rast__cedge *e, uint32_t n, int32_t s, rast_fill_rule
     int32_t fast = 0, same; /* the last row's s if it was a fast row; its edges kept */
     uint64_t *own; /* simple rows (rast__cov_acc_area_row): the columns' marks */
     int32_t *runs, nrun = 0, rnext = 0, rend; /* and the runs, by ordinate */
+    int32_t unsimple = 0; /* the last row was not simple (or not tried) */
     int64_t bottom = INT64_MAX; /* the least of the row edges' bottom ordinates */
     const int simple = !accumulate && rast__cov_acc_may(o, s);
 
@@ -1595,12 +1596,17 @@ rast_status rast__cov_area(rast__cedge *e, uint32_t n, int32_t s, rast_fill_rule
         if (nrow) {
             if (accumulate) {
                 rast__cov_row_acc(&c, e, row, nrow, j);
-            } else if (simple && rast__cov_acc_area_row(e, row, nrow, runs + rnext, rend - rnext, j, s,
-                                                        rule, o, (uint64_t *)(void *)c.cover, c.bits,
-                                                        own, (uint32_t)(j - ja) + 1)) {
+            } else if (fast && same && rast__cov_row_cont(&c, e, row, nrow, j, fast)) {
+                /* done: the fast row's continuation, the cheapest test */
+            } else if (simple && !(unsimple && same) && !(same && nrow <= 8) &&
+                       rast__cov_acc_area_row(e, row, nrow, runs + rnext, rend - rnext, j, s, rule, o,
+                                              (uint64_t *)(void *)c.cover, c.bits, own,
+                                              (uint32_t)(j - ja) + 1)) {
                 fast = 0;
+                unsimple = 0;
                 c.emitted = 1;
-            } else if (!(fast && same && rast__cov_row_cont(&c, e, row, nrow, j, fast))) {
+            } else {
+                unsimple = simple;
                 fast = rast__cov_row_fast(&c, e, row, nrow, j);
                 if (!fast) rast__cov_row_area(&c, e, row, nrow, &sw, j, rule);
             }

@@ -183,7 +183,9 @@ uint32_t rast__cov_edges_polygon(const rast_polygon *poly, rast__cedge *e)
             rast_point b = poly->points[base + (i + 1 == size ? 0 : i + 1)];
             rast__cedge *ed = &e[n];
             /* the ring's edges before a and after b horizontal (or empty)? */
-            uint32_t i2 = i + 2 < size ? i + 2 : (i + 2) % size;
+            uint32_t i2 = i + 2; /* (i + 2) mod size, without a division per edge */
+            if (i2 >= size) i2 -= size;
+            if (i2 >= size) i2 -= size;
             int32_t ha = poly->points[base + (i == 0 ? size - 1 : i - 1)].y == a.y;
             int32_t hb = poly->points[base + i2].y == b.y;
             if (a.y == b.y) continue;

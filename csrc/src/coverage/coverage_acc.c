@@ -67,6 +67,44 @@ static void rast__acc_t_first(rast__cedge *e, int64_t X, const rast__acc *a)
     rast__cov_qt_first(e, X, a->p, a->hq);
 }
 
+/* a's fields for the clip of o, S = s, cells acc[] and bits[] (cleared),
+ * nothing touched; dense rows as nrow says (RAST__ACC_DENSE). */
+static void rast__acc_init(rast__acc *a, uint64_t *acc, uint64_t *bits, const rast__cov_out *o,
+                           int32_t s, int32_t nrow)
+{
+    a->acc = acc;
+    a->blk = bits; /* (a bit for each of the first w cells: ceil(w / 64) words) */
+    a->x0 = o->clip.x0;
+    a->x1 = o->clip.x1;
+    a->lo = INT32_MAX;
+    a->hi = -1;
+    a->p = (int32_t)1 << s;
+    a->hq = QF - s;
+    a->dense = (int64_t)nrow * RAST__ACC_DENSE >= a->x1 - a->x0;
+}
+
+/* e's part in row j (top Yj): from (*xa, *ta) to (*xb, *tb), Q units, t
+ * from the row's top; its top rel0 = yt - Yj below the row's. */
+RAST__HOT void rast__acc_ends(rast__cedge *e, int32_t j, int64_t rel0, const rast__acc *a, int64_t *xa,
+                              uint64_t *ta, int64_t *xb, uint64_t *tb)
+{
+    const int64_t rel1 = rel0 + e->dy;
+    if (rel0 > 0) {
+        *ta = (uint64_t)rel0 << a->hq;
+        *xa = (int64_t)e->xt * ((int64_t)1 << a->hq);
+    } else {
+        *ta = 0;
+        *xa = rast__acc_top(e, j, a);
+    }
+    if (rel1 < a->p) {
+        *tb = (uint64_t)rel1 << a->hq;
+        *xb = ((int64_t)e->xt + e->dx) * ((int64_t)1 << a->hq);
+    } else {
+        *tb = QT;
+        *xb = rast__acc_top(e, j + 1, a);
+    }
+}
+
 /* Cells [lo, hi] touched: their bits set unless the row is dense. */
 RAST__HOT void rast__acc_mark(rast__acc *a, int32_t lo, int32_t hi)
 {
@@ -402,33 +440,12 @@ int rast__cov_acc_area_row(rast__cedge *e, const int32_t *row, int32_t nrow, con
     int64_t Yj;
     int32_t k, c;
     if (nrow >= 512 || ((uint64_t)nrow + 1) * m >= ((uint64_t)1 << 25)) return 0;
-    a.acc = acc;
-    a.blk = bits;
-    a.x0 = o->clip.x0;
-    a.x1 = o->clip.x1;
-    a.lo = INT32_MAX;
-    a.hi = -1;
-    a.p = (int32_t)1 << s;
-    a.hq = QF - s;
-    a.dense = (int64_t)nrow * RAST__ACC_DENSE >= w;
+    rast__acc_init(&a, acc, bits, o, s, nrow);
     Yj = (int64_t)j * a.p;
     for (k = 0; k < nrow; k++) { /* the parts, and the test */
         rast__cedge *ed = &e[row[k]];
-        int64_t rel0 = (int64_t)ed->yt - Yj, rel1 = rel0 + ed->dy, lo, hi;
-        if (rel0 > 0) {
-            ed->qta = (uint64_t)rel0 << a.hq;
-            ed->qa = (int64_t)ed->xt * ((int64_t)1 << a.hq);
-        } else {
-            ed->qta = 0;
-            ed->qa = rast__acc_top(ed, j, &a);
-        }
-        if (rel1 < a.p) {
-            ed->qtb = (uint64_t)rel1 << a.hq;
-            ed->qb = ((int64_t)ed->xt + ed->dx) * ((int64_t)1 << a.hq);
-        } else {
-            ed->qtb = QT;
-            ed->qb = rast__acc_top(ed, j + 1, &a);
-        }
+        int64_t lo, hi;
+        rast__acc_ends(ed, j, (int64_t)ed->yt - Yj, &a, &ed->qa, &ed->qta, &ed->qb, &ed->qtb);
         lo = rast__acc_col(ed->qa < ed->qb ? ed->qa : ed->qb) - a.x0;
         hi = rast__acc_col(ed->qa < ed->qb ? ed->qb : ed->qa) - a.x0;
         if (lo < 0) lo = 0;
@@ -503,15 +520,7 @@ rast_status rast__cov_acc(rast__cedge *e, uint32_t n, int32_t s, rast_fill_rule 
     if ((n && (!order || !row || !tmp || !key || !last)) || !cover || !area || !bits) return RAST_E_SCRATCH;
     for (k = 0; k < width; k++) cover[k] = area[k] = rast__i128_u64(0);
     for (k = 0; k < (width + 63) / 64; k++) bits[k] = 0;
-    a.acc = (uint64_t *)(void *)cover;
-    a.blk = bits; /* (a bit for each of the first w cells: ceil(w / 64) words) */
-    a.x0 = o->clip.x0;
-    a.x1 = o->clip.x1;
-    a.lo = INT32_MAX;
-    a.hi = -1;
-    a.p = (int32_t)1 << s;
-    a.hq = QF - s;
-    a.dense = 0;
+    rast__acc_init(&a, (uint64_t *)(void *)cover, bits, o, s, 0);
     if (n == 0) {
         rast__cov_zero_rows(o, o->clip.y0, o->clip.y1);
         return RAST_OK;
@@ -551,22 +560,10 @@ rast_status rast__cov_acc(rast__cedge *e, uint32_t n, int32_t s, rast_fill_rule 
             a.dense = (int64_t)nrow * RAST__ACC_DENSE >= width;
             for (k = 0; k < nrow; k++) {
                 rast__cedge *ed = &e[row[k]];
-                int64_t rel0 = (int64_t)ed->yt - Yj, rel1 = rel0 + ed->dy, xa, xb;
+                const int64_t rel0 = (int64_t)ed->yt - Yj;
+                int64_t xa, xb;
                 uint64_t ta, tb;
-                if (rel0 > 0) {
-                    ta = (uint64_t)rel0 << a.hq;
-                    xa = (int64_t)ed->xt * ((int64_t)1 << a.hq);
-                } else {
-                    ta = 0;
-                    xa = rast__acc_top(ed, j, &a);
-                }
-                if (rel1 < a.p) {
-                    tb = (uint64_t)rel1 << a.hq;
-                    xb = ((int64_t)ed->xt + ed->dx) * ((int64_t)1 << a.hq);
-                } else {
-                    tb = QT;
-                    xb = rast__acc_top(ed, j + 1, &a);
-                }
+                rast__acc_ends(ed, j, rel0, &a, &xa, &ta, &xb, &tb);
                 rast__acc_part(&a, ed, -rel0 * ((int64_t)1 << a.hq), xa, ta, xb, tb, ed->dir);
             }
             if (rast__acc_emit(&a, o, j, rule, m, ((uint64_t)nrow + 1) * m << 24)) continue;

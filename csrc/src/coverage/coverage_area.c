@@ -1598,7 +1598,7 @@ rast_status rast__cov_area(rast__cedge *e, uint32_t n, int32_t s, rast_fill_rule
                 rast__cov_row_acc(&c, e, row, nrow, j);
             } else if (fast && same && rast__cov_row_cont(&c, e, row, nrow, j, fast)) {
                 /* done: the fast row's continuation, the cheapest test */
-            } else if (simple && !(unsimple && same) && !(same && nrow <= 8) &&
+            } else if (simple && !(unsimple && same) && !(same && nrow <= 4) &&
                        rast__cov_acc_area_row(e, row, nrow, runs + rnext, rend - rnext, j, s, rule, o,
                                               (uint64_t *)(void *)c.cover, c.bits, own,
                                               (uint32_t)(j - ja) + 1)) {

@@ -267,19 +267,18 @@ RAST__HOT uint64_t rast__acc_level(int64_t v, rast_fill_rule rule, uint32_t m, u
 RAST__HOT void rast__acc_sum24(uint64_t *acc, int32_t lo, int32_t hi, rast_fill_rule rule)
 {
     const uint64_t one = (uint64_t)QONE;
-    uint64_t v = 0, x;
-    int32_t k;
+    uint64_t v = 0, x, *c = acc + lo, *const end = acc + hi;
     if (rule == RAST_RULE_NONZERO) {
-        for (k = lo; k < hi; k++) {
-            v += acc[k];
+        for (; c < end; c++) {
+            v += *c;
             x = (int64_t)v < 0 ? 0 - v : v;
-            acc[k] = (x > one ? one : x) >> 27;
+            *c = (x > one ? one : x) >> 27;
         }
     } else {
-        for (k = lo; k < hi; k++) {
-            v += acc[k];
+        for (; c < end; c++) {
+            v += *c;
             x = v & (2 * one - 1);
-            acc[k] = (x > one ? 2 * one - x : x) >> 27;
+            *c = (x > one ? 2 * one - x : x) >> 27;
         }
     }
 }
@@ -290,23 +289,27 @@ RAST__HOT void rast__acc_sum24(uint64_t *acc, int32_t lo, int32_t hi, rast_fill_
  * level is certain when y's fraction is at least that far (w, in 2^-24
  * levels: the caller's win, (n + 1) 255 2^24, over 2^28, + 256) from 0 and
  * from 1; returns nonzero when one is not. */
-static uint32_t rast__acc_levels24(uint64_t *restrict acc, unsigned char *restrict row,
-                                   int32_t lo, int32_t hi, uint32_t w)
+static uint32_t rast__acc_levels24(uint64_t *restrict acc, unsigned char *restrict row, int32_t lo,
+                                   int32_t hi, uint32_t w)
 {
     const uint32_t lim = ((uint32_t)1 << 24) - 2 * w;
     uint32_t bad = 0;
-    int32_t k = lo, i;
-    for (; hi - k >= 16; k += 16) /* 16 at a time: no tail loop for the compiler to add */
+    size_t n = (size_t)(hi - lo), i;
+    /* pointers and size_t, not int indices: with -fwrapv (Python's flags)
+     * an int index may wrap, and the compiler would not vectorise */
+    acc += lo;
+    row += lo;
+    for (; n >= 16; n -= 16, acc += 16, row += 16) /* 16 at a time: no tail loop to add */
         for (i = 0; i < 16; i++) {
-            const uint32_t z = (uint32_t)acc[k + i], y = (z << 8) - z + ((uint32_t)1 << 23);
-            acc[k + i] = 0;
-            row[k + i] = (unsigned char)(y >> 24);
+            const uint32_t z = (uint32_t)acc[i], y = (z << 8) - z + ((uint32_t)1 << 23);
+            acc[i] = 0;
+            row[i] = (unsigned char)(y >> 24);
             bad |= (uint32_t)(((y & 0xFFFFFFu) - w) > lim);
         }
-    for (; k < hi; k++) {
-        const uint32_t z = (uint32_t)acc[k], y = (z << 8) - z + ((uint32_t)1 << 23);
-        acc[k] = 0;
-        row[k] = (unsigned char)(y >> 24);
+    for (i = 0; i < n; i++) {
+        const uint32_t z = (uint32_t)acc[i], y = (z << 8) - z + ((uint32_t)1 << 23);
+        acc[i] = 0;
+        row[i] = (unsigned char)(y >> 24);
         bad |= (uint32_t)(((y & 0xFFFFFFu) - w) > lim);
     }
     return bad;

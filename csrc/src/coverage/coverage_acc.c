@@ -288,7 +288,15 @@ RAST__HOT void rast__acc_sum24(uint64_t *acc, int32_t lo, int32_t hi, rast_fill_
  * put y / 2^24 within n 255 / 2^28 + 255 / 2^24 of a' 255 + 1/2, so the
  * level is certain when y's fraction is at least that far (w, in 2^-24
  * levels: the caller's win, (n + 1) 255 2^24, over 2^28, + 256) from 0 and
- * from 1; returns nonzero when one is not. */
+ * from 1, lim = 2^24 - 2 w; returns nonzero when it is not. */
+RAST__HOT uint32_t rast__acc_level24(uint64_t *c, unsigned char *out, uint32_t w, uint32_t lim)
+{
+    const uint32_t z = (uint32_t)*c, y = (z << 8) - z + ((uint32_t)1 << 23);
+    *c = 0;
+    *out = (unsigned char)(y >> 24);
+    return (uint32_t)(((y & 0xFFFFFFu) - w) > lim);
+}
+
 static uint32_t rast__acc_levels24(uint64_t *restrict acc, unsigned char *restrict row, int32_t lo,
                                    int32_t hi, uint32_t w)
 {
@@ -300,18 +308,8 @@ static uint32_t rast__acc_levels24(uint64_t *restrict acc, unsigned char *restri
     acc += lo;
     row += lo;
     for (; n >= 16; n -= 16, acc += 16, row += 16) /* 16 at a time: no tail loop to add */
-        for (i = 0; i < 16; i++) {
-            const uint32_t z = (uint32_t)acc[i], y = (z << 8) - z + ((uint32_t)1 << 23);
-            acc[i] = 0;
-            row[i] = (unsigned char)(y >> 24);
-            bad |= (uint32_t)(((y & 0xFFFFFFu) - w) > lim);
-        }
-    for (i = 0; i < n; i++) {
-        const uint32_t z = (uint32_t)acc[i], y = (z << 8) - z + ((uint32_t)1 << 23);
-        acc[i] = 0;
-        row[i] = (unsigned char)(y >> 24);
-        bad |= (uint32_t)(((y & 0xFFFFFFu) - w) > lim);
-    }
+        for (i = 0; i < 16; i++) bad |= rast__acc_level24(acc + i, row + i, w, lim);
+    for (i = 0; i < n; i++) bad |= rast__acc_level24(acc + i, row + i, w, lim);
     return bad;
 }
 

@@ -495,6 +495,10 @@ static uint32_t rast__cov_cancel(int32_t *order, const rast__cedge *e, uint32_t 
     while (a < n) {
         for (b = a + 1; b < n && e[order[b]].yt == e[order[a]].yt; b++) {
         }
+        if (b == a + 1) { /* one edge of its top: nothing to cancel with */
+            order[out++] = order[a++];
+            continue;
+        }
         for (gap = (b - a) / 2; gap > 0; gap = gap == 2 ? 1 : gap * 5 / 11) {
             for (p = a + gap; p < b; p++) {
                 int32_t v = order[p];

@@ -238,16 +238,26 @@ RAST__HOT void rast__acc_part(rast__acc *a, rast__cedge *e, int64_t off, int64_t
 
 /* The level of the running sum v (2^51 = one pixel) under the rule, M =
  * m; *bad set when a tie is within win / 2^51 of it. */
+/* 2^51 a' for the running sum v = 2^51 a (modulo 2^64): the rule applied,
+ * non-zero min(|a|, 1), even-odd |a| folded mod 2 (v mod 2^52 folded: for
+ * v < 0 that is |v| mod 2^52 folded, as -v = 2^52 - (v mod 2^52) mod 2^52
+ * and the fold maps u and 2^52 - u alike). */
+RAST__HOT uint64_t rast__acc_apply(uint64_t v, rast_fill_rule rule)
+{
+    const uint64_t one = (uint64_t)QONE;
+    uint64_t x;
+    if (rule == RAST_RULE_NONZERO) {
+        x = (int64_t)v < 0 ? 0 - v : v;
+        return x > one ? one : x;
+    }
+    x = v & (2 * one - 1);
+    return x > one ? 2 * one - x : x;
+}
+
 RAST__HOT uint64_t rast__acc_level(int64_t v, rast_fill_rule rule, uint32_t m, uint64_t win,
                                        uint64_t *bad)
 {
-    uint64_t x = v < 0 ? 0 - (uint64_t)v : (uint64_t)v;
-    if (rule == RAST_RULE_NONZERO) {
-        if (x > (uint64_t)QONE) x = (uint64_t)QONE;
-    } else {
-        x &= 2 * (uint64_t)QONE - 1;
-        if (x > (uint64_t)QONE) x = 2 * (uint64_t)QONE - x;
-    }
+    uint64_t x = rast__acc_apply((uint64_t)v, rule);
     if (m == 255) {
         x = x * 255 + ((uint64_t)1 << 50);
     } else { /* x 65535 < 2^67: by halves */
@@ -262,24 +272,14 @@ RAST__HOT uint64_t rast__acc_level(int64_t v, rast_fill_rule rule, uint32_t m, u
 
 /* Dense uint8 rows in two passes, the second of which a compiler can run
  * on 16 cells at a time.  The first sums cells [lo, hi) and leaves in each
- * z = floor(x / 2^27), x = 2^51 a' its sum with the rule applied (even-odd
- * folds v mod 2^52, which is |v| mod 2^52 folded): 0 <= z <= 2^24. */
+ * z = floor(x / 2^27), x = 2^51 a' its sum with the rule applied
+ * (rast__acc_apply): 0 <= z <= 2^24.  rule is a constant at each call. */
 RAST__HOT void rast__acc_sum24(uint64_t *acc, int32_t lo, int32_t hi, rast_fill_rule rule)
 {
-    const uint64_t one = (uint64_t)QONE;
-    uint64_t v = 0, x, *c = acc + lo, *const end = acc + hi;
-    if (rule == RAST_RULE_NONZERO) {
-        for (; c < end; c++) {
-            v += *c;
-            x = (int64_t)v < 0 ? 0 - v : v;
-            *c = (x > one ? one : x) >> 27;
-        }
-    } else {
-        for (; c < end; c++) {
-            v += *c;
-            x = v & (2 * one - 1);
-            *c = (x > one ? 2 * one - x : x) >> 27;
-        }
+    uint64_t v = 0, *c = acc + lo, *const end = acc + hi;
+    for (; c < end; c++) {
+        v += *c;
+        *c = rast__acc_apply(v, rule) >> 27;
     }
 }
 

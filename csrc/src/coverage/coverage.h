@@ -267,6 +267,12 @@ void rast__cov_zero_rows(const rast__cov_out *o, int32_t y0, int32_t y1);
  * 1) of the n edges e[] under `rule`, S = s, into o (a non-empty clip).
  * Work memory from `arena`: rast__cov_area_scratch(n, clip width). */
 size_t rast__cov_area_scratch(uint32_t n, int32_t width);
+/* 1 when the polygon's rings are simple, apart, and every face's winding
+ * number is in {0, 1} (or every one in {0, -1}): then the accumulation of
+ * its edges gives the exact coverage (coverage_plain.c).  Scratch from a
+ * copy of the arena: npoints * 32 + nrings * 4 bytes. */
+int rast__cov_plain(const rast_polygon *poly, uint32_t npoints, rast__arena arena);
+
 rast_status rast__cov_area(rast__cedge *e, uint32_t n, int32_t s, rast_fill_rule rule,
                            int accumulate, const rast__cov_out *o, rast__arena *arena);
 

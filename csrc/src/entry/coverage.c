@@ -260,6 +260,20 @@ static void rast__cov_scale(const rast_point *p, uint32_t n, int32_t scale, rast
     }
 }
 
+/* Does the test of rast__cov_plain pay?  It costs about what six rows of
+ * an edge save ("area" over "accumulate": ~130 instructions a row, the
+ * test ~500 to 1,000 an edge on the bench's scenes), so only where the
+ * edges' rows (the accumulation's parts) are 6 times the vertices. */
+static int rast__cov_plain_pays(const rast__cedge *e, uint32_t n, int32_t s, uint32_t npoints)
+{
+    const int64_t off = (int64_t)1 << 27; /* |y| < 2^27: y + off > 0 */
+    uint64_t rows = 0;
+    uint32_t k;
+    for (k = 0; k < n; k++)
+        rows += (uint64_t)(((e[k].yt + off + e[k].dy - 1) >> s) - ((e[k].yt + off) >> s) + 1);
+    return rows >= 6 * (uint64_t)npoints;
+}
+
 static rast_status rast__cov_run(const rast_polygon *poly, const rast_point *tris, uint32_t ntris,
                                  uint32_t npoints, const rast_coverage_opts *opts,
                                  const rast__cov_out *o, void *scratch, size_t scratch_bytes)
@@ -277,8 +291,12 @@ static rast_status rast__cov_run(const rast_polygon *poly, const rast_point *tri
         if (npoints && !e) return RAST_E_SCRATCH;
         n = tris ? rast__cov_edges_triangles(tris, ntris, e) : rast__cov_edges_polygon(poly, e);
         /* a triangle batch's shared edges cancel in rast__cov_area's sweep
-         * before any row; a polygon's accumulation goes to rast__cov_acc */
-        if (opts->method == RAST_AA_ACCUMULATE && !tris && rast__cov_acc_may(o, s))
+         * before any row; a polygon's accumulation goes to rast__cov_acc,
+         * and so does "area" of a plain polygon (coverage_plain.c: there
+         * the accumulation is the coverage) */
+        if (!tris && rast__cov_acc_may(o, s) &&
+            (opts->method == RAST_AA_ACCUMULATE ||
+             (rast__cov_plain_pays(e, n, s, npoints) && rast__cov_plain(poly, npoints, arena))))
             return rast__cov_acc(e, n, s, rule, o, &arena);
         return rast__cov_area(e, n, s, rule, opts->method == RAST_AA_ACCUMULATE, o, &arena);
     } else {

@@ -270,7 +270,7 @@ size_t rast__cov_area_scratch(uint32_t n, int32_t width);
 /* 1 when the polygon's rings are simple, apart, and every face's winding
  * number is in {0, 1} (or every one in {0, -1}): then the accumulation of
  * its edges gives the exact coverage (coverage_plain.c).  Scratch from a
- * copy of the arena: npoints * 32 + nrings * 4 bytes. */
+ * copy of the arena: about npoints * 36 + nrings * 20 bytes. */
 int rast__cov_plain(const rast_polygon *poly, uint32_t npoints, rast__arena arena);
 
 rast_status rast__cov_area(rast__cedge *e, uint32_t n, int32_t s, rast_fill_rule rule,

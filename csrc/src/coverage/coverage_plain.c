@@ -58,17 +58,40 @@ static void rast__pl_ends(const rast__pl *s, uint32_t k, rast_point *l, rast_poi
     *r = s->pt[fwd ? n : k];
 }
 
-/* v[0..n) by key (merges; tmp: room for n) */
-static void rast__pl_sort(const uint64_t *key, uint32_t *v, uint32_t *tmp, uint32_t n)
+/* v[0..n) sorted by key.  v holds the rings' vertices in order, which
+ * come in runs (a convex ring: one up, one down in x): the runs, those
+ * going down turned round, merged two by two (tmp: room for n; run:
+ * room for n + 1). */
+static void rast__pl_sort(const uint64_t *key, uint32_t *v, uint32_t *tmp, uint32_t *run, uint32_t n)
 {
-    uint32_t w, i, *src = v, *dst = tmp, *t;
-    for (w = 1; w < n; w *= 2) {
-        for (i = 0; i < n; i += 2 * w) {
-            uint32_t a = i, m = i + w < n ? i + w : n, b = m, end = i + 2 * w < n ? i + 2 * w : n, k = i;
-            while (a < m && b < end) dst[k++] = key[src[b]] < key[src[a]] ? src[b++] : src[a++];
-            while (a < m) dst[k++] = src[a++];
-            while (b < end) dst[k++] = src[b++];
+    uint32_t nr = 0, i = 0, *src = v, *dst = tmp, *t;
+    while (i < n) {
+        uint32_t j = i + 1, a, b;
+        run[nr++] = i;
+        if (j < n && key[v[j]] < key[v[i]]) {
+            while (j < n && key[v[j]] < key[v[j - 1]]) j++;
+            for (a = i, b = j - 1; a < b; a++, b--) {
+                uint32_t x = v[a];
+                v[a] = v[b];
+                v[b] = x;
+            }
+        } else {
+            while (j < n && key[v[j]] >= key[v[j - 1]]) j++;
         }
+        i = j;
+    }
+    run[nr] = n;
+    while (nr > 1) {
+        uint32_t r, m = 0;
+        for (r = 0; r < nr; r += 2) {
+            uint32_t a = run[r], mid = run[r + 1], b = mid, end = r + 2 <= nr ? run[r + 2] : n, k = a;
+            while (a < mid && b < end) dst[k++] = key[src[b]] < key[src[a]] ? src[b++] : src[a++];
+            while (a < mid) dst[k++] = src[a++];
+            while (b < end) dst[k++] = src[b++];
+            run[m++] = run[r];
+        }
+        run[m] = n;
+        nr = m;
         t = src;
         src = dst;
         dst = t;
@@ -172,9 +195,11 @@ int rast__cov_plain(const rast_polygon *poly, uint32_t npoints, rast__arena aren
     uint32_t *prev = (uint32_t *)rast__take(&arena, (size_t)npoints * sizeof(uint32_t));
     uint32_t *ord = (uint32_t *)rast__take(&arena, (size_t)npoints * sizeof(uint32_t));
     uint32_t *tmp = (uint32_t *)rast__take(&arena, (size_t)npoints * sizeof(uint32_t));
+    uint32_t *run = (uint32_t *)rast__take(&arena, ((size_t)npoints + 1) * sizeof(uint32_t));
     uint32_t *first = (uint32_t *)rast__take(&arena, ((size_t)poly->nrings + 1) * sizeof(uint32_t));
+    int32_t *box = (int32_t *)rast__take(&arena, (size_t)poly->nrings * 4 * sizeof(int32_t));
     uint32_t r, i, base, n = 0, pos = 0, neg = 0;
-    if (!pt || !key || !next || !prev || !ord || !tmp || !first || npoints == 0) return 0;
+    if (!pt || !key || !next || !prev || !ord || !tmp || !run || !first || !box || npoints == 0) return 0;
     for (r = 0, base = 0; r < poly->nrings; base += poly->ring_sizes[r], r++) {
         /* the ring's vertices, each once (edges of length 0 dropped) */
         const uint32_t size = poly->ring_sizes[r];
@@ -183,6 +208,14 @@ int rast__cov_plain(const rast_polygon *poly, uint32_t npoints, rast__arena aren
             rast_point a = poly->points[base + i], b = poly->points[base + (i + 1 < size ? i + 1 : 0)];
             if (a.x == b.x && a.y == b.y) continue;
             if (a.x < -lim || a.x > lim || a.y < -lim || a.y > lim) return 0;
+            if (n == first[r]) {
+                box[4 * r] = box[4 * r + 2] = a.x;
+                box[4 * r + 1] = box[4 * r + 3] = a.y;
+            }
+            if (a.x < box[4 * r]) box[4 * r] = a.x;
+            if (a.y < box[4 * r + 1]) box[4 * r + 1] = a.y;
+            if (a.x > box[4 * r + 2]) box[4 * r + 2] = a.x;
+            if (a.y > box[4 * r + 3]) box[4 * r + 3] = a.y;
             pt[n] = a;
             key[n] = (uint64_t)(a.x + lim + 1) << 32 | (uint64_t)(a.y + lim + 1);
             next[n] = n + 1;
@@ -201,7 +234,7 @@ int rast__cov_plain(const rast_polygon *poly, uint32_t npoints, rast__arena aren
     s.nst = 0;
     s.budget = (uint64_t)npoints * 64 + ((uint64_t)1 << 20);
     for (i = 0; i < n; i++) ord[i] = i;
-    rast__pl_sort(key, ord, tmp, n);
+    rast__pl_sort(key, ord, tmp, run, n);
     for (i = 0; i + 1 < n; i++) /* condition 1 */
         if (key[ord[i]] == key[ord[i + 1]]) return 0;
     for (i = 0; i < n; i++) { /* condition 2: at each vertex, the edges that end there, then those that start there */
@@ -216,8 +249,11 @@ int rast__cov_plain(const rast_polygon *poly, uint32_t npoints, rast__arena aren
     for (r = 0; r < poly->nrings; r++) { /* condition 3 */
         uint32_t k, low = first[r];
         int64_t w0 = 0, w1;
-        for (k = 0; k < poly->nrings; k++)
-            if (k != r) w0 += rast__pl_winding(&s, first[k], first[k + 1], pt[first[r]]);
+        const rast_point p = pt[first[r]];
+        for (k = 0; k < poly->nrings; k++) /* (0 from a ring whose box p is outside) */
+            if (k != r && p.x >= box[4 * k] && p.y >= box[4 * k + 1] && p.x <= box[4 * k + 2] &&
+                p.y <= box[4 * k + 3])
+                w0 += rast__pl_winding(&s, first[k], first[k + 1], p);
         for (k = first[r] + 1; k < first[r + 1]; k++) /* the ring's lowest vertex (x, then y) */
             if (key[k] < key[low]) low = k;
         /* at its lowest vertex a ring turns the way it goes round (not 0:

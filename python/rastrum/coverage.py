@@ -181,13 +181,18 @@ def _quick_points(rings):
         else:
             if not rings:
                 return None
-            for r in rings:
-                if not _plain_ring(r):
+            sizes = []
+            for r in rings:  # _plain_ring, and the sizes, in one pass
+                if type(r) is not _ndarray or r.dtype is not _F64:
                     return None
+                sh = r.shape
+                if len(sh) != 2 or sh[1] != 2 or sh[0] < 3:
+                    return None
+                sizes.append(sh[0])
             pts = _concatenate(rings)
             if len(pts) > _MAX_POINTS:
                 return None
-            return pts, ffi.new("uint32_t[]", [len(r) for r in rings]), len(rings)
+            return pts, ffi.new("uint32_t[]", sizes), len(rings)
     if _plain_ring(rings) and rings.strides == _PACKED and len(rings) <= _MAX_POINTS:
         return rings, ffi.NULL, 1
     return None

@@ -1,7 +1,8 @@
 /*
  * coverage.h - anti-aliased coverage (DESIGN section 1a): what the
  * coverage entry points (coverage.c), the exact-area and accumulation
- * sweeps (coverage_area.c) and supersampling (coverage_ss.c) share.
+ * sweeps (coverage_area.c, coverage_acc.c), the test of a plain polygon
+ * (coverage_plain.c) and supersampling (coverage_ss.c) share.
  * Not installed.
  *
  * Units of the area sweep.  Vertices are in fixed units of 1/P pixel,

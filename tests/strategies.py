@@ -154,6 +154,21 @@ def scenes(draw, S: int, o: float, max_h=40, max_w=40, max_rings=3):
     return [np.asarray(r, dtype=np.float64) for r in rl], shape
 
 
+@st.composite
+def rings_from_few_points(draw, xs, ys, max_size=6, max_rings=4):
+    """Rings drawn from a pool of 3 to 7 points, integer coordinates in the
+    ranges xs and ys, some moved by 0.5 or 0.3 of a pixel (on pixel
+    corners, on pixel sides, inside pixels): they share vertices and sides,
+    touch tip to tip, run back along themselves and meet at vertices of
+    four or six edges."""
+    pool = draw(st.lists(st.tuples(st.integers(*xs), st.integers(*ys), st.sampled_from([0, 0.5, 0.3])),
+                         min_size=3, max_size=7, unique=True))
+    picks = draw(st.lists(st.lists(st.integers(0, 6), min_size=3, max_size=max_size), min_size=1,
+                          max_size=max_rings))
+    pts = [(x + f, y + f / 2) for x, y, f in pool]
+    return [[pts[i % len(pts)] for i in pick] for pick in picks]
+
+
 def as_input_form(rl, form):
     """Present a list of (N,2) arrays in one of the accepted input forms."""
     if form == "arrays":

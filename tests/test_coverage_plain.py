@@ -49,7 +49,8 @@ def test_not_plain(name, rule):
 
 
 PLAIN = {
-    "a hole the other way, closer than a pixel": [_rect(0.1, 0.2, 5.9, 30.8), _rect(0.3, 1.3, 5.7, 29.7, False)],
+    "a hole the other way, closer than a pixel": [_rect(0.1, 0.2, 5.9, 30.8),
+                                                  _rect(0.3, 1.3, 5.7, 29.7, False)],
     "side by side, one way, in one pixel column": [_rect(0.2, 0.5, 0.4, 30.5), _rect(0.6, 0.5, 0.8, 30.5)],
     "an island in a hole": [_rect(0.1, 0.2, 5.9, 30.8), _rect(0.3, 1.3, 5.7, 29.7, False),
                             _rect(0.5, 2.5, 5.5, 28.5)],
@@ -64,15 +65,11 @@ def test_plain(name, rule):
 
 
 @settings(max_examples=S_.examples(150), deadline=None)
-@given(st.lists(st.tuples(st.integers(-1, 9), st.integers(-2, 34), st.sampled_from([0, 0.5, 0.3])),
-                min_size=3, max_size=7, unique=True),
-       st.lists(st.lists(st.integers(0, 6), min_size=3, max_size=5), min_size=1, max_size=3),
+@given(S_.rings_from_few_points((-1, 9), (-2, 34), max_size=5, max_rings=3),
        st.sampled_from(["nonzero", "evenodd"]))
-def test_tall_rings_from_few_points(pool, picks, rule):
+def test_tall_rings_from_few_points(rings, rule):
     """Rings drawn from a few points over a tall image: plain or not, they
     share vertices, touch, cross and nest; the oracle decides."""
-    pts = [(x + f, y + f / 2) for x, y, f in pool]
-    rings = [[pts[i % len(pts)] for i in pick] for pick in picks]
     _check(rings, rule, shape=SHAPE)
 
 

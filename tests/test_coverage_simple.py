@@ -60,17 +60,12 @@ def test_rows_the_accumulation_cannot_take(name, rule):
 
 
 @settings(max_examples=S_.examples(150), deadline=None)
-@given(st.lists(st.tuples(st.integers(-3, 11), st.integers(-2, 10), st.sampled_from([0, 0.5, 0.3])),
-                min_size=3, max_size=7, unique=True),
-       st.lists(st.lists(st.integers(0, 6), min_size=3, max_size=6), min_size=1, max_size=4),
-       st.sampled_from(["nonzero", "evenodd"]))
-def test_rings_sharing_vertices(pool, picks, rule):
+@given(S_.rings_from_few_points((-3, 11), (-2, 10)), st.sampled_from(["nonzero", "evenodd"]))
+def test_rings_sharing_vertices(rings, rule):
     """Rings drawn from a few points (some outside the image, some on
     pixel corners, some inside pixels): they share vertices and sides,
     touch tip to tip, run back along themselves and meet at vertices with
     four or six edges, the cases the test for a simple row must sort."""
-    pts = [(x + f, y + f / 2) for x, y, f in pool]
-    rings = [[pts[i % len(pts)] for i in pick] for pick in picks]
     _check(rings, rule, shape=(9, 9))
 
 

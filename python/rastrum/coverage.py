@@ -182,13 +182,10 @@ def _quick_points(rings):
             if not rings:
                 return None
             sizes = []
-            for r in rings:  # _plain_ring, and the sizes, in one pass
-                if type(r) is not _ndarray or r.dtype is not _F64:
+            for r in rings:  # checked and measured in one pass
+                if not _plain_ring(r):
                     return None
-                sh = r.shape
-                if len(sh) != 2 or sh[1] != 2 or sh[0] < 3:
-                    return None
-                sizes.append(sh[0])
+                sizes.append(len(r))
             pts = _concatenate(rings)
             if len(pts) > _MAX_POINTS:
                 return None

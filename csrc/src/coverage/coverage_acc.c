@@ -236,8 +236,6 @@ RAST__HOT void rast__acc_part(rast__acc *a, rast__cedge *e, int64_t off, int64_t
     rast__acc_mark(a, (int32_t)lo, (int32_t)hi);
 }
 
-/* The level of the running sum v (2^51 = one pixel) under the rule, M =
- * m; *bad set when a tie is within win / 2^51 of it. */
 /* 2^51 a' for the running sum v = 2^51 a (modulo 2^64): the rule applied,
  * non-zero min(|a|, 1), even-odd |a| folded mod 2 (v mod 2^52 folded: for
  * v < 0 that is |v| mod 2^52 folded, as -v = 2^52 - (v mod 2^52) mod 2^52
@@ -254,6 +252,8 @@ RAST__HOT uint64_t rast__acc_apply(uint64_t v, rast_fill_rule rule)
     return x > one ? 2 * one - x : x;
 }
 
+/* The level of the running sum v (2^51 = one pixel) under the rule, M =
+ * m; *bad set when a tie is within win / 2^51 of it. */
 RAST__HOT uint64_t rast__acc_level(int64_t v, rast_fill_rule rule, uint32_t m, uint64_t win,
                                        uint64_t *bad)
 {

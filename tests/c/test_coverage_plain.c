@@ -83,7 +83,7 @@ static int brute_plain(const rast_point *p, const uint32_t *sizes, uint32_t nrin
         }
     }
     /* the faces: the winding number at points between the vertices' grid
-     * (times 16, at odd coordinates, off the edges) */
+     * (times 8, at odd coordinates, off the edges) */
     lo = hi = v[0];
     for (i = 1; i < n; i++) {
         if (v[i].x < lo.x) lo.x = v[i].x;
@@ -91,8 +91,8 @@ static int brute_plain(const rast_point *p, const uint32_t *sizes, uint32_t nrin
         if (v[i].x > hi.x) hi.x = v[i].x;
         if (v[i].y > hi.y) hi.y = v[i].y;
     }
-    for (Y = 16 * lo.y - 1; Y <= 16 * hi.y + 1; Y += 2)
-        for (X = 16 * lo.x - 1; X <= 16 * hi.x + 1; X += 2) {
+    for (Y = 8 * lo.y - 1; Y <= 8 * hi.y + 1; Y += 2)
+        for (X = 8 * lo.x - 1; X <= 8 * hi.x + 1; X += 2) {
             pt q;
             int w = 0, on = 0;
             q.x = X;
@@ -100,10 +100,10 @@ static int brute_plain(const rast_point *p, const uint32_t *sizes, uint32_t nrin
             for (i = 0; i < n; i++) {
                 int ni = start[ring[i]] + (i - start[ring[i]] + 1) % count[ring[i]];
                 pt a, b;
-                a.x = 16 * v[i].x;
-                a.y = 16 * v[i].y;
-                b.x = 16 * v[ni].x;
-                b.y = 16 * v[ni].y;
+                a.x = 8 * v[i].x;
+                a.y = 8 * v[i].y;
+                b.x = 8 * v[ni].x;
+                b.y = 8 * v[ni].y;
                 if (on_seg(a, b, q)) on = 1;
                 /* a ray to the right: edges going up cross it +1, down -1 */
                 if ((a.y <= Y) != (b.y <= Y)) {

@@ -146,7 +146,7 @@ static int plain(const rast_point *p, const uint32_t *sizes, uint32_t nrings)
 }
 
 /* A ring of n points sorted by angle round (cx, cy) (by quadrant and
- * cross products: no floating point), at most MAXV / 4. */
+ * cross products: no floating point). */
 static void star_ring(rast_point *p, uint32_t n, int32_t cx, int32_t cy, int32_t r)
 {
     uint32_t i, j;

@@ -48,6 +48,14 @@ typedef struct rast__grid {
 rast_status rast__grid_init(rast__grid *g, int32_t subpixel_bits, rast_sample sample,
                             rast_rounding rounding, rast_boundary boundary);
 
+/* (b - a) x (c - a): twice the signed area of abc, exact for vertices
+ * (|coordinates| < 2^28: |.| < 2^58).  Positive when a, b, c turn
+ * clockwise on screen (y down), counter-clockwise with y up. */
+static inline int64_t rast__cross3(rast_point a, rast_point b, rast_point c)
+{
+    return ((int64_t)b.x - a.x) * ((int64_t)c.y - a.y) - ((int64_t)b.y - a.y) * ((int64_t)c.x - a.x);
+}
+
 /* Floor of a / b for b > 0, with a non-negative remainder. */
 static inline int64_t rast__floordiv(int64_t a, int64_t b)
 {

@@ -44,11 +44,6 @@ typedef struct rast__pl {
     uint64_t budget;
 } rast__pl;
 
-static int64_t rast__pl_orient(rast_point a, rast_point b, rast_point c)
-{
-    return ((int64_t)b.x - a.x) * ((int64_t)c.y - a.y) - ((int64_t)b.y - a.y) * ((int64_t)c.x - a.x);
-}
-
 /* edge k's left and right end (in the order of the keys) */
 static void rast__pl_ends(const rast__pl *s, uint32_t k, rast_point *l, rast_point *r)
 {
@@ -113,16 +108,18 @@ static int rast__pl_apart(const rast__pl *s, uint32_t j, uint32_t k)
     int64_t d1, d2, d3, d4;
     if (s->next[j] == k || s->next[k] == j) { /* consecutive: V shared; folded back? */
         rast_point v = s->next[j] == k ? q : p, a = s->next[j] == k ? p : q, b = s->next[j] == k ? t : r;
-        return rast__pl_orient(v, a, b) != 0 ||
+        return rast__cross3(v, a, b) != 0 ||
                ((int64_t)a.x - v.x) * ((int64_t)b.x - v.x) + ((int64_t)a.y - v.y) * ((int64_t)b.y - v.y) < 0;
     }
-    if ((p.x < r.x && p.x < t.x && q.x < r.x && q.x < t.x) || (p.x > r.x && p.x > t.x && q.x > r.x && q.x > t.x) ||
-        (p.y < r.y && p.y < t.y && q.y < r.y && q.y < t.y) || (p.y > r.y && p.y > t.y && q.y > r.y && q.y > t.y))
+    if ((p.x < r.x && p.x < t.x && q.x < r.x && q.x < t.x) ||
+        (p.x > r.x && p.x > t.x && q.x > r.x && q.x > t.x) ||
+        (p.y < r.y && p.y < t.y && q.y < r.y && q.y < t.y) ||
+        (p.y > r.y && p.y > t.y && q.y > r.y && q.y > t.y))
         return 1; /* boxes apart */
-    d1 = rast__pl_orient(r, t, p);
-    d2 = rast__pl_orient(r, t, q);
-    d3 = rast__pl_orient(p, q, r);
-    d4 = rast__pl_orient(p, q, t);
+    d1 = rast__cross3(r, t, p);
+    d2 = rast__cross3(r, t, q);
+    d3 = rast__cross3(p, q, r);
+    d4 = rast__cross3(p, q, t);
     if (((d1 > 0 && d2 < 0) || (d1 < 0 && d2 > 0)) && ((d3 > 0 && d4 < 0) || (d3 < 0 && d4 > 0))) return 0;
     if ((d1 == 0 && rast__pl_within(r, t, p)) || (d2 == 0 && rast__pl_within(r, t, q)) ||
         (d3 == 0 && rast__pl_within(p, q, r)) || (d4 == 0 && rast__pl_within(p, q, t)))
@@ -140,12 +137,12 @@ static int rast__pl_insert(rast__pl *s, uint32_t k)
         uint32_t mid = lo + (hi - lo) / 2;
         int64_t o;
         rast__pl_ends(s, s->st[mid], &ml, &mr);
-        o = rast__pl_orient(ml, mr, l);
+        o = rast__cross3(ml, mr, l);
         /* o = 0: l is on m (m's left end is not after l, its right end
          * after it).  If l is m's left end, k's partner there, k goes by
          * its other end; else, or if they overlap, k ends next to m, where
          * rast__pl_apart finds that they meet. */
-        if (o == 0 && ml.x == l.x && ml.y == l.y) o = rast__pl_orient(ml, mr, r);
+        if (o == 0 && ml.x == l.x && ml.y == l.y) o = rast__cross3(ml, mr, r);
         if (o > 0)
             lo = mid + 1;
         else
@@ -179,8 +176,8 @@ static int64_t rast__pl_winding(const rast__pl *s, uint32_t k0, uint32_t k1, ras
     uint32_t k;
     for (k = k0; k < k1; k++) {
         rast_point a = s->pt[k], b = s->pt[s->next[k]];
-        if (a.y <= p.y && p.y < b.y && rast__pl_orient(a, b, p) > 0) w++;
-        if (b.y <= p.y && p.y < a.y && rast__pl_orient(a, b, p) < 0) w--;
+        if (a.y <= p.y && p.y < b.y && rast__cross3(a, b, p) > 0) w++;
+        if (b.y <= p.y && p.y < a.y && rast__cross3(a, b, p) < 0) w--;
     }
     return w;
 }
@@ -237,7 +234,7 @@ int rast__cov_plain(const rast_polygon *poly, uint32_t npoints, rast__arena aren
     rast__pl_sort(key, ord, tmp, run, n);
     for (i = 0; i + 1 < n; i++) /* condition 1 */
         if (key[ord[i]] == key[ord[i + 1]]) return 0;
-    for (i = 0; i < n; i++) { /* condition 2: at each vertex, the edges that end there, then those that start there */
+    for (i = 0; i < n; i++) { /* condition 2: at each vertex, its edges that end, then those that start */
         const uint32_t v = ord[i], in = prev[v];
         const int in_ends = key[in] < key[v], out_ends = key[next[v]] < key[v];
         if (in_ends && !rast__pl_remove(&s, in)) return 0;
@@ -258,7 +255,7 @@ int rast__cov_plain(const rast_polygon *poly, uint32_t npoints, rast__arena aren
             if (key[k] < key[low]) low = k;
         /* at its lowest vertex a ring turns the way it goes round (not 0:
          * both neighbours lie after it, so on one line they would overlap) */
-        w1 = w0 + (rast__pl_orient(pt[prev[low]], pt[low], pt[next[low]]) > 0 ? 1 : -1);
+        w1 = w0 + (rast__cross3(pt[prev[low]], pt[low], pt[next[low]]) > 0 ? 1 : -1);
         if (w0 < -1 || w0 > 1 || w1 < -1 || w1 > 1) return 0;
         pos |= w0 == 1 || w1 == 1;
         neg |= w0 == -1 || w1 == -1;

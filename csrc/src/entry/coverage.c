@@ -262,7 +262,7 @@ static void rast__cov_scale(const rast_point *p, uint32_t n, int32_t scale, rast
 
 /* Does the test of rast__cov_plain pay?  It costs about what six rows of
  * an edge save ("area" over "accumulate": ~130 instructions a row, the
- * test ~500 to 1,000 an edge on the bench's scenes), so only where the
+ * test ~500 to 1,100 a vertex on the bench's scenes), so only where the
  * edges' rows (the accumulation's parts) are 6 times the vertices. */
 static int rast__cov_plain_pays(const rast__cedge *e, uint32_t n, int32_t s, uint32_t npoints)
 {

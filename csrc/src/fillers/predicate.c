@@ -20,13 +20,6 @@
  */
 #include "../base/internal.h"
 
-/* (b - a) x (c - a): twice the signed area of abc; |.| < 2^57.
- * Positive when a, b, c turn clockwise on screen (y down). */
-static int64_t rast__cross3(rast_point a, rast_point b, rast_point c)
-{
-    return ((int64_t)b.x - a.x) * ((int64_t)c.y - a.y) - ((int64_t)b.y - a.y) * ((int64_t)c.x - a.x);
-}
-
 static int rast__sign(int64_t v)
 {
     return (v > 0) - (v < 0);

@@ -145,3 +145,132 @@ def test_sparse_rows_across_a_wide_clip(k, n, seed, snap, rule):
         ring = np.round(ring * snap) / snap
         rings.append(ring.tolist() if rnd.integers(2) else ring.tolist()[::-1])
     _check(rings, rule, shape=(6, 140))
+
+
+# ---- long edges: the walk a band of rows at a time ---------------------------
+#
+# When the edges cross 32 rows or more each on the mean, each is walked over
+# a band of 4 rows at a time (its steppers held from row to row), into four
+# rows of cells; the rows are then read out in order, a row whose level is
+# near a tie (or whose parts are too many for the cells' bound) going to the
+# exact sweep while the rows below it in the band wait.
+
+TALL = (80, 7)
+
+
+def _tall_ring(rnd, n, c, rx, ry, snap):
+    """A ring star-shaped round c, stretched (rx across, ry down) so that its
+    edges are long and steep, snapped to multiples of 1/snap; None when the
+    snapping broke it (the vertices no longer turn round c in order, less
+    than half a turn apart: then it may not be simple, and the oracle below
+    assumes simple rings)."""
+    ang = (np.arange(n) + rnd.uniform(0, 0.45, n)) * 2 * np.pi / n
+    r = rnd.uniform(0.6, 1.0, n)
+    pts = np.round(np.stack([c[0] + rx * r * np.cos(ang), c[1] + ry * r * np.sin(ang)], 1) * snap) / snap
+    turn = np.diff(np.unwrap(np.arctan2(pts[:, 1] - c[1], pts[:, 0] - c[0])), append=np.nan)
+    turn[-1] = 2 * np.pi - np.nansum(turn[:-1])
+    if not ((turn > 1e-9) & (turn < np.pi - 1e-9)).all():
+        return None
+    return pts.tolist()
+
+
+@settings(max_examples=S_.examples(40), deadline=None)
+@given(st.integers(1, 3), st.integers(3, 5), st.integers(0, 2 ** 32 - 1),
+       st.sampled_from([2, 4, 256]), st.sampled_from(["evenodd", "nonzero"]))
+def test_long_edges_walked_a_band_at_a_time(k, n, seed, snap, rule):
+    """Rings of few vertices over a tall image (the band walk): edges that
+    start and end inside a band and pass band boundaries, rings reaching
+    past the top and bottom and past the left and right sides (an edge that
+    leaves the clip goes part by part), vertices on a grid of 1/snap pixel
+    (levels on a tie: rows to the exact sweep in the middle of a band),
+    overlapping, both orientations; against the oracle, both formats."""
+    rnd = np.random.default_rng(seed)
+    rings = []
+    for _ in range(k):
+        c = rnd.uniform([-1, 10], [TALL[1] + 1, TALL[0] - 10])
+        ring = _tall_ring(rnd, n, c, rnd.uniform(2.5, 6.0), rnd.uniform(30.0, 60.0), snap)
+        if ring is not None:
+            rings.append(ring if rnd.integers(2) else ring[::-1])
+    if rings:
+        _check(rings, rule, shape=TALL)
+
+
+@pytest.mark.parametrize("rule", ["nonzero", "evenodd"])
+def test_rows_of_many_parts_inside_a_band(rule):
+    """300 copies of a tall triangle and a lone thin one: 602 parts in each
+    row they share, more than the cells' bound holds (512), so those rows
+    go to the exact sweep while the band's other rows are read out of its
+    cells (the rows above and below hold the thin triangle alone).  The
+    oracle: the copies' integral is 300 times one's."""
+    tri = [(1.25, 8.5), (5.5, 40.25), (2.125, 71.75)]
+    thin = [(6.0, 0.5), (6.5, 79.5), (6.25, 0.5)]
+    a1 = exact_area([tri], TALL, "nonzero", 8)
+    a2 = exact_area([thin], TALL, "nonzero", 8)
+    sign = (1 if _area2(tri) > 0 else -1) * (1 if _area2(thin) > 0 else -1)
+    want = np.empty(TALL, object)
+    for idx, v in np.ndenumerate(a1 * 300 + a2 * sign):
+        v = abs(v)
+        if rule == "nonzero":
+            want[idx] = min(v, F(1))
+        else:
+            v -= 2 * (v.numerator // (2 * v.denominator))
+            want[idx] = 2 - v if v > 1 else v
+    rings = [tri] * 300 + [thin]
+    n, m = _n_m(rings, 8)
+    for dtype in (np.uint8, np.uint16):
+        out = rastrum.polygon_coverage(rings, TALL, rule=rule, method="accumulate", dtype=dtype)
+        check_area(out, want, M_OF[dtype], n, m, "%s %s" % (rule, dtype.__name__))
+
+
+@settings(max_examples=S_.examples(12), deadline=None)
+@given(st.integers(1, 2), st.integers(0, 2 ** 32 - 1), st.sampled_from([4, 256]),
+       st.sampled_from(["evenodd", "nonzero"]))
+def test_long_shallow_edges_in_band_rows(k, seed, snap, rule):
+    """Long edges across a wide image: parts that cross tens of columns in
+    a row (the columns between deposited in one pass), rows with few parts
+    (their cells marked a bit each) beside rows with many, in one band."""
+    rnd = np.random.default_rng(seed)
+    rings = []
+    for _ in range(k):
+        c = rnd.uniform([20, 40], [100, 50])
+        ring = _tall_ring(rnd, 4, c, rnd.uniform(20.0, 60.0), rnd.uniform(40.0, 50.0), snap)
+        if ring is not None:
+            rings.append(ring if rnd.integers(2) else ring[::-1])
+    if rings:
+        _check(rings, rule, shape=(90, 120))
+
+
+@pytest.mark.parametrize("method", ["accumulate", "area"])
+def test_long_edges_painted_as_written(method):
+    """A Canvas fill hands each row on as it is read out of the band (one
+    row buffer): gray8 painted with 255 equals the coverage levels."""
+    rings = [[(0.3, -4.0), (6.6, 30.25), (1.5, 83.0)], [(5.2, 2.5), (6.9, 77.75), (3.0, 40.125)]]
+    cov = rastrum.polygon_coverage(rings, TALL, method=method)
+    canvas = rastrum.Canvas(TALL[1], TALL[0], "gray8")
+    canvas.fill_polygon(rings, 255, aa=method)
+    np.testing.assert_array_equal(canvas.array, cov)
+    _check(rings, "evenodd", shape=TALL)
+
+
+@pytest.mark.parametrize("method", ["accumulate", "area"])
+@pytest.mark.parametrize("rule", ["nonzero", "evenodd"])
+def test_a_level_just_past_a_tie_is_exact_in_a_band(method, rule):
+    """The scene of test_a_level_just_past_a_tie_is_exact beside two tall
+    triangles in columns of their own, whose long edges make the call walk
+    a band at a time: the row with the near-tie pixel is redone by the exact
+    sweep inside its band (without it, 124 and 31996), the band's other
+    rows read out of the cells."""
+    quad = [(2, 0), (2.125, 0), (3.08984375, 3.984375), (2, 3.984375)]
+    d = 2 ** -16
+    tri = [(2.875, 1.5), (2.875, 1.5 + d), (2.875 + d, 1.5)]
+    tri = tri if (_area2(tri) > 0) == (_area2(quad) > 0) else tri[::-1]
+    tall = [[(6.25, 0.5), (8.5, 199.75), (7.125, 1.0)], [(9.5, 2.0), (11.75, 3.0), (10.25, 198.5)]]
+    rings = [quad, tri] + tall
+    shape = (200, 12)
+    exact = exact_area(rings, shape, rule, 16)
+    assert exact[1, 2] == F(83, 170) + F(1, 2 ** 33)
+    n, m = _n_m(rings, 16)
+    for dtype, want in ((np.uint8, 125), (np.uint16, 31997)):
+        out = rastrum.polygon_coverage(rings, shape, rule=rule, method=method, dtype=dtype, subpixel_bits=16)
+        assert out[1, 2] == want
+        check_area(out, exact, M_OF[dtype], n, m, "%s %s" % (method, rule))

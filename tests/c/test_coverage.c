@@ -914,6 +914,107 @@ static void test_scratch_content(void)
         }
 }
 
+
+/* ---- long edges: the walk a band of rows at a time ------------------------- */
+
+/* Polygons whose edges cross 32 rows or more each on the mean are walked a
+ * band of rows at a time.  Random rings of 3 to 5 tall, steep edges over a
+ * clip 120 rows high (some past its sides and ends, some vertices on half
+ * pixels: rows to the exact sweep inside a band), clips from -1, 0 or 1,
+ * "area" and "accumulate",
+ * both rules, U8 and U16: the spans call hands on what the array call
+ * writes, the scratch's guard holds, and the same image comes whatever the
+ * scratch held before (filled four ways). */
+#define WL 16
+#define HL 120
+typedef struct long_img {
+    uint8_t img[HL][WL];
+    rast_rect clip;
+    int32_t y, x1, ok;
+} long_img;
+
+/* take_span's, for the long edges' clip (WL x HL) */
+static void take_long_span(void *user, int32_t y, int32_t x0, int32_t x1, const uint8_t *v)
+{
+    long_img *s = (long_img *)user;
+    int32_t x;
+    if (x0 >= x1 || y < s->clip.y0 || y >= s->clip.y1 || x0 < s->clip.x0 || x1 > s->clip.x1 ||
+        (y == s->y && x0 <= s->x1) || y < s->y) {
+        s->ok = 0;
+        return;
+    }
+    for (x = x0; x < x1; x++) {
+        if (!v[x - x0]) s->ok = 0;
+        s->img[y - s->clip.y0][x - s->clip.x0] = v[x - x0];
+    }
+    s->y = y;
+    s->x1 = x1;
+}
+
+static void test_long_edges(void)
+{
+    static const unsigned char fills[4] = {0x00, 0xFF, 0x5A, 0xA5};
+    static uint16_t first[HL][WL], out[HL][WL];
+    int iter, n = check_count(60);
+    for (iter = 0; iter < n; iter++) {
+        rast_point pts[10];
+        uint32_t sizes[2], k, np = 0, fi;
+        rast_polygon p = {pts, sizes, 0};
+        rast_coverage_opts o;
+        rast_rect clip;
+        rast_coverage_format f = rng() % 2 ? RAST_COVERAGE_U16 : RAST_COVERAGE_U8;
+        size_t need, bpp = f == RAST_COVERAGE_U16 ? 2 : 1;
+        unsigned char *sc;
+        static long_img s;
+        int32_t y;
+        for (k = 0; k < 2; k++) {
+            uint32_t m = 3 + rng() % 3, v;
+            int32_t cx = (int32_t)(rng() % (WL * 256)), cy = 40 * 256 + (int32_t)(rng() % (40 * 256));
+            for (v = 0; v < m; v++) { /* round (cx, cy), 7 to 9 pixels across, 40 to 60 down */
+                int32_t dx = (int32_t)(rng() % (18 * 256)) - 9 * 256, dy = (int32_t)(rng() % (20 * 256)) + 40 * 256;
+                pts[np].x = cx + (v % 2 ? dx : -dx / 2);
+                pts[np].y = cy + (v < m / 2 ? -dy : dy) - (int32_t)v * 256;
+                if (rng() % 3 == 0) pts[np].x &= ~127, pts[np].y &= ~127; /* half pixels */
+                np++;
+            }
+            sizes[k] = m;
+        }
+        p.nrings = 2;
+        clip.x0 = (int32_t)(rng() % 3) - 1; /* (a clip from x = -1: no shift of a negative) */
+        clip.y0 = (int32_t)(rng() % 3) - 1;
+        clip.x1 = clip.x0 + WL;
+        clip.y1 = clip.y0 + HL;
+        memset(&o, 0, sizeof o);
+        o.method = rng() % 2 ? RAST_AA_AREA : RAST_AA_ACCUMULATE;
+        o.rule = (rast_fill_rule)(rng() % 2);
+        o.subpixel_bits = 8;
+        o.sample = RAST_SAMPLE_CENTER;
+        CHECK(rast_coverage_scratch_size(&o, np, WL, HL, &need) == RAST_OK);
+        sc = scratch_for(need);
+        CHECK(sc != NULL);
+        if (!sc) return;
+        for (fi = 0; fi < 4; fi++) {
+            memset(sc, fills[fi], need);
+            CHECK(rast_polygon_coverage(&p, &o, &clip, f, out, (ptrdiff_t)(WL * bpp), sc, need) == RAST_OK);
+            CHECK(scratch_guard_ok(sc, need));
+            if (fi == 0)
+                memcpy(first, out, sizeof out);
+            else
+                CHECK(memcmp(first, out, (size_t)HL * WL * bpp) == 0);
+        }
+        if (f == RAST_COVERAGE_U8) { /* the spans: the same levels */
+            memset(&s, 0, sizeof s);
+            s.clip = clip;
+            s.y = INT32_MIN;
+            s.ok = 1;
+            CHECK(rast_polygon_coverage_spans(&p, &o, &clip, take_long_span, &s, sc, need) == RAST_OK);
+            CHECK(s.ok);
+            for (y = 0; y < HL; y++)
+                CHECK(memcmp(s.img[y], (const unsigned char *)first + (size_t)y * WL, WL) == 0);
+        }
+    }
+}
+
 int main(void)
 {
     test_rectangles();
@@ -928,5 +1029,6 @@ int main(void)
     test_errors();
     test_spans();
     test_scratch_content();
+    test_long_edges();
     return check_report("test_coverage");
 }

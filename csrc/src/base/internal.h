@@ -35,6 +35,15 @@ typedef int64_t rast__dpos64;
 #define RAST__HOT static inline
 #endif
 
+/* Kept out of line (GCC, clang): a loop whose state should stay in
+ * registers, apart from its caller's; or a rare path that would crowd
+ * one. */
+#if defined(__GNUC__) || defined(__clang__)
+#define RAST__APART static __attribute__((noinline))
+#else
+#define RAST__APART static
+#endif
+
 typedef struct rast__grid {
     int32_t unit;     /* 2^(S+1): one pixel in internal units */
     int32_t off;      /* sample offset in internal units: 2^S or 0 */

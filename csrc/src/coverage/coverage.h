@@ -283,7 +283,10 @@ rast_status rast__cov_area(rast__cedge *e, uint32_t n, int32_t s, rast_fill_rule
  * row whose levels its 64-bit cells cannot decide to
  * rast__cov_acc_exact_row: the edges row[0..nrow) of row j, whole, the
  * exact way, into row j of o (handed on), with cleared cells cover[],
- * area[] (clip width each) and bits[] (a bit a column), left cleared. */
+ * area[] (clip width each) and bits[] (a bit a column), left cleared.
+ * It walks each edge over a band of RAST__ACC_BAND rows at a time, whose
+ * cells rast__cov_area_scratch counts. */
+#define RAST__ACC_BAND 4
 int rast__cov_acc_may(const rast__cov_out *o, int32_t s);
 rast_status rast__cov_acc(rast__cedge *e, uint32_t n, int32_t s, rast_fill_rule rule,
                           const rast__cov_out *o, rast__arena *arena);
@@ -292,13 +295,14 @@ rast_status rast__cov_acc(rast__cedge *e, uint32_t n, int32_t s, rast_fill_rule 
  * else 0, nothing handed on (the row may be written), the cells clean.
  * The edges row[0..nrow) of the row; runs[0..nrun) the edges (with
  * RAST__HZ_RUN, cancelled or not) whose runs lie strictly inside its strip;
- * acc[] (clip width + 1 words) and bits[] the cleared cells of
- * rast__cov_acc; own[] (clip width words) the columns' marks, stamp a
+ * acc[] (clip width + 1 words), bits[] and z[] (clip width words, left
+ * cleared) the cleared cells of rast__cov_acc; own[] (clip width words)
+ * the columns' marks, stamp a
  * number no other row of the call has (none is 0). */
 int rast__cov_acc_area_row(rast__cedge *e, const int32_t *row, int32_t nrow, const int32_t *runs,
                            int32_t nrun, int32_t j, int32_t s, rast_fill_rule rule,
-                           const rast__cov_out *o, uint64_t *acc, uint64_t *bits, uint64_t *own,
-                           uint32_t stamp);
+                           const rast__cov_out *o, uint64_t *acc, uint64_t *bits, uint32_t *z,
+                           uint64_t *own, uint32_t stamp);
 /* Stable radix sort (8 bits a pass, as many passes as the largest key
  * needs) of the indices ix[0..n) by key[ix[i]], each key's bits read as
  * unsigned; tmp[0..n) is room.  The result is in ix. */

@@ -454,7 +454,11 @@ size_t rast__cov_area_scratch(uint32_t n, int32_t width)
     b = rast__size_add(b, rast__align(rast__size_mul(n, sizeof(uint64_t))));
     b = rast__size_add(b, rast__align(rast__size_mul(((size_t)width + 63) / 64, sizeof(uint64_t))));
     b = rast__size_add(b, rast__align(rast__size_mul((size_t)width, sizeof(uint64_t))));
-    return rast__size_add(b, 2 * rast__align(rast__size_mul((size_t)width, sizeof(rast__i128))));
+    b = rast__size_add(b, 2 * rast__align(rast__size_mul((size_t)width, sizeof(rast__i128))));
+    /* rast__cov_acc's band: RAST__ACC_BAND rows of width + 1 cells and
+     * their bits */
+    b = rast__size_add(b, rast__align(rast__size_mul(RAST__ACC_BAND, rast__size_mul((size_t)width + 1, sizeof(uint64_t)))));
+    return rast__size_add(b, rast__align(rast__size_mul(RAST__ACC_BAND, rast__size_mul(((size_t)width + 63) / 64, sizeof(uint64_t)))));
 }
 
 /* Heapsort of the indices ix[0..n) by the edges' top ordinate. */
@@ -1604,7 +1608,8 @@ rast_status rast__cov_area(rast__cedge *e, uint32_t n, int32_t s, rast_fill_rule
                 /* done: the fast row's continuation, the cheapest test */
             } else if (simple && !(unsimple && same) && !(same && nrow <= 4) &&
                        rast__cov_acc_area_row(e, row, nrow, runs + rnext, rend - rnext, j, s, rule, o,
-                                              (uint64_t *)(void *)c.cover, c.bits, own,
+                                              (uint64_t *)(void *)c.cover, c.bits,
+                                              (uint32_t *)(void *)c.area, own,
                                               (uint32_t)(j - ja) + 1)) {
                 fast = 0;
                 unsimple = 0;

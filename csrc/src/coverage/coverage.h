@@ -177,10 +177,16 @@ static inline int64_t rast__cov_qtop(rast__cedge *e, int32_t j, int32_t p, int32
         }
         e->qrow = j;
     } else if (e->qrow != j) {
+        const int64_t d = (int64_t)j * p - e->yt;
         int64_t q, r, q2, r2;
-        rast__floordivmod((int64_t)e->dx * ((int64_t)j * p - e->yt), e->dy, &q, &r);
-        rast__floordivmod(r * ((int64_t)1 << hq), e->dy, &q2, &r2);
-        e->qx = ((int64_t)e->xt + q) * ((int64_t)1 << hq) + q2;
+        if (d >= 0 && d <= p) { /* (an edge's first row top: |dx d 2^HQ| <= 2^58, one division) */
+            rast__floordivmod((int64_t)e->dx * d * ((int64_t)1 << hq), e->dy, &q2, &r2);
+            e->qx = (int64_t)e->xt * ((int64_t)1 << hq) + q2;
+        } else {
+            rast__floordivmod((int64_t)e->dx * d, e->dy, &q, &r);
+            rast__floordivmod(r * ((int64_t)1 << hq), e->dy, &q2, &r2);
+            e->qx = ((int64_t)e->xt + q) * ((int64_t)1 << hq) + q2;
+        }
         e->qxr = (uint32_t)r2;
         e->qrow = j;
     }
@@ -190,14 +196,20 @@ static inline int64_t rast__cov_qtop(rast__cedge *e, int32_t j, int32_t p, int32
 /* e's column stepper at vertical X (which e's x range reaches: |X P - xt|
  * <= |dx|): t = floor(|X P - xt| dy 2^HQ / |dx|) from e's top, qt + qtr/|dx|,
  * in two 64-bit divisions (|X P - xt| dy < 2^56, the remainder times 2^HQ <
- * 2^58). */
+ * 2^58), or one when |X P - xt| <= P (the product times 2^HQ <= 2^58). */
 static inline void rast__cov_qt_first(rast__cedge *e, int64_t X, int32_t p, int32_t hq)
 {
     uint64_t adx = (uint64_t)(e->dx < 0 ? -(int64_t)e->dx : e->dx);
     int64_t w = X * p - e->xt;
-    uint64_t m = (uint64_t)(w < 0 ? -w : w) * (uint64_t)e->dy, r = (m % adx) << hq;
-    e->qt = (int64_t)(((m / adx) << hq) + r / adx);
-    e->qtr = (uint32_t)(r % adx);
+    uint64_t m = (uint64_t)(w < 0 ? -w : w) * (uint64_t)e->dy, r;
+    if (w >= -p && w <= p) { /* (the first vertical: m 2^HQ <= 2^58, one division) */
+        e->qt = (int64_t)((m << hq) / adx);
+        e->qtr = (uint32_t)((m << hq) % adx);
+    } else {
+        r = (m % adx) << hq;
+        e->qt = (int64_t)(((m / adx) << hq) + r / adx);
+        e->qtr = (uint32_t)(r % adx);
+    }
     e->qX = X;
 }
 
@@ -307,10 +319,12 @@ int rast__cov_acc_area_row(rast__cedge *e, const int32_t *row, int32_t nrow, con
  * needs) of the indices ix[0..n) by key[ix[i]], each key's bits read as
  * unsigned; tmp[0..n) is room.  The result is in ix. */
 void rast__cov_radix_sort(int32_t *ix, int32_t *tmp, const int32_t *key, uint32_t n);
-/* Each edge's steps set, order[i] = i, and the rows [*ja, *jb) of the
- * clip the edges' strips reach (n > 0). */
+/* Each edge's steps set (when quick, those of the quick way only: then
+ * rast__cov_exact_steps before an exact row), order[i] = i, and the rows
+ * [*ja, *jb) of the clip the edges' strips reach (n > 0). */
 void rast__cov_rows(rast__cedge *e, uint32_t n, int32_t p, int32_t *order, const rast__cov_out *o,
-                    int32_t *ja, int32_t *jb);
+                    int32_t *ja, int32_t *jb, int quick);
+void rast__cov_exact_steps(rast__cedge *e, uint32_t n);
 void rast__cov_acc_exact_row(rast__cedge *e, const int32_t *row, int32_t nrow, int32_t j,
                              int32_t s, rast_fill_rule rule, const rast__cov_out *o,
                              rast__i128 *cover, rast__i128 *area, uint64_t *bits);

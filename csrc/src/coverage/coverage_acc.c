@@ -791,6 +791,7 @@ static void rast__acc_by_rows(const rast__acc_walk *w, rast__acc *a)
     int32_t *const row = w->row;
     int32_t nrow = 0, j, k, drop = INT32_MAX;
     uint32_t next = 0;
+    int exact = 0; /* the edges' exact steps set */
     for (j = w->ja; j < w->jb; j++) {
         const int64_t Yj = (int64_t)j * a->p;
         nrow = rast__acc_edges_of(w, nrow, &next, &drop, j, j + 1, a->p);
@@ -810,6 +811,10 @@ static void rast__acc_by_rows(const rast__acc_walk *w, rast__acc *a)
             }
             if (rast__acc_emit(a, o, j, w->rule, m, ((uint64_t)nrow + 1) * m << 24)) continue;
         }
+        if (!exact) { /* the first exact row (rare) */
+            rast__cov_exact_steps(e, w->n);
+            exact = 1;
+        }
         rast__cov_acc_exact_row(e, row, nrow, j, w->s, w->rule, o, w->cover, w->area, w->bits);
     }
 }
@@ -828,7 +833,7 @@ static void rast__acc_by_bands(const rast__acc_walk *w, rast__acc *v)
     unsigned char ok[RAST__ACC_BAND];
     int32_t cnt[RAST__ACC_BAND + 1], nrow = 0, j0, j1, k, q, r, drop = INT32_MAX;
     uint32_t next = 0;
-    int clean = 0; /* cover[], area[] and bits[] cleared */
+    int clean = 0; /* cover[], area[] and bits[] cleared, the exact steps set */
     for (j0 = ja; j0 < w->jb; j0 = j1) {
         j1 = w->jb - j0 > RAST__ACC_BAND ? j0 + RAST__ACC_BAND : w->jb;
         nrow = rast__acc_edges_of(w, nrow, &next, &drop, j0, j1, v->p);
@@ -856,8 +861,10 @@ static void rast__acc_by_bands(const rast__acc_walk *w, rast__acc *v)
             if (ok[r] && rast__acc_emit(&v[r], o, j, w->rule, m, ((uint64_t)cnt[r] + 1) * m << 24)) continue;
             for (k = 0, q = 0; k < nrow; k++) /* the row's edges */
                 if (key[row[k]] + ja <= j && last[row[k]] >= j) w->tmp[q++] = row[k];
-            if (!clean) { /* the first exact row (rare): the sums leave z[] as
-                           * they find it */
+            if (!clean) { /* the first exact row (rare): the edges' exact steps,
+                           * the cells cleared (the sums leave z[] as they
+                           * find it) */
+                rast__cov_exact_steps(e, w->n);
                 for (k = 0; k < w->width; k++) w->cover[k] = w->area[k] = rast__i128_u64(0);
                 for (k = 0; k < w->nw; k++) w->bits[k] = 0;
                 clean = 1;
@@ -909,7 +916,7 @@ rast_status rast__cov_acc(rast__cedge *e, uint32_t n, int32_t s, rast_fill_rule 
         rast__cov_zero_rows(o, o->clip.y0, o->clip.y1);
         return RAST_OK;
     }
-    rast__cov_rows(e, n, v[0].p, w.order, o, &w.ja, &w.jb);
+    rast__cov_rows(e, n, v[0].p, w.order, o, &w.ja, &w.jb, 1); /* (the exact steps when needed) */
     for (i = 0; i < n; i++) { /* the row where each starts, from ja; its last row */
         const int64_t r0 = rast__acc_floorp(e[i].yt, &v[0]) - w.ja;
         w.key[i] = r0 < 0 ? 0 : (int32_t)r0;

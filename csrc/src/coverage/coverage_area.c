@@ -351,7 +351,9 @@ static void rast__cov_step60(uint64_t n, uint64_t d, rast__i128 *q, uint64_t *re
     *rem = r % d;
 }
 
-static void rast__cov_steps(rast__cedge *e)
+/* e's steps for the exact way (2^-60 pixel): per row, xs + xsr/dy; per
+ * column, ts + tsr/|dx|; its caches unset. */
+static void rast__cov_steps_exact(rast__cedge *e)
 {
     uint64_t adx = (uint64_t)(e->dx < 0 ? -(int64_t)e->dx : e->dx), rem, q30, r30;
     rast__i128 q;
@@ -368,26 +370,42 @@ static void rast__cov_steps(rast__cedge *e)
     }
     e->ts = rast__i128_u64(0);
     e->tsr = 0;
-    e->qts = 0;
-    e->qtsr = 0;
-    if (adx) { /* the column steps: dy 2^60 / |dx|, and dy 2^30 / |dx| for the quick way */
+    if (adx) { /* the column steps: dy 2^60 / |dx| */
         rast__cov_step60((uint64_t)e->dy, adx, &e->ts, &rem, &q30, &r30);
         e->tsr = (uint32_t)rem;
-        e->qts = (int64_t)q30;
-        e->qtsr = (uint32_t)r30;
     }
-    {   /* the quick row step: dx 2^30 / dy (|dx| < 2^28) */
-        int64_t qq, rr;
-        rast__floordivmod((int64_t)e->dx * ((int64_t)1 << 30), e->dy, &qq, &rr);
-        e->qxs = qq;
-        e->qxsr = (uint32_t)rr;
-    }
-    e->qrow = INT32_MIN;
-    e->qX = INT64_MIN;
     e->rowx = INT32_MIN;
     e->cX = INT64_MIN;
     e->crow = INT32_MIN;
     e->cn = -1;
+}
+
+/* e's steps for the quick way (2^-30 pixel): per column, dy 2^30 / |dx|
+ * (|dx| < 2^28); per row, dx 2^30 / dy; its steppers unset.  Two
+ * divisions, where the exact way's steps take ten. */
+static void rast__cov_steps_quick(rast__cedge *e)
+{
+    const uint64_t adx = (uint64_t)(e->dx < 0 ? -(int64_t)e->dx : e->dx), a = (uint64_t)e->dy << 30;
+    int64_t qq, rr;
+    e->qts = adx ? (int64_t)(a / adx) : 0;
+    e->qtsr = adx ? (uint32_t)(a % adx) : 0;
+    rast__floordivmod((int64_t)e->dx * ((int64_t)1 << 30), e->dy, &qq, &rr);
+    e->qxs = qq;
+    e->qxsr = (uint32_t)rr;
+    e->qrow = INT32_MIN;
+    e->qX = INT64_MIN;
+}
+
+static void rast__cov_steps(rast__cedge *e)
+{
+    rast__cov_steps_exact(e);
+    rast__cov_steps_quick(e);
+}
+
+void rast__cov_exact_steps(rast__cedge *e, uint32_t n)
+{
+    uint32_t i;
+    for (i = 0; i < n; i++) rast__cov_steps_exact(&e[i]);
 }
 
 /* e's abscissa at the end tn of a piece that starts at t (where it is
@@ -1487,13 +1505,16 @@ static void rast__cells_init(rast__cells *c, int32_t s, rast_fill_rule rule, int
 }
 
 void rast__cov_rows(rast__cedge *e, uint32_t n, int32_t p, int32_t *order, const rast__cov_out *o,
-                    int32_t *ja, int32_t *jb)
+                    int32_t *ja, int32_t *jb, int quick)
 {
     int64_t ymin = e[0].yt, ymax = (int64_t)e[0].yt + e[0].dy;
     uint32_t i;
     for (i = 0; i < n; i++) {
         order[i] = (int32_t)i;
-        rast__cov_steps(&e[i]);
+        if (quick)
+            rast__cov_steps_quick(&e[i]);
+        else
+            rast__cov_steps(&e[i]);
         if (e[i].yt < ymin) ymin = e[i].yt;
         if ((int64_t)e[i].yt + e[i].dy > ymax) ymax = (int64_t)e[i].yt + e[i].dy;
     }
@@ -1556,7 +1577,7 @@ rast_status rast__cov_area(rast__cedge *e, uint32_t n, int32_t s, rast_fill_rule
         rast__cov_zero_rows(o, o->clip.y0, o->clip.y1);
         return RAST_OK;
     }
-    rast__cov_rows(e, n, c.p, order, o, &ja, &jb);
+    rast__cov_rows(e, n, c.p, order, o, &ja, &jb, 0);
     rast__cov_sort_tops(order, row, sw.live, e, n); /* (row and live: room until the rows) */
     nlive = rast__cov_cancel(order, e, n);
     if (simple) { /* the runs, by ordinate (wb and h: room until the rows) */

@@ -182,6 +182,68 @@ static int64_t rast__pl_winding(const rast__pl *s, uint32_t k0, uint32_t k1, ras
     return w;
 }
 
+/* Is every ring strictly convex, turning once (so simple), and every two
+ * rings apart: their boxes apart, or one ring's vertices all strictly
+ * inside the other (then, the outer being convex, the inner one is too)?
+ * Conditions 1 and 2 hold then, with no sort and no sweep (a disc with
+ * holes of 320 vertices: 0.2 M instructions less).  0 answers nothing: the
+ * sweep decides.  Rings r: vertices pt[first[r] .. first[r + 1]), boxes
+ * box[4 r ..]; ring orientations into dir[] (1 or -1). */
+#define RAST__PL_CONVEX_RINGS 64
+static int rast__pl_convex(const rast_point *pt, const uint32_t *first, const int32_t *box, uint32_t nrings,
+                           int32_t *dir)
+{
+    uint32_t r, q, i;
+    if (nrings > RAST__PL_CONVEX_RINGS) return 0;
+    for (r = 0; r < nrings; r++) { /* strictly convex, one turn */
+        const uint32_t f = first[r], n = first[r + 1] - f;
+        int64_t sg = 0;
+        uint32_t turns = 0;
+        rast_point a = pt[f + n - 2], b = pt[f + n - 1];
+        for (i = 0; i < n; i++) { /* the turn at b, from a to c */
+            const rast_point c = pt[f + i];
+            const int64_t t = rast__cross3(a, b, c), dy0 = (int64_t)b.y - a.y, dy1 = (int64_t)c.y - b.y;
+            if (t == 0 || (sg && (t > 0) != (sg > 0))) return 0;
+            sg = t;
+            /* the direction passes angle 0 going round (-y for a clockwise ring) */
+            turns += t > 0 ? (dy0 < 0 && dy1 >= 0) : (dy0 > 0 && dy1 <= 0);
+            a = b;
+            b = c;
+        }
+        if (turns != 1) return 0;
+        dir[r] = sg > 0 ? 1 : -1;
+    }
+    for (r = 0; r < nrings; r++)
+        for (q = r + 1; q < nrings; q++) {
+            const int32_t *a = box + 4 * r, *b = box + 4 * q;
+            uint32_t in, out;
+            if (a[2] < b[0] || b[2] < a[0] || a[3] < b[1] || b[3] < a[1]) continue; /* boxes apart */
+            if (a[0] < b[0] && a[1] < b[1] && a[2] > b[2] && a[3] > b[3])
+                in = q, out = r;
+            else if (b[0] < a[0] && b[1] < a[1] && b[2] > a[2] && b[3] > a[3])
+                in = r, out = q;
+            else
+                return 0;
+            for (i = first[in]; i < first[in + 1]; i++) { /* strictly inside ring out */
+                const uint32_t f = first[out], n = first[out + 1] - f;
+                const int64_t d = dir[out];
+                const rast_point p = pt[i], v0 = pt[f];
+                uint32_t lo = 1, hi = n - 1;
+                if (d * rast__cross3(v0, pt[f + 1], p) <= 0 || d * rast__cross3(v0, pt[f + n - 1], p) >= 0)
+                    return 0;
+                while (hi - lo > 1) { /* the fan's wedge (v_lo, v_hi) round v0 that holds p */
+                    const uint32_t mid = lo + (hi - lo) / 2;
+                    if (d * rast__cross3(v0, pt[f + mid], p) >= 0)
+                        lo = mid;
+                    else
+                        hi = mid;
+                }
+                if (d * rast__cross3(pt[f + lo], pt[f + hi], p) <= 0) return 0;
+            }
+        }
+    return 1;
+}
+
 int rast__cov_plain(const rast_polygon *poly, uint32_t npoints, rast__arena arena)
 {
     const int64_t lim = RAST_COORD_MAX;
@@ -195,8 +257,10 @@ int rast__cov_plain(const rast_polygon *poly, uint32_t npoints, rast__arena aren
     uint32_t *run = (uint32_t *)rast__take(&arena, ((size_t)npoints + 1) * sizeof(uint32_t));
     uint32_t *first = (uint32_t *)rast__take(&arena, ((size_t)poly->nrings + 1) * sizeof(uint32_t));
     int32_t *box = (int32_t *)rast__take(&arena, (size_t)poly->nrings * 4 * sizeof(int32_t));
+    int32_t *dir = (int32_t *)rast__take(&arena, (size_t)poly->nrings * sizeof(int32_t));
     uint32_t r, i, base, n = 0, pos = 0, neg = 0;
-    if (!pt || !key || !next || !prev || !ord || !tmp || !run || !first || !box || npoints == 0) return 0;
+    if (!pt || !key || !next || !prev || !ord || !tmp || !run || !first || !box || !dir || npoints == 0)
+        return 0;
     for (r = 0, base = 0; r < poly->nrings; base += poly->ring_sizes[r], r++) {
         /* the ring's vertices, each once (edges of length 0 dropped) */
         const uint32_t size = poly->ring_sizes[r];
@@ -230,19 +294,21 @@ int rast__cov_plain(const rast_polygon *poly, uint32_t npoints, rast__arena aren
     s.st = tmp; /* the sweep's array takes tmp's room once the vertices are sorted */
     s.nst = 0;
     s.budget = (uint64_t)npoints * 64 + ((uint64_t)1 << 20);
-    for (i = 0; i < n; i++) ord[i] = i;
-    rast__pl_sort(key, ord, tmp, run, n);
-    for (i = 0; i + 1 < n; i++) /* condition 1 */
-        if (key[ord[i]] == key[ord[i + 1]]) return 0;
-    for (i = 0; i < n; i++) { /* condition 2: at each vertex, its edges that end, then those that start */
-        const uint32_t v = ord[i], in = prev[v];
-        const int in_ends = key[in] < key[v], out_ends = key[next[v]] < key[v];
-        if (in_ends && !rast__pl_remove(&s, in)) return 0;
-        if (out_ends && !rast__pl_remove(&s, v)) return 0;
-        if (!in_ends && !rast__pl_insert(&s, in)) return 0;
-        if (!out_ends && !rast__pl_insert(&s, v)) return 0;
+    if (!rast__pl_convex(pt, first, box, poly->nrings, dir)) {
+        for (i = 0; i < n; i++) ord[i] = i;
+        rast__pl_sort(key, ord, tmp, run, n);
+        for (i = 0; i + 1 < n; i++) /* condition 1 */
+            if (key[ord[i]] == key[ord[i + 1]]) return 0;
+        for (i = 0; i < n; i++) { /* condition 2: at each vertex, its edges that end, then those that start */
+            const uint32_t v = ord[i], in = prev[v];
+            const int in_ends = key[in] < key[v], out_ends = key[next[v]] < key[v];
+            if (in_ends && !rast__pl_remove(&s, in)) return 0;
+            if (out_ends && !rast__pl_remove(&s, v)) return 0;
+            if (!in_ends && !rast__pl_insert(&s, in)) return 0;
+            if (!out_ends && !rast__pl_insert(&s, v)) return 0;
+        }
+        if (poly->nrings > 1 && (uint64_t)poly->nrings * n > s.budget) return 0;
     }
-    if (poly->nrings > 1 && (uint64_t)poly->nrings * n > s.budget) return 0;
     for (r = 0; r < poly->nrings; r++) { /* condition 3 */
         uint32_t k, low = first[r];
         int64_t w0 = 0, w1;

@@ -166,6 +166,8 @@ uint32_t rast__cov_edges_triangles(const rast_point *tris, uint32_t ntris, rast_
  * exact abscissa at the top of row j (which e spans: yt <= j P < yt + dy)
  * is qx + qxr/dy: stepped from the row above by qxs + qxsr/dy, else two
  * divisions (dx (jP - yt) < 2^56; the remainder times 2^HQ < 2^58). */
+void rast__cov_qtop_set(rast__cedge *e, int32_t j, int32_t p, int32_t hq);
+
 static inline int64_t rast__cov_qtop(rast__cedge *e, int32_t j, int32_t p, int32_t hq)
 {
     if (e->qrow == j - 1) {
@@ -177,18 +179,7 @@ static inline int64_t rast__cov_qtop(rast__cedge *e, int32_t j, int32_t p, int32
         }
         e->qrow = j;
     } else if (e->qrow != j) {
-        const int64_t d = (int64_t)j * p - e->yt;
-        int64_t q, r, q2, r2;
-        if (d >= 0 && d <= p) { /* (an edge's first row top: |dx d 2^HQ| <= 2^58, one division) */
-            rast__floordivmod((int64_t)e->dx * d * ((int64_t)1 << hq), e->dy, &q2, &r2);
-            e->qx = (int64_t)e->xt * ((int64_t)1 << hq) + q2;
-        } else {
-            rast__floordivmod((int64_t)e->dx * d, e->dy, &q, &r);
-            rast__floordivmod(r * ((int64_t)1 << hq), e->dy, &q2, &r2);
-            e->qx = ((int64_t)e->xt + q) * ((int64_t)1 << hq) + q2;
-        }
-        e->qxr = (uint32_t)r2;
-        e->qrow = j;
+        rast__cov_qtop_set(e, j, p, hq); /* (once an edge, out of line) */
     }
     return e->qx;
 }

@@ -352,12 +352,14 @@ static void rast__cov_step60(uint64_t n, uint64_t d, rast__i128 *q, uint64_t *re
 }
 
 /* e's steps for the exact way (2^-60 pixel): per row, xs + xsr/dy; per
- * column, ts + tsr/|dx|; its caches unset. */
-static void rast__cov_steps_exact(rast__cedge *e)
+ * column, ts + tsr/|dx|; its caches unset.  The column step of the quick
+ * way (2^-30 pixel) comes with it: dy 2^30 / |dx| into *q30, *r30 (0 for
+ * a vertical edge). */
+static void rast__cov_steps_exact(rast__cedge *e, uint64_t *q30, uint64_t *r30)
 {
-    uint64_t adx = (uint64_t)(e->dx < 0 ? -(int64_t)e->dx : e->dx), rem, q30, r30;
+    uint64_t adx = (uint64_t)(e->dx < 0 ? -(int64_t)e->dx : e->dx), rem;
     rast__i128 q;
-    rast__cov_step60(adx, (uint64_t)e->dy, &q, &rem, &q30, &r30);
+    rast__cov_step60(adx, (uint64_t)e->dy, &q, &rem, q30, r30);
     if (e->dx >= 0) {
         e->xs = q;
         e->xsr = (int64_t)rem;
@@ -370,8 +372,9 @@ static void rast__cov_steps_exact(rast__cedge *e)
     }
     e->ts = rast__i128_u64(0);
     e->tsr = 0;
-    if (adx) { /* the column steps: dy 2^60 / |dx| */
-        rast__cov_step60((uint64_t)e->dy, adx, &e->ts, &rem, &q30, &r30);
+    *q30 = *r30 = 0;
+    if (adx) { /* the column steps: dy 2^60 / |dx|, and dy 2^30 / |dx| */
+        rast__cov_step60((uint64_t)e->dy, adx, &e->ts, &rem, q30, r30);
         e->tsr = (uint32_t)rem;
     }
     e->rowx = INT32_MIN;
@@ -380,15 +383,13 @@ static void rast__cov_steps_exact(rast__cedge *e)
     e->cn = -1;
 }
 
-/* e's steps for the quick way (2^-30 pixel): per column, dy 2^30 / |dx|
- * (|dx| < 2^28); per row, dx 2^30 / dy; its steppers unset.  Two
- * divisions, where the exact way's steps take ten. */
-static void rast__cov_steps_quick(rast__cedge *e)
+/* e's steps for the quick way (2^-30 pixel), the column step q30, r30
+ * given: per row, dx 2^30 / dy (|dx| <= 2^28); its steppers unset. */
+static void rast__cov_steps_quick(rast__cedge *e, uint64_t q30, uint64_t r30)
 {
-    const uint64_t adx = (uint64_t)(e->dx < 0 ? -(int64_t)e->dx : e->dx), a = (uint64_t)e->dy << 30;
     int64_t qq, rr;
-    e->qts = adx ? (int64_t)(a / adx) : 0;
-    e->qtsr = adx ? (uint32_t)(a % adx) : 0;
+    e->qts = (int64_t)q30;
+    e->qtsr = (uint32_t)r30;
     rast__floordivmod((int64_t)e->dx * ((int64_t)1 << 30), e->dy, &qq, &rr);
     e->qxs = qq;
     e->qxsr = (uint32_t)rr;
@@ -398,14 +399,32 @@ static void rast__cov_steps_quick(rast__cedge *e)
 
 static void rast__cov_steps(rast__cedge *e)
 {
-    rast__cov_steps_exact(e);
-    rast__cov_steps_quick(e);
+    uint64_t q30, r30;
+    rast__cov_steps_exact(e, &q30, &r30);
+    rast__cov_steps_quick(e, q30, r30);
 }
 
 void rast__cov_exact_steps(rast__cedge *e, uint32_t n)
 {
+    uint64_t q30, r30;
     uint32_t i;
-    for (i = 0; i < n; i++) rast__cov_steps_exact(&e[i]);
+    for (i = 0; i < n; i++) rast__cov_steps_exact(&e[i], &q30, &r30);
+}
+
+void rast__cov_qtop_set(rast__cedge *e, int32_t j, int32_t p, int32_t hq)
+{
+    const int64_t d = (int64_t)j * p - e->yt;
+    int64_t q, r, q2, r2;
+    if (d >= 0 && d <= p) { /* (an edge's first row top: |dx d 2^HQ| <= 2^59, one division) */
+        rast__floordivmod((int64_t)e->dx * d * ((int64_t)1 << hq), e->dy, &q2, &r2);
+        e->qx = (int64_t)e->xt * ((int64_t)1 << hq) + q2;
+    } else {
+        rast__floordivmod((int64_t)e->dx * d, e->dy, &q, &r);
+        rast__floordivmod(r * ((int64_t)1 << hq), e->dy, &q2, &r2);
+        e->qx = ((int64_t)e->xt + q) * ((int64_t)1 << hq) + q2;
+    }
+    e->qxr = (uint32_t)r2;
+    e->qrow = j;
 }
 
 /* e's abscissa at the end tn of a piece that starts at t (where it is
@@ -1511,10 +1530,12 @@ void rast__cov_rows(rast__cedge *e, uint32_t n, int32_t p, int32_t *order, const
     uint32_t i;
     for (i = 0; i < n; i++) {
         order[i] = (int32_t)i;
-        if (quick)
-            rast__cov_steps_quick(&e[i]);
-        else
+        if (quick) { /* the column step by one division, not with the exact ones */
+            const uint64_t adx = (uint64_t)(e[i].dx < 0 ? -(int64_t)e[i].dx : e[i].dx), a = (uint64_t)e[i].dy << 30;
+            rast__cov_steps_quick(&e[i], adx ? a / adx : 0, adx ? a % adx : 0);
+        } else {
             rast__cov_steps(&e[i]);
+        }
         if (e[i].yt < ymin) ymin = e[i].yt;
         if ((int64_t)e[i].yt + e[i].dy > ymax) ymax = (int64_t)e[i].yt + e[i].dy;
     }

@@ -905,8 +905,9 @@ RAST_API rast_status rast_aa_method_info(rast_aa_method method, const char **nam
 /* Scratch bytes a coverage call with `opts` needs for `npoints` vertices
  * (a triangle batch: 3 per triangle) and a clip `width` x `height`: for
  * area and accumulate, 372 bytes per vertex and 74 per clip column (never
- * the rows: the cells of a band of four, for long edges); for ssK, the AET's scratch on the K-times finer clip
- * (rast_scratch_size), 5 bytes, a bit and K^2/8 bytes per clip column,
+ * the rows; a band of four rows of cells, for long edges); for ssK, the
+ * AET's scratch on the K-times finer clip (rast_scratch_size), 5 bytes, a
+ * bit and K^2/8 bytes per clip column,
  * 8 per level of count (K^2 + 1) and a copy of the vertices.  Errors: RAST_E_NULL, RAST_E_ARG (method, rule or sample),
  * RAST_E_SUBPIXEL, RAST_E_SIZE, RAST_E_TOO_MANY. */
 RAST_API rast_status rast_coverage_scratch_size(const rast_coverage_opts *opts,

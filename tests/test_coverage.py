@@ -251,7 +251,13 @@ def _accumulated(rings, shape, rule, s):
                     for (x0, y0), (x1, y1) in zip(snapped, snapped[1:] + snapped[:1]))
         a = exact_area([ring], shape, "nonzero", s) * (1 if area2 > 0 else -1)
         total = a if total is None else total + a
-    out = np.empty(shape, object)
+    return rule_applied(total, rule)
+
+
+def rule_applied(total, rule):
+    """The rule applied to each pixel's integral of the winding number
+    (exact): non-zero takes min(|.|, 1), even-odd folds |.| mod 2."""
+    out = np.empty(total.shape, object)
     for idx, v in np.ndenumerate(total):
         v = abs(v)
         if rule == "nonzero":

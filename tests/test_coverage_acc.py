@@ -17,7 +17,7 @@ from hypothesis import given, settings, strategies as st
 
 import rastrum
 import strategies as S_
-from test_coverage import M_OF, _accumulated, _n_m, check_area, exact_area
+from test_coverage import M_OF, _accumulated, _n_m, check_area, exact_area, rule_applied
 from test_coverage_fast import _star_shaped
 
 SHAPE = (7, 9)
@@ -207,14 +207,7 @@ def test_rows_of_many_parts_inside_a_band(rule):
     a1 = exact_area([tri], TALL, "nonzero", 8)
     a2 = exact_area([thin], TALL, "nonzero", 8)
     sign = (1 if _area2(tri) > 0 else -1) * (1 if _area2(thin) > 0 else -1)
-    want = np.empty(TALL, object)
-    for idx, v in np.ndenumerate(a1 * 300 + a2 * sign):
-        v = abs(v)
-        if rule == "nonzero":
-            want[idx] = min(v, F(1))
-        else:
-            v -= 2 * (v.numerator // (2 * v.denominator))
-            want[idx] = 2 - v if v > 1 else v
+    want = rule_applied(a1 * 300 + a2 * sign, rule)
     rings = [tri] * 300 + [thin]
     n, m = _n_m(rings, 8)
     for dtype in (np.uint8, np.uint16):

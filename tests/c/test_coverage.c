@@ -757,6 +757,26 @@ static void test_errors(void)
 
 /* ---- spans with coverage values ---------------------------------------------------- */
 
+/* A run handed to a spans callback, into img (row stride w, the clip's
+ * pixel (clip->x0, clip->y0) first): *ok cleared unless it lies in the
+ * clip, after the last run (*y, *x1), and holds no 0. */
+static void take_run(uint8_t *img, int32_t w, const rast_rect *clip, int32_t *py, int32_t *px1, int32_t *ok,
+                     int32_t y, int32_t x0, int32_t x1, const uint8_t *v)
+{
+    int32_t x;
+    if (x0 >= x1 || y < clip->y0 || y >= clip->y1 || x0 < clip->x0 || x1 > clip->x1 ||
+        (y == *py && x0 <= *px1) || y < *py) {
+        *ok = 0;
+        return;
+    }
+    for (x = x0; x < x1; x++) {
+        if (!v[x - x0]) *ok = 0;
+        img[(size_t)(y - clip->y0) * (size_t)w + (size_t)(x - clip->x0)] = v[x - x0];
+    }
+    *py = y;
+    *px1 = x1;
+}
+
 typedef struct span_img {
     uint8_t img[H][W];
     rast_rect clip;
@@ -766,19 +786,8 @@ typedef struct span_img {
 static void take_span(void *user, int32_t y, int32_t x0, int32_t x1, const uint8_t *v)
 {
     span_img *s = (span_img *)user;
-    int32_t x;
     s->calls++;
-    if (x0 >= x1 || y < s->clip.y0 || y >= s->clip.y1 || x0 < s->clip.x0 || x1 > s->clip.x1 ||
-        (y == s->y && x0 <= s->x1) || y < s->y) {
-        s->ok = 0;
-        return;
-    }
-    for (x = x0; x < x1; x++) {
-        if (!v[x - x0]) s->ok = 0;
-        s->img[y - s->clip.y0][x - s->clip.x0] = v[x - x0];
-    }
-    s->y = y;
-    s->x1 = x1;
+    take_run(&s->img[0][0], W, &s->clip, &s->y, &s->x1, &s->ok, y, x0, x1, v);
 }
 
 /* Both spans calls (a polygon of 9 vertices, or the batch of 3 triangles
@@ -937,18 +946,7 @@ typedef struct long_img {
 static void take_long_span(void *user, int32_t y, int32_t x0, int32_t x1, const uint8_t *v)
 {
     long_img *s = (long_img *)user;
-    int32_t x;
-    if (x0 >= x1 || y < s->clip.y0 || y >= s->clip.y1 || x0 < s->clip.x0 || x1 > s->clip.x1 ||
-        (y == s->y && x0 <= s->x1) || y < s->y) {
-        s->ok = 0;
-        return;
-    }
-    for (x = x0; x < x1; x++) {
-        if (!v[x - x0]) s->ok = 0;
-        s->img[y - s->clip.y0][x - s->clip.x0] = v[x - x0];
-    }
-    s->y = y;
-    s->x1 = x1;
+    take_run(&s->img[0][0], WL, &s->clip, &s->y, &s->x1, &s->ok, y, x0, x1, v);
 }
 
 static void test_long_edges(void)

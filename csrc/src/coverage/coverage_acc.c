@@ -66,7 +66,7 @@ typedef struct rast__acc {
     uint64_t *acc;     /* clip width + 1 cells */
     int32_t x0, x1;    /* clip columns */
     uint64_t *blk;     /* a bit for each cell touched (the last, width, not: never read) */
-    uint32_t *z;       /* width words, all 0 between rows (the dense rows' sums) */
+    uint32_t *z;       /* width words: a dense row's sums, cleared as they are read */
     int32_t lo, hi;    /* cells touched this row: [lo, hi] (lo > hi: none) */
     int32_t p, hq;     /* P = 2^S; HQ = 30 - S */
     int dense;         /* this row: no bits, every cell in [lo, hi] read */
@@ -84,7 +84,7 @@ static void rast__acc_t_first(rast__cedge *e, int64_t X, const rast__acc *a)
 }
 
 /* a's fields for the clip of o, S = s, cells acc[] and bits[] (cleared),
- * nothing touched; dense rows as nrow says (RAST__ACC_DENSE). */
+ * sums z[], nothing touched; dense rows as nrow says (RAST__ACC_DENSE). */
 static void rast__acc_init(rast__acc *a, uint64_t *acc, uint64_t *bits, uint32_t *z, const rast__cov_out *o,
                            int32_t s, int32_t nrow)
 {
@@ -341,7 +341,6 @@ RAST__APART void rast__acc_cols(rast__acc *a, rast__cedge *e, int64_t off, int64
     e->qX += cb - ca;
 }
 
-
 /* e's parts in rows j0 + r, r = r0 .. r1, of a band whose row r has the
  * cells v[r] (v[r].p, .hq, .x0, .x1 alike), skipping the rows whose ok[r]
  * is 0; thru the last row that e runs through, whole, if e lies in the
@@ -483,7 +482,7 @@ RAST__HOT uint32_t rast__acc_level24(uint32_t *c, unsigned char *out, uint32_t w
     return (uint32_t)(((y & 0xFFFFFFu) - w) > lim);
 }
 
-RAST__HOT uint32_t rast__acc_levels24(uint32_t *restrict acc, unsigned char *restrict row, int32_t lo,
+RAST__HOT uint32_t rast__acc_levels24(uint32_t *restrict z, unsigned char *restrict row, int32_t lo,
                                       int32_t hi, uint32_t w, rast_fill_rule rule)
 {
     const uint32_t lim = ((uint32_t)1 << 24) - 2 * w;
@@ -491,11 +490,11 @@ RAST__HOT uint32_t rast__acc_levels24(uint32_t *restrict acc, unsigned char *res
     size_t n = (size_t)(hi - lo), i;
     /* pointers and size_t, not int indices: with -fwrapv (Python's flags)
      * an int index may wrap, and the compiler would not vectorise */
-    acc += lo;
+    z += lo;
     row += lo;
-    for (; n >= 16; n -= 16, acc += 16, row += 16) /* 16 at a time: no tail loop to add */
-        for (i = 0; i < 16; i++) bad |= rast__acc_level24(acc + i, row + i, w, lim, rule);
-    for (i = 0; i < n; i++) bad |= rast__acc_level24(acc + i, row + i, w, lim, rule);
+    for (; n >= 16; n -= 16, z += 16, row += 16) /* 16 at a time: no tail loop to add */
+        for (i = 0; i < 16; i++) bad |= rast__acc_level24(z + i, row + i, w, lim, rule);
+    for (i = 0; i < n; i++) bad |= rast__acc_level24(z + i, row + i, w, lim, rule);
     return bad;
 }
 

@@ -162,12 +162,13 @@ static inline int32_t rast__run_y(const rast__cedge *e)
 uint32_t rast__cov_edges_polygon(const rast_polygon *poly, rast__cedge *e);
 uint32_t rast__cov_edges_triangles(const rast_point *tris, uint32_t ntris, rast__cedge *e);
 
+void rast__cov_qtop_set(rast__cedge *e, int32_t j, int32_t p, int32_t hq);
 /* The quick steppers (units Q = 2^-30 pixel; HQ = 30 - S, P = 2^S).  e's
  * exact abscissa at the top of row j (which e spans: yt <= j P < yt + dy)
- * is qx + qxr/dy: stepped from the row above by qxs + qxsr/dy, else two
- * divisions (dx (jP - yt) < 2^56; the remainder times 2^HQ < 2^58). */
-void rast__cov_qtop_set(rast__cedge *e, int32_t j, int32_t p, int32_t hq);
-
+ * is qx + qxr/dy: stepped from the row above by qxs + qxsr/dy, else set
+ * by rast__cov_qtop_set (out of line: once an edge), in one division at
+ * the edge's first row top (dx (jP - yt) 2^HQ <= 2^58), two elsewhere
+ * (dx (jP - yt) < 2^56; the remainder times 2^HQ < 2^58). */
 static inline int64_t rast__cov_qtop(rast__cedge *e, int32_t j, int32_t p, int32_t hq)
 {
     if (e->qrow == j - 1) {

@@ -271,13 +271,19 @@ static int32_t rast__acc_thru(const rast__cedge *e, const rast__acc *a)
 }
 
 /* e's part in row j (rel0 = e's top - the row's): rast__acc_ends, then
- * rast__acc_part */
-RAST__APART void rast__acc_row_part(rast__acc *a, rast__cedge *e, int32_t j, int64_t rel0)
+ * rast__acc_part; inline in the rows' walk, out of line in the bands'
+ * (rast__acc_row_part), where it is the rare way */
+RAST__HOT void rast__acc_row_part_in(rast__acc *a, rast__cedge *e, int32_t j, int64_t rel0)
 {
     int64_t xa, xb;
     uint64_t ta, tb;
     rast__acc_ends(e, j, rel0, a, &xa, &ta, &xb, &tb);
     rast__acc_part(a, e, -rel0 * ((int64_t)1 << a->hq), xa, ta, xb, tb, e->dir);
+}
+
+RAST__APART void rast__acc_row_part(rast__acc *a, rast__cedge *e, int32_t j, int64_t rel0)
+{
+    rast__acc_row_part_in(a, e, j, rel0);
 }
 
 /* The part of e through a whole row from xa (its top) to xb (its bottom)
@@ -800,14 +806,7 @@ static void rast__acc_by_rows(const rast__acc_walk *w, rast__acc *a)
              * (RAST__ACC_DENSE parts or more a pixel of width): then every
              * cell from the first touched to the last is read. */
             a->dense = (int64_t)nrow * RAST__ACC_DENSE >= w->width;
-            for (k = 0; k < nrow; k++) {
-                rast__cedge *ed = &e[row[k]];
-                const int64_t rel0 = (int64_t)ed->yt - Yj;
-                int64_t xa, xb;
-                uint64_t ta, tb;
-                rast__acc_ends(ed, j, rel0, a, &xa, &ta, &xb, &tb);
-                rast__acc_part(a, ed, -rel0 * ((int64_t)1 << a->hq), xa, ta, xb, tb, ed->dir);
-            }
+            for (k = 0; k < nrow; k++) rast__acc_row_part_in(a, &e[row[k]], j, (int64_t)e[row[k]].yt - Yj);
             if (rast__acc_emit(a, o, j, w->rule, m, ((uint64_t)nrow + 1) * m << 24)) continue;
         }
         if (!exact) { /* the first exact row (rare) */
@@ -920,7 +919,6 @@ rast_status rast__cov_acc(rast__cedge *e, uint32_t n, int32_t s, rast_fill_rule 
         const int64_t r0 = rast__acc_floorp(e[i].yt, &v[0]) - w.ja;
         w.key[i] = r0 < 0 ? 0 : (int32_t)r0;
         w.last[i] = (int32_t)(-rast__acc_floorp(-((int64_t)e[i].yt + e[i].dy), &v[0]) - 1);
-        w.thru[i] = rast__acc_thru(&e[i], &v[0]);
         rows += (uint64_t)((int64_t)w.last[i] - (r0 < 0 ? w.ja : r0 + w.ja) + 1);
     }
     rast__cov_radix_sort(w.order, w.tmp, w.key, n);
@@ -936,6 +934,7 @@ rast_status rast__cov_acc(rast__cedge *e, uint32_t n, int32_t s, rast_fill_rule 
         for (k = 0; k < w.nw; k++) w.bits[k] = 0;
         rast__acc_by_rows(&w, &v[0]);
     } else {
+        for (i = 0; i < n; i++) w.thru[i] = rast__acc_thru(&e[i], &v[0]);
         for (r = 0; r < RAST__ACC_BAND; r++) {
             uint64_t *c = cells + (size_t)r * ((size_t)w.width + 1), *b = bandbits + (size_t)r * (size_t)w.nw;
             for (k = 0; k <= w.width; k++) c[k] = 0;

@@ -415,7 +415,7 @@ void rast__cov_qtop_set(rast__cedge *e, int32_t j, int32_t p, int32_t hq)
 {
     const int64_t d = (int64_t)j * p - e->yt;
     int64_t q, r, q2, r2;
-    if (d >= 0 && d <= p) { /* (an edge's first row top: |dx d 2^HQ| <= 2^59, one division) */
+    if (d >= 0 && d <= p) { /* (an edge's first row top: |dx d 2^HQ| <= 2^58, one division) */
         rast__floordivmod((int64_t)e->dx * d * ((int64_t)1 << hq), e->dy, &q2, &r2);
         e->qx = (int64_t)e->xt * ((int64_t)1 << hq) + q2;
     } else {
@@ -494,8 +494,11 @@ size_t rast__cov_area_scratch(uint32_t n, int32_t width)
     b = rast__size_add(b, 2 * rast__align(rast__size_mul((size_t)width, sizeof(rast__i128))));
     /* rast__cov_acc's band: RAST__ACC_BAND rows of width + 1 cells and
      * their bits */
-    b = rast__size_add(b, rast__align(rast__size_mul(RAST__ACC_BAND, rast__size_mul((size_t)width + 1, sizeof(uint64_t)))));
-    return rast__size_add(b, rast__align(rast__size_mul(RAST__ACC_BAND, rast__size_mul(((size_t)width + 63) / 64, sizeof(uint64_t)))));
+    b = rast__size_add(b, rast__align(rast__size_mul(RAST__ACC_BAND,
+                                                     rast__size_mul((size_t)width + 1, sizeof(uint64_t)))));
+    return rast__size_add(b, rast__align(rast__size_mul(RAST__ACC_BAND,
+                                                        rast__size_mul(((size_t)width + 63) / 64,
+                                                                       sizeof(uint64_t)))));
 }
 
 /* Heapsort of the indices ix[0..n) by the edges' top ordinate. */
@@ -1531,7 +1534,8 @@ void rast__cov_rows(rast__cedge *e, uint32_t n, int32_t p, int32_t *order, const
     for (i = 0; i < n; i++) {
         order[i] = (int32_t)i;
         if (quick) { /* the column step by one division, not with the exact ones */
-            const uint64_t adx = (uint64_t)(e[i].dx < 0 ? -(int64_t)e[i].dx : e[i].dx), a = (uint64_t)e[i].dy << 30;
+            const uint64_t adx = (uint64_t)(e[i].dx < 0 ? -(int64_t)e[i].dx : e[i].dx);
+            const uint64_t a = (uint64_t)e[i].dy << 30;
             rast__cov_steps_quick(&e[i], adx ? a / adx : 0, adx ? a % adx : 0);
         } else {
             rast__cov_steps(&e[i]);

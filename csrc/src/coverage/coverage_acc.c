@@ -289,11 +289,11 @@ RAST__APART void rast__acc_row_part(rast__acc *a, rast__cedge *e, int32_t j, int
 /* The part of e through a whole row from xa (its top) to xb (its bottom)
  * in columns ca != cb of the clip (relative), its column stepper at the
  * next vertical it crosses (as the part in the row above leaves it) or
- * set there; off as rast__acc_part's.  The verticals between are crossed
- * at ordinates in [0, QT] (floors of values in it) in order: no clamping.
- * Out of line, so that the rows' loop keeps its registers. */
-RAST__APART void rast__acc_cols(rast__acc *a, rast__cedge *e, int64_t off, int64_t xa, int64_t xb,
-                                int64_t ca, int64_t cb)
+ * set there; off as rast__acc_part's; right: e goes right (ca < cb), a
+ * constant at each call.  The verticals between are crossed at ordinates
+ * in [0, QT] (floors of values in it) in order: no clamping. */
+RAST__HOT void rast__acc_cols_in(rast__acc *a, rast__cedge *e, int64_t off, int64_t xa, int64_t xb,
+                                 int64_t ca, int64_t cb, int right)
 {
     const uint64_t fm = QT - 1, neg = e->dir < 0 ? ~(uint64_t)0 : 0;
     const uint32_t adx = (uint32_t)(e->dx < 0 ? -e->dx : e->dx), qtsr = e->qtsr;
@@ -301,7 +301,7 @@ RAST__APART void rast__acc_cols(rast__acc *a, rast__cedge *e, int64_t off, int64
     uint64_t *acc = a->acc, f = (uint64_t)xa & fm, t, d, prev = 0;
     int64_t qt, col;
     uint32_t qtr;
-    const int64_t X = ca + (int64_t)(ca < cb) + x0; /* the first vertical crossed */
+    const int64_t X = ca + (int64_t)right + x0; /* the first vertical crossed */
     if (e->qX != X) rast__acc_t_first(e, X, a);
     qt = e->qt - off;
     qtr = e->qtr;
@@ -309,9 +309,9 @@ RAST__APART void rast__acc_cols(rast__acc *a, rast__cedge *e, int64_t off, int64
      * column's, of height d / 2^20 between two verticals, adds d to its
      * cell and the next (rast__acc_put with f0 + f1 = QT), which the loop
      * carries: prev, the last piece's share for the next cell */
-    rast__acc_put(acc, ca, f, ca < cb ? QT : 0, (uint64_t)qt, neg);
+    rast__acc_put(acc, ca, f, right ? QT : 0, (uint64_t)qt, neg);
     t = (uint64_t)qt;
-    if (ca < cb) {
+    if (right) {
         for (col = ca + 1; col != cb; col++) {
             qt += qts;
             qtr += qtsr;
@@ -347,13 +347,98 @@ RAST__APART void rast__acc_cols(rast__acc *a, rast__cedge *e, int64_t off, int64
     e->qX += cb - ca;
 }
 
+/* Out of line, one for each direction, so that the rows' loop keeps its
+ * registers and each direction's branches their own history (the edges of
+ * a shape alternate: one function's branch on the direction mispredicted
+ * about a fifth of the star's mispredictions). */
+RAST__APART void rast__acc_cols_r(rast__acc *a, rast__cedge *e, int64_t off, int64_t xa, int64_t xb,
+                                  int64_t ca, int64_t cb)
+{
+    rast__acc_cols_in(a, e, off, xa, xb, ca, cb, 1);
+}
+
+RAST__APART void rast__acc_cols_l(rast__acc *a, rast__cedge *e, int64_t off, int64_t xa, int64_t xb,
+                                  int64_t ca, int64_t cb)
+{
+    rast__acc_cols_in(a, e, off, xa, xb, ca, cb, 0);
+}
+
+/* The row stepper of an edge that runs through rows, in locals. */
+typedef struct rast__acc_run {
+    int64_t qx, qxs, bias;
+    uint64_t neg;
+    uint32_t qxr, qxsr, dy;
+} rast__acc_run;
+
+/* e's part in the row of cells a that it runs through, whole, at the
+ * stepper u (at the row's top; moved to its bottom), off as
+ * rast__acc_part's; right as rast__acc_cols_in's. */
+RAST__HOT void rast__acc_run_row(rast__acc *a, rast__cedge *e, rast__acc_run *u, int64_t off, int right)
+{
+    const uint64_t fm = QT - 1;
+    int64_t xb = u->qx + u->qxs, ca, cb;
+    u->qxr += u->qxsr;
+    xb += rast__acc_carry(&u->qxr, u->dy);
+    /* columns of the clip (e lies in it: no clip tests) */
+    ca = (int64_t)(((uint64_t)u->qx - (uint64_t)u->bias) >> QF) - ((int64_t)1 << 32);
+    cb = (int64_t)(((uint64_t)xb - (uint64_t)u->bias) >> QF) - ((int64_t)1 << 32);
+    if (ca == cb) {
+        rast__acc_put(a->acc, ca, (uint64_t)u->qx & fm, (uint64_t)xb & fm, QT, u->neg);
+        rast__acc_mark(a, (int32_t)ca, (int32_t)ca + 1);
+    } else if (right) {
+        rast__acc_cols_r(a, e, off, u->qx, xb, ca, cb);
+    } else {
+        rast__acc_cols_l(a, e, off, u->qx, xb, ca, cb);
+    }
+    u->qx = xb;
+}
+
+/* Every row of the band ok? */
+static inline int rast__acc_all(const unsigned char *ok)
+{
+    int r, all = 1;
+    for (r = 0; r < RAST__ACC_BAND; r++) all &= ok[r];
+    return all;
+}
+
+/* Rows r .. rend of the band (cells v[r]; ok[r] each), which e runs
+ * through, from the row stepper's row r (off from e's top to row r's);
+ * returns the first row not walked (past rend, or one whose ok is 0).
+ * A whole band takes four rows in a row, with no loop (its exit
+ * mispredicted once an edge and band). */
+RAST__HOT int32_t rast__acc_run_rows(rast__acc *v, const unsigned char *ok, rast__cedge *e, int32_t r,
+                                     int32_t rend, int64_t off, int right)
+{
+    rast__acc_run u;
+    u.qx = e->qx;
+    u.qxr = e->qxr;
+    u.qxs = e->qxs;
+    u.qxsr = e->qxsr;
+    u.dy = (uint32_t)e->dy;
+    u.neg = e->dir < 0 ? ~(uint64_t)0 : 0;
+    u.bias = (int64_t)v->x0 * (int64_t)QT - ((int64_t)1 << 62);
+    if (r == 0 && rend == RAST__ACC_BAND - 1 && rast__acc_all(ok)) {
+        for (; r < RAST__ACC_BAND; r += 4, off += 4 * (int64_t)QT) { /* (RAST__ACC_BAND: 4 or 8) */
+            rast__acc_run_row(&v[r], e, &u, off, right);
+            rast__acc_run_row(&v[r + 1], e, &u, off + (int64_t)QT, right);
+            rast__acc_run_row(&v[r + 2], e, &u, off + 2 * (int64_t)QT, right);
+            rast__acc_run_row(&v[r + 3], e, &u, off + 3 * (int64_t)QT, right);
+        }
+    } else {
+        for (; r <= rend && ok[r]; r++, off += (int64_t)QT) rast__acc_run_row(&v[r], e, &u, off, right);
+    }
+    e->qx = u.qx;
+    e->qxr = u.qxr;
+    return r;
+}
+
 /* e's parts in rows j0 + r, r = r0 .. r1, of a band whose row r has the
  * cells v[r] (v[r].p, .hq, .x0, .x1 alike), skipping the rows whose ok[r]
  * is 0; thru the last row that e runs through, whole, if e lies in the
  * clip (rast__acc_thru), else below any.  The rows that it runs through,
  * with its row stepper at the row's top (qrow; as the part in the row
- * above leaves it) go the quick way, the row stepper in locals from row
- * to row; every other row's part goes to rast__acc_row_part. */
+ * above leaves it) go the quick way (rast__acc_run_rows); every other
+ * row's part goes to rast__acc_row_part. */
 RAST__APART void rast__acc_edge(rast__acc *v, const unsigned char *ok, rast__cedge *e, int32_t j0,
                                 int32_t r0, int32_t r1, int32_t thru)
 {
@@ -367,29 +452,9 @@ RAST__APART void rast__acc_edge(rast__acc *v, const unsigned char *ok, rast__ced
             r++;
         } else if (rel0 <= 0 && r <= rthru && e->qrow == j) {
             const int32_t rend = rthru < r1 ? (int32_t)rthru : r1;
-            const uint64_t fm = QT - 1, neg = e->dir < 0 ? ~(uint64_t)0 : 0;
-            const uint32_t dy = (uint32_t)e->dy, qxsr = e->qxsr;
-            const int64_t qxs = e->qxs, bias = (int64_t)v->x0 * (int64_t)QT - ((int64_t)1 << 62);
-            int64_t qx = e->qx, off = -rel0 * ((int64_t)1 << hq);
-            uint32_t qxr = e->qxr;
-            for (; r <= rend && ok[r]; r++, off += (int64_t)QT) {
-                rast__acc *a = &v[r];
-                int64_t xb = qx + qxs, ca, cb;
-                qxr += qxsr;
-                xb += rast__acc_carry(&qxr, dy);
-                /* columns of the clip (e lies in it: no clip tests) */
-                ca = (int64_t)(((uint64_t)qx - (uint64_t)bias) >> QF) - ((int64_t)1 << 32);
-                cb = (int64_t)(((uint64_t)xb - (uint64_t)bias) >> QF) - ((int64_t)1 << 32);
-                if (ca == cb) {
-                    rast__acc_put(a->acc, ca, (uint64_t)qx & fm, (uint64_t)xb & fm, QT, neg);
-                    rast__acc_mark(a, (int32_t)ca, (int32_t)ca + 1);
-                } else {
-                    rast__acc_cols(a, e, off, qx, xb, ca, cb);
-                }
-                qx = xb;
-            }
-            e->qx = qx;
-            e->qxr = qxr;
+            const int64_t off = -rel0 * ((int64_t)1 << hq);
+            r = e->dx > 0 ? rast__acc_run_rows(v, ok, e, r, rend, off, 1)
+                          : rast__acc_run_rows(v, ok, e, r, rend, off, 0);
             e->qrow = j0 + r;
         } else {
             rast__acc_row_part(&v[r], e, j, rel0);
@@ -446,12 +511,14 @@ RAST__HOT void rast__acc_sum24(uint64_t *restrict acc, uint32_t *restrict z, int
     uint64_t v = (uint64_t)1 << 62, *c = acc + lo;
     size_t n = (size_t)(hi - lo), i;
     z += lo;
-    for (; n >= 4; n -= 4, c += 4, z += 4) { /* (4 a turn: a quarter of the loop's count) */
-        for (i = 0; i < 4; i++) {
-            v += c[i];
-            z[i] = (uint32_t)(v >> 27);
-        }
-        for (i = 0; i < 4; i++) c[i] = 0;
+    for (; n >= 4; n -= 4, c += 4, z += 4) { /* (4 a turn, written out: -O2 does not unroll) */
+        const uint64_t v0 = v + c[0], v1 = v0 + c[1], v2 = v1 + c[2];
+        v = v2 + c[3];
+        z[0] = (uint32_t)(v0 >> 27);
+        z[1] = (uint32_t)(v1 >> 27);
+        z[2] = (uint32_t)(v2 >> 27);
+        z[3] = (uint32_t)(v >> 27);
+        c[0] = c[1] = c[2] = c[3] = 0;
     }
     for (i = 0; i < n; i++) {
         v += c[i];
@@ -850,9 +917,9 @@ static void rast__acc_by_bands(const rast__acc_walk *w, rast__acc *v)
             v[r].dense = (int64_t)cnt[r] * RAST__ACC_DENSE >= w->width;
         }
         for (k = 0; k < nrow; k++) {
-            const int32_t f = key[row[k]] + ja;
-            rast__acc_edge(v, ok, &e[row[k]], j0, f > j0 ? f - j0 : 0,
-                           (last[row[k]] < j1 - 1 ? last[row[k]] : j1 - 1) - j0, w->thru[row[k]]);
+            const int32_t ek = row[k], f = key[ek] + ja;
+            rast__acc_edge(v, ok, &e[ek], j0, f > j0 ? f - j0 : 0, (last[ek] < j1 - 1 ? last[ek] : j1 - 1) - j0,
+                           w->thru[ek]);
         }
         for (r = 0; r < j1 - j0; r++) {
             const int32_t j = j0 + r;

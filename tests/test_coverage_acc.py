@@ -267,3 +267,26 @@ def test_a_level_just_past_a_tie_is_exact_in_a_band(method, rule):
         out = rastrum.polygon_coverage(rings, shape, rule=rule, method=method, dtype=dtype, subpixel_bits=16)
         assert out[1, 2] == want
         check_area(out, exact, M_OF[dtype], n, m, "%s %s" % (method, rule))
+
+
+@pytest.mark.parametrize("rule", ["nonzero", "evenodd"])
+def test_steppers_exact_over_a_thousand_crossings(rule):
+    """Edges of 1,100 rows that cross a vertical in most rows, and one that
+    crosses several a row: each crossing's ordinate comes from the last by
+    a quotient and a remainder, so an error in a carry would add up over a
+    thousand crossings to a hundredth of a uint16 level near the bottom,
+    where the oracle checks the last rows (the rings moved up, the same
+    cells at the same fractions)."""
+    # (no vertical on a half pixel: its pixels would be ties, their rows
+    # all redone by the exact sweep)
+    rings = [[(0.25, -0.3), (1090.37109375, 1099.609375), (0.25, 1099.90625)],
+             [(1099.75, 0.25), (16.12890625, 1099.8125), (1099.75, 1099.5)],
+             [(300.0, 20.0), (700.3359375, 5.0), (1099.0, 1098.65625)]]
+    shape = (1100, 1100)
+    n, m = _n_m(rings, 8)
+    for dtype in (np.uint8, np.uint16):
+        out = rastrum.polygon_coverage(rings, shape, rule=rule, method="accumulate", dtype=dtype)
+        for x0 in (0, 980):  # the columns the edges cross in the last rows
+            moved = [[(x - x0, y - 1080) for x, y in r] for r in rings]
+            want = _accumulated(moved, (20, 120), rule, 8)
+            check_area(out[1080:, x0:x0 + 120], want, M_OF[dtype], n, m, "%s %s" % (rule, dtype.__name__))

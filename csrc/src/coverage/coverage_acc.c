@@ -385,6 +385,20 @@ RAST__HOT void rast__acc_run_row(rast__acc *a, rast__cedge *e, rast__acc_run *u,
     if (ca == cb) {
         rast__acc_put(a->acc, ca, (uint64_t)u->qx & fm, (uint64_t)xb & fm, QT, u->neg);
         rast__acc_mark(a, (int32_t)ca, (int32_t)ca + 1);
+    } else if (cb == ca + (right ? 1 : -1) && e->qX == ca + (int64_t)right + a->x0) {
+        /* one vertical crossed, the column stepper there (as the last
+         * crossing left it): the two columns' pieces here, with no call */
+        const uint64_t t = (uint64_t)(e->qt - off), adx = (uint64_t)(e->dx < 0 ? -e->dx : e->dx);
+        uint32_t qtr = e->qtr + e->qtsr;
+        rast__acc_put(a->acc, ca, (uint64_t)u->qx & fm, right ? QT : 0, t, u->neg);
+        rast__acc_put(a->acc, cb, right ? 0 : QT, (uint64_t)xb & fm, QT - t, u->neg);
+        e->qt += e->qts + rast__acc_carry(&qtr, (uint32_t)adx);
+        e->qtr = qtr;
+        e->qX += right ? 1 : -1;
+        if (right)
+            rast__acc_mark(a, (int32_t)ca, (int32_t)cb + 1);
+        else
+            rast__acc_mark(a, (int32_t)cb, (int32_t)ca + 1);
     } else if (right) {
         rast__acc_cols_r(a, e, off, u->qx, xb, ca, cb);
     } else {

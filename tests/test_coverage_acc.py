@@ -94,7 +94,8 @@ def _area2(ring):
 @pytest.mark.parametrize("method", ["accumulate", "area"])
 @pytest.mark.parametrize("rule", ["nonzero", "evenodd"])
 @pytest.mark.parametrize("orient", [1, -1])
-def test_a_level_just_past_a_tie_is_exact(method, rule, orient):
+@pytest.mark.parametrize("mirror", [False, True])
+def test_a_level_just_past_a_tie_is_exact(method, rule, orient, mirror):
     """Pixel (2, 1) of the quadrilateral is covered 83/170, a tie in both
     formats (83/170 * 255 = 124.5, * 65535 = 31996.5) that is not a dyadic
     number: the 64-bit cells, which floor each column crossing to 2^-30
@@ -102,11 +103,18 @@ def test_a_level_just_past_a_tie_is_exact(method, rule, orient):
     in the same pixel, apart, lifts the exact value just past the tie, so
     the level is the upper one, 2^-25 of a level from the tie: far outside
     the documented bound, well inside the cells' error.  Only the exact
-    redo of the row gets it right (without it, 124 and 31996)."""
+    redo of the row gets it right (without it, 124 and 31996).  Mirrored
+    (the quadrilateral x -> 5 - x, the pixel the same; the triangle one
+    that leans the same way, outside it): every slanted edge leans left
+    instead of one each way, and the row must still be redone (its edges
+    are not all vertical)."""
     quad = [(2, 0), (2.125, 0), (3.08984375, 3.984375), (2, 3.984375)]
-    quad = quad if orient > 0 else quad[::-1]
     d = 2 ** -16
     tri = [(2.875, 1.5), (2.875, 1.5 + d), (2.875 + d, 1.5)]
+    if mirror:
+        quad = [(5 - x, y) for x, y in quad]
+        tri = [(2.125 - d, 1.5), (2.125, 1.5), (2.125 - d, 1.5 + d)]
+    quad = quad if orient > 0 else quad[::-1]
     tri = tri if (_area2(tri) > 0) == (_area2(quad) > 0) else tri[::-1]
     rings = [quad, tri]
     exact = exact_area(rings, (5, 5), rule, 16)

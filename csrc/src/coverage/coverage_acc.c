@@ -652,10 +652,24 @@ static uint64_t rast__acc_row_u8eo(uint64_t *acc, uint64_t *blk, uint32_t *z, un
     return rast__acc_row(acc, blk, z, row, lo, hi, w, dense, RAST_RULE_EVENODD, 255, win);
 }
 
+/* Are the edges ix[0..n) all vertical?  Then the sums of a row of their
+ * parts are exact: no crossing, no abscissa stepped, and each ar = 2 f dy
+ * / 2^10 with f and dy multiples of 2^HQ (HQ >= 14); so the levels are,
+ * ties too (an axis-aligned box on half pixels: a tie along each side). */
+static int rast__acc_vertical(const rast__cedge *e, const int32_t *ix, int32_t n)
+{
+    int32_t k;
+    for (k = 0; k < n; k++)
+        if (e[ix[k]].dx) return 0;
+    return 1;
+}
+
 /* Row y from the cells touched, which are cleared: 1 when done (handed
- * on), 0 when a level is not certain (nothing handed on). */
+ * on), 0 when a level is not certain (nothing handed on) unless the row's
+ * edges ix[0..n) are all vertical (rast__acc_vertical; it is asked only
+ * then). */
 RAST__HOT int rast__acc_emit(rast__acc *a, const rast__cov_out *o, int32_t y, rast_fill_rule rule,
-                          uint32_t m, uint64_t win)
+                          uint32_t m, uint64_t win, const rast__cedge *e, const int32_t *ix, int32_t n)
 {
     unsigned char *row = rast__cov_row(o, y);
     const int32_t w = a->x1 - a->x0;
@@ -671,7 +685,7 @@ RAST__HOT int rast__acc_emit(rast__acc *a, const rast__cov_out *o, int32_t y, ra
     a->acc[w] = 0;
     a->lo = INT32_MAX;
     a->hi = -1;
-    if (bad) return 0;
+    if (bad && !rast__acc_vertical(e, ix, n)) return 0;
     rast__cov_row_done(o, y);
     return 1;
 }
@@ -797,7 +811,7 @@ int rast__cov_acc_area_row(rast__cedge *e, const int32_t *row, int32_t nrow, con
         rast__acc_part(&a, ed, -((int64_t)ed->yt - Yj) * ((int64_t)1 << a.hq), ed->qa, ed->qta,
                        ed->qb, ed->qtb, ed->dir);
     }
-    return rast__acc_emit(&a, o, j, rule, m, ((uint64_t)nrow + 1) * m << 24);
+    return rast__acc_emit(&a, o, j, rule, m, ((uint64_t)nrow + 1) * m << 24, e, row, nrow);
 }
 
 void rast__cov_radix_sort(int32_t *ix, int32_t *tmp, const int32_t *key, uint32_t n)
@@ -888,7 +902,7 @@ static void rast__acc_by_rows(const rast__acc_walk *w, rast__acc *a)
              * cell from the first touched to the last is read. */
             a->dense = (int64_t)nrow * RAST__ACC_DENSE >= w->width;
             for (k = 0; k < nrow; k++) rast__acc_row_part_in(a, &e[row[k]], j, (int64_t)e[row[k]].yt - Yj);
-            if (rast__acc_emit(a, o, j, w->rule, m, ((uint64_t)nrow + 1) * m << 24)) continue;
+            if (rast__acc_emit(a, o, j, w->rule, m, ((uint64_t)nrow + 1) * m << 24, e, row, nrow)) continue;
         }
         if (!exact) { /* the first exact row (rare) */
             rast__cov_exact_steps(e, w->n);
@@ -937,7 +951,9 @@ static void rast__acc_by_bands(const rast__acc_walk *w, rast__acc *v)
         }
         for (r = 0; r < j1 - j0; r++) {
             const int32_t j = j0 + r;
-            if (ok[r] && rast__acc_emit(&v[r], o, j, w->rule, m, ((uint64_t)cnt[r] + 1) * m << 24)) continue;
+            /* (on a tie, the band's edges all vertical will do) */
+            if (ok[r] && rast__acc_emit(&v[r], o, j, w->rule, m, ((uint64_t)cnt[r] + 1) * m << 24, e, row, nrow))
+                continue;
             for (k = 0, q = 0; k < nrow; k++) /* the row's edges */
                 if (key[row[k]] + ja <= j && last[row[k]] >= j) w->tmp[q++] = row[k];
             if (!clean) { /* the first exact row (rare): the edges' exact steps,

@@ -244,6 +244,49 @@ static int rast__pl_convex(const rast_point *pt, const uint32_t *first, const in
     return 1;
 }
 
+/* Is every ring star-shaped round the mean of its vertices c (each edge
+ * turns strictly one way round c, by less than half a turn, and the ring
+ * goes round c once), and every two rings' boxes apart?  Then each ray
+ * from c meets its ring once: the ring is simple, its vertices distinct,
+ * and conditions 1 and 2 hold with no sort and no sweep (the star of 200
+ * spikes: 0.4 M instructions less, a tenth of "area"'s time on it).  0
+ * answers nothing: the sweep decides.  Rings and boxes as
+ * rast__pl_convex's. */
+static int rast__pl_star(const rast_point *pt, const uint32_t *first, const int32_t *box, uint32_t nrings)
+{
+    uint32_t r, q, i;
+    if (nrings > RAST__PL_CONVEX_RINGS) return 0;
+    for (r = 0; r < nrings; r++)
+        for (q = r + 1; q < nrings; q++) {
+            const int32_t *a = box + 4 * r, *b = box + 4 * q;
+            if (!(a[2] < b[0] || b[2] < a[0] || a[3] < b[1] || b[3] < a[1])) return 0;
+        }
+    for (r = 0; r < nrings; r++) {
+        const uint32_t f = first[r], n = first[r + 1] - f;
+        int64_t sx = 0, sy = 0, sg;
+        uint32_t turns = 0;
+        rast_point c, a;
+        for (i = 0; i < n; i++) {
+            sx += pt[f + i].x;
+            sy += pt[f + i].y;
+        }
+        c.x = (int32_t)(sx / (int64_t)n); /* (any point will do: the test is exact for it) */
+        c.y = (int32_t)(sy / (int64_t)n);
+        a = pt[f + n - 1];
+        sg = rast__cross3(c, a, pt[f]);
+        for (i = 0; i < n; i++) { /* the edge from a to b, round c */
+            const rast_point b = pt[f + i];
+            const int64_t t = rast__cross3(c, a, b), ay = (int64_t)a.y - c.y, by = (int64_t)b.y - c.y;
+            if (t == 0 || (t > 0) != (sg > 0)) return 0;
+            /* crossing the ray from c towards +x, the way the ring turns */
+            turns += sg > 0 ? (ay < 0 && by >= 0) : (by < 0 && ay >= 0);
+            a = b;
+        }
+        if (turns != 1) return 0;
+    }
+    return 1;
+}
+
 int rast__cov_plain(const rast_polygon *poly, uint32_t npoints, rast__arena arena)
 {
     const int64_t lim = RAST_COORD_MAX;
@@ -294,7 +337,7 @@ int rast__cov_plain(const rast_polygon *poly, uint32_t npoints, rast__arena aren
     s.st = tmp; /* the sweep's array takes tmp's room once the vertices are sorted */
     s.nst = 0;
     s.budget = (uint64_t)npoints * 64 + ((uint64_t)1 << 20);
-    if (!rast__pl_convex(pt, first, box, poly->nrings, dir)) {
+    if (!rast__pl_convex(pt, first, box, poly->nrings, dir) && !rast__pl_star(pt, first, box, poly->nrings)) {
         for (i = 0; i < n; i++) ord[i] = i;
         rast__pl_sort(key, ord, tmp, run, n);
         for (i = 0; i + 1 < n; i++) /* condition 1 */

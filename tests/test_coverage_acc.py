@@ -208,9 +208,11 @@ def test_rows_of_many_parts_inside_a_band(rule):
     """300 copies of a tall triangle and a lone thin one: 602 parts in each
     row they share, more than the cells' bound holds (512), so those rows
     go to the exact sweep while the band's other rows are read out of its
-    cells (the rows above and below hold the thin triangle alone).  The
-    oracle: the copies' integral is 300 times one's."""
-    tri = [(1.25, 8.5), (5.5, 40.25), (2.125, 71.75)]
+    cells (the rows above and below hold the thin triangle alone; the band
+    of rows 8 to 11 has row 8 of the thin one alone and three of 602
+    parts, so it is not walked as a whole band).  The oracle: the copies'
+    integral is 300 times one's."""
+    tri = [(1.25, 9.5), (5.5, 40.25), (2.125, 71.75)]
     thin = [(6.0, 0.5), (6.5, 79.5), (6.25, 0.5)]
     a1 = exact_area([tri], TALL, "nonzero", 8)
     a2 = exact_area([thin], TALL, "nonzero", 8)

@@ -407,14 +407,6 @@ RAST__HOT void rast__acc_run_row(rast__acc *a, rast__cedge *e, rast__acc_run *u,
     u->qx = xb;
 }
 
-/* Every row of the band ok? */
-static inline int rast__acc_all(const unsigned char *ok)
-{
-    int r, all = 1;
-    for (r = 0; r < RAST__ACC_BAND; r++) all &= ok[r];
-    return all;
-}
-
 /* Rows r .. rend of the band (cells v[r]; ok[r] each), which e runs
  * through, from the row stepper's row r (off from e's top to row r's);
  * returns the first row not walked (past rend, or one whose ok is 0).
@@ -431,7 +423,7 @@ RAST__HOT int32_t rast__acc_run_rows(rast__acc *v, const unsigned char *ok, rast
     u.dy = (uint32_t)e->dy;
     u.neg = e->dir < 0 ? ~(uint64_t)0 : 0;
     u.bias = (int64_t)v->x0 * (int64_t)QT - ((int64_t)1 << 62);
-    if (r == 0 && rend == RAST__ACC_BAND - 1 && rast__acc_all(ok)) {
+    if (r == 0 && rend == RAST__ACC_BAND - 1 && ok[RAST__ACC_BAND]) { /* (every row ok) */
         for (; r < RAST__ACC_BAND; r += 4, off += 4 * (int64_t)QT) { /* (RAST__ACC_BAND: 4 or 8) */
             rast__acc_run_row(&v[r], e, &u, off, right);
             rast__acc_run_row(&v[r + 1], e, &u, off + (int64_t)QT, right);
@@ -923,7 +915,7 @@ static void rast__acc_by_bands(const rast__acc_walk *w, rast__acc *v)
     const uint32_t m = w->m;
     const int32_t ja = w->ja;
     int32_t *const row = w->row, *const last = w->last, *const key = w->key;
-    unsigned char ok[RAST__ACC_BAND];
+    unsigned char ok[RAST__ACC_BAND + 1]; /* each row's, then all rows' */
     int32_t cnt[RAST__ACC_BAND + 1], nrow = 0, j0, j1, k, q, r, drop = INT32_MAX;
     uint32_t next = 0;
     int clean = 0; /* cover[], area[] and bits[] cleared, the exact steps set */
@@ -944,6 +936,7 @@ static void rast__acc_by_bands(const rast__acc_walk *w, rast__acc *v)
             ok[r] = (unsigned char)(cnt[r] < 512 && ((uint64_t)cnt[r] + 1) * m < ((uint64_t)1 << 25));
             v[r].dense = (int64_t)cnt[r] * RAST__ACC_DENSE >= w->width;
         }
+        for (r = 0, ok[RAST__ACC_BAND] = j1 - j0 == RAST__ACC_BAND; r < j1 - j0; r++) ok[RAST__ACC_BAND] &= ok[r];
         for (k = 0; k < nrow; k++) {
             const int32_t ek = row[k], f = key[ek] + ja;
             rast__acc_edge(v, ok, &e[ek], j0, f > j0 ? f - j0 : 0, (last[ek] < j1 - 1 ? last[ek] : j1 - 1) - j0,

@@ -349,8 +349,8 @@ RAST__HOT void rast__acc_cols_in(rast__acc *a, rast__cedge *e, int64_t off, int6
 
 /* Out of line, one for each direction, so that the rows' loop keeps its
  * registers and each direction's branches their own history (the edges of
- * a shape alternate: one function's branch on the direction mispredicted
- * about a fifth of the star's mispredictions). */
+ * a shape alternate: under cachegrind's branch simulation, one function's
+ * branch on the direction made a fifth of the star's mispredictions). */
 RAST__APART void rast__acc_cols_r(rast__acc *a, rast__cedge *e, int64_t off, int64_t xa, int64_t xb,
                                   int64_t ca, int64_t cb)
 {
@@ -388,11 +388,12 @@ RAST__HOT void rast__acc_run_row(rast__acc *a, rast__cedge *e, rast__acc_run *u,
     } else if (cb == ca + (right ? 1 : -1) && e->qX == ca + (int64_t)right + a->x0) {
         /* one vertical crossed, the column stepper there (as the last
          * crossing left it): the two columns' pieces here, with no call */
-        const uint64_t t = (uint64_t)(e->qt - off), adx = (uint64_t)(e->dx < 0 ? -e->dx : e->dx);
+        const uint64_t t = (uint64_t)(e->qt - off);
+        const uint32_t adx = (uint32_t)(e->dx < 0 ? -e->dx : e->dx);
         uint32_t qtr = e->qtr + e->qtsr;
         rast__acc_put(a->acc, ca, (uint64_t)u->qx & fm, right ? QT : 0, t, u->neg);
         rast__acc_put(a->acc, cb, right ? 0 : QT, (uint64_t)xb & fm, QT - t, u->neg);
-        e->qt += e->qts + rast__acc_carry(&qtr, (uint32_t)adx);
+        e->qt += e->qts + rast__acc_carry(&qtr, adx);
         e->qtr = qtr;
         e->qX += right ? 1 : -1;
         if (right)
@@ -407,11 +408,15 @@ RAST__HOT void rast__acc_run_row(rast__acc *a, rast__cedge *e, rast__acc_run *u,
     u->qx = xb;
 }
 
+#if RAST__ACC_BAND % 4 != 0
+#error "RAST__ACC_BAND: a multiple of 4 (rast__acc_run_rows takes a whole band four rows at a time)"
+#endif
+
 /* Rows r .. rend of the band (cells v[r]; ok[r] each), which e runs
  * through, from the row stepper's row r (off from e's top to row r's);
  * returns the first row not walked (past rend, or one whose ok is 0).
- * A whole band takes four rows in a row, with no loop (its exit
- * mispredicted once an edge and band). */
+ * A whole band goes four rows at a time, with no test between them (a
+ * loop's exit mispredicted about once an edge and band). */
 RAST__HOT int32_t rast__acc_run_rows(rast__acc *v, const unsigned char *ok, rast__cedge *e, int32_t r,
                                      int32_t rend, int64_t off, int right)
 {

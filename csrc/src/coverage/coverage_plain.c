@@ -182,6 +182,12 @@ static int64_t rast__pl_winding(const rast__pl *s, uint32_t k0, uint32_t k1, ras
     return w;
 }
 
+/* Are boxes a and b (x0, y0, x1, y1) apart, with no point in common? */
+static int rast__pl_boxes_apart(const int32_t *a, const int32_t *b)
+{
+    return a[2] < b[0] || b[2] < a[0] || a[3] < b[1] || b[3] < a[1];
+}
+
 /* Is every ring strictly convex, turning once (so simple), and every two
  * rings apart: their boxes apart, or one ring's vertices all strictly
  * inside the other (then, the outer being convex, the inner one is too)?
@@ -217,7 +223,7 @@ static int rast__pl_convex(const rast_point *pt, const uint32_t *first, const in
         for (q = r + 1; q < nrings; q++) {
             const int32_t *a = box + 4 * r, *b = box + 4 * q;
             uint32_t in, out;
-            if (a[2] < b[0] || b[2] < a[0] || a[3] < b[1] || b[3] < a[1]) continue; /* boxes apart */
+            if (rast__pl_boxes_apart(a, b)) continue;
             if (a[0] < b[0] && a[1] < b[1] && a[2] > b[2] && a[3] > b[3])
                 in = q, out = r;
             else if (b[0] < a[0] && b[1] < a[1] && b[2] > a[2] && b[3] > a[3])
@@ -257,10 +263,8 @@ static int rast__pl_star(const rast_point *pt, const uint32_t *first, const int3
     uint32_t r, q, i;
     if (nrings > RAST__PL_CONVEX_RINGS) return 0;
     for (r = 0; r < nrings; r++)
-        for (q = r + 1; q < nrings; q++) {
-            const int32_t *a = box + 4 * r, *b = box + 4 * q;
-            if (!(a[2] < b[0] || b[2] < a[0] || a[3] < b[1] || b[3] < a[1])) return 0;
-        }
+        for (q = r + 1; q < nrings; q++)
+            if (!rast__pl_boxes_apart(box + 4 * r, box + 4 * q)) return 0;
     for (r = 0; r < nrings; r++) {
         const uint32_t f = first[r], n = first[r + 1] - f;
         int64_t sx = 0, sy = 0, sg;

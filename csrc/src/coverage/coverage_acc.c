@@ -443,6 +443,18 @@ RAST__HOT int32_t rast__acc_run_rows(rast__acc *v, const unsigned char *ok, rast
     return r;
 }
 
+/* The whole band through, every row ok (the driver's common case, which
+ * skips rast__acc_edge's tests): one function for each direction. */
+RAST__APART void rast__acc_band_r(rast__acc *v, const unsigned char *ok, rast__cedge *e, int64_t off)
+{
+    (void)rast__acc_run_rows(v, ok, e, 0, RAST__ACC_BAND - 1, off, 1);
+}
+
+RAST__APART void rast__acc_band_l(rast__acc *v, const unsigned char *ok, rast__cedge *e, int64_t off)
+{
+    (void)rast__acc_run_rows(v, ok, e, 0, RAST__ACC_BAND - 1, off, 0);
+}
+
 /* e's parts in rows j0 + r, r = r0 .. r1, of a band whose row r has the
  * cells v[r] (v[r].p, .hq, .x0, .x1 alike), skipping the rows whose ok[r]
  * is 0; thru the last row that e runs through, whole, if e lies in the
@@ -922,6 +934,7 @@ static void rast__acc_by_bands(const rast__acc_walk *w, rast__acc *v)
     int32_t *const row = w->row, *const last = w->last, *const key = w->key;
     unsigned char ok[RAST__ACC_BAND + 1]; /* each row's, then all rows' */
     int32_t cnt[RAST__ACC_BAND + 1], nrow = 0, j0, j1, k, q, r, drop = INT32_MAX;
+    int64_t top; /* the band's top (subpixels) */
     uint32_t next = 0;
     int clean = 0; /* cover[], area[] and bits[] cleared, the exact steps set */
     for (j0 = ja; j0 < w->jb; j0 = j1) {
@@ -942,10 +955,22 @@ static void rast__acc_by_bands(const rast__acc_walk *w, rast__acc *v)
             v[r].dense = (int64_t)cnt[r] * RAST__ACC_DENSE >= w->width;
         }
         for (r = 0, ok[RAST__ACC_BAND] = j1 - j0 == RAST__ACC_BAND; r < j1 - j0; r++) ok[RAST__ACC_BAND] &= ok[r];
+        top = (int64_t)j0 * v->p;
         for (k = 0; k < nrow; k++) {
             const int32_t ek = row[k], f = key[ek] + ja;
-            rast__acc_edge(v, ok, &e[ek], j0, f > j0 ? f - j0 : 0, (last[ek] < j1 - 1 ? last[ek] : j1 - 1) - j0,
-                           w->thru[ek]);
+            rast__cedge *const ed = &e[ek];
+            /* through the whole band, from its top, the row stepper there */
+            if (ok[RAST__ACC_BAND] && w->thru[ek] >= j1 - 1 && ed->qrow == j0 && (int64_t)ed->yt <= top) {
+                const int64_t off = (top - ed->yt) * ((int64_t)1 << v->hq);
+                if (ed->dx > 0)
+                    rast__acc_band_r(v, ok, ed, off);
+                else
+                    rast__acc_band_l(v, ok, ed, off);
+                ed->qrow = j1;
+            } else {
+                rast__acc_edge(v, ok, ed, j0, f > j0 ? f - j0 : 0, (last[ek] < j1 - 1 ? last[ek] : j1 - 1) - j0,
+                               w->thru[ek]);
+            }
         }
         for (r = 0; r < j1 - j0; r++) {
             const int32_t j = j0 + r;

@@ -95,7 +95,9 @@ def _area2(ring):
 @pytest.mark.parametrize("rule", ["nonzero", "evenodd"])
 @pytest.mark.parametrize("orient", [1, -1])
 @pytest.mark.parametrize("mirror", [False, True])
-def test_a_level_just_past_a_tie_is_exact(method, rule, orient, mirror):
+@pytest.mark.parametrize("wide", [False, True])
+@pytest.mark.parametrize("hole", [False, True])
+def test_a_level_just_past_a_tie_is_exact(method, rule, orient, mirror, wide, hole):
     """Pixel (2, 1) of the quadrilateral is covered 83/170, a tie in both
     formats (83/170 * 255 = 124.5, * 65535 = 31996.5) that is not a dyadic
     number: the 64-bit cells, which floor each column crossing to 2^-30
@@ -107,21 +109,30 @@ def test_a_level_just_past_a_tie_is_exact(method, rule, orient, mirror):
     (the quadrilateral x -> 5 - x, the pixel the same; the triangle one
     that leans the same way, outside it): every slanted edge leans left
     instead of one each way, and the row must still be redone (its edges
-    are not all vertical)."""
+    are not all vertical).  Wide: a thin box at x = 30 makes the rows 29
+    cells long, so that the pixel is read with 15 others at a time.  Hole:
+    the triangle inside the quadrilateral, turning the other way, takes
+    2^-33 off instead: the level is the lower one (the cells' error now
+    lands on the other side of the tie in some of these scenes)."""
     quad = [(2, 0), (2.125, 0), (3.08984375, 3.984375), (2, 3.984375)]
     d = 2 ** -16
     tri = [(2.875, 1.5), (2.875, 1.5 + d), (2.875 + d, 1.5)]
+    if hole:  # inside the quadrilateral (its slanted side is at x = 2.488 at y = 1.5)
+        tri = [(x - 0.625, y) for x, y in tri]
     if mirror:
         quad = [(5 - x, y) for x, y in quad]
         tri = [(2.125 - d, 1.5), (2.125, 1.5), (2.125 - d, 1.5 + d)]
+        if hole:
+            tri = [(x + 0.625, y) for x, y in tri]
     quad = quad if orient > 0 else quad[::-1]
-    tri = tri if (_area2(tri) > 0) == (_area2(quad) > 0) else tri[::-1]
-    rings = [quad, tri]
-    exact = exact_area(rings, (5, 5), rule, 16)
-    assert exact[1, 2] == F(83, 170) + F(1, 2 ** 33)
+    tri = tri if ((_area2(tri) > 0) == (_area2(quad) > 0)) != hole else tri[::-1]
+    rings = [quad, tri] + ([[(30, 0), (30.25, 0), (30.25, 3.984375), (30, 3.984375)]] if wide else [])
+    shape = (5, 40) if wide else (5, 5)
+    exact = exact_area(rings, shape, rule, 16)
+    assert exact[1, 2] == F(83, 170) + F(-1 if hole else 1, 2 ** 33)
     n, m = _n_m(rings, 16)
-    for dtype, want in ((np.uint8, 125), (np.uint16, 31997)):
-        out = rastrum.polygon_coverage(rings, (5, 5), rule=rule, method=method, dtype=dtype, subpixel_bits=16)
+    for dtype, want in ((np.uint8, 124 if hole else 125), (np.uint16, 31996 if hole else 31997)):
+        out = rastrum.polygon_coverage(rings, shape, rule=rule, method=method, dtype=dtype, subpixel_bits=16)
         assert out[1, 2] == want
         check_area(out, exact, M_OF[dtype], n, m, "%s %s" % (method, rule))
 

@@ -413,50 +413,62 @@ RAST__HOT void rast__acc_run_row(rast__acc *a, rast__cedge *e, rast__acc_run *u,
 }
 
 #if RAST__ACC_BAND % 4 != 0
-#error "RAST__ACC_BAND: a multiple of 4 (rast__acc_run_rows takes a whole band four rows at a time)"
+#error "RAST__ACC_BAND: a multiple of 4 (rast__acc_run_band takes a whole band four rows at a time)"
 #endif
+
+/* u: e's row stepper, from the cells' clip v */
+RAST__HOT void rast__acc_run_init(rast__acc_run *u, const rast__acc *v, const rast__cedge *e)
+{
+    u->qx = e->qx;
+    u->qxr = e->qxr;
+    u->qxs = e->qxs;
+    u->qxsr = e->qxsr;
+    u->dy = (uint32_t)e->dy;
+    u->neg = e->dir < 0 ? ~(uint64_t)0 : 0;
+    u->bias = (int64_t)v->x0 * (int64_t)QT - ((int64_t)1 << 62);
+}
 
 /* Rows r .. rend of the band (cells v[r]; ok[r] each), which e runs
  * through, from the row stepper's row r (off from e's top to row r's);
- * returns the first row not walked (past rend, or one whose ok is 0).
- * A whole band goes four rows at a time, with no test between them (a
- * loop's exit mispredicted about once an edge and band). */
+ * returns the first row not walked (past rend, or one whose ok is 0). */
 RAST__HOT int32_t rast__acc_run_rows(rast__acc *v, const unsigned char *ok, rast__cedge *e, int32_t r,
                                      int32_t rend, int64_t off, int right)
 {
     rast__acc_run u;
-    u.qx = e->qx;
-    u.qxr = e->qxr;
-    u.qxs = e->qxs;
-    u.qxsr = e->qxsr;
-    u.dy = (uint32_t)e->dy;
-    u.neg = e->dir < 0 ? ~(uint64_t)0 : 0;
-    u.bias = (int64_t)v->x0 * (int64_t)QT - ((int64_t)1 << 62);
-    if (r == 0 && rend == RAST__ACC_BAND - 1 && ok[RAST__ACC_BAND]) { /* (every row ok) */
-        for (; r < RAST__ACC_BAND; r += 4, off += 4 * (int64_t)QT) { /* (RAST__ACC_BAND: 4 or 8) */
-            rast__acc_run_row(&v[r], e, &u, off, right);
-            rast__acc_run_row(&v[r + 1], e, &u, off + (int64_t)QT, right);
-            rast__acc_run_row(&v[r + 2], e, &u, off + 2 * (int64_t)QT, right);
-            rast__acc_run_row(&v[r + 3], e, &u, off + 3 * (int64_t)QT, right);
-        }
-    } else {
-        for (; r <= rend && ok[r]; r++, off += (int64_t)QT) rast__acc_run_row(&v[r], e, &u, off, right);
-    }
+    rast__acc_run_init(&u, v, e);
+    for (; r <= rend && ok[r]; r++, off += (int64_t)QT) rast__acc_run_row(&v[r], e, &u, off, right);
     e->qx = u.qx;
     e->qxr = u.qxr;
     return r;
 }
 
-/* The whole band through, every row ok (the driver's common case, which
- * skips rast__acc_edge's tests): one function for each direction. */
-RAST__APART void rast__acc_band_r(rast__acc *v, const unsigned char *ok, rast__cedge *e, int64_t off)
+/* The whole band, every row ok, from its top (off from e's top), four
+ * rows at a time with no test between them (a loop's exit mispredicted
+ * about once an edge and band): the band's loop sends its common case
+ * here, past rast__acc_edge's tests; one function for each direction. */
+RAST__HOT void rast__acc_run_band(rast__acc *v, rast__cedge *e, int64_t off, int right)
 {
-    (void)rast__acc_run_rows(v, ok, e, 0, RAST__ACC_BAND - 1, off, 1);
+    rast__acc_run u;
+    int32_t r;
+    rast__acc_run_init(&u, v, e);
+    for (r = 0; r < RAST__ACC_BAND; r += 4, off += 4 * (int64_t)QT) {
+        rast__acc_run_row(&v[r], e, &u, off, right);
+        rast__acc_run_row(&v[r + 1], e, &u, off + (int64_t)QT, right);
+        rast__acc_run_row(&v[r + 2], e, &u, off + 2 * (int64_t)QT, right);
+        rast__acc_run_row(&v[r + 3], e, &u, off + 3 * (int64_t)QT, right);
+    }
+    e->qx = u.qx;
+    e->qxr = u.qxr;
 }
 
-RAST__APART void rast__acc_band_l(rast__acc *v, const unsigned char *ok, rast__cedge *e, int64_t off)
+RAST__APART void rast__acc_band_r(rast__acc *v, rast__cedge *e, int64_t off)
 {
-    (void)rast__acc_run_rows(v, ok, e, 0, RAST__ACC_BAND - 1, off, 0);
+    rast__acc_run_band(v, e, off, 1);
+}
+
+RAST__APART void rast__acc_band_l(rast__acc *v, rast__cedge *e, int64_t off)
+{
+    rast__acc_run_band(v, e, off, 0);
 }
 
 /* e's parts in rows j0 + r, r = r0 .. r1, of a band whose row r has the
@@ -1015,9 +1027,9 @@ static void rast__acc_by_bands(const rast__acc_walk *w, rast__acc *v)
             if (ok[RAST__ACC_BAND] && w->thru[ek] >= j1 - 1 && ed->qrow == j0 && (int64_t)ed->yt <= top) {
                 const int64_t off = (top - ed->yt) * ((int64_t)1 << v->hq);
                 if (ed->dx > 0)
-                    rast__acc_band_r(v, ok, ed, off);
+                    rast__acc_band_r(v, ed, off);
                 else
-                    rast__acc_band_l(v, ok, ed, off);
+                    rast__acc_band_l(v, ed, off);
                 ed->qrow = j1;
             } else {
                 rast__acc_edge(v, ok, ed, j0, f > j0 ? f - j0 : 0, (last[ek] < j1 - 1 ? last[ek] : j1 - 1) - j0,

@@ -369,26 +369,28 @@ RAST__APART void rast__acc_cols_l(rast__acc *a, rast__cedge *e, int64_t off, int
 
 /* The row stepper of an edge that runs through rows, in locals. */
 typedef struct rast__acc_run {
-    int64_t qx, qxs, bias;
+    int64_t qx, qxs, bias, ca; /* ca: qx's column of the clip */
     uint64_t neg;
     uint32_t qxr, qxsr, dy;
 } rast__acc_run;
 
 /* e's part in the row of cells a that it runs through, whole, at the
  * stepper u (at the row's top; moved to its bottom), off as
- * rast__acc_part's; right as rast__acc_cols_in's. */
-RAST__HOT void rast__acc_run_row(rast__acc *a, rast__cedge *e, rast__acc_run *u, int64_t off, int right)
+ * rast__acc_part's; right as rast__acc_cols_in's; marks: the cells
+ * touched marked (0: the caller marks them, the row being dense). */
+RAST__HOT void rast__acc_run_row(rast__acc *a, rast__cedge *e, rast__acc_run *u, int64_t off, int right,
+                                 int marks)
 {
     const uint64_t fm = QT - 1;
-    int64_t xb = u->qx + u->qxs, ca, cb;
+    const int64_t ca = u->ca;
+    int64_t xb = u->qx + u->qxs, cb;
     u->qxr += u->qxsr;
     xb += rast__acc_carry(&u->qxr, u->dy);
-    /* columns of the clip (e lies in it: no clip tests) */
-    ca = (int64_t)(((uint64_t)u->qx - (uint64_t)u->bias) >> QF) - ((int64_t)1 << 32);
+    /* its column of the clip (e lies in it: no clip tests) */
     cb = (int64_t)(((uint64_t)xb - (uint64_t)u->bias) >> QF) - ((int64_t)1 << 32);
     if (ca == cb) {
         rast__acc_put(a->acc, ca, (uint64_t)u->qx & fm, (uint64_t)xb & fm, QT, u->neg);
-        rast__acc_mark(a, (int32_t)ca, (int32_t)ca + 1);
+        if (marks) rast__acc_mark(a, (int32_t)ca, (int32_t)ca + 1);
     } else if (cb == ca + (right ? 1 : -1) && e->qX == ca + (int64_t)right + a->x0) {
         /* one vertical crossed, the column stepper there (as the last
          * crossing left it): the two columns' pieces here, with no call */
@@ -400,9 +402,9 @@ RAST__HOT void rast__acc_run_row(rast__acc *a, rast__cedge *e, rast__acc_run *u,
         e->qt += e->qts + rast__acc_carry(&qtr, adx);
         e->qtr = qtr;
         e->qX += right ? 1 : -1;
-        if (right)
+        if (marks && right)
             rast__acc_mark(a, (int32_t)ca, (int32_t)cb + 1);
-        else
+        else if (marks)
             rast__acc_mark(a, (int32_t)cb, (int32_t)ca + 1);
     } else if (right) {
         rast__acc_cols_r(a, e, off, u->qx, xb, ca, cb);
@@ -410,6 +412,7 @@ RAST__HOT void rast__acc_run_row(rast__acc *a, rast__cedge *e, rast__acc_run *u,
         rast__acc_cols_l(a, e, off, u->qx, xb, ca, cb);
     }
     u->qx = xb;
+    u->ca = cb;
 }
 
 #if RAST__ACC_BAND % 4 != 0
@@ -426,6 +429,7 @@ RAST__HOT void rast__acc_run_init(rast__acc_run *u, const rast__acc *v, const ra
     u->dy = (uint32_t)e->dy;
     u->neg = e->dir < 0 ? ~(uint64_t)0 : 0;
     u->bias = (int64_t)v->x0 * (int64_t)QT - ((int64_t)1 << 62);
+    u->ca = (int64_t)(((uint64_t)u->qx - (uint64_t)u->bias) >> QF) - ((int64_t)1 << 32);
 }
 
 /* Rows r .. rend of the band (cells v[r]; ok[r] each), which e runs
@@ -436,7 +440,7 @@ RAST__HOT int32_t rast__acc_run_rows(rast__acc *v, const unsigned char *ok, rast
 {
     rast__acc_run u;
     rast__acc_run_init(&u, v, e);
-    for (; r <= rend && ok[r]; r++, off += (int64_t)QT) rast__acc_run_row(&v[r], e, &u, off, right);
+    for (; r <= rend && ok[r]; r++, off += (int64_t)QT) rast__acc_run_row(&v[r], e, &u, off, right, 1);
     e->qx = u.qx;
     e->qxr = u.qxr;
     return r;
@@ -446,29 +450,51 @@ RAST__HOT int32_t rast__acc_run_rows(rast__acc *v, const unsigned char *ok, rast
  * rows at a time with no test between them (a loop's exit mispredicted
  * about once an edge and band): the band's loop sends its common case
  * here, past rast__acc_edge's tests; one function for each direction. */
-RAST__HOT void rast__acc_run_band(rast__acc *v, rast__cedge *e, int64_t off, int right)
+RAST__HOT void rast__acc_run_band(rast__acc *v, rast__cedge *e, int64_t off, int right, int64_t *span)
 {
+    const int marks = !span;
     rast__acc_run u;
     int32_t r;
     rast__acc_run_init(&u, v, e);
+    if (span && right) /* (its column at the top: the least if e goes right, else the greatest) */
+        span[0] = u.ca < span[0] ? u.ca : span[0];
+    else if (span)
+        span[1] = u.ca > span[1] ? u.ca : span[1];
     for (r = 0; r < RAST__ACC_BAND; r += 4, off += 4 * (int64_t)QT) {
-        rast__acc_run_row(&v[r], e, &u, off, right);
-        rast__acc_run_row(&v[r + 1], e, &u, off + (int64_t)QT, right);
-        rast__acc_run_row(&v[r + 2], e, &u, off + 2 * (int64_t)QT, right);
-        rast__acc_run_row(&v[r + 3], e, &u, off + 3 * (int64_t)QT, right);
+        rast__acc_run_row(&v[r], e, &u, off, right, marks);
+        rast__acc_run_row(&v[r + 1], e, &u, off + (int64_t)QT, right, marks);
+        rast__acc_run_row(&v[r + 2], e, &u, off + 2 * (int64_t)QT, right, marks);
+        rast__acc_run_row(&v[r + 3], e, &u, off + 3 * (int64_t)QT, right, marks);
     }
     e->qx = u.qx;
     e->qxr = u.qxr;
+    if (span && right)
+        span[1] = u.ca > span[1] ? u.ca : span[1];
+    else if (span)
+        span[0] = u.ca < span[0] ? u.ca : span[0];
 }
 
 RAST__APART void rast__acc_band_r(rast__acc *v, rast__cedge *e, int64_t off)
 {
-    rast__acc_run_band(v, e, off, 1);
+    rast__acc_run_band(v, e, off, 1, NULL);
 }
 
 RAST__APART void rast__acc_band_l(rast__acc *v, rast__cedge *e, int64_t off)
 {
-    rast__acc_run_band(v, e, off, 0);
+    rast__acc_run_band(v, e, off, 0, NULL);
+}
+
+/* The same for a band whose rows are all dense: the cells touched not
+ * marked, but the columns that e's abscissae span (from its top's to its
+ * bottom's, of the clip) added to span[0] .. span[1] */
+RAST__APART void rast__acc_dband_r(rast__acc *v, rast__cedge *e, int64_t off, int64_t *span)
+{
+    rast__acc_run_band(v, e, off, 1, span);
+}
+
+RAST__APART void rast__acc_dband_l(rast__acc *v, rast__cedge *e, int64_t off, int64_t *span)
+{
+    rast__acc_run_band(v, e, off, 0, span);
 }
 
 /* e's parts in rows j0 + r, r = r0 .. r1, of a band whose row r has the
@@ -998,7 +1024,8 @@ static void rast__acc_by_bands(const rast__acc_walk *w, rast__acc *v)
     int32_t *const row = w->row, *const last = w->last, *const key = w->key;
     unsigned char ok[RAST__ACC_BAND + 1]; /* each row's, then all rows' */
     int32_t cnt[RAST__ACC_BAND + 1], nrow = 0, j0, j1, k, q, r, drop = INT32_MAX;
-    int64_t top; /* the band's top (subpixels) */
+    int64_t top, span[2]; /* the band's top (subpixels); the columns of its dense walks */
+    int dense; /* every row of the band dense */
     uint32_t next = 0;
     int clean = 0; /* cover[], area[] and bits[] cleared, the exact steps set */
     for (j0 = ja; j0 < w->jb; j0 = j1) {
@@ -1018,24 +1045,40 @@ static void rast__acc_by_bands(const rast__acc_walk *w, rast__acc *v)
             ok[r] = (unsigned char)(cnt[r] < 512 && ((uint64_t)cnt[r] + 1) * m < ((uint64_t)1 << 25));
             v[r].dense = (int64_t)cnt[r] * RAST__ACC_DENSE >= w->width;
         }
-        for (r = 0, ok[RAST__ACC_BAND] = j1 - j0 == RAST__ACC_BAND; r < j1 - j0; r++) ok[RAST__ACC_BAND] &= ok[r];
+        for (r = 0, ok[RAST__ACC_BAND] = j1 - j0 == RAST__ACC_BAND, dense = 1; r < j1 - j0; r++) {
+            ok[RAST__ACC_BAND] &= ok[r];
+            dense &= v[r].dense;
+        }
         top = (int64_t)j0 * v->p;
+        span[0] = INT64_MAX;
+        span[1] = -1;
         for (k = 0; k < nrow; k++) {
             const int32_t ek = row[k], f = key[ek] + ja;
             rast__cedge *const ed = &e[ek];
             /* through the whole band, from its top, the row stepper there */
             if (ok[RAST__ACC_BAND] && w->thru[ek] >= j1 - 1 && ed->qrow == j0 && (int64_t)ed->yt <= top) {
                 const int64_t off = (top - ed->yt) * ((int64_t)1 << v->hq);
-                if (ed->dx > 0)
+                if (dense && ed->dx > 0)
+                    rast__acc_dband_r(v, ed, off, span);
+                else if (dense)
+                    rast__acc_dband_l(v, ed, off, span);
+                else if (ed->dx > 0) {
                     rast__acc_band_r(v, ed, off);
-                else
+                } else {
                     rast__acc_band_l(v, ed, off);
+                }
                 ed->qrow = j1;
             } else {
                 rast__acc_edge(v, ok, ed, j0, f > j0 ? f - j0 : 0, (last[ek] < j1 - 1 ? last[ek] : j1 - 1) - j0,
                                w->thru[ek]);
             }
         }
+        if (span[1] >= 0) /* (dense: the cells of the walks above) */
+            for (r = 0; r < RAST__ACC_BAND; r++) {
+                const int32_t lo = (int32_t)span[0], hi = (int32_t)span[1] + 1;
+                v[r].lo = lo < v[r].lo ? lo : v[r].lo;
+                v[r].hi = hi > v[r].hi ? hi : v[r].hi;
+            }
         for (r = 0; r < j1 - j0; r++) {
             const int32_t j = j0 + r;
             /* (on a tie, the band's edges all vertical will do) */

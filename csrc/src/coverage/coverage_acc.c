@@ -17,17 +17,20 @@
  * 2^21 to acc[0], one right of it nothing).  The running sum of acc[] at
  * column k is then v = 2^21 cover - area of the cells coverage_area.c
  * describes (its quick accumulation): the same sums, split between two
- * cells, so v 2^-51 is within n 2^-28 of the exact integral a of the
- * winding number over the pixel, n the row's parts: a part meets a pixel
+ * cells, so v 2^-51 is within n (2 Q + 2^-51) < (n + 1) 2^-29 of the
+ * exact integral a of the winding number over the pixel, n < 512 the row's
+ * parts: a part meets a pixel
  * at two points at most (where it enters and leaves the column), each
  * rounded to the grid of Q (its end's abscissa or its column crossing's
  * ordinate, both floored exactly by integer steppers: abscissae from row
  * to row, ordinates from column to column, quotient and remainder, no
  * division per row or column), which moves the pixel's share by less
- * than Q; the floor of ar adds less than 2^-51; 2 Q + 2^-51 < 2^-28.
- * The level floor(a' M + 1/2) (a' the rule applied: non-zero min(|a|, 1),
- * even-odd |a| folded mod 2, both moving a value by no more than they move
- * a) is decided unless a' M + 1/2 is within (n + 1) M 2^-27 of an integer;
+ * than Q (the pixel's value moves by at most 2^21 units of 2^-51 for one
+ * unit of Q in an ordinate or abscissa); the floor of ar adds less than
+ * 2^-51.  The level floor(a' M + 1/2) (a' the rule applied: non-zero
+ * min(|a|, 1), even-odd |a| folded mod 2, both moving a value by no more
+ * than they move a) is decided unless a' M + 1/2 is within (n + 1) M 2^-29
+ * of an integer (rast__acc_win);
  * any such pixel sends the whole row to the exact sweep
  * (rast__cov_acc_exact_row), which writes it again.  The sums are modular
  * in 64 bits: |a| <= n / 2 < 2^8 (n < 512), so v fits.
@@ -58,6 +61,13 @@ static inline int64_t rast__acc_carry(uint32_t *r, uint32_t d)
     const uint32_t c = (uint32_t)(*r >= d);
     *r -= d & (0u - c);
     return (int64_t)c;
+}
+
+/* The window of a row of n parts, in 2^-51 levels of M = m: (n + 1) M
+ * 2^-29, the bound above (< 2^47 for (n + 1) M < 2^25) */
+static inline uint64_t rast__acc_win(uint64_t n, uint32_t m)
+{
+    return (n + 1) * m << 22;
 }
 
 /* floor(v / 2^QF) for |v| < 2^62 (no >> of a negative value) */
@@ -596,10 +606,11 @@ RAST__HOT void rast__acc_sum24(uint64_t *restrict acc, uint32_t *restrict z, int
  * negative value is one off the floor of its magnitude), the rule applied
  * on the 32-bit z (rast__acc_apply's, at this scale), 0 <= z' <= 2^24; y =
  * 255 z' + 2^23 < 2^32, level y / 2^24, the cells cleared.  |x - 2^51 a'|
- * < n 2^23 (the bound above) and |z' 2^27 - x| < 2^27 put y / 2^24 within
- * n 255 / 2^28 + 255 / 2^24 of a' 255 + 1/2, so the level is certain when
- * y's fraction is at least that far (w, in 2^-24 levels: the caller's win,
- * (n + 1) 255 2^24, over 2^28, + 256) from 0 and from 1, lim = 2^24 - 2 w;
+ * < (n + 1) 2^22 (the bound above) and |z' 2^27 - x| < 2^27 put y / 2^24
+ * within (n + 1) 255 / 2^29 + 255 / 2^24 of a' 255 + 1/2, so the level is
+ * certain when y's fraction is at least that far (w, in 2^-24 levels: the
+ * caller's win, (n + 1) 255 2^22, over 2^27, + 256) from 0 and from 1, lim
+ * = 2^24 - 2 w;
  * returns nonzero when it is not.  rule is a constant at each call. */
 RAST__HOT uint32_t rast__acc_level24(uint32_t *c, unsigned char *out, uint32_t w, uint32_t lim,
                                      rast_fill_rule rule)
@@ -698,10 +709,10 @@ RAST__HOT uint64_t rast__acc_row(uint64_t *acc, uint64_t *blk, uint32_t *z, unsi
     uint16_t *r16 = (uint16_t *)(void *)row;
     int32_t k = lo, wi;
     rast__cov_fill(f, row, 0, lo, 0);
-    if (dense && m == 255 && lo < hi && (rule == RAST_RULE_EVENODD || win <= (uint64_t)256 * 255 << 24)) {
-        /* (non-zero: n < 256, win = (n + 1) 255 2^24) */
+    if (dense && m == 255 && lo < hi && (rule == RAST_RULE_EVENODD || win <= rast__acc_win(255, 255))) {
+        /* (non-zero: n < 256) */
         rast__acc_sum24(acc, z, lo, hi);
-        bad = rast__acc_levels24(z, row, lo, hi, (uint32_t)(win >> 28) + 256, rule);
+        bad = rast__acc_levels24(z, row, lo, hi, (uint32_t)(win >> 27) + 256, rule);
         lev = row[hi - 1];
         k = hi;
     } else if (dense) { /* no branch on the cell: half of them are 0, at random */
@@ -910,7 +921,7 @@ int rast__cov_acc_area_row(rast__cedge *e, const int32_t *row, int32_t nrow, con
         rast__acc_part(&a, ed, -((int64_t)ed->yt - Yj) * ((int64_t)1 << a.hq), ed->qa, ed->qta,
                        ed->qb, ed->qtb, ed->dir);
     }
-    return rast__acc_emit(&a, o, j, rule, m, ((uint64_t)nrow + 1) * m << 24, e, row, nrow);
+    return rast__acc_emit(&a, o, j, rule, m, rast__acc_win((uint64_t)nrow, m), e, row, nrow);
 }
 
 void rast__cov_radix_sort(int32_t *ix, int32_t *tmp, const int32_t *key, uint32_t n)
@@ -997,11 +1008,11 @@ static void rast__acc_by_rows(const rast__acc_walk *w, rast__acc *a)
         if (nrow < 512 && ((uint64_t)nrow + 1) * m < ((uint64_t)1 << 25)) {
             /* Bits for the cells touched, so that the scan skips the
              * others, unless the row's parts are many for its width
-             * (RAST__ACC_DENSE parts or more a pixel of width): then every
+             * (a part or more for every RAST__ACC_DENSE columns): then every
              * cell from the first touched to the last is read. */
             a->dense = (int64_t)nrow * RAST__ACC_DENSE >= w->width;
             for (k = 0; k < nrow; k++) rast__acc_row_part_in(a, &e[row[k]], j, (int64_t)e[row[k]].yt - Yj);
-            if (rast__acc_emit(a, o, j, w->rule, m, ((uint64_t)nrow + 1) * m << 24, e, row, nrow)) continue;
+            if (rast__acc_emit(a, o, j, w->rule, m, rast__acc_win((uint64_t)nrow, m), e, row, nrow)) continue;
         }
         if (!exact) { /* the first exact row (rare) */
             rast__cov_exact_steps(e, w->n);
@@ -1033,7 +1044,7 @@ static void rast__acc_by_bands(const rast__acc_walk *w, rast__acc *v)
         nrow = rast__acc_edges_of(w, nrow, &next, &drop, j0, j1, v->p);
         /* each row's parts: how many, and whether they are few enough to
          * accumulate (their bound) and many enough to read every cell
-         * (RAST__ACC_DENSE parts or more a pixel of width: no bits) */
+         * (a part or more for every RAST__ACC_DENSE columns: no bits) */
         for (r = 0; r <= j1 - j0; r++) cnt[r] = 0;
         for (k = 0; k < nrow; k++) {
             const int32_t f = key[row[k]] + ja;
@@ -1082,7 +1093,7 @@ static void rast__acc_by_bands(const rast__acc_walk *w, rast__acc *v)
         for (r = 0; r < j1 - j0; r++) {
             const int32_t j = j0 + r;
             /* (on a tie, the band's edges all vertical will do) */
-            if (ok[r] && rast__acc_emit(&v[r], o, j, w->rule, m, ((uint64_t)cnt[r] + 1) * m << 24, e, row, nrow))
+            if (ok[r] && rast__acc_emit(&v[r], o, j, w->rule, m, rast__acc_win((uint64_t)cnt[r], m), e, row, nrow))
                 continue;
             for (k = 0, q = 0; k < nrow; k++) /* the row's edges */
                 if (key[row[k]] + ja <= j && last[row[k]] >= j) w->tmp[q++] = row[k];

@@ -50,6 +50,9 @@
 #define QT ((uint64_t)1 << QF)
 #define QONE ((int64_t)1 << 51)
 #define RAST__ACC_DENSE 16
+/* (a band's rows are read whole sooner: where all four are, its long
+ * edges mark no cell, rast__acc_dband_r) */
+#define RAST__ACC_DENSE_BAND 32
 #define RAST__ACC_LONG 32
 
 /* A stepper's remainder r (< d, after adding a step's remainder below d)
@@ -1044,7 +1047,7 @@ static void rast__acc_by_bands(const rast__acc_walk *w, rast__acc *v)
         nrow = rast__acc_edges_of(w, nrow, &next, &drop, j0, j1, v->p);
         /* each row's parts: how many, and whether they are few enough to
          * accumulate (their bound) and many enough to read every cell
-         * (a part or more for every RAST__ACC_DENSE columns: no bits) */
+         * (a part or more for every RAST__ACC_DENSE_BAND columns: no bits) */
         for (r = 0; r <= j1 - j0; r++) cnt[r] = 0;
         for (k = 0; k < nrow; k++) {
             const int32_t f = key[row[k]] + ja;
@@ -1054,7 +1057,7 @@ static void rast__acc_by_bands(const rast__acc_walk *w, rast__acc *v)
         for (r = 0; r < j1 - j0; r++) {
             if (r) cnt[r] += cnt[r - 1];
             ok[r] = (unsigned char)(cnt[r] < 512 && ((uint64_t)cnt[r] + 1) * m < ((uint64_t)1 << 25));
-            v[r].dense = (int64_t)cnt[r] * RAST__ACC_DENSE >= w->width;
+            v[r].dense = (int64_t)cnt[r] * RAST__ACC_DENSE_BAND >= w->width;
         }
         for (r = 0, ok[RAST__ACC_BAND] = j1 - j0 == RAST__ACC_BAND, dense = 1; r < j1 - j0; r++) {
             ok[RAST__ACC_BAND] &= ok[r];

@@ -17,23 +17,22 @@
  * 2^21 to acc[0], one right of it nothing).  The running sum of acc[] at
  * column k is then v = 2^21 cover - area of the cells coverage_area.c
  * describes (its quick accumulation): the same sums, split between two
- * cells, so v 2^-51 is within n (2 Q + 2^-51) < (n + 1) 2^-29 of the
- * exact integral a of the winding number over the pixel, n < 512 the row's
- * parts: a part meets a pixel
- * at two points at most (where it enters and leaves the column), each
- * rounded to the grid of Q (its end's abscissa or its column crossing's
- * ordinate, both floored exactly by integer steppers: abscissae from row
- * to row, ordinates from column to column, quotient and remainder, no
- * division per row or column), which moves the pixel's share by less
- * than Q (the pixel's value moves by at most 2^21 units of 2^-51 for one
- * unit of Q in an ordinate or abscissa); the floor of ar adds less than
- * 2^-51.  The level floor(a' M + 1/2) (a' the rule applied: non-zero
- * min(|a|, 1), even-odd |a| folded mod 2, both moving a value by no more
- * than they move a) is decided unless a' M + 1/2 is within (n + 1) M 2^-29
- * of an integer (rast__acc_win);
- * any such pixel sends the whole row to the exact sweep
- * (rast__cov_acc_exact_row), which writes it again.  The sums are modular
- * in 64 bits: |a| <= n / 2 < 2^8 (n < 512), so v fits.
+ * cells, so v 2^-51 is within n (2 Q + 2^-51) < (n + 1) 2^-29 of the exact
+ * integral a of the winding number over the pixel, n < 512 the row's
+ * parts: a part meets a pixel at two points at most (where it enters and
+ * leaves the column), each rounded to the grid of Q (its end's abscissa or
+ * its column crossing's ordinate, both floored exactly by integer
+ * steppers: abscissae from row to row, ordinates from column to column,
+ * quotient and remainder, no division per row or column), which moves the
+ * pixel's share by less than Q (the pixel's value moves by at most 2^21
+ * units of 2^-51 for one unit of Q in an ordinate or abscissa); the floor
+ * of ar adds less than 2^-51.  The level floor(a' M + 1/2) (a' the rule
+ * applied: non-zero min(|a|, 1), even-odd |a| folded mod 2, both moving a
+ * value by no more than they move a) is decided unless a' M + 1/2 is
+ * within (n + 1) M 2^-29 of an integer (rast__acc_win); any such pixel
+ * sends the whole row to the exact sweep (rast__cov_acc_exact_row), which
+ * writes it again.  The sums are modular in 64 bits: |a| <= n / 2 <
+ * 2^8 (n < 512), so v fits.
  *
  * The cells are cleared by the pass that reads them, which runs over the
  * columns touched only; the pixels left of them are 0, those right of
@@ -1076,11 +1075,10 @@ static void rast__acc_by_bands(const rast__acc_walk *w, rast__acc *v)
                     rast__acc_dband_r(v, ed, off, span);
                 else if (dense)
                     rast__acc_dband_l(v, ed, off, span);
-                else if (ed->dx > 0) {
+                else if (ed->dx > 0)
                     rast__acc_band_r(v, ed, off);
-                } else {
+                else
                     rast__acc_band_l(v, ed, off);
-                }
                 ed->qrow = j1;
             } else {
                 rast__acc_edge(v, ok, ed, j0, f > j0 ? f - j0 : 0, (last[ek] < j1 - 1 ? last[ek] : j1 - 1) - j0,

@@ -381,7 +381,7 @@ RAST__APART void rast__acc_cols_l(rast__acc *a, rast__cedge *e, int64_t off, int
 
 /* The row stepper of an edge that runs through rows, in locals. */
 typedef struct rast__acc_run {
-    int64_t qx, qxs, bias, ca; /* ca: qx's column of the clip */
+    int64_t qx, qxs, bias, ca; /* qx from the clip's left side (bias: its abscissa), >= 0; ca its column */
     uint64_t neg;
     uint32_t qxr, qxsr, dy;
 } rast__acc_run;
@@ -399,7 +399,7 @@ RAST__HOT void rast__acc_run_row(rast__acc *a, rast__cedge *e, rast__acc_run *u,
     u->qxr += u->qxsr;
     xb += rast__acc_carry(&u->qxr, u->dy);
     /* its column of the clip (e lies in it: no clip tests) */
-    cb = (int64_t)(((uint64_t)xb - (uint64_t)u->bias) >> QF) - ((int64_t)1 << 32);
+    cb = (int64_t)((uint64_t)xb >> QF);
     if (ca == cb) {
         rast__acc_put(a->acc, ca, (uint64_t)u->qx & fm, (uint64_t)xb & fm, QT, u->neg);
         if (marks) rast__acc_mark(a, (int32_t)ca, (int32_t)ca + 1);
@@ -440,8 +440,9 @@ RAST__HOT void rast__acc_run_init(rast__acc_run *u, const rast__acc *v, const ra
     u->qxsr = e->qxsr;
     u->dy = (uint32_t)e->dy;
     u->neg = e->dir < 0 ? ~(uint64_t)0 : 0;
-    u->bias = (int64_t)v->x0 * (int64_t)QT - ((int64_t)1 << 62);
-    u->ca = (int64_t)(((uint64_t)u->qx - (uint64_t)u->bias) >> QF) - ((int64_t)1 << 32);
+    u->bias = (int64_t)v->x0 * (int64_t)QT;
+    u->qx -= u->bias;
+    u->ca = (int64_t)((uint64_t)u->qx >> QF);
 }
 
 /* Rows r .. rend of the band (cells v[r]; ok[r] each), which e runs
@@ -453,7 +454,7 @@ RAST__HOT int32_t rast__acc_run_rows(rast__acc *v, const unsigned char *ok, rast
     rast__acc_run u;
     rast__acc_run_init(&u, v, e);
     for (; r <= rend && ok[r]; r++, off += (int64_t)QT) rast__acc_run_row(&v[r], e, &u, off, right, 1);
-    e->qx = u.qx;
+    e->qx = u.qx + u.bias;
     e->qxr = u.qxr;
     return r;
 }
@@ -478,7 +479,7 @@ RAST__HOT void rast__acc_run_band(rast__acc *v, rast__cedge *e, int64_t off, int
         rast__acc_run_row(&v[r + 2], e, &u, off + 2 * (int64_t)QT, right, marks);
         rast__acc_run_row(&v[r + 3], e, &u, off + 3 * (int64_t)QT, right, marks);
     }
-    e->qx = u.qx;
+    e->qx = u.qx + u.bias;
     e->qxr = u.qxr;
     if (span && right)
         span[1] = u.ca > span[1] ? u.ca : span[1];

@@ -95,7 +95,7 @@ def _area2(ring):
 @pytest.mark.parametrize("rule", ["nonzero", "evenodd"])
 @pytest.mark.parametrize("orient", [1, -1])
 @pytest.mark.parametrize("mirror", [False, True])
-@pytest.mark.parametrize("wide", [False, True])
+@pytest.mark.parametrize("wide", [0, 30, 62])
 @pytest.mark.parametrize("hole", [False, True])
 def test_a_level_just_past_a_tie_is_exact(method, rule, orient, mirror, wide, hole):
     """Pixel (2, 1) of the quadrilateral is covered 83/170, a tie in both
@@ -110,7 +110,9 @@ def test_a_level_just_past_a_tie_is_exact(method, rule, orient, mirror, wide, ho
     that leans the same way, outside it): every slanted edge leans left
     instead of one each way, and the row must still be redone (its edges
     are not all vertical).  Wide: a thin box at x = 30 makes the rows 29
-    cells long, so that the pixel is read with 15 others at a time.  Hole:
+    cells long, so that the pixel is read with 15 others at a time (SSE2);
+    at x = 62, 61 cells, the pixel read with 31 others (AVX2, where the
+    processor has it).  Hole:
     the triangle inside the quadrilateral, turning the other way, takes
     2^-33 off instead: the level is the lower one (the cells' error now
     lands on the other side of the tie in some of these scenes)."""
@@ -126,8 +128,8 @@ def test_a_level_just_past_a_tie_is_exact(method, rule, orient, mirror, wide, ho
             tri = [(x + 0.625, y) for x, y in tri]
     quad = quad if orient > 0 else quad[::-1]
     tri = tri if ((_area2(tri) > 0) == (_area2(quad) > 0)) != hole else tri[::-1]
-    rings = [quad, tri] + ([[(30, 0), (30.25, 0), (30.25, 3.984375), (30, 3.984375)]] if wide else [])
-    shape = (5, 40) if wide else (5, 5)
+    rings = [quad, tri] + ([[(wide, 0), (wide + 0.25, 0), (wide + 0.25, 3.984375), (wide, 3.984375)]] if wide else [])
+    shape = (5, wide + 10) if wide else (5, 5)
     exact = exact_area(rings, shape, rule, 16)
     assert exact[1, 2] == F(83, 170) + F(-1 if hole else 1, 2 ** 33)
     n, m = _n_m(rings, 16)
@@ -268,19 +270,23 @@ def test_long_edges_painted_as_written(method):
 
 @pytest.mark.parametrize("method", ["accumulate", "area"])
 @pytest.mark.parametrize("rule", ["nonzero", "evenodd"])
-def test_a_level_just_past_a_tie_is_exact_in_a_band(method, rule):
+@pytest.mark.parametrize("wide", [False, True])
+def test_a_level_just_past_a_tie_is_exact_in_a_band(method, rule, wide):
     """The scene of test_a_level_just_past_a_tie_is_exact beside two tall
     triangles in columns of their own, whose long edges make the call walk
     a band at a time: the row with the near-tie pixel is redone by the exact
     sweep inside its band (without it, 124 and 31996), the band's other
-    rows read out of the cells."""
+    rows read out of the cells.  Wide: a tall box at x = 62 makes the rows
+    61 cells long (read 32 at a time with AVX2)."""
     quad = [(2, 0), (2.125, 0), (3.08984375, 3.984375), (2, 3.984375)]
     d = 2 ** -16
     tri = [(2.875, 1.5), (2.875, 1.5 + d), (2.875 + d, 1.5)]
     tri = tri if (_area2(tri) > 0) == (_area2(quad) > 0) else tri[::-1]
     tall = [[(6.25, 0.5), (8.5, 199.75), (7.125, 1.0)], [(9.5, 2.0), (11.75, 3.0), (10.25, 198.5)]]
+    if wide:
+        tall.append([(62, 0.25), (62.5, 0.25), (62.5, 199.5), (62, 199.5)])
     rings = [quad, tri] + tall
-    shape = (200, 12)
+    shape = (200, 70) if wide else (200, 12)
     exact = exact_area(rings, shape, rule, 16)
     assert exact[1, 2] == F(83, 170) + F(1, 2 ** 33)
     n, m = _n_m(rings, 16)

@@ -43,6 +43,13 @@
 #if defined(__SSE2__) && !defined(RAST_NO_SIMD)
 #include <emmintrin.h> /* (integer vectors only: every x86-64 has them) */
 #define RAST__ACC_SSE2 1
+/* and AVX2 (GCC, clang on x86-64), where the processor has it, asked at
+ * run time (__builtin_cpu_supports: the compiler's runtime keeps the
+ * answer); -DRAST_NO_AVX2 leaves it out */
+#if defined(__GNUC__) && defined(__x86_64__) && !defined(RAST_NO_AVX2)
+#include <immintrin.h>
+#define RAST__ACC_AVX2 1
+#endif
 #endif
 
 #define QF 30
@@ -663,6 +670,52 @@ RAST__HOT __m128i rast__acc_lanes(uint32_t *z, __m128i vw, __m128i vlim, __m128i
 }
 #endif
 
+#ifdef RAST__ACC_AVX2
+/* rast__acc_lanes on 8 lanes, with AVX2's absolute value and unsigned
+ * minimum (for the same values: min(|z|, 2^24), |z| <= 2^31 read as
+ * unsigned; even-odd min(x, 2^25 - x) for x < 2^25) */
+__attribute__((target("avx2"), always_inline)) static inline __m256i
+rast__acc_lanes8(uint32_t *z, __m256i vw, __m256i vlim, __m256i *below, __m256i *above, rast_fill_rule rule)
+{
+    const __m256i one = _mm256_set1_epi32(1 << 24);
+    __m256i *p = (__m256i *)(void *)z, x = _mm256_loadu_si256(p), d;
+    if (rule == RAST_RULE_NONZERO) {
+        x = _mm256_min_epu32(_mm256_abs_epi32(x), one);
+    } else {
+        x = _mm256_and_si256(x, _mm256_set1_epi32((2 << 24) - 1));
+        x = _mm256_min_epu32(x, _mm256_sub_epi32(_mm256_set1_epi32(2 << 24), x));
+    }
+    x = _mm256_add_epi32(_mm256_sub_epi32(_mm256_slli_epi32(x, 8), x), _mm256_set1_epi32(1 << 23)); /* y */
+    d = _mm256_sub_epi32(_mm256_and_si256(x, _mm256_set1_epi32((1 << 24) - 1)), vw);
+    *below = _mm256_or_si256(*below, d);
+    *above = _mm256_or_si256(*above, _mm256_cmpgt_epi32(d, vlim));
+    _mm256_storeu_si256(p, _mm256_setzero_si256());
+    return _mm256_srli_epi32(x, 24);
+}
+
+/* rast__acc_levels24's first 32 n cells and levels, 32 at a time: its
+ * tie flag (nonzero: not certain) */
+__attribute__((target("avx2"))) static uint32_t rast__acc_levels24_avx2(uint32_t *restrict z,
+                                                                       unsigned char *restrict row, size_t n,
+                                                                       uint32_t w, uint32_t lim,
+                                                                       rast_fill_rule rule)
+{
+    __m256i below = _mm256_setzero_si256(), above = below, y0, y1, y2, y3, p;
+    const __m256i vw = _mm256_set1_epi32((int32_t)w), vlim = _mm256_set1_epi32((int32_t)lim);
+    const __m256i order = _mm256_setr_epi32(0, 4, 1, 5, 2, 6, 3, 7);
+    for (; n >= 32; n -= 32, z += 32, row += 32) {
+        y0 = rast__acc_lanes8(z, vw, vlim, &below, &above, rule);
+        y1 = rast__acc_lanes8(z + 8, vw, vlim, &below, &above, rule);
+        y2 = rast__acc_lanes8(z + 16, vw, vlim, &below, &above, rule);
+        y3 = rast__acc_lanes8(z + 24, vw, vlim, &below, &above, rule);
+        /* (the packs work within each half: the words put back in order) */
+        p = _mm256_packus_epi16(_mm256_packs_epi32(y0, y1), _mm256_packs_epi32(y2, y3));
+        _mm256_storeu_si256((__m256i *)(void *)row, _mm256_permutevar8x32_epi32(p, order));
+    }
+    return (uint32_t)_mm256_movemask_epi8(_mm256_or_si256(_mm256_srai_epi32(below, 31), above));
+}
+#endif
+
 RAST__HOT uint32_t rast__acc_levels24(uint32_t *restrict z, unsigned char *restrict row, int32_t lo,
                                       int32_t hi, uint32_t w, rast_fill_rule rule)
 {
@@ -673,6 +726,14 @@ RAST__HOT uint32_t rast__acc_levels24(uint32_t *restrict z, unsigned char *restr
      * an int index may wrap, and the compiler would not vectorise */
     z += lo;
     row += lo;
+#ifdef RAST__ACC_AVX2
+    if (n >= 32 && __builtin_cpu_supports("avx2")) {
+        bad = rast__acc_levels24_avx2(z, row, n, w, lim, rule);
+        z += n & ~(size_t)31;
+        row += n & ~(size_t)31;
+        n &= 31;
+    }
+#endif
 #ifdef RAST__ACC_SSE2
     {
         /* rast__acc_level24 written out on 4 x 4 lanes (rast__acc_lanes):
@@ -688,7 +749,7 @@ RAST__HOT uint32_t rast__acc_levels24(uint32_t *restrict z, unsigned char *restr
             y3 = rast__acc_lanes(z + 12, vw, vlim, &below, &above, rule);
             _mm_storeu_si128((__m128i *)(void *)row, _mm_packus_epi16(_mm_packs_epi32(y0, y1), _mm_packs_epi32(y2, y3)));
         }
-        bad = (uint32_t)_mm_movemask_epi8(_mm_or_si128(_mm_srai_epi32(below, 31), above));
+        bad |= (uint32_t)_mm_movemask_epi8(_mm_or_si128(_mm_srai_epi32(below, 31), above));
     }
 #else
     for (; n >= 16; n -= 16, z += 16, row += 16) /* 16 at a time: no tail loop to add */

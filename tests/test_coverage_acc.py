@@ -271,26 +271,31 @@ def test_long_edges_painted_as_written(method):
 @pytest.mark.parametrize("method", ["accumulate", "area"])
 @pytest.mark.parametrize("rule", ["nonzero", "evenodd"])
 @pytest.mark.parametrize("wide", [False, True])
-def test_a_level_just_past_a_tie_is_exact_in_a_band(method, rule, wide):
+@pytest.mark.parametrize("hole", [False, True])
+def test_a_level_just_past_a_tie_is_exact_in_a_band(method, rule, wide, hole):
     """The scene of test_a_level_just_past_a_tie_is_exact beside two tall
     triangles in columns of their own, whose long edges make the call walk
     a band at a time: the row with the near-tie pixel is redone by the exact
     sweep inside its band (without it, 124 and 31996), the band's other
     rows read out of the cells.  Wide: a tall box at x = 62 makes the rows
-    61 cells long (read 32 at a time with AVX2)."""
+    61 cells long (read 32 at a time with AVX2, or the band's four rows 8
+    columns at a time).  Hole: the triangle inside the quadrilateral,
+    turning the other way (the level the lower one), as there."""
     quad = [(2, 0), (2.125, 0), (3.08984375, 3.984375), (2, 3.984375)]
     d = 2 ** -16
     tri = [(2.875, 1.5), (2.875, 1.5 + d), (2.875 + d, 1.5)]
-    tri = tri if (_area2(tri) > 0) == (_area2(quad) > 0) else tri[::-1]
+    if hole:
+        tri = [(x - 0.625, y) for x, y in tri]
+    tri = tri if ((_area2(tri) > 0) == (_area2(quad) > 0)) != hole else tri[::-1]
     tall = [[(6.25, 0.5), (8.5, 199.75), (7.125, 1.0)], [(9.5, 2.0), (11.75, 3.0), (10.25, 198.5)]]
     if wide:
         tall.append([(62, 0.25), (62.5, 0.25), (62.5, 199.5), (62, 199.5)])
     rings = [quad, tri] + tall
     shape = (200, 70) if wide else (200, 12)
     exact = exact_area(rings, shape, rule, 16)
-    assert exact[1, 2] == F(83, 170) + F(1, 2 ** 33)
+    assert exact[1, 2] == F(83, 170) + F(-1 if hole else 1, 2 ** 33)
     n, m = _n_m(rings, 16)
-    for dtype, want in ((np.uint8, 125), (np.uint16, 31997)):
+    for dtype, want in ((np.uint8, 124 if hole else 125), (np.uint16, 31996 if hole else 31997)):
         out = rastrum.polygon_coverage(rings, shape, rule=rule, method=method, dtype=dtype, subpixel_bits=16)
         assert out[1, 2] == want
         check_area(out, exact, M_OF[dtype], n, m, "%s %s" % (method, rule))

@@ -60,6 +60,12 @@
  * edges mark no cell, rast__acc_dband_r) */
 #define RAST__ACC_DENSE_BAND 32
 #define RAST__ACC_LONG 32
+/* A band's cells of a column, one for each of its rows, are next to each
+ * other (so that the rows are read out together, a column at a time:
+ * rast__acc_quad): a band row's cells are RAST__ACC_SX words apart, a
+ * lone row's next to each other (sx, a constant at each call: 1 or
+ * RAST__ACC_SX) */
+#define RAST__ACC_SX RAST__ACC_BAND
 
 /* A stepper's remainder r (< d, after adding a step's remainder below d)
  * brought below d again: returns the carry, 1 or 0, with no branch (it is
@@ -166,19 +172,19 @@ RAST__HOT void rast__acc_mark(rast__acc *a, int32_t lo, int32_t hi)
 }
 
 /* One column's piece: fractions f0 .. f1, height dy, signed by neg (0 or
- * all ones); column k of the clip (0 <= k < width). */
+ * all ones); column k of the clip (0 <= k < width), cells sx apart. */
 RAST__HOT void rast__acc_put(uint64_t *acc, int64_t k, uint64_t f0, uint64_t f1, uint64_t dy,
-                                 uint64_t neg)
+                                 uint64_t neg, int32_t sx)
 {
     uint64_t ar = ((f0 + f1) * dy) >> 10;
-    acc[k] += (((dy << 21) - ar) ^ neg) - neg;
-    acc[k + 1] += (ar ^ neg) - neg;
+    acc[k * sx] += (((dy << 21) - ar) ^ neg) - neg;
+    acc[(k + 1) * sx] += (ar ^ neg) - neg;
 }
 
 /* The part of e from (xa, ta) to (xb, tb) (Q units; t from the row's top,
- * whose top is off below e's top), sign s. */
+ * whose top is off below e's top), sign s; cells sx apart. */
 RAST__HOT void rast__acc_part(rast__acc *a, rast__cedge *e, int64_t off, int64_t xa, uint64_t ta,
-                           int64_t xb, uint64_t tb, int32_t s)
+                           int64_t xb, uint64_t tb, int32_t s, int32_t sx)
 {
     const uint64_t fm = QT - 1, neg = s < 0 ? ~(uint64_t)0 : 0;
     uint64_t *acc = a->acc;
@@ -194,7 +200,7 @@ RAST__HOT void rast__acc_part(rast__acc *a, rast__cedge *e, int64_t off, int64_t
     if (ca == cb) {
         if (ca >= a->x1) return;
         lo = hi = ca - a->x0;
-        rast__acc_put(acc, lo, f, fb, tb - ta, neg);
+        rast__acc_put(acc, lo, f, fb, tb - ta, neg, sx);
         rast__acc_mark(a, (int32_t)lo, (int32_t)hi + 1);
         return;
     }
@@ -253,7 +259,7 @@ RAST__HOT void rast__acc_part(rast__acc *a, rast__cedge *e, int64_t off, int64_t
     qtr = e->qtr;
     for (col = ca; col != cend; col += step) {
         uint64_t tx = qt < (int64_t)t ? t : qt > (int64_t)tb ? tb : (uint64_t)qt;
-        rast__acc_put(acc, col - a->x0, f, fout, tx - t, neg);
+        rast__acc_put(acc, col - a->x0, f, fout, tx - t, neg, sx);
         t = tx;
         f = fin;
         qt += e->qts;
@@ -267,7 +273,7 @@ RAST__HOT void rast__acc_part(rast__acc *a, rast__cedge *e, int64_t off, int64_t
     e->qtr = qtr;
     e->qX += col - ca;
     if (col == cb && col >= a->x0 && col < a->x1) { /* the last column, inside the clip */
-        rast__acc_put(acc, col - a->x0, f, fb, tb - t, neg);
+        rast__acc_put(acc, col - a->x0, f, fb, tb - t, neg, sx);
     } else if (col < a->x0) { /* the rest is left of the clip */
         acc[0] += (((tb - t) << 21) ^ neg) - neg;
     } /* else the rest is right of the clip */
@@ -296,17 +302,17 @@ static int32_t rast__acc_thru(const rast__cedge *e, const rast__acc *a)
 /* e's part in row j (rel0 = e's top - the row's): rast__acc_ends, then
  * rast__acc_part; inline in the rows' walk, out of line in the bands'
  * (rast__acc_row_part), where it is the rare way */
-RAST__HOT void rast__acc_row_part_in(rast__acc *a, rast__cedge *e, int32_t j, int64_t rel0)
+RAST__HOT void rast__acc_row_part_in(rast__acc *a, rast__cedge *e, int32_t j, int64_t rel0, int32_t sx)
 {
     int64_t xa, xb;
     uint64_t ta, tb;
     rast__acc_ends(e, j, rel0, a, &xa, &ta, &xb, &tb);
-    rast__acc_part(a, e, -rel0 * ((int64_t)1 << a->hq), xa, ta, xb, tb, e->dir);
+    rast__acc_part(a, e, -rel0 * ((int64_t)1 << a->hq), xa, ta, xb, tb, e->dir, sx);
 }
 
 RAST__APART void rast__acc_row_part(rast__acc *a, rast__cedge *e, int32_t j, int64_t rel0)
 {
-    rast__acc_row_part_in(a, e, j, rel0);
+    rast__acc_row_part_in(a, e, j, rel0, RAST__ACC_SX);
 }
 
 /* The part of e through a whole row from xa (its top) to xb (its bottom)
@@ -332,7 +338,7 @@ RAST__HOT void rast__acc_cols_in(rast__acc *a, rast__cedge *e, int64_t off, int6
      * column's, of height d / 2^20 between two verticals, adds d to its
      * cell and the next (rast__acc_put with f0 + f1 = QT), which the loop
      * carries: prev, the last piece's share for the next cell */
-    rast__acc_put(acc, ca, f, right ? QT : 0, (uint64_t)qt, neg);
+    rast__acc_put(acc, ca, f, right ? QT : 0, (uint64_t)qt, neg, RAST__ACC_SX);
     t = (uint64_t)qt;
     if (right) {
         for (col = ca + 1; col != cb; col++) {
@@ -340,11 +346,11 @@ RAST__HOT void rast__acc_cols_in(rast__acc *a, rast__cedge *e, int64_t off, int6
             qtr += qtsr;
             qt += rast__acc_carry(&qtr, adx);
             d = ((((uint64_t)qt - t) << 20) ^ neg) - neg;
-            acc[col] += d + prev;
+            acc[col * RAST__ACC_SX] += d + prev;
             prev = d;
             t = (uint64_t)qt;
         }
-        acc[cb] += prev;
+        acc[cb * RAST__ACC_SX] += prev;
         rast__acc_mark(a, (int32_t)ca, (int32_t)cb + 1);
         f = 0;
     } else {
@@ -353,18 +359,18 @@ RAST__HOT void rast__acc_cols_in(rast__acc *a, rast__cedge *e, int64_t off, int6
             qtr += qtsr;
             qt += rast__acc_carry(&qtr, adx);
             d = ((((uint64_t)qt - t) << 20) ^ neg) - neg;
-            acc[col + 1] += d + prev;
+            acc[(col + 1) * RAST__ACC_SX] += d + prev;
             prev = d;
             t = (uint64_t)qt;
         }
-        acc[cb + 1] += prev;
+        acc[(cb + 1) * RAST__ACC_SX] += prev;
         rast__acc_mark(a, (int32_t)cb, (int32_t)ca + 1);
         f = QT;
     }
     qt += qts; /* the stepper to the vertical after this part's last */
     qtr += qtsr;
     qt += rast__acc_carry(&qtr, adx);
-    rast__acc_put(acc, cb, f, (uint64_t)xb & fm, QT - t, neg);
+    rast__acc_put(acc, cb, f, (uint64_t)xb & fm, QT - t, neg, RAST__ACC_SX);
     e->qt = qt + off;
     e->qtr = qtr;
     e->qX += cb - ca;
@@ -408,7 +414,7 @@ RAST__HOT void rast__acc_run_row(rast__acc *a, rast__cedge *e, rast__acc_run *u,
     /* its column of the clip (e lies in it: no clip tests) */
     cb = (int64_t)((uint64_t)xb >> QF);
     if (ca == cb) {
-        rast__acc_put(a->acc, ca, (uint64_t)u->qx & fm, (uint64_t)xb & fm, QT, u->neg);
+        rast__acc_put(a->acc, ca, (uint64_t)u->qx & fm, (uint64_t)xb & fm, QT, u->neg, RAST__ACC_SX);
         if (marks) rast__acc_mark(a, (int32_t)ca, (int32_t)ca + 1);
     } else if (cb == ca + (right ? 1 : -1) && e->qX == ca + (int64_t)right + a->x0) {
         /* one vertical crossed, the column stepper there (as the last
@@ -416,8 +422,8 @@ RAST__HOT void rast__acc_run_row(rast__acc *a, rast__cedge *e, rast__acc_run *u,
         const uint64_t t = (uint64_t)(e->qt - off);
         const uint32_t adx = (uint32_t)(e->dx < 0 ? -e->dx : e->dx);
         uint32_t qtr = e->qtr + e->qtsr;
-        rast__acc_put(a->acc, ca, (uint64_t)u->qx & fm, right ? QT : 0, t, u->neg);
-        rast__acc_put(a->acc, cb, right ? 0 : QT, (uint64_t)xb & fm, QT - t, u->neg);
+        rast__acc_put(a->acc, ca, (uint64_t)u->qx & fm, right ? QT : 0, t, u->neg, RAST__ACC_SX);
+        rast__acc_put(a->acc, cb, right ? 0 : QT, (uint64_t)xb & fm, QT - t, u->neg, RAST__ACC_SX);
         e->qt += e->qts + rast__acc_carry(&qtr, adx);
         e->qtr = qtr;
         e->qX += right ? 1 : -1;
@@ -589,25 +595,26 @@ RAST__HOT uint64_t rast__acc_level(int64_t v, rast_fill_rule rule, uint32_t m, u
  * second pass, on 32 bits: z is v / 2^27 exactly as a signed 32-bit value
  * when |a| < 2^7 (n < 256: the caller's condition for non-zero), and its
  * low 25 bits are (v mod 2^52) / 2^27 floored whatever n (even-odd). */
-RAST__HOT void rast__acc_sum24(uint64_t *restrict acc, uint32_t *restrict z, int32_t lo, int32_t hi)
+RAST__HOT void rast__acc_sum24(uint64_t *restrict acc, uint32_t *restrict z, int32_t lo, int32_t hi, int32_t sx_)
 {
     /* from 2^62: no >> of a negative value; it adds 2^35 to the floor,
      * which leaves the low 32 bits as they were */
-    uint64_t v = (uint64_t)1 << 62, *c = acc + lo;
+    const size_t sx = (size_t)sx_;
+    uint64_t v = (uint64_t)1 << 62, *c = acc + (size_t)lo * sx;
     size_t n = (size_t)(hi - lo), i;
     z += lo;
-    for (; n >= 4; n -= 4, c += 4, z += 4) { /* (4 a turn, written out: -O2 does not unroll) */
-        const uint64_t v0 = v + c[0], v1 = v0 + c[1], v2 = v1 + c[2];
-        v = v2 + c[3];
+    for (; n >= 4; n -= 4, c += 4 * sx, z += 4) { /* (4 a turn, written out: -O2 does not unroll) */
+        const uint64_t v0 = v + c[0], v1 = v0 + c[sx], v2 = v1 + c[2 * sx];
+        v = v2 + c[3 * sx];
         z[0] = (uint32_t)(v0 >> 27);
         z[1] = (uint32_t)(v1 >> 27);
         z[2] = (uint32_t)(v2 >> 27);
         z[3] = (uint32_t)(v >> 27);
-        c[0] = c[1] = c[2] = c[3] = 0;
+        c[0] = c[sx] = c[2 * sx] = c[3 * sx] = 0;
     }
     for (i = 0; i < n; i++) {
-        v += c[i];
-        c[i] = 0;
+        v += c[i * sx];
+        c[i * sx] = 0;
         z[i] = (uint32_t)(v >> 27);
     }
 }
@@ -675,10 +682,10 @@ RAST__HOT __m128i rast__acc_lanes(uint32_t *z, __m128i vw, __m128i vlim, __m128i
  * minimum (for the same values: min(|z|, 2^24), |z| <= 2^31 read as
  * unsigned; even-odd min(x, 2^25 - x) for x < 2^25) */
 __attribute__((target("avx2"), always_inline)) static inline __m256i
-rast__acc_lanes8(uint32_t *z, __m256i vw, __m256i vlim, __m256i *below, __m256i *above, rast_fill_rule rule)
+rast__acc_x8(__m256i x, __m256i vw, __m256i vlim, __m256i *below, __m256i *above, rast_fill_rule rule)
 {
     const __m256i one = _mm256_set1_epi32(1 << 24);
-    __m256i *p = (__m256i *)(void *)z, x = _mm256_loadu_si256(p), d;
+    __m256i d;
     if (rule == RAST_RULE_NONZERO) {
         x = _mm256_min_epu32(_mm256_abs_epi32(x), one);
     } else {
@@ -689,9 +696,84 @@ rast__acc_lanes8(uint32_t *z, __m256i vw, __m256i vlim, __m256i *below, __m256i 
     d = _mm256_sub_epi32(_mm256_and_si256(x, _mm256_set1_epi32((1 << 24) - 1)), vw);
     *below = _mm256_or_si256(*below, d);
     *above = _mm256_or_si256(*above, _mm256_cmpgt_epi32(d, vlim));
-    _mm256_storeu_si256(p, _mm256_setzero_si256());
     return _mm256_srli_epi32(x, 24);
 }
+
+/* the same on the 8 words at z, which are cleared */
+__attribute__((target("avx2"), always_inline)) static inline __m256i
+rast__acc_lanes8(uint32_t *z, __m256i vw, __m256i vlim, __m256i *below, __m256i *above, rast_fill_rule rule)
+{
+    __m256i *p = (__m256i *)(void *)z, x = _mm256_loadu_si256(p);
+    _mm256_storeu_si256(p, _mm256_setzero_si256());
+    return rast__acc_x8(x, vw, vlim, below, above, rule);
+}
+
+/* Two columns' levels in the 4 rows of a band: the running sums s (of
+ * the columns so far, one lane a row) plus the cells at c, then at c + 4
+ * (cleared): [k0 k1 l0 l1 | k2 k3 l2 l3], k and l the columns, 0..3 the
+ * rows (vw, vlim in that order) */
+__attribute__((target("avx2"), always_inline)) static inline __m256i
+rast__acc_pair8(uint64_t *c, __m256i *s, __m256i vw, __m256i vlim, __m256i *below, __m256i *above,
+                rast_fill_rule rule)
+{
+    __m256i *p = (__m256i *)(void *)c, a, b;
+    a = *s = _mm256_add_epi64(*s, _mm256_loadu_si256(p));
+    b = *s = _mm256_add_epi64(*s, _mm256_loadu_si256(p + 1));
+    _mm256_storeu_si256(p, _mm256_setzero_si256());
+    _mm256_storeu_si256(p + 1, _mm256_setzero_si256());
+    a = _mm256_srli_epi64(a, 27); /* (z, as rast__acc_sum24's, in each low word) */
+    b = _mm256_srli_epi64(b, 27);
+    return rast__acc_x8(_mm256_castps_si256(_mm256_shuffle_ps(_mm256_castsi256_ps(a), _mm256_castsi256_ps(b), 0x88)),
+                        vw, vlim, below, above, rule);
+}
+
+/* The levels of the 4 rows of a band, out[r] each, from the cells of
+ * columns [lo, hi) (cleared), 8 columns at a time, the rest one at a time
+ * as rast__acc_sum24 and rast__acc_level24 do (a row's z from its lane);
+ * w[r]: row r's window as rast__acc_levels24's.  Returns the rows' tie
+ * flags, bit r for row r. */
+__attribute__((target("avx2"))) static uint32_t rast__acc_quad_avx2(uint64_t *restrict cells, int32_t lo,
+                                                                   int32_t hi, unsigned char *const *out,
+                                                                   const uint32_t *w, rast_fill_rule rule)
+{
+    const uint32_t one = (uint32_t)1 << 24;
+    const __m256i vw = _mm256_setr_epi32((int32_t)w[0], (int32_t)w[1], (int32_t)w[0], (int32_t)w[1],
+                                         (int32_t)w[2], (int32_t)w[3], (int32_t)w[2], (int32_t)w[3]);
+    const __m256i vlim = _mm256_sub_epi32(_mm256_set1_epi32((int32_t)one), _mm256_add_epi32(vw, vw));
+    /* a lane's bytes, the 8 columns of its first row, then of its second */
+    const __m256i order = _mm256_setr_epi8(0, 2, 4, 6, 8, 10, 12, 14, 1, 3, 5, 7, 9, 11, 13, 15, 0, 2, 4, 6, 8,
+                                           10, 12, 14, 1, 3, 5, 7, 9, 11, 13, 15);
+    __m256i below = _mm256_setzero_si256(), above = below, s = _mm256_set1_epi64x((int64_t)1 << 62), y0, y1, y2, y3;
+    uint64_t *c = cells + (size_t)lo * RAST__ACC_SX, v[4];
+    uint32_t bad = 0, m, z;
+    int32_t k = lo, r;
+    for (; hi - k >= 8; k += 8, c += 8 * RAST__ACC_SX) {
+        __m128i q0, q1;
+        y0 = rast__acc_pair8(c, &s, vw, vlim, &below, &above, rule);
+        y1 = rast__acc_pair8(c + 2 * RAST__ACC_SX, &s, vw, vlim, &below, &above, rule);
+        y2 = rast__acc_pair8(c + 4 * RAST__ACC_SX, &s, vw, vlim, &below, &above, rule);
+        y3 = rast__acc_pair8(c + 6 * RAST__ACC_SX, &s, vw, vlim, &below, &above, rule);
+        y0 = _mm256_shuffle_epi8(_mm256_packus_epi16(_mm256_packs_epi32(y0, y1), _mm256_packs_epi32(y2, y3)), order);
+        q0 = _mm256_castsi256_si128(y0);
+        q1 = _mm256_extracti128_si256(y0, 1);
+        _mm_storel_epi64((__m128i *)(void *)(out[0] + k), q0);
+        _mm_storel_epi64((__m128i *)(void *)(out[1] + k), _mm_srli_si128(q0, 8));
+        _mm_storel_epi64((__m128i *)(void *)(out[2] + k), q1);
+        _mm_storel_epi64((__m128i *)(void *)(out[3] + k), _mm_srli_si128(q1, 8));
+    }
+    m = (uint32_t)_mm256_movemask_ps(_mm256_castsi256_ps(_mm256_or_si256(_mm256_srai_epi32(below, 31), above)));
+    bad = ((m | m >> 2) & 3) | ((m >> 2 | m >> 4) & 12);
+    _mm256_storeu_si256((__m256i *)(void *)v, s);
+    for (; k < hi; k++, c += RAST__ACC_SX)
+        for (r = 0; r < 4; r++) {
+            v[r] += c[r];
+            c[r] = 0;
+            z = (uint32_t)(v[r] >> 27);
+            bad |= rast__acc_level24(&z, out[r] + k, w[r], one - 2 * w[r], rule) << r;
+        }
+    return bad;
+}
+
 
 /* rast__acc_levels24's first 32 n cells and levels, 32 at a time: its
  * tie flag (nonzero: not certain) */
@@ -764,8 +846,8 @@ RAST__HOT uint32_t rast__acc_levels24(uint32_t *restrict z, unsigned char *restr
  * their bits; the pixels left of lo get 0, those from hi on the last sum's
  * level.  rule and m are constants at each call (one loop each).  Returns
  * a tie's flag (rast__acc_level's). */
-RAST__HOT uint64_t rast__acc_row(uint64_t *acc, uint64_t *blk, uint32_t *z, unsigned char *row, int32_t lo,
-                                 int32_t hi, int32_t w, int dense, rast_fill_rule rule, uint32_t m,
+RAST__HOT uint64_t rast__acc_row(uint64_t *acc, int32_t sx, uint64_t *blk, uint32_t *z, unsigned char *row,
+                                 int32_t lo, int32_t hi, int32_t w, int dense, rast_fill_rule rule, uint32_t m,
                                  uint64_t win)
 {
     const rast_coverage_format f = m == 255 ? RAST_COVERAGE_U8 : RAST_COVERAGE_U16;
@@ -775,14 +857,14 @@ RAST__HOT uint64_t rast__acc_row(uint64_t *acc, uint64_t *blk, uint32_t *z, unsi
     rast__cov_fill(f, row, 0, lo, 0);
     if (dense && m == 255 && lo < hi && (rule == RAST_RULE_EVENODD || win <= rast__acc_win(255, 255))) {
         /* (non-zero: n < 256) */
-        rast__acc_sum24(acc, z, lo, hi);
+        rast__acc_sum24(acc, z, lo, hi, sx);
         bad = rast__acc_levels24(z, row, lo, hi, (uint32_t)(win >> 27) + 256, rule);
         lev = row[hi - 1];
         k = hi;
     } else if (dense) { /* no branch on the cell: half of them are 0, at random */
         for (; k < hi; k++) {
-            v += acc[k];
-            acc[k] = 0;
+            v += acc[k * sx];
+            acc[k * sx] = 0;
             lev = rast__acc_level((int64_t)v, rule, m, win, &bad);
             if (m == 255)
                 row[k] = (unsigned char)lev;
@@ -795,10 +877,10 @@ RAST__HOT uint64_t rast__acc_row(uint64_t *acc, uint64_t *blk, uint32_t *z, unsi
             blk[wi] = 0;
             for (; b; b &= b - 1) {
                 int32_t col = (wi << 6) + (int32_t)rast__ctz64(b);
-                uint64_t d = acc[col];
+                uint64_t d = acc[col * sx];
                 if (col > k) rast__cov_fill(f, row, k, col, lev);
                 if (d) {
-                    acc[col] = 0;
+                    acc[col * sx] = 0;
                     v += d;
                     lev = rast__acc_level((int64_t)v, rule, m, win, &bad);
                 }
@@ -814,16 +896,30 @@ RAST__HOT uint64_t rast__acc_row(uint64_t *acc, uint64_t *blk, uint32_t *z, unsi
     return bad;
 }
 
+/* rast__acc_row for uint8, one for each rule and spacing of the cells (a
+ * lone row's, a band row's) */
 static uint64_t rast__acc_row_u8nz(uint64_t *acc, uint64_t *blk, uint32_t *z, unsigned char *row, int32_t lo,
                                    int32_t hi, int32_t w, int dense, uint64_t win)
 {
-    return rast__acc_row(acc, blk, z, row, lo, hi, w, dense, RAST_RULE_NONZERO, 255, win);
+    return rast__acc_row(acc, 1, blk, z, row, lo, hi, w, dense, RAST_RULE_NONZERO, 255, win);
 }
 
 static uint64_t rast__acc_row_u8eo(uint64_t *acc, uint64_t *blk, uint32_t *z, unsigned char *row, int32_t lo,
                                    int32_t hi, int32_t w, int dense, uint64_t win)
 {
-    return rast__acc_row(acc, blk, z, row, lo, hi, w, dense, RAST_RULE_EVENODD, 255, win);
+    return rast__acc_row(acc, 1, blk, z, row, lo, hi, w, dense, RAST_RULE_EVENODD, 255, win);
+}
+
+static uint64_t rast__acc_brow_u8nz(uint64_t *acc, uint64_t *blk, uint32_t *z, unsigned char *row, int32_t lo,
+                                    int32_t hi, int32_t w, int dense, uint64_t win)
+{
+    return rast__acc_row(acc, RAST__ACC_SX, blk, z, row, lo, hi, w, dense, RAST_RULE_NONZERO, 255, win);
+}
+
+static uint64_t rast__acc_brow_u8eo(uint64_t *acc, uint64_t *blk, uint32_t *z, unsigned char *row, int32_t lo,
+                                    int32_t hi, int32_t w, int dense, uint64_t win)
+{
+    return rast__acc_row(acc, RAST__ACC_SX, blk, z, row, lo, hi, w, dense, RAST_RULE_EVENODD, 255, win);
 }
 
 /* Are the edges ix[0..n) all vertical?  Then the sums of a row of their
@@ -838,11 +934,19 @@ static int rast__acc_vertical(const rast__cedge *e, const int32_t *ix, int32_t n
     return 1;
 }
 
-/* Row y from the cells touched, which are cleared: 1 when done (handed
- * on), 0 when a level is not certain (nothing handed on) unless the row's
- * edges ix[0..n) are all vertical (rast__acc_vertical; it is asked only
- * then). */
-RAST__HOT int rast__acc_emit(rast__acc *a, const rast__cov_out *o, int32_t y, rast_fill_rule rule,
+/* Row y, written, its tie flag bad: 1 when done (handed on), 0 when a
+ * level is not certain (nothing handed on) unless the row's edges
+ * ix[0..n) are all vertical (rast__acc_vertical; it is asked only then). */
+static int rast__acc_done(const rast__cov_out *o, int32_t y, uint64_t bad, const rast__cedge *e,
+                          const int32_t *ix, int32_t n)
+{
+    if (bad && !rast__acc_vertical(e, ix, n)) return 0;
+    rast__cov_row_done(o, y);
+    return 1;
+}
+
+/* Row y from the cells touched, which are cleared: rast__acc_done's. */
+RAST__HOT int rast__acc_emit(rast__acc *a, int32_t sx, const rast__cov_out *o, int32_t y, rast_fill_rule rule,
                           uint32_t m, uint64_t win, const rast__cedge *e, const int32_t *ix, int32_t n)
 {
     unsigned char *row = rast__cov_row(o, y);
@@ -851,18 +955,53 @@ RAST__HOT int rast__acc_emit(rast__acc *a, const rast__cov_out *o, int32_t y, ra
     int32_t lo = a->lo, hi = a->hi < w ? a->hi + 1 : w; /* [lo, hi) */
     if (lo >= hi) lo = hi = 0;
     if (o->format != RAST_COVERAGE_U8)
-        bad = rast__acc_row(a->acc, a->blk, a->z, row, lo, hi, w, a->dense, rule, m, win);
+        bad = rast__acc_row(a->acc, sx, a->blk, a->z, row, lo, hi, w, a->dense, rule, m, win);
     else if (rule == RAST_RULE_NONZERO)
-        bad = rast__acc_row_u8nz(a->acc, a->blk, a->z, row, lo, hi, w, a->dense, win);
+        bad = (sx == 1 ? rast__acc_row_u8nz : rast__acc_brow_u8nz)(a->acc, a->blk, a->z, row, lo, hi, w, a->dense,
+                                                                    win);
     else
-        bad = rast__acc_row_u8eo(a->acc, a->blk, a->z, row, lo, hi, w, a->dense, win);
-    a->acc[w] = 0;
+        bad = (sx == 1 ? rast__acc_row_u8eo : rast__acc_brow_u8eo)(a->acc, a->blk, a->z, row, lo, hi, w, a->dense,
+                                                                    win);
+    a->acc[w * sx] = 0;
     a->lo = INT32_MAX;
     a->hi = -1;
-    if (bad && !rast__acc_vertical(e, ix, n)) return 0;
-    rast__cov_row_done(o, y);
+    return rast__acc_done(o, y, bad, e, ix, n);
+}
+
+#ifdef RAST__ACC_AVX2
+/* The 4 rows of the band j0 .. j0 + 3 (cells v[r], all dense, uint8, each
+ * as rast__acc_row reads its quickly: cnt[r] parts, rule), read out
+ * together (rast__acc_quad_avx2) into o, an array; the cells cleared.
+ * Returns 1 with the rows' tie flags in *bad (bit r: row r), or 0 (no
+ * cell touched: nothing done). */
+static int rast__acc_quad(rast__acc *v, const rast__cov_out *o, int32_t j0, const int32_t *cnt,
+                          rast_fill_rule rule, uint32_t *bad)
+{
+    const int32_t w = v->x1 - v->x0;
+    unsigned char *out[4];
+    uint32_t win[4];
+    int32_t lo = INT32_MAX, hi = -1, r;
+    for (r = 0; r < 4; r++) {
+        lo = v[r].lo < lo ? v[r].lo : lo;
+        hi = v[r].hi > hi ? v[r].hi : hi;
+    }
+    hi = hi < w ? hi + 1 : w;
+    if (lo >= hi) return 0;
+    for (r = 0; r < 4; r++) {
+        out[r] = rast__cov_row(o, j0 + r);
+        win[r] = (uint32_t)(rast__acc_win((uint64_t)cnt[r], 255) >> 27) + 256;
+        rast__cov_fill(RAST_COVERAGE_U8, out[r], 0, lo, 0);
+    }
+    *bad = rast__acc_quad_avx2(v->acc, lo, hi, out, win, rule);
+    for (r = 0; r < 4; r++) {
+        rast__cov_fill(RAST_COVERAGE_U8, out[r], hi, w, out[r][hi - 1]);
+        v->acc[w * RAST__ACC_SX + r] = 0;
+        v[r].lo = INT32_MAX;
+        v[r].hi = -1;
+    }
     return 1;
 }
+#endif
 
 /* ---- "area" rows by the accumulation ------------------------------------
  *
@@ -983,9 +1122,9 @@ int rast__cov_acc_area_row(rast__cedge *e, const int32_t *row, int32_t nrow, con
     for (k = 0; k < nrow; k++) {
         rast__cedge *ed = &e[row[k]];
         rast__acc_part(&a, ed, -((int64_t)ed->yt - Yj) * ((int64_t)1 << a.hq), ed->qa, ed->qta,
-                       ed->qb, ed->qtb, ed->dir);
+                       ed->qb, ed->qtb, ed->dir, 1);
     }
-    return rast__acc_emit(&a, o, j, rule, m, rast__acc_win((uint64_t)nrow, m), e, row, nrow);
+    return rast__acc_emit(&a, 1, o, j, rule, m, rast__acc_win((uint64_t)nrow, m), e, row, nrow);
 }
 
 void rast__cov_radix_sort(int32_t *ix, int32_t *tmp, const int32_t *key, uint32_t n)
@@ -1075,8 +1214,8 @@ static void rast__acc_by_rows(const rast__acc_walk *w, rast__acc *a)
              * (a part or more for every RAST__ACC_DENSE columns): then every
              * cell from the first touched to the last is read. */
             a->dense = (int64_t)nrow * RAST__ACC_DENSE >= w->width;
-            for (k = 0; k < nrow; k++) rast__acc_row_part_in(a, &e[row[k]], j, (int64_t)e[row[k]].yt - Yj);
-            if (rast__acc_emit(a, o, j, w->rule, m, rast__acc_win((uint64_t)nrow, m), e, row, nrow)) continue;
+            for (k = 0; k < nrow; k++) rast__acc_row_part_in(a, &e[row[k]], j, (int64_t)e[row[k]].yt - Yj, 1);
+            if (rast__acc_emit(a, 1, o, j, w->rule, m, rast__acc_win((uint64_t)nrow, m), e, row, nrow)) continue;
         }
         if (!exact) { /* the first exact row (rare) */
             rast__cov_exact_steps(e, w->n);
@@ -1100,7 +1239,8 @@ static void rast__acc_by_bands(const rast__acc_walk *w, rast__acc *v)
     unsigned char ok[RAST__ACC_BAND + 1]; /* each row's, then all rows' */
     int32_t cnt[RAST__ACC_BAND + 1], nrow = 0, j0, j1, k, q, r, drop = INT32_MAX;
     int64_t top, span[2]; /* the band's top (subpixels); the columns of its dense walks */
-    int dense; /* every row of the band dense */
+    int dense, quad; /* every row of the band dense; its rows read out together */
+    uint32_t qbad = 0; /* (their tie flags) */
     uint32_t next = 0;
     int clean = 0; /* cover[], area[] and bits[] cleared, the exact steps set */
     for (j0 = ja; j0 < w->jb; j0 = j1) {
@@ -1153,10 +1293,21 @@ static void rast__acc_by_bands(const rast__acc_walk *w, rast__acc *v)
                 v[r].lo = lo < v[r].lo ? lo : v[r].lo;
                 v[r].hi = hi > v[r].hi ? hi : v[r].hi;
             }
+        quad = 0;
+#ifdef RAST__ACC_AVX2
+        /* the four rows read out together, when each would be read the
+         * quick way (rast__acc_row) into an array */
+        if (ok[RAST__ACC_BAND] && dense && m == 255 && !o->paint &&
+            (w->rule == RAST_RULE_EVENODD || (cnt[0] < 256 && cnt[1] < 256 && cnt[2] < 256 && cnt[3] < 256)) &&
+            __builtin_cpu_supports("avx2"))
+            quad = rast__acc_quad(v, o, j0, cnt, w->rule, &qbad);
+#endif
         for (r = 0; r < j1 - j0; r++) {
             const int32_t j = j0 + r;
             /* (on a tie, the band's edges all vertical will do) */
-            if (ok[r] && rast__acc_emit(&v[r], o, j, w->rule, m, rast__acc_win((uint64_t)cnt[r], m), e, row, nrow))
+            if (ok[r] && (quad ? rast__acc_done(o, j, (qbad >> r) & 1, e, row, nrow)
+                               : rast__acc_emit(&v[r], RAST__ACC_SX, o, j, w->rule, m,
+                                                rast__acc_win((uint64_t)cnt[r], m), e, row, nrow)))
                 continue;
             for (k = 0, q = 0; k < nrow; k++) /* the row's edges */
                 if (key[row[k]] + ja <= j && last[row[k]] >= j) w->tmp[q++] = row[k];
@@ -1236,11 +1387,11 @@ rast_status rast__cov_acc(rast__cedge *e, uint32_t n, int32_t s, rast_fill_rule 
         rast__acc_by_rows(&w, &v[0]);
     } else {
         for (i = 0; i < n; i++) w.thru[i] = rast__acc_thru(&e[i], &v[0]);
+        for (k = 0; k < RAST__ACC_SX * (w.width + 1); k++) cells[k] = 0;
         for (r = 0; r < RAST__ACC_BAND; r++) {
-            uint64_t *c = cells + (size_t)r * ((size_t)w.width + 1), *b = bandbits + (size_t)r * (size_t)w.nw;
-            for (k = 0; k <= w.width; k++) c[k] = 0;
+            uint64_t *b = bandbits + (size_t)r * (size_t)w.nw;
             for (k = 0; k < w.nw; k++) b[k] = 0;
-            rast__acc_init(&v[r], c, b, (uint32_t *)(void *)w.area, o, s, 0);
+            rast__acc_init(&v[r], cells + r, b, (uint32_t *)(void *)w.area, o, s, 0);
         }
         rast__acc_by_bands(&w, v);
     }

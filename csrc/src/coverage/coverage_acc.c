@@ -8,8 +8,9 @@
  * cancelling: the integral does not need it).  Row by row, each edge that
  * spans part of the row deposits that part into ONE array of 64-bit cells
  * acc[] (when the edges are long, each edge deposits its parts in the four
- * rows of a band, each row's into that row's array, before the band's rows
- * are read out in order: rast__acc_by_bands; the sums are the same):
+ * rows of a band, each row's into that row's cells, before the band's rows
+ * are read out in order or together: rast__acc_by_bands; the sums are the
+ * same; a band's cells of a column lie side by side, RAST__ACC_SX):
  * for the piece of the part in column k, from fraction f0 to f1 of
  * the pixel (Q = 2^-30 pixel units) over the height dy (Q units),
  * acc[k] += s (dy 2^21 - ar) and acc[k + 1] += s ar, ar = floor((f0 + f1)

@@ -67,6 +67,9 @@
  * lone row's next to each other (sx, a constant at each call: 1 or
  * RAST__ACC_SX) */
 #define RAST__ACC_SX RAST__ACC_BAND
+#if defined(RAST__ACC_AVX2) && RAST__ACC_BAND != 4
+#error "RAST__ACC_BAND: 4 (rast__acc_quad_avx2 holds a column's cells in one vector of four 64-bit lanes)"
+#endif
 
 /* A stepper's remainder r (< d, after adding a step's remainder below d)
  * brought below d again: returns the carry, 1 or 0, with no branch (it is
@@ -596,11 +599,12 @@ RAST__HOT uint64_t rast__acc_level(int64_t v, rast_fill_rule rule, uint32_t m, u
  * second pass, on 32 bits: z is v / 2^27 exactly as a signed 32-bit value
  * when |a| < 2^7 (n < 256: the caller's condition for non-zero), and its
  * low 25 bits are (v mod 2^52) / 2^27 floored whatever n (even-odd). */
-RAST__HOT void rast__acc_sum24(uint64_t *restrict acc, uint32_t *restrict z, int32_t lo, int32_t hi, int32_t sx_)
+RAST__HOT void rast__acc_sum24(uint64_t *restrict acc, uint32_t *restrict z, int32_t lo, int32_t hi, int32_t step)
 {
     /* from 2^62: no >> of a negative value; it adds 2^35 to the floor,
-     * which leaves the low 32 bits as they were */
-    const size_t sx = (size_t)sx_;
+     * which leaves the low 32 bits as they were; the cells step words
+     * apart */
+    const size_t sx = (size_t)step;
     uint64_t v = (uint64_t)1 << 62, *c = acc + (size_t)lo * sx;
     size_t n = (size_t)(hi - lo), i;
     z += lo;
@@ -774,7 +778,6 @@ __attribute__((target("avx2"))) static uint32_t rast__acc_quad_avx2(uint64_t *re
         }
     return bad;
 }
-
 
 /* rast__acc_levels24's first 32 n cells and levels, 32 at a time: its
  * tie flag (nonzero: not certain) */

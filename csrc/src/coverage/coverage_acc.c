@@ -10,7 +10,8 @@
  * acc[] (when the edges are long, each edge deposits its parts in the four
  * rows of a band, each row's into that row's cells, before the band's rows
  * are read out in order or together: rast__acc_by_bands; the sums are the
- * same; a band's cells of a column lie side by side, RAST__ACC_SX):
+ * same; with AVX2 a band's cells of a column lie side by side,
+ * RAST__ACC_SX):
  * for the piece of the part in column k, from fraction f0 to f1 of
  * the pixel (Q = 2^-30 pixel units) over the height dy (Q units),
  * acc[k] += s (dy 2^21 - ar) and acc[k + 1] += s ar, ar = floor((f0 + f1)
@@ -61,12 +62,16 @@
  * edges mark no cell, rast__acc_dband_r) */
 #define RAST__ACC_DENSE_BAND 32
 #define RAST__ACC_LONG 32
-/* A band's cells of a column, one for each of its rows, are next to each
- * other (so that the rows are read out together, a column at a time:
- * rast__acc_quad): a band row's cells are RAST__ACC_SX words apart, a
- * lone row's next to each other (sx, a constant at each call: 1 or
- * RAST__ACC_SX) */
+/* With AVX2, a band's cells of a column, one for each of its rows, are
+ * next to each other (so that the rows are read out together, a column at
+ * a time: rast__acc_quad): a band row's cells are RAST__ACC_SX words
+ * apart; without, each row's cells are next to each other, as a lone
+ * row's are (sx, a constant at each call: 1 or RAST__ACC_SX) */
+#ifdef RAST__ACC_AVX2
 #define RAST__ACC_SX RAST__ACC_BAND
+#else
+#define RAST__ACC_SX 1
+#endif
 #if defined(RAST__ACC_AVX2) && RAST__ACC_BAND != 4
 #error "RAST__ACC_BAND: 4 (rast__acc_quad_avx2 holds a column's cells in one vector of four 64-bit lanes)"
 #endif
@@ -1391,11 +1396,13 @@ rast_status rast__cov_acc(rast__cedge *e, uint32_t n, int32_t s, rast_fill_rule 
         rast__acc_by_rows(&w, &v[0]);
     } else {
         for (i = 0; i < n; i++) w.thru[i] = rast__acc_thru(&e[i], &v[0]);
-        for (k = 0; k < RAST__ACC_SX * (w.width + 1); k++) cells[k] = 0;
+        for (k = 0; k < RAST__ACC_BAND * (w.width + 1); k++) cells[k] = 0;
         for (r = 0; r < RAST__ACC_BAND; r++) {
             uint64_t *b = bandbits + (size_t)r * (size_t)w.nw;
             for (k = 0; k < w.nw; k++) b[k] = 0;
-            rast__acc_init(&v[r], cells + r, b, (uint32_t *)(void *)w.area, o, s, 0);
+            /* (row r's first cell: side by side with the others' or after them) */
+            rast__acc_init(&v[r], cells + (RAST__ACC_SX == 1 ? (size_t)r * ((size_t)w.width + 1) : (size_t)r), b,
+                           (uint32_t *)(void *)w.area, o, s, 0);
         }
         rast__acc_by_bands(&w, v);
     }

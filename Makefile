@@ -91,7 +91,7 @@ C_TESTS := $(patsubst tests/c/%.c,build/tests/%,$(wildcard tests/c/test_*.c))
 comma   := ,
 SAN     := -fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer -g
 
-.PHONY: test-config race-check fuzz-long bench docs bench-precision cbench-coverage bench-precision-callgrind single test-single display-qemu fuzz-check fuzz-regress display-example valgrind valgrind-py firmware-check cross-check all lib test test-c test-install test-py demo asan asan-c asan-py strict install uninstall example clean
+.PHONY: test-config race-check fuzz-long bench docs bench-precision cbench-coverage cbench-scale bench-precision-callgrind single test-single display-qemu fuzz-check fuzz-regress display-example valgrind valgrind-py firmware-check cross-check all lib test test-c test-install test-py demo asan asan-c asan-py strict install uninstall example clean
 
 all: lib
 lib: build/librastrum.a build/librastrum.so
@@ -330,6 +330,15 @@ build/cbench_coverage: bench/cbench_coverage.c bench/cbench_time.h build/librast
 
 cbench-coverage: build/cbench_coverage
 	@./build/cbench_coverage
+
+# Growth with the work (issue 33): seeded scene families at doubling sizes,
+# instructions of one call under callgrind, and each method's exponent
+# log2(cost(2N) / cost(N)); `build/cbench_scale FAMILY N METHOD` runs one.
+build/cbench_scale: bench/cbench_scale.c bench/cbench_time.h build/librastrum.a
+	@$(CC) $(WARN) -O2 -Icsrc/include $< build/librastrum.a -lm -o $@
+
+cbench-scale: build/cbench_scale
+	@tools/callgrind-scale.sh build/cbench_scale
 
 bench-precision: build/bench_precision
 	@./build/bench_precision $(ROUNDS)

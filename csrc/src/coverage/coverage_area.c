@@ -677,9 +677,10 @@ static void rast__cov_resign(rast__cells *c, rast__cedge *e, int64_t Yj, int32_t
  * only where neighbours cross: the earliest crossing comes off the heap,
  * the two edges swap, and only they can change sign (the winding number
  * between them is the only one that changes); an edge's piece runs from
- * one change of its sign to the next. */
+ * one change of its sign to the next.  w0: the winding number left of
+ * them all (rast__cov_row_groups sweeps a group of a row alone). */
 static void rast__cov_row_area(rast__cells *c, rast__cedge *e, int32_t *row, int32_t nrow,
-                               rast__sweep *sw, int32_t j, rast_fill_rule rule)
+                               rast__sweep *sw, int32_t j, rast_fill_rule rule, int32_t w0)
 {
     const int64_t Yj = (int64_t)j * c->p;
     int32_t *live = sw->live;
@@ -697,7 +698,7 @@ static void rast__cov_row_area(rast__cells *c, rast__cedge *e, int32_t *row, int
     }
     while (t < T) {
         uint64_t tv = T;
-        int32_t n = 0, wsum = 0, rest = nrow; /* live[rest..nrow): the others */
+        int32_t n = 0, wsum = w0, rest = nrow; /* live[rest..nrow): the others */
         /* The edges reaching below t, in order; the next start or end. */
         for (k = 0; k < nrow; k++) {
             rast__cedge *ed = &e[row[k]];
@@ -1458,6 +1459,126 @@ static int rast__cov_row_fast(rast__cells *c, rast__cedge *e, int32_t *row, int3
     return s;
 }
 
+/* A row that is not fast as a whole, group by group.  Its edges' quick
+ * ranges [qlo, qhi) (by their columns), and the runs of horizontal edges strictly inside its
+ * strip (fixed units, rs[0..nrun), sorted here by their left ends) and joined
+ * where they overlap, make groups; between two groups no part and no run
+ * meets the strip, so the winding number there is one number all the way
+ * down the strip: the one just below the row's top, the sum of the
+ * directions of the edges on its left that cross that line (top closed).
+ * Each group alone is then fast (the tests of rast__cov_row_fast, with the
+ * group's own ordinates where an edge starts or ends, the windings walked
+ * from the one on its left), its parts added whole, or swept alone
+ * (rast__cov_row_area from that winding number): the sweep's work is the
+ * group's, not the row's.  All by the exact cells; the caller emits. */
+/* Column of quick abscissa v, clamped to [x0 - 1, x1]: a key >= 0 from x0 - 1. */
+static inline int32_t rast__grp_col(const rast__cells *c, int64_t v)
+{
+    const int64_t col = rast__q_col(v);
+    return col < c->x0 ? 0 : col > c->x1 ? c->x1 - c->x0 + 1 : (int32_t)(col - c->x0) + 1;
+}
+
+static void rast__cov_row_groups(rast__cells *c, rast__cedge *e, int32_t *row, int32_t nrow,
+                                 rast__sweep *sw, int32_t j, rast_fill_rule rule,
+                                 int32_t *rs, int32_t nrun)
+{
+    const int64_t Yj = (int64_t)j * c->p;
+    int32_t *const key = sw->wb; /* (the sweep's room, free until a group is swept) */
+    int32_t k, g, r = 0, wl = 0;
+    for (k = 0; k < nrow; k++) { /* the parts' ranges, their first columns as keys */
+        rast__cedge *ed = &e[row[k]];
+        rast__fast_range(ed, j, c);
+        key[row[k]] = rast__grp_col(c, ed->qlo);
+    }
+    if (nrow > 48) {
+        rast__cov_radix_sort(row, sw->hidx, key, (uint32_t)nrow);
+    } else {
+        for (k = 1; k < nrow; k++) {
+            int32_t id = row[k], q = k;
+            while (q > 0 && key[id] < key[row[q - 1]]) {
+                row[q] = row[q - 1];
+                q--;
+            }
+            row[q] = id;
+        }
+    }
+    for (k = 1; k < nrun; k++) { /* the runs by their left end (in place: no later row reads them) */
+        int32_t id = rs[k], q = k;
+        while (q > 0 && e[id].hx0 < e[rs[q - 1]].hx0) {
+            rs[q] = rs[q - 1];
+            q--;
+        }
+        rs[q] = id;
+    }
+    for (k = 0; k < nrow; k = g) {
+        int32_t hi = -1, wr = wl, m, full = 1, s = wl, z;
+        for (g = k;; g++) { /* the group: row[k..g), the columns up to hi */
+            if (g < nrow && (g == k || key[row[g]] <= hi)) {
+                const int32_t h = rast__grp_col(c, e[row[g]].qhi - 1);
+                if (h > hi) hi = h;
+                continue;
+            }
+            if (r < nrun && rast__grp_col(c, (int64_t)e[rs[r]].hx0 << (QF - (G - c->h))) <= hi) {
+                const int32_t h = rast__grp_col(c, (int64_t)e[rs[r]].hx1 << (QF - (G - c->h)));
+                if (h > hi) hi = h; /* a run joins the group */
+                r++;
+                g--;
+                continue;
+            }
+            break;
+        }
+        m = g - k;
+        for (z = k; z < g; z++) {
+            const rast__cedge *ed = &e[row[z]];
+            if (ed->yt <= Yj && (int64_t)ed->yt + ed->dy > Yj) wr += ed->dir;
+            if (ed->yt > Yj || (int64_t)ed->yt + ed->dy < Yj + c->p) full = 0;
+        }
+        if (s < -1 || s > 1) {
+            s = 2; /* not fast */
+        } else if (full) {
+            int32_t ww = wl;
+            if (!rast__fast_full(e, row + k, m, &ww, &s) || ww != wr) s = 2;
+        } else {
+            uint64_t u[RAST__FAST_CUTS + 2];
+            int32_t w[RAST__FAST_CUTS + 1], nu = 1, i;
+            u[0] = 0;
+            for (z = k; z < g && s != 2; z++) { /* the group's ordinates inside, sorted, once each */
+                const rast__cedge *ed = &e[row[z]];
+                const int64_t rel0 = (int64_t)ed->yt - Yj, rel1 = (int64_t)ed->yt + ed->dy - Yj;
+                uint64_t cut[2];
+                int32_t y2;
+                cut[0] = rel0 <= 0 ? 0 : (uint64_t)rel0 << c->h;
+                cut[1] = rel1 >= c->p ? 0 : (uint64_t)rel1 << c->h;
+                for (y2 = 0; y2 < 2; y2++) {
+                    int32_t y = nu;
+                    if (!cut[y2]) continue;
+                    while (y > 1 && u[y - 1] > cut[y2]) y--;
+                    if (u[y - 1] == cut[y2]) continue;
+                    if (nu > RAST__FAST_CUTS) {
+                        s = 2;
+                        break;
+                    }
+                    memmove(u + y + 1, u + y, (size_t)(nu - y) * sizeof *u);
+                    u[y] = cut[y2];
+                    nu++;
+                }
+            }
+            if (s != 2) {
+                u[nu++] = T;
+                for (i = 0; i + 1 < nu; i++) w[i] = wl;
+                if (!rast__fast_mixed(e, row + k, m, u, nu, Yj, c, w, &s)) s = 2;
+                for (i = 0; i + 1 < nu && s != 2; i++)
+                    if (w[i] != wr) s = 2;
+            }
+        }
+        if (s == 2)
+            rast__cov_row_area(c, e, row + k, m, sw, j, rule, wl);
+        else if (s != 0)
+            rast__row_exact(c, e, row + k, m, j, s);
+        wl = wr;
+    }
+}
+
 /* The row after a fast row, with the same edges, none of them starting or
  * ending inside it: its order at the top is the last row's at the bottom
  * (non-decreasing, row[] as the last row left it), so the windings between
@@ -1662,8 +1783,12 @@ rast_status rast__cov_area(rast__cedge *e, uint32_t n, int32_t s, rast_fill_rule
                 c.emitted = 1;
             } else {
                 unsimple = simple;
-                fast = rast__cov_row_fast(&c, e, row, nrow, j);
-                if (!fast) rast__cov_row_area(&c, e, row, nrow, &sw, j, rule);
+                /* (a row of more edges than a fast row may have ends inside: by groups) */
+                fast = simple && nrow > RAST__FAST_CUTS ? 0 : rast__cov_row_fast(&c, e, row, nrow, j);
+                if (!fast && simple)
+                    rast__cov_row_groups(&c, e, row, nrow, &sw, j, rule, runs + rnext, rend - rnext);
+                else if (!fast)
+                    rast__cov_row_area(&c, e, row, nrow, &sw, j, rule, 0);
             }
         } else {
             fast = 0;

@@ -46,7 +46,8 @@
  * N = sum of Bernstein numerators times (P_k - P_0), |P_k - P_0| < 2^28
  * and the numerators summing to n^d, so |N| < n^d 2^28: a quadratic's
  * |2N + n^2| < 2^61 and a cubic's with n <= 1024 < 2^59 in int64_t; a
- * cubic with n > 1024 (|N| < 2^75) in 128 bits (base/wide.h).  Counts:
+ * cubic with n > 1024 (|N| < 2^75) in 128 bits (base/wide.h; the quotient,
+ * a coordinate difference, is far inside rast__wide_floordiv's +-2^62).  Counts:
  * the total of flattened vertices is checked against RAST_MAX_POINTS as
  * it is summed (in 64 bits, each curve adding < 2^16).
  */
@@ -120,7 +121,7 @@ static int32_t eval_coord(const int32_t *c, int d, uint32_t i, uint32_t n)
                                         rast__i128_mul(3 * a * b * b, (int64_t)c[2] - c[0]));
         num = rast__i128_add(num, rast__i128_mul(b * b * b, (int64_t)c[3] - c[0]));
         num = rast__i128_add(rast__i128_shl(num, 1), rast__i128_from(den));
-        rast__i128_floordiv(num, 2 * den, &q, &r);
+        rast__wide_floordiv(num, 2 * den, &q, &r);
         return c[0] + (int32_t)q;
     }
 }

@@ -12,7 +12,7 @@ from __future__ import annotations
 
 import math
 import re
-from typing import Iterator, List, Optional, Sequence, Tuple
+from typing import List, Optional, Tuple
 
 import numpy as np
 
@@ -21,10 +21,12 @@ from ._native import ffi, lib
 
 __all__ = ["Path", "DEFAULT_TOLERANCE"]
 
-#: The default flattening tolerance in pixels: the largest power of two
-#: whose "area" coverage of curved shapes stays within 1/2 level (of 255)
-#: of the exact coverage (docs/paths.md, "The default tolerance").
-DEFAULT_TOLERANCE = 1.0 / 64
+#: The default flattening tolerance in pixels (or one grid step of the
+#: fill, 1/2**subpixel_bits, when that is coarser): where the flattening
+#: costs "area" coverage about one level of 255 (1.04 at worst on curved
+#: shapes, bench/path_tolerance.py), as much as the default snapping
+#: (subpixel_bits=8) does; docs/paths.md, "The default tolerance".
+DEFAULT_TOLERANCE = 1.0 / 256
 
 MOVE, LINE, QUAD, CUBIC, CLOSE = (lib.RAST_PATH_MOVE, lib.RAST_PATH_LINE, lib.RAST_PATH_QUAD,
                                   lib.RAST_PATH_CUBIC, lib.RAST_PATH_CLOSE)
@@ -55,10 +57,11 @@ class Path:
 
     Parameters
     ----------
-    tolerance : float
+    tolerance : float or None
         How far, in pixels, the edges a fill makes of the curves may be
-        from the true curves (``DEFAULT_TOLERANCE``, 1/64 px, unless
-        given); at least one grid step of the fill (1/2**subpixel_bits).
+        from the true curves; at least one grid step of the fill
+        (1/2**subpixel_bits).  None (the default): ``DEFAULT_TOLERANCE``
+        (1/256 px), or one grid step when that is coarser.
 
     Examples
     --------
@@ -68,22 +71,26 @@ class Path:
     12
     """
 
-    def __init__(self, *, tolerance: float = DEFAULT_TOLERANCE) -> None:
+    def __init__(self, *, tolerance: Optional[float] = None) -> None:
         self._verbs: List[int] = []
         self._pts: List[Tuple[float, float]] = []
         self._start: Optional[Tuple[float, float]] = None
         self._cur: Optional[Tuple[float, float]] = None
         self._closed = False
+        self._tolerance: Optional[float] = None
         self.tolerance = tolerance
 
     # ---- properties ---------------------------------------------------------
     @property
-    def tolerance(self) -> float:
-        """The flattening tolerance in pixels (> 0)."""
+    def tolerance(self) -> Optional[float]:
+        """The flattening tolerance in pixels (> 0), or None: the default."""
         return self._tolerance
 
     @tolerance.setter
-    def tolerance(self, value: float) -> None:
+    def tolerance(self, value: Optional[float]) -> None:
+        if value is None:
+            self._tolerance = None
+            return
         t = _real(value, "tolerance")
         if not t > 0:
             raise InputError("tolerance: %r pixels; it must be > 0" % (value,))
@@ -103,7 +110,7 @@ class Path:
         return len(self._verbs)
 
     def __repr__(self) -> str:
-        return "Path(%d verbs, %d points, tolerance=%g)" % (len(self._verbs), len(self._pts), self._tolerance)
+        return "Path(%d verbs, %d points, tolerance=%r)" % (len(self._verbs), len(self._pts), self._tolerance)
 
     def copy(self) -> "Path":
         """An independent copy."""
@@ -242,7 +249,7 @@ class Path:
 
     # ---- SVG path data -------------------------------------------------------
     @classmethod
-    def from_svg(cls, d: str, *, tolerance: float = DEFAULT_TOLERANCE) -> "Path":
+    def from_svg(cls, d: str, *, tolerance: Optional[float] = None) -> "Path":
         """A Path from SVG path data (the ``d`` attribute).
 
         All of SVG 1.1's commands, absolute (upper case) and relative
@@ -355,18 +362,22 @@ class Path:
     def flatten(self, subpixel_bits: int = 8) -> List[np.ndarray]:
         """The path's subpaths as rings of vertices, (N, 2) float64 pixels.
 
-        Each curve becomes edges within ``self.tolerance`` pixels of the
-        curve through its control points snapped to 1/2**b pixel, b =
-        min(subpixel_bits, 16) (the vertices are on that grid, so a fill at
-        `subpixel_bits` takes them exactly).  Subpaths of fewer than 3
+        Each curve becomes edges within ``self.tolerance`` pixels (None:
+        max(DEFAULT_TOLERANCE, 1/2**b)) of the curve through its control
+        points snapped to 1/2**b pixel, b = min(subpixel_bits, 16) (the
+        vertices are on that grid, so a fill at `subpixel_bits` takes them
+        exactly).  Subpaths of fewer than 3
         vertices enclose nothing and are left out.
         """
         if type(subpixel_bits) is not int or not 0 <= subpixel_bits <= 32:
             raise InputError("subpixel_bits: %r; it must be an int in 0..32" % (subpixel_bits,))
         bits = min(subpixel_bits, lib.RAST_MAX_SUBPIXEL_BITS)
-        tol = math.floor(self._tolerance * (1 << bits))
+        if self._tolerance is None:
+            tol = max(1, math.floor(DEFAULT_TOLERANCE * (1 << bits)))
+        else:
+            tol = math.floor(self._tolerance * (1 << bits))
         if tol < 1:
-            raise InputError("tolerance: %g pixels is below one grid step (1/%d px at subpixel_bits=%d)"
+            raise InputError("tolerance: %r pixels is below one grid step (1/%d px at subpixel_bits=%d)"
                              % (self._tolerance, 1 << bits, subpixel_bits))
         tol = min(tol, lib.RAST_COORD_MAX)
         pts, verbs = self._fixed(bits)

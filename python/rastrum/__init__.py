@@ -21,7 +21,7 @@ from .scene import render_mesh
 from .gis import rasterize, IDENTITY
 from .coverage import AA_ENTRIES as _AA_ENTRIES, METHODS as _COVERAGE_METHODS, polygon_coverage, triangles_coverage
 from .path import Path
-from .stroke import stroke
+from .strokes import stroke
 
 __all__ = ["polygon_mask", "triangles_mask", "triangles_count", "line_pixels", "point_in_triangle", "Canvas",
            "ALGORITHMS", "RastrumError", "InputError", "__version__", "render_mesh", "scene", "rasterize",

@@ -1486,7 +1486,7 @@ typedef struct rast_path {
  * the curve's flatness (Wang's formula, proven in path/flatten.c):
  * n = ceil(sqrt(c m / (4 tolerance - 3))), m = ceil(sqrt(dd)), dd the
  * largest squared second difference of the control points, c = 3
- * (cubic) or 1 (quadratic); n <= 47,700 at any tolerance in range, and a
+ * (cubic) or 1 (quadratic); n <= 47,726 at any tolerance in range, and a
  * straight "curve" (evenly spaced collinear control points) is one edge.
  * Integer only; every product fits (128-bit intermediates, portable C99,
  * for cubics with n > 1024). */

@@ -639,6 +639,9 @@ EXTRA_COVERED |= {"rasterize", "IDENTITY"}
 # (every rastrum.coco name) and tests/test_ml.py (masks, labels);
 # coco.polygons and the Polygons batch in tests/test_coco_polygons.py.
 EXTRA_COVERED |= {"coco", "masks", "labels", "Polygons"}
+# Paths and strokes: their rows are in tests/test_path.py (test_bad_paths,
+# the SVG grammar's errors) and tests/test_stroke.py (test_bad_arguments).
+EXTRA_COVERED |= {"Path", "stroke"}
 
 
 def _set_depth(value):

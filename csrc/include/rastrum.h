@@ -68,7 +68,7 @@
  * Stable: everything up to "What may change" at the end, by topic:
  * conventions and units (limits, status codes, geometry), targets and pixel
  * formats, polygons, triangles, lines, coverage and anti-aliasing, shading,
- * scenes drawn band by band, region fill.  Within a major version these
+ * scenes drawn band by band, region fill, paths.  Within a major version these
  * keep their names, signatures, layouts and meaning (new enumerators and
  * calls may be added).
  * May change: what follows RAST_STATIC_LINKING_ONLY (declared only when
@@ -1436,6 +1436,83 @@ RAST_API rast_status rast_seed_fill_limited(const rast_target *target, int32_t x
                                            const void *value, const void *boundary,
                                            int connectivity, void *stack, size_t stack_bytes,
                                            uint64_t max_work, uint64_t *work);
+
+/* ==========================================================================
+ * Paths: curves flattened within a stated tolerance (path/flatten.c)
+ * ========================================================================== */
+
+/* ---- paths -------------------------------------------------------------------
+ * A path is a list of verbs, each taking the next points of `points` in
+ * order: MOVE 1 (starts a subpath at it), LINE 1 (a line to it), QUAD 2
+ * (the control point, then the end: a quadratic Bezier from the current
+ * point), CUBIC 3 (two control points, then the end), CLOSE 0 (ends the
+ * subpath; the current point goes back to the subpath's start).  Points
+ * are fixed point, units of 1/2^S pixel (Units above), |x|, |y| <=
+ * RAST_COORD_MAX.  As in SVG, the first verb must be MOVE, and a drawing
+ * verb right after CLOSE starts a new subpath at the closed one's start.
+ * The library only reads it.  npoints must be exactly the points the
+ * verbs take.  (Arcs: SVG's elliptical arcs are cubics in the Python
+ * layer, rastrum.Path.arc_to; docs/paths.md.) */
+typedef enum rast_path_verb {
+    RAST_PATH_MOVE = 0,
+    RAST_PATH_LINE = 1,
+    RAST_PATH_QUAD = 2,
+    RAST_PATH_CUBIC = 3,
+    RAST_PATH_CLOSE = 4,
+    RAST_PATH_VERB_COUNT_ = 5
+} rast_path_verb;
+
+typedef struct rast_path {
+    const uint8_t *verbs;     /* rast_path_verb values */
+    uint32_t nverbs;
+    const rast_point *points; /* may be NULL when npoints is 0 */
+    uint32_t npoints;
+} rast_path;
+
+/* Flattening.  Each subpath becomes one ring of a rast_polygon (rings are
+ * closed, so an open subpath is closed by its fill, as SVG fills it): its
+ * start, then for each LINE its end, for each curve the curve's points at
+ * t = i/n, i = 1 .. n, rounded to the grid (floor(v + 1/2) per
+ * coordinate; i = n is the end, exact).  A MOVE alone gives a ring of one
+ * point, which encloses nothing.
+ *
+ * The bound.  `tolerance` is in the points' units (1/2^S pixel), 1 <=
+ * tolerance <= RAST_COORD_MAX.  Every point of each true curve is within
+ * `tolerance` (Euclidean distance) of the flattened polyline and every
+ * point of the polyline within `tolerance` of the true curve (the
+ * Hausdorff distance is at most `tolerance`), the rounding of the
+ * flattened vertices to the grid included; so the filled region differs
+ * from the true one only within `tolerance` of its boundary.  n follows
+ * the curve's flatness (Wang's formula, proven in path/flatten.c):
+ * n = ceil(sqrt(c m / (4 tolerance - 3))), m = ceil(sqrt(dd)), dd the
+ * largest squared second difference of the control points, c = 3
+ * (cubic) or 1 (quadratic); n <= 47,726 at any tolerance in range, and a
+ * straight "curve" (evenly spaced collinear control points) is one edge.
+ * Integer only; every product fits (128-bit intermediates, portable C99,
+ * for cubics with n > 1024). */
+
+/* The sizes of a flattened path: *npoints vertices in *nrings rings (one
+ * per subpath).  Errors: RAST_E_NULL (path, npoints, nrings; verbs with
+ * nverbs > 0; points with npoints > 0), RAST_E_ARG (an unknown verb, a
+ * first verb other than MOVE, npoints not the verbs' count, a tolerance
+ * outside 1..RAST_COORD_MAX), RAST_E_RANGE (a point past
+ * RAST_COORD_MAX), RAST_E_TOO_MANY (more than RAST_MAX_POINTS flattened
+ * vertices).  Nothing is written on error. */
+RAST_API rast_status rast_path_flatten_size(const rast_path *path, int32_t tolerance,
+                                            uint32_t *npoints, uint32_t *nrings);
+
+/* Flatten `path` (see above) into caller memory: the vertices into
+ * points[0 .. *npoints), one ring size per subpath into ring_sizes, and
+ * *polygon made to describe them, ready for every polygon and coverage
+ * entry point (fill it non-zero or even-odd as the path means).  The
+ * vertices lie in the control points' hull, so they are in range.
+ * Errors: those of rast_path_flatten_size, RAST_E_NULL (points,
+ * ring_sizes or polygon NULL), RAST_E_SCRATCH (max_points or max_rings
+ * below the sizes); nothing is written on error. */
+RAST_API rast_status rast_path_flatten(const rast_path *path, int32_t tolerance,
+                                       rast_point *points, uint32_t max_points,
+                                       uint32_t *ring_sizes, uint32_t max_rings,
+                                       rast_polygon *polygon);
 
 #ifdef __cplusplus
 }

@@ -20,10 +20,13 @@ from .ml import labels, masks
 from .scene import render_mesh
 from .gis import rasterize, IDENTITY
 from .coverage import AA_ENTRIES as _AA_ENTRIES, METHODS as _COVERAGE_METHODS, polygon_coverage, triangles_coverage
+from .path import Path
+from .strokes import stroke
 
 __all__ = ["polygon_mask", "triangles_mask", "triangles_count", "line_pixels", "point_in_triangle", "Canvas",
            "ALGORITHMS", "RastrumError", "InputError", "__version__", "render_mesh", "scene", "rasterize",
-           "IDENTITY", "coco", "masks", "labels", "Polygons", "polygon_coverage", "triangles_coverage", "AA_METHODS"]
+           "IDENTITY", "coco", "masks", "labels", "Polygons", "polygon_coverage", "triangles_coverage", "AA_METHODS",
+           "Path", "stroke"]
 
 _v = lib.rast_version_number()
 __version__ = "%d.%d.%d" % (_v // 10000, _v // 100 % 100, _v % 100)
@@ -59,9 +62,10 @@ def polygon_mask(rings, shape, *, rule="evenodd", algorithm="aet", subpixel_bits
 
     Parameters
     ----------
-    rings : (N, 2) array_like or list of them
+    rings : (N, 2) array_like or list of them, or a Path
         The polygon's closed rings as (x, y) vertices in pixels; the last
         vertex joins the first.  Several rings make holes and islands.
+        A ``rastrum.Path``'s curves are flattened within its tolerance.
     shape : (int, int)
         (height, width) of the mask, as numpy writes it.
     rule : {"evenodd", "nonzero"}
@@ -124,6 +128,8 @@ def polygon_mask(rings, shape, *, rule="evenodd", algorithm="aet", subpixel_bits
            [0, 0, 0, 0, 0, 0, 0],
            [0, 0, 0, 0, 0, 0, 0]])
     """
+    if isinstance(rings, Path):  # curves flattened within rings.tolerance (docs/paths.md)
+        rings = rings.flatten(subpixel_bits)
     # The options struct of these exact argument types, checked once: a
     # dict lookup instead of the general cache's (which also keys on the
     # types, so that True or 8.0 are still refused: here only an int S and

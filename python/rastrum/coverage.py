@@ -15,6 +15,7 @@ from . import _core
 from ._core import InputError
 from ._native import ffi, lib
 from .triangles import tris_f64
+from .path import Path
 
 
 def _methods():
@@ -239,9 +240,10 @@ def polygon_coverage(rings, shape, *, rule="evenodd", method="area", subpixel_bi
 
     Parameters
     ----------
-    rings : (N, 2) array_like or list of them
+    rings : (N, 2) array_like or list of them, or a Path
         The polygon's closed rings as (x, y) vertices in pixels, as for
-        ``polygon_mask``.
+        ``polygon_mask``; a ``rastrum.Path``'s curves are flattened within
+        its tolerance.
     shape : (int, int)
         (height, width) of the result.
     rule : {"evenodd", "nonzero"}
@@ -276,6 +278,8 @@ def polygon_coverage(rings, shape, *, rule="evenodd", method="area", subpixel_bi
     >>> rastrum.polygon_coverage([(0.5, 0), (2, 0), (2, 1), (0.5, 1)], (1, 3))
     array([[128, 255,   0]], dtype=uint8)
     """
+    if isinstance(rings, Path):  # curves flattened within rings.tolerance (docs/paths.md)
+        rings = rings.flatten(subpixel_bits)
     key = _quick_key(method, rule, subpixel_bits, sample_offset, dtype)
     quick = _quick(key)
     if quick is not None and _plain_shape(shape) is not None:

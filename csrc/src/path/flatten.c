@@ -1,0 +1,272 @@
+/*
+ * flatten.c - a path's curves turned into edges, within a stated tolerance
+ * (rast_path_flatten; the contract is in rastrum.h under "Paths", the
+ * user's page docs/paths.md).
+ *
+ * The bound, proven.  Let B(t), 0 <= t <= 1, be a Bezier curve of degree
+ * d (2 or 3) with control points P_0 .. P_d (integers, units u = 1/2^S
+ * pixel), and n >= 1 the number of edges.  Its vertices are V_i = B(i/n)
+ * exactly and W_i = V_i rounded per coordinate (floor(v + 1/2)); W_0 =
+ * P_0 and W_n = P_d are integers already.
+ *
+ * 1. The second derivative.  B''(t) = d (d-1) sum_k D_k b_k(t), with D_k =
+ *    P_k - 2 P_k+1 + P_k+2 (k = 0 .. d-2) and b_k the Bernstein
+ *    polynomials of degree d-2, which are >= 0 and sum to 1; so B''(t) is
+ *    d (d-1) times a convex combination of the D_k and |B''(t)| <= d (d-1)
+ *    M, M = max_k |D_k| (Euclidean norm).
+ * 2. One edge.  On [a, b] = [i/n, (i+1)/n], h = 1/n, let L(t) be the
+ *    point of the chord V_i V_i+1 with the same fraction s = (t - a)/h.
+ *    Taylor's formula with the integral remainder gives B(t) - L(t) =
+ *    -integral of G(t, x) B''(x) dx over [a, b], with Green's function
+ *    G >= 0 of integral (t - a)(b - t)/2 <= h^2/8; so
+ *    |B(t) - L(t)| <= h^2/8 max |B''| <= d (d-1) M / (8 n^2) =: E.
+ *    Every point B(t) of the curve is within E of the polyline (of L(t)),
+ *    and every point L(t) of the polyline within E of the curve (of B(t)):
+ *    the Hausdorff distance of curve and exact polyline is <= E.
+ * 3. Rounding.  |W_i - V_i| <= sqrt(2)/2 u < 3/4 u.  The point (1-s) W_i +
+ *    s W_i+1 of a rounded edge is within max(|W_i - V_i|, |W_i+1 - V_i+1|)
+ *    of the point (1-s) V_i + s V_i+1 (the triangle inequality on the
+ *    convex combination), and conversely; so rounded and exact polylines
+ *    are within 3/4 u of each other both ways, and by the triangle
+ *    inequality the curve and the rounded polyline are within E + 3/4 u.
+ * 4. The count.  E + 3/4 <= T (T = tolerance, in u) iff
+ *    d (d-1) M / (8 n^2) <= (4T - 3)/4 iff d (d-1) M <= 2 n^2 (4T - 3),
+ *    that is c M <= n^2 (4T - 3) with c = 3 for a cubic (d (d-1) = 6)
+ *    and c = 1 for a quadratic (d (d-1) = 2).  With m = ceil(sqrt(dd)) >=
+ *    M (dd = max_k |D_k|^2, an exact integer) it suffices that
+ *    n^2 >= ceil(c m / (4T - 3)); this file takes the smallest such n,
+ *    n = ceil(sqrt(ceil(c m / (4T - 3)))), at least 1: Wang's formula.
+ *    (T >= 1, so 4T - 3 >= 1.)
+ * The vertices W_i are in the convex hull of the control points' pixel
+ * boxes, so in range whenever the control points are.
+ *
+ * Ranges.  |coordinate| <= 2^27 - 1: |D_k| components <= 2^29, dd <=
+ * 2^59, m <= 759,250,125 < 2^30, c m < 2^32, n <= ceil(sqrt(3 m)) =
+ * 47,726 < 2^16.  Evaluation: V_i = P_0 + N/n^d with
+ * N = sum of Bernstein numerators times (P_k - P_0), |P_k - P_0| < 2^28
+ * and the numerators summing to n^d, so |N| < n^d 2^28: a quadratic's
+ * |2N + n^2| < 2^61 and a cubic's with n <= 1024 < 2^59 in int64_t; a
+ * cubic with n > 1024 (|N| < 2^75) in 128 bits (base/wide.h; the quotient,
+ * a coordinate difference, is far inside rast__wide_floordiv's +-2^62).  Counts:
+ * the total of flattened vertices is checked against RAST_MAX_POINTS as
+ * it is summed (in 64 bits, each curve adding < 2^16).
+ */
+#include "path.h"
+#include "../base/wide.h"
+
+/* floor(sqrt(v)), bit by bit (no division, no float). */
+static uint32_t isqrt_floor(uint64_t v)
+{
+    uint64_t r = 0, bit = (uint64_t)1 << 62;
+    while (bit > v) bit >>= 2;
+    while (bit) {
+        if (v >= r + bit) {
+            v -= r + bit;
+            r = (r >> 1) + bit;
+        } else {
+            r >>= 1;
+        }
+        bit >>= 2;
+    }
+    return (uint32_t)r;
+}
+
+uint32_t rast__isqrt_ceil(uint64_t v)
+{
+    uint32_t r = isqrt_floor(v);
+    return (uint64_t)r * r < v ? r + 1 : r;
+}
+
+/* The number of edges of a curve of degree d (2 or 3) with control points
+ * p[0 .. d] at tolerance tol (step 4 above). */
+static uint32_t curve_edges(const rast_point *p, int d, int32_t tol)
+{
+    uint64_t dd = 0, m, need, q = (uint64_t)4 * (uint64_t)tol - 3;
+    uint32_t n;
+    int k;
+    for (k = 0; k + 2 <= d; k++) {
+        int64_t dx = (int64_t)p[k].x - 2 * (int64_t)p[k + 1].x + p[k + 2].x;
+        int64_t dy = (int64_t)p[k].y - 2 * (int64_t)p[k + 1].y + p[k + 2].y;
+        uint64_t s = (uint64_t)(dx * dx) + (uint64_t)(dy * dy);
+        if (s > dd) dd = s;
+    }
+    m = rast__isqrt_ceil(dd);
+    need = ((d == 3 ? 3 : 1) * m + q - 1) / q;
+    n = rast__isqrt_ceil(need);
+    return n ? n : 1;
+}
+
+/* floor(num / den + 1/2) for den > 0, |2 num + den| < 2^62. */
+static int32_t round_div(int64_t num, int64_t den)
+{
+    return (int32_t)rast__floordiv(2 * num + den, 2 * den);
+}
+
+/* One coordinate of B(i/n) rounded: c0 the start, c1.. the control
+ * coordinates (d of them after c0), as in the file's comment. */
+static int32_t eval_coord(const int32_t *c, int d, uint32_t i, uint32_t n)
+{
+    int64_t a = (int64_t)(n - i), b = (int64_t)i;
+    if (d == 2) {
+        int64_t num = 2 * a * b * ((int64_t)c[1] - c[0]) + b * b * ((int64_t)c[2] - c[0]);
+        return c[0] + round_div(num, (int64_t)n * n);
+    }
+    if (n <= 1024) {
+        int64_t num = 3 * a * a * b * ((int64_t)c[1] - c[0]) + 3 * a * b * b * ((int64_t)c[2] - c[0]) +
+                      b * b * b * ((int64_t)c[3] - c[0]);
+        return c[0] + round_div(num, (int64_t)n * n * n);
+    } else {
+        int64_t den = (int64_t)n * n * n, q, r;
+        rast__i128 num = rast__i128_add(rast__i128_mul(3 * a * a * b, (int64_t)c[1] - c[0]),
+                                        rast__i128_mul(3 * a * b * b, (int64_t)c[2] - c[0]));
+        num = rast__i128_add(num, rast__i128_mul(b * b * b, (int64_t)c[3] - c[0]));
+        num = rast__i128_add(rast__i128_shl(num, 1), rast__i128_from(den));
+        rast__wide_floordiv(num, 2 * den, &q, &r);
+        return c[0] + (int32_t)q;
+    }
+}
+
+static int in_range(rast_point p)
+{
+    return p.x >= -RAST_COORD_MAX && p.x <= RAST_COORD_MAX && p.y >= -RAST_COORD_MAX &&
+           p.y <= RAST_COORD_MAX;
+}
+
+static void put(rast__flat *f, rast_point p)
+{
+    if (f->points) {
+        f->points[f->npoints] = p;
+        f->ring_sizes[f->nrings - 1]++;
+    }
+    f->npoints++;
+}
+
+static void open_ring(rast__flat *f, rast_point p)
+{
+    if (f->points) {
+        f->ring_sizes[f->nrings] = 0;
+        if (f->closed) f->closed[f->nrings] = 0;
+    }
+    f->nrings++;
+    put(f, p);
+}
+
+/* Check the path: verbs, the point count, the range, the tolerance. */
+static rast_status check_path(const rast_path *path, int32_t tolerance)
+{
+    static const uint8_t takes[RAST_PATH_VERB_COUNT_] = {1, 1, 2, 3, 0};
+    uint64_t need = 0;
+    uint32_t k;
+    if (!path) return RAST_E_NULL;
+    if ((path->nverbs && !path->verbs) || (path->npoints && !path->points)) return RAST_E_NULL;
+    if (tolerance < 1 || tolerance > RAST_COORD_MAX) return RAST_E_ARG;
+    for (k = 0; k < path->nverbs; k++) {
+        if (path->verbs[k] >= RAST_PATH_VERB_COUNT_) return RAST_E_ARG;
+        need += takes[path->verbs[k]];
+    }
+    if (path->nverbs && path->verbs[0] != RAST_PATH_MOVE) return RAST_E_ARG;
+    if (need != path->npoints) return RAST_E_ARG;
+    for (k = 0; k < path->npoints; k++)
+        if (!in_range(path->points[k])) return RAST_E_RANGE;
+    return RAST_OK;
+}
+
+rast_status rast__path_flatten(const rast_path *path, int32_t tolerance, rast__flat *f)
+{
+    rast_status st = check_path(path, tolerance);
+    const rast_point *p;
+    rast_point cur = {0, 0}, start = {0, 0};
+    int open = 0;
+    uint64_t total = 0;
+    uint32_t k;
+    if (st != RAST_OK) return st;
+    p = path->points;
+    for (k = 0; k < path->nverbs; k++) {
+        int v = path->verbs[k];
+        if (v == RAST_PATH_MOVE) {
+            cur = start = *p++;
+            open_ring(f, cur);
+            open = 1;
+            total++;
+        } else if (v == RAST_PATH_CLOSE) {
+            if (open && f->points && f->closed) f->closed[f->nrings - 1] = 1;
+            open = 0;
+            cur = start;
+        } else {
+            if (!open) { /* SVG: a new subpath at the closed one's start */
+                open_ring(f, start);
+                open = 1;
+                total++;
+            }
+            if (v == RAST_PATH_LINE) {
+                cur = *p++;
+                put(f, cur);
+                total++;
+            } else {
+                int d = v; /* RAST_PATH_QUAD = 2, RAST_PATH_CUBIC = 3: the degree */
+                rast_point q[4];
+                int32_t xs[4], ys[4];
+                uint32_t n, i;
+                int j;
+                q[0] = cur;
+                for (j = 1; j <= d; j++) q[j] = *p++;
+                n = curve_edges(q, d, tolerance);
+                total += n;
+                if (total > RAST_MAX_POINTS) return RAST_E_TOO_MANY;
+                if (f->points) {
+                    for (j = 0; j <= d; j++) {
+                        xs[j] = q[j].x;
+                        ys[j] = q[j].y;
+                    }
+                    for (i = 1; i < n; i++) {
+                        rast_point w;
+                        w.x = eval_coord(xs, d, i, n);
+                        w.y = eval_coord(ys, d, i, n);
+                        put(f, w);
+                    }
+                    put(f, q[d]);
+                } else {
+                    f->npoints += n;
+                }
+                cur = q[d];
+            }
+        }
+        if (total > RAST_MAX_POINTS) return RAST_E_TOO_MANY;
+    }
+    return RAST_OK;
+}
+
+rast_status rast_path_flatten_size(const rast_path *path, int32_t tolerance, uint32_t *npoints,
+                                   uint32_t *nrings)
+{
+    rast__flat f;
+    rast_status st;
+    if (!npoints || !nrings) return RAST_E_NULL;
+    memset(&f, 0, sizeof f);
+    st = rast__path_flatten(path, tolerance, &f);
+    if (st != RAST_OK) return st;
+    *npoints = f.npoints;
+    *nrings = f.nrings;
+    return RAST_OK;
+}
+
+rast_status rast_path_flatten(const rast_path *path, int32_t tolerance, rast_point *points,
+                              uint32_t max_points, uint32_t *ring_sizes, uint32_t max_rings,
+                              rast_polygon *polygon)
+{
+    rast__flat f;
+    uint32_t np, nr;
+    rast_status st = rast_path_flatten_size(path, tolerance, &np, &nr);
+    if (st != RAST_OK) return st;
+    if (!points || !ring_sizes || !polygon) return RAST_E_NULL;
+    if (np > max_points || nr > max_rings) return RAST_E_SCRATCH;
+    memset(&f, 0, sizeof f);
+    f.points = points;
+    f.ring_sizes = ring_sizes;
+    st = rast__path_flatten(path, tolerance, &f);
+    if (st != RAST_OK) return st;
+    polygon->points = points;
+    polygon->ring_sizes = ring_sizes;
+    polygon->nrings = nr;
+    return RAST_OK;
+}

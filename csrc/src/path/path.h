@@ -1,0 +1,27 @@
+/*
+ * path.h - what the path flattener and its users share (internal).
+ */
+#ifndef RAST_PATH_H
+#define RAST_PATH_H
+
+#include "../base/internal.h"
+
+/* ceil(sqrt(v)) for any v < 2^62, exactly (integer square root). */
+uint32_t rast__isqrt_ceil(uint64_t v);
+
+/* The flattened path, as rast_path_flatten writes it, or only counted:
+ * with points == NULL nothing is stored and the counts are the sizes. */
+typedef struct rast__flat {
+    rast_point *points;   /* NULL: count only */
+    uint32_t *ring_sizes; /* one per subpath */
+    uint8_t *closed;      /* NULL, or one per subpath: 1 iff it ended in CLOSE */
+    uint32_t npoints, nrings;
+} rast__flat;
+
+/* Check `path` and `tolerance` as rast_path_flatten does (RAST_E_NULL,
+ * RAST_E_ARG, RAST_E_RANGE, RAST_E_TOO_MANY), then flatten it into *f
+ * (counts from 0; f->points NULL: count only).  The caller sized f's
+ * arrays by a counting call. */
+rast_status rast__path_flatten(const rast_path *path, int32_t tolerance, rast__flat *f);
+
+#endif

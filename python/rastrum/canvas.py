@@ -387,13 +387,17 @@ class Canvas:
         :meth:`fill_triangles`.
         """
         # The common call (one C-contiguous float64 (N, 2) ring, or a list of
-        # (x, y) pairs, a colour and the default options) goes straight to C,
-        # which snaps every point before it writes a pixel; anything else, or
-        # an error status, takes the general path below, which checks and
-        # says what is wrong.
-        if aa is None and vertex_colors is None and algorithm is _AET and rule is _EVENODD \
-                and subpixel_bits is _S8 and sample_offset is _HALF and rounding is _EXACT \
-                and boundary is _EXACT:
+        # (x, y) pairs, and a colour) goes straight to C, which snaps every
+        # point before it writes a pixel (and refuses what the 64-bit path
+        # must draw: subpixel_bits above 16, coordinates past the 32-bit
+        # range); anything else, or an error status, takes the general path
+        # below, which checks and says what is wrong.
+        if aa is None and vertex_colors is None:
+            if algorithm is _AET and rule is _EVENODD and subpixel_bits is _S8 and sample_offset is _HALF \
+                    and rounding is _EXACT and boundary is _EXACT:
+                opts = _DEFAULT_OPTS
+            else:  # checked (InputError as below), remembered
+                opts = _core.fill_opts(algorithm, rule, subpixel_bits, sample_offset, rounding, boundary)
             xy = None
             if type(rings) is _ndarray:
                 if rings.dtype is _F64 and rings.strides == _PACKED and rings.shape[1] == 2:
@@ -408,7 +412,7 @@ class Canvas:
                     and self._array.flags.writeable:
                 last = self._last_color
                 pixel = last[1] if color is last[0] and type(color) is int else self._pixel(color)
-                if not _fill_ring(target, _from_buffer(_DOUBLES, xy), n, _DEFAULT_OPTS, pixel):
+                if not _fill_ring(target, _from_buffer(_DOUBLES, xy), n, opts, pixel):
                     return
         if aa is not None:
             self._fill_aa(rings, color, aa, rule, subpixel_bits, sample_offset, "Canvas.fill_polygon",

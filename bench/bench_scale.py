@@ -13,7 +13,7 @@ in one process, each as a ratio to Blend2D's time on the same scene.  The
 table gives, per family and size, the WORST seed's ratio per method.
 
 Every output is checked in the same run against rastrum's exact result
-(the binary rule's mask for binary fills; "area" at subpixel_bits=16 for
+(the binary rule's mask for binary fills; "area" at the finest subpixel_bits, up to 16, the coordinates fit, for
 coverage, or ss16 where "area" passes the time limit): pixels off (by more
 than one level of 255 for coverage, any difference for a mask) and the max
 error are reported, and a draw whose total coverage is not within 10% of
@@ -167,21 +167,25 @@ def peers():
 def reference(sc, limit):
     """(exact mask as 0/255 uint8, exact coverage x 255 as float64, its name)."""
     n = sc.size
+    # the finest grid the coordinates fit (16 bits up to +-2048 px; a map's
+    # off-canvas rings need fewer), at most 16, the most "area" takes
+    most = max(float(np.abs(np.concatenate([np.asarray(r).reshape(-1, 2) for r in sc.rings])).max()), 1.0)
+    bits = int(min(16, math.floor(math.log2((2 ** 27 - 1) / (most + 1)))))
     if sc.kind == "tris":
         tris = sc.tris()
         mask = rastrum.triangles_mask(tris, (n, n)).view(np.uint8) * np.uint8(255)
-        area = lambda: rastrum.triangles_coverage(tris, (n, n), subpixel_bits=16, dtype=np.float64)  # noqa: E731
-        ss16 = lambda: rastrum.triangles_coverage(tris, (n, n), method="ss16", subpixel_bits=12,  # noqa: E731
+        area = lambda: rastrum.triangles_coverage(tris, (n, n), subpixel_bits=bits, dtype=np.float64)  # noqa: E731
+        ss16 = lambda: rastrum.triangles_coverage(tris, (n, n), method="ss16", subpixel_bits=min(bits, 12),  # noqa: E731
                                                   dtype=np.float64)
     else:
         rule = sc.rule if sc.kind == "poly" else "nonzero"
         mask = rastrum.polygon_mask(sc.rings, (n, n), rule=rule).view(np.uint8) * np.uint8(255)
-        area = lambda: rastrum.polygon_coverage(sc.rings, (n, n), rule=rule, subpixel_bits=16,  # noqa: E731
+        area = lambda: rastrum.polygon_coverage(sc.rings, (n, n), rule=rule, subpixel_bits=bits,  # noqa: E731
                                                 dtype=np.float64)
         ss16 = lambda: rastrum.polygon_coverage(sc.rings, (n, n), rule=rule, method="ss16",  # noqa: E731
-                                                subpixel_bits=12, dtype=np.float64)
+                                                subpixel_bits=min(bits, 12), dtype=np.float64)
     if within_limit(area, limit):
-        return mask, area() * 255, "area, 16 bits"
+        return mask, area() * 255, "area, %d bits" % bits
     return mask, ss16() * 255, "ss16 (area past the limit)"
 
 
@@ -200,7 +204,10 @@ def check(out, ref, binary):
 
 
 def _child(f):
-    f()
+    try:
+        f()
+    except Exception:
+        os._exit(1)  # the parent's own call raises it again, with its message
     os._exit(0)
 
 

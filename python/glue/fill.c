@@ -248,6 +248,14 @@ long rastpy_mask_ring(void *mask, int32_t height, int32_t width, const double *x
     return rastpy_mask_polygon(mask, height, width, xy, npoints, NULL, 1, opts);
 }
 
+/* rastpy_fill_polygon for one ring, no background: the small-call path of
+ * Canvas.fill_polygon (fewer arguments for cffi to convert). */
+long rastpy_fill_ring(const rast_target *target, const double *xy, uint32_t npoints,
+                      const rast_fill_opts *opts, const void *pixel)
+{
+    return rastpy_poly(target, xy, npoints, NULL, 1, opts, pixel, NULL, NULL, NULL);
+}
+
 /* Snap the 3 * ntris vertices xy (x, y float pairs), then
  * rast_fill_triangles (shade NULL) or rast_fill_triangles_shaded with
  * scratch from malloc.  Returns 0, a negative rast_status (or

@@ -34,6 +34,8 @@ long rastpy_mask_polygon(void *mask, int32_t height, int32_t width,
                          const rast_fill_opts *opts);
 long rastpy_mask_ring(void *mask, int32_t height, int32_t width, const double *xy,
                       uint32_t npoints, const rast_fill_opts *opts);
+long rastpy_fill_ring(const rast_target *target, const double *xy, uint32_t npoints,
+                      const rast_fill_opts *opts, const void *pixel);
 long rastpy_snap_points(const double *xy, size_t npoints, int s, int32_t *out);
 long rastpy_fill_triangles(const rast_target *target, const double *xy,
                            uint32_t ntris, const rast_tri_opts *opts,

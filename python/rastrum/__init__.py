@@ -150,6 +150,8 @@ def polygon_mask(rings, shape, *, rule="evenodd", algorithm="aet", subpixel_bits
     # ints in 1..RAST_MAX_DIM; ring: (N >= 3, 2) float64).  Anything else,
     # and any error status, takes the general path, which checks and raises.
     # (strides (16, 8): two float64 per row, rows packed: C-contiguous (N, 2))
+    if type(rings) is _ndarray and rings.dtype is _I32 and rings.strides == _PACKED32:
+        rings = rings.astype(_F64)  # an OpenCV-style int32 (N, 2) ring: exact as float64
     if type(rings) is _ndarray and rings.dtype is _F64 and rings.strides == _PACKED and type(shape) is tuple \
             and len(shape) == 2 and rings.shape[1] == 2:
         h, w = shape
@@ -169,6 +171,6 @@ _DEFAULT_OPTS = _core.fill_opts(_AET, _EVENODD, _S8, _HALF, _EXACT, _EXACT)
 _ndarray, _empty = _core.np.ndarray, _core.np.empty
 _F64, _BOOL = _core.np.dtype(_core.np.float64), _core.np.dtype(bool)
 _MAX_DIM = lib.RAST_MAX_DIM
-_PACKED = (16, 8)
+_PACKED, _I32, _PACKED32 = (16, 8), _core.np.dtype(_core.np.int32), (8, 4)
 _DOUBLES = _core.ffi.typeof("double[]")
 _mask_call, _from_buffer = lib.rastpy_mask_ring, _core.ffi.from_buffer

@@ -13,6 +13,7 @@ import warnings
 
 import numpy as np
 
+from . import _seq
 from ._native import ffi, lib
 
 
@@ -535,8 +536,45 @@ def make_target(array, fmt, width=None):
     return target
 
 
+#: Array dtypes that packed_rings takes (numpy's concatenation of them,
+#: then float64, gives the values real_array would give ring by ring).
+_RING_DTYPES = (np.dtype(np.float64), np.dtype(np.int32))
+
+
+def packed_rings(rings):
+    """(float64 (N, 2) points, ring sizes or NULL, number of rings) of a list
+    in a common form, read in one C pass (rastrum._seq.rings: a list of
+    float64 or int32 (N, 2) arrays, none empty, or of (x, y) pairs, or of
+    rings of pairs); None for anything else, which _points checks.  No
+    point is checked here: the C call refuses a bad one, and the caller
+    then takes the general path, which names it."""
+    got = _seq.rings(rings, np.ndarray, _RING_DTYPES) if type(rings) is list else None
+    if got is None:
+        return None
+    raw, sizes = got
+    if raw is None:  # arrays of 2 dimensions: numpy joins them (and needs 2 columns in each)
+        try:
+            pts = np.concatenate(rings)
+        except ValueError:
+            return None
+        if pts.shape[1] != 2:
+            return None
+        if pts.dtype != _F64:
+            pts = pts.astype(_F64)
+    else:
+        pts = np.frombuffer(raw, _F64).reshape(-1, 2)
+    if len(pts) > lib.RAST_MAX_POINTS:
+        return None
+    if sizes is None:
+        return pts, ffi.NULL, 1
+    return pts, ffi.from_buffer("uint32_t[]", sizes), len(sizes) >> 2
+
+
 def _points(rings):
     """(float64 (N, 2) points, ring sizes as a cdata or NULL for one ring)."""
+    quick = packed_rings(rings)
+    if quick is not None:
+        return quick
     arrays = rings_f64(rings)
     if len(arrays) == 1:
         pts, sizes = arrays[0], ffi.NULL

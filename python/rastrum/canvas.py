@@ -386,6 +386,34 @@ class Canvas:
         `vertex_colors`, as for :meth:`fill_triangle` and
         :meth:`fill_triangles`.
         """
+        # The common call (one C-contiguous float64 (N, 2) ring, or a list of
+        # (x, y) pairs, and a colour) goes straight to C, which snaps every
+        # point before it writes a pixel (and refuses what the 64-bit path
+        # must draw: subpixel_bits above 16, coordinates past the 32-bit
+        # range); anything else, or an error status, takes the general path
+        # below, which checks and says what is wrong.
+        if aa is None and vertex_colors is None:
+            if algorithm is _AET and rule is _EVENODD and subpixel_bits is _S8 and sample_offset is _HALF \
+                    and rounding is _EXACT and boundary is _EXACT:
+                opts = _DEFAULT_OPTS
+            else:  # checked (InputError as below), remembered
+                opts = _core.fill_opts(algorithm, rule, subpixel_bits, sample_offset, rounding, boundary)
+            xy = None
+            if type(rings) is _ndarray:
+                if rings.dtype is _F64 and rings.strides == _PACKED and rings.shape[1] == 2:
+                    xy, n = rings, len(rings)
+            elif type(rings) is list:
+                got = _seq_rings(rings, _ndarray, _RING_DTYPES)
+                if got is not None and got[1] is None:  # one ring of pairs
+                    xy = got[0]
+                    n = len(xy) >> 4
+            target = self._target
+            if xy is not None and n >= 3 and color is not None and target is not None \
+                    and self._array.flags.writeable:
+                last = self._last_color
+                pixel = last[1] if color is last[0] and type(color) is int else self._pixel(color)
+                if not _fill_ring(target, _from_buffer(_DOUBLES, xy), n, opts, pixel):
+                    return
         if aa is not None:
             self._fill_aa(rings, color, aa, rule, subpixel_bits, sample_offset, "Canvas.fill_polygon",
                           algorithm=(algorithm, "aet"), rounding=(rounding, "exact"),
@@ -816,6 +844,17 @@ def _canvas_shape(shape, legacy_height, width, height):
     _core.deprecated("Canvas(width, height) is now Canvas((height, width)), (H, W) as numpy writes it",
                      stacklevel=4)
     return _core.shape2((h, w))
+
+
+# Canvas.fill_polygon's quick path: its default options (the very objects)
+# and the C call for one ring.
+_AET, _EVENODD, _S8, _HALF, _EXACT = (Canvas.fill_polygon.__wrapped__.__kwdefaults__[k] for k in (
+    "algorithm", "rule", "subpixel_bits", "sample_offset", "rounding"))
+assert Canvas.fill_polygon.__wrapped__.__kwdefaults__["boundary"] is _EXACT
+_DEFAULT_OPTS = _core.fill_opts(_AET, _EVENODD, _S8, _HALF, _EXACT, _EXACT)
+_ndarray, _F64, _PACKED = np.ndarray, np.dtype(np.float64), (16, 8)
+_DOUBLES, _from_buffer, _fill_ring = ffi.typeof("double[]"), ffi.from_buffer, lib.rastpy_fill_ring
+_seq_rings, _RING_DTYPES = _core._seq.rings, _core._RING_DTYPES
 
 
 def _connectivity(legacy, connectivity):

@@ -174,23 +174,14 @@ def _plain_ring(r):
 def _quick_points(rings):
     """(float64 points, ring sizes or NULL, number of rings) of rings that
     need no checking or conversion: one float64 (N, 2) array with N >= 3
-    (C-contiguous), or a list of such arrays (any strides: they are
-    concatenated); None for anything else, which _core._points checks."""
+    (C-contiguous), or a list in a form _core.packed_rings reads in one C
+    pass (float64 or int32 arrays of any strides, or (x, y) pairs); None
+    for anything else, which _core._points checks."""
     if type(rings) is list:
         if len(rings) == 1:
             rings = rings[0]
         else:
-            if not rings:
-                return None
-            sizes = []
-            for r in rings:  # checked and measured in one pass
-                if not _plain_ring(r):
-                    return None
-                sizes.append(len(r))
-            pts = _concatenate(rings)
-            if len(pts) > _MAX_POINTS:
-                return None
-            return pts, ffi.new("uint32_t[]", sizes), len(rings)
+            return _core.packed_rings(rings)  # checked and measured in one C pass
     if _plain_ring(rings) and rings.strides == _PACKED and len(rings) <= _MAX_POINTS:
         return rings, ffi.NULL, 1
     return None

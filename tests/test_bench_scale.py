@@ -1,0 +1,81 @@
+"""Smoke test of bench/bench_scale.py and bench/families.py (issue 33): the
+generators make what they say, the runner runs with --quick on tiny sizes,
+and every drawer's output is checked -- a peer that draws nothing, or the
+wrong thing, is reported as off and WRONG in the same run.  No timing is
+asserted (speed claims live in bench/)."""
+
+import os
+import sys
+
+import numpy as np
+import pytest
+
+import rastrum
+
+BENCH = os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), "bench")
+sys.path.insert(0, BENCH)
+
+families = pytest.importorskip("families")
+bench_scale = pytest.importorskip("bench_scale")
+
+
+@pytest.mark.parametrize("name", ["tri3k", "span", "mesh", "loop", "circle", "holes"])
+def test_families_are_seeded_and_sized(name):
+    make = families.FAMILIES[name]
+    a, b, c = make(1, 64), make(1, 64), make(2, 64)
+    assert a.size == 64 and a.kind in ("poly", "tris", "loop")
+    assert all(r.dtype == np.float64 and r.ndim == 2 and r.shape[1] == 2 for r in a.rings)
+    assert all(np.array_equal(p, q) for p, q in zip(a.rings, b.rings))  # the same seed: the same scene
+    assert any(not np.array_equal(p, q) for p, q in zip(a.rings, c.rings))  # another: another
+
+
+def test_family_counts():
+    assert len(families.FAMILIES["tri3k"](0, 64).rings) == 3000
+    assert len(families.FAMILIES["mesh"](0, 64).rings) == 3200
+    tris = families.FAMILIES["span"](0, 64).tris()  # turned one way: the path's union
+    a, b, c = tris[:, 0], tris[:, 1], tris[:, 2]
+    assert (((b - a)[:, 0] * (c - a)[:, 1] - (b - a)[:, 1] * (c - a)[:, 0]) >= 0).all()
+
+
+def test_loop_polygons_share_no_pixel():
+    sc = families.FAMILIES["loop"](3, 128)
+    masks = [rastrum.polygon_coverage(r, (128, 128)) > 0 for r in sc.rings]
+    assert int(np.sum(masks, axis=0).max()) == 1
+
+
+def _empty_peer(sc):
+    return lambda: np.zeros((sc.size, sc.size), np.uint8)
+
+
+def _shifted_peer(sc):  # the right coverage, 3 px off to the right
+    ref = rastrum.polygon_coverage([np.asarray(r) + (3, 0) for r in sc.rings], (sc.size, sc.size),
+                                   rule=sc.rule)
+    return lambda: ref
+
+
+def test_runner_quick_reports_wrong_peers(capsys):
+    peers = {"empty": (_empty_peer, False), "shifted": (_shifted_peer, False)}
+    rec = bench_scale.main(["--quick", "--families", "circle,mesh", "--sizes", "64", "--no-series",
+                            "--limit", "30"], extra_peers=peers)
+    out = capsys.readouterr().out
+    assert "| circle | 64 |" in out and "| mesh | 64 |" in out
+    for key in ("circle@64", "mesh@64"):
+        for seed in rec["families"][key]:
+            res = seed["results"]
+            assert res["empty"]["wrong"] and res["empty"]["off"] > 0
+            assert res["shifted"]["off"] > 0 and res["shifted"]["max"] > 128
+            # rastrum's own: the exact mask, "area" within a level
+            assert res["rastrum binary"]["off"] == 0 and not res["rastrum binary"]["wrong"]
+            assert res["rastrum area"]["max"] <= 1 and not res["rastrum area"]["wrong"]
+    assert "WRONG" in out
+
+
+def test_time_limit_reported_not_hung():
+    import time
+    assert bench_scale.within_limit(lambda: None, 5)
+    assert not bench_scale.within_limit(lambda: time.sleep(30), 0.5)
+
+
+def test_exponent():
+    assert bench_scale.exponent([1.0, 2.0, 4.0, 8.0]) == pytest.approx(1.0)
+    assert bench_scale.exponent([1.0, 4.0, 16.0]) == pytest.approx(2.0)

@@ -445,3 +445,26 @@ def test_grid_tap_against_rasterio(x0, y1, n, m, res):
 def test_grid_bad_input(args, match):
     with pytest.raises(InputError, match=match):
         rastrum.grid(*args)
+
+
+# ---- docs/gis.md: its Python examples run as written ---------------------------------------------
+
+def _doc_blocks():
+    import os
+    import re
+    path = os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), "docs", "gis.md")
+    with open(path, encoding="utf-8") as f:
+        return re.findall(r"```python\n(.*?)```", f.read(), flags=re.S)
+
+
+@pytest.mark.parametrize("k", range(len(_doc_blocks())))
+def test_gis_doc_example(k):
+    block = _doc_blocks()[k]
+    if "rioxarray" in block:
+        pytest.importorskip("rioxarray")
+        pytest.importorskip("affine")
+    exec(compile(block, "docs/gis.md block %d" % k, "exec"), {})
+
+
+def test_gis_doc_has_examples():
+    assert len(_doc_blocks()) >= 4

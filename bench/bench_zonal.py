@@ -165,7 +165,6 @@ def accuracy(max_cells=250_000):
     world = gpd.read_file(path)
     res = 0.025
     transform = (res, 0.0, -180.0, 0.0, -res, 90.0)
-    rows = []
     worst = {8: 0.0, 12: 0.0, 16: 0.0, "ee": 0.0}
     cells_seen = 0
     used = []

@@ -21,7 +21,6 @@ import strategies as S_
 
 try:
     import rasterio.features as rf
-    import rasterio.windows
     from rasterio.errors import ShapeSkipWarning as RioSkip, WindowError
     from affine import Affine
 except ImportError:  # pragma: no cover
@@ -174,7 +173,7 @@ def test_geometry_window_rotated_boundless():
     s2 = math.sqrt(2.0)
     # Affine.rotation(-45) * translation(-s2, s2) * scale(s2/2, -s2/2), multiplied out
     c, s = math.cos(math.radians(-45.0)), math.sin(math.radians(-45.0))
-    a, b, e = s2 / 2.0, 0.0, -s2 / 2.0
+    a, e = s2 / 2.0, -s2 / 2.0
     t = (c * a, -s * e, c * -s2 - s * s2, s * a, c * e, s * -s2 + c * s2)
     if rf is not None:
         t = tuple(Affine.rotation(-45.0) @ Affine.translation(-s2, s2) @ Affine.scale(s2 / 2.0, -s2 / 2.0))[:6]

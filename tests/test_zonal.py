@@ -352,3 +352,97 @@ def test_against_exactextract():
             assert (a[name] == b[name]) or (math.isnan(a[name]) and math.isnan(b[name])), (k, name)
         for name in ("majority", "minority"):
             assert (a[name] == b[name]) or (math.isnan(a[name]) and math.isnan(b[name])), (k, name)
+
+
+# ---- inputs, options and bad input ----------------------------------------------------------------
+
+SQ = {"type": "Polygon", "coordinates": [[(0.5, 0.5), (2.5, 0.5), (2.5, 2.5), (0.5, 2.5), (0.5, 0.5)]]}
+
+
+def test_bands_masks_and_coverage_weight():
+    r = np.arange(16.0).reshape(4, 4)
+    bands = np.stack([r, 10 * r])
+    got = rastrum.zonal_stats(bands, [SQ], stats=["count", "mean"], output="records")[0]
+    assert got == {"band_1_count": 4.0, "band_1_mean": 5.0, "band_2_count": 4.0, "band_2_mean": 50.0}
+    # a masked cell is left out: (1, 1) = 5 with fraction 1
+    m = np.ma.masked_array(r, mask=np.zeros_like(r, bool))
+    m.mask[1, 1] = True
+    got = rastrum.zonal_stats(m, [SQ], stats=["count", "sum"], output="records")[0]
+    assert got == {"count": 3.0, "sum": 20.0 - 5.0}
+    # every touched cell counts 1: the 3 x 3 cells, values 0..10
+    got = rastrum.zonal_stats(r, [SQ], stats=["count", "mean"], coverage_weight="none", output="records")[0]
+    assert got == {"count": 9.0, "mean": float(r[:3, :3].mean())}
+
+
+def test_pandas_index_and_xarray():
+    pd = pytest.importorskip("pandas")
+    r = np.arange(16.0).reshape(4, 4)
+    got = rastrum.zonal_stats(r, [SQ, SQ], stats="count mean")
+    assert isinstance(got, pd.DataFrame) and list(got.columns) == ["count", "mean"]
+    assert list(got.index) == [0, 1]
+    xr = pytest.importorskip("xarray")
+    pytest.importorskip("rioxarray")
+    from affine import Affine
+    da = xr.DataArray(r, dims=("y", "x")).rio.write_transform(Affine(2.0, 0, 10.0, 0, -2.0, 8.0))
+    da = da.rio.write_nodata(5.0)
+    world = {"type": "Polygon", "coordinates": [[(11.0, 7.0), (15.0, 7.0), (15.0, 3.0), (11.0, 3.0), (11.0, 7.0)]]}
+    got = rastrum.zonal_stats(da, [world], stats=["count", "sum"], output="records")[0]
+    assert got == {"count": 3.0, "sum": 15.0}  # SQ in pixels; the nodata 5 left out
+
+
+def test_outside_and_empty():
+    r = np.ones((4, 4))
+    far = {"type": "Polygon", "coordinates": [[(50, 50), (60, 50), (60, 60), (50, 50)]]}
+    got = rastrum.zonal_stats(r, [far], stats=["count", "sum", "mean", "min", "variety", "median",
+                                                "majority"], output="records")[0]
+    assert got["count"] == 0 and got["sum"] == 0 and got["variety"] == 0
+    assert all(math.isnan(got[k]) for k in ("mean", "min", "median", "majority"))
+    assert rastrum.zonal_stats(r, [], stats=["count"], output="records") == []
+
+
+def test_far_outside_is_clipped():
+    """A feature reaching 10^7 px outside the raster: clipped to its window
+    (plus a cell), so S stays the window's, and the fractions are the same
+    as the part of it near the raster."""
+    r = np.arange(64.0).reshape(8, 8)
+    big = {"type": "Polygon", "coordinates": [[(2.3, 3.1), (1e7, 3.1), (1e7, 5.7), (2.3, 5.7), (2.3, 3.1)]]}
+    near = {"type": "Polygon", "coordinates": [[(2.3, 3.1), (9.0, 3.1), (9.0, 5.7), (2.3, 5.7), (2.3, 3.1)]]}
+    a = rastrum.zonal_stats(r, [big], stats=["count", "sum"], output="records")
+    b = rastrum.zonal_stats(r, [near], stats=["count", "sum"], output="records")
+    # each side moves by at most 2^-17 px (S = 16): the area by at most the
+    # perimeter in the raster times that
+    assert a == b and abs(a[0]["count"] - (8 - 2.3) * 2.6) <= 2 * (5.7 + 2.6) * 2 ** -17
+
+
+@pytest.mark.parametrize("kw, match", [
+    ({"stats": ["nope"]}, "unknown statistic 'nope'"),
+    ({"stats": []}, "stats is empty"),
+    ({"stats": ["quantile(q=1.5)"]}, "must be in 0..1"),
+    ({"stats": ["weighted_mean"]}, "need weights="),
+    ({"stats": ["mean"], "weights": np.ones((3, 3))}, "weights: shape"),
+    ({"coverage_weight": "area"}, "coverage_weight must be"),
+    ({"output": "csv"}, "output must be"),
+    ({"rule": "odd"}, "fill rule"),
+    ({"transform": (1, 2, 0, 2, 4, 0)}, "not invertible"),
+    ({"nodata": "x"}, "nodata 'x' is not a number"),
+])
+def test_bad_options(kw, match):
+    with pytest.raises(InputError, match=match):
+        rastrum.zonal_stats(np.ones((4, 4)), [SQ], **kw)
+
+
+@pytest.mark.parametrize("raster, geoms, match", [
+    (np.ones((4, 4)), [{"type": "LineString", "coordinates": [(0, 0), (1, 1)]}], "feature 0 is not a polygon"),
+    (np.ones((4, 4)), [SQ, {"type": "Circle"}], "feature 1: unknown geometry type"),
+    (np.ones((4, 4)), SQ, "not one geometry"),
+    (np.ones(4), [SQ], "2-D"),
+    (np.ones((0, 4)), [SQ], "non-empty"),
+    (np.ones((4, 4), complex), [SQ], "not supported"),
+    (np.ones((4, 4)), [{"type": "Polygon", "coordinates": [[(0, 0), (float("nan"), 1), (1, 1)]]}], "NaN"),
+])
+def test_bad_input(raster, geoms, match):
+    with pytest.raises(InputError, match=match):
+        rastrum.zonal_stats(raster, geoms)
+
+
+InputError = rastrum.InputError

@@ -643,7 +643,7 @@ def rasterize(
     if masked:
         if nodata is not None and isinstance(nodata, (float, np.floating)) and math.isnan(nodata):
             return np.ma.masked_where(np.isnan(target), target, copy=False)
-        return np.ma.masked_equal(target, nodata, copy=False)
+        return np.ma.masked_equal(target, nodata, copy=False)  # type: ignore[arg-type]  # None: nothing masked
     return target
 
 

@@ -66,14 +66,15 @@ def _parse_stats(stats) -> List[Tuple[str, str, Optional[float]]]:
             raise InputError("stats must be a str or a sequence of statistic names, not %r" % (stats,)) from None
     if not names:
         raise InputError("stats is empty; choose from: %s, quantile(q=...), percentile_N" % ", ".join(STATS))
-    out = []
+    out: List[Tuple[str, str, Optional[float]]] = []
     for name in names:
         if not isinstance(name, str):
             raise InputError("stats: %r is not a statistic name (a str)" % (name,))
         m, p = _QUANTILE.match(name), _PERCENTILE.match(name)
-        if m or p:
+        if m is not None or p is not None:
+            digits = m.group(1) if m is not None else p.group(1) if p is not None else ""
             try:
-                q = float(m.group(1)) if m else float(p.group(1)) / 100.0
+                q = float(digits) if m is not None else float(digits) / 100.0
             except ValueError:
                 q = float("nan")
             if not 0.0 <= q <= 1.0:

@@ -202,6 +202,7 @@ def close(got, want, scale, what):
     if want is None:
         assert math.isnan(got), what
         return
+    assert math.isfinite(got), (what, got, float(want))
     assert abs(F(got) - want) <= F(1, 10 ** 12) * (scale + abs(want)), (what, got, float(want))
 
 

@@ -639,6 +639,9 @@ EXTRA_COVERED |= {"rasterize", "IDENTITY"}
 # (every rastrum.coco name) and tests/test_ml.py (masks, labels);
 # coco.polygons and the Polygons batch in tests/test_coco_polygons.py.
 EXTRA_COVERED |= {"coco", "masks", "labels", "Polygons"}
+# Issue 36's names have their rows beside their tests: tests/test_gis_parity.py
+# (geometry_mask, geometry_window, grid) and tests/test_zonal.py (zonal_stats).
+EXTRA_COVERED |= {"geometry_mask", "geometry_window", "grid", "zonal_stats"}
 
 
 def _set_depth(value):

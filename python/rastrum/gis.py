@@ -561,9 +561,9 @@ def rasterize(
     default_value : number
         The value of geometries given without one.
     dtype : one of DTYPES
-        uint8, int8, uint16, int16, uint32, int32, int64, float32, float64;
+        uint8, int8, uint16, int16, uint32, int32, int64, uint64, float32, float64;
         by default out's, else int64 for integer values and float64 if any
-        value is a float (as rasterio).
+        value is a float (as rasterio; uint64 for integers past int64).
     rule : {"evenodd", "nonzero"}
         Polygon fill rule (GDAL's is even-odd).
     values : str or sequence, optional

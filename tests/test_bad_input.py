@@ -642,6 +642,9 @@ EXTRA_COVERED |= {"coco", "masks", "labels", "Polygons"}
 # Paths and strokes: their rows are in tests/test_path.py (test_bad_paths,
 # the SVG grammar's errors) and tests/test_stroke.py (test_bad_arguments).
 EXTRA_COVERED |= {"Path", "stroke"}
+# Issue 36's names have their rows beside their tests: tests/test_gis_parity.py
+# (geometry_mask, geometry_window, grid) and tests/test_zonal.py (zonal_stats).
+EXTRA_COVERED |= {"geometry_mask", "geometry_window", "grid", "zonal_stats"}
 
 
 def _set_depth(value):

@@ -456,7 +456,7 @@ BAD = [
     ("one geometry", GOOD, {}, r"not one geometry; wrap it in a list"),
     ("not iterable", 5, {}, r"shapes must be an iterable"),
     ("dtype float16", [GOOD], {"dtype": "float16"}, r"dtype float16 is not supported"),
-    ("dtype uint64", [GOOD], {"dtype": "uint64"}, r"dtype uint64 is not supported"),
+    ("dtype complex64", [GOOD], {"dtype": "complex64"}, r"dtype complex64 is not supported"),
     ("dtype bool", [GOOD], {"dtype": bool}, r"dtype bool is not supported"),
     ("dtype nonsense", [GOOD], {"dtype": "nonsense"}, r"dtype 'nonsense' is not a numpy dtype"),
     ("transform 5 numbers", [GOOD], {"transform": (1, 0, 0, 0, 1)}, r"transform must be 6 numbers"),

@@ -18,15 +18,16 @@ from . import coco
 from ._batch import Polygons
 from .ml import labels, masks
 from .scene import render_mesh
-from .gis import rasterize, IDENTITY
+from .gis import rasterize, IDENTITY, geometry_mask, geometry_window, grid
+from .zonal import zonal_stats
 from .coverage import AA_ENTRIES as _AA_ENTRIES, METHODS as _COVERAGE_METHODS, polygon_coverage, triangles_coverage
 from .path import Path
 from .strokes import stroke
 
 __all__ = ["polygon_mask", "triangles_mask", "triangles_count", "line_pixels", "point_in_triangle", "Canvas",
            "ALGORITHMS", "RastrumError", "InputError", "__version__", "render_mesh", "scene", "rasterize",
-           "IDENTITY", "coco", "masks", "labels", "Polygons", "polygon_coverage", "triangles_coverage", "AA_METHODS",
-           "Path", "stroke"]
+           "IDENTITY", "zonal_stats", "geometry_mask", "geometry_window", "grid", "coco", "masks", "labels", "Polygons",
+           "polygon_coverage", "triangles_coverage", "AA_METHODS", "Path", "stroke"]
 
 _v = lib.rast_version_number()
 __version__ = "%d.%d.%d" % (_v // 10000, _v // 100 % 100, _v % 100)

@@ -41,7 +41,7 @@ _MERGES = {"replace": lib.RASTPY_MERGE_REPLACE, "add": lib.RASTPY_MERGE_ADD_SAT}
 _DTYPES = {
     "uint8": lib.RASTPY_DT_U8, "int8": lib.RASTPY_DT_I8, "uint16": lib.RASTPY_DT_U16,
     "int16": lib.RASTPY_DT_I16, "uint32": lib.RASTPY_DT_U32, "int32": lib.RASTPY_DT_I32,
-    "int64": lib.RASTPY_DT_I64, "float32": lib.RASTPY_DT_F32, "float64": lib.RASTPY_DT_F64,
+    "int64": lib.RASTPY_DT_I64, "uint64": lib.RASTPY_DT_U64, "float32": lib.RASTPY_DT_F32, "float64": lib.RASTPY_DT_F64,
 }
 
 _KIND_POLYGON, _KIND_LINE, _KIND_POINT = 0, 1, 2

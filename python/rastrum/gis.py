@@ -13,6 +13,8 @@ from __future__ import annotations
 
 import math
 import numbers
+import warnings
+from dataclasses import dataclass
 from operator import itemgetter
 from typing import Any, Callable, Iterable, Optional, Sequence, Tuple, Union
 
@@ -22,14 +24,15 @@ from . import _core
 from ._core import InputError
 from . import _burn
 
-__all__ = ["rasterize", "IDENTITY", "DTYPES"]
+__all__ = ["rasterize", "IDENTITY", "DTYPES", "geometry_mask", "geometry_window", "grid", "Window",
+           "ShapeSkipWarning"]
 
 #: The identity transform in Affine order (a, b, c, d, e, f):
 #: x = a*col + b*row + c, y = d*col + e*row + f.
 IDENTITY: Tuple[float, ...] = (1.0, 0.0, 0.0, 0.0, 1.0, 0.0)
 
 #: The dtypes rasterize burns into.
-DTYPES = ("uint8", "int8", "uint16", "int16", "uint32", "int32", "int64", "float32", "float64")
+DTYPES = ("uint8", "int8", "uint16", "int16", "uint32", "int32", "int64", "uint64", "float32", "float64")
 
 _KIND_POLYGON, _KIND_LINE, _KIND_POINT = 0, 1, 2
 _FIRST, _SECOND = itemgetter(0), itemgetter(1)
@@ -453,9 +456,19 @@ def _out_array(out, out_shape, dtype, fill, values):
     if dtype is None:
         floats = any(isinstance(v, (float, np.floating)) for v in values)
         dt = np.dtype(np.float64 if floats else np.int64)
+        if not floats and _past_int64(values):  # as numpy (and rasterio) type such values
+            dt = np.dtype(np.uint64)
     else:
         dt = _dtype(dtype, "dtype")
     return (h, w, dt), True
+
+
+def _past_int64(values) -> bool:
+    """Whether the (integer) values are all >= 0 with one past int64's range."""
+    try:
+        return any(int(v) > 2 ** 63 - 1 for v in values) and all(int(v) >= 0 for v in values)
+    except (TypeError, ValueError, OverflowError):
+        return False
 
 
 class _Progress:
@@ -510,6 +523,9 @@ def rasterize(
     rule: str = "evenodd",
     values: Union[str, Sequence[Union[int, float, None]], None] = None,
     progress: Union[bool, Callable[[int, int], Any], None] = None,
+    nodata: Union[int, float, None] = None,
+    masked: bool = False,
+    skip_invalid: bool = False,
 ) -> np.ndarray:
     """Burn shapes into a 2-D array, as ``rasterio.features.rasterize``.
 
@@ -545,9 +561,9 @@ def rasterize(
     default_value : number
         The value of geometries given without one.
     dtype : one of DTYPES
-        uint8, int8, uint16, int16, uint32, int32, int64, float32, float64;
+        uint8, int8, uint16, int16, uint32, int32, int64, uint64, float32, float64;
         by default out's, else int64 for integer values and float64 if any
-        value is a float (as rasterio).
+        value is a float (as rasterio; uint64 for integers past int64).
     rule : {"evenodd", "nonzero"}
         Polygon fill rule (GDAL's is even-odd).
     values : str or sequence, optional
@@ -555,10 +571,23 @@ def rasterize(
     progress : bool or callable(done, total), optional
         True shows a tqdm bar (needs tqdm); a callable is called as
         batches of shapes are burnt.
+    nodata : number, optional
+        As rasterio: the value masked when `masked` is True (it does not
+        change `fill`); checked against the dtype.  NaN masks the NaN
+        pixels (rasterio's ``masked_equal`` masks none).
+    masked : bool
+        Return ``numpy.ma.masked_equal(out, nodata)`` (a masked array over
+        the same memory; nothing masked without `nodata`), as rasterio.
+    skip_invalid : bool
+        True: a shape that is not a valid geometry (unknown or empty,
+        too few positions, NaN or a position out of range) is skipped with
+        a :class:`ShapeSkipWarning`, as rasterio does by default; False
+        (the default): it is an InputError.
 
     Returns
     -------
-    numpy.ndarray (H, W): `out`, or a new array.
+    numpy.ndarray (H, W): `out`, or a new array (a masked array with
+    ``masked=True``).
 
     Raises
     ------
@@ -585,12 +614,19 @@ def rasterize(
         raise InputError("all_touched must be True or False, not %r" % (all_touched,))
     inv = _inverse(_transform6(transform))
     geoms, vals = _split_shapes(shapes, default_value, fill, values)
+    flat = None
+    if skip_invalid:
+        geoms, vals, flat = _valid_only(geoms, vals, inv)
     _real(fill, "fill")
     target, new = _out_array(out, out_shape, dtype, fill, vals)
     dt = target.dtype if not new else target[2]
     fill_v = _fits(fill, dt, "fill")
+    if nodata is not None:
+        _fits(_real(nodata, "nodata"), dt, "nodata")
+    if not isinstance(masked, (bool, np.bool_)):
+        raise InputError("masked must be True or False, not %r" % (masked,))
     vals = _values(vals, dt)
-    xy, ring_sizes, part_rings, kind, feature, geom = _flatten(geoms)
+    xy, ring_sizes, part_rings, kind, feature, geom = flat if flat is not None else _flatten(geoms)
     px = _pixels(xy, inv, ring_sizes, part_rings, feature)
     bar = _Progress(progress, len(geoms))
     if new:
@@ -604,7 +640,241 @@ def rasterize(
                    bool(all_touched), rule, bar)
     finally:
         bar.close()
+    if masked:
+        if nodata is not None and isinstance(nodata, (float, np.floating)) and math.isnan(nodata):
+            return np.ma.masked_where(np.isnan(target), target, copy=False)
+        return np.ma.masked_equal(target, nodata, copy=False)  # type: ignore[arg-type]  # None: nothing masked
     return target
+
+
+class ShapeSkipWarning(UserWarning):
+    """A shape rasterize(skip_invalid=True) skipped (rasterio's
+    ``rasterio.errors.ShapeSkipWarning``)."""
+
+
+def _valid_only(geoms, vals, inv):
+    """(geometries, values, their _flatten) without the shapes that are not
+    valid geometries, each skipped with a ShapeSkipWarning."""
+    try:
+        flat = _flatten(geoms)
+        _pixels(flat[0], inv, flat[1], flat[2], flat[4])
+        return geoms, vals, flat
+    except InputError:
+        pass
+    keep_g, keep_v = [], []
+    for k, (g, v) in enumerate(zip(geoms, vals)):
+        try:
+            one = _flatten([g], k)
+            _pixels(one[0], inv, one[1], one[2], one[4])
+        except InputError as e:
+            warnings.warn("Invalid or empty shape at index %d will not be rasterized: %s" % (k, e),
+                          ShapeSkipWarning, stacklevel=3)
+            continue
+        keep_g.append(g)
+        keep_v.append(v)
+    return keep_g, keep_v, None
+
+
+def geometry_mask(
+    geometries: Iterable[Any],
+    out_shape: Tuple[int, int],
+    transform: Transform,
+    all_touched: bool = False,
+    invert: bool = False,
+) -> np.ndarray:
+    """A boolean mask from shapes, as ``rasterio.features.geometry_mask``:
+    False on the pixels the shapes burn (True with ``invert=True``), True
+    elsewhere.  The pixels are rasterize's (same rule, `all_touched`).
+
+    Examples
+    --------
+    >>> import rastrum
+    >>> sq = {"type": "Polygon", "coordinates": [[(1, 1), (3, 1), (3, 2), (1, 2), (1, 1)]]}
+    >>> rastrum.geometry_mask([sq], (3, 4), rastrum.IDENTITY, invert=True).astype(int)
+    array([[0, 0, 0, 0],
+           [0, 1, 1, 0],
+           [0, 0, 0, 0]])
+    """
+    if not isinstance(invert, (bool, np.bool_)):
+        raise InputError("invert must be True or False, not %r" % (invert,))
+    fill, mask_value = (0, 1) if invert else (1, 0)
+    return rasterize(geometries, out_shape=out_shape, transform=transform, all_touched=all_touched,
+                     fill=fill, default_value=mask_value, dtype="uint8").view(bool)
+
+
+@dataclass(frozen=True)
+class Window:
+    """A window of a raster in rasterio's terms (``rasterio.windows.Window``
+    fields, whole pixels): columns col_off .. col_off + width - 1, rows
+    row_off .. row_off + height - 1.  ``raster[w.toslices()]`` reads it
+    from a numpy array; ``rasterio.windows.Window(*w.astuple())`` makes
+    rasterio's, and ``dataset.read(window=w.toranges())`` reads it."""
+
+    col_off: int
+    row_off: int
+    width: int
+    height: int
+
+    def toslices(self) -> Tuple[slice, slice]:
+        """(rows, columns) slices."""
+        return (slice(self.row_off, self.row_off + self.height), slice(self.col_off, self.col_off + self.width))
+
+    def toranges(self) -> Tuple[Tuple[int, int], Tuple[int, int]]:
+        """((row_start, row_stop), (col_start, col_stop)), rasterio's tuple form."""
+        return ((self.row_off, self.row_off + self.height), (self.col_off, self.col_off + self.width))
+
+    def astuple(self) -> Tuple[int, int, int, int]:
+        return (self.col_off, self.row_off, self.width, self.height)
+
+
+def _grid_of(dataset) -> Tuple[Tuple[int, int], Tuple[float, ...]]:
+    """((height, width), transform) of a dataset-like or a (shape, transform) pair."""
+    if hasattr(dataset, "rio") and hasattr(dataset, "dims"):  # rioxarray
+        return (int(dataset.rio.height), int(dataset.rio.width)), _transform6(dataset.rio.transform())
+    if hasattr(dataset, "transform") and hasattr(dataset, "width") and hasattr(dataset, "height"):
+        return (int(dataset.height), int(dataset.width)), _transform6(dataset.transform)
+    if isinstance(dataset, (tuple, list)) and len(dataset) == 2:
+        shape, transform = dataset
+        h, w = _core.int_pair(shape, "geometry_window: shape %r must be (height, width)",
+                              "geometry_window: shape must hold two ints, not %r")
+        if h <= 0 or w <= 0:
+            raise InputError("geometry_window: shape %r: height and width must be > 0" % ((h, w),))
+        return (h, w), _transform6(transform)
+    raise InputError("geometry_window: dataset must have .transform, .width and .height (a rasterio dataset), "
+                     "be a rioxarray DataArray, or a ((height, width), transform) pair; not %r"
+                     % type(dataset).__name__)
+
+
+def geometry_window(
+    dataset: Any,
+    shapes: Iterable[Any],
+    pad_x: float = 0,
+    pad_y: float = 0,
+    pixel_precision: Any = None,
+    boundless: bool = False,
+) -> Window:
+    """The window of a raster that holds the shapes, as
+    ``rasterio.features.geometry_window``: every position of every shape
+    taken to pixels with ``~transform`` (affine's inverse, as rasterio),
+    padded by pad_x columns and pad_y rows (fractions of a pixel), from the
+    floor of the least to the ceiling of the greatest; then cut to the
+    raster unless `boundless`.
+
+    Parameters
+    ----------
+    dataset : a rasterio dataset, a rioxarray DataArray, or ((height, width), transform)
+        Anything with ``.transform``, ``.width`` and ``.height``.
+    shapes : iterable of geometries
+        As rasterize takes them (their values, if pairs, are ignored).
+    pixel_precision : ignored
+        As in rasterio 1.4, which ignores it too.
+
+    Returns
+    -------
+    Window
+
+    Raises
+    ------
+    InputError
+        No shapes, a bad geometry or dataset, or (without `boundless`) a
+        window that does not overlap the raster (rasterio: WindowError).
+
+    Examples
+    --------
+    >>> import rastrum
+    >>> sq = {"type": "Polygon", "coordinates": [[(1.5, 1), (3, 1), (3, 3.2), (1.5, 3.2), (1.5, 1)]]}
+    >>> rastrum.geometry_window(((10, 10), (1, 0, 0, 0, -1, 10)), [sq], pad_x=0.5, pad_y=2)
+    Window(col_off=1, row_off=4, width=3, height=6)
+    """
+    (h, w), t = _grid_of(dataset)
+    for name, v in (("pad_x", pad_x), ("pad_y", pad_y)):
+        if not math.isfinite(float(_real(v, name))):
+            raise InputError("%s %r is not finite" % (name, v))
+    geoms, _ = _split_shapes(shapes, 1, 0, None)
+    if not geoms:
+        raise InputError("geometry_window: no shapes")
+    xy = _flatten(geoms)[0]
+    sa, sb, sc, sd, se, sf = t
+    det = sa * se - sb * sd
+    if det == 0:
+        raise InputError("transform %r is not invertible" % (t,))
+    idet = 1.0 / det
+    ra, rb, rd, re = se * idet, -sb * idet, -sd * idet, sa * idet
+    rc, rf = -sc * ra - sf * rb, -sc * rd - sf * re
+    x, y = xy[:, 0], xy[:, 1]
+    cols = x * ra + y * rb + rc
+    rows = x * rd + y * re + rf
+    if not (np.isfinite(cols).all() and np.isfinite(rows).all()):
+        raise InputError("geometry_window: a position is not finite in pixels")
+    col_start = int(math.floor(cols.min() - pad_x))
+    col_stop = int(math.ceil(cols.max() + pad_x))
+    row_start = int(math.floor(rows.min() - pad_y))
+    row_stop = int(math.ceil(rows.max() + pad_y))
+    win = Window(col_start, row_start, max(col_stop - col_start, 0), max(row_stop - row_start, 0))
+    if boundless:
+        return win
+    c0, r0 = max(win.col_off, 0), max(win.row_off, 0)
+    width = min(win.col_off + win.width, w) - c0
+    height = min(win.row_off + win.height, h) - r0
+    if width <= 0 or height <= 0:
+        raise InputError("geometry_window: the shapes' window %r does not overlap the %d x %d raster "
+                         "(boundless=True returns it)" % (win, h, w))
+    return Window(c0, r0, width, height)
+
+
+def grid(
+    bounds: Sequence[float],
+    resolution: Union[float, Tuple[float, float]],
+    tap: bool = False,
+) -> Tuple[Tuple[int, int], Tuple[float, ...]]:
+    """(out_shape, transform) of a north-up raster over `bounds` at
+    `resolution`, as ``gdal_rasterize -te xmin ymin xmax ymax -tr xres yres
+    [-tap]`` makes it.
+
+    `bounds` is (xmin, ymin, xmax, ymax) (GDAL's -te order, shapely's and
+    GeoPandas' ``total_bounds``); `resolution` one number or (xres, yres),
+    both > 0.  With `tap` (target-aligned pixels) the bounds first grow to
+    multiples of the resolution: xmin = floor(xmin / xres) * xres, xmax =
+    ceil(xmax / xres) * xres, and so for y.  Then width = int(0.5 + (xmax
+    - xmin) / xres), height = int(0.5 + (ymax - ymin) / yres), and the
+    transform (Affine order) is (xres, 0, xmin, 0, -yres, ymax).
+
+    Examples
+    --------
+    >>> import rastrum
+    >>> rastrum.grid((0.3, 0.2, 2.9, 1.1), 0.5, tap=True)
+    ((3, 6), (0.5, 0.0, 0.0, 0.0, -0.5, 1.5))
+    """
+    try:
+        b = [float(_real(v, "bounds: value")) for v in bounds]
+    except TypeError:
+        raise InputError("bounds must be (xmin, ymin, xmax, ymax), not %r" % (bounds,)) from None
+    if len(b) != 4 or not all(math.isfinite(v) for v in b):
+        raise InputError("bounds must be 4 finite numbers (xmin, ymin, xmax, ymax), not %r" % (bounds,))
+    xmin, ymin, xmax, ymax = b
+    if not (xmax > xmin and ymax > ymin):
+        raise InputError("bounds %r: xmax must be > xmin and ymax > ymin" % (tuple(bounds),))
+    if isinstance(resolution, (tuple, list)):
+        if len(resolution) != 2:
+            raise InputError("resolution must be one number or (xres, yres), not %r" % (resolution,))
+        xres, yres = (float(_real(v, "resolution")) for v in resolution)
+    else:
+        xres = yres = float(_real(resolution, "resolution"))
+    if not (xres > 0 and yres > 0 and math.isfinite(xres) and math.isfinite(yres)):
+        raise InputError("resolution %r must be > 0 and finite" % (resolution,))
+    if not isinstance(tap, (bool, np.bool_)):
+        raise InputError("tap must be True or False, not %r" % (tap,))
+    if tap:
+        xmin = math.floor(xmin / xres) * xres
+        xmax = math.ceil(xmax / xres) * xres
+        ymin = math.floor(ymin / yres) * yres
+        ymax = math.ceil(ymax / yres) * yres
+    width = int(0.5 + (xmax - xmin) / xres)
+    height = int(0.5 + (ymax - ymin) / yres)
+    if width < 1 or height < 1 or width > _core.lib.RAST_MAX_DIM or height > _core.lib.RAST_MAX_DIM:
+        raise InputError("bounds %r at resolution %r give %d x %d pixels; each must be in 1..%d"
+                         % (tuple(bounds), resolution, width, height, _core.lib.RAST_MAX_DIM))
+    return (height, width), (xres, 0.0, float(xmin), 0.0, -yres, float(ymax))
 
 
 def _pixels(xy, inv, ring_sizes, part_rings, feature):

@@ -45,6 +45,9 @@ PREFIX  ?= /usr/local
 DESTDIR ?=
 LIBDIR  ?= $(PREFIX)/lib
 INCDIR  ?= $(PREFIX)/include
+# LICENSE and CHANGELOG.md go here (make install), as Debian and the GNU
+# layout keep a package's documents.
+DOCDIR  ?= $(PREFIX)/share/doc/rastrum
 
 WARN    := -std=c99 -pedantic -Wall -Wextra -Werror -Wshadow -Wdouble-promotion \
            -Wstrict-prototypes -Wmissing-prototypes -Wcast-align -Wconversion \
@@ -420,7 +423,8 @@ SUBST = sed -e 's|@PREFIX@|$(PREFIX)|g' -e 's|@LIBDIR@|$(LIBDIR)|g' -e 's|@INCDI
             -e 's|@SONAME@|$(SONAME)|g'
 
 install: lib
-	install -d $(DESTDIR)$(INCDIR) $(DESTDIR)$(LIBDIR)/pkgconfig $(DESTDIR)$(CMAKEDIR)
+	install -d $(DESTDIR)$(INCDIR) $(DESTDIR)$(LIBDIR)/pkgconfig $(DESTDIR)$(CMAKEDIR) $(DESTDIR)$(DOCDIR)
+	install -m 644 LICENSE CHANGELOG.md $(DESTDIR)$(DOCDIR)/
 	install -m 644 csrc/include/rastrum.h $(DESTDIR)$(INCDIR)/
 	install -m 644 build/librastrum.a $(DESTDIR)$(LIBDIR)/
 	install -m 755 build/librastrum.so.$(VERSION) $(DESTDIR)$(LIBDIR)/
@@ -436,11 +440,18 @@ uninstall:
 	      $(DESTDIR)$(LIBDIR)/librastrum.so $(DESTDIR)$(LIBDIR)/$(SONAME) \
 	      $(DESTDIR)$(LIBDIR)/librastrum.so.$(VERSION) $(DESTDIR)$(LIBDIR)/pkgconfig/rastrum.pc \
 	      $(DESTDIR)$(CMAKEDIR)/rastrum-config.cmake $(DESTDIR)$(CMAKEDIR)/rastrum-config-version.cmake
-	-rmdir $(DESTDIR)$(CMAKEDIR) 2>/dev/null
+	rm -f $(DESTDIR)$(DOCDIR)/LICENSE $(DESTDIR)$(DOCDIR)/CHANGELOG.md
+	-rmdir $(DESTDIR)$(CMAKEDIR) $(DESTDIR)$(DOCDIR) 2>/dev/null
 
-# Build the example through pkg-config, against an installed rastrum.
+# Build the example through pkg-config, against an installed rastrum
+# (PKG_CONFIG_PATH=PREFIX/lib/pkgconfig for a PREFIX pkg-config does not
+# search).  The binary records the library's directory (an rpath from
+# pkg-config's libdir), so it runs from any PREFIX without LD_LIBRARY_PATH.
 example:
-	$(CC) -std=c99 -O2 examples/draw_ppm.c $$(pkg-config --cflags --libs rastrum) -o build/draw_ppm
+	@mkdir -p build
+	$(CC) -std=c99 -O2 examples/draw_ppm.c $$(pkg-config --cflags --libs rastrum) \
+	  -Wl,-rpath,"$$(pkg-config --variable=libdir rastrum)" -o build/draw_ppm
+	./build/draw_ppm build/draw_ppm.ppm
 
 clean:
 	rm -rf build out python/rastrum/_native.c python/rastrum/_native*.so

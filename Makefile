@@ -1,7 +1,9 @@
 # rastrum - build, test and install the C core and the Python package.
 #
 #   make                 build/librastrum.a and build/librastrum.so
-#   make test            C tests, then the Python tests (installs the package)
+#   make test            C tests, then the Python tests (installs the package and the optional extras)
+#   make test-core       C tests, then the Python tests with only pytest and hypothesis
+#   make test-wheel      the wheel (cp39-abi3) installed into two Python versions and tested there
 #   make demo            render the demo pictures to out/ and print a short speed table
 #   make bench           the full benchmarks (installs the peers: OpenCV, skia, ...)
 #   make docs            the documentation site (mkdocs) into build/site
@@ -94,7 +96,7 @@ C_TESTS := $(patsubst tests/c/%.c,build/tests/%,$(wildcard tests/c/test_*.c))
 comma   := ,
 SAN     := -fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer -g
 
-.PHONY: test-config race-check fuzz-long bench docs bench-precision cbench-coverage bench-precision-callgrind single test-single display-qemu fuzz-check fuzz-regress display-example valgrind valgrind-py firmware-check cross-check all lib test test-c test-install test-py demo asan asan-c asan-py strict install uninstall example clean
+.PHONY: test-wheel test-core figures figures-check test-config race-check fuzz-long bench docs bench-precision cbench-coverage bench-precision-callgrind single test-single display-qemu fuzz-check fuzz-regress display-example valgrind valgrind-py firmware-check cross-check all lib test test-c test-install test-py demo asan asan-c asan-py strict install uninstall example clean
 
 all: lib
 lib: build/librastrum.a build/librastrum.so
@@ -148,6 +150,13 @@ test-py: | $(VENV)
 	$(PY_CLEAN)
 	$(PYTHON) -m pip install --quiet --disable-pip-version-check '.[$(PY_TEST_EXTRAS)]'
 	$(PYTHON) -m pytest -q tests
+
+# The wheel as a user installs it: built once (cp39-abi3), installed into
+# fresh virtualenvs of the oldest and newest Python found (pyenv's, python3.N
+# on PATH; WHEEL_PYTHONS="py1 py2" to choose), a few test files run against
+# it there (tools/test-wheel.sh).  Fewer than two Pythons fails, with why.
+test-wheel: | $(VENV)
+	@tools/test-wheel.sh $(PYTHON) $(CURDIR)/build/test-wheel
 
 # ---- demo and benchmarks --------------------------------------------------------
 # The demo needs only the package (numpy, Pillow): the pictures, then a short

@@ -145,8 +145,11 @@ test-install: lib
 # tests compare with (rasterio, geopandas, pycocotools) and Dask
 # (dask.distributed, dask-geopandas, xarray, rioxarray) for rastrum.dask;
 # with fewer (PY_TEST_EXTRAS=test) those tests skip.
+# test-py says what it installs, and why, before installing it
+# (tools/extras.py reads the extras from pyproject.toml).
 PY_TEST_EXTRAS ?= test,gis,compat-test,dask
 test-py: | $(VENV)
+	@$(PYTHON) tools/extras.py $(PY_TEST_EXTRAS)
 	$(PY_CLEAN)
 	$(PYTHON) -m pip install --quiet --disable-pip-version-check '.[$(PY_TEST_EXTRAS)]'
 	$(PYTHON) -m pytest -q tests
@@ -157,6 +160,12 @@ test-py: | $(VENV)
 # it there (tools/test-wheel.sh).  Fewer than two Pythons fails, with why.
 test-wheel: | $(VENV)
 	@tools/test-wheel.sh $(PYTHON) $(CURDIR)/build/test-wheel
+
+# The core alone: the C tests, then the Python tests with only pytest and
+# hypothesis installed (the tests of the optional inputs and the peers skip);
+# make test is the full run, the README's test command.
+test-core: PY_TEST_EXTRAS := test
+test-core: test-c test-py
 
 # ---- demo and benchmarks --------------------------------------------------------
 # The demo needs only the package (numpy, Pillow): the pictures, then a short

@@ -7,6 +7,7 @@
 #   make demo            render the demo pictures to out/ and print a short speed table
 #   make bench           the full benchmarks (installs the peers: OpenCV, skia, ...)
 #   make docs            the documentation site (mkdocs) into build/site
+#   make figures         the pictures of README and docs drawn again; figures-check compares (CI)
 #   make asan            C and Python tests under AddressSanitizer + UBSan
 #   make strict          the core and the Python glue under gcc and clang, -std=c99 -pedantic -Werror
 #   make valgrind        C tests under valgrind memcheck, then valgrind-py
@@ -185,6 +186,25 @@ bench: | $(VENV)
 	$(PYTHON) bench/bench_seedfill.py
 	$(PYTHON) bench/bench_threads.py --quick
 
+# ---- figures -------------------------------------------------------------------
+# make figures: the pictures of README.md and docs/ drawn again into docs/
+# (bench/demo.py, tools/coco_picture.py; tools/figures.py lists which comes
+# from where).  make figures-check (CI): draws them into a scratch folder and
+# compares pixels, and compares the firmware size tables with make
+# firmware-check's output (run again when the core is newer than it).
+# Timing tables are not drift-checked: they vary from run to run.
+figures: | $(VENV)
+	$(PY_CLEAN)
+	$(PYTHON) -m pip install --quiet --disable-pip-version-check .
+	$(PYTHON) tools/figures.py make
+
+figures-check: | $(VENV)
+	$(PY_CLEAN)
+	$(PYTHON) -m pip install --quiet --disable-pip-version-check .
+	@if [ ! -f build/fw-report.txt ] || [ -n "$$(find csrc examples tools/firmware tools/firmware-check.sh \
+	     -newer build/fw-report.txt -type f | head -1)" ]; then $(MAKE) --no-print-directory firmware-check; fi
+	$(PYTHON) tools/figures.py check --firmware-log build/fw-report.txt
+
 # ---- documentation ---------------------------------------------------------------
 # mkdocs builds README.md's pages in docs/ into build/site; the API reference
 # comes from the docstrings (mkdocstrings).  --strict: a warning fails it.
@@ -359,8 +379,11 @@ bench-precision-callgrind: build/bench_precision
 	@tools/callgrind-precision.sh build/bench_precision
 
 # ---- bare metal --------------------------------------------------------------
+# Its output is kept in build/fw-report.txt (make figures-check compares the
+# size tables of README.md and docs/c.md with it).
 firmware-check: single
-	@tools/firmware-check.sh build/fw
+	@mkdir -p build; tools/firmware-check.sh build/fw > build/fw-report.txt 2>&1; s=$$?; \
+	  cat build/fw-report.txt; [ $$s -eq 0 ] || rm -f build/fw-report.txt; exit $$s
 
 cross-check:
 	@tools/cross-check.sh build/cross

@@ -87,3 +87,13 @@ def test_readme_links_resolve():
         assert os.path.exists(target), "README.md links to %s, which is not in the repository" % link
         if anchor:
             assert anchor in anchors(read(os.path.relpath(target, ROOT))), "README.md: no heading for %s" % link
+
+
+def test_every_extra_says_what_it_is_for():
+    """make test-py prints each extra's note (tools/extras.py) before installing it."""
+    section = read("pyproject.toml").split("[project.optional-dependencies]")[1].split("\n[")[0]
+    extras = re.findall(r"^([\w-]+) = \[", section, re.M)
+    assert {"test", "gis", "compat-test", "dask"} <= set(extras), extras
+    text = read("tools", "extras.py")
+    for name in extras:
+        assert '"%s":' % name in text, "tools/extras.py has no note for the extra %r" % name

@@ -26,6 +26,7 @@ WHY = {
     "dask": "rastrum.dask: lazy Dask arrays, dask-geopandas input, a LocalCluster, xarray output",
     "bench": "the benchmarks' peers (make bench)",
     "docs": "the documentation site (make docs)",
+    "typecheck": "mypy, for make typecheck (an extra issue 37 adds)",
 }
 # Measured for issue 37 on a fresh Debian machine: what pip downloaded for
 # the four extras make test installs.

@@ -382,8 +382,8 @@ bench-precision-callgrind: build/bench_precision
 # Its output is kept in build/fw-report.txt (make figures-check compares the
 # size tables of README.md and docs/c.md with it).
 firmware-check: single
-	@mkdir -p build; tools/firmware-check.sh build/fw > build/fw-report.txt 2>&1; s=$$?; \
-	  cat build/fw-report.txt; [ $$s -eq 0 ] || rm -f build/fw-report.txt; exit $$s
+	@mkdir -p build; { tools/firmware-check.sh build/fw 2>&1; echo $$? > build/fw-status; } | tee build/fw-report.txt; \
+	  s=$$(cat build/fw-status); [ "$$s" -eq 0 ] || rm -f build/fw-report.txt; exit $$s
 
 cross-check:
 	@tools/cross-check.sh build/cross

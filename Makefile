@@ -1,10 +1,13 @@
 # rastrum - build, test and install the C core and the Python package.
 #
 #   make                 build/librastrum.a and build/librastrum.so
-#   make test            C tests, then the Python tests (installs the package)
+#   make test            C tests, then the Python tests (installs the package and the optional extras)
+#   make test-core       C tests, then the Python tests with only pytest and hypothesis
+#   make test-wheel      the wheel (cp39-abi3) installed into two Python versions and tested there
 #   make demo            render the demo pictures to out/ and print a short speed table
 #   make bench           the full benchmarks (installs the peers: OpenCV, skia, ...)
 #   make docs            the documentation site (mkdocs) into build/site
+#   make figures         the pictures of README and docs drawn again; figures-check compares (CI)
 #   make asan            C and Python tests under AddressSanitizer + UBSan
 #   make strict          the core and the Python glue under gcc and clang, -std=c99 -pedantic -Werror
 #   make valgrind        C tests under valgrind memcheck, then valgrind-py
@@ -45,6 +48,9 @@ PREFIX  ?= /usr/local
 DESTDIR ?=
 LIBDIR  ?= $(PREFIX)/lib
 INCDIR  ?= $(PREFIX)/include
+# LICENSE and CHANGELOG.md go here (make install), as Debian and the GNU
+# layout keep a package's documents.
+DOCDIR  ?= $(PREFIX)/share/doc/rastrum
 
 WARN    := -std=c99 -pedantic -Wall -Wextra -Werror -Wshadow -Wdouble-promotion \
            -Wstrict-prototypes -Wmissing-prototypes -Wcast-align -Wconversion \
@@ -91,7 +97,7 @@ C_TESTS := $(patsubst tests/c/%.c,build/tests/%,$(wildcard tests/c/test_*.c))
 comma   := ,
 SAN     := -fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer -g
 
-.PHONY: test-config race-check fuzz-long bench docs bench-precision cbench-coverage cbench-scale bench-precision-callgrind single test-single display-qemu fuzz-check fuzz-regress display-example valgrind valgrind-py firmware-check cross-check all lib test test-c test-install test-py demo asan asan-c asan-py strict install uninstall example clean
+.PHONY: test-wheel test-core figures figures-check test-config race-check fuzz-long bench docs bench-precision cbench-coverage cbench-scale bench-precision-callgrind single test-single display-qemu fuzz-check fuzz-regress display-example valgrind valgrind-py firmware-check cross-check all lib test test-c test-install test-py demo asan asan-c asan-py strict install uninstall example clean
 
 all: lib
 lib: build/librastrum.a build/librastrum.so
@@ -140,11 +146,27 @@ test-install: lib
 # tests compare with (rasterio, geopandas, pycocotools) and Dask
 # (dask.distributed, dask-geopandas, xarray, rioxarray) for rastrum.dask;
 # with fewer (PY_TEST_EXTRAS=test) those tests skip.
+# test-py says what it installs, and why, before installing it
+# (tools/extras.py reads the extras from pyproject.toml).
 PY_TEST_EXTRAS ?= test,gis,compat-test,dask
 test-py: | $(VENV)
+	@$(PYTHON) tools/extras.py $(PY_TEST_EXTRAS)
 	$(PY_CLEAN)
 	$(PYTHON) -m pip install --quiet --disable-pip-version-check '.[$(PY_TEST_EXTRAS)]'
 	$(PYTHON) -m pytest -q tests
+
+# The wheel as a user installs it: built once (cp39-abi3), installed into
+# fresh virtualenvs of the oldest and newest Python found (pyenv's, python3.N
+# on PATH; WHEEL_PYTHONS="py1 py2" to choose), a few test files run against
+# it there (tools/test-wheel.sh).  Fewer than two Pythons fails, with why.
+test-wheel: | $(VENV)
+	@tools/test-wheel.sh $(PYTHON) $(CURDIR)/build/test-wheel
+
+# The core alone: the C tests, then the Python tests with only pytest and
+# hypothesis installed (the tests of the optional inputs and the peers skip);
+# make test is the full run, the README's test command.
+test-core: PY_TEST_EXTRAS := test
+test-core: test-c test-py
 
 # ---- demo and benchmarks --------------------------------------------------------
 # The demo needs only the package (numpy, Pillow): the pictures, then a short
@@ -163,6 +185,25 @@ bench: | $(VENV)
 	$(PYTHON) bench/bench_shade.py
 	$(PYTHON) bench/bench_seedfill.py
 	$(PYTHON) bench/bench_threads.py --quick
+
+# ---- figures -------------------------------------------------------------------
+# make figures: the pictures of README.md and docs/ drawn again into docs/
+# (bench/demo.py, tools/coco_picture.py; tools/figures.py lists which comes
+# from where).  make figures-check (CI): draws them into a scratch folder and
+# compares pixels, and compares the firmware size tables with make
+# firmware-check's output (run again when the core is newer than it).
+# Timing tables are not drift-checked: they vary from run to run.
+figures: | $(VENV)
+	$(PY_CLEAN)
+	$(PYTHON) -m pip install --quiet --disable-pip-version-check .
+	$(PYTHON) tools/figures.py make
+
+figures-check: | $(VENV)
+	$(PY_CLEAN)
+	$(PYTHON) -m pip install --quiet --disable-pip-version-check .
+	@if [ ! -f build/fw-report.txt ] || [ -n "$$(find csrc examples tools/firmware tools/firmware-check.sh \
+	     -newer build/fw-report.txt -type f | head -1)" ]; then $(MAKE) --no-print-directory firmware-check; fi
+	$(PYTHON) tools/figures.py check --firmware-log build/fw-report.txt
 
 # ---- documentation ---------------------------------------------------------------
 # mkdocs builds README.md's pages in docs/ into build/site; the API reference
@@ -347,8 +388,11 @@ bench-precision-callgrind: build/bench_precision
 	@tools/callgrind-precision.sh build/bench_precision
 
 # ---- bare metal --------------------------------------------------------------
+# Its output is kept in build/fw-report.txt (make figures-check compares the
+# size tables of README.md and docs/c.md with it).
 firmware-check: single
-	@tools/firmware-check.sh build/fw
+	@mkdir -p build; { tools/firmware-check.sh build/fw 2>&1; echo $$? > build/fw-status; } | tee build/fw-report.txt; \
+	  s=$$(cat build/fw-status); [ "$$s" -eq 0 ] || rm -f build/fw-report.txt; exit $$s
 
 cross-check:
 	@tools/cross-check.sh build/cross
@@ -429,7 +473,8 @@ SUBST = sed -e 's|@PREFIX@|$(PREFIX)|g' -e 's|@LIBDIR@|$(LIBDIR)|g' -e 's|@INCDI
             -e 's|@SONAME@|$(SONAME)|g'
 
 install: lib
-	install -d $(DESTDIR)$(INCDIR) $(DESTDIR)$(LIBDIR)/pkgconfig $(DESTDIR)$(CMAKEDIR)
+	install -d $(DESTDIR)$(INCDIR) $(DESTDIR)$(LIBDIR)/pkgconfig $(DESTDIR)$(CMAKEDIR) $(DESTDIR)$(DOCDIR)
+	install -m 644 LICENSE CHANGELOG.md $(DESTDIR)$(DOCDIR)/
 	install -m 644 csrc/include/rastrum.h $(DESTDIR)$(INCDIR)/
 	install -m 644 build/librastrum.a $(DESTDIR)$(LIBDIR)/
 	install -m 755 build/librastrum.so.$(VERSION) $(DESTDIR)$(LIBDIR)/
@@ -445,11 +490,18 @@ uninstall:
 	      $(DESTDIR)$(LIBDIR)/librastrum.so $(DESTDIR)$(LIBDIR)/$(SONAME) \
 	      $(DESTDIR)$(LIBDIR)/librastrum.so.$(VERSION) $(DESTDIR)$(LIBDIR)/pkgconfig/rastrum.pc \
 	      $(DESTDIR)$(CMAKEDIR)/rastrum-config.cmake $(DESTDIR)$(CMAKEDIR)/rastrum-config-version.cmake
-	-rmdir $(DESTDIR)$(CMAKEDIR) 2>/dev/null
+	rm -f $(DESTDIR)$(DOCDIR)/LICENSE $(DESTDIR)$(DOCDIR)/CHANGELOG.md
+	-rmdir $(DESTDIR)$(CMAKEDIR) $(DESTDIR)$(DOCDIR) 2>/dev/null
 
-# Build the example through pkg-config, against an installed rastrum.
+# Build the example through pkg-config, against an installed rastrum
+# (PKG_CONFIG_PATH=PREFIX/lib/pkgconfig for a PREFIX pkg-config does not
+# search).  The binary records the library's directory (an rpath from
+# pkg-config's libdir), so it runs from any PREFIX without LD_LIBRARY_PATH.
 example:
-	$(CC) -std=c99 -O2 examples/draw_ppm.c $$(pkg-config --cflags --libs rastrum) -o build/draw_ppm
+	@mkdir -p build
+	$(CC) -std=c99 -O2 examples/draw_ppm.c $$(pkg-config --cflags --libs rastrum) \
+	  -Wl,-rpath,"$$(pkg-config --variable=libdir rastrum)" -o build/draw_ppm
+	./build/draw_ppm build/draw_ppm.ppm
 
 clean:
 	rm -rf build out python/rastrum/_native.c python/rastrum/_native*.so

@@ -1,7 +1,7 @@
 """Benchmark and demo scenes for rastrum.
 
 Every scene is plain geometry: rings of (x, y) vertices in pixel units, with
-x to the right and y DOWN (DESIGN.md section 1). Vertices are float64 and on
+x to the right and y DOWN (docs/semantics.md). Vertices are float64 and on
 purpose most of them are not integers and not multiples of 1/2^S, so that the
 snapping to the subpixel grid is exercised and its cost can be measured
 against the exact result on the unsnapped input. (The small textbook polygon

@@ -40,3 +40,31 @@ if _profile not in ("default", "ci", "quick", "valgrind"):
     raise RuntimeError(
         f"RASTRUM_HYPOTHESIS_PROFILE={_profile!r}: expected default, ci, quick or valgrind")
 settings.load_profile(_profile)
+
+
+# make test-core installs only the 'test' extra: a docs example (test_readme's
+# test_python_block) that imports an optional package which is not installed
+# (dask, geopandas, shapely, ...: the extras make test installs) is skipped,
+# saying which, instead of failing; make test installs them all, so there it
+# runs.  Decided from the block's own import lines, before it runs.
+_OPTIONAL = {"affine", "dask", "dask_geopandas", "geopandas", "matplotlib", "pycocotools", "rasterio",
+             "rioxarray", "shapely", "tqdm", "xarray"}
+
+
+def pytest_collection_modifyitems(config, items):
+    import importlib.util
+    import re
+
+    import pytest
+
+    for item in items:
+        code = getattr(getattr(item, "callspec", None), "params", {}).get("code")
+        if item.originalname != "test_python_block" or not isinstance(code, str):
+            continue
+        wanted = set(re.findall(r"^\s*(?:import|from)\s+(\w+)", code, re.M)) & _OPTIONAL
+        if re.search(r"^\s*(?:import|from)\s+rastrum\.dask\b", code, re.M):
+            wanted.add("dask")  # rastrum.dask needs dask itself
+        missing = sorted(m for m in wanted if importlib.util.find_spec(m) is None)
+        if missing:
+            item.add_marker(pytest.mark.skip(reason="needs %s (an optional extra; make test installs it)"
+                                             % ", ".join(missing)))

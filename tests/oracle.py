@@ -1,4 +1,4 @@
-"""Exact reference rasteriser for rastrum polygon fills (DESIGN.md section 1).
+"""Exact reference rasteriser for rastrum polygon fills (docs/semantics.md).
 
 This module is written from the specification only and shares no code with
 the C library or the Python bindings. It uses exact integer / rational
@@ -92,7 +92,7 @@ def _as_ring_list(rings):
 
 def snapped_rings(rings, subpixel_bits):
     """Rings as lists of exact (Fraction x, Fraction y) in pixels, after the
-    snapping of DESIGN.md section 1 (or exact raw values if S is None)."""
+    snapping of docs/semantics.md (or exact raw values if S is None)."""
     res = []
     for ring in _as_ring_list(rings):
         if subpixel_bits is None:
@@ -225,7 +225,7 @@ def oracle_winding(rings, shape, *, subpixel_bits=8, sample_offset=0.5,
 
 def oracle_mask(rings, shape, *, rule="evenodd", subpixel_bits=8,
                 sample_offset=0.5, rounding="exact"):
-    """Exact inside/outside mask (H, W) of ``rings`` under DESIGN.md section 1.
+    """Exact inside/outside mask (H, W) of ``rings`` under docs/semantics.md.
 
     Parameters
     ----------

@@ -1,4 +1,4 @@
-"""Exact reference for anti-aliased coverage (DESIGN.md section 1a).
+"""Exact reference for anti-aliased coverage (docs/coverage.md).
 
 Written from the specification only; shares no code with the C library.
 Everything is exact rational arithmetic (``fractions.Fraction``).

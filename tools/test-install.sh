@@ -7,7 +7,9 @@
 #  2. two installs with different PREFIXes each get a .pc and a CMake
 #     package naming their own PREFIX;
 #  3. examples/draw_ppm.c builds through pkg-config against a staged
-#     install; DESTDIR is honoured and uninstall removes what install put.
+#     install, by hand and by `make example` (whose binary must run without
+#     LD_LIBRARY_PATH); DESTDIR is honoured (LICENSE and CHANGELOG.md go to
+#     share/doc/rastrum) and uninstall removes what install put.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 work=$root/build/test-install
@@ -79,8 +81,17 @@ cc -std=c99 -pedantic -Wall -Wextra -Werror "$root/examples/draw_ppm.c" \
   -Wl,-rpath,"$work/prefix-b/lib" -o "$work/draw_ppm"
 "$work/draw_ppm" "$work/draw_ppm.ppm"
 ok
+# make example against that PREFIX (not one the loader searches): the binary
+# it builds must run with no LD_LIBRARY_PATH, and draw what the one above drew.
+(unset LD_LIBRARY_PATH; PKG_CONFIG_PATH=$work/prefix-b/lib/pkgconfig \
+  command make --no-print-directory -C "$root" example >"$work/example.log" 2>&1) \
+  || { cat "$work/example.log"; fail "make example under PREFIX=prefix-b"; }
+(unset LD_LIBRARY_PATH; "$root/build/draw_ppm" "$work/example.ppm") || fail "make example's binary does not run"
+cmp -s "$work/draw_ppm.ppm" "$work/example.ppm" || fail "make example's binary draws another image"
+ok
 command make --no-print-directory -C "$root" install DESTDIR="$work/destdir" PREFIX=/usr >/dev/null
-for f in include/rastrum.h lib/pkgconfig/rastrum.pc lib/librastrum.a lib/cmake/rastrum/rastrum-config.cmake; do
+for f in include/rastrum.h lib/pkgconfig/rastrum.pc lib/librastrum.a lib/cmake/rastrum/rastrum-config.cmake \
+         share/doc/rastrum/LICENSE share/doc/rastrum/CHANGELOG.md; do
   test -f "$work/destdir/usr/$f" || fail "DESTDIR install lacks usr/$f"
 done
 grep -qx 'prefix=/usr' "$work/destdir/usr/lib/pkgconfig/rastrum.pc" || fail "the staged .pc names the stage"

@@ -6,7 +6,7 @@
  * is declared here.
  *
  * ---------------------------------------------------------------------------
- * Conventions (the contract every algorithm keeps; DESIGN.md section 1)
+ * Conventions (the contract every algorithm keeps; docs/semantics.md)
  * ---------------------------------------------------------------------------
  *
  * Space.  x grows to the right, y grows DOWN.  Pixel (i, j) is column i,

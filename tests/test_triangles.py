@@ -10,8 +10,8 @@ import pytest
 from hypothesis import given, settings, strategies as st
 
 import rastrum
-import rastrum.canvas
-import rastrum.triangles
+import rastrum._canvas
+import rastrum._triangles
 from oracle import oracle_mask
 from strategies import (COORD_MAX, assert_same, coordinates, examples,
                         is_in_range, limit_px, shapes)
@@ -28,7 +28,7 @@ def test_registry():
 
 
 def test_docstrings_run():
-    for mod in (rastrum.triangles, rastrum.canvas):
+    for mod in (rastrum._triangles, rastrum._canvas):
         res = doctest.testmod(mod, optionflags=doctest.NORMALIZE_WHITESPACE)
         assert res.failed == 0 and res.attempted > 0, mod
 

@@ -9,23 +9,23 @@ numpy.
 
 from . import _core
 from ._core import InputError, RastrumError
-from ._native import lib
-from .canvas import Canvas
-from .lines import line_pixels, point_in_triangle
-from .triangles import TRIANGLE_ALGORITHMS as _TRIANGLE_ALGORITHMS, triangles_count, triangles_mask
+from ._native import lib as _lib
+from ._canvas import Canvas
+from ._lines import line_pixels, point_in_triangle
+from ._triangles import TRIANGLE_ALGORITHMS as _TRIANGLE_ALGORITHMS, triangles_count, triangles_mask
 from . import scene
 from . import coco
 from ._batch import Polygons
-from .ml import labels, masks
+from ._ml import labels, masks
 from .scene import render_mesh
 from .gis import rasterize, IDENTITY
-from .coverage import AA_ENTRIES as _AA_ENTRIES, METHODS as _COVERAGE_METHODS, polygon_coverage, triangles_coverage
+from ._coverage import AA_ENTRIES as _AA_ENTRIES, METHODS as _COVERAGE_METHODS, polygon_coverage, triangles_coverage
 
 __all__ = ["polygon_mask", "triangles_mask", "triangles_count", "line_pixels", "point_in_triangle", "Canvas",
            "ALGORITHMS", "RastrumError", "InputError", "__version__", "render_mesh", "scene", "rasterize",
            "IDENTITY", "coco", "masks", "labels", "Polygons", "polygon_coverage", "triangles_coverage", "AA_METHODS"]
 
-_v = lib.rast_version_number()
+_v = _lib.rast_version_number()
 __version__ = "%d.%d.%d" % (_v // 10000, _v // 100 % 100, _v % 100)
 
 #: The algorithm names each entry point accepts, and the fill rules each
@@ -162,7 +162,18 @@ assert polygon_mask.__kwdefaults__["boundary"] is _EXACT
 _DEFAULT_OPTS = _core.fill_opts(_AET, _EVENODD, _S8, _HALF, _EXACT, _EXACT)
 _ndarray, _empty = _core.np.ndarray, _core.np.empty
 _F64, _BOOL = _core.np.dtype(_core.np.float64), _core.np.dtype(bool)
-_MAX_DIM = lib.RAST_MAX_DIM
+_MAX_DIM = _lib.RAST_MAX_DIM
 _PACKED = (16, 8)
 _DOUBLES = _core.ffi.typeof("double[]")
-_mask_call, _from_buffer = lib.rastpy_mask_ring, _core.ffi.from_buffer
+_mask_call, _from_buffer = _lib.rastpy_mask_ring, _core.ffi.from_buffer
+
+
+def __getattr__(name):
+    # rastrum.lib was the raw cffi library, never meant to be public: every
+    # drawing call has a checked Python entry point above.
+    if name == "lib":
+        import warnings
+        warnings.warn("rastrum.lib (the raw cffi library) is not public and will be removed in the next "
+                      "release; use the functions of the rastrum namespace", DeprecationWarning, stacklevel=2)
+        return _lib
+    raise AttributeError("module 'rastrum' has no attribute %r" % (name,))

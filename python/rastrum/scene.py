@@ -462,7 +462,7 @@ def render_mesh(vertices, faces, size=None, *, shape=None, normals=None, shading
     >>> c.array.shape
     (32, 32, 3)
     """
-    from .canvas import Canvas
+    from ._canvas import Canvas
 
     v, f, n = _mesh(vertices, faces, normals)
     if not isinstance(shading, str) or shading not in ("flat", "gouraud"):

@@ -14,7 +14,7 @@ import numpy as np
 from . import _core
 from ._core import InputError
 from ._native import ffi, lib
-from .triangles import tris_f64
+from ._triangles import tris_f64
 
 
 def _methods():

@@ -5,10 +5,10 @@ import functools
 import numpy as np
 
 from . import _core
-from . import coverage as _coverage
-from . import lines as _lines
-from . import shade as _shade
-from . import triangles as _triangles
+from . import _coverage
+from . import _lines
+from . import _shading
+from . import _triangles
 from ._core import InputError
 from ._native import ffi, lib
 
@@ -16,7 +16,7 @@ _NO_COLOR = object()  # equal to no colour: "nothing remembered yet"
 _CHANNELS_TO_FORMAT = {1: "gray8", 3: "rgb888", 4: "rgba8888"}
 _PIL_MODES = {"gray8": "L", "rgb888": "RGB", "rgba8888": "RGBA", "rgb565": "RGB", "mono1": "1"}
 _FORMAT_NAMES = tuple(_core.FORMATS) + ("label",)
-_CHANNELS = {"gray8": 1, "rgb888": 3, "rgba8888": 4, "rgb565": 3, "mono1": 1}
+_CHANNELS = _shading._CHANNELS
 
 
 def _label_spill(method):
@@ -350,9 +350,9 @@ class Canvas:
         if entry == "Canvas.fill_triangle":
             vc = np.asarray(vertex_colors)
             vertex_colors = vc[None] if vc.ndim == 2 else vc
-        colors = _shade.rgba(vertex_colors, batch.shape[0], True, self._format, channels)
+        colors = _shading.rgba(vertex_colors, batch.shape[0], True, self._format, channels)
         _coverage.fill_triangles_shaded_aa(self._writable(), batch, colors, opts,
-                                           _shade.shade_opts(precision, 16),
+                                           _shading.shade_opts(precision, 16),
                                            "tri" if entry == "Canvas.fill_triangle" else "tris")
 
     @_label_spill
@@ -394,7 +394,6 @@ class Canvas:
             return
         opts = _core.fill_opts(algorithm, rule, subpixel_bits, sample_offset, rounding, boundary)
         if vertex_colors is not None:
-            from . import shading as _shading
 
             if color is not None:
                 raise InputError("fill_polygon takes exactly one of color and vertex_colors")
@@ -528,27 +527,27 @@ class Canvas:
             return
         if (color is None) == (vertex_colors is None):
             raise InputError("fill_triangles takes exactly one of color and vertex_colors")
-        sopts = _shade.shade_opts(precision, fraction_bits)
+        sopts = _shading.shade_opts(precision, fraction_bits)
         n = batch.shape[0]
         channels = _CHANNELS[self._format] if self._format in _CHANNELS else 0
         if not channels:
             raise InputError("format %s has no colours to shade" % self._format)
         if vertex_colors is not None:
-            colors = _shade.rgba(vertex_colors, n, True, self._format, channels)
+            colors = _shading.rgba(vertex_colors, n, True, self._format, channels)
         else:
             if np.ndim(color) < 2:  # one colour for every triangle
                 one = np.frombuffer(_rgba_bytes(color, self._format), np.uint8)
                 colors = np.ascontiguousarray(np.broadcast_to(one, (n, 3, 4)))
             else:
-                colors = _shade.rgba(color, n, False, self._format, channels)
-            sopts = _shade.shade_opts("flat", fraction_bits)
+                colors = _shading.rgba(color, n, False, self._format, channels)
+            sopts = _shading.shade_opts("flat", fraction_bits)
         z = zbuf = None
         if depth is not None:
-            z = _shade.depths(depth, n)
+            z = _shading.depths(depth, n)
             zbuf = self._checked_depth(self._depth)
             if zbuf is None:  # kept only once a call has succeeded with it
-                zbuf = np.full((self.height, self.width), _shade.INT32_MAX, np.int32)
-        _shade.fill(self._writable(), batch, colors, z, zbuf, opts, sopts)
+                zbuf = np.full((self.height, self.width), _shading.INT32_MAX, np.int32)
+        _shading.fill(self._writable(), batch, colors, z, zbuf, opts, sopts)
         if z is not None:
             self._depth = zbuf
 
@@ -576,7 +575,6 @@ class Canvas:
         array([[10, 30, 50, 70],
                [10, 30, 50, 70]], dtype=uint8)
         """
-        from . import shading as _shading
 
         if self._format == "label":
             raise InputError("a label canvas has no channels to shade")

@@ -7,8 +7,14 @@ Coordinates are (x, y) as in Pillow; arrays are (row, column) = (y, x) as in
 numpy.
 """
 
+from typing import Any, Dict
+
+import numpy as np
+import numpy.typing as npt
+
 from . import _core
 from ._core import InputError, RastrumError
+from ._typing import Boundary, PolygonAlgorithm, Rings, Rounding, Rule, Shape
 from ._native import lib as _lib
 from ._canvas import Canvas
 from ._lines import line_pixels, point_in_triangle
@@ -53,8 +59,9 @@ ALGORITHMS["triangles_coverage"] = {name: ("evenodd", "nonzero") for name in _CO
 AA_METHODS = {entry: {name: ("evenodd", "nonzero") for name in _COVERAGE_METHODS}
               for entry in _AA_ENTRIES}
 
-def polygon_mask(rings, shape, *, rule="evenodd", algorithm="aet", subpixel_bits=8, sample_offset=0.5,
-                 rounding="exact", boundary="exact"):
+def polygon_mask(rings: Rings, shape: Shape, *, rule: Rule = "evenodd", algorithm: PolygonAlgorithm = "aet",
+                 subpixel_bits: int = 8, sample_offset: float = 0.5, rounding: Rounding = "exact",
+                 boundary: Boundary = "exact") -> npt.NDArray[np.bool_]:
     """Rasterise a polygon into a boolean mask.
 
     Parameters
@@ -155,7 +162,7 @@ def polygon_mask(rings, shape, *, rule="evenodd", algorithm="aet", subpixel_bits
     return _core.mask_polygon(_core.shape2(shape), rings, opts, opts.subpixel_bits)
 
 
-_MASK_OPTS = {}
+_MASK_OPTS: Dict[Any, Any] = {}
 _AET, _EVENODD, _S8, _HALF, _EXACT = (polygon_mask.__kwdefaults__[k] for k in (
     "algorithm", "rule", "subpixel_bits", "sample_offset", "rounding"))
 assert polygon_mask.__kwdefaults__["boundary"] is _EXACT
@@ -168,7 +175,7 @@ _DOUBLES = _core.ffi.typeof("double[]")
 _mask_call, _from_buffer = _lib.rastpy_mask_ring, _core.ffi.from_buffer
 
 
-def __getattr__(name):
+def __getattr__(name: str) -> Any:
     # rastrum.lib was the raw cffi library, never meant to be public: every
     # drawing call has a checked Python entry point above.
     if name == "lib":

@@ -8,7 +8,10 @@ polygon once, in order, writing its value into the array's own dtype.
 Nothing is written unless every polygon is good.
 """
 
+from typing import Any, Iterator, List, Tuple, Union, overload
+
 import numpy as np
+import numpy.typing as npt
 
 from ._core import InputError, _check, bad_point_message, use_wide
 from ._native import ffi, lib
@@ -58,7 +61,7 @@ class Polygons:
 
     __slots__ = ("points", "ring_sizes", "rings_per_polygon", "_ends", "_first")
 
-    def __init__(self, points, ring_sizes, rings_per_polygon):
+    def __init__(self, points: npt.ArrayLike, ring_sizes: npt.ArrayLike, rings_per_polygon: npt.ArrayLike) -> None:
         # views: read-only below without touching the caller's arrays
         points = np.ascontiguousarray(points, np.float64).view()
         sizes = np.ascontiguousarray(ring_sizes, np.uint32).view()
@@ -77,10 +80,16 @@ class Polygons:
         self._ends = np.cumsum(sizes, dtype=np.int64)
         self._first = np.concatenate(([0], np.cumsum(counts, dtype=np.int64)))
 
-    def __len__(self):
+    def __len__(self) -> int:
         return len(self.rings_per_polygon)
 
-    def __getitem__(self, k):
+    @overload
+    def __getitem__(self, k: int) -> List[npt.NDArray[np.float64]]: ...
+
+    @overload
+    def __getitem__(self, k: slice) -> List[List[npt.NDArray[np.float64]]]: ...
+
+    def __getitem__(self, k: Union[int, slice]) -> Any:
         k = range(len(self))[k]  # IndexError, negative indices, slices
         if isinstance(k, range):
             return [self[i] for i in k]
@@ -89,14 +98,14 @@ class Polygons:
         starts = [int(self._ends[r0 - 1]) if r0 else 0] + ends[:-1]
         return [self.points[a:b] for a, b in zip(starts, ends)]
 
-    def __iter__(self):
+    def __iter__(self) -> Iterator[List[npt.NDArray[np.float64]]]:
         return (self[k] for k in range(len(self)))
 
-    def __repr__(self):
+    def __repr__(self) -> str:
         return "<rastrum polygons: %d polygons, %d rings, %d points>" % (
             len(self), len(self.ring_sizes), len(self.points))
 
-    def packed(self):
+    def packed(self) -> Tuple[Any, ...]:
         """(points, ring sizes, rings per polygon, orientation +1 per ring)."""
         return self.points, self.ring_sizes, self.rings_per_polygon, np.ones(len(self.ring_sizes), np.int8)
 

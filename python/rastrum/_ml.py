@@ -10,10 +10,14 @@ C call, exactly (DESIGN section 1).
 from array import array
 from itertools import chain
 
+from typing import Any, Callable, Iterable, Optional, Union
+
 import numpy as np
+import numpy.typing as npt
 
 from . import _batch, _core
 from ._core import InputError
+from ._typing import BatchRule, PolygonAlgorithm, Shape
 
 _F64 = np.dtype(np.float64)
 _RULES = ("union", "evenodd", "nonzero")
@@ -155,8 +159,9 @@ def _burn(out, packed, opts, rule, values, merge, planes, what, report):
         report(i1)
 
 
-def masks(polygons, shape, *, rule="union", algorithm="aet", subpixel_bits=8, sample_offset=0.5,
-          progress=False):
+def masks(polygons: Iterable[Any], shape: Shape, *, rule: BatchRule = "union",
+          algorithm: PolygonAlgorithm = "aet", subpixel_bits: int = 8, sample_offset: float = 0.5,
+          progress: Union[bool, Callable[[int, int], Any]] = False) -> npt.NDArray[np.bool_]:
     """One mask per polygon, in one C call.
 
     Parameters
@@ -208,8 +213,10 @@ def masks(polygons, shape, *, rule="union", algorithm="aet", subpixel_bits=8, sa
     return out
 
 
-def labels(polygons, shape, values=None, dtype=np.int32, *, overlap=False, rule="union", algorithm="aet",
-           subpixel_bits=8, sample_offset=0.5, progress=False):
+def labels(polygons: Iterable[Any], shape: Shape, values: Optional[npt.ArrayLike] = None,
+           dtype: npt.DTypeLike = np.int32, *, overlap: bool = False, rule: BatchRule = "union",
+           algorithm: PolygonAlgorithm = "aet", subpixel_bits: int = 8, sample_offset: float = 0.5,
+           progress: Union[bool, Callable[[int, int], Any]] = False) -> npt.NDArray[Any]:
     """Burn instances into one label image, in one C call.
 
     Polygon k (as in ``masks``) writes values[k] (default k + 1) over its

@@ -114,3 +114,11 @@ def test_option_literals_list_what_the_code_accepts() -> None:
     assert names(_typing.Format) == sorted(_core.FORMATS)
     assert names(_typing.BatchRule) == sorted(_ml._RULES)
     assert names(_typing.Precision) + ["flat"] == sorted(_shading.PRECISIONS)  # "flat" is shading="flat"
+
+
+def test_labels_overlap_overloads() -> None:
+    sq = [SQUARE, [(2.0, 2.0), (6.0, 2.0), (6.0, 5.0)]]
+    lab, count = rastrum.labels(sq, (6, 7), overlap=True, rule="coco")
+    n: npt.NDArray[np.uint16] = count
+    one: npt.NDArray[Any] = rastrum.labels(sq, (6, 7))
+    assert n.dtype == np.uint16 and lab.shape == one.shape == (6, 7)

@@ -28,4 +28,4 @@ Format = Literal["gray8", "rgb888", "rgba8888", "rgb565", "mono1"]
 Shading = Literal["gouraud", "flat"]
 Precision = Literal["exact", "fixed"]
 #: The fill rules of masks() and labels().
-BatchRule = Literal["union", "evenodd", "nonzero"]
+BatchRule = Literal["union", "evenodd", "nonzero", "coco"]

@@ -294,9 +294,9 @@ def test_outline_is_the_union_of_its_lines(o, data):
 def test_three_lines_make_a_triangle():
     # seed 002: line(t0, t1); line(t1, t2); line(t2, t0)
     tri = [(1, 1), (10, 4), (3, 9)]
-    c = rastrum.Canvas(12, 12, format="gray8")
+    c = rastrum.Canvas((12, 12), format="gray8")
     c.polyline(tri, 255, closed=True, subpixel_bits=0, sample_offset=0)
-    d = rastrum.Canvas(12, 12, format="gray8")
+    d = rastrum.Canvas((12, 12), format="gray8")
     for k in range(3):
         d.line(tri[k], tri[(k + 1) % 3], 255, subpixel_bits=0, sample_offset=0)
     assert np.array_equal(c.array, d.array)
@@ -324,7 +324,7 @@ def test_three_lines_make_a_triangle():
     ],
 )
 def test_bad_input_writes_nothing(call):
-    c = rastrum.Canvas(8, 8, format="gray8", background=3)
+    c = rastrum.Canvas((8, 8), format="gray8", background=3)
     before = c.array.copy()
     with pytest.raises(rastrum.InputError):
         call(c)

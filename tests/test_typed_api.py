@@ -122,3 +122,19 @@ def test_labels_overlap_overloads() -> None:
     n: npt.NDArray[np.uint16] = count
     one: npt.NDArray[Any] = rastrum.labels(sq, (6, 7))
     assert n.dtype == np.uint16 and lab.shape == one.shape == (6, 7)
+
+
+def test_the_api_reference_lists_every_public_name() -> None:
+    import os
+
+    import rastrum.dask
+
+    path = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "docs", "api.md")
+    with open(path, encoding="utf-8") as f:
+        entries = {line[4:].strip() for line in f if line.startswith("::: ")}
+    modules = {"scene": scene, "coco": coco}
+    want = {"rastrum." + n for n in rastrum.__all__ if n not in modules and n != "__version__"}
+    want |= {"rastrum.%s.%s" % (m, n) for m, mod in modules.items() for n in mod.__all__
+             if n not in rastrum.__all__}  # rastrum.scene.render_mesh is rastrum.render_mesh
+    want |= {"rastrum.dask.rasterize", "rastrum.dask.to_xarray", "rastrum.gis.pixel_coordinates"}
+    assert want - entries == set()

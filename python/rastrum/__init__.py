@@ -180,7 +180,7 @@ def __getattr__(name: str) -> Any:
     # drawing call has a checked Python entry point above.
     if name == "lib":
         import warnings
-        warnings.warn("rastrum.lib (the raw cffi library) is not public and will be removed in the next "
-                      "release; use the functions of the rastrum namespace", DeprecationWarning, stacklevel=2)
+        warnings.warn("rastrum.lib (the raw cffi library) is not public (deprecated: it will be removed in the "
+                      "next release); use the functions of the rastrum namespace", DeprecationWarning, stacklevel=2)
         return _lib
     raise AttributeError("module 'rastrum' has no attribute %r" % (name,))

@@ -791,11 +791,11 @@ def _pixel_bytes(color, fmt):
         try:
             values = [v for v in color]
         except TypeError:
-            raise InputError("colour %r: give an int or a sequence of %d ints" % (color, n)) from None
+            raise InputError("colour %r: give an int or a sequence of %s" % (color, _core.plural(n, "int"))) from None
         if len(values) != n or not all(
             isinstance(v, (int, np.integer)) and not isinstance(v, (bool, np.bool_)) for v in values
         ):
-            raise InputError("colour %r: format %s needs %d ints" % (color, fmt, n))
+            raise InputError("colour %r: format %s needs %s" % (color, fmt, _core.plural(n, "int")))
     if not all(0 <= v <= 255 for v in values):
         raise InputError("colour %r: every channel must be in 0..255" % (color,))
     return bytes(bytearray(int(v) for v in values))

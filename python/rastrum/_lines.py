@@ -61,7 +61,7 @@ def snap_polyline(points, s, minimum):
         return np.zeros((0, 2), np.int32)
     pts = _core.snap_points(points, s)
     if len(pts) < minimum:
-        raise InputError("points: %d point(s) given; at least %d needed" % (len(pts), minimum))
+        raise InputError("points: %s given; at least %d needed" % (_core.plural(len(pts), "point"), minimum))
     if len(pts) > lib.RAST_MAX_POINTS:
         raise InputError("%d points; at most %d per call" % (len(pts), lib.RAST_MAX_POINTS))
     return pts

@@ -76,6 +76,8 @@ def _polygons(polygons, what):
             raise InputError("%s: an array of polygons must be (N, K, 2) (N rings of K points), "
                              "not shape %s" % (what, polygons.shape))
         polygons = list(polygons)
+    elif _core.is_feature_collection(polygons):
+        raise InputError("%s: got %s" % (what, _core.FEATURE_COLLECTION))
     elif _core._geo_mapping(polygons) is not None:
         raise InputError("%s: got one geometry; a list of polygons is needed ([geometry] for one)" % what)
     try:
@@ -324,7 +326,8 @@ def labels(polygons: Iterable[Any], shape: Shape, values: Optional[npt.ArrayLike
     else:
         v = np.asarray(values)
         if v.shape != (n,):
-            raise InputError("labels: values has shape %s; %d polygons need shape (%d,)" % (v.shape, n, n))
+            raise InputError("labels: values has shape %s; %s need%s shape (%d,)"
+                             % (v.shape, _core.plural(n, "polygon"), "s" if n == 1 else "", n))
         if v.dtype.kind not in "biuf":
             raise InputError("labels: values must be numbers, not dtype %s" % v.dtype)
         vals = v.astype(dtype)

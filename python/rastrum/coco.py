@@ -30,6 +30,8 @@ from ._core import InputError
 from ._batch import Polygons
 from ._native import ffi, lib
 
+__all__ = ["encode", "decode", "area", "toBbox", "merge", "iou", "frPyObjects", "rings", "polygons"]
+
 _F64 = np.dtype(np.float64)
 
 __all__ = ["encode", "decode", "area", "toBbox", "merge", "iou", "frPyObjects", "rings", "polygons"]
@@ -293,7 +295,8 @@ def iou(dt: Union[Sequence[Mapping[str, Any]], npt.ArrayLike], gt: Union[Sequenc
     crowd = np.array(pyiscrowd, dtype=np.uint8).reshape(-1)
     m, n = len(d), len(g)
     if len(crowd) != n:
-        raise InputError("iou: iscrowd has %d entries for %d gt objects" % (len(crowd), n))
+        raise InputError("iou: iscrowd has %s for %s" % (_core.plural(len(crowd), "entry", "entries"),
+                                                         _core.plural(n, "gt object")))
     if m == 0 or n == 0:
         return []
     if kd != kg:

@@ -498,7 +498,7 @@ def render_mesh(vertices: npt.ArrayLike, faces: npt.ArrayLike, size: Optional[Tu
     for name, flag in (("cull", cull), ("depth", depth)):
         if not isinstance(flag, (bool, np.bool_)):
             raise InputError("%s must be True or False, not %r" % (name, flag))
-    from ._core import deprecated, int_pair, shape2
+    from ._core import deprecated, int_pair, plural, shape2
     if size is not None:
         if shape is not None:
             raise InputError("render_mesh takes shape=(height, width), not also size")
@@ -519,10 +519,13 @@ def render_mesh(vertices: npt.ArrayLike, faces: npt.ArrayLike, size: Optional[Tu
     channels = canvas.array.shape[2] if canvas.array.ndim == 3 else 1
     if color is None:
         color = (230,) * channels
-    col = np.asarray(color) if not isinstance(color, str) else np.asarray(None)
+    if isinstance(color, str):  # a colour name or "#rrggbb", as the Canvas takes it
+        from ._canvas import _color_name
+        color = _color_name(color, canvas.format)
+    col = np.asarray(color)
     if col.dtype.kind not in "iu" or col.ndim > 1 or (col.size != channels and col.size != 1):
-        raise InputError("color must be %d int(s) in 0..255 for format %s, not %r"
-                         % (channels, canvas.format, color))
+        raise InputError("color must be %s in 0..255 for format %s, not %r"
+                         % (" or ".join(sorted({"1 int", plural(channels, "int")})), canvas.format, color))
     if col.min() < 0 or col.max() > 255:
         raise InputError("color: every channel must be in 0..255, not %r" % (color,))
     w, h = canvas.width, canvas.height

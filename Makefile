@@ -213,6 +213,17 @@ docs: | $(VENV)
 	$(PYTHON) -m pip install --quiet --disable-pip-version-check '.[docs]'
 	$(PYTHON) -m mkdocs build --strict --site-dir build/site
 
+# ---- types -------------------------------------------------------------------
+# mypy --strict, as a user's script meets the installed package (its
+# annotations and py.typed): on tests/test_typed_api.py, which uses every
+# public name, and on every Python example of README.md and docs/*.md.
+.PHONY: typecheck
+typecheck: | $(VENV)
+	$(PY_CLEAN)
+	$(PYTHON) -m pip install --quiet --disable-pip-version-check '.[typecheck]'
+	$(PYTHON) -m mypy --strict --no-incremental tests/test_typed_api.py
+	$(PYTHON) tools/typecheck_examples.py
+
 # ---- sanitizers --------------------------------------------------------------
 asan: asan-c asan-py
 

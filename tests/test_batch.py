@@ -82,7 +82,7 @@ def test_bad_polygon_is_named_and_nothing_written():
     with pytest.raises(InputError, match=r"polygon 1: ring 0, point 2 .* outside the range"):
         _batch.burn(out, [good, [np.array([(0, 0), (1, 0), (1e9, 1)])]], opts)
     assert (out == 3).all()
-    with pytest.raises(InputError, match="2 values for 1 polygons"):
+    with pytest.raises(InputError, match="2 values for 1 polygon$"):
         _batch.burn(out, [good], opts, values=[1, 2])
     with pytest.raises(InputError, match="dtype complex128"):
         _batch.burn(np.zeros((H, W), complex), [good], opts)

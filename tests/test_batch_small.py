@@ -107,7 +107,7 @@ def test_fresh_masks_write_every_byte(polys, rule, chunked):
     # out of view, empty and of 1 or 2 points included by the strategy.
     # `chunked` draws polygon by polygon (as with progress=), each call
     # into its own planes.
-    from rastrum import ml
+    from rastrum import _ml as ml
     polys = polys + [[np.array([[40.0, 40.0], [50.0, 40.0], [45.0, 48.0]])]]  # out of view
     out = np.full((len(polys),) + SHAPE, 0xAB, np.uint8)
     packed = ml._polygons(polys, "masks")

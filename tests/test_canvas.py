@@ -49,24 +49,24 @@ def colors(fmt):
 
 @pytest.mark.parametrize("fmt", FORMATS)
 def test_new_canvas(fmt):
-    c = rastrum.Canvas(7, 5, format=fmt)
+    c = rastrum.Canvas((5, 7), format=fmt)
     a = c.array
     n = FORMATS[fmt]
     assert a.dtype == np.uint8
     assert a.shape == ((5, 7) if n == 1 else (5, 7, n))
     assert not a.any()
-    c2 = rastrum.Canvas(7, 5, format=fmt, background=9)
+    c2 = rastrum.Canvas((5, 7), format=fmt, background=9)
     assert (c2.array == 9).all()
 
 
 def test_default_format_is_rgb888():
-    c = rastrum.Canvas(4, 3)
+    c = rastrum.Canvas((3, 4))
     assert c.array.shape == (3, 4, 3)
 
 
 @pytest.mark.parametrize("fmt", FORMATS)
 def test_array_is_a_view(fmt):
-    c = rastrum.Canvas(6, 4, format=fmt)
+    c = rastrum.Canvas((4, 6), format=fmt)
     c.array[1, 2] = 77
     c.fill_polygon([(0, 0), (1, 0), (1, 1), (0, 1)], 200)
     assert (c.array[1, 2] == 77).all()
@@ -85,7 +85,7 @@ def test_fill_polygon_matches_oracle(alg, rule, fmt, data):
     rl, (H, W) = data.draw(scenes(S, o, max_h=24, max_w=24), label="scene")
     bg = data.draw(st.integers(0, 255), label="background")
     color = data.draw(colors(fmt), label="color")
-    c = rastrum.Canvas(W, H, format=fmt, background=bg)
+    c = rastrum.Canvas((H, W), format=fmt, background=bg)
     before = c.array.copy()
     c.fill_polygon(rl, color, rule=rule, algorithm=alg, subpixel_bits=S,
                    sample_offset=o)
@@ -100,7 +100,7 @@ def test_fill_polygon_matches_oracle(alg, rule, fmt, data):
 
 @pytest.mark.parametrize("alg,rule", CASES)
 def test_fill_polygon_defaults_and_overdraw(alg, rule):
-    c = rastrum.Canvas(20, 16, format="rgb888", background=3)
+    c = rastrum.Canvas((16, 20), format="rgb888", background=3)
     a = [(1.2, 0.7), (18.3, 2.2), (9.9, 15.1)]
     b = [(0.0, 8.0), (20.0, 8.0), (20.0, 16.0), (0.0, 16.0)]
     c.fill_polygon(a, (10, 20, 30))
@@ -208,7 +208,7 @@ def test_wrap_views(sl):
 @pytest.mark.parametrize("fmt", FORMATS)
 def test_to_image_and_save(fmt, tmp_path):
     PIL = pytest.importorskip("PIL.Image")
-    c = rastrum.Canvas(13, 7, format=fmt, background=20)
+    c = rastrum.Canvas((7, 13), format=fmt, background=20)
     tri = [(0.5, 0.5), (12.0, 3.0), (2.0, 6.5)]
     color = 250 if fmt == "gray8" else [250, 100, 7, 128][:FORMATS[fmt]]
     c.fill_polygon(tri, color)

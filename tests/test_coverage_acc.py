@@ -262,7 +262,7 @@ def test_long_edges_painted_as_written(method):
     row buffer): gray8 painted with 255 equals the coverage levels."""
     rings = [[(0.3, -4.0), (6.6, 30.25), (1.5, 83.0)], [(5.2, 2.5), (6.9, 77.75), (3.0, 40.125)]]
     cov = rastrum.polygon_coverage(rings, TALL, method=method)
-    canvas = rastrum.Canvas(TALL[1], TALL[0], "gray8")
+    canvas = rastrum.Canvas((TALL[0], TALL[1]), "gray8")
     canvas.fill_polygon(rings, 255, aa=method)
     np.testing.assert_array_equal(canvas.array, cov)
     _check(rings, "evenodd", shape=TALL)

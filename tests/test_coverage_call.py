@@ -11,10 +11,10 @@ import numpy as np
 import pytest
 
 import rastrum
-from rastrum import coverage as cov
+from rastrum import _coverage as cov
 import oracle_coverage as oc
 
-METHODS = list(rastrum.coverage.METHODS)
+METHODS = list(rastrum._coverage.METHODS)
 DTYPES = [np.uint8, np.uint16, np.float32, np.float64]
 
 

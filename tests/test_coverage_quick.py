@@ -24,7 +24,7 @@ def _fix62(rings, shape, rule, method, s=8):
     pts, sizes, nrings = rastrum._core._points(rings)
     raw = np.zeros((h, w), np.uint64)
     opts = ffi.new("rast_coverage_opts *")
-    opts.method = rastrum.coverage.METHODS[method]
+    opts.method = rastrum._coverage.METHODS[method]
     opts.rule = lib.RAST_RULE_NONZERO if rule == "nonzero" else lib.RAST_RULE_EVENODD
     opts.subpixel_bits = s
     opts.sample = lib.RAST_SAMPLE_CENTER

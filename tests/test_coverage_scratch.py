@@ -9,7 +9,7 @@ import numpy as np
 import pytest
 
 import rastrum
-from rastrum import coverage as C
+from rastrum import _coverage as C
 from rastrum._native import ffi, lib
 
 

@@ -141,16 +141,16 @@ def test_good_sample_offsets():
 FORMATS = {"gray8": 1, "rgb888": 3, "rgba8888": 4}
 
 BAD_COLORS = {
-    "gray8": [256, -1, 1.5, "red", None, (1, 2, 3), [300]],
+    "gray8": [256, -1, 1.5, "redd", "#12", None, (1, 2, 3), [300]],
     "rgb888": [256, -1, (1, 2), (1, 2, 3, 4, 5), (0, 0, 256), (0, -1, 0),
-               (1.5, 2, 3), "red", None],
+               (1.5, 2, 3), "no such colour", "#ff00zz", None],
     "rgba8888": [256, -1, (1, 2), (1, 2, 3, 4, 5), (0, 0, 0, 256),
-                 (0, 0, 0, -1), (1, 2, 3.5, 4), "red", None],
+                 (0, 0, 0, -1), (1, 2, 3.5, 4), "#fffff", "", None],
 }
 
 
 def _canvas(fmt):
-    c = rastrum.Canvas(7, 6, format=fmt, background=17)
+    c = rastrum.Canvas((6, 7), format=fmt, background=17)
     c.array[...] = np.arange(c.array.size, dtype=np.uint8).reshape(
         c.array.shape)
     return c
@@ -206,12 +206,12 @@ def test_canvas_multi_ring_error_is_atomic():
 
 
 @pytest.mark.parametrize("args,pattern", [
-    ((-1, 5), r"width|size|shape"),
-    ((5, -1), r"height|size|shape"),
-    ((2.5, 5), r"width|size|shape"),
-    ((5, 5, "rgb565x"), r"format"),
-    ((5, 5, "rgb888", 256), r"background|colou?r"),
-    ((5, 5, "rgb888", -1), r"background|colou?r"),
+    (((5, -1),), r"width|size|shape"),
+    (((-1, 5),), r"height|size|shape"),
+    (((5, 2.5),), r"width|size|shape"),
+    (((5, 5), "rgb565x"), r"format"),
+    (((5, 5), "rgb888", 256), r"background|colou?r"),
+    (((5, 5), "rgb888", -1), r"background|colou?r"),
 ])
 def test_canvas_bad_construction(args, pattern):
     with raises_input_error(pattern):

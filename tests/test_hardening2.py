@@ -43,7 +43,7 @@ def test_depth_heap_overflow_reproducer():
     SIGSEGV): now the assignment raises InputError and nothing is drawn."""
     script = (
         "import numpy as np, rastrum\n"
-        "c = rastrum.Canvas(512, 512, format='gray8')\n"
+        "c = rastrum.Canvas((512, 512), format='gray8')\n"
         "try:\n"
         "    c.depth = np.full((1, 4), 2**31 - 1, np.int32)\n"
         "except rastrum.InputError as e:\n"
@@ -59,7 +59,7 @@ def test_depth_heap_overflow_reproducer():
 
 
 def test_depth_int64_of_the_right_shape_is_refused():
-    c = rastrum.Canvas(8, 6, format="gray8")
+    c = rastrum.Canvas((6, 8), format="gray8")
     with pytest.raises(rastrum.InputError, match="int32"):
         c.depth = np.zeros((6, 8), np.int64)
     assert c.depth is None
@@ -68,7 +68,7 @@ def test_depth_int64_of_the_right_shape_is_refused():
 def test_depth_reshaped_in_place_is_caught_at_the_fill():
     """An accepted buffer can change shape in place; the fill checks it
     again and writes nothing."""
-    c = rastrum.Canvas(8, 6, format="gray8")
+    c = rastrum.Canvas((6, 8), format="gray8")
     c.fill_triangles([[(0, 0), (8, 0), (0, 6)]], 5, depth=[[3, 3, 3]])
     d = c.depth
     before = c.array.copy()
@@ -84,7 +84,7 @@ def test_depth_reshaped_in_place_is_caught_at_the_fill():
 def test_depth_set_by_hand_is_used():
     """A buffer set by the user takes part in the test: a far buffer lets
     the triangle draw, a near one stops it."""
-    c = rastrum.Canvas(8, 6, format="gray8")
+    c = rastrum.Canvas((6, 8), format="gray8")
     c.depth = np.full((6, 8), -100, np.int32)
     c.fill_triangles([[(0, 0), (8, 0), (0, 6)]], 9, depth=[[0, 0, 0]])
     assert not c.array.any()
@@ -95,7 +95,7 @@ def test_depth_set_by_hand_is_used():
 
 def test_public_attributes_refuse_being_set():
     """Every other public attribute of a Canvas is read-only."""
-    c = rastrum.Canvas(4, 4, format="gray8")
+    c = rastrum.Canvas((4, 4), format="gray8")
     for name in ("array", "packed", "width", "height", "format"):
         with pytest.raises(AttributeError):
             setattr(c, name, np.zeros((4, 4), np.uint8))
@@ -112,7 +112,7 @@ HALF_MINUS = Fraction(1, 2) - Fraction(1, 2 ** 60)
 
 def _column0(x1, s=0):
     """Does a rectangle from x = 0 to x1 (rows 0..1) fill column 0?"""
-    c = rastrum.Canvas(3, 1, format="gray8")
+    c = rastrum.Canvas((1, 3), format="gray8")
     c.fill_polygon([(0, 0), (x1, 0), (x1, 1), (0, 1)], 9, subpixel_bits=s)
     return bool(c.array[0, 0])
 

@@ -12,8 +12,8 @@ from hypothesis import given, settings, strategies as st
 
 import oracle_lines as ref
 import rastrum
-import rastrum.canvas
-import rastrum.lines
+import rastrum._canvas
+import rastrum._lines
 from oracle import snap
 from rastrum._native import ffi, lib
 from strategies import COORD_MAX, coordinates, examples
@@ -24,10 +24,10 @@ HALF = Fraction(1, 2)
 
 def c_line(a, b, S, o, algorithm="bresenham", clip=None):
     """rast_line_pixels on fixed-point endpoints, as a list of (x, y)."""
-    opts = rastrum.lines.line_opts(algorithm, S, o)
+    opts = rastrum._lines.line_opts(algorithm, S, o)
     pa = ffi.new("rast_point *", list(a))[0]
     pb = ffi.new("rast_point *", list(b))[0]
-    rect = rastrum.lines._clip_rect(clip)
+    rect = rastrum._lines._clip_rect(clip)
     count = ffi.new("size_t *")
     st_ = lib.rast_line_pixels(pa, pb, opts, rect, ffi.NULL, 0, count)
     assert st_ in (lib.RAST_OK, lib.RAST_E_SCRATCH)
@@ -162,7 +162,7 @@ def test_huge_lines_through_a_canvas(o, data):
     for _ in range(20):
         lib.rast_draw_line(canvas._target, ffi.new("rast_point *", list(a))[0],
                            ffi.new("rast_point *", list(b))[0],
-                           rastrum.lines.line_opts("bresenham", S, o), canvas._pixel((1, 2, 3)))
+                           rastrum._lines.line_opts("bresenham", S, o), canvas._pixel((1, 2, 3)))
     elapsed = time.perf_counter() - t0
     assert border_intact(big, inner)
     want = np.zeros((h, w), bool)
@@ -294,9 +294,9 @@ def test_outline_is_the_union_of_its_lines(o, data):
 def test_three_lines_make_a_triangle():
     # seed 002: line(t0, t1); line(t1, t2); line(t2, t0)
     tri = [(1, 1), (10, 4), (3, 9)]
-    c = rastrum.Canvas(12, 12, format="gray8")
+    c = rastrum.Canvas((12, 12), format="gray8")
     c.polyline(tri, 255, closed=True, subpixel_bits=0, sample_offset=0)
-    d = rastrum.Canvas(12, 12, format="gray8")
+    d = rastrum.Canvas((12, 12), format="gray8")
     for k in range(3):
         d.line(tri[k], tri[(k + 1) % 3], 255, subpixel_bits=0, sample_offset=0)
     assert np.array_equal(c.array, d.array)
@@ -324,7 +324,7 @@ def test_three_lines_make_a_triangle():
     ],
 )
 def test_bad_input_writes_nothing(call):
-    c = rastrum.Canvas(8, 8, format="gray8", background=3)
+    c = rastrum.Canvas((8, 8), format="gray8", background=3)
     before = c.array.copy()
     with pytest.raises(rastrum.InputError):
         call(c)
@@ -338,7 +338,7 @@ def test_registry_and_names():
 
 
 def test_docstring_examples_run():
-    for mod in (rastrum.lines, rastrum.canvas):
+    for mod in (rastrum._lines, rastrum._canvas):
         failed, attempted = doctest.testmod(mod, optionflags=doctest.NORMALIZE_WHITESPACE)
         assert attempted and not failed
 

@@ -11,7 +11,7 @@ import pytest
 from hypothesis import given, strategies as st
 
 import rastrum
-from rastrum import ml
+from rastrum import _ml as ml
 from oracle import oracle_mask, snapped_rings
 
 coord = st.one_of(st.integers(-4, 24).map(float), st.floats(-4, 24, allow_nan=False).map(lambda v: round(v, 2)))

@@ -48,7 +48,7 @@ def test_modes_match_their_oracles(rounding, boundary, data):
 @pytest.mark.parametrize("boundary", ["closed", "conservative"])
 def test_canvas_paints_the_same_pixels(boundary):
     ring = [(1.3, 0.7), (17.6, 4.2), (9.1, 13.9), (2.2, 9.5)]
-    c = rastrum.Canvas(20, 16, "gray8")
+    c = rastrum.Canvas((16, 20), "gray8")
     c.fill_polygon(ring, 7, boundary=boundary)
     assert_same(c.array == 7, rastrum.polygon_mask(ring, (16, 20), boundary=boundary), boundary)
 

@@ -19,7 +19,7 @@ from hypothesis import HealthCheck, assume, example, given, settings, strategies
 
 import rastrum
 from rastrum._native import lib
-from rastrum.path import Path, _flatten_fixed, MOVE, CUBIC, CLOSE, LINE
+from rastrum._path import Path, _flatten_fixed, MOVE, CUBIC, CLOSE, LINE
 
 LIM = lib.RAST_COORD_MAX
 
@@ -230,7 +230,7 @@ def test_circle_area_within_tolerance_band():
         p = Path.from_svg("M 90 50 A 40 40 0 0 1 50 90 A 40 40 0 0 1 10 50 A 40 40 0 0 1 50 10 "
                           "A 40 40 0 0 1 90 50 Z", tolerance=tol)
         a = rastrum.polygon_coverage(p, (100, 100), dtype=np.float64).sum()
-        err = rastrum.path.ARC_ERROR + 2 ** -9  # the snapped control points
+        err = rastrum._path.ARC_ERROR + 2 ** -9  # the snapped control points
         assert math.pi * (r - tol - err) ** 2 <= a <= math.pi * (r + err) ** 2
 
 

@@ -101,7 +101,7 @@ def test_conservative_equals_oracle_large_s(S, data, rule):
 @given(S=st.integers(17, 32), data=st.data())
 def test_canvas_fill_large_s(S, data):
     rings = data.draw(scenes(S))
-    c = rastrum.Canvas(16, 14, "gray8")
+    c = rastrum.Canvas((14, 16), "gray8")
     c.fill_polygon(rings, 200, subpixel_bits=S)
     want = oracle_mask(rings, (14, 16), subpixel_bits=S)
     assert np.array_equal(c.array == 200, want)
@@ -203,7 +203,7 @@ def test_just_past_the_limits(S):
         for axis in (0, 1):
             bad = ring.copy()
             bad[2, axis] = v
-            c = rastrum.Canvas(12, 10, "gray8")
+            c = rastrum.Canvas((10, 12), "gray8")
             with pytest.raises(rastrum.InputError, match=r"point 2.*(range|infinite)"):
                 c.fill_polygon(bad, 9, subpixel_bits=S)
             assert not c.array.any()

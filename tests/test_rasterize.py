@@ -471,7 +471,7 @@ BAD = [
     ("all_touched", [GOOD], {"all_touched": "yes"}, r"all_touched must be True or False"),
     ("progress", [GOOD], {"progress": "bar"}, r"progress must be True, False, None or a callable"),
     ("values column", [GOOD], {"values": "v"}, r"a column name needs a GeoDataFrame"),
-    ("values count", [GOOD, GOOD], {"values": [1]}, r"values: 1 values for 2 shapes"),
+    ("values count", [GOOD, GOOD], {"values": [1]}, r"values: 1 value for 2 shapes"),
 ]
 
 BAD_SHAPE = [

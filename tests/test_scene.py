@@ -96,7 +96,7 @@ TWO = np.array([(-0.9, -0.9, 0.5), (0.6, -0.9, 0.5), (-0.2, 0.8, 0.5),      # ne
 
 def test_depth_order_free():
     near, far = (0, 1, 2), (3, 4, 5)
-    kw = dict(size=(40, 40), light=(0.3, 0.2, 1), color=(250, 120, 30), shading="gouraud")
+    kw = dict(shape=(40, 40), light=(0.3, 0.2, 1), color=(250, 120, 30), shading="gouraud")
     a = render_mesh(TWO, [near, far], **kw)
     b = render_mesh(TWO, [far, near], **kw)
     np.testing.assert_array_equal(a.array, b.array)

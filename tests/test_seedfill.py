@@ -494,7 +494,7 @@ def test_canvas_methods(case, fmt, conn):
 
 
 def test_canvas_bad_input_raises_and_writes_nothing():
-    c = rastrum.Canvas(6, 5, format="rgb888", background=(1, 2, 3))
+    c = rastrum.Canvas((5, 6), format="rgb888", background=(1, 2, 3))
     before = c.array.copy()
     bad_calls = [
         lambda: c.flood_fill((6, 0), 1),
@@ -542,7 +542,7 @@ def test_canvas_mono1(case, conn, stack_bytes, boundary):
     labels, seed = case
     bits = (labels != 0).astype(np.int64)
     h, w = bits.shape
-    c = rastrum.Canvas(w, h, format="mono1")
+    c = rastrum.Canvas((h, w), format="mono1")
     c.packed[...] = np.packbits(bits.astype(np.uint8), axis=1)
     if boundary:
         _core.seed_fill(c._target, seed, c._pixel(1), c._pixel(0), conn, stack_bytes)

@@ -21,6 +21,11 @@ BACKGROUNDS = {"gray8": (0, 255), "mono1": (0, 1), "rgb888": (0, 255),
                "rgba8888": (0, 255), "rgb565": (0, 255)}
 
 
+def spell(precision):
+    """The current spelling of a precision (flat is shading="flat")."""
+    return {"shading": "flat"} if precision == "flat" else {"precision": precision}
+
+
 def vertex_colors_for(fmt, rgba):
     """The (N, 3, C) array a user of `fmt` gives for (N, 3, 4) colours."""
     c = CHANNELS[fmt]
@@ -38,7 +43,7 @@ def effective_rgba(fmt, rgba):
 
 
 def expected_canvas(fmt, shape, background, rgba_out):
-    c = rastrum.Canvas(shape[1], shape[0], format=fmt, background=background)
+    c = rastrum.Canvas((shape[0], shape[1]), format=fmt, background=background)
     want = c.array.copy()
     written = rgba_out[..., 0] >= 0
     want[written] = pack(np.where(rgba_out < 0, 0, rgba_out), fmt)[written]
@@ -78,7 +83,7 @@ def test_exact_matches_oracle(fmt, data):
     kw = dict(subpixel_bits=S, sample_offset=o, rounding=rounding)
     want, zwant = shade(tris, effective_rgba(fmt, cols), shape, depth=depth, **kw)
     bg = BACKGROUNDS[fmt][0]
-    c = rastrum.Canvas(shape[1], shape[0], format=fmt, background=bg)
+    c = rastrum.Canvas((shape[0], shape[1]), format=fmt, background=bg)
     c.fill_triangles(np.asarray(tris, dtype=np.float64).reshape(-1, 3, 2),
                      vertex_colors=vertex_colors_for(fmt, cols), depth=depth, algorithm=alg, **kw)
     msg = f"{fmt} {alg} {lit(tris)} {shape} {cols.tolist()} depth={depth} {kw}"
@@ -111,7 +116,7 @@ def test_exact_ties_on_sample_grid(data):
         depth = np.array(data.draw(st.lists(zval, min_size=3 * n, max_size=3 * n))).reshape(n, 3)
     want, zwant = shade(tris, cols, shape, subpixel_bits=1, sample_offset=o, depth=depth)
     for alg in ALGOS:
-        c = rastrum.Canvas(8, 8, format="rgba8888")
+        c = rastrum.Canvas((8, 8), format="rgba8888")
         c.fill_triangles(tris, vertex_colors=cols, algorithm=alg, subpixel_bits=1, sample_offset=o,
                          depth=depth)
         msg = f"{alg} {tris} {cols.tolist()} depth={depth}"
@@ -135,9 +140,9 @@ def test_flat_matches_oracle(data):
     want, _ = shade(tris, rgba, shape, depth=depth, precision="flat", **kw)
     batch = np.asarray(tris, dtype=np.float64).reshape(-1, 3, 2)
     for how in ("vertex", "per_triangle"):
-        c = rastrum.Canvas(shape[1], shape[0], format=fmt)
+        c = rastrum.Canvas((shape[0], shape[1]), format=fmt)
         if how == "vertex":
-            c.fill_triangles(batch, vertex_colors=vertex_colors_for(fmt, cols), precision="flat",
+            c.fill_triangles(batch, vertex_colors=vertex_colors_for(fmt, cols), shading="flat",
                              depth=depth, **kw)
         else:
             c.fill_triangles(batch, vertex_colors_for(fmt, cols)[:, 0], depth=depth, **kw)
@@ -147,12 +152,12 @@ def test_flat_matches_oracle(data):
 def test_exact_on_sample_points_and_ties():
     """Vertices on sample points: the vertex pixel gets the vertex colour;
     a value exactly halfway rounds up."""
-    c = rastrum.Canvas(5, 3, format="gray8")
+    c = rastrum.Canvas((3, 5), format="gray8")
     # x from 0.5 to 4.5 on row 0's samples: 0 at x=0.5, 1 at x=4.5 -> 0.25 per pixel
     c.fill_triangles([[(0.5, 0.5), (4.5, 0.5), (0.5, 2.5)]], vertex_colors=[[[0], [1], [0]]])
     # row 0: 0, .25, .5 -> 1 (half up), .75 -> 1; (4.5, .5) is a right vertex: not owned
     assert c.array[0].tolist() == [0, 0, 1, 1, 0]
-    c = rastrum.Canvas(3, 3, format="gray8")
+    c = rastrum.Canvas((3, 3), format="gray8")
     c.fill_triangles([[(0.5, 0.5), (2.5, 0.5), (0.5, 2.5)]], vertex_colors=[[[200], [10], [90]]])
     assert c.array[0, 0] == 200 and c.array[0, 1] == 105 and c.array[1, 0] == 145
 
@@ -164,7 +169,7 @@ def written(fmt, shape, paint):
     backgrounds (every bit differs) iff written."""
     got = []
     for bg in BACKGROUNDS[fmt]:
-        c = rastrum.Canvas(shape[1], shape[0], format=fmt, background=bg)
+        c = rastrum.Canvas((shape[0], shape[1]), format=fmt, background=bg)
         paint(c)
         got.append(c.array)
     same = got[0] == got[1]
@@ -187,7 +192,7 @@ def test_shaded_pixels_equal_unshaded(precision, data):
     for alg in ALGOS:
         want = rastrum.triangles_mask(batch, shape, algorithm=alg, **kw)
         got = written(fmt, shape, lambda c: c.fill_triangles(
-            batch, vertex_colors=vertex_colors_for(fmt, cols), precision=precision,
+            batch, vertex_colors=vertex_colors_for(fmt, cols), **spell(precision),
             fraction_bits=F, algorithm=alg, **kw))
         assert_same(got, want, f"{precision} F={F} {fmt} {alg} {lit(tris)} {shape} {kw}")
 
@@ -205,7 +210,7 @@ def test_fixed_16_within_one_level(data):
     batch = np.asarray(tris, dtype=np.float64).reshape(-1, 3, 2)
     out = []
     for precision in ("exact", "fixed"):
-        c = rastrum.Canvas(shape[1], shape[0], format="rgba8888")
+        c = rastrum.Canvas((shape[0], shape[1]), format="rgba8888")
         c.fill_triangles(batch, vertex_colors=cols, precision=precision, fraction_bits=16,
                          subpixel_bits=S, sample_offset=o)
         out.append(c.array.astype(int))
@@ -218,7 +223,7 @@ def fixed_by_paths(batch, cols, shape, precision="fixed", **kw):
     general path: R, G, B on rgb888, A as the level of gray8."""
     out = {}
     for fmt, vc in (("rgba8888", cols), ("rgb888", cols[..., :3]), ("gray8", cols[..., 3:])):
-        c = rastrum.Canvas(shape[1], shape[0], format=fmt)
+        c = rastrum.Canvas((shape[0], shape[1]), format=fmt)
         c.fill_triangles(batch, vertex_colors=vc, precision=precision, **kw)
         out[fmt] = c.array.astype(int)
     return out["rgba8888"], np.dstack([out["rgb888"], out["gray8"]])
@@ -278,11 +283,11 @@ def test_fixed_error_grows_as_f_shrinks():
     smooth triangle, F = 16 nowhere by more than one level."""
     tri = [[(0.3, 0.2), (250.7, 10.1), (30.2, 180.9)]]
     cols = [[[0, 255, 17, 255], [255, 3, 100, 255], [90, 180, 255, 255]]]
-    ref = rastrum.Canvas(256, 192, format="rgba8888")
+    ref = rastrum.Canvas((192, 256), format="rgba8888")
     ref.fill_triangles(tri, vertex_colors=cols)
     err = {}
     for F in (2, 16):
-        c = rastrum.Canvas(256, 192, format="rgba8888")
+        c = rastrum.Canvas((192, 256), format="rgba8888")
         c.fill_triangles(tri, vertex_colors=cols, precision="fixed", fraction_bits=F)
         err[F] = np.abs(c.array.astype(int) - ref.array).max()
     assert err[16] <= 1 < err[2]
@@ -296,7 +301,7 @@ def test_depth_nearer_wins_whatever_the_order():
     big = [(0, 0), (10, 0), (10, 10)]
     res = []
     for order in ([0, 1, 2], [2, 1, 0]):
-        c = rastrum.Canvas(10, 10, format="gray8")
+        c = rastrum.Canvas((10, 10), format="gray8")
         tris = [a, b, big]
         colours = [[[10]] * 3, [[20]] * 3, [[30]] * 3]
         depths = [[5, 5, 5], [1, 1, 1], [3, 3, 3]]
@@ -310,7 +315,7 @@ def test_depth_nearer_wins_whatever_the_order():
 
 
 def test_depth_buffer_kept_and_cleared():
-    c = rastrum.Canvas(4, 4, format="gray8")
+    c = rastrum.Canvas((4, 4), format="gray8")
     assert c.depth is None
     c.fill_triangles([[(0, 0), (4, 0), (0, 4)]], 50)  # no depth: nothing made
     assert c.depth is None
@@ -339,10 +344,10 @@ def test_new_formats_fill_polygons_exactly(fmt, data):
     want = oracle_mask(rl, shape, rule="evenodd", **kw)
     on, off = ((255, 0, 128), (0, 255, 7)) if fmt == "rgb565" else (1, 0)
     for bg, fg in ((off, on), (on, off)):
-        c = rastrum.Canvas(shape[1], shape[0], format=fmt, background=bg)
+        c = rastrum.Canvas((shape[0], shape[1]), format=fmt, background=bg)
         c.fill_polygon(rl, fg, algorithm=alg, **kw)
-        ref = rastrum.Canvas(shape[1], shape[0], format=fmt, background=fg).array
-        exp = rastrum.Canvas(shape[1], shape[0], format=fmt, background=bg).array.copy()
+        ref = rastrum.Canvas((shape[0], shape[1]), format=fmt, background=fg).array
+        exp = rastrum.Canvas((shape[0], shape[1]), format=fmt, background=bg).array.copy()
         exp[want] = ref[want]
         assert_same(c.array, exp, f"{fmt} {alg} {rl} {shape} {kw}")
         if fmt == "mono1":  # padding bits after the last column untouched
@@ -353,7 +358,7 @@ def test_new_formats_fill_polygons_exactly(fmt, data):
 
 
 def test_mono1_bit_order_and_lines():
-    c = rastrum.Canvas(19, 2, format="mono1")
+    c = rastrum.Canvas((2, 19), format="mono1")
     c.line((0, 0), (18, 0), 1, subpixel_bits=0, sample_offset=0)
     assert c.packed[0].tolist() == [0xFF, 0xFF, 0xE0] and c.packed[1].tolist() == [0, 0, 0]
     c.fill_polygon([(3, 1), (10, 1), (10, 2), (3, 2)], 1, sample_offset=0)
@@ -364,7 +369,7 @@ def test_mono1_bit_order_and_lines():
 
 
 def test_rgb565_packing_and_image():
-    c = rastrum.Canvas(3, 1, format="rgb565", background=(8, 4, 8))
+    c = rastrum.Canvas((1, 3), format="rgb565", background=(8, 4, 8))
     assert c.array.dtype == np.uint16 and c.array.tolist() == [[(1 << 11) | (1 << 5) | 1] * 3]
     c.fill_triangles([[(0, 0), (3, 0), (0, 3)]], (255, 255, 255))
     assert c.array[0, 0] == 0xFFFF
@@ -394,7 +399,7 @@ def test_rgb565_packing_and_image():
     (dict(color=1, depth=[[1, 2, float("nan")]]), "int32"),
 ])
 def test_bad_shading_input(kwargs, what):
-    c = rastrum.Canvas(4, 4, format="gray8")
+    c = rastrum.Canvas((4, 4), format="gray8")
     with pytest.raises(rastrum.InputError, match=what):
         c.fill_triangles([[(0, 0), (4, 0), (0, 4)]], **kwargs)
     assert not c.array.any() and c.depth is None

@@ -15,7 +15,7 @@ import pytest
 from hypothesis import HealthCheck, assume, given, settings, strategies as st
 
 import rastrum
-from rastrum.path import ARC_ERROR
+from rastrum._path import ARC_ERROR
 
 shapely = pytest.importorskip("shapely")
 from shapely.geometry import LineString, Point, box  # noqa: E402

@@ -69,25 +69,25 @@ def _jobs():
                      rastrum.polygon_mask([p, p[::-1] * 0.5 + 50], (200, 200), algorithm=alg).tobytes()))
 
     def fill_polygon():
-        c = rastrum.Canvas(200, 200, format="rgb888")
+        c = rastrum.Canvas((200, 200), format="rgb888")
         for k, p in enumerate(polys):
             c.fill_polygon(p, (k * 20, 255 - k * 20, 7), rule="nonzero", boundary=("exact", "closed")[k % 2])
         return c.array.tobytes()
 
     def fill_triangles():
-        c = rastrum.Canvas(200, 200, format="gray8")
+        c = rastrum.Canvas((200, 200), format="gray8")
         for k, alg in enumerate(("edge", "sweep", "edgeflag")):
             c.fill_triangles(tris[k::3], 50 * (k + 1), algorithm=alg)
         return c.array.tobytes()
 
     def fill_triangle():
-        c = rastrum.Canvas(200, 200, format="rgba8888")
+        c = rastrum.Canvas((200, 200), format="rgba8888")
         for k, t in enumerate(tris[:40]):
             c.fill_triangle(t, (k, 2 * k, 3 * k, 255))
         return c.array.tobytes()
 
     def line_and_polyline():
-        c = rastrum.Canvas(200, 200, format="gray8")
+        c = rastrum.Canvas((200, 200), format="gray8")
         for k, (a, b) in enumerate(lines):
             c.line(a, b, k + 1, algorithm=("bresenham", "dda")[k % 2])
         c.polyline(lines.reshape(-1, 2)[:30], 255, closed=True)
@@ -152,11 +152,11 @@ def test_threads_share_a_canvas_on_disjoint_rows():
     rng = np.random.default_rng(11)
     bands = [(k * 50, k * 50 + 50) for k in range(4)]
     shapes = [[rng.uniform((0, y0), (200, y1), (12, 2)) for _ in range(25)] for y0, y1 in bands]
-    want = rastrum.Canvas(200, 200, format="gray8")
+    want = rastrum.Canvas((200, 200), format="gray8")
     for k, polys in enumerate(shapes):
         for p in polys:
             want.fill_polygon(p, 10 * k + 1, rule="nonzero")
-    got = rastrum.Canvas(200, 200, format="gray8")
+    got = rastrum.Canvas((200, 200), format="gray8")
     start = threading.Barrier(len(bands))
 
     def work(k):

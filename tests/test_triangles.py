@@ -10,8 +10,8 @@ import pytest
 from hypothesis import given, settings, strategies as st
 
 import rastrum
-import rastrum.canvas
-import rastrum.triangles
+import rastrum._canvas
+import rastrum._triangles
 from oracle import oracle_mask
 from strategies import (COORD_MAX, assert_same, coordinates, examples,
                         is_in_range, limit_px, shapes)
@@ -28,7 +28,7 @@ def test_registry():
 
 
 def test_docstrings_run():
-    for mod in (rastrum.triangles, rastrum.canvas):
+    for mod in (rastrum._triangles, rastrum._canvas):
         res = doctest.testmod(mod, optionflags=doctest.NORMALIZE_WHITESPACE)
         assert res.failed == 0 and res.attempted > 0, mod
 
@@ -334,7 +334,7 @@ def test_inside_target_matches_oracle(data):
     # ones change
     exp_mask = oracle_count(tris, shape, S, o, rounding) > 0
     for alg in ALGOS:
-        c = rastrum.Canvas(shape[1], shape[0], format="gray8")
+        c = rastrum.Canvas((shape[0], shape[1]), format="gray8")
         c.array[...] = 7
         c.fill_triangles(tris, 200, algorithm=alg, subpixel_bits=S, sample_offset=o, rounding=rounding)
         assert_same(c.array, np.where(exp_mask, 200, 7).astype(np.uint8), f"{alg} gray8 {lit(tris)}")
@@ -351,7 +351,7 @@ def test_canvas_writes_only_covered_pixels(data):
     fmt = data.draw(st.sampled_from(["gray8", "rgb888", "rgba8888"]), label="format")
     alg = data.draw(st.sampled_from(ALGOS), label="alg")
     h, w = shape
-    c = rastrum.Canvas(w, h, format=fmt)
+    c = rastrum.Canvas((h, w), format=fmt)
     rng = np.random.default_rng(len(tris))
     c.array[...] = rng.integers(0, 200, c.array.shape, dtype=np.uint8)
     before = c.array.copy()
@@ -362,7 +362,7 @@ def test_canvas_writes_only_covered_pixels(data):
     exp[mask] = color
     assert_same(c.array, exp, f"{alg} {fmt} {lit(tris)}")
     # fill_triangle, one at a time, paints the same
-    d = rastrum.Canvas(w, h, format=fmt)
+    d = rastrum.Canvas((h, w), format=fmt)
     d.array[...] = before
     for t in tris:
         d.fill_triangle(t, color, algorithm=alg, subpixel_bits=S, sample_offset=o)
@@ -409,7 +409,7 @@ def test_bad_input(tris, kw, pattern):
         rastrum.triangles_mask(tris, (6, 7), **kw)
     if "mode" in kw:
         return  # Canvas has no mode
-    c = rastrum.Canvas(7, 6, format="gray8", background=3)
+    c = rastrum.Canvas((6, 7), format="gray8", background=3)
     with pytest.raises(rastrum.InputError, match=re.compile(pattern, re.I)):
         c.fill_triangles(tris, 200, **kw)
     assert (c.array == 3).all()
@@ -422,7 +422,7 @@ def test_bad_shape(shape):
 
 
 def test_bad_canvas_arguments():
-    c = rastrum.Canvas(7, 6, format="rgb888", background=3)
+    c = rastrum.Canvas((6, 7), format="rgb888", background=3)
     for tri, color, pattern in [
         (TRI, (1, 2), r"colou?r"),
         (TRI, 300, r"colou?r"),

@@ -7,29 +7,35 @@ Coordinates are (x, y) as in Pillow; arrays are (row, column) = (y, x) as in
 numpy.
 """
 
+from typing import Any, Dict
+
+import numpy as np
+import numpy.typing as npt
+
 from . import _core
 from ._core import InputError, RastrumError
-from ._native import lib
-from .canvas import Canvas
-from .lines import line_pixels, point_in_triangle
-from .triangles import TRIANGLE_ALGORITHMS as _TRIANGLE_ALGORITHMS, triangles_count, triangles_mask
+from ._typing import Boundary, PolygonAlgorithm, Rings, Rounding, Rule, Shape
+from ._native import lib as _lib
+from ._canvas import Canvas
+from ._lines import line_pixels, point_in_triangle
+from ._triangles import TRIANGLE_ALGORITHMS as _TRIANGLE_ALGORITHMS, triangles_count, triangles_mask
 from . import scene
 from . import coco
 from ._batch import Polygons
-from .ml import labels, masks
+from ._ml import labels, masks
 from .scene import render_mesh
 from .gis import rasterize, IDENTITY, geometry_mask, geometry_window, grid
-from .zonal import zonal_stats
-from .coverage import AA_ENTRIES as _AA_ENTRIES, METHODS as _COVERAGE_METHODS, polygon_coverage, triangles_coverage
-from .path import Path
-from .strokes import stroke
+from ._zonal import zonal_stats
+from ._coverage import AA_ENTRIES as _AA_ENTRIES, METHODS as _COVERAGE_METHODS, polygon_coverage, triangles_coverage
+from ._path import Path
+from ._strokes import stroke
 
 __all__ = ["polygon_mask", "triangles_mask", "triangles_count", "line_pixels", "point_in_triangle", "Canvas",
            "ALGORITHMS", "RastrumError", "InputError", "__version__", "render_mesh", "scene", "rasterize",
            "IDENTITY", "zonal_stats", "geometry_mask", "geometry_window", "grid", "coco", "masks", "labels", "Polygons",
            "polygon_coverage", "triangles_coverage", "AA_METHODS", "Path", "stroke"]
 
-_v = lib.rast_version_number()
+_v = _lib.rast_version_number()
 __version__ = "%d.%d.%d" % (_v // 10000, _v // 100 % 100, _v % 100)
 
 #: The algorithm names each entry point accepts, and the fill rules each
@@ -57,8 +63,9 @@ ALGORITHMS["triangles_coverage"] = {name: ("evenodd", "nonzero") for name in _CO
 AA_METHODS = {entry: {name: ("evenodd", "nonzero") for name in _COVERAGE_METHODS}
               for entry in _AA_ENTRIES}
 
-def polygon_mask(rings, shape, *, rule="evenodd", algorithm="aet", subpixel_bits=8, sample_offset=0.5,
-                 rounding="exact", boundary="exact"):
+def polygon_mask(rings: Rings, shape: Shape, *, rule: Rule = "evenodd", algorithm: PolygonAlgorithm = "aet",
+                 subpixel_bits: int = 8, sample_offset: float = 0.5, rounding: Rounding = "exact",
+                 boundary: Boundary = "exact") -> npt.NDArray[np.bool_]:
     """Rasterise a polygon into a boolean mask.
 
     Parameters
@@ -164,14 +171,25 @@ def polygon_mask(rings, shape, *, rule="evenodd", algorithm="aet", subpixel_bits
     return _core.mask_polygon(_core.shape2(shape), rings, opts, opts.subpixel_bits)
 
 
-_MASK_OPTS = {}
+_MASK_OPTS: Dict[Any, Any] = {}
 _AET, _EVENODD, _S8, _HALF, _EXACT = (polygon_mask.__kwdefaults__[k] for k in (
     "algorithm", "rule", "subpixel_bits", "sample_offset", "rounding"))
 assert polygon_mask.__kwdefaults__["boundary"] is _EXACT
 _DEFAULT_OPTS = _core.fill_opts(_AET, _EVENODD, _S8, _HALF, _EXACT, _EXACT)
 _ndarray, _empty = _core.np.ndarray, _core.np.empty
 _F64, _BOOL = _core.np.dtype(_core.np.float64), _core.np.dtype(bool)
-_MAX_DIM = lib.RAST_MAX_DIM
+_MAX_DIM = _lib.RAST_MAX_DIM
 _PACKED, _I32, _PACKED32 = (16, 8), _core.np.dtype(_core.np.int32), (8, 4)
 _DOUBLES = _core.ffi.typeof("double[]")
-_mask_call, _from_buffer = lib.rastpy_mask_ring, _core.ffi.from_buffer
+_mask_call, _from_buffer = _lib.rastpy_mask_ring, _core.ffi.from_buffer
+
+
+def __getattr__(name: str) -> Any:
+    # rastrum.lib was the raw cffi library, never meant to be public: every
+    # drawing call has a checked Python entry point above.
+    if name == "lib":
+        import warnings
+        warnings.warn("rastrum.lib (the raw cffi library) is not public (deprecated: it will be removed in the "
+                      "next release); use the functions of the rastrum namespace", DeprecationWarning, stacklevel=2)
+        return _lib
+    raise AttributeError("module 'rastrum' has no attribute %r" % (name,))

@@ -8,9 +8,12 @@ polygon once, in order, writing its value into the array's own dtype.
 Nothing is written unless every polygon is good.
 """
 
-import numpy as np
+from typing import Any, Iterator, List, Tuple, Union, overload
 
-from ._core import InputError, _check, bad_point_message, use_wide
+import numpy as np
+import numpy.typing as npt
+
+from ._core import InputError, _check, bad_point_message, plural, use_wide
 from ._native import ffi, lib
 
 #: numpy dtype -> the glue's element type code.
@@ -58,7 +61,7 @@ class Polygons:
 
     __slots__ = ("points", "ring_sizes", "rings_per_polygon", "_ends", "_first")
 
-    def __init__(self, points, ring_sizes, rings_per_polygon):
+    def __init__(self, points: npt.ArrayLike, ring_sizes: npt.ArrayLike, rings_per_polygon: npt.ArrayLike) -> None:
         # views: read-only below without touching the caller's arrays
         points = np.ascontiguousarray(points, np.float64).view()
         sizes = np.ascontiguousarray(ring_sizes, np.uint32).view()
@@ -68,19 +71,26 @@ class Polygons:
                              "shapes %s, %s, %s" % (points.shape, sizes.shape, counts.shape))
         if not sizes.all() or sizes.sum(dtype=np.int64) != len(points) or \
                 counts.sum(dtype=np.int64) != len(sizes):
-            raise InputError("Polygons: the tables disagree: %d points, ring sizes summing to %d (each >= 1), "
-                             "%d rings, rings per polygon summing to %d"
-                             % (len(points), sizes.sum(dtype=np.int64), len(sizes), counts.sum(dtype=np.int64)))
+            raise InputError("Polygons: the tables disagree: %s, ring sizes summing to %d (each >= 1), "
+                             "%s, rings per polygon summing to %d"
+                             % (plural(len(points), "point"), sizes.sum(dtype=np.int64), plural(len(sizes), "ring"),
+                                counts.sum(dtype=np.int64)))
         for a in (points, sizes, counts):
             a.flags.writeable = False
         self.points, self.ring_sizes, self.rings_per_polygon = points, sizes, counts
         self._ends = np.cumsum(sizes, dtype=np.int64)
         self._first = np.concatenate(([0], np.cumsum(counts, dtype=np.int64)))
 
-    def __len__(self):
+    def __len__(self) -> int:
         return len(self.rings_per_polygon)
 
-    def __getitem__(self, k):
+    @overload
+    def __getitem__(self, k: int) -> List[npt.NDArray[np.float64]]: ...
+
+    @overload
+    def __getitem__(self, k: slice) -> List[List[npt.NDArray[np.float64]]]: ...
+
+    def __getitem__(self, k: Union[int, slice]) -> Any:
         k = range(len(self))[k]  # IndexError, negative indices, slices
         if isinstance(k, range):
             return [self[i] for i in k]
@@ -89,14 +99,14 @@ class Polygons:
         starts = [int(self._ends[r0 - 1]) if r0 else 0] + ends[:-1]
         return [self.points[a:b] for a, b in zip(starts, ends)]
 
-    def __iter__(self):
+    def __iter__(self) -> Iterator[List[npt.NDArray[np.float64]]]:
         return (self[k] for k in range(len(self)))
 
-    def __repr__(self):
-        return "<rastrum polygons: %d polygons, %d rings, %d points>" % (
-            len(self), len(self.ring_sizes), len(self.points))
+    def __repr__(self) -> str:
+        return "<rastrum polygons: %s, %s, %s>" % (
+            plural(len(self), "polygon"), plural(len(self.ring_sizes), "ring"), plural(len(self.points), "point"))
 
-    def packed(self):
+    def packed(self) -> Tuple[Any, ...]:
         """(points, ring sizes, rings per polygon, orientation +1 per ring)."""
         return self.points, self.ring_sizes, self.rings_per_polygon, np.ones(len(self.ring_sizes), np.int8)
 
@@ -132,14 +142,14 @@ def burn_packed(out, pts, sizes, poly_rings, opts, values=None, merge="replace",
         raise InputError("the output array must be %s, not shape %s"
                          % ("(N, H, W)" if planes else "(H, W)", out.shape))
     if planes and out.shape[0] != npolys:
-        raise InputError("%d %ss for %d planes" % (npolys, what, out.shape[0]))
+        raise InputError("%s for %s" % (plural(npolys, what), plural(out.shape[0], "plane")))
     h, w = out.shape[-2:]
     if w > 1 and out.strides[-1] != out.itemsize:
         raise InputError("the output array's rows must be contiguous (strides %s)" % (out.strides,))
     if values is not None:
         values = np.ascontiguousarray(values, dtype=out.dtype)
         if values.shape != (npolys,):
-            raise InputError("%d values for %d %ss" % (values.size, npolys, what))
+            raise InputError("%s for %s" % (plural(values.size, "value"), plural(npolys, what)))
     if not npolys or not h or not w:
         return out
     failed = ffi.new("uint32_t *", 0xFFFFFFFF)

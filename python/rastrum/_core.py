@@ -25,6 +25,11 @@ class InputError(RastrumError, ValueError):
     """Bad input: the message says which argument and why."""
 
 
+def plural(n, word, words=None):
+    """A count and its noun for a message: "1 int", "3 ints"."""
+    return "%d %s" % (n, word if n == 1 else words or word + "s")
+
+
 # Status codes that mean the caller's input is wrong (InputError); any other
 # failure is an internal error of this layer (RastrumError).
 _INPUT_ERRORS = frozenset(
@@ -404,6 +409,18 @@ def _geo_mapping(obj):
     return gi
 
 
+#: The error's words for a GeoJSON FeatureCollection given where a list of
+#: features (or geometries) is expected.
+FEATURE_COLLECTION = 'a GeoJSON FeatureCollection; pass the list of its features, fc["features"]'
+
+
+def is_feature_collection(obj):
+    """Is `obj` a GeoJSON FeatureCollection (a mapping, or an object whose
+    ``__geo_interface__`` is one, as a GeoDataFrame's)?"""
+    gi = obj if isinstance(obj, dict) else getattr(obj, "__geo_interface__", None)
+    return isinstance(gi, dict) and gi.get("type") == "FeatureCollection"
+
+
 def _geo_rings(gi, rings, holes):
     """Append the rings of a Polygon / MultiPolygon / GeometryCollection
     mapping to `rings`, and whether each is a hole to `holes`."""
@@ -418,6 +435,8 @@ def _geo_rings(gi, rings, holes):
     elif kind == "GeometryCollection":
         for g in gi["geometries"]:
             _geo_rings(g, rings, holes)
+    elif kind == "FeatureCollection":
+        raise InputError("rings: got %s" % FEATURE_COLLECTION)
     else:
         raise InputError("rings: a %s geometry has no area to fill; Polygon, MultiPolygon or "
                          "GeometryCollection of them are needed" % (kind,))
@@ -453,9 +472,9 @@ def _ring_list(rings, holes=None):
             raise InputError("rings must be an (N, 2) array-like or a list of them, not %s"
                              % type(rings).__name__) from None
         if out and np.ndim(out[0]) == 0 and not isinstance(out[0], (str, bytes)) and out[0] is not None:
-            raise InputError("rings: got a flat list of %d numbers (shape (%d,)); a ring needs shape "
+            raise InputError("rings: got a flat list of %s (shape (%d,)); a ring needs shape "
                              "(N, 2); for a COCO polygon [x0, y0, x1, y1, ...] use "
-                             "rastrum.coco.rings(segmentation)" % (len(out), len(out)))
+                             "rastrum.coco.rings(segmentation)" % (plural(len(out), "number"), len(out)))
         if out and np.ndim(out[0]) == 1:
             out = [out]  # one ring given as a list of (x, y) pairs
         else:
@@ -690,7 +709,8 @@ def fill_polygon_gouraud(target, rings, colors, opts, shade, s):
         raise InputError("vertex_colors: subpixel_bits must be in 0..%d for a shaded fill, not %d"
                          % (lib.RAST_MAX_SUBPIXEL_BITS, s))
     if colors.shape != (len(pts), 4):
-        raise InputError("vertex_colors: %d colours for %d vertices" % (colors.shape[0], len(pts)))
+        raise InputError("vertex_colors: %s for %s" % (plural(colors.shape[0], "colour"),
+                                                        plural(len(pts), "vertex", "vertices")))
     xy = ffi.from_buffer("double[]", pts)
     _check_glue(lib.rastpy_fill_polygon_gouraud(target, xy, len(pts), sizes, nrings, opts,
                                                 ffi.from_buffer("uint8_t[]", colors), shade), pts, s,

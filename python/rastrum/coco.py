@@ -20,11 +20,17 @@ ValueError) naming the argument, where pycocotools raises assorted
 TypeErrors, IndexErrors or crashes.
 """
 
+from typing import Any, Dict, Iterable, List, Literal, Mapping, Optional, Sequence, Union, overload
+
 import numpy as np
+import numpy.typing as npt
 
 from . import _batch, _core, _seq
 from ._core import InputError
+from ._batch import Polygons
 from ._native import ffi, lib
+
+__all__ = ["encode", "decode", "area", "toBbox", "merge", "iou", "frPyObjects", "rings", "polygons"]
 
 _F64 = np.dtype(np.float64)
 
@@ -136,7 +142,7 @@ def _mask_array(bimask, what):
     return a
 
 
-def encode(bimask):
+def encode(bimask: npt.ArrayLike) -> Any:
     """Run-length encode binary masks, as ``pycocotools.mask.encode``.
 
     bimask: (H, W) -> one RLE dict; (H, W, N) -> a list of N.  uint8 or bool
@@ -163,7 +169,8 @@ def encode(bimask):
     return objs[0] if single else objs
 
 
-def decode(rleObjs, out=None):
+def decode(rleObjs: Union[Mapping[str, Any], Sequence[Mapping[str, Any]]],
+           out: Optional[npt.NDArray[np.uint8]] = None) -> npt.NDArray[np.uint8]:
     """Masks of RLEs, as ``pycocotools.mask.decode``.
 
     A list of N RLEs (all of one size) -> (H, W, N) uint8 in Fortran order;
@@ -206,7 +213,15 @@ def decode(rleObjs, out=None):
     return res
 
 
-def area(rleObjs):
+@overload
+def area(rleObjs: Mapping[str, Any]) -> np.uint32: ...
+
+
+@overload
+def area(rleObjs: Sequence[Mapping[str, Any]]) -> npt.NDArray[np.uint32]: ...
+
+
+def area(rleObjs: Union[Mapping[str, Any], Sequence[Mapping[str, Any]]]) -> Any:
     """Pixels inside each RLE (uint32), as ``pycocotools.mask.area``."""
     single = not isinstance(rleObjs, list)
     objs = [rleObjs] if single else rleObjs
@@ -218,7 +233,7 @@ def area(rleObjs):
     return a[0] if single else a
 
 
-def toBbox(rleObjs):
+def toBbox(rleObjs: Union[Mapping[str, Any], Sequence[Mapping[str, Any]]]) -> npt.NDArray[np.float64]:
     """Boxes [x, y, w, h] (float64) of RLEs, as ``pycocotools.mask.toBbox``."""
     single = not isinstance(rleObjs, list)
     objs = [rleObjs] if single else rleObjs
@@ -230,7 +245,7 @@ def toBbox(rleObjs):
     return bb[0] if single else bb
 
 
-def merge(rleObjs, intersect=0):
+def merge(rleObjs: Sequence[Mapping[str, Any]], intersect: Union[bool, int] = 0) -> Dict[str, Any]:
     """Union (or with `intersect`, intersection) of RLEs of one size, as
     ``pycocotools.mask.merge``: one RLE dict.  RLEs of different sizes give
     pycocotools' empty {'size': [0, 0], 'counts': b''}."""
@@ -256,7 +271,8 @@ def _boxes(objs, what):
     return np.ascontiguousarray(a)
 
 
-def iou(dt, gt, pyiscrowd):
+def iou(dt: Union[Sequence[Mapping[str, Any]], npt.ArrayLike], gt: Union[Sequence[Mapping[str, Any]], npt.ArrayLike],
+        pyiscrowd: Sequence[Union[bool, int]]) -> Any:
     """IoU of each detection with each ground truth, as
     ``pycocotools.mask.iou``: (m, n) float64 (Fortran order), or [] when
     either is empty.  dt and gt: both lists of RLE dicts, or both boxes
@@ -279,7 +295,8 @@ def iou(dt, gt, pyiscrowd):
     crowd = np.array(pyiscrowd, dtype=np.uint8).reshape(-1)
     m, n = len(d), len(g)
     if len(crowd) != n:
-        raise InputError("iou: iscrowd has %d entries for %d gt objects" % (len(crowd), n))
+        raise InputError("iou: iscrowd has %s for %s" % (_core.plural(len(crowd), "entry", "entries"),
+                                                         _core.plural(n, "gt object")))
     if m == 0 or n == 0:
         return []
     if kd != kg:
@@ -394,7 +411,17 @@ def _is_rle(o):
     return isinstance(o, dict) and "counts" in o and "size" in o
 
 
-def frPyObjects(pyobj, h, w, *, rule="coco"):
+@overload
+def frPyObjects(pyobj: Union[Mapping[str, Any], Sequence[float]], h: int, w: int, *,
+                rule: Literal["coco", "exact"] = "coco") -> Dict[str, Any]: ...
+
+
+@overload
+def frPyObjects(pyobj: Union[Sequence[Sequence[float]], Sequence[Mapping[str, Any]], npt.NDArray[Any]], h: int,
+                w: int, *, rule: Literal["coco", "exact"] = "coco") -> List[Dict[str, Any]]: ...
+
+
+def frPyObjects(pyobj: Any, h: int, w: int, *, rule: Literal["coco", "exact"] = "coco") -> Any:
     """RLEs of polygons, boxes or uncompressed RLEs, as
     ``pycocotools.mask.frPyObjects``.
 
@@ -439,7 +466,7 @@ def frPyObjects(pyobj, h, w, *, rule="coco"):
     return _fr_polys([_flat(p, k) for k, p in enumerate(pyobj)], h, w, rule)
 
 
-def rings(segmentation):
+def rings(segmentation: Any) -> List[npt.NDArray[np.float64]]:
     """A COCO polygon segmentation ([[x0, y0, x1, y1, ...], ...], one flat
     list per part) as a list of float64 (N, 2) rings, for
     ``rastrum.masks`` and ``rastrum.labels``.  A single flat list is one
@@ -465,7 +492,7 @@ def rings(segmentation):
     return out
 
 
-def polygons(segmentations):
+def polygons(segmentations: Iterable[Any]) -> Polygons:
     """COCO polygon segmentations, one per object, as one batch for
     ``rastrum.masks`` and ``rastrum.labels``: the same polygons as
     ``[rings(s) for s in segmentations]``, read in one C pass when they are

@@ -42,6 +42,9 @@ from . import _burn, _core, gis
 from ._core import InputError
 from .gis import IDENTITY
 
+# The message when an optional library of rastrum.dask is missing.
+_NEEDS_DASK = '%s needs dask: pip install "rastrum[dask]"'
+
 __all__ = ["rasterize", "to_xarray"]
 
 
@@ -294,8 +297,11 @@ def rasterize(
            [0, 7, 7, 7, 0],
            [0, 0, 0, 0, 0]], dtype=uint8)
     """
-    import dask
-    import dask.array as da
+    try:
+        import dask
+        import dask.array as da
+    except ImportError:
+        raise ImportError(_NEEDS_DASK % "rastrum.dask.rasterize") from None
 
     merge = gis._merge_name(merge_alg)
     _core._name(rule, "fill rule", _core.RULES)
@@ -368,7 +374,7 @@ def to_xarray(array: Any, transform: Any = IDENTITY, *, crs: Any = None, name: A
     try:
         import xarray as xr
     except ImportError:
-        raise InputError("to_xarray needs xarray (pip install 'rastrum[dask]')") from None
+        raise InputError('to_xarray needs xarray: pip install "rastrum[dask]"') from None
     a, b, c, d, e, f = gis._transform6(transform)
     if b != 0.0 or d != 0.0:
         raise InputError("to_xarray: transform %r is rotated or sheared; x and y coordinates need "

@@ -230,6 +230,8 @@ def _add_geometry(flat, geom, index, depth=0):
         for g in members:
             _add_geometry(flat, g, index, depth + 1)
         return
+    if gtype == "FeatureCollection":
+        raise InputError("%s is %s" % (what, _core.FEATURE_COLLECTION))
     if gtype not in ("Polygon", "MultiPolygon", "LineString", "MultiLineString", "LinearRing",
                      "Point", "MultiPoint"):
         raise InputError("%s: unknown geometry type %s; rasterize burns Polygon, MultiPolygon, "
@@ -376,6 +378,8 @@ def _split_shapes(shapes, default_value, fill, values):
     elif type(shapes).__name__ == "GeoSeries":
         geoms = list(np.asarray(shapes.values, dtype=object))
     else:
+        if _core.is_feature_collection(shapes):
+            raise InputError("shapes is %s" % _core.FEATURE_COLLECTION)
         if isinstance(shapes, (str, bytes)) or hasattr(shapes, "__geo_interface__") or isinstance(shapes, dict):
             raise InputError("shapes must be an iterable of geometries or (geometry, value) pairs, "
                              "not one geometry; wrap it in a list")
@@ -393,8 +397,8 @@ def _split_shapes(shapes, default_value, fill, values):
             for item in items:
                 if isinstance(item, (tuple, list)):
                     if len(item) != 2:
-                        raise InputError("shapes: feature %d is a sequence of %d items, not a (geometry, value) pair"
-                                         % (len(geoms), len(item)))
+                        raise InputError("shapes: feature %d is a sequence of %s, not a (geometry, value) pair"
+                                         % (len(geoms), _core.plural(len(item), "item")))
                     g, v = item
                     geoms.append(g)
                     vals.append(fill if v is None else v)
@@ -409,7 +413,7 @@ def _split_shapes(shapes, default_value, fill, values):
         raise InputError("values=%r: a column name needs a GeoDataFrame" % (values,))
     values = list(values)
     if len(values) != len(geoms):
-        raise InputError("values: %d values for %d shapes" % (len(values), len(geoms)))
+        raise InputError("values: %s for %s" % (_core.plural(len(values), "value"), _core.plural(len(geoms), "shape")))
     return geoms, [fill if v is None else v for v in values]
 
 

@@ -56,9 +56,16 @@ import io
 import math
 import os
 
+from typing import IO, TYPE_CHECKING, Any, Literal, Optional, Sequence, Tuple, Union
+
 import numpy as np
+import numpy.typing as npt
 
 from ._core import InputError
+from ._typing import Color, Format, Precision, Shading
+
+if TYPE_CHECKING:
+    from ._canvas import Canvas
 
 __all__ = ["render_mesh", "sphere", "torus", "read_obj", "write_obj", "rotation", "project",
            "lambert", "vertex_normals"]
@@ -68,7 +75,8 @@ DEPTH_MAX = (1 << 24) - 1
 
 # ---- meshes -----------------------------------------------------------------------
 
-def sphere(n_lat=16, n_lon=32):
+def sphere(n_lat: int = 16, n_lon: int = 32
+           ) -> Tuple[npt.NDArray[np.float64], npt.NDArray[np.int64], npt.NDArray[np.float64]]:
     """The unit sphere as a UV mesh: (vertices (V, 3), faces (F, 3), normals (V, 3)).
 
     `n_lat` bands from pole to pole (>= 2), `n_lon` segments around
@@ -103,7 +111,8 @@ def sphere(n_lat=16, n_lon=32):
     return v, np.array(faces, np.int64), v.copy()
 
 
-def torus(R=1.0, r=0.4, n=32, m=16):
+def torus(R: float = 1.0, r: float = 0.4, n: int = 32, m: int = 16
+          ) -> Tuple[npt.NDArray[np.float64], npt.NDArray[np.int64], npt.NDArray[np.float64]]:
     """A torus around the y axis: (vertices, faces, normals).
 
     Ring radius `R`, tube radius `r` (0 < r < R), `n` segments around the
@@ -143,7 +152,8 @@ def _count(v, name, least):
 MAX_FACE_CORNERS = 1 << 16
 
 
-def read_obj(source, *, max_face_corners=MAX_FACE_CORNERS):
+def read_obj(source: Union[str, os.PathLike[str], IO[str]], *, max_face_corners: int = MAX_FACE_CORNERS
+             ) -> Tuple[npt.NDArray[np.float64], npt.NDArray[np.int64], Optional[npt.NDArray[np.float64]]]:
     """Read a Wavefront OBJ mesh: (vertices (V, 3), faces (F, 3), normals (V, 3) or None).
 
     `source` is a path or a text file object.  Understood: ``v x y z [w]``,
@@ -262,7 +272,8 @@ def _obj_index(text, count, where, what):
     raise InputError("%s: %s index %d out of range (%d read so far)" % (where, what, k, count))
 
 
-def write_obj(target, vertices, faces, normals=None):
+def write_obj(target: Union[str, os.PathLike[str], IO[str]], vertices: npt.ArrayLike, faces: npt.ArrayLike,
+              normals: Optional[npt.ArrayLike] = None) -> None:
     """Write a triangle mesh as OBJ text to a path or a text file object
     (``v`` lines with 17 significant digits, so floats read back equal;
     ``f i//i`` when there are normals)."""
@@ -287,7 +298,7 @@ def write_obj(target, vertices, faces, normals=None):
 
 # ---- camera, viewport, shading ------------------------------------------------
 
-def rotation(yaw=0.0, pitch=0.0, roll=0.0):
+def rotation(yaw: float = 0.0, pitch: float = 0.0, roll: float = 0.0) -> npt.NDArray[np.float64]:
     """A 3x3 rotation: `roll` about z, then `pitch` about x, then `yaw`
     about y, in degrees (a positive yaw turns the mesh's front to the
     right, a positive pitch tilts its top towards the viewer)."""
@@ -341,8 +352,9 @@ def _mesh(vertices, faces, normals=None):
     return v, f.astype(np.int64), n
 
 
-def project(vertices, size, *, rotation=None, projection="orthographic", scale=1.0, fov=40.0,
-            distance=4.0):
+def project(vertices: npt.ArrayLike, size: Tuple[int, int], *, rotation: Optional[npt.ArrayLike] = None,
+            projection: Literal["orthographic", "perspective"] = "orthographic", scale: float = 1.0,
+            fov: float = 40.0, distance: float = 4.0) -> Tuple[npt.NDArray[np.float64], npt.NDArray[np.float64], npt.NDArray[np.float64]]:
     """Camera and viewport: (pixel xy (V, 2), depth key (V,), camera-space
     vertices (V, 3)).  See the module's conventions; a smaller key is
     nearer."""
@@ -368,14 +380,14 @@ def project(vertices, size, *, rotation=None, projection="orthographic", scale=1
     return viewport(xy, size), key, cam
 
 
-def viewport(ndc, size):
+def viewport(ndc: npt.ArrayLike, size: Tuple[int, int]) -> npt.NDArray[np.float64]:
     """NDC (N, 2), y up, to pixel coordinates: ((x + 1) W/2, (1 - y) H/2)."""
     w, h = size
     ndc = np.asarray(ndc, dtype=np.float64)
     return np.stack([(ndc[:, 0] + 1) * (w / 2), (1 - ndc[:, 1]) * (h / 2)], -1)
 
 
-def face_normals(v, faces):
+def face_normals(v: npt.NDArray[np.float64], faces: npt.NDArray[np.integer[Any]]) -> npt.NDArray[np.float64]:
     """Unit normals of the faces' planes, (v1 - v0) x (v2 - v0) normalised
     (zero for a degenerate face)."""
     t = v[faces]
@@ -384,7 +396,7 @@ def face_normals(v, faces):
     return np.divide(n, length, out=np.zeros_like(n), where=length > 0)
 
 
-def vertex_normals(vertices, faces):
+def vertex_normals(vertices: npt.ArrayLike, faces: npt.ArrayLike) -> npt.NDArray[np.float64]:
     """Per-vertex normals: the area-weighted sum of the adjacent faces'
     normals, normalised (what a mesh without ``vn`` gets for Gouraud)."""
     v, f, _ = _mesh(vertices, faces)
@@ -397,7 +409,7 @@ def vertex_normals(vertices, faces):
     return np.divide(acc, length, out=np.zeros_like(acc), where=length > 0)
 
 
-def lambert(normals, light, ambient, color):
+def lambert(normals: npt.ArrayLike, light: npt.ArrayLike, ambient: float, color: npt.ArrayLike) -> npt.NDArray[np.int64]:
     """Colours (N, C) uint8 of Lambert shading for unit `normals` (N, 3):
     floor(color * (ambient + (1 - ambient) max(0, n . l)) + 1/2)."""
     l = np.asarray(light, dtype=np.float64)
@@ -407,11 +419,14 @@ def lambert(normals, light, ambient, color):
     return np.floor(k[:, None] * c[None, :] + 0.5).astype(np.int64)
 
 
-def render_mesh(vertices, faces, size=None, *, shape=None, normals=None, shading="flat",
-                light=(-0.4, 0.5, 0.75), ambient=0.15, color=None, rotation=None,
-                projection="orthographic", scale=1.0, fov=40.0, distance=4.0, cull=True,
-                depth=True, background=0, format="rgb888", canvas=None, precision="exact",
-                subpixel_bits=8):
+def render_mesh(vertices: npt.ArrayLike, faces: npt.ArrayLike, size: Optional[Tuple[int, int]] = None, *,
+                shape: Optional[Tuple[int, int]] = None, normals: Optional[npt.ArrayLike] = None,
+                shading: Shading = "flat", light: Sequence[float] = (-0.4, 0.5, 0.75), ambient: float = 0.15,
+                color: Optional[Color] = None, rotation: Optional[npt.ArrayLike] = None,
+                projection: Literal["orthographic", "perspective"] = "orthographic", scale: float = 1.0,
+                fov: float = 40.0, distance: float = 4.0, cull: bool = True, depth: bool = True,
+                background: Color = 0, format: Format = "rgb888", canvas: Optional[Canvas] = None,
+                precision: Precision = "exact", subpixel_bits: int = 8) -> Canvas:
     """Render a triangle mesh into a Canvas (a new one, or `canvas`).
 
     Parameters
@@ -462,7 +477,7 @@ def render_mesh(vertices, faces, size=None, *, shape=None, normals=None, shading
     >>> c.array.shape
     (32, 32, 3)
     """
-    from .canvas import Canvas
+    from ._canvas import Canvas
 
     v, f, n = _mesh(vertices, faces, normals)
     if not isinstance(shading, str) or shading not in ("flat", "gouraud"):
@@ -483,7 +498,7 @@ def render_mesh(vertices, faces, size=None, *, shape=None, normals=None, shading
     for name, flag in (("cull", cull), ("depth", depth)):
         if not isinstance(flag, (bool, np.bool_)):
             raise InputError("%s must be True or False, not %r" % (name, flag))
-    from ._core import deprecated, int_pair, shape2
+    from ._core import deprecated, int_pair, plural, shape2
     if size is not None:
         if shape is not None:
             raise InputError("render_mesh takes shape=(height, width), not also size")
@@ -504,10 +519,13 @@ def render_mesh(vertices, faces, size=None, *, shape=None, normals=None, shading
     channels = canvas.array.shape[2] if canvas.array.ndim == 3 else 1
     if color is None:
         color = (230,) * channels
-    col = np.asarray(color) if not isinstance(color, str) else np.asarray(None)
+    if isinstance(color, str):  # a colour name or "#rrggbb", as the Canvas takes it
+        from ._canvas import _color_name
+        color = _color_name(color, canvas.format)
+    col = np.asarray(color)
     if col.dtype.kind not in "iu" or col.ndim > 1 or (col.size != channels and col.size != 1):
-        raise InputError("color must be %d int(s) in 0..255 for format %s, not %r"
-                         % (channels, canvas.format, color))
+        raise InputError("color must be %s in 0..255 for format %s, not %r"
+                         % (" or ".join(sorted({"1 int", plural(channels, "int")})), canvas.format, color))
     if col.min() < 0 or col.max() > 255:
         raise InputError("color: every channel must be in 0..255, not %r" % (color,))
     w, h = canvas.width, canvas.height
@@ -545,7 +563,7 @@ def render_mesh(vertices, faces, size=None, *, shape=None, normals=None, shading
     return canvas
 
 
-def front_facing(tri_xy):
+def front_facing(tri_xy: npt.ArrayLike) -> npt.NDArray[np.bool_]:
     """Which triangles (pixel coordinates, y down) are front faces:
     counter-clockwise in NDC (y up), that is a negative signed area in
     pixels."""
@@ -555,7 +573,7 @@ def front_facing(tri_xy):
     return a < 0
 
 
-def quantise_depth(key):
+def quantise_depth(key: npt.ArrayLike) -> npt.NDArray[np.int32]:
     """Depth keys onto 0 .. DEPTH_MAX (int32), linearly over their range."""
     key = np.asarray(key, dtype=np.float64)
     if key.size == 0:

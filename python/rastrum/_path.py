@@ -71,6 +71,12 @@ class Path:
     12
     """
 
+    #: The default flattening tolerance, pixels, and how far an arc's cubics
+    #: may be from the true arc (docs/paths.md).
+    DEFAULT_TOLERANCE = DEFAULT_TOLERANCE
+    ARC_ERROR = ARC_ERROR
+
+
     def __init__(self, *, tolerance: Optional[float] = None) -> None:
         self._verbs: List[int] = []
         self._pts: List[Tuple[float, float]] = []

@@ -9,13 +9,17 @@ exceptions.  Nothing is returned half-written.
 
 import threading
 
+from typing import Any
+
 import numpy as np
+import numpy.typing as npt
 
 from . import _core
 from ._core import InputError
 from ._native import ffi, lib
-from .triangles import tris_f64
-from .path import Path
+from ._typing import CoverageMethod, Rings, Rule, Shape
+from ._triangles import tris_f64
+from ._path import Path
 
 
 def _methods():
@@ -225,8 +229,9 @@ def _finish(raw, d):
     return out if d == _F64 else out.astype(d)
 
 
-def polygon_coverage(rings, shape, *, rule="evenodd", method="area", subpixel_bits=8,
-                     sample_offset=0.5, dtype=np.uint8):
+def polygon_coverage(rings: Rings, shape: Shape, *, rule: Rule = "evenodd", method: CoverageMethod = "area",
+                     subpixel_bits: int = 8, sample_offset: float = 0.5,
+                     dtype: npt.DTypeLike = np.uint8) -> npt.NDArray[Any]:
     """How much of each pixel a polygon covers.
 
     Parameters
@@ -301,8 +306,9 @@ def polygon_coverage(rings, shape, *, rule="evenodd", method="area", subpixel_bi
     return _finish(raw, d)
 
 
-def triangles_coverage(tris, shape, *, method="area", subpixel_bits=8, sample_offset=0.5,
-                       dtype=np.uint8):
+def triangles_coverage(tris: npt.ArrayLike, shape: Shape, *, method: CoverageMethod = "area",
+                       subpixel_bits: int = 8, sample_offset: float = 0.5,
+                       dtype: npt.DTypeLike = np.uint8) -> npt.NDArray[Any]:
     """How much of each pixel a batch of triangles covers, as ONE region.
 
     The batch is the union of its triangles (whatever their orientation):

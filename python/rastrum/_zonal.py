@@ -20,7 +20,7 @@ import numpy as np
 from . import gis
 from ._core import InputError
 from ._native import lib
-from .coverage import polygon_coverage
+from ._coverage import polygon_coverage
 
 __all__ = ["zonal_stats", "STATS", "subpixel_bits_for"]
 

@@ -10,13 +10,18 @@ C call, exactly (DESIGN section 1).
 from array import array
 from itertools import chain
 
+from typing import Any, Callable, Iterable, Literal, Optional, Tuple, Union, overload
+
 import numpy as np
+import numpy.typing as npt
 
 from . import _batch, _core
+from ._native import ffi, lib
 from ._core import InputError
+from ._typing import BatchRule, PolygonAlgorithm, Shape
 
 _F64 = np.dtype(np.float64)
-_RULES = ("union", "evenodd", "nonzero")
+_RULES = ("union", "evenodd", "nonzero", "coco")
 
 
 def _lengths(items):
@@ -71,6 +76,8 @@ def _polygons(polygons, what):
             raise InputError("%s: an array of polygons must be (N, K, 2) (N rings of K points), "
                              "not shape %s" % (what, polygons.shape))
         polygons = list(polygons)
+    elif _core.is_feature_collection(polygons):
+        raise InputError("%s: got %s" % (what, _core.FEATURE_COLLECTION))
     elif _core._geo_mapping(polygons) is not None:
         raise InputError("%s: got one geometry; a list of polygons is needed ([geometry] for one)" % what)
     try:
@@ -126,7 +133,42 @@ def _chunks(n, report):
 def _opts(rule, algorithm, subpixel_bits, sample_offset, what):
     if not isinstance(rule, str) or rule not in _RULES:
         raise InputError("%s: unknown rule %r; choose one of: %s" % (what, rule, ", ".join(_RULES)))
+    if rule == "coco":
+        if (algorithm, subpixel_bits, sample_offset) != ("aet", 8, 0.5):
+            raise InputError("%s: rule=\"coco\" is pycocotools' own rasterisation, which has no algorithm, "
+                             "subpixel_bits or sample_offset to choose" % what)
+        return None
     return _core.fill_opts(algorithm, "nonzero" if rule == "union" else rule, subpixel_bits, sample_offset)
+
+
+def _coco_planes(packed, h, w, what):
+    """rule="coco": (N', H, W) bool, the union of each polygon's rings as
+    pycocotools draws them (frPyObjects on every ring, then merge: what
+    rastrum.coco.frPyObjects reproduces bit for bit), for the N' polygons
+    that have rings; and their indices."""
+    from . import coco
+
+    pts, sizes, poly_rings, _ = packed
+    nrings = len(sizes)
+    if not nrings or not h or not w:
+        return np.zeros((0, h, w), bool), np.zeros(0, np.int64)
+    xy = np.ascontiguousarray(pts, np.float64)
+    sizes = np.ascontiguousarray(sizes, np.uint32)
+    r, data, offsets = coco._fr_call(ffi.from_buffer("double[]", xy), ffi.from_buffer("uint32_t[]", sizes),
+                                     nrings, h, w, "coco")
+    if r > 0:
+        lib.rastpy_free(data[0])
+        ring = int(np.searchsorted(np.cumsum(sizes, dtype=np.int64), r - 1, side="right"))
+        poly = int(np.searchsorted(np.cumsum(poly_rings, dtype=np.int64), ring, side="right"))
+        x, y = xy[r - 1].tolist()
+        raise InputError("%s: polygon %d: point (%r, %r) is NaN, infinite or outside +-%d pixels (rule=\"coco\": "
+                         "pycocotools' rule works on 5x upsampled int coordinates)"
+                         % (what, poly, x, y, lib.RAST_COCO_COORD_MAX // 5))
+    coco._glue(r, what)
+    rings = coco.decode(coco._objs(coco._unpack(data, offsets, nrings), [(h, w)] * nrings))
+    has = np.flatnonzero(poly_rings)
+    starts = np.concatenate([[0], np.cumsum(poly_rings, dtype=np.int64)[:-1]])[has]
+    return np.logical_or.reduceat(np.moveaxis(rings, 2, 0), starts, axis=0), has
 
 
 def _burn(out, packed, opts, rule, values, merge, planes, what, report):
@@ -155,8 +197,9 @@ def _burn(out, packed, opts, rule, values, merge, planes, what, report):
         report(i1)
 
 
-def masks(polygons, shape, *, rule="union", algorithm="aet", subpixel_bits=8, sample_offset=0.5,
-          progress=False):
+def masks(polygons: Iterable[Any], shape: Shape, *, rule: BatchRule = "union",
+          algorithm: PolygonAlgorithm = "aet", subpixel_bits: int = 8, sample_offset: float = 0.5,
+          progress: Union[bool, Callable[[int, int], Any]] = False) -> npt.NDArray[np.bool_]:
     """One mask per polygon, in one C call.
 
     Parameters
@@ -171,14 +214,20 @@ def masks(polygons, shape, *, rule="union", algorithm="aet", subpixel_bits=8, sa
         nothing.
     shape : (int, int)
         (height, width) of each mask.
-    rule : {"union", "evenodd", "nonzero"}
+    rule : {"union", "evenodd", "nonzero", "coco"}
         "union" (the default): a polygon is the union of its parts, less
         its geometry's holes: each ring is turned to positive area (holes
         to negative), then filled under the non-zero rule.  For parts that
         do not cross themselves (COCO parts, contours, valid geometries)
         that is exactly the union; where a part crosses itself, its lobes
         wound the other way subtract.  "evenodd" and "nonzero" take the
-        rings as given.
+        rings as given.  These three are the library's exact rule
+        (docs/semantics.md).  "coco" is pycocotools' own rasterisation,
+        bit for bit: each ring drawn as ``pycocotools.mask.frPyObjects``
+        draws a polygon (its points scaled 5x and rounded, not the exact
+        rule), the rings of a polygon united as ``mask.merge`` unites the
+        parts of a segmentation (no holes); algorithm, subpixel_bits and
+        sample_offset do not apply.
     algorithm, subpixel_bits, sample_offset
         As for ``polygon_mask``; every algorithm gives the same pixels.
     progress : bool or callable
@@ -204,12 +253,37 @@ def masks(polygons, shape, *, rule="union", algorithm="aet", subpixel_bits=8, sa
     # Uninitialised: the C call writes every byte once ("fresh"), instead
     # of a 30 MB clearing pass and then the spans into memory it evicted.
     out = np.empty((n, h, w), bool)
+    if rule == "coco":
+        report = _progress(progress, n)
+        out[...] = False
+        planes, has = _coco_planes(packed, h, w, "masks")
+        out[has] = planes
+        if report is not None and n:
+            report(n)
+        return out
     _burn(out, packed, opts, rule, None, "fresh", True, "polygon", _progress(progress, n))
     return out
 
 
-def labels(polygons, shape, values=None, dtype=np.int32, *, overlap=False, rule="union", algorithm="aet",
-           subpixel_bits=8, sample_offset=0.5, progress=False):
+@overload
+def labels(polygons: Iterable[Any], shape: Shape, values: Optional[npt.ArrayLike] = None,
+           dtype: npt.DTypeLike = np.int32, *, overlap: Literal[False] = False, rule: BatchRule = "union",
+           algorithm: PolygonAlgorithm = "aet", subpixel_bits: int = 8, sample_offset: float = 0.5,
+           progress: Union[bool, Callable[[int, int], Any]] = False) -> npt.NDArray[Any]: ...
+
+
+@overload
+def labels(polygons: Iterable[Any], shape: Shape, values: Optional[npt.ArrayLike] = None,
+           dtype: npt.DTypeLike = np.int32, *, overlap: Literal[True], rule: BatchRule = "union",
+           algorithm: PolygonAlgorithm = "aet", subpixel_bits: int = 8, sample_offset: float = 0.5,
+           progress: Union[bool, Callable[[int, int], Any]] = False
+           ) -> Tuple[npt.NDArray[Any], npt.NDArray[np.uint16]]: ...
+
+
+def labels(polygons: Iterable[Any], shape: Shape, values: Optional[npt.ArrayLike] = None,
+           dtype: npt.DTypeLike = np.int32, *, overlap: bool = False, rule: BatchRule = "union",
+           algorithm: PolygonAlgorithm = "aet", subpixel_bits: int = 8, sample_offset: float = 0.5,
+           progress: Union[bool, Callable[[int, int], Any]] = False) -> Any:
     """Burn instances into one label image, in one C call.
 
     Polygon k (as in ``masks``) writes values[k] (default k + 1) over its
@@ -252,12 +326,22 @@ def labels(polygons, shape, values=None, dtype=np.int32, *, overlap=False, rule=
     else:
         v = np.asarray(values)
         if v.shape != (n,):
-            raise InputError("labels: values has shape %s; %d polygons need shape (%d,)" % (v.shape, n, n))
+            raise InputError("labels: values has shape %s; %s need%s shape (%d,)"
+                             % (v.shape, _core.plural(n, "polygon"), "s" if n == 1 else "", n))
         if v.dtype.kind not in "biuf":
             raise InputError("labels: values must be numbers, not dtype %s" % v.dtype)
         vals = v.astype(dtype)
     out = np.zeros((h, w), dtype)
     report = _progress(progress, n * (2 if overlap else 1))
+    if rule == "coco":
+        planes, has = _coco_planes(packed, h, w, "labels")
+        for k, i in enumerate(has):
+            out[planes[k]] = vals[i]
+        if report is not None and n:
+            report(n * (2 if overlap else 1))
+        if not overlap:
+            return out
+        return out, planes.sum(axis=0, dtype=np.uint16)
     _burn(out, packed, opts, rule, vals, "replace", False, "polygon", report)
     if not overlap:
         return out

@@ -5,11 +5,15 @@ use the helpers here)."""
 
 import numbers
 
+from typing import Literal, Optional, Sequence
+
 import numpy as np
+import numpy.typing as npt
 
 from . import _core
 from ._core import InputError
 from ._native import ffi, lib
+from ._typing import LineAlgorithm, Point
 
 #: Line algorithm names and their C codes.
 LINE_ALGORITHMS = {"bresenham": lib.RAST_LINE_BRESENHAM, "dda": lib.RAST_LINE_DDA}
@@ -57,7 +61,7 @@ def snap_polyline(points, s, minimum):
         return np.zeros((0, 2), np.int32)
     pts = _core.snap_points(points, s)
     if len(pts) < minimum:
-        raise InputError("points: %d point(s) given; at least %d needed" % (len(pts), minimum))
+        raise InputError("points: %s given; at least %d needed" % (_core.plural(len(pts), "point"), minimum))
     if len(pts) > lib.RAST_MAX_POINTS:
         raise InputError("%d points; at most %d per call" % (len(pts), lib.RAST_MAX_POINTS))
     return pts
@@ -89,8 +93,9 @@ def _clip_rect(clip):
 MAX_LINE_PIXELS = 1 << 24
 
 
-def line_pixels(p0, p1, *, algorithm="bresenham", subpixel_bits=8, sample_offset=0.5, clip=None,
-                max_pixels=MAX_LINE_PIXELS):
+def line_pixels(p0: Point, p1: Point, *, algorithm: LineAlgorithm = "bresenham", subpixel_bits: int = 8,
+                sample_offset: float = 0.5, clip: Optional[Sequence[int]] = None,
+                max_pixels: int = MAX_LINE_PIXELS) -> npt.NDArray[np.int32]:
     """The pixels of the segment p0 -> p1, in order from p0.
 
     Under "bresenham" these are exactly the library's line (the one
@@ -162,7 +167,9 @@ def line_pixels(p0, p1, *, algorithm="bresenham", subpixel_bits=8, sample_offset
     return out
 
 
-def point_in_triangle(p, tri, *, method="owner", subpixel_bits=8):
+def point_in_triangle(p: Point, tri: npt.ArrayLike, *,
+                      method: Literal["owner", "sameside", "cross", "area", "barycentric"] = "owner",
+                      subpixel_bits: int = 8) -> bool:
     """Is point p inside triangle tri?  Exact, after snapping.
 
     The four textbook tests ("sameside", "cross", "area", "barycentric")

@@ -1,30 +1,40 @@
 """Canvas: a target over a numpy array, with drawing methods."""
 
 import functools
+from typing import IO, TYPE_CHECKING, Any, Callable, Literal, Optional, Tuple, TypeVar, Union, cast, overload
 
 import numpy as np
+import numpy.typing as npt
 
 from . import _core
-from . import coverage as _coverage
-from . import lines as _lines
-from . import shade as _shade
-from . import triangles as _triangles
+from . import _coverage
+from . import _lines
+from . import _shading
+from . import _triangles
 from ._core import InputError
 from ._native import ffi, lib
+from ._typing import (Boundary, Color, CoverageMethod, Format, LineAlgorithm, Point, PolygonAlgorithm, Precision,
+                      Rings, Rounding, Rule, Shading, Shape, TriangleAlgorithm)
 
+if TYPE_CHECKING:
+    import os
+
+    import PIL.Image
+
+_F = TypeVar("_F", bound=Callable[..., Any])
 _NO_COLOR = object()  # equal to no colour: "nothing remembered yet"
 _CHANNELS_TO_FORMAT = {1: "gray8", 3: "rgb888", 4: "rgba8888"}
 _PIL_MODES = {"gray8": "L", "rgb888": "RGB", "rgba8888": "RGBA", "rgb565": "RGB", "mono1": "1"}
 _FORMAT_NAMES = tuple(_core.FORMATS) + ("label",)
-_CHANNELS = {"gray8": 1, "rgb888": 3, "rgba8888": 4, "rgb565": 3, "mono1": 1}
+_CHANNELS = _shading._CHANNELS
 
 
-def _label_spill(method):
+def _label_spill(method: _F) -> _F:
     """Drawing on a label canvas whose items have 8 bytes (no C format has
     8-byte pixels): draw the same call with value 1 into a uint8 mask, then
     write the value where it is set.  Other canvases: the method itself."""
     @functools.wraps(method)
-    def draw(self, *args, **kwargs):
+    def draw(self: "Canvas", *args: Any, **kwargs: Any) -> Any:
         if self._format != "label" or self._code is not None:
             return method(self, *args, **kwargs)
         names = method.__code__.co_varnames[1:method.__code__.co_argcount]
@@ -41,7 +51,7 @@ def _label_spill(method):
         kwargs["color"] = 1
         method(scratch, **kwargs)
         self._array[scratch._array != 0] = value
-    return draw
+    return cast(_F, draw)
 
 
 class Canvas:
@@ -80,8 +90,17 @@ class Canvas:
     12
     """
 
-    def __init__(self, shape=None, _legacy_height=None, format="rgb888", background=0, *, width=None,
-                 height=None):
+    @overload
+    def __init__(self, shape: Shape, format: Format = "rgb888", background: Color = 0) -> None: ...
+
+    @overload
+    def __init__(self, shape: Shape, *, format: Format = "rgb888", background: Color = 0) -> None: ...
+
+    def __init__(self, shape: Optional[Shape] = None, *args: Any, format: Format = "rgb888",  # type: ignore[misc]
+                 background: Color = 0, width: Optional[int] = None, height: Optional[int] = None) -> None:
+        # format and background may come by position; so may the height of
+        # the deprecated Canvas(width, height, format, background).
+        _legacy_height, format, background = _positional(shape, args, format, background)
         h, w = _canvas_shape(shape, _legacy_height, width, height)
         fmt = _core._name(format, "format", _FORMAT_NAMES)
         if fmt == "label":
@@ -100,7 +119,7 @@ class Canvas:
         self._set(array, fmt, w)
 
     @classmethod
-    def wrap(cls, array, format=None):
+    def wrap(cls, array: npt.NDArray[Any], format: Union[Format, Literal["label"], None] = None) -> "Canvas":
         """Draw into an existing array (no copy).
 
         For uint8 arrays the format follows from the shape when not given:
@@ -230,7 +249,7 @@ class Canvas:
         self._depth = None
 
     @property
-    def array(self):
+    def array(self) -> npt.NDArray[Any]:
         """The pixels: a numpy VIEW of the canvas's buffer, (H, W) or (H, W,
         channels), rgb565 a uint16 (H, W) view, a label canvas the wrapped
         array itself; writing to it changes the picture.  The one
@@ -244,19 +263,19 @@ class Canvas:
         return self._array
 
     @property
-    def packed(self):
+    def packed(self) -> npt.NDArray[np.uint8]:
         """The buffer C draws into, as a view: for mono1 (H, ceil(W/8))
         uint8, pixel x of a row at bit 7 - x % 8 of byte x // 8; for the
         other formats the same as ``array``."""
         return self._array
 
-    def clear_depth(self):
+    def clear_depth(self) -> None:
         """Forget the depth buffer: the next depth-tested fill starts afresh
         (``depth`` back to None)."""
         self._depth = None
 
     @property
-    def depth(self):
+    def depth(self) -> Optional[npt.NDArray[np.int32]]:
         """The depth buffer: None (none yet), or an (H, W) int32 array, C
         contiguous and writable, that depth-tested fills read and write.
 
@@ -268,7 +287,7 @@ class Canvas:
         return self._depth
 
     @depth.setter
-    def depth(self, value):
+    def depth(self, value: Optional[npt.ArrayLike]) -> None:
         self._depth = self._checked_depth(value)
 
     def _checked_depth(self, value):
@@ -289,15 +308,15 @@ class Canvas:
         return value
 
     @property
-    def width(self):
+    def width(self) -> int:
         return self._width
 
     @property
-    def height(self):
+    def height(self) -> int:
         return self._array.shape[0]
 
     @property
-    def format(self):
+    def format(self) -> str:
         return self._format
 
     def _fill_aa(self, geometry, color, aa, rule, subpixel_bits, sample_offset, entry, *,
@@ -350,15 +369,17 @@ class Canvas:
         if entry == "Canvas.fill_triangle":
             vc = np.asarray(vertex_colors)
             vertex_colors = vc[None] if vc.ndim == 2 else vc
-        colors = _shade.rgba(vertex_colors, batch.shape[0], True, self._format, channels)
+        colors = _shading.rgba(vertex_colors, batch.shape[0], True, self._format, channels)
         _coverage.fill_triangles_shaded_aa(self._writable(), batch, colors, opts,
-                                           _shade.shade_opts(precision, 16),
+                                           _shading.shade_opts(precision, 16),
                                            "tri" if entry == "Canvas.fill_triangle" else "tris")
 
     @_label_spill
-    def fill_polygon(self, rings, color=None, *, rule="evenodd", algorithm="aet", subpixel_bits=8,
-                     sample_offset=0.5, rounding="exact", boundary="exact", vertex_colors=None,
-                     shading="gouraud", precision="exact", aa=None):
+    def fill_polygon(self, rings: Rings, color: Optional[Color] = None, *, rule: Rule = "evenodd",
+                     algorithm: PolygonAlgorithm = "aet", subpixel_bits: int = 8, sample_offset: float = 0.5,
+                     rounding: Rounding = "exact", boundary: Boundary = "exact",
+                     vertex_colors: Optional[npt.ArrayLike] = None, shading: Shading = "gouraud",
+                     precision: Precision = "exact", aa: Optional[CoverageMethod] = None) -> None:
         """Paint `color` on every pixel whose sample is inside the polygon.
 
         Arguments as :func:`rastrum.polygon_mask`.  Nothing is written when
@@ -422,7 +443,6 @@ class Canvas:
             return
         opts = _core.fill_opts(algorithm, rule, subpixel_bits, sample_offset, rounding, boundary)
         if vertex_colors is not None:
-            from . import shading as _shading
 
             if color is not None:
                 raise InputError("fill_polygon takes exactly one of color and vertex_colors")
@@ -437,9 +457,11 @@ class Canvas:
         _core.fill_polygon(self._writable(), rings, pixel, opts, opts.subpixel_bits)
 
     @_label_spill
-    def fill_triangle(self, tri, color=None, *, vertex_colors=None, shading="gouraud", precision="exact",
-                      fraction_bits=16, algorithm="edge", subpixel_bits=8, sample_offset=0.5,
-                      rounding="exact", boundary="exact", aa=None):
+    def fill_triangle(self, tri: npt.ArrayLike, color: Optional[Color] = None, *,
+                      vertex_colors: Optional[npt.ArrayLike] = None, shading: Shading = "gouraud",
+                      precision: Precision = "exact", fraction_bits: int = 16,
+                      algorithm: TriangleAlgorithm = "edge", subpixel_bits: int = 8, sample_offset: float = 0.5,
+                      rounding: Rounding = "exact", boundary: Boundary = "exact", aa: Optional[CoverageMethod] = None) -> None:
         """Paint `color` on every pixel the triangle `tri` owns.
 
         `tri` is three (x, y) vertices, in either winding order; the other
@@ -473,9 +495,12 @@ class Canvas:
         _triangles.fill_triangles(self._writable(), batch, self._pixel(color), opts, "tri")
 
     @_label_spill
-    def fill_triangles(self, tris, color=None, *, vertex_colors=None, shading="gouraud", precision="exact",
-                       fraction_bits=16, depth=None, algorithm="edge", subpixel_bits=8, sample_offset=0.5,
-                       rounding="exact", boundary="exact", aa=None):
+    def fill_triangles(self, tris: npt.ArrayLike, color: Optional[npt.ArrayLike] = None, *,
+                       vertex_colors: Optional[npt.ArrayLike] = None, shading: Shading = "gouraud",
+                       precision: Precision = "exact", fraction_bits: int = 16,
+                       depth: Optional[npt.ArrayLike] = None, algorithm: TriangleAlgorithm = "edge",
+                       subpixel_bits: int = 8, sample_offset: float = 0.5, rounding: Rounding = "exact",
+                       boundary: Boundary = "exact", aa: Optional[CoverageMethod] = None) -> None:
         """Paint every pixel owned by a triangle of the batch.
 
         `tris` is an (N, 3, 2) array-like of (x, y) vertices, drawn in one C
@@ -556,32 +581,34 @@ class Canvas:
             return
         if (color is None) == (vertex_colors is None):
             raise InputError("fill_triangles takes exactly one of color and vertex_colors")
-        sopts = _shade.shade_opts(precision, fraction_bits)
+        sopts = _shading.shade_opts(precision, fraction_bits)
         n = batch.shape[0]
         channels = _CHANNELS[self._format] if self._format in _CHANNELS else 0
         if not channels:
             raise InputError("format %s has no colours to shade" % self._format)
         if vertex_colors is not None:
-            colors = _shade.rgba(vertex_colors, n, True, self._format, channels)
+            colors = _shading.rgba(vertex_colors, n, True, self._format, channels)
         else:
             if np.ndim(color) < 2:  # one colour for every triangle
                 one = np.frombuffer(_rgba_bytes(color, self._format), np.uint8)
                 colors = np.ascontiguousarray(np.broadcast_to(one, (n, 3, 4)))
             else:
-                colors = _shade.rgba(color, n, False, self._format, channels)
-            sopts = _shade.shade_opts("flat", fraction_bits)
+                colors = _shading.rgba(color, n, False, self._format, channels)
+            sopts = _shading.shade_opts("flat", fraction_bits)
         z = zbuf = None
         if depth is not None:
-            z = _shade.depths(depth, n)
+            z = _shading.depths(depth, n)
             zbuf = self._checked_depth(self._depth)
             if zbuf is None:  # kept only once a call has succeeded with it
-                zbuf = np.full((self.height, self.width), _shade.INT32_MAX, np.int32)
-        _shade.fill(self._writable(), batch, colors, z, zbuf, opts, sopts)
+                zbuf = np.full((self.height, self.width), _shading.INT32_MAX, np.int32)
+        _shading.fill(self._writable(), batch, colors, z, zbuf, opts, sopts)
         if z is not None:
             self._depth = zbuf
 
-    def fill_rect_gouraud(self, rect, corner_colors, *, method="bilinear", shading="gouraud",
-                          precision="exact", fraction_bits=16, subpixel_bits=8, sample_offset=0.5):
+    def fill_rect_gouraud(self, rect: npt.ArrayLike, corner_colors: npt.ArrayLike, *,
+                          method: Literal["bilinear", "triangles"] = "bilinear", shading: Shading = "gouraud",
+                          precision: Precision = "exact", fraction_bits: int = 16, subpixel_bits: int = 8,
+                          sample_offset: float = 0.5) -> None:
         """A Gouraud rectangle: four corner colours, interpolated (the textbook's §3.2.3).
 
         `rect` is (x0, y0, x1, y1) in pixels; `corner_colors` is (4, C), C
@@ -604,7 +631,6 @@ class Canvas:
         array([[10, 30, 50, 70],
                [10, 30, 50, 70]], dtype=uint8)
         """
-        from . import shading as _shading
 
         if self._format == "label":
             raise InputError("a label canvas has no channels to shade")
@@ -612,7 +638,8 @@ class Canvas:
                                    fraction_bits, subpixel_bits, sample_offset)
 
     @_label_spill
-    def line(self, p0, p1, color, *, algorithm="bresenham", subpixel_bits=8, sample_offset=0.5):
+    def line(self, p0: Point, p1: Point, color: Color, *, algorithm: LineAlgorithm = "bresenham",
+             subpixel_bits: int = 8, sample_offset: float = 0.5) -> None:
         """Paint `color` on the pixels of the segment p0 -> p1.
 
         The pixels are :func:`rastrum.line_pixels` (p0, p1) within the
@@ -636,8 +663,9 @@ class Canvas:
         _core._check(lib.rast_draw_line(self._writable(), a, b, opts, self._pixel(color)))
 
     @_label_spill
-    def polyline(self, points, color, *, closed=False, algorithm="bresenham", subpixel_bits=8,
-                 sample_offset=0.5):
+    def polyline(self, points: npt.ArrayLike, color: Color, *, closed: bool = False,
+                 algorithm: LineAlgorithm = "bresenham", subpixel_bits: int = 8,
+                 sample_offset: float = 0.5) -> None:
         """Paint the segments points[k] -> points[k+1]; with ``closed=True``
         also the last point -> the first (an outline).
 
@@ -667,7 +695,8 @@ class Canvas:
             _core._check(lib.rast_draw_polyline(target, ffi.from_buffer("rast_point[]", pts), len(pts),
                                                 1 if closed else 0, opts, pixel))
 
-    def flood_fill(self, seed, value, *_legacy, connectivity=4):
+    def flood_fill(self, seed: Tuple[int, int], value: Color, *_legacy: int,
+                   connectivity: Literal[4, 8] = 4) -> None:
         """Flood fill: paint `value` on every pixel connected to `seed`
         through pixels of the seed's (original) value.
 
@@ -698,7 +727,8 @@ class Canvas:
         pixel = self._pixel(value)
         _core.seed_fill(self._writable(), seed, pixel, None, connectivity)
 
-    def boundary_fill(self, seed, value, boundary, *_legacy, connectivity=4):
+    def boundary_fill(self, seed: Tuple[int, int], value: Color, boundary: Color, *_legacy: int,
+                      connectivity: Literal[4, 8] = 4) -> None:
         """Boundary fill: paint `value` on every pixel connected to `seed`
         through pixels that are neither `boundary` nor `value`.
 
@@ -727,7 +757,7 @@ class Canvas:
         edge = ffi.from_buffer(self._value_bytes(boundary))
         _core.seed_fill(self._writable(), seed, pixel, edge, connectivity)
 
-    def to_image(self):
+    def to_image(self) -> "PIL.Image.Image":
         """A Pillow image (a copy): mode L, RGB or RGBA; rgb565 as RGB (each
         channel widened to 8 bits by repeating its top bits), mono1 as
         mode "1"."""
@@ -745,16 +775,34 @@ class Canvas:
             return Image.fromarray(rgb.astype(np.uint8), "RGB")
         return Image.fromarray(np.ascontiguousarray(self._array), _PIL_MODES[self._format])
 
-    def save(self, path, **kwargs):
+    def save(self, path: Union[str, "os.PathLike[str]", IO[bytes]], **kwargs: Any) -> None:
         """Save through Pillow; the format follows the file name (PNG, ...)."""
         self.to_image().save(path, **kwargs)
 
-    def __repr__(self):
+    def __repr__(self) -> str:
         return "Canvas((%d, %d), format=%r)" % (self.height, self.width, self._format)
+
+
+def _color_name(color, fmt):
+    """A colour given as a string ("red", "#f00", "#ff0000", "#ff000080",
+    any name or spelling Pillow's ImageColor takes) in `fmt`'s terms: an
+    int for gray8 (Pillow's luminance) and mono1 (on iff not black), else
+    (R, G, B) or (R, G, B, A)."""
+    from PIL import ImageColor
+
+    try:
+        value = ImageColor.getcolor(color, "RGBA" if fmt == "rgba8888" else "RGB" if fmt in ("rgb888", "rgb565")
+                                    else "L")
+    except ValueError:
+        raise InputError('colour %r: not a colour name (e.g. "red") nor "#rgb", "#rrggbb" or "#rrggbbaa" '
+                         "(the names and spellings of Pillow's ImageColor)" % (color,)) from None
+    return int(value != 0) if fmt == "mono1" else value
 
 
 def _pixel_bytes(color, fmt):
     """The pixel's bytes for `color` in format `fmt`, or InputError."""
+    if isinstance(color, str):
+        color = _color_name(color, fmt)
     color = _core.as_numpy(color)
     if fmt == "mono1":
         if isinstance(color, (bool, np.bool_)) or not isinstance(color, (int, np.integer)):
@@ -771,11 +819,11 @@ def _pixel_bytes(color, fmt):
         try:
             values = [v for v in color]
         except TypeError:
-            raise InputError("colour %r: give an int or a sequence of %d ints" % (color, n)) from None
+            raise InputError("colour %r: give an int or a sequence of %s" % (color, _core.plural(n, "int"))) from None
         if len(values) != n or not all(
             isinstance(v, (int, np.integer)) and not isinstance(v, (bool, np.bool_)) for v in values
         ):
-            raise InputError("colour %r: format %s needs %d ints" % (color, fmt, n))
+            raise InputError("colour %r: format %s needs %s" % (color, fmt, _core.plural(n, "int")))
     if not all(0 <= v <= 255 for v in values):
         raise InputError("colour %r: every channel must be in 0..255" % (color,))
     return bytes(bytearray(int(v) for v in values))
@@ -785,6 +833,8 @@ def _rgba_bytes(color, fmt):
     """An 8-bit RGBA colour (4 bytes) for `color` given in `fmt`'s terms:
     an int (every channel; alpha 255) or 3 or 4 ints."""
     n = 4 if fmt == "rgba8888" else 3 if fmt in ("rgb888", "rgb565") else 1
+    if isinstance(color, str):
+        color = _color_name(color, fmt)
     if fmt == "mono1" and isinstance(color, (int, np.integer)) and not isinstance(color, (bool, np.bool_)):
         color = 255 if color else 0  # a flat mono1 colour: on iff not 0
     values = _pixel_bytes(color, "rgba8888" if n == 4 else "rgb888" if n == 3 else "gray8")
@@ -821,6 +871,28 @@ def _check_rows(array, item):
 
 def _is_int(v):
     return isinstance(v, (int, np.integer)) and not isinstance(v, (bool, np.bool_))
+
+
+def _positional(shape, args, format, background):
+    """(legacy height, format, background) from Canvas's positional
+    arguments after `shape`: (format, background), or, after the width of
+    the deprecated Canvas(width, height, ...), (height, format, background).
+    A name given both by position and by keyword is a TypeError, as Python
+    would raise it."""
+    legacy_height = None
+    if args and (_is_int(shape) or _is_int(args[0])):  # an int after a shape: refused as a height
+        legacy_height, args = args[0], args[1:]
+    if len(args) > 2:
+        raise TypeError("Canvas() takes at most 3 positional arguments (%d given)" % (len(args) + 1))
+    if args:
+        if not (isinstance(format, str) and format == "rgb888"):
+            raise TypeError("Canvas() got multiple values for argument 'format'")
+        format = args[0]
+    if len(args) == 2:
+        if not (type(background) is int and background == 0):
+            raise TypeError("Canvas() got multiple values for argument 'background'")
+        background = args[1]
+    return legacy_height, format, background
 
 
 def _canvas_shape(shape, legacy_height, width, height):

@@ -19,7 +19,7 @@ from typing import Iterable, List, Optional, Sequence, Tuple, Union
 import numpy as np
 
 from ._core import InputError
-from .path import CLOSE, LINE, MOVE, QUAD, Path, _real
+from ._path import CLOSE, LINE, MOVE, QUAD, Path, _real
 
 __all__ = ["stroke"]
 
@@ -62,7 +62,7 @@ def _subpaths(geometry: object, tolerance: Optional[float]) -> List[Tuple[List[_
                 else:
                     sub.cubic_to(*pts[k], *pts[k + 1], *pts[k + 2])
                 k += n
-                from .path import _flatten_fixed  # the C flattener, at 1/65536 px
+                from ._path import _flatten_fixed  # the C flattener, at 1/65536 px
                 bits = 16
                 tol = sub.tolerance if sub.tolerance is not None else 1.0 / 256
                 fixed, fverbs = sub._fixed(bits)

@@ -7,11 +7,15 @@ and turn statuses into exceptions.  Nothing is written when an argument is
 bad.
 """
 
+from typing import Literal
+
 import numpy as np
+import numpy.typing as npt
 
 from . import _core
 from ._core import InputError
 from ._native import ffi, lib
+from ._typing import Boundary, Rounding, Shape, TriangleAlgorithm
 
 
 def _triangle_algorithms():
@@ -81,8 +85,9 @@ def _mode(mode):
     return mode
 
 
-def triangles_mask(tris, shape, *, algorithm="edge", subpixel_bits=8, sample_offset=0.5, mode="set",
-                   rounding="exact", boundary="exact"):
+def triangles_mask(tris: npt.ArrayLike, shape: Shape, *, algorithm: TriangleAlgorithm = "edge",
+                   subpixel_bits: int = 8, sample_offset: float = 0.5, mode: Literal["set"] = "set",
+                   rounding: Rounding = "exact", boundary: Boundary = "exact") -> npt.NDArray[np.bool_]:
     """Rasterise a batch of triangles into a mask, or count them per pixel.
 
     Each triangle owns exactly the pixels whose sample point the polygon
@@ -159,8 +164,9 @@ def triangles_mask(tris, shape, *, algorithm="edge", subpixel_bits=8, sample_off
     return _mask(tris, shape, algorithm, subpixel_bits, sample_offset, rounding, boundary, count)
 
 
-def triangles_count(tris, shape, *, algorithm="edge", subpixel_bits=8, sample_offset=0.5, rounding="exact",
-                    boundary="exact"):
+def triangles_count(tris: npt.ArrayLike, shape: Shape, *, algorithm: TriangleAlgorithm = "edge",
+                    subpixel_bits: int = 8, sample_offset: float = 0.5, rounding: Rounding = "exact",
+                    boundary: Boundary = "exact") -> npt.NDArray[np.uint16]:
     """Count, per pixel, the triangles of a batch that own it: overdraw
     made visible.
 

@@ -197,7 +197,10 @@ def decode(rleObjs, out=None):
         target = out if not single else out[:, :, None]
         res = out
     ptr = ffi.cast("uint8_t *", target.__array_interface__["data"][0]) if target.size else ffi.NULL
-    if target.size:
+    if not target.size:  # nothing to write, but the counts are judged all the same
+        _glue(lib.rastpy_coco_area(strs, offsets, n, ffi.new("uint32_t[]", [h, w] * n),
+                                   ffi.new("uint32_t[]", n)), "decode")
+    else:
         _glue(lib.rastpy_coco_decode(strs, offsets, n, h, w, ptr,
                                      target.strides[0], target.strides[1], target.strides[2], 1),
               "decode")
@@ -210,10 +213,10 @@ def area(rleObjs):
     """Pixels inside each RLE (uint32), as ``pycocotools.mask.area``."""
     single = not isinstance(rleObjs, list)
     objs = [rleObjs] if single else rleObjs
-    strs, offsets, _, _ = _pack(objs, "area")
+    strs, offsets, sizes, _ = _pack(objs, "area")
     a = np.zeros(len(objs), np.uint32)
     if objs:
-        _glue(lib.rastpy_coco_area(strs, offsets, len(objs),
+        _glue(lib.rastpy_coco_area(strs, offsets, len(objs), sizes,
                                    ffi.from_buffer("uint32_t[]", a)), "area")
     return a[0] if single else a
 
@@ -301,9 +304,17 @@ def iou(dt, gt, pyiscrowd):
 def _hw(h, w):
     h, w = _core.int_pair((h, w), "frPyObjects: h, w must be two ints, not %r",
                           "frPyObjects: h and w must be ints, not %r")
-    if h < 0 or w < 0 or h * w > 0xFFFFFFFF or max(h, w) > lib.RAST_MAX_DIM:
+    if h < 0 or w < 0 or h * w > 0xFFFFFFFF:
         raise InputError("frPyObjects: h=%d, w=%d; h, w >= 0 and h * w < 2**32 are needed" % (h, w))
     return h, w
+
+
+def _poly_hw(h, w):
+    """Polygons and boxes go through the filler: sides up to RAST_MAX_DIM
+    (uncompressed RLEs take any h * w < 2**32, as pycocotools)."""
+    if max(h, w) > lib.RAST_MAX_DIM:
+        raise InputError("frPyObjects: h=%d, w=%d; polygons and boxes need h and w at most %d "
+                         "(uncompressed RLEs may be larger)" % (h, w, lib.RAST_MAX_DIM))
 
 
 def _flat(p, k):
@@ -412,6 +423,7 @@ def frPyObjects(pyobj, h, w, *, rule="coco"):
         raise InputError("frPyObjects: unknown rule %r; choose one of: coco, exact" % (rule,))
     h, w = _hw(h, w)
     if isinstance(pyobj, np.ndarray):
+        _poly_hw(h, w)
         return _fr_polys(_box_polys(pyobj), h, w, rule)
     if isinstance(pyobj, dict):
         if not _is_rle(pyobj):
@@ -427,6 +439,7 @@ def frPyObjects(pyobj, h, w, *, rule="coco"):
                 raise InputError("frPyObjects: item %d is not an RLE dict like item 0" % k)
         strs = _fr_counts([o["counts"] for o in pyobj], "frPyObjects")
         return _objs(strs, [_size(o, k, "frPyObjects") for k, o in enumerate(pyobj)])
+    _poly_hw(h, w)
     if np.ndim(first) == 0:  # one flat polygon or one box
         if len(pyobj) == 4:
             return _fr_polys(_box_polys([pyobj]), h, w, rule)[0]

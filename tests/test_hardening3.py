@@ -78,3 +78,66 @@ def test_finding7_counts_past_hw():
         coco.decode({"size": [0, 0], "counts": b"1"})
     ok = {"size": [4, 5], "counts": coco.frPyObjects([{"size": [4, 5], "counts": [0, 20]}], 4, 5)[0]["counts"]}
     assert coco.area(ok) == 20 and coco.toBbox(ok).tolist() == [0.0, 0.0, 5.0, 4.0]
+
+
+# ---- finding 1: a misaligned depth buffer ---------------------------------------
+
+def test_finding1_misaligned_depth():
+    c = rastrum.Canvas(10, 8, format="gray8")
+    raw = np.zeros(8 * 10 * 4 + 1, np.uint8)[1:]
+    d = raw.view(np.int32).reshape(8, 10)
+    assert not d.flags.aligned and d.flags.c_contiguous
+    with pytest.raises(InputError, match="depth must be aligned"):
+        c.depth = d
+    assert c.depth is None
+    c.depth = np.require(d, np.int32, "CA")  # an aligned copy is taken
+    assert c.depth.flags.aligned
+
+
+# ---- finding 3: rasterize(out=<misaligned C-contiguous array>) --------------------
+
+def test_finding3_rasterize_misaligned_out():
+    square = {"type": "Polygon", "coordinates": [[(1, 1), (5, 1), (5, 4), (1, 4), (1, 1)]]}
+    raw = np.zeros(6 * 8 * 4 + 1, np.uint8)[1:]
+    out = raw.view(np.int32).reshape(6, 8)
+    assert not out.flags.aligned and out.flags.c_contiguous
+    got = rastrum.rasterize([(square, 7)], out=out)
+    want = rastrum.rasterize([(square, 7)], out_shape=(6, 8), dtype="int32")
+    assert got is out
+    np.testing.assert_array_equal(out, want)
+    assert (want == 7).sum() == 12
+
+
+# ---- finding 6: int64 burn of 2^63 ---------------------------------------------
+
+def test_finding6_int64_value_2_63():
+    square = {"type": "Polygon", "coordinates": [[(0, 0), (2, 0), (2, 2), (0, 2), (0, 0)]]}
+    for v in (2.0**63, -(2.0**63) * 1.0000001, 2.0**64):
+        with pytest.raises(InputError, match="does not fit dtype int64"):
+            rastrum.rasterize([(square, v)], out_shape=(3, 3), dtype="int64")
+    with pytest.raises(InputError, match="does not fit dtype uint32"):
+        rastrum.rasterize([(square, 2.0**32)], out_shape=(3, 3), dtype="uint32")
+    a = rastrum.rasterize([(square, -(2.0**63))], out_shape=(3, 3), dtype="int64")
+    assert a[0, 0] == -(2**63)
+    a = rastrum.rasterize([(square, 2.0**32 - 1)], out_shape=(3, 3), dtype="uint32")
+    assert a[0, 0] == 2**32 - 1
+
+
+# ---- finding 10: a raising progress callback ------------------------------------
+
+def test_finding10_progress_raises_out_untouched():
+    shapes = [({"type": "Polygon", "coordinates": [[(k % 50, k // 50), (k % 50 + 1, k // 50),
+                                                   (k % 50 + 1, k // 50 + 1), (k % 50, k // 50)]]}, 1)
+              for k in range(3000)]
+    out = np.full((70, 60), 9, np.uint8)
+    calls = []
+
+    def progress(done, total):
+        calls.append(done)
+        if len(calls) == 2:
+            raise KeyboardInterrupt("stop")
+
+    with pytest.raises(KeyboardInterrupt):
+        rastrum.rasterize(shapes, out=out, progress=progress)
+    assert len(calls) == 2
+    assert (out == 9).all()

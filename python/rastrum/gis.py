@@ -156,7 +156,9 @@ def _values(vals, dt):
                     ok &= ~(np.abs(a) > float(np.finfo(np.float32).max)) | ~np.isfinite(a)
             else:
                 info = np.iinfo(dt)
-                ok &= (a == np.floor(a)) & (a >= info.min) & (a <= info.max)
+                # max + 1 (a power of two) is exact in float64; info.max is
+                # not for 64 bits (2^63 - 1 rounds to 2^63, which wrapped)
+                ok &= (a == np.floor(a)) & (a >= info.min) & (a < info.max + 1)
             if ok.all():
                 return a.astype(dt)
         elif a.dtype.kind in "iu":

@@ -141,3 +141,40 @@ def test_finding10_progress_raises_out_untouched():
         rastrum.rasterize(shapes, out=out, progress=progress)
     assert len(calls) == 2
     assert (out == 9).all()
+
+
+# ---- finding 9: errors that were not InputError ----------------------------------
+
+def test_finding9_errors_are_input_errors():
+    with pytest.raises(InputError, match="RLE 0 has size"):
+        coco.area({"size": [2**32, 0], "counts": b""})
+    with pytest.raises(InputError, match="below 2\\*\\*32"):
+        coco.encode(np.zeros((2**32, 0), np.uint8))
+    r = coco.encode(np.ones((2, 2), np.uint8, order="F"))
+    for crowd in ([256], [None], ["a"], [-1], [[0]]):
+        with pytest.raises(InputError, match="iscrowd"):
+            coco.iou([r], [r], crowd)
+    assert coco.iou([r], [r], [True])[0, 0] == 1.0
+    pytest.importorskip("dask")
+    import rastrum.dask
+    for chunks in (0, (0, 5)):
+        with pytest.raises(InputError, match="chunks"):
+            rastrum.dask.rasterize([], (4, 5), chunks=chunks, dtype="uint8")
+
+
+def test_finding9_tiny_transform_blames_transform():
+    square = {"type": "Polygon", "coordinates": [[(0, 0), (2, 0), (2, 2), (0, 2), (0, 0)]]}
+    with pytest.raises(InputError, match="^transform .*inverse is not finite"):
+        rastrum.rasterize([(square, 1)], out_shape=(3, 3), transform=(1e-320, 0, 0, 0, -1, 0))
+
+
+# ---- a GDAL-ordered geotransform tuple -------------------------------------------
+
+def test_gdal_ordered_geotransform_refused():
+    square = {"type": "Polygon", "coordinates": [[(100, 50), (120, 50), (120, 30), (100, 30), (100, 50)]]}
+    gdal = (100.0, 10.0, 0.0, 50.0, 0.0, -10.0)  # (c, a, b, f, d, e)
+    with pytest.raises(InputError, match="GDAL geotransform"):
+        rastrum.rasterize([(square, 1)], out_shape=(4, 4), transform=gdal)
+    affine_order = (10.0, 0.0, 100.0, 0.0, -10.0, 50.0)
+    a = rastrum.rasterize([(square, 1)], out_shape=(4, 4), transform=affine_order)
+    assert a.sum() == 4 and a[:2, :2].all()

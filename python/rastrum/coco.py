@@ -60,7 +60,8 @@ def _size(obj, k, what):
     size = obj["size"]
     if type(size) is list and len(size) == 2:
         h, w = size
-        if type(h) is int and type(w) is int and 0 <= h and 0 <= w and h * w <= 0xFFFFFFFF:
+        if type(h) is int and type(w) is int and 0 <= h <= 0xFFFFFFFF and 0 <= w <= 0xFFFFFFFF \
+                and h * w <= 0xFFFFFFFF:
             return h, w
     try:
         h, w = obj["size"]
@@ -68,7 +69,7 @@ def _size(obj, k, what):
     except Exception:
         raise InputError("%s: RLE %d has size %r; it must be [height, width], two ints"
                          % (what, k, obj.get("size"))) from None
-    if h < 0 or w < 0 or h * w > 0xFFFFFFFF:
+    if h < 0 or w < 0 or h * w > 0xFFFFFFFF or max(h, w) > 0xFFFFFFFF:  # [2**32, 0] too
         raise InputError("%s: RLE %d has size %r; h, w >= 0 and h * w < 2**32 are needed"
                          % (what, k, obj["size"]))
     return h, w
@@ -150,8 +151,9 @@ def encode(bimask):
     if single:
         a = a[:, :, None]
     h, w, n = a.shape
-    if h * w > 0xFFFFFFFF:
-        raise InputError("encode: h * w must be below 2**32 (COCO counts are uint32)")
+    if h * w > 0xFFFFFFFF or max(h, w) > 0xFFFFFFFF:  # (2**32, 0) too
+        raise InputError("encode: h, w and h * w must be below 2**32 (COCO counts are uint32), "
+                         "not shape %s" % (a.shape,))
     if a.dtype == np.bool_:
         a = a.view(np.uint8)
     data = ffi.new("char **")
@@ -259,6 +261,21 @@ def _boxes(objs, what):
     return np.ascontiguousarray(a)
 
 
+def _crowd(pyiscrowd):
+    """iscrowd as uint8 0/1: a list (or 1-D array) of bools or ints 0 and 1
+    (pycocotools' np.array(..., dtype=np.uint8) would wrap 256 to 0)."""
+    try:
+        a = np.asarray(pyiscrowd)
+    except (ValueError, TypeError):
+        a = None
+    if a is not None and a.size == 0:
+        return np.zeros(0, np.uint8)
+    if a is None or a.ndim > 1 or a.dtype.kind not in "biu" or (a.size and (a.min() < 0 or a.max() > 1)):
+        raise InputError("iou: iscrowd must be a list of 0/1 (or bools), one per gt object, not %r"
+                         % (pyiscrowd,))
+    return a.reshape(-1).astype(np.uint8)
+
+
 def iou(dt, gt, pyiscrowd):
     """IoU of each detection with each ground truth, as
     ``pycocotools.mask.iou``: (m, n) float64 (Fortran order), or [] when
@@ -279,7 +296,7 @@ def iou(dt, gt, pyiscrowd):
         raise InputError("iou: %s must be a list or an (N, 4) array, not %s" % (what, type(objs).__name__))
     kd, d = kind(dt, "dt")
     kg, g = kind(gt, "gt")
-    crowd = np.array(pyiscrowd, dtype=np.uint8).reshape(-1)
+    crowd = _crowd(pyiscrowd)
     m, n = len(d), len(g)
     if len(crowd) != n:
         raise InputError("iou: iscrowd has %d entries for %d gt objects" % (len(crowd), n))
@@ -304,7 +321,7 @@ def iou(dt, gt, pyiscrowd):
 def _hw(h, w):
     h, w = _core.int_pair((h, w), "frPyObjects: h, w must be two ints, not %r",
                           "frPyObjects: h and w must be ints, not %r")
-    if h < 0 or w < 0 or h * w > 0xFFFFFFFF:
+    if h < 0 or w < 0 or h * w > 0xFFFFFFFF or max(h, w) > 0xFFFFFFFF:
         raise InputError("frPyObjects: h=%d, w=%d; h, w >= 0 and h * w < 2**32 are needed" % (h, w))
     return h, w
 

@@ -57,6 +57,13 @@ def _transform6(transform) -> Tuple[float, ...]:
     if len(values) != 6:
         raise InputError("transform must be 6 numbers (a, b, c, d, e, f) in Affine order, not %d "
                          "(a GDAL geotransform: affine.Affine.from_gdal(*gt))" % len(values))
+    if (len(values) == 6 and not hasattr(transform, "to_gdal") and values[2] == values[4] == 0
+            and values[1] > 0 and values[5] < 0):
+        # rasterio's guard_transform: (c, a, b, f, d, e) in GDAL's order
+        # would burn nothing (column scale 0), silently
+        raise InputError("transform %r looks like a GDAL geotransform (c, a, b, f, d, e); rastrum, as "
+                         "rasterio, takes Affine order (a, b, c, d, e, f): "
+                         "affine.Affine.from_gdal(*gt)" % (tuple(values),))
     out = []
     for v in values:
         if isinstance(v, (bool, np.bool_)) or not isinstance(v, numbers.Real):
@@ -74,7 +81,10 @@ def _inverse(t6):
     y*ry, each evaluated left to right in float64."""
     a, b, c, d, e, f = t6
     if b == 0.0 and d == 0.0 and a != 0.0 and e != 0.0:  # north-up: no determinant
-        return (-c / a, 1.0 / a, 0.0, -f / e, 0.0, 1.0 / e)
+        out = (-c / a, 1.0 / a, 0.0, -f / e, 0.0, 1.0 / e)
+        if not all(math.isfinite(v) for v in out):  # a = 1e-320: 1 / a is infinite
+            raise InputError("transform %r: its inverse is not finite" % (t6,))
+        return out
     det = a * e - b * d
     mag = max(abs(a), abs(b), abs(d), abs(e))
     if not abs(det) > 1e-10 * mag * mag:

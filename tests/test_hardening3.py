@@ -178,3 +178,19 @@ def test_gdal_ordered_geotransform_refused():
     affine_order = (10.0, 0.0, 100.0, 0.0, -10.0, 50.0)
     a = rastrum.rasterize([(square, 1)], out_shape=(4, 4), transform=affine_order)
     assert a.sum() == 4 and a[:2, :2].all()
+
+
+# ---- labels wrapped values its dtype cannot hold ----------------------------------
+
+def test_labels_values_that_do_not_fit():
+    sq = [np.array([[0, 0], [2, 0], [2, 2], [0, 2]], float)]
+    for v, dt in ((300, "uint8"), (-1, "uint8"), (2.7, "int32"), (float("nan"), "int16"), (2.0**63, "int64"),
+                  (1e39, "float32")):
+        with pytest.raises(InputError, match="does not fit dtype"):
+            rastrum.labels([sq], (3, 3), values=[v], dtype=dt)
+    with pytest.raises(InputError, match="values must be numbers"):
+        rastrum.labels([sq], (3, 3), values=[True])
+    with pytest.raises(InputError, match="300 polygons need ids 1..300; dtype uint8"):
+        rastrum.labels([sq] * 300, (3, 3), dtype="uint8")
+    assert rastrum.labels([sq] * 255, (3, 3), dtype="uint8")[0, 0] == 255
+    assert rastrum.labels([sq], (3, 3), values=[255.0], dtype="uint8")[0, 0] == 255

@@ -208,6 +208,27 @@ def masks(polygons, shape, *, rule="union", algorithm="aet", subpixel_bits=8, sa
     return out
 
 
+def _fit(v, dtype, default):
+    """Values v as dtype, each held exactly (as Canvas(format="label") and
+    rasterize refuse what their dtype cannot hold), or InputError."""
+    if dtype.kind in "iu":
+        info = np.iinfo(dtype)
+        if v.dtype.kind == "f":
+            bad = ~np.isfinite(v) | (v != np.floor(v)) | (v < info.min) | (v >= info.max + 1)
+        else:
+            bad = (v < info.min) | (v > info.max)
+    else:
+        with np.errstate(over="ignore"):
+            bad = np.isfinite(v) & ~np.isfinite(v.astype(dtype))
+    if bad.any():
+        k = int(np.argmax(bad))
+        if default:
+            raise InputError("labels: %d polygons need ids 1..%d; dtype %s holds at most %d (choose a "
+                             "wider dtype)" % (len(v), len(v), dtype, np.iinfo(dtype).max))
+        raise InputError("labels: values[%d] = %s does not fit dtype %s" % (k, v[k].item(), dtype))
+    return v.astype(dtype)
+
+
 def labels(polygons, shape, values=None, dtype=np.int32, *, overlap=False, rule="union", algorithm="aet",
            subpixel_bits=8, sample_offset=0.5, progress=False):
     """Burn instances into one label image, in one C call.
@@ -218,7 +239,8 @@ def labels(polygons, shape, values=None, dtype=np.int32, *, overlap=False, rule=
     Parameters
     ----------
     values : array_like, optional
-        One value per polygon, converted to `dtype` (as numpy casts).
+        One value per polygon, each one `dtype` holds exactly (else
+        InputError: 300 in uint8, -1 in uint8, 2.7 in an integer dtype).
     dtype : numpy dtype
         Of the label image: uint8 .. int64, float32, float64.
     overlap : bool
@@ -248,14 +270,14 @@ def labels(polygons, shape, values=None, dtype=np.int32, *, overlap=False, rule=
     packed = _polygons(polygons, "labels")
     n = len(packed[2])
     if values is None:
-        vals = np.arange(1, n + 1).astype(dtype)
+        v = np.arange(1, n + 1)
     else:
         v = np.asarray(values)
         if v.shape != (n,):
             raise InputError("labels: values has shape %s; %d polygons need shape (%d,)" % (v.shape, n, n))
-        if v.dtype.kind not in "biuf":
+        if v.dtype.kind not in "iuf":
             raise InputError("labels: values must be numbers, not dtype %s" % v.dtype)
-        vals = v.astype(dtype)
+    vals = _fit(v, dtype, values is None)
     out = np.zeros((h, w), dtype)
     report = _progress(progress, n * (2 if overlap else 1))
     _burn(out, packed, opts, rule, vals, "replace", False, "polygon", report)

@@ -194,3 +194,18 @@ def test_labels_values_that_do_not_fit():
         rastrum.labels([sq] * 300, (3, 3), dtype="uint8")
     assert rastrum.labels([sq] * 255, (3, 3), dtype="uint8")[0, 0] == 255
     assert rastrum.labels([sq], (3, 3), values=[255.0], dtype="uint8")[0, 0] == 255
+
+
+# ---- finding 8: bools read as 0 / 1 inside float lists ------------------------------
+
+def test_finding8_bools_in_float_lists():
+    seg = [[1.0, 1.0, 6.0, True, 6.0, 4.0]]
+    with pytest.raises(InputError, match="bool"):
+        coco.rings(seg)
+    with pytest.raises(InputError, match="bool"):
+        coco.polygons([seg])
+    with pytest.raises(InputError, match="bool"):
+        coco.frPyObjects(seg, 8, 8)
+    with pytest.raises(InputError, match="bool"):
+        rastrum.polygon_mask([(1.0, 1.0), (6.0, True), (6.0, 4.0)], (8, 8))
+    assert len(coco.rings([[1.0, 1.0, 6.0, 1, 6.0, 4.0]])[0]) == 3  # ints are numbers

@@ -484,7 +484,7 @@ def rings(segmentation):
     out = []
     for k, p in enumerate(segmentation):
         a = np.asarray(p) if type(p) is list else None
-        if a is not None and a.dtype is _F64 and a.ndim == 1:  # the usual: floats, quickly
+        if a is not None and a.dtype is _F64 and a.ndim == 1 and not _core.has_bool(p):  # the usual: floats
             out.append(a.reshape(-1, 2) if not a.shape[0] & 1 else a[:-1].reshape(-1, 2))
             continue
         a = _core.real_array(p, "rings: part %d" % k, "a flat [x0, y0, x1, y1, ...] list")

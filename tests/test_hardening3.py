@@ -209,3 +209,22 @@ def test_finding8_bools_in_float_lists():
     with pytest.raises(InputError, match="bool"):
         rastrum.polygon_mask([(1.0, 1.0), (6.0, True), (6.0, 4.0)], (8, 8))
     assert len(coco.rings([[1.0, 1.0, 6.0, 1, 6.0, 4.0]])[0]) == 3  # ints are numbers
+
+
+def test_finding9_deep_or_recursive_geometry_collection():
+    sq = {"type": "Polygon", "coordinates": [[(0, 0), (2, 0), (2, 2), (0, 2), (0, 0)]]}
+    deep = sq
+    for _ in range(5000):
+        deep = {"type": "GeometryCollection", "geometries": [deep]}
+    with pytest.raises(InputError, match="nested more than 100 deep"):
+        rastrum.rasterize([(deep, 1)], out_shape=(3, 3))
+    loop = {"type": "GeometryCollection", "geometries": [sq]}
+    loop["geometries"].append(loop)
+    out = np.zeros((3, 3), np.uint8)
+    with pytest.raises(InputError, match="holding itself"):
+        rastrum.rasterize([(loop, 1)], out=out)
+    assert not out.any()
+    ok = sq
+    for _ in range(50):
+        ok = {"type": "GeometryCollection", "geometries": [ok]}
+    assert rastrum.rasterize([(ok, 1)], out_shape=(3, 3)).sum() == 4

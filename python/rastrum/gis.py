@@ -219,6 +219,9 @@ def _type_name(t):
     return t if isinstance(t, str) else repr(t)
 
 
+_MAX_NESTING = 100  # GeometryCollections in GeometryCollections, far below Python's recursion limit
+
+
 def _add_geometry(flat, geom, index, depth=0):
     what = "shapes: feature %d" % index
     if hasattr(geom, "__geo_interface__"):
@@ -236,6 +239,9 @@ def _add_geometry(flat, geom, index, depth=0):
         members = list(members)
         if not members:
             raise InputError("%s: empty GeometryCollection" % what)
+        if depth >= _MAX_NESTING:  # a collection holding itself, or nested past any real use
+            raise InputError("%s: GeometryCollection nested more than %d deep (or holding itself)"
+                             % (what, _MAX_NESTING))
         for g in members:
             _add_geometry(flat, g, index, depth + 1)
         return

@@ -131,7 +131,10 @@ def _fr_counts(counts_lists, what):
 # ---- masks <-> RLE ----------------------------------------------------------
 
 def _mask_array(bimask, what):
-    a = bimask if isinstance(bimask, np.ndarray) else np.asarray(bimask)
+    try:
+        a = bimask if isinstance(bimask, np.ndarray) else np.asarray(bimask)
+    except (ValueError, TypeError, OverflowError):  # ragged lists
+        raise InputError("%s: masks must be uint8 or bool arrays, not %s" % (what, type(bimask).__name__)) from None
     if a.dtype != np.uint8 and a.dtype != np.bool_:
         raise InputError("%s: masks must be uint8 or bool arrays, not dtype %s" % (what, a.dtype))
     return a
@@ -253,7 +256,10 @@ def merge(rleObjs, intersect=0):
 
 
 def _boxes(objs, what):
-    a = np.array(objs, dtype=np.float64)
+    try:
+        a = np.array(objs, dtype=np.float64)
+    except (ValueError, TypeError, OverflowError):
+        raise InputError("iou: %s boxes must be (N, 4) [x, y, w, h] numbers" % what) from None
     if a.ndim == 1 and a.shape[0] == 4:
         a = a.reshape(1, 4)
     if a.ndim != 2 or a.shape[1] != 4:
@@ -410,7 +416,10 @@ def _fr_lists(parts, h, w, rule):
 
 
 def _box_polys(bb):
-    bb = np.asarray(bb, dtype=np.float64)
+    try:
+        bb = np.asarray(bb, dtype=np.float64)
+    except (ValueError, TypeError, OverflowError):
+        raise InputError("frPyObjects: boxes must be (N, 4) [x, y, w, h] numbers") from None
     if bb.ndim != 2 or bb.shape[1] != 4:
         raise InputError("frPyObjects: boxes must be (N, 4) [x, y, w, h], not shape %s" % (bb.shape,))
     xs, ys = bb[:, 0], bb[:, 1]
@@ -483,7 +492,10 @@ def rings(segmentation):
         segmentation = [segmentation]
     out = []
     for k, p in enumerate(segmentation):
-        a = np.asarray(p) if type(p) is list else None
+        try:
+            a = np.asarray(p) if type(p) is list else None
+        except (ValueError, TypeError, OverflowError):  # ragged: real_array names it
+            a = None
         if a is not None and a.dtype is _F64 and a.ndim == 1 and not _core.has_bool(p):  # the usual: floats
             out.append(a.reshape(-1, 2) if not a.shape[0] & 1 else a[:-1].reshape(-1, 2))
             continue

@@ -419,12 +419,18 @@ FUZZ_TARGETS := $(patsubst tests/fuzz/%.c,%,$(wildcard tests/fuzz/fuzz_*.c))
 FUZZ_SECONDS ?= 20
 FUZZ_CC ?= clang
 FUZZ_INC := -Icsrc/include -Icsrc/src -Itests/c
+# fuzz_seq embeds the interpreter (python/ext/seq.c takes Python objects):
+# its headers and library, from BASE_PYTHON (Debian: python3-dev)
+FUZZ_PY = $(shell $(BASE_PYTHON) -c 'import sysconfig as s; v = s.get_config_var; \
+  print("-I%s -L%s -lpython%s -Wl,-rpath,%s" % (s.get_paths()["include"], v("LIBDIR"), v("LDVERSION"), v("LIBDIR")))')
+fuzz_extra = case $$t in fuzz_seq) x="$(FUZZ_PY)";; *) x=;; esac
 
 fuzz-regress:
 	@$(call core_lib,build/fuzz-regress/core,$(CC) -std=c99 -Wall -Wextra -Werror -O1 $(SAN))
 	@for t in $(FUZZ_TARGETS); do \
+	  $(fuzz_extra); \
 	  $(CC) -std=c99 -Wall -Wextra -Werror -O1 $(SAN) $(FUZZ_INC) tests/fuzz/$$t.c tests/fuzz/driver.c \
-	    build/fuzz-regress/core/librastrum.a -o build/fuzz-regress/$$t || exit 1; \
+	    build/fuzz-regress/core/librastrum.a $$x -lm -o build/fuzz-regress/$$t || exit 1; \
 	  ./build/fuzz-regress/$$t tests/fuzz/corpus/$$t || exit 1; \
 	done
 
@@ -433,8 +439,9 @@ fuzz-check:
 	@$(call core_lib,build/fuzz/core,$(FUZZ_CC) -std=c99 -Wall -Wextra -Werror -g -O1 \
 	  -fsanitize=fuzzer-no-link$(comma)address$(comma)undefined -fno-sanitize-recover=all)
 	@for t in $(FUZZ_TARGETS); do \
+	  $(fuzz_extra); \
 	  $(FUZZ_CC) -std=c99 -Wall -Wextra -Werror -g -O1 -fsanitize=fuzzer,address,undefined -fno-sanitize-recover=all \
-	    $(FUZZ_INC) tests/fuzz/$$t.c build/fuzz/core/librastrum.a -o build/fuzz/$$t || exit 1; \
+	    $(FUZZ_INC) tests/fuzz/$$t.c build/fuzz/core/librastrum.a $$x -lm -o build/fuzz/$$t || exit 1; \
 	  rm -rf build/fuzz/new_$$t; mkdir -p build/fuzz/new_$$t; \
 	  if ./build/fuzz/$$t -max_total_time=$(FUZZ_SECONDS) -timeout=20 -print_final_stats=1 \
 	       -artifact_prefix=build/fuzz/$$t- build/fuzz/new_$$t tests/fuzz/corpus/$$t \
@@ -454,7 +461,7 @@ FUZZ_JOBS ?= 2
 FUZZ_LOG_DIR ?= build/fuzz-long
 FUZZ_LONG_OUT ?= bench/fuzz-long.txt
 fuzz-long:
-	@FUZZ_CC="$(FUZZ_CC)" FUZZ_SECONDS="$(if $(filter command line,$(origin FUZZ_SECONDS)),$(FUZZ_SECONDS),600)" \
+	@FUZZ_CC="$(FUZZ_CC)" FUZZ_PY="$(FUZZ_PY)" FUZZ_SECONDS="$(if $(filter command line,$(origin FUZZ_SECONDS)),$(FUZZ_SECONDS),600)" \
 	  FUZZ_JOBS="$(FUZZ_JOBS)" FUZZ_LOG_DIR="$(FUZZ_LOG_DIR)" FUZZ_LONG_OUT="$(FUZZ_LONG_OUT)" \
 	  tools/fuzz-long.sh $(FUZZ_TARGETS)
 

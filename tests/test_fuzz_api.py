@@ -166,3 +166,81 @@ def test_public_api_takes_anything(call):
         assert name.endswith("fill") and "work limit" in str(e), e
         return
     assert np.array_equal(_guards(big), guards), "%s wrote outside the canvas" % name
+
+
+# ---- issue 35: the surfaces added since (coco, rasterize, masks/labels, dask) ----
+
+def _misaligned(shape, dtype):
+    n = int(np.prod(shape)) * np.dtype(dtype).itemsize
+    return np.zeros(n + 1, np.uint8)[1:].view(dtype).reshape(shape)
+
+
+def _recursive_list():
+    a = [1.0, 2.0]
+    a.append(a)
+    return a
+
+
+HOSTILE = st.one_of(
+    st.none(), st.booleans(), st.complex_numbers(allow_nan=True), st.text(max_size=3), st.binary(max_size=4),
+    st.sampled_from([float("nan"), float("inf"), -float("inf"), 2 ** 64, -(2 ** 63) - 1, 10 ** 400, 2.0 ** 63,
+                     1e-320, 0, -1, 256]),
+    st.builds(_recursive_list), st.builds(dict), st.just({"size": [2, 2], "counts": [True, 3]}),
+    st.just({"size": [2 ** 32, 1], "counts": b""}), st.just({"size": [2, 2], "counts": "\x00\xff"}),
+    st.builds(lambda: _misaligned((4, 5), np.int32)), st.builds(lambda: np.zeros((4, 10))[:, ::2]),
+    st.builds(lambda: np.zeros((4, 5), np.complex128)), st.builds(lambda: np.array(["a", "b"])),
+    st.lists(st.one_of(st.floats(allow_nan=True), st.booleans(), st.integers()), max_size=6),
+    st.lists(st.lists(st.one_of(st.floats(-10, 10), st.booleans(), st.text(max_size=1)), max_size=6), max_size=3),
+)
+
+_SQ = {"type": "Polygon", "coordinates": [[(0, 0), (3, 0), (3, 3), (0, 3), (0, 0)]]}
+_RLE = {"size": [4, 5], "counts": b"61L0"}
+_RING = [np.array([[0, 0], [3, 0], [3, 3], [0, 3]], float)]
+
+
+def _surface():
+    from rastrum import coco
+    calls = {
+        "coco.encode": (coco.encode, [np.zeros((4, 5), np.uint8, order="F")]),
+        "coco.decode": (coco.decode, [_RLE]),
+        "coco.area": (coco.area, [[_RLE]]),
+        "coco.toBbox": (coco.toBbox, [[_RLE]]),
+        "coco.merge": (coco.merge, [[_RLE, _RLE]]),
+        "coco.iou": (coco.iou, [[_RLE], [_RLE], [0]]),
+        "coco.frPyObjects": (coco.frPyObjects, [[[0.0, 0.0, 3.0, 0.0, 3.0, 3.0]], 4, 5]),
+        "coco.rings": (coco.rings, [[[0.0, 0.0, 3.0, 0.0, 3.0, 3.0]]]),
+        "coco.polygons": (coco.polygons, [[[[0.0, 0.0, 3.0, 0.0, 3.0, 3.0]]]]),
+        "masks": (rastrum.masks, [[_RING], (4, 5)]),
+        "labels": (rastrum.labels, [[_RING], (4, 5)]),
+        "rasterize": (rastrum.rasterize, [[(_SQ, 1)], (4, 5)]),
+    }
+    return calls
+
+
+@settings(suppress_health_check=list(HealthCheck), deadline=None, max_examples=400)
+@given(st.sampled_from(sorted(_surface())), st.integers(0, 2), HOSTILE)
+def test_new_surfaces_take_anything(name, pos, bad):
+    fn, args = _surface()[name]
+    args = list(args)
+    pos = pos % len(args)
+    args[pos] = bad
+    try:
+        fn(*args)
+    except rastrum.InputError:
+        pass
+    except MemoryError:
+        pass  # a size the machine cannot hold, said before anything is written
+
+
+@settings(suppress_health_check=list(HealthCheck), deadline=None, max_examples=150)
+@given(HOSTILE, st.sampled_from(["decode", "rasterize"]))
+def test_new_surfaces_out_untouched(bad, which):
+    from rastrum import coco
+    out = np.full((4, 5), 7, np.uint8)
+    try:
+        if which == "decode":
+            coco.decode(bad, out=out)
+        else:
+            rastrum.rasterize([(bad, 1)], out=out)
+    except rastrum.InputError:
+        assert (out == 7).all()

@@ -13,9 +13,11 @@ set -uo pipefail
 mkdir -p "$FUZZ_LOG_DIR" build/fuzz-long-bin
 rev=$(git rev-parse --short HEAD 2>/dev/null)  # the sources the binaries are built from
 for t in "$@"; do
+  x=; [ "$t" = fuzz_seq ] && x=${FUZZ_PY:-}  # the embedded interpreter's flags
+  # shellcheck disable=SC2086
   "$FUZZ_CC" -std=c99 -Wall -Wextra -Werror -g -O1 -fsanitize=fuzzer,address,undefined \
     -fno-sanitize-recover=all -Icsrc/include -Icsrc/src -Itests/c tests/fuzz/$t.c csrc/src/*/*.c \
-    -o build/fuzz-long-bin/$t || exit 1
+    $x -lm -o build/fuzz-long-bin/$t || exit 1
 done
 run_one() {
   local t=$1 dir="$FUZZ_LOG_DIR/new_$1"

@@ -61,37 +61,48 @@ static int rastpy_rle_string(rastpy_bytes *b, const uint32_t *cnts, size_t m)
 }
 
 /* Parse string s[0..len) into cnts (room for len counts); the number of
- * counts, or -1 when the string is not an RLE. */
+ * counts, or -1 when the string is not an RLE: a character outside
+ * '0'..'o', a count that does not end or takes more than 7 groups (35
+ * bits: pycocotools writes at most 7 for its uint32 counts), or a count
+ * outside 0..2^32 - 1 (pycocotools would wrap it; here it is refused).
+ * Every shift and sum stays inside 64 bits whatever the bytes. */
 static long rastpy_rle_parse(const char *s, size_t len, uint32_t *cnts)
 {
     size_t p = 0, m = 0;
     while (p < len) {
-        int64_t x = 0;
-        int k = 0, more = 1;
+        uint64_t u = 0;
+        int64_t x;
+        int k = 0, c = 0, more = 1;
         while (more) {
-            int c;
-            if (p >= len || k > 12) return -1; /* a count that does not end */
+            if (p >= len || k == 7) return -1; /* a count that does not end */
             c = (unsigned char)s[p] - 48;
             if (c < 0 || c > 63) return -1;
-            x |= (int64_t)(c & 0x1f) << (5 * k);
+            u |= (uint64_t)(c & 0x1f) << (5 * k);
             more = c & 0x20;
             p++;
             k++;
-            if (!more && (c & 0x10)) x |= (int64_t)(~(((uint64_t)1 << (5 * k)) - 1));
         }
+        /* the last group's 0x10 is the sign of the 5 k-bit number */
+        x = (c & 0x10) ? (int64_t)u - ((int64_t)1 << (5 * k)) : (int64_t)u;
         if (m > 2) x += (int64_t)cnts[m - 2];
+        if (x < 0 || x > (int64_t)0xFFFFFFFFu) return -1;
         cnts[m++] = (uint32_t)x;
     }
     return (long)m;
 }
 
 /* All n strings parsed: counts of string k at (*cnts)[(*first)[k] ..
- * (*first)[k + 1]).  0, RASTPY_E_NOMEM, or RASTPY_E_RLE with *bad = k. */
-static long rastpy_rles(const char *strs, const size_t *offsets, uint32_t n, uint32_t **cnts,
+ * (*first)[k + 1]), each string's counts adding up to at most its h * w
+ * (sizes[2k] * sizes[2k + 1], or height * width for all when sizes is
+ * NULL) and at most 2^32 - 1, so that no uint32 sum of them wraps.  0, RASTPY_E_NOMEM, or RASTPY_E_RLE with *bad = k.  Every
+ * function that takes RLE strings reads them here: this is the one place
+ * their counts are judged. */
+static long rastpy_rles(const char *strs, const size_t *offsets, uint32_t n,
+                        const uint32_t *sizes, uint32_t height, uint32_t width, uint32_t **cnts,
                         size_t **first, uint32_t *bad)
 {
     uint32_t k;
-    size_t total = offsets[n] - offsets[0], at = 0;
+    size_t total = offsets[n] - offsets[0], at = 0, j;
     *cnts = (uint32_t *)malloc(total * sizeof(uint32_t) + 4);
     *first = (size_t *)malloc(((size_t)n + 1) * sizeof(size_t));
     if (!*cnts || !*first) {
@@ -101,8 +112,12 @@ static long rastpy_rles(const char *strs, const size_t *offsets, uint32_t n, uin
     }
     for (k = 0; k < n; k++) {
         long m = rastpy_rle_parse(strs + offsets[k], offsets[k + 1] - offsets[k], *cnts + at);
+        uint64_t area = sizes ? (uint64_t)sizes[2 * k] * sizes[2 * k + 1] : (uint64_t)height * width;
+        uint64_t sum = 0;
+        if (area > 0xFFFFFFFFu) area = 0xFFFFFFFFu; /* COCO's counts are uint32 */
         (*first)[k] = at;
-        if (m < 0) {
+        for (j = 0; m > 0 && j < (size_t)m; j++) sum += (*cnts)[at + j];
+        if (m < 0 || sum > area) {
             free(*cnts);
             free(*first);
             *bad = k;
@@ -428,17 +443,8 @@ long rastpy_coco_decode(const char *strs, const size_t *offsets, uint32_t n, uin
     uint32_t *cnts, k, bad = 0;
     size_t *first, j;
     uint64_t area = (uint64_t)height * width;
-    long st = rastpy_rles(strs, offsets, n, &cnts, &first, &bad);
+    long st = rastpy_rles(strs, offsets, n, NULL, height, width, &cnts, &first, &bad);
     if (st) return st;
-    for (k = 0; k < n; k++) {
-        uint64_t sum = 0;
-        for (j = first[k]; j < first[k + 1]; j++) sum += cnts[j];
-        if (sum > area) {
-            free(cnts);
-            free(first);
-            return RASTPY_E_RLE;
-        }
-    }
     for (k = 0; k < n; k++) {
         uint8_t *plane = out + (int64_t)k * sk;
         uint64_t p = 0;
@@ -501,11 +507,13 @@ static void rastpy_runs_start(rastpy_runs *r, const uint32_t *c, size_t m)
     r->v = 0;
 }
 
-/* Take n pixels (n <= left); at the end of a run, step to the next. */
+/* Take n pixels (n <= left); at the end of a run, step to the next that
+ * is not empty (a count of 0 inside a string is no run: pycocotools'
+ * loop would end there, short of the mask's end). */
 static void rastpy_runs_take(rastpy_runs *r, uint32_t n)
 {
     r->left -= n;
-    if (!r->left && r->i < r->m) {
+    while (!r->left && r->i < r->m) {
         r->left = r->c[r->i++];
         r->v = !r->v;
     }
@@ -515,7 +523,7 @@ static void rastpy_runs_take(rastpy_runs *r, uint32_t n)
  * that do not add up to the same total (pycocotools loops forever). */
 static int rastpy_runs_stuck(const rastpy_runs *a, const rastpy_runs *b, uint32_t took)
 {
-    return took == 0 && (uint32_t)(a->left + b->left) != 0 &&
+    return took == 0 && (uint64_t)a->left + b->left != 0 &&
            ((a->left == 0 && a->i >= a->m) || (b->left == 0 && b->i >= b->m));
 }
 
@@ -534,7 +542,7 @@ long rastpy_coco_merge(const char *strs, const size_t *offsets, uint32_t n,
         offsets_out[1] = 0;
         return 0;
     }
-    st = rastpy_rles(strs, offsets, n, &cnts, &first, &bad);
+    st = rastpy_rles(strs, offsets, n, sizes, 0, 0, &cnts, &first, &bad);
     if (st) return st;
     total = first[n];
     cap = total + 2;
@@ -551,7 +559,8 @@ long rastpy_coco_merge(const char *strs, const size_t *offsets, uint32_t n,
     for (i = 1; i < n; i++) {
         const uint32_t *B = cnts + first[i];
         size_t bm = first[i + 1] - first[i], mm = 0;
-        uint32_t cc = 0, ct = 1, c;
+        uint64_t cc = 0, ct = 1; /* 64 bits: two run ends pass 2^32 past 2^31 pixels */
+        uint32_t c;
         int v = 0, vp;
         rastpy_runs ra, rb;
         if (sizes[2 * i] != h || sizes[2 * i + 1] != w) {
@@ -566,7 +575,7 @@ long rastpy_coco_merge(const char *strs, const size_t *offsets, uint32_t n,
             cc += c;
             rastpy_runs_take(&ra, c);
             rastpy_runs_take(&rb, c);
-            ct = ra.left + rb.left;
+            ct = (uint64_t)ra.left + rb.left;
             vp = v;
             v = intersect ? (ra.v && rb.v) : (ra.v || rb.v);
             if (v != vp || ct == 0) {
@@ -574,7 +583,7 @@ long rastpy_coco_merge(const char *strs, const size_t *offsets, uint32_t n,
                     st = RASTPY_E_RLE;
                     goto done;
                 }
-                tmp[mm++] = cc;
+                tmp[mm++] = (uint32_t)cc; /* a run of one h * w mask */
                 cc = 0;
             }
             if (rastpy_runs_stuck(&ra, &rb, c)) {
@@ -603,11 +612,12 @@ done:
     return st;
 }
 
-long rastpy_coco_area(const char *strs, const size_t *offsets, uint32_t n, uint32_t *out)
+long rastpy_coco_area(const char *strs, const size_t *offsets, uint32_t n,
+                      const uint32_t *sizes, uint32_t *out)
 {
     uint32_t *cnts, k, bad = 0;
     size_t *first, j;
-    long st = rastpy_rles(strs, offsets, n, &cnts, &first, &bad);
+    long st = rastpy_rles(strs, offsets, n, sizes, 0, 0, &cnts, &first, &bad);
     if (st) return st;
     for (k = 0; k < n; k++) {
         uint32_t a = 0;
@@ -623,6 +633,7 @@ static void rastpy_bbox1(const uint32_t *cnts, size_t m, uint32_t h, uint32_t w,
 {
     uint32_t xs = w, ys = h, xe = 0, ye = 0, cc = 0;
     size_t j;
+    int any = 0;
     m = m / 2 * 2;
     if (m == 0 || h == 0) {
         bb[0] = bb[1] = bb[2] = bb[3] = 0;
@@ -632,6 +643,7 @@ static void rastpy_bbox1(const uint32_t *cnts, size_t m, uint32_t h, uint32_t w,
         uint32_t start = cc, y0, x0, y1, x1;
         cc += cnts[j];
         if (j % 2 == 0 || cnts[j] == 0) continue;
+        any = 1;
         y0 = start % h;
         x0 = (start - y0) / h;
         y1 = (cc - 1) % h;
@@ -646,6 +658,10 @@ static void rastpy_bbox1(const uint32_t *cnts, size_t m, uint32_t h, uint32_t w,
             if (y1 > ye) ye = y1;
         }
     }
+    if (!any) { /* only runs of 0 ones: no pixel, the empty box */
+        bb[0] = bb[1] = bb[2] = bb[3] = 0;
+        return;
+    }
     bb[0] = xs;
     bb[2] = (uint32_t)(xe - xs + 1);
     bb[1] = ys;
@@ -657,7 +673,7 @@ long rastpy_coco_bbox(const char *strs, const size_t *offsets, uint32_t n,
 {
     uint32_t *cnts, k, bad = 0;
     size_t *first;
-    long st = rastpy_rles(strs, offsets, n, &cnts, &first, &bad);
+    long st = rastpy_rles(strs, offsets, n, sizes, 0, 0, &cnts, &first, &bad);
     if (st) return st;
     for (k = 0; k < n; k++)
         rastpy_bbox1(cnts + first[k], first[k + 1] - first[k], sizes[2 * k], sizes[2 * k + 1],
@@ -701,9 +717,9 @@ long rastpy_coco_iou(const char *dstrs, const size_t *doffsets, const uint32_t *
     uint32_t *dc, *gc, bad = 0, g, d;
     size_t *df, *gf;
     double *db = NULL, *gb = NULL;
-    long st = rastpy_rles(dstrs, doffsets, m, &dc, &df, &bad);
+    long st = rastpy_rles(dstrs, doffsets, m, dsizes, 0, 0, &dc, &df, &bad);
     if (st) return st;
-    st = rastpy_rles(gstrs, goffsets, n, &gc, &gf, &bad);
+    st = rastpy_rles(gstrs, goffsets, n, gsizes, 0, 0, &gc, &gf, &bad);
     if (st) {
         free(dc);
         free(df);
@@ -722,7 +738,8 @@ long rastpy_coco_iou(const char *dstrs, const size_t *doffsets, const uint32_t *
         for (d = 0; d < m; d++) {
             const uint32_t *A = dc + df[d], *B = gc + gf[g];
             size_t ka = df[d + 1] - df[d], kb = gf[g + 1] - gf[g], j;
-            uint32_t c, ct = 1, in = 0, un = 0;
+            uint32_t c;
+            uint64_t ct = 1, in = 0, un = 0; /* 64 bits: right past 2^31 pixels */
             int crowd;
             rastpy_runs ra, rb;
             if (!(o[(size_t)g * m + d] > 0)) continue;
@@ -741,7 +758,7 @@ long rastpy_coco_iou(const char *dstrs, const size_t *doffsets, const uint32_t *
                 }
                 rastpy_runs_take(&ra, c);
                 rastpy_runs_take(&rb, c);
-                ct = ra.left + rb.left;
+                ct = (uint64_t)ra.left + rb.left;
                 if (rastpy_runs_stuck(&ra, &rb, c)) {
                     st = RASTPY_E_RLE; /* counts that do not add up */
                     goto done;

@@ -32,7 +32,8 @@ long rastpy_coco_decode(const char *strs, const size_t *offsets, uint32_t n, uin
 long rastpy_coco_merge(const char *strs, const size_t *offsets, uint32_t n,
                        const uint32_t *sizes, int intersect, char **data, size_t *offsets_out,
                        uint32_t *size_out);
-long rastpy_coco_area(const char *strs, const size_t *offsets, uint32_t n, uint32_t *out);
+long rastpy_coco_area(const char *strs, const size_t *offsets, uint32_t n,
+                      const uint32_t *sizes, uint32_t *out);
 long rastpy_coco_bbox(const char *strs, const size_t *offsets, uint32_t n,
                       const uint32_t *sizes, double *out);
 long rastpy_coco_iou(const char *dstrs, const size_t *doffsets, const uint32_t *dsizes,

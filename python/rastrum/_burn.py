@@ -75,17 +75,24 @@ def _polygons(target, px, ring_sizes, part_rings, values, merge, boundary, rule,
 
 
 def burn(target, px, ring_sizes, part_rings, kind, values, feature, geom, merge, all_touched, rule,
-         progress, origin=(0, 0)):
+         progress, origin=(0, 0), _fresh=False):
     """Burn every part in order (see the module's docstring).  feature: the
     index in shapes of each part (for progress); geom: the geometry it
     belongs to (a collection's members are geometries of their own).
     origin: the (row, column) of target's pixel (0, 0) in the pixel
     coordinates of px: target is that window of the whole raster, burnt
     with exactly the whole raster's pixels (rastrum.dask)."""
-    if not (target.flags.aligned and target.strides[1] == target.itemsize and target.strides[0] > 0):
-        work = np.ascontiguousarray(target)  # a transposed or reversed view: burn a copy
+    if not _fresh and (progress.active or not (target.flags.aligned and target.strides[1] == target.itemsize
+                                               and target.strides[0] > 0)):
+        # A transposed, reversed or misaligned view: burn a fresh (aligned,
+        # C-ordered) copy; np.ascontiguousarray would hand back a misaligned
+        # C-contiguous array itself.  With a progress callback too, so that
+        # `out` changes only after the last callback (a raising callback
+        # leaves it untouched, docs/bad-input.md).
+        work = np.empty(target.shape, target.dtype)
+        work[...] = target
         burn(work, px, ring_sizes, part_rings, kind, values, feature, geom, merge, all_touched, rule,
-             progress, origin)
+             progress, origin, True)
         target[...] = work
         return
     h, w = target.shape

@@ -303,6 +303,9 @@ class Canvas:
             raise InputError("depth must have the canvas's shape (H, W) = %s, not %s" % (shape, value.shape))
         if not value.flags.c_contiguous:
             raise InputError("depth must be C-contiguous (np.ascontiguousarray)")
+        if not value.flags.aligned:  # C loads int32 from it (a fault on strict-alignment CPUs)
+            raise InputError("depth must be aligned to 4 bytes (a view at an odd byte offset is not; "
+                             "np.require(depth, np.int32, 'CA') copies it)")
         if not value.flags.writeable:
             raise InputError("depth must be writable")
         return value

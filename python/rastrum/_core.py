@@ -247,6 +247,14 @@ def as_numpy(x):
     return x
 
 
+def has_bool(x):
+    """Is there a bool (Python's or numpy's) in the nested lists/tuples x?"""
+    types = set(map(type, x))
+    if bool in types or np.bool_ in types:
+        return True
+    return any(has_bool(v) for v in x if type(v) in (list, tuple)) if (list in types or tuple in types) else False
+
+
 def real_array(x, what, shape_text):
     """`x` as a float64 array, C-contiguous (a copy when it is not), or
     InputError naming `what`: coordinates must be real numbers (ints of any
@@ -261,6 +269,9 @@ def real_array(x, what, shape_text):
     except (TypeError, ValueError, OverflowError):  # e.g. ragged nesting
         raise InputError("%s must be %s of numbers" % (what, shape_text)) from None
     kind = a.dtype.kind
+    if kind in "iuf" and isinstance(x, (list, tuple)) and has_bool(x):
+        # numpy reads a bool among numbers as 0 / 1 (docs/bad-input.md)
+        raise InputError("%s must be %s of real numbers (int or float), not bools" % (what, shape_text))
     if kind == "O" or (kind == "f" and a.dtype.itemsize > 8):
         return _exact_array(a, what, shape_text)
     if kind not in "iuf":

@@ -265,6 +265,27 @@ def masks(polygons: Iterable[Any], shape: Shape, *, rule: BatchRule = "union",
     return out
 
 
+def _fit(v, dtype, default):
+    """Values v as dtype, each held exactly (as Canvas(format="label") and
+    rasterize refuse what their dtype cannot hold), or InputError."""
+    if dtype.kind in "iu":
+        info = np.iinfo(dtype)
+        if v.dtype.kind == "f":
+            bad = ~np.isfinite(v) | (v != np.floor(v)) | (v < info.min) | (v >= info.max + 1)
+        else:
+            bad = (v < info.min) | (v > info.max)
+    else:
+        with np.errstate(over="ignore"):
+            bad = np.isfinite(v) & ~np.isfinite(v.astype(dtype))
+    if bad.any():
+        k = int(np.argmax(bad))
+        if default:
+            raise InputError("labels: %d polygons need ids 1..%d; dtype %s holds at most %d (choose a "
+                             "wider dtype)" % (len(v), len(v), dtype, np.iinfo(dtype).max))
+        raise InputError("labels: values[%d] = %s does not fit dtype %s" % (k, v[k].item(), dtype))
+    return v.astype(dtype)
+
+
 @overload
 def labels(polygons: Iterable[Any], shape: Shape, values: Optional[npt.ArrayLike] = None,
            dtype: npt.DTypeLike = np.int32, *, overlap: Literal[False] = False, rule: BatchRule = "union",
@@ -292,7 +313,8 @@ def labels(polygons: Iterable[Any], shape: Shape, values: Optional[npt.ArrayLike
     Parameters
     ----------
     values : array_like, optional
-        One value per polygon, converted to `dtype` (as numpy casts).
+        One value per polygon, each one `dtype` holds exactly (else
+        InputError: 300 in uint8, -1 in uint8, 2.7 in an integer dtype).
     dtype : numpy dtype
         Of the label image: uint8 .. int64, float32, float64.
     overlap : bool
@@ -322,15 +344,15 @@ def labels(polygons: Iterable[Any], shape: Shape, values: Optional[npt.ArrayLike
     packed = _polygons(polygons, "labels")
     n = len(packed[2])
     if values is None:
-        vals = np.arange(1, n + 1).astype(dtype)
+        v = np.arange(1, n + 1)
     else:
         v = np.asarray(values)
         if v.shape != (n,):
             raise InputError("labels: values has shape %s; %s need%s shape (%d,)"
                              % (v.shape, _core.plural(n, "polygon"), "s" if n == 1 else "", n))
-        if v.dtype.kind not in "biuf":
+        if v.dtype.kind not in "iuf":
             raise InputError("labels: values must be numbers, not dtype %s" % v.dtype)
-        vals = v.astype(dtype)
+    vals = _fit(v, dtype, values is None)
     out = np.zeros((h, w), dtype)
     report = _progress(progress, n * (2 if overlap else 1))
     if rule == "coco":

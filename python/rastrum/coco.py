@@ -66,7 +66,8 @@ def _size(obj, k, what):
     size = obj["size"]
     if type(size) is list and len(size) == 2:
         h, w = size
-        if type(h) is int and type(w) is int and 0 <= h and 0 <= w and h * w <= 0xFFFFFFFF:
+        if type(h) is int and type(w) is int and 0 <= h <= 0xFFFFFFFF and 0 <= w <= 0xFFFFFFFF \
+                and h * w <= 0xFFFFFFFF:
             return h, w
     try:
         h, w = obj["size"]
@@ -74,7 +75,7 @@ def _size(obj, k, what):
     except Exception:
         raise InputError("%s: RLE %d has size %r; it must be [height, width], two ints"
                          % (what, k, obj.get("size"))) from None
-    if h < 0 or w < 0 or h * w > 0xFFFFFFFF:
+    if h < 0 or w < 0 or h * w > 0xFFFFFFFF or max(h, w) > 0xFFFFFFFF:  # [2**32, 0] too
         raise InputError("%s: RLE %d has size %r; h, w >= 0 and h * w < 2**32 are needed"
                          % (what, k, obj["size"]))
     return h, w
@@ -136,7 +137,10 @@ def _fr_counts(counts_lists, what):
 # ---- masks <-> RLE ----------------------------------------------------------
 
 def _mask_array(bimask, what):
-    a = bimask if isinstance(bimask, np.ndarray) else np.asarray(bimask)
+    try:
+        a = bimask if isinstance(bimask, np.ndarray) else np.asarray(bimask)
+    except (ValueError, TypeError, OverflowError):  # ragged lists
+        raise InputError("%s: masks must be uint8 or bool arrays, not %s" % (what, type(bimask).__name__)) from None
     if a.dtype != np.uint8 and a.dtype != np.bool_:
         raise InputError("%s: masks must be uint8 or bool arrays, not dtype %s" % (what, a.dtype))
     return a
@@ -156,8 +160,9 @@ def encode(bimask: npt.ArrayLike) -> Any:
     if single:
         a = a[:, :, None]
     h, w, n = a.shape
-    if h * w > 0xFFFFFFFF:
-        raise InputError("encode: h * w must be below 2**32 (COCO counts are uint32)")
+    if h * w > 0xFFFFFFFF or max(h, w) > 0xFFFFFFFF:  # (2**32, 0) too
+        raise InputError("encode: h, w and h * w must be below 2**32 (COCO counts are uint32), "
+                         "not shape %s" % (a.shape,))
     if a.dtype == np.bool_:
         a = a.view(np.uint8)
     data = ffi.new("char **")
@@ -204,7 +209,10 @@ def decode(rleObjs: Union[Mapping[str, Any], Sequence[Mapping[str, Any]]],
         target = out if not single else out[:, :, None]
         res = out
     ptr = ffi.cast("uint8_t *", target.__array_interface__["data"][0]) if target.size else ffi.NULL
-    if target.size:
+    if not target.size:  # nothing to write, but the counts are judged all the same
+        _glue(lib.rastpy_coco_area(strs, offsets, n, ffi.new("uint32_t[]", [h, w] * n),
+                                   ffi.new("uint32_t[]", n)), "decode")
+    else:
         _glue(lib.rastpy_coco_decode(strs, offsets, n, h, w, ptr,
                                      target.strides[0], target.strides[1], target.strides[2], 1),
               "decode")
@@ -225,10 +233,10 @@ def area(rleObjs: Union[Mapping[str, Any], Sequence[Mapping[str, Any]]]) -> Any:
     """Pixels inside each RLE (uint32), as ``pycocotools.mask.area``."""
     single = not isinstance(rleObjs, list)
     objs = [rleObjs] if single else rleObjs
-    strs, offsets, _, _ = _pack(objs, "area")
+    strs, offsets, sizes, _ = _pack(objs, "area")
     a = np.zeros(len(objs), np.uint32)
     if objs:
-        _glue(lib.rastpy_coco_area(strs, offsets, len(objs),
+        _glue(lib.rastpy_coco_area(strs, offsets, len(objs), sizes,
                                    ffi.from_buffer("uint32_t[]", a)), "area")
     return a[0] if single else a
 
@@ -263,12 +271,30 @@ def merge(rleObjs: Sequence[Mapping[str, Any]], intersect: Union[bool, int] = 0)
 
 
 def _boxes(objs, what):
-    a = np.array(objs, dtype=np.float64)
+    try:
+        a = np.array(objs, dtype=np.float64)
+    except (ValueError, TypeError, OverflowError):
+        raise InputError("iou: %s boxes must be (N, 4) [x, y, w, h] numbers" % what) from None
     if a.ndim == 1 and a.shape[0] == 4:
         a = a.reshape(1, 4)
     if a.ndim != 2 or a.shape[1] != 4:
         raise InputError("iou: %s boxes must be (N, 4) [x, y, w, h], not shape %s" % (what, a.shape))
     return np.ascontiguousarray(a)
+
+
+def _crowd(pyiscrowd):
+    """iscrowd as uint8 0/1: a list (or 1-D array) of bools or ints 0 and 1
+    (pycocotools' np.array(..., dtype=np.uint8) would wrap 256 to 0)."""
+    try:
+        a = np.asarray(pyiscrowd)
+    except (ValueError, TypeError):
+        a = None
+    if a is not None and a.size == 0:
+        return np.zeros(0, np.uint8)
+    if a is None or a.ndim > 1 or a.dtype.kind not in "biu" or (a.size and (a.min() < 0 or a.max() > 1)):
+        raise InputError("iou: iscrowd must be a list of 0/1 (or bools), one per gt object, not %r"
+                         % (pyiscrowd,))
+    return a.reshape(-1).astype(np.uint8)
 
 
 def iou(dt: Union[Sequence[Mapping[str, Any]], npt.ArrayLike], gt: Union[Sequence[Mapping[str, Any]], npt.ArrayLike],
@@ -292,7 +318,7 @@ def iou(dt: Union[Sequence[Mapping[str, Any]], npt.ArrayLike], gt: Union[Sequenc
         raise InputError("iou: %s must be a list or an (N, 4) array, not %s" % (what, type(objs).__name__))
     kd, d = kind(dt, "dt")
     kg, g = kind(gt, "gt")
-    crowd = np.array(pyiscrowd, dtype=np.uint8).reshape(-1)
+    crowd = _crowd(pyiscrowd)
     m, n = len(d), len(g)
     if len(crowd) != n:
         raise InputError("iou: iscrowd has %s for %s" % (_core.plural(len(crowd), "entry", "entries"),
@@ -318,9 +344,17 @@ def iou(dt: Union[Sequence[Mapping[str, Any]], npt.ArrayLike], gt: Union[Sequenc
 def _hw(h, w):
     h, w = _core.int_pair((h, w), "frPyObjects: h, w must be two ints, not %r",
                           "frPyObjects: h and w must be ints, not %r")
-    if h < 0 or w < 0 or h * w > 0xFFFFFFFF or max(h, w) > lib.RAST_MAX_DIM:
+    if h < 0 or w < 0 or h * w > 0xFFFFFFFF or max(h, w) > 0xFFFFFFFF:
         raise InputError("frPyObjects: h=%d, w=%d; h, w >= 0 and h * w < 2**32 are needed" % (h, w))
     return h, w
+
+
+def _poly_hw(h, w):
+    """Polygons and boxes go through the filler: sides up to RAST_MAX_DIM
+    (uncompressed RLEs take any h * w < 2**32, as pycocotools)."""
+    if max(h, w) > lib.RAST_MAX_DIM:
+        raise InputError("frPyObjects: h=%d, w=%d; polygons and boxes need h and w at most %d "
+                         "(uncompressed RLEs may be larger)" % (h, w, lib.RAST_MAX_DIM))
 
 
 def _flat(p, k):
@@ -399,7 +433,10 @@ def _fr_lists(parts, h, w, rule):
 
 
 def _box_polys(bb):
-    bb = np.asarray(bb, dtype=np.float64)
+    try:
+        bb = np.asarray(bb, dtype=np.float64)
+    except (ValueError, TypeError, OverflowError):
+        raise InputError("frPyObjects: boxes must be (N, 4) [x, y, w, h] numbers") from None
     if bb.ndim != 2 or bb.shape[1] != 4:
         raise InputError("frPyObjects: boxes must be (N, 4) [x, y, w, h], not shape %s" % (bb.shape,))
     xs, ys = bb[:, 0], bb[:, 1]
@@ -439,6 +476,7 @@ def frPyObjects(pyobj: Any, h: int, w: int, *, rule: Literal["coco", "exact"] = 
         raise InputError("frPyObjects: unknown rule %r; choose one of: coco, exact" % (rule,))
     h, w = _hw(h, w)
     if isinstance(pyobj, np.ndarray):
+        _poly_hw(h, w)
         return _fr_polys(_box_polys(pyobj), h, w, rule)
     if isinstance(pyobj, dict):
         if not _is_rle(pyobj):
@@ -454,6 +492,7 @@ def frPyObjects(pyobj: Any, h: int, w: int, *, rule: Literal["coco", "exact"] = 
                 raise InputError("frPyObjects: item %d is not an RLE dict like item 0" % k)
         strs = _fr_counts([o["counts"] for o in pyobj], "frPyObjects")
         return _objs(strs, [_size(o, k, "frPyObjects") for k, o in enumerate(pyobj)])
+    _poly_hw(h, w)
     if np.ndim(first) == 0:  # one flat polygon or one box
         if len(pyobj) == 4:
             return _fr_polys(_box_polys([pyobj]), h, w, rule)[0]
@@ -480,8 +519,11 @@ def rings(segmentation: Any) -> List[npt.NDArray[np.float64]]:
         segmentation = [segmentation]
     out = []
     for k, p in enumerate(segmentation):
-        a = np.asarray(p) if type(p) is list else None
-        if a is not None and a.dtype is _F64 and a.ndim == 1:  # the usual: floats, quickly
+        try:
+            a = np.asarray(p) if type(p) is list else None
+        except (ValueError, TypeError, OverflowError):  # ragged: real_array names it
+            a = None
+        if a is not None and a.dtype is _F64 and a.ndim == 1 and not _core.has_bool(p):  # the usual: floats
             out.append(a.reshape(-1, 2) if not a.shape[0] & 1 else a[:-1].reshape(-1, 2))
             continue
         a = _core.real_array(p, "rings: part %d" % k, "a flat [x0, y0, x1, y1, ...] list")

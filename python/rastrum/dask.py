@@ -209,7 +209,7 @@ def _chunks(chunks, shape, dt):
                          "or dask's forms ((rows, ...), (columns, ...)) or 'auto'")
     try:
         norm = da.core.normalize_chunks(chunks, shape=shape, dtype=dt)
-    except (ValueError, TypeError) as e:
+    except (ValueError, TypeError, ArithmeticError) as e:  # chunks=0: dask divides by it
         raise InputError("chunks %r do not fit out_shape %r: %s" % (chunks, shape, e)) from None
     if len(norm) != 2 or tuple(map(sum, norm)) != tuple(shape):
         raise InputError("chunks %r do not fit out_shape %r: the rows' and columns' chunks must sum "

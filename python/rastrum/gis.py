@@ -60,6 +60,13 @@ def _transform6(transform) -> Tuple[float, ...]:
     if len(values) != 6:
         raise InputError("transform must be 6 numbers (a, b, c, d, e, f) in Affine order, not %d "
                          "(a GDAL geotransform: affine.Affine.from_gdal(*gt))" % len(values))
+    if (len(values) == 6 and not hasattr(transform, "to_gdal") and values[2] == values[4] == 0
+            and values[1] > 0 and values[5] < 0):
+        # rasterio's guard_transform: (c, a, b, f, d, e) in GDAL's order
+        # would burn nothing (column scale 0), silently
+        raise InputError("transform %r looks like a GDAL geotransform (c, a, b, f, d, e); rastrum, as "
+                         "rasterio, takes Affine order (a, b, c, d, e, f): "
+                         "affine.Affine.from_gdal(*gt)" % (tuple(values),))
     out = []
     for v in values:
         if isinstance(v, (bool, np.bool_)) or not isinstance(v, numbers.Real):
@@ -77,7 +84,10 @@ def _inverse(t6):
     y*ry, each evaluated left to right in float64."""
     a, b, c, d, e, f = t6
     if b == 0.0 and d == 0.0 and a != 0.0 and e != 0.0:  # north-up: no determinant
-        return (-c / a, 1.0 / a, 0.0, -f / e, 0.0, 1.0 / e)
+        out = (-c / a, 1.0 / a, 0.0, -f / e, 0.0, 1.0 / e)
+        if not all(math.isfinite(v) for v in out):  # a = 1e-320: 1 / a is infinite
+            raise InputError("transform %r: its inverse is not finite" % (t6,))
+        return out
     det = a * e - b * d
     mag = max(abs(a), abs(b), abs(d), abs(e))
     if not abs(det) > 1e-10 * mag * mag:
@@ -159,7 +169,9 @@ def _values(vals, dt):
                     ok &= ~(np.abs(a) > float(np.finfo(np.float32).max)) | ~np.isfinite(a)
             else:
                 info = np.iinfo(dt)
-                ok &= (a == np.floor(a)) & (a >= info.min) & (a <= info.max)
+                # max + 1 (a power of two) is exact in float64; info.max is
+                # not for 64 bits (2^63 - 1 rounds to 2^63, which wrapped)
+                ok &= (a == np.floor(a)) & (a >= info.min) & (a < info.max + 1)
             if ok.all():
                 return a.astype(dt)
         elif a.dtype.kind in "iu":
@@ -210,6 +222,9 @@ def _type_name(t):
     return t if isinstance(t, str) else repr(t)
 
 
+_MAX_NESTING = 100  # GeometryCollections in GeometryCollections, far below Python's recursion limit
+
+
 def _add_geometry(flat, geom, index, depth=0):
     what = "shapes: feature %d" % index
     if hasattr(geom, "__geo_interface__"):
@@ -227,6 +242,9 @@ def _add_geometry(flat, geom, index, depth=0):
         members = list(members)
         if not members:
             raise InputError("%s: empty GeometryCollection" % what)
+        if depth >= _MAX_NESTING:  # a collection holding itself, or nested past any real use
+            raise InputError("%s: GeometryCollection nested more than %d deep (or holding itself)"
+                             % (what, _MAX_NESTING))
         for g in members:
             _add_geometry(flat, g, index, depth + 1)
         return

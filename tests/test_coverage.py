@@ -1,4 +1,4 @@
-"""Anti-aliased coverage (DESIGN.md section 1a) against the exact oracles of
+"""Anti-aliased coverage (docs/semantics.md, coverage) against the exact oracles of
 tests/oracle_coverage.py: "area" within its documented bound of
 floor(a*M + 1/2) (|out - M a| <= 1/2 everywhere), every "ssK" bit for bit,
 "accumulate" where nothing overlaps, triangle batches as one region."""

@@ -1,6 +1,6 @@
 """Hand-computed checks of the reference oracle (no rastrum involved).
 
-Every expected mask here was worked out by hand from DESIGN.md section 1
+Every expected mask here was worked out by hand from the rule of docs/semantics.md
 (crossings written as exact fractions in the comments), or follows from a
 closed-form description that is independent of the oracle's algorithm.
 """

@@ -1,4 +1,4 @@
-"""rastrum.polygon_mask equals the exact oracle bit for bit (DESIGN.md s.1)."""
+"""rastrum.polygon_mask equals the exact oracle bit for bit (docs/semantics.md)."""
 
 import math
 

@@ -1,4 +1,4 @@
-"""Properties of DESIGN.md section 1 checked on rastrum directly:
+"""Properties of the rule (docs/semantics.md) checked on rastrum directly:
 watertightness, order-freedom, translation by whole pixels, and agreement
 of all algorithms."""
 

@@ -1,4 +1,4 @@
-"""Triangle batches equal the exact oracle bit for bit (DESIGN.md s.1): each
+"""Triangle batches equal the exact oracle bit for bit (docs/semantics.md): each
 triangle owns what the polygon rule gives it as a one-ring polygon."""
 
 import doctest

@@ -21,7 +21,7 @@ from hypothesis import given, settings, strategies as st
 
 import oracle_coverage as oc
 import rastrum
-from rastrum import zonal
+from rastrum import _zonal as zonal
 from rastrum import gis
 import strategies as S_
 

@@ -22,7 +22,7 @@ WHY = {
     "test": "the test runner and the property-based tests",
     "gis": "rastrum.rasterize's optional inputs: shapely geometries, affine transforms, tqdm progress bars",
     "compat-test": "the peers the compatibility tests compare with pixel for pixel: rasterio "
-                   "(rasterize), geopandas, pycocotools (rastrum.coco)",
+                   "(rasterize), geopandas, pycocotools (rastrum.coco), exactextract (zonal_stats)",
     "dask": "rastrum.dask: lazy Dask arrays, dask-geopandas input, a LocalCluster, xarray output",
     "bench": "the benchmarks' peers (make bench)",
     "docs": "the documentation site (make docs)",

@@ -50,7 +50,7 @@ ALGORITHMS["triangles_count"] = ALGORITHMS["triangles_mask"]
 ALGORITHMS["Canvas.fill_triangles"] = ALGORITHMS["triangles_mask"]
 # Lines have no fill rules.
 ALGORITHMS["Canvas.line"] = {"bresenham": (), "dda": ()}
-# Coverage: the methods (DESIGN.md section 1a) and the rules each takes;
+# Coverage: the methods (docs/semantics.md, coverage) and the rules each takes;
 # a triangle batch is one region (a union), whatever the rule.
 ALGORITHMS["polygon_coverage"] = {name: ("evenodd", "nonzero") for name in _COVERAGE_METHODS}
 ALGORITHMS["triangles_coverage"] = {name: ("evenodd", "nonzero") for name in _COVERAGE_METHODS}

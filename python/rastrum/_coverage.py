@@ -1,7 +1,7 @@
 """Anti-aliased coverage: ``polygon_coverage`` and ``triangles_coverage``.
 
 The coverage of a pixel is the area of the part of its square that is
-inside (DESIGN.md section 1a, docs/coverage.md).  Thin, like the rest: check
+inside (docs/semantics.md, docs/coverage.md).  Thin, like the rest: check
 the arguments, hand the float vertices to one C call (which snaps them
 exactly and writes the whole array without the GIL), turn statuses into
 exceptions.  Nothing is returned half-written.

@@ -14,7 +14,7 @@ import numpy.typing as npt
 
 from . import _core
 from ._core import InputError, RastrumError
-from ._typing import Boundary, PolygonAlgorithm, Rings, Rounding, Rule, Shape
+from ._typing import Boundary, PolygonAlgorithm, PathRings, Rounding, Rule, Shape
 from ._native import lib as _lib
 from ._canvas import Canvas
 from ._lines import line_pixels, point_in_triangle
@@ -63,7 +63,7 @@ ALGORITHMS["triangles_coverage"] = {name: ("evenodd", "nonzero") for name in _CO
 AA_METHODS = {entry: {name: ("evenodd", "nonzero") for name in _COVERAGE_METHODS}
               for entry in _AA_ENTRIES}
 
-def polygon_mask(rings: Rings, shape: Shape, *, rule: Rule = "evenodd", algorithm: PolygonAlgorithm = "aet",
+def polygon_mask(rings: PathRings, shape: Shape, *, rule: Rule = "evenodd", algorithm: PolygonAlgorithm = "aet",
                  subpixel_bits: int = 8, sample_offset: float = 0.5, rounding: Rounding = "exact",
                  boundary: Boundary = "exact") -> npt.NDArray[np.bool_]:
     """Rasterise a polygon into a boolean mask.

@@ -17,7 +17,7 @@ import numpy.typing as npt
 from . import _core
 from ._core import InputError
 from ._native import ffi, lib
-from ._typing import CoverageMethod, Rings, Rule, Shape
+from ._typing import CoverageMethod, PathRings, Rule, Shape
 from ._triangles import tris_f64
 from ._path import Path
 
@@ -229,7 +229,7 @@ def _finish(raw, d):
     return out if d == _F64 else out.astype(d)
 
 
-def polygon_coverage(rings: Rings, shape: Shape, *, rule: Rule = "evenodd", method: CoverageMethod = "area",
+def polygon_coverage(rings: PathRings, shape: Shape, *, rule: Rule = "evenodd", method: CoverageMethod = "area",
                      subpixel_bits: int = 8, sample_offset: float = 0.5,
                      dtype: npt.DTypeLike = np.uint8) -> npt.NDArray[Any]:
     """How much of each pixel a polygon covers.

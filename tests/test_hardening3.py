@@ -83,7 +83,7 @@ def test_finding7_counts_past_hw():
 # ---- finding 1: a misaligned depth buffer ---------------------------------------
 
 def test_finding1_misaligned_depth():
-    c = rastrum.Canvas(10, 8, format="gray8")
+    c = rastrum.Canvas((8, 10), format="gray8")
     raw = np.zeros(8 * 10 * 4 + 1, np.uint8)[1:]
     d = raw.view(np.int32).reshape(8, 10)
     assert not d.flags.aligned and d.flags.c_contiguous

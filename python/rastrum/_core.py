@@ -589,8 +589,9 @@ def packed_rings(rings):
             return None
         if pts.shape[1] != 2:
             return None
-        if pts.dtype != _F64:
-            pts = pts.astype(_F64)
+        # numpy keeps the inputs' layout: Fortran-ordered rings join into a
+        # Fortran-ordered array, which the C call cannot take as it is.
+        pts = np.ascontiguousarray(pts, _F64)
     else:
         pts = np.frombuffer(raw, _F64).reshape(-1, 2)
     if len(pts) > lib.RAST_MAX_POINTS:

@@ -1518,8 +1518,8 @@ static void rast__cov_row_groups(rast__cells *c, rast__cedge *e, int32_t *row, i
                 if (h > hi) hi = h;
                 continue;
             }
-            if (r < nrun && rast__grp_col(c, (int64_t)e[rs[r]].hx0 << (QF - (G - c->h))) <= hi) {
-                const int32_t h = rast__grp_col(c, (int64_t)e[rs[r]].hx1 << (QF - (G - c->h)));
+            if (r < nrun && rast__grp_col(c, (int64_t)e[rs[r]].hx0 * ((int64_t)1 << (QF - (G - c->h)))) <= hi) {
+                const int32_t h = rast__grp_col(c, (int64_t)e[rs[r]].hx1 * ((int64_t)1 << (QF - (G - c->h))));
                 if (h > hi) hi = h; /* a run joins the group */
                 r++;
                 g--;

@@ -12,66 +12,12 @@
 #include <string.h>
 
 #include "check.h"
+#include "curve_ref.h"
 #include "rastrum.h"
 
 #define MAXP 200000
 static rast_point pts[MAXP];
 static uint32_t rings[1024];
-
-/* floor(sqrt(v)) by bisection: written apart from the library's. */
-static uint64_t isqrt_test(uint64_t v)
-{
-    uint64_t lo = 0, hi = 1u << 31;
-    while (lo < hi) {
-        uint64_t mid = (lo + hi + 1) / 2;
-        if (mid * mid <= v) lo = mid; else hi = mid - 1;
-    }
-    return lo;
-}
-
-/* squared distance from (px, py) to segment ab */
-static long double seg_dist(long double px, long double py, rast_point a, rast_point b)
-{
-    long double dx = (long double)b.x - a.x, dy = (long double)b.y - a.y;
-    long double l2 = dx * dx + dy * dy, t = 0;
-    if (l2 > 0) t = ((px - a.x) * dx + (py - a.y) * dy) / l2;
-    if (t < 0) t = 0;
-    if (t > 1) t = 1;
-    dx = a.x + t * dx - px;
-    dy = a.y + t * dy - py;
-    return dx * dx + dy * dy;
-}
-
-static void bez(const rast_point *q, int d, long double t, long double *x, long double *y)
-{
-    long double s = 1 - t;
-    if (d == 2) {
-        *x = s * s * q[0].x + 2 * s * t * q[1].x + t * t * q[2].x;
-        *y = s * s * q[0].y + 2 * s * t * q[1].y + t * t * q[2].y;
-    } else {
-        *x = s * s * s * q[0].x + 3 * s * s * t * q[1].x + 3 * s * t * t * q[2].x + t * t * t * q[3].x;
-        *y = s * s * s * q[0].y + 3 * s * s * t * q[1].y + 3 * s * t * t * q[2].y + t * t * t * q[3].y;
-    }
-}
-
-/* The formula of rastrum.h, written out again. */
-static uint32_t want_edges(const rast_point *q, int d, int32_t tol)
-{
-    uint64_t dd = 0, m, need, qq = 4 * (uint64_t)tol - 3, n;
-    int k;
-    for (k = 0; k + 2 <= d; k++) {
-        int64_t dx = (int64_t)q[k].x - 2 * (int64_t)q[k + 1].x + q[k + 2].x;
-        int64_t dy = (int64_t)q[k].y - 2 * (int64_t)q[k + 1].y + q[k + 2].y;
-        uint64_t s = (uint64_t)(dx * dx + dy * dy);
-        if (s > dd) dd = s;
-    }
-    m = isqrt_test(dd);
-    if (m * m < dd) m++;
-    need = ((d == 3 ? 3 : 1) * m + qq - 1) / qq;
-    n = isqrt_test(need);
-    if (n * n < need) n++;
-    return n ? (uint32_t)n : 1;
-}
 
 /* Flatten one curve from q[0]; check the bound by sampling both ways. */
 static void check_curve(const rast_point *q, int d, int32_t tol, int samples)
@@ -86,7 +32,7 @@ static void check_curve(const rast_point *q, int d, int32_t tol, int samples)
     path.points = q;
     path.npoints = (uint32_t)d + 1;
     CHECK(rast_path_flatten_size(&path, tol, &np, &nr) == RAST_OK);
-    CHECK(nr == 1 && np == 1 + want_edges(q, d, tol));
+    CHECK(nr == 1 && np == 1 + ref_edges(q, d, tol));
     if (np > MAXP) return;
     CHECK(rast_path_flatten(&path, tol, pts, MAXP, rings, 1024, &poly) == RAST_OK);
     CHECK(poly.nrings == 1 && rings[0] == np && poly.points == pts);
@@ -96,15 +42,15 @@ static void check_curve(const rast_point *q, int d, int32_t tol, int samples)
         long double t = (long double)j / samples, x, y, best;
         uint32_t e = (uint32_t)(t * (np - 1));
         if (e >= np - 1) e = np - 2;
-        bez(q, d, t, &x, &y);
-        best = seg_dist(x, y, pts[e], pts[e + 1]);
+        ref_bezier(q, d, t, &x, &y);
+        best = ref_seg_d2(x, y, pts[e], pts[e + 1]);
         if (best > worst) worst = best;
     }
     /* polyline -> curve: each vertex and edge midpoint near the curve at
      * its own parameter (the proof's correspondence) */
     for (i = 0; i + 1 < np; i++) {
         long double t = ((long double)i + 0.5L) / (np - 1), x, y, mx, my, dist;
-        bez(q, d, t, &x, &y);
+        ref_bezier(q, d, t, &x, &y);
         mx = ((long double)pts[i].x + pts[i + 1].x) / 2;
         my = ((long double)pts[i].y + pts[i + 1].y) / 2;
         dist = (x - mx) * (x - mx) + (y - my) * (y - my);
@@ -258,7 +204,7 @@ static void test_minimal(void)
             q[j].x = rnd_coord(100000);
             q[j].y = rnd_coord(100000);
         }
-        n = want_edges(q, d, tol);
+        n = ref_edges(q, d, tol);
         for (j = 0; j + 2 <= d; j++) {
             long double dx = (long double)q[j].x - 2.0L * q[j + 1].x + q[j + 2].x;
             long double dy = (long double)q[j].y - 2.0L * q[j + 1].y + q[j + 2].y;
@@ -270,7 +216,7 @@ static void test_minimal(void)
         CHECK(c * c * dd <= rhs * rhs);
         /* n - 1 fails even with M rounded up to the next integer, m + 1 */
         if (n > 1) {
-            long double m1 = (long double)isqrt_test((uint64_t)dd) + 1;
+            long double m1 = (long double)ref_isqrt((uint64_t)dd) + 1;
             rhs = (long double)(n - 1) * (n - 1) * (4.0L * tol - 3);
             CHECK(c * m1 > rhs);
         }

@@ -12,64 +12,13 @@
  * in rational arithmetic is tests/test_path.py).
  */
 #include "fuzz.h"
+#include "curve_ref.h"
 
 #define FP_MAXV 12
 #define FP_MAXOUT 30000
 
 static rast_point out[FP_MAXOUT];
 static uint32_t rings[FP_MAXV + 1];
-
-static uint64_t isqrt_ref(uint64_t v)
-{
-    uint64_t lo = 0, hi = 1u << 31;
-    while (lo < hi) {
-        uint64_t mid = (lo + hi + 1) / 2;
-        if (mid * mid <= v) lo = mid; else hi = mid - 1;
-    }
-    return lo;
-}
-
-static uint32_t edges_ref(const rast_point *q, int d, int32_t tol)
-{
-    uint64_t dd = 0, m, need, qq = 4 * (uint64_t)tol - 3, n;
-    int k;
-    for (k = 0; k + 2 <= d; k++) {
-        int64_t dx = (int64_t)q[k].x - 2 * (int64_t)q[k + 1].x + q[k + 2].x;
-        int64_t dy = (int64_t)q[k].y - 2 * (int64_t)q[k + 1].y + q[k + 2].y;
-        uint64_t s = (uint64_t)(dx * dx + dy * dy);
-        if (s > dd) dd = s;
-    }
-    m = isqrt_ref(dd);
-    if (m * m < dd) m++;
-    need = ((d == 3 ? 3 : 1) * m + qq - 1) / qq;
-    n = isqrt_ref(need);
-    if (n * n < need) n++;
-    return n ? (uint32_t)n : 1;
-}
-
-static void bez(const rast_point *q, int d, long double t, long double *x, long double *y)
-{
-    long double s = 1 - t;
-    if (d == 2) {
-        *x = s * s * q[0].x + 2 * s * t * q[1].x + t * t * q[2].x;
-        *y = s * s * q[0].y + 2 * s * t * q[1].y + t * t * q[2].y;
-    } else {
-        *x = s * s * s * q[0].x + 3 * s * s * t * q[1].x + 3 * s * t * t * q[2].x + t * t * t * q[3].x;
-        *y = s * s * s * q[0].y + 3 * s * s * t * q[1].y + 3 * s * t * t * q[2].y + t * t * t * q[3].y;
-    }
-}
-
-static long double seg_d2(long double px, long double py, rast_point a, rast_point b)
-{
-    long double dx = (long double)b.x - a.x, dy = (long double)b.y - a.y;
-    long double l2 = dx * dx + dy * dy, t = 0;
-    if (l2 > 0) t = ((px - a.x) * dx + (py - a.y) * dy) / l2;
-    if (t < 0) t = 0;
-    if (t > 1) t = 1;
-    dx = a.x + t * dx - px;
-    dy = a.y + t * dy - py;
-    return dx * dx + dy * dy;
-}
 
 /* The curve q[0..d] flattened into w[0..n] at tolerance tol: the bound. */
 static void check_curve(const rast_point *q, int d, const rast_point *w, uint32_t n, int32_t tol)
@@ -80,11 +29,11 @@ static void check_curve(const rast_point *q, int d, const rast_point *w, uint32_
     for (i = 0; i < n; i += step) {
         long double x, y;
         int j;
-        bez(q, d, (long double)i / n, &x, &y);
+        ref_bezier(q, d, (long double)i / n, &x, &y);
         FZ_ASSERT((x - w[i].x) * (x - w[i].x) + (y - w[i].y) * (y - w[i].y) <= 0.5L + 1e-6L);
         for (j = 0; j <= 8; j++) {
-            bez(q, d, ((long double)i + j / 8.0L) / n, &x, &y);
-            FZ_ASSERT(seg_d2(x, y, w[i], w[i + 1]) <= t2);
+            ref_bezier(q, d, ((long double)i + j / 8.0L) / n, &x, &y);
+            FZ_ASSERT(ref_seg_d2(x, y, w[i], w[i + 1]) <= t2);
         }
     }
 }
@@ -154,7 +103,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
                 if (!open) { want_nr++; want_np++; open = 1; }
                 q[0] = cur;
                 for (j = 1; j <= (v == RAST_PATH_LINE ? 1 : v); j++) q[j] = *p++;
-                want_np += v == RAST_PATH_LINE ? 1 : edges_ref(q, v, tol);
+                want_np += v == RAST_PATH_LINE ? 1 : ref_edges(q, v, tol);
                 cur = q[v == RAST_PATH_LINE ? 1 : v];
             }
         }
@@ -202,7 +151,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
                     FZ_ASSERT(out[o].x == q[1].x && out[o].y == q[1].y);
                     o++;
                 } else {
-                    uint32_t n = edges_ref(q, d, tol);
+                    uint32_t n = ref_edges(q, d, tol);
                     check_curve(q, d, out + o - 1, n, tol);
                     o += n;
                 }

@@ -29,11 +29,15 @@ one process; the machine may be noisy: compare ratios within one run.
 
 import argparse
 import math
-import time
+import sys
+import os
 
 import numpy as np
 
 import rastrum
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from timing import median_s  # noqa: E402
 
 # ---- scenes -------------------------------------------------------------------
 
@@ -326,17 +330,8 @@ AREA_MAX_EDGES = 20000
 
 
 def median_ms(f, reps, warm=3):
-    """Median of reps timed calls of f, after `warm` untimed ones (every
-    method and peer alike: the first calls of a process run slower, and
-    the first scene's first method paid for it)."""
-    for _ in range(warm):
-        f()
-    ts = []
-    for _ in range(reps):
-        t = time.perf_counter()
-        f()
-        ts.append(time.perf_counter() - t)
-    return sorted(ts)[len(ts) // 2] * 1e3
+    """Median of reps timed calls of f in ms, after `warm` untimed ones."""
+    return median_s(f, reps, warm) * 1e3
 
 
 def main():

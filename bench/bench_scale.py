@@ -34,13 +34,13 @@ import math
 import multiprocessing
 import os
 import sys
-import time
 
 import numpy as np
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 
 import families  # noqa: E402
+from timing import median_s  # noqa: E402
 import rastrum  # noqa: E402
 
 METHODS = ("binary", "accumulate", "ss4", "area")
@@ -225,17 +225,6 @@ def within_limit(f, limit):
         p.join()
         return False
     return p.exitcode == 0
-
-
-def median_s(f, reps, warm=1):
-    for _ in range(warm):
-        f()
-    ts = []
-    for _ in range(reps):
-        t = time.perf_counter()
-        f()
-        ts.append(time.perf_counter() - t)
-    return sorted(ts)[len(ts) // 2]
 
 
 # ---- runs ---------------------------------------------------------------------------

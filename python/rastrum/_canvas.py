@@ -13,6 +13,7 @@ from . import _shading
 from . import _triangles
 from ._core import InputError
 from ._native import ffi, lib
+from ._path import path_rings
 from ._typing import (Boundary, Color, CoverageMethod, Format, LineAlgorithm, Point, PolygonAlgorithm, Precision,
                       Rings, Rounding, Rule, Shading, Shape, TriangleAlgorithm)
 
@@ -382,10 +383,12 @@ class Canvas:
                      algorithm: PolygonAlgorithm = "aet", subpixel_bits: int = 8, sample_offset: float = 0.5,
                      rounding: Rounding = "exact", boundary: Boundary = "exact",
                      vertex_colors: Optional[npt.ArrayLike] = None, shading: Shading = "gouraud",
-                     precision: Precision = "exact", aa: Optional[CoverageMethod] = None) -> None:
+                     precision: Precision = "exact", aa: Optional[CoverageMethod] = None,
+                     tolerance: Optional[float] = None) -> None:
         """Paint `color` on every pixel whose sample is inside the polygon.
 
-        Arguments as :func:`rastrum.polygon_mask`.  Nothing is written when
+        Arguments as :func:`rastrum.polygon_mask` (`rings` may be a Path, a
+        matplotlib Path or a shapely polygon; `tolerance` flattens a Path).  Nothing is written when
         an argument is bad (an InputError says which; see the class).
 
         With `aa` (one of ``AA_METHODS["Canvas.fill_polygon"]``: "area",
@@ -416,6 +419,8 @@ class Canvas:
         # must draw: subpixel_bits above 16, coordinates past the 32-bit
         # range); anything else, or an error status, takes the general path
         # below, which checks and says what is wrong.
+        if tolerance is not None or not isinstance(rings, (list, tuple, _ndarray)):  # docs/paths.md
+            rings = path_rings(rings, subpixel_bits, tolerance)
         if aa is None and vertex_colors is None:
             if algorithm is _AET and rule is _EVENODD and subpixel_bits is _S8 and sample_offset is _HALF \
                     and rounding is _EXACT and boundary is _EXACT:

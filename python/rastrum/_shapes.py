@@ -99,7 +99,7 @@ def ellipse(cx: float, cy: float, rx: float, ry: float, *, rotation: float = 0.0
     >>> import rastrum
     >>> m = rastrum.polygon_mask(rastrum.Path.ellipse(4, 3, 4, 3), (6, 8))
     >>> int(m.sum())
-    38
+    36
     """
     cx, cy = _real(cx, "cx"), _real(cy, "cy")
     rx, ry = _radius(rx, "rx"), _radius(ry, "ry")

@@ -271,3 +271,20 @@ def test_bad_input_draws_nothing():
         with pytest.raises(InputError, match=words):
             call()
         assert not c.array.any()
+
+
+def test_shapely_polygons_are_accepted_by_every_fill():
+    shapely = pytest.importorskip("shapely")
+    ring = shapely.Point(10, 10).buffer(6).difference(shapely.Point(10, 10).buffer(3))
+    g = shapely.MultiPolygon([ring, shapely.box(0, 0, 2, 2)])
+    rings = [np.asarray(r.coords) for p in g.geoms for r in [p.exterior, *p.interiors]]
+    shape = (20, 20)
+    want = oracle_mask(rings, shape)
+    assert (rastrum.polygon_mask(g, shape) == want).all()
+    assert (rastrum.masks([g], shape)[0] == want).all()
+    assert (rastrum.labels([g], shape) == want).all()
+    cov = rastrum.polygon_coverage(rings, shape)
+    assert (rastrum.polygon_coverage(g, shape) == cov).all()
+    c = Canvas(shape, format="gray8")
+    c.fill_polygon(g, 255, aa="area")
+    assert (c.array == cov).all()

@@ -288,3 +288,18 @@ def test_shapely_polygons_are_accepted_by_every_fill():
     c = Canvas(shape, format="gray8")
     c.fill_polygon(g, 255, aa="area")
     assert (c.array == cov).all()
+
+
+@given(x0=st.floats(1, 5), y0=st.floats(1, 5), w=st.floats(2, 20), h=st.floats(2, 14), r=st.floats(0, 8),
+       start=st.floats(-360, 360), sweep=st.floats(1, 359))
+def test_areas_of_rounded_rectangles_and_pie_slices(x0, y0, w, h, r, start, sweep):
+    """'area' coverage (exact for the flattened path) against the closed
+    forms: w h - (4 - pi) r^2 (r clamped), and sweep/2 r^2, within the
+    perimeter x bound."""
+    tol = Path.DEFAULT_TOLERANCE
+    rr = min(r, w / 2, h / 2)
+    cov = rastrum.polygon_coverage(Path.rounded_rectangle(x0, y0, x0 + w, y0 + h, r), (22, 28), dtype=np.float64)
+    assert abs(cov.sum() - (w * h - (4 - math.pi) * rr * rr)) <= 2 * (w + h) * _bound(tol)
+    rad = 9.0
+    cov = rastrum.polygon_coverage(Path.pieslice(12, 12, rad, rad, start, start + sweep), (24, 24), dtype=np.float64)
+    assert abs(cov.sum() - math.radians(sweep) / 2 * rad * rad) <= (2 * rad + math.radians(sweep) * rad) * _bound(tol)

@@ -480,6 +480,23 @@ def render_coverage(out: Path, size=40, scale=8):
     return [path]
 
 
+def render_paths(out: Path):
+    """Curves, strokes, text and a gauge, exact, beside Blend2D and cairo
+    with each one's error: out/paths.png (bench/paths_scene.py).  Skipped,
+    saying why, where matplotlib or a peer is missing."""
+    import paths_scene
+
+    if not paths_scene.available():
+        print("paths.png: not drawn (needs matplotlib, blend2d-python and pycairo or cairocffi)")
+        return []
+    path = out / "paths.png"
+    errs = paths_scene.render(path)
+    for name, e in errs.items():
+        print("paths.png: %s against the exact coverage: max %.1f/255, mean %.3f/255, %d pixels off by more "
+              "than 1/255, %d by more than 16/255" % (name, e["max"], e["mean"], e["off>1"], e["off>16"]))
+    return [path]
+
+
 def main(argv=None):
     ap = argparse.ArgumentParser(description="render the rastrum demo pictures to PNG, then print a "
                                  "short table against the peers installed here")
@@ -490,7 +507,7 @@ def main(argv=None):
     out.mkdir(parents=True, exist_ok=True)
     written = []
     for f in (render_fig3_19, render_holes, render_stars, render_canvas, render_shading, render_meshes,
-              render_seedfill, render_coverage):
+              render_seedfill, render_coverage, render_paths):
         written += f(out)
     print("wrote %d pictures to %s/: %s" % (len(written), out, ", ".join(p.name for p in written)))
     sys.stdout.flush()

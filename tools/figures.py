@@ -10,7 +10,7 @@ Where each comes from:
     docs/fig3_19.png, fig3_19_textbook.png, boundary_modes.png, holes.png,
     fig3_18_gouraud_rect.png, gouraud_polygon.png,
     mesh_sphere_flat_vs_gouraud.png, mesh_torus_depth.png, seedfill.png,
-    coverage.png                      bench/demo.py (make demo writes them
+    coverage.png, paths.png           bench/demo.py (make demo writes them
                                       to out/ with the others)
     docs/coco_rules.png               tools/coco_picture.py
 - firmware size tables (deterministic for a given arm-none-eabi-gcc:
@@ -81,7 +81,12 @@ def render(out):
         stdout=subprocess.DEVNULL)
     run([sys.executable, os.path.join(ROOT, "tools", "coco_picture.py"), os.path.join(out, "coco_rules.png")],
         stdout=subprocess.DEVNULL)
-    return DEMO_PICTURES + ["coco_rules.png"]
+    # docs/paths.png needs matplotlib (the font) and the peers (Blend2D, cairo)
+    # beside rastrum: drawn, and so checked, only where they are installed
+    paths = ["paths.png"] if os.path.exists(os.path.join(out, "paths.png")) else []
+    if not paths:
+        print("figures: docs/paths.png not drawn here (needs matplotlib, blend2d-python, pycairo or cairocffi)")
+    return DEMO_PICTURES + ["coco_rules.png"] + paths
 
 
 def pixels(path):

@@ -7,7 +7,7 @@ Coordinates are (x, y) as in Pillow; arrays are (row, column) = (y, x) as in
 numpy.
 """
 
-from typing import Any, Dict
+from typing import Any, Dict, Optional
 
 import numpy as np
 import numpy.typing as npt
@@ -27,7 +27,7 @@ from .scene import render_mesh
 from .gis import rasterize, IDENTITY, geometry_mask, geometry_window, grid
 from ._zonal import zonal_stats
 from ._coverage import AA_ENTRIES as _AA_ENTRIES, METHODS as _COVERAGE_METHODS, polygon_coverage, triangles_coverage
-from ._path import Path
+from ._path import Path, path_rings as _path_rings
 from ._strokes import stroke
 
 __all__ = ["polygon_mask", "triangles_mask", "triangles_count", "line_pixels", "point_in_triangle", "Canvas",
@@ -63,9 +63,12 @@ ALGORITHMS["triangles_coverage"] = {name: ("evenodd", "nonzero") for name in _CO
 AA_METHODS = {entry: {name: ("evenodd", "nonzero") for name in _COVERAGE_METHODS}
               for entry in _AA_ENTRIES}
 
+_PLAIN_RINGS = (list, tuple, np.ndarray)  # no curves: polygon_mask's quick path
+
+
 def polygon_mask(rings: PathRings, shape: Shape, *, rule: Rule = "evenodd", algorithm: PolygonAlgorithm = "aet",
                  subpixel_bits: int = 8, sample_offset: float = 0.5, rounding: Rounding = "exact",
-                 boundary: Boundary = "exact") -> npt.NDArray[np.bool_]:
+                 boundary: Boundary = "exact", tolerance: Optional[float] = None) -> npt.NDArray[np.bool_]:
     """Rasterise a polygon into a boolean mask.
 
     Parameters
@@ -73,7 +76,9 @@ def polygon_mask(rings: PathRings, shape: Shape, *, rule: Rule = "evenodd", algo
     rings : (N, 2) array_like or list of them, or a Path
         The polygon's closed rings as (x, y) vertices in pixels; the last
         vertex joins the first.  Several rings make holes and islands.
-        A ``rastrum.Path``'s curves are flattened within its tolerance.
+        A ``rastrum.Path`` or a matplotlib ``Path`` (e.g. ``TextPath``: a
+        font's glyphs) is flattened within `tolerance`; a shapely
+        (Multi)Polygon or ``__geo_interface__`` polygon gives its rings.
     shape : (int, int)
         (height, width) of the mask, as numpy writes it.
     rule : {"evenodd", "nonzero"}
@@ -105,6 +110,10 @@ def polygon_mask(rings: PathRings, shape: Shape, *, rule: Rule = "evenodd", algo
         "closed" adds the library's outline of every edge (what OpenCV and
         Pillow draw), "conservative" every pixel an edge passes through
         (GDAL's ALL_TOUCHED).  The default is the exact partition.
+    tolerance : float or None
+        How far (pixels, > 0) a Path's flattened curves may be from the
+        true ones; None: the Path's own ``tolerance``, else
+        ``Path.DEFAULT_TOLERANCE`` (docs/paths.md).  Rings have no curves.
 
     Returns
     -------
@@ -136,8 +145,8 @@ def polygon_mask(rings: PathRings, shape: Shape, *, rule: Rule = "evenodd", algo
            [0, 0, 0, 0, 0, 0, 0],
            [0, 0, 0, 0, 0, 0, 0]])
     """
-    if isinstance(rings, Path):  # curves flattened within rings.tolerance (docs/paths.md)
-        rings = rings.flatten(subpixel_bits)
+    if tolerance is not None or not isinstance(rings, _PLAIN_RINGS):  # curves flattened (docs/paths.md)
+        rings = _path_rings(rings, subpixel_bits, tolerance)
     # The options struct of these exact argument types, checked once: a
     # dict lookup instead of the general cache's (which also keys on the
     # types, so that True or 8.0 are still refused: here only an int S and

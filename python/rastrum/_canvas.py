@@ -1,7 +1,8 @@
 """Canvas: a target over a numpy array, with drawing methods."""
 
 import functools
-from typing import IO, TYPE_CHECKING, Any, Callable, Literal, Optional, Tuple, TypeVar, Union, cast, overload
+from typing import (IO, TYPE_CHECKING, Any, Callable, Dict, Literal, Optional, Sequence, Tuple, TypeVar, Union, cast,
+                    overload)
 
 import numpy as np
 import numpy.typing as npt
@@ -9,10 +10,12 @@ import numpy.typing as npt
 from . import _core
 from . import _coverage
 from . import _lines
+from . import _shapes
 from . import _shading
 from . import _triangles
 from ._core import InputError
 from ._native import ffi, lib
+from ._path import path_rings
 from ._typing import (Boundary, Color, CoverageMethod, Format, LineAlgorithm, Point, PolygonAlgorithm, Precision,
                       Rings, Rounding, Rule, Shading, Shape, TriangleAlgorithm)
 
@@ -382,10 +385,12 @@ class Canvas:
                      algorithm: PolygonAlgorithm = "aet", subpixel_bits: int = 8, sample_offset: float = 0.5,
                      rounding: Rounding = "exact", boundary: Boundary = "exact",
                      vertex_colors: Optional[npt.ArrayLike] = None, shading: Shading = "gouraud",
-                     precision: Precision = "exact", aa: Optional[CoverageMethod] = None) -> None:
+                     precision: Precision = "exact", aa: Optional[CoverageMethod] = None,
+                     tolerance: Optional[float] = None) -> None:
         """Paint `color` on every pixel whose sample is inside the polygon.
 
-        Arguments as :func:`rastrum.polygon_mask`.  Nothing is written when
+        Arguments as :func:`rastrum.polygon_mask` (`rings` may be a Path, a
+        matplotlib Path or a shapely polygon; `tolerance` flattens a Path).  Nothing is written when
         an argument is bad (an InputError says which; see the class).
 
         With `aa` (one of ``AA_METHODS["Canvas.fill_polygon"]``: "area",
@@ -416,6 +421,8 @@ class Canvas:
         # must draw: subpixel_bits above 16, coordinates past the 32-bit
         # range); anything else, or an error status, takes the general path
         # below, which checks and says what is wrong.
+        if tolerance is not None or not isinstance(rings, (list, tuple, _ndarray)):  # docs/paths.md
+            rings = path_rings(rings, subpixel_bits, tolerance)
         if aa is None and vertex_colors is None:
             if algorithm is _AET and rule is _EVENODD and subpixel_bits is _S8 and sample_offset is _HALF \
                     and rounding is _EXACT and boundary is _EXACT:
@@ -641,20 +648,20 @@ class Canvas:
                                    fraction_bits, subpixel_bits, sample_offset)
 
     @_label_spill
-    def line(self, p0: Point, p1: Point, color: Color, *, algorithm: LineAlgorithm = "bresenham",
-             subpixel_bits: int = 8, sample_offset: float = 0.5) -> None:
+    def _line(self, p0: Point, p1: Point, color: Color, *, algorithm: LineAlgorithm = "bresenham",
+              subpixel_bits: int = 8, sample_offset: float = 0.5) -> None:
         """Paint `color` on the pixels of the segment p0 -> p1.
 
         The pixels are :func:`rastrum.line_pixels` (p0, p1) within the
         canvas; the rest of the line is clipped.  Arguments as there.
         Nothing is written when an argument is bad (an InputError says
-        which).
+        which).  (Canvas.line's binary width-1 case.)
 
         Examples
         --------
         >>> import rastrum
         >>> c = rastrum.Canvas((3, 6), format="gray8")
-        >>> c.line((0, 0), (5, 2), 1, subpixel_bits=0, sample_offset=0)
+        >>> c._line((0, 0), (5, 2), 1, subpixel_bits=0, sample_offset=0)
         >>> c.array
         array([[1, 1, 0, 0, 0, 0],
                [0, 0, 1, 1, 0, 0],
@@ -782,8 +789,397 @@ class Canvas:
         """Save through Pillow; the format follows the file name (PNG, ...)."""
         self.to_image().save(path, **kwargs)
 
+    # ---- curves, strokes and Pillow's shapes (docs/paths.md) -------------------------------
+    # Grouped here, after the other methods.  Pillow's methods take Pillow's
+    # conventions: a bounding box (x0, y0, x1, y1) holds pixels x0..x1 and
+    # y0..y1 inclusive, so the shape's box in rastrum's coordinates (pixel
+    # (i, j) the square [i, i+1) x [j, j+1)) is [x0, x1 + 1] x [y0, y1 + 1];
+    # a point (x, y) is the centre of pixel (x, y), (x + 0.5, y + 0.5).
+
+    def stroke(self, geometry: Any, color: Color, width: float = 1.0, *, join: str = "miter",
+               cap: str = "butt", miter_limit: float = 4.0, dash: Optional[Sequence[float]] = None,
+               dash_offset: float = 0.0, tolerance: Optional[float] = None,
+               aa: Optional[CoverageMethod] = None, subpixel_bits: int = 8, sample_offset: float = 0.5) -> None:
+        """Paint `color` on the stroke of `geometry`, `width` pixels wide.
+
+        The outline is :func:`rastrum.stroke` (`join`, `cap`,
+        `miter_limit`, `dash`, `dash_offset`, `tolerance` as there), filled
+        non-zero by :meth:`fill_polygon`: ``aa=None`` (the default) the
+        pixels whose sample is inside, ``aa="area"`` its exact coverage
+        (crossings and overlaps counted once), "ss2".."ss16" sub-samples.
+        `geometry`: a Path (rastrum's or matplotlib's), an (N, 2) polyline
+        or a list of them, or a shapely / ``__geo_interface__`` LineString,
+        MultiLineString, Polygon (its rings, closed) or MultiPolygon.
+        Coordinates are rastrum's (the pixel (i, j) is the square
+        [i, i+1) x [j, j+1)).
+
+        Examples
+        --------
+        >>> import rastrum
+        >>> c = rastrum.Canvas((5, 10), format="gray8")
+        >>> c.stroke([(1, 2.5), (9, 2.5)], 255, width=1, aa="area")
+        >>> c.array[1:4, 0:3].tolist()
+        [[0, 0, 0], [0, 255, 255], [0, 0, 0]]
+        """
+        from ._strokes import stroke as _stroke
+
+        kw: Dict[str, Any] = {"join": join, "cap": cap, "miter_limit": miter_limit, "tolerance": tolerance}
+        if dash is not None or dash_offset != 0.0:  # dashes as rastrum.stroke has them (docs/paths.md)
+            kw.update(dash=dash, dash_offset=dash_offset)
+        outline = _stroke(_stroke_geometry(geometry), width, **kw)
+        self.fill_polygon(outline, color, rule="nonzero", aa=aa, subpixel_bits=subpixel_bits,
+                          sample_offset=sample_offset, tolerance=tolerance)
+
+    def _shape(self, shape: Any, fill: Optional[Color], outline_path: Any, outline: Optional[Color],
+               aa: Optional[CoverageMethod], tolerance: Optional[float], entry: str) -> None:
+        """Fill `shape` with `fill`, then `outline_path` (nonzero) with `outline`."""
+        if fill is None and outline is None:
+            raise InputError("%s needs fill or outline (a colour)" % entry)
+        for colour in (fill, outline):  # both checked before anything is drawn
+            if colour is not None:
+                self._value_bytes(colour)
+        if fill is not None:
+            self.fill_polygon(shape, fill, rule="nonzero", aa=aa, tolerance=tolerance)
+        if outline is not None and outline_path is not None:
+            self.fill_polygon(outline_path[0], outline, rule=outline_path[1], aa=aa, tolerance=tolerance)
+
+    def ellipse(self, xy: Any, fill: Optional[Color] = None, outline: Optional[Color] = None,
+                width: int = 1, *, aa: Optional[CoverageMethod] = None, tolerance: Optional[float] = None) -> None:
+        """Pillow's ``ImageDraw.ellipse``: the ellipse in the bounding box
+        `xy` ((x0, y0, x1, y1) or ((x0, y0), (x1, y1)), inclusive: pixels
+        x0..x1), filled with `fill`; `outline` paints the ring between it
+        and the ellipse of the box inset by `width` (Pillow's outline,
+        inside the box).  Rastrum's pixels: those whose centre is inside
+        the true ellipse flattened within `tolerance` (or its exact coverage
+        with ``aa="area"``); Pillow's own rasteriser differs by a pixel
+        here and there on the boundary, never in the box.
+
+        Examples
+        --------
+        >>> import rastrum
+        >>> c = rastrum.Canvas((5, 5), format="gray8")
+        >>> c.ellipse((0, 0, 4, 4), fill=1)
+        >>> c.array.tolist()
+        [[0, 1, 1, 1, 0], [1, 1, 1, 1, 1], [1, 1, 1, 1, 1], [1, 1, 1, 1, 1], [0, 1, 1, 1, 0]]
+        """
+        x0, y0, x1, y1 = _pil_box(xy, "ellipse")
+        w = _pil_width(width)
+        shape = _shapes.ellipse((x0 + x1) / 2, (y0 + y1) / 2, (x1 - x0) / 2, (y1 - y0) / 2)
+        ring = None
+        if outline is not None and w > 0:
+            inner = _shapes.ellipse((x0 + x1) / 2, (y0 + y1) / 2, max((x1 - x0) / 2 - w, 0),
+                                    max((y1 - y0) / 2 - w, 0))
+            ring = _both(shape, inner)
+        self._shape(shape, fill, ring, outline, aa, tolerance, "ellipse")
+
+    def circle(self, xy: Point, radius: float, fill: Optional[Color] = None, outline: Optional[Color] = None,
+               width: int = 1, *, aa: Optional[CoverageMethod] = None, tolerance: Optional[float] = None) -> None:
+        """Pillow's ``ImageDraw.circle``: :meth:`ellipse` of the box
+        (x - radius, y - radius, x + radius, y + radius)."""
+        c = _pil_point(xy, "circle: xy")
+        r = _shapes._radius(radius, "radius")
+        self.ellipse((c[0] - r, c[1] - r, c[0] + r, c[1] + r), fill, outline, width, aa=aa, tolerance=tolerance)
+
+    def rounded_rectangle(self, xy: Any, radius: float = 0, fill: Optional[Color] = None,
+                          outline: Optional[Color] = None, width: int = 1, *,
+                          corners: Optional[Sequence[bool]] = None, aa: Optional[CoverageMethod] = None,
+                          tolerance: Optional[float] = None) -> None:
+        """Pillow's ``ImageDraw.rounded_rectangle``: the box `xy` (inclusive)
+        with its corners rounded by quarter circles of `radius` (clamped to
+        half the shorter side; `corners` (top left, top right, bottom
+        right, bottom left) says which), `outline` the ring between it and
+        the box inset by `width` with radius - width.  radius 0 is the
+        rectangle, pixels x0..x1 and y0..y1 as Pillow.
+
+        Examples
+        --------
+        >>> import rastrum
+        >>> c = rastrum.Canvas((4, 6), format="gray8")
+        >>> c.rounded_rectangle((1, 0, 4, 2), 0, fill=1)
+        >>> c.array.tolist()
+        [[0, 1, 1, 1, 1, 0], [0, 1, 1, 1, 1, 0], [0, 1, 1, 1, 1, 0], [0, 0, 0, 0, 0, 0]]
+        """
+        x0, y0, x1, y1 = _pil_box(xy, "rounded_rectangle")
+        w = _pil_width(width)
+        r = _shapes._radius(radius, "radius")
+        shape = _shapes.rounded_rectangle(x0, y0, x1, y1, r, corners=corners)
+        ring = None
+        if outline is not None and w > 0:
+            inner = _shapes.rounded_rectangle(min(x0 + w, (x0 + x1) / 2), min(y0 + w, (y0 + y1) / 2),
+                                              max(x1 - w, (x0 + x1) / 2), max(y1 - w, (y0 + y1) / 2),
+                                              max(r - w, 0), corners=corners)
+            ring = _both(shape, inner)
+        self._shape(shape, fill, ring, outline, aa, tolerance, "rounded_rectangle")
+
+    def arc(self, xy: Any, start: float, end: float, fill: Optional[Color] = None, width: int = 1, *,
+            aa: Optional[CoverageMethod] = None, tolerance: Optional[float] = None) -> None:
+        """Pillow's ``ImageDraw.arc``: the arc of the ellipse in the box `xy`
+        (inclusive) from `start` to `end` degrees, clockwise from 3 o'clock
+        (the ellipse's parametric angle, as Pillow), `width` pixels wide
+        inside the box: rastrum strokes the ellipse inset by width/2 with
+        butt ends (on a circle, exactly the annular sector; on an ellipse
+        the true offset curve, where Pillow insets the radii)."""
+        x0, y0, x1, y1 = _pil_box(xy, "arc")
+        w = _pil_width(width)
+        if fill is None:
+            raise InputError("arc needs fill (a colour)")
+        if w == 0:
+            self._value_bytes(fill)
+            return
+        h = w / 2
+        path = _shapes.arc((x0 + x1) / 2, (y0 + y1) / 2, max((x1 - x0) / 2 - h, 0), max((y1 - y0) / 2 - h, 0),
+                           start, end)
+        if len(path):
+            self.stroke(path, fill, w, cap="butt", join="miter", aa=aa, tolerance=tolerance)
+        else:
+            self._value_bytes(fill)
+
+    def pieslice(self, xy: Any, start: float, end: float, fill: Optional[Color] = None,
+                 outline: Optional[Color] = None, width: int = 1, *, aa: Optional[CoverageMethod] = None,
+                 tolerance: Optional[float] = None) -> None:
+        """Pillow's ``ImageDraw.pieslice``: the slice of the ellipse in the
+        box `xy` (inclusive) from `start` to `end` (as :meth:`arc`).
+        `outline`: rastrum strokes the slice's boundary `width` wide,
+        mitred, centred on it (Pillow draws it inside)."""
+        x0, y0, x1, y1 = _pil_box(xy, "pieslice")
+        shape = _shapes.pieslice((x0 + x1) / 2, (y0 + y1) / 2, (x1 - x0) / 2, (y1 - y0) / 2, start, end)
+        self._shape(shape, fill, _outline(shape, outline, width), outline, aa, tolerance, "pieslice")
+
+    def chord(self, xy: Any, start: float, end: float, fill: Optional[Color] = None,
+              outline: Optional[Color] = None, width: int = 1, *, aa: Optional[CoverageMethod] = None,
+              tolerance: Optional[float] = None) -> None:
+        """Pillow's ``ImageDraw.chord``: the arc from `start` to `end` (as
+        :meth:`arc`) closed by a straight line; `outline` as
+        :meth:`pieslice`."""
+        x0, y0, x1, y1 = _pil_box(xy, "chord")
+        shape = _shapes.chord((x0 + x1) / 2, (y0 + y1) / 2, (x1 - x0) / 2, (y1 - y0) / 2, start, end)
+        self._shape(shape, fill, _outline(shape, outline, width), outline, aa, tolerance, "chord")
+
+    def regular_polygon(self, bounding_circle: Any, n_sides: int, rotation: float = 0,
+                        fill: Optional[Color] = None, outline: Optional[Color] = None, width: int = 1, *,
+                        aa: Optional[CoverageMethod] = None, tolerance: Optional[float] = None) -> None:
+        """Pillow's ``ImageDraw.regular_polygon``: `n_sides` vertices on the
+        circle `bounding_circle` ((x, y, r) or ((x, y), r); the centre a
+        pixel centre), rotated `rotation` degrees counter-clockwise, the
+        first side at the bottom (Pillow's vertices, not rounded to 2
+        decimals).  Filled by rastrum's rule (Pillow also paints the
+        boundary's pixels); `outline` as :meth:`pieslice`."""
+        try:
+            bc = list(bounding_circle)
+        except TypeError:
+            bc = []
+        if len(bc) == 3:
+            centre, r = bc[:2], bc[2]
+        elif len(bc) == 2 and _is_point(bc[0]):
+            centre, r = bc[0], bc[1]
+        else:
+            raise InputError("bounding_circle: (x, y, r) or ((x, y), r), not %r" % (bounding_circle,))
+        cx, cy = _pil_point(centre, "bounding_circle")
+        shape = _shapes.regular_polygon(cx, cy, r, n_sides, rotation=rotation)
+        self._shape(shape, fill, _outline(shape, outline, width), outline, aa, tolerance, "regular_polygon")
+
+    def line(self, p0: Any, p1: Any = None, color: Optional[Color] = None, *, fill: Optional[Color] = None,
+             width: float = 1, joint: Optional[str] = None, aa: Optional[CoverageMethod] = None,
+             tolerance: Optional[float] = None, algorithm: LineAlgorithm = "bresenham", subpixel_bits: int = 8,
+             sample_offset: float = 0.5) -> None:
+        """Paint `color` on the pixels of the segment p0 -> p1; or, as
+        Pillow's ``ImageDraw.line(xy, fill, width, joint)``, on the
+        polyline `xy`.
+
+        ``line(p0, p1, color)`` (p0 and p1 points in rastrum's coordinates):
+        width 1 without `aa` is the binary line, the pixels of
+        :func:`rastrum.line_pixels` (p0, p1) (`algorithm`, `subpixel_bits`,
+        `sample_offset` as there; the rest of the line clipped); a `width`
+        other than 1, or `aa`, fills the segment's stroke, butt ends
+        (:meth:`stroke`).
+
+        ``line(xy, fill)`` or ``line(xy, fill=..., width=..., joint=...)``
+        (`xy` a sequence of points, or of numbers x0, y0, x1, y1, ...):
+        Pillow's call, points at pixel centres; width 1 without `aa` is
+        the binary line through them, else the polyline stroked `width`
+        wide, butt ends, joins round with ``joint="curve"`` and bevelled
+        with None (Pillow leaves the bevel's notch open).  Nothing is
+        written when an argument is bad (an InputError says which).
+
+        Examples
+        --------
+        >>> import rastrum
+        >>> c = rastrum.Canvas((3, 6), format="gray8")
+        >>> c.line((0, 0), (5, 2), 1, subpixel_bits=0, sample_offset=0)
+        >>> c.array
+        array([[1, 1, 0, 0, 0, 0],
+               [0, 0, 1, 1, 0, 0],
+               [0, 0, 0, 0, 1, 1]], dtype=uint8)
+        >>> c = rastrum.Canvas((3, 6), format="gray8")
+        >>> c.line([(0, 1), (5, 1)], fill=9, width=3, aa="area")  # butt ends at pixel centres
+        >>> c.array[1].tolist()
+        [5, 9, 9, 9, 9, 5]
+        """
+        if joint not in (None, "curve"):
+            raise InputError('joint: %r; None or "curve" (Pillow\'s)' % (joint,))
+        w = _real_width(width)
+        single = _is_point(p0)
+        if single:
+            if fill is not None:
+                if color is not None:
+                    raise InputError("line: give the colour once, as color or fill")
+                color = fill
+            if color is None:
+                raise InputError("line needs a colour")
+            if w == 1 and aa is None:
+                self._line(p0, p1, color, algorithm=algorithm, subpixel_bits=subpixel_bits,
+                           sample_offset=sample_offset)
+                return
+            pts = np.array([_pil_point(p0, "p0"), _pil_point(p1, "p1")])
+        else:
+            if color is not None:
+                raise InputError("line(xy, fill): the colour is the second argument or fill=")
+            if (p1 is None) == (fill is None):
+                raise InputError("line(xy, fill): give the colour once, as the second argument or fill=")
+            color = fill if fill is not None else p1
+            pts = _pil_points(p0) + 0.5
+            if w == 1 and aa is None:
+                if len(pts) == 1:
+                    pts = np.concatenate([pts, pts])
+                self.polyline(pts, color, algorithm=algorithm, subpixel_bits=subpixel_bits,
+                              sample_offset=sample_offset)
+                return
+        if w == 0 or len(pts) == 0:
+            self._value_bytes(color)
+            return
+        self.stroke(pts, color, w, join="round" if joint == "curve" else "bevel", cap="butt", aa=aa,
+                    tolerance=tolerance, subpixel_bits=subpixel_bits, sample_offset=sample_offset)
+
     def __repr__(self) -> str:
         return "Canvas((%d, %d), format=%r)" % (self.height, self.width, self._format)
+
+
+# ---- helpers of the curves, strokes and Pillow's shapes (docs/paths.md) -------------------------
+
+def _pil_coords(xy, what):
+    """Pillow's coordinates: a sequence of (x, y) pairs or of numbers
+    x0, y0, x1, y1, ...; as an (N, 2) float64 array, finite."""
+    try:
+        a = np.asarray(xy, dtype=np.float64)
+    except (TypeError, ValueError):
+        raise InputError("%s: %r is not a sequence of (x, y) points or of numbers" % (what, xy)) from None
+    if a.ndim == 1 and a.size % 2 == 0:
+        a = a.reshape(-1, 2)
+    if a.ndim != 2 or a.shape[1] != 2:
+        raise InputError("%s: %r is not a sequence of (x, y) points or of numbers x0, y0, ..." % (what, xy))
+    if not np.isfinite(a).all():
+        raise InputError("%s: a coordinate is NaN or infinite" % what)
+    return a
+
+
+def _pil_box(xy, what):
+    """Pillow's bounding box (inclusive) as rastrum's (x0, y0, x1 + 1, y1 + 1)."""
+    a = _pil_coords(xy, what + ": xy")
+    if a.shape != (2, 2):
+        raise InputError("%s: xy is (x0, y0, x1, y1) or ((x0, y0), (x1, y1)), not %r" % (what, xy))
+    (x0, y0), (x1, y1) = a.tolist()
+    if x1 < x0 or y1 < y0:
+        raise InputError("%s: xy = %r needs x1 >= x0 and y1 >= y0 (as Pillow)" % (what, xy))
+    return x0, y0, x1 + 1.0, y1 + 1.0
+
+
+def _pil_point(p, what):
+    a = _pil_coords(p, what)
+    if a.shape != (1, 2):
+        raise InputError("%s: one point (x, y), not %r" % (what, p))
+    return float(a[0, 0]), float(a[0, 1])
+
+
+def _pil_points(xy):
+    return _pil_coords(xy, "line: xy")
+
+
+def _is_point(p):
+    """Is `p` one point (x, y) (not a sequence of points)?"""
+    if isinstance(p, (str, bytes)):
+        return False
+    try:
+        return np.ndim(p) == 1 and len(p) == 2
+    except (TypeError, ValueError):
+        return False
+
+
+def _pil_width(width):
+    if isinstance(width, (bool, np.bool_)) or not isinstance(width, (int, float, np.integer, np.floating)) \
+            or not np.isfinite(width) or width < 0:
+        raise InputError("width: %r; a number of pixels >= 0" % (width,))
+    return float(width)
+
+
+def _real_width(width):
+    return _pil_width(width)
+
+
+def _both(outer, inner):
+    """The ring between two closed shape Paths: one Path of both, with the
+    rule that fills it (even-odd)."""
+    p = outer.copy()
+    p._verbs += inner._verbs
+    p._pts += inner._pts
+    p._start, p._cur, p._closed = inner._start, inner._cur, inner._closed
+    return p, "evenodd"
+
+
+def _outline(shape, outline, width):
+    """A closed shape's outline stroked `width` wide, mitred, or None."""
+    from ._strokes import stroke as _stroke
+
+    w = _pil_width(width)
+    if outline is None or w == 0 or len(shape) == 0:
+        return None
+    return _stroke(shape, w, join="miter"), "nonzero"
+
+
+def _stroke_geometry(g):
+    """rastrum.stroke's geometry from a Path (rastrum's or matplotlib's),
+    polylines, or a shapely / __geo_interface__ line or polygon."""
+    from ._path import Path, as_path
+
+    p = as_path(g)
+    if p is not None:
+        return p
+    gi = _core._geo_mapping(g)
+    if gi is None:
+        return g
+    out = Path()
+
+    def add(coords, closed):
+        c = _pil_coords(coords, "geometry")
+        if len(c) == 0:
+            return
+        out.move_to(*c[0])
+        for q in c[1:]:
+            out.line_to(*q)
+        if closed:
+            out.close()
+
+    def walk(gi):
+        kind = gi.get("type")
+        if kind == "LineString":
+            add(gi["coordinates"], False)
+        elif kind == "MultiLineString":
+            for c in gi["coordinates"]:
+                add(c, False)
+        elif kind == "Polygon":
+            for c in gi["coordinates"]:
+                add(c, True)
+        elif kind == "MultiPolygon":
+            for poly in gi["coordinates"]:
+                for c in poly:
+                    add(c, True)
+        elif kind == "GeometryCollection":
+            for sub in gi["geometries"]:
+                walk(sub)
+        else:
+            raise InputError("geometry: a %s has no line to stroke" % (kind,))
+
+    walk(gi)
+    return out
 
 
 def _color_name(color, fmt):

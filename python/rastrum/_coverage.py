@@ -9,7 +9,7 @@ exceptions.  Nothing is returned half-written.
 
 import threading
 
-from typing import Any
+from typing import Any, Optional
 
 import numpy as np
 import numpy.typing as npt
@@ -19,7 +19,7 @@ from ._core import InputError
 from ._native import ffi, lib
 from ._typing import CoverageMethod, PathRings, Rule, Shape
 from ._triangles import tris_f64
-from ._path import Path
+from ._path import path_rings
 
 
 def _methods():
@@ -231,15 +231,15 @@ def _finish(raw, d):
 
 def polygon_coverage(rings: PathRings, shape: Shape, *, rule: Rule = "evenodd", method: CoverageMethod = "area",
                      subpixel_bits: int = 8, sample_offset: float = 0.5,
-                     dtype: npt.DTypeLike = np.uint8) -> npt.NDArray[Any]:
+                     dtype: npt.DTypeLike = np.uint8, tolerance: Optional[float] = None) -> npt.NDArray[Any]:
     """How much of each pixel a polygon covers.
 
     Parameters
     ----------
     rings : (N, 2) array_like or list of them, or a Path
         The polygon's closed rings as (x, y) vertices in pixels, as for
-        ``polygon_mask``; a ``rastrum.Path``'s curves are flattened within
-        its tolerance.
+        ``polygon_mask``; a ``rastrum.Path`` or a matplotlib ``Path`` is
+        flattened within `tolerance`, a shapely polygon gives its rings.
     shape : (int, int)
         (height, width) of the result.
     rule : {"evenodd", "nonzero"}
@@ -258,6 +258,8 @@ def polygon_coverage(rings: PathRings, shape: Shape, *, rule: Rule = "evenodd", 
         uint8 holds floor(a*255 + 1/2), uint16 floor(a*65535 + 1/2) (see
         docs/coverage.md for the bound on ties); the floats hold a (from a
         2^-62 fixed point).
+    tolerance : float or None
+        As ``polygon_mask``: a Path's flattening tolerance in pixels.
 
     Returns
     -------
@@ -274,8 +276,8 @@ def polygon_coverage(rings: PathRings, shape: Shape, *, rule: Rule = "evenodd", 
     >>> rastrum.polygon_coverage([(0.5, 0), (2, 0), (2, 1), (0.5, 1)], (1, 3))
     array([[128, 255,   0]], dtype=uint8)
     """
-    if isinstance(rings, Path):  # curves flattened within rings.tolerance (docs/paths.md)
-        rings = rings.flatten(subpixel_bits)
+    if tolerance is not None or not isinstance(rings, (list, tuple, np.ndarray)):  # docs/paths.md
+        rings = path_rings(rings, subpixel_bits, tolerance)
     key = _quick_key(method, rule, subpixel_bits, sample_offset, dtype)
     quick = _quick(key)
     if quick is not None and _plain_shape(shape) is not None:

@@ -15,7 +15,8 @@ from typing import Any, Callable, Iterable, Literal, Optional, Tuple, Union, ove
 import numpy as np
 import numpy.typing as npt
 
-from . import _batch, _core
+from . import _batch, _core, _path
+from ._path import path_rings
 from ._native import ffi, lib
 from ._core import InputError
 from ._typing import BatchRule, PolygonAlgorithm, Shape
@@ -65,10 +66,12 @@ def _packed(polygons):
     return pts, sizes, poly_rings, np.ones(len(sizes), np.int8)
 
 
-def _polygons(polygons, what):
+def _polygons(polygons, what, subpixel_bits=8, tolerance=None):
     """The batch packed: (points float64 (P, 2), ring sizes uint32, rings
     per polygon uint32, orientation int8 per ring) for the union rule: +1
-    for parts, -1 for holes (geometries' interiors)."""
+    for parts, -1 for holes (geometries' interiors); a Path's (or
+    matplotlib Path's) rings, flattened within `tolerance`, keep the turn
+    they have (the union rule fills a Path non-zero as it runs)."""
     if isinstance(polygons, _batch.Polygons):
         return polygons.packed()
     if isinstance(polygons, np.ndarray):
@@ -86,6 +89,8 @@ def _polygons(polygons, what):
         raise InputError("%s: polygons must be a list of polygons (each a list of (N, 2) rings, an "
                          "(N, 2) ring, an (N, 1, 2) contour or a shapely polygon), not %s"
                          % (what, type(polygons).__name__)) from None
+    if tolerance is not None:
+        _path._tolerance(tolerance)
     packed = _packed(polygons)
     if packed is not None:
         return packed
@@ -93,12 +98,24 @@ def _polygons(polygons, what):
     for k, p in enumerate(polygons):
         holes = []
         try:
+            path = _path.as_path(p)
+            if path is not None:
+                rings = [r for r in path_rings(path, subpixel_bits, tolerance)]
+                out.append(rings)
+                orient.extend(-1 if _area2(r) < 0 else 1 for r in rings)
+                continue
             rings = _core.rings_f64(p, holes)
         except InputError as e:
             raise InputError("%s: polygon %d: %s" % (what, k, e)) from None
         out.append(rings)
         orient.extend(-1 if h else 1 for h in holes)
     return _batch.pack(out) + (np.array(orient, np.int8),)
+
+
+def _area2(ring):
+    """Twice the signed (shoelace) area of a ring."""
+    x, y = ring[:, 0], ring[:, 1]
+    return float(np.dot(x, np.roll(y, -1)) - np.dot(np.roll(x, -1), y))
 
 
 def _progress(progress, total):
@@ -199,7 +216,8 @@ def _burn(out, packed, opts, rule, values, merge, planes, what, report):
 
 def masks(polygons: Iterable[Any], shape: Shape, *, rule: BatchRule = "union",
           algorithm: PolygonAlgorithm = "aet", subpixel_bits: int = 8, sample_offset: float = 0.5,
-          progress: Union[bool, Callable[[int, int], Any]] = False) -> npt.NDArray[np.bool_]:
+          progress: Union[bool, Callable[[int, int], Any]] = False,
+          tolerance: Optional[float] = None) -> npt.NDArray[np.bool_]:
     """One mask per polygon, in one C call.
 
     Parameters
@@ -234,6 +252,12 @@ def masks(polygons: Iterable[Any], shape: Shape, *, rule: BatchRule = "union",
         True shows a tqdm bar (tqdm must be installed); a function is called
         as ``progress(done, total)``.  The batch is then drawn in about 100
         calls.
+    tolerance : float or None
+        A polygon may be a ``rastrum.Path`` or a matplotlib ``Path`` (a
+        glyph's outline): flattened within `tolerance` pixels (None: the
+        Path's own, else ``Path.DEFAULT_TOLERANCE``; docs/paths.md).  Its
+        subpaths keep their turn, so "union" fills it non-zero as it runs
+        (a font's holes run opposite to its outlines).
 
     Returns
     -------
@@ -248,7 +272,7 @@ def masks(polygons: Iterable[Any], shape: Shape, *, rule: BatchRule = "union",
     """
     opts = _opts(rule, algorithm, subpixel_bits, sample_offset, "masks")
     h, w = _core.shape2(shape)
-    packed = _polygons(polygons, "masks")
+    packed = _polygons(polygons, "masks", subpixel_bits, tolerance)
     n = len(packed[2])
     # Uninitialised: the C call writes every byte once ("fresh"), instead
     # of a 30 MB clearing pass and then the spans into memory it evicted.
@@ -290,21 +314,23 @@ def _fit(v, dtype, default):
 def labels(polygons: Iterable[Any], shape: Shape, values: Optional[npt.ArrayLike] = None,
            dtype: npt.DTypeLike = np.int32, *, overlap: Literal[False] = False, rule: BatchRule = "union",
            algorithm: PolygonAlgorithm = "aet", subpixel_bits: int = 8, sample_offset: float = 0.5,
-           progress: Union[bool, Callable[[int, int], Any]] = False) -> npt.NDArray[Any]: ...
+           progress: Union[bool, Callable[[int, int], Any]] = False,
+           tolerance: Optional[float] = None) -> npt.NDArray[Any]: ...
 
 
 @overload
 def labels(polygons: Iterable[Any], shape: Shape, values: Optional[npt.ArrayLike] = None,
            dtype: npt.DTypeLike = np.int32, *, overlap: Literal[True], rule: BatchRule = "union",
            algorithm: PolygonAlgorithm = "aet", subpixel_bits: int = 8, sample_offset: float = 0.5,
-           progress: Union[bool, Callable[[int, int], Any]] = False
-           ) -> Tuple[npt.NDArray[Any], npt.NDArray[np.uint16]]: ...
+           progress: Union[bool, Callable[[int, int], Any]] = False,
+           tolerance: Optional[float] = None) -> Tuple[npt.NDArray[Any], npt.NDArray[np.uint16]]: ...
 
 
 def labels(polygons: Iterable[Any], shape: Shape, values: Optional[npt.ArrayLike] = None,
            dtype: npt.DTypeLike = np.int32, *, overlap: bool = False, rule: BatchRule = "union",
            algorithm: PolygonAlgorithm = "aet", subpixel_bits: int = 8, sample_offset: float = 0.5,
-           progress: Union[bool, Callable[[int, int], Any]] = False) -> Any:
+           progress: Union[bool, Callable[[int, int], Any]] = False,
+           tolerance: Optional[float] = None) -> Any:
     """Burn instances into one label image, in one C call.
 
     Polygon k (as in ``masks``) writes values[k] (default k + 1) over its
@@ -320,6 +346,8 @@ def labels(polygons: Iterable[Any], shape: Shape, values: Optional[npt.ArrayLike
     overlap : bool
         Also return a uint16 image counting the polygons that cover each
         pixel (a count past 65535 wraps).
+    tolerance : float or None
+        As ``masks``: how a Path's curves are flattened.
 
     Returns
     -------
@@ -341,7 +369,7 @@ def labels(polygons: Iterable[Any], shape: Shape, values: Optional[npt.ArrayLike
         raise InputError("labels: dtype %r is not a numpy dtype" % (dtype,)) from None
     if dtype not in _batch.DTYPES or dtype == np.bool_:
         raise InputError("labels: dtype must be one of uint8..int64, float32, float64, not %s" % dtype)
-    packed = _polygons(polygons, "labels")
+    packed = _polygons(polygons, "labels", subpixel_bits, tolerance)
     n = len(packed[2])
     if values is None:
         v = np.arange(1, n + 1)

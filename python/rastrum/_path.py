@@ -12,7 +12,7 @@ from __future__ import annotations
 
 import math
 import re
-from typing import List, Optional, Tuple
+from typing import List, Optional, Sequence, Tuple
 
 import numpy as np
 
@@ -354,6 +354,110 @@ class Path:
             last_cmd = u
         return p
 
+    # ---- other sources, transforms, shapes (docs/paths.md) -------------------------
+    @classmethod
+    def from_matplotlib(cls, path: object, *, tolerance: Optional[float] = None) -> "Path":
+        """A Path from a matplotlib ``Path`` (e.g. ``matplotlib.textpath.TextPath``,
+        any font's glyphs): its MOVETO, LINETO, CURVE3 (quadratic), CURVE4
+        (cubic) and CLOSEPOLY segments as they are.  matplotlib's y axis
+        points up: turn the result with :meth:`transformed`, e.g.
+        ``(1, 0, x, 0, -1, y)`` puts its origin at pixel (x, y).
+        """
+        if not _is_matplotlib_path(path):
+            raise InputError("path: a matplotlib Path is needed, not %s" % type(path).__name__)
+        p = cls(tolerance=tolerance)
+        for seg, code in path.iter_segments(curves=True, simplify=False):  # type: ignore[attr-defined]
+            v = [float(t) for t in seg]
+            if code == 1:
+                p.move_to(v[0], v[1])
+            elif code == 2:
+                p.line_to(v[0], v[1])
+            elif code == 3:
+                p.quad_to(*v[:4])
+            elif code == 4:
+                p.cubic_to(*v[:6])
+            elif code == 79:
+                p.close()
+            elif code != 0:
+                raise InputError("path: unknown matplotlib path code %r" % (code,))
+        return p
+
+    def transformed(self, transform: object) -> "Path":
+        """A copy with every point (x, y) taken to (a*x + b*y + c,
+        d*x + e*y + f): `transform` is 6 numbers (a, b, c, d, e, f), an
+        ``affine.Affine`` (the same order) or a 2x3 / 3x3 matrix.  Curves
+        are affine-invariant: the result is the transformed path."""
+        m = np.asarray(transform, dtype=object)
+        if m.shape in ((2, 3), (3, 3)):
+            flat = list(m[:2].ravel())
+        else:
+            try:
+                flat = list(transform)[:6]  # type: ignore[call-overload]
+            except TypeError:
+                raise InputError("transform: 6 numbers (a, b, c, d, e, f), an Affine or a 2x3 matrix, "
+                                 "not %s" % type(transform).__name__) from None
+        if len(flat) != 6:
+            raise InputError("transform: 6 numbers (a, b, c, d, e, f), not %d" % len(flat))
+        a, b, c, d, e, f = (_real(v, "transform") for v in flat)
+        out = self.copy()
+        out._pts = [(a * x + b * y + c, d * x + e * y + f) for x, y in self._pts]
+        for name in ("_start", "_cur"):
+            q = getattr(self, name)
+            if q is not None:
+                setattr(out, name, (a * q[0] + b * q[1] + c, d * q[0] + e * q[1] + f))
+        return out
+
+    @classmethod
+    def circle(cls, cx: float, cy: float, r: float, *, tolerance: Optional[float] = None) -> "Path":
+        """A circle (docs/paths.md, "Shapes"): centre (cx, cy), radius r."""
+        from ._shapes import circle
+        return circle(cx, cy, r, tolerance=tolerance)
+
+    @classmethod
+    def ellipse(cls, cx: float, cy: float, rx: float, ry: float, *, rotation: float = 0.0,
+                tolerance: Optional[float] = None) -> "Path":
+        """An ellipse: centre, radii, its x axis turned `rotation` degrees clockwise."""
+        from ._shapes import ellipse
+        return ellipse(cx, cy, rx, ry, rotation=rotation, tolerance=tolerance)
+
+    @classmethod
+    def rounded_rectangle(cls, x0: float, y0: float, x1: float, y1: float, radius: float, *,
+                          corners: Optional[Sequence[bool]] = None,
+                          tolerance: Optional[float] = None) -> "Path":
+        """The rectangle [x0, x1] x [y0, y1], corners rounded by `radius`."""
+        from ._shapes import rounded_rectangle
+        return rounded_rectangle(x0, y0, x1, y1, radius, corners=corners, tolerance=tolerance)
+
+    @classmethod
+    def arc(cls, cx: float, cy: float, rx: float, ry: float, start: float, end: float, *,
+            tolerance: Optional[float] = None) -> "Path":
+        """An open elliptic arc, degrees clockwise from 3 o'clock (Pillow's angles)."""
+        from ._shapes import arc
+        return arc(cx, cy, rx, ry, start, end, tolerance=tolerance)
+
+    @classmethod
+    def pieslice(cls, cx: float, cy: float, rx: float, ry: float, start: float, end: float, *,
+                 tolerance: Optional[float] = None) -> "Path":
+        """A pie slice: the arc and the two radii."""
+        from ._shapes import pieslice
+        return pieslice(cx, cy, rx, ry, start, end, tolerance=tolerance)
+
+    pie = pieslice
+
+    @classmethod
+    def chord(cls, cx: float, cy: float, rx: float, ry: float, start: float, end: float, *,
+              tolerance: Optional[float] = None) -> "Path":
+        """A chord: the arc closed by a straight line."""
+        from ._shapes import chord
+        return chord(cx, cy, rx, ry, start, end, tolerance=tolerance)
+
+    @classmethod
+    def regular_polygon(cls, cx: float, cy: float, r: float, n_sides: int, *, rotation: float = 0.0,
+                        tolerance: Optional[float] = None) -> "Path":
+        """A regular polygon inscribed in the circle (cx, cy, r), Pillow's vertices."""
+        from ._shapes import regular_polygon
+        return regular_polygon(cx, cy, r, n_sides, rotation=rotation, tolerance=tolerance)
+
     # ---- flattening ------------------------------------------------------------
     def _fixed(self, bits: int) -> Tuple[np.ndarray, np.ndarray]:
         pts = np.array(self._pts, dtype=np.float64).reshape(-1, 2)
@@ -365,11 +469,11 @@ class Path:
                              % (k, tuple(pts[k]), lim / float(1 << bits), bits))
         return np.ascontiguousarray(v, dtype=np.int32), np.array(self._verbs, dtype=np.uint8)
 
-    def flatten(self, subpixel_bits: int = 8) -> List[np.ndarray]:
+    def flatten(self, subpixel_bits: int = 8, tolerance: Optional[float] = None) -> List[np.ndarray]:
         """The path's subpaths as rings of vertices, (N, 2) float64 pixels.
 
-        Each curve becomes edges within ``self.tolerance`` pixels (None:
-        max(DEFAULT_TOLERANCE, 1/2**b)) of the curve through its control
+        Each curve becomes edges within `tolerance` (None: ``self.tolerance``;
+        both None: max(DEFAULT_TOLERANCE, 1/2**b)) pixels of the curve through its control
         points snapped to 1/2**b pixel, b = min(subpixel_bits, 16) (the
         vertices are on that grid, so a fill at `subpixel_bits` takes them
         exactly).  Subpaths of fewer than 3
@@ -378,17 +482,53 @@ class Path:
         if type(subpixel_bits) is not int or not 0 <= subpixel_bits <= 32:
             raise InputError("subpixel_bits: %r; it must be an int in 0..32" % (subpixel_bits,))
         bits = min(subpixel_bits, lib.RAST_MAX_SUBPIXEL_BITS)
-        if self._tolerance is None:
+        given = self._tolerance if tolerance is None else _tolerance(tolerance)
+        if given is None:
             tol = max(1, math.floor(DEFAULT_TOLERANCE * (1 << bits)))
         else:
-            tol = math.floor(self._tolerance * (1 << bits))
+            tol = math.floor(given * (1 << bits))
         if tol < 1:
             raise InputError("tolerance: %r pixels is below one grid step (1/%d px at subpixel_bits=%d)"
-                             % (self._tolerance, 1 << bits, subpixel_bits))
+                             % (given, 1 << bits, subpixel_bits))
         tol = min(tol, lib.RAST_COORD_MAX)
         pts, verbs = self._fixed(bits)
         out = [r.astype(np.float64) / float(1 << bits) for r in _flatten_fixed(verbs, pts, tol)]
         return [r for r in out if len(r) >= 3]
+
+
+def _tolerance(value: object) -> float:
+    t = _real(value, "tolerance")
+    if not t > 0:
+        raise InputError("tolerance: %r pixels; it must be > 0" % (value,))
+    return t
+
+
+def _is_matplotlib_path(obj: object) -> bool:
+    return type(obj).__module__.startswith("matplotlib.") and hasattr(obj, "iter_segments") \
+        and hasattr(obj, "vertices")
+
+
+def as_path(obj: object) -> Optional[Path]:
+    """`obj` as a rastrum Path when it is one or a matplotlib Path; else None."""
+    if isinstance(obj, Path):
+        return obj
+    if _is_matplotlib_path(obj):
+        return Path.from_matplotlib(obj)
+    return None
+
+
+def path_rings(obj: object, subpixel_bits: object, tolerance: Optional[float]) -> object:
+    """The rings a fill takes for `obj`: a Path's (or a matplotlib Path's)
+    subpaths flattened within `tolerance` (None: the Path's own, else
+    DEFAULT_TOLERANCE) at `subpixel_bits`; anything else as it is (the
+    fill checks it; `tolerance` is still checked, curves or not)."""
+    if tolerance is not None:
+        tolerance = _tolerance(tolerance)
+    p = as_path(obj)
+    if p is None:
+        return obj
+    bits = subpixel_bits if type(subpixel_bits) is int and 0 <= subpixel_bits <= 32 else 8
+    return p.flatten(bits, tolerance)
 
 
 def _flatten_fixed(verbs: np.ndarray, pts: np.ndarray, tol: int) -> List[np.ndarray]:

@@ -548,6 +548,7 @@ def rasterize(
     nodata: Union[int, float, None] = None,
     masked: bool = False,
     skip_invalid: bool = False,
+    tolerance: Optional[float] = None,
 ) -> np.ndarray:
     """Burn shapes into a 2-D array, as ``rasterio.features.rasterize``.
 
@@ -605,6 +606,12 @@ def rasterize(
         too few positions, NaN or a position out of range) is skipped with
         a :class:`ShapeSkipWarning`, as rasterio does by default; False
         (the default): it is an InputError.
+    tolerance : float or None
+        A geometry may also be a ``rastrum.Path`` or a matplotlib ``Path``
+        in world coordinates: one polygon of its subpaths (under `rule`),
+        its curves flattened within `tolerance` PIXELS of the true ones
+        (None: the Path's own, else ``Path.DEFAULT_TOLERANCE``;
+        docs/paths.md).
 
     Returns
     -------
@@ -634,8 +641,10 @@ def rasterize(
     _core._name(rule, "fill rule", _core.RULES)
     if not isinstance(all_touched, (bool, np.bool_)):
         raise InputError("all_touched must be True or False, not %r" % (all_touched,))
-    inv = _inverse(_transform6(transform))
+    t6 = _transform6(transform)
+    inv = _inverse(t6)
     geoms, vals = _split_shapes(shapes, default_value, fill, values)
+    geoms = _path_polygons(geoms, t6, inv, tolerance)
     flat = None
     if skip_invalid:
         geoms, vals, flat = _valid_only(geoms, vals, inv)
@@ -667,6 +676,30 @@ def rasterize(
             return np.ma.masked_where(np.isnan(target), target, copy=False)
         return np.ma.masked_equal(target, nodata, copy=False)  # type: ignore[arg-type]  # None: nothing masked
     return target
+
+
+def _path_polygons(geoms, t6, inv, tolerance):
+    """Each Path (rastrum's or matplotlib's) among `geoms` as a Polygon
+    mapping: flattened in pixel space (tolerance in pixels), its rings
+    taken back to world coordinates."""
+    from ._path import _tolerance, as_path
+
+    if tolerance is not None:
+        tolerance = _tolerance(tolerance)
+    out = None
+    for k, g in enumerate(geoms):
+        p = as_path(g)
+        if p is None:
+            continue
+        if out is None:
+            out = list(geoms)
+        c0, cx, cy, r0, rx, ry = inv
+        a, b, c, d, e, f = t6
+        rings = p.transformed((cx, cy, c0, rx, ry, r0)).flatten(8, tolerance)  # on the fill's grid
+        out[k] = {"type": "Polygon", "coordinates": [
+            np.column_stack([a * r[:, 0] + b * r[:, 1] + c, d * r[:, 0] + e * r[:, 1] + f]).tolist()
+            for r in rings]}
+    return geoms if out is None else out
 
 
 class ShapeSkipWarning(UserWarning):

@@ -318,21 +318,45 @@ def zonal_stats(
     >>> rastrum.zonal_stats(raster, [square], stats=["count", "mean", "max"], output="records")
     [{'count': 4.0, 'mean': 5.0, 'max': 10.0}]
     """
+    ops = _check_options(stats, coverage_weight, output, rule)
+    data, mask, transform, nodata, banded = _raster(raster, transform, nodata)
+    B, H, W = data.shape
+    wt_raster = None
+    if weights is not None:
+        wt_raster = np.asarray(weights, dtype=np.float64)
+    _check_weights(ops, None if weights is None else wt_raster.shape, (H, W))
+    f, cells, c, index, nfeat = _features(geometries, transform, (H, W), rule, coverage_weight, progress)
+    flat = data.reshape(B, H * W)
+    xs = [flat[band][cells] for band in range(B)]
+    masks = None if mask is None else [mask[band].ravel()[cells] for band in range(B)]
+    wt = None if wt_raster is None else wt_raster.ravel()[cells]
+    return _table(_columns(ops, f, c, xs, masks, wt, nodata, banded, nfeat), nfeat, index, output)
+
+
+def _check_options(stats, coverage_weight, output, rule):
+    """The parsed stats, once the options are checked."""
     ops = _parse_stats(stats)
     if coverage_weight not in ("fraction", "none"):
         raise InputError("coverage_weight must be 'fraction' or 'none', not %r" % (coverage_weight,))
     if output not in ("auto", "pandas", "records"):
         raise InputError("output must be 'auto', 'pandas' or 'records', not %r" % (output,))
     gis._core._name(rule, "fill rule", gis._core.RULES)
-    data, mask, transform, nodata, banded = _raster(raster, transform, nodata)
-    B, H, W = data.shape
-    wt_raster = None
-    if weights is not None:
-        wt_raster = np.asarray(weights, dtype=np.float64)
-        if wt_raster.shape != (H, W):
-            raise InputError("weights: shape %r differs from the raster's (%d, %d)" % (wt_raster.shape, H, W))
+    return ops
+
+
+def _check_weights(ops, shape, raster_shape):
+    if shape is not None:
+        if tuple(shape) != tuple(raster_shape):
+            raise InputError("weights: shape %r differs from the raster's %r" % (tuple(shape), tuple(raster_shape)))
     elif any(op.startswith("weighted") for _, op, _ in ops):
         raise InputError("stats: %s need weights=" % ", ".join(c for c, op, _ in ops if op.startswith("weighted")))
+
+
+def _features(geometries, transform, shape, rule, coverage_weight, progress):
+    """(feature ids, flat cells, fractions, index, number of features): the
+    cells every feature covers in a raster of `shape`, as zonal_stats
+    weighs them."""
+    H, W = shape
     inv = gis._inverse(gis._transform6(transform))
     geoms, index = _geometries(geometries)
     xy, ring_sizes, part_rings, kind, feature, _ = gis._flatten(geoms)
@@ -350,24 +374,29 @@ def zonal_stats(
         bar.close()
     if coverage_weight == "none":
         c = np.ones_like(c)
+    return f, cells, c, index, nfeat
+
+
+def _columns(ops, f, c, xs, masks, wt_all, nodata, banded, nfeat):
+    """{column: per-feature values}: xs[band] holds the band's value at
+    every covered cell (masks[band] whether it is masked), wt_all the
+    weights there."""
     columns: Dict[str, np.ndarray] = {}
-    flat = data.reshape(B, H * W)
-    for band in range(B):
-        x = flat[band][cells]
+    for band, x in enumerate(xs):
         valid = np.ones(len(x), bool)
         if x.dtype.kind == "f":
             valid &= ~np.isnan(x)
         if nodata is not None:
             valid &= x != nodata
-        if mask is not None:
-            valid &= ~mask[band].ravel()[cells]
+        if masks is not None:
+            valid &= ~masks[band]
         x = x.astype(np.float64)
         sel = valid if not valid.all() else slice(None)
-        wt = None if wt_raster is None else wt_raster.ravel()[cells][sel]
+        wt = None if wt_all is None else wt_all[sel]
         res = _band_stats(ops, f[sel], x[sel], c[sel], wt, nfeat)
         for column, v in res.items():
             columns[("band_%d_%s" % (band + 1, column)) if banded else column] = v
-    return _table(columns, nfeat, index, output)
+    return columns
 
 
 def _table(columns, nfeat, index, output):

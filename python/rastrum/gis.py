@@ -442,7 +442,8 @@ def _merge_name(merge_alg, coverage=False):
     if isinstance(name, str) and name.lower() in (("replace", "add", "max") if coverage else ("replace", "add")):
         return name.lower()
     if isinstance(name, str) and name.lower() == "max":
-        raise InputError("merge_alg 'max' is for coverage fractions: pass coverage='area' (or a method)")
+        raise InputError("unknown merge_alg 'max' without coverage; choose one of: add, replace ('max' merges "
+                         "coverage fractions: pass coverage='area')")
     raise InputError("unknown merge_alg %r; choose one of: add, replace%s (or rasterio's MergeAlg members)"
                      % (merge_alg, ", max" if coverage else ""))
 

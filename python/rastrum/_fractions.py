@@ -242,11 +242,18 @@ def feature_fractions(px, ring_sizes, part_rings, feature, nfeat, shape, rule, p
     sizes = hw[ids] * ww[ids]
     start = np.concatenate([[0], np.cumsum(sizes)])
     cov = np.concatenate(covs)
-    nz = np.flatnonzero(cov)
-    g = np.searchsorted(start, nz, side="right") - 1
+    nzmask = cov != 0
+    nz = np.flatnonzero(nzmask)
+    # the window of each nonzero cell: windows in order, so a repeat of
+    # each window's count of them (no search)
+    counts = np.add.reduceat(nzmask, start[:-1]) if len(nz) else np.zeros(len(ids), np.int64)
+    g = np.repeat(np.arange(len(ids)), counts)
     f = ids[g]
-    rr, cc = np.divmod(nz - start[g], ww[f])
-    cells = (rr + r0[f]) * W + (cc + c0[f])
+    local = nz - start[g]
+    w_f = ww[f]
+    rr = local // w_f
+    # row r0 + rr, column c0 + (local - rr * w): cell (r0 + rr) * W + c0 + local - rr * w
+    cells = local + (r0[f] * W + c0[f]) + rr * (W - w_f)
     return f, cells, cov[nz], info
 
 

@@ -18,7 +18,7 @@ See docs/gis.md.
 
 from __future__ import annotations
 
-from typing import Any, Callable, Iterable, List, Optional, Tuple, Union
+from typing import Any, Callable, Iterable, List, Literal, Optional, Tuple, Union, overload
 
 import numpy as np
 
@@ -26,6 +26,7 @@ from . import _core, gis
 from ._core import InputError
 from ._coverage import polygon_coverage
 from ._native import lib
+from ._typing import CoverageMethod, Rule
 
 __all__ = ["coverage_fractions", "COVERAGE_DTYPES"]
 
@@ -278,13 +279,29 @@ def _coverage_dtype(dtype, what="dtype"):
 
 # ---- public: per-feature sparse fractions ---------------------------------------------------
 
+@overload
+def coverage_fractions(
+    geometries: Iterable[Any], out_shape: Tuple[int, int], transform: gis.Transform = ..., *,
+    rule: Rule = ..., method: CoverageMethod = ..., dtype: Any = ..., flat: Literal[False] = ...,
+    progress: Union[bool, Callable[[int, int], Any], None] = ...,
+) -> List[Tuple[np.ndarray, np.ndarray]]: ...
+
+
+@overload
+def coverage_fractions(
+    geometries: Iterable[Any], out_shape: Tuple[int, int], transform: gis.Transform = ..., *,
+    rule: Rule = ..., method: CoverageMethod = ..., dtype: Any = ..., flat: Literal[True],
+    progress: Union[bool, Callable[[int, int], Any], None] = ...,
+) -> Tuple[np.ndarray, np.ndarray, np.ndarray]: ...
+
+
 def coverage_fractions(
     geometries: Iterable[Any],
     out_shape: Tuple[int, int],
     transform: gis.Transform = gis.IDENTITY,
     *,
-    rule: str = "evenodd",
-    method: str = "area",
+    rule: Rule = "evenodd",
+    method: CoverageMethod = "area",
     dtype: Any = "float64",
     flat: bool = False,
     progress: Union[bool, Callable[[int, int], Any], None] = None,

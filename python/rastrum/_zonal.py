@@ -140,7 +140,7 @@ def _histogram(f, x, c):
     for a, b in zip(starts.tolist(), np.r_[starts[1:], n].tolist()):
         order[a:b] = np.argsort(x[a:b])
         order[a:b] += a
-    fs, xs, cs = f[order], x[order], c[order]
+    fs, xs, cs = f, x[order], c[order]  # order permutes within each feature's run: f[order] is f
     new = np.r_[True, (fs[1:] != fs[:-1]) | (xs[1:] != xs[:-1])]
     first = np.flatnonzero(new)
     return fs[first], xs[first], np.add.reduceat(cs, first)

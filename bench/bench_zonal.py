@@ -3,6 +3,7 @@
     python bench/bench_zonal.py [--repeat 5] [--features 2000] [--quick]
     python bench/bench_zonal.py --small [--features 2000]   (10x that many small hexagons)
     python bench/bench_zonal.py --accuracy
+    python bench/bench_zonal.py --coverage [--repeat 5] [--features 2000]
 
 One scene: a random float32 raster on a 0.025 degree grid (2400 x 3600
 cells, 60 x 90 degrees) and random star-shaped polygons (8-40 vertices,
@@ -169,7 +170,38 @@ def main():
         print("rasterstats vs rastrum centre-rule masks: %d of %d sampled features differ" % (bad, len(sample)))
 
 
-if __name__ == "__main__" and "--accuracy" not in sys.argv:
+def coverage(repeat=5, n=2000):
+    """rastrum.coverage_fractions against exactextract's ["cell_id",
+    "coverage"] on the same scene: the time, and in the same run the cells
+    (the same) and the largest fraction difference (bound: n_edges 2^-S)."""
+    raster, gdf = scene(n)
+    transform = (RES, 0.0, X0, 0.0, -RES, Y1)
+    print("coverage fractions: %d polygons on a %d x %d grid" % (len(gdf), H, W))
+    rw, rc, mine = timed(lambda: rastrum.coverage_fractions(gdf, (H, W), transform), repeat)
+    print("rastrum.coverage_fractions          wall %.3f s  cpu %.3f s" % (rw, rc))
+    if exactextract is None:
+        return
+    wkt = pyproj.CRS("EPSG:4326").to_wkt()
+    src = NumPyRasterSource(raster, X0, Y1 - H * RES, X0 + W * RES, Y1, srs_wkt=wkt)
+    ew, ec, theirs = timed(lambda: exactextract.exact_extract(src, gdf, ["cell_id", "coverage"],
+                                                               output="pandas"), repeat)
+    print("exactextract cell_id + coverage     wall %.3f s  cpu %.3f s" % (ew, ec))
+    print("ratio rastrum / exactextract: wall %.3f  cpu %.3f" % (rw / ew, rc / ec))
+    worst, extra, cells = 0.0, 0, 0
+    for k in range(len(gdf)):
+        a = dict(zip(mine[k][0].tolist(), mine[k][1].tolist()))
+        b = dict(zip(np.asarray(theirs["cell_id"].iloc[k]).tolist(), np.asarray(theirs["coverage"].iloc[k]).tolist()))
+        cells += len(a)
+        extra += len(set(a) ^ set(b))
+        for c in set(a) | set(b):
+            worst = max(worst, abs(a.get(c, 0.0) - b.get(c, 0.0)))
+    print("cells %d; reported by only one of them %d; largest |fraction difference| %.3g"
+          % (cells, extra, worst))
+
+
+if __name__ == "__main__" and "--coverage" in sys.argv:
+    coverage(repeat=int(sys.argv[sys.argv.index("--repeat") + 1]) if "--repeat" in sys.argv else 5)
+elif __name__ == "__main__" and "--accuracy" not in sys.argv:
     main()
 
 

@@ -645,6 +645,8 @@ EXTRA_COVERED |= {"Path", "stroke"}
 # Issue 36's names have their rows beside their tests: tests/test_gis_parity.py
 # (geometry_mask, geometry_window, grid) and tests/test_zonal.py (zonal_stats).
 EXTRA_COVERED |= {"geometry_mask", "geometry_window", "grid", "zonal_stats"}
+# coverage_fractions' bad input: tests/test_gis_coverage.py.
+EXTRA_COVERED |= {"coverage_fractions"}
 
 
 def _set_depth(value):

@@ -82,6 +82,15 @@ def test_geometry_mask_invalid_shape(shape):
         rastrum.geometry_mask([BASIC], out_shape=shape, transform=IDENT)
 
 
+@pytest.mark.parametrize("geom", [{"type": "Invalid"}, {"type": "Point"}, {"type": "Point", "coordinates": []}])
+def test_geometry_mask_invalid_geom(geom):
+    # rasterio's test_geometry_invalid_geom: a ValueError (rasterio: "No
+    # valid geometry objects found", after a ShapeSkipWarning); rastrum's
+    # InputError (a ValueError) names the feature
+    with pytest.raises(InputError, match="feature 0"):
+        rastrum.geometry_mask([geom], out_shape=SHAPE, transform=IDENT)
+
+
 def test_geometry_mask_no_transform():
     # rasterio raises TypeError; rastrum's InputError names the argument
     with pytest.raises(InputError, match="transform"):

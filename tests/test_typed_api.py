@@ -4,7 +4,7 @@ the installed package (its annotations and py.typed are what a user's mypy
 sees), and pytest runs it, so the annotations are checked against what the
 calls return."""
 
-from typing import Any, Dict, List
+from typing import Any, Dict, List, Tuple
 
 import numpy as np
 import numpy.typing as npt
@@ -77,6 +77,13 @@ def test_batches_coco_gis_scene() -> None:
     assert len(coco.rings([1.0, 1.0, 5.0, 1.0, 3.0, 4.0])) == 1
     r: npt.NDArray[Any] = rastrum.rasterize([({"type": "Polygon", "coordinates": [SQUARE]}, 2)],
                                             out_shape=(6, 7), transform=rastrum.IDENTITY)
+    frac: npt.NDArray[Any] = rastrum.rasterize([{"type": "Polygon", "coordinates": [SQUARE]}], out_shape=(6, 7),
+                                               coverage="area", merge_alg="max")
+    per: List[Tuple[npt.NDArray[Any], npt.NDArray[Any]]] = rastrum.coverage_fractions(
+        [{"type": "Polygon", "coordinates": [SQUARE]}], (6, 7))
+    flat: Tuple[npt.NDArray[Any], npt.NDArray[Any], npt.NDArray[Any]] = rastrum.coverage_fractions(
+        [{"type": "Polygon", "coordinates": [SQUARE]}], (6, 7), flat=True)
+    assert frac.sum() == per[0][1].sum() == flat[2].sum()
     xy: npt.NDArray[Any] = rastrum.gis.pixel_coordinates(np.array([[1.0, 2.0]]))
     assert r.sum() == 2 * 12 and xy.shape == (1, 2)
     v, f, _ = scene.sphere(6, 8)
@@ -136,5 +143,6 @@ def test_the_api_reference_lists_every_public_name() -> None:
     want = {"rastrum." + n for n in rastrum.__all__ if n not in modules and n != "__version__"}
     want |= {"rastrum.%s.%s" % (m, n) for m, mod in modules.items() for n in mod.__all__
              if n not in rastrum.__all__}  # rastrum.scene.render_mesh is rastrum.render_mesh
-    want |= {"rastrum.dask.rasterize", "rastrum.dask.to_xarray", "rastrum.gis.pixel_coordinates"}
+    want |= {"rastrum.dask.rasterize", "rastrum.dask.to_xarray", "rastrum.dask.zonal_stats",
+             "rastrum.gis.pixel_coordinates"}
     assert want - entries == set()

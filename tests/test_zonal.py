@@ -81,11 +81,23 @@ def rings_of(geom):
 
 # ---- the exact fractions of one feature -----------------------------------------------------
 
+def coverage_is_wide():
+    """Whether polygon_coverage takes S = 32 (a 64-bit coverage path)."""
+    try:
+        rastrum.polygon_coverage([(0, 0), (1, 0), (0, 1)], (1, 1), subpixel_bits=32, dtype=np.float64)
+    except rastrum.InputError:
+        return False
+    return True
+
+
 def max_bits(extent):
-    """The largest S <= 16 with floor(extent * 2^S + 1/2) <= 2^27 - 1,
-    computed in rationals."""
-    for s in range(16, -1, -1):
-        if math.floor(F(extent) * 2 ** s + F(1, 2)) <= 2 ** 27 - 1:
+    """The largest S polygon_coverage takes for |coordinate| <= extent,
+    computed in rationals: S <= 16 with floor(extent * 2^S + 1/2) <=
+    2^27 - 1 (the 32-bit path), or S <= 32 with it <= 2^(S + 28) - 1 (a
+    64-bit one)."""
+    top, pix = (32, 28) if coverage_is_wide() else (16, None)
+    for s in range(top, -1, -1):
+        if math.floor(F(extent) * 2 ** s + F(1, 2)) <= (2 ** 27 - 1 if pix is None else 2 ** (s + pix) - 1):
             return s
     return -1
 

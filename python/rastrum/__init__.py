@@ -26,13 +26,14 @@ from ._ml import labels, masks
 from .scene import render_mesh
 from .gis import rasterize, IDENTITY, geometry_mask, geometry_window, grid
 from ._zonal import zonal_stats
+from ._fractions import coverage_fractions
 from ._coverage import AA_ENTRIES as _AA_ENTRIES, METHODS as _COVERAGE_METHODS, polygon_coverage, triangles_coverage
 from ._path import Path, path_rings as _path_rings
 from ._strokes import stroke
 
 __all__ = ["polygon_mask", "triangles_mask", "triangles_count", "line_pixels", "point_in_triangle", "Canvas",
            "ALGORITHMS", "RastrumError", "InputError", "__version__", "render_mesh", "scene", "rasterize",
-           "IDENTITY", "zonal_stats", "geometry_mask", "geometry_window", "grid", "coco", "masks", "labels", "Polygons",
+           "IDENTITY", "zonal_stats", "coverage_fractions", "geometry_mask", "geometry_window", "grid", "coco", "masks", "labels", "Polygons",
            "polygon_coverage", "triangles_coverage", "AA_METHODS", "Path", "stroke"]
 
 _v = _lib.rast_version_number()

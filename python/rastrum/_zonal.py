@@ -11,7 +11,6 @@ docs/gis.md, "Zonal statistics").
 
 from __future__ import annotations
 
-import math
 import re
 from typing import Any, Callable, Dict, Iterable, List, Optional, Sequence, Tuple, Union
 
@@ -19,8 +18,7 @@ import numpy as np
 
 from . import gis
 from ._core import InputError
-from ._native import lib
-from ._coverage import polygon_coverage
+from ._fractions import _geometries, feature_fractions, subpixel_bits_for
 
 __all__ = ["zonal_stats", "STATS", "subpixel_bits_for"]
 
@@ -34,23 +32,6 @@ STATS = ("count", "sum", "mean", "min", "max", "majority", "minority", "variety"
 _ALIASES = {"mode": "majority", "std": "stdev"}
 _QUANTILE = re.compile(r"^quantile\(\s*q\s*=\s*([0-9.eE+-]+)\s*\)$")
 _PERCENTILE = re.compile(r"^percentile_([0-9]+(?:\.[0-9]+)?)$")
-
-# The 32-bit coverage path: |vertex| * 2^S <= RAST_COORD_MAX, S <= 16.
-_COORD_MAX = lib.RAST_COORD_MAX
-_MAX_S = lib.RAST_MAX_SUBPIXEL_BITS
-
-
-def subpixel_bits_for(extent: float) -> int:
-    """The largest S (at most 16) at which a vertex of |coordinate| <=
-    `extent` pixels snaps inside the 32-bit coverage range:
-    floor(extent * 2^S + 1/2) <= 2^27 - 1.  A vertex moves by at most
-    2^-(S+1) px in x and in y, so a fraction is off by about 2^-S of a cell
-    per edge crossing it (docs/gis.md has the measured figures)."""
-    s = _MAX_S
-    while s >= 0 and math.floor(extent * 2.0 ** s + 0.5) > _COORD_MAX:
-        s -= 1
-    return s
-
 
 # ---- statistics names ---------------------------------------------------------------
 
@@ -131,168 +112,7 @@ def _raster(raster, transform, nodata):
     return data, mask, transform, nodata, banded
 
 
-def _geometries(geometries):
-    """(list of geometries, index or None)."""
-    index = None
-    if hasattr(geometries, "geometry") and hasattr(geometries, "columns"):  # GeoDataFrame
-        index = geometries.index
-        geoms = list(np.asarray(geometries.geometry.values, dtype=object))
-    elif type(geometries).__name__ == "GeoSeries":
-        index = geometries.index
-        geoms = list(np.asarray(geometries.values, dtype=object))
-    else:
-        if isinstance(geometries, (str, bytes, dict)) or hasattr(geometries, "__geo_interface__"):
-            raise InputError("geometries must be an iterable of geometries, not one geometry; wrap it in a list")
-        try:
-            geoms = list(geometries)
-        except TypeError:
-            raise InputError("geometries must be an iterable of geometries, not %r"
-                             % type(geometries).__name__) from None
-    return geoms, index
-
-
-# ---- coverage fractions per feature -----------------------------------------------------
-
-def _clip_rings(pts, sizes, x0, y0, x1, y1):
-    """Rings (pts, one ring after another, `sizes` points each) clipped to
-    the box [x0, x1] x [y0, y1] (Sutherland-Hodgman, each ring against each
-    side in turn).  The winding number of every point inside the box is
-    that of the unclipped rings, so the area inside the box, and thus every
-    cell's fraction, is the same under either fill rule."""
-    rings = np.split(pts, np.cumsum(sizes)[:-1])
-    out = []
-    for ring in rings:
-        for axis, bound, keep_greater in ((0, x0, True), (0, x1, False), (1, y0, True), (1, y1, False)):
-            if len(ring) == 0:
-                break
-            ring = _clip_side(ring, axis, bound, keep_greater)
-        if len(ring) >= 3:
-            out.append(np.ascontiguousarray(ring))
-    return out
-
-
-def _clip_side(ring, axis, bound, keep_greater):
-    v = ring[:, axis]
-    inside = v >= bound if keep_greater else v <= bound
-    if inside.all():
-        return ring
-    if not inside.any():
-        return ring[:0]
-    nxt = np.roll(ring, -1, axis=0)
-    nin = np.roll(inside, -1)
-    cross = inside != nin
-    # where an edge crosses the line: the point on it, on the line exactly
-    a, b = ring[cross], nxt[cross]
-    t = (bound - a[:, axis]) / (b[:, axis] - a[:, axis])
-    p = a + t[:, None] * (b - a)
-    p[:, axis] = bound
-    # each edge gives its start (if inside) then its crossing (if any)
-    n = len(ring)
-    keep = np.zeros((n, 2), bool)
-    keep[:, 0] = inside
-    keep[:, 1] = cross
-    both = np.empty((n, 2, 2))
-    both[:, 0] = ring
-    both[cross, 1] = p
-    return both[keep]
-
-
-def _bits(extent: np.ndarray) -> np.ndarray:
-    """subpixel_bits_for of every extent, vectorised (-1 where even S = 0
-    is out of range)."""
-    s = np.full(len(extent), _MAX_S, np.int64)
-    for _ in range(_MAX_S + 1):
-        bad = (s >= 0) & (np.floor(extent * np.exp2(s) + 0.5) > _COORD_MAX)
-        if not bad.any():
-            break
-        s[bad] -= 1
-    return s
-
-
-def _fractions(px, ring_sizes, part_rings, feature, nfeat, shape, rule, progress=None):
-    """Per feature, the cells of the raster it covers and their fractions:
-    (feature ids, flat cell indices row * W + col, fractions), grouped by
-    feature in order; and per feature (row0, col0, S) of its window (S =
-    -1 for a feature outside the raster)."""
-    H, W = shape
-    info = np.full((nfeat, 3), -1, np.int64)
-    empty = np.zeros(0, np.int64), np.zeros(0, np.int64), np.zeros(0), info
-    if not len(px):
-        return empty
-    ring_start = np.concatenate([[0], np.cumsum(part_rings)])
-    pt_start = np.concatenate([[0], np.cumsum(ring_sizes)])
-    # rings and points of each feature (its parts are consecutive)
-    fparts = np.bincount(feature, minlength=nfeat)
-    fpart_start = np.concatenate([[0], np.cumsum(fparts)])
-    fring = ring_start[fpart_start]
-    fpt = pt_start[fring]
-    # every feature's window (the cells its box touches in the raster), its
-    # vertices' extent from the window's origin and its S, all at once
-    has = np.flatnonzero(fpt[1:] > fpt[:-1])
-    lo = np.full((nfeat, 2), np.inf)
-    hi = np.full((nfeat, 2), -np.inf)
-    lo[has] = np.minimum.reduceat(px, fpt[:-1][has], axis=0)
-    hi[has] = np.maximum.reduceat(px, fpt[:-1][has], axis=0)
-    with np.errstate(invalid="ignore"):
-        c0 = np.maximum(np.floor(lo[:, 0]), 0)
-        r0 = np.maximum(np.floor(lo[:, 1]), 0)
-        c1 = np.minimum(np.ceil(hi[:, 0]), W)
-        r1 = np.minimum(np.ceil(hi[:, 1]), H)
-    inside = (c1 > c0) & (r1 > r0)
-    c0, r0, c1, r1 = (np.where(inside, v, 0).astype(np.int64) for v in (c0, r0, c1, r1))
-    hw, ww = r1 - r0, c1 - c0
-    origin = np.c_[c0, r0].astype(np.float64)
-    npts = np.diff(fpt)
-    local = px - np.repeat(origin, npts, axis=0)
-    extent = np.zeros(nfeat)
-    extent[has] = np.maximum.reduceat(np.abs(local).max(axis=1), fpt[:-1][has])
-    s_box = _bits(np.maximum(hw, ww) + 1.0)
-    s_own = _bits(extent)
-    wide = inside & (s_box < 0)
-    if wide.any():
-        k = int(np.flatnonzero(wide)[0])
-        raise InputError("geometries: feature %d covers a window of %d x %d cells: wider than the "
-                         "coverage path's range (2^27 px)" % (k, hw[k], ww[k]))
-    rs = ring_sizes.tolist()
-    covs, ids = [], []
-    for k in np.flatnonzero(inside).tolist():
-        if progress is not None:
-            progress(k)
-        h, w = int(hw[k]), int(ww[k])
-        a, r_a, r_b = int(fpt[k]), int(fring[k]), int(fring[k + 1])
-        rings = []
-        for n in rs[r_a:r_b]:
-            if n >= 3:
-                rings.append(local[a:a + n])
-            a += n
-        s = int(s_own[k])
-        if s < s_box[k]:
-            # far outside the raster: clipped to the window plus a cell,
-            # so that S is the window's
-            pts = local[fpt[k]:fpt[k + 1]]
-            rings = _clip_rings(pts, ring_sizes[r_a:r_b], -1.0, -1.0, w + 1.0, h + 1.0)
-            s = int(s_box[k])
-            if not rings:
-                continue
-        if not rings:
-            continue
-        info[k] = (r0[k], c0[k], s)
-        covs.append(polygon_coverage(rings, (h, w), rule=rule, method="area", subpixel_bits=s,
-                                     dtype=np.float64).ravel())
-        ids.append(k)
-    if not covs:
-        return empty
-    # the cells with a fraction, all windows at once
-    ids = np.asarray(ids, np.int64)
-    sizes = hw[ids] * ww[ids]
-    start = np.concatenate([[0], np.cumsum(sizes)])
-    cov = np.concatenate(covs)
-    nz = np.flatnonzero(cov)
-    g = np.searchsorted(start, nz, side="right") - 1
-    f = ids[g]
-    rr, cc = np.divmod(nz - start[g], ww[f])
-    cells = (rr + r0[f]) * W + (cc + c0[f])
-    return f, cells, cov[nz], info
+_fractions = feature_fractions  # the tests' name
 
 
 # ---- grouped statistics ------------------------------------------------------------------
@@ -320,7 +140,7 @@ def _histogram(f, x, c):
     for a, b in zip(starts.tolist(), np.r_[starts[1:], n].tolist()):
         order[a:b] = np.argsort(x[a:b])
         order[a:b] += a
-    fs, xs, cs = f[order], x[order], c[order]
+    fs, xs, cs = f, x[order], c[order]  # order permutes within each feature's run: f[order] is f
     new = np.r_[True, (fs[1:] != fs[:-1]) | (xs[1:] != xs[:-1])]
     first = np.flatnonzero(new)
     return fs[first], xs[first], np.add.reduceat(cs, first)
@@ -498,21 +318,45 @@ def zonal_stats(
     >>> rastrum.zonal_stats(raster, [square], stats=["count", "mean", "max"], output="records")
     [{'count': 4.0, 'mean': 5.0, 'max': 10.0}]
     """
+    ops = _check_options(stats, coverage_weight, output, rule)
+    data, mask, transform, nodata, banded = _raster(raster, transform, nodata)
+    B, H, W = data.shape
+    wt_raster = None
+    if weights is not None:
+        wt_raster = np.asarray(weights, dtype=np.float64)
+    _check_weights(ops, None if weights is None else wt_raster.shape, (H, W))
+    f, cells, c, index, nfeat = _features(geometries, transform, (H, W), rule, coverage_weight, progress)
+    flat = data.reshape(B, H * W)
+    xs = [flat[band][cells] for band in range(B)]
+    masks = None if mask is None else [mask[band].ravel()[cells] for band in range(B)]
+    wt = None if wt_raster is None else wt_raster.ravel()[cells]
+    return _table(_columns(ops, f, c, xs, masks, wt, nodata, banded, nfeat), nfeat, index, output)
+
+
+def _check_options(stats, coverage_weight, output, rule):
+    """The parsed stats, once the options are checked."""
     ops = _parse_stats(stats)
     if coverage_weight not in ("fraction", "none"):
         raise InputError("coverage_weight must be 'fraction' or 'none', not %r" % (coverage_weight,))
     if output not in ("auto", "pandas", "records"):
         raise InputError("output must be 'auto', 'pandas' or 'records', not %r" % (output,))
     gis._core._name(rule, "fill rule", gis._core.RULES)
-    data, mask, transform, nodata, banded = _raster(raster, transform, nodata)
-    B, H, W = data.shape
-    wt_raster = None
-    if weights is not None:
-        wt_raster = np.asarray(weights, dtype=np.float64)
-        if wt_raster.shape != (H, W):
-            raise InputError("weights: shape %r differs from the raster's (%d, %d)" % (wt_raster.shape, H, W))
+    return ops
+
+
+def _check_weights(ops, shape, raster_shape):
+    if shape is not None:
+        if tuple(shape) != tuple(raster_shape):
+            raise InputError("weights: shape %r differs from the raster's %r" % (tuple(shape), tuple(raster_shape)))
     elif any(op.startswith("weighted") for _, op, _ in ops):
         raise InputError("stats: %s need weights=" % ", ".join(c for c, op, _ in ops if op.startswith("weighted")))
+
+
+def _features(geometries, transform, shape, rule, coverage_weight, progress):
+    """(feature ids, flat cells, fractions, index, number of features): the
+    cells every feature covers in a raster of `shape`, as zonal_stats
+    weighs them."""
+    H, W = shape
     inv = gis._inverse(gis._transform6(transform))
     geoms, index = _geometries(geometries)
     xy, ring_sizes, part_rings, kind, feature, _ = gis._flatten(geoms)
@@ -530,24 +374,29 @@ def zonal_stats(
         bar.close()
     if coverage_weight == "none":
         c = np.ones_like(c)
+    return f, cells, c, index, nfeat
+
+
+def _columns(ops, f, c, xs, masks, wt_all, nodata, banded, nfeat):
+    """{column: per-feature values}: xs[band] holds the band's value at
+    every covered cell (masks[band] whether it is masked), wt_all the
+    weights there."""
     columns: Dict[str, np.ndarray] = {}
-    flat = data.reshape(B, H * W)
-    for band in range(B):
-        x = flat[band][cells]
+    for band, x in enumerate(xs):
         valid = np.ones(len(x), bool)
         if x.dtype.kind == "f":
             valid &= ~np.isnan(x)
         if nodata is not None:
             valid &= x != nodata
-        if mask is not None:
-            valid &= ~mask[band].ravel()[cells]
+        if masks is not None:
+            valid &= ~masks[band]
         x = x.astype(np.float64)
         sel = valid if not valid.all() else slice(None)
-        wt = None if wt_raster is None else wt_raster.ravel()[cells][sel]
+        wt = None if wt_all is None else wt_all[sel]
         res = _band_stats(ops, f[sel], x[sel], c[sel], wt, nfeat)
         for column, v in res.items():
             columns[("band_%d_%s" % (band + 1, column)) if banded else column] = v
-    return _table(columns, nfeat, index, output)
+    return columns
 
 
 def _table(columns, nfeat, index, output):

@@ -435,14 +435,17 @@ def _split_shapes(shapes, default_value, fill, values):
     return geoms, [fill if v is None else v for v in values]
 
 
-def _merge_name(merge_alg):
+def _merge_name(merge_alg, coverage=False):
     name = merge_alg
     if not isinstance(name, str):
         name = getattr(merge_alg, "name", None)  # rasterio.enums.MergeAlg
-    if isinstance(name, str) and name.lower() in ("replace", "add"):
+    if isinstance(name, str) and name.lower() in (("replace", "add", "max") if coverage else ("replace", "add")):
         return name.lower()
-    raise InputError("unknown merge_alg %r; choose one of: add, replace (or rasterio's MergeAlg members)"
-                     % (merge_alg,))
+    if isinstance(name, str) and name.lower() == "max":
+        raise InputError("unknown merge_alg 'max' without coverage; choose one of: add, replace ('max' merges "
+                         "coverage fractions: pass coverage='area')")
+    raise InputError("unknown merge_alg %r; choose one of: add, replace%s (or rasterio's MergeAlg members)"
+                     % (merge_alg, ", max" if coverage else ""))
 
 
 def _out_array(out, out_shape, dtype, fill, values):
@@ -549,6 +552,7 @@ def rasterize(
     masked: bool = False,
     skip_invalid: bool = False,
     tolerance: Optional[float] = None,
+    coverage: Optional[str] = None,
 ) -> np.ndarray:
     """Burn shapes into a 2-D array, as ``rasterio.features.rasterize``.
 
@@ -578,9 +582,12 @@ def rasterize(
         the library's exact rule; True: also every pixel whose open square
         an edge meets (the conservative boundary mode); lines likewise burn
         every pixel they pass through.
-    merge_alg : "replace" or "add" (or rasterio's MergeAlg members)
+    merge_alg : "replace" or "add" (or rasterio's MergeAlg members); "max" with `coverage`
         "add" adds each value, saturating at the dtype's limits (integers)
         or rounding the float64 sum to the dtype (floats), as GDAL does.
+        With `coverage`: "replace" writes each shape's value * fraction on
+        the cells it covers (fraction > 0; later shapes win), "add" adds
+        it, "max" keeps the larger (a NaN cell takes the shape's).
     default_value : number
         The value of geometries given without one.
     dtype : one of DTYPES
@@ -612,6 +619,15 @@ def rasterize(
         its curves flattened within `tolerance` PIXELS of the true ones
         (None: the Path's own, else ``Path.DEFAULT_TOLERANCE``;
         docs/paths.md).
+    coverage : str, optional
+        Burn coverage fractions instead of pixels: "area" (the exact area
+        of each cell inside the shape, its vertices snapped to 2^-S px, S
+        as fine as ``polygon_coverage`` takes for the shape's window) or a
+        ``polygon_coverage`` method ("ss4", ...).  Each feature (a Polygon
+        or MultiPolygon, its rings together under `rule`) burns value *
+        fraction; dtype float64 (the default) or float32, or uint8/uint16
+        levels (floor(a*255 + 1/2), floor(a*65535 + 1/2); values must be
+        1).  `all_touched` must be False.  docs/gis.md, "Coverage".
 
     Returns
     -------
@@ -637,10 +653,21 @@ def rasterize(
            [0, 7, 7, 7, 0],
            [0, 0, 0, 0, 0]], dtype=uint8)
     """
-    merge = _merge_name(merge_alg)
+    merge = _merge_name(merge_alg, coverage is not None)
     _core._name(rule, "fill rule", _core.RULES)
     if not isinstance(all_touched, (bool, np.bool_)):
         raise InputError("all_touched must be True or False, not %r" % (all_touched,))
+    if coverage is not None:
+        from . import _fractions
+        coverage = _fractions._method(coverage)
+        if all_touched:
+            raise InputError("all_touched=True has no meaning with coverage= (every touched cell has its fraction)")
+        if dtype is None and out is None:
+            dtype = "float64"
+        if dtype is not None:
+            _fractions._coverage_dtype(dtype)
+        if out is not None and isinstance(out, np.ndarray):
+            _fractions._coverage_dtype(out.dtype, "out: dtype")
     t6 = _transform6(transform)
     inv = _inverse(t6)
     geoms, vals = _split_shapes(shapes, default_value, fill, values)
@@ -656,7 +683,11 @@ def rasterize(
         _fits(_real(nodata, "nodata"), dt, "nodata")
     if not isinstance(masked, (bool, np.bool_)):
         raise InputError("masked must be True or False, not %r" % (masked,))
-    vals = _values(vals, dt)
+    if coverage is not None:
+        _fractions.check_values(vals, dt)
+        vals = _values(vals, np.dtype(np.float64)) if dt.kind == "f" else vals
+    else:
+        vals = _values(vals, dt)
     xy, ring_sizes, part_rings, kind, feature, geom = flat if flat is not None else _flatten(geoms)
     px = _pixels(xy, inv, ring_sizes, part_rings, feature)
     bar = _Progress(progress, len(geoms))
@@ -665,10 +696,13 @@ def rasterize(
         # zeros (not -0.0): pages the kernel clears as they are first touched
         zero = fill_v == 0 and math.copysign(1.0, fill_v) > 0
         target = np.zeros((h, w), dt) if zero else np.full((h, w), fill_v, dt)
-    part_values = vals[feature]
     try:
-        _burn.burn(target, px, ring_sizes, part_rings, kind, part_values, feature, geom, merge,
-                   bool(all_touched), rule, bar)
+        if coverage is not None:
+            _fractions.burn_coverage(target, px, ring_sizes, part_rings, kind, feature, len(geoms), vals, merge,
+                                     rule, coverage, bar if bar.active else None)
+        else:
+            _burn.burn(target, px, ring_sizes, part_rings, kind, vals[feature], feature, geom, merge,
+                       bool(all_touched), rule, bar)
     finally:
         bar.close()
     if masked:

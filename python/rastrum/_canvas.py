@@ -377,12 +377,47 @@ class Canvas:
                                            _shading.shade_opts(precision, 16),
                                            "tri" if entry == "Canvas.fill_triangle" else "tris")
 
+    def _blend(self, entry, geometry, blend, aa, rule, subpixel_bits, sample_offset, algorithm, rounding,
+               boundary, vertex_colors, depth=None):
+        """A fill whose colour's alpha (times opacity) is applied: the
+        geometry's uint8 coverage (aa) or mask (255 inside) through
+        rast_blend_coverage (docs/opacity.md)."""
+        from . import polygon_mask
+
+        if vertex_colors is not None or depth is not None:
+            raise InputError("%s: opacity and a colour's alpha are for one colour (color=), without "
+                             "vertex_colors or depth" % entry)
+        target = self._writable()
+        shape = (self.height, self.width)
+        tris = entry != "Canvas.fill_polygon"
+        if aa is not None:
+            _coverage.aa_opts(aa, rule, subpixel_bits, sample_offset, entry,
+                              dict(algorithm=(algorithm, "edge" if tris else "aet"), rounding=(rounding, "exact"),
+                                   boundary=(boundary, "exact")))
+            if tris:
+                cov = _coverage.triangles_coverage(geometry, shape, method=aa, subpixel_bits=subpixel_bits,
+                                                   sample_offset=sample_offset)
+            else:
+                cov = _coverage.polygon_coverage(geometry, shape, rule=rule, method=aa,
+                                                 subpixel_bits=subpixel_bits, sample_offset=sample_offset)
+        elif tris:
+            cov = _triangles.triangles_mask(geometry, shape, algorithm=algorithm, subpixel_bits=subpixel_bits,
+                                            sample_offset=sample_offset, rounding=rounding, boundary=boundary)
+        else:
+            cov = polygon_mask(geometry, shape, rule=rule, algorithm=algorithm, subpixel_bits=subpixel_bits,
+                               sample_offset=sample_offset, rounding=rounding, boundary=boundary)
+        cov = np.ascontiguousarray(cov, np.uint8) * np.uint8(255 if cov.dtype == np.bool_ else 1)
+        if cov.size:
+            _core._check(lib.rast_blend_coverage(target, ffi.from_buffer(cov), lib.RAST_COVERAGE_U8,
+                                                 cov.strides[0], blend[0], blend[1]))
+
     @_label_spill
     def fill_polygon(self, rings: Rings, color: Optional[Color] = None, *, rule: Rule = "evenodd",
                      algorithm: PolygonAlgorithm = "aet", subpixel_bits: int = 8, sample_offset: float = 0.5,
                      rounding: Rounding = "exact", boundary: Boundary = "exact",
                      vertex_colors: Optional[npt.ArrayLike] = None, shading: Shading = "gouraud",
-                     precision: Precision = "exact", aa: Optional[CoverageMethod] = None) -> None:
+                     precision: Precision = "exact", aa: Optional[CoverageMethod] = None,
+                     opacity: Optional[float] = None) -> None:
         """Paint `color` on every pixel whose sample is inside the polygon.
 
         Arguments as :func:`rastrum.polygon_mask`.  Nothing is written when
@@ -410,6 +445,12 @@ class Canvas:
         `vertex_colors`, as for :meth:`fill_triangle` and
         :meth:`fill_triangles`.
         """
+        if opacity is not None or (color is not None and type(color) is not int):
+            blend, color = _blend_args(color, opacity, self._format, "Canvas.fill_polygon")
+            if blend is not None:
+                self._blend("Canvas.fill_polygon", rings, blend, aa, rule, subpixel_bits, sample_offset,
+                            algorithm, rounding, boundary, vertex_colors)
+                return
         # The common call (one C-contiguous float64 (N, 2) ring, or a list of
         # (x, y) pairs, and a colour) goes straight to C, which snaps every
         # point before it writes a pixel (and refuses what the 64-bit path
@@ -464,7 +505,8 @@ class Canvas:
                       vertex_colors: Optional[npt.ArrayLike] = None, shading: Shading = "gouraud",
                       precision: Precision = "exact", fraction_bits: int = 16,
                       algorithm: TriangleAlgorithm = "edge", subpixel_bits: int = 8, sample_offset: float = 0.5,
-                      rounding: Rounding = "exact", boundary: Boundary = "exact", aa: Optional[CoverageMethod] = None) -> None:
+                      rounding: Rounding = "exact", boundary: Boundary = "exact", aa: Optional[CoverageMethod] = None,
+                      opacity: Optional[float] = None) -> None:
         """Paint `color` on every pixel the triangle `tri` owns.
 
         `tri` is three (x, y) vertices, in either winding order; the other
@@ -472,8 +514,15 @@ class Canvas:
         triangle paints nothing.  Nothing is written when an argument is bad.
         Give exactly one of `color` and `vertex_colors` (a (3, C) array, a
         colour per vertex, shaded as by :meth:`fill_triangles`), as for
-        :meth:`fill_polygon`.  `aa`: anti-aliased, as :meth:`fill_triangles`.
+        :meth:`fill_polygon`.  `aa`: anti-aliased, as :meth:`fill_triangles`;
+        `opacity` and a colour's alpha as :meth:`fill_polygon`.
         """
+        if opacity is not None or (color is not None and type(color) is not int):
+            blend, color = _blend_args(color, opacity, self._format, "Canvas.fill_triangle")
+            if blend is not None:
+                self._blend("Canvas.fill_triangle", _triangles.tris_f64(tri, single=True), blend, aa, "nonzero",
+                            subpixel_bits, sample_offset, algorithm, rounding, boundary, vertex_colors)
+                return
         if aa is not None:
             self._fill_aa(_triangles.tris_f64(tri, single=True), color, aa, "nonzero", subpixel_bits,
                           sample_offset, "Canvas.fill_triangle", algorithm=(algorithm, "edge"),
@@ -503,7 +552,8 @@ class Canvas:
                        precision: Precision = "exact", fraction_bits: int = 16,
                        depth: Optional[npt.ArrayLike] = None, algorithm: TriangleAlgorithm = "edge",
                        subpixel_bits: int = 8, sample_offset: float = 0.5, rounding: Rounding = "exact",
-                       boundary: Boundary = "exact", aa: Optional[CoverageMethod] = None) -> None:
+                       boundary: Boundary = "exact", aa: Optional[CoverageMethod] = None,
+                       opacity: Optional[float] = None) -> None:
         """Paint every pixel owned by a triangle of the batch.
 
         `tris` is an (N, 3, 2) array-like of (x, y) vertices, drawn in one C
@@ -566,6 +616,12 @@ class Canvas:
                [9, 9, 9, 9, 0, 0],
                [9, 9, 9, 9, 0, 0]], dtype=uint8)
         """
+        if opacity is not None or (color is not None and type(color) is not int and np.ndim(color) < 2):
+            blend, color = _blend_args(color, opacity, self._format, "Canvas.fill_triangles")
+            if blend is not None:
+                self._blend("Canvas.fill_triangles", _triangles.tris_f64(tris), blend, aa, "nonzero",
+                            subpixel_bits, sample_offset, algorithm, rounding, boundary, vertex_colors, depth)
+                return
         if aa is not None:
             self._fill_aa(_triangles.tris_f64(tris), color, aa, "nonzero", subpixel_bits, sample_offset,
                           "Canvas.fill_triangles", algorithm=(algorithm, "edge"),
@@ -842,6 +898,95 @@ def _rgba_bytes(color, fmt):
         color = 255 if color else 0  # a flat mono1 colour: on iff not 0
     values = _pixel_bytes(color, "rgba8888" if n == 4 else "rgb888" if n == 3 else "gray8")
     return (values * 3)[:3] + b"\xff" if n == 1 else values + (b"\xff" if n == 3 else b"")
+
+
+
+# The formats a colour's alpha is applied on (rast_blend_coverage).
+_BLEND_FORMATS = ("gray8", "rgb888", "rgb565", "rgba8888")
+
+
+def _opacity_level(opacity, entry):
+    """`opacity` (a real number in 0..1) as a level 0..255:
+    floor(opacity * 255 + 1/2) of the number's exact value (docs/opacity.md)."""
+    import fractions
+    import math
+
+    if isinstance(opacity, (bool, np.bool_)) or not isinstance(opacity, (int, float, np.integer, np.floating)) \
+            or not math.isfinite(float(opacity)) or not 0 <= opacity <= 1:
+        raise InputError("%s: opacity must be a number in 0..1, not %r" % (entry, opacity))
+    return math.floor(fractions.Fraction(float(opacity)) * 255 + fractions.Fraction(1, 2))
+
+
+def _blend_rgba(color, fmt):
+    """The straight 8-bit RGBA colour (4 bytes) `color` blends with on a
+    `fmt` canvas: rgba8888 its pixel value (R, G, B, A); the others their
+    colour (an int, (R, G, B) or gray8's level) with alpha 255, or that
+    colour plus an alpha ((R, G, B, A), gray8 (L, A)), or a string through
+    Pillow's ImageColor with its alpha ("#rrggbbaa")."""
+    if fmt == "rgba8888":
+        return _pixel_bytes(color, fmt)
+    n = 1 if fmt == "gray8" else 3
+    if isinstance(color, str):
+        from PIL import ImageColor
+
+        try:
+            value = ImageColor.getcolor(color, "LA" if n == 1 else "RGBA")
+        except ValueError:
+            raise InputError('colour %r: not a colour name (e.g. "red") nor "#rgb", "#rrggbb" or "#rrggbbaa" '
+                             "(the names and spellings of Pillow's ImageColor)" % (color,)) from None
+        return bytes(bytearray([value[0]] * 3 + [value[1]] if n == 1 else list(value)))
+    color = _core.as_numpy(color)
+    if not _is_int(color):
+        try:
+            values = list(color)
+        except TypeError:
+            values = None
+        if values is not None and len(values) == n + 1:
+            alpha = values[n]
+            if not _is_int(alpha) or not 0 <= alpha <= 255:
+                raise InputError("colour %r: its alpha must be an int in 0..255" % (color,))
+            rgb = _rgba_bytes(values[0] if n == 1 else values[:n], "rgb888" if n == 3 else fmt)
+            return rgb[:3] + bytes(bytearray([int(alpha)]))
+    return _rgba_bytes(color, "rgb888" if n == 3 else fmt)
+
+
+def _blend_args(color, opacity, fmt, entry):
+    """(blend, color): blend None for a colour painted as a value (no
+    opacity given, and alpha 255 or a format whose alpha is stored), with
+    `color` less its alpha 255 if it had one; else (RGBA cdata,
+    rast_blend_opts) for rast_blend_coverage."""
+    n = 1 if fmt == "gray8" else 3
+    if color is None:
+        if opacity is not None:
+            raise InputError("%s: opacity is for one colour (color=), not vertex_colors" % entry)
+        return None, color
+    if opacity is None:
+        if fmt not in _BLEND_FORMATS or fmt == "rgba8888" or type(color) is int:
+            return None, color
+        if not isinstance(color, str):
+            try:
+                k = len(color)
+            except TypeError:
+                return None, color
+            if k != n + 1 or np.ndim(color) != 1:
+                return None, color
+        level = 255
+    else:
+        level = _opacity_level(opacity, entry)
+        if fmt not in _BLEND_FORMATS:
+            raise InputError("%s: opacity is for gray8, rgb888, rgb565 and rgba8888 canvases, not %s"
+                             % (entry, fmt))
+        if np.ndim(color) >= 2:
+            raise InputError("%s: opacity takes one colour, not one per triangle" % entry)
+    rgba = _blend_rgba(color, fmt)
+    if fmt != "rgba8888" and rgba[3] == 255 and level == 255:  # opaque: the value's fill, bit for bit
+        if isinstance(color, str):
+            return None, color
+        return None, (color if _is_int(_core.as_numpy(color)) or len(color) == n
+                      else (color[0] if n == 1 else tuple(color[:n])))
+    opts = ffi.new("rast_blend_opts *")
+    opts.opacity = level
+    return (ffi.new("uint8_t[4]", list(bytearray(rgba))), opts), color
 
 
 # A label value's bytes are copied verbatim by the painters of these formats.

@@ -409,7 +409,7 @@ class Canvas:
         cov = np.ascontiguousarray(cov, np.uint8) * np.uint8(255 if cov.dtype == np.bool_ else 1)
         if cov.size:
             _core._check(lib.rast_blend_coverage(target, ffi.from_buffer(cov), lib.RAST_COVERAGE_U8,
-                                                 cov.strides[0], blend[0], blend[1]))
+                                                 cov.shape[1], blend[0], blend[1]))
 
     @_label_spill
     def fill_polygon(self, rings: Rings, color: Optional[Color] = None, *, rule: Rule = "evenodd",

@@ -313,3 +313,70 @@ def test_canvas_per_triangle_colours_refuse_opacity():
     with pytest.raises(rastrum.InputError, match="one colour"):
         c.fill_triangles(TRIS, [(1, 2, 3), (4, 5, 6)], opacity=0.5)
     assert not c.array.any()
+
+
+# ---- linear light (gamma=) -----------------------------------------------------
+
+def linear_table(gamma):
+    """round(2^24 decode(k / 255)) for every level k: the stated tables."""
+    if gamma == "srgb":
+        f = [v / 12.92 if v <= 0.04045 else ((v + 0.055) / 1.055) ** 2.4 for v in (k / 255 for k in range(256))]
+    else:
+        f = [(k / 255) ** gamma for k in range(256)]
+    return [math.floor((1 << 24) * v + 0.5) for v in f]
+
+
+def linear_expected(dec, s, d, a):
+    """The level whose table value is nearest the exact mix
+    (dec[s] a + dec[d] (255 - a)) / 255, ties to the lower: a scan of all
+    256 levels, in integers scaled by 255 (exact)."""
+    if a == 0:
+        return d
+    x = dec[s] * a + dec[d] * (255 - a)
+    return min(range(256), key=lambda k: (abs(255 * dec[k] - x), k))
+
+
+@pytest.mark.parametrize("gamma", ["srgb", 2.2, 0.5])
+def test_linear_light_gray8_exhaustive(gamma):
+    """Every destination level, several sources and alpha levels."""
+    dec = linear_table(gamma)
+    assert all(p < q for p, q in zip(dec, dec[1:]))
+    rows = [(s, a) for s in (0, 1, 128, 254, 255) for a in (1, 2, 64, 128, 200, 254, 255)]
+    c = rastrum.Canvas((len(rows), 256), format="gray8")
+    c.array[...] = np.arange(256, dtype=np.uint8)
+    for j, (s, a) in enumerate(rows):
+        c.fill_polygon([(0, j), (256, j), (256, j + 1), (0, j + 1)], (s, a), gamma=gamma)
+    table = np.array(dec, np.int64)
+    d = np.arange(256)
+    want = np.array([np.abs(255 * table[None, :] - (table[s] * a + table[d] * (255 - a))[:, None]).argmin(axis=1)
+                     for s, a in rows], np.uint8)  # linear_expected for every d (argmin: the lowest on a tie)
+    assert [linear_expected(dec, s, 77, a) for s, a in rows] == list(want[:, 77])
+    np.testing.assert_array_equal(c.array, want)
+
+
+def test_linear_light_rgb888_aa():
+    """Anti-aliased, with opacity: A from the coverage as the core's, each
+    channel mixed in linear light."""
+    rng = np.random.default_rng(2)
+    dec = linear_table("srgb")
+    c = rastrum.Canvas((7, 9), format="rgb888")
+    c.array[...] = rng.integers(0, 256, c.array.shape, dtype=np.uint8)
+    before = c.array.copy()
+    c.fill_polygon(RING, "#ff8000c0", aa="area", opacity=0.8, gamma="srgb")
+    cov = rastrum.polygon_coverage(RING, (7, 9), method="area")
+    lv = nearest(Q(0.8) * 255)
+    for y, x in np.ndindex(7, 9):
+        a = level(0xC0, lv, int(cov[y, x]), 255)
+        for k, s in enumerate((0xFF, 0x80, 0x00)):
+            assert c.array[y, x, k] == linear_expected(dec, s, int(before[y, x, k]), a), (y, x, k)
+
+
+@pytest.mark.parametrize("fmt, gamma", [("rgb565", "srgb"), ("rgba8888", 2.2), ("gray8", "linear"),
+                                        ("gray8", 5.0), ("gray8", 0.1), ("gray8", True), ("gray8", float("nan"))])
+def test_linear_light_bad_input(fmt, gamma):
+    c = rastrum.Canvas((4, 4), format=fmt, background=3)
+    before = c.array.copy()
+    with pytest.raises(rastrum.InputError, match="gamma"):
+        c.fill_polygon([(0, 0), (4, 0), (4, 4)], 200 if fmt == "gray8" else (1, 2, 3, 4)[:4 if fmt == "rgba8888" else 3],
+                       gamma=gamma)
+    np.testing.assert_array_equal(c.array, before)

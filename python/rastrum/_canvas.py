@@ -407,7 +407,10 @@ class Canvas:
             cov = polygon_mask(geometry, shape, rule=rule, algorithm=algorithm, subpixel_bits=subpixel_bits,
                                sample_offset=sample_offset, rounding=rounding, boundary=boundary)
         cov = np.ascontiguousarray(cov, np.uint8) * np.uint8(255 if cov.dtype == np.bool_ else 1)
-        if cov.size:
+        if blend[2] is not None:
+            if cov.size:
+                _linear_blend(self._array, cov, bytes(ffi.buffer(blend[0])), blend[1].opacity, blend[2])
+        elif cov.size:
             _core._check(lib.rast_blend_coverage(target, ffi.from_buffer(cov), lib.RAST_COVERAGE_U8,
                                                  cov.shape[1], blend[0], blend[1]))
 
@@ -417,7 +420,7 @@ class Canvas:
                      rounding: Rounding = "exact", boundary: Boundary = "exact",
                      vertex_colors: Optional[npt.ArrayLike] = None, shading: Shading = "gouraud",
                      precision: Precision = "exact", aa: Optional[CoverageMethod] = None,
-                     opacity: Optional[float] = None) -> None:
+                     opacity: Optional[float] = None, gamma: Union[None, str, float] = None) -> None:
         """Paint `color` on every pixel whose sample is inside the polygon.
 
         Arguments as :func:`rastrum.polygon_mask`.  Nothing is written when
@@ -445,8 +448,8 @@ class Canvas:
         `vertex_colors`, as for :meth:`fill_triangle` and
         :meth:`fill_triangles`.
         """
-        if opacity is not None or (color is not None and type(color) is not int):
-            blend, color = _blend_args(color, opacity, self._format, "Canvas.fill_polygon")
+        if opacity is not None or gamma is not None or (color is not None and type(color) is not int):
+            blend, color = _blend_args(color, opacity, self._format, "Canvas.fill_polygon", gamma)
             if blend is not None:
                 self._blend("Canvas.fill_polygon", rings, blend, aa, rule, subpixel_bits, sample_offset,
                             algorithm, rounding, boundary, vertex_colors)
@@ -506,7 +509,7 @@ class Canvas:
                       precision: Precision = "exact", fraction_bits: int = 16,
                       algorithm: TriangleAlgorithm = "edge", subpixel_bits: int = 8, sample_offset: float = 0.5,
                       rounding: Rounding = "exact", boundary: Boundary = "exact", aa: Optional[CoverageMethod] = None,
-                      opacity: Optional[float] = None) -> None:
+                      opacity: Optional[float] = None, gamma: Union[None, str, float] = None) -> None:
         """Paint `color` on every pixel the triangle `tri` owns.
 
         `tri` is three (x, y) vertices, in either winding order; the other
@@ -517,8 +520,8 @@ class Canvas:
         :meth:`fill_polygon`.  `aa`: anti-aliased, as :meth:`fill_triangles`;
         `opacity` and a colour's alpha as :meth:`fill_polygon`.
         """
-        if opacity is not None or (color is not None and type(color) is not int):
-            blend, color = _blend_args(color, opacity, self._format, "Canvas.fill_triangle")
+        if opacity is not None or gamma is not None or (color is not None and type(color) is not int):
+            blend, color = _blend_args(color, opacity, self._format, "Canvas.fill_triangle", gamma)
             if blend is not None:
                 self._blend("Canvas.fill_triangle", _triangles.tris_f64(tri, single=True), blend, aa, "nonzero",
                             subpixel_bits, sample_offset, algorithm, rounding, boundary, vertex_colors)
@@ -553,7 +556,7 @@ class Canvas:
                        depth: Optional[npt.ArrayLike] = None, algorithm: TriangleAlgorithm = "edge",
                        subpixel_bits: int = 8, sample_offset: float = 0.5, rounding: Rounding = "exact",
                        boundary: Boundary = "exact", aa: Optional[CoverageMethod] = None,
-                       opacity: Optional[float] = None) -> None:
+                       opacity: Optional[float] = None, gamma: Union[None, str, float] = None) -> None:
         """Paint every pixel owned by a triangle of the batch.
 
         `tris` is an (N, 3, 2) array-like of (x, y) vertices, drawn in one C
@@ -616,8 +619,9 @@ class Canvas:
                [9, 9, 9, 9, 0, 0],
                [9, 9, 9, 9, 0, 0]], dtype=uint8)
         """
-        if opacity is not None or (color is not None and type(color) is not int and np.ndim(color) < 2):
-            blend, color = _blend_args(color, opacity, self._format, "Canvas.fill_triangles")
+        if opacity is not None or gamma is not None or (
+                color is not None and type(color) is not int and np.ndim(color) < 2):
+            blend, color = _blend_args(color, opacity, self._format, "Canvas.fill_triangles", gamma)
             if blend is not None:
                 self._blend("Canvas.fill_triangles", _triangles.tris_f64(tris), blend, aa, "nonzero",
                             subpixel_bits, sample_offset, algorithm, rounding, boundary, vertex_colors, depth)
@@ -950,16 +954,24 @@ def _blend_rgba(color, fmt):
     return _rgba_bytes(color, "rgb888" if n == 3 else fmt)
 
 
-def _blend_args(color, opacity, fmt, entry):
+def _blend_args(color, opacity, fmt, entry, gamma=None):
     """(blend, color): blend None for a colour painted as a value (no
-    opacity given, and alpha 255 or a format whose alpha is stored), with
-    `color` less its alpha 255 if it had one; else (RGBA cdata,
-    rast_blend_opts) for rast_blend_coverage."""
+    opacity or gamma given, and alpha 255 or a format whose alpha is
+    stored), with `color` less its alpha 255 if it had one; else (RGBA
+    cdata, rast_blend_opts, gamma tables or None) for rast_blend_coverage
+    or the linear-light blend."""
     n = 1 if fmt == "gray8" else 3
     if color is None:
-        if opacity is not None:
-            raise InputError("%s: opacity is for one colour (color=), not vertex_colors" % entry)
+        if opacity is not None or gamma is not None:
+            raise InputError("%s: opacity and gamma are for one colour (color=), not vertex_colors" % entry)
         return None, color
+    tables = None
+    if gamma is not None:
+        if fmt not in ("gray8", "rgb888"):
+            raise InputError("%s: gamma= blends gray8 and rgb888 canvases, not %s" % (entry, fmt))
+        tables = _gamma_tables(gamma, entry)
+        if opacity is None:
+            opacity = 1.0
     if opacity is None:
         if fmt not in _BLEND_FORMATS or fmt == "rgba8888" or type(color) is int:
             return None, color
@@ -979,14 +991,66 @@ def _blend_args(color, opacity, fmt, entry):
         if np.ndim(color) >= 2:
             raise InputError("%s: opacity takes one colour, not one per triangle" % entry)
     rgba = _blend_rgba(color, fmt)
-    if fmt != "rgba8888" and rgba[3] == 255 and level == 255:  # opaque: the value's fill, bit for bit
+    if fmt != "rgba8888" and rgba[3] == 255 and level == 255 and tables is None:  # opaque: the value's fill
         if isinstance(color, str):
             return None, color
         return None, (color if _is_int(_core.as_numpy(color)) or len(color) == n
                       else (color[0] if n == 1 else tuple(color[:n])))
     opts = ffi.new("rast_blend_opts *")
     opts.opacity = level
-    return (ffi.new("uint8_t[4]", list(bytearray(rgba))), opts), color
+    return (ffi.new("uint8_t[4]", list(bytearray(rgba))), opts, tables), color
+
+
+# 2^24: the linear-light tables' scale (every table strictly increasing).
+_LINEAR_ONE = 1 << 24
+
+
+@functools.lru_cache(maxsize=16)
+def _gamma_table(gamma):
+    import math
+
+    if gamma == "srgb":
+        f = [v / 12.92 if v <= 0.04045 else ((v + 0.055) / 1.055) ** 2.4 for v in (k / 255 for k in range(256))]
+    else:
+        f = [(k / 255) ** gamma for k in range(256)]
+    dec = np.array([math.floor(_LINEAR_ONE * v + 0.5) for v in f], np.int64)
+    thresholds = 255 * (dec[:-1] + dec[1:])  # 2 x 255 x the midpoints between levels
+    return dec, thresholds
+
+
+def _gamma_tables(gamma, entry):
+    """gamma "srgb" or a number in 0.3..3: the linear-light table of every
+    level, round(2**24 * decode(level / 255)), and its midpoints
+    (docs/opacity.md)."""
+    if isinstance(gamma, str):
+        if gamma != "srgb":
+            raise InputError('%s: gamma must be "srgb" or a number in 0.3..3, not %r' % (entry, gamma))
+    elif isinstance(gamma, (bool, np.bool_)) or not isinstance(gamma, (int, float, np.integer, np.floating)) \
+            or not 0.3 <= float(gamma) <= 3:
+        raise InputError('%s: gamma must be "srgb" or a number in 0.3..3, not %r' % (entry, gamma))
+    else:
+        gamma = float(gamma)
+    return _gamma_table(gamma)
+
+
+def _linear_blend(array, cov, rgba, level, tables):
+    """The colour mixed in linear light into the gray8 (H, W) or rgb888
+    (H, W, 3) `array` at the alpha levels of the uint8 coverage `cov`:
+    A = round(alpha level cov / 255^2) as the core's; where A > 0, each
+    channel the level whose linear value is nearest to the exact mix
+    (dec[s] A + dec[d] (255 - A)) / 255, ties to the lower level."""
+    dec, thresholds = tables
+    a = (np.int64(rgba[3] * level) * cov.astype(np.int64) + 32512) // 65025
+    on = a > 0
+    if not on.any():
+        return
+    a = a[on]
+    d = array[on].astype(np.int64)
+    s = np.array(bytearray(rgba[:3]) if array.ndim == 3 else bytearray(rgba[:1]), np.int64)
+    if array.ndim == 3:
+        a = a[:, None]
+    x = dec[s] * a + dec[d] * (255 - a)
+    array[on] = np.searchsorted(thresholds, 2 * x, side="left").astype(np.uint8)
 
 
 # A label value's bytes are copied verbatim by the painters of these formats.

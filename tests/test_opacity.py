@@ -380,3 +380,15 @@ def test_linear_light_bad_input(fmt, gamma):
         c.fill_polygon([(0, 0), (4, 0), (4, 4)], 200 if fmt == "gray8" else (1, 2, 3, 4)[:4 if fmt == "rgba8888" else 3],
                        gamma=gamma)
     np.testing.assert_array_equal(c.array, before)
+
+
+def test_docs_examples_run():
+    """docs/opacity.md's Python examples run as written."""
+    import os
+    import re
+
+    text = open(os.path.join(os.path.dirname(__file__), "..", "docs", "opacity.md"), encoding="utf-8").read()
+    blocks = re.findall(r"^```python\n(.*?)^```", text, re.S | re.M)
+    assert blocks
+    for k, block in enumerate(blocks):
+        exec(compile(block, "docs/opacity.md block %d" % k, "exec"), {})

@@ -13,6 +13,7 @@ Where each comes from:
     coverage.png                      bench/demo.py (make demo writes them
                                       to out/ with the others)
     docs/coco_rules.png               tools/coco_picture.py
+    docs/opacity.png                  tools/opacity_picture.py
 - firmware size tables (deterministic for a given arm-none-eabi-gcc:
   checked against what make firmware-check prints):
     README.md "What typical applications link", docs/c.md's table of the
@@ -81,7 +82,9 @@ def render(out):
         stdout=subprocess.DEVNULL)
     run([sys.executable, os.path.join(ROOT, "tools", "coco_picture.py"), os.path.join(out, "coco_rules.png")],
         stdout=subprocess.DEVNULL)
-    return DEMO_PICTURES + ["coco_rules.png"]
+    run([sys.executable, os.path.join(ROOT, "tools", "opacity_picture.py"), os.path.join(out, "opacity.png")],
+        stdout=subprocess.DEVNULL)
+    return DEMO_PICTURES + ["coco_rules.png", "opacity.png"]
 
 
 def pixels(path):

@@ -447,6 +447,15 @@ class Canvas:
         ``algorithm="aet"``.  Give exactly one of `color` and
         `vertex_colors`, as for :meth:`fill_triangle` and
         :meth:`fill_triangles`.
+
+        A colour's alpha ((R, G, B, A); gray8 (L, A); "#rrggbbaa") and
+        `opacity` (a number in 0..1, the level floor(opacity*255 + 1/2))
+        are applied source-over on gray8, rgb888, rgb565 and rgba8888
+        canvases, binary or with `aa`: the alpha level
+        round(alpha*o*c / 255**2) rounded once, then each channel's mix
+        (rgba8888: straight alpha; there a colour without `opacity` is a
+        pixel value, stored).  ``gamma="srgb"`` (or a power in 0.3..3)
+        mixes gray8 and rgb888 in linear light.  See docs/opacity.md.
         """
         if opacity is not None or gamma is not None or (color is not None and type(color) is not int):
             blend, color = _blend_args(color, opacity, self._format, "Canvas.fill_polygon", gamma)

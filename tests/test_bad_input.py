@@ -645,6 +645,9 @@ EXTRA_COVERED |= {"Path", "stroke"}
 # Issue 36's names have their rows beside their tests: tests/test_gis_parity.py
 # (geometry_mask, geometry_window, grid) and tests/test_zonal.py (zonal_stats).
 EXTRA_COVERED |= {"geometry_mask", "geometry_window", "grid", "zonal_stats"}
+# Opacity: Canvas.composite's rows (coverage shape and dtype, premultiplied,
+# opacity, format; the canvas untouched) are in tests/test_opacity.py.
+EXTRA_COVERED |= {"Canvas.composite"}
 
 
 def _set_depth(value):

@@ -392,3 +392,42 @@ def test_docs_examples_run():
     assert blocks
     for k, block in enumerate(blocks):
         exec(compile(block, "docs/opacity.md block %d" % k, "exec"), {})
+
+
+@pytest.mark.parametrize("kind", KINDS)
+@pytest.mark.parametrize("dtype", [np.uint8, np.uint16], ids=["u8", "u16"])
+def test_canvas_composite(kind, dtype):
+    """Canvas.composite: a coverage image of either width, every format,
+    premultiplied rgba8888 too, against the oracle."""
+    rng = np.random.default_rng(11)
+    fmt = FORMAT[kind]
+    c = canvas(fmt, rng)
+    if kind == "rgba8888p":
+        c.array[..., :3] = np.minimum(c.array[..., :3], c.array[..., 3:])
+    before = c.array.copy()
+    top = 65535 if dtype == np.uint16 else 255
+    cov = rng.integers(0, top + 1, (7, 9)).astype(dtype)
+    cov[0, :3] = (0, top, 1)
+    rgba = (200, 30, 99, 170)
+    color = rgba if fmt in ("rgb888", "rgb565", "rgba8888") else (200, 170)
+    want_rgba = rgba if fmt != "gray8" else (200, 200, 200, 170)
+    c.composite(cov, color, opacity=0.6, premultiplied=kind == "rgba8888p")
+    flat = before.reshape(1, -1) if fmt in ("gray8", "rgb565") else before.reshape(1, -1, before.shape[-1])
+    want = expected(kind, to_channels(kind, flat), cov.reshape(1, -1), want_rgba, nearest(Q(0.6) * 255))
+    np.testing.assert_array_equal(c.array, from_channels(kind, want).reshape(before.shape))
+
+
+@pytest.mark.parametrize("fmt, kwargs", [
+    ("rgb888", dict(coverage=np.zeros((7, 8), np.uint8))), ("rgb888", dict(coverage=np.zeros((7, 9), np.int32))),
+    ("rgb888", dict(premultiplied=True)), ("rgba8888", dict(premultiplied=1)), ("mono1", dict()),
+    ("rgb888", dict(opacity=2)),
+])
+def test_canvas_composite_bad_input(fmt, kwargs):
+    c = rastrum.Canvas((7, 9), format=fmt, background=0 if fmt == "mono1" else 5)
+    before = (c.packed if fmt == "mono1" else c.array).copy()
+    args = dict(coverage=np.full((7, 9), 255, np.uint8))
+    args.update(kwargs)
+    with pytest.raises(rastrum.InputError, match="Canvas.composite"):
+        c.composite(args.pop("coverage"), (1, 2, 3, 4)[:4 if fmt == "rgba8888" else 3] if fmt != "mono1" else 1,
+                    **args)
+    np.testing.assert_array_equal(c.packed if fmt == "mono1" else c.array, before)

@@ -414,6 +414,41 @@ class Canvas:
             _core._check(lib.rast_blend_coverage(target, ffi.from_buffer(cov), lib.RAST_COVERAGE_U8,
                                                  cov.shape[1], blend[0], blend[1]))
 
+    def composite(self, coverage: npt.ArrayLike, color: Color, *, opacity: Optional[float] = None,
+                  premultiplied: bool = False) -> None:
+        """Blend `color` into the canvas through a coverage image, source-over.
+
+        `coverage` is an (H, W) uint8 (levels out of 255) or uint16 (out of
+        65535) array, e.g. :func:`rastrum.polygon_coverage` of the canvas's
+        shape, computed once and composited in several colours.  The
+        colour's alpha times `opacity` (0..1, the level
+        floor(opacity*255 + 1/2)) times each pixel's coverage is rounded
+        once to an alpha level, then each channel is mixed as
+        docs/opacity.md states; an rgba8888 canvas is straight alpha, or
+        premultiplied with ``premultiplied=True``.  gray8, rgb888, rgb565
+        and rgba8888 canvases; nothing is written when an argument is bad.
+        """
+        entry = "Canvas.composite"
+        if self._format not in _BLEND_FORMATS:
+            raise InputError("%s: gray8, rgb888, rgb565 and rgba8888 canvases blend, not %s"
+                             % (entry, self._format))
+        if not isinstance(premultiplied, (bool, np.bool_)) or (premultiplied and self._format != "rgba8888"):
+            raise InputError("%s: premultiplied must be True (an rgba8888 canvas only) or False, not %r"
+                             % (entry, premultiplied))
+        cov = np.asarray(coverage)
+        if cov.dtype not in (np.uint8, np.uint16) or cov.shape != (self.height, self.width):
+            raise InputError("%s: coverage must be a uint8 or uint16 array of the canvas's shape %s, not %s %s"
+                             % (entry, (self.height, self.width), cov.dtype, cov.shape))
+        level = 255 if opacity is None else _opacity_level(opacity, entry)
+        rgba = _blend_rgba(color, self._format)
+        target = self._writable()
+        cov = np.ascontiguousarray(cov)
+        opts = ffi.new("rast_blend_opts *", {"opacity": level, "premultiplied": int(bool(premultiplied))})
+        if cov.size:
+            _core._check(lib.rast_blend_coverage(
+                target, ffi.from_buffer(cov), lib.RAST_COVERAGE_U16 if cov.dtype == np.uint16 else lib.RAST_COVERAGE_U8,
+                cov.shape[1] * cov.itemsize, rgba, opts))
+
     @_label_spill
     def fill_polygon(self, rings: Rings, color: Optional[Color] = None, *, rule: Rule = "evenodd",
                      algorithm: PolygonAlgorithm = "aet", subpixel_bits: int = 8, sample_offset: float = 0.5,

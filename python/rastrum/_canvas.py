@@ -1005,6 +1005,8 @@ def _blend_args(color, opacity, fmt, entry, gamma=None):
     cdata, rast_blend_opts, gamma tables or None) for rast_blend_coverage
     or the linear-light blend."""
     n = 1 if fmt == "gray8" else 3
+    if opacity is None and gamma is None and type(color) is tuple and len(color) != n + 1:
+        return None, color  # the common opaque call, quickly
     if color is None:
         if opacity is not None or gamma is not None:
             raise InputError("%s: opacity and gamma are for one colour (color=), not vertex_colors" % entry)

@@ -4,6 +4,10 @@
  *   0: rast_polygon_coverage into a uint8 array,
  *   1: rast_fill_polygon_aa into a GRAY8 target,
  *   2: rast_fill_polygon_aa into an RGB888 target,
+ *   3: rast_fill_polygon_aa_blend into an RGB888 target, the colour at
+ *      alpha 128 (the opacity path, docs/opacity.md),
+ *   4: rast_fill_polygon (binary) into an RGB888 target,
+ *   5: rast_fill_polygon_blend (binary) into an RGB888 target, alpha 128,
  * with method argv[2] (a rast_aa_method: 0 area, 2 ss4, 5 accumulate).
  * Meant for instruction counts (repeatable on a shared machine):
  *   cc -O2 -std=c11 -Icsrc/include bench/cbench_paint.c build/librastrum.a -lm -o cbench_paint
@@ -27,6 +31,7 @@ int main(int argc, char **argv)
     int i, which = argc > 1 ? atoi(argv[1]) : 0, m = argc > 2 ? atoi(argv[2]) : 0;
     rast_polygon poly = {p, &n, 1};
     rast_coverage_opts o;
+    rast_fill_opts fo;
     rast_rect clip = {0, 0, 512, 512};
     rast_target t;
     size_t need;
@@ -36,6 +41,9 @@ int main(int argc, char **argv)
         p[i].x = (int32_t)((256 + r * cos(a - 1.5707963267948966)) * 256);
         p[i].y = (int32_t)((256 + r * cos(a)) * 256);
     }
+    memset(&fo, 0, sizeof fo);
+    fo.rule = RAST_RULE_NONZERO;
+    fo.subpixel_bits = 8;
     memset(&o, 0, sizeof o);
     o.method = (rast_aa_method)m;
     o.rule = RAST_RULE_NONZERO;
@@ -48,10 +56,17 @@ int main(int argc, char **argv)
     rast_target_init(&t, img, 512, 512, which == 1 ? 512 : 3 * 512,
                      which == 1 ? RAST_FORMAT_GRAY8 : RAST_FORMAT_RGB888);
     for (i = 0; i < 10; i++) {
+        static const uint8_t half[4] = {200, 100, 50, 128};
         rast_status st = which == 0
                              ? rast_polygon_coverage(&poly, &o, &clip, RAST_COVERAGE_U8, img, 512,
                                                      scratch, need)
-                             : rast_fill_polygon_aa(&t, &poly, &o, v, scratch, need);
+                         : which == 4 ? rast_fill_polygon(&t, &poly, &fo, v, scratch, sizeof scratch)
+#ifndef CBENCH_NO_BLEND /* (a library older than the blend calls) */
+                         : which == 3 ? rast_fill_polygon_aa_blend(&t, &poly, &o, half, NULL, scratch, need)
+                         : which == 5 ? rast_fill_polygon_blend(&t, &poly, &fo, half, NULL, scratch,
+                                                                sizeof scratch)
+#endif
+                                      : rast_fill_polygon_aa(&t, &poly, &o, v, scratch, need);
         if (st != RAST_OK) return 1;
     }
     printf("pixel (10, 256): %d\n", img[512 * 256 + 10]);

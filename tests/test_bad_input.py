@@ -647,6 +647,9 @@ EXTRA_COVERED |= {"Path", "stroke"}
 EXTRA_COVERED |= {"geometry_mask", "geometry_window", "grid", "zonal_stats"}
 # coverage_fractions' bad input: tests/test_gis_coverage.py.
 EXTRA_COVERED |= {"coverage_fractions"}
+# Opacity: Canvas.composite's rows (coverage shape and dtype, premultiplied,
+# opacity, format; the canvas untouched) are in tests/test_opacity.py.
+EXTRA_COVERED |= {"Canvas.composite"}
 
 
 def _set_depth(value):

@@ -101,7 +101,7 @@ def test_canvas_width_height_still_works_with_its_warning():
 def test_counts_in_messages_are_singular_or_plural():
     gray = rastrum.Canvas((3, 3), format="gray8")
     with pytest.raises(rastrum.InputError, match=r"format gray8 needs 1 int$"):
-        gray.fill_polygon([(0, 0), (2, 0), (2, 2)], (1, 2))
+        gray.fill_polygon([(0, 0), (2, 0), (2, 2)], (1, 2, 3))  # (1, 2) is (L, A) now: docs/opacity.md
     with pytest.raises(rastrum.InputError, match=r"format rgb888 needs 3 ints$"):
         rastrum.Canvas((3, 3)).fill_polygon([(0, 0), (2, 0), (2, 2)], (1, 2))
     with pytest.raises(rastrum.InputError, match=r"points: 1 point given"):

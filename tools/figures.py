@@ -13,6 +13,7 @@ Where each comes from:
     coverage.png, paths.png           bench/demo.py (make demo writes them
                                       to out/ with the others)
     docs/coco_rules.png               tools/coco_picture.py
+    docs/opacity.png                  tools/opacity_picture.py
 - firmware size tables (deterministic for a given arm-none-eabi-gcc:
   checked against what make firmware-check prints):
     README.md "What typical applications link", docs/c.md's table of the
@@ -81,12 +82,14 @@ def render(out):
         stdout=subprocess.DEVNULL)
     run([sys.executable, os.path.join(ROOT, "tools", "coco_picture.py"), os.path.join(out, "coco_rules.png")],
         stdout=subprocess.DEVNULL)
+    run([sys.executable, os.path.join(ROOT, "tools", "opacity_picture.py"), os.path.join(out, "opacity.png")],
+        stdout=subprocess.DEVNULL)
     # docs/paths.png needs matplotlib (the font) and the peers (Blend2D, cairo)
     # beside rastrum: drawn, and so checked, only where they are installed
     paths = ["paths.png"] if os.path.exists(os.path.join(out, "paths.png")) else []
     if not paths:
         print("figures: docs/paths.png not drawn here (needs matplotlib, blend2d-python, pycairo or cairocffi)")
-    return DEMO_PICTURES + ["coco_rules.png"] + paths
+    return DEMO_PICTURES + ["coco_rules.png", "opacity.png"] + paths
 
 
 def pixels(path):

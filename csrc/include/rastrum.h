@@ -1001,6 +1001,78 @@ RAST_API rast_status rast_fill_triangles_aa(const rast_target *target,
                                             const rast_coverage_opts *opts, const void *pixel,
                                             void *scratch, size_t scratch_bytes);
 
+/* ---- opacity: source-over with a colour's alpha (blend.c) -------------------
+ * The fills above write (or weight by coverage) a pixel VALUE; these take
+ * an 8-bit RGBA colour rgba[0..3] (straight: R, G, B not multiplied by A)
+ * and apply its alpha A_s, times an opacity level o, source-over, to a
+ * GRAY8 (R), RGB888, RGB565 (the top 5/6/5 bits of R, G, B, as
+ * rast_pack_color) or RGBA8888 target; other formats: RAST_E_FORMAT.
+ * Per pixel, with c its coverage level out of C (binary fills: c = C = 255
+ * inside; uint8 coverage: C = 255; uint16 coverage: C = 65535):
+ *  - the alpha level  A = floor(A_s o c / (255 C) + 1/2): the product
+ *    (A_s / 255) (o / 255) (c / C) to the nearest of the levels 0..255,
+ *    rounded once (never a tie: 255^2 and 255 * 65535 are odd); A = 0
+ *    leaves the pixel untouched;
+ *  - GRAY8, RGB888, RGB565 (each field in its own levels) and
+ *    premultiplied RGBA8888 (opts->premultiplied = 1; A's byte a mixed
+ *    with source 255): each channel d becomes
+ *    floor((s A + d (255 - A) + 127) / 255), s the colour's channel: the
+ *    nearest level to the exact mix (as rast_fill_polygon_aa's blend).
+ *  - straight RGBA8888 (premultiplied = 0): with a the pixel's alpha,
+ *    alpha becomes floor((255 A + a (255 - A) + 127) / 255), and each of
+ *    R, G, B floor(n / m + 1/2) with n = s A 255 + d a (255 - A) and
+ *    m = 255 A + a (255 - A): the exact straight colour of the exact
+ *    source-over result, rounded half up.
+ * With A_s = o = 255 and a uint8 coverage, A = c: the blend equals
+ * rast_fill_polygon_aa's for every format but straight RGBA8888 over a
+ * pixel whose alpha is below 255 (there rast_fill_polygon_aa mixes the
+ * bytes, as a value, not a colour). */
+typedef struct rast_blend_opts {
+    int32_t opacity;       /* o, 0..255 (255: the colour's alpha as it is) */
+    int32_t premultiplied; /* RGBA8888 targets: 0 straight, 1 premultiplied;
+                              the other formats ignore it */
+} rast_blend_opts;
+
+/* `rgba` through a coverage image onto target->clip (cut to the target):
+ * pixel (x, y) of the clip at level `coverage` + (y - clip.y0) * stride
+ * bytes, element x - clip.x0 of that row (uint8_t for RAST_COVERAGE_U8,
+ * uint16_t for RAST_COVERAGE_U16: what rast_polygon_coverage writes for
+ * that clip).  opts NULL: o = 255, straight.  Errors, before anything is
+ * written: those of the target, RAST_E_FORMAT (not one of the four
+ * formats), RAST_E_NULL (rgba; coverage with a non-empty clip), RAST_E_ARG
+ * (o outside 0..255, premultiplied not 0 or 1, format FIX62 or unknown,
+ * stride below the clip's row or not a multiple of the element),
+ * RAST_E_ALIGN (a uint16 image not 2-byte aligned). */
+RAST_API rast_status rast_blend_coverage(const rast_target *target, const void *coverage,
+                                         rast_coverage_format format, ptrdiff_t stride,
+                                         const uint8_t *rgba, const rast_blend_opts *opts);
+
+/* rast_fill_polygon's pixels (c = 255) blended with `rgba` as above; each
+ * pixel at most once.  Scratch and errors: rast_fill_polygon's, and those
+ * of rast_blend_coverage's colour and options. */
+RAST_API rast_status rast_fill_polygon_blend(const rast_target *target,
+                                             const rast_polygon *polygon,
+                                             const rast_fill_opts *opts, const uint8_t *rgba,
+                                             const rast_blend_opts *blend, void *scratch,
+                                             size_t scratch_bytes);
+
+/* rast_fill_polygon_aa / rast_fill_triangles_aa with `rgba` blended as
+ * above at each pixel's uint8 coverage level (a triangle batch: its union,
+ * each pixel blended once).  Scratch and errors as those, with
+ * rast_blend_coverage's for the colour and options. */
+RAST_API rast_status rast_fill_polygon_aa_blend(const rast_target *target,
+                                                const rast_polygon *polygon,
+                                                const rast_coverage_opts *opts,
+                                                const uint8_t *rgba,
+                                                const rast_blend_opts *blend, void *scratch,
+                                                size_t scratch_bytes);
+RAST_API rast_status rast_fill_triangles_aa_blend(const rast_target *target,
+                                                  const rast_point *tris, uint32_t ntris,
+                                                  const rast_coverage_opts *opts,
+                                                  const uint8_t *rgba,
+                                                  const rast_blend_opts *blend, void *scratch,
+                                                  size_t scratch_bytes);
+
 /* ==========================================================================
  * Shading: Gouraud triangles, rectangles, polygons
  * ========================================================================== */

@@ -380,13 +380,86 @@ class Canvas:
                                            _shading.shade_opts(precision, 16),
                                            "tri" if entry == "Canvas.fill_triangle" else "tris")
 
+    def _blend(self, entry, geometry, blend, aa, rule, subpixel_bits, sample_offset, algorithm, rounding,
+               boundary, vertex_colors, depth=None):
+        """A fill whose colour's alpha (times opacity) is applied: the
+        geometry's uint8 coverage (aa) or mask (255 inside) through
+        rast_blend_coverage (docs/opacity.md)."""
+        from . import polygon_mask
+
+        if vertex_colors is not None or depth is not None:
+            raise InputError("%s: opacity and a colour's alpha are for one colour (color=), without "
+                             "vertex_colors or depth" % entry)
+        target = self._writable()
+        shape = (self.height, self.width)
+        tris = entry != "Canvas.fill_polygon"
+        if aa is not None:
+            _coverage.aa_opts(aa, rule, subpixel_bits, sample_offset, entry,
+                              dict(algorithm=(algorithm, "edge" if tris else "aet"), rounding=(rounding, "exact"),
+                                   boundary=(boundary, "exact")))
+            if tris:
+                cov = _coverage.triangles_coverage(geometry, shape, method=aa, subpixel_bits=subpixel_bits,
+                                                   sample_offset=sample_offset)
+            else:
+                cov = _coverage.polygon_coverage(geometry, shape, rule=rule, method=aa,
+                                                 subpixel_bits=subpixel_bits, sample_offset=sample_offset)
+        elif tris:
+            cov = _triangles.triangles_mask(geometry, shape, algorithm=algorithm, subpixel_bits=subpixel_bits,
+                                            sample_offset=sample_offset, rounding=rounding, boundary=boundary)
+        else:
+            cov = polygon_mask(geometry, shape, rule=rule, algorithm=algorithm, subpixel_bits=subpixel_bits,
+                               sample_offset=sample_offset, rounding=rounding, boundary=boundary)
+        cov = np.ascontiguousarray(cov, np.uint8) * np.uint8(255 if cov.dtype == np.bool_ else 1)
+        if blend[2] is not None:
+            if cov.size:
+                _linear_blend(self._array, cov, bytes(ffi.buffer(blend[0])), blend[1].opacity, blend[2])
+        elif cov.size:
+            _core._check(lib.rast_blend_coverage(target, ffi.from_buffer(cov), lib.RAST_COVERAGE_U8,
+                                                 cov.shape[1], blend[0], blend[1]))
+
+    def composite(self, coverage: npt.ArrayLike, color: Color, *, opacity: Optional[float] = None,
+                  premultiplied: bool = False) -> None:
+        """Blend `color` into the canvas through a coverage image, source-over.
+
+        `coverage` is an (H, W) uint8 (levels out of 255) or uint16 (out of
+        65535) array, e.g. :func:`rastrum.polygon_coverage` of the canvas's
+        shape, computed once and composited in several colours.  The
+        colour's alpha times `opacity` (0..1, the level
+        floor(opacity*255 + 1/2)) times each pixel's coverage is rounded
+        once to an alpha level, then each channel is mixed as
+        docs/opacity.md states; an rgba8888 canvas is straight alpha, or
+        premultiplied with ``premultiplied=True``.  gray8, rgb888, rgb565
+        and rgba8888 canvases; nothing is written when an argument is bad.
+        """
+        entry = "Canvas.composite"
+        if self._format not in _BLEND_FORMATS:
+            raise InputError("%s: gray8, rgb888, rgb565 and rgba8888 canvases blend, not %s"
+                             % (entry, self._format))
+        if not isinstance(premultiplied, (bool, np.bool_)) or (premultiplied and self._format != "rgba8888"):
+            raise InputError("%s: premultiplied must be True (an rgba8888 canvas only) or False, not %r"
+                             % (entry, premultiplied))
+        cov = np.asarray(coverage)
+        if cov.dtype not in (np.uint8, np.uint16) or cov.shape != (self.height, self.width):
+            raise InputError("%s: coverage must be a uint8 or uint16 array of the canvas's shape %s, not %s %s"
+                             % (entry, (self.height, self.width), cov.dtype, cov.shape))
+        level = 255 if opacity is None else _opacity_level(opacity, entry)
+        rgba = _blend_rgba(color, self._format)
+        target = self._writable()
+        cov = np.ascontiguousarray(cov)
+        opts = ffi.new("rast_blend_opts *", {"opacity": level, "premultiplied": int(bool(premultiplied))})
+        if cov.size:
+            _core._check(lib.rast_blend_coverage(
+                target, ffi.from_buffer(cov), lib.RAST_COVERAGE_U16 if cov.dtype == np.uint16 else lib.RAST_COVERAGE_U8,
+                cov.shape[1] * cov.itemsize, rgba, opts))
+
     @_label_spill
     def fill_polygon(self, rings: Rings, color: Optional[Color] = None, *, rule: Rule = "evenodd",
                      algorithm: PolygonAlgorithm = "aet", subpixel_bits: int = 8, sample_offset: float = 0.5,
                      rounding: Rounding = "exact", boundary: Boundary = "exact",
                      vertex_colors: Optional[npt.ArrayLike] = None, shading: Shading = "gouraud",
                      precision: Precision = "exact", aa: Optional[CoverageMethod] = None,
-                     tolerance: Optional[float] = None) -> None:
+                     tolerance: Optional[float] = None,
+                     opacity: Optional[float] = None, gamma: Union[None, str, float] = None) -> None:
         """Paint `color` on every pixel whose sample is inside the polygon.
 
         Arguments as :func:`rastrum.polygon_mask` (`rings` may be a Path, a
@@ -414,15 +487,30 @@ class Canvas:
         ``algorithm="aet"``.  Give exactly one of `color` and
         `vertex_colors`, as for :meth:`fill_triangle` and
         :meth:`fill_triangles`.
+
+        A colour's alpha ((R, G, B, A); gray8 (L, A); "#rrggbbaa") and
+        `opacity` (a number in 0..1, the level floor(opacity*255 + 1/2))
+        are applied source-over on gray8, rgb888, rgb565 and rgba8888
+        canvases, binary or with `aa`: the alpha level
+        round(alpha*o*c / 255**2) rounded once, then each channel's mix
+        (rgba8888: straight alpha; there a colour without `opacity` is a
+        pixel value, stored).  ``gamma="srgb"`` (or a power in 0.3..3)
+        mixes gray8 and rgb888 in linear light.  See docs/opacity.md.
         """
+        if tolerance is not None or not isinstance(rings, (list, tuple, _ndarray)):  # docs/paths.md
+            rings = path_rings(rings, subpixel_bits, tolerance)
+        if opacity is not None or gamma is not None or (color is not None and type(color) is not int):
+            blend, color = _blend_args(color, opacity, self._format, "Canvas.fill_polygon", gamma)
+            if blend is not None:
+                self._blend("Canvas.fill_polygon", rings, blend, aa, rule, subpixel_bits, sample_offset,
+                            algorithm, rounding, boundary, vertex_colors)
+                return
         # The common call (one C-contiguous float64 (N, 2) ring, or a list of
         # (x, y) pairs, and a colour) goes straight to C, which snaps every
         # point before it writes a pixel (and refuses what the 64-bit path
         # must draw: subpixel_bits above 16, coordinates past the 32-bit
         # range); anything else, or an error status, takes the general path
         # below, which checks and says what is wrong.
-        if tolerance is not None or not isinstance(rings, (list, tuple, _ndarray)):  # docs/paths.md
-            rings = path_rings(rings, subpixel_bits, tolerance)
         if aa is None and vertex_colors is None:
             if algorithm is _AET and rule is _EVENODD and subpixel_bits is _S8 and sample_offset is _HALF \
                     and rounding is _EXACT and boundary is _EXACT:
@@ -471,7 +559,8 @@ class Canvas:
                       vertex_colors: Optional[npt.ArrayLike] = None, shading: Shading = "gouraud",
                       precision: Precision = "exact", fraction_bits: int = 16,
                       algorithm: TriangleAlgorithm = "edge", subpixel_bits: int = 8, sample_offset: float = 0.5,
-                      rounding: Rounding = "exact", boundary: Boundary = "exact", aa: Optional[CoverageMethod] = None) -> None:
+                      rounding: Rounding = "exact", boundary: Boundary = "exact", aa: Optional[CoverageMethod] = None,
+                      opacity: Optional[float] = None, gamma: Union[None, str, float] = None) -> None:
         """Paint `color` on every pixel the triangle `tri` owns.
 
         `tri` is three (x, y) vertices, in either winding order; the other
@@ -479,8 +568,15 @@ class Canvas:
         triangle paints nothing.  Nothing is written when an argument is bad.
         Give exactly one of `color` and `vertex_colors` (a (3, C) array, a
         colour per vertex, shaded as by :meth:`fill_triangles`), as for
-        :meth:`fill_polygon`.  `aa`: anti-aliased, as :meth:`fill_triangles`.
+        :meth:`fill_polygon`.  `aa`: anti-aliased, as :meth:`fill_triangles`;
+        `opacity` and a colour's alpha as :meth:`fill_polygon`.
         """
+        if opacity is not None or gamma is not None or (color is not None and type(color) is not int):
+            blend, color = _blend_args(color, opacity, self._format, "Canvas.fill_triangle", gamma)
+            if blend is not None:
+                self._blend("Canvas.fill_triangle", _triangles.tris_f64(tri, single=True), blend, aa, "nonzero",
+                            subpixel_bits, sample_offset, algorithm, rounding, boundary, vertex_colors)
+                return
         if aa is not None:
             self._fill_aa(_triangles.tris_f64(tri, single=True), color, aa, "nonzero", subpixel_bits,
                           sample_offset, "Canvas.fill_triangle", algorithm=(algorithm, "edge"),
@@ -510,7 +606,8 @@ class Canvas:
                        precision: Precision = "exact", fraction_bits: int = 16,
                        depth: Optional[npt.ArrayLike] = None, algorithm: TriangleAlgorithm = "edge",
                        subpixel_bits: int = 8, sample_offset: float = 0.5, rounding: Rounding = "exact",
-                       boundary: Boundary = "exact", aa: Optional[CoverageMethod] = None) -> None:
+                       boundary: Boundary = "exact", aa: Optional[CoverageMethod] = None,
+                       opacity: Optional[float] = None, gamma: Union[None, str, float] = None) -> None:
         """Paint every pixel owned by a triangle of the batch.
 
         `tris` is an (N, 3, 2) array-like of (x, y) vertices, drawn in one C
@@ -573,6 +670,13 @@ class Canvas:
                [9, 9, 9, 9, 0, 0],
                [9, 9, 9, 9, 0, 0]], dtype=uint8)
         """
+        if opacity is not None or gamma is not None or (
+                color is not None and type(color) is not int and np.ndim(color) < 2):
+            blend, color = _blend_args(color, opacity, self._format, "Canvas.fill_triangles", gamma)
+            if blend is not None:
+                self._blend("Canvas.fill_triangles", _triangles.tris_f64(tris), blend, aa, "nonzero",
+                            subpixel_bits, sample_offset, algorithm, rounding, boundary, vertex_colors, depth)
+                return
         if aa is not None:
             self._fill_aa(_triangles.tris_f64(tris), color, aa, "nonzero", subpixel_bits, sample_offset,
                           "Canvas.fill_triangles", algorithm=(algorithm, "edge"),
@@ -1238,6 +1342,157 @@ def _rgba_bytes(color, fmt):
         color = 255 if color else 0  # a flat mono1 colour: on iff not 0
     values = _pixel_bytes(color, "rgba8888" if n == 4 else "rgb888" if n == 3 else "gray8")
     return (values * 3)[:3] + b"\xff" if n == 1 else values + (b"\xff" if n == 3 else b"")
+
+
+
+# The formats a colour's alpha is applied on (rast_blend_coverage).
+_BLEND_FORMATS = ("gray8", "rgb888", "rgb565", "rgba8888")
+
+
+def _opacity_level(opacity, entry):
+    """`opacity` (a real number in 0..1) as a level 0..255:
+    floor(opacity * 255 + 1/2) of the number's exact value (docs/opacity.md)."""
+    import fractions
+    import math
+
+    if isinstance(opacity, (bool, np.bool_)) or not isinstance(opacity, (int, float, np.integer, np.floating)) \
+            or not math.isfinite(float(opacity)) or not 0 <= opacity <= 1:
+        raise InputError("%s: opacity must be a number in 0..1, not %r" % (entry, opacity))
+    return math.floor(fractions.Fraction(float(opacity)) * 255 + fractions.Fraction(1, 2))
+
+
+def _blend_rgba(color, fmt):
+    """The straight 8-bit RGBA colour (4 bytes) `color` blends with on a
+    `fmt` canvas: rgba8888 its pixel value (R, G, B, A); the others their
+    colour (an int, (R, G, B) or gray8's level) with alpha 255, or that
+    colour plus an alpha ((R, G, B, A), gray8 (L, A)), or a string through
+    Pillow's ImageColor with its alpha ("#rrggbbaa")."""
+    if fmt == "rgba8888":
+        return _pixel_bytes(color, fmt)
+    n = 1 if fmt == "gray8" else 3
+    if isinstance(color, str):
+        from PIL import ImageColor
+
+        try:
+            value = ImageColor.getcolor(color, "LA" if n == 1 else "RGBA")
+        except ValueError:
+            raise InputError('colour %r: not a colour name (e.g. "red") nor "#rgb", "#rrggbb" or "#rrggbbaa" '
+                             "(the names and spellings of Pillow's ImageColor)" % (color,)) from None
+        return bytes(bytearray([value[0]] * 3 + [value[1]] if n == 1 else list(value)))
+    color = _core.as_numpy(color)
+    if not _is_int(color):
+        try:
+            values = list(color)
+        except TypeError:
+            values = None
+        if values is not None and len(values) == n + 1:
+            alpha = values[n]
+            if not _is_int(alpha) or not 0 <= alpha <= 255:
+                raise InputError("colour %r: its alpha must be an int in 0..255" % (color,))
+            rgb = _rgba_bytes(values[0] if n == 1 else values[:n], "rgb888" if n == 3 else fmt)
+            return rgb[:3] + bytes(bytearray([int(alpha)]))
+    return _rgba_bytes(color, "rgb888" if n == 3 else fmt)
+
+
+def _blend_args(color, opacity, fmt, entry, gamma=None):
+    """(blend, color): blend None for a colour painted as a value (no
+    opacity or gamma given, and alpha 255 or a format whose alpha is
+    stored), with `color` less its alpha 255 if it had one; else (RGBA
+    cdata, rast_blend_opts, gamma tables or None) for rast_blend_coverage
+    or the linear-light blend."""
+    n = 1 if fmt == "gray8" else 3
+    if opacity is None and gamma is None and type(color) is tuple and len(color) != n + 1:
+        return None, color  # the common opaque call, quickly
+    if color is None:
+        if opacity is not None or gamma is not None:
+            raise InputError("%s: opacity and gamma are for one colour (color=), not vertex_colors" % entry)
+        return None, color
+    tables = None
+    if gamma is not None:
+        if fmt not in ("gray8", "rgb888"):
+            raise InputError("%s: gamma= blends gray8 and rgb888 canvases, not %s" % (entry, fmt))
+        tables = _gamma_tables(gamma, entry)
+        if opacity is None:
+            opacity = 1.0
+    if opacity is None:
+        if fmt not in _BLEND_FORMATS or fmt == "rgba8888" or type(color) is int:
+            return None, color
+        if not isinstance(color, str):
+            try:
+                k = len(color)
+            except TypeError:
+                return None, color
+            if k != n + 1 or np.ndim(color) != 1:
+                return None, color
+        level = 255
+    else:
+        level = _opacity_level(opacity, entry)
+        if fmt not in _BLEND_FORMATS:
+            raise InputError("%s: opacity is for gray8, rgb888, rgb565 and rgba8888 canvases, not %s"
+                             % (entry, fmt))
+        if np.ndim(color) >= 2:
+            raise InputError("%s: opacity takes one colour, not one per triangle" % entry)
+    rgba = _blend_rgba(color, fmt)
+    if fmt != "rgba8888" and rgba[3] == 255 and level == 255 and tables is None:  # opaque: the value's fill
+        if isinstance(color, str):
+            return None, color
+        return None, (color if _is_int(_core.as_numpy(color)) or len(color) == n
+                      else (color[0] if n == 1 else tuple(color[:n])))
+    opts = ffi.new("rast_blend_opts *")
+    opts.opacity = level
+    return (ffi.new("uint8_t[4]", list(bytearray(rgba))), opts, tables), color
+
+
+# 2^24: the linear-light tables' scale (every table strictly increasing).
+_LINEAR_ONE = 1 << 24
+
+
+@functools.lru_cache(maxsize=16)
+def _gamma_table(gamma):
+    import math
+
+    if gamma == "srgb":
+        f = [v / 12.92 if v <= 0.04045 else ((v + 0.055) / 1.055) ** 2.4 for v in (k / 255 for k in range(256))]
+    else:
+        f = [(k / 255) ** gamma for k in range(256)]
+    dec = np.array([math.floor(_LINEAR_ONE * v + 0.5) for v in f], np.int64)
+    thresholds = 255 * (dec[:-1] + dec[1:])  # 2 x 255 x the midpoints between levels
+    return dec, thresholds
+
+
+def _gamma_tables(gamma, entry):
+    """gamma "srgb" or a number in 0.3..3: the linear-light table of every
+    level, round(2**24 * decode(level / 255)), and its midpoints
+    (docs/opacity.md)."""
+    if isinstance(gamma, str):
+        if gamma != "srgb":
+            raise InputError('%s: gamma must be "srgb" or a number in 0.3..3, not %r' % (entry, gamma))
+    elif isinstance(gamma, (bool, np.bool_)) or not isinstance(gamma, (int, float, np.integer, np.floating)) \
+            or not 0.3 <= float(gamma) <= 3:
+        raise InputError('%s: gamma must be "srgb" or a number in 0.3..3, not %r' % (entry, gamma))
+    else:
+        gamma = float(gamma)
+    return _gamma_table(gamma)
+
+
+def _linear_blend(array, cov, rgba, level, tables):
+    """The colour mixed in linear light into the gray8 (H, W) or rgb888
+    (H, W, 3) `array` at the alpha levels of the uint8 coverage `cov`:
+    A = round(alpha level cov / 255^2) as the core's; where A > 0, each
+    channel the level whose linear value is nearest to the exact mix
+    (dec[s] A + dec[d] (255 - A)) / 255, ties to the lower level."""
+    dec, thresholds = tables
+    a = (np.int64(rgba[3] * level) * cov.astype(np.int64) + 32512) // 65025
+    on = a > 0
+    if not on.any():
+        return
+    a = a[on]
+    d = array[on].astype(np.int64)
+    s = np.array(bytearray(rgba[:3]) if array.ndim == 3 else bytearray(rgba[:1]), np.int64)
+    if array.ndim == 3:
+        a = a[:, None]
+    x = dec[s] * a + dec[d] * (255 - a)
+    array[on] = np.searchsorted(thresholds, 2 * x, side="left").astype(np.uint8)
 
 
 # A label value's bytes are copied verbatim by the painters of these formats.

@@ -114,7 +114,7 @@ rast_status rast__fill_checked(const rast__fill_setup *f, const rast_polygon *po
 }
 
 /* Check the polygon, options and scratch for a clip; run the filler. */
-static rast_status rast__fill(const void *polygon, const rast_fill_opts *opts,
+rast_status rast__fill(const void *polygon, const rast_fill_opts *opts,
                               const rast_rect *clip, const rast__painter *p,
                               void *scratch, size_t scratch_bytes)
 {

@@ -197,6 +197,10 @@ rast_status rast__fill64_checked(const rast_polygon64 *poly, uint32_t npoints,
                                  const rast_rect *clip, const rast__painter *p, void *scratch,
                                  size_t scratch_bytes);
 
+/* A rast_polygon's fill (fill.c; a rast__fill_any_fn): check the polygon,
+ * options and scratch for `clip`, then run the filler into painter p. */
+rast_status rast__fill(const void *polygon, const rast_fill_opts *opts, const rast_rect *clip,
+                       const rast__painter *p, void *scratch, size_t scratch_bytes);
 typedef rast_status (*rast__fill_any_fn)(const void *polygon, const rast_fill_opts *opts,
                                          const rast_rect *clip, const rast__painter *p,
                                          void *scratch, size_t scratch_bytes);

@@ -41,6 +41,50 @@ def test_finding2_rle_parser_long_count():
     assert coco.area(big) == 2**32 - 1
 
 
+# ---- finding 4: pycocotools' polygon rule took memory vertices x width -------
+
+# The tester's case: 100 vertices zig-zagging across a 1 x W mask (every
+# edge crosses every column: 100 W toggles), and the same ring on a 1 x 0
+# mask (pycocotools' width 0 takes every column).  The counts strings are
+# pycocotools' own, from running it on these rings (at W = 1,600,000 it
+# peaked at 8.2 GB; bench/coco_memory.py runs both again and compares).
+_ZIGZAG = """
+import resource, sys
+from rastrum import coco
+W = int(sys.argv[1])
+zig = []
+for k in range(100):
+    zig += [0.0 if k % 2 == 0 else float(W), -0.4 + 0.021 * k]
+before = resource.getrusage(resource.RUSAGE_SELF).ru_maxrss
+for w in (W, 0):
+    r = coco.frPyObjects([zig], 1, w)[0]
+    grew = resource.getrusage(resource.RUSAGE_SELF).ru_maxrss - before
+    print(w, grew, r["counts"].decode())
+"""
+_PYCOCOTOOLS = {  # (W, w): pycocotools' counts string
+    (1600000, 1600000): "^dob0bc]5PX]h0", (1600000, 0): "0^dob0bc]5bc]5",
+    (400000, 400000): "Tmg4l\\[1PZS6", (400000, 0): "0Tmg4l\\[1l\\[1",
+}
+
+
+def test_finding4_coco_rule_memory_follows_the_output():
+    """Peak RSS (ru_maxrss, kB) of a fresh interpreter grows by less than
+    100 MB over the call; it was 100 W toggles of 24 bytes (3.8 GB at
+    W = 1.6 million; pycocotools takes 8.2 GB).  Sanitizer runs (the quick
+    profile) take W = 400,000: 40 million toggles, 960 MB before."""
+    import os
+    import subprocess
+    import sys
+    big = 400000 if os.environ.get("RASTRUM_HYPOTHESIS_PROFILE") in ("quick", "valgrind") else 1600000
+    env = dict(os.environ, PYTHONPATH=os.pathsep.join(sys.path))
+    out = subprocess.run([sys.executable, "-c", _ZIGZAG, str(big)], env=env, capture_output=True, text=True,
+                         check=True).stdout.split("\n")
+    for line, w in zip(out, (big, 0)):
+        got_w, grew, counts = line.split()
+        assert int(got_w) == w and int(grew) < 100 * 1024, line  # kB, both calls
+        assert counts == _PYCOCOTOOLS[big, w]
+
+
 # ---- finding 5: merge / iou past 2^31 pixels ---------------------------------
 
 def test_finding5_merge_iou_past_2_31_pixels():

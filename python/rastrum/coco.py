@@ -34,8 +34,6 @@ __all__ = ["encode", "decode", "area", "toBbox", "merge", "iou", "frPyObjects", 
 
 _F64 = np.dtype(np.float64)
 
-__all__ = ["encode", "decode", "area", "toBbox", "merge", "iou", "frPyObjects", "rings", "polygons"]
-
 
 def _glue(result, what):
     if result == 0:
@@ -372,12 +370,17 @@ def _flat(p, k):
                      "or an (N, 2) array is needed" % (k, a.shape))
 
 
+# Toggles a window of pycocotools' rule holds at most (python/glue/coco.c);
+# 0: the glue's default (2**18).  Tests make it small to cross many windows.
+_WINDOW = 0
+
+
 def _fr_call(xy, sizes, n, h, w, rule):
     """rastpy_coco_fr_polys or rastpy_coco_exact: (status, data, offsets)."""
     offsets = ffi.new("size_t[]", n + 1)
     data = ffi.new("char **")
     if rule == "coco":
-        r = lib.rastpy_coco_fr_polys(xy, sizes, n, h, w, data, offsets)
+        r = lib.rastpy_coco_fr_polys(xy, sizes, n, h, w, _WINDOW, data, offsets)
     else:
         opts = _core.fill_opts("aet", "evenodd", 8, 0.5)
         failed = ffi.new("uint32_t *", 0xFFFFFFFF)

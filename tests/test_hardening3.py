@@ -272,3 +272,64 @@ def test_finding9_deep_or_recursive_geometry_collection():
     for _ in range(50):
         ok = {"type": "GeometryCollection", "geometries": [ok]}
     assert rastrum.rasterize([(ok, 1)], out_shape=(3, 3)).sum() == 4
+
+
+# ---- finding 8, the rest: Polygons' tables, a scalar part ----------------------------
+
+def test_finding8_polygons_tables_checked_where_they_enter():
+    tri = [[0, 0], [4, 0], [4, 4]]
+    for points, match in ((np.array(tri, complex), "points .* not dtype complex128"),
+                          (np.array(tri, str), "points .* not dtype <U1"),
+                          ([[0, 0], [True, 0], [4, 4]], "points .* not bools"),
+                          ([[0, 0], [None, 0], [4, 4]], "points .* not None")):
+        with pytest.raises(InputError, match="Polygons: " + match):
+            rastrum.Polygons(points, [3], [1])
+    for sizes, counts, match in (([3.7], [1], "ring_sizes .* ints"), ([3.0], [1], "ring_sizes .* ints"),
+                                 ([True, True, True], [3], "ring_sizes .* ints"), ([3], [1.2], "rings_per_polygon"),
+                                 (["3"], [1], "ring_sizes"), ([[3]], [1], "ring_sizes must be 1-D"),
+                                 ([-3], [1], "ring_sizes must be counts"), ([3], [2**32], "rings_per_polygon")):
+        with pytest.raises(InputError, match=match):
+            rastrum.Polygons(np.array(tri, float), sizes, counts)
+    b = rastrum.Polygons(np.array(tri), np.array([3], np.int64), [1])  # ints of any width: counts
+    assert b[0][0].tolist() == [[0.0, 0.0], [4.0, 0.0], [4.0, 4.0]]
+
+
+def test_finding8_scalar_part_refused():
+    seg = [[0, 0, 4, 0, 4, 4], 5]  # was: the 5 read as a part of no point, dropped
+    with pytest.raises(InputError, match="rings: part 1 has shape \\(\\)"):
+        coco.rings(seg)
+    with pytest.raises(InputError, match="polygons: object 0: rings: part 1 has shape \\(\\)"):
+        coco.polygons([seg])
+    with pytest.raises(InputError, match="frPyObjects: polygon 1 has shape \\(\\)"):
+        coco.frPyObjects(seg, 5, 5)
+
+
+# ---- finding 9, the rest: ragged and recursive lists, numpy reprs --------------------
+
+def test_finding9_ragged_lists_name_the_object():
+    with pytest.raises(InputError, match="polygons: object 1: rings: part 0 "):
+        coco.polygons([[[0, 0, 4, 0, 4, 4]], [[0, 0, [4], 0, 4, 4]]])
+    with pytest.raises(InputError, match="^rings: part 1 "):
+        coco.rings([[0, 0, 4, 0, 4, 4], [0, [0, 1], 4, 0]])
+    loop = []
+    loop.append(loop)
+    for call in (lambda: coco.rings(loop), lambda: coco.polygons([loop]), lambda: coco.frPyObjects(loop, 3, 3),
+                 lambda: rastrum.polygon_mask(loop, (3, 3)), lambda: rastrum.Polygons(loop, [1], [1])):
+        with pytest.raises(InputError):  # was numpy's ValueError (more than 64 dimensions)
+            call()
+
+
+def test_finding9_messages_print_plain_numbers():
+    sq = {"type": "Polygon", "coordinates": [[(0, 0), (2, 0), (2, 2), (0, 0)]]}
+    with pytest.raises(InputError) as e:
+        rastrum.rasterize([(sq, np.float64(300.5))], out_shape=(4, 4), dtype="uint8")
+    assert "value 300.5 does not fit" in str(e.value), e.value
+    for call in (lambda: rastrum.rasterize([(sq, 1)], out_shape=(4, 4),
+                                           transform=tuple(np.array([1e-320, 0, 0, 0, 1, 0]))),
+                 lambda: rastrum.Canvas((4, 4)).flood_fill((np.int64(9), np.int64(1)), 1),
+                 lambda: rastrum.Canvas((4, 4)).fill_polygon([(0, 0), (1, 1), (0, 1)], (np.float64(1.5),)),
+                 lambda: rastrum.polygon_mask([(0, 0), (1, 1), (0, 1)], (4, 4), sample_offset=np.float64(0.25)),
+                 lambda: rastrum.rasterize([(sq, np.True_)], out_shape=(4, 4))):
+        with pytest.raises(InputError) as e:
+            call()
+        assert "np." not in str(e.value), e.value

@@ -165,6 +165,9 @@ def test_public_api_takes_anything(call):
     except rastrum.RastrumError as e:  # only the seed fill's work limit may stop a call
         assert name.endswith("fill") and "work limit" in str(e), e
         return
+    except DeprecationWarning:  # an old spelling drawn (precision="flat"): an error in the tests
+        assert np.array_equal(big, before), "%s warned but wrote pixels" % name
+        return
     assert np.array_equal(_guards(big), guards), "%s wrote outside the canvas" % name
 
 

@@ -282,7 +282,7 @@ valgrind: $(C_TESTS)
 VALGRIND_PY_TESTS ?= tests/test_bad_input.py tests/test_threads.py tests/test_snapping.py \
                      tests/test_hardening2.py tests/test_fuzz_api.py
 VALGRIND_PY_K ?= NaN or empty or Fortran or snap or (other_bad_input and depth) or depth_int64 \
-                 or depth_reshaped or depth_set_by_hand or half_minus or public_api
+                 or depth_reshaped or depth_set_by_hand or half_minus or public_api or every_public_name
 valgrind-py: | $(VENV)
 	rm -rf build/valgrind-py
 	$(PYTHON) -m pip install --quiet --disable-pip-version-check $(PY_TEST_DEPS)

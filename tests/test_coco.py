@@ -51,6 +51,27 @@ def test_fr_py_objects_matches_pycocotools(parts, h, w):
     assert np.array_equal(M.toBbox(a), C.toBbox(b))
 
 
+@given(st.lists(part, min_size=1, max_size=3),
+       st.one_of(st.integers(0, 40), st.sampled_from([2**26 + 3, 2**30 - 1])),
+       st.one_of(st.just(0), st.integers(1, 40)), st.integers(1, 24))
+def test_fr_py_objects_in_windows_matches_pycocotools(parts, h, w, window):
+    """pycocotools' rule a few toggles at a time (rastrum.coco._WINDOW;
+    python/glue/coco.c), so that run ends fall on window edges: the same
+    strings as pycocotools.  Width 0 (every column takes toggles, counts
+    past the empty mask) and heights whose positions pass 2^32 (pycocotools
+    wraps them) too; height 0."""
+    if h * w > 2**32 - 1:
+        w = 0
+    a = M.frPyObjects(parts, h, w)
+    try:
+        C._WINDOW = window
+        b = C.frPyObjects(parts, h, w)
+    finally:
+        C._WINDOW = 0
+    assert a == b
+    assert C.frPyObjects(parts, h, w) == a
+
+
 @given(st.lists(st.floats(0.5, 8, allow_nan=False), min_size=3, max_size=3).map(
     lambda v: [[float(int(v[0] * 5)) / 5, float(int(v[1] * 5)) / 5]]),
     st.integers(1, 7), st.integers(1, 97))

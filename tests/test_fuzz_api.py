@@ -165,6 +165,9 @@ def test_public_api_takes_anything(call):
     except rastrum.RastrumError as e:  # only the seed fill's work limit may stop a call
         assert name.endswith("fill") and "work limit" in str(e), e
         return
+    except DeprecationWarning:  # an old spelling drawn (precision="flat"): an error in the tests
+        assert np.array_equal(big, before), "%s warned but wrote pixels" % name
+        return
     assert np.array_equal(_guards(big), guards), "%s wrote outside the canvas" % name
 
 
@@ -244,3 +247,213 @@ def test_new_surfaces_out_untouched(bad, which):
             rastrum.rasterize([(bad, 1)], out=out)
     except rastrum.InputError:
         assert (out == 7).all()
+
+
+# ---- issue 35: every public name, fuzzed as a whole ---------------------------------
+#
+# FUZZ has an entry for every public name: rastrum.__all__, rastrum.coco,
+# rastrum.dask, rastrum.gis, rastrum.scene and the public methods of Canvas,
+# Path and Polygons; NOT_CALLED lists the names that are data, not calls.
+# test_every_public_name_has_a_fuzz_entry fails when a new public name has
+# neither.  Each call gets its good arguments with one replaced by a hostile
+# object; it must work or raise InputError (or the exceptions the docs name
+# for it, ALSO), never RecursionError, write nothing into a canvas when it
+# raises, and allocate (Python's heap, tracemalloc) under 64 MB.
+
+import contextlib
+import io
+import os
+import tempfile
+import tracemalloc
+import types
+
+_TRI3 = np.array([[0.5, 0.5], [3.5, 0.5], [0.5, 3.5]])
+_MESH_V = np.array([[0.0, 0.0, 0.0], [0.5, 0.0, 0.0], [0.0, 0.5, 0.0], [0.0, 0.0, 0.5]])
+_MESH_F = np.array([[0, 2, 1], [0, 1, 3], [0, 3, 2], [1, 2, 3]])
+_DATASET = types.SimpleNamespace(transform=rastrum.IDENTITY, height=4, width=5, shape=(4, 5))
+
+
+def _fuzz_table():
+    from rastrum import coco, gis, scene
+    P = rastrum.Path
+    plain = {
+        "polygon_mask": (rastrum.polygon_mask, [RING, (4, 5)]),
+        "triangles_mask": (rastrum.triangles_mask, [TRIS, (4, 5)]),
+        "triangles_count": (rastrum.triangles_count, [TRIS, (4, 5)]),
+        "polygon_coverage": (rastrum.polygon_coverage, [RING, (4, 5)]),
+        "triangles_coverage": (rastrum.triangles_coverage, [TRIS, (4, 5)]),
+        "line_pixels": (rastrum.line_pixels, [(0, 0), (3, 2)]),
+        "point_in_triangle": (rastrum.point_in_triangle, [(1, 1), _TRI3]),
+        "Canvas": (rastrum.Canvas, [(4, 5)]),
+        "Polygons": (rastrum.Polygons, [_TRI3, [3], [1]]),
+        "Path": (lambda t: rastrum.Path(tolerance=t), [0.1]),
+        "stroke": (rastrum.stroke, [[(0, 0), (3, 3)], 1.0]),
+        "masks": (rastrum.masks, [[_RING], (4, 5)]),
+        "labels": (rastrum.labels, [[_RING], (4, 5)]),
+        "rasterize": (rastrum.rasterize, [[(_SQ, 1)], (4, 5)]),
+        "zonal_stats": (lambda r, g: rastrum.zonal_stats(r, g, transform=rastrum.IDENTITY, output="records"),
+                        [np.ones((4, 5)), [_SQ]]),
+        "geometry_mask": (rastrum.geometry_mask, [[_SQ], (4, 5), rastrum.IDENTITY]),
+        "geometry_window": (rastrum.geometry_window, [_DATASET, [_SQ]]),
+        "grid": (rastrum.grid, [(0.0, 0.0, 4.0, 5.0), 1.0]),
+        "render_mesh": (lambda v, f: rastrum.render_mesh(v, f, shape=(6, 6)), [_MESH_V, _MESH_F]),
+        "scene.sphere": (scene.sphere, [3, 4]),
+        "scene.torus": (scene.torus, [1.0, 0.4, 4, 3]),
+        "scene.read_obj": (scene.read_obj, [io.StringIO("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n")]),
+        "scene.write_obj": (scene.write_obj, [io.StringIO(), _MESH_V, _MESH_F]),
+        "scene.rotation": (scene.rotation, [0.1, 0.2, 0.3]),
+        "scene.project": (scene.project, [_MESH_V, (6, 6)]),
+        "scene.lambert": (scene.lambert, [np.array([[0.0, 0.0, 1.0]]), (0.0, 0.0, 1.0), 0.2, (200, 100, 50)]),
+        "scene.vertex_normals": (scene.vertex_normals, [_MESH_V, _MESH_F]),
+        "Path.from_svg": (P.from_svg, ["M 0 0 L 3 0 L 3 3 Z"]),
+    }
+    for name, (fn, args) in _surface().items():
+        plain[name] = (fn, args)
+    plain["gis.rasterize"] = plain["rasterize"]
+    plain["gis.geometry_mask"] = plain["geometry_mask"]
+    plain["gis.geometry_window"] = plain["geometry_window"]
+    plain["gis.grid"] = plain["grid"]
+    plain["scene.render_mesh"] = plain["render_mesh"]
+    try:
+        import rastrum.dask as rdask
+        plain["dask.rasterize"] = (lambda s, o, c: rdask.rasterize(s, o, chunks=c).compute(),
+                                   [[(_SQ, 1)], (4, 5), (2, 5)])
+        plain["dask.to_xarray"] = (rdask.to_xarray, [np.zeros((4, 5)), rastrum.IDENTITY])
+    except ImportError:  # dask is an extra: its two names are checked where it is installed
+        pass
+    assert gis is not None and coco is not None
+    canvas = {  # called on a canvas wrapped around a guard-patterned array
+        "Canvas.fill_polygon": (lambda c, *a: c.fill_polygon(*a), [RING, 7]),
+        "Canvas.fill_triangle": (lambda c, *a: c.fill_triangle(*a), [TRIS[0], 7]),
+        "Canvas.fill_triangles": (lambda c, *a: c.fill_triangles(*a), [TRIS, 7]),
+        "Canvas.fill_rect_gouraud": (lambda c, *a: c.fill_rect_gouraud(*a), [(1, 1, 8, 7), [0, 80, 160, 240]]),
+        "Canvas.line": (lambda c, *a: c.line(*a), [(0.5, 0.5), (9.5, 6.5), 5]),
+        "Canvas.polyline": (lambda c, *a: c.polyline(*a), [RING, 5]),
+        "Canvas.flood_fill": (lambda c, *a: c.flood_fill(*a), [(3, 4), 7]),
+        "Canvas.boundary_fill": (lambda c, *a: c.boundary_fill(*a), [(3, 4), 7, 9]),
+        "Canvas.depth": (lambda c, d: setattr(c, "depth", d), [np.zeros((H, W), np.int32)]),
+        "Canvas.clear_depth": (lambda c, *a: c.clear_depth(*a), []),
+        "Canvas.save": (lambda c, *a: c.save(*a), ["out.png"]),
+        "Canvas.to_image": (lambda c: c.to_image(), []),
+        "Canvas.wrap": (lambda c, a: rastrum.Canvas.wrap(a), [np.zeros((4, 5), np.uint8)]),
+    }
+    path = {  # called on a fresh Path that has moved to (0, 0)
+        "Path.move_to": (lambda p, *a: p.move_to(*a), [1.0, 2.0]),
+        "Path.line_to": (lambda p, *a: p.line_to(*a), [3.0, 2.0]),
+        "Path.quad_to": (lambda p, *a: p.quad_to(*a), [1.0, 2.0, 3.0, 0.0]),
+        "Path.cubic_to": (lambda p, *a: p.cubic_to(*a), [1.0, 2.0, 2.0, 2.0, 3.0, 0.0]),
+        "Path.arc_to": (lambda p, *a: p.arc_to(*a), [2.0, 1.0, 0.0, False, True, 3.0, 0.0]),
+        "Path.close": (lambda p: p.close(), []),
+        "Path.copy": (lambda p: p.copy(), []),
+        "Path.flatten": (lambda p, *a: p.flatten(*a), [8]),
+        "Polygons.packed": (lambda p: rastrum.Polygons(_TRI3, [3], [1]).packed(), []),
+    }
+    return plain, canvas, path
+
+
+# Public names that are data, not calls (nothing to fuzz), with what they are.
+NOT_CALLED = {
+    "ALGORITHMS": "a dict", "AA_METHODS": "a dict", "IDENTITY": "a tuple", "__version__": "a string",
+    "RastrumError": "an exception class", "InputError": "an exception class", "coco": "a module",
+    "scene": "a module", "gis.IDENTITY": "a tuple", "gis.DTYPES": "a dict", "gis.Window": "a named tuple",
+    "gis.ShapeSkipWarning": "a warning class", "Canvas.array": "a property", "Canvas.format": "a property",
+    "Canvas.width": "a property", "Canvas.packed": "a property", "Canvas.height": "a property", "Path.ARC_ERROR": "a number",
+    "Path.DEFAULT_TOLERANCE": "a number", "Path.points": "a property", "Path.verbs": "a property",
+    "Path.tolerance": "a property", "Polygons.points": "an attribute", "Polygons.ring_sizes": "an attribute",
+    "Polygons.rings_per_polygon": "an attribute",
+}
+# Exceptions the docs name for a call besides InputError (docs/bad-input.md):
+# Pillow's for a file it cannot write, the OS's for a file it cannot read.
+ALSO = {"Canvas.save": (ValueError, OSError, TypeError, KeyError), "scene.read_obj": (OSError, TypeError),
+        "scene.write_obj": (OSError, TypeError)}
+
+
+def _public_names():
+    from rastrum import coco, gis, scene
+    names = set(rastrum.__all__)
+    for mod, prefix in ((coco, "coco."), (gis, "gis."), (scene, "scene.")):
+        names |= {prefix + n for n in mod.__all__}
+    try:
+        import rastrum.dask as rdask
+        names |= {"dask." + n for n in rdask.__all__}
+    except ImportError:
+        pass
+    for cls in (rastrum.Canvas, rastrum.Path, rastrum.Polygons):
+        names |= {cls.__name__ + "." + n for n in dir(cls) if not n.startswith("_")}
+    return names
+
+
+def test_every_public_name_has_a_fuzz_entry():
+    plain, canvas, path = _fuzz_table()
+    covered = set(plain) | set(canvas) | set(path) | set(NOT_CALLED)
+    missing = sorted(_public_names() - covered)
+    assert not missing, "public names without a fuzz entry (add them to _fuzz_table): %s" % missing
+
+
+_ENTRIES = None
+
+
+@contextlib.contextmanager
+def _cwd(path):  # contextlib.chdir is Python 3.11's
+    old = os.getcwd()
+    os.chdir(path)
+    try:
+        yield
+    finally:
+        os.chdir(old)
+
+
+def _entry(name):
+    global _ENTRIES
+    if _ENTRIES is None:
+        plain, canvas, path = _fuzz_table()
+        _ENTRIES = {**{k: ("plain",) + v for k, v in plain.items()},
+                    **{k: ("canvas",) + v for k, v in canvas.items()}, **{k: ("path",) + v for k, v in path.items()}}
+    return _ENTRIES[name]
+
+
+def _names():
+    plain, canvas, path = _fuzz_table()
+    return sorted(set(plain) | set(canvas) | set(path))
+
+
+HOSTILE_ALL = HOSTILE | st.sampled_from([np.float64("nan"), np.int64(2 ** 62), np.True_, np.uint8(255), 1 + 2j]) | \
+    st.builds(lambda: np.zeros((4, 5), np.uint8)[:, ::2]) | st.builds(lambda: np.zeros((4, 5), np.uint8, order="F")) | \
+    st.builds(lambda: np.full((4, 5), np.nan))
+
+
+@settings(suppress_health_check=list(HealthCheck), deadline=None,
+          max_examples=settings.default.max_examples)  # the profile's count
+@given(st.sampled_from(_names()), st.integers(0, 6), HOSTILE_ALL)
+def test_every_public_name_takes_anything(name, pos, bad):
+    kind, fn, good = _entry(name)
+    args = list(good)
+    if args:
+        args[pos % len(args)] = bad
+    also = ALSO.get(name, ())
+    big = before = None
+    with tempfile.TemporaryDirectory() as tmp, _cwd(tmp):
+        tracemalloc.start()
+        try:
+            if kind == "canvas":
+                big, c = _canvas("rgb888", True)
+                before = big.copy()
+                fn(c, *args)
+            elif kind == "path":
+                fn(rastrum.Path().move_to(0.0, 0.0), *args)
+            else:
+                fn(*args)
+        except rastrum.InputError as e:
+            assert "np." not in str(e), e  # plain numbers, not numpy reprs
+            if big is not None:
+                assert np.array_equal(big, before), "%s raised but wrote pixels" % name
+        except also:
+            pass
+        except MemoryError:
+            pass  # a size the machine cannot hold, said before anything is written
+        except rastrum.RastrumError as e:  # the seed fill's work limit
+            assert name.endswith("fill") and "work limit" in str(e), e
+        finally:
+            peak = tracemalloc.get_traced_memory()[1]
+            tracemalloc.stop()
+    assert peak < 64 * 2 ** 20, "%s took %d bytes" % (name, peak)

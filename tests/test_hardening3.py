@@ -41,6 +41,50 @@ def test_finding2_rle_parser_long_count():
     assert coco.area(big) == 2**32 - 1
 
 
+# ---- finding 4: pycocotools' polygon rule took memory vertices x width -------
+
+# The tester's case: 100 vertices zig-zagging across a 1 x W mask (every
+# edge crosses every column: 100 W toggles), and the same ring on a 1 x 0
+# mask (pycocotools' width 0 takes every column).  The counts strings are
+# pycocotools' own, from running it on these rings (at W = 1,600,000 it
+# peaked at 8.2 GB; bench/coco_memory.py runs both again and compares).
+_ZIGZAG = """
+import resource, sys
+from rastrum import coco
+W = int(sys.argv[1])
+zig = []
+for k in range(100):
+    zig += [0.0 if k % 2 == 0 else float(W), -0.4 + 0.021 * k]
+before = resource.getrusage(resource.RUSAGE_SELF).ru_maxrss
+for w in (W, 0):
+    r = coco.frPyObjects([zig], 1, w)[0]
+    grew = resource.getrusage(resource.RUSAGE_SELF).ru_maxrss - before
+    print(w, grew, r["counts"].decode())
+"""
+_PYCOCOTOOLS = {  # (W, w): pycocotools' counts string
+    (1600000, 1600000): "^dob0bc]5PX]h0", (1600000, 0): "0^dob0bc]5bc]5",
+    (400000, 400000): "Tmg4l\\[1PZS6", (400000, 0): "0Tmg4l\\[1l\\[1",
+}
+
+
+def test_finding4_coco_rule_memory_follows_the_output():
+    """Peak RSS (ru_maxrss, kB) of a fresh interpreter grows by less than
+    100 MB over the call; it was 100 W toggles of 24 bytes (3.8 GB at
+    W = 1.6 million; pycocotools takes 8.2 GB).  Sanitizer runs (the quick
+    profile) take W = 400,000: 40 million toggles, 960 MB before."""
+    import os
+    import subprocess
+    import sys
+    big = 400000 if os.environ.get("RASTRUM_HYPOTHESIS_PROFILE") in ("quick", "valgrind") else 1600000
+    env = dict(os.environ, PYTHONPATH=os.pathsep.join(sys.path))
+    out = subprocess.run([sys.executable, "-c", _ZIGZAG, str(big)], env=env, capture_output=True, text=True,
+                         check=True).stdout.split("\n")
+    for line, w in zip(out, (big, 0)):
+        got_w, grew, counts = line.split()
+        assert int(got_w) == w and int(grew) < 100 * 1024, line  # kB, both calls
+        assert counts == _PYCOCOTOOLS[big, w]
+
+
 # ---- finding 5: merge / iou past 2^31 pixels ---------------------------------
 
 def test_finding5_merge_iou_past_2_31_pixels():
@@ -158,8 +202,9 @@ def test_finding9_errors_are_input_errors():
     pytest.importorskip("dask")
     import rastrum.dask
     for chunks in (0, (0, 5)):
-        with pytest.raises(InputError, match="chunks"):
+        with pytest.raises(InputError, match="chunks .*every chunk must be a whole number > 0") as e:
             rastrum.dask.rasterize([], (4, 5), chunks=chunks, dtype="uint8")
+        assert "division" not in str(e.value)  # was Python's ZeroDivisionError text
 
 
 def test_finding9_tiny_transform_blames_transform():
@@ -228,3 +273,64 @@ def test_finding9_deep_or_recursive_geometry_collection():
     for _ in range(50):
         ok = {"type": "GeometryCollection", "geometries": [ok]}
     assert rastrum.rasterize([(ok, 1)], out_shape=(3, 3)).sum() == 4
+
+
+# ---- finding 8, the rest: Polygons' tables, a scalar part ----------------------------
+
+def test_finding8_polygons_tables_checked_where_they_enter():
+    tri = [[0, 0], [4, 0], [4, 4]]
+    for points, match in ((np.array(tri, complex), "points .* not dtype complex128"),
+                          (np.array(tri, str), "points .* not dtype <U1"),
+                          ([[0, 0], [True, 0], [4, 4]], "points .* not bools"),
+                          ([[0, 0], [None, 0], [4, 4]], "points .* not None")):
+        with pytest.raises(InputError, match="Polygons: " + match):
+            rastrum.Polygons(points, [3], [1])
+    for sizes, counts, match in (([3.7], [1], "ring_sizes .* ints"), ([3.0], [1], "ring_sizes .* ints"),
+                                 ([True, True, True], [3], "ring_sizes .* ints"), ([3], [1.2], "rings_per_polygon"),
+                                 (["3"], [1], "ring_sizes"), ([[3]], [1], "ring_sizes must be 1-D"),
+                                 ([-3], [1], "ring_sizes must be counts"), ([3], [2**32], "rings_per_polygon")):
+        with pytest.raises(InputError, match=match):
+            rastrum.Polygons(np.array(tri, float), sizes, counts)
+    b = rastrum.Polygons(np.array(tri), np.array([3], np.int64), [1])  # ints of any width: counts
+    assert b[0][0].tolist() == [[0.0, 0.0], [4.0, 0.0], [4.0, 4.0]]
+
+
+def test_finding8_scalar_part_refused():
+    seg = [[0, 0, 4, 0, 4, 4], 5]  # was: the 5 read as a part of no point, dropped
+    with pytest.raises(InputError, match="rings: part 1 has shape \\(\\)"):
+        coco.rings(seg)
+    with pytest.raises(InputError, match="polygons: object 0: rings: part 1 has shape \\(\\)"):
+        coco.polygons([seg])
+    with pytest.raises(InputError, match="frPyObjects: polygon 1 has shape \\(\\)"):
+        coco.frPyObjects(seg, 5, 5)
+
+
+# ---- finding 9, the rest: ragged and recursive lists, numpy reprs --------------------
+
+def test_finding9_ragged_lists_name_the_object():
+    with pytest.raises(InputError, match="polygons: object 1: rings: part 0 "):
+        coco.polygons([[[0, 0, 4, 0, 4, 4]], [[0, 0, [4], 0, 4, 4]]])
+    with pytest.raises(InputError, match="^rings: part 1 "):
+        coco.rings([[0, 0, 4, 0, 4, 4], [0, [0, 1], 4, 0]])
+    loop = []
+    loop.append(loop)
+    for call in (lambda: coco.rings(loop), lambda: coco.polygons([loop]), lambda: coco.frPyObjects(loop, 3, 3),
+                 lambda: rastrum.polygon_mask(loop, (3, 3)), lambda: rastrum.Polygons(loop, [1], [1])):
+        with pytest.raises(InputError):  # was numpy's ValueError (more than 64 dimensions)
+            call()
+
+
+def test_finding9_messages_print_plain_numbers():
+    sq = {"type": "Polygon", "coordinates": [[(0, 0), (2, 0), (2, 2), (0, 0)]]}
+    with pytest.raises(InputError) as e:
+        rastrum.rasterize([(sq, np.float64(300.5))], out_shape=(4, 4), dtype="uint8")
+    assert "value 300.5 does not fit" in str(e.value), e.value
+    for call in (lambda: rastrum.rasterize([(sq, 1)], out_shape=(4, 4),
+                                           transform=tuple(np.array([1e-320, 0, 0, 0, 1, 0]))),
+                 lambda: rastrum.Canvas((4, 4)).flood_fill((np.int64(9), np.int64(1)), 1),
+                 lambda: rastrum.Canvas((4, 4)).fill_polygon([(0, 0), (1, 1), (0, 1)], (np.float64(1.5),)),
+                 lambda: rastrum.polygon_mask([(0, 0), (1, 1), (0, 1)], (4, 4), sample_offset=np.float64(0.25)),
+                 lambda: rastrum.rasterize([(sq, np.True_)], out_shape=(4, 4))):
+        with pytest.raises(InputError) as e:
+            call()
+        assert "np." not in str(e.value), e.value

@@ -1670,6 +1670,18 @@ RAST_API rast_status rast_coco_ring_toggles(const rast_point *points, uint32_t n
                                             int32_t height, int32_t width, uint32_t *toggles,
                                             size_t capacity, size_t *count);
 
+/* The toggles of rast_coco_ring_toggles whose position x * height + row,
+ * as an exact integer (pycocotools' uint32 wraps only the value written,
+ * which happens with width 0), lies in [first, end): a ring's toggles a
+ * window at a time, so that memory follows the window and not npoints *
+ * width (rastrum.coco builds each RLE this way).  *count gets the number in
+ * the window; capacity, RAST_E_SCRATCH and the errors as there.
+ * rast_coco_ring_toggles is this call with first 0 and end 2^64 - 1. */
+RAST_API rast_status rast_coco_ring_toggles_in(const rast_point *points, uint32_t npoints,
+                                               int32_t height, int32_t width, uint64_t first,
+                                               uint64_t end, uint32_t *toggles, size_t capacity,
+                                               size_t *count);
+
 /* The run-length counts of the mask that toggles[0..count) (positions, any
  * order, any multiplicity) give a mask of `total` pixels, as pycocotools
  * makes them: the differences of the sorted positions with `total` among

@@ -131,23 +131,185 @@ static long rastpy_rles(const char *strs, const size_t *offsets, uint32_t n,
 
 /* ---- polygons: pycocotools' rule through the core ----------------------- */
 
+/* pycocotools (rleFrPoly) walks every edge in fifths of a pixel, keeps a
+ * toggle per column crossed and sorts them all: memory grows with the
+ * vertices times the width (100 vertices zig-zagging across 1.6 million
+ * columns: 160 million toggles).  The RLE depends only on which positions
+ * hold an odd number of toggles, so here the positions are taken a window
+ * at a time (rast_coco_ring_toggles_in): at most `budget` toggles and
+ * 4 * budget positions (a parity bit each) per window, windows in
+ * increasing order, each run end written as soon as its window is done.
+ * Memory: the window's buffers plus the RLE string itself.
+ *
+ * Which run ends pycocotools writes: its counts are the differences of
+ * the sorted positions with h * w among them (uint32), a difference of 0
+ * joining the runs around it; worked through, the run ends are the
+ * positions of odd multiplicity among toggles and h * w, except the
+ * largest position of all, which always ends a run (tests/test_coco.py
+ * checks this against pycocotools, and tests/c/test_coco.c the core's
+ * windows against its whole call). */
+
+typedef struct coco_emit {
+    rastpy_bytes *out;
+    size_t n;          /* counts written */
+    uint32_t c1, c2;   /* the last two counts */
+    uint64_t last;     /* the last run end */
+} coco_emit;
+
+/* Append the count that ends a run at position v (see rastpy_rle_string). */
+static int coco_put(coco_emit *e, uint64_t v)
+{
+    uint32_t cnt = (uint32_t)(v - e->last);
+    int64_t x = (int64_t)cnt;
+    int more = 1;
+    if (!rastpy_bytes_reserve(e->out, 8)) return 0;
+    if (e->n > 2) x -= (int64_t)e->c2;
+    while (more) {
+        int c = (int)(x & 0x1f);
+        x = (x - c) / 32;
+        more = (c & 0x10) ? x != -1 : x != 0;
+        if (more) c |= 0x20;
+        e->out->p[e->out->n++] = (char)(c + 48);
+    }
+    e->c2 = e->c1;
+    e->c1 = cnt;
+    e->n++;
+    e->last = v;
+    return 1;
+}
+
+typedef struct coco_work {
+    uint32_t *tog;   /* a window's toggles */
+    size_t cap;      /* room in tog */
+    uint64_t *bits;  /* a window's parities, one bit a position */
+    uint64_t span;   /* positions a window may cover (a multiple of 64) */
+} coco_work;
+
+/* Toggles in [p0, p1) of the uint32 positions, over `laps` wraps (width
+ * 0); into w->tog when `write`, else only counted.  A core status. */
+static rast_status coco_window(const rast_point *pts, uint32_t n, uint32_t h, uint32_t wd,
+                               uint64_t laps, uint64_t p0, uint64_t p1, coco_work *w, int write,
+                               size_t *count)
+{
+    uint64_t L;
+    size_t at = 0, got;
+    for (L = 0; L < laps; L++) {
+        rast_status st = rast_coco_ring_toggles_in(pts, n, (int32_t)h, (int32_t)wd, (L << 32) + p0,
+                                                   (L << 32) + p1, write && w->tog ? w->tog + at : NULL,
+                                                   write ? w->cap - at : 0, &got);
+        if (st != RAST_OK && !(st == RAST_E_SCRATCH && !write)) return st;
+        at += got;
+    }
+    *count = at;
+    return RAST_OK;
+}
+
+static long coco_ring_rle(const rast_point *pts, uint32_t n, uint32_t h, uint32_t wd,
+                          size_t budget, coco_work *w, rastpy_bytes *out)
+{
+    uint64_t total = (uint64_t)h * wd, endp, laps = 1, p0 = 0, step = 64, top = 0;
+    coco_emit e;
+    int any = 0;
+    e.out = out;
+    e.n = 0;
+    e.c1 = e.c2 = 0;
+    e.last = 0;
+    if (!h) /* every position is 0: pycocotools' counts are [0] */
+        return coco_put(&e, 0) ? 0 : RASTPY_E_NOMEM;
+    if (wd) {
+        endp = total + 1;
+    } else {
+        /* width 0: every column from 0 on, up to the last the ring crosses
+         * (5c + 2 < its largest X), positions wrapping at 2^32 */
+        int64_t maxx = 0, cols;
+        uint32_t j;
+        for (j = 0; j < n; j++)
+            if (pts[j].x > maxx) maxx = pts[j].x;
+        cols = (maxx - 2 + 4) / 5; /* ceil((maxx - 2) / 5), maxx >= 0 */
+        if (cols < 0) cols = 0;
+        laps = (((uint64_t)cols * h) >> 32) + 1;
+        endp = laps > 1 ? (uint64_t)1 << 32 : (uint64_t)cols * h + 1;
+    }
+    while (p0 < endp) {
+        uint64_t p1 = p0 + step > endp ? endp : p0 + step, i, nw;
+        size_t cnt, k;
+        int total_here = !wd && p0 == 0; /* h * w = 0 is a position too */
+        rast_status st = coco_window(pts, n, h, wd, laps, p0, p1, w, 0, &cnt);
+        if (st != RAST_OK) return st;
+        if (cnt > budget || ((cnt || total_here) && p1 - p0 > w->span)) {
+            if (p1 - p0 > 1) {
+                step = (p1 - p0) / 2;
+                continue;
+            }
+            budget = cnt; /* one position's toggles: at most 2 per edge and lap */
+        }
+        if (cnt > w->cap) {
+            free(w->tog);
+            w->tog = (uint32_t *)malloc(cnt * sizeof(uint32_t));
+            w->cap = w->tog ? cnt : 0;
+            if (!w->tog) return RASTPY_E_NOMEM;
+        }
+        if (cnt || total_here) {
+            st = coco_window(pts, n, h, wd, laps, p0, p1, w, 1, &cnt);
+            if (st != RAST_OK) return st;
+            nw = (p1 - p0 + 63) / 64;
+            memset(w->bits, 0, (size_t)nw * sizeof(uint64_t));
+            for (k = 0; k < cnt; k++) {
+                uint64_t v = w->tog[k] - p0;
+                w->bits[v >> 6] ^= (uint64_t)1 << (v & 63);
+                if (!any || w->tog[k] >= top) top = w->tog[k];
+                any = 1;
+            }
+            if (total_here) w->bits[0] ^= 1;
+            for (i = 0; i < nw; i++) {
+                uint64_t word = w->bits[i];
+                while (word) {
+                    int b = 0;
+                    uint64_t v;
+                    while (!((word >> b) & 1)) b++;
+                    word &= word - 1;
+                    v = p0 + 64 * i + (uint64_t)b;
+                    if (wd && v >= total) break; /* h * w ends the last run below */
+                    if (!coco_put(&e, v)) return RASTPY_E_NOMEM;
+                }
+            }
+        }
+        p0 = p1;
+        if (step < ((uint64_t)1 << 33)) step *= 2;
+    }
+    /* the largest position always ends a run: h * w, or (width 0) the
+     * largest toggle */
+    if (wd) top = total;
+    if (!e.n || e.last != top)
+        if (!coco_put(&e, top)) return RASTPY_E_NOMEM;
+    return 0;
+}
+
 long rastpy_coco_fr_polys(const double *xy, const uint32_t *npoints, uint32_t npolys,
-                          uint32_t height, uint32_t width, char **data, size_t *offsets)
+                          uint32_t height, uint32_t width, size_t budget, char **data,
+                          size_t *offsets)
 {
     rastpy_bytes out = {NULL, 0, 0};
-    size_t cap = 0, at = 0, count, ncounts, maxpts = 0;
-    uint32_t *tog = NULL, *work = NULL, *cnts = NULL, k;
+    size_t at = 0, maxpts = 0;
+    uint32_t k;
     int32_t *pts;
     long result = 0;
+    coco_work w = {NULL, 0, NULL, 0};
+    if (!budget) budget = (size_t)1 << 18;
+    if (budget > ((size_t)1 << 26)) budget = (size_t)1 << 26;
+    w.span = (((uint64_t)budget * 4 + 63) / 64) * 64;
     for (k = 0; k < npolys; k++)
         if (npoints[k] > maxpts) maxpts = npoints[k];
     pts = (int32_t *)malloc(maxpts * 2 * sizeof(int32_t) + 8);
-    if (!pts) return RASTPY_E_NOMEM;
+    w.bits = (uint64_t *)malloc((size_t)(w.span / 64) * sizeof(uint64_t));
+    if (!pts || !w.bits) {
+        result = RASTPY_E_NOMEM;
+        goto done;
+    }
     offsets[0] = 0;
     for (k = 0; k < npolys; k++) {
         const double lim = (double)RAST_COCO_COORD_MAX + 1.0;
         size_t i;
-        rast_status st;
         for (i = 0; i < 2 * (size_t)npoints[k]; i++) {
             /* pycocotools' upsampling, in double: (int)(5 x + 0.5) */
             double v = 5.0 * xy[2 * at + i] + 0.5;
@@ -157,44 +319,16 @@ long rastpy_coco_fr_polys(const double *xy, const uint32_t *npoints, uint32_t np
             }
             pts[i] = (int32_t)v;
         }
-        for (;;) {
-            st = rast_coco_ring_toggles((const rast_point *)(void *)pts, npoints[k], (int32_t)height,
-                                        (int32_t)width, tog, cap, &count);
-            if (st != RAST_E_SCRATCH) break;
-            cap = count * 2 + 64;
-            free(tog);
-            free(work);
-            free(cnts);
-            tog = (uint32_t *)malloc(cap * sizeof(uint32_t));
-            work = (uint32_t *)malloc(cap * sizeof(uint32_t));
-            cnts = (uint32_t *)malloc((cap + 1) * sizeof(uint32_t));
-            if (!tog || !work || !cnts) {
-                result = RASTPY_E_NOMEM;
-                goto done;
-            }
-        }
-        if (st == RAST_OK && !cnts) {
-            cnts = (uint32_t *)malloc(2 * sizeof(uint32_t));
-            if (!cnts) st = (rast_status)RASTPY_E_NOMEM;
-        }
-        if (st == RAST_OK)
-            st = rast_coco_rle(tog, count, height * width, work, cnts, &ncounts);
-        if (st != RAST_OK) {
-            result = st;
-            goto done;
-        }
-        if (!rastpy_rle_string(&out, cnts, ncounts)) {
-            result = RASTPY_E_NOMEM;
-            goto done;
-        }
+        result = coco_ring_rle((const rast_point *)(void *)pts, npoints[k], height, width, budget, &w,
+                               &out);
+        if (result) goto done;
         offsets[k + 1] = out.n;
         at += npoints[k];
     }
 done:
     free(pts);
-    free(tog);
-    free(work);
-    free(cnts);
+    free(w.tog);
+    free(w.bits);
     if (result) {
         free(out.p);
         *data = NULL;

@@ -16,10 +16,14 @@
 /* RLEs of different sizes given together where one size is needed. */
 #define RASTPY_E_RLE_SIZE (-1002)
 
+/* rastpy_coco_fr_polys: pycocotools' rule, each ring's toggles taken at
+ * most `budget` at a time (0: 2^18; more are taken where one position
+ * holds more), so that memory follows the RLE, not npoints * width. */
 /* cdef-begin */
 void rastpy_free(void *p);
 long rastpy_coco_fr_polys(const double *xy, const uint32_t *npoints, uint32_t npolys,
-                          uint32_t height, uint32_t width, char **data, size_t *offsets);
+                          uint32_t height, uint32_t width, size_t budget, char **data,
+                          size_t *offsets);
 long rastpy_coco_exact(const double *xy, size_t npoints, const uint32_t *ring_sizes,
                        size_t nrings, const uint32_t *poly_rings, uint32_t npolys,
                        uint32_t height, uint32_t width, const rast_fill_opts *opts,

@@ -13,7 +13,7 @@ from typing import Any, Iterator, List, Tuple, Union, overload
 import numpy as np
 import numpy.typing as npt
 
-from ._core import InputError, _check, bad_point_message, plural, use_wide
+from ._core import InputError, _check, bad_point_message, count_array, plural, real_array, use_wide
 from ._native import ffi, lib
 
 #: numpy dtype -> the glue's element type code.
@@ -63,9 +63,10 @@ class Polygons:
 
     def __init__(self, points: npt.ArrayLike, ring_sizes: npt.ArrayLike, rings_per_polygon: npt.ArrayLike) -> None:
         # views: read-only below without touching the caller's arrays
-        points = np.ascontiguousarray(points, np.float64).view()
-        sizes = np.ascontiguousarray(ring_sizes, np.uint32).view()
-        counts = np.ascontiguousarray(rings_per_polygon, np.uint32).view()
+        # one check where the tables enter: real numbers, int counts
+        points = real_array(points, "Polygons: points", "a (P, 2) array-like").view()
+        sizes = count_array(ring_sizes, "Polygons: ring_sizes").view()
+        counts = count_array(rings_per_polygon, "Polygons: rings_per_polygon").view()
         if points.ndim != 2 or points.shape[1] != 2 or sizes.ndim != 1 or counts.ndim != 1:
             raise InputError("Polygons: points must be (P, 2), ring_sizes and rings_per_polygon 1-D; got "
                              "shapes %s, %s, %s" % (points.shape, sizes.shape, counts.shape))

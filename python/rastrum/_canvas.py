@@ -349,7 +349,7 @@ class Canvas:
             return
         if color is None:
             raise InputError("%s needs color" % entry)
-        if np.ndim(color) >= 2:
+        if _core.ndim(color) >= 2:
             raise InputError("%s: aa=%r takes one colour for the whole batch, not one per triangle"
                              % (entry, aa))
         pixel = self._pixel(color)
@@ -688,7 +688,7 @@ class Canvas:
         batch = _triangles.tris_f64(tris)
         precision = _core.shading_precision(shading, precision)
         if vertex_colors is None and depth is None and isinstance(precision, str) and precision == "exact" and (
-                color is None or np.ndim(color) < 2):
+                color is None or _core.ndim(color) < 2):
             if color is None:
                 raise InputError("fill_triangles needs color or vertex_colors")
             _triangles.fill_triangles(self._writable(), batch, self._pixel(color), opts)
@@ -703,7 +703,7 @@ class Canvas:
         if vertex_colors is not None:
             colors = _shading.rgba(vertex_colors, n, True, self._format, channels)
         else:
-            if np.ndim(color) < 2:  # one colour for every triangle
+            if _core.ndim(color) < 2:  # one colour for every triangle
                 one = np.frombuffer(_rgba_bytes(color, self._format), np.uint8)
                 colors = np.ascontiguousarray(np.broadcast_to(one, (n, 3, 4)))
             else:

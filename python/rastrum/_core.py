@@ -9,6 +9,7 @@ import decimal
 import fractions
 import math
 import numbers
+import re
 import warnings
 
 import numpy as np
@@ -21,8 +22,23 @@ class RastrumError(Exception):
     """An error reported by the rastrum C core."""
 
 
+# numpy 2's reprs of its scalars, np.float64(300.5), np.int64(3), np.True_:
+# a message prints the number as Python would (300.5, 3, True).
+_NP_REPR = re.compile(r"\bnp\.(?:float|int|uint|complex|longdouble|clongdouble|half|single|double|"
+                      r"bytes_|str_|intp|uintp)\d*\(((?:[^()]|\([^()]*\))*)\)")
+_NP_BOOL = re.compile(r"\bnp\.(True|False)_")
+
+
 class InputError(RastrumError, ValueError):
-    """Bad input: the message says which argument and why."""
+    """Bad input: the message says which argument and why.  Numbers in it
+    print plainly (300.5), never as numpy's reprs (np.float64(300.5)),
+    whichever type the caller gave them as: that is done here, once, for
+    every message."""
+
+    def __init__(self, *args):
+        if len(args) == 1 and isinstance(args[0], str) and "np." in args[0]:
+            args = (_NP_BOOL.sub(r"\1", _NP_REPR.sub(r"\1", args[0])),)
+        super().__init__(*args)
 
 
 def plural(n, word, words=None):
@@ -247,6 +263,16 @@ def as_numpy(x):
     return x
 
 
+def ndim(x):
+    """np.ndim(x), or -1 for what numpy cannot make an array of (ragged,
+    recursive or too deeply nested lists): the caller's general path then
+    refuses it with an InputError naming the argument."""
+    try:
+        return np.ndim(x)
+    except (ValueError, TypeError, OverflowError, RecursionError):
+        return -1
+
+
 def has_bool(x):
     """Is there a bool (Python's or numpy's) in the nested lists/tuples x?"""
     types = set(map(type, x))
@@ -277,7 +303,28 @@ def real_array(x, what, shape_text):
     if kind not in "iuf":
         raise InputError("%s must be %s of real numbers (int or float), not dtype %s"
                          % (what, shape_text, a.dtype))
+    if not a.ndim:  # a number where an array is needed: shape () for the caller to refuse
+        return np.array(a, np.float64)  # (ascontiguousarray would make it (1,), one coordinate)
     return np.ascontiguousarray(a, dtype=np.float64)
+
+
+def count_array(x, what):
+    """`x` (ring sizes, rings per polygon) as a C-contiguous 1-D uint32
+    array of counts, or InputError naming `what`: ints in 0..2**32 - 1
+    only (float counts, bools and strings are refused, not truncated)."""
+    try:
+        a = np.asarray(x)
+    except (TypeError, ValueError, OverflowError):
+        a = None
+    if a is None or a.dtype.kind not in "iu" or (isinstance(x, (list, tuple)) and has_bool(x)):
+        raise InputError("%s must be a 1-D list or array of ints (counts), not %s"
+                         % (what, "dtype %s" % a.dtype if a is not None else type(x).__name__))
+    if a.ndim != 1:
+        raise InputError("%s must be 1-D, not shape %s" % (what, a.shape))
+    if a.size and (int(a.min()) < 0 or int(a.max()) > 0xFFFFFFFF):
+        raise InputError("%s must be counts in 0..2**32 - 1, not %d" % (what, int(a.min()) if a.min() < 0
+                                                                       else int(a.max())))
+    return np.ascontiguousarray(a, np.uint32)
 
 
 def snap_points(xy, s, what="points"):
@@ -482,11 +529,11 @@ def _ring_list(rings, holes=None):
         except TypeError:
             raise InputError("rings must be an (N, 2) array-like or a list of them, not %s"
                              % type(rings).__name__) from None
-        if out and np.ndim(out[0]) == 0 and not isinstance(out[0], (str, bytes)) and out[0] is not None:
+        if out and ndim(out[0]) == 0 and not isinstance(out[0], (str, bytes)) and out[0] is not None:
             raise InputError("rings: got a flat list of %s (shape (%d,)); a ring needs shape "
                              "(N, 2); for a COCO polygon [x0, y0, x1, y1, ...] use "
                              "rastrum.coco.rings(segmentation)" % (plural(len(out), "number"), len(out)))
-        if out and np.ndim(out[0]) == 1:
+        if out and ndim(out[0]) == 1:
             out = [out]  # one ring given as a list of (x, y) pairs
         else:
             flat = []

@@ -54,7 +54,7 @@ def snap_polyline(points, s, minimum):
     """An (N, 2) array-like snapped to an int32 (N, 2) array, N >= minimum;
     no points at all ([] or an empty (0, 2) array) give an empty array."""
     try:
-        empty = np.size(points) == 0 and np.ndim(points) <= 2
+        empty = np.size(points) == 0 and _core.ndim(points) <= 2
     except ValueError:  # ragged nesting: snap_points says why
         empty = False
     if empty:

@@ -188,7 +188,7 @@ def fill_rect_gouraud(canvas, rect, corner_colors, method, precision, fraction_b
 
 
 def fill_polygon_gouraud(canvas, rings, vertex_colors, opts, precision):
-    if isinstance(vertex_colors, (list, tuple)) and vertex_colors and np.ndim(vertex_colors[0]) == 2:
+    if isinstance(vertex_colors, (list, tuple)) and vertex_colors and _core.ndim(vertex_colors[0]) == 2:
         vertex_colors = np.concatenate([np.asarray(v) for v in vertex_colors])
     vc = np.asarray(vertex_colors)
     n = vc.shape[0] if vc.ndim >= 1 else -1

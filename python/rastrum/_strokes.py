@@ -72,14 +72,17 @@ def _subpaths(geometry: object, tolerance: Optional[float]) -> List[Tuple[List[_
         if cur:
             out.append((cur, closed))
         return out
-    arr = np.asarray(geometry, dtype=object)
-    if arr.ndim == 2 and arr.shape[1:] == (2,):
+    from ._core import ndim, real_array
+    if isinstance(geometry, (str, bytes, dict)) or not hasattr(geometry, "__iter__"):
+        raise InputError("geometry must be a Path, an (N, 2) array of (x, y) or a list of them, not %s"
+                         % type(geometry).__name__)
+    if ndim(geometry) == 2 and np.shape(geometry)[1:] == (2,):
         lines: Iterable[object] = [geometry]
     else:
         lines = geometry  # type: ignore[assignment]
     out = []
     for i, line in enumerate(lines):
-        a = np.asarray(line, dtype=np.float64)
+        a = real_array(line, "geometry: polyline %d" % i, "an (N, 2) array of (x, y)")
         if a.ndim != 2 or a.shape[1] != 2:
             raise InputError("geometry: polyline %d is not an (N, 2) array of (x, y)" % i)
         if not np.isfinite(a).all():

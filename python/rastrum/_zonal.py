@@ -96,7 +96,11 @@ def _raster(raster, transform, nodata):
         mask = np.ma.getmaskarray(raster)
         data = np.asarray(raster.data)
     else:
-        data = np.asarray(raster)  # a dask array or a DataArray computes here
+        try:
+            data = np.asarray(raster)  # a dask array or a DataArray computes here
+        except (ValueError, TypeError, OverflowError, RecursionError):  # ragged or self-holding lists
+            raise InputError("raster must be a 2-D (rows, columns) or 3-D (bands, rows, columns) array, "
+                             "not %s" % type(raster).__name__) from None
     if data.ndim not in (2, 3) or 0 in data.shape:
         raise InputError("raster must be a non-empty 2-D (rows, columns) or 3-D (bands, rows, columns) array, "
                          "not shape %r" % (data.shape,))

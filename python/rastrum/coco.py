@@ -34,8 +34,6 @@ __all__ = ["encode", "decode", "area", "toBbox", "merge", "iou", "frPyObjects", 
 
 _F64 = np.dtype(np.float64)
 
-__all__ = ["encode", "decode", "area", "toBbox", "merge", "iou", "frPyObjects", "rings", "polygons"]
-
 
 def _glue(result, what):
     if result == 0:
@@ -372,12 +370,17 @@ def _flat(p, k):
                      "or an (N, 2) array is needed" % (k, a.shape))
 
 
+# Toggles a window of pycocotools' rule holds at most (python/glue/coco.c);
+# 0: the glue's default (2**18).  Tests make it small to cross many windows.
+_WINDOW = 0
+
+
 def _fr_call(xy, sizes, n, h, w, rule):
     """rastpy_coco_fr_polys or rastpy_coco_exact: (status, data, offsets)."""
     offsets = ffi.new("size_t[]", n + 1)
     data = ffi.new("char **")
     if rule == "coco":
-        r = lib.rastpy_coco_fr_polys(xy, sizes, n, h, w, data, offsets)
+        r = lib.rastpy_coco_fr_polys(xy, sizes, n, h, w, _WINDOW, data, offsets)
     else:
         opts = _core.fill_opts("aet", "evenodd", 8, 0.5)
         failed = ffi.new("uint32_t *", 0xFFFFFFFF)
@@ -416,6 +419,8 @@ def _fr_lists(parts, h, w, rule):
         if type(p) is not list:
             return None
         k = len(p) // 2
+        if 2 * k != len(p) and type(p[-1]) is not float and type(p[-1]) is not int:
+            return None  # the coordinate dropped must be a number too
         flat += p if 2 * k == len(p) else p[:2 * k]
         sizes.append(k)
     try:
@@ -493,11 +498,11 @@ def frPyObjects(pyobj: Any, h: int, w: int, *, rule: Literal["coco", "exact"] = 
         strs = _fr_counts([o["counts"] for o in pyobj], "frPyObjects")
         return _objs(strs, [_size(o, k, "frPyObjects") for k, o in enumerate(pyobj)])
     _poly_hw(h, w)
-    if np.ndim(first) == 0:  # one flat polygon or one box
+    if _core.ndim(first) == 0:  # one flat polygon or one box
         if len(pyobj) == 4:
             return _fr_polys(_box_polys([pyobj]), h, w, rule)[0]
         return _fr_polys([_flat(pyobj, 0)], h, w, rule)[0]
-    if len(first) == 4 and np.ndim(first) == 1:
+    if len(first) == 4 and _core.ndim(first) == 1:
         return _fr_polys(_box_polys(pyobj), h, w, rule)
     quick = _fr_lists(pyobj, h, w, rule)
     if quick is not None:
@@ -515,7 +520,7 @@ def rings(segmentation: Any) -> List[npt.NDArray[np.float64]]:
     if not isinstance(segmentation, (list, tuple, np.ndarray)):
         raise InputError("rings: segmentation must be a list of flat [x0, y0, ...] lists, not %s"
                          % type(segmentation).__name__)
-    if len(segmentation) and type(segmentation[0]) is not list and np.ndim(segmentation[0]) == 0:
+    if len(segmentation) and type(segmentation[0]) is not list and _core.ndim(segmentation[0]) == 0:
         segmentation = [segmentation]
     out = []
     for k, p in enumerate(segmentation):

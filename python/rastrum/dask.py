@@ -209,7 +209,10 @@ def _chunks(chunks, shape, dt):
                          "or dask's forms ((rows, ...), (columns, ...)) or 'auto'")
     try:
         norm = da.core.normalize_chunks(chunks, shape=shape, dtype=dt)
-    except (ValueError, TypeError, ArithmeticError) as e:  # chunks=0: dask divides by it
+    except ArithmeticError:  # chunks=0 or (0, 5): dask divides by it
+        raise InputError("chunks %r: every chunk must be a whole number > 0 (rows and columns per block)"
+                         % (chunks,)) from None
+    except (ValueError, TypeError) as e:
         raise InputError("chunks %r do not fit out_shape %r: %s" % (chunks, shape, e)) from None
     if len(norm) != 2 or tuple(map(sum, norm)) != tuple(shape):
         raise InputError("chunks %r do not fit out_shape %r: the rows' and columns' chunks must sum "

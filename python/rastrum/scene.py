@@ -120,8 +120,8 @@ def torus(R: float = 1.0, r: float = 0.4, n: int = 32, m: int = 16
     counter-clockwise seen from outside.
     """
     n, m = _count(n, "n", 3), _count(m, "m", 3)
-    R, r = float(R), float(r)
-    if not (0 < r < R) or not math.isfinite(R):
+    R, r = _real(R, "torus: R"), _real(r, "torus: r")
+    if not (0 < r < R):
         raise InputError("torus needs 0 < r < R, not R=%r r=%r" % (R, r))
     u = 2 * math.pi * np.arange(n) / n
     w = 2 * math.pi * np.arange(m) / m
@@ -277,6 +277,8 @@ def write_obj(target: Union[str, os.PathLike[str], IO[str]], vertices: npt.Array
     """Write a triangle mesh as OBJ text to a path or a text file object
     (``v`` lines with 17 significant digits, so floats read back equal;
     ``f i//i`` when there are normals)."""
+    if not isinstance(target, (str, os.PathLike)) and not callable(getattr(target, "write", None)):
+        raise InputError("write_obj: target must be a path or a text file object, not %s" % type(target).__name__)
     v, fc, n = _mesh(vertices, faces, normals)
     out = io.StringIO()
     for p in v:
@@ -302,7 +304,7 @@ def rotation(yaw: float = 0.0, pitch: float = 0.0, roll: float = 0.0) -> npt.NDA
     """A 3x3 rotation: `roll` about z, then `pitch` about x, then `yaw`
     about y, in degrees (a positive yaw turns the mesh's front to the
     right, a positive pitch tilts its top towards the viewer)."""
-    a, b, c = (math.radians(float(t)) for t in (yaw, pitch, roll))
+    a, b, c = (math.radians(_real(t, "rotation: " + w)) for t, w in ((yaw, "yaw"), (pitch, "pitch"), (roll, "roll")))
     ry = np.array([[math.cos(a), 0, math.sin(a)], [0, 1, 0], [-math.sin(a), 0, math.cos(a)]])
     rx = np.array([[1, 0, 0], [0, math.cos(b), -math.sin(b)], [0, math.sin(b), math.cos(b)]])
     rz = np.array([[math.cos(c), -math.sin(c), 0], [math.sin(c), math.cos(c), 0], [0, 0, 1]])
@@ -311,8 +313,12 @@ def rotation(yaw: float = 0.0, pitch: float = 0.0, roll: float = 0.0) -> npt.NDA
 
 def _real(x, what):
     """A finite real number (not a bool or a string), as a float."""
-    if isinstance(x, (bool, np.bool_)) or not isinstance(x, (int, float, np.integer, np.floating)) \
-            or not math.isfinite(x):
+    try:
+        ok = not isinstance(x, (bool, np.bool_)) and isinstance(x, (int, float, np.integer, np.floating)) \
+            and math.isfinite(x)
+    except OverflowError:  # an int past float's range
+        ok = False
+    if not ok:
         raise InputError("%s must be a finite number, not %r" % (what, x))
     return float(x)
 
@@ -358,9 +364,14 @@ def project(vertices: npt.ArrayLike, size: Tuple[int, int], *, rotation: Optiona
     """Camera and viewport: (pixel xy (V, 2), depth key (V,), camera-space
     vertices (V, 3)).  See the module's conventions; a smaller key is
     nearer."""
-    v = np.asarray(vertices, dtype=np.float64)
-    w, h = size
-    rot = np.eye(3) if rotation is None else np.asarray(rotation, dtype=np.float64)
+    from ._core import int_pair, real_array
+    v = real_array(vertices, "project: vertices", "a (V, 3) array")
+    if v.ndim != 2 or v.shape[1] != 3 or not np.all(np.isfinite(v)):
+        raise InputError("project: vertices must be a (V, 3) array of finite numbers, not shape %s" % (v.shape,))
+    w, h = int_pair(size, "project: size must be a pair (width, height), not %r",
+                    "project: size must hold two ints, not %r")
+    scale, fov, distance = _real(scale, "project: scale"), _real(fov, "project: fov"), _real(distance, "project: distance")
+    rot = np.eye(3) if rotation is None else real_array(rotation, "rotation", "a 3x3 matrix")
     if rot.shape != (3, 3):
         raise InputError("rotation must be a 3x3 matrix, not shape %s" % (rot.shape,))
     cam = v @ rot.T
@@ -412,10 +423,19 @@ def vertex_normals(vertices: npt.ArrayLike, faces: npt.ArrayLike) -> npt.NDArray
 def lambert(normals: npt.ArrayLike, light: npt.ArrayLike, ambient: float, color: npt.ArrayLike) -> npt.NDArray[np.int64]:
     """Colours (N, C) uint8 of Lambert shading for unit `normals` (N, 3):
     floor(color * (ambient + (1 - ambient) max(0, n . l)) + 1/2)."""
-    l = np.asarray(light, dtype=np.float64)
+    from ._core import real_array
+    l = real_array(light, "lambert: light", "3 numbers")
+    nrm = real_array(normals, "lambert: normals", "an (N, 3) array")
+    c = real_array(color, "lambert: color", "1-D numbers")
+    ambient = _real(ambient, "lambert: ambient")
+    if l.shape != (3,) or not np.all(np.isfinite(l)) or not np.any(l):
+        raise InputError("lambert: light must be 3 finite numbers, not all 0")
+    if nrm.ndim != 2 or nrm.shape[1] != 3 or not np.all(np.isfinite(nrm)):
+        raise InputError("lambert: normals must be an (N, 3) array of finite numbers, not shape %s" % (nrm.shape,))
+    if c.ndim != 1 or not np.all(np.isfinite(c)):
+        raise InputError("lambert: color must be 1-D finite numbers, not shape %s" % (c.shape,))
     l = l / np.linalg.norm(l)
-    k = ambient + (1 - ambient) * np.clip(np.asarray(normals) @ l, 0, None)
-    c = np.asarray(color, dtype=np.float64)
+    k = ambient + (1 - ambient) * np.clip(nrm @ l, 0, None)
     return np.floor(k[:, None] * c[None, :] + 0.5).astype(np.int64)
 
 

@@ -111,6 +111,45 @@ static size_t reference_rle(uint32_t *tog, size_t n, uint32_t total, uint32_t *c
     return m;
 }
 
+/* rast_coco_ring_toggles_in over random windows that tile the positions:
+ * each window's count exact (a capacity one short is refused, nothing
+ * written), every toggle inside its window, and the windows together the
+ * whole call's toggles (got_tog[0..n), as sorted multisets). */
+static uint32_t win_tog[MAXTOG], all_tog[MAXTOG];
+
+static void windows(const rast_point *p, int k, int h, int w, size_t n)
+{
+    uint64_t first = 0, top = (uint64_t)h * (uint64_t)(w ? w : 300) + (uint64_t)h + 1;
+    size_t at = 0, got, i;
+    while (first < top) {
+        uint64_t end = first + 1 + rng() % (rng() % 2 ? 3u : (uint32_t)(top / 4 + 1));
+        if (rng() % 16 == 0) end = first + ((uint64_t)1 << 40); /* a huge window */
+        got = 0;
+        CHECK(rast_coco_ring_toggles_in(p, (uint32_t)k, h, w, first, end, win_tog, MAXTOG, &got) == RAST_OK);
+        if (got) {
+            size_t again = 0;
+            win_tog[got - 1] = 0xDEADBEEFu;
+            CHECK(rast_coco_ring_toggles_in(p, (uint32_t)k, h, w, first, end, win_tog, got - 1, &again) ==
+                      RAST_E_SCRATCH &&
+                  again == got && win_tog[got - 1] == 0xDEADBEEFu);
+            CHECK(rast_coco_ring_toggles_in(p, (uint32_t)k, h, w, first, end, win_tog, got, &again) == RAST_OK);
+        }
+        for (i = 0; i < got && at < MAXTOG; i++) {
+            /* positions are below 2^32 here: no wrap to undo */
+            CHECK(win_tog[i] >= first && win_tog[i] < end);
+            all_tog[at++] = win_tog[i];
+        }
+        first = end;
+    }
+    CHECK(rast_coco_ring_toggles_in(p, (uint32_t)k, h, w, 5, 5, NULL, 0, &got) == RAST_OK && got == 0);
+    CHECK(at == n);
+    if (at != n) return;
+    memcpy(win_tog, got_tog, n * sizeof *win_tog);
+    qsort(win_tog, n, sizeof *win_tog, cmp_u32);
+    qsort(all_tog, n, sizeof *all_tog, cmp_u32);
+    CHECK(memcmp(win_tog, all_tog, n * sizeof *win_tog) == 0);
+}
+
 static void one_ring(int range, int h, int w)
 {
     rast_point p[MAXPTS];
@@ -127,6 +166,7 @@ static void one_ring(int range, int h, int w)
     CHECK(rast_coco_ring_toggles(p, (uint32_t)k, h, w, got_tog, MAXTOG, &ngot) == RAST_OK);
     CHECK(ngot == (size_t)nref);
     if (ngot != (size_t)nref) return;
+    windows(p, k, h, w, ngot);
     mref = reference_rle(ref_tog, ngot, (uint32_t)(h * w), ref_cnt);
     CHECK(rast_coco_rle(got_tog, ngot, (uint32_t)(h * w), work, got_cnt, &mgot) == RAST_OK);
     CHECK(mgot == mref && memcmp(got_cnt, ref_cnt, mref * sizeof *ref_cnt) == 0);

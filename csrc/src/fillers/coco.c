@@ -200,10 +200,77 @@ static void coco_columns(int64_t lo, int64_t hi, int32_t width, int64_t *c0, int
     if (*c1 < *c0) *c1 = *c0;
 }
 
-rast_status rast_coco_ring_toggles(const rast_point *points, uint32_t npoints, int32_t height,
-                                   int32_t width, uint32_t *toggles, size_t capacity,
-                                   size_t *count)
+/* One edge as the walk sees it: x-major (`xmajor`) from (xs, ys) with
+ * minor difference `delta` over `d` steps, or y-major likewise; toggles in
+ * columns [c0, c1). */
+typedef struct coco_edge {
+    int xmajor;
+    int64_t xs, ys, delta, d, c0, c1;
+} coco_edge;
+
+/* The edge from a to b; 0 when it makes no toggle (dx = dy = 0). */
+static int coco_edge_of(rast_point a, rast_point b, int32_t width, coco_edge *e)
 {
+    int64_t dx = (int64_t)b.x - a.x, dy = (int64_t)b.y - a.y;
+    int64_t adx = dx < 0 ? -dx : dx, ady = dy < 0 ? -dy : dy;
+    e->xmajor = adx >= ady;
+    if (e->xmajor) {
+        /* x-major: from the smaller x */
+        if (!adx) return 0;
+        e->xs = dx >= 0 ? a.x : b.x;
+        e->ys = dx >= 0 ? a.y : b.y;
+        e->delta = dx >= 0 ? dy : -dy;
+        e->d = adx;
+        coco_columns(e->xs, e->xs + adx, width, &e->c0, &e->c1);
+    } else {
+        /* y-major: from the smaller y */
+        int64_t lo, hi;
+        e->xs = dy >= 0 ? a.x : b.x;
+        e->ys = dy >= 0 ? a.y : b.y;
+        e->delta = dy >= 0 ? dx : -dx;
+        e->d = ady;
+        lo = e->delta < 0 ? e->xs + e->delta : e->xs;
+        hi = e->delta < 0 ? e->xs : e->xs + e->delta;
+        coco_columns(lo, hi, width, &e->c0, &e->c1);
+    }
+    return e->c1 > e->c0;
+}
+
+/* The toggle's row in column c (c0 <= c < c1). */
+static uint32_t coco_edge_row(const coco_edge *e, int64_t c, int32_t height)
+{
+    if (e->xmajor) {
+        /* v = minor at t and t + 1 */
+        int64_t t = 5 * c + 2 - e->xs, v0 = coco_minor(e->ys, e->delta, e->d, t),
+                v1 = coco_minor(e->ys, e->delta, e->d, t + 1);
+        return coco_toggle_row(v0 < v1 ? v0 : v1, height);
+    } else {
+        /* u = minor(t) moves by at most one per step, monotonically; find
+         * the step (t, t + 1) where it passes between 5c + 2 and 5c + 3 */
+        int64_t xs = e->xs, delta = e->delta, d = e->d;
+        int64_t u = 5 * c + 3, k = 2 * d * (u - xs) - d, t;
+        /* exact minor(t) >= u  iff  2 delta t >= k */
+        if (delta > 0) {
+            t = rast__ceildiv(k, 2 * delta); /* first t with exact >= u */
+            if (2 * delta * t == k && coco_minor(xs, delta, d, t) < u) t++;
+        } else {
+            /* first t with exact minor(t) < u: 2 delta t < k */
+            int64_t f = -delta;
+            t = rast__floordiv(-k, 2 * f) + 1;
+            if (-k == 2 * f * (t - 1) && coco_minor(xs, delta, d, t - 1) < u) t--;
+        }
+        return coco_toggle_row(e->ys + t - 1, height);
+    }
+}
+
+rast_status rast_coco_ring_toggles_in(const rast_point *points, uint32_t npoints, int32_t height,
+                                      int32_t width, uint64_t first, uint64_t end, uint32_t *toggles,
+                                      size_t capacity, size_t *count)
+{
+    /* columns beyond any the walk reaches (|X| < 2^23: c < 2^21) */
+    const uint64_t far = (uint64_t)1 << 40;
+    uint64_t h = (uint64_t)(height < 0 ? 0 : height);
+    int64_t ca, cb; /* columns that can hold a position in [first, end) */
     uint32_t j;
     size_t n = 0;
     int pass;
@@ -215,55 +282,72 @@ rast_status rast_coco_ring_toggles(const rast_point *points, uint32_t npoints, i
         if (points[j].x < -RAST_COCO_COORD_MAX || points[j].x > RAST_COCO_COORD_MAX ||
             points[j].y < -RAST_COCO_COORD_MAX || points[j].y > RAST_COCO_COORD_MAX)
             return RAST_E_RANGE;
+    if (end <= first) {
+        ca = cb = 0;
+    } else if (!h) {
+        /* every position is 0 */
+        ca = 0;
+        cb = first ? 0 : (int64_t)far;
+    } else {
+        /* column c holds positions c h .. c h + h: the ones past ca and
+         * before cb - 1 lie wholly inside [first, end) */
+        uint64_t a = first / h + (first % h != 0), b = (end - 1) / h + 1;
+        ca = (int64_t)(a > far ? far : a) - 1;
+        cb = (int64_t)(b > far ? far : b);
+    }
     /* Pass 0 counts, pass 1 writes (when they fit). */
     for (pass = 0; pass < 2; pass++) {
         for (j = 0; j < npoints; j++) {
-            rast_point a = points[j], b = points[j + 1 < npoints ? j + 1 : 0];
-            int64_t dx = (int64_t)b.x - a.x, dy = (int64_t)b.y - a.y, c, c0, c1;
-            int64_t adx = dx < 0 ? -dx : dx, ady = dy < 0 ? -dy : dy;
-            if (adx >= ady) {
-                /* x-major: from the smaller x; v = minor at t and t + 1 */
-                int64_t xs = dx >= 0 ? a.x : b.x, ys = dx >= 0 ? a.y : b.y;
-                int64_t delta = dx >= 0 ? dy : -dy;
-                if (!adx) continue;
-                coco_columns(xs, xs + adx, width, &c0, &c1);
-                if (!pass) {
-                    n += (size_t)(c1 - c0);
-                    continue;
+            coco_edge e;
+            int64_t c, lo, hi;
+            if (!coco_edge_of(points[j], points[j + 1 < npoints ? j + 1 : 0], width, &e)) continue;
+            lo = e.c0 > ca ? e.c0 : ca;
+            hi = e.c1 < cb ? e.c1 : cb;
+            if (lo >= hi) continue;
+            if (!pass) {
+                /* the columns at the ends may hold their toggle outside */
+                n += (size_t)(hi - lo);
+                for (c = lo; c < hi; c = c == lo && hi - 1 > lo ? hi - 1 : hi) {
+                    uint64_t pos;
+                    if (c != ca && c != cb - 1) continue;
+                    pos = (uint64_t)c * h + coco_edge_row(&e, c, height);
+                    if (pos < first || pos >= end) n--;
                 }
-                for (c = c0; c < c1; c++) {
-                    int64_t t = 5 * c + 2 - xs, v0 = coco_minor(ys, delta, adx, t),
-                            v1 = coco_minor(ys, delta, adx, t + 1);
-                    toggles[n++] = (uint32_t)c * (uint32_t)height +
-                                   coco_toggle_row(v0 < v1 ? v0 : v1, height);
-                }
-            } else {
-                /* y-major: from the smaller y; u = minor(t) moves by at most
-                 * one per step, monotonically; find the step (t, t + 1)
-                 * where it passes between 5c + 2 and 5c + 3 */
-                int64_t xs = dy >= 0 ? a.x : b.x, ys = dy >= 0 ? a.y : b.y;
-                int64_t delta = dy >= 0 ? dx : -dx, d = ady, lo, hi;
-                lo = delta < 0 ? xs + delta : xs;
-                hi = delta < 0 ? xs : xs + delta;
-                coco_columns(lo, hi, width, &c0, &c1);
-                if (!pass) {
-                    n += (size_t)(c1 - c0);
-                    continue;
-                }
-                for (c = c0; c < c1; c++) {
-                    int64_t u = 5 * c + 3, k = 2 * d * (u - xs) - d, t;
-                    /* exact minor(t) >= u  iff  2 delta t >= k */
-                    if (delta > 0) {
-                        t = rast__ceildiv(k, 2 * delta); /* first t with exact >= u */
-                        if (2 * delta * t == k && coco_minor(xs, delta, d, t) < u) t++;
-                    } else {
-                        /* first t with exact minor(t) < u: 2 delta t < k */
-                        int64_t e = -delta;
-                        t = rast__floordiv(-k, 2 * e) + 1;
-                        if (-k == 2 * e * (t - 1) && coco_minor(xs, delta, d, t - 1) < u) t--;
+                continue;
+            }
+            if (e.xmajor) {
+                /* coco_edge_row stepped: t = 5c + 2 - xs grows by 5 a
+                 * column, the numerators 2 delta t + d (at t and t + 1) by
+                 * 10 delta; quotients and remainders by 2d kept without a
+                 * division (a remainder of 0 is a tie, taken exactly) */
+                int64_t d2 = 2 * e.d, t = 5 * lo + 2 - e.xs, q0, r0, q1, r1, a, b;
+                rast__floordivmod(2 * e.delta * t + e.d, d2, &q0, &r0);
+                rast__floordivmod(2 * e.delta * (t + 1) + e.d, d2, &q1, &r1);
+                rast__floordivmod(10 * e.delta, d2, &a, &b);
+                for (c = lo; c < hi; c++, t += 5) {
+                    int64_t v0 = r0 ? e.ys + q0 : rast__coco_tie(e.ys, e.delta, e.d, t);
+                    int64_t v1 = r1 ? e.ys + q1 : rast__coco_tie(e.ys, e.delta, e.d, t + 1);
+                    uint64_t pos = (uint64_t)c * h + coco_toggle_row(v0 < v1 ? v0 : v1, height);
+                    if (pos >= first && pos < end) toggles[n++] = (uint32_t)pos;
+                    q0 += a;
+                    r0 += b;
+                    if (r0 >= d2) {
+                        r0 -= d2;
+                        q0++;
                     }
-                    toggles[n++] = (uint32_t)c * (uint32_t)height + coco_toggle_row(ys + t - 1, height);
+                    q1 += a;
+                    r1 += b;
+                    if (r1 >= d2) {
+                        r1 -= d2;
+                        q1++;
+                    }
                 }
+                continue;
+            }
+            for (c = lo; c < hi; c++) {
+                uint64_t pos = (uint64_t)c * h + coco_edge_row(&e, c, height);
+                /* pycocotools' uint32 position (it wraps when width is 0) */
+                if (pos >= first && pos < end) toggles[n++] = (uint32_t)pos;
             }
         }
         if (!pass) {
@@ -274,6 +358,14 @@ rast_status rast_coco_ring_toggles(const rast_point *points, uint32_t npoints, i
         }
     }
     return RAST_OK;
+}
+
+rast_status rast_coco_ring_toggles(const rast_point *points, uint32_t npoints, int32_t height,
+                                   int32_t width, uint32_t *toggles, size_t capacity,
+                                   size_t *count)
+{
+    return rast_coco_ring_toggles_in(points, npoints, height, width, 0, ~(uint64_t)0, toggles,
+                                     capacity, count);
 }
 
 /* Insertion sort: a few toggles. */

@@ -41,7 +41,8 @@
  * them all take the last sum's level (one fill).
  */
 #include "coverage.h"
-#include "../fillers/poly.h" /* rast__ctz64 */
+#include "cells.h"
+#include "../base/bits.h" /* rast__ctz64 */
 #if defined(__SSE2__) && !defined(RAST_NO_SIMD)
 #include <emmintrin.h> /* (integer vectors only: every x86-64 has them) */
 #define RAST__ACC_SSE2 1
@@ -1134,26 +1135,6 @@ int rast__cov_acc_area_row(rast__cedge *e, const int32_t *row, int32_t nrow, con
                        ed->qb, ed->qtb, ed->dir, 1);
     }
     return rast__acc_emit(&a, 1, o, j, rule, m, rast__acc_win((uint64_t)nrow, m), e, row, nrow);
-}
-
-void rast__cov_radix_sort(int32_t *ix, int32_t *tmp, const int32_t *key, uint32_t n)
-{
-    uint32_t cnt[256], i, d, sh, top = 0;
-    for (i = 0; i < n; i++) top |= (uint32_t)key[ix[i]];
-    for (sh = 0; sh < 32 && (top >> sh); sh += 8) {
-        int32_t *t;
-        uint32_t sum = 0;
-        for (d = 0; d < 256; d++) cnt[d] = 0;
-        for (i = 0; i < n; i++) cnt[((uint32_t)key[ix[i]] >> sh) & 0xFF]++;
-        for (d = 0; d < 256; d++) {
-            uint32_t c = cnt[d];
-            cnt[d] = sum;
-            sum += c;
-        }
-        for (i = 0; i < n; i++) tmp[cnt[((uint32_t)key[ix[i]] >> sh) & 0xFF]++] = ix[i];
-        t = ix;
-        for (i = 0; i < n; i++) t[i] = tmp[i];
-    }
 }
 
 int rast__cov_acc_may(const rast__cov_out *o, int32_t s)

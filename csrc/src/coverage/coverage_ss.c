@@ -19,8 +19,8 @@
  * rast__ss_flush_dense.)
  */
 #include "coverage.h"
-#include "../fillers/aet.h"
-#include "../fillers/poly.h"
+#include "../base/aet.h"
+#include "../base/bits.h"
 
 typedef struct rast__ss {
     const rast__cov_out *o;

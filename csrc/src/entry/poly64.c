@@ -32,7 +32,7 @@
  * once more (then drops it): |x + step + 1| < 2^30.  An edge with one
  * visible row never steps into another, and its step and dr are set to 0.
  */
-#include "../fillers/aet.h"
+#include "../base/aet.h"
 #include "../painters/paint.h"
 #include "../base/wide.h"
 

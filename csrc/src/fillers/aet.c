@@ -1,6 +1,6 @@
 /*
  * aet.c - the active edge table filler (seed 001, section 3.4); the walk
- * itself is in aet.h.
+ * itself is in base/aet.h.
  *
  * (How the walk works, and how a row's new edges join the AET in
  * O(k log k + n): aet.h.)
@@ -8,7 +8,7 @@
  * Scratch: the edge table and the AET (an edge record each) and one bucket
  * per visible row (where its run of the table ends).
  */
-#include "aet.h"
+#include "../base/aet.h"
 
 /* The edge record's size is part of the scratch contract in rastrum.h. */
 typedef char rast__aet_edge_size_check[sizeof(rast__edge) == RAST_AET_EDGE_BYTES ? 1 : -1];

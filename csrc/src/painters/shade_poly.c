@@ -23,7 +23,7 @@
  * numerator grows by T = unit dl E (|T| < 2^113), less than 256 D: the
  * quotient and remainder (in [0, D)) are stepped, as the rectangle's.
  */
-#include "../fillers/aet.h"
+#include "../base/aet.h"
 #include "shade_run.h"
 #include "../base/wide.h"
 

@@ -1,7 +1,8 @@
 /*
  * aet.h - the active edge table walk (seed 001, section 3.4), shared by
- * the AET filler (aet.c) and the colour-interpolating polygon fill
- * (shade_poly.c).  Static inline so that each user's span function is
+ * the AET filler (fillers/aet.c), the colour-interpolating polygon fill
+ * (painters/shade_poly.c), supersampling (coverage/coverage_ss.c) and
+ * the 64-bit polygon fill (entry/poly64.c): in base/, below all of them.  Static inline so that each user's span function is
  * inlined into its own copy of the loop: the plain fill pays no call per
  * span.  Not installed.
  *
@@ -25,7 +26,7 @@
 #ifndef RAST_AET_H
 #define RAST_AET_H
 
-#include "../base/internal.h"
+#include "internal.h"
 
 /* One inside run of row `row`: columns [l->x, r->x) (possibly empty),
  * bounded on the left by the crossing of edge l and on the right by that

@@ -1,0 +1,276 @@
+/*
+ * rows.c - the row machinery of the coverage engines (rows.h): each
+ * edge built from a ring or a triangle, its steps from row to row and
+ * from column to column, the rows the edges reach, the order of edges by
+ * a key, and a finished row handed on to a painter (or a band of rows
+ * cleared).  Moved here from entry/coverage.c, coverage_area.c and
+ * coverage_acc.c unchanged (issue 33: the engines called each other in a
+ * circle, and entry/ defined what they share).
+ */
+#include "rows.h"
+
+/* A stretch of level 255 at least this long goes to a painter's full
+ * entry (a fill: a memset for one-byte pixels) instead of its levels
+ * entry (a blend per pixel); shorter ones stay in their levels run, where
+ * a blend of a few pixels costs less than another call.  The pixels are
+ * the same either way: a blend at 255 writes what a fill writes. */
+#define RAST__COV_FULL_MIN 16
+
+void rast__cov_row_done(const rast__cov_out *o, int32_t y)
+{
+    const unsigned char *row = o->base;
+    const rast__painter *p = o->paint;
+    int32_t k = 0, w, x0;
+    unsigned lim;
+    if (!p) return;
+    w = o->clip.x1 - o->clip.x0;
+    x0 = o->clip.x0;
+    /* Each run of levels not 0 to the levels entry; when the painter takes
+     * full runs too, its long stretches of 255 go to the full entry.  One
+     * pass, one test a pixel: levels 1..lim go on (lim 254 when a 255 must
+     * stop the scan, else 255); `start` is the first column not handed on
+     * yet. */
+    lim = p->full ? 254u : 255u;
+    while (k < w) {
+        int32_t start;
+        while (k < w && !row[k]) k++;
+        start = k;
+        for (;;) {
+            int32_t f;
+            while (k < w && (unsigned)row[k] - 1u < lim) k++;
+            if (k == w || row[k] != 255) break; /* a 255 stops it only for a full entry */
+            f = k;
+            while (k < w && row[k] == 255) k++;
+            if (k - f >= RAST__COV_FULL_MIN) {
+                int32_t xs[2];
+                if (f > start) p->levels(p->user, y, x0 + start, x0 + f, row + start);
+                xs[0] = x0 + f;
+                xs[1] = x0 + k;
+                p->full(p->user, y, xs, 1);
+                start = k;
+            }
+        }
+        if (k > start) p->levels(p->user, y, x0 + start, x0 + k, row + start);
+    }
+}
+
+void rast__cov_zero_rows(const rast__cov_out *o, int32_t y0, int32_t y1)
+{
+    static const int32_t size[3] = {1, 2, 8};
+    int32_t y;
+    if (o->paint) return; /* nothing to hand on */
+    for (y = y0; y < y1; y++)
+        memset(rast__cov_row(o, y), 0,
+               (size_t)(o->clip.x1 - o->clip.x0) * (size_t)size[o->format]);
+}
+
+uint32_t rast__cov_edges_polygon(const rast_polygon *poly, rast__cedge *e)
+{
+    uint32_t k, i, base, n = 0;
+    for (k = 0, base = 0; k < poly->nrings; base += poly->ring_sizes[k], k++) {
+        uint32_t size = poly->ring_sizes[k];
+        for (i = 0; i < size; i++) {
+            rast_point a = poly->points[base + i];
+            rast_point b = poly->points[base + (i + 1 == size ? 0 : i + 1)];
+            rast__cedge *ed = &e[n];
+            /* the ring's edges before a and after b horizontal (or empty)? */
+            uint32_t i2 = i + 2; /* (i + 2) mod size, without a division per edge */
+            if (i2 >= size) i2 -= size;
+            if (i2 >= size) i2 -= size;
+            int32_t ha = poly->points[base + (i == 0 ? size - 1 : i - 1)].y == a.y;
+            int32_t hb = poly->points[base + i2].y == b.y;
+            if (a.y == b.y) continue;
+            ed->dir = 1;
+            ed->hz = (ha ? RAST__HZ_TOP : 0) | (hb ? RAST__HZ_BOTTOM : 0);
+            if (hb) { /* the horizontal run after b: its abscissae */
+                uint32_t q = i2;
+                ed->hz |= RAST__HZ_RUN;
+                ed->hx0 = ed->hx1 = b.x;
+                for (;;) {
+                    int32_t x = poly->points[base + q].x;
+                    if (x < ed->hx0) ed->hx0 = x;
+                    if (x > ed->hx1) ed->hx1 = x;
+                    q = q + 1 < size ? q + 1 : 0;
+                    if (poly->points[base + q].y != b.y) break;
+                }
+            }
+            if (a.y > b.y) {
+                rast_point t = a;
+                a = b;
+                b = t;
+                ed->dir = -1;
+                ed->hz = (ed->hz & RAST__HZ_RUN) | (hb ? RAST__HZ_TOP : 0) | (ha ? RAST__HZ_BOTTOM : 0);
+            }
+            ed->xt = a.x;
+            ed->yt = a.y;
+            ed->dx = b.x - a.x;
+            ed->dy = b.y - a.y;
+            n++;
+        }
+    }
+    return n;
+}
+
+/* Triangle k with its vertices in the order that makes its signed area
+ * positive; 0 when it is degenerate (its edges would cancel). */
+int rast__cov_tri(const rast_point *t, rast_point *v)
+{
+    int64_t cross = (int64_t)(t[1].x - t[0].x) * (t[2].y - t[0].y) -
+                    (int64_t)(t[1].y - t[0].y) * (t[2].x - t[0].x);
+    if (cross == 0) return 0;
+    v[0] = t[0];
+    v[1] = cross > 0 ? t[1] : t[2];
+    v[2] = cross > 0 ? t[2] : t[1];
+    return 1;
+}
+
+uint32_t rast__cov_edges_triangles(const rast_point *tris, uint32_t ntris, rast__cedge *e)
+{
+    uint32_t k, n = 0;
+    uint32_t three = 3;
+    for (k = 0; k < ntris; k++) {
+        rast_point v[3];
+        rast_polygon p;
+        if (!rast__cov_tri(&tris[3 * k], v)) continue;
+        p.points = v;
+        p.ring_sizes = &three;
+        p.nrings = 1;
+        n += rast__cov_edges_polygon(&p, e + n);
+    }
+    return n;
+}
+
+/* The per-row and per-column steps of e (see rast__cedge). */
+/* floor(n 2^60 / d) into *q, the remainder into *rem, for 0 <= n, 0 < d,
+ * both < 2^28: two 64-bit divisions (n 2^30 < 2^58, and the first
+ * remainder times 2^30 < 2^58); *q30, *rem30: floor(n 2^30 / d) and its
+ * remainder on the way. */
+static void rast__cov_step60(uint64_t n, uint64_t d, rast__i128 *q, uint64_t *rem, uint64_t *q30,
+                             uint64_t *rem30)
+{
+    const uint64_t a = n << 30, r = (a % d) << 30;
+    *q30 = a / d;
+    *rem30 = a % d;
+    *q = rast__i128_add(rast__i128_shl(rast__i128_u64(*q30), 30), rast__i128_u64(r / d));
+    *rem = r % d;
+}
+
+/* e's steps for the exact way (2^-60 pixel): per row, xs + xsr/dy; per
+ * column, ts + tsr/|dx|; its caches unset.  The column step of the quick
+ * way (2^-30 pixel) comes with it: dy 2^30 / |dx| into *q30, *r30 (0 for
+ * a vertical edge). */
+static void rast__cov_steps_exact(rast__cedge *e, uint64_t *q30, uint64_t *r30)
+{
+    uint64_t adx = (uint64_t)(e->dx < 0 ? -(int64_t)e->dx : e->dx), rem;
+    rast__i128 q;
+    rast__cov_step60(adx, (uint64_t)e->dy, &q, &rem, q30, r30);
+    if (e->dx >= 0) {
+        e->xs = q;
+        e->xsr = (int64_t)rem;
+    } else if (rem) {
+        e->xs = rast__i128_neg(rast__i128_add(q, rast__i128_u64(1)));
+        e->xsr = e->dy - (int64_t)rem;
+    } else {
+        e->xs = rast__i128_neg(q);
+        e->xsr = 0;
+    }
+    e->ts = rast__i128_u64(0);
+    e->tsr = 0;
+    *q30 = *r30 = 0;
+    if (adx) { /* the column steps: dy 2^60 / |dx|, and dy 2^30 / |dx| */
+        rast__cov_step60((uint64_t)e->dy, adx, &e->ts, &rem, q30, r30);
+        e->tsr = (uint32_t)rem;
+    }
+    e->rowx = INT32_MIN;
+    e->cX = INT64_MIN;
+    e->crow = INT32_MIN;
+    e->cn = -1;
+}
+
+/* e's steps for the quick way (2^-30 pixel), the column step q30, r30
+ * given: per row, dx 2^30 / dy (|dx| <= 2^28); its steppers unset. */
+static void rast__cov_steps_quick(rast__cedge *e, uint64_t q30, uint64_t r30)
+{
+    int64_t qq, rr;
+    e->qts = (int64_t)q30;
+    e->qtsr = (uint32_t)r30;
+    rast__floordivmod((int64_t)e->dx * ((int64_t)1 << 30), e->dy, &qq, &rr);
+    e->qxs = qq;
+    e->qxsr = (uint32_t)rr;
+    e->qrow = INT32_MIN;
+    e->qX = INT64_MIN;
+}
+
+static void rast__cov_steps(rast__cedge *e)
+{
+    uint64_t q30, r30;
+    rast__cov_steps_exact(e, &q30, &r30);
+    rast__cov_steps_quick(e, q30, r30);
+}
+
+void rast__cov_exact_steps(rast__cedge *e, uint32_t n)
+{
+    uint64_t q30, r30;
+    uint32_t i;
+    for (i = 0; i < n; i++) rast__cov_steps_exact(&e[i], &q30, &r30);
+}
+
+void rast__cov_qtop_set(rast__cedge *e, int32_t j, int32_t p, int32_t hq)
+{
+    const int64_t d = (int64_t)j * p - e->yt;
+    int64_t q, r, q2, r2;
+    if (d >= 0 && d <= p) { /* (an edge's first row top: |dx d 2^HQ| <= 2^58, one division) */
+        rast__floordivmod((int64_t)e->dx * d * ((int64_t)1 << hq), e->dy, &q2, &r2);
+        e->qx = (int64_t)e->xt * ((int64_t)1 << hq) + q2;
+    } else {
+        rast__floordivmod((int64_t)e->dx * d, e->dy, &q, &r);
+        rast__floordivmod(r * ((int64_t)1 << hq), e->dy, &q2, &r2);
+        e->qx = ((int64_t)e->xt + q) * ((int64_t)1 << hq) + q2;
+    }
+    e->qxr = (uint32_t)r2;
+    e->qrow = j;
+}
+
+void rast__cov_rows(rast__cedge *e, uint32_t n, int32_t p, int32_t *order, const rast__cov_out *o,
+                    int32_t *ja, int32_t *jb, int quick)
+{
+    int64_t ymin = e[0].yt, ymax = (int64_t)e[0].yt + e[0].dy;
+    uint32_t i;
+    for (i = 0; i < n; i++) {
+        order[i] = (int32_t)i;
+        if (quick) { /* the column step by one division, not with the exact ones */
+            const uint64_t adx = (uint64_t)(e[i].dx < 0 ? -(int64_t)e[i].dx : e[i].dx);
+            const uint64_t a = (uint64_t)e[i].dy << 30;
+            rast__cov_steps_quick(&e[i], adx ? a / adx : 0, adx ? a % adx : 0);
+        } else {
+            rast__cov_steps(&e[i]);
+        }
+        if (e[i].yt < ymin) ymin = e[i].yt;
+        if ((int64_t)e[i].yt + e[i].dy > ymax) ymax = (int64_t)e[i].yt + e[i].dy;
+    }
+    /* Rows whose strip the edges reach: floor(ymin / P) .. ceil(ymax / P). */
+    ymin = rast__floordiv(ymin, p);
+    ymax = rast__ceildiv(ymax, p);
+    *ja = ymin > o->clip.y0 ? (int32_t)(ymin < o->clip.y1 ? ymin : o->clip.y1) : o->clip.y0;
+    *jb = ymax < o->clip.y1 ? (int32_t)(ymax > *ja ? ymax : *ja) : o->clip.y1;
+}
+
+void rast__cov_radix_sort(int32_t *ix, int32_t *tmp, const int32_t *key, uint32_t n)
+{
+    uint32_t cnt[256], i, d, sh, top = 0;
+    for (i = 0; i < n; i++) top |= (uint32_t)key[ix[i]];
+    for (sh = 0; sh < 32 && (top >> sh); sh += 8) {
+        int32_t *t;
+        uint32_t sum = 0;
+        for (d = 0; d < 256; d++) cnt[d] = 0;
+        for (i = 0; i < n; i++) cnt[((uint32_t)key[ix[i]] >> sh) & 0xFF]++;
+        for (d = 0; d < 256; d++) {
+            uint32_t c = cnt[d];
+            cnt[d] = sum;
+            sum += c;
+        }
+        for (i = 0; i < n; i++) tmp[cnt[((uint32_t)key[ix[i]] >> sh) & 0xFF]++] = ix[i];
+        t = ix;
+        for (i = 0; i < n; i++) t[i] = tmp[i];
+    }
+}

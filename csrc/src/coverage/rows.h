@@ -1,0 +1,288 @@
+/*
+ * rows.h - the row machinery every coverage engine shares (rows.c): the
+ * units of the area sweep, 128-bit helpers, the edges with their row and
+ * column steppers, the rows the edges reach, and where a row's values go
+ * (rast__cov_out: an array, or a painter handed each row's runs).  Below
+ * the engines (cells.c, coverage_acc.c, coverage_area.c, coverage_ss.c,
+ * coverage_plain.c), which call it and never each other upwards
+ * (docs/architecture.md).  Not installed.
+ *
+ * Units of the area sweep.  Vertices are in fixed units of 1/P pixel,
+ * P = 2^S.  Inside a pixel row j (the strip j <= y < j + 1 pixels), an
+ * ordinate is t, in units U = 2^-G pixel from the row's top (0 <= t <= T =
+ * 2^G); an abscissa is in units V = 2^-G pixel from x = 0, a signed 128-bit
+ * integer (|x| < 2^88).  G = 60, so that a product of a fraction of a
+ * pixel in V (< 2^61 for a sum of two) and a height in U (<= 2^60) fits
+ * 128 bits.  Fixed units become U and V by a shift of H = G - S bits.
+ */
+#ifndef RAST_COV_ROWS_H
+#define RAST_COV_ROWS_H
+
+#include "../base/internal.h"
+#include "../base/wide.h"
+
+#define RAST__COV_G 60
+
+/* ---- 128-bit helpers (on wide.h's two's-complement rast__i128) --------- */
+
+static inline rast__i128 rast__i128_sub(rast__i128 a, rast__i128 b)
+{
+    return rast__i128_add(a, rast__i128_neg(b));
+}
+
+/* -1, 0 or 1 as a < b, a == b, a > b (signed). */
+static inline int rast__i128_cmp(rast__i128 a, rast__i128 b)
+{
+    if (a.hi != b.hi) return (int64_t)a.hi < (int64_t)b.hi ? -1 : 1;
+    if (a.lo != b.lo) return a.lo < b.lo ? -1 : 1;
+    return 0;
+}
+
+static inline int rast__i128_neg_p(rast__i128 a)
+{
+    return (int)(a.hi >> 63);
+}
+
+/* floor(a / 2^n), 0 < n < 64 (an arithmetic shift written without one:
+ * C99 leaves >> of a negative value to the implementation). */
+static inline rast__i128 rast__i128_sar(rast__i128 a, int32_t n)
+{
+    rast__i128 r;
+    uint64_t fill = (a.hi >> 63) ? ~(~(uint64_t)0 >> n) : 0;
+    r.lo = (a.lo >> n) | (a.hi << (64 - n));
+    r.hi = (a.hi >> n) | fill;
+    return r;
+}
+
+/* a * b for a >= 0 (the caller keeps it below 2^127) and b < 2^32. */
+static inline rast__i128 rast__u128_mul32(rast__i128 a, uint32_t b)
+{
+    const uint64_t m = 0xFFFFFFFFu;
+    uint64_t p0 = (a.lo & m) * b, p1 = (a.lo >> 32) * b + (p0 >> 32);
+    rast__i128 r;
+    r.lo = (p0 & m) | (p1 << 32);
+    r.hi = a.hi * b + (p1 >> 32);
+    return r;
+}
+
+/* floor(a / d) for a >= 0 and 0 < d < 2^32; *rem = a mod d.  Four 64-bit
+ * divisions of 32-bit limbs (no 128-bit divide: firmware has none). */
+static inline rast__i128 rast__u128_div32(rast__i128 a, uint32_t d, uint32_t *rem)
+{
+    const uint64_t m = 0xFFFFFFFFu;
+    uint64_t limb[4], q[4], r = 0;
+    int k;
+    rast__i128 out;
+    limb[0] = a.hi >> 32;
+    limb[1] = a.hi & m;
+    limb[2] = a.lo >> 32;
+    limb[3] = a.lo & m;
+    for (k = 0; k < 4; k++) {
+        uint64_t cur = (r << 32) | limb[k];
+        q[k] = cur / d;
+        r = cur % d;
+    }
+    out.hi = (q[0] << 32) | q[1];
+    out.lo = (q[2] << 32) | q[3];
+    *rem = (uint32_t)r;
+    return out;
+}
+
+static inline rast__i128 rast__i128_u64(uint64_t v)
+{
+    rast__i128 r;
+    r.hi = 0;
+    r.lo = v;
+    return r;
+}
+
+/* ---- edges -------------------------------------------------------------- */
+
+/* A non-horizontal edge, top end first (dy > 0), fixed units; `dir` the
+ * direction of the original edge (+1 down).  The sweep caches the edge's
+ * abscissa at the ordinate t it is at (x, r: the exact abscissa is
+ * x + r/dy in V units, 0 <= r < dy) and at the end of the current piece
+ * (xn, rn). */
+typedef struct rast__cedge {
+    /* what every row reads, together (the first three cache lines) */
+    rast__i128 x, xn;
+    int64_t r, rn;
+    uint64_t tx;  /* the t of x, r in row `rowx` */
+    int32_t rowx; /* see tx; INT32_MIN: not cached */
+    int32_t xt, yt, dx, dy, dir;
+    /* RAST__HZ_TOP, RAST__HZ_BOTTOM: that end is also an end of a
+     * horizontal (or empty) edge of its ring; RAST__HZ_RUN: the ring's
+     * horizontal edges right after this edge (its original end) span the
+     * abscissae [hx0, hx1] (simple rows, coverage_acc.c) */
+    int32_t hz, hx0, hx1;
+    /* the quick column stepper (coverage_area.c, 2^-30 pixel units): at
+     * vertical qX, t from the top = qt + qtr/|dx|; per column qts + qtsr/|dx| */
+    int64_t qt, qX, qts;
+    uint32_t qtr, qtsr;
+    /* the quick row stepper (coverage_area.c, 2^-30 pixel units): the
+     * exact abscissa at the top of row qrow is qx + qxr/dy; it grows by
+     * qxs + qxsr/dy from a row's top to the next */
+    int64_t qx, qxs;
+    uint32_t qxr, qxsr;
+    int32_t qrow; /* INT32_MIN: not set */
+    /* a fast row's part, quick units: from qa + qar/dy at ordinate qta to
+     * qb + qbr/dy at qtb (2^-30 pixel from the row's top); its abscissae
+     * in [qlo, qhi) */
+    int64_t qa, qb, qlo, qhi;
+    uint64_t qta, qtb;
+    uint32_t qar, qbr;
+    rast__i128 xs; /* x grows by xs + xsr/dy from a row's top to the next */
+    int64_t xsr;
+    /* the column stepper (cells) */
+    rast__i128 ts; /* t grows by ts + tsr/|dx| from a column to the next */
+    rast__i128 ct; /* the column stepper left at vertical cX: t (U from the
+                      top) = ct + crem/|dx|; see coverage_area.c */
+    int64_t cX;
+    uint32_t crem, tsr;
+    /* the sweep's */
+    rast__i128 xT; /* the edge's line at the bottom of the row (xT + rT/dy) */
+    int64_t rT;
+    int32_t sg;    /* the sign of its current piece (+1 enters, -1 leaves the inside, 0 neither) */
+    int32_t cn, crow;
+    uint64_t ctime; /* its crossing time with edge cn in row crow (a cache) */
+} rast__cedge;
+
+#define RAST__HZ_TOP 1
+#define RAST__HZ_BOTTOM 2
+#define RAST__HZ_RUN 4
+
+/* The ordinate of the run after e (RAST__HZ_RUN): that of e's original end. */
+static inline int32_t rast__run_y(const rast__cedge *e)
+{
+    return e->dir > 0 ? e->yt + e->dy : e->yt;
+}
+
+/* The edges of a polygon's rings (rule: the caller's) or of a triangle
+ * batch (each triangle turned to one orientation, so that the non-zero
+ * rule gives the union) into e[] (room for every vertex); returns how many
+ * are not horizontal. */
+uint32_t rast__cov_edges_polygon(const rast_polygon *poly, rast__cedge *e);
+uint32_t rast__cov_edges_triangles(const rast_point *tris, uint32_t ntris, rast__cedge *e);
+
+void rast__cov_qtop_set(rast__cedge *e, int32_t j, int32_t p, int32_t hq);
+/* The quick steppers (units Q = 2^-30 pixel; HQ = 30 - S, P = 2^S).  e's
+ * exact abscissa at the top of row j (which e spans: yt <= j P < yt + dy)
+ * is qx + qxr/dy: stepped from the row above by qxs + qxsr/dy, else set
+ * by rast__cov_qtop_set (out of line: once an edge), in one division at
+ * the edge's first row top (dx (jP - yt) 2^HQ <= 2^58), two elsewhere
+ * (dx (jP - yt) < 2^56; the remainder times 2^HQ < 2^58). */
+static inline int64_t rast__cov_qtop(rast__cedge *e, int32_t j, int32_t p, int32_t hq)
+{
+    if (e->qrow == j - 1) {
+        e->qx += e->qxs;
+        e->qxr += e->qxsr;
+        if (e->qxr >= (uint32_t)e->dy) {
+            e->qxr -= (uint32_t)e->dy;
+            e->qx++;
+        }
+        e->qrow = j;
+    } else if (e->qrow != j) {
+        rast__cov_qtop_set(e, j, p, hq); /* (once an edge, out of line) */
+    }
+    return e->qx;
+}
+
+/* e's column stepper at vertical X (which e's x range reaches: |X P - xt|
+ * <= |dx|): t = floor(|X P - xt| dy 2^HQ / |dx|) from e's top, qt + qtr/|dx|,
+ * in two 64-bit divisions (|X P - xt| dy < 2^56, the remainder times 2^HQ <
+ * 2^58), or one when |X P - xt| <= P (the product times 2^HQ <= 2^58). */
+static inline void rast__cov_qt_first(rast__cedge *e, int64_t X, int32_t p, int32_t hq)
+{
+    uint64_t adx = (uint64_t)(e->dx < 0 ? -(int64_t)e->dx : e->dx);
+    int64_t w = X * p - e->xt;
+    uint64_t m = (uint64_t)(w < 0 ? -w : w) * (uint64_t)e->dy, r;
+    if (w >= -p && w <= p) { /* (the first vertical: m 2^HQ <= 2^58, one division) */
+        e->qt = (int64_t)((m << hq) / adx);
+        e->qtr = (uint32_t)((m << hq) % adx);
+    } else {
+        r = (m % adx) << hq;
+        e->qt = (int64_t)(((m / adx) << hq) + r / adx);
+        e->qtr = (uint32_t)(r % adx);
+    }
+    e->qX = X;
+}
+
+/* ---- where the values go ----------------------------------------------- */
+
+typedef struct rast__cov_out {
+    unsigned char *base; /* pixel (clip.x0, clip.y0) */
+    ptrdiff_t stride;
+    rast_coverage_format format;
+    rast_rect clip;
+    /* a painter (rast__cov_paint: the span entry points, the anti-aliased
+     * fills): base is one row of U8 levels (stride 0), handed on by
+     * rast__cov_row_done as levels runs; NULL for an array */
+    const rast__painter *paint;
+} rast__cov_out;
+
+/* Row y is complete: hand its runs of values not 0 to the painter, if
+ * there is one: to its levels entry, except that a stretch of 255 at
+ * least RAST__COV_FULL_MIN long goes to its full entry when it has one
+ * (the same pixels: a blend at 255 writes what a fill writes). */
+void rast__cov_row_done(const rast__cov_out *o, int32_t y);
+
+/* The value stored for coverage a62 / 2^62 (0 <= a62 <= 2^62): a62 itself
+ * (FIX62), or floor((a62 M + 2^61) / 2^62), in 128 bits (a62 M < 2^78). */
+static inline uint64_t rast__cov_level(rast_coverage_format f, uint64_t a62)
+{
+    rast__i128 p;
+    if (f == RAST_COVERAGE_FIX62) return a62;
+    p = rast__i128_mul((int64_t)a62, f == RAST_COVERAGE_U8 ? 255 : 65535);
+    p = rast__i128_add(p, rast__i128_u64((uint64_t)1 << 61));
+    return rast__i128_sar(p, 62).lo;
+}
+
+/* Column k of a clip row gets value v (rast__cov_level's). */
+static inline void rast__cov_store(rast_coverage_format f, unsigned char *row, int32_t k,
+                                   uint64_t v)
+{
+    if (f == RAST_COVERAGE_U8)
+        row[k] = (unsigned char)v;
+    else if (f == RAST_COVERAGE_U16)
+        ((uint16_t *)(void *)row)[k] = (uint16_t)v;
+    else
+        ((uint64_t *)(void *)row)[k] = v;
+}
+
+/* Columns [k0, k1) of a clip row get value v: a memset for uint8 (byte
+ * stores for a run of 8 or fewer, shorter than the call). */
+static inline void rast__cov_fill(rast_coverage_format f, unsigned char *row, int32_t k0, int32_t k1,
+                                  uint64_t v)
+{
+    if (f == RAST_COVERAGE_U8 && k1 - k0 > 8)
+        memset(row + k0, (int)v, (size_t)(k1 - k0));
+    else
+        for (; k0 < k1; k0++) rast__cov_store(f, row, k0, v);
+}
+
+static inline unsigned char *rast__cov_row(const rast__cov_out *o, int32_t y)
+{
+    return o->base + (ptrdiff_t)(y - o->clip.y0) * o->stride;
+}
+
+/* Every pixel of rows [y0, y1) of the clip gets 0. */
+void rast__cov_zero_rows(const rast__cov_out *o, int32_t y0, int32_t y1);
+
+/* ---- the rows the edges reach (rows.c) ---------------------------------- */
+
+/* Triangle t[0..2] with its vertices in the order that makes its signed
+ * area positive into v[0..2]; 0 when it is degenerate (its edges would
+ * cancel). */
+int rast__cov_tri(const rast_point *t, rast_point *v);
+/* Stable radix sort (8 bits a pass, as many passes as the largest key
+ * needs) of the indices ix[0..n) by key[ix[i]], each key's bits read as
+ * unsigned; tmp[0..n) is room.  The result is in ix. */
+void rast__cov_radix_sort(int32_t *ix, int32_t *tmp, const int32_t *key, uint32_t n);
+/* Each edge's steps set (when quick, those of the quick way only: then
+ * rast__cov_exact_steps before an exact row), order[i] = i, and the rows
+ * [*ja, *jb) of the clip the edges' strips reach (n > 0). */
+void rast__cov_rows(rast__cedge *e, uint32_t n, int32_t p, int32_t *order, const rast__cov_out *o,
+                    int32_t *ja, int32_t *jb, int quick);
+void rast__cov_exact_steps(rast__cedge *e, uint32_t n);
+
+#endif /* RAST_COV_ROWS_H */

@@ -72,7 +72,7 @@ ORIGINS = st.sampled_from([(0, 0), (LIM - 8, LIM - 8), (-LIM + 2, -LIM + 2), (LI
                            (123456789, -98765432)])
 
 
-@settings(max_examples=S_.examples(60), deadline=None)
+@settings(max_examples=S_.examples(40), deadline=None)
 @given(st.data(), st.integers(17, 32), ORIGINS, st.sampled_from(["evenodd", "nonzero"]))
 def test_c_entry_matches_exact_area(data, s, origin, rule):
     """The C entry near +-2^28 (window moved there) against exact rationals."""
@@ -124,7 +124,7 @@ def _c_ints(ints, shape, origin, rule, s, fmt):
     return out
 
 
-@settings(max_examples=S_.examples(40), deadline=None)
+@settings(max_examples=S_.examples(25), deadline=None)
 @given(st.data(), st.integers(17, 32), st.sampled_from(["evenodd", "nonzero"]))
 def test_polygon_coverage_switches_to_wide(data, s, rule):
     """polygon_coverage takes S above 16 by itself (float64: the fraction)."""
@@ -140,7 +140,7 @@ def test_polygon_coverage_switches_to_wide(data, s, rule):
     check_levels(u8, exact, 255, n, m, "uint8 S=%d" % s)
 
 
-@settings(max_examples=S_.examples(40), deadline=None)
+@settings(max_examples=S_.examples(30), deadline=None)
 @given(st.data(), st.integers(0, 16), st.sampled_from(["evenodd", "nonzero"]))
 def test_same_as_32bit_path_where_both_apply(data, s, rule):
     """Where S <= 16 and the coordinates fit 32 bits both paths apply; they

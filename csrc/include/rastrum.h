@@ -983,7 +983,7 @@ RAST_API rast_status rast_triangles_coverage_spans(const rast_point *tris, uint3
  * column an edge crosses, a pass over the clip's columns.  Only
  * opts->method RAST_AA_AREA: any other, RAST_E_WIDE.
  *
- * Scratch (rast_coverage64_scratch_size): 168 bytes per vertex and 32 per
+ * Scratch (rast_coverage64_scratch_size): 188 bytes per vertex and 32 per
  * clip column, plus alignment.  Errors, all before anything is written:
  * RAST_E_NULL, RAST_E_WIDE (method), RAST_E_ARG (rule, format, stride),
  * RAST_E_SUBPIXEL, RAST_E_RANGE, RAST_E_TOO_MANY, RAST_E_SIZE (a clip

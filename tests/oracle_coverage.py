@@ -123,13 +123,19 @@ def _one_orientation(tris):
     return out
 
 
-def coverage_exact(rings, shape, *, rule="evenodd", subpixel_bits=8, triangles=False):
+def coverage_exact(rings, shape, *, rule="evenodd", subpixel_bits=8, triangles=False,
+                   origin=(0, 0)):
     """The exact coverage of every pixel: an (H, W) object array of
     Fractions.  With ``triangles``, `rings` is a list of triangles and the
     region is their union (each triangle turned to one orientation, rule
-    non-zero)."""
+    non-zero).  `origin` (integers x0, y0): the window is pixels
+    [x0, x0 + W) x [y0, y0 + H) instead (the vertices are snapped first,
+    then moved by -origin, exactly)."""
     h, w = shape
     rl = oracle.snapped_rings(rings, subpixel_bits)
+    ox, oy = origin
+    if ox or oy:
+        rl = [[(x - ox, y - oy) for x, y in r] for r in rl]
     if triangles:
         rule, rl = "nonzero", _one_orientation(rl)
     edges = _edges(rl)

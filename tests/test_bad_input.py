@@ -79,7 +79,7 @@ class Entry:
                  wide=False):
         self.name, self.kind, self.call = name, kind, call
         self.options, self.canvas, self.color, self.shape = set(options), canvas, color, shape
-        self.wide = wide  # the 64-bit vertex path: S up to 32, +-2**28 pixels
+        self.wide = wide  # the 64-bit vertex path: S up to 32, +-2**28 pixels ("area": method area only)
 
 
 FILL = ("algorithm", "subpixel_bits", "sample_offset", "rounding", "boundary")
@@ -127,7 +127,7 @@ ENTRIES = [
     # coverage (docs/coverage.md); the rule's rows are in tests/test_coverage.py
     Entry("polygon_coverage", "ring",
           lambda c, g, kw: rastrum.polygon_coverage(g[0], kw.pop("shape", SHAPE), **kw),
-          ("method", "subpixel_bits", "sample_offset", "dtype"), shape=True),
+          ("method", "subpixel_bits", "sample_offset", "dtype"), shape=True, wide="area"),
     Entry("triangles_coverage", "tris",
           lambda c, g, kw: rastrum.triangles_coverage(g[0], kw.pop("shape", SHAPE), **kw),
           ("method", "subpixel_bits", "sample_offset", "dtype"), shape=True),
@@ -322,6 +322,13 @@ WIDE_ROWS = {
     "subpixel_bits=17, rounding=textbook": dict(subpixel_bits=17, rounding="textbook"),
 }
 
+# polygon_coverage: "area" takes S up to 32 (rast_polygon_coverage64), the
+# other methods 0..16.
+AREA_WIDE_ROWS = {
+    "subpixel_bits=17, method=ss4": dict(subpixel_bits=17, method="ss4"),
+    "subpixel_bits=20, method=accumulate": dict(subpixel_bits=20, method="accumulate"),
+}
+
 
 def _rows():
     rows = []
@@ -352,9 +359,10 @@ def _rows():
         if e.wide:
             rows.append((e.name, "at the 64-bit range",
                          ("geometry", _set_last(AT_RANGE64), None), ("works",)))
-            for label, kw in WIDE_ROWS.items():
+            for label, kw in (WIDE_ROWS if e.wide is True else AREA_WIDE_ROWS).items():
                 rows.append((e.name, label, ("options", kw),
-                             (RAISE, rastrum.InputError, r"subpixel_bits.*aet")))
+                             (RAISE, rastrum.InputError,
+                              r"subpixel_bits.*aet" if e.wide is True else r"subpixel_bits")))
         for opt in sorted(opts):
             for value, problem in (WIDE_OPTIONS if e.wide else OPTIONS).get(opt, OPTIONS[opt]):
                 rows.append((e.name, "%s=%r" % (opt, value), ("option", opt, value),
@@ -447,7 +455,11 @@ def test_bad_input(row):
             assert not got.any()
     elif expect[0] == "works":  # at the 64-bit range: accepted, and the mask is the oracle's
         got = _run(entry, geometry, kw, canvas)
-        if isinstance(got, np.ndarray):
+        if isinstance(got, np.ndarray) and entry.wide == "area":  # coverage levels, exact rationals
+            import oracle_coverage as oc
+            exact = oc.coverage_exact([np.asarray(geometry[0], float)], SHAPE, subpixel_bits=8)
+            assert np.array_equal(got, np.vectorize(lambda a: oc.level(a, 255))(exact))
+        elif isinstance(got, np.ndarray):
             from oracle import oracle_mask
             assert np.array_equal(got, oracle_mask([np.asarray(geometry[0], float)], SHAPE))
         else:

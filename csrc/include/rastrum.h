@@ -967,6 +967,38 @@ RAST_API rast_status rast_triangles_coverage_spans(const rast_point *tris, uint3
                                                    rast_coverage_span_fn span, void *user,
                                                    void *scratch, size_t scratch_bytes);
 
+/* ---- coverage on 64-bit vertices (coverage64.c) --------------------------
+ * rast_polygon_coverage with RAST_AA_AREA on a rast_polygon64: vertices in
+ * units of 1/2^S pixel, S = opts->subpixel_bits in 0..RAST_MAX_SUBPIXEL_BITS64
+ * (32), every |coordinate| <= RAST_COORD64_MAX(S) (under 2^28 pixels), as
+ * rast_fill_polygon64 takes them.  Both rules, overlaps, self
+ * intersections, coincident edges, holes; the clip, the output layout and
+ * the formats as rast_polygon_coverage (every pixel of `clip` written).
+ * Bound: the value computed, a', satisfies |a' - a| <= (n + m + 1) 2^-50,
+ * n the edges crossing the pixel's row, m the pairs of them crossing
+ * inside it; RAST_COVERAGE_FIX62 is a' rounded to 2^-62, U8/U16
+ * floor(a' M + 1/2) (so floor(a M + 1/2) except within (n + m + 1) 2^-34
+ * of a tie).  Cost: per row, the edges spanning it sorted once per vertex
+ * or crossing inside the row, one 128-bit division per edge end and per
+ * column an edge crosses, a pass over the clip's columns.  Only
+ * opts->method RAST_AA_AREA: any other, RAST_E_WIDE.
+ *
+ * Scratch (rast_coverage64_scratch_size): 188 bytes per vertex and 32 per
+ * clip column, plus alignment.  Errors, all before anything is written:
+ * RAST_E_NULL, RAST_E_WIDE (method), RAST_E_ARG (rule, format, stride),
+ * RAST_E_SUBPIXEL, RAST_E_RANGE, RAST_E_TOO_MANY, RAST_E_SIZE (a clip
+ * coordinate past +-RAST_MAX_DIM), RAST_E_SCRATCH, RAST_E_ALIGN.  An empty
+ * clip writes nothing. */
+RAST_API rast_status rast_coverage64_scratch_size(const rast_coverage_opts *opts,
+                                                  uint32_t npoints, int32_t width,
+                                                  int32_t height, size_t *bytes);
+RAST_API rast_status rast_polygon_coverage64(const rast_polygon64 *polygon,
+                                             const rast_coverage_opts *opts,
+                                             const rast_rect *clip,
+                                             rast_coverage_format format, void *out,
+                                             ptrdiff_t stride, void *scratch,
+                                             size_t scratch_bytes);
+
 /* ---- anti-aliased fills: coverage painted into a target (coverage_paint.c) ---
  * rast_fill_polygon and rast_fill_triangles with coverage instead of the
  * binary rule: each pixel of target->clip whose coverage level

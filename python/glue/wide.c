@@ -101,3 +101,50 @@ long rastpy_mask_polygon64(void *mask, int32_t height, int32_t width, const doub
     if (st != RAST_OK) return st;
     return rastpy_fill_polygon64(&t, xy, npoints, ring_sizes, nrings, opts, &one, &zero);
 }
+
+/* Snap, then rast_polygon_coverage64 (opts->subpixel_bits up to 32, method
+ * area) of a whole (height, width) array of `format`, with scratch from
+ * malloc.  ring_sizes NULL means one ring of all the points.  Returns 0, a
+ * negative rast_status (or RASTPY_E_NOMEM), or k + 1 when point k is bad
+ * (rastpy_snap64). */
+long rastpy_polygon_coverage64(void *out, int32_t height, int32_t width, int format,
+                               const double *xy, uint32_t npoints, const uint32_t *ring_sizes,
+                               uint32_t nrings, const rast_coverage_opts *opts)
+{
+    static const int32_t size[3] = {1, 2, 8};
+    rast_polygon64 poly;
+    rast_rect clip;
+    rast_status st;
+    size_t need;
+    int64_t *pts;
+    void *scratch;
+    long bad;
+    if (!opts) return RAST_E_NULL;
+    if (format < 0 || format > 2) return RAST_E_ARG;
+    st = rast_coverage64_scratch_size(opts, npoints, width, height, &need);
+    if (st != RAST_OK) return st;
+    pts = (int64_t *)malloc((size_t)npoints * sizeof(rast_point64) + 1);
+    if (!pts) return RASTPY_E_NOMEM;
+    bad = rastpy_snap64(xy, npoints, opts->subpixel_bits, pts);
+    if (bad >= 0) {
+        free(pts);
+        return bad + 1;
+    }
+    scratch = malloc(need + 1);
+    if (!scratch) {
+        free(pts);
+        return RASTPY_E_NOMEM;
+    }
+    poly.points = (const rast_point64 *)(const void *)pts;
+    poly.ring_sizes = ring_sizes ? ring_sizes : &npoints;
+    poly.nrings = ring_sizes ? nrings : 1;
+    clip.x0 = 0;
+    clip.y0 = 0;
+    clip.x1 = width;
+    clip.y1 = height;
+    st = rast_polygon_coverage64(&poly, opts, &clip, (rast_coverage_format)format, out,
+                                 (ptrdiff_t)width * size[format], scratch, need);
+    free(scratch);
+    free(pts);
+    return st;
+}

@@ -17,6 +17,9 @@ long rastpy_fill_polygon64(const rast_target *target, const double *xy, uint32_t
 long rastpy_mask_polygon64(void *mask, int32_t height, int32_t width, const double *xy,
                            uint32_t npoints, const uint32_t *ring_sizes, uint32_t nrings,
                            const rast_fill_opts *opts);
+long rastpy_polygon_coverage64(void *out, int32_t height, int32_t width, int format,
+                               const double *xy, uint32_t npoints, const uint32_t *ring_sizes,
+                               uint32_t nrings, const rast_coverage_opts *opts);
 /* cdef-end */
 
 #endif

@@ -62,7 +62,7 @@ def _opts(method, rule, subpixel_bits, sample_offset, entry):
         if opts is None:
             opts = _core.cached_opts("coverage", _make_opts, method, rule, subpixel_bits,
                                      sample_offset, entry)
-            if len(_OPTS) < 256:
+            if len(_OPTS) < 256 and opts.subpixel_bits <= _MAX_S32:  # (S > 16: polygon_coverage only)
                 _OPTS[key] = opts
         return opts
     return _core.cached_opts("coverage", _make_opts, method, rule, subpixel_bits, sample_offset, entry)
@@ -77,7 +77,9 @@ def _make_opts(method, rule, subpixel_bits, sample_offset, entry):
     opts = ffi.new("rast_coverage_opts *")
     opts.method = METHODS[method]
     opts.rule = _core.RULES[_core._name(rule, "rule", _core.RULES)]
-    opts.subpixel_bits = _core._subpixel_bits(subpixel_bits)
+    # polygon_coverage's "area" takes S up to 32 (the 64-bit path below)
+    wide = entry == "polygon_coverage" and method == "area"
+    opts.subpixel_bits = _core._subpixel_bits(subpixel_bits, _MAX_S64 if wide else None)
     opts.sample = _core.sample_code(sample_offset)
     return opts
 
@@ -154,7 +156,7 @@ def _quick(key):
 
 
 def _remember(key, opts, fmt, d):
-    if key is not None and len(_QUICK) < 256:
+    if key is not None and len(_QUICK) < 256 and opts.subpixel_bits <= _MAX_S32:
         try:
             _QUICK[key] = (opts, fmt, _C_DTYPE[fmt], d)
         except TypeError:
@@ -251,13 +253,15 @@ def polygon_coverage(rings: PathRings, shape: Shape, *, rule: Rule = "evenodd", 
         exact binary rule on each), "accumulate" (signed-area accumulation
         as FreeType does it: exact only where nothing overlaps).
     subpixel_bits : int
-        Vertices are snapped to 1/2**subpixel_bits pixel (0..16).
+        Vertices are snapped to 1/2**subpixel_bits pixel (0..16; "area"
+        takes 0..32 and coordinates up to 2**28 pixels, switching by itself
+        to the 64-bit path when S or a coordinate needs it: docs/coverage.md).
     sample_offset : {0.5, 0}
         Where the sub-samples sit (the ssK methods only): (s + 0.5)/k or s/k.
     dtype : uint8, uint16, float32 or float64
         uint8 holds floor(a*255 + 1/2), uint16 floor(a*65535 + 1/2) (see
         docs/coverage.md for the bound on ties); the floats hold a (from a
-        2^-62 fixed point).
+        2^-62 fixed point): the cell's fraction inside.
     tolerance : float or None
         As ``polygon_mask``: a Path's flattening tolerance in pixels.
 
@@ -301,10 +305,58 @@ def polygon_coverage(rings: PathRings, shape: Shape, *, rule: Rule = "evenodd", 
     if not nrings:
         raw[...] = 0
         return _finish(raw, d)
+    if _use_wide(opts, pts):
+        result = lib.rastpy_polygon_coverage64(ffi.from_buffer(raw) if h and w else ffi.NULL, h, w, fmt,
+                                               ffi.from_buffer("double[]", pts), len(pts), sizes, nrings,
+                                               opts)
+        if result:
+            _core._check_glue(result, pts, opts.subpixel_bits, "rings",
+                              [len(pts)] if nrings == 1 else sizes, True)
+        return _finish(raw, d)
     result = _lent(lib.rastpy_polygon_coverage, ffi.from_buffer(raw) if h and w else ffi.NULL, h, w, fmt,
                    ffi.from_buffer("double[]", pts), len(pts), sizes, nrings, opts)
     if result:
         _check(result, pts, opts, "rings", [len(pts)] if nrings == 1 else sizes)
+    return _finish(raw, d)
+
+
+# ---- the 64-bit path (docs/coverage.md, "64-bit vertices") ------------------------
+# "area" on rast_polygon64: subpixel_bits up to 32, coordinates up to 2**28
+# pixels.  Taken only when S or a coordinate needs it, as polygon_mask does;
+# where both apply they agree within their bounds (tests/test_coverage64.py).
+_MAX_S32, _MAX_S64 = lib.RAST_MAX_SUBPIXEL_BITS, lib.RAST_MAX_SUBPIXEL_BITS64
+
+
+def _use_wide(opts, pts):
+    """Take rast_polygon_coverage64 for these options and float64 points?"""
+    if opts.method != lib.RAST_AA_AREA:
+        return False
+    if opts.subpixel_bits > _MAX_S32:
+        return True
+    return bool(len(pts)) and bool(lib.rastpy_needs_wide(ffi.from_buffer("double[]", pts), len(pts),
+                                                         opts.subpixel_bits))
+
+
+def polygon_coverage64(rings: PathRings, shape: Shape, *, rule: Rule = "evenodd", subpixel_bits: int = 32,
+                       dtype: npt.DTypeLike = np.float64) -> npt.NDArray[Any]:
+    """``polygon_coverage(method="area")`` always on the 64-bit path (for
+    callers that want it whatever the input: rastrum.rasterize's coverage,
+    tests).  subpixel_bits 0..32, |coordinate| < 2**28 pixels."""
+    if isinstance(rings, Path):
+        rings = rings.flatten(subpixel_bits)
+    opts = _opts("area", rule, subpixel_bits, 0.5, "polygon_coverage")
+    d = _dtype(dtype)
+    fmt = _DTYPES[d]
+    h, w = _core.shape2(shape)
+    pts, sizes, nrings = _points(rings)
+    raw = np.empty((h, w), _C_DTYPE[fmt])
+    if not nrings:
+        raw[...] = 0
+        return _finish(raw, d)
+    result = lib.rastpy_polygon_coverage64(ffi.from_buffer(raw) if h and w else ffi.NULL, h, w, fmt,
+                                           ffi.from_buffer("double[]", pts), len(pts), sizes, nrings, opts)
+    if result:
+        _core._check_glue(result, pts, opts.subpixel_bits, "rings", [len(pts)] if nrings == 1 else sizes, True)
     return _finish(raw, d)
 
 

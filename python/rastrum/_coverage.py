@@ -342,8 +342,7 @@ def polygon_coverage64(rings: PathRings, shape: Shape, *, rule: Rule = "evenodd"
     """``polygon_coverage(method="area")`` always on the 64-bit path (for
     callers that want it whatever the input: rastrum.rasterize's coverage,
     tests).  subpixel_bits 0..32, |coordinate| < 2**28 pixels."""
-    if isinstance(rings, Path):
-        rings = rings.flatten(subpixel_bits)
+    rings = path_rings(rings, subpixel_bits, None)
     opts = _opts("area", rule, subpixel_bits, 0.5, "polygon_coverage")
     d = _dtype(dtype)
     fmt = _DTYPES[d]

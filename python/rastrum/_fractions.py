@@ -48,12 +48,7 @@ def _limits():
             polygon_coverage(np.array([[0.0, 0.0], [1.0, 0.0], [0.0, 1.0]]), (1, 1), method="area",
                              subpixel_bits=s64, dtype=np.float64)
         except InputError:
-            top = lib.RAST_COORD_MAX
-
-            def fits(extent, s):
-                return np.floor(extent * np.exp2(s) + 0.5) <= top
-
-            _LIMITS = (lib.RAST_MAX_SUBPIXEL_BITS, fits)
+            _LIMITS = (lib.RAST_MAX_SUBPIXEL_BITS, _fits32)
         else:
             pix = lib.RAST_COORD64_PIXEL_BITS
 
@@ -64,11 +59,16 @@ def _limits():
     return _LIMITS
 
 
-def _bits(extent: np.ndarray) -> np.ndarray:
+def _fits32(extent, s):
+    return np.floor(extent * np.exp2(s) + 0.5) <= lib.RAST_COORD_MAX
+
+
+def _bits(extent: np.ndarray, method: str = "area") -> np.ndarray:
     """Per extent (the largest |coordinate| of a window's vertices, in
-    pixels), the largest S at which polygon_coverage takes them; -1 where
-    even S = 0 is out of range."""
-    top, fits = _limits()
+    pixels), the largest S at which polygon_coverage takes them with
+    `method` (the 64-bit path, when there is one, takes "area" only); -1
+    where even S = 0 is out of range."""
+    top, fits = _limits() if method == "area" else (lib.RAST_MAX_SUBPIXEL_BITS, _fits32)
     s = np.full(len(extent), top, np.int64)
     for _ in range(top + 1):
         bad = (s >= 0) & ~fits(extent, s)
@@ -202,8 +202,8 @@ def feature_fractions(px, ring_sizes, part_rings, feature, nfeat, shape, rule, p
     local = px - np.repeat(origin, npts, axis=0)
     extent = np.zeros(nfeat)
     extent[has] = np.maximum.reduceat(np.abs(local).max(axis=1), fpt[:-1][has])
-    s_box = _bits(np.maximum(hw, ww) + 1.0)
-    s_own = _bits(extent)
+    s_box = _bits(np.maximum(hw, ww) + 1.0, method)
+    s_own = _bits(extent, method)
     wide = inside & (s_box < 0)
     if wide.any():
         k = int(np.flatnonzero(wide)[0])

@@ -211,6 +211,18 @@ static void piece4(st_ctx *c, vec a, vec b, vec o)
     put(&c->out, a.x + o.x, a.y + o.y);
 }
 
+/* The half disc beyond b, the path arriving along d (offset o = N(d)). */
+static void half_disc(st_ctx *c, vec b, vec o)
+{
+    vec mo;
+    mo.x = -o.x;
+    mo.y = -o.y;
+    ring_begin(&c->out);
+    put(&c->out, b.x - o.x, b.y - o.y);
+    arc(c, b, mo, o);
+    put(&c->out, b.x + o.x, b.y + o.y);
+}
+
 /* A cap at b, the path arriving along d. */
 static void cap(st_ctx *c, vec b, vec d)
 {
@@ -224,13 +236,7 @@ static void cap(st_ctx *c, vec b, vec d)
         put(&c->out, b.x + x.x + o.x, b.y + x.y + o.y);
         put(&c->out, b.x + o.x, b.y + o.y);
     } else if (c->style->cap == RAST_CAP_ROUND) {
-        vec mo;
-        mo.x = -o.x;
-        mo.y = -o.y;
-        ring_begin(&c->out);
-        put(&c->out, b.x - o.x, b.y - o.y);
-        arc(c, b, mo, o);
-        put(&c->out, b.x + o.x, b.y + o.y);
+        half_disc(c, b, o);
     }
 }
 
@@ -291,7 +297,7 @@ static void join(st_ctx *c, vec v, vec d1, vec d2)
     int kind = c->style->join;
     if (t == 0) {
         if (d1.x * d2.x + d1.y * d2.y > 0) return; /* straight on */
-        if (kind == RAST_JOIN_ROUND) cap(c, v, d1);  /* a turn back: half a disc */
+        if (kind == RAST_JOIN_ROUND) half_disc(c, v, o1); /* a turn back: half a disc */
         return;                                       /* miter, bevel: nothing */
     }
     if (t > 0) { /* turning counter-clockwise: the outer side is -o */

@@ -9,7 +9,7 @@
  * a - o, b - o, b + o, a + o; at a vertex v between d1 and d2, on the
  * outer side, p1 = -+N(d1), p2 = -+N(d2): bevel v, v + s, v + e; miter v,
  * v + s, tip, v + e; round v, v + s, arc vertices, v + e, where (s, e) is
- * (p1, p2) or (p2, p1) so that cross(s, e) > 0; caps: square a - o, b - o,
+ * (p1, p2) or (p2, p1) so that st_cross(s, e) > 0; caps: square a - o, b - o,
  * b - o + x, b + o + x... (half the width beyond the end), round the half
  * disc b - o, arc, b + o.  Every piece is listed counter-clockwise in the
  * (x, y) sense (positive shoelace area) and is star-shaped about v (or b):
@@ -79,13 +79,13 @@ typedef struct st_out {
     rast_status err;
 } st_out;
 
-static void ring_begin(st_out *o)
+static void st_ring_begin(st_out *o)
 {
     if (o->pts) o->sizes[o->nr] = 0;
     o->nr++;
 }
 
-static void put(st_out *o, int64_t x, int64_t y)
+static void st_put(st_out *o, int64_t x, int64_t y)
 {
     if (x < -RAST_COORD_MAX || x > RAST_COORD_MAX || y < -RAST_COORD_MAX || y > RAST_COORD_MAX) {
         if (o->err == RAST_OK) o->err = RAST_E_RANGE;
@@ -104,44 +104,44 @@ static void put(st_out *o, int64_t x, int64_t y)
 }
 
 /* ---- arithmetic ----------------------------------------------------------- */
-static uint32_t isqrt_floor(uint64_t v)
+static uint32_t st_isqrt_floor(uint64_t v)
 {
     uint32_t c = rast__isqrt_ceil(v);
     return (uint64_t)c * c > v ? c - 1 : c;
 }
 
 /* round(w |a| / (2 sqrt(l2))) with a's sign (the file's comment). */
-static int64_t off_coord(int64_t a, uint64_t l2, int64_t w)
+static int64_t st_off_coord(int64_t a, uint64_t l2, int64_t w)
 {
     int64_t q, r;
     uint64_t mag = a < 0 ? (uint64_t)(-a) : (uint64_t)a;
     rast__i128 num = rast__i128_mul(w * w, (int64_t)(mag * mag));
     rast__wide_floordiv(num, (int64_t)l2, &q, &r);
-    mag = (isqrt_floor((uint64_t)q) + 1) >> 1;
+    mag = (st_isqrt_floor((uint64_t)q) + 1) >> 1;
     return a < 0 ? -(int64_t)mag : (int64_t)mag;
 }
 
-typedef struct vec {
+typedef struct st_vec {
     int64_t x, y;
-} vec;
+} st_vec;
 
 /* N(d): the left offset (-dy, dx) w / (2 |d|), rounded per coordinate. */
-static vec normal(vec d, int64_t w)
+static st_vec st_normal(st_vec d, int64_t w)
 {
     uint64_t l2 = (uint64_t)(d.x * d.x) + (uint64_t)(d.y * d.y);
-    vec o;
-    o.x = off_coord(-d.y, l2, w);
-    o.y = off_coord(d.x, l2, w);
+    st_vec o;
+    o.x = st_off_coord(-d.y, l2, w);
+    o.y = st_off_coord(d.x, l2, w);
     return o;
 }
 
-static int64_t cross(vec a, vec b)
+static int64_t st_cross(st_vec a, st_vec b)
 {
     return a.x * b.y - a.y * b.x;
 }
 
 /* floor(num / den + 1/2) for den > 0 */
-static int64_t round_div128(rast__i128 num, int64_t den)
+static int64_t st_round_div128(rast__i128 num, int64_t den)
 {
     int64_t q, r;
     num = rast__i128_add(rast__i128_shl(num, 1), rast__i128_from(den));
@@ -149,7 +149,7 @@ static int64_t round_div128(rast__i128 num, int64_t den)
     return q;
 }
 
-static int64_t round_div(int64_t num, int64_t den)
+static int64_t st_round_div(int64_t num, int64_t den)
 {
     return rast__floordiv(2 * num + den, 2 * den);
 }
@@ -162,17 +162,17 @@ typedef struct st_ctx {
     st_out out;
     /* the pen: one open or closed polyline */
     uint32_t n;           /* distinct points so far */
-    vec p0, prev, dfirst, dprev, hint;
+    st_vec p0, prev, dfirst, dprev, hint;
     int has_hint;
 } st_ctx;
 
 /* The circle's point j (0 .. 4m - 1), relative to the centre. */
-static vec circle_point(const st_ctx *c, uint32_t j)
+static st_vec st_circle_point(const st_ctx *c, uint32_t j)
 {
     int64_t m = c->m, k = (int64_t)(j % c->m), den = 2 * (m * m + k * k);
-    vec p, r;
-    p.x = round_div(c->w * (m * m - k * k), den);
-    p.y = round_div(c->w * (2 * k * m), den);
+    st_vec p, r;
+    p.x = st_round_div(c->w * (m * m - k * k), den);
+    p.y = st_round_div(c->w * (2 * k * m), den);
     switch ((j / c->m) & 3u) {
     case 0: r = p; break;
     case 1: r.x = -p.y; r.y = p.x; break;
@@ -184,101 +184,101 @@ static vec circle_point(const st_ctx *c, uint32_t j)
 
 /* The circle's points strictly between s and e counter-clockwise (the
  * sweep s -> e at most a half turn), each advancing in angle. */
-static void arc(st_ctx *c, vec v, vec s, vec e)
+static void st_arc(st_ctx *c, st_vec v, st_vec s, st_vec e)
 {
     uint32_t n4 = 4 * c->m, j0 = 0, t;
-    vec last = s;
+    st_vec last = s;
     /* start after a point outside the open sweep (there are >= 2) */
     for (j0 = 0; j0 < n4; j0++) {
-        vec p = circle_point(c, j0);
-        if (!(cross(s, p) > 0 && cross(p, e) > 0)) break;
+        st_vec p = st_circle_point(c, j0);
+        if (!(st_cross(s, p) > 0 && st_cross(p, e) > 0)) break;
     }
     for (t = 1; t <= n4; t++) {
-        vec p = circle_point(c, (j0 + t) % n4);
-        if (cross(s, p) > 0 && cross(p, e) > 0 && cross(last, p) > 0 && cross(p, e) > 0) {
-            put(&c->out, v.x + p.x, v.y + p.y);
+        st_vec p = st_circle_point(c, (j0 + t) % n4);
+        if (st_cross(s, p) > 0 && st_cross(p, e) > 0 && st_cross(last, p) > 0 && st_cross(p, e) > 0) {
+            st_put(&c->out, v.x + p.x, v.y + p.y);
             last = p;
         }
     }
 }
 
-static void piece4(st_ctx *c, vec a, vec b, vec o)
+static void st_piece4(st_ctx *c, st_vec a, st_vec b, st_vec o)
 {
-    ring_begin(&c->out);
-    put(&c->out, a.x - o.x, a.y - o.y);
-    put(&c->out, b.x - o.x, b.y - o.y);
-    put(&c->out, b.x + o.x, b.y + o.y);
-    put(&c->out, a.x + o.x, a.y + o.y);
+    st_ring_begin(&c->out);
+    st_put(&c->out, a.x - o.x, a.y - o.y);
+    st_put(&c->out, b.x - o.x, b.y - o.y);
+    st_put(&c->out, b.x + o.x, b.y + o.y);
+    st_put(&c->out, a.x + o.x, a.y + o.y);
 }
 
 /* The half disc beyond b, the path arriving along d (offset o = N(d)). */
-static void half_disc(st_ctx *c, vec b, vec o)
+static void st_half_disc(st_ctx *c, st_vec b, st_vec o)
 {
-    vec mo;
+    st_vec mo;
     mo.x = -o.x;
     mo.y = -o.y;
-    ring_begin(&c->out);
-    put(&c->out, b.x - o.x, b.y - o.y);
-    arc(c, b, mo, o);
-    put(&c->out, b.x + o.x, b.y + o.y);
+    st_ring_begin(&c->out);
+    st_put(&c->out, b.x - o.x, b.y - o.y);
+    st_arc(c, b, mo, o);
+    st_put(&c->out, b.x + o.x, b.y + o.y);
 }
 
 /* A cap at b, the path arriving along d. */
-static void cap(st_ctx *c, vec b, vec d)
+static void st_cap(st_ctx *c, st_vec b, st_vec d)
 {
-    vec o = normal(d, c->w), x;
+    st_vec o = st_normal(d, c->w), x;
     if (c->style->cap == RAST_CAP_SQUARE) {
         x.x = o.y;
         x.y = -o.x;
-        ring_begin(&c->out);
-        put(&c->out, b.x - o.x, b.y - o.y);
-        put(&c->out, b.x + x.x - o.x, b.y + x.y - o.y);
-        put(&c->out, b.x + x.x + o.x, b.y + x.y + o.y);
-        put(&c->out, b.x + o.x, b.y + o.y);
+        st_ring_begin(&c->out);
+        st_put(&c->out, b.x - o.x, b.y - o.y);
+        st_put(&c->out, b.x + x.x - o.x, b.y + x.y - o.y);
+        st_put(&c->out, b.x + x.x + o.x, b.y + x.y + o.y);
+        st_put(&c->out, b.x + o.x, b.y + o.y);
     } else if (c->style->cap == RAST_CAP_ROUND) {
-        half_disc(c, b, o);
+        st_half_disc(c, b, o);
     }
 }
 
 /* A zero-length subpath at p. */
-static void dot(st_ctx *c, vec p)
+static void st_dot(st_ctx *c, st_vec p)
 {
     if (c->style->cap == RAST_CAP_ROUND) {
         uint32_t n4 = 4 * c->m, j;
-        vec last = circle_point(c, n4 - 1);
-        ring_begin(&c->out);
+        st_vec last = st_circle_point(c, n4 - 1);
+        st_ring_begin(&c->out);
         for (j = 0; j < n4; j++) {
-            vec q = circle_point(c, j);
-            if (cross(last, q) > 0) {
-                put(&c->out, p.x + q.x, p.y + q.y);
+            st_vec q = st_circle_point(c, j);
+            if (st_cross(last, q) > 0) {
+                st_put(&c->out, p.x + q.x, p.y + q.y);
                 last = q;
             }
         }
     } else if (c->style->cap == RAST_CAP_SQUARE) {
-        vec d, o;
+        st_vec d, o;
         if (c->has_hint) {
             d = c->hint;
         } else {
             d.x = 1;
             d.y = 0;
         }
-        o = normal(d, c->w);
+        o = st_normal(d, c->w);
         d.x = -o.y;
-        d.y = o.x; /* d turned back: -x of cap() */
-        ring_begin(&c->out);
-        put(&c->out, p.x + d.x - o.x, p.y + d.y - o.y);
-        put(&c->out, p.x - d.x - o.x, p.y - d.y - o.y);
-        put(&c->out, p.x - d.x + o.x, p.y - d.y + o.y);
-        put(&c->out, p.x + d.x + o.x, p.y + d.y + o.y);
+        d.y = o.x; /* d turned back: -x of st_cap() */
+        st_ring_begin(&c->out);
+        st_put(&c->out, p.x + d.x - o.x, p.y + d.y - o.y);
+        st_put(&c->out, p.x - d.x - o.x, p.y - d.y - o.y);
+        st_put(&c->out, p.x - d.x + o.x, p.y - d.y + o.y);
+        st_put(&c->out, p.x + d.x + o.x, p.y + d.y + o.y);
     }
 }
 
 /* Is SVG's ratio 1/sin(theta/2) within the limit?  L^2 (1 + u1.u2) >= 2
  * with unit normals at 2^29 (the file's comment). */
-static int miter_ok(const st_ctx *c, vec d1, vec d2)
+static int st_miter_ok(const st_ctx *c, st_vec d1, st_vec d2)
 {
     const int64_t W = (int64_t)1 << 30; /* h = 2^29 */
-    vec u1 = normal(d1, W), u2 = normal(d2, W);
+    st_vec u1 = st_normal(d1, W), u2 = st_normal(d2, W);
     int64_t dot = u1.x * u2.x + u1.y * u2.y; /* ~ 2^58 cos phi */
     int64_t l = c->style->miter_limit;
     rast__i128 lhs = rast__i128_mul(l * l, ((int64_t)1 << 58) + dot);
@@ -290,14 +290,14 @@ static int miter_ok(const st_ctx *c, vec d1, vec d2)
 }
 
 /* A join at v between d1 (arriving) and d2 (leaving). */
-static void join(st_ctx *c, vec v, vec d1, vec d2)
+static void st_join(st_ctx *c, st_vec v, st_vec d1, st_vec d2)
 {
-    int64_t t = cross(d1, d2);
-    vec o1 = normal(d1, c->w), o2 = normal(d2, c->w), p1, p2, s, e;
+    int64_t t = st_cross(d1, d2);
+    st_vec o1 = st_normal(d1, c->w), o2 = st_normal(d2, c->w), p1, p2, s, e;
     int kind = c->style->join;
     if (t == 0) {
         if (d1.x * d2.x + d1.y * d2.y > 0) return; /* straight on */
-        if (kind == RAST_JOIN_ROUND) half_disc(c, v, o1); /* a turn back: half a disc */
+        if (kind == RAST_JOIN_ROUND) st_half_disc(c, v, o1); /* a turn back: half a disc */
         return;                                       /* miter, bevel: nothing */
     }
     if (t > 0) { /* turning counter-clockwise: the outer side is -o */
@@ -309,40 +309,40 @@ static void join(st_ctx *c, vec v, vec d1, vec d2)
         p1 = o1;
         p2 = o2;
     }
-    if (cross(p1, p2) > 0) {
+    if (st_cross(p1, p2) > 0) {
         s = p1;
         e = p2;
     } else {
         s = p2;
         e = p1;
     }
-    if (cross(s, e) <= 0) return; /* rounded to the same offset: no gap */
-    ring_begin(&c->out);
-    put(&c->out, v.x, v.y);
-    put(&c->out, v.x + s.x, v.y + s.y);
+    if (st_cross(s, e) <= 0) return; /* rounded to the same offset: no gap */
+    st_ring_begin(&c->out);
+    st_put(&c->out, v.x, v.y);
+    st_put(&c->out, v.x + s.x, v.y + s.y);
     if (kind == RAST_JOIN_ROUND) {
-        arc(c, v, s, e);
-    } else if (kind == RAST_JOIN_MITER && miter_ok(c, d1, d2)) {
+        st_arc(c, v, s, e);
+    } else if (kind == RAST_JOIN_MITER && st_miter_ok(c, d1, d2)) {
         /* tip = v + (p1 + p2) H / (H + p1.p2), H = w^2 / 4 */
         int64_t den = c->w * c->w + 4 * (p1.x * p2.x + p1.y * p2.y);
         if (den > 0) {
-            int64_t tx = round_div128(rast__i128_mul(p1.x + p2.x, c->w * c->w), den);
-            int64_t ty = round_div128(rast__i128_mul(p1.y + p2.y, c->w * c->w), den);
-            put(&c->out, v.x + tx, v.y + ty);
+            int64_t tx = st_round_div128(rast__i128_mul(p1.x + p2.x, c->w * c->w), den);
+            int64_t ty = st_round_div128(rast__i128_mul(p1.y + p2.y, c->w * c->w), den);
+            st_put(&c->out, v.x + tx, v.y + ty);
         }
     }
-    put(&c->out, v.x + e.x, v.y + e.y);
+    st_put(&c->out, v.x + e.x, v.y + e.y);
 }
 
 /* ---- the pen: one polyline, points streamed in -------------------------- */
-static void pen_begin(st_ctx *c)
+static void st_pen_begin(st_ctx *c)
 {
     c->n = 0;
 }
 
-static void pen_point(st_ctx *c, vec q)
+static void st_pen_point(st_ctx *c, st_vec q)
 {
-    vec d;
+    st_vec d;
     if (c->n == 0) {
         c->p0 = c->prev = q;
         c->n = 1;
@@ -351,37 +351,37 @@ static void pen_point(st_ctx *c, vec q)
     if (q.x == c->prev.x && q.y == c->prev.y) return;
     d.x = q.x - c->prev.x;
     d.y = q.y - c->prev.y;
-    piece4(c, c->prev, q, normal(d, c->w));
+    st_piece4(c, c->prev, q, st_normal(d, c->w));
     if (c->n == 1)
         c->dfirst = d;
     else
-        join(c, c->prev, c->dprev, d);
+        st_join(c, c->prev, c->dprev, d);
     c->dprev = d;
     c->prev = q;
     c->n++;
 }
 
-static void pen_end(st_ctx *c, int closed)
+static void st_pen_end(st_ctx *c, int closed)
 {
     if (c->n == 0) return;
     if (c->n == 1) {
-        dot(c, c->p0);
+        st_dot(c, c->p0);
     } else if (closed) {
-        vec d;
+        st_vec d;
         d.x = c->p0.x - c->prev.x;
         d.y = c->p0.y - c->prev.y;
         if (d.x || d.y) {
-            piece4(c, c->prev, c->p0, normal(d, c->w));
-            join(c, c->prev, c->dprev, d);
+            st_piece4(c, c->prev, c->p0, st_normal(d, c->w));
+            st_join(c, c->prev, c->dprev, d);
             c->dprev = d;
         }
-        join(c, c->p0, c->dprev, c->dfirst);
+        st_join(c, c->p0, c->dprev, c->dfirst);
     } else {
-        vec back;
+        st_vec back;
         back.x = -c->dfirst.x;
         back.y = -c->dfirst.y;
-        cap(c, c->p0, back);
-        cap(c, c->prev, c->dprev);
+        st_cap(c, c->p0, back);
+        st_cap(c, c->prev, c->dprev);
     }
     c->n = 0;
 }
@@ -399,7 +399,7 @@ typedef struct st_it {
 } st_it;
 
 /* Position at the next subpath's start *p0; 0 at the path's end. */
-static int sub_start(st_it *it, vec *p0)
+static int st_sub_start(st_it *it, st_vec *p0)
 {
     const rast_path *path = it->path;
     it->closed = 0;
@@ -426,7 +426,7 @@ static int sub_start(st_it *it, vec *p0)
 }
 
 /* The subpath's next point; 0 at its end (it->closed set by CLOSE). */
-static int sub_next(st_it *it, vec *p)
+static int st_sub_next(st_it *it, st_vec *p)
 {
     const rast_path *path = it->path;
     rast_point w;
@@ -463,7 +463,7 @@ static int sub_next(st_it *it, vec *p)
         it->n = rast__curve_edges(it->q, v, it->tol);
         it->i = 1;
     }
-    return sub_next(it, p);
+    return st_sub_next(it, p);
 }
 
 /* ---- dashes ----------------------------------------------------------------- */
@@ -472,31 +472,31 @@ typedef struct st_dash {
     int64_t left;  /* units left in it */
 } st_dash;
 
-static int64_t dash_len(const rast_stroke_style *s, uint32_t i)
+static int64_t st_dash_len(const rast_stroke_style *s, uint32_t i)
 {
     return s->dash[i % s->ndash];
 }
 
-static uint32_t dash_count(const rast_stroke_style *s)
+static uint32_t st_dash_count(const rast_stroke_style *s)
 {
     return s->ndash & 1u ? 2 * s->ndash : s->ndash;
 }
 
-static st_dash dash_start(const rast_stroke_style *s)
+static st_dash st_dash_start(const rast_stroke_style *s)
 {
-    uint32_t n = dash_count(s), i;
+    uint32_t n = st_dash_count(s), i;
     int64_t period = 0, off;
     st_dash st;
-    for (i = 0; i < n; i++) period += dash_len(s, i);
+    for (i = 0; i < n; i++) period += st_dash_len(s, i);
     off = s->dash_offset % period;
     if (off < 0) off += period;
     i = 0;
-    while (off > dash_len(s, i) || (off == dash_len(s, i) && off > 0)) {
-        off -= dash_len(s, i);
+    while (off > st_dash_len(s, i) || (off == st_dash_len(s, i) && off > 0)) {
+        off -= st_dash_len(s, i);
         i = (i + 1) % n;
     }
     st.i = i;
-    st.left = dash_len(s, i) - off;
+    st.left = st_dash_len(s, i) - off;
     return st;
 }
 
@@ -504,20 +504,20 @@ static st_dash dash_start(const rast_stroke_style *s)
  * mode 1: as 0 but the first dash (on at the start) is held back; mode 2:
  * only the points up to the end of the first dash (the held one), fed to
  * a pen already drawing.  Returns 1 if the held first dash ended. */
-static int dash_walk(st_ctx *c, st_it *it, vec start, st_dash ds, int mode, int *on_at_end)
+static int st_dash_walk(st_ctx *c, st_it *it, st_vec start, st_dash ds, int mode, int *on_at_end)
 {
     const rast_stroke_style *s = c->style;
-    uint32_t n = dash_count(s);
+    uint32_t n = st_dash_count(s);
     int holding = mode == 1, first_ended = 0;
-    vec a = start, b;
+    st_vec a = start, b;
     int on = !(ds.i & 1u);
     if (on && mode == 0) {
-        pen_begin(c);
-        pen_point(c, a);
+        st_pen_begin(c);
+        st_pen_point(c, a);
     }
     for (;;) {
-        int more = sub_next(it, &b);
-        vec d;
+        int more = st_sub_next(it, &b);
+        st_vec d;
         int64_t lr, pos = 0;
         if (!more) {
             if (!it->closed || (start.x == a.x && start.y == a.y)) break;
@@ -529,36 +529,36 @@ static int dash_walk(st_ctx *c, st_it *it, vec start, st_dash ds, int mode, int 
         if (!d.x && !d.y) continue;
         {
             uint64_t l2 = (uint64_t)(d.x * d.x) + (uint64_t)(d.y * d.y);
-            lr = (int64_t)((isqrt_floor(4 * l2) + 1) >> 1);
+            lr = (int64_t)((st_isqrt_floor(4 * l2) + 1) >> 1);
             if (lr < 1) lr = 1;
         }
         c->hint = d;
         c->has_hint = 1;
         for (;;) {
-            vec p;
+            st_vec p;
             if (ds.left > lr - pos) {
                 ds.left -= lr - pos;
-                if (on && !holding) pen_point(c, b);
+                if (on && !holding) st_pen_point(c, b);
                 break;
             }
             pos += ds.left;
-            p.x = a.x + round_div(d.x * pos, lr);
-            p.y = a.y + round_div(d.y * pos, lr);
+            p.x = a.x + st_round_div(d.x * pos, lr);
+            p.y = a.y + st_round_div(d.y * pos, lr);
             if (on) {
                 if (holding) {
                     holding = 0;
                     first_ended = 1;
                 } else {
-                    pen_point(c, p);
-                    pen_end(c, 0);
+                    st_pen_point(c, p);
+                    st_pen_end(c, 0);
                     if (mode == 2) return 1;
                 }
             } else {
-                pen_begin(c);
-                pen_point(c, p);
+                st_pen_begin(c);
+                st_pen_point(c, p);
             }
             ds.i = (ds.i + 1) % n;
-            ds.left = dash_len(s, ds.i);
+            ds.left = st_dash_len(s, ds.i);
             on = !on;
         }
         a = b;
@@ -569,70 +569,70 @@ static int dash_walk(st_ctx *c, st_it *it, vec start, st_dash ds, int mode, int 
     return first_ended;
 }
 
-static void stroke_subpath(st_ctx *c, st_it *it, vec p0)
+static void st_stroke_subpath(st_ctx *c, st_it *it, st_vec p0)
 {
     const rast_stroke_style *s = c->style;
     c->has_hint = 0;
     if (!s->dash || !s->ndash) {
-        vec p;
-        pen_begin(c);
-        pen_point(c, p0);
-        while (sub_next(it, &p)) pen_point(c, p);
+        st_vec p;
+        st_pen_begin(c);
+        st_pen_point(c, p0);
+        while (st_sub_next(it, &p)) st_pen_point(c, p);
         if (c->n == 1 && !it->drew) c->n = 0; /* a MOVE alone */
-        pen_end(c, it->closed);
+        st_pen_end(c, it->closed);
         return;
     }
     {
         st_it saved = *it;
-        st_dash ds = dash_start(s);
+        st_dash ds = st_dash_start(s);
         int on0 = !(ds.i & 1u), on_end = 0, ended;
         /* is the subpath closed?  walk it once uncounted to know: cheap
          * enough, and it keeps the pen's order simple */
         st_it probe = *it;
-        vec p;
+        st_vec p;
         int closed, any = 0;
-        while (sub_next(&probe, &p))
+        while (st_sub_next(&probe, &p))
             if (p.x != p0.x || p.y != p0.y) any = 1;
         closed = probe.closed;
         if (!any) { /* zero length: a dot where the pattern is on */
             if (probe.drew && on0) {
-                pen_begin(c);
-                pen_point(c, p0);
-                pen_end(c, 0);
+                st_pen_begin(c);
+                st_pen_point(c, p0);
+                st_pen_end(c, 0);
             }
             *it = probe;
             return;
         }
         if (!closed || !on0) {
-            ended = dash_walk(c, it, p0, ds, 0, &on_end);
-            if (on_end) pen_end(c, 0);
+            ended = st_dash_walk(c, it, p0, ds, 0, &on_end);
+            if (on_end) st_pen_end(c, 0);
             (void)ended;
             return;
         }
-        ended = dash_walk(c, it, p0, ds, 1, &on_end);
+        ended = st_dash_walk(c, it, p0, ds, 1, &on_end);
         if (!ended) { /* one dash all round: the closed subpath */
             st_it again = saved;
-            pen_begin(c);
-            pen_point(c, p0);
-            while (sub_next(&again, &p)) pen_point(c, p);
-            pen_end(c, 1);
+            st_pen_begin(c);
+            st_pen_point(c, p0);
+            while (st_sub_next(&again, &p)) st_pen_point(c, p);
+            st_pen_end(c, 1);
             *it = again;
             return;
         }
         if (!on_end) {
-            pen_begin(c);
-            pen_point(c, p0);
+            st_pen_begin(c);
+            st_pen_point(c, p0);
         }
         {
             st_it again = saved;
             int dummy;
-            if (!dash_walk(c, &again, p0, ds, 2, &dummy)) pen_end(c, 0);
+            if (!st_dash_walk(c, &again, p0, ds, 2, &dummy)) st_pen_end(c, 0);
         }
     }
 }
 
 /* ---- entry points ------------------------------------------------------------- */
-static rast_status check_style(const rast_stroke_style *s)
+static rast_status st_check_style(const rast_stroke_style *s)
 {
     uint32_t k;
     int any = 0;
@@ -654,14 +654,14 @@ static rast_status check_style(const rast_stroke_style *s)
     return RAST_OK;
 }
 
-static rast_status stroke_run(const rast_path *path, const rast_stroke_style *style, st_out *out)
+static rast_status st_stroke_run(const rast_path *path, const rast_stroke_style *style, st_out *out)
 {
     rast__flat f;
     st_ctx c;
     st_it it;
-    vec p0;
+    st_vec p0;
     uint64_t need;
-    rast_status st = check_style(style);
+    rast_status st = st_check_style(style);
     if (st != RAST_OK) return st;
     memset(&f, 0, sizeof f);
     st = rast__path_flatten(path, style->tolerance, &f); /* checks the path */
@@ -677,8 +677,8 @@ static rast_status stroke_run(const rast_path *path, const rast_stroke_style *st
     memset(&it, 0, sizeof it);
     it.path = path;
     it.tol = style->tolerance;
-    while (sub_start(&it, &p0)) {
-        stroke_subpath(&c, &it, p0);
+    while (st_sub_start(&it, &p0)) {
+        st_stroke_subpath(&c, &it, p0);
         if (c.out.err != RAST_OK) return c.out.err;
     }
     *out = c.out;
@@ -692,7 +692,7 @@ rast_status rast_path_stroke_size(const rast_path *path, const rast_stroke_style
     rast_status st;
     if (!npoints || !nrings) return RAST_E_NULL;
     memset(&o, 0, sizeof o);
-    st = stroke_run(path, style, &o);
+    st = st_stroke_run(path, style, &o);
     if (st != RAST_OK) return st;
     *npoints = (uint32_t)o.np;
     *nrings = (uint32_t)o.nr;
@@ -712,7 +712,7 @@ rast_status rast_path_stroke(const rast_path *path, const rast_stroke_style *sty
     memset(&o, 0, sizeof o);
     o.pts = points;
     o.sizes = ring_sizes;
-    st = stroke_run(path, style, &o);
+    st = st_stroke_run(path, style, &o);
     if (st != RAST_OK) return st;
     polygon->points = points;
     polygon->ring_sizes = ring_sizes;

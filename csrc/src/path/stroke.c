@@ -309,14 +309,18 @@ static void st_join(st_ctx *c, st_vec v, st_vec d1, st_vec d2)
         p1 = o1;
         p2 = o2;
     }
-    if (st_cross(p1, p2) > 0) {
+    if (t > 0) { /* the outer arc runs counter-clockwise from p1 to p2 */
         s = p1;
         e = p2;
     } else {
         s = p2;
         e = p1;
     }
-    if (st_cross(s, e) <= 0) return; /* rounded to the same offset: no gap */
+    /* Rounded offsets may cross: near a straight line there is then no
+     * gap to fill; near a turn back the sweep passes a half turn by a
+     * rounding's angle, which a round join still draws star-shaped (its
+     * arc points in both half planes), a bevel or miter not at all. */
+    if (st_cross(s, e) <= 0 && (d1.x * d2.x + d1.y * d2.y >= 0 || kind != RAST_JOIN_ROUND)) return;
     st_ring_begin(&c->out);
     st_put(&c->out, v.x, v.y);
     st_put(&c->out, v.x + s.x, v.y + s.y);

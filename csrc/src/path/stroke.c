@@ -9,9 +9,11 @@
  * a - o, b - o, b + o, a + o; at a vertex v between d1 and d2, on the
  * outer side, p1 = -+N(d1), p2 = -+N(d2): bevel v, v + s, v + e; miter v,
  * v + s, tip, v + e; round v, v + s, arc vertices, v + e, where (s, e) is
- * (p1, p2) or (p2, p1) so that st_cross(s, e) > 0; caps: square a - o, b - o,
- * b - o + x, b + o + x... (half the width beyond the end), round the half
- * disc b - o, arc, b + o.  Every piece is listed counter-clockwise in the
+ * (p1, p2) for a counter-clockwise turn (cross(d1, d2) > 0, exact) and
+ * (p2, p1) for a clockwise one, so that the sweep s -> e runs
+ * counter-clockwise over the outer side; caps: square b - o, b + x - o,
+ * b + x + o, b + o (x: half the width beyond the end), round the half
+ * disc b - o, arc, b + o.
  * (x, y) sense (positive shoelace area) and is star-shaped about v (or b):
  * its vertices' angles about v strictly increase over less than a turn
  * (arc vertices that would not advance are dropped).  So each piece has

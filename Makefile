@@ -340,7 +340,7 @@ test-config: build/single/rastrum.c build/single/tests/test_config display-examp
 	    comm -23 build/config/$$conf.scenes build/config/full.scenes; echo "test-config: $$conf: FAILED"; exit 1; fi; \
 	  echo "test-config: $$conf.h: $$(wc -l < build/config/$$conf.scenes) kept scenes hash as in the full build"; \
 	done
-	@for app in firmware_min firmware_tri firmware_lines; do \
+	@for app in firmware_min firmware_tri firmware_lines firmware_gauge; do \
 	  $(CC) $(WARN) -O2 -DFIRMWARE_PRINT -Iexamples -Ibuild/single examples/$$app.c \
 	    build/single/rastrum.c -o build/config/$$app-full || exit 1; \
 	  $(CC) $(WARN) -O2 -DFIRMWARE_PRINT -DRAST_CONFIG_HEADER="\"$${app}_conf.h\"" -Iexamples \

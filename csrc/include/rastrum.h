@@ -1618,6 +1618,88 @@ RAST_API rast_status rast_path_flatten(const rast_path *path, int32_t tolerance,
                                        uint32_t *ring_sizes, uint32_t max_rings,
                                        rast_polygon *polygon);
 
+/* ---- strokes (path/stroke.c) ------------------------------------------------
+ * The outline of a path drawn with a width, as rings to fill NON-ZERO: a
+ * union of pieces all turning the same way (positive shoelace area): a
+ * parallelogram per segment, a join per vertex between two segments, a
+ * cap per open end, each a simple polygon star-shaped about a point, so
+ * that the non-zero rule of every filler ("area" included) draws exactly
+ * their union, where a stroke crosses itself too.  SVG's semantics: a
+ * subpath's curves are flattened at `tolerance` first (rast_path_flatten);
+ * zero-length segments are dropped; a subpath of length zero ("M p L p",
+ * "M p Z") gives a disc (round cap), a square (square cap, turned as its
+ * dash runs, else axis-aligned) or nothing (butt); a MOVE alone gives
+ * nothing; a closed subpath is joined all round, no caps.  Joins: miter
+ * (the offsets' intersection, bevelled where SVG's ratio 1/sin(theta/2),
+ * theta the angle between the segments, exceeds miter_limit), round (the
+ * circular sector on the outer side), bevel; a turn back (theta = 0) is
+ * bevelled (round: a half disc).  Caps: butt, round (a half disc), square
+ * (half the width beyond the end).
+ *
+ * Dashes: dash[0 .. ndash) lengths in the points' units (>= 0, not all 0;
+ * an odd count is repeated, as SVG), on, off, on, ...; dash_offset (any
+ * sign) is where along the pattern the path starts.  The pattern runs on
+ * along the whole path, every subpath restarting it at dash_offset; a dash
+ * crossing a vertex keeps the join; a closed subpath whose start is inside
+ * a dash joins its last dash to its first; a dash of length 0 is a dot (its
+ * caps).  Segment lengths are rounded to whole units (the pattern drifts
+ * by at most 1/2 unit per segment); a dash's ends on a segment are rounded
+ * to the grid.
+ *
+ * The bound (proof in path/stroke.c).  With u = 1 unit and h = width / 2:
+ * every vertex of a segment's piece, a bevel or a square cap is within
+ * sqrt(2)/2 u of the ideal one (the offsets are h times the exact unit
+ * normal, rounded: an integer square root rounded to nearest); a miter's
+ * tip within (miter_limit + 1) u; a round join or cap is a polygon within
+ * max(tolerance, 2 u) of the ideal circular arc (both ways).  The miter
+ * limit is decided with unit normals exact to 2^-29.
+ *
+ * Limits: 1 <= width <= RAST_COORD_MAX, 1 <= tolerance <= RAST_COORD_MAX,
+ * 65536 <= miter_limit (16.16 fixed point: 65536 is 1.0) <= 2^31 - 1,
+ * ndash <= 65536.  Integer only, no heap, no state between calls. */
+typedef enum rast_stroke_join {
+    RAST_JOIN_MITER = 0,
+    RAST_JOIN_ROUND = 1,
+    RAST_JOIN_BEVEL = 2
+} rast_stroke_join;
+
+typedef enum rast_stroke_cap {
+    RAST_CAP_BUTT = 0,
+    RAST_CAP_ROUND = 1,
+    RAST_CAP_SQUARE = 2
+} rast_stroke_cap;
+
+typedef struct rast_stroke_style {
+    int32_t width;         /* units of 1/2^S pixel, as the points */
+    int32_t join;          /* rast_stroke_join */
+    int32_t cap;           /* rast_stroke_cap */
+    int32_t miter_limit;   /* SVG's ratio, 16.16 fixed point (4.0: 262144) */
+    int32_t tolerance;     /* curves and round parts, in units */
+    const int32_t *dash;   /* NULL or ndash == 0: solid */
+    uint32_t ndash;
+    int32_t dash_offset;
+} rast_stroke_style;
+
+/* The sizes of the stroke's outline: *npoints vertices in *nrings rings.
+ * Errors: RAST_E_NULL (path, style, npoints, nrings; dash with ndash > 0;
+ * as rast_path_flatten_size for the path), RAST_E_ARG (the path's, and a
+ * style outside the limits above, a negative dash length, all lengths 0),
+ * RAST_E_RANGE (a point past RAST_COORD_MAX, or an outline vertex there:
+ * keep width and miter tips inside the range), RAST_E_TOO_MANY (more than
+ * RAST_MAX_POINTS outline vertices).  Nothing is written on error. */
+RAST_API rast_status rast_path_stroke_size(const rast_path *path, const rast_stroke_style *style,
+                                           uint32_t *npoints, uint32_t *nrings);
+
+/* Build the outline into caller memory, as rast_path_flatten does: points,
+ * ring sizes, *polygon made to describe them (fill it RAST_RULE_NONZERO).
+ * Errors: those of rast_path_stroke_size, RAST_E_NULL (points, ring_sizes
+ * or polygon NULL), RAST_E_SCRATCH (max_points or max_rings below the
+ * sizes); nothing is written on error. */
+RAST_API rast_status rast_path_stroke(const rast_path *path, const rast_stroke_style *style,
+                                      rast_point *points, uint32_t max_points,
+                                      uint32_t *ring_sizes, uint32_t max_rings,
+                                      rast_polygon *polygon);
+
 #ifdef __cplusplus
 }
 #endif

@@ -1,95 +1,64 @@
 """Strokes: the outline of a path drawn with a width, as a Path to fill
 non-zero (docs/paths.md, "Strokes").
 
-The outline is a union of convex pieces all turning the same way: a
-rectangle per segment, a join per vertex (bevel triangle, miter
-quadrilateral, or a disc), a cap per open end (square, or a disc), so
+The outline is built by the C core's stroker (rast_path_stroke,
+csrc/src/path/stroke.c): a union of pieces all turning the same way (a
+parallelogram per segment, a join per vertex, a cap per open end), so
 that a non-zero fill of it is exactly the union, crossings and overlaps
-included; "area" coverage of it is the ideal stroke's area up to the
-snapping of its vertices (polygonal joins and caps) and the Path's
-tolerance (round ones).  Built in Python for now; the C stroker, integer
-only, is still to come.
+included.  Integer only, on a grid of 1/2**b pixel (b <= 16, the finest
+that holds the stroke's extent): every polygonal vertex within
+sqrt(2)/2 grid step of the ideal one, round joins and caps within the
+tolerance (or 2 grid steps, when coarser) of the true arcs.
 """
 
 from __future__ import annotations
 
 import math
-from typing import Iterable, List, Optional, Sequence, Tuple, Union
+from typing import List, Optional, Sequence, Tuple, Union
 
 import numpy as np
 
 from ._core import InputError
-from ._path import CLOSE, LINE, MOVE, QUAD, Path, _real
+from ._native import ffi, lib
+from ._path import DEFAULT_TOLERANCE, LINE, MOVE, Path, _real
 
 __all__ = ["stroke"]
 
-_Pt = Tuple[float, float]
-_JOINS = ("miter", "round", "bevel")
-_CAPS = ("butt", "round", "square")
+_JOINS = {"miter": lib.RAST_JOIN_MITER, "round": lib.RAST_JOIN_ROUND, "bevel": lib.RAST_JOIN_BEVEL}
+_CAPS = {"butt": lib.RAST_CAP_BUTT, "round": lib.RAST_CAP_ROUND, "square": lib.RAST_CAP_SQUARE}
+_MAX_LIMIT = (2 ** 31 - 1) / 65536.0
 
 
-def _area2(ring: Sequence[_Pt]) -> float:
-    return sum(ring[i][0] * ring[(i + 1) % len(ring)][1] - ring[(i + 1) % len(ring)][0] * ring[i][1]
-               for i in range(len(ring)))
-
-
-def _subpaths(geometry: object, tolerance: Optional[float]) -> List[Tuple[List[_Pt], bool]]:
-    """(points, closed) per subpath; a Path's curves flattened finely
-    (curves: within its tolerance, at 1/65536 px)."""
+def _as_path(geometry: object) -> Path:
+    """A Path as is; polylines as open subpaths (a single point: a
+    zero-length subpath, which round and square caps draw)."""
     if isinstance(geometry, Path):
-        out: List[Tuple[List[_Pt], bool]] = []
-        verbs, pts = geometry._verbs, geometry._pts
-        k = 0
-        cur: List[_Pt] = []
-        closed = False
-        for v in verbs:
-            if v == MOVE:
-                if cur:
-                    out.append((cur, closed))
-                cur, closed = [pts[k]], False
-                k += 1
-            elif v == CLOSE:
-                closed = True
-            elif v == LINE:
-                cur.append(pts[k])
-                k += 1
-            else:
-                n = 2 if v == QUAD else 3
-                sub = Path(tolerance=tolerance if tolerance is not None else geometry.tolerance)
-                sub.move_to(*cur[-1])
-                if v == QUAD:
-                    sub.quad_to(*pts[k], *pts[k + 1])
-                else:
-                    sub.cubic_to(*pts[k], *pts[k + 1], *pts[k + 2])
-                k += n
-                from ._path import _flatten_fixed  # the C flattener, at 1/65536 px
-                bits = 16
-                tol = sub.tolerance if sub.tolerance is not None else 1.0 / 256
-                fixed, fverbs = sub._fixed(bits)
-                ring = _flatten_fixed(fverbs, fixed, max(1, math.floor(tol * (1 << bits))))[0]
-                cur += [(float(x) / (1 << bits), float(y) / (1 << bits)) for x, y in ring[1:-1]]
-                cur.append(pts[k - 1])
-        if cur:
-            out.append((cur, closed))
-        return out
+        return geometry
     from ._core import ndim, real_array
     if isinstance(geometry, (str, bytes, dict)) or not hasattr(geometry, "__iter__"):
         raise InputError("geometry must be a Path, an (N, 2) array of (x, y) or a list of them, not %s"
                          % type(geometry).__name__)
     if ndim(geometry) == 2 and np.shape(geometry)[1:] == (2,):
-        lines: Iterable[object] = [geometry]
+        lines: Sequence[object] = [geometry]  # type: ignore[list-item]
     else:
         lines = geometry  # type: ignore[assignment]
-    out = []
+    verbs: List[int] = []
+    pts: List[Tuple[float, float]] = []
     for i, line in enumerate(lines):
         a = real_array(line, "geometry: polyline %d" % i, "an (N, 2) array of (x, y)")
         if a.ndim != 2 or a.shape[1] != 2:
             raise InputError("geometry: polyline %d is not an (N, 2) array of (x, y)" % i)
         if not np.isfinite(a).all():
             raise InputError("geometry: polyline %d has a NaN or infinite coordinate" % i)
-        if len(a):
-            out.append(([tuple(p) for p in a.tolist()], False))
-    return out
+        if not len(a):
+            continue
+        if len(a) == 1:
+            a = np.concatenate([a, a])
+        verbs += [MOVE] + [LINE] * (len(a) - 1)
+        pts += [tuple(p) for p in a.tolist()]
+    p = Path()
+    p._verbs, p._pts = verbs, pts
+    return p
 
 
 def stroke(geometry: Union[Path, Sequence[Sequence[float]], Sequence[Sequence[Sequence[float]]]],
@@ -105,7 +74,7 @@ def stroke(geometry: Union[Path, Sequence[Sequence[float]], Sequence[Sequence[Se
     ----------
     geometry : Path, (N, 2) array_like, or list of them
         A Path (its subpaths; closed ones are joined all round), or open
-        polylines of (x, y) pixels.
+        polylines of (x, y) pixels (a single point: a zero-length subpath).
     width : float
         The stroke's width in pixels (> 0).
     join : {"miter", "round", "bevel"}
@@ -114,18 +83,26 @@ def stroke(geometry: Union[Path, Sequence[Sequence[float]], Sequence[Sequence[Se
         SVG's stroke-miterlimit (>= 1): a miter longer than miter_limit
         times the width (1/sin(theta/2) > miter_limit, theta the angle
         between the segments) is bevelled.
-    dash, dash_offset
-        Not supported yet: ``dash`` must be None.
+    dash : sequence of float or None
+        SVG's stroke-dasharray: lengths in pixels along the path, on, off,
+        on, ... (>= 0, not all 0; an odd count is repeated).  None: solid.
+        A dash crossing a vertex keeps its join; a closed subpath starting
+        inside a dash joins its last dash to its first; a dash of length 0
+        is a dot with round or square caps.
+    dash_offset : float
+        SVG's stroke-dashoffset: where along the pattern each subpath
+        starts, in pixels (any sign).
     tolerance : float or None
-        The returned Path's tolerance (its round parts and flattened
-        curves); None: the Path default.
+        How far the round joins and caps (and the geometry's curves) may
+        be from the true arcs, in pixels; None: the Path's tolerance, else
+        DEFAULT_TOLERANCE (1/256 px).
 
     Returns
     -------
     Path
-        Convex pieces, all oriented the same way.  A zero-length subpath
-        gives a dot with round caps, an axis-aligned square with square
-        caps and nothing with butt caps (SVG).
+        Rings, all turning the same way, whose non-zero union is the
+        stroke.  A zero-length subpath gives a dot with round caps, a
+        square with square caps and nothing with butt caps (SVG).
 
     Examples
     --------
@@ -145,88 +122,85 @@ def stroke(geometry: Union[Path, Sequence[Sequence[float]], Sequence[Sequence[Se
     limit = _real(miter_limit, "miter_limit")
     if not limit >= 1:
         raise InputError("miter_limit: %r; it must be >= 1 (SVG)" % (miter_limit,))
+    limit = min(limit, _MAX_LIMIT)
+    off = _real(dash_offset, "dash_offset")
+    dashes: Optional[List[float]] = None
     if dash is not None:
-        raise InputError("dash: dashes are not supported yet; pass dash=None")
-    _real(dash_offset, "dash_offset")
-    h = w / 2
+        try:
+            dashes = [_real(v, "dash") for v in dash]
+        except TypeError:
+            raise InputError("dash: %r is not a sequence of lengths" % (dash,)) from None
+        if any(v < 0 for v in dashes):
+            raise InputError("dash: %r; lengths must be >= 0" % (dash,))
+        if not dashes or not any(v > 0 for v in dashes):
+            raise InputError("dash: %r; some length must be > 0 (or pass None)" % (dash,))
+    path = _as_path(geometry)
+    tol = tolerance if tolerance is not None else (path.tolerance if path.tolerance is not None
+                                                   else DEFAULT_TOLERANCE)
+    tol = _real(tol, "tolerance")
+    if not tol > 0:
+        raise InputError("tolerance: %r pixels; it must be > 0" % (tolerance,))
     out = Path(tolerance=tolerance)
-    pieces: List[List[_Pt]] = []
-    discs: List[_Pt] = []
-
-    for pts, closed in _subpaths(geometry, tolerance):
-        p = [pts[0]]
-        for q in pts[1:]:
-            if q != p[-1]:
-                p.append(q)
-        if closed and len(p) > 1 and p[-1] == p[0]:
-            p.pop()
-        if len(p) == 1:  # zero length: SVG's dot or square
-            x, y = p[0]
-            if cap == "round":
-                discs.append((x, y))
-            elif cap == "square":
-                pieces.append([(x - h, y - h), (x + h, y - h), (x + h, y + h), (x - h, y + h)])
-            continue
-        n = len(p)
-        segs = [(p[i], p[i + 1]) for i in range(n - 1)] + ([(p[-1], p[0])] if closed else [])
-        units = []
-        for a, b in segs:
-            dx, dy = b[0] - a[0], b[1] - a[1]
-            ln = math.hypot(dx, dy)
-            units.append((dx / ln, dy / ln))
-        for (a, b), (ux, uy) in zip(segs, units):
-            nx, ny = -uy * h, ux * h
-            pieces.append([(a[0] + nx, a[1] + ny), (b[0] + nx, b[1] + ny), (b[0] - nx, b[1] - ny),
-                           (a[0] - nx, a[1] - ny)])
-        # joins: at every interior vertex, and all round when closed
-        verts = range(n) if closed else range(1, n - 1)
-        for i in verts:
-            d1 = units[i - 1] if i > 0 else units[-1]
-            d2 = units[i] if i < len(units) else units[0]
-            v = p[i]
-            cross = d1[0] * d2[1] - d1[1] * d2[0]
-            dot = d1[0] * d2[0] + d1[1] * d2[1]
-            if join == "round":
-                discs.append(v)
-                continue
-            if cross == 0 and dot > 0:
-                continue
-            s = -1.0 if cross > 0 else 1.0
-            o1 = (s * -d1[1], s * d1[0])
-            o2 = (s * -d2[1], s * d2[0])
-            a1 = (v[0] + o1[0] * h, v[1] + o1[1] * h)
-            a2 = (v[0] + o2[0] * h, v[1] + o2[1] * h)
-            # theta, the angle between the segments: cos theta = -d1.d2;
-            # SVG's ratio 1/sin(theta/2) = sqrt(2 / (1 - cos theta))
-            if join == "miter" and 1 + dot > 0 and 2 <= limit * limit * (1 + dot):
-                m = h / (1 + o1[0] * o2[0] + o1[1] * o2[1])
-                tip = (v[0] + (o1[0] + o2[0]) * m, v[1] + (o1[1] + o2[1]) * m)
-                pieces.append([v, a1, tip, a2])
-            else:
-                pieces.append([v, a1, a2])
-        if not closed:
-            for end, (ux, uy) in ((p[0], (-units[0][0], -units[0][1])), (p[-1], units[-1])):
-                if cap == "round":
-                    discs.append(end)
-                elif cap == "square":
-                    nx, ny = -uy * h, ux * h
-                    ex, ey = end[0] + ux * h, end[1] + uy * h
-                    pieces.append([(end[0] + nx, end[1] + ny), (ex + nx, ey + ny), (ex - nx, ey - ny),
-                                   (end[0] - nx, end[1] - ny)])
-    for ring in pieces:
-        sa = _area2(ring)
-        if sa == 0:
-            continue
-        if sa < 0:
-            ring = ring[::-1]
-        out.move_to(*ring[0])
-        for q in ring[1:]:
-            out.line_to(*q)
-        out.close()
-    for x, y in discs:
-        # two half circles; sweep chosen so that the disc turns as the
-        # pieces do (positive shoelace area in (x, y), y down: clockwise
-        # on screen, SVG's sweep=1)
-        out.move_to(x + h, y).arc_to(h, h, 0, False, True, x - h, y).arc_to(h, h, 0, False, True, x + h, y)
-        out.close()
+    if not path._verbs:
+        return out
+    # the grid: the finest 1/2**b pixel (b <= 16) holding the points and
+    # the outline (the width, a miter's tip at miter_limit times it)
+    pts = np.array(path._pts, dtype=np.float64).reshape(-1, 2)
+    reach = w / 2 * max(limit if join == "miter" else 1.0, math.sqrt(2)) + 1
+    ext = float(np.abs(pts).max()) + reach
+    bits = min(lib.RAST_MAX_SUBPIXEL_BITS, math.floor(math.log2(lib.RAST_COORD_MAX / ext)))
+    if bits < 0:
+        raise InputError("geometry: the stroke reaches %.6g pixels from the origin, past the range +-%d"
+                         % (ext, lib.RAST_COORD_MAX))
+    one = float(1 << bits)
+    style = ffi.new("rast_stroke_style *")
+    style.width = max(0, min(lib.RAST_COORD_MAX, int(math.floor(w * one + 0.5))))
+    if style.width < 1:
+        return out  # narrower than one grid step: nothing
+    style.join, style.cap = _JOINS[join], _CAPS[cap]
+    style.miter_limit = min(2 ** 31 - 1, int(math.floor(limit * 65536 + 0.5)))
+    style.tolerance = max(1, min(lib.RAST_COORD_MAX, int(math.floor(tol * one))))
+    keep = []
+    if dashes is not None:
+        units = [int(math.floor(v * one + 0.5)) for v in dashes]
+        if max(units) > lib.RAST_COORD_MAX:
+            raise InputError("dash: a length past %.6g pixels" % (lib.RAST_COORD_MAX / one))
+        if not any(units):
+            raise InputError("dash: %r; every length is below one grid step (1/%d px)" % (dash, 1 << bits))
+        period = sum(units) * (2 if len(units) % 2 else 1)
+        arr = np.array(units, dtype=np.int32)
+        keep.append(arr)
+        style.dash = ffi.cast("int32_t *", ffi.from_buffer(arr))
+        style.ndash = len(units)
+        style.dash_offset = int(math.floor(off * one + 0.5)) % period
+    fixed, verbs = path._fixed(bits)
+    cpath = ffi.new("rast_path *")
+    cpath.verbs = ffi.from_buffer("uint8_t[]", verbs)
+    cpath.nverbs = len(verbs)
+    cpath.points = ffi.cast("rast_point *", ffi.from_buffer(fixed)) if len(fixed) else ffi.NULL
+    cpath.npoints = len(fixed)
+    np_, nr = ffi.new("uint32_t *"), ffi.new("uint32_t *")
+    st = lib.rast_path_stroke_size(cpath, style, np_, nr)
+    if st == lib.RAST_E_TOO_MANY:
+        raise InputError("geometry: the stroke's outline has more than %d vertices" % lib.RAST_MAX_POINTS)
+    if st != lib.RAST_OK:
+        raise InputError("geometry: %s" % ffi.string(lib.rast_status_str(st)).decode())
+    ring_pts = np.empty((max(np_[0], 1), 2), dtype=np.int32)
+    sizes = np.empty(max(nr[0], 1), dtype=np.uint32)
+    poly = ffi.new("rast_polygon *")
+    st = lib.rast_path_stroke(cpath, style, ffi.cast("rast_point *", ffi.from_buffer(ring_pts)), np_[0],
+                              ffi.from_buffer("uint32_t[]", sizes), nr[0], poly)
+    if st != lib.RAST_OK:  # pragma: no cover - the sizes came from the same path
+        raise InputError("geometry: %s" % ffi.string(lib.rast_status_str(st)).decode())
+    n, r = np_[0], nr[0]
+    sizes = sizes[:r]
+    sizes = sizes[sizes > 0].astype(np.int64)
+    if not n:
+        return out
+    vs = np.full(n, LINE, dtype=np.uint8)
+    starts = np.concatenate([[0], np.cumsum(sizes[:-1])])
+    vs[starts] = MOVE
+    vs = np.insert(vs, starts + sizes, lib.RAST_PATH_CLOSE)  # a CLOSE ends each ring
+    out._verbs = vs.tolist()
+    out._pts = [tuple(p) for p in (ring_pts[:n].astype(np.float64) / one).tolist()]
     return out

@@ -51,6 +51,7 @@ link firmware_min firmware_min_conf.h examples/firmware_min.c entry.o "--specs=n
 min=$text
 link firmware_tri firmware_tri_conf.h examples/firmware_tri.c entry.o "--specs=nano.specs --specs=nosys.specs"
 link firmware_lines firmware_lines_conf.h examples/firmware_lines.c entry.o "--specs=nano.specs --specs=nosys.specs"
+link firmware_gauge firmware_gauge_conf.h examples/firmware_gauge.c entry.o "--specs=nano.specs --specs=nosys.specs"
 link display_rgb565 display_rgb565_conf.h examples/display_rgb565.c startup.o "--specs=rdimon.specs"
 link display_rgb565_full - examples/display_rgb565.c startup.o "--specs=rdimon.specs"
 

@@ -41,7 +41,7 @@ fi
 # The firmware examples (examples/firmware_*.c), each with the library cut
 # by its own configuration header, on the same board: the picture hash
 # each prints must equal the one the same program prints on this machine.
-for app in firmware_min firmware_tri firmware_lines; do
+for app in firmware_min firmware_tri firmware_lines firmware_gauge; do
   def="-DFIRMWARE_PRINT -DRAST_CONFIG_HEADER=\"${app}_conf.h\""
   # shellcheck disable=SC2086
   arm-none-eabi-gcc $cflags $def -Iexamples -Ibuild/single "examples/$app.c" build/single/rastrum.c \

@@ -79,7 +79,7 @@ uint32_t rast__isqrt_ceil(uint64_t v)
 
 /* The number of edges of a curve of degree d (2 or 3) with control points
  * p[0 .. d] at tolerance tol (step 4 above). */
-static uint32_t curve_edges(const rast_point *p, int d, int32_t tol)
+uint32_t rast__curve_edges(const rast_point *p, int d, int32_t tol)
 {
     uint64_t dd = 0, m, need, q = (uint64_t)4 * (uint64_t)tol - 3;
     uint32_t n;
@@ -124,6 +124,20 @@ static int32_t eval_coord(const int32_t *c, int d, uint32_t i, uint32_t n)
         rast__wide_floordiv(num, 2 * den, &q, &r);
         return c[0] + (int32_t)q;
     }
+}
+
+rast_point rast__curve_point(const rast_point *p, int d, uint32_t i, uint32_t n)
+{
+    int32_t xs[4], ys[4];
+    rast_point w;
+    int j;
+    for (j = 0; j <= d; j++) {
+        xs[j] = p[j].x;
+        ys[j] = p[j].y;
+    }
+    w.x = eval_coord(xs, d, i, n);
+    w.y = eval_coord(ys, d, i, n);
+    return w;
 }
 
 static int in_range(rast_point p)
@@ -210,7 +224,7 @@ rast_status rast__path_flatten(const rast_path *path, int32_t tolerance, rast__f
                 int j;
                 q[0] = cur;
                 for (j = 1; j <= d; j++) q[j] = *p++;
-                n = curve_edges(q, d, tolerance);
+                n = rast__curve_edges(q, d, tolerance);
                 total += n;
                 if (total > RAST_MAX_POINTS) return RAST_E_TOO_MANY;
                 if (f->points) {

@@ -22,6 +22,11 @@ typedef struct rast__flat {
  * RAST_E_ARG, RAST_E_RANGE, RAST_E_TOO_MANY), then flatten it into *f
  * (counts from 0; f->points NULL: count only).  The caller sized f's
  * arrays by a counting call. */
+/* A curve of degree d (2 or 3) from p[0] with controls p[1 .. d]: its edge
+ * count at tolerance tol, and its point i of n, rounded (as flattened). */
+uint32_t rast__curve_edges(const rast_point *p, int d, int32_t tol);
+rast_point rast__curve_point(const rast_point *p, int d, uint32_t i, uint32_t n);
+
 rast_status rast__path_flatten(const rast_path *path, int32_t tolerance, rast__flat *f);
 
 #endif

@@ -1,0 +1,727 @@
+/*
+ * stroke.c - a path's stroke as rings to fill non-zero (rast_path_stroke;
+ * the contract is in rastrum.h under "strokes", the user's page
+ * docs/paths.md).
+ *
+ * Pieces.  Each subpath's flattened polyline (curves at `tolerance`,
+ * path/flatten.c, consecutive equal points dropped) gives, with d = b - a
+ * a segment's vector and o = N(d) its offset (below): the parallelogram
+ * a - o, b - o, b + o, a + o; at a vertex v between d1 and d2, on the
+ * outer side, p1 = -+N(d1), p2 = -+N(d2): bevel v, v + s, v + e; miter v,
+ * v + s, tip, v + e; round v, v + s, arc vertices, v + e, where (s, e) is
+ * (p1, p2) for a counter-clockwise turn (cross(d1, d2) > 0, exact) and
+ * (p2, p1) for a clockwise one, so that the sweep s -> e runs
+ * counter-clockwise over the outer side; caps: square b - o, b + x - o,
+ * b + x + o, b + o (x: half the width beyond the end), round the half
+ * disc b - o, arc, b + o.
+ * (x, y) sense (positive shoelace area) and is star-shaped about v (or b):
+ * its vertices' angles about v strictly increase over less than a turn
+ * (arc vertices that would not advance are dropped).  So each piece has
+ * winding number 1 inside and 0 outside, the sum over pieces is >= 1
+ * exactly on their union, and a non-zero fill draws the union: every
+ * filler, crossings once.
+ *
+ * The offset N(d), proven.  The ideal offset is (-dy, dx) h / L, h =
+ * w / 2, L = |d|.  Each coordinate's magnitude is c = w |a| / (2 L) (a =
+ * dy or dx) and c^2 = w^2 a^2 / (4 L^2); with q = floor(w^2 a^2 / L^2) =
+ * floor((2c)^2) (128-bit product, one division), r = floor(sqrt(q)) =
+ * floor(2c) (floor(sqrt(floor(x))) = floor(sqrt(x))), and (r + 1) >> 1 =
+ * floor((floor(2c) + 1) / 2) = floor(c + 1/2): c rounded to nearest,
+ * exactly.  So each coordinate is off by <= 1/2 u, the offset point by <=
+ * sqrt(2)/2 u, and N(-d) = -N(d) exactly (signs applied to magnitudes).
+ * The rings' other polygonal vertices are sums of a path vertex and such
+ * offsets: within sqrt(2)/2 u of the ideal.  Square caps reuse o turned a
+ * quarter (x = (o.y, -o.x)): within sqrt(2) u.
+ *
+ * The miter.  The limit: SVG's ratio 1/sin(theta/2) <= L, that is
+ * L^2 (1 + cos phi) >= 2, phi the turn (cos phi = u1.u2 for the unit
+ * directions); decided with unit normals N at width 2^30 (exact to
+ * 2^-30 relative) in 128 bits: a ratio within ~2^-28 of the limit may go
+ * either way.  The tip: v + (p1 + p2) H / (H + p1.p2), H = h^2, which is
+ * the offsets' intersection for exact p1, p2 of length h; with the
+ * rounded ones it moves by less than (L + 1) u for a ratio <= L.
+ *
+ * Round parts, proven.  The circle of radius h is drawn through the
+ * points h ((m^2 - k^2), 2 k m) / (m^2 + k^2), k = 0 .. m - 1, and their
+ * quarter turns (4m points, exactly on the circle before rounding: the
+ * rational parametrisation t = k/m, angle 2 atan(t)).  Angle steps are
+ * 2 (atan((k+1)/m) - atan(k/m)) <= 2/m, so a chord is within h (2/m)^2 / 8
+ * = w / (4 m^2) of its arc, and the rounding adds < 3/4 u (as flatten.c,
+ * step 3): the polygon is within w / (4 m^2) + 3/4 u of the circle both
+ * ways, <= T (the tolerance, in u) iff w <= m^2 (4T - 3); this file takes
+ * m = ceil(sqrt(ceil(w / (4T - 3)))), at most max(1, floor(w / 4)).  That
+ * cap keeps neighbouring points >= 2 u apart, so their rounded positions
+ * still advance in angle (cross products about the centre stay > 0; the
+ * drop rule above then never fires for w >= 8); where it binds (w <
+ * 8 / (4T - 3), so w < 8), m >= 1 and the error is at most h (1 - cos
+ * (pi/4)) + 3/4 < 2 u for w < 8 with m = 1, w / (4 m^2) + 3/4 < 2 u else:
+ * hence max(T, 2 u).  A sector's ends v + s, v + e are offsets as above;
+ * its arc points are the circle's points strictly between them.
+ *
+ * Dashes.  A segment's length is rounded to whole units, Lr = round(L)
+ * (>= 1), and the point at s along it is a + round(d s / Lr) per
+ * coordinate: exactly a at s = 0 and b at s = Lr, within 1/2 u per
+ * coordinate of the segment.  The pattern's position thus drifts by at
+ * most 1/2 u per segment against the exact arc length.
+ *
+ * Ranges.  Points and offsets are within +-2^27, differences within
+ * +-2^29; w^2 < 2^54, a^2 < 2^58: 128-bit products, quotients below 2^58.
+ * Every outline vertex is checked against RAST_COORD_MAX as it is made.
+ */
+#include "path.h"
+#include "../base/wide.h"
+
+#define ST_MAXDASH 65536u
+
+/* ---- the output: counted (pts NULL) or stored -------------------------- */
+typedef struct st_out {
+    rast_point *pts;
+    uint32_t *sizes;
+    uint64_t np, nr;
+    rast_status err;
+} st_out;
+
+static void st_ring_begin(st_out *o)
+{
+    if (o->pts) o->sizes[o->nr] = 0;
+    o->nr++;
+}
+
+static void st_put(st_out *o, int64_t x, int64_t y)
+{
+    if (x < -RAST_COORD_MAX || x > RAST_COORD_MAX || y < -RAST_COORD_MAX || y > RAST_COORD_MAX) {
+        if (o->err == RAST_OK) o->err = RAST_E_RANGE;
+        return;
+    }
+    if (o->np >= RAST_MAX_POINTS) {
+        if (o->err == RAST_OK) o->err = RAST_E_TOO_MANY;
+        return;
+    }
+    if (o->pts && o->err == RAST_OK) {
+        o->pts[o->np].x = (int32_t)x;
+        o->pts[o->np].y = (int32_t)y;
+        o->sizes[o->nr - 1]++;
+    }
+    o->np++;
+}
+
+/* ---- arithmetic ----------------------------------------------------------- */
+static uint32_t st_isqrt_floor(uint64_t v)
+{
+    uint32_t c = rast__isqrt_ceil(v);
+    return (uint64_t)c * c > v ? c - 1 : c;
+}
+
+/* round(w |a| / (2 sqrt(l2))) with a's sign (the file's comment). */
+static int64_t st_off_coord(int64_t a, uint64_t l2, int64_t w)
+{
+    int64_t q, r;
+    uint64_t mag = a < 0 ? (uint64_t)(-a) : (uint64_t)a;
+    rast__i128 num = rast__i128_mul(w * w, (int64_t)(mag * mag));
+    rast__wide_floordiv(num, (int64_t)l2, &q, &r);
+    mag = (st_isqrt_floor((uint64_t)q) + 1) >> 1;
+    return a < 0 ? -(int64_t)mag : (int64_t)mag;
+}
+
+typedef struct st_vec {
+    int64_t x, y;
+} st_vec;
+
+/* N(d): the left offset (-dy, dx) w / (2 |d|), rounded per coordinate. */
+static st_vec st_normal(st_vec d, int64_t w)
+{
+    uint64_t l2 = (uint64_t)(d.x * d.x) + (uint64_t)(d.y * d.y);
+    st_vec o;
+    o.x = st_off_coord(-d.y, l2, w);
+    o.y = st_off_coord(d.x, l2, w);
+    return o;
+}
+
+static int64_t st_cross(st_vec a, st_vec b)
+{
+    return a.x * b.y - a.y * b.x;
+}
+
+/* floor(num / den + 1/2) for den > 0 */
+static int64_t st_round_div128(rast__i128 num, int64_t den)
+{
+    int64_t q, r;
+    num = rast__i128_add(rast__i128_shl(num, 1), rast__i128_from(den));
+    rast__wide_floordiv(num, 2 * den, &q, &r);
+    return q;
+}
+
+static int64_t st_round_div(int64_t num, int64_t den)
+{
+    return rast__floordiv(2 * num + den, 2 * den);
+}
+
+/* ---- the stroker's state ------------------------------------------------------ */
+typedef struct st_ctx {
+    const rast_stroke_style *style;
+    int64_t w;
+    uint32_t m; /* round parts: 4m points on the circle */
+    st_out out;
+    /* the pen: one open or closed polyline */
+    uint32_t n;           /* distinct points so far */
+    st_vec p0, prev, dfirst, dprev, hint;
+    int has_hint;
+} st_ctx;
+
+/* The circle's point j (0 .. 4m - 1), relative to the centre. */
+static st_vec st_circle_point(const st_ctx *c, uint32_t j)
+{
+    int64_t m = c->m, k = (int64_t)(j % c->m), den = 2 * (m * m + k * k);
+    st_vec p, r;
+    p.x = st_round_div(c->w * (m * m - k * k), den);
+    p.y = st_round_div(c->w * (2 * k * m), den);
+    switch ((j / c->m) & 3u) {
+    case 0: r = p; break;
+    case 1: r.x = -p.y; r.y = p.x; break;
+    case 2: r.x = -p.x; r.y = -p.y; break;
+    default: r.x = p.y; r.y = -p.x; break;
+    }
+    return r;
+}
+
+/* The circle's points strictly between s and e counter-clockwise (the
+ * sweep s -> e at most a half turn), each advancing in angle. */
+static void st_arc(st_ctx *c, st_vec v, st_vec s, st_vec e)
+{
+    uint32_t n4 = 4 * c->m, j0 = 0, t;
+    st_vec last = s;
+    /* start after a point outside the open sweep (there are >= 2) */
+    for (j0 = 0; j0 < n4; j0++) {
+        st_vec p = st_circle_point(c, j0);
+        if (!(st_cross(s, p) > 0 && st_cross(p, e) > 0)) break;
+    }
+    for (t = 1; t <= n4; t++) {
+        st_vec p = st_circle_point(c, (j0 + t) % n4);
+        if (st_cross(s, p) > 0 && st_cross(p, e) > 0 && st_cross(last, p) > 0 && st_cross(p, e) > 0) {
+            st_put(&c->out, v.x + p.x, v.y + p.y);
+            last = p;
+        }
+    }
+}
+
+static void st_piece4(st_ctx *c, st_vec a, st_vec b, st_vec o)
+{
+    st_ring_begin(&c->out);
+    st_put(&c->out, a.x - o.x, a.y - o.y);
+    st_put(&c->out, b.x - o.x, b.y - o.y);
+    st_put(&c->out, b.x + o.x, b.y + o.y);
+    st_put(&c->out, a.x + o.x, a.y + o.y);
+}
+
+/* The half disc beyond b, the path arriving along d (offset o = N(d)). */
+static void st_half_disc(st_ctx *c, st_vec b, st_vec o)
+{
+    st_vec mo;
+    mo.x = -o.x;
+    mo.y = -o.y;
+    st_ring_begin(&c->out);
+    st_put(&c->out, b.x - o.x, b.y - o.y);
+    st_arc(c, b, mo, o);
+    st_put(&c->out, b.x + o.x, b.y + o.y);
+}
+
+/* A cap at b, the path arriving along d. */
+static void st_cap(st_ctx *c, st_vec b, st_vec d)
+{
+    st_vec o = st_normal(d, c->w), x;
+    if (c->style->cap == RAST_CAP_SQUARE) {
+        x.x = o.y;
+        x.y = -o.x;
+        st_ring_begin(&c->out);
+        st_put(&c->out, b.x - o.x, b.y - o.y);
+        st_put(&c->out, b.x + x.x - o.x, b.y + x.y - o.y);
+        st_put(&c->out, b.x + x.x + o.x, b.y + x.y + o.y);
+        st_put(&c->out, b.x + o.x, b.y + o.y);
+    } else if (c->style->cap == RAST_CAP_ROUND) {
+        st_half_disc(c, b, o);
+    }
+}
+
+/* A zero-length subpath at p. */
+static void st_dot(st_ctx *c, st_vec p)
+{
+    if (c->style->cap == RAST_CAP_ROUND) {
+        uint32_t n4 = 4 * c->m, j;
+        st_vec last = st_circle_point(c, n4 - 1);
+        st_ring_begin(&c->out);
+        for (j = 0; j < n4; j++) {
+            st_vec q = st_circle_point(c, j);
+            if (st_cross(last, q) > 0) {
+                st_put(&c->out, p.x + q.x, p.y + q.y);
+                last = q;
+            }
+        }
+    } else if (c->style->cap == RAST_CAP_SQUARE) {
+        st_vec d, o;
+        if (c->has_hint) {
+            d = c->hint;
+        } else {
+            d.x = 1;
+            d.y = 0;
+        }
+        o = st_normal(d, c->w);
+        d.x = -o.y;
+        d.y = o.x; /* d turned back: -x of st_cap() */
+        st_ring_begin(&c->out);
+        st_put(&c->out, p.x + d.x - o.x, p.y + d.y - o.y);
+        st_put(&c->out, p.x - d.x - o.x, p.y - d.y - o.y);
+        st_put(&c->out, p.x - d.x + o.x, p.y - d.y + o.y);
+        st_put(&c->out, p.x + d.x + o.x, p.y + d.y + o.y);
+    }
+}
+
+/* Is SVG's ratio 1/sin(theta/2) within the limit?  L^2 (1 + u1.u2) >= 2
+ * with unit normals at 2^29 (the file's comment). */
+static int st_miter_ok(const st_ctx *c, st_vec d1, st_vec d2)
+{
+    const int64_t W = (int64_t)1 << 30; /* h = 2^29 */
+    st_vec u1 = st_normal(d1, W), u2 = st_normal(d2, W);
+    int64_t dot = u1.x * u2.x + u1.y * u2.y; /* ~ 2^58 cos phi */
+    int64_t l = c->style->miter_limit;
+    rast__i128 lhs = rast__i128_mul(l * l, ((int64_t)1 << 58) + dot);
+    rast__i128 rhs, diff;
+    rhs.hi = (uint64_t)1 << 27; /* 2^91 = 2 * 2^58 * 2^32 */
+    rhs.lo = 0;
+    diff = rast__i128_add(lhs, rast__i128_neg(rhs));
+    return (int64_t)diff.hi >= 0;
+}
+
+/* A join at v between d1 (arriving) and d2 (leaving). */
+static void st_join(st_ctx *c, st_vec v, st_vec d1, st_vec d2)
+{
+    int64_t t = st_cross(d1, d2);
+    st_vec o1 = st_normal(d1, c->w), o2 = st_normal(d2, c->w), p1, p2, s, e;
+    int kind = c->style->join;
+    if (t == 0) {
+        if (d1.x * d2.x + d1.y * d2.y > 0) return; /* straight on */
+        if (kind == RAST_JOIN_ROUND) st_half_disc(c, v, o1); /* a turn back: half a disc */
+        return;                                       /* miter, bevel: nothing */
+    }
+    if (t > 0) { /* turning counter-clockwise: the outer side is -o */
+        p1.x = -o1.x;
+        p1.y = -o1.y;
+        p2.x = -o2.x;
+        p2.y = -o2.y;
+    } else {
+        p1 = o1;
+        p2 = o2;
+    }
+    if (t > 0) { /* the outer arc runs counter-clockwise from p1 to p2 */
+        s = p1;
+        e = p2;
+    } else {
+        s = p2;
+        e = p1;
+    }
+    /* Rounded offsets may cross: near a straight line there is then no
+     * gap to fill; near a turn back the sweep passes a half turn by a
+     * rounding's angle, which a round join still draws star-shaped (its
+     * arc points in both half planes), a bevel or miter not at all. */
+    if (st_cross(s, e) <= 0 && (d1.x * d2.x + d1.y * d2.y >= 0 || kind != RAST_JOIN_ROUND)) return;
+    st_ring_begin(&c->out);
+    st_put(&c->out, v.x, v.y);
+    st_put(&c->out, v.x + s.x, v.y + s.y);
+    if (kind == RAST_JOIN_ROUND) {
+        st_arc(c, v, s, e);
+    } else if (kind == RAST_JOIN_MITER && st_miter_ok(c, d1, d2)) {
+        /* tip = v + (p1 + p2) H / (H + p1.p2), H = w^2 / 4 */
+        int64_t den = c->w * c->w + 4 * (p1.x * p2.x + p1.y * p2.y);
+        if (den > 0) {
+            int64_t tx = st_round_div128(rast__i128_mul(p1.x + p2.x, c->w * c->w), den);
+            int64_t ty = st_round_div128(rast__i128_mul(p1.y + p2.y, c->w * c->w), den);
+            st_put(&c->out, v.x + tx, v.y + ty);
+        }
+    }
+    st_put(&c->out, v.x + e.x, v.y + e.y);
+}
+
+/* ---- the pen: one polyline, points streamed in -------------------------- */
+static void st_pen_begin(st_ctx *c)
+{
+    c->n = 0;
+}
+
+static void st_pen_point(st_ctx *c, st_vec q)
+{
+    st_vec d;
+    if (c->n == 0) {
+        c->p0 = c->prev = q;
+        c->n = 1;
+        return;
+    }
+    if (q.x == c->prev.x && q.y == c->prev.y) return;
+    d.x = q.x - c->prev.x;
+    d.y = q.y - c->prev.y;
+    st_piece4(c, c->prev, q, st_normal(d, c->w));
+    if (c->n == 1)
+        c->dfirst = d;
+    else
+        st_join(c, c->prev, c->dprev, d);
+    c->dprev = d;
+    c->prev = q;
+    c->n++;
+}
+
+static void st_pen_end(st_ctx *c, int closed)
+{
+    if (c->n == 0) return;
+    if (c->n == 1) {
+        st_dot(c, c->p0);
+    } else if (closed) {
+        st_vec d;
+        d.x = c->p0.x - c->prev.x;
+        d.y = c->p0.y - c->prev.y;
+        if (d.x || d.y) {
+            st_piece4(c, c->prev, c->p0, st_normal(d, c->w));
+            st_join(c, c->prev, c->dprev, d);
+            c->dprev = d;
+        }
+        st_join(c, c->p0, c->dprev, c->dfirst);
+    } else {
+        st_vec back;
+        back.x = -c->dfirst.x;
+        back.y = -c->dfirst.y;
+        st_cap(c, c->p0, back);
+        st_cap(c, c->prev, c->dprev);
+    }
+    c->n = 0;
+}
+
+/* ---- the path's subpaths, flattened on the fly --------------------------- */
+typedef struct st_it {
+    const rast_path *path;
+    int32_t tol;
+    uint32_t k, pi;     /* next verb, next point */
+    rast_point start, cur;
+    rast_point q[4];
+    int d;
+    uint32_t i, n;      /* a curve in progress: next i (<= n) */
+    int closed, drew;
+} st_it;
+
+/* Position at the next subpath's start *p0; 0 at the path's end. */
+static int st_sub_start(st_it *it, st_vec *p0)
+{
+    const rast_path *path = it->path;
+    it->closed = 0;
+    it->drew = 0;
+    it->i = it->n = 0;
+    for (;;) {
+        int v;
+        if (it->k >= path->nverbs) return 0;
+        v = path->verbs[it->k];
+        if (v == RAST_PATH_MOVE) {
+            it->start = it->cur = path->points[it->pi++];
+            it->k++;
+            break;
+        }
+        if (v != RAST_PATH_CLOSE) {
+            it->cur = it->start; /* a drawing verb after CLOSE */
+            break;
+        }
+        it->k++; /* a CLOSE of nothing */
+    }
+    p0->x = it->start.x;
+    p0->y = it->start.y;
+    return 1;
+}
+
+/* The subpath's next point; 0 at its end (it->closed set by CLOSE). */
+static int st_sub_next(st_it *it, st_vec *p)
+{
+    const rast_path *path = it->path;
+    rast_point w;
+    int v;
+    if (it->i && it->i <= it->n) {
+        w = it->i == it->n ? it->q[it->d] : rast__curve_point(it->q, it->d, it->i, it->n);
+        it->i++;
+        if (it->i > it->n) it->cur = it->q[it->d];
+        p->x = w.x;
+        p->y = w.y;
+        return 1;
+    }
+    if (it->k >= path->nverbs) return 0;
+    v = path->verbs[it->k];
+    if (v == RAST_PATH_MOVE) return 0;
+    it->k++;
+    it->drew = 1;
+    if (v == RAST_PATH_CLOSE) {
+        it->closed = 1;
+        it->cur = it->start;
+        return 0;
+    }
+    if (v == RAST_PATH_LINE) {
+        it->cur = path->points[it->pi++];
+        p->x = it->cur.x;
+        p->y = it->cur.y;
+        return 1;
+    }
+    {
+        int j;
+        it->d = v;
+        it->q[0] = it->cur;
+        for (j = 1; j <= v; j++) it->q[j] = path->points[it->pi++];
+        it->n = rast__curve_edges(it->q, v, it->tol);
+        it->i = 1;
+    }
+    return st_sub_next(it, p);
+}
+
+/* ---- dashes ----------------------------------------------------------------- */
+typedef struct st_dash {
+    uint32_t i;    /* entry (of 2 ndash when ndash is odd) */
+    int64_t left;  /* units left in it */
+} st_dash;
+
+static int64_t st_dash_len(const rast_stroke_style *s, uint32_t i)
+{
+    return s->dash[i % s->ndash];
+}
+
+static uint32_t st_dash_count(const rast_stroke_style *s)
+{
+    return s->ndash & 1u ? 2 * s->ndash : s->ndash;
+}
+
+static st_dash st_dash_start(const rast_stroke_style *s)
+{
+    uint32_t n = st_dash_count(s), i;
+    int64_t period = 0, off;
+    st_dash st;
+    for (i = 0; i < n; i++) period += st_dash_len(s, i);
+    off = s->dash_offset % period;
+    if (off < 0) off += period;
+    i = 0;
+    while (off > st_dash_len(s, i) || (off == st_dash_len(s, i) && off > 0)) {
+        off -= st_dash_len(s, i);
+        i = (i + 1) % n;
+    }
+    st.i = i;
+    st.left = st_dash_len(s, i) - off;
+    return st;
+}
+
+/* Walk one subpath's points through the pattern.  mode 0: all of it;
+ * mode 1: as 0 but the first dash (on at the start) is held back; mode 2:
+ * only the points up to the end of the first dash (the held one), fed to
+ * a pen already drawing.  Returns 1 if the held first dash ended. */
+static int st_dash_walk(st_ctx *c, st_it *it, st_vec start, st_dash ds, int mode, int *on_at_end)
+{
+    const rast_stroke_style *s = c->style;
+    uint32_t n = st_dash_count(s);
+    int holding = mode == 1, first_ended = 0;
+    st_vec a = start, b;
+    int on = !(ds.i & 1u);
+    if (on && mode == 0) {
+        st_pen_begin(c);
+        st_pen_point(c, a);
+    }
+    for (;;) {
+        int more = st_sub_next(it, &b);
+        st_vec d;
+        int64_t lr, pos = 0;
+        if (!more) {
+            if (!it->closed || (start.x == a.x && start.y == a.y)) break;
+            b = start; /* walk the closing segment, then stop */
+            more = 2;
+        }
+        d.x = b.x - a.x;
+        d.y = b.y - a.y;
+        if (!d.x && !d.y) continue;
+        {
+            uint64_t l2 = (uint64_t)(d.x * d.x) + (uint64_t)(d.y * d.y);
+            lr = (int64_t)((st_isqrt_floor(4 * l2) + 1) >> 1);
+            if (lr < 1) lr = 1;
+        }
+        c->hint = d;
+        c->has_hint = 1;
+        for (;;) {
+            st_vec p;
+            if (ds.left > lr - pos) {
+                ds.left -= lr - pos;
+                if (on && !holding) st_pen_point(c, b);
+                break;
+            }
+            pos += ds.left;
+            p.x = a.x + st_round_div(d.x * pos, lr);
+            p.y = a.y + st_round_div(d.y * pos, lr);
+            if (on) {
+                if (holding) {
+                    holding = 0;
+                    first_ended = 1;
+                } else {
+                    st_pen_point(c, p);
+                    st_pen_end(c, 0);
+                    if (mode == 2) return 1;
+                }
+            } else {
+                st_pen_begin(c);
+                st_pen_point(c, p);
+            }
+            ds.i = (ds.i + 1) % n;
+            ds.left = st_dash_len(s, ds.i);
+            on = !on;
+        }
+        a = b;
+        if (more == 2) break;
+    }
+    *on_at_end = on && !holding;
+    if (holding) return 0;
+    return first_ended;
+}
+
+static void st_stroke_subpath(st_ctx *c, st_it *it, st_vec p0)
+{
+    const rast_stroke_style *s = c->style;
+    c->has_hint = 0;
+    if (!s->dash || !s->ndash) {
+        st_vec p;
+        st_pen_begin(c);
+        st_pen_point(c, p0);
+        while (st_sub_next(it, &p)) st_pen_point(c, p);
+        if (c->n == 1 && !it->drew) c->n = 0; /* a MOVE alone */
+        st_pen_end(c, it->closed);
+        return;
+    }
+    {
+        st_it saved = *it;
+        st_dash ds = st_dash_start(s);
+        int on0 = !(ds.i & 1u), on_end = 0, ended;
+        /* is the subpath closed?  walk it once uncounted to know: cheap
+         * enough, and it keeps the pen's order simple */
+        st_it probe = *it;
+        st_vec p;
+        int closed, any = 0;
+        while (st_sub_next(&probe, &p))
+            if (p.x != p0.x || p.y != p0.y) any = 1;
+        closed = probe.closed;
+        if (!any) { /* zero length: a dot where the pattern is on */
+            if (probe.drew && on0) {
+                st_pen_begin(c);
+                st_pen_point(c, p0);
+                st_pen_end(c, 0);
+            }
+            *it = probe;
+            return;
+        }
+        if (!closed || !on0) {
+            ended = st_dash_walk(c, it, p0, ds, 0, &on_end);
+            if (on_end) st_pen_end(c, 0);
+            (void)ended;
+            return;
+        }
+        ended = st_dash_walk(c, it, p0, ds, 1, &on_end);
+        if (!ended) { /* one dash all round: the closed subpath */
+            st_it again = saved;
+            st_pen_begin(c);
+            st_pen_point(c, p0);
+            while (st_sub_next(&again, &p)) st_pen_point(c, p);
+            st_pen_end(c, 1);
+            *it = again;
+            return;
+        }
+        if (!on_end) {
+            st_pen_begin(c);
+            st_pen_point(c, p0);
+        }
+        {
+            st_it again = saved;
+            int dummy;
+            if (!st_dash_walk(c, &again, p0, ds, 2, &dummy)) st_pen_end(c, 0);
+        }
+    }
+}
+
+/* ---- entry points ------------------------------------------------------------- */
+static rast_status st_check_style(const rast_stroke_style *s)
+{
+    uint32_t k;
+    int any = 0;
+    if (!s) return RAST_E_NULL;
+    if (s->width < 1 || s->width > RAST_COORD_MAX) return RAST_E_ARG;
+    if (s->tolerance < 1 || s->tolerance > RAST_COORD_MAX) return RAST_E_ARG;
+    if (s->join < 0 || s->join > RAST_JOIN_BEVEL || s->cap < 0 || s->cap > RAST_CAP_SQUARE)
+        return RAST_E_ARG;
+    if (s->miter_limit < 65536) return RAST_E_ARG;
+    if (s->ndash) {
+        if (!s->dash) return RAST_E_NULL;
+        if (s->ndash > ST_MAXDASH) return RAST_E_ARG;
+        for (k = 0; k < s->ndash; k++) {
+            if (s->dash[k] < 0) return RAST_E_ARG;
+            if (s->dash[k]) any = 1;
+        }
+        if (!any) return RAST_E_ARG;
+    }
+    return RAST_OK;
+}
+
+static rast_status st_stroke_run(const rast_path *path, const rast_stroke_style *style, st_out *out)
+{
+    rast__flat f;
+    st_ctx c;
+    st_it it;
+    st_vec p0;
+    uint64_t need;
+    rast_status st = st_check_style(style);
+    if (st != RAST_OK) return st;
+    memset(&f, 0, sizeof f);
+    st = rast__path_flatten(path, style->tolerance, &f); /* checks the path */
+    if (st != RAST_OK) return st;
+    memset(&c, 0, sizeof c);
+    c.style = style;
+    c.w = style->width;
+    need = ((uint64_t)c.w + 4 * (uint64_t)style->tolerance - 4) / (4 * (uint64_t)style->tolerance - 3);
+    c.m = rast__isqrt_ceil(need);
+    if (c.m > (uint32_t)(c.w / 4)) c.m = (uint32_t)(c.w / 4);
+    if (c.m < 1) c.m = 1;
+    c.out = *out;
+    memset(&it, 0, sizeof it);
+    it.path = path;
+    it.tol = style->tolerance;
+    while (st_sub_start(&it, &p0)) {
+        st_stroke_subpath(&c, &it, p0);
+        if (c.out.err != RAST_OK) return c.out.err;
+    }
+    *out = c.out;
+    return RAST_OK;
+}
+
+rast_status rast_path_stroke_size(const rast_path *path, const rast_stroke_style *style,
+                                  uint32_t *npoints, uint32_t *nrings)
+{
+    st_out o;
+    rast_status st;
+    if (!npoints || !nrings) return RAST_E_NULL;
+    memset(&o, 0, sizeof o);
+    st = st_stroke_run(path, style, &o);
+    if (st != RAST_OK) return st;
+    *npoints = (uint32_t)o.np;
+    *nrings = (uint32_t)o.nr;
+    return RAST_OK;
+}
+
+rast_status rast_path_stroke(const rast_path *path, const rast_stroke_style *style,
+                             rast_point *points, uint32_t max_points, uint32_t *ring_sizes,
+                             uint32_t max_rings, rast_polygon *polygon)
+{
+    st_out o;
+    uint32_t np, nr;
+    rast_status st = rast_path_stroke_size(path, style, &np, &nr);
+    if (st != RAST_OK) return st;
+    if (!points || !ring_sizes || !polygon) return RAST_E_NULL;
+    if (np > max_points || nr > max_rings) return RAST_E_SCRATCH;
+    memset(&o, 0, sizeof o);
+    o.pts = points;
+    o.sizes = ring_sizes;
+    st = st_stroke_run(path, style, &o);
+    if (st != RAST_OK) return st;
+    polygon->points = points;
+    polygon->ring_sizes = ring_sizes;
+    polygon->nrings = nr;
+    return RAST_OK;
+}

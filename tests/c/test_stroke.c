@@ -1,0 +1,283 @@
+/*
+ * test_stroke.c - rast_path_stroke: bad input refused with nothing
+ * written; a segment's parallelogram, square caps and a right angle's
+ * miter exactly; the miter limit at SVG's ratio; the offsets rounded to
+ * nearest (checked against the integer definition); dashes on a straight
+ * line exactly, and a dash over a vertex keeping its join; zero-length
+ * subpaths; and on random polylines and curves, every join x cap, solid
+ * and dashed, rastrum.h's bound at sample points (tests/c/stroke_check.h).
+ * The pixel-exact check against an independent referee is
+ * tests/test_stroke.py.
+ */
+#include <string.h>
+
+#include "check.h"
+#include "rastrum.h"
+#include "stroke_check.h"
+
+#define MAXP 100000
+static rast_point out[MAXP], flat[MAXP];
+static uint32_t rings[MAXP / 3], frings[64];
+
+static rast_stroke_style style(int32_t w, int join, int cap)
+{
+    rast_stroke_style s;
+    memset(&s, 0, sizeof s);
+    s.width = w;
+    s.join = join;
+    s.cap = cap;
+    s.miter_limit = 4 * 65536;
+    s.tolerance = 1;
+    return s;
+}
+
+static rast_status run(const uint8_t *verbs, uint32_t nv, const rast_point *pts, uint32_t np,
+                       const rast_stroke_style *s, uint32_t *onp, uint32_t *onr)
+{
+    rast_path path;
+    rast_polygon poly;
+    rast_status st;
+    path.verbs = verbs;
+    path.nverbs = nv;
+    path.points = pts;
+    path.npoints = np;
+    st = rast_path_stroke_size(&path, s, onp, onr);
+    if (st != RAST_OK) return st;
+    if (*onp > MAXP || *onr > MAXP / 3) return RAST_E_SCRATCH;
+    st = rast_path_stroke(&path, s, out, MAXP, rings, MAXP / 3, &poly);
+    if (st == RAST_OK) CHECK(poly.nrings == *onr && poly.points == out);
+    return st;
+}
+
+static void test_bad_input(void)
+{
+    static const uint8_t v[2] = {RAST_PATH_MOVE, RAST_PATH_LINE};
+    static const rast_point p[2] = {{0, 0}, {100, 0}};
+    int32_t dneg[2] = {5, -1}, dzero[2] = {0, 0};
+    rast_path path = {v, 2, p, 2};
+    rast_stroke_style s = style(10, RAST_JOIN_MITER, RAST_CAP_BUTT), b;
+    rast_polygon poly = {NULL, NULL, 777};
+    uint32_t np = 99, nr = 99;
+    CHECK(rast_path_stroke_size(NULL, &s, &np, &nr) == RAST_E_NULL);
+    CHECK(rast_path_stroke_size(&path, NULL, &np, &nr) == RAST_E_NULL);
+    CHECK(rast_path_stroke_size(&path, &s, NULL, &nr) == RAST_E_NULL);
+    b = s; b.width = 0;
+    CHECK(rast_path_stroke_size(&path, &b, &np, &nr) == RAST_E_ARG);
+    b = s; b.width = RAST_COORD_MAX + 1;
+    CHECK(rast_path_stroke_size(&path, &b, &np, &nr) == RAST_E_ARG);
+    b = s; b.tolerance = 0;
+    CHECK(rast_path_stroke_size(&path, &b, &np, &nr) == RAST_E_ARG);
+    b = s; b.join = 3;
+    CHECK(rast_path_stroke_size(&path, &b, &np, &nr) == RAST_E_ARG);
+    b = s; b.cap = -1;
+    CHECK(rast_path_stroke_size(&path, &b, &np, &nr) == RAST_E_ARG);
+    b = s; b.miter_limit = 65535;
+    CHECK(rast_path_stroke_size(&path, &b, &np, &nr) == RAST_E_ARG);
+    b = s; b.ndash = 2; b.dash = NULL;
+    CHECK(rast_path_stroke_size(&path, &b, &np, &nr) == RAST_E_NULL);
+    b.dash = dneg;
+    CHECK(rast_path_stroke_size(&path, &b, &np, &nr) == RAST_E_ARG);
+    b.dash = dzero;
+    CHECK(rast_path_stroke_size(&path, &b, &np, &nr) == RAST_E_ARG);
+    CHECK(np == 99 && nr == 99);
+    {
+        rast_point far[2] = {{RAST_COORD_MAX - 100, 0}, {RAST_COORD_MAX, 0}};
+        rast_path fpath = {v, 2, far, 2};
+        b = s; b.cap = RAST_CAP_SQUARE; /* the outline leaves the range */
+        CHECK(rast_path_stroke_size(&fpath, &b, &np, &nr) == RAST_E_RANGE);
+        CHECK(rast_path_stroke(&fpath, &b, out, MAXP, rings, 100, &poly) == RAST_E_RANGE);
+        b.cap = RAST_CAP_BUTT;
+        CHECK(rast_path_stroke_size(&fpath, &b, &np, &nr) == RAST_OK);
+    }
+    CHECK(rast_path_stroke_size(&path, &s, &np, &nr) == RAST_OK && np == 4 && nr == 1);
+    CHECK(rast_path_stroke(&path, &s, out, 3, rings, 1, &poly) == RAST_E_SCRATCH);
+    CHECK(rast_path_stroke(&path, &s, out, 4, rings, 0, &poly) == RAST_E_SCRATCH);
+    CHECK(rast_path_stroke(&path, &s, NULL, 4, rings, 1, &poly) == RAST_E_NULL);
+    CHECK(poly.nrings == 777);
+    path.npoints = 1; /* the path's own errors */
+    CHECK(rast_path_stroke_size(&path, &s, &np, &nr) == RAST_E_ARG);
+}
+
+static int ring_is(uint32_t base, const int32_t *xy, uint32_t n)
+{
+    uint32_t k;
+    for (k = 0; k < n; k++)
+        if (out[base + k].x != xy[2 * k] || out[base + k].y != xy[2 * k + 1]) return 0;
+    return 1;
+}
+
+static void test_exact_pieces(void)
+{
+    static const uint8_t v2[2] = {RAST_PATH_MOVE, RAST_PATH_LINE}, v3[3] = {0, 1, 1};
+    static const rast_point seg[2] = {{0, 0}, {160, 0}}, ell[3] = {{0, 0}, {160, 0}, {160, 160}};
+    static const int32_t rect[8] = {0, -16, 160, -16, 160, 16, 0, 16};
+    static const int32_t sq_end[8] = {160, -16, 176, -16, 176, 16, 160, 16};
+    static const int32_t miter[8] = {160, 0, 160, -16, 176, -16, 176, 0};
+    rast_stroke_style s = style(32, RAST_JOIN_MITER, RAST_CAP_BUTT);
+    uint32_t np, nr;
+    CHECK(run(v2, 2, seg, 2, &s, &np, &nr) == RAST_OK && nr == 1 && np == 4 && ring_is(0, rect, 4));
+    s.cap = RAST_CAP_SQUARE; /* the start's cap, then the end's */
+    CHECK(run(v2, 2, seg, 2, &s, &np, &nr) == RAST_OK && nr == 3 && rings[2] == 4 && ring_is(8, sq_end, 4));
+    s.cap = RAST_CAP_BUTT; /* a right angle: the two segments, then the miter outside */
+    CHECK(run(v3, 3, ell, 3, &s, &np, &nr) == RAST_OK && nr == 3 && rings[2] == 4 && ring_is(8, miter, 4));
+    s.miter_limit = 92680; /* 1.41419 < sqrt(2) = 1.41421: bevelled */
+    CHECK(run(v3, 3, ell, 3, &s, &np, &nr) == RAST_OK && nr == 3 && rings[2] == 3);
+    s.miter_limit = 92682; /* 1.41422 */
+    CHECK(run(v3, 3, ell, 3, &s, &np, &nr) == RAST_OK && nr == 3 && rings[2] == 4);
+    s.join = RAST_JOIN_BEVEL;
+    CHECK(run(v3, 3, ell, 3, &s, &np, &nr) == RAST_OK && nr == 3 && rings[2] == 3);
+    s.join = RAST_JOIN_ROUND;
+    CHECK(run(v3, 3, ell, 3, &s, &np, &nr) == RAST_OK && nr == 3 && rings[2] > 3);
+}
+
+/* The offset of a segment (0,0)-(dx,dy) at width w against its definition:
+ * |o.x| = c with (2c - 1)^2 L2 <= w^2 dy^2 < (2c + 1)^2 L2 (rounded to
+ * nearest, halves up), integers only. */
+static void test_offsets_rounded(void)
+{
+    static const uint8_t v2[2] = {RAST_PATH_MOVE, RAST_PATH_LINE};
+    int i;
+    for (i = 0; i < check_count(3000); i++) {
+        rast_point p[2];
+        rast_stroke_style s = style(1 + (int32_t)(rng() % 4000), RAST_JOIN_MITER, RAST_CAP_BUTT);
+        uint32_t np, nr;
+        int64_t dx = (int64_t)(rng() % 20001) - 10000, dy = (int64_t)(rng() % 20001) - 10000, l2, w, ox, oy, a;
+        if (!dx && !dy) continue;
+        p[0].x = p[0].y = 0;
+        p[1].x = (int32_t)dx;
+        p[1].y = (int32_t)dy;
+        CHECK(run(v2, 2, p, 2, &s, &np, &nr) == RAST_OK && nr == 1 && np == 4);
+        /* ring: a - o first */
+        ox = -out[0].x;
+        oy = -out[0].y;
+        l2 = dx * dx + dy * dy;
+        w = s.width;
+        a = ox < 0 ? -ox : ox;
+        CHECK((2 * a - 1) * (2 * a - 1) * l2 <= w * w * dy * dy || a == 0);
+        CHECK(w * w * dy * dy < (2 * a + 1) * (2 * a + 1) * l2);
+        a = oy < 0 ? -oy : oy;
+        CHECK((2 * a - 1) * (2 * a - 1) * l2 <= w * w * dx * dx || a == 0);
+        CHECK(w * w * dx * dx < (2 * a + 1) * (2 * a + 1) * l2);
+        CHECK((ox == 0 || (ox < 0) == (-dy < 0)) && (oy == 0 || (oy < 0) == (dx < 0)));
+    }
+}
+
+static void test_dashes_exact(void)
+{
+    static const uint8_t v2[2] = {RAST_PATH_MOVE, RAST_PATH_LINE}, v3[3] = {0, 1, 1};
+    static const rast_point seg[2] = {{0, 0}, {1000, 0}}, ell[3] = {{0, 0}, {160, 0}, {160, 160}};
+    int32_t d[2] = {100, 50}, one[1] = {40}, dots[2] = {0, 250};
+    rast_stroke_style s = style(20, RAST_JOIN_MITER, RAST_CAP_BUTT);
+    uint32_t np, nr, k;
+    s.dash = d;
+    s.ndash = 2;
+    s.dash_offset = 30; /* on 70, off 50, on 100, ... */
+    CHECK(run(v2, 2, seg, 2, &s, &np, &nr) == RAST_OK && nr == 7);
+    CHECK(out[0].x == 0 && out[1].x == 70 && out[4].x == 120 && out[5].x == 220);
+    CHECK(out[4 * 6].x == 870 && out[4 * 6 + 1].x == 970); /* then off from 970 past the end */
+    s.ndash = 1; /* odd: {40} is {40, 40} */
+    s.dash = one;
+    s.dash_offset = 0;
+    CHECK(run(v2, 2, seg, 2, &s, &np, &nr) == RAST_OK && nr == 13);
+    s.dash = d; /* one dash over the corner: the join kept, as solid */
+    s.ndash = 2;
+    d[0] = 400;
+    d[1] = 10;
+    s.dash_offset = 0;
+    CHECK(run(v3, 3, ell, 3, &s, &np, &nr) == RAST_OK && nr == 3 && rings[2] == 4);
+    s.cap = RAST_CAP_ROUND; /* zero-length dashes: dots every 250 */
+    s.dash = dots;
+    CHECK(run(v2, 2, seg, 2, &s, &np, &nr) == RAST_OK && nr == 5);
+    for (k = 0; k < nr; k++) CHECK(rings[k] > 8);
+    s.cap = RAST_CAP_BUTT; /* and nothing with butt caps */
+    CHECK(run(v2, 2, seg, 2, &s, &np, &nr) == RAST_OK && nr == 0);
+}
+
+static void test_zero_length(void)
+{
+    static const uint8_t mz[2] = {RAST_PATH_MOVE, RAST_PATH_CLOSE}, mm[2] = {0, 0}, ml[2] = {0, 1};
+    static const rast_point p[2] = {{50, 50}, {50, 50}};
+    rast_stroke_style s = style(40, RAST_JOIN_MITER, RAST_CAP_ROUND);
+    uint32_t np, nr;
+    CHECK(run(mz, 2, p, 1, &s, &np, &nr) == RAST_OK && nr == 1 && np > 8);
+    CHECK(run(ml, 2, p, 2, &s, &np, &nr) == RAST_OK && nr == 1 && np > 8);
+    CHECK(run(mm, 2, p, 2, &s, &np, &nr) == RAST_OK && nr == 0); /* MOVE alone: nothing */
+    s.cap = RAST_CAP_SQUARE;
+    CHECK(run(ml, 2, p, 2, &s, &np, &nr) == RAST_OK && nr == 1 && np == 4 && out[0].x == 30 && out[0].y == 30);
+    s.cap = RAST_CAP_BUTT;
+    CHECK(run(ml, 2, p, 2, &s, &np, &nr) == RAST_OK && nr == 0);
+}
+
+/* Random polylines with turns, crossings, tiny and zero-length segments,
+ * curves and closes: the bound at sample points, every join x cap. */
+static void test_random_bound(void)
+{
+    int i;
+    for (i = 0; i < check_count(600); i++) {
+        uint8_t verbs[8];
+        rast_point pts[24];
+        int32_t dash[3];
+        uint32_t nv = 2 + rng() % 6, np = 0, k, onp, onr, fnp, fnr;
+        rast_stroke_style s = style(1 + (int32_t)(rng() % 200), (int)(rng() % 3), (int)(rng() % 3));
+        rast_path path;
+        rast_polygon fpoly;
+        sc_path fp;
+        s.tolerance = 1 + (int32_t)(rng() % 8);
+        s.miter_limit = 65536 + (int32_t)(rng() % (6 * 65536));
+        if (rng() % 2) {
+            s.ndash = 1 + rng() % 3;
+            for (k = 0; k < s.ndash; k++) dash[k] = (int32_t)(rng() % 300);
+            dash[0] += 1;
+            s.dash = dash;
+            s.dash_offset = (int32_t)(rng() % 600) - 300;
+        }
+        verbs[0] = RAST_PATH_MOVE;
+        pts[np].x = (int32_t)(rng() % 800);
+        pts[np++].y = (int32_t)(rng() % 800);
+        for (k = 1; k < nv; k++) {
+            uint32_t r = rng() % 16, j, take;
+            verbs[k] = r < 9 ? RAST_PATH_LINE : r < 11 ? RAST_PATH_QUAD : r < 13 ? RAST_PATH_CUBIC
+                       : r < 15 ? RAST_PATH_CLOSE : RAST_PATH_MOVE;
+            take = verbs[k] == RAST_PATH_CLOSE ? 0 : verbs[k] == RAST_PATH_MOVE ? 1 : verbs[k];
+            for (j = 0; j < take; j++) {
+                if (rng() % 8 == 0) { /* tiny or zero */
+                    pts[np].x = pts[np - 1].x + (int32_t)(rng() % 3) - 1;
+                    pts[np].y = pts[np - 1].y + (int32_t)(rng() % 3) - 1;
+                } else {
+                    pts[np].x = (int32_t)(rng() % 800);
+                    pts[np].y = (int32_t)(rng() % 800);
+                }
+                np++;
+            }
+        }
+        CHECK(run(verbs, nv, pts, np, &s, &onp, &onr) == RAST_OK);
+        CHECK(sc_rings_positive(out, rings, onr));
+        path.verbs = verbs;
+        path.nverbs = nv;
+        path.points = pts;
+        path.npoints = np;
+        CHECK(rast_path_flatten(&path, s.tolerance, flat, MAXP, frings, 64, &fpoly) == RAST_OK);
+        CHECK(rast_path_flatten_size(&path, s.tolerance, &fnp, &fnr) == RAST_OK);
+        fp.pts = flat;
+        fp.sizes = frings;
+        fp.nrings = fnr;
+        for (k = 0; k < 40; k++) {
+            rast_point c = flat[rng() % fnp];
+            int32_t reach = s.width * 3 + 4;
+            int32_t x = c.x + (int32_t)(rng() % (uint32_t)(2 * reach + 1)) - reach;
+            int32_t y = c.y + (int32_t)(rng() % (uint32_t)(2 * reach + 1)) - reach;
+            CHECK(sc_check_point(&fp, out, rings, onr, &s, x, y));
+        }
+    }
+}
+
+int main(void)
+{
+    test_bad_input();
+    test_exact_pieces();
+    test_offsets_rounded();
+    test_dashes_exact();
+    test_zero_length();
+    test_random_bound();
+    return check_report("test_stroke");
+}

@@ -661,6 +661,8 @@ OTHER = [
     ("Canvas.chord", "start 'a'", _on_canvas("chord", (1, 1, 4, 4), "a", 90, 7), rastrum.InputError, r"start"),
     ("Canvas.regular_polygon", "n_sides 2", _on_canvas("regular_polygon", (3, 3, 2), 2, 0, 7), rastrum.InputError,
      r"n_sides"),
+    ("Canvas.regular_polygon", "n_sides 2**64", _on_canvas("regular_polygon", (3, 3, 2), 2 ** 64, 0, 7),
+     rastrum.InputError, r"n_sides"),
     ("Canvas.regular_polygon", "no radius", _on_canvas("regular_polygon", (3, 3), 4, 0, 7), rastrum.InputError,
      r"bounding_circle"),
     ("Canvas.stroke", "width 0", _on_canvas("stroke", [(1, 1), (4, 4)], 7, 0), rastrum.InputError, r"width"),

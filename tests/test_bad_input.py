@@ -524,6 +524,18 @@ def _ro(a):
     return a
 
 
+def _on_canvas(method, *args, **kw):
+    """Call a Canvas method on a zero canvas; when it raises, the canvas
+    must still be zero."""
+    def call():
+        c = rastrum.Canvas((6, 7), format="rgb888")
+        try:
+            return getattr(c, method)(*args, **kw)
+        finally:
+            assert not c.array.any(), "%s wrote pixels before raising" % method
+    return call
+
+
 OTHER = [
     # (name, label, call, exception or None for "works", regex)
     ("Canvas", "width -1", lambda: rastrum.Canvas((5, -1)), rastrum.InputError, r"shape"),
@@ -640,6 +652,35 @@ OTHER = [
     ("Canvas.save", "missing directory", lambda: rastrum.Canvas((2, 2)).save("/nonexistent-dir/x.png"), OSError,
      r"No such file|nonexistent"),
     ("Canvas.to_image", "an empty canvas", lambda: rastrum.Canvas((0, 0)).to_image(), None, None),
+    # canvas34's Pillow shapes and stroke: the canvas untouched (_on_canvas); more in tests/test_shapes.py
+    ("Canvas.ellipse", "box x1 < x0", _on_canvas("ellipse", (5, 1, 2, 4), 7), rastrum.InputError, r"x1 >= x0"),
+    ("Canvas.ellipse", "no colour", _on_canvas("ellipse", (1, 1, 4, 4)), rastrum.InputError, r"fill or outline"),
+    ("Canvas.ellipse", "width 10**400", _on_canvas("ellipse", (1, 1, 4, 4), 7, 9, 10 ** 400), rastrum.InputError,
+     r"width"),
+    ("Canvas.ellipse", "complex box", _on_canvas("ellipse", (1j, 1, 4, 4), 7), rastrum.InputError, r"xy.*complex"),
+    ("Canvas.circle", "radius -1", _on_canvas("circle", (3, 3), -1, 7), rastrum.InputError, r"radius"),
+    ("Canvas.circle", "radius 10**400", _on_canvas("circle", (3, 3), 10 ** 400, 7), rastrum.InputError, r"radius"),
+    ("Canvas.circle", "centre bools", _on_canvas("circle", (True, 3), 1, 7), rastrum.InputError, r"xy.*bools"),
+    ("Canvas.rounded_rectangle", "radius NaN", _on_canvas("rounded_rectangle", (1, 1, 4, 4), NAN, 7),
+     rastrum.InputError, r"radius"),
+    ("Canvas.arc", "end NaN", _on_canvas("arc", (1, 1, 4, 4), 0, NAN, 7), rastrum.InputError, r"end"),
+    ("Canvas.arc", "no fill", _on_canvas("arc", (1, 1, 4, 4), 0, 90), rastrum.InputError, r"fill"),
+    # the fill is valid, the outline 2**40 wide is past the grid: neither is drawn
+    ("Canvas.pieslice", "outline width 2**40", _on_canvas("pieslice", (1, 1, 4, 4), 0, 90, 7, 9, 2 ** 40),
+     rastrum.InputError, r"outside the range"),
+    ("Canvas.chord", "outline width 2**62", _on_canvas("chord", (1, 1, 4, 4), 0, 90, 7, 9, 2 ** 62),
+     rastrum.InputError, r"outside the range"),
+    ("Canvas.chord", "start 'a'", _on_canvas("chord", (1, 1, 4, 4), "a", 90, 7), rastrum.InputError, r"start"),
+    ("Canvas.regular_polygon", "n_sides 2", _on_canvas("regular_polygon", (3, 3, 2), 2, 0, 7), rastrum.InputError,
+     r"n_sides"),
+    ("Canvas.regular_polygon", "n_sides 2**64", _on_canvas("regular_polygon", (3, 3, 2), 2 ** 64, 0, 7),
+     rastrum.InputError, r"n_sides"),
+    ("Canvas.regular_polygon", "no radius", _on_canvas("regular_polygon", (3, 3), 4, 0, 7), rastrum.InputError,
+     r"bounding_circle"),
+    ("Canvas.stroke", "width 0", _on_canvas("stroke", [(1, 1), (4, 4)], 7, 0), rastrum.InputError, r"width"),
+    ("Canvas.stroke", "join 'sharp'", _on_canvas("stroke", [(1, 1), (4, 4)], 7, 2, join="sharp"),
+     rastrum.InputError, r"join"),
+    ("Canvas.stroke", "geometry None", _on_canvas("stroke", None, 7, 2), rastrum.InputError, r"geometry|None"),
     ("ALGORITHMS", "unknown entry point", lambda: rastrum.ALGORITHMS["bogus"], KeyError, r"bogus"),
     ("AA_METHODS", "unknown entry point", lambda: rastrum.AA_METHODS["bogus"], KeyError, r"bogus"),
 ]

@@ -273,6 +273,18 @@ _MESH_F = np.array([[0, 2, 1], [0, 1, 3], [0, 3, 2], [1, 2, 3]])
 _DATASET = types.SimpleNamespace(transform=rastrum.IDENTITY, height=4, width=5, shape=(4, 5))
 
 
+def _mpl_path():
+    """A matplotlib Path (a triangle with a quadratic side) where matplotlib
+    is installed; else a duck with its .vertices and .codes."""
+    v = np.array([[0.0, 0.0], [4.0, 0.0], [4.0, 3.0], [0.0, 3.0], [0.0, 0.0]])
+    codes = np.array([1, 2, 3, 3, 79], np.uint8)  # MOVETO LINETO CURVE3 CURVE3 CLOSEPOLY
+    try:
+        from matplotlib.path import Path as MplPath
+    except ImportError:
+        return types.SimpleNamespace(vertices=v, codes=codes)
+    return MplPath(v, codes)
+
+
 def _fuzz_table():
     from rastrum import coco, gis, scene
     P = rastrum.Path
@@ -306,6 +318,7 @@ def _fuzz_table():
         "scene.lambert": (scene.lambert, [np.array([[0.0, 0.0, 1.0]]), (0.0, 0.0, 1.0), 0.2, (200, 100, 50)]),
         "scene.vertex_normals": (scene.vertex_normals, [_MESH_V, _MESH_F]),
         "Path.from_svg": (P.from_svg, ["M 0 0 L 3 0 L 3 3 Z"]),
+        "coverage_fractions": (rastrum.coverage_fractions, [[_SQ], (4, 5), rastrum.IDENTITY]),
     }
     for name, (fn, args) in _surface().items():
         plain[name] = (fn, args)
@@ -319,6 +332,8 @@ def _fuzz_table():
         plain["dask.rasterize"] = (lambda s, o, c: rdask.rasterize(s, o, chunks=c).compute(),
                                    [[(_SQ, 1)], (4, 5), (2, 5)])
         plain["dask.to_xarray"] = (rdask.to_xarray, [np.zeros((4, 5)), rastrum.IDENTITY])
+        plain["dask.zonal_stats"] = (lambda r, g, t: rdask.zonal_stats(r, g, transform=t, output="records"),
+                                     [np.ones((4, 5)), [_SQ], rastrum.IDENTITY])
     except ImportError:  # dask is an extra: its two names are checked where it is installed
         pass
     assert gis is not None and coco is not None
@@ -336,6 +351,16 @@ def _fuzz_table():
         "Canvas.save": (lambda c, *a: c.save(*a), ["out.png"]),
         "Canvas.to_image": (lambda c: c.to_image(), []),
         "Canvas.wrap": (lambda c, a: rastrum.Canvas.wrap(a), [np.zeros((4, 5), np.uint8)]),
+        # canvas34's shapes and stroke, blend34's composite (the Pillow ImageDraw spellings)
+        "Canvas.ellipse": (lambda c, *a: c.ellipse(*a), [(1, 1, 6, 4), 7, 9, 2]),
+        "Canvas.circle": (lambda c, *a: c.circle(*a), [(3.5, 2.5), 2.0, 7, 9, 1]),
+        "Canvas.rounded_rectangle": (lambda c, *a: c.rounded_rectangle(*a), [(1, 1, 8, 6), 2.0, 7, 9, 1]),
+        "Canvas.arc": (lambda c, *a: c.arc(*a), [(1, 1, 8, 6), 30.0, 250.0, 7, 2]),
+        "Canvas.pieslice": (lambda c, *a: c.pieslice(*a), [(1, 1, 8, 6), 30.0, 250.0, 7, 9, 1]),
+        "Canvas.chord": (lambda c, *a: c.chord(*a), [(1, 1, 8, 6), 30.0, 250.0, 7, 9, 1]),
+        "Canvas.regular_polygon": (lambda c, *a: c.regular_polygon(*a), [(4.5, 3.5, 3.0), 5, 10.0, 7, 9, 1]),
+        "Canvas.stroke": (lambda c, *a: c.stroke(*a), [[(0.5, 0.5), (8.5, 6.5), (2.0, 6.0)], 7, 1.5]),
+        "Canvas.composite": (lambda c, m, k, o: c.composite(m, k, opacity=o), [np.full((H, W), 0.5, np.float32), (10, 20, 30), 0.5]),
     }
     path = {  # called on a fresh Path that has moved to (0, 0)
         "Path.move_to": (lambda p, *a: p.move_to(*a), [1.0, 2.0]),
@@ -347,6 +372,16 @@ def _fuzz_table():
         "Path.copy": (lambda p: p.copy(), []),
         "Path.flatten": (lambda p, *a: p.flatten(*a), [8]),
         "Polygons.packed": (lambda p: rastrum.Polygons(_TRI3, [3], [1]).packed(), []),
+        "Path.transformed": (lambda p, *a: p.line_to(3.0, 1.0).transformed(*a), [(0.5, 0.0, 1.0, 0.0, -0.5, 9.0)]),
+        "Path.from_matplotlib": (lambda p, *a: rastrum.Path.from_matplotlib(*a), [_mpl_path()]),
+        "Path.circle": (lambda p, *a: rastrum.Path.circle(*a), [3.0, 2.0, 1.5]),
+        "Path.ellipse": (lambda p, *a: rastrum.Path.ellipse(*a), [3.0, 2.0, 2.5, 1.5]),
+        "Path.rounded_rectangle": (lambda p, *a: rastrum.Path.rounded_rectangle(*a), [0.0, 0.0, 5.0, 4.0, 1.0]),
+        "Path.arc": (lambda p, *a: rastrum.Path.arc(*a), [3.0, 2.0, 2.5, 1.5, 10.0, 200.0]),
+        "Path.pieslice": (lambda p, *a: rastrum.Path.pieslice(*a), [3.0, 2.0, 2.5, 1.5, 10.0, 200.0]),
+        "Path.pie": (lambda p, *a: rastrum.Path.pie(*a), [3.0, 2.0, 2.5, 1.5, 10.0, 200.0]),
+        "Path.chord": (lambda p, *a: rastrum.Path.chord(*a), [3.0, 2.0, 2.5, 1.5, 10.0, 200.0]),
+        "Path.regular_polygon": (lambda p, *a: rastrum.Path.regular_polygon(*a), [3.0, 2.0, 1.5, 6]),
     }
     return plain, canvas, path
 

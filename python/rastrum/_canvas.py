@@ -1,6 +1,7 @@
 """Canvas: a target over a numpy array, with drawing methods."""
 
 import functools
+import math
 from typing import (IO, TYPE_CHECKING, Any, Callable, Dict, Literal, Optional, Sequence, Tuple, TypeVar, Union, cast,
                     overload)
 
@@ -438,7 +439,11 @@ class Canvas:
         if not isinstance(premultiplied, (bool, np.bool_)) or (premultiplied and self._format != "rgba8888"):
             raise InputError("%s: premultiplied must be True (an rgba8888 canvas only) or False, not %r"
                              % (entry, premultiplied))
-        cov = np.asarray(coverage)
+        try:
+            cov = np.asarray(coverage)
+        except (TypeError, ValueError, OverflowError):  # ragged, or what numpy cannot hold
+            raise InputError("Canvas.composite: coverage must be a uint8 or uint16 array of the canvas's shape,"
+                             " not %s" % type(coverage).__name__) from None
         if cov.dtype not in (np.uint8, np.uint16) or cov.shape != (self.height, self.width):
             raise InputError("%s: coverage must be a uint8 or uint16 array of the canvas's shape %s, not %s %s"
                              % (entry, (self.height, self.width), cov.dtype, cov.shape))
@@ -942,10 +947,15 @@ class Canvas:
         for colour in (fill, outline):  # both checked before anything is drawn
             if colour is not None:
                 self._value_bytes(colour)
+        # Both flattened (and their points range-checked) before either is
+        # drawn: an outline too wide for the grid must not leave the fill.
+        shape = path_rings(shape, 8, tolerance)
+        if outline_path is not None:
+            outline_path = (path_rings(outline_path[0], 8, tolerance), outline_path[1])
         if fill is not None:
-            self.fill_polygon(shape, fill, rule="nonzero", aa=aa, tolerance=tolerance)
+            self.fill_polygon(shape, fill, rule="nonzero", aa=aa)
         if outline is not None and outline_path is not None:
-            self.fill_polygon(outline_path[0], outline, rule=outline_path[1], aa=aa, tolerance=tolerance)
+            self.fill_polygon(outline_path[0], outline, rule=outline_path[1], aa=aa)
 
     def ellipse(self, xy: Any, fill: Optional[Color] = None, outline: Optional[Color] = None,
                 width: int = 1, *, aa: Optional[CoverageMethod] = None, tolerance: Optional[float] = None) -> None:
@@ -1162,10 +1172,23 @@ class Canvas:
 
 def _pil_coords(xy, what):
     """Pillow's coordinates: a sequence of (x, y) pairs or of numbers
-    x0, y0, x1, y1, ...; as an (N, 2) float64 array, finite."""
+    x0, y0, x1, y1, ...; as an (N, 2) float64 array, finite.  Bools,
+    complex numbers and strings are refused, not converted."""
+    try:
+        kind = np.asarray(xy).dtype.kind
+    except (TypeError, ValueError):  # ragged: the float conversion below says so
+        kind = "f"
+    if kind not in "bcUSV" and isinstance(xy, (list, tuple)):  # numpy reads (True, 3) as ints
+        for v in xy:
+            for t in (v if isinstance(v, (list, tuple)) else (v,)):
+                if isinstance(t, (bool, np.bool_)):
+                    kind = "b"
+    if kind in "bcUSV":
+        raise InputError("%s: %r holds %s, not real numbers" % (what, xy, {
+            "b": "bools", "c": "complex numbers"}.get(kind, "strings or bytes")))
     try:
         a = np.asarray(xy, dtype=np.float64)
-    except (TypeError, ValueError):
+    except (TypeError, ValueError, OverflowError):
         raise InputError("%s: %r is not a sequence of (x, y) points or of numbers" % (what, xy)) from None
     if a.ndim == 1 and a.size % 2 == 0:
         a = a.reshape(-1, 2)
@@ -1209,10 +1232,15 @@ def _is_point(p):
 
 
 def _pil_width(width):
-    if isinstance(width, (bool, np.bool_)) or not isinstance(width, (int, float, np.integer, np.floating)) \
-            or not np.isfinite(width) or width < 0:
+    if isinstance(width, (bool, np.bool_)) or not isinstance(width, (int, float, np.integer, np.floating)):
         raise InputError("width: %r; a number of pixels >= 0" % (width,))
-    return float(width)
+    try:
+        w = float(width)
+    except OverflowError:  # an int past float64's range (np.isfinite cannot take it)
+        raise InputError("width: too large (beyond float64's range); a number of pixels >= 0") from None
+    if not math.isfinite(w) or w < 0:
+        raise InputError("width: %r; a number of pixels >= 0" % (w,))
+    return w
 
 
 def _real_width(width):

@@ -43,6 +43,8 @@ def _real(v: object, what: str) -> float:
         f = float(v)  # type: ignore[arg-type]
     except (TypeError, ValueError):
         raise InputError("%s: %r is not a real number" % (what, v)) from None
+    except OverflowError:  # an int past float64's range
+        raise InputError("%s: too large a number (beyond float64's range)" % what) from None
     if not math.isfinite(f):
         raise InputError("%s: %r is not finite" % (what, v))
     return f

@@ -25,6 +25,12 @@ from ._path import ARC_ERROR, Path, _real
 __all__ = ["circle", "ellipse", "rounded_rectangle", "arc", "pieslice", "chord", "regular_polygon"]
 
 
+# More sides are the circle: 65,536 sides are within r (1 - cos(pi/65536)),
+# 6e-4 px at the grid's largest radius (524,288 px), of it; and a bound
+# keeps n_sides = 2**64 from building points until memory runs out.
+MAX_SIDES = 1 << 16
+
+
 def _radius(v: object, what: str) -> float:
     r = _real(v, what)
     if r < 0:
@@ -206,10 +212,10 @@ def regular_polygon(cx: float, cy: float, r: float, n_sides: int, *, rotation: f
     Pillow's vertices: the first at angle 270 - 180/n_sides + rotation
     degrees counter-clockwise on screen from 3 o'clock (rotation 0: a flat
     bottom side), (cx + r cos a, cy - r sin a); not rounded to 2 decimals
-    as Pillow rounds them."""
+    as Pillow rounds them.  n_sides is at most MAX_SIDES (65,536)."""
     cx, cy, r = _real(cx, "cx"), _real(cy, "cy"), _radius(r, "r")
-    if type(n_sides) is not int or n_sides < 3:
-        raise InputError("n_sides: %r; an int >= 3" % (n_sides,))
+    if type(n_sides) is not int or not 3 <= n_sides <= MAX_SIDES:
+        raise InputError("n_sides: %r; an int in 3..%d" % (n_sides, MAX_SIDES))
     rot = _real(rotation, "rotation")
     p = Path(tolerance=tolerance)
     if r == 0:

@@ -19,7 +19,41 @@
 #include "rastrum.h"
 #include "check.h"
 
-__extension__ typedef unsigned __int128 u128; /* the oracle's sums (GCC, clang) */
+/* The oracle's sums: 128-bit unsigned numbers as two halves, so that the
+ * test runs where the compiler has no __int128 (32-bit ARM and MIPS in
+ * make cross-check). */
+typedef struct u128 { uint64_t hi, lo; } u128;
+
+static u128 u128_add(u128 a, u128 b)
+{
+    u128 r;
+    r.lo = a.lo + b.lo;
+    r.hi = a.hi + b.hi + (r.lo < a.lo);
+    return r;
+}
+
+/* a b exactly, from four 32 x 32-bit products */
+static u128 u128_mul(uint64_t a, uint64_t b)
+{
+    const uint64_t m = 0xffffffffu;
+    uint64_t p00 = (a & m) * (b & m), p01 = (a & m) * (b >> 32);
+    uint64_t p10 = (a >> 32) * (b & m), p11 = (a >> 32) * (b >> 32);
+    uint64_t mid = (p00 >> 32) + (p01 & m) + (p10 & m);
+    u128 r;
+    r.lo = (mid << 32) | (p00 & m);
+    r.hi = p11 + (p01 >> 32) + (p10 >> 32) + (mid >> 32);
+    return r;
+}
+
+/* floor((a + 2^(sh - 1)) / 2^sh), its low 64 bits, 1 <= sh <= 63 */
+static uint64_t u128_round_shr(u128 a, int sh)
+{
+    u128 half;
+    half.hi = 0;
+    half.lo = (uint64_t)1 << (sh - 1);
+    a = u128_add(a, half);
+    return (a.lo >> sh) | (a.hi << (64 - sh));
+}
 
 #define W 6
 #define H 5
@@ -66,7 +100,7 @@ static u128 cell_area(const rect *r, int n, int64_t cx, int64_t cy, int s,
     const int64_t u = (int64_t)1 << s;
     int64_t xs[2 * NR + 2], ys[2 * NR + 2];
     int nx = 0, ny = 0, i, j, k;
-    u128 sum = 0;
+    u128 sum = {0, 0};
     int64_t X0 = cx * u, X1 = X0 + u, Y0 = cy * u, Y1 = Y0 + u;
     xs[nx++] = X0;
     xs[nx++] = X1;
@@ -100,8 +134,8 @@ static u128 cell_area(const rect *r, int n, int64_t cx, int64_t cy, int s,
                     ys[j + 1] <= r[k].y1)
                     w += r[k].dir;
             if (inside(rule, w))
-                sum += (u128)(uint64_t)(xs[i + 1] - xs[i]) *
-                       (uint64_t)(ys[j + 1] - ys[j]);
+                sum = u128_add(sum, u128_mul((uint64_t)(xs[i + 1] - xs[i]),
+                                             (uint64_t)(ys[j + 1] - ys[j])));
         }
     return sum;
 }
@@ -157,15 +191,13 @@ static void test_rectangles(int s, int64_t ox, int64_t oy, int cases)
         for (j = 0; j < H; j++)
             for (i = 0; i < W; i++) {
                 /* exact: area / 2^2s pixels; FIX62 = area 2^(62 - 2s), rounded */
-                u128 a = cell_area(r, n, ox + i, oy + j, s, rule), want;
-                uint64_t got = out[j][i];
-                if (2 * s <= 62) {
-                    want = a << (62 - 2 * s);
-                } else {
-                    int sh = 2 * s - 62;
-                    want = (a + ((u128)1 << (sh - 1))) >> sh;
-                }
-                CHECK(got + 1 >= (uint64_t)want && got <= (uint64_t)want + 1);
+                u128 a = cell_area(r, n, ox + i, oy + j, s, rule);
+                uint64_t got = out[j][i], want;
+                if (2 * s <= 62)
+                    want = a.lo << (62 - 2 * s); /* a <= 2^2s: the product fits */
+                else
+                    want = u128_round_shr(a, 2 * s - 62);
+                CHECK(got + 1 >= want && got <= want + 1);
             }
     }
 }

@@ -226,4 +226,36 @@ static inline int64_t rast__recip_floordiv(const rast__recip *rc, int64_t n, int
     return -(int64_t)q;
 }
 
+/* Signed 128-bit helpers shared by the coverage engines (coverage/rows.h,
+ * coverage/coverage64.c). */
+
+static inline rast__i128 rast__i128_sub(rast__i128 a, rast__i128 b)
+{
+    return rast__i128_add(a, rast__i128_neg(b));
+}
+
+/* -1, 0 or 1 as a < b, a == b, a > b (signed). */
+static inline int rast__i128_cmp(rast__i128 a, rast__i128 b)
+{
+    if (a.hi != b.hi) return (int64_t)a.hi < (int64_t)b.hi ? -1 : 1;
+    if (a.lo != b.lo) return a.lo < b.lo ? -1 : 1;
+    return 0;
+}
+
+static inline int rast__i128_neg_p(rast__i128 a)
+{
+    return (int)(a.hi >> 63);
+}
+
+/* floor(a / 2^n), 0 < n < 64 (an arithmetic shift written without one:
+ * C99 leaves >> of a negative value to the implementation). */
+static inline rast__i128 rast__i128_sar(rast__i128 a, int32_t n)
+{
+    rast__i128 r;
+    uint64_t fill = (a.hi >> 63) ? ~(~(uint64_t)0 >> n) : 0;
+    r.lo = (a.lo >> n) | (a.hi << (64 - n));
+    r.hi = (a.hi >> n) | fill;
+    return r;
+}
+
 #endif /* RAST_WIDE_H */

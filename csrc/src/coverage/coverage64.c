@@ -49,33 +49,6 @@
 
 /* ---- 128-bit helpers (wide.h's two's-complement rast__i128) ------------- */
 
-static inline rast__i128 rast__w64_sub(rast__i128 a, rast__i128 b)
-{
-    return rast__i128_add(a, rast__i128_neg(b));
-}
-
-static inline int rast__w64_cmp(rast__i128 a, rast__i128 b)
-{
-    if (a.hi != b.hi) return (int64_t)a.hi < (int64_t)b.hi ? -1 : 1;
-    if (a.lo != b.lo) return a.lo < b.lo ? -1 : 1;
-    return 0;
-}
-
-static inline int rast__w64_isneg(rast__i128 a)
-{
-    return (int)(a.hi >> 63);
-}
-
-/* floor(a / 2^n), 0 < n < 64, without >> of a negative value. */
-static inline rast__i128 rast__w64_sar(rast__i128 a, int32_t n)
-{
-    rast__i128 r;
-    uint64_t fill = (a.hi >> 63) ? ~(~(uint64_t)0 >> n) : 0;
-    r.lo = (a.lo >> n) | (a.hi << (64 - n));
-    r.hi = (a.hi >> n) | fill;
-    return r;
-}
-
 /* The exact product a b of two unsigned 64-bit numbers (< 2^127 here). */
 static inline rast__i128 rast__w64_umul(uint64_t a, uint64_t b)
 {
@@ -103,7 +76,7 @@ static rast__i128 rast__w64_div(rast__i128 n, int64_t d, uint64_t *rem)
     out.hi = (uint64_t)((rast__u128)q >> 64);
     return out;
 #else
-    int neg = rast__w64_isneg(n), i;
+    int neg = rast__i128_neg_p(n), i;
     uint64_t ud = (uint64_t)d, r, qlo = 0, lo;
     rast__i128 q;
     if (neg) n = rast__i128_neg(n);
@@ -123,7 +96,7 @@ static rast__i128 rast__w64_div(rast__i128 n, int64_t d, uint64_t *rem)
     if (neg) {
         q = rast__i128_neg(q);
         if (r) {
-            q = rast__w64_sub(q, rast__i128_from(1));
+            q = rast__i128_sub(q, rast__i128_from(1));
             r = ud - r;
         }
     }
@@ -191,8 +164,8 @@ static uint64_t rast__w64_tcol(const rast__w64e *e, int64_t c, int64_t yj, int32
     q = rast__w64_div(rast__i128_mul(e->dx < 0 ? -b : b, e->dy), adx, &r);
     f = rast__w64_div(rast__i128_shl(rast__i128_from((int64_t)r), h), adx, &r2);
     t = rast__i128_add(rast__i128_shl(rast__i128_from(e->yt - yj + (int64_t)q.lo), h), f);
-    if (rast__w64_isneg(t) || rast__w64_cmp(t, rast__i128_from((int64_t)lo)) < 0) return lo;
-    if (rast__w64_cmp(t, rast__i128_from((int64_t)hi)) > 0) return hi;
+    if (rast__i128_neg_p(t) || rast__i128_cmp(t, rast__i128_from((int64_t)lo)) < 0) return lo;
+    if (rast__i128_cmp(t, rast__i128_from((int64_t)hi)) > 0) return hi;
     return t.lo;
 }
 
@@ -240,8 +213,8 @@ static void rast__w64_piece(rast__w64cells *c, const rast__w64e *e, rast__i128 x
                             rast__i128 xb, uint64_t tb, int32_t sigma)
 {
     const uint64_t one = RAST__W64_T, mask = one - 1;
-    int64_t ca = (int64_t)rast__w64_sar(xa, RAST__W64_G).lo;
-    int64_t cb = (int64_t)rast__w64_sar(xb, RAST__W64_G).lo;
+    int64_t ca = (int64_t)rast__i128_sar(xa, RAST__W64_G).lo;
+    int64_t cb = (int64_t)rast__i128_sar(xb, RAST__W64_G).lo;
     uint64_t fa = xa.lo & mask, fb = xb.lo & mask, t = ta, f;
     int64_t col;
     if (ta >= tb) return;
@@ -313,8 +286,8 @@ static void rast__w64_emit(rast__w64cells *c, rast_coverage_format format, unsig
         acc = rast__i128_add(acc, c->cover[k]);
         v = rast__i128_add(acc, c->area[k]);
         /* round(v / 2^63), clamped to [0, 2^62] */
-        v = rast__w64_sar(rast__i128_add(v, rast__i128_from((int64_t)1 << 62)), 63);
-        if (rast__w64_isneg(v)) a62 = 0;
+        v = rast__i128_sar(rast__i128_add(v, rast__i128_from((int64_t)1 << 62)), 63);
+        if (rast__i128_neg_p(v)) a62 = 0;
         else if (v.hi || v.lo > RAST__W64_T) a62 = RAST__W64_T;
         else a62 = v.lo;
         if (format == RAST_COVERAGE_FIX62) {
@@ -348,16 +321,16 @@ static inline int rast__w64_in(rast_fill_rule rule, int32_t w)
 static uint64_t rast__w64_cross(rast__i128 a0, rast__i128 a1, rast__i128 b0, rast__i128 b1,
                                 uint64_t cur, uint64_t end)
 {
-    rast__i128 d0 = rast__w64_sub(b0, a0), d1 = rast__w64_sub(a1, b1), sum;
+    rast__i128 d0 = rast__i128_sub(b0, a0), d1 = rast__i128_sub(a1, b1), sum;
     uint64_t n0, n1, den, h = end - cur, r;
     rast__i128 q;
-    if (rast__w64_isneg(d0)) d0 = rast__i128_from(0);
+    if (rast__i128_neg_p(d0)) d0 = rast__i128_from(0);
     sum = rast__i128_add(d0, d1);
     /* scale both so that the sum is below 2^61 */
     while (sum.hi || sum.lo >= ((uint64_t)1 << 61)) {
-        d0 = rast__w64_sar(d0, 8);
-        d1 = rast__w64_sar(d1, 8);
-        sum = rast__w64_sar(sum, 8);
+        d0 = rast__i128_sar(d0, 8);
+        d1 = rast__i128_sar(d1, 8);
+        sum = rast__i128_sar(sum, 8);
     }
     n0 = d0.lo;
     n1 = d1.lo;
@@ -378,8 +351,8 @@ static void rast__w64_sort(int32_t *ix, int32_t n, const rast__i128 *k0, const r
         int32_t v = ix[i];
         for (j = i; j > 0; j--) {
             int32_t u = ix[j - 1];
-            int c = rast__w64_cmp(k0[u], k0[v]);
-            if (c < 0 || (c == 0 && rast__w64_cmp(k1[u], k1[v]) <= 0)) break;
+            int c = rast__i128_cmp(k0[u], k0[v]);
+            if (c < 0 || (c == 0 && rast__i128_cmp(k1[u], k1[v]) <= 0)) break;
             ix[j] = u;
         }
         ix[j] = v;
@@ -473,7 +446,7 @@ static void rast__w64_sweep_row(rast__w64work *wk, rast__w64cells *c, int32_t na
             rast__w64_sort(wk->span, ns, wk->k0, wk->k1);
             for (i = 0; i + 1 < ns; i++) {
                 int32_t a = wk->span[i], b = wk->span[i + 1];
-                if (rast__w64_cmp(wk->k1[a], wk->k1[b]) > 0) {
+                if (rast__i128_cmp(wk->k1[a], wk->k1[b]) > 0) {
                     uint64_t tc = rast__w64_cross(wk->k0[a], wk->k1[a], wk->k0[b], wk->k1[b],
                                                   cur, v1);
                     if (tc < tn) tn = tc;

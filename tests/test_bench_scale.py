@@ -79,3 +79,33 @@ def test_time_limit_reported_not_hung():
 def test_exponent():
     assert bench_scale.exponent([1.0, 2.0, 4.0, 8.0]) == pytest.approx(1.0)
     assert bench_scale.exponent([1.0, 4.0, 16.0]) == pytest.approx(2.0)
+
+
+def _record(fam, times, wrong=()):
+    """A bench_scale record of one family, one seed per dict of seconds."""
+    seeds = []
+    for k, t in enumerate(times):
+        res = {"rastrum " + m: {"s": t[m], "wrong": m in wrong} for m in ("binary", "accumulate", "ss4", "area")}
+        res["Blend2D"] = {"s": t["blend"]}
+        seeds.append({"seed": k, "edges": 10, "rings": 1, "base_s": t["blend"], "results": res})
+    return {"families": {"%s@512" % fam: seeds}, "series": {}}
+
+
+def test_scale_report_marks_each_target():
+    scale_report = pytest.importorskip("scale_report")
+    ok = dict(blend=1.0, binary=0.5, accumulate=1.0, ss4=1.5, area=1.0)
+    _, cells, met = scale_report.table(_record("circle", [ok]))
+    assert (cells, met) == (4, 4)
+    # the worst seed decides: a second seed 10% slower misses every target
+    slow = {k: v * 1.1 for k, v in ok.items() if k != "blend"}
+    slow["blend"] = 1.0
+    text, cells, met = scale_report.table(_record("circle", [ok, slow]))
+    assert (cells, met) == (4, 1) and text.count(" !") == 3  # ss4/binary is still 3x
+    # where shapes overlap, "area" is held to 3x accumulate, not to Blend2D
+    over = dict(blend=1.0, binary=0.4, accumulate=0.9, ss4=1.2, area=2.7)
+    assert scale_report.table(_record("tri10k", [over]))[1:] == (4, 4)
+    assert scale_report.table(_record("circle", [over]))[1:] == (4, 3)
+    # a wrong output misses whatever its time
+    text, _, met = scale_report.table(_record("circle", [ok], wrong=("area",)))
+    assert met == 3 and "WRONG" in text
+    assert scale_report.exponent([1.0, 2.0, 4.0]) == pytest.approx(1.0)

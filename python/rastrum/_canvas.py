@@ -562,6 +562,13 @@ class Canvas:
                 opts = _coverage.aa_opts_quick(aa, rule, subpixel_bits, sample_offset, "Canvas.fill_polygon")
                 last = self._last_color
                 pixel = last[1] if color is last[0] else self._pixel(color)
+                # one C-contiguous float64 ring of 3 points or more: straight to
+                # C (an error status: fill_polygon_aa's call below says which)
+                if type(rings) is _ndarray and rings.dtype is _F64 and rings.strides == _PACKED \
+                        and rings.shape[1] == 2 and len(rings) >= 3 and len(rings) <= _MAX_POINTS:
+                    if not _lent(_fill_ring_aa, target, _from_buffer(_DOUBLES, rings), len(rings), _NULL, 1,
+                                 opts, pixel):
+                        return
                 _coverage.fill_polygon_aa(target, rings, pixel, opts)
                 return
         if aa is not None:
@@ -1637,6 +1644,7 @@ _ndarray, _F64, _PACKED = np.ndarray, np.dtype(np.float64), (16, 8)
 _DOUBLES, _from_buffer, _fill_ring = ffi.typeof("double[]"), ffi.from_buffer, lib.rastpy_fill_ring
 _seq_rings, _RING_DTYPES = _core._seq.rings, _core._RING_DTYPES
 _FILL_OPTS: Dict[Any, Any] = {}
+_lent, _fill_ring_aa, _NULL, _MAX_POINTS = _coverage._lent, lib.rastpy_fill_polygon_aa, ffi.NULL, lib.RAST_MAX_POINTS
 
 
 def _fill_opts(algorithm, rule, subpixel_bits, sample_offset, rounding, boundary):

@@ -10,6 +10,7 @@ from hypothesis import given, settings, strategies as st
 import rastrum
 from rastrum import _core
 from rastrum._core import InputError
+from strategies import examples
 
 
 def _general(a):
@@ -107,3 +108,51 @@ def test_many_rings_one_call_as_the_general_path():
     assert np.array_equal(rastrum.polygon_mask(rings, (64, 64)), rastrum.polygon_mask(slow, (64, 64)))
     assert np.array_equal(rastrum.polygon_coverage(rings, (64, 64), rule="nonzero"),
                           rastrum.polygon_coverage(slow, (64, 64), rule="nonzero"))
+
+
+# ---- Canvas.fill_polygon(aa=...)'s quick path (an int colour, the binary
+# options at their defaults) against the general one (_fill_aa: the same
+# colour as a numpy int), and both against the documented blend of
+# polygon_coverage's levels, (s*c + d*(255 - c) + 127) // 255.
+
+@settings(max_examples=examples(60), deadline=None)
+@given(_hexagons(), st.sampled_from(["accumulate", "area", "ss4"]), st.sampled_from(["evenodd", "nonzero"]),
+       st.sampled_from([{}, {"subpixel_bits": 4}, {"sample_offset": 0.0}]))
+def test_canvas_aa_quick_path_as_the_general_path(pts, aa, rule, kw):
+    a = np.array(pts, np.float64)
+    back = (np.arange(40 * 44).reshape(40, 44) * 7 % 256).astype(np.uint8)
+    quick, general = rastrum.Canvas.wrap(back.copy()), rastrum.Canvas.wrap(back.copy())
+    quick.fill_polygon(a, 200, aa=aa, rule=rule, **kw)
+    general.fill_polygon(a, np.int64(200), aa=aa, rule=rule, **kw)
+    assert np.array_equal(quick.array, general.array)
+    c = rastrum.polygon_coverage(a, (40, 44), method=aa, rule=rule, **kw).astype(np.int64)
+    want = np.where(c > 0, (200 * c + back.astype(np.int64) * (255 - c) + 127) // 255, back)
+    assert np.array_equal(quick.array, want)
+
+
+def test_canvas_aa_quick_path_refuses_as_the_general_path():
+    tri = np.array([[1.0, 1.0], [7.0, 1.0], [4.0, 6.0]])
+    cases = [(dict(aa="ss3"), "aa="), (dict(aa="area", rule="winding"), "rule"),
+             (dict(aa="area", subpixel_bits=17), "subpixel_bits"), (dict(aa="area", sample_offset=0.25), "sample_offset"),
+             (dict(aa="area", subpixel_bits=True), "subpixel_bits"), (dict(aa="area", algorithm="edgeflag"), "algorithm")]
+    for kw, word in cases:
+        msgs = []
+        for color in (255, np.int64(255)):  # quick, general
+            c = rastrum.Canvas.wrap(np.zeros((8, 8), np.uint8))
+            with pytest.raises(InputError, match=word) as e:
+                c.fill_polygon(tri, color, **kw)
+            assert not c.array.any()
+            msgs.append(str(e.value))
+        assert msgs[0] == msgs[1]
+    c = rastrum.Canvas.wrap(np.zeros((8, 8), np.uint8))
+    c.fill_polygon(tri, 255, aa="area")  # now cached: the quick path's own lookup
+    with pytest.raises(InputError, match="nan"):
+        c.fill_polygon(np.array([[1.0, 1.0], [7.0, np.nan], [4.0, 6.0]]), 7, aa="area")
+    arr = np.zeros((8, 8), np.uint8)
+    ro = rastrum.Canvas.wrap(arr)
+    arr.flags.writeable = False
+    with pytest.raises(InputError, match="read-only"):
+        ro.fill_polygon(tri, 255, aa="area")
+    for dtype in (np.int32, np.int64):  # a label canvas never blends
+        with pytest.raises(InputError, match="label"):
+            rastrum.Canvas.wrap(np.zeros((8, 8), dtype), format="label").fill_polygon(tri, 3, aa="area")

@@ -43,19 +43,28 @@ def _label_spill(method: _F) -> _F:
             return method(self, *args, **kwargs)
         names = method.__code__.co_varnames[1:method.__code__.co_argcount]
         kwargs.update(zip(names, args))
-        color = kwargs.get("color", None)
-        if kwargs.get("aa") is not None:
-            raise InputError("a label canvas holds labels, which do not blend: aa=None")
-        if kwargs.get("vertex_colors") is not None or kwargs.get("depth") is not None:
-            raise InputError("a label canvas has no channels to shade: give one int color")
-        value = np.frombuffer(self._value_bytes(color), self._array.dtype)[0]
-        if not self._array.flags.writeable:
-            raise InputError("the canvas's array is read-only; nothing was drawn")
-        scratch = Canvas.wrap(np.zeros(self._array.shape, np.uint8))
-        kwargs["color"] = 1
-        method(scratch, **kwargs)
-        self._array[scratch._array != 0] = value
+        return _spill(self, method, kwargs)
     return cast(_F, draw)
+
+
+def _spill(self: "Canvas", method: Callable[..., Any], kwargs: Dict[str, Any]) -> None:
+    """_label_spill's drawing: `method` (undecorated) with the call's
+    arguments by name, `kwargs`, into a uint8 mask, then the value where
+    it is set.  Canvas.fill_polygon calls it itself (when self._code is
+    None), which saves its common call the decorator's packing and
+    unpacking of the arguments."""
+    color = kwargs.get("color", None)
+    if kwargs.get("aa") is not None:
+        raise InputError("a label canvas holds labels, which do not blend: aa=None")
+    if kwargs.get("vertex_colors") is not None or kwargs.get("depth") is not None:
+        raise InputError("a label canvas has no channels to shade: give one int color")
+    value = np.frombuffer(self._value_bytes(color), self._array.dtype)[0]
+    if not self._array.flags.writeable:
+        raise InputError("the canvas's array is read-only; nothing was drawn")
+    scratch = Canvas.wrap(np.zeros(self._array.shape, np.uint8))
+    kwargs["color"] = 1
+    method(scratch, **kwargs)
+    self._array[scratch._array != 0] = value
 
 
 class Canvas:
@@ -457,7 +466,6 @@ class Canvas:
                 target, ffi.from_buffer(cov), lib.RAST_COVERAGE_U16 if cov.dtype == np.uint16 else lib.RAST_COVERAGE_U8,
                 cov.shape[1] * cov.itemsize, rgba, opts))
 
-    @_label_spill
     def fill_polygon(self, rings: Rings, color: Optional[Color] = None, *, rule: Rule = "evenodd",
                      algorithm: PolygonAlgorithm = "aet", subpixel_bits: int = 8, sample_offset: float = 0.5,
                      rounding: Rounding = "exact", boundary: Boundary = "exact",
@@ -502,6 +510,10 @@ class Canvas:
         pixel value, stored).  ``gamma="srgb"`` (or a power in 0.3..3)
         mixes gray8 and rgb888 in linear light.  See docs/opacity.md.
         """
+        if self._code is None:  # a label canvas of 8-byte items (_label_spill, inline)
+            args = dict(locals())
+            del args["self"]
+            return _spill(self, Canvas.fill_polygon, args)
         if tolerance is not None or not isinstance(rings, (list, tuple, _ndarray)):  # docs/paths.md
             rings = path_rings(rings, subpixel_bits, tolerance)
         if opacity is not None or gamma is not None or (color is not None and type(color) is not int):
@@ -521,7 +533,7 @@ class Canvas:
                     and rounding is _EXACT and boundary is _EXACT:
                 opts = _DEFAULT_OPTS
             else:  # checked (InputError as below), remembered
-                opts = _core.fill_opts(algorithm, rule, subpixel_bits, sample_offset, rounding, boundary)
+                opts = _fill_opts(algorithm, rule, subpixel_bits, sample_offset, rounding, boundary)
             xy = None
             if type(rings) is _ndarray:
                 if rings.dtype is _F64 and rings.strides == _PACKED and rings.shape[1] == 2:
@@ -538,6 +550,27 @@ class Canvas:
                 pixel = last[1] if color is last[0] and type(color) is int else self._pixel(color)
                 if not _fill_ring(target, _from_buffer(_DOUBLES, xy), n, opts, pixel):
                     return
+        elif vertex_colors is None and type(color) is int and algorithm is _AET and rounding is _EXACT \
+                and boundary is _EXACT and shading is _GOURAUD and precision is _EXACT and self._format != "label":
+            # The common anti-aliased call (one colour as an int, the binary
+            # fill's options at their defaults): what _fill_aa checks, made
+            # here in a few comparisons; the coverage options come from the
+            # cache of checked ones (or are checked there, with _fill_aa's
+            # InputError).
+            target = self._target
+            if self._array.flags.writeable:
+                opts = _coverage.aa_opts_quick(aa, rule, subpixel_bits, sample_offset, "Canvas.fill_polygon")
+                last = self._last_color
+                pixel = last[1] if color is last[0] else self._pixel(color)
+                # one C-contiguous float64 ring of 3 points or more: straight to
+                # C (an error status: fill_polygon_aa's call below says which)
+                if type(rings) is _ndarray and rings.dtype is _F64 and rings.strides == _PACKED \
+                        and rings.shape[1] == 2 and len(rings) >= 3 and len(rings) <= _MAX_POINTS:
+                    if not _lent(_fill_ring_aa, target, _from_buffer(_DOUBLES, rings), len(rings), _NULL, 1,
+                                 opts, pixel):
+                        return
+                _coverage.fill_polygon_aa(target, rings, pixel, opts)
+                return
         if aa is not None:
             self._fill_aa(rings, color, aa, rule, subpixel_bits, sample_offset, "Canvas.fill_polygon",
                           algorithm=(algorithm, "aet"), rounding=(rounding, "exact"),
@@ -1602,13 +1635,32 @@ def _canvas_shape(shape, legacy_height, width, height):
 
 # Canvas.fill_polygon's quick path: its default options (the very objects)
 # and the C call for one ring.
-_AET, _EVENODD, _S8, _HALF, _EXACT = (Canvas.fill_polygon.__wrapped__.__kwdefaults__[k] for k in (
-    "algorithm", "rule", "subpixel_bits", "sample_offset", "rounding"))
-assert Canvas.fill_polygon.__wrapped__.__kwdefaults__["boundary"] is _EXACT
+_AET, _EVENODD, _S8, _HALF, _EXACT, _GOURAUD = (Canvas.fill_polygon.__kwdefaults__[k] for k in (
+    "algorithm", "rule", "subpixel_bits", "sample_offset", "rounding", "shading"))
+assert Canvas.fill_polygon.__kwdefaults__["boundary"] is _EXACT
+assert Canvas.fill_polygon.__kwdefaults__["precision"] is _EXACT
 _DEFAULT_OPTS = _core.fill_opts(_AET, _EVENODD, _S8, _HALF, _EXACT, _EXACT)
 _ndarray, _F64, _PACKED = np.ndarray, np.dtype(np.float64), (16, 8)
 _DOUBLES, _from_buffer, _fill_ring = ffi.typeof("double[]"), ffi.from_buffer, lib.rastpy_fill_ring
 _seq_rings, _RING_DTYPES = _core._seq.rings, _core._RING_DTYPES
+_FILL_OPTS: Dict[Any, Any] = {}
+_lent, _fill_ring_aa, _NULL, _MAX_POINTS = _coverage._lent, lib.rastpy_fill_polygon_aa, ffi.NULL, lib.RAST_MAX_POINTS
+
+
+def _fill_opts(algorithm, rule, subpixel_bits, sample_offset, rounding, boundary):
+    """_core.fill_opts, looked up by value alone for str names, an int S and
+    a float offset (a plain tuple: cheaper than the general cache's key,
+    which adds the types, so that True or 8.0 still take its checks)."""
+    if type(subpixel_bits) is int and type(sample_offset) is float and type(algorithm) is str \
+            and type(rule) is str and type(rounding) is str and type(boundary) is str:
+        key = (algorithm, rule, subpixel_bits, sample_offset, rounding, boundary)
+        opts = _FILL_OPTS.get(key)
+        if opts is None:
+            opts = _core.fill_opts(algorithm, rule, subpixel_bits, sample_offset, rounding, boundary)
+            if len(_FILL_OPTS) < 256:
+                _FILL_OPTS[key] = opts
+        return opts
+    return _core.fill_opts(algorithm, rule, subpixel_bits, sample_offset, rounding, boundary)
 
 
 def _connectivity(legacy, connectivity):

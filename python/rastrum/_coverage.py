@@ -438,6 +438,17 @@ def aa_opts(aa, rule, subpixel_bits, sample_offset, entry, binary_only):
     return _opts(aa, rule, subpixel_bits, sample_offset, entry)
 
 
+def aa_opts_quick(aa, rule, subpixel_bits, sample_offset, entry):
+    """aa_opts for a call whose binary-only arguments are all at their
+    defaults: checked options of str names, an int S and a float offset
+    come from _OPTS in one lookup; anything else is checked by aa_opts."""
+    if type(aa) is str and type(rule) is str and type(subpixel_bits) is int and type(sample_offset) is float:
+        opts = _OPTS.get((aa, rule, subpixel_bits, sample_offset))
+        if opts is not None:
+            return opts
+    return aa_opts(aa, rule, subpixel_bits, sample_offset, entry, {})
+
+
 def fill_polygon_aa(target, rings, pixel, opts):
     """rast_fill_polygon_aa of `rings` (as polygon_mask takes them)."""
     pts, sizes, nrings = _points(rings)

@@ -1,0 +1,89 @@
+"""Instructions a call (callgrind) for the small calls of bench_calls.py.
+
+    python bench/calls_count.py [CASE ...] [--calls 500]
+
+Each case runs under ``valgrind --tool=callgrind``, counting only inside
+the loop of --calls calls (``--toggle-collect=functools_reduce``: the
+set-up and the imports are not counted); the count over --calls is the
+figure, repeatable on a noisy machine where wall-clock times are not.
+"""
+
+import argparse
+import functools
+import os
+import re
+import subprocess
+import sys
+import tempfile
+
+import numpy as np
+
+HEXA = np.array([[10.3, 5.2], [20.1, 8.7], [22.4, 18.2], [14.2, 24.9], [6.1, 19.3], [4.4, 11.1]])
+
+
+def cases():
+    import rastrum
+    from rastrum import _core
+    sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+    import families
+    from bench_calls import _rings
+    tup = [tuple(p) for p in HEXA.tolist()]
+    canvas = rastrum.Canvas.wrap(np.zeros((512, 512), np.uint8))
+    rings = _rings()
+    loop = families.loop(0, 512).rings
+    return {
+        "mask6": lambda: rastrum.polygon_mask(HEXA, (32, 32)),
+        "cov6": lambda: rastrum.polygon_coverage(HEXA, (32, 32)),
+        "fill_array": lambda: canvas.fill_polygon(HEXA, 255),
+        "fill_tuples": lambda: canvas.fill_polygon(tup, 255),
+        "loop_binary": lambda: [canvas.fill_polygon(r, 255, rule="nonzero") for r in loop],
+        "loop_accumulate": lambda: [canvas.fill_polygon(r, 255, rule="nonzero", aa="accumulate") for r in loop],
+        "loop_area": lambda: [canvas.fill_polygon(r, 255, rule="nonzero", aa="area") for r in loop],
+        "rings1409_mask": lambda: rastrum.polygon_mask(rings, (512, 512)),
+        "rings1409_points": lambda: _core._points(rings),
+    }
+
+
+PER = {"loop_binary": 400, "loop_accumulate": 400, "loop_area": 400}
+
+
+def child(name, calls):
+    f = cases()[name]
+    for _ in range(3):
+        f()
+    # the calls inside functools.reduce: `valgrind --tool=callgrind
+    # --toggle-collect=functools_reduce` profiles them and nothing else
+    functools.reduce(lambda a, _: f(), range(calls), None)
+
+
+def count(name, calls):
+    with tempfile.TemporaryDirectory() as d:
+        out = os.path.join(d, "cg.out")
+        subprocess.run(["valgrind", "--tool=callgrind", "--toggle-collect=functools_reduce",
+                        "--callgrind-out-file=" + out, sys.executable,
+                        os.path.abspath(__file__), "--child", name, "--calls", str(calls)],
+                       check=True, stderr=subprocess.DEVNULL, stdout=subprocess.DEVNULL)
+        with open(out) as fh:
+            return int(re.search(r"^(?:summary|totals): (\d+)", fh.read(), re.M).group(1))
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap.add_argument("case", nargs="*")
+    ap.add_argument("--calls", type=int, default=300)
+    ap.add_argument("--child")
+    args = ap.parse_args()
+    if args.child:
+        child(args.child, args.calls)
+        return
+    names = args.case or list(cases())
+    print("| case | instructions a call (callgrind, %d calls) |" % args.calls)
+    print("|---|---|")
+    for name in names:
+        n = args.calls // 20 if name in PER else args.calls
+        per = count(name, n) / n / PER.get(name, 1)
+        print("| %s | %.0f |" % (name, per), flush=True)
+
+
+if __name__ == "__main__":
+    main()

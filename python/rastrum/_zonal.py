@@ -1,10 +1,12 @@
 """Zonal statistics from coverage fractions: :func:`zonal_stats`.
 
-Each feature's fraction of every raster cell comes from
-``polygon_coverage(method="area", dtype=numpy.float64)`` on the feature's
-window (the raster cells its bounding box touches), one C call a feature;
-the statistics of all features are then computed together in vectorised
-numpy (grouped sums, sorts and reductions: no Python loop over cells).
+Each feature's fraction of every raster cell is what
+``polygon_coverage(method="area", dtype=numpy.float64)`` gives on the
+feature's window (the raster cells its bounding box touches): for the
+windows on its 64-bit path, all in one C call (python/glue/zonal.c) that
+returns only the covered cells, bit for bit the same; the statistics of
+all features are then computed together in vectorised numpy (grouped
+sums, sorts and reductions: no Python loop over cells).
 The operations and their definitions are exactextract's (see
 docs/gis.md, "Zonal statistics").
 """

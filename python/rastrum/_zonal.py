@@ -1,10 +1,12 @@
 """Zonal statistics from coverage fractions: :func:`zonal_stats`.
 
-Each feature's fraction of every raster cell comes from
-``polygon_coverage(method="area", dtype=numpy.float64)`` on the feature's
-window (the raster cells its bounding box touches), one C call a feature;
-the statistics of all features are then computed together in vectorised
-numpy (grouped sums, sorts and reductions: no Python loop over cells).
+Each feature's fraction of every raster cell is what
+``polygon_coverage(method="area", dtype=numpy.float64)`` gives on the
+feature's window (the raster cells its bounding box touches): for the
+windows on its 64-bit path, all in one C call (python/glue/zonal.c) that
+returns only the covered cells, bit for bit the same; the statistics of
+all features are then computed together in vectorised numpy (grouped
+sums, sorts and reductions: no Python loop over cells).
 The operations and their definitions are exactextract's (see
 docs/gis.md, "Zonal statistics").
 """
@@ -17,8 +19,12 @@ from typing import Any, Callable, Dict, Iterable, List, Optional, Sequence, Tupl
 import numpy as np
 
 from . import gis
+from . import _coverage as _cov, _fractions as _fr
 from ._core import InputError
 from ._fractions import _geometries, feature_fractions, subpixel_bits_for
+from ._native import ffi, lib
+
+_MAX_S32 = lib.RAST_MAX_SUBPIXEL_BITS  # polygon_coverage's 32-bit path takes S up to this
 
 __all__ = ["zonal_stats", "STATS", "subpixel_bits_for"]
 
@@ -117,6 +123,127 @@ def _raster(raster, transform, nodata):
 
 
 _fractions = feature_fractions  # the tests' name
+
+# how many windows one C call takes between progress updates
+_WINDOWS_PER_CALL = 512
+
+
+def _all_fractions(px, ring_sizes, part_rings, feature, nfeat, shape, rule, progress=None):
+    """feature_fractions(..., method="area", dtype=float64)'s (feature ids,
+    flat cells, fractions), the same bits, faster: the windows whose S is
+    past the 32-bit path's (where polygon_coverage takes its 64-bit path,
+    rastpy_polygon_coverage64) go to one C call for many windows
+    (python/glue/zonal.c: the same C call on the same float64 points, the
+    same 2^-62 to float64 conversion, the nonzero cells kept); the others
+    (S <= 16, or a feature far outside the raster, whose rings are clipped
+    first) through feature_fractions itself.  The windows and their S are
+    feature_fractions' own (its _bits)."""
+    H, W = shape
+    if not len(px):
+        return feature_fractions(px, ring_sizes, part_rings, feature, nfeat, shape, rule)[:3]
+    ring_start = np.concatenate([[0], np.cumsum(part_rings)])
+    pt_start = np.concatenate([[0], np.cumsum(ring_sizes)])
+    fparts = np.bincount(feature, minlength=nfeat)
+    fpart_start = np.concatenate([[0], np.cumsum(fparts)])
+    fring = ring_start[fpart_start]
+    fpt = pt_start[fring]
+    has = np.flatnonzero(fpt[1:] > fpt[:-1])
+    lo = np.full((nfeat, 2), np.inf)
+    hi = np.full((nfeat, 2), -np.inf)
+    lo[has] = np.minimum.reduceat(px, fpt[:-1][has], axis=0)
+    hi[has] = np.maximum.reduceat(px, fpt[:-1][has], axis=0)
+    with np.errstate(invalid="ignore"):
+        c0 = np.maximum(np.floor(lo[:, 0]), 0)
+        r0 = np.maximum(np.floor(lo[:, 1]), 0)
+        c1 = np.minimum(np.ceil(hi[:, 0]), W)
+        r1 = np.minimum(np.ceil(hi[:, 1]), H)
+    inside = (c1 > c0) & (r1 > r0)
+    c0, r0, c1, r1 = (np.where(inside, v, 0).astype(np.int64) for v in (c0, r0, c1, r1))
+    hw, ww = r1 - r0, c1 - c0
+    npts = np.diff(fpt)
+    local = px - np.repeat(np.c_[c0, r0].astype(np.float64), npts, axis=0)
+    extent = np.zeros(nfeat)
+    extent[has] = np.maximum.reduceat(np.abs(local).max(axis=1), fpt[:-1][has])
+    s_box = _fr._bits(np.maximum(hw, ww) + 1.0, "area")
+    s_own = _fr._bits(extent, "area")
+    wide = inside & (s_box < 0)
+    if wide.any():  # feature_fractions' message
+        k = int(np.flatnonzero(wide)[0])
+        raise InputError("geometries: feature %d covers a window of %d x %d cells: wider than the "
+                         "coverage path's range" % (k, hw[k], ww[k]))
+    # rings of 3 points or more (feature_fractions leaves the others out)
+    ring_ok = ring_sizes >= 3
+    ok_start = np.concatenate([[0], np.cumsum(ring_ok)])
+    ok_rings = ok_start[fring[1:]] - ok_start[fring[:-1]]
+    fast = inside & (s_own >= s_box) & (s_own > _MAX_S32) & (ok_rings > 0)
+    parts = [_fast_fractions(np.flatnonzero(fast), local, ring_sizes, ring_ok, ok_start, fring, hw, ww, r0, c0,
+                             s_own, W, rule, progress)]
+    slow = ~fast & inside
+    if slow.any():
+        # the other features, renumbered, through feature_fractions
+        ids = np.flatnonzero(slow)
+        part_keep = slow[feature]
+        ring_keep = np.repeat(part_keep, part_rings)
+        pt_keep = np.repeat(ring_keep, ring_sizes)
+        renum = np.cumsum(slow) - 1
+        f, cells, c, _ = feature_fractions(px[pt_keep], ring_sizes[ring_keep], part_rings[part_keep],
+                                           renum[feature[part_keep]], len(ids), shape, rule)
+        parts.append((ids[f], cells, c))
+    if progress is not None:
+        progress(nfeat)
+    if len(parts) == 1:
+        return parts[0]
+    f = np.concatenate([p[0] for p in parts])
+    order = np.argsort(f, kind="stable")  # features in order, each one's cells as they came
+    return f[order], np.concatenate([p[1] for p in parts])[order], np.concatenate([p[2] for p in parts])[order]
+
+
+def _fast_fractions(ids, local, ring_sizes, ring_ok, ok_start, fring, hw, ww, r0, c0, s, W, rule, progress):
+    """(feature ids, cells, fractions) of the features `ids` (ascending),
+    their windows' fractions from rastpy_window_fractions64."""
+    if not len(ids):
+        return np.zeros(0, np.int64), np.zeros(0, np.int64), np.zeros(0)
+    pts = np.ascontiguousarray(local[np.repeat(ring_ok, ring_sizes)])
+    sizes = np.ascontiguousarray(ring_sizes[ring_ok], dtype=np.uint32)
+    ok_pt_start = np.concatenate([[0], np.cumsum(sizes, dtype=np.int64)])
+    first_ring = ok_start[fring[ids]]
+    win = np.empty((len(ids), 8), np.int64)
+    win[:, 0] = ids
+    win[:, 1] = hw[ids]
+    win[:, 2] = ww[ids]
+    win[:, 3] = s[ids]
+    win[:, 4] = ok_pt_start[first_ring]
+    win[:, 5] = first_ring
+    win[:, 6] = ok_start[fring[ids + 1]] - first_ring
+    win[:, 7] = r0[ids] * W + c0[ids]
+    cap = int((win[:, 1] * win[:, 2]).sum())
+    out_f = np.empty(cap, np.int64)
+    out_c = np.empty(cap, np.int64)
+    out_v = np.empty(cap, np.float64)
+    opts = _cov._opts("area", rule, _MAX_S32 + 1, 0.5, "polygon_coverage")  # its S: each window's
+    failed = ffi.new("int64_t[2]")
+    xy, rs = ffi.from_buffer("double[]", pts), ffi.from_buffer("uint32_t[]", sizes)
+    done = 0
+    for a in range(0, len(ids), _WINDOWS_PER_CALL):
+        b = min(a + _WINDOWS_PER_CALL, len(ids))
+        n = lib.rastpy_window_fractions64(b - a, ffi.from_buffer("int64_t[]", win[a:b]), xy, rs, opts, W,
+                                          ffi.from_buffer("int64_t[]", out_f[done:]),
+                                          ffi.from_buffer("int64_t[]", out_c[done:]),
+                                          ffi.from_buffer("double[]", out_v[done:]), cap - done, failed)
+        if n < 0:
+            k = int(ids[a + failed[0]])
+            raise InputError("geometries: feature %d: its coverage failed (%s)"
+                             % (k, "a bad vertex" if failed[1] else _core_status(n)))
+        done += n
+        if progress is not None:
+            progress(int(ids[b - 1]) + 1)
+    if done < cap // 2:  # do not hold the windows' worth of memory
+        return out_f[:done].copy(), out_c[:done].copy(), out_v[:done].copy()
+    return out_f[:done], out_c[:done], out_v[:done]
+
+
+def _core_status(n):
+    return "out of memory" if n == lib.RASTPY_E_NOMEM else "status %d" % n
 
 
 # ---- grouped statistics ------------------------------------------------------------------
@@ -372,8 +499,8 @@ def _features(geometries, transform, shape, rule, coverage_weight, progress):
     nfeat = len(geoms)
     bar = gis._Progress(progress, nfeat)
     try:
-        f, cells, c, _ = _fractions(px, ring_sizes, part_rings, feature, nfeat, (H, W), rule,
-                                    bar if bar.active else None)
+        f, cells, c = _all_fractions(px, ring_sizes, part_rings, feature, nfeat, (H, W), rule,
+                                     bar if bar.active else None)
     finally:
         bar.close()
     if coverage_weight == "none":

@@ -34,7 +34,7 @@ reading task's result until the blocks have taken their parts.
 from __future__ import annotations
 
 import numbers
-from typing import Any, Sequence, Tuple, Union
+from typing import Any, Optional, Sequence, Tuple, Union
 
 import numpy as np
 
@@ -146,22 +146,124 @@ def _burn_block(shape, origin, fill, dt, merge, all_touched, rule, *subsets):
     return target
 
 
+def _by_feature(parts, nfeat):
+    """The polygon parts of features 0..nfeat-1 as one part per feature
+    (its rings together, as rasterize(coverage=) fills them), features
+    without parts left out; each part's `feature` is its feature's number
+    and `values` its value."""
+    counts = np.bincount(parts.feature, minlength=nfeat)
+    rings = np.bincount(parts.feature, parts.part_rings, minlength=nfeat).astype(np.int64)
+    has = counts > 0
+    ids = np.flatnonzero(has)
+    first = (np.cumsum(counts) - counts)[ids]  # each feature's first part (parts are in feature order)
+    return _Parts(parts.px, parts.ring_sizes, rings[has], parts.kind[first], parts.values[first], ids,
+                  parts.geom[first])
+
+
+def _coverage_block(shape, origin, full, fill, dt, merge, rule, method, *subsets):
+    """The block of `shape` at origin (row, column) of a raster of shape
+    `full`: the fill, then the coverage of each _Parts of `subsets` (one
+    part a feature) merged in turn.  Each feature's fractions are those of
+    its whole window in the whole raster (the same call on the same
+    numbers as rastrum.rasterize makes), cut to the block."""
+    target = np.full(shape, fill, dt)
+    if 0 in shape:
+        return target
+    for parts in subsets:
+        if len(parts):
+            _merge_coverage(target, origin, full, parts, merge, rule, method)
+    return target
+
+
+def _merge_coverage(target, origin, full, parts, merge, rule, method):
+    """rasterize(coverage=)'s merge (_fractions.burn_coverage) of the
+    features of `parts` into the block `target` at `origin`."""
+    from . import _fractions
+
+    dt = target.dtype
+    n = len(parts)
+    f, cells, cov, _ = _fractions.feature_fractions(parts.px, parts.ring_sizes, parts.part_rings, np.arange(n),
+                                                    n, full, rule, None, method=method,
+                                                    dtype=np.float64 if dt.kind == "f" else dt)
+    h, w = target.shape
+    r0, c0 = origin
+    rr, cc = np.divmod(cells, full[1])
+    keep = (rr >= r0) & (rr < r0 + h) & (cc >= c0) & (cc < c0 + w)
+    if not keep.any():
+        return
+    f, cov = f[keep], cov[keep]
+    cells = (rr[keep] - r0) * w + (cc[keep] - c0)
+    if dt.kind == "f":
+        contrib = np.asarray(parts.values, np.float64)[f] * cov
+        work = np.float64
+    else:
+        contrib = cov.astype(np.int64)
+        work = np.int64
+    # the k-th feature covering each cell is its layer k (features in order)
+    order = np.argsort(cells, kind="stable")
+    cs = cells[order]
+    run = np.r_[True, cs[1:] != cs[:-1]]
+    if merge == "replace":
+        last = order[np.r_[run[1:], True]]
+        rr, cc = np.divmod(cells[last], w)
+        target[rr, cc] = contrib[last].astype(dt)
+        return
+    starts = np.flatnonzero(run)
+    rank = np.arange(len(cs)) - np.repeat(starts, np.diff(np.r_[starts, len(cs)]))
+    top = None if dt.kind == "f" else np.iinfo(dt).max
+    for k in range(int(rank.max()) + 1):
+        sel = order[rank == k]
+        rr, cc = np.divmod(cells[sel], w)
+        old = target[rr, cc].astype(work)
+        if merge == "add":
+            new = old + contrib[sel]
+            if top is not None:
+                new = np.minimum(new, top)
+        else:  # max; a NaN cell takes the fraction
+            new = np.fmax(old, contrib[sel])
+        target[rr, cc] = new.astype(dt)
+
+
 def _block_parts(layer, b):
     return layer.block_parts(b)
 
 
-def _read_partition(frame, p, values, default_value, fill, dt, inv, row_edges, col_edges):
+def _read_partition(frame, p, values, default_value, fill, dt, inv, row_edges, col_edges, coverage=None):
     """Partition p of a dask-geopandas frame as a _Layer (its shapes read and
-    checked as rastrum.rasterize reads them)."""
+    checked as rastrum.rasterize reads them; with `coverage`, one part a
+    feature)."""
     try:
         geoms, vals = gis._split_shapes(frame, default_value, fill, values)
-        vals = gis._values(vals, dt)
-        xy, ring_sizes, part_rings, kind, feature, geom = gis._flatten(geoms)
+        vals, xy, ring_sizes, part_rings, kind, feature, geom = _read(geoms, vals, dt, coverage)
         px = gis._pixels(xy, inv, ring_sizes, part_rings, feature)
     except InputError as e:
         raise InputError("partition %d: %s" % (p, e)) from None
+    return _Layer(_layer_parts(px, ring_sizes, part_rings, kind, vals, feature, geom, len(geoms), coverage),
+                  row_edges, col_edges)
+
+
+def _read(geoms, vals, dt, coverage):
+    """The values (per feature) and the flattened geometries, checked as
+    rastrum.rasterize checks them (with coverage: polygons only, values
+    that fit the fractions' dtype)."""
+    if coverage is not None:
+        from . import _fractions
+
+        _fractions.check_values(vals, dt)
+        vals = gis._values(vals, np.dtype(np.float64)) if dt.kind == "f" else np.zeros(len(vals))
+    else:
+        vals = gis._values(vals, dt)
+    xy, ring_sizes, part_rings, kind, feature, geom = gis._flatten(geoms)
+    if coverage is not None:
+        from . import _fractions
+
+        _fractions._polygons_only(kind, feature, "shapes")
+    return vals, xy, ring_sizes, part_rings, kind, feature, geom
+
+
+def _layer_parts(px, ring_sizes, part_rings, kind, vals, feature, geom, nfeat, coverage):
     parts = _Parts(px, ring_sizes, part_rings, kind, vals[feature], feature, geom)
-    return _Layer(parts, row_edges, col_edges)
+    return parts if coverage is None else _by_feature(parts, nfeat)
 
 
 def _partition_blocks(frame, inv, row_edges, col_edges):
@@ -246,13 +348,15 @@ def rasterize(
     dtype: Any = None,
     values: Union[str, Sequence[Union[int, float, None]], None] = None,
     rule: str = "evenodd",
+    coverage: Optional[str] = None,
 ) -> "dask.array.Array":
     """Burn shapes into a lazy 2-D ``dask.array.Array``, block by block.
 
     The computed array equals ``rastrum.rasterize(shapes, out_shape,
     transform=transform, fill=fill, all_touched=all_touched,
     merge_alg=merge_alg, default_value=default_value, dtype=dtype,
-    values=values, rule=rule)`` pixel for pixel, for any chunking.
+    values=values, rule=rule, coverage=coverage)`` pixel for pixel (bit for
+    bit with `coverage`), for any chunking.
 
     Parameters
     ----------
@@ -272,10 +376,18 @@ def rasterize(
         As :func:`rastrum.rasterize`.
     dtype : one of rastrum.gis.DTYPES, optional
         As :func:`rastrum.rasterize`; for a dask-geopandas frame the default
-        comes from the value column's dtype (float64 for floats, else int64).
+        comes from the value column's dtype (float64 for floats, else int64);
+        with `coverage`, float64.
     values : str or sequence, optional
         A column name (GeoDataFrame, dask-geopandas too) or, for in-memory
         shapes, one value per shape.
+    coverage : str, optional
+        Coverage fractions, as :func:`rastrum.rasterize` burns them
+        (merge_alg "replace", "add" or "max"; float64, float32, uint8 or
+        uint16).  A block computes the whole window (in the whole raster)
+        of every feature that meets it, and keeps the block's cells: the
+        same fractions as one machine, a feature crossing k blocks computed
+        k times (docs/dask.md).
 
     Returns
     -------
@@ -306,11 +418,20 @@ def rasterize(
     except ImportError:
         raise ImportError(_NEEDS_DASK % "rastrum.dask.rasterize") from None
 
-    merge = gis._merge_name(merge_alg)
+    merge = gis._merge_name(merge_alg, coverage is not None)
     _core._name(rule, "fill rule", _core.RULES)
     if not isinstance(all_touched, (bool, np.bool_)):
         raise InputError("all_touched must be True or False, not %r" % (all_touched,))
     all_touched = bool(all_touched)
+    if coverage is not None:
+        from . import _fractions
+
+        coverage = _fractions._method(coverage)
+        if all_touched:
+            raise InputError("all_touched=True has no meaning with coverage= (every touched cell has its fraction)")
+        if dtype is None:
+            dtype = "float64"
+        _fractions._coverage_dtype(dtype)
     inv = gis._inverse(gis._transform6(transform))
     gis._real(fill, "fill")
     frame = _is_dask_frame(shapes)
@@ -330,28 +451,29 @@ def rasterize(
     else:
         geoms, vals = gis._split_shapes(shapes, default_value, fill, values)
         (h, w, dt), _ = gis._out_array(None, out_shape, dtype, fill, vals)
-        vals = gis._values(vals, dt)
-        xy, ring_sizes, part_rings, kind, feature, geom = gis._flatten(geoms)
+        vals, xy, ring_sizes, part_rings, kind, feature, geom = _read(geoms, vals, dt, coverage)
         px = gis._pixels(xy, inv, ring_sizes, part_rings, feature)
     fill_v = gis._fits(fill, dt, "fill")
     rows, cols = _chunks(chunks, (h, w), dt)
     row_edges = np.concatenate([[0], np.cumsum(rows)]).astype(np.int64)
     col_edges = np.concatenate([[0], np.cumsum(cols)]).astype(np.int64)
     args = (fill_v, dt, merge, all_touched, rule)
+    if coverage is not None:
+        args = ((h, w), fill_v, dt, merge, rule, coverage)
 
     def blocks(make):
         return [[da.from_delayed(make(i * len(cols) + j, (r, c), (int(row_edges[i]), int(col_edges[j]))),
                                  (r, c), dtype=dt)
                  for j, c in enumerate(cols)] for i, r in enumerate(rows)]
 
-    burn = dask.delayed(_burn_block, pure=False)
+    burn = dask.delayed(_burn_block if coverage is None else _coverage_block, pure=False)
     if not frame:
-        layer = _Layer(_Parts(px, ring_sizes, part_rings, kind, vals[feature], feature, geom),
+        layer = _Layer(_layer_parts(px, ring_sizes, part_rings, kind, vals, feature, geom, len(geoms), coverage),
                        row_edges, col_edges)
         return da.block(blocks(lambda b, shape, origin: burn(shape, origin, *args, layer.block_parts(b))))
 
     read = dask.delayed(_read_partition, pure=False)
-    layers = [read(part, p, values, default_value, fill, dt, inv, row_edges, col_edges)
+    layers = [read(part, p, values, default_value, fill, dt, inv, row_edges, col_edges, coverage)
               for p, part in enumerate(shapes.to_delayed())]
     meets = _partition_blocks(shapes, inv, row_edges, col_edges)
     take = dask.delayed(_block_parts, pure=False)

@@ -1,4 +1,5 @@
-"""Canvas.fill_polygon of a Path with ``aa=``: the path flattened in C
+"""Canvas.fill_polygon of a Path with ``aa=``, and polygon_coverage of a
+Path: the path flattened in C
 straight into the anti-aliased filler (python/glue/pathfill.c), without
 its rings going back through Python (docs/paths.md, "Speed").
 
@@ -55,6 +56,7 @@ def paint(p, how, aa, rule, bits, tol, fmt="gray8", color=255):
     return c.array.copy()
 
 
+@settings(max_examples=max(5, settings().max_examples // 2))
 @given(paths(), st.sampled_from(["area", "accumulate", "ss4"]), st.sampled_from(["nonzero", "evenodd"]),
        st.sampled_from([4, 8, 12]), st.sampled_from(TOLS))
 def test_path_fill_equals_its_rings_filled(p, aa, rule, bits, tol):
@@ -79,6 +81,25 @@ def test_path_fill_area_is_the_exact_coverage(v, rule, tol):
     exact = oracle_coverage.coverage_exact([r.tolist() for r in rings], (8, 8), rule=rule)
     want = np.vectorize(lambda a: oracle_coverage.level(a, 255), otypes=[np.int64])(exact)
     assert np.array_equal(c.array, want)
+
+
+@settings(max_examples=max(5, settings().max_examples // 2))
+@given(paths(), st.sampled_from(["area", "accumulate", "ss2"]), st.sampled_from(["nonzero", "evenodd"]),
+       st.sampled_from([4, 8]), st.sampled_from(TOLS), st.sampled_from([np.uint8, np.uint16, np.float64]))
+def test_path_coverage_equals_its_rings_coverage(p, method, rule, bits, tol, dtype):
+    """polygon_coverage of a Path: flattened in C into the filler once its
+    options are known (the second call), the same as of its rings."""
+    if tol is not None and tol * (1 << bits) < 1:
+        tol = None
+    kw = dict(method=method, rule=rule, subpixel_bits=bits, dtype=dtype)
+    rings = p.flatten(bits, tol)
+    want = rastrum.polygon_coverage(rings, (12, 16), **kw) if rings else None
+    for _ in range(2):
+        got = rastrum.polygon_coverage(p, (12, 16), tolerance=tol, **kw)
+        if want is None:
+            assert not got.any()
+        else:
+            assert got.dtype == want.dtype and np.array_equal(got, want)
 
 
 def test_path_fill_other_formats_and_the_glyph_text():
@@ -129,6 +150,10 @@ def test_path_fill_bad_input_leaves_the_canvas():
     with pytest.raises(InputError, match="below one grid step"):
         c.fill_polygon(Path().move_to(0, 0).quad_to(8, 0, 8, 8), 255, aa="area", tolerance=1 / 512)
     assert (c.array == 9).all()
+    for p in (far, Path().move_to(0, 0).line_to(1e7, 0).line_to(0, 5)):
+        for _ in range(2):
+            with pytest.raises(InputError, match="outside the range"):
+                rastrum.polygon_coverage(p, (8, 8), rule="nonzero")
     c.fill_polygon(Path(), 255, aa="area")  # nothing to paint
     c.fill_polygon(Path().move_to(1, 1).line_to(5, 5), 255, aa="area")  # encloses nothing
     assert (c.array == 9).all()

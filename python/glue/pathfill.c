@@ -15,10 +15,15 @@ static size_t rastpy_up16(size_t n)
     return (n + 15) & ~(size_t)15;
 }
 
-long rastpy_fill_path_aa(const rast_target *target, const uint8_t *verbs, uint32_t nverbs,
-                         const int32_t *xy, uint32_t npoints, int32_t tolerance,
-                         const rast_coverage_opts *opts, const void *pixel, rastpy_scratch *sc)
+/* Flatten the path and fill it: into `target` with `pixel` (target not
+ * NULL), else into the (height, width) array `out` of coverage format
+ * `format` (rast_polygon_coverage). */
+static long rastpy_path_run(const rast_target *target, const void *pixel, void *out, int format,
+                            int32_t height, int32_t width, const uint8_t *verbs, uint32_t nverbs,
+                            const int32_t *xy, uint32_t npoints, int32_t tolerance,
+                            const rast_coverage_opts *opts, rastpy_scratch *sc)
 {
+    static const int32_t size[3] = {1, 2, 8};
     rast_path path;
     rast_polygon poly;
     rast_status st;
@@ -27,16 +32,26 @@ long rastpy_fill_path_aa(const rast_target *target, const uint8_t *verbs, uint32
     unsigned char *mem;
     rast_point *pts;
     uint32_t *ring_sizes;
-    if (!target || !opts || !pixel || (npoints && !xy) || (nverbs && !verbs)) return RAST_E_NULL;
+    rast_rect clip;
+    if (!opts || (npoints && !xy) || (nverbs && !verbs)) return RAST_E_NULL;
+    if (target) {
+        if (!pixel) return RAST_E_NULL;
+        clip = target->clip;
+    } else {
+        if (!out) return RAST_E_NULL;
+        if (format < 0 || format > 2 || height < 0 || width < 0) return RAST_E_ARG;
+        clip.x0 = clip.y0 = 0;
+        clip.x1 = width;
+        clip.y1 = height;
+    }
     path.verbs = verbs;
     path.nverbs = nverbs;
     path.points = (const rast_point *)(const void *)xy;
     path.npoints = npoints;
     st = rast_path_flatten_size(&path, tolerance, &np, &nr);
     if (st != RAST_OK) return st;
-    if (!nr) return 0;
-    st = rast_coverage_scratch_size(opts, np, target->clip.x1 - target->clip.x0,
-                                    target->clip.y1 - target->clip.y0, &need);
+    if (!nr && target) return 0;
+    st = rast_coverage_scratch_size(opts, np, clip.x1 - clip.x0, clip.y1 - clip.y0, &need);
     if (st != RAST_OK) return st;
     /* one block: the vertices, the ring sizes, then the filler's scratch
      * (sized for all np vertices, at least what the kept ones need) */
@@ -64,9 +79,29 @@ long rastpy_fill_path_aa(const rast_target *target, const uint8_t *verbs, uint32
             from += n;
         }
         poly.nrings = kept;
-        if (kept)
+        if (target && kept)
             st = rast_fill_polygon_aa(target, &poly, opts, pixel, mem + head + sizes, need);
+        else if (!target)  /* no rings: the coverage is all 0, written by the call */
+            st = rast_polygon_coverage(&poly, opts, &clip, (rast_coverage_format)format, out,
+                                       (ptrdiff_t)width * size[format], mem + head + sizes, need);
     }
     if (!sc || mem != sc->buf) free(mem);
     return st;
+}
+
+long rastpy_fill_path_aa(const rast_target *target, const uint8_t *verbs, uint32_t nverbs,
+                         const int32_t *xy, uint32_t npoints, int32_t tolerance,
+                         const rast_coverage_opts *opts, const void *pixel, rastpy_scratch *sc)
+{
+    if (!target) return RAST_E_NULL;
+    return rastpy_path_run(target, pixel, NULL, 0, 0, 0, verbs, nverbs, xy, npoints, tolerance, opts,
+                           sc);
+}
+
+long rastpy_path_coverage(void *out, int32_t height, int32_t width, int format, const uint8_t *verbs,
+                          uint32_t nverbs, const int32_t *xy, uint32_t npoints, int32_t tolerance,
+                          const rast_coverage_opts *opts, rastpy_scratch *sc)
+{
+    return rastpy_path_run(NULL, NULL, out, format, height, width, verbs, nverbs, xy, npoints,
+                           tolerance, opts, sc);
 }

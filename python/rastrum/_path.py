@@ -50,6 +50,15 @@ def _real(v: object, what: str) -> float:
     return f
 
 
+def _flag(v: object, what: str) -> bool:
+    """An SVG arc flag: True/False or 0/1, else InputError."""
+    if isinstance(v, (bool, np.bool_)):
+        return bool(v)
+    if isinstance(v, (int, np.integer)) and v in (0, 1):
+        return bool(v)
+    raise InputError("%s: %r is not a flag (True, False, 0 or 1)" % (what, v))
+
+
 class Path:
     """A path: subpaths of lines and curves, built by chained calls.
 
@@ -241,6 +250,7 @@ class Path:
         line).  Stored as cubics within ``ARC_ERROR`` (1/4096) px of the
         true arc.  With y down, ``sweep=True`` turns clockwise on screen.
         """
+        large_arc, sweep = _flag(large_arc, "arc_to: large_arc"), _flag(sweep, "arc_to: sweep")
         rx, ry = abs(_real(rx, "arc_to: rx")), abs(_real(ry, "arc_to: ry"))
         phi = math.radians(_real(rotation, "arc_to: rotation"))
         x2, y2 = self._point(x, y, "arc_to")

@@ -14,11 +14,23 @@ with ``fill_path`` on an A8 image, cairo with ``fill`` on an A8 surface.
 Wall-clock times on a shared machine are noisy: the ratios are also
 given in CPU time (process_time), and ``--draws N`` draws N times with
 no timing, for callgrind (the difference of a ``--draws 0`` run).
+
+    python bench/bench_paths.py --tolerance 0.25    # rastrum at 1/4 px
+    python bench/bench_paths.py --aa accumulate     # the other engine
+    python bench/bench_paths.py --seeds 8           # seeded texts instead:
+                                                    # random words, 12-28 px
+
+``--seeds N`` draws N seeded paragraphs (words of random letters, one
+size per seed from 12 to 28 px, lines filling the canvas) and prints
+each seed's ratios and the worst.  rastrum's row gives its flattened
+edge count; the path is prebuilt for every drawer, and rastrum flattens
+it in C straight into the filler on each draw (python/glue/pathfill.c).
 """
 
 from __future__ import annotations
 
 import argparse
+import random
 import statistics
 import sys
 import time
@@ -44,17 +56,35 @@ TEXT = ("Where these peers are inexact, rastrum can be exact: the peers' coverag
 SIZE = (120, 720)  # (H, W)
 
 
-def paragraph():
-    """The paragraph as one rastrum Path (lines 18 px apart)."""
+def paragraph(text=TEXT, size=14):
+    """The paragraph as one rastrum Path (lines 9/7 of `size` apart)."""
     whole = rastrum.Path()
-    for k, line in enumerate(TEXT.split("\n")):
-        p = paths_scene.text_path(line, 14, 4, 16 + 18 * k)
+    for k, line in enumerate(text.split("\n")):
+        p = paths_scene.text_path(line, size, 4, size * 8 / 7 + size * 9 / 7 * k)
         whole._verbs += p._verbs
         whole._pts += p._pts
     return whole
 
 
-def drawers(path):
+def seeded_text(seed):
+    """Seed `seed`'s paragraph: (text, size in px): words of 1-10 random
+    letters (upper and lower case, some digits and punctuation), lines of
+    about the canvas's width, as many lines as fit."""
+    rnd = random.Random(seed)
+    size = rnd.randint(12, 28)
+    letters = "abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789,.;:'&?"
+    per_line = int(SIZE[1] / (0.6 * size))
+    lines = []
+    for _ in range(max(1, int((SIZE[0] - size * 8 / 7) // (size * 9 / 7)) + 1)):
+        line = ""
+        while len(line) < per_line - 10:
+            line += "".join(rnd.choice(letters[:52] if rnd.random() < 0.9 else letters)
+                            for _ in range(rnd.randint(1, 10))) + " "
+        lines.append(line.rstrip())
+    return "\n".join(lines), size
+
+
+def drawers(path, aa="area", tolerance=None):
     """{name: draw()} for rastrum and the peers installed, paths prebuilt."""
     h, w = SIZE
     out = {}
@@ -62,7 +92,7 @@ def drawers(path):
 
     def r_draw():
         canvas.array[...] = 0
-        canvas.fill_polygon(path, 255, rule="nonzero", aa="area")
+        canvas.fill_polygon(path, 255, rule="nonzero", aa=aa, tolerance=tolerance)
         return canvas.array
     out["rastrum"] = r_draw
     try:
@@ -115,9 +145,19 @@ def drawers(path):
     return out
 
 
+_REF: dict = {}
+
+
 def check(path, draws):
-    """Every drawer's output against the exact coverage (levels of 255)."""
-    ref = rastrum.polygon_coverage(path, SIZE, rule="nonzero", dtype=np.float64) * 255
+    """Every drawer's output against the exact coverage of the true curves
+    (levels of 255): the path flattened at 1/4096 px on the 1/65536 px grid
+    (docs/paths.md: its coverage is within about 0.1/255 of the true
+    curves'), its "area" coverage, computed once per path."""
+    key = id(path)
+    if _REF.get("key") != key:
+        _REF["key"], _REF["ref"] = key, rastrum.polygon_coverage(
+            path, SIZE, rule="nonzero", subpixel_bits=16, tolerance=2.0 ** -12, dtype=np.float64) * 255
+    ref = _REF["ref"]
     rows = {}
     for name, draw in draws.items():
         d = np.abs(draw().astype(np.float64) - ref)
@@ -125,17 +165,59 @@ def check(path, draws):
     return rows
 
 
+def timed(draws, repeats):
+    """{name: (median wall, median CPU time)}, the drawers taking turns."""
+    tw = {n: [] for n in draws}
+    tc = {n: [] for n in draws}
+    for _ in range(repeats):
+        for name, draw in draws.items():
+            w0, c0 = time.perf_counter(), time.process_time()
+            draw()
+            tc[name].append(time.process_time() - c0)
+            tw[name].append(time.perf_counter() - w0)
+    return {n: (statistics.median(tw[n]), statistics.median(tc[n])) for n in draws}
+
+
+def edges(path, tolerance):
+    return sum(len(r) for r in path.flatten(8, tolerance))
+
+
 def main(argv=None):
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--repeats", type=int, default=21)
     ap.add_argument("--draws", type=int, default=None, help="draw each N times, print only the check")
     ap.add_argument("--only", default=None, help="one drawer (for callgrind)")
+    ap.add_argument("--aa", default="area", help='rastrum\'s engine: "area" (default) or "accumulate"')
+    ap.add_argument("--tolerance", type=float, default=None,
+                    help="rastrum's flattening tolerance, px (default Path.DEFAULT_TOLERANCE)")
+    ap.add_argument("--seeds", type=int, default=None, help="N seeded texts instead of the paragraph")
     a = ap.parse_args(argv)
+    if a.seeds is not None:
+        worst = None
+        for seed in range(a.seeds):
+            text, size = seeded_text(seed)
+            path = paragraph(text, size)
+            draws = drawers(path, a.aa, a.tolerance)
+            err = check(path, draws)
+            t = timed(draws, a.repeats)
+            ref = t.get("Blend2D", (float("nan"),) * 2)
+            ratio = (t["rastrum"][0] / ref[0], t["rastrum"][1] / ref[1])
+            print("seed %d: %d px, %d verbs, %d edges; rastrum %.2f ms CPU = %.2fx Blend2D (wall %.2fx); "
+                  "max error %s" % (seed, size, len(path), edges(path, a.tolerance), t["rastrum"][1] * 1e3,
+                                    ratio[1], ratio[0],
+                                    ", ".join("%s %.1f" % (n, e[0]) for n, e in err.items())))
+            if worst is None or ratio[1] > worst[1]:
+                worst = (seed, ratio[1])
+        print("worst seed %d: rastrum %.2fx Blend2D's CPU time (aa=%r, tolerance %s)"
+              % (worst[0], worst[1], a.aa, a.tolerance or "default"))
+        return 0
     path = paragraph()
-    draws = drawers(path)
+    draws = drawers(path, a.aa, a.tolerance)
     if a.only:
         draws = {a.only: draws[a.only]}
-    print("paragraph: %d glyph-path verbs, %d points, %dx%d px" % (len(path), len(path._pts), SIZE[1], SIZE[0]))
+    print("paragraph: %d glyph-path verbs, %d points, %dx%d px; rastrum aa=%r at tolerance %s: %d edges"
+          % (len(path), len(path._pts), SIZE[1], SIZE[0], a.aa, a.tolerance or "default",
+             edges(path, a.tolerance)))
     for name, (mx, off) in check(path, draws).items():
         print("%-8s against the exact coverage: max %.1f/255, %d pixels off by more than 1/255" % (name, mx, off))
     if a.draws is not None:
@@ -143,35 +225,12 @@ def main(argv=None):
             for _ in range(a.draws):
                 draw()
         return 0
-    wall, cpu = {}, {}
-    for name, draw in draws.items():
-        tw, tc = [], []
-        for _ in range(a.repeats):
-            w0, c0 = time.perf_counter(), time.process_time()
-            draw()
-            tc.append(time.process_time() - c0)
-            tw.append(time.perf_counter() - w0)
-        wall[name], cpu[name] = statistics.median(tw), statistics.median(tc)
-    ref = "Blend2D" if "Blend2D" in wall else None
-    for name in wall:
+    t = timed(draws, a.repeats)
+    ref = t.get("Blend2D")
+    for name, (w, c) in t.items():
         print("%-8s median wall %.3f ms (%.2fx Blend2D), CPU time %.3f ms (%.2fx Blend2D)"
-              % (name, wall[name] * 1e3, wall[name] / wall[ref] if ref else float("nan"), cpu[name] * 1e3,
-                 cpu[name] / cpu[ref] if ref else float("nan")))
-    # where rastrum's time goes: the Path's flattening (C, with its Python
-    # conversions) and the fill of the rings
-    path_rings = [r for r in path.flatten(8)]
-    tf, tr = [], []
-    canvas = rastrum.Canvas(SIZE, format="gray8")
-    for _ in range(a.repeats):
-        c0 = time.process_time()
-        rings = path.flatten(8)
-        c1 = time.process_time()
-        canvas.fill_polygon(rings, 255, rule="nonzero", aa="area")
-        c2 = time.process_time()
-        tf.append(c1 - c0)
-        tr.append(c2 - c1)
-    print("rastrum: %d edges at the default tolerance; CPU time: flatten %.3f ms, fill the rings %.3f ms"
-          % (sum(len(r) for r in path_rings), statistics.median(tf) * 1e3, statistics.median(tr) * 1e3))
+              % (name, w * 1e3, w / ref[0] if ref else float("nan"), c * 1e3,
+                 c / ref[1] if ref else float("nan")))
     return 0
 
 

@@ -289,3 +289,19 @@ def test_arc_on_the_ellipse(rx, ry, rot, large, sweep, x, y):
 def test_path_as_polygon_mask_docstring_example():
     p = rastrum.Path().move_to(1, 1).quad_to(4, 7, 7, 1).close()
     assert rastrum.polygon_mask(p, (4, 8)).sum() == 12
+
+
+def test_arc_flags_checked():
+    """arc_to's large_arc and sweep: True/False or 0/1 (numpy's too); anything
+    else an InputError naming the flag, the path unchanged."""
+    p = Path().move_to(0, 0).line_to(4, 0).close()
+    for bad in (2, -1, 0.5, "1", None, np.zeros((4, 5), np.int32)):
+        for k in (3, 4):
+            args = [5, 5, 0, 1, 0, 10, 0]
+            args[k] = bad
+            with pytest.raises(rastrum.InputError, match="large_arc|sweep"):
+                p.arc_to(*args)
+            assert len(p) == 3 and p.points.shape == (2, 2)
+    for good in (True, 1, np.bool_(True), np.int64(1)):
+        q = Path().move_to(0, 0).arc_to(5, 5, 0, good, good, 10, 0)
+        assert np.array_equal(q.points, Path().move_to(0, 0).arc_to(5, 5, 0, True, True, 10, 0).points)

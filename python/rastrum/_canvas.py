@@ -16,7 +16,7 @@ from . import _shading
 from . import _triangles
 from ._core import InputError
 from ._native import ffi, lib
-from ._path import path_rings
+from ._path import Path as _Path, fill_path_aa as _fill_path_aa, path_rings
 from ._typing import (Boundary, Color, CoverageMethod, Format, LineAlgorithm, Point, PolygonAlgorithm, Precision,
                       Rings, Rounding, Rule, Shading, Shape, TriangleAlgorithm)
 
@@ -336,7 +336,7 @@ class Canvas:
         return self._format
 
     def _fill_aa(self, geometry, color, aa, rule, subpixel_bits, sample_offset, entry, *,
-                 vertex_colors=None, depth=None, **binary_only):
+                 vertex_colors=None, depth=None, path_tolerance=None, **binary_only):
         """An anti-aliased fill (``aa=`` not None) of a polygon's rings, or of
         a checked (N, 3, 2) triangle batch for the triangle entries."""
         if depth is not None:
@@ -363,6 +363,8 @@ class Canvas:
             raise InputError("%s: aa=%r takes one colour for the whole batch, not one per triangle"
                              % (entry, aa))
         pixel = self._pixel(color)
+        if type(geometry) is _Path:  # fill_polygon's Path, flattened in C (docs/paths.md)
+            return _fill_path_aa(self._writable(), geometry, pixel, opts, path_tolerance)
         if entry == "Canvas.fill_polygon":
             _coverage.fill_polygon_aa(self._writable(), geometry, pixel, opts)
         else:
@@ -515,6 +517,13 @@ class Canvas:
             del args["self"]
             return _spill(self, Canvas.fill_polygon, args)
         if tolerance is not None or not isinstance(rings, (list, tuple, _ndarray)):  # docs/paths.md
+            if type(rings) is _Path and aa is not None and type(color) is int and opacity is None \
+                    and gamma is None and vertex_colors is None:  # flattened in C into the filler
+                if self._fill_aa(rings, color, aa, rule, subpixel_bits, sample_offset, "Canvas.fill_polygon",
+                                 algorithm=(algorithm, "aet"), rounding=(rounding, "exact"),
+                                 boundary=(boundary, "exact"), shading=(shading, "gouraud"),
+                                 precision=(precision, "exact"), path_tolerance=tolerance):
+                    return
             rings = path_rings(rings, subpixel_bits, tolerance)
         if opacity is not None or gamma is not None or (color is not None and type(color) is not int):
             blend, color = _blend_args(color, opacity, self._format, "Canvas.fill_polygon", gamma)

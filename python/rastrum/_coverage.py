@@ -19,7 +19,7 @@ from ._core import InputError
 from ._native import ffi, lib
 from ._typing import CoverageMethod, PathRings, Rule, Shape
 from ._triangles import tris_f64
-from ._path import path_rings
+from ._path import Path as _Path, path_rings
 
 
 def _methods():
@@ -231,6 +231,27 @@ def _finish(raw, d):
     return out if d == _F64 else out.astype(d)
 
 
+def _path_coverage(path, shape, quick, tolerance):
+    """The coverage of a Path, flattened in C straight into the filler
+    (python/glue/pathfill.c; docs/paths.md), equal to that of its rings
+    path.flatten(subpixel_bits, tolerance); None when the general path
+    must take it (an error there says which)."""
+    opts, fmt, c_dtype, d = quick
+    bits = opts.subpixel_bits
+    if bits > lib.RAST_MAX_SUBPIXEL_BITS:
+        return None
+    tol = path._grid_tolerance(tolerance, bits, bits)
+    pts, verbs = path._fixed(bits)
+    if not len(verbs):
+        return None
+    h, w = shape
+    raw = _empty(shape, c_dtype)
+    if _lent(lib.rastpy_path_coverage, _from_buffer(raw), h, w, fmt, ffi.from_buffer("uint8_t[]", verbs),
+             len(verbs), ffi.from_buffer("int32_t[]", pts), len(pts), tol, opts):
+        return None
+    return raw if fmt != _FIX62 else _finish(raw, d)
+
+
 def polygon_coverage(rings: PathRings, shape: Shape, *, rule: Rule = "evenodd", method: CoverageMethod = "area",
                      subpixel_bits: int = 8, sample_offset: float = 0.5,
                      dtype: npt.DTypeLike = np.uint8, tolerance: Optional[float] = None) -> npt.NDArray[Any]:
@@ -280,10 +301,14 @@ def polygon_coverage(rings: PathRings, shape: Shape, *, rule: Rule = "evenodd", 
     >>> rastrum.polygon_coverage([(0.5, 0), (2, 0), (2, 1), (0.5, 1)], (1, 3))
     array([[128, 255,   0]], dtype=uint8)
     """
-    if tolerance is not None or not isinstance(rings, (list, tuple, np.ndarray)):  # docs/paths.md
-        rings = path_rings(rings, subpixel_bits, tolerance)
     key = _quick_key(method, rule, subpixel_bits, sample_offset, dtype)
     quick = _quick(key)
+    if type(rings) is _Path and quick is not None and _plain_shape(shape) is not None:
+        got = _path_coverage(rings, shape, quick, tolerance)
+        if got is not None:
+            return got
+    if tolerance is not None or not isinstance(rings, (list, tuple, np.ndarray)):  # docs/paths.md
+        rings = path_rings(rings, subpixel_bits, tolerance)
     if quick is not None and _plain_shape(shape) is not None:
         points = _quick_points(rings)
         if points is not None:

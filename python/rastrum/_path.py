@@ -50,6 +50,15 @@ def _real(v: object, what: str) -> float:
     return f
 
 
+def _flag(v: object, what: str) -> bool:
+    """An SVG arc flag: True/False or 0/1, else InputError."""
+    if isinstance(v, (bool, np.bool_)):
+        return bool(v)
+    if isinstance(v, (int, np.integer)) and v in (0, 1):
+        return bool(v)
+    raise InputError("%s: %r is not a flag (True, False, 0 or 1)" % (what, v))
+
+
 class Path:
     """A path: subpaths of lines and curves, built by chained calls.
 
@@ -80,13 +89,54 @@ class Path:
 
 
     def __init__(self, *, tolerance: Optional[float] = None) -> None:
-        self._verbs: List[int] = []
-        self._pts: List[Tuple[float, float]] = []
+        self._vl: List[int] = []
+        self._pl: List[Tuple[float, float]] = []
+        # (verbs uint8, points (N, 2) float64) and {bits: int32 points on
+        # the 1/2**bits grid}, made once and kept until the path changes
+        self._arrays: Optional[Tuple[np.ndarray, np.ndarray]] = None
+        self._fixed_at: dict = {}
         self._start: Optional[Tuple[float, float]] = None
         self._cur: Optional[Tuple[float, float]] = None
         self._closed = False
         self._tolerance: Optional[float] = None
         self.tolerance = tolerance
+
+    # ---- storage: lists to build, arrays converted once --------------------------
+    # Every change goes through these (the builders append to the lists and
+    # call _changed; code that assigns or extends _verbs / _pts goes through
+    # the setters), so the arrays a fill takes are converted once per edit,
+    # not per draw.
+    @property
+    def _verbs(self) -> List[int]:
+        return self._vl
+
+    @_verbs.setter
+    def _verbs(self, value: List[int]) -> None:
+        self._vl = value
+        self._changed()
+
+    @property
+    def _pts(self) -> List[Tuple[float, float]]:
+        return self._pl
+
+    @_pts.setter
+    def _pts(self, value: List[Tuple[float, float]]) -> None:
+        self._pl = value
+        self._changed()
+
+    def _changed(self) -> None:
+        self._arrays = None
+        if self._fixed_at:
+            self._fixed_at = {}
+
+    def _as_arrays(self) -> Tuple[np.ndarray, np.ndarray]:
+        a = self._arrays
+        if a is None or len(a[0]) != len(self._vl) or len(a[1]) != len(self._pl):
+            a = self._arrays = (np.array(self._vl, dtype=np.uint8),
+                                np.array(self._pl, dtype=np.float64).reshape(-1, 2))
+            a[0].flags.writeable = a[1].flags.writeable = False
+            self._fixed_at = {}
+        return a
 
     # ---- properties ---------------------------------------------------------
     @property
@@ -107,12 +157,12 @@ class Path:
     @property
     def verbs(self) -> np.ndarray:
         """The verbs as uint8 (0 move, 1 line, 2 quad, 3 cubic, 4 close)."""
-        return np.array(self._verbs, dtype=np.uint8)
+        return self._as_arrays()[0].copy()
 
     @property
     def points(self) -> np.ndarray:
         """The points the verbs take, (N, 2) float64 (x, y)."""
-        return np.array(self._pts, dtype=np.float64).reshape(-1, 2)
+        return self._as_arrays()[1].copy()
 
     def __len__(self) -> int:
         return len(self._verbs)
@@ -123,7 +173,7 @@ class Path:
     def copy(self) -> "Path":
         """An independent copy."""
         p = Path(tolerance=self._tolerance)
-        p._verbs, p._pts = list(self._verbs), list(self._pts)
+        p._vl, p._pl = list(self._vl), list(self._pl)
         p._start, p._cur, p._closed = self._start, self._cur, self._closed
         return p
 
@@ -134,17 +184,19 @@ class Path:
     def _need_current(self, what: str) -> Tuple[float, float]:
         if self._cur is None:
             raise InputError("%s: no current point; a path starts with move_to" % what)
+        self._changed()
         if self._closed:  # SVG: a new subpath at the closed one's start
-            self._verbs.append(MOVE)
-            self._pts.append(self._cur)
+            self._vl.append(MOVE)
+            self._pl.append(self._cur)
             self._closed = False
         return self._cur
 
     def move_to(self, x: float, y: float) -> "Path":
         """Start a subpath at (x, y)."""
         p = self._point(x, y, "move_to")
-        self._verbs.append(MOVE)
-        self._pts.append(p)
+        self._changed()
+        self._vl.append(MOVE)
+        self._pl.append(p)
         self._start = self._cur = p
         self._closed = False
         return self
@@ -153,8 +205,8 @@ class Path:
         """A line from the current point to (x, y)."""
         p = self._point(x, y, "line_to")
         self._need_current("line_to")
-        self._verbs.append(LINE)
-        self._pts.append(p)
+        self._vl.append(LINE)
+        self._pl.append(p)
         self._cur = p
         return self
 
@@ -162,8 +214,8 @@ class Path:
         """A quadratic Bezier curve: control point (x1, y1), end (x, y)."""
         c, p = self._point(x1, y1, "quad_to"), self._point(x, y, "quad_to")
         self._need_current("quad_to")
-        self._verbs.append(QUAD)
-        self._pts += [c, p]
+        self._vl.append(QUAD)
+        self._pl += [c, p]
         self._cur = p
         return self
 
@@ -172,8 +224,8 @@ class Path:
         c1, c2 = self._point(x1, y1, "cubic_to"), self._point(x2, y2, "cubic_to")
         p = self._point(x, y, "cubic_to")
         self._need_current("cubic_to")
-        self._verbs.append(CUBIC)
-        self._pts += [c1, c2, p]
+        self._vl.append(CUBIC)
+        self._pl += [c1, c2, p]
         self._cur = p
         return self
 
@@ -182,7 +234,8 @@ class Path:
         if self._cur is None:
             raise InputError("close: no current point; a path starts with move_to")
         if not self._closed:
-            self._verbs.append(CLOSE)
+            self._changed()
+            self._vl.append(CLOSE)
             self._closed = True
         self._cur = self._start
         return self
@@ -197,6 +250,7 @@ class Path:
         line).  Stored as cubics within ``ARC_ERROR`` (1/4096) px of the
         true arc.  With y down, ``sweep=True`` turns clockwise on screen.
         """
+        large_arc, sweep = _flag(large_arc, "arc_to: large_arc"), _flag(sweep, "arc_to: sweep")
         rx, ry = abs(_real(rx, "arc_to: rx")), abs(_real(ry, "arc_to: ry"))
         phi = math.radians(_real(rotation, "arc_to: rotation"))
         x2, y2 = self._point(x, y, "arc_to")
@@ -462,14 +516,33 @@ class Path:
 
     # ---- flattening ------------------------------------------------------------
     def _fixed(self, bits: int) -> Tuple[np.ndarray, np.ndarray]:
-        pts = np.array(self._pts, dtype=np.float64).reshape(-1, 2)
-        v = np.floor(pts * float(1 << bits) + 0.5)
-        lim = lib.RAST_COORD_MAX
-        if v.size and (np.abs(v) > lim).any():
-            k = int(np.argmax((np.abs(v) > lim).any(axis=1)))
-            raise InputError("path: point %d %s is outside the range +-%.6g pixels at subpixel_bits=%d"
-                             % (k, tuple(pts[k]), lim / float(1 << bits), bits))
-        return np.ascontiguousarray(v, dtype=np.int32), np.array(self._verbs, dtype=np.uint8)
+        """The points on the 1/2**bits grid (int32, kept until the path
+        changes) and the verbs."""
+        verbs, pts = self._as_arrays()
+        v = self._fixed_at.get(bits)
+        if v is None:
+            f = np.floor(pts * float(1 << bits) + 0.5)
+            lim = lib.RAST_COORD_MAX
+            if f.size and (np.abs(f) > lim).any():
+                k = int(np.argmax((np.abs(f) > lim).any(axis=1)))
+                raise InputError("path: point %d %s is outside the range +-%.6g pixels at subpixel_bits=%d"
+                                 % (k, tuple(pts[k]), lim / float(1 << bits), bits))
+            v = self._fixed_at[bits] = np.ascontiguousarray(f, dtype=np.int32)
+            v.flags.writeable = False
+        return v, verbs
+
+    def _grid_tolerance(self, tolerance: Optional[float], bits: int, subpixel_bits: int) -> int:
+        """The tolerance in grid steps (1/2**bits px) of a flattening at
+        `tolerance` (None: the path's own, else the default), or InputError."""
+        given = self._tolerance if tolerance is None else _tolerance(tolerance)
+        if given is None:
+            tol = max(1, math.floor(DEFAULT_TOLERANCE * (1 << bits)))
+        else:
+            tol = math.floor(given * (1 << bits))
+        if tol < 1:
+            raise InputError("tolerance: %r pixels is below one grid step (1/%d px at subpixel_bits=%d)"
+                             % (given, 1 << bits, subpixel_bits))
+        return min(tol, lib.RAST_COORD_MAX)
 
     def flatten(self, subpixel_bits: int = 8, tolerance: Optional[float] = None) -> List[np.ndarray]:
         """The path's subpaths as rings of vertices, (N, 2) float64 pixels.
@@ -484,15 +557,7 @@ class Path:
         if type(subpixel_bits) is not int or not 0 <= subpixel_bits <= 32:
             raise InputError("subpixel_bits: %r; it must be an int in 0..32" % (subpixel_bits,))
         bits = min(subpixel_bits, lib.RAST_MAX_SUBPIXEL_BITS)
-        given = self._tolerance if tolerance is None else _tolerance(tolerance)
-        if given is None:
-            tol = max(1, math.floor(DEFAULT_TOLERANCE * (1 << bits)))
-        else:
-            tol = math.floor(given * (1 << bits))
-        if tol < 1:
-            raise InputError("tolerance: %r pixels is below one grid step (1/%d px at subpixel_bits=%d)"
-                             % (given, 1 << bits, subpixel_bits))
-        tol = min(tol, lib.RAST_COORD_MAX)
+        tol = self._grid_tolerance(tolerance, bits, subpixel_bits)
         pts, verbs = self._fixed(bits)
         out = [r.astype(np.float64) / float(1 << bits) for r in _flatten_fixed(verbs, pts, tol)]
         return [r for r in out if len(r) >= 3]
@@ -531,6 +596,26 @@ def path_rings(obj: object, subpixel_bits: object, tolerance: Optional[float]) -
         return obj
     bits = subpixel_bits if type(subpixel_bits) is int and 0 <= subpixel_bits <= 32 else 8
     return p.flatten(bits, tolerance)
+
+
+def fill_path_aa(target: object, path: Path, pixel: object, opts: object, tolerance: Optional[float]) -> bool:
+    """Paint `path` anti-aliased into `target` as ``fill_polygon(path.flatten(
+    opts.subpixel_bits, tolerance), ..., aa=...)`` paints it, pixel for
+    pixel: flattened in C straight into the filler (python/glue/pathfill.c),
+    the path's fixed-point points made once per subpixel_bits.  False when
+    it did not paint (subpixel_bits above 16, or an error): the caller then
+    takes the general way, which says what is wrong."""
+    bits = opts.subpixel_bits  # type: ignore[attr-defined]
+    if bits > lib.RAST_MAX_SUBPIXEL_BITS:
+        return False
+    tol = path._grid_tolerance(tolerance, bits, bits)
+    pts, verbs = path._fixed(bits)
+    if not len(verbs):
+        return True
+    from ._coverage import _lent
+    result = _lent(lib.rastpy_fill_path_aa, target, ffi.from_buffer("uint8_t[]", verbs), len(verbs),
+                   ffi.from_buffer("int32_t[]", pts), len(pts), tol, opts, pixel)
+    return result == 0
 
 
 def _flatten_fixed(verbs: np.ndarray, pts: np.ndarray, tol: int) -> List[np.ndarray]:

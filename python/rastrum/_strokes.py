@@ -87,6 +87,21 @@ class _ArrayPath(Path):
             return super()._fixed(bits)  # its error message
         return np.ascontiguousarray(f, dtype=np.int32), np.ascontiguousarray(v, dtype=np.uint8)
 
+    def flatten(self, subpixel_bits: int = 8, tolerance: Optional[float] = None) -> List[np.ndarray]:
+        """As Path.flatten (lines only: each MOVE starts a ring of the
+        points up to the next MOVE, as rast_path_flatten makes them), the
+        rings cut from one array instead of one conversion per ring."""
+        if self._arrays is None or len(self._arrays[1]) > lib.RAST_MAX_POINTS:
+            return super().flatten(subpixel_bits, tolerance)
+        # the arguments checked (and refused with Path's messages) on an empty Path
+        Path(tolerance=self._tolerance).flatten(subpixel_bits, tolerance)
+        bits = min(subpixel_bits, lib.RAST_MAX_SUBPIXEL_BITS)
+        fixed, verbs = self._fixed(bits)
+        takes = verbs != lib.RAST_PATH_CLOSE
+        starts = (np.cumsum(takes) - 1)[verbs == MOVE]
+        rings = np.split(fixed.astype(np.float64) / float(1 << bits), starts[1:])
+        return [r for r in rings if len(r) >= 3]
+
 _JOINS = {"miter": lib.RAST_JOIN_MITER, "round": lib.RAST_JOIN_ROUND, "bevel": lib.RAST_JOIN_BEVEL}
 _CAPS = {"butt": lib.RAST_CAP_BUTT, "round": lib.RAST_CAP_ROUND, "square": lib.RAST_CAP_SQUARE}
 _MAX_LIMIT = (2 ** 31 - 1) / 65536.0

@@ -1,13 +1,17 @@
-"""Stroking a 2,000-segment polyline 3 px wide with round joins and drawing
-it anti-aliased: rastrum (rastrum.stroke, the C stroker, then "area"
-coverage filled non-zero, uint8) against Blend2D (blend2d-python:
-BLContext.stroke_path into an A8 image), in one run.  Medians of
---repeat runs; each peer's output compared with rastrum's (exact to the
+"""Stroking an N-segment polyline (2,000 by default) 3 px wide with round
+joins and drawing it anti-aliased: rastrum (rastrum.stroke, the C stroker,
+then its outline filled non-zero, uint8, by "area" (exact), "accumulate"
+and "ss4") against Blend2D (blend2d-python: BLContext.stroke_path into an
+A8 image, the path prebuilt), in one run.  CPU time (time.process_time;
+the machine may be shared), medians of --repeat runs, per seed of the
+random polyline (--seeds) and per length (--segments, e.g. 2000 4000
+8000, to see how the time grows); the worst seed's ratio is printed last.
+Each peer's output is compared with rastrum's "area" (exact to the
 stroke's stated bound: docs/paths.md, "Strokes"): the largest difference
-in levels and the pixels more than 1 level off (Blend2D's accumulator
-counts the polyline's self-crossings twice).
+in levels and the pixels more than 1 level off (an accumulator counts the
+polyline's self-crossings twice).
 
-    python bench/bench_stroke.py [--repeat 5] [--size 512]
+    python bench/bench_stroke.py [--repeat 5] [--size 512] [--seeds 1 2 3] [--segments 2000]
 """
 
 import argparse
@@ -18,6 +22,8 @@ import numpy as np
 
 import rastrum
 
+METHODS = ("area", "accumulate", "ss4")
+
 
 def polyline(size, n=2000, seed=1):
     rng = np.random.default_rng(seed)
@@ -26,9 +32,9 @@ def polyline(size, n=2000, seed=1):
     return np.clip(pts, 4, size - 4)
 
 
-def run_rastrum(pts, size):
+def run_rastrum(pts, size, method="area"):
     outline = rastrum.stroke(pts, 3, join="round", cap="butt")
-    return rastrum.polygon_coverage(outline, (size, size), rule="nonzero", method="area", dtype=np.uint8)
+    return rastrum.polygon_coverage(outline, (size, size), rule="nonzero", method=method, dtype=np.uint8)
 
 
 def run_blend2d(pts, size):
@@ -43,36 +49,69 @@ def run_blend2d(pts, size):
     p.move_to(*pts[0])
     for x, y in pts[1:]:
         p.line_to(x, y)
-    t = time.perf_counter()
+    t = time.process_time()
     ctx.stroke_path(p)
     ctx.flush()
-    dt = time.perf_counter() - t
+    dt = time.process_time() - t
     return img.getDataAsNumPy().reshape(size, size), dt
+
+
+def timed(fn, repeat):
+    times, out = [], None
+    for _ in range(repeat):
+        t = time.process_time()
+        out = fn()
+        times.append(time.process_time() - t)
+    return statistics.median(times), out
+
+
+def off(img, ref):
+    d = np.abs(img.astype(int) - ref.astype(int))
+    return "max %d levels, %d pixels > 1 level off" % (d.max(), int((d > 1).sum()))
 
 
 def main(argv=None):
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--repeat", type=int, default=5)
     ap.add_argument("--size", type=int, default=512)
+    ap.add_argument("--seeds", type=int, nargs="+", default=[1])
+    ap.add_argument("--segments", type=int, nargs="+", default=[2000])
     a = ap.parse_args(argv)
-    pts = polyline(a.size)
-    times = []
-    for _ in range(a.repeat):
-        t = time.perf_counter()
-        ref = run_rastrum(pts, a.size)
-        times.append(time.perf_counter() - t)
-    print("rastrum  stroke + area fill: median %.2f ms" % (1e3 * statistics.median(times)))
     try:
-        bt = []
-        for _ in range(a.repeat):
-            img, dt = run_blend2d(pts, a.size)  # the path prebuilt: stroke + fill timed
-            bt.append(dt)
-        d = np.abs(img.astype(int) - ref.astype(int))
-        print("Blend2D  stroke_path:          median %.2f ms  (%.2fx rastrum's time); vs exact: max %d levels, "
-              "%d pixels > 1 level off" % (1e3 * statistics.median(bt), statistics.median(times) /
-                                          statistics.median(bt), d.max(), int((d > 1).sum())))
+        import blend2d  # noqa: F401
+        have_b2d = True
     except ImportError:
-        print("Blend2D: not installed")
+        have_b2d = False
+        print("Blend2D: not installed (rastrum's times only)")
+    worst = {}
+    for n in a.segments:
+        for seed in a.seeds:
+            pts = polyline(a.size, n, seed)
+            res = {m: timed(lambda: run_rastrum(pts, a.size, m), a.repeat) for m in METHODS}
+            t_stroke, outline = timed(lambda: rastrum.stroke(pts, 3, join="round", cap="butt"), a.repeat)
+            ref = res["area"][1]
+            line = "n=%d seed=%d: stroke alone %.2f ms (%d vertices, %d rings);" % (
+                n, seed, 1e3 * t_stroke, len(outline.points), int((outline.verbs == 0).sum()))
+            for m in METHODS:
+                line += " %s %.2f ms" % (m, 1e3 * res[m][0])
+                if m != "area":
+                    line += " (vs exact: %s)" % off(res[m][1], ref)
+                line += ";"
+            print(line)
+            if have_b2d:
+                bt = []
+                for _ in range(a.repeat):
+                    img, dt = run_blend2d(pts, a.size)
+                    bt.append(dt)
+                tb = statistics.median(bt)
+                ratios = {m: res[m][0] / tb for m in METHODS}
+                print("    Blend2D stroke_path %.2f ms (vs exact: %s); rastrum / Blend2D CPU time: %s"
+                      % (1e3 * tb, off(img, ref), ", ".join("%s %.1fx" % (m, r) for m, r in ratios.items())))
+                for m, r in ratios.items():
+                    if r > worst.get((n, m), (0, 0))[0]:
+                        worst[(n, m)] = (r, seed)
+    for (n, m), (r, seed) in sorted(worst.items()):
+        print("worst seed, n=%d, %s: %.1fx Blend2D's time (seed %d)" % (n, m, r, seed))
 
 
 if __name__ == "__main__":

@@ -315,3 +315,33 @@ def test_bad_arguments():
             rastrum.stroke([(0, 0), (4, 4)], **kw)
     with pytest.raises(rastrum.InputError, match="geometry"):
         rastrum.stroke([[(0, 0, 1)]], 1)
+
+
+@settings(deadline=None, max_examples=examples(25), suppress_health_check=[HealthCheck.too_slow])
+@given(polylines(), st.sampled_from([0.5, 3]), st.sampled_from(["miter", "round"]), st.sampled_from(["butt", "round"]),
+       st.sampled_from([0, 4, 8, 16]))
+def test_outline_arrays_equal_the_path_lists(pts, width, join, cap, bits):
+    """stroke() hands its outline (and takes polylines) as arrays, the
+    Path's lists made only when read: a Path rebuilt from those lists
+    reads, flattens and fills the same, and extending the outline extends
+    the lists."""
+    out = rastrum.stroke(np.array(pts), width, join=join, cap=cap)
+    again = rastrum.stroke([tuple(p) for p in pts], width, join=join, cap=cap)
+    flat = out.flatten(bits)
+    plain = rastrum.Path()
+    plain._verbs, plain._pts = list(again._verbs), list(again._pts)  # the list-held Path
+    want = plain.flatten(bits)
+    assert len(flat) == len(want)
+    for a, b in zip(flat, want):
+        assert a.dtype == b.dtype and np.array_equal(a, b)
+    assert np.array_equal(out.points, plain.points) and np.array_equal(out.verbs, plain.verbs)
+    assert len(out) == len(plain)
+    shape = (SIZE, SIZE)
+    assert np.array_equal(rastrum.polygon_coverage(out, shape, rule="nonzero", subpixel_bits=bits),
+                          rastrum.polygon_coverage(plain, shape, rule="nonzero", subpixel_bits=bits))
+    copy = out.copy()
+    copy.move_to(1, 1).line_to(5, 1).line_to(5, 5)
+    assert len(copy) == len(plain) + 3 and copy.points[-1].tolist() == [5, 5]
+    assert len(out) == len(plain)
+    with pytest.raises(ValueError, match="tolerance"):
+        out.flatten(8, tolerance=1e-9)

@@ -1086,7 +1086,7 @@ class Canvas:
         path = _shapes.arc((x0 + x1) / 2, (y0 + y1) / 2, max((x1 - x0) / 2 - h, 0), max((y1 - y0) / 2 - h, 0),
                            start, end)
         if len(path):
-            self.stroke(path, fill, w, cap="butt", join="miter", aa=aa, tolerance=tolerance)
+            self.stroke(path, fill, w, cap="butt", join="round", aa=aa, tolerance=tolerance)
         else:
             self._value_bytes(fill)
 

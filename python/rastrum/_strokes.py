@@ -24,6 +24,84 @@ from ._path import DEFAULT_TOLERANCE, LINE, MOVE, Path, _real
 
 __all__ = ["stroke"]
 
+
+class _ArrayPath(Path):
+    """A Path of lines only (MOVE, LINE, CLOSE) held as numpy arrays: the
+    stroker's input polylines and its outline, without a Python tuple per
+    vertex.  The lists Path keeps (``_verbs``, ``_pts``) are made on first
+    use (any method that reads or extends them); until then ``_fixed``,
+    ``points`` and ``verbs`` read the arrays, so that
+    ``polygon_coverage(stroke(...))`` and ``Canvas.stroke`` pass the
+    vertices from the C stroker to the filler as arrays (the same values:
+    float64 holds the grid's int32 / 2**b exactly)."""
+
+    def __init__(self, verbs: np.ndarray, pts: np.ndarray, *, tolerance: Optional[float] = None) -> None:
+        self._arrays: Optional[Tuple[np.ndarray, np.ndarray]] = (verbs, pts)
+        super().__init__(tolerance=tolerance)
+
+    # Path.__init__ assigns empty lists: the arrays stay until the lists are asked for
+    def _lists(self) -> Tuple[List[int], List[Tuple[float, float]]]:
+        if self._arrays is not None:
+            v, p = self._arrays
+            self._arrays = None
+            self.__dict__["_verbs"] = v.tolist()
+            self.__dict__["_pts"] = list(map(tuple, p.tolist()))
+        return self.__dict__["_verbs"], self.__dict__["_pts"]
+
+    @property  # type: ignore[override]
+    def _verbs(self) -> List[int]:
+        return self._lists()[0]
+
+    @_verbs.setter
+    def _verbs(self, value: List[int]) -> None:
+        if self.__dict__.get("_arrays") is None:
+            self.__dict__["_verbs"] = value
+
+    @property  # type: ignore[override]
+    def _pts(self) -> List[Tuple[float, float]]:
+        return self._lists()[1]
+
+    @_pts.setter
+    def _pts(self, value: List[Tuple[float, float]]) -> None:
+        if self.__dict__.get("_arrays") is None:
+            self.__dict__["_pts"] = value
+
+    @property
+    def verbs(self) -> np.ndarray:
+        return self._arrays[0].copy() if self._arrays is not None else super().verbs
+
+    @property
+    def points(self) -> np.ndarray:
+        return self._arrays[1].copy() if self._arrays is not None else super().points
+
+    def __len__(self) -> int:
+        return len(self._arrays[0]) if self._arrays is not None else super().__len__()
+
+    def _fixed(self, bits: int) -> Tuple[np.ndarray, np.ndarray]:
+        if self._arrays is None:
+            return super()._fixed(bits)
+        v, pts = self._arrays
+        f = np.floor(pts * float(1 << bits) + 0.5)  # as Path._fixed
+        lim = lib.RAST_COORD_MAX
+        if f.size and (np.abs(f) > lim).any():
+            return super()._fixed(bits)  # its error message
+        return np.ascontiguousarray(f, dtype=np.int32), np.ascontiguousarray(v, dtype=np.uint8)
+
+    def flatten(self, subpixel_bits: int = 8, tolerance: Optional[float] = None) -> List[np.ndarray]:
+        """As Path.flatten (lines only: each MOVE starts a ring of the
+        points up to the next MOVE, as rast_path_flatten makes them), the
+        rings cut from one array instead of one conversion per ring."""
+        if self._arrays is None or len(self._arrays[1]) > lib.RAST_MAX_POINTS:
+            return super().flatten(subpixel_bits, tolerance)
+        # the arguments checked (and refused with Path's messages) on an empty Path
+        Path(tolerance=self._tolerance).flatten(subpixel_bits, tolerance)
+        bits = min(subpixel_bits, lib.RAST_MAX_SUBPIXEL_BITS)
+        fixed, verbs = self._fixed(bits)
+        takes = verbs != lib.RAST_PATH_CLOSE
+        starts = (np.cumsum(takes) - 1)[verbs == MOVE]
+        rings = np.split(fixed.astype(np.float64) / float(1 << bits), starts[1:])
+        return [r for r in rings if len(r) >= 3]
+
 _JOINS = {"miter": lib.RAST_JOIN_MITER, "round": lib.RAST_JOIN_ROUND, "bevel": lib.RAST_JOIN_BEVEL}
 _CAPS = {"butt": lib.RAST_CAP_BUTT, "round": lib.RAST_CAP_ROUND, "square": lib.RAST_CAP_SQUARE}
 _MAX_LIMIT = (2 ** 31 - 1) / 65536.0
@@ -42,8 +120,8 @@ def _as_path(geometry: object) -> Path:
         lines: Sequence[object] = [geometry]  # type: ignore[list-item]
     else:
         lines = geometry  # type: ignore[assignment]
-    verbs: List[int] = []
-    pts: List[Tuple[float, float]] = []
+    verbs: List[np.ndarray] = []
+    pts: List[np.ndarray] = []
     for i, line in enumerate(lines):
         a = real_array(line, "geometry: polyline %d" % i, "an (N, 2) array of (x, y)")
         if a.ndim != 2 or a.shape[1] != 2:
@@ -54,11 +132,13 @@ def _as_path(geometry: object) -> Path:
             continue
         if len(a) == 1:
             a = np.concatenate([a, a])
-        verbs += [MOVE] + [LINE] * (len(a) - 1)
-        pts += [tuple(p) for p in a.tolist()]
-    p = Path()
-    p._verbs, p._pts = verbs, pts
-    return p
+        v = np.full(len(a), LINE, dtype=np.uint8)
+        v[0] = MOVE
+        verbs.append(v)
+        pts.append(np.asarray(a, dtype=np.float64))
+    if not verbs:
+        return Path()
+    return _ArrayPath(np.concatenate(verbs), np.concatenate(pts).reshape(-1, 2))
 
 
 def stroke(geometry: Union[Path, Sequence[Sequence[float]], Sequence[Sequence[Sequence[float]]]],
@@ -141,11 +221,11 @@ def stroke(geometry: Union[Path, Sequence[Sequence[float]], Sequence[Sequence[Se
     if not tol > 0:
         raise InputError("tolerance: %r pixels; it must be > 0" % (tolerance,))
     out = Path(tolerance=tolerance)
-    if not path._verbs:
+    if not len(path):
         return out
     # the grid: the finest 1/2**b pixel (b <= 16) holding the points and
     # the outline (the width, a miter's tip at miter_limit times it)
-    pts = np.array(path._pts, dtype=np.float64).reshape(-1, 2)
+    pts = path.points
     reach = w / 2 * max(limit if join == "miter" else 1.0, math.sqrt(2)) + 1
     ext = float(np.abs(pts).max()) + reach
     bits = min(lib.RAST_MAX_SUBPIXEL_BITS, math.floor(math.log2(lib.RAST_COORD_MAX / ext)))
@@ -201,6 +281,4 @@ def stroke(geometry: Union[Path, Sequence[Sequence[float]], Sequence[Sequence[Se
     starts = np.concatenate([[0], np.cumsum(sizes[:-1])])
     vs[starts] = MOVE
     vs = np.insert(vs, starts + sizes, lib.RAST_PATH_CLOSE)  # a CLOSE ends each ring
-    out._verbs = vs.tolist()
-    out._pts = [tuple(p) for p in (ring_pts[:n].astype(np.float64) / one).tolist()]
-    return out
+    return _ArrayPath(vs, ring_pts[:n].astype(np.float64) / one, tolerance=tolerance)

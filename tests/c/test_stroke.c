@@ -4,7 +4,8 @@
  * miter exactly; the miter limit at SVG's ratio; the offsets rounded to
  * nearest (checked against the integer definition); dashes on a straight
  * line exactly, and a dash over a vertex keeping its join; zero-length
- * subpaths; and on random polylines and curves, every join x cap, solid
+ * subpaths; round joins and caps point by point against a scan of the
+ * whole circle; and on random polylines and curves, every join x cap, solid
  * and dashed, rastrum.h's bound at sample points (tests/c/stroke_check.h).
  * The pixel-exact check against an independent referee is
  * tests/test_stroke.py.
@@ -271,6 +272,101 @@ static void test_random_bound(void)
     }
 }
 
+/* Round joins and caps: the arc points are exactly the circle's points
+ * (stroke.c's definition, scanned all round here: m from the width and
+ * tolerance, h ((m^2 - k^2), 2 k m) / (m^2 + k^2) rounded to nearest and
+ * its quarter turns) strictly inside the sweep from s to e, each
+ * advancing in angle, in counter-clockwise order. */
+static int64_t rp_div(int64_t num, int64_t den) /* floor(num / den + 1/2), den > 0 */
+{
+    int64_t n = 2 * num + den, d = 2 * den;
+    return n >= 0 ? n / d : -((-n + d - 1) / d);
+}
+
+static int64_t rp_cross(int64_t ax, int64_t ay, int64_t bx, int64_t by)
+{
+    return ax * by - ay * bx;
+}
+
+static void rp_point(int64_t w, int64_t m, int64_t j, int64_t *x, int64_t *y)
+{
+    int64_t k = j % m, den = 2 * (m * m + k * k);
+    int64_t px = rp_div(w * (m * m - k * k), den), py = rp_div(w * 2 * k * m, den);
+    switch ((j / m) & 3) {
+    case 0: *x = px; *y = py; break;
+    case 1: *x = -py; *y = px; break;
+    case 2: *x = -px; *y = -py; break;
+    default: *x = py; *y = -px; break;
+    }
+}
+
+/* Ring r's points from first + 1 to its last but one against the scan,
+ * the sweep from ring point `first` to its last point about (cx, cy). */
+static int rp_arc_ok(uint32_t base, uint32_t size, uint32_t first, int64_t cx, int64_t cy, int64_t w, int64_t m)
+{
+    int64_t sx = out[base + first].x - cx, sy = out[base + first].y - cy;
+    int64_t ex = out[base + size - 1].x - cx, ey = out[base + size - 1].y - cy, lx = sx, ly = sy;
+    int64_t j, j0 = -1;
+    uint32_t at = base + first + 1;
+    for (j = 0; j < 4 * m && j0 < 0; j++) { /* a point outside the sweep to start after */
+        int64_t x, y;
+        rp_point(w, m, j, &x, &y);
+        if (!(rp_cross(sx, sy, x, y) > 0 && rp_cross(x, y, ex, ey) > 0)) j0 = j;
+    }
+    for (j = 1; j <= 4 * m; j++) {
+        int64_t x, y;
+        rp_point(w, m, (j0 + j) % (4 * m), &x, &y);
+        if (rp_cross(sx, sy, x, y) > 0 && rp_cross(x, y, ex, ey) > 0 && rp_cross(lx, ly, x, y) > 0) {
+            if (at >= base + size - 1 || out[at].x != cx + x || out[at].y != cy + y) return 0;
+            at++;
+            lx = x;
+            ly = y;
+        }
+    }
+    return at == base + size - 1;
+}
+
+static void test_round_points(void)
+{
+    static const uint8_t v3[3] = {RAST_PATH_MOVE, RAST_PATH_LINE, RAST_PATH_LINE};
+    int i;
+    for (i = 0; i < check_count(3000); i++) {
+        rast_point p[3];
+        rast_stroke_style s = style(1 + (int32_t)(rng() % 5000), RAST_JOIN_ROUND, RAST_CAP_ROUND);
+        int64_t w = s.width, m, need;
+        uint32_t np, nr, k, base = 0;
+        int turn_back = rng() % 4 == 0;
+        s.tolerance = 1 + (int32_t)(rng() % (rng() % 2 ? 4 : 300));
+        need = (w + 4 * (int64_t)s.tolerance - 4) / (4 * (int64_t)s.tolerance - 3);
+        for (m = 1; m * m < need; m++) continue;
+        if (m > w / 4) m = w / 4;
+        if (m < 1) m = 1;
+        for (k = 0; k < 3; k++) {
+            p[k].x = 10000 + (int32_t)(rng() % 8000);
+            p[k].y = 10000 + (int32_t)(rng() % 8000);
+        }
+        if (turn_back) { /* straight back along the segment: a half disc */
+            p[2].x = p[1].x - (p[1].x - p[0].x) / 2;
+            p[2].y = p[1].y - (p[1].y - p[0].y) / 2;
+        }
+        if ((p[0].x == p[1].x && p[0].y == p[1].y) || (p[1].x == p[2].x && p[1].y == p[2].y)) continue;
+        CHECK(run(v3, 3, p, 3, &s, &np, &nr) == RAST_OK);
+        /* rings: segment 1, segment 2, the join (if any), the caps at p0 and p2 */
+        CHECK(nr >= 4);
+        for (k = 0; k < nr; k++) {
+            if (k >= 2 && k + 2 < nr) { /* the join: v, v + s, arc, v + e; a turn back: the half disc */
+                int at_v = out[base].x == p[1].x && out[base].y == p[1].y;
+                CHECK(rp_arc_ok(base, rings[k], at_v ? 1 : 0, p[1].x, p[1].y, w, m));
+            } else if (k + 2 == nr) {
+                CHECK(rp_arc_ok(base, rings[k], 0, p[0].x, p[0].y, w, m));
+            } else if (k + 1 == nr) {
+                CHECK(rp_arc_ok(base, rings[k], 0, p[2].x, p[2].y, w, m));
+            }
+            base += rings[k];
+        }
+    }
+}
+
 int main(void)
 {
     test_bad_input();
@@ -279,5 +375,6 @@ int main(void)
     test_dashes_exact();
     test_zero_length();
     test_random_bound();
+    test_round_points();
     return check_report("test_stroke");
 }

@@ -184,23 +184,79 @@ static st_vec st_circle_point(const st_ctx *c, uint32_t j)
     return r;
 }
 
+static int st_in_sweep(st_vec s, st_vec p, st_vec e)
+{
+    return st_cross(s, p) > 0 && st_cross(p, e) > 0;
+}
+
+/* The first of the circle's points strictly counter-clockwise after s
+ * within a half turn (cross(s, p) > 0, the point before it not): a guess
+ * from s's quadrant and a binary search in it, then steps to the exact
+ * answer (the guess only saves time). */
+static uint32_t st_after(const st_ctx *c, st_vec s)
+{
+    uint32_t m = c->m, n4 = 4 * m, q, lo, hi, g, k;
+    if (s.x > 0 && s.y >= 0)
+        q = 0;
+    else if (s.x <= 0 && s.y > 0)
+        q = 1;
+    else if (s.x < 0 && s.y <= 0)
+        q = 2;
+    else
+        q = 3;
+    lo = 0;
+    hi = m; /* the first k < m in the quadrant after s, else m */
+    while (lo < hi) {
+        uint32_t mid = lo + (hi - lo) / 2;
+        if (st_cross(s, st_circle_point(c, q * m + mid)) > 0)
+            hi = mid;
+        else
+            lo = mid + 1;
+    }
+    g = (q * m + lo) % n4;
+    for (k = 0; k < n4; k++) {
+        if (st_cross(s, st_circle_point(c, g)) > 0) {
+            uint32_t b = (g + n4 - 1) % n4;
+            if (st_cross(s, st_circle_point(c, b)) <= 0) break;
+            g = b;
+        } else {
+            g = (g + 1) % n4;
+        }
+    }
+    return g;
+}
+
 /* The circle's points strictly between s and e counter-clockwise (the
- * sweep s -> e at most a half turn), each advancing in angle. */
+ * sweep s -> e at most a half turn, or past it by a rounding's angle),
+ * each advancing in angle.
+ *
+ * Only the points the sweep needs are visited.  The circle's points
+ * strictly advance in angle (above), so those in the open sweep (the
+ * intersection of the half turns after s and before e, two arcs of a half
+ * turn each: one arc) are consecutive, and they are among the half turn
+ * H after s, which starts at st_after(s).  A sweep under a half turn
+ * (cross(s, e) > 0) is an initial part of H: empty if H's first point is
+ * not in it; a longer one leaves out at most H's first points (within a
+ * rounding's angle of s), stepped over.  The points are those the
+ * whole circle's scan took, in the same order. */
 static void st_arc(st_ctx *c, st_vec v, st_vec s, st_vec e)
 {
-    uint32_t n4 = 4 * c->m, j0 = 0, t;
-    st_vec last = s;
-    /* start after a point outside the open sweep (there are >= 2) */
-    for (j0 = 0; j0 < n4; j0++) {
-        st_vec p = st_circle_point(c, j0);
-        if (!(st_cross(s, p) > 0 && st_cross(p, e) > 0)) break;
+    uint32_t n4 = 4 * c->m, j = st_after(c, s), t;
+    st_vec last = s, p = st_circle_point(c, j);
+    if (!st_in_sweep(s, p, e)) {
+        if (st_cross(s, e) > 0) return; /* under a half turn: nothing in it */
+        for (t = 1; t < n4 && !st_in_sweep(s, p, e); t++) {
+            j = (j + 1) % n4;
+            p = st_circle_point(c, j);
+        }
     }
-    for (t = 1; t <= n4; t++) {
-        st_vec p = st_circle_point(c, (j0 + t) % n4);
-        if (st_cross(s, p) > 0 && st_cross(p, e) > 0 && st_cross(last, p) > 0 && st_cross(p, e) > 0) {
+    for (t = 0; t < n4 && st_in_sweep(s, p, e); t++) {
+        if (st_cross(last, p) > 0) {
             st_put(&c->out, v.x + p.x, v.y + p.y);
             last = p;
         }
+        j = (j + 1) % n4;
+        p = st_circle_point(c, j);
     }
 }
 

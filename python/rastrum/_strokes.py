@@ -28,70 +28,63 @@ __all__ = ["stroke"]
 class _ArrayPath(Path):
     """A Path of lines only (MOVE, LINE, CLOSE) held as numpy arrays: the
     stroker's input polylines and its outline, without a Python tuple per
-    vertex.  The lists Path keeps (``_verbs``, ``_pts``) are made on first
-    use (any method that reads or extends them); until then ``_fixed``,
-    ``points`` and ``verbs`` read the arrays, so that
+    vertex.  Path keeps the arrays a fill takes beside the lists it builds
+    with (``_vl``, ``_pl``); here the arrays come first and the lists are
+    made on first use (any method that reads or extends them), so that
     ``polygon_coverage(stroke(...))`` and ``Canvas.stroke`` pass the
     vertices from the C stroker to the filler as arrays (the same values:
     float64 holds the grid's int32 / 2**b exactly)."""
 
     def __init__(self, verbs: np.ndarray, pts: np.ndarray, *, tolerance: Optional[float] = None) -> None:
-        self._arrays: Optional[Tuple[np.ndarray, np.ndarray]] = (verbs, pts)
+        self.__dict__["_lazy"] = None
         super().__init__(tolerance=tolerance)
+        v = np.ascontiguousarray(verbs, dtype=np.uint8)
+        q = np.ascontiguousarray(pts, dtype=np.float64).reshape(-1, 2)
+        v.flags.writeable = q.flags.writeable = False
+        self.__dict__["_lazy"] = (v, q)
+        self._arrays = (v, q)
 
-    # Path.__init__ assigns empty lists: the arrays stay until the lists are asked for
-    def _lists(self) -> Tuple[List[int], List[Tuple[float, float]]]:
-        if self._arrays is not None:
-            v, p = self._arrays
-            self._arrays = None
-            self.__dict__["_verbs"] = v.tolist()
-            self.__dict__["_pts"] = list(map(tuple, p.tolist()))
-        return self.__dict__["_verbs"], self.__dict__["_pts"]
-
-    @property  # type: ignore[override]
-    def _verbs(self) -> List[int]:
-        return self._lists()[0]
-
-    @_verbs.setter
-    def _verbs(self, value: List[int]) -> None:
-        if self.__dict__.get("_arrays") is None:
-            self.__dict__["_verbs"] = value
+    def _lists(self) -> None:
+        lazy = self.__dict__["_lazy"]
+        if lazy is not None:
+            self.__dict__["_lazy"] = None
+            self.__dict__["_vl_"] = lazy[0].tolist()
+            self.__dict__["_pl_"] = list(map(tuple, lazy[1].tolist()))
 
     @property  # type: ignore[override]
-    def _pts(self) -> List[Tuple[float, float]]:
-        return self._lists()[1]
+    def _vl(self) -> List[int]:
+        self._lists()
+        return self.__dict__["_vl_"]
 
-    @_pts.setter
-    def _pts(self, value: List[Tuple[float, float]]) -> None:
-        if self.__dict__.get("_arrays") is None:
-            self.__dict__["_pts"] = value
+    @_vl.setter
+    def _vl(self, value: List[int]) -> None:
+        self._lists()
+        self.__dict__["_vl_"] = value
 
-    @property
-    def verbs(self) -> np.ndarray:
-        return self._arrays[0].copy() if self._arrays is not None else super().verbs
+    @property  # type: ignore[override]
+    def _pl(self) -> List[Tuple[float, float]]:
+        self._lists()
+        return self.__dict__["_pl_"]
 
-    @property
-    def points(self) -> np.ndarray:
-        return self._arrays[1].copy() if self._arrays is not None else super().points
+    @_pl.setter
+    def _pl(self, value: List[Tuple[float, float]]) -> None:
+        self._lists()
+        self.__dict__["_pl_"] = value
+
+    def _as_arrays(self) -> Tuple[np.ndarray, np.ndarray]:
+        lazy = self.__dict__["_lazy"]
+        return lazy if lazy is not None else super()._as_arrays()
 
     def __len__(self) -> int:
-        return len(self._arrays[0]) if self._arrays is not None else super().__len__()
-
-    def _fixed(self, bits: int) -> Tuple[np.ndarray, np.ndarray]:
-        if self._arrays is None:
-            return super()._fixed(bits)
-        v, pts = self._arrays
-        f = np.floor(pts * float(1 << bits) + 0.5)  # as Path._fixed
-        lim = lib.RAST_COORD_MAX
-        if f.size and (np.abs(f) > lim).any():
-            return super()._fixed(bits)  # its error message
-        return np.ascontiguousarray(f, dtype=np.int32), np.ascontiguousarray(v, dtype=np.uint8)
+        lazy = self.__dict__["_lazy"]
+        return len(lazy[0]) if lazy is not None else super().__len__()
 
     def flatten(self, subpixel_bits: int = 8, tolerance: Optional[float] = None) -> List[np.ndarray]:
         """As Path.flatten (lines only: each MOVE starts a ring of the
         points up to the next MOVE, as rast_path_flatten makes them), the
         rings cut from one array instead of one conversion per ring."""
-        if self._arrays is None or len(self._arrays[1]) > lib.RAST_MAX_POINTS:
+        lazy = self.__dict__["_lazy"]
+        if lazy is None or len(lazy[1]) > lib.RAST_MAX_POINTS:
             return super().flatten(subpixel_bits, tolerance)
         # the arguments checked (and refused with Path's messages) on an empty Path
         Path(tolerance=self._tolerance).flatten(subpixel_bits, tolerance)

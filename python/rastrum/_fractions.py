@@ -25,7 +25,7 @@ import numpy as np
 from . import _core, gis
 from ._core import InputError
 from ._coverage import polygon_coverage
-from ._native import lib
+from ._native import ffi, lib
 from ._typing import CoverageMethod, Rule
 
 __all__ = ["coverage_fractions", "COVERAGE_DTYPES"]
@@ -211,6 +211,10 @@ def feature_fractions(px, ring_sizes, part_rings, feature, nfeat, shape, rule, p
                          "coverage path's range" % (k, hw[k], ww[k]))
     rs = ring_sizes.tolist()
     covs, ids = [], []
+    # the 64-bit "area" path straight to the covered cells (C: no dense
+    # window, no numpy pass over it), where polygon_coverage would take it
+    sparse = method == "area" and dtype.kind == "f"
+    fast_f, fast_cells, fast_cov = [], [], []
     for k in np.flatnonzero(inside).tolist():
         if progress is not None:
             progress(k + 1)
@@ -233,11 +237,21 @@ def feature_fractions(px, ring_sizes, part_rings, feature, nfeat, shape, rule, p
         if not rings:
             continue
         info[k] = (r0[k], c0[k], s)
+        if sparse and s > lib.RAST_MAX_SUBPIXEL_BITS:
+            cells_k, cov_k = _cells64(rings, rule, s, h, w, int(r0[k] * W + c0[k]), W)
+            if len(cells_k):
+                fast_f.append(np.full(len(cells_k), k, np.int64))
+                fast_cells.append(cells_k)
+                fast_cov.append(cov_k if dtype == np.float64 else cov_k.astype(dtype))
+            continue
         covs.append(polygon_coverage(rings, (h, w), rule=rule, method=method, subpixel_bits=s,
                                      dtype=dtype).ravel())
         ids.append(k)
+    fast = None
+    if fast_f:
+        fast = (np.concatenate(fast_f), np.concatenate(fast_cells), np.concatenate(fast_cov))
     if not covs:
-        return empty
+        return fast + (info,) if fast is not None else empty
     # the cells with a fraction, all windows at once
     ids = np.asarray(ids, np.int64)
     sizes = hw[ids] * ww[ids]
@@ -255,7 +269,34 @@ def feature_fractions(px, ring_sizes, part_rings, feature, nfeat, shape, rule, p
     rr = local // w_f
     # row r0 + rr, column c0 + (local - rr * w): cell (r0 + rr) * W + c0 + local - rr * w
     cells = local + (r0[f] * W + c0[f]) + rr * (W - w_f)
-    return f, cells, cov[nz], info
+    cov = cov[nz]
+    if fast is not None:  # both paths (features past the 64-bit range): in feature order
+        f, cells, cov = (np.concatenate([a, b]) for a, b in zip(fast, (f, cells, cov)))
+        order = np.argsort(f, kind="stable")
+        f, cells, cov = f[order], cells[order], cov[order]
+    return f, cells, cov, info
+
+
+def _cells64(rings, rule, s, h, w, cell0, row_step):
+    """(cell ids, float64 fractions) of the nonzero cells of the (h, w)
+    window of `rings` (float64 pixel coordinates from the window's
+    origin) on the 64-bit "area" path at S = s: the cells
+    polygon_coverage(rings, (h, w), method="area", subpixel_bits=s)
+    gives, without the dense window (rastpy_coverage64_cells)."""
+    from ._coverage import _opts
+    opts = _opts("area", rule, s, 0.5, "polygon_coverage")
+    pts = np.ascontiguousarray(np.concatenate(rings) if len(rings) > 1 else rings[0], np.float64)
+    sizes = ffi.new("uint32_t[]", [len(r) for r in rings])
+    cells = np.empty(h * w, np.int64)
+    cov = np.empty(h * w, np.float64)
+    count = ffi.new("size_t *")
+    result = lib.rastpy_coverage64_cells(ffi.from_buffer("double[]", pts), len(pts), sizes, len(rings), opts,
+                                         h, w, cell0, row_step, 0, ffi.from_buffer("int64_t[]", cells),
+                                         ffi.from_buffer("double[]", cov), count)
+    if result:
+        _core._check_glue(result, pts, s, "geometries", [len(r) for r in rings], True)
+    n = count[0]
+    return cells[:n], cov[:n]  # (the pages past n were never touched)
 
 
 def _method(method):

@@ -215,13 +215,22 @@ long rastpy_coverage64_cells(const double *xy, uint32_t npoints, const uint32_t 
         for (y = y0; y < y1; y++) {
             const uint64_t *row = buf + (size_t)(y - y0) * (size_t)width;
             const int64_t c0 = cell0 + (int64_t)y * row_step;
-            for (x = 0; x < width; x++) {
+            for (x = 0; x < width;) {
                 uint64_t a = row[x];
-                if (a) {
-                    cells[n] = c0 + x;
-                    cov[n] = (double)(int64_t)a * 0x1p-62;
-                    n++;
+                int32_t e = x + 1, k;
+                double v;
+                if (!a) {
+                    x++;
+                    continue;
                 }
+                /* a run of equal cells (the core writes runs): one conversion */
+                while (e < width && row[e] == a) e++;
+                v = (double)(int64_t)a * 0x1p-62;
+                for (k = x; k < e; k++, n++) {
+                    cells[n] = c0 + k;
+                    cov[n] = v;
+                }
+                x = e;
             }
         }
     }

@@ -248,7 +248,9 @@ def feature_fractions(px, ring_sizes, part_rings, feature, nfeat, shape, rule, p
                                      dtype=dtype).ravel())
         ids.append(k)
     fast = None
-    if fast_f:
+    if len(fast_f) == 1:  # (one feature: its arrays as they are, no copy)
+        fast = (fast_f[0], fast_cells[0], fast_cov[0])
+    elif fast_f:
         fast = (np.concatenate(fast_f), np.concatenate(fast_cells), np.concatenate(fast_cov))
     if not covs:
         return fast + (info,) if fast is not None else empty

@@ -12,8 +12,6 @@ them written as runs) and its sparse form for coverage_fractions
   test_coverage64.py), in row-major order, numbered cell0 + row * row_step +
   column, nothing written past the count."""
 
-from fractions import Fraction as F
-
 import numpy as np
 import pytest
 from hypothesis import given, settings, strategies as st
@@ -77,9 +75,9 @@ def steep_rings(draw, s, w, h, max_rings=3):
     return rings
 
 
-@settings(max_examples=S_.examples(30), deadline=None)
+@settings(max_examples=S_.examples(15), deadline=None)
 @given(st.data(), st.integers(17, 32), st.sampled_from(["evenodd", "nonzero"]),
-       st.sampled_from([63, 64, 65, 127, 128, 129, 200]), st.integers(1, 3))
+       st.sampled_from([63, 64, 65, 127, 128, 129]), st.integers(1, 2))
 def test_runs_in_wide_rows_match_exact_area(data, s, rule, w, h):
     """Vertices across the whole row (and past it), the clip cut anywhere in
     the polygon's columns: every cell the exact area, formats FIX62, U8 and
@@ -101,16 +99,18 @@ def test_runs_in_wide_rows_match_exact_area(data, s, rule, w, h):
 
 
 def box_fix62(x0, y0, x1, y1, shape):
-    """The exact coverage of the box [x0, x1] x [y0, y1] (dyadic corners)
-    in 2^-62 units: per cell, its overlap in x times its overlap in y."""
+    """The exact coverage of the box [x0, x1] x [y0, y1] (corners on the
+    quarter pixel) in 2^-62 units: per cell, its overlap in x times its
+    overlap in y, in quarters (16ths of a cell: 2^58 units each)."""
     h, w = shape
     def overlap(a, b, n):
-        return [max(F(0), min(F(b), F(c + 1)) - max(F(a), F(c))) for c in range(n)]
-    ox, oy = overlap(x0, x1, w), overlap(y0, y1, h)
-    return np.array([[int(fy * fx * 2 ** 62) for fx in ox] for fy in oy], np.uint64)
+        c = np.arange(n) * 4
+        return np.clip(np.minimum(int(b * 4), c + 4) - np.maximum(int(a * 4), c), 0, None).astype(np.uint64)
+    assert all(v * 4 == int(v * 4) for v in (x0, y0, x1, y1))
+    return (overlap(y0, y1, h)[:, None] * overlap(x0, x1, w)[None, :]) << np.uint64(58)
 
 
-@pytest.mark.parametrize("left", [v + f for v in list(range(58, 70)) + list(range(122, 134)) for f in (0, 0.5)])
+@pytest.mark.parametrize("left", [v + f for v in (61, 62, 63, 64, 65, 125, 126, 127, 128) for f in (0, 0.5)])
 def test_runs_across_dirty_words(left):
     """Boxes whose sides fall in every column around the first two word
     boundaries of the dirty bits (63/64, 127/128), on a pixel boundary or

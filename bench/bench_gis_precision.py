@@ -15,7 +15,9 @@ naturalearth_lowres), EPSG:4326, on a global grid anchored at (-180, 90):
 
 For each tile: rastrum.polygon_coverage(rings - tile origin, tile shape,
 subpixel_bits=32, dtype=float64), which takes the 64-bit path by itself
-(S = 32 > 16, and coordinates far outside the tile); exactextract 0.3's
+(S = 32 > 16, and coordinates far outside the tile), dense; and
+rastrum.coverage_fractions([geometry], tile shape, the tile's transform),
+sparse (cell_id + coverage, as exactextract gives them); exactextract 0.3's
 "cell_id" + "coverage" on the same tile and geometry; the referee, shapely
 (GEOS) in float64 world coordinates: 1 for cells the polygon contains, 0 for
 cells it does not meet, area(cell & polygon) / area(cell) for cells its
@@ -110,6 +112,20 @@ def run_rastrum(rings, r0, c0, h, w):
     return rastrum.polygon_coverage(local, (h, w), method="area", subpixel_bits=32, dtype=np.float64)
 
 
+def run_fractions(g, res, r0, c0, h, w):
+    """rastrum.coverage_fractions on the tile (world coordinates, the
+    tile's transform): exactextract's cell_id + coverage, sparse."""
+    t = (res, 0.0, -180 + c0 * res, 0.0, -res, 90 - r0 * res)
+    return rastrum.coverage_fractions([g], (h, w), t)[0]
+
+
+def dense(cells_cov, h, w):
+    cells, cov = cells_cov
+    out = np.zeros(h * w)
+    out[cells] = cov
+    return out.reshape(h, w)
+
+
 def run_ee(g, res, r0, c0, h, w, crs_wkt):
     src = NumPyRasterSource(np.zeros((h, w)), -180 + c0 * res, 90 - (r0 + h) * res, -180 + (c0 + w) * res,
                             90 - r0 * res, srs_wkt=crs_wkt)
@@ -142,10 +158,10 @@ def tiles_of(g, res, tile):
 
 def grid(name, res, world_df, tile, repeat, max_tiles=None):
     crs_wkt = pyproj.CRS("EPSG:4326").to_wkt() if exactextract is not None else None
-    worst = {"rastrum": 0.0, "ee": 0.0}
-    over = {"rastrum": 0, "ee": 0}
-    where = {"rastrum": None, "ee": None}
-    t_r = t_e = 0.0
+    worst = {"rastrum": 0.0, "ee": 0.0, "fr": 0.0}
+    over = {"rastrum": 0, "ee": 0, "fr": 0}
+    where = {"rastrum": None, "ee": None, "fr": None}
+    t_r = t_e = t_f = 0.0
     cells = bcells = ntiles = 0
     widest = 0
     for cname, g in zip(world_df["name"], world_df.geometry):
@@ -170,6 +186,12 @@ def grid(name, res, world_df, tile, repeat, max_tiles=None):
             if d.max() > worst["rastrum"]:
                 worst["rastrum"], where["rastrum"] = float(d.max()), (cname, r, c)
             over["rastrum"] += int((d > 1e-8).sum())
+            tf, cc = cpu(lambda: run_fractions(g, res, r, c, h, w), repeat)
+            d = np.abs(dense(cc, h, w) - exact)
+            t_f += tf
+            if d.max() > worst["fr"]:
+                worst["fr"], where["fr"] = float(d.max()), (cname, r, c)
+            over["fr"] += int((d > 1e-8).sum())
             if exactextract is not None:
                 te, b = cpu(lambda: run_ee(g, res, r, c, h, w, crs_wkt), repeat)
                 d = np.abs(b - exact)
@@ -184,11 +206,14 @@ def grid(name, res, world_df, tile, repeat, max_tiles=None):
           "widest window %d columns" % (name, res, len(world_df), ntiles, tile, cells, bcells, widest))
     print("  rastrum (64-bit area, S = 32): max |fraction - referee| = %.3g at %s; cells > 1e-8: %d; "
           "CPU %.3f s" % (worst["rastrum"], where["rastrum"], over["rastrum"], t_r))
+    print("  rastrum.coverage_fractions (sparse): max |fraction - referee| = %.3g at %s; cells > 1e-8: %d; "
+          "CPU %.3f s" % (worst["fr"], where["fr"], over["fr"], t_f))
     if exactextract is not None:
         print("  exactextract %s:              max |fraction - referee| = %.3g at %s; cells > 1e-8: %d; "
               "CPU %.3f s" % (exactextract.__version__, worst["ee"], where["ee"], over["ee"], t_e))
-        print("  time ratio rastrum / exactextract: %.3f" % (t_r / t_e))
-    return worst, over, t_r, t_e
+        print("  time ratio rastrum / exactextract: polygon_coverage %.3f, coverage_fractions %.3f"
+              % (t_r / t_e, t_f / t_e))
+    return worst, over, t_r, t_e, t_f
 
 
 def main():
@@ -197,8 +222,11 @@ def main():
     ap.add_argument("--repeat", type=int, default=3)
     ap.add_argument("--fine-tiles", type=int, default=40)
     ap.add_argument("--only", choices=["coarse", "fine"], default=None)
+    ap.add_argument("--countries", default=None, help="comma-separated names (default: every country)")
     a = ap.parse_args()
     w = world()
+    if a.countries:
+        w = w[w["name"].isin(a.countries.split(","))]
     if a.only != "fine":
         grid("coarse", 0.025, w, a.tile, a.repeat)
     if a.only != "coarse":

@@ -980,11 +980,12 @@ RAST_API rast_status rast_triangles_coverage_spans(const rast_point *tris, uint3
  * floor(a' M + 1/2) (so floor(a M + 1/2) except within (n + m + 1) 2^-34
  * of a tie).  Cost: per row, the edges spanning it sorted once per vertex
  * or crossing inside the row, one 128-bit division per edge end and per
- * column an edge crosses, a pass over the clip's columns.  Only
+ * column an edge crosses; the output per cell an edge touched, the cells
+ * between them written as runs (no per-cell arithmetic).  Only
  * opts->method RAST_AA_AREA: any other, RAST_E_WIDE.
  *
  * Scratch (rast_coverage64_scratch_size): 188 bytes per vertex and 32 per
- * clip column, plus alignment.  Errors, all before anything is written:
+ * clip column (and one bit), plus alignment.  Errors, all before anything is written:
  * RAST_E_NULL, RAST_E_WIDE (method), RAST_E_ARG (rule, format, stride),
  * RAST_E_SUBPIXEL, RAST_E_RANGE, RAST_E_TOO_MANY, RAST_E_SIZE (a clip
  * coordinate past +-RAST_MAX_DIM), RAST_E_SCRATCH, RAST_E_ALIGN.  An empty

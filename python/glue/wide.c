@@ -148,3 +148,95 @@ long rastpy_polygon_coverage64(void *out, int32_t height, int32_t width, int for
     free(pts);
     return st;
 }
+
+/* The sparse form of rastpy_polygon_coverage64 (FIX62, as fractions):
+ * the cells of the (height, width) window whose coverage is not 0, in
+ * row-major order, cells[i] = cell0 + row * row_step + column and cov[i]
+ * = the fraction, (double)a62 * 2^-62, the value rastpy_fix62_to_double
+ * gives (a62 <= 2^62 < 2^63: the conversion from int64_t is the same
+ * rounding); *count of them.  cells and cov hold height * width.  The
+ * window is computed in bands of band_rows rows (0: about 2^18 cells a
+ * band; one clip each, the vertices snapped once), so the dense buffer is
+ * a band's, not the window's (tests/test_coverage64_runs.py sets it).
+ * Returns as rastpy_polygon_coverage64; *count is 0 on an error. */
+long rastpy_coverage64_cells(const double *xy, uint32_t npoints, const uint32_t *ring_sizes,
+                             uint32_t nrings, const rast_coverage_opts *opts, int32_t height,
+                             int32_t width, int64_t cell0, int64_t row_step, int32_t band_rows,
+                             int64_t *cells, double *cov, size_t *count)
+{
+    rast_polygon64 poly;
+    rast_rect clip;
+    rast_status st = RAST_OK;
+    size_t need, n = 0, band;
+    int64_t *pts;
+    uint64_t *buf;
+    void *scratch;
+    long bad;
+    int32_t y0;
+    if (!opts || !count) return RAST_E_NULL;
+    *count = 0;
+    st = rast_coverage64_scratch_size(opts, npoints, width, height, &need);
+    if (st != RAST_OK) return st;
+    if (height == 0 || width == 0) return RAST_OK;
+    /* about 2^18 cells (2 MB) a band, at least a row */
+    band = band_rows > 0 ? (size_t)band_rows : ((size_t)1 << 18) / (size_t)width;
+    if (band < 1) band = 1;
+    if (band > (size_t)height) band = (size_t)height;
+    pts = (int64_t *)malloc((size_t)npoints * sizeof(rast_point64) + 1);
+    if (!pts) return RASTPY_E_NOMEM;
+    bad = rastpy_snap64(xy, npoints, opts->subpixel_bits, pts);
+    if (bad >= 0) {
+        free(pts);
+        return bad + 1;
+    }
+    scratch = malloc(need + 1);
+    buf = (uint64_t *)malloc(band * (size_t)width * sizeof(uint64_t) + 1);
+    if (!scratch || !buf) {
+        free(buf);
+        free(scratch);
+        free(pts);
+        return RASTPY_E_NOMEM;
+    }
+    poly.points = (const rast_point64 *)(const void *)pts;
+    poly.ring_sizes = ring_sizes ? ring_sizes : &npoints;
+    poly.nrings = ring_sizes ? nrings : 1;
+    clip.x0 = 0;
+    clip.x1 = width;
+    for (y0 = 0; y0 < height; y0 += (int32_t)band) {
+        int32_t y1 = height - y0 < (int32_t)band ? height : y0 + (int32_t)band, y, x;
+        clip.y0 = y0;
+        clip.y1 = y1;
+        st = rast_polygon_coverage64(&poly, opts, &clip, RAST_COVERAGE_FIX62, buf,
+                                     (ptrdiff_t)width * 8, scratch, need);
+        if (st != RAST_OK) {
+            n = 0;
+            break;
+        }
+        for (y = y0; y < y1; y++) {
+            const uint64_t *row = buf + (size_t)(y - y0) * (size_t)width;
+            const int64_t c0 = cell0 + (int64_t)y * row_step;
+            for (x = 0; x < width;) {
+                uint64_t a = row[x];
+                int32_t e = x + 1, k;
+                double v;
+                if (!a) {
+                    x++;
+                    continue;
+                }
+                /* a run of equal cells (the core writes runs): one conversion */
+                while (e < width && row[e] == a) e++;
+                v = (double)(int64_t)a * 0x1p-62;
+                for (k = x; k < e; k++, n++) {
+                    cells[n] = c0 + k;
+                    cov[n] = v;
+                }
+                x = e;
+            }
+        }
+    }
+    free(buf);
+    free(scratch);
+    free(pts);
+    *count = n;
+    return st;
+}

@@ -20,6 +20,10 @@ long rastpy_mask_polygon64(void *mask, int32_t height, int32_t width, const doub
 long rastpy_polygon_coverage64(void *out, int32_t height, int32_t width, int format,
                                const double *xy, uint32_t npoints, const uint32_t *ring_sizes,
                                uint32_t nrings, const rast_coverage_opts *opts);
+long rastpy_coverage64_cells(const double *xy, uint32_t npoints, const uint32_t *ring_sizes,
+                             uint32_t nrings, const rast_coverage_opts *opts, int32_t height,
+                             int32_t width, int64_t cell0, int64_t row_step, int32_t band_rows,
+                             int64_t *cells, double *cov, size_t *count);
 /* cdef-end */
 
 #endif

@@ -25,7 +25,7 @@ import numpy as np
 from . import _core, gis
 from ._core import InputError
 from ._coverage import polygon_coverage
-from ._native import lib
+from ._native import ffi, lib
 from ._typing import CoverageMethod, Rule
 
 __all__ = ["coverage_fractions", "COVERAGE_DTYPES"]
@@ -210,34 +210,71 @@ def feature_fractions(px, ring_sizes, part_rings, feature, nfeat, shape, rule, p
         raise InputError("geometries: feature %d covers a window of %d x %d cells: wider than the "
                          "coverage path's range" % (k, hw[k], ww[k]))
     rs = ring_sizes.tolist()
+    sizes32 = np.ascontiguousarray(ring_sizes, np.uint32)
     covs, ids = [], []
+    # the 64-bit "area" path straight to the covered cells (C: no dense
+    # window, no numpy pass over it), where polygon_coverage would take it
+    sparse = method == "area" and dtype.kind == "f"
+    fast_ids, fast_n, fast_cells, fast_cov = [], [], [], []
+    # (plain lists: a numpy scalar a feature costs more than the C call of a small one)
+    L_hw, L_ww, L_fpt, L_fring = hw.tolist(), ww.tolist(), fpt.tolist(), fring.tolist()
+    L_own, L_box, L_r0, L_c0 = s_own.tolist(), s_box.tolist(), r0.tolist(), c0.tolist()
+    done, done_s = [], []
     for k in np.flatnonzero(inside).tolist():
         if progress is not None:
             progress(k + 1)
-        h, w = int(hw[k]), int(ww[k])
-        a, r_a, r_b = int(fpt[k]), int(fring[k]), int(fring[k + 1])
+        h, w = L_hw[k], L_ww[k]
+        a, r_a, r_b = L_fpt[k], L_fring[k], L_fring[k + 1]
+        own = rs[r_a:r_b]
+        whole = min(own) >= 3 if own else False  # every ring kept: the feature's points as they are
         rings = []
-        for n in rs[r_a:r_b]:
-            if n >= 3:
-                rings.append(local[a:a + n])
-            a += n
-        s = int(s_own[k])
-        if s < s_box[k]:
+        if not whole:
+            for n in own:
+                if n >= 3:
+                    rings.append(local[a:a + n])
+                a += n
+        s = L_own[k]
+        if s < L_box[k]:
             # far outside the raster: clipped to the window plus a cell,
             # so that S is the window's
-            pts = local[fpt[k]:fpt[k + 1]]
+            pts = local[L_fpt[k]:L_fpt[k + 1]]
             rings = _clip_rings(pts, ring_sizes[r_a:r_b], -1.0, -1.0, w + 1.0, h + 1.0)
-            s = int(s_box[k])
+            s = L_box[k]
+            whole = False
             if not rings:
                 continue
-        if not rings:
+        if not whole and not rings:
             continue
-        info[k] = (r0[k], c0[k], s)
+        done.append(k)
+        done_s.append(s)
+        if sparse and s > _MAX_S32:
+            if whole:
+                pts, sz = local[L_fpt[k]:L_fpt[k + 1]], sizes32[r_a:r_b]
+            else:
+                pts, sz = None, None
+            cells_k, cov_k = _cells64(rings, rule, s, h, w, L_r0[k] * W + L_c0[k], W, pts, sz)
+            if len(cells_k):
+                fast_ids.append(k)
+                fast_n.append(len(cells_k))
+                fast_cells.append(cells_k)
+                fast_cov.append(cov_k if dtype == np.float64 else cov_k.astype(dtype))
+            continue
+        if whole:
+            rings = [local[a + o:a + o + n] for o, n in zip(np.cumsum([0] + own[:-1]).tolist(), own)]
         covs.append(polygon_coverage(rings, (h, w), rule=rule, method=method, subpixel_bits=s,
                                      dtype=dtype).ravel())
         ids.append(k)
+    if done:
+        done_a = np.asarray(done, np.int64)
+        info[done_a] = np.c_[r0[done_a], c0[done_a], np.asarray(done_s, np.int64)]
+    fast = None
+    if len(fast_ids) == 1:  # (one feature: its arrays as they are, no copy)
+        fast = (np.full(fast_n[0], fast_ids[0], np.int64), fast_cells[0], fast_cov[0])
+    elif fast_ids:
+        fast = (np.repeat(np.asarray(fast_ids, np.int64), fast_n), np.concatenate(fast_cells),
+                np.concatenate(fast_cov))
     if not covs:
-        return empty
+        return fast + (info,) if fast is not None else empty
     # the cells with a fraction, all windows at once
     ids = np.asarray(ids, np.int64)
     sizes = hw[ids] * ww[ids]
@@ -255,7 +292,43 @@ def feature_fractions(px, ring_sizes, part_rings, feature, nfeat, shape, rule, p
     rr = local // w_f
     # row r0 + rr, column c0 + (local - rr * w): cell (r0 + rr) * W + c0 + local - rr * w
     cells = local + (r0[f] * W + c0[f]) + rr * (W - w_f)
-    return f, cells, cov[nz], info
+    cov = cov[nz]
+    if fast is not None:  # both paths (features past the 64-bit range): in feature order
+        f, cells, cov = (np.concatenate([a, b]) for a, b in zip(fast, (f, cells, cov)))
+        order = np.argsort(f, kind="stable")
+        f, cells, cov = f[order], cells[order], cov[order]
+    return f, cells, cov, info
+
+
+def _cells64(rings, rule, s, h, w, cell0, row_step, pts=None, sizes=None):
+    """(cell ids, float64 fractions) of the nonzero cells of the (h, w)
+    window of `rings` (float64 pixel coordinates from the window's
+    origin; or `pts` and their uint32 ring `sizes`, as they are) on the
+    64-bit "area" path at S = s: the cells polygon_coverage(rings, (h, w),
+    method="area", subpixel_bits=s) gives, without the dense window
+    (rastpy_coverage64_cells)."""
+    opts = _OPTS64.get((rule, s))
+    if opts is None:
+        from ._coverage import _opts
+        opts = _OPTS64[(rule, s)] = _opts("area", rule, s, 0.5, "polygon_coverage")
+    if pts is None:
+        pts = np.ascontiguousarray(np.concatenate(rings) if len(rings) > 1 else rings[0], np.float64)
+        sizes = np.array([len(r) for r in rings], np.uint32)
+    cells = np.empty(h * w, np.int64)
+    cov = np.empty(h * w, np.float64)
+    count = _ffi_new("size_t *")
+    result = lib.rastpy_coverage64_cells(_from_buffer("double[]", pts), len(pts), _from_buffer("uint32_t[]", sizes),
+                                         len(sizes), opts, h, w, cell0, row_step, 0,
+                                         _from_buffer("int64_t[]", cells), _from_buffer("double[]", cov), count)
+    if result:
+        _core._check_glue(result, pts, s, "geometries", sizes.tolist(), True)
+    n = count[0]
+    return cells[:n], cov[:n]  # (the pages past n were never touched)
+
+
+_OPTS64: dict = {}
+_ffi_new, _from_buffer = ffi.new, ffi.from_buffer
+_MAX_S32 = lib.RAST_MAX_SUBPIXEL_BITS
 
 
 def _method(method):

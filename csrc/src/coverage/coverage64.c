@@ -39,10 +39,12 @@
  * Cost.  Per row: the edges spanning it, a sort of them at each vertex or
  * crossing inside the row (insertion sort: they arrive nearly in order),
  * one 128-by-64-bit division per edge end and per column an edge crosses,
- * and a pass over the clip's columns.  Memory: rast_coverage64_scratch_size.
+ * and per row its dirty cells (those an edge touched) and the runs of equal
+ * cells between them (rast__w64_emit).  Memory: rast_coverage64_scratch_size.
  */
 #include "../base/internal.h"
 #include "../base/wide.h"
+#include "../base/bits.h" /* rast__ctz64 */
 
 #define RAST__W64_G 62
 #define RAST__W64_T ((uint64_t)1 << RAST__W64_G)
@@ -174,10 +176,16 @@ static uint64_t rast__w64_tcol(const rast__w64e *e, int64_t c, int64_t yj, int32
 typedef struct rast__w64cells {
     rast__i128 *area;  /* [w]: sigma dt (2^63 - fa - fb), 2^-125 pixel^2 */
     rast__i128 *cover; /* [w + 1]: sigma dt 2^63 for the cells right of it */
+    uint64_t *dirty;   /* [w / 64 + 1]: bit k when area[k] or cover[k] was written */
     int64_t x0, x1;    /* the clip's columns */
     int64_t yj;
     int32_t s, h;
 } rast__w64cells;
+
+static inline void rast__w64_mark(rast__w64cells *c, size_t k)
+{
+    c->dirty[k >> 6] |= (uint64_t)1 << (k & 63);
+}
 
 static inline rast__i128 rast__w64_signed(rast__i128 v, int32_t sigma)
 {
@@ -191,6 +199,7 @@ static inline void rast__w64_left(rast__w64cells *c, uint64_t dt, int32_t sigma)
     v.hi = dt >> 1;
     v.lo = dt << 63;
     c->cover[0] = rast__i128_add(c->cover[0], rast__w64_signed(v, sigma));
+    rast__w64_mark(c, 0);
 }
 
 /* Column col (inside the clip): from fraction f0 to f1 (V, 0..2^62) over
@@ -206,6 +215,8 @@ static inline void rast__w64_cell(rast__w64cells *c, int64_t col, uint64_t f0, u
     v.hi = dt >> 1;
     v.lo = dt << 63;
     c->cover[k + 1] = rast__i128_add(c->cover[k + 1], rast__w64_signed(v, sigma));
+    rast__w64_mark(c, k);
+    rast__w64_mark(c, k + 1);
 }
 
 /* The piece of e from (xa, ta) to (xb, tb) (V, U; ta <= tb), sign sigma. */
@@ -274,37 +285,86 @@ static void rast__w64_piece(rast__w64cells *c, const rast__w64e *e, rast__i128 x
     rast__w64_cell(c, cb, one, fb, tb - t, sigma);
 }
 
-/* Row y's values into out's row, the cells then cleared. */
+/* A cell's value in format: v = its area in 2^-125 pixel^2, rounded to
+ * 2^-62 (round(v / 2^63), clamped to [0, 2^62]), then to a level. */
+static uint64_t rast__w64_value(rast__i128 v, rast_coverage_format format)
+{
+    uint64_t a62;
+    v = rast__i128_sar(rast__i128_add(v, rast__i128_from((int64_t)1 << 62)), 63);
+    if (rast__i128_neg_p(v)) a62 = 0;
+    else if (v.hi || v.lo > RAST__W64_T) a62 = RAST__W64_T;
+    else a62 = v.lo;
+    if (format != RAST_COVERAGE_FIX62) { /* floor((a62 M + 2^61) / 2^62) */
+        rast__i128 p = rast__w64_umul(a62, format == RAST_COVERAGE_U8 ? 255u : 65535u);
+        p = rast__i128_add(p, rast__i128_from((int64_t)1 << 61));
+        a62 = (p.hi << 2) | (p.lo >> 62);
+    }
+    return a62;
+}
+
+/* row[k0..k1) = value (a run of equal cells). */
+static void rast__w64_fill(unsigned char *row, rast_coverage_format format, int64_t k0, int64_t k1,
+                           uint64_t value)
+{
+    int64_t k;
+    if (k0 >= k1) return;
+    if (format == RAST_COVERAGE_U8) {
+        memset(row + k0, (int)value, (size_t)(k1 - k0));
+    } else if (format == RAST_COVERAGE_U16) {
+        uint16_t *p = (uint16_t *)(void *)row;
+        if (!value) memset(p + k0, 0, (size_t)(k1 - k0) * 2);
+        else
+            for (k = k0; k < k1; k++) p[k] = (uint16_t)value;
+    } else {
+        uint64_t *p = (uint64_t *)(void *)row;
+        if (!value) memset(p + k0, 0, (size_t)(k1 - k0) * 8);
+        else
+            for (k = k0; k < k1; k++) p[k] = value;
+    }
+}
+
+static void rast__w64_put(unsigned char *row, rast_coverage_format format, int64_t k, uint64_t value)
+{
+    if (format == RAST_COVERAGE_U8) row[k] = (unsigned char)value;
+    else if (format == RAST_COVERAGE_U16) ((uint16_t *)(void *)row)[k] = (uint16_t)value;
+    else ((uint64_t *)(void *)row)[k] = value;
+}
+
+/* Row y's values into out's row, the cells then cleared.  Only the dirty
+ * cells (a piece of an edge wrote their area, or their cover) are
+ * computed: between two of them the running cover is constant and the
+ * area zero, so the cells hold one value, written as a run.  The cost is
+ * per crossed cell and per run, not per cell (plus the fill itself, and
+ * one word of the dirty bits per 64 columns). */
 static void rast__w64_emit(rast__w64cells *c, rast_coverage_format format, unsigned char *row)
 {
     const int64_t w = c->x1 - c->x0;
+    const size_t nwords = (size_t)(w >> 6) + 1;
     rast__i128 acc = rast__i128_from(0);
-    int64_t k;
-    for (k = 0; k < w; k++) {
-        rast__i128 v;
-        uint64_t a62, level;
-        acc = rast__i128_add(acc, c->cover[k]);
-        v = rast__i128_add(acc, c->area[k]);
-        /* round(v / 2^63), clamped to [0, 2^62] */
-        v = rast__i128_sar(rast__i128_add(v, rast__i128_from((int64_t)1 << 62)), 63);
-        if (rast__i128_neg_p(v)) a62 = 0;
-        else if (v.hi || v.lo > RAST__W64_T) a62 = RAST__W64_T;
-        else a62 = v.lo;
-        if (format == RAST_COVERAGE_FIX62) {
-            ((uint64_t *)(void *)row)[k] = a62;
-            continue;
+    uint64_t run = 0; /* the value of acc alone (0 before any cover) */
+    int64_t k = 0;    /* row[0..k) written */
+    size_t i;
+    for (i = 0; i < nwords; i++) {
+        uint64_t bits = c->dirty[i];
+        c->dirty[i] = 0;
+        while (bits) {
+            int64_t d = (int64_t)(i << 6) + (int64_t)rast__ctz64(bits);
+            bits &= bits - 1;
+            /* cells k..d-1 are clean: the run; d is dirty (d <= w) */
+            rast__w64_fill(row, format, k, d, run);
+            acc = rast__i128_add(acc, c->cover[d]);
+            c->cover[d] = rast__i128_from(0);
+            if (d == w) { /* the cover past the last cell: no cell */
+                k = w;
+                break;
+            }
+            rast__w64_put(row, format, d, rast__w64_value(rast__i128_add(acc, c->area[d]), format));
+            c->area[d] = rast__i128_from(0);
+            run = rast__w64_value(acc, format);
+            k = d + 1;
         }
-        /* floor((a62 M + 2^61) / 2^62) */
-        {
-            rast__i128 p = rast__w64_umul(a62, format == RAST_COVERAGE_U8 ? 255u : 65535u);
-            p = rast__i128_add(p, rast__i128_from((int64_t)1 << 61));
-            level = (p.hi << 2) | (p.lo >> 62);
-        }
-        if (format == RAST_COVERAGE_U8) row[k] = (unsigned char)level;
-        else ((uint16_t *)(void *)row)[k] = (uint16_t)level;
     }
-    for (k = 0; k < w; k++) c->area[k] = rast__i128_from(0);
-    for (k = 0; k <= w; k++) c->cover[k] = rast__i128_from(0);
+    rast__w64_fill(row, format, k, w, run);
 }
 
 /* ---- the sweep ---------------------------------------------------------- */
@@ -478,7 +538,7 @@ static void rast__w64_sweep_row(rast__w64work *wk, rast__w64cells *c, int32_t na
 /* ---- entry ---------------------------------------------------------------- */
 
 /* Per vertex: the edge, three indices, three abscissae, two ordinates;
- * per clip column: two cells (plus one), 16 bytes each. */
+ * per clip column: two cells (plus one), 16 bytes each, and a dirty bit. */
 static size_t rast__w64_need(uint32_t npoints, int32_t width)
 {
     size_t n = (size_t)npoints, need = 0;
@@ -488,6 +548,7 @@ static size_t rast__w64_need(uint32_t npoints, int32_t width)
     need = rast__size_add(need, rast__align(rast__size_mul(2 * n + 2, sizeof(uint64_t))));
     need = rast__size_add(need,
                           rast__align(rast__size_mul(2 * (size_t)width + 1, sizeof(rast__i128))));
+    need = rast__size_add(need, rast__align(rast__size_mul((size_t)(width >> 6) + 1, sizeof(uint64_t))));
     return need;
 }
 
@@ -568,6 +629,8 @@ rast_status rast_polygon_coverage64(const rast_polygon64 *polygon, const rast_co
     cells.cover = (rast__i128 *)rast__take(&ar, ((size_t)w + 1) * sizeof(rast__i128));
     for (i = 0; i < (uint32_t)w; i++) cells.area[i] = rast__i128_from(0);
     for (i = 0; i <= (uint32_t)w; i++) cells.cover[i] = rast__i128_from(0);
+    cells.dirty = (uint64_t *)rast__take(&ar, ((size_t)(w >> 6) + 1) * sizeof(uint64_t));
+    for (i = 0; i <= (uint32_t)(w >> 6); i++) cells.dirty[i] = 0;
     h = RAST__W64_G - s;
     cells.x0 = clip->x0;
     cells.x1 = clip->x1;

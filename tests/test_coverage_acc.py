@@ -238,6 +238,33 @@ def test_rows_of_many_parts_inside_a_band(rule):
         check_area(out, want, M_OF[dtype], n, m, "%s %s" % (rule, dtype.__name__))
 
 
+@pytest.mark.parametrize("copies", [2046, 8192])
+@pytest.mark.parametrize("rule", ["nonzero", "evenodd"])
+def test_rows_of_thousands_of_parts(copies, rule):
+    """A row of a paragraph of text holds ~700 parts: uint8 rows take up
+    to 4,095 (coverage_acc.c, RAST__ACC_MAXN), where the winding is at
+    most 2,047 and the 64-bit sums hold it.  2,046 copies of a tall
+    triangle and a thin one: 4,094 parts, a winding of 2,046 or 2,047,
+    accumulated; 8,192 copies: 24,579 parts, a winding of 2^13, which a
+    64-bit sum of 2^51 a pixel would wrap to 0, so those rows go to the
+    exact sweep.
+    The oracle: the copies' integral is `copies` times one's."""
+    tri = [(1.25, 9.5), (5.5, 40.25), (2.125, 71.75)]
+    thin = [(6.0, 0.5), (6.5, 79.5), (6.25, 0.5)]
+    a1 = exact_area([tri], TALL, "nonzero", 8)
+    a2 = exact_area([thin], TALL, "nonzero", 8)
+    sign = (1 if _area2(tri) > 0 else -1) * (1 if _area2(thin) > 0 else -1)
+    want = rule_applied(a1 * copies + a2 * sign, rule)
+    rings = [tri] * copies + [thin]
+    # n and m counted on one and two copies (O(n^2) pairs on all): a copy
+    # adds the same edges and crossings as the second does
+    n1, m1 = _n_m([tri, thin], 8)
+    n2, m2 = _n_m([tri, tri, thin], 8)
+    n, m = n1 + (copies - 1) * (n2 - n1), m1 + (copies - 1) * (m2 - m1)
+    out = rastrum.polygon_coverage(rings, TALL, rule=rule, method="accumulate", dtype=np.uint8)
+    check_area(out, want, 255, n, m, "%d copies, %s" % (copies, rule))
+
+
 @settings(max_examples=S_.examples(12), deadline=None)
 @given(st.integers(1, 2), st.integers(0, 2 ** 32 - 1), st.sampled_from([4, 256]),
        st.sampled_from(["evenodd", "nonzero"]))

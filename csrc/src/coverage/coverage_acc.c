@@ -20,8 +20,8 @@
  * column k is then v = 2^21 cover - area of the cells coverage_area.c
  * describes (its quick accumulation): the same sums, split between two
  * cells, so v 2^-51 is within n (2 Q + 2^-51) < (n + 1) 2^-29 of the exact
- * integral a of the winding number over the pixel, n < 512 the row's
- * parts: a part meets a pixel at two points at most (where it enters and
+ * integral a of the winding number over the pixel, n < RAST__ACC_MAXN
+ * the row's parts: a part meets a pixel at two points at most (where it enters and
  * leaves the column), each rounded to the grid of Q (its end's abscissa or
  * its column crossing's ordinate, both floored exactly by integer
  * steppers: abscissae from row to row, ordinates from column to column,
@@ -34,7 +34,10 @@
  * within (n + 1) M 2^-29 of an integer (rast__acc_win); any such pixel
  * sends the whole row to the exact sweep (rast__cov_acc_exact_row), which
  * writes it again.  The sums are modular in 64 bits: |a| <= n / 2 <
- * 2^8 (n < 512), so v fits.
+ * 2^11 (n < RAST__ACC_MAXN = 4096), so v fits, and so does v + 2^62 in
+ * the dense rows' first pass (rast__acc_sum24).  (The bound was n < 512
+ * until a paragraph of text, 700 parts a row, sent nearly every row to
+ * the exact sweep.)
  *
  * The cells are cleared by the pass that reads them, which runs over the
  * columns touched only; the pixels left of them are 0, those right of
@@ -59,6 +62,9 @@
 #define QT ((uint64_t)1 << QF)
 #define QONE ((int64_t)1 << 51)
 #define RAST__ACC_DENSE 16
+/* The parts of a row the accumulation takes (the bound above: |a| <
+ * 2^11); a row with more goes to the exact sweep. */
+#define RAST__ACC_MAXN 4096
 /* (a band's rows are read whole sooner: where all four are, its long
  * edges mark no cell, rast__acc_dband_r) */
 #define RAST__ACC_DENSE_BAND 32
@@ -1198,7 +1204,7 @@ static void rast__acc_by_rows(const rast__acc_walk *w, rast__acc *a)
     for (j = w->ja; j < w->jb; j++) {
         const int64_t Yj = (int64_t)j * a->p;
         nrow = rast__acc_edges_of(w, nrow, &next, &drop, j, j + 1, a->p);
-        if (nrow < 512 && ((uint64_t)nrow + 1) * m < ((uint64_t)1 << 25)) {
+        if (nrow < RAST__ACC_MAXN && ((uint64_t)nrow + 1) * m < ((uint64_t)1 << 25)) {
             /* Bits for the cells touched, so that the scan skips the
              * others, unless the row's parts are many for its width
              * (a part or more for every RAST__ACC_DENSE columns): then every
@@ -1247,7 +1253,7 @@ static void rast__acc_by_bands(const rast__acc_walk *w, rast__acc *v)
         }
         for (r = 0; r < j1 - j0; r++) {
             if (r) cnt[r] += cnt[r - 1];
-            ok[r] = (unsigned char)(cnt[r] < 512 && ((uint64_t)cnt[r] + 1) * m < ((uint64_t)1 << 25));
+            ok[r] = (unsigned char)(cnt[r] < RAST__ACC_MAXN && ((uint64_t)cnt[r] + 1) * m < ((uint64_t)1 << 25));
             v[r].dense = (int64_t)cnt[r] * RAST__ACC_DENSE_BAND >= w->width;
         }
         for (r = 0, ok[RAST__ACC_BAND] = j1 - j0 == RAST__ACC_BAND, dense = 1; r < j1 - j0; r++) {

@@ -139,6 +139,36 @@ def test_a_level_just_past_a_tie_is_exact(method, rule, orient, mirror, wide, ho
         check_area(out, exact, M_OF[dtype], n, m, "%s %s" % (method, rule))
 
 
+@pytest.mark.parametrize("rule, hole", [("nonzero", False), ("evenodd", True)])
+def test_a_level_just_past_a_tie_in_a_row_of_many_parts(rule, hole):
+    """The pixel of test_a_level_just_past_a_tie_is_exact, 2^-25 of a level
+    past a tie, in rows of 266 parts or more: 130 slanted quadrilaterals to
+    its right (two parts a row each).  Such a row bounds its cells' error
+    by the most parts that touch any 16 columns (coverage_acc.c,
+    rast__acc_count), not by all 266, and the pixel must still send the row
+    to the exact sweep (a window of 0 gives 124 / 125 the other way)."""
+    quad = [(2, 0), (2.125, 0), (3.08984375, 3.984375), (2, 3.984375)]
+    d = 2 ** -16
+    tri = [(2.875, 1.5), (2.875, 1.5 + d), (2.875 + d, 1.5)]
+    if hole:
+        tri = [(x - 0.625, y) for x, y in tri]
+    tri = tri if ((_area2(tri) > 0) == (_area2(quad) > 0)) != hole else tri[::-1]
+    many = [[(x0 + 0.5, 0.25), (x0 + 1.75, 0.25), (x0 + 3.25, 3.75), (x0 + 2.0, 3.75)]
+            for x0 in range(10, 10 + 4 * 130, 4)]
+    rings = [quad, tri] + many
+    shape = (5, 10 + 4 * 130 + 4)
+    exact = exact_area(rings, shape, rule, 16)
+    assert exact[1, 2] == F(83, 170) + F(-1 if hole else 1, 2 ** 33)
+    n1, m1 = _n_m([quad, tri] + many[:1], 16)
+    n2, m2 = _n_m([quad, tri] + many[:2], 16)
+    n, m = n1 + (len(many) - 1) * (n2 - n1), m1 + (len(many) - 1) * (m2 - m1)
+    for dtype, want in ((np.uint8, 124 if hole else 125), (np.uint16, 31996 if hole else 31997)):
+        out = rastrum.polygon_coverage(rings, shape, rule=rule, method="accumulate", dtype=dtype,
+                                       subpixel_bits=16)
+        assert out[1, 2] == want
+        check_area(out, exact, M_OF[dtype], n, m, "%s %s" % (rule, dtype.__name__))
+
+
 @pytest.mark.parametrize("rule", ["nonzero", "evenodd"])
 def test_long_shallow_parts_in_sparse_rows(rule):
     """Rows with few parts mark the cells each part touches; a shallow
@@ -236,6 +266,33 @@ def test_rows_of_many_parts_inside_a_band(rule):
     for dtype in (np.uint8, np.uint16):
         out = rastrum.polygon_coverage(rings, TALL, rule=rule, method="accumulate", dtype=dtype)
         check_area(out, want, M_OF[dtype], n, m, "%s %s" % (rule, dtype.__name__))
+
+
+@pytest.mark.parametrize("copies", [2046, 8192])
+@pytest.mark.parametrize("rule", ["nonzero", "evenodd"])
+def test_rows_of_thousands_of_parts(copies, rule):
+    """A row of a paragraph of text holds ~700 parts: uint8 rows take up
+    to 4,095 (coverage_acc.c, RAST__ACC_MAXN), where the winding is at
+    most 2,047 and the 64-bit sums hold it.  2,046 copies of a tall
+    triangle and a thin one: 4,094 parts, a winding of 2,046 or 2,047,
+    accumulated; 8,192 copies: 24,579 parts, a winding of 2^13, which a
+    64-bit sum of 2^51 a pixel would wrap to 0, so those rows go to the
+    exact sweep.
+    The oracle: the copies' integral is `copies` times one's."""
+    tri = [(1.25, 9.5), (5.5, 40.25), (2.125, 71.75)]
+    thin = [(6.0, 0.5), (6.5, 79.5), (6.25, 0.5)]
+    a1 = exact_area([tri], TALL, "nonzero", 8)
+    a2 = exact_area([thin], TALL, "nonzero", 8)
+    sign = (1 if _area2(tri) > 0 else -1) * (1 if _area2(thin) > 0 else -1)
+    want = rule_applied(a1 * copies + a2 * sign, rule)
+    rings = [tri] * copies + [thin]
+    # n and m counted on one and two copies (O(n^2) pairs on all): a copy
+    # adds the same edges and crossings as the second does
+    n1, m1 = _n_m([tri, thin], 8)
+    n2, m2 = _n_m([tri, tri, thin], 8)
+    n, m = n1 + (copies - 1) * (n2 - n1), m1 + (copies - 1) * (m2 - m1)
+    out = rastrum.polygon_coverage(rings, TALL, rule=rule, method="accumulate", dtype=np.uint8)
+    check_area(out, want, 255, n, m, "%d copies, %s" % (copies, rule))
 
 
 @settings(max_examples=S_.examples(12), deadline=None)

@@ -20,8 +20,8 @@
  * column k is then v = 2^21 cover - area of the cells coverage_area.c
  * describes (its quick accumulation): the same sums, split between two
  * cells, so v 2^-51 is within n (2 Q + 2^-51) < (n + 1) 2^-29 of the exact
- * integral a of the winding number over the pixel, n < 512 the row's
- * parts: a part meets a pixel at two points at most (where it enters and
+ * integral a of the winding number over the pixel, n < RAST__ACC_MAXN
+ * the row's parts: a part meets a pixel at two points at most (where it enters and
  * leaves the column), each rounded to the grid of Q (its end's abscissa or
  * its column crossing's ordinate, both floored exactly by integer
  * steppers: abscissae from row to row, ordinates from column to column,
@@ -34,7 +34,10 @@
  * within (n + 1) M 2^-29 of an integer (rast__acc_win); any such pixel
  * sends the whole row to the exact sweep (rast__cov_acc_exact_row), which
  * writes it again.  The sums are modular in 64 bits: |a| <= n / 2 <
- * 2^8 (n < 512), so v fits.
+ * 2^11 (n < RAST__ACC_MAXN = 4096), so v fits, and so does v + 2^62 in
+ * the dense rows' first pass (rast__acc_sum24).  (The bound was n < 512
+ * until a paragraph of text, 700 parts a row, sent nearly every row to
+ * the exact sweep.)
  *
  * The cells are cleared by the pass that reads them, which runs over the
  * columns touched only; the pixels left of them are 0, those right of
@@ -59,6 +62,12 @@
 #define QT ((uint64_t)1 << QF)
 #define QONE ((int64_t)1 << 51)
 #define RAST__ACC_DENSE 16
+/* The parts of a row the accumulation takes (the bound above: |a| <
+ * 2^11); a row with more goes to the exact sweep. */
+#define RAST__ACC_MAXN 4096
+/* A row of this many parts or more counts them per 16 columns for its
+ * window (rast__acc_count); fewer make a window narrow enough. */
+#define RAST__ACC_FEW 256
 /* (a band's rows are read whole sooner: where all four are, its long
  * edges mark no cell, rast__acc_dband_r) */
 #define RAST__ACC_DENSE_BAND 32
@@ -109,6 +118,9 @@ typedef struct rast__acc {
     int32_t lo, hi;    /* cells touched this row: [lo, hi] (lo > hi: none) */
     int32_t p, hq;     /* P = 2^S; HQ = 30 - S */
     int dense;         /* this row: no bits, every cell in [lo, hi] read */
+    uint32_t *cnt;     /* NULL, or for each 16 columns the parts that touch
+                        * them this row (rast__acc_count; rast__acc_part
+                        * counts when asked) */
 } rast__acc;
 
 /* rast__cov_qtop, rast__cov_qt_first with this engine's P and HQ */
@@ -137,6 +149,7 @@ static void rast__acc_init(rast__acc *a, uint64_t *acc, uint64_t *bits, uint32_t
     a->p = (int32_t)1 << s;
     a->hq = QF - s;
     a->dense = (int64_t)nrow * RAST__ACC_DENSE >= a->x1 - a->x0;
+    a->cnt = NULL;
 }
 
 /* e's part in row j (top Yj): from (*xa, *ta) to (*xb, *tb), Q units, t
@@ -159,6 +172,22 @@ RAST__HOT void rast__acc_ends(rast__cedge *e, int32_t j, int64_t rel0, const ras
         *tb = QT;
         *xb = rast__acc_top(e, j + 1, a);
     }
+}
+
+/* A part touches cells [lo, hi]: one more part for each 16 columns of
+ * them in the clip.  A pixel's sum is off the exact integral only by the
+ * parts that touch its column (the bound above, per part): one that lies
+ * left of it has put its whole height's cover in the cells up to it (the
+ * ordinates where it crosses the verticals between cancel, from its top
+ * to its bottom, which are exact), one right of it nothing.  So the most
+ * parts touching any 16 columns bound every pixel's error in the row
+ * (rast__acc_emit's window): a few for a paragraph of glyphs, whose rows
+ * hold hundreds of parts. */
+static void rast__acc_count(rast__acc *a, int32_t lo, int32_t hi)
+{
+    const int32_t last = a->x1 - a->x0 - 1;
+    if (hi > last) hi = last;
+    for (lo >>= 4; lo <= hi >> 4; lo++) a->cnt[lo]++;
 }
 
 /* Cells [lo, hi] touched: their bits set unless the row is dense. */
@@ -191,10 +220,19 @@ RAST__HOT void rast__acc_put(uint64_t *acc, int64_t k, uint64_t f0, uint64_t f1,
     acc[(k + 1) * sx] += (ar ^ neg) - neg;
 }
 
+/* rast__acc_mark, and rast__acc_count when count (a constant at each
+ * call: nothing added where it is 0) */
+RAST__HOT void rast__acc_touch(rast__acc *a, int32_t lo, int32_t hi, int count)
+{
+    rast__acc_mark(a, lo, hi);
+    if (count) rast__acc_count(a, lo, hi);
+}
+
 /* The part of e from (xa, ta) to (xb, tb) (Q units; t from the row's top,
- * whose top is off below e's top), sign s; cells sx apart. */
+ * whose top is off below e's top), sign s; cells sx apart; the parts
+ * counted (a->cnt) when count. */
 RAST__HOT void rast__acc_part(rast__acc *a, rast__cedge *e, int64_t off, int64_t xa, uint64_t ta,
-                           int64_t xb, uint64_t tb, int32_t s, int32_t sx)
+                           int64_t xb, uint64_t tb, int32_t s, int32_t sx, int count)
 {
     const uint64_t fm = QT - 1, neg = s < 0 ? ~(uint64_t)0 : 0;
     uint64_t *acc = a->acc;
@@ -204,14 +242,14 @@ RAST__HOT void rast__acc_part(rast__acc *a, rast__cedge *e, int64_t off, int64_t
     if (ta >= tb) return;
     if (ca < a->x0 && cb < a->x0) { /* all left of the clip */
         acc[0] += (((tb - ta) << 21) ^ neg) - neg;
-        rast__acc_mark(a, 0, 0);
+        rast__acc_touch(a, 0, 0, count);
         return;
     }
     if (ca == cb) {
         if (ca >= a->x1) return;
         lo = hi = ca - a->x0;
         rast__acc_put(acc, lo, f, fb, tb - ta, neg, sx);
-        rast__acc_mark(a, (int32_t)lo, (int32_t)hi + 1);
+        rast__acc_touch(a, (int32_t)lo, (int32_t)hi + 1, count);
         return;
     }
     adx = (uint32_t)(e->dx < 0 ? -e->dx : e->dx);
@@ -289,7 +327,7 @@ RAST__HOT void rast__acc_part(rast__acc *a, rast__cedge *e, int64_t off, int64_t
     } /* else the rest is right of the clip */
     lo = lo < a->x0 ? 0 : lo - a->x0;
     hi = (hi >= a->x1 ? a->x1 - 1 : hi) - a->x0 + 1;
-    rast__acc_mark(a, (int32_t)lo, (int32_t)hi);
+    rast__acc_touch(a, (int32_t)lo, (int32_t)hi, count);
 }
 
 /* floor(x / P) for |x| < 2^62, by a shift (a division takes tens of
@@ -312,17 +350,17 @@ static int32_t rast__acc_thru(const rast__cedge *e, const rast__acc *a)
 /* e's part in row j (rel0 = e's top - the row's): rast__acc_ends, then
  * rast__acc_part; inline in the rows' walk, out of line in the bands'
  * (rast__acc_row_part), where it is the rare way */
-RAST__HOT void rast__acc_row_part_in(rast__acc *a, rast__cedge *e, int32_t j, int64_t rel0, int32_t sx)
+RAST__HOT void rast__acc_row_part_in(rast__acc *a, rast__cedge *e, int32_t j, int64_t rel0, int32_t sx, int count)
 {
     int64_t xa, xb;
     uint64_t ta, tb;
     rast__acc_ends(e, j, rel0, a, &xa, &ta, &xb, &tb);
-    rast__acc_part(a, e, -rel0 * ((int64_t)1 << a->hq), xa, ta, xb, tb, e->dir, sx);
+    rast__acc_part(a, e, -rel0 * ((int64_t)1 << a->hq), xa, ta, xb, tb, e->dir, sx, count);
 }
 
 RAST__APART void rast__acc_row_part(rast__acc *a, rast__cedge *e, int32_t j, int64_t rel0)
 {
-    rast__acc_row_part_in(a, e, j, rel0, RAST__ACC_SX);
+    rast__acc_row_part_in(a, e, j, rel0, RAST__ACC_SX, 0);
 }
 
 /* The part of e through a whole row from xa (its top) to xb (its bottom)
@@ -865,8 +903,8 @@ RAST__HOT uint64_t rast__acc_row(uint64_t *acc, int32_t sx, uint64_t *blk, uint3
     uint16_t *r16 = (uint16_t *)(void *)row;
     int32_t k = lo, wi;
     rast__cov_fill(f, row, 0, lo, 0);
-    if (dense && m == 255 && lo < hi && (rule == RAST_RULE_EVENODD || win <= rast__acc_win(255, 255))) {
-        /* (non-zero: n < 256) */
+    if (dense == 1 && m == 255 && lo < hi && (rule == RAST_RULE_EVENODD || win <= rast__acc_win(255, 255))) {
+        /* (non-zero: n < 256; dense 2: every cell read, but not this way) */
         rast__acc_sum24(acc, z, lo, hi, sx);
         bad = rast__acc_levels24(z, row, lo, hi, (uint32_t)(win >> 27) + 256, rule);
         lev = row[hi - 1];
@@ -955,15 +993,29 @@ static int rast__acc_done(const rast__cov_out *o, int32_t y, uint64_t bad, const
     return 1;
 }
 
-/* Row y from the cells touched, which are cleared: rast__acc_done's. */
+/* Row y from the cells touched, which are cleared: rast__acc_done's.
+ * win: the window of the row's n parts, or, where a counts the parts per
+ * 16 columns, that of the most of them (the counts cleared). */
 RAST__HOT int rast__acc_emit(rast__acc *a, int32_t sx, const rast__cov_out *o, int32_t y, rast_fill_rule rule,
                           uint32_t m, uint64_t win, const rast__cedge *e, const int32_t *ix, int32_t n)
 {
     unsigned char *row = rast__cov_row(o, y);
     const int32_t w = a->x1 - a->x0;
+    const int dense = a->dense;
     uint64_t bad;
     int32_t lo = a->lo, hi = a->hi < w ? a->hi + 1 : w; /* [lo, hi) */
     if (lo >= hi) lo = hi = 0;
+    if (a->cnt) {
+        uint32_t most = 0;
+        int32_t b;
+        for (b = lo >> 4; lo < hi && b <= (hi - 1) >> 4; b++) {
+            most = a->cnt[b] > most ? a->cnt[b] : most;
+            a->cnt[b] = 0;
+        }
+        win = rast__acc_win(most, m);
+        /* (the quick way's 32-bit sums need |a| < 2^7: n < 256) */
+        if (dense && rule == RAST_RULE_NONZERO && n >= 256) a->dense = 2;
+    }
     if (o->format != RAST_COVERAGE_U8)
         bad = rast__acc_row(a->acc, sx, a->blk, a->z, row, lo, hi, w, a->dense, rule, m, win);
     else if (rule == RAST_RULE_NONZERO)
@@ -975,6 +1027,7 @@ RAST__HOT int rast__acc_emit(rast__acc *a, int32_t sx, const rast__cov_out *o, i
     a->acc[w * sx] = 0;
     a->lo = INT32_MAX;
     a->hi = -1;
+    a->dense = dense;
     return rast__acc_done(o, y, bad, e, ix, n);
 }
 
@@ -1132,7 +1185,7 @@ int rast__cov_acc_area_row(rast__cedge *e, const int32_t *row, int32_t nrow, con
     for (k = 0; k < nrow; k++) {
         rast__cedge *ed = &e[row[k]];
         rast__acc_part(&a, ed, -((int64_t)ed->yt - Yj) * ((int64_t)1 << a.hq), ed->qa, ed->qta,
-                       ed->qb, ed->qtb, ed->dir, 1);
+                       ed->qb, ed->qtb, ed->dir, 1, 0);
     }
     return rast__acc_emit(&a, 1, o, j, rule, m, rast__acc_win((uint64_t)nrow, m), e, row, nrow);
 }
@@ -1193,18 +1246,22 @@ static void rast__acc_by_rows(const rast__acc_walk *w, rast__acc *a)
     const uint32_t m = w->m;
     int32_t *const row = w->row;
     int32_t nrow = 0, j, k, drop = INT32_MAX;
-    uint32_t next = 0;
+    uint32_t next = 0, *const cnt = a->z + w->width; /* (in area[], after z[]: cleared) */
     int exact = 0; /* the edges' exact steps set */
     for (j = w->ja; j < w->jb; j++) {
         const int64_t Yj = (int64_t)j * a->p;
         nrow = rast__acc_edges_of(w, nrow, &next, &drop, j, j + 1, a->p);
-        if (nrow < 512 && ((uint64_t)nrow + 1) * m < ((uint64_t)1 << 25)) {
+        if (nrow < RAST__ACC_MAXN && ((uint64_t)nrow + 1) * m < ((uint64_t)1 << 25)) {
             /* Bits for the cells touched, so that the scan skips the
              * others, unless the row's parts are many for its width
              * (a part or more for every RAST__ACC_DENSE columns): then every
              * cell from the first touched to the last is read. */
             a->dense = (int64_t)nrow * RAST__ACC_DENSE >= w->width;
-            for (k = 0; k < nrow; k++) rast__acc_row_part_in(a, &e[row[k]], j, (int64_t)e[row[k]].yt - Yj, 1);
+            a->cnt = nrow >= RAST__ACC_FEW ? cnt : NULL;
+            if (a->cnt) /* (two loops: the count costs nothing where not asked) */
+                for (k = 0; k < nrow; k++) rast__acc_row_part_in(a, &e[row[k]], j, (int64_t)e[row[k]].yt - Yj, 1, 1);
+            else
+                for (k = 0; k < nrow; k++) rast__acc_row_part_in(a, &e[row[k]], j, (int64_t)e[row[k]].yt - Yj, 1, 0);
             if (rast__acc_emit(a, 1, o, j, w->rule, m, rast__acc_win((uint64_t)nrow, m), e, row, nrow)) continue;
         }
         if (!exact) { /* the first exact row (rare) */
@@ -1247,7 +1304,7 @@ static void rast__acc_by_bands(const rast__acc_walk *w, rast__acc *v)
         }
         for (r = 0; r < j1 - j0; r++) {
             if (r) cnt[r] += cnt[r - 1];
-            ok[r] = (unsigned char)(cnt[r] < 512 && ((uint64_t)cnt[r] + 1) * m < ((uint64_t)1 << 25));
+            ok[r] = (unsigned char)(cnt[r] < RAST__ACC_MAXN && ((uint64_t)cnt[r] + 1) * m < ((uint64_t)1 << 25));
             v[r].dense = (int64_t)cnt[r] * RAST__ACC_DENSE_BAND >= w->width;
         }
         for (r = 0, ok[RAST__ACC_BAND] = j1 - j0 == RAST__ACC_BAND, dense = 1; r < j1 - j0; r++) {

@@ -162,19 +162,14 @@ def _clip_side(ring, axis, bound, keep_greater):
     return both[keep]
 
 
-def feature_fractions(px, ring_sizes, part_rings, feature, nfeat, shape, rule, progress=None, *,
-                      method="area", dtype=np.float64):
-    """Per feature, the cells of the raster it covers and their fractions:
-    (feature ids, flat cell indices row * W + col, fractions in `dtype`,
-    zeros left out), grouped by feature in order, each feature's cells in
-    increasing order; and per feature (row0, col0, S) of its window (S =
-    -1 for a feature outside the raster)."""
+def _windows(px, ring_sizes, part_rings, feature, nfeat, shape, method):
+    """Every feature's window (the cells its box touches in the raster),
+    its vertices less the window's origin, their extent and the S of the
+    window (s_box) and of the vertices (s_own), all at once; InputError
+    for a window wider than the coverage path's range.  Returns
+    (fpt, fring, inside, r0, c0, hw, ww, local, s_own, s_box): per feature
+    its first point and ring (n + 1 entries) and the rest per feature."""
     H, W = shape
-    dtype = np.dtype(dtype)
-    info = np.full((nfeat, 3), -1, np.int64)
-    empty = np.zeros(0, np.int64), np.zeros(0, np.int64), np.zeros(0, dtype), info
-    if not len(px):
-        return empty
     ring_start = np.concatenate([[0], np.cumsum(part_rings)])
     pt_start = np.concatenate([[0], np.cumsum(ring_sizes)])
     # rings and points of each feature (its parts are consecutive)
@@ -182,8 +177,6 @@ def feature_fractions(px, ring_sizes, part_rings, feature, nfeat, shape, rule, p
     fpart_start = np.concatenate([[0], np.cumsum(fparts)])
     fring = ring_start[fpart_start]
     fpt = pt_start[fring]
-    # every feature's window (the cells its box touches in the raster), its
-    # vertices' extent from the window's origin and its S, all at once
     has = np.flatnonzero(fpt[1:] > fpt[:-1])
     lo = np.full((nfeat, 2), np.inf)
     hi = np.full((nfeat, 2), -np.inf)
@@ -209,6 +202,24 @@ def feature_fractions(px, ring_sizes, part_rings, feature, nfeat, shape, rule, p
         k = int(np.flatnonzero(wide)[0])
         raise InputError("geometries: feature %d covers a window of %d x %d cells: wider than the "
                          "coverage path's range" % (k, hw[k], ww[k]))
+    return fpt, fring, inside, r0, c0, hw, ww, local, s_own, s_box
+
+
+def feature_fractions(px, ring_sizes, part_rings, feature, nfeat, shape, rule, progress=None, *,
+                      method="area", dtype=np.float64):
+    """Per feature, the cells of the raster it covers and their fractions:
+    (feature ids, flat cell indices row * W + col, fractions in `dtype`,
+    zeros left out), grouped by feature in order, each feature's cells in
+    increasing order; and per feature (row0, col0, S) of its window (S =
+    -1 for a feature outside the raster)."""
+    H, W = shape
+    dtype = np.dtype(dtype)
+    info = np.full((nfeat, 3), -1, np.int64)
+    empty = np.zeros(0, np.int64), np.zeros(0, np.int64), np.zeros(0, dtype), info
+    if not len(px):
+        return empty
+    fpt, fring, inside, r0, c0, hw, ww, local, s_own, s_box = _windows(px, ring_sizes, part_rings, feature,
+                                                                         nfeat, shape, method)
     rs = ring_sizes.tolist()
     sizes32 = np.ascontiguousarray(ring_sizes, np.uint32)
     covs, ids = [], []
@@ -298,6 +309,18 @@ def feature_fractions(px, ring_sizes, part_rings, feature, nfeat, shape, rule, p
         order = np.argsort(f, kind="stable")
         f, cells, cov = f[order], cells[order], cov[order]
     return f, cells, cov, info
+
+
+def fractions(px, ring_sizes, part_rings, feature, nfeat, shape, rule, progress=None, *, method="area",
+              dtype=np.float64):
+    """feature_fractions' (feature ids, cells, fractions), float64 "area"
+    through zonal_stats' one C call for many windows (_zonal._all_fractions:
+    the same bits, tested so), the rest through feature_fractions."""
+    if method == "area" and np.dtype(dtype) == np.float64:
+        from ._zonal import _all_fractions
+        return _all_fractions(px, ring_sizes, part_rings, feature, nfeat, shape, rule, progress)
+    return feature_fractions(px, ring_sizes, part_rings, feature, nfeat, shape, rule, progress, method=method,
+                             dtype=dtype)[:3]
 
 
 def _cells64(rings, rule, s, h, w, cell0, row_step, pts=None, sizes=None):
@@ -438,8 +461,8 @@ def coverage_fractions(
     px = gis._pixels(xy, inv, ring_sizes, part_rings, feature)
     bar = gis._Progress(progress, len(geoms))
     try:
-        f, cells, cov, _ = feature_fractions(px, ring_sizes, part_rings, feature, len(geoms), (h, w), rule,
-                                             bar if bar.active else None, method=method, dtype=dt)
+        f, cells, cov = fractions(px, ring_sizes, part_rings, feature, len(geoms), (h, w), rule,
+                                  bar if bar.active else None, method=method, dtype=dt)
     finally:
         bar.close()
     if flat:
@@ -481,10 +504,19 @@ def burn_coverage(target, px, ring_sizes, part_rings, kind, feature, nfeat, valu
     writing anything."""
     dt = target.dtype
     _polygons_only(kind, feature, "shapes")
-    f, cells, cov, _ = feature_fractions(px, ring_sizes, part_rings, feature, nfeat, target.shape, rule,
-                                         progress, method=method, dtype=np.float64 if dt.kind == "f" else dt)
+    f, cells, cov = fractions(px, ring_sizes, part_rings, feature, nfeat, target.shape, rule, progress,
+                              method=method, dtype=np.float64 if dt.kind == "f" else dt)
+    merge_cells(target, f, cells, cov, values, merge)
+
+
+def merge_cells(target, f, cells, cov, values, merge):
+    """Merge the fractions cov of features f at flat cells (row * W + col
+    of target) into target, features in order: float targets take
+    value * fraction, uint8/uint16 the levels; replace, add (levels
+    saturate) or max (a NaN cell takes the fraction)."""
     if not len(f):
         return
+    dt = target.dtype
     if dt.kind == "f":
         contrib = np.asarray(values, np.float64)[f] * cov
         work = np.float64

@@ -141,36 +141,8 @@ def _all_fractions(px, ring_sizes, part_rings, feature, nfeat, shape, rule, prog
     H, W = shape
     if not len(px):
         return feature_fractions(px, ring_sizes, part_rings, feature, nfeat, shape, rule)[:3]
-    ring_start = np.concatenate([[0], np.cumsum(part_rings)])
-    pt_start = np.concatenate([[0], np.cumsum(ring_sizes)])
-    fparts = np.bincount(feature, minlength=nfeat)
-    fpart_start = np.concatenate([[0], np.cumsum(fparts)])
-    fring = ring_start[fpart_start]
-    fpt = pt_start[fring]
-    has = np.flatnonzero(fpt[1:] > fpt[:-1])
-    lo = np.full((nfeat, 2), np.inf)
-    hi = np.full((nfeat, 2), -np.inf)
-    lo[has] = np.minimum.reduceat(px, fpt[:-1][has], axis=0)
-    hi[has] = np.maximum.reduceat(px, fpt[:-1][has], axis=0)
-    with np.errstate(invalid="ignore"):
-        c0 = np.maximum(np.floor(lo[:, 0]), 0)
-        r0 = np.maximum(np.floor(lo[:, 1]), 0)
-        c1 = np.minimum(np.ceil(hi[:, 0]), W)
-        r1 = np.minimum(np.ceil(hi[:, 1]), H)
-    inside = (c1 > c0) & (r1 > r0)
-    c0, r0, c1, r1 = (np.where(inside, v, 0).astype(np.int64) for v in (c0, r0, c1, r1))
-    hw, ww = r1 - r0, c1 - c0
-    npts = np.diff(fpt)
-    local = px - np.repeat(np.c_[c0, r0].astype(np.float64), npts, axis=0)
-    extent = np.zeros(nfeat)
-    extent[has] = np.maximum.reduceat(np.abs(local).max(axis=1), fpt[:-1][has])
-    s_box = _fr._bits(np.maximum(hw, ww) + 1.0, "area")
-    s_own = _fr._bits(extent, "area")
-    wide = inside & (s_box < 0)
-    if wide.any():  # feature_fractions' message
-        k = int(np.flatnonzero(wide)[0])
-        raise InputError("geometries: feature %d covers a window of %d x %d cells: wider than the "
-                         "coverage path's range" % (k, hw[k], ww[k]))
+    fpt, fring, inside, r0, c0, hw, ww, local, s_own, s_box = _fr._windows(px, ring_sizes, part_rings, feature,
+                                                                             nfeat, shape, "area")
     # rings of 3 points or more (feature_fractions leaves the others out)
     ring_ok = ring_sizes >= 3
     ok_start = np.concatenate([[0], np.cumsum(ring_ok)])

@@ -182,46 +182,16 @@ def _merge_coverage(target, origin, full, parts, merge, rule, method):
 
     dt = target.dtype
     n = len(parts)
-    f, cells, cov, _ = _fractions.feature_fractions(parts.px, parts.ring_sizes, parts.part_rings, np.arange(n),
-                                                    n, full, rule, None, method=method,
-                                                    dtype=np.float64 if dt.kind == "f" else dt)
+    f, cells, cov = _fractions.fractions(parts.px, parts.ring_sizes, parts.part_rings, np.arange(n), n, full,
+                                         rule, None, method=method, dtype=np.float64 if dt.kind == "f" else dt)
     h, w = target.shape
     r0, c0 = origin
     rr, cc = np.divmod(cells, full[1])
     keep = (rr >= r0) & (rr < r0 + h) & (cc >= c0) & (cc < c0 + w)
     if not keep.any():
         return
-    f, cov = f[keep], cov[keep]
-    cells = (rr[keep] - r0) * w + (cc[keep] - c0)
-    if dt.kind == "f":
-        contrib = np.asarray(parts.values, np.float64)[f] * cov
-        work = np.float64
-    else:
-        contrib = cov.astype(np.int64)
-        work = np.int64
-    # the k-th feature covering each cell is its layer k (features in order)
-    order = np.argsort(cells, kind="stable")
-    cs = cells[order]
-    run = np.r_[True, cs[1:] != cs[:-1]]
-    if merge == "replace":
-        last = order[np.r_[run[1:], True]]
-        rr, cc = np.divmod(cells[last], w)
-        target[rr, cc] = contrib[last].astype(dt)
-        return
-    starts = np.flatnonzero(run)
-    rank = np.arange(len(cs)) - np.repeat(starts, np.diff(np.r_[starts, len(cs)]))
-    top = None if dt.kind == "f" else np.iinfo(dt).max
-    for k in range(int(rank.max()) + 1):
-        sel = order[rank == k]
-        rr, cc = np.divmod(cells[sel], w)
-        old = target[rr, cc].astype(work)
-        if merge == "add":
-            new = old + contrib[sel]
-            if top is not None:
-                new = np.minimum(new, top)
-        else:  # max; a NaN cell takes the fraction
-            new = np.fmax(old, contrib[sel])
-        target[rr, cc] = new.astype(dt)
+    _fractions.merge_cells(target, f[keep], (rr[keep] - r0) * w + (cc[keep] - c0), cov[keep], parts.values,
+                           merge)
 
 
 def _block_parts(layer, b):

@@ -1148,8 +1148,8 @@ static void rast__cov_row_groups(rast__cells *c, rast__cedge *e, int32_t *row, i
                                  int32_t *rs, int32_t nrun)
 {
     const int64_t Yj = (int64_t)j * c->p;
-    int32_t *const key = sw->wb; /* (the sweep's room: the sort's keys; the groups below read qlo, as a sweep writes wb) */
-    int32_t k, g, r = 0, wl = 0;
+    int32_t *const key = sw->wb; /* (the sweep's room: after a sweep, the groups read qlo) */
+    int32_t k, g, r = 0, wl = 0, swept = 0; /* once a group is swept, key[] is not */
     for (k = 0; k < nrow; k++) { /* the parts' ranges, their first columns as keys */
         rast__cedge *ed = &e[row[k]];
         rast__fast_range(ed, j, c);
@@ -1178,7 +1178,7 @@ static void rast__cov_row_groups(rast__cells *c, rast__cedge *e, int32_t *row, i
     for (k = 0; k < nrow; k = g) {
         int32_t hi = -1, wr = wl, m, full = 1, s = wl, z;
         for (g = k;; g++) { /* the group: row[k..g), the columns up to hi */
-            if (g < nrow && (g == k || rast__grp_col(c, e[row[g]].qlo) <= hi)) {
+            if (g < nrow && (g == k || (swept ? rast__grp_col(c, e[row[g]].qlo) : key[row[g]]) <= hi)) {
                 const int32_t h = rast__grp_col(c, e[row[g]].qhi - 1);
                 if (h > hi) hi = h;
                 continue;
@@ -1198,9 +1198,7 @@ static void rast__cov_row_groups(rast__cells *c, rast__cedge *e, int32_t *row, i
             if (ed->yt <= Yj && (int64_t)ed->yt + ed->dy > Yj) wr += ed->dir;
             if (ed->yt > Yj || (int64_t)ed->yt + ed->dy < Yj + c->p) full = 0;
         }
-        if (rast__grp_none(e, row + k, m, rule, wl)) {
-            s = 0; /* nothing to add */
-        } else if (s < -1 || s > 1) {
+        if (s < -1 || s > 1) {
             s = 2; /* not fast */
         } else if (full) {
             int32_t ww = wl;
@@ -1238,14 +1236,18 @@ static void rast__cov_row_groups(rast__cells *c, rast__cedge *e, int32_t *row, i
                     if (w[i] != wr) s = 2;
             }
         }
+        if (s == 2 && rast__grp_none(e, row + k, m, rule, wl)) s = 0; /* nothing to add */
         if (s == 2 && full) {
             rast__grp_blocks(c, e, row + k, m, sw, j, rule, wl);
             s = 0; /* done */
+            swept = 1;
         }
-        if (s == 2)
+        if (s == 2) {
             rast__cov_row_area(c, e, row + k, m, sw, j, rule, wl);
-        else if (s != 0)
+            swept = 1;
+        } else if (s != 0) {
             rast__row_exact(c, e, row + k, m, j, s);
+        }
         wl = wr;
     }
 }

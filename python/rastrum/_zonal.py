@@ -126,6 +126,9 @@ _fractions = feature_fractions  # the tests' name
 
 # how many windows one C call takes between progress updates
 _WINDOWS_PER_CALL = 512
+# the largest window (cells) the one C call takes: it fills each window
+# densely, a cost per cell; a larger window is cheaper by runs
+_BATCH_CELLS = 1 << 16
 
 
 def _all_fractions(px, ring_sizes, part_rings, feature, nfeat, shape, rule, progress=None):
@@ -147,7 +150,9 @@ def _all_fractions(px, ring_sizes, part_rings, feature, nfeat, shape, rule, prog
     ring_ok = ring_sizes >= 3
     ok_start = np.concatenate([[0], np.cumsum(ring_ok)])
     ok_rings = ok_start[fring[1:]] - ok_start[fring[:-1]]
-    fast = inside & (s_own >= s_box) & (s_own > _MAX_S32) & (ok_rings > 0)
+    # (a window past _BATCH_CELLS goes to feature_fractions' sparse path,
+    # which pays per run of equal cells, not per cell of the window)
+    fast = inside & (s_own >= s_box) & (s_own > _MAX_S32) & (ok_rings > 0) & (hw * ww <= _BATCH_CELLS)
     parts = [_fast_fractions(np.flatnonzero(fast), local, ring_sizes, ring_ok, ok_start, fring, hw, ww, r0, c0,
                              s_own, W, rule, progress)]
     slow = ~fast & inside

@@ -153,6 +153,11 @@ def _all_fractions(px, ring_sizes, part_rings, feature, nfeat, shape, rule, prog
     # (a window past _BATCH_CELLS goes to feature_fractions' sparse path,
     # which pays per run of equal cells, not per cell of the window)
     fast = inside & (s_own >= s_box) & (s_own > _MAX_S32) & (ok_rings > 0) & (hw * ww <= _BATCH_CELLS)
+    if not fast.any():  # (all through feature_fractions: no renumbering, no merge)
+        out = feature_fractions(px, ring_sizes, part_rings, feature, nfeat, shape, rule, progress)[:3]
+        if progress is not None:
+            progress(nfeat)
+        return out
     parts = [_fast_fractions(np.flatnonzero(fast), local, ring_sizes, ring_ok, ok_start, fring, hw, ww, r0, c0,
                              s_own, W, rule, progress)]
     slow = ~fast & inside

@@ -102,14 +102,23 @@ def test_path_coverage_equals_its_rings_coverage(p, method, rule, bits, tol, dty
             assert got.dtype == want.dtype and np.array_equal(got, want)
 
 
-def test_path_fill_other_formats_and_the_glyph_text():
-    from matplotlib.textpath import TextPath
-
-    p = Path.from_matplotlib(TextPath((0, 0), "ag&S", size=11)).transformed((1, 0, 1, 0, -1, 10))
+def _same_in_every_format(p):
     for fmt, color in (("rgb888", 77), ("gray8", 200), ("rgb565", 140), ("mono1", 1)):
         for aa in ("area", "accumulate"):
             assert np.array_equal(paint(p, "path", aa, "nonzero", 8, None, fmt, color),
                                   paint(p, "rings", aa, "nonzero", 8, None, fmt, color))
+
+
+def test_path_fill_other_formats():
+    # quadratic and cubic curves, a ring inside another, a triangle across both
+    _same_in_every_format(Path.from_svg("M1 10 Q1 1 8 1 T15 10 Z M4 9 C4 4 12 4 12 9 Z M2 2 L6 2 L4 6 Z"))
+
+
+def test_path_fill_glyph_text():
+    # matplotlib is an optional input (Path.from_matplotlib), not a test extra
+    textpath = pytest.importorskip("matplotlib.textpath")
+    _same_in_every_format(Path.from_matplotlib(textpath.TextPath((0, 0), "ag&S", size=11))
+                          .transformed((1, 0, 1, 0, -1, 10)))
 
 
 def test_path_arrays_follow_every_edit():

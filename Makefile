@@ -185,6 +185,8 @@ bench: | $(VENV)
 	$(PYTHON) bench/bench_shade.py
 	$(PYTHON) bench/bench_seedfill.py
 	$(PYTHON) bench/bench_threads.py --quick
+	$(PYTHON) bench/bench_scale.py --sizes 512 --json bench/scale.json
+	$(PYTHON) bench/scale_report.py bench/scale.json --plot docs/scale_frontier.png
 
 # ---- figures -------------------------------------------------------------------
 # make figures: the pictures of README.md and docs/ drawn again into docs/

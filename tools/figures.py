@@ -22,8 +22,12 @@ Where each comes from:
 - timing tables and the frontier plot (NOT drift-checked: timings vary
   from run to run and machine to machine; each page says which run made
   them): docs/benchmarks.md (bench/bench.py, bench_realdata.py, ...),
-  docs/coverage.md and README's trade table and docs/coverage_frontier.png
-  (bench/bench_coverage.py --plot), docs/gis.md (bench/bench_rasterize.py),
+  docs/coverage.md and docs/coverage_frontier.png (bench/bench_coverage.py
+  --plot), README's speed table, docs/benchmarks.md's scene families and
+  docs/scale_frontier.png (bench/bench_scale.py, then bench/scale_report.py
+  --plot), docs/gis.md (bench/bench_rasterize.py, bench/bench_zonal.py;
+  its accuracy picture docs/gis_accuracy.png from bench/gis_accuracy.py,
+  deterministic but minutes of shapely),
   docs/coco.md (bench/bench_coco.py), docs/dask.md (bench/bench_dask.py),
   docs/precision.md (make bench-precision). make bench runs them.
 """

@@ -100,7 +100,10 @@ def c_coverage64_exact(rl, shape, origin, rule, s, fmt=lib.RAST_COVERAGE_FIX62):
     return _c_ints(ints, shape, origin, rule, s, fmt)
 
 
-def _c_ints(ints, shape, origin, rule, s, fmt):
+def c_poly64(ints, shape, rule, s, fmt):
+    """The arguments rast_polygon_coverage64 takes for integer rings on the
+    2^-s grid and an output of `shape`: (poly, opts, scratch, need, dtype,
+    keep), keep holding the buffers poly points into."""
     h, w = shape
     flat = np.array([v for r in ints for p in r for v in p], dtype=np.int64)
     sizes = ffi.new("uint32_t[]", [len(r) for r in ints])
@@ -110,13 +113,19 @@ def _c_ints(ints, shape, origin, rule, s, fmt):
     opts = ffi.new("rast_coverage_opts *")
     opts.method, opts.subpixel_bits = lib.RAST_AA_AREA, s
     opts.rule = lib.RAST_RULE_EVENODD if rule == "evenodd" else lib.RAST_RULE_NONZERO
-    clip = ffi.new("rast_rect *", {"x0": origin[0], "y0": origin[1],
-                                   "x1": origin[0] + w, "y1": origin[1] + h})
     need = ffi.new("size_t *")
     assert lib.rast_coverage64_scratch_size(opts, len(flat) // 2, w, h, need) == lib.RAST_OK
     scratch = np.empty(need[0] // 16 + 1, dtype=np.complex128)
     dt = {lib.RAST_COVERAGE_FIX62: np.uint64, lib.RAST_COVERAGE_U8: np.uint8,
           lib.RAST_COVERAGE_U16: np.uint16}[fmt]
+    return poly, opts, scratch, need, dt, (flat, sizes, pbuf)
+
+
+def _c_ints(ints, shape, origin, rule, s, fmt):
+    h, w = shape
+    poly, opts, scratch, need, dt, _keep = c_poly64(ints, shape, rule, s, fmt)
+    clip = ffi.new("rast_rect *", {"x0": origin[0], "y0": origin[1],
+                                   "x1": origin[0] + w, "y1": origin[1] + h})
     out = np.full(shape, 77, dtype=dt)
     r = lib.rast_polygon_coverage64(poly, opts, clip, fmt, ffi.from_buffer(out), w * out.itemsize,
                                     ffi.from_buffer(scratch), need[0])

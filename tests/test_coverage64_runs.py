@@ -21,7 +21,7 @@ import rastrum
 import strategies as S_
 from rastrum._native import ffi, lib
 from test_coverage import _n_m
-from test_coverage64 import check_fix62, check_levels, local_rings
+from test_coverage64 import c_poly64, check_fix62, check_levels, local_rings
 
 GUARD = 0xA5
 
@@ -31,20 +31,8 @@ def c_rows(ints, shape, x0, rule, s, fmt, pad):
     cells each (stride (w + pad) cells), clip columns x0 .. x0 + w, plus a
     guard row after the last."""
     h, w = shape
-    dt = {lib.RAST_COVERAGE_FIX62: np.uint64, lib.RAST_COVERAGE_U8: np.uint8,
-          lib.RAST_COVERAGE_U16: np.uint16}[fmt]
-    flat = np.array([v for r in ints for p in r for v in p], dtype=np.int64)
-    sizes = ffi.new("uint32_t[]", [len(r) for r in ints])
-    poly = ffi.new("rast_polygon64 *")
-    pbuf = ffi.from_buffer("rast_point64[]", flat)
-    poly.points, poly.ring_sizes, poly.nrings = pbuf, sizes, len(ints)
-    opts = ffi.new("rast_coverage_opts *")
-    opts.method, opts.subpixel_bits = lib.RAST_AA_AREA, s
-    opts.rule = lib.RAST_RULE_EVENODD if rule == "evenodd" else lib.RAST_RULE_NONZERO
+    poly, opts, scratch, need, dt, _keep = c_poly64(ints, shape, rule, s, fmt)
     clip = ffi.new("rast_rect *", {"x0": x0, "y0": 0, "x1": x0 + w, "y1": h})
-    need = ffi.new("size_t *")
-    assert lib.rast_coverage64_scratch_size(opts, len(flat) // 2, w, h, need) == lib.RAST_OK
-    scratch = np.empty(need[0] // 16 + 1, dtype=np.complex128)
     buf = np.zeros((h + 1, w + pad), dtype=dt)
     buf.view(np.uint8)[...] = GUARD
     r = lib.rast_polygon_coverage64(poly, opts, clip, fmt, ffi.from_buffer(buf), (w + pad) * buf.itemsize,

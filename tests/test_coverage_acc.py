@@ -139,6 +139,20 @@ def test_a_level_just_past_a_tie_is_exact(method, rule, orient, mirror, wide, ho
         check_area(out, exact, M_OF[dtype], n, m, "%s %s" % (method, rule))
 
 
+def _near_tie(hole):
+    """The quadrilateral and the tiny triangle of
+    test_a_level_just_past_a_tie_is_exact: the triangle inside the
+    quadrilateral turning the other way when `hole` (its pixel's level
+    then the lower one)."""
+    quad = [(2, 0), (2.125, 0), (3.08984375, 3.984375), (2, 3.984375)]
+    d = 2 ** -16
+    tri = [(2.875, 1.5), (2.875, 1.5 + d), (2.875 + d, 1.5)]
+    if hole:
+        tri = [(x - 0.625, y) for x, y in tri]
+    tri = tri if ((_area2(tri) > 0) == (_area2(quad) > 0)) != hole else tri[::-1]
+    return quad, tri
+
+
 @pytest.mark.parametrize("rule, hole", [("nonzero", False), ("evenodd", True)])
 def test_a_level_just_past_a_tie_in_a_row_of_many_parts(rule, hole):
     """The pixel of test_a_level_just_past_a_tie_is_exact, 2^-25 of a level
@@ -147,12 +161,7 @@ def test_a_level_just_past_a_tie_in_a_row_of_many_parts(rule, hole):
     by the most parts that touch any 16 columns (coverage_acc.c,
     rast__acc_count), not by all 266, and the pixel must still send the row
     to the exact sweep (a window of 0 gives 124 / 125 the other way)."""
-    quad = [(2, 0), (2.125, 0), (3.08984375, 3.984375), (2, 3.984375)]
-    d = 2 ** -16
-    tri = [(2.875, 1.5), (2.875, 1.5 + d), (2.875 + d, 1.5)]
-    if hole:
-        tri = [(x - 0.625, y) for x, y in tri]
-    tri = tri if ((_area2(tri) > 0) == (_area2(quad) > 0)) != hole else tri[::-1]
+    quad, tri = _near_tie(hole)
     many = [[(x0 + 0.5, 0.25), (x0 + 1.75, 0.25), (x0 + 3.25, 3.75), (x0 + 2.0, 3.75)]
             for x0 in range(10, 10 + 4 * 130, 4)]
     rings = [quad, tri] + many
@@ -338,12 +347,7 @@ def test_a_level_just_past_a_tie_is_exact_in_a_band(method, rule, wide, hole):
     61 cells long (read 32 at a time with AVX2, or the band's four rows 8
     columns at a time).  Hole: the triangle inside the quadrilateral,
     turning the other way (the level the lower one), as there."""
-    quad = [(2, 0), (2.125, 0), (3.08984375, 3.984375), (2, 3.984375)]
-    d = 2 ** -16
-    tri = [(2.875, 1.5), (2.875, 1.5 + d), (2.875 + d, 1.5)]
-    if hole:
-        tri = [(x - 0.625, y) for x, y in tri]
-    tri = tri if ((_area2(tri) > 0) == (_area2(quad) > 0)) != hole else tri[::-1]
+    quad, tri = _near_tie(hole)
     tall = [[(6.25, 0.5), (8.5, 199.75), (7.125, 1.0)], [(9.5, 2.0), (11.75, 3.0), (10.25, 198.5)]]
     if wide:
         tall.append([(62, 0.25), (62.5, 0.25), (62.5, 199.5), (62, 199.5)])

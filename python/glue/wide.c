@@ -49,6 +49,44 @@ int rastpy_needs_wide(const double *xy, size_t npoints, int s)
     return 0;
 }
 
+/* What the fills below share: the points snapped (rastpy_snap64) into
+ * c->pts, described by c->poly (ring_sizes NULL: one ring of all the
+ * points), and need bytes of scratch, both from malloc; wide_end frees
+ * them.  Returns 0, RASTPY_E_NOMEM, or k + 1 when point k is bad, with
+ * nothing left allocated unless it returns 0. */
+typedef struct {
+    rast_polygon64 poly;
+    uint32_t one_ring;
+    int64_t *pts;
+    void *scratch;
+} wide_call;
+
+static long wide_begin(wide_call *c, const double *xy, uint32_t npoints,
+                       const uint32_t *ring_sizes, uint32_t nrings, int s, size_t need)
+{
+    long bad;
+    c->scratch = NULL;
+    c->pts = (int64_t *)malloc((size_t)npoints * sizeof(rast_point64) + 1);
+    if (!c->pts) return RASTPY_E_NOMEM;
+    bad = rastpy_snap64(xy, npoints, s, c->pts);
+    if (bad < 0) c->scratch = malloc(need + 1);
+    if (bad >= 0 || !c->scratch) {
+        free(c->pts);
+        return bad >= 0 ? bad + 1 : RASTPY_E_NOMEM;
+    }
+    c->one_ring = npoints;
+    c->poly.points = (const rast_point64 *)(const void *)c->pts;
+    c->poly.ring_sizes = ring_sizes ? ring_sizes : &c->one_ring;
+    c->poly.nrings = ring_sizes ? nrings : 1;
+    return 0;
+}
+
+static void wide_end(wide_call *c)
+{
+    free(c->scratch);
+    free(c->pts);
+}
+
 /* Snap, then rast_fill_polygon64 (rast_fill_polygon64_opaque when
  * background is not NULL) with scratch from malloc.  ring_sizes NULL means
  * one ring of all the points.  Returns 0, a negative rast_status (or
@@ -58,35 +96,19 @@ long rastpy_fill_polygon64(const rast_target *target, const double *xy, uint32_t
                            const rast_fill_opts *opts, const void *pixel,
                            const void *background)
 {
-    rast_polygon64 poly;
+    wide_call c;
     rast_status st;
     size_t need;
-    int64_t *pts;
-    void *scratch;
-    long bad;
+    long r;
     if (!target || !opts) return RAST_E_NULL;
     st = rast_scratch_size64(opts, npoints, target->clip.x1 - target->clip.x0,
                              target->clip.y1 - target->clip.y0, &need);
     if (st != RAST_OK) return st;
-    pts = (int64_t *)malloc((size_t)npoints * sizeof(rast_point64) + 1);
-    if (!pts) return RASTPY_E_NOMEM;
-    bad = rastpy_snap64(xy, npoints, opts->subpixel_bits, pts);
-    if (bad >= 0) {
-        free(pts);
-        return bad + 1;
-    }
-    scratch = malloc(need + 1);
-    if (!scratch) {
-        free(pts);
-        return RASTPY_E_NOMEM;
-    }
-    poly.points = (const rast_point64 *)(const void *)pts;
-    poly.ring_sizes = ring_sizes ? ring_sizes : &npoints;
-    poly.nrings = ring_sizes ? nrings : 1;
-    st = background ? rast_fill_polygon64_opaque(target, &poly, opts, pixel, background, scratch, need)
-                    : rast_fill_polygon64(target, &poly, opts, pixel, scratch, need);
-    free(scratch);
-    free(pts);
+    r = wide_begin(&c, xy, npoints, ring_sizes, nrings, opts->subpixel_bits, need);
+    if (r) return r;
+    st = background ? rast_fill_polygon64_opaque(target, &c.poly, opts, pixel, background, c.scratch, need)
+                    : rast_fill_polygon64(target, &c.poly, opts, pixel, c.scratch, need);
+    wide_end(&c);
     return st;
 }
 
@@ -112,40 +134,24 @@ long rastpy_polygon_coverage64(void *out, int32_t height, int32_t width, int for
                                uint32_t nrings, const rast_coverage_opts *opts)
 {
     static const int32_t size[3] = {1, 2, 8};
-    rast_polygon64 poly;
+    wide_call c;
     rast_rect clip;
     rast_status st;
     size_t need;
-    int64_t *pts;
-    void *scratch;
-    long bad;
+    long r;
     if (!opts) return RAST_E_NULL;
     if (format < 0 || format > 2) return RAST_E_ARG;
     st = rast_coverage64_scratch_size(opts, npoints, width, height, &need);
     if (st != RAST_OK) return st;
-    pts = (int64_t *)malloc((size_t)npoints * sizeof(rast_point64) + 1);
-    if (!pts) return RASTPY_E_NOMEM;
-    bad = rastpy_snap64(xy, npoints, opts->subpixel_bits, pts);
-    if (bad >= 0) {
-        free(pts);
-        return bad + 1;
-    }
-    scratch = malloc(need + 1);
-    if (!scratch) {
-        free(pts);
-        return RASTPY_E_NOMEM;
-    }
-    poly.points = (const rast_point64 *)(const void *)pts;
-    poly.ring_sizes = ring_sizes ? ring_sizes : &npoints;
-    poly.nrings = ring_sizes ? nrings : 1;
+    r = wide_begin(&c, xy, npoints, ring_sizes, nrings, opts->subpixel_bits, need);
+    if (r) return r;
     clip.x0 = 0;
     clip.y0 = 0;
     clip.x1 = width;
     clip.y1 = height;
-    st = rast_polygon_coverage64(&poly, opts, &clip, (rast_coverage_format)format, out,
-                                 (ptrdiff_t)width * size[format], scratch, need);
-    free(scratch);
-    free(pts);
+    st = rast_polygon_coverage64(&c.poly, opts, &clip, (rast_coverage_format)format, out,
+                                 (ptrdiff_t)width * size[format], c.scratch, need);
+    wide_end(&c);
     return st;
 }
 
@@ -164,14 +170,12 @@ long rastpy_coverage64_cells(const double *xy, uint32_t npoints, const uint32_t 
                              int32_t width, int64_t cell0, int64_t row_step, int32_t band_rows,
                              int64_t *cells, double *cov, size_t *count)
 {
-    rast_polygon64 poly;
+    wide_call c;
     rast_rect clip;
     rast_status st = RAST_OK;
     size_t need, n = 0, band;
-    int64_t *pts;
     uint64_t *buf;
-    void *scratch;
-    long bad;
+    long r;
     int32_t y0;
     if (!opts || !count) return RAST_E_NULL;
     *count = 0;
@@ -182,32 +186,21 @@ long rastpy_coverage64_cells(const double *xy, uint32_t npoints, const uint32_t 
     band = band_rows > 0 ? (size_t)band_rows : ((size_t)1 << 18) / (size_t)width;
     if (band < 1) band = 1;
     if (band > (size_t)height) band = (size_t)height;
-    pts = (int64_t *)malloc((size_t)npoints * sizeof(rast_point64) + 1);
-    if (!pts) return RASTPY_E_NOMEM;
-    bad = rastpy_snap64(xy, npoints, opts->subpixel_bits, pts);
-    if (bad >= 0) {
-        free(pts);
-        return bad + 1;
-    }
-    scratch = malloc(need + 1);
+    r = wide_begin(&c, xy, npoints, ring_sizes, nrings, opts->subpixel_bits, need);
+    if (r) return r;
     buf = (uint64_t *)malloc(band * (size_t)width * sizeof(uint64_t) + 1);
-    if (!scratch || !buf) {
-        free(buf);
-        free(scratch);
-        free(pts);
+    if (!buf) {
+        wide_end(&c);
         return RASTPY_E_NOMEM;
     }
-    poly.points = (const rast_point64 *)(const void *)pts;
-    poly.ring_sizes = ring_sizes ? ring_sizes : &npoints;
-    poly.nrings = ring_sizes ? nrings : 1;
     clip.x0 = 0;
     clip.x1 = width;
     for (y0 = 0; y0 < height; y0 += (int32_t)band) {
         int32_t y1 = height - y0 < (int32_t)band ? height : y0 + (int32_t)band, y, x;
         clip.y0 = y0;
         clip.y1 = y1;
-        st = rast_polygon_coverage64(&poly, opts, &clip, RAST_COVERAGE_FIX62, buf,
-                                     (ptrdiff_t)width * 8, scratch, need);
+        st = rast_polygon_coverage64(&c.poly, opts, &clip, RAST_COVERAGE_FIX62, buf,
+                                     (ptrdiff_t)width * 8, c.scratch, need);
         if (st != RAST_OK) {
             n = 0;
             break;
@@ -235,8 +228,7 @@ long rastpy_coverage64_cells(const double *xy, uint32_t npoints, const uint32_t 
         }
     }
     free(buf);
-    free(scratch);
-    free(pts);
+    wide_end(&c);
     *count = n;
     return st;
 }

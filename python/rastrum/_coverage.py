@@ -19,7 +19,7 @@ from ._core import InputError
 from ._native import ffi, lib
 from ._typing import CoverageMethod, PathRings, Rule, Shape
 from ._triangles import tris_f64
-from ._path import Path as _Path, path_rings
+from ._path import Path as _Path, c_form, path_rings
 
 
 def _methods():
@@ -237,17 +237,12 @@ def _path_coverage(path, shape, quick, tolerance):
     path.flatten(subpixel_bits, tolerance); None when the general path
     must take it (an error there says which)."""
     opts, fmt, c_dtype, d = quick
-    bits = opts.subpixel_bits
-    if bits > lib.RAST_MAX_SUBPIXEL_BITS:
-        return None
-    tol = path._grid_tolerance(tolerance, bits, bits)
-    pts, verbs = path._fixed(bits)
-    if not len(verbs):
+    c = c_form(path, opts.subpixel_bits, tolerance)
+    if c is None or not c[1]:
         return None
     h, w = shape
     raw = _empty(shape, c_dtype)
-    if _lent(lib.rastpy_path_coverage, _from_buffer(raw), h, w, fmt, ffi.from_buffer("uint8_t[]", verbs),
-             len(verbs), ffi.from_buffer("int32_t[]", pts), len(pts), tol, opts):
+    if _lent(lib.rastpy_path_coverage, _from_buffer(raw), h, w, fmt, *c, opts):
         return None
     return raw if fmt != _FIX62 else _finish(raw, d)
 

@@ -605,17 +605,25 @@ def fill_path_aa(target: object, path: Path, pixel: object, opts: object, tolera
     the path's fixed-point points made once per subpixel_bits.  False when
     it did not paint (subpixel_bits above 16, or an error): the caller then
     takes the general way, which says what is wrong."""
-    bits = opts.subpixel_bits  # type: ignore[attr-defined]
-    if bits > lib.RAST_MAX_SUBPIXEL_BITS:
+    c = c_form(path, opts.subpixel_bits, tolerance)  # type: ignore[attr-defined]
+    if c is None:
         return False
-    tol = path._grid_tolerance(tolerance, bits, bits)
-    pts, verbs = path._fixed(bits)
-    if not len(verbs):
+    if not c[1]:  # no verbs: nothing to paint
         return True
     from ._coverage import _lent
-    result = _lent(lib.rastpy_fill_path_aa, target, ffi.from_buffer("uint8_t[]", verbs), len(verbs),
-                   ffi.from_buffer("int32_t[]", pts), len(pts), tol, opts, pixel)
-    return result == 0
+    return _lent(lib.rastpy_fill_path_aa, target, *c, opts, pixel) == 0
+
+
+def c_form(path: Path, bits: int, tolerance: Optional[float]) -> Optional[tuple]:
+    """The arguments python/glue/pathfill.c takes for `path` at
+    subpixel_bits `bits`: (verbs, number of verbs, points, number of
+    coordinates, tolerance on the grid); None above 16 bits, where the
+    general (64-bit) way must take it."""
+    if bits > lib.RAST_MAX_SUBPIXEL_BITS:
+        return None
+    tol = path._grid_tolerance(tolerance, bits, bits)
+    pts, verbs = path._fixed(bits)
+    return ffi.from_buffer("uint8_t[]", verbs), len(verbs), ffi.from_buffer("int32_t[]", pts), len(pts), tol
 
 
 def _flatten_fixed(verbs: np.ndarray, pts: np.ndarray, tol: int) -> List[np.ndarray]:

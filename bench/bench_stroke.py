@@ -12,6 +12,12 @@ in levels and the pixels more than 1 level off (an accumulator counts the
 polyline's self-crossings twice).
 
     python bench/bench_stroke.py [--repeat 5] [--size 512] [--seeds 1 2 3] [--segments 2000]
+                                 [--join round] [--tolerance T]
+
+--join and --tolerance (pixels; default rastrum's, 1/256) change rastrum's
+stroke only (Blend2D keeps round joins at its own tolerance, about 0.2 px):
+"area"'s time follows the outline's vertex count, which round joins at a
+fine tolerance dominate (docs/paths.md, "Strokes").
 """
 
 import argparse
@@ -32,8 +38,11 @@ def polyline(size, n=2000, seed=1):
     return np.clip(pts, 4, size - 4)
 
 
+STYLE = {"join": "round", "tolerance": None}
+
+
 def run_rastrum(pts, size, method="area"):
-    outline = rastrum.stroke(pts, 3, join="round", cap="butt")
+    outline = rastrum.stroke(pts, 3, cap="butt", **STYLE)
     return rastrum.polygon_coverage(outline, (size, size), rule="nonzero", method=method, dtype=np.uint8)
 
 
@@ -76,7 +85,10 @@ def main(argv=None):
     ap.add_argument("--size", type=int, default=512)
     ap.add_argument("--seeds", type=int, nargs="+", default=[1])
     ap.add_argument("--segments", type=int, nargs="+", default=[2000])
+    ap.add_argument("--join", default="round", choices=["round", "miter", "bevel"])
+    ap.add_argument("--tolerance", type=float, default=None)
     a = ap.parse_args(argv)
+    STYLE.update(join=a.join, tolerance=a.tolerance)
     try:
         import blend2d  # noqa: F401
         have_b2d = True
@@ -88,7 +100,7 @@ def main(argv=None):
         for seed in a.seeds:
             pts = polyline(a.size, n, seed)
             res = {m: timed(lambda: run_rastrum(pts, a.size, m), a.repeat) for m in METHODS}
-            t_stroke, outline = timed(lambda: rastrum.stroke(pts, 3, join="round", cap="butt"), a.repeat)
+            t_stroke, outline = timed(lambda: rastrum.stroke(pts, 3, cap="butt", **STYLE), a.repeat)
             ref = res["area"][1]
             line = "n=%d seed=%d: stroke alone %.2f ms (%d vertices, %d rings);" % (
                 n, seed, 1e3 * t_stroke, len(outline.points), int((outline.verbs == 0).sum()))

@@ -1620,12 +1620,17 @@ RAST_API rast_status rast_path_flatten(const rast_path *path, int32_t tolerance,
                                        rast_polygon *polygon);
 
 /* ---- strokes (path/stroke.c) ------------------------------------------------
- * The outline of a path drawn with a width, as rings to fill NON-ZERO: a
- * union of pieces all turning the same way (positive shoelace area): a
- * parallelogram per segment, a join per vertex between two segments, a
- * cap per open end, each a simple polygon star-shaped about a point, so
- * that the non-zero rule of every filler ("area" included) draws exactly
- * their union, where a stroke crosses itself too.  SVG's semantics: a
+ * The outline of a path drawn with a width, as rings to fill NON-ZERO:
+ * one ring per open subpath and per dash (the right side forward, the
+ * end's cap, the left side back, the start's cap), two per closed subpath
+ * (the right side, the left side, opposite senses), one per dot.  Its
+ * winding number is, off a set of measure zero, the sum of the pieces'
+ * (a parallelogram per segment, a join per vertex between two segments, a
+ * cap per open end, each turning counter-clockwise and star-shaped about
+ * a point): >= 1 exactly on their union, so the non-zero rule of every
+ * filler ("area" included) draws exactly the union, where a stroke
+ * crosses itself too (proof in path/stroke.c).  A join's inner side goes
+ * through the vertex, so a ring overlaps itself there.  SVG's semantics: a
  * subpath's curves are flattened at `tolerance` first (rast_path_flatten);
  * zero-length segments are dropped; a subpath of length zero ("M p L p",
  * "M p Z") gives a disc (round cap), a square (square cap, turned as its

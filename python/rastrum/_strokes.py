@@ -2,10 +2,11 @@
 non-zero (docs/paths.md, "Strokes").
 
 The outline is built by the C core's stroker (rast_path_stroke,
-csrc/src/path/stroke.c): a union of pieces all turning the same way (a
-parallelogram per segment, a join per vertex, a cap per open end), so
-that a non-zero fill of it is exactly the union, crossings and overlaps
-included.  Integer only, on a grid of 1/2**b pixel (b <= 16, the finest
+csrc/src/path/stroke.c): one ring per open subpath and per dash (two per
+closed subpath), whose winding number is that of the union of pieces all
+turning the same way (a parallelogram per segment, a join per vertex, a
+cap per open end), so that a non-zero fill of it is exactly the union,
+crossings and overlaps included.  Integer only, on a grid of 1/2**b pixel (b <= 16, the finest
 that holds the stroke's extent): every polygonal vertex within
 sqrt(2)/2 grid step of the ideal one, round joins and caps within the
 tolerance (or 2 grid steps, when coarser) of the true arcs.
@@ -173,8 +174,8 @@ def stroke(geometry: Union[Path, Sequence[Sequence[float]], Sequence[Sequence[Se
     Returns
     -------
     Path
-        Rings, all turning the same way, whose non-zero union is the
-        stroke.  A zero-length subpath gives a dot with round caps, a
+        Rings (one per open subpath or dash, two per closed subpath)
+        whose non-zero region is the stroke.  A zero-length subpath gives a dot with round caps, a
         square with square caps and nothing with butt caps (SVG).
 
     Examples

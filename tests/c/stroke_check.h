@@ -6,7 +6,8 @@
  * (squared, long double; no libm).  With h = width / 2, E the stated
  * error (round parts max(tolerance, 2), vertices sqrt(2)/2, a miter's
  * tip miter_limit + 1, all in units) plus a margin of 1:
- *   - the winding number is never negative (every piece turns one way);
+ *   - the winding number is never negative (the pieces' winding numbers
+ *     summed: path/stroke.c);
  *   - a point it covers is within R of the path: h + E with round joins
  *     and caps, h sqrt(2) + E with square caps or bevels, max(L, sqrt(2))
  *     h + E with miters (the tip's distance h / sin(theta/2) <= L h);
@@ -110,21 +111,23 @@ static int sc_check_point(const sc_path *fp, const rast_point *out, const uint32
     return 1;
 }
 
-/* Every ring turns counter-clockwise in (x, y) or is flat (shoelace >= 0). */
-static int sc_rings_positive(const rast_point *out, const uint32_t *osizes, uint32_t onrings)
+/* The rings' total shoelace area is >= 0: the outline is the pieces'
+ * chain plus cancelling edges (path/stroke.c), so its area is theirs, a
+ * sum of non-negative areas.  (A closed subpath's inner ring turns
+ * clockwise, so single rings may be negative.) */
+static int sc_area_nonneg(const rast_point *out, const uint32_t *osizes, uint32_t onrings)
 {
     uint32_t r, k, base = 0;
+    long double s = 0;
     for (r = 0; r < onrings; r++) {
         uint32_t n = osizes[r];
-        long double s = 0;
         for (k = 0; k < n; k++) {
             rast_point a = out[base + k], b = out[base + (k + 1) % n];
             s += (long double)a.x * b.y - (long double)b.x * a.y;
         }
-        if (s < 0) return 0;
         base += n;
     }
-    return 1;
+    return s >= 0;
 }
 
 #endif

@@ -2,8 +2,8 @@
  * fuzz_stroke.c - rast_path_stroke.  Oracle: a bad style (width,
  * tolerance, join, cap or miter limit out of range, a negative dash, all
  * dashes 0) or a bad path gets its status with nothing written; a good one
- * gives the sizes rast_path_stroke_size gives, every ring turning
- * counter-clockwise (or flat), and rastrum.h's bound checked at sample
+ * gives the sizes rast_path_stroke_size gives, the rings' total area >= 0,
+ * and rastrum.h's bound checked at sample
  * points near the path (tests/c/stroke_check.h: the winding number never
  * negative; covered points within the stated reach of the flattened path;
  * points well inside a segment's band covered; with round joins and caps
@@ -97,7 +97,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         for (k = 0; k < got_nr; k++) sum += rings[k];
         FZ_ASSERT(sum == got_np);
     }
-    FZ_ASSERT(sc_rings_positive(out, rings, got_nr));
+    FZ_ASSERT(sc_area_nonneg(out, rings, got_nr));
     /* the flattened path, as the stroker flattens it */
     FZ_ASSERT(rast_path_flatten_size(&path, st.tolerance, &fnp, &fnr) == RAST_OK);
     if (fnp > FS_MAXOUT) return 0;

@@ -6,20 +6,82 @@
  * Pieces.  Each subpath's flattened polyline (curves at `tolerance`,
  * path/flatten.c, consecutive equal points dropped) gives, with d = b - a
  * a segment's vector and o = N(d) its offset (below): the parallelogram
- * a - o, b - o, b + o, a + o; at a vertex v between d1 and d2, on the
- * outer side, p1 = -+N(d1), p2 = -+N(d2): bevel v, v + s, v + e; miter v,
- * v + s, tip, v + e; round v, v + s, arc vertices, v + e, where (s, e) is
- * (p1, p2) for a counter-clockwise turn (cross(d1, d2) > 0, exact) and
- * (p2, p1) for a clockwise one, so that the sweep s -> e runs
- * counter-clockwise over the outer side; caps: square b - o, b + x - o,
- * b + x + o, b + o (x: half the width beyond the end), round the half
- * disc b - o, arc, b + o.
- * (x, y) sense (positive shoelace area) and is star-shaped about v (or b):
- * its vertices' angles about v strictly increase over less than a turn
- * (arc vertices that would not advance are dropped).  So each piece has
+ * P = a - o, b - o, b + o, a + o; at a vertex v between d1 and d2, on the
+ * outer side, p1 = -+N(d1), p2 = -+N(d2): the join J, bevel v, v + s,
+ * v + e; miter v, v + s, tip, v + e; round v, v + s, arc vertices, v + e,
+ * where (s, e) is (p1, p2) for a counter-clockwise turn (cross(d1, d2) >
+ * 0, exact) and (p2, p1) for a clockwise one, so that the sweep s -> e
+ * runs counter-clockwise over the outer side; caps C: square b - o, b + x
+ * - o, b + x + o, b + o (x: half the width beyond the end), round the half
+ * disc b - o, arc, b + o.  Each piece turns counter-clockwise in (x, y)
+ * (positive shoelace area) and is star-shaped about v (or b): its
+ * vertices' angles about v strictly increase over less than a turn (arc
+ * vertices that would not advance are dropped).  So each piece has
  * winding number 1 inside and 0 outside, the sum over pieces is >= 1
- * exactly on their union, and a non-zero fill draws the union: every
- * filler, crossings once.
+ * exactly on their union and 0 elsewhere.  No J where the turn is
+ * straight on (d1, d2 the same direction), where the rounded offsets cross
+ * (cross(s, e) <= 0) with a bevel, a miter or a turn of less than a
+ * quarter, and at a turn back (d2 opposite to d1) with a bevel or miter; a
+ * round turn back's J is the half disc v - o1, arc, v + o1.
+ *
+ * Rings, not pieces.  The pieces are not emitted: one ring per open
+ * subpath (and per dash) goes along the right side forward, a - o, b - o
+ * for every segment, round the end's cap, back along the left side, b +
+ * o, a + o, and round the start's cap; a closed subpath gives two rings,
+ * the right side forward and the left side backward (opposite senses: the
+ * outer and inner outlines).  At a vertex v, between v -+ o1 and v -+ o2,
+ * the side on J's outer side takes J's points strictly between v + s and
+ * v + e (its arc, counter-clockwise, or its miter's tip), the other side
+ * the pivot v; with no J both sides take the pivot (none where straight
+ * on, o1 = o2).  A cap's points strictly between b - o and b + o are C's.
+ * A subpath of one point is its dot (below), a ring of its own.
+ *
+ * Proof that the non-zero region is the same.  Read rings and pieces as
+ * sums of directed edges (chains); a point's winding number is additive
+ * over chains.  A piece's boundary, P's: (a - o -> b - o) + (b - o -> b +
+ * o) + (b + o -> a + o) + (a + o -> a - o); the sides' edges are the
+ * rings', so subtract them: what is left of the pieces at v is E = (v -
+ * o1 -> v + o1) + (v + o2 -> v - o2) + J, of the ring R at v the two local
+ * paths.  Write Z(p, q) = (p -> v) + (v -> q) + (q -> p): for q = 2v - p
+ * (p, v, q on a line, v the midpoint: offsets are exact negatives, N(-d)
+ * = -N(d)), Z is a flat triangle; its edges cancel pairwise once p -> q
+ * is cut at v, so it adds 0 to every point's winding number off its line
+ * and, edge by edge, to every filler's crossings (a scanline's crossing of
+ * p -> q, half-open in y, is that of p -> v or of v -> q, at the same
+ * abscissa).  A spike (p -> q) + (q -> p) likewise.  Case J on the right
+ * (t > 0, s = -o1, e = -o2): R = (v - o1 -> mid -> v - o2) + (v + o2 -> v
+ * -> v + o1); J = (v -> v - o1 -> mid -> v - o2 -> v); so R - E = (v + o2
+ * -> v) + (v -> v + o1) + (v + o1 -> v - o1) + (v - o2 -> v + o2) + (v -
+ * o1 -> v) + (v -> v - o2) = Z(v - o1, v + o1) + Z(v + o2, v - o2)
+ * rearranged (each Z's three edges are among these six).  Case J on the
+ * left (t < 0): the mirror image, the left side made backward from v + o2
+ * through mid to v + o1 = J's v + s .. v + e.  No J: R = (v - o1 -> v ->
+ * v - o2) + (v + o2 -> v -> v + o1), R - E = Z(v - o1, v + o1) + Z(v +
+ * o2, v - o2) again.  A round turn back (o2 = -o1): R = (v - o1 -> arc ->
+ * v + o1) + (v - o1 -> v -> v + o1), J = (v - o1 -> arc -> v + o1 -> v -
+ * o1), E = 2 (v - o1 -> v + o1) + J, R - E = (v - o1 -> v -> v + o1) - (v
+ * - o1 -> v + o1) = a flat Z.  Straight on: o1 = o2 (N depends on the
+ * direction only: q in the offset below is the same for d and k d), E =
+ * 0, R adds nothing.  Ends: the open ring's cap path b - o -> C's points
+ * -> b + o is C's boundary plus (b + o -> b - o), which cancels P's end
+ * edge; a butt cap is that edge.  A closed subpath's two rings meet every
+ * vertex as above, the closing one at the start included.  Dropped equal
+ * points are zero-length edges.  So, at every point off the flat
+ * triangles' lines, the rings' winding number EQUALS the pieces' sum:
+ * >= 1 exactly on their union, 0 elsewhere, and every filler draws the
+ * same region, crossings, U-turns, tiny segments and dashes included
+ * (tests/c/test_stroke.c checks it against the old pieces,
+ * tests/c/stroke_pieces.h, at the filler's grid).  The rings are not
+ * simple: at an inner join the two sides' offsets overlap near v
+ * (winding 2 there, as P1 and P2 overlapped), and must, because the
+ * union's corner, the offsets' intersection, is not on the grid.  Areas:
+ * an open ring's shoelace area is the pieces' (>= 0); a closed subpath's
+ * inner ring turns clockwise.  Count: the size pass runs the same code.
+ *
+ * Storing.  The left side is made forward but needed backward: it is
+ * stored downwards from the end of the outline (the size pass's count; the
+ * rings after it have not been written yet), then moved after the right
+ * side; an outer arc on the left is reversed in place.  No heap.
  *
  * The offset N(d), proven.  The ideal offset is (-dy, dx) h / L, h =
  * w / 2, L = |d|.  Each coordinate's magnitude is c = w |a| / (2 L) (a =
@@ -73,36 +135,99 @@
 
 #define ST_MAXDASH 65536u
 
-/* ---- the output: counted (pts NULL) or stored -------------------------- */
+/* ---- the output: counted (pts NULL) or stored ---------------------------- */
+typedef struct st_vec {
+    int64_t x, y;
+} st_vec;
+
+/* Two streams of points make a ring: the right side forward ("R", stored
+ * in order at the front) and the left side, made forward too ("L") but
+ * stored downwards from `top` (the size pass's count: room the rings
+ * after this one have not taken yet), so that it lies backward in memory;
+ * st_left_flush() moves it down after the front.  A point equal to the
+ * last one of its stream is dropped (a zero-length edge). */
+#define ST_R 0
+#define ST_L 1
+
 typedef struct st_out {
     rast_point *pts;
     uint32_t *sizes;
-    uint64_t np, nr;
+    uint64_t np, nr; /* points (both streams) and rings so far */
+    uint64_t top;    /* stored: the outline's size (the count's np) */
+    uint64_t nl;     /* left points held at pts[top - nl .. top) */
+    st_vec last[2];
+    int has[2];
     rast_status err;
 } st_out;
 
 static void st_ring_begin(st_out *o)
 {
-    if (o->pts) o->sizes[o->nr] = 0;
+    if (o->pts && o->err == RAST_OK) o->sizes[o->nr] = 0;
     o->nr++;
+    o->has[ST_R] = 0;
 }
 
-static void st_put(st_out *o, int64_t x, int64_t y)
+static void st_emit(st_out *o, int64_t x, int64_t y, int side)
 {
     if (x < -RAST_COORD_MAX || x > RAST_COORD_MAX || y < -RAST_COORD_MAX || y > RAST_COORD_MAX) {
         if (o->err == RAST_OK) o->err = RAST_E_RANGE;
         return;
     }
+    if (o->has[side] && o->last[side].x == x && o->last[side].y == y) return;
+    o->has[side] = 1;
+    o->last[side].x = x;
+    o->last[side].y = y;
     if (o->np >= RAST_MAX_POINTS) {
         if (o->err == RAST_OK) o->err = RAST_E_TOO_MANY;
         return;
     }
     if (o->pts && o->err == RAST_OK) {
-        o->pts[o->np].x = (int32_t)x;
-        o->pts[o->np].y = (int32_t)y;
-        o->sizes[o->nr - 1]++;
+        rast_point *q = side == ST_R ? &o->pts[o->np - o->nl] : &o->pts[o->top - 1 - o->nl];
+        q->x = (int32_t)x;
+        q->y = (int32_t)y;
+        if (side == ST_R) o->sizes[o->nr - 1]++;
     }
     o->np++;
+    if (side == ST_L) o->nl++;
+}
+
+static void st_put(st_out *o, int64_t x, int64_t y)
+{
+    st_emit(o, x, y, ST_R);
+}
+
+static void st_left_begin(st_out *o)
+{
+    o->nl = 0;
+    o->has[ST_L] = 0;
+}
+
+/* The left points made since there were nl0 of them, in memory order
+ * reversed (an arc made counter-clockwise that the left side, made
+ * forward, takes clockwise). */
+static void st_left_reverse(st_out *o, uint64_t nl0)
+{
+    if (o->pts && o->err == RAST_OK) {
+        rast_point *a = o->pts + (o->top - o->nl), *b = o->pts + (o->top - nl0) - 1;
+        for (; a < b; a++, b--) {
+            rast_point t = *a;
+            *a = *b;
+            *b = t;
+        }
+    }
+}
+
+/* The left side (backward in memory) after the front: in the current ring
+ * (open subpaths), or as a ring of its own (closed ones: the second ring). */
+static void st_left_flush(st_out *o, int own_ring)
+{
+    if (own_ring) st_ring_begin(o);
+    if (o->pts && o->err == RAST_OK) {
+        memmove(o->pts + (o->np - o->nl), o->pts + (o->top - o->nl), (size_t)o->nl * sizeof(rast_point));
+        o->sizes[o->nr - 1] += (uint32_t)o->nl;
+    }
+    o->nl = 0;
+    o->has[ST_R] = 0;
 }
 
 /* ---- arithmetic ----------------------------------------------------------- */
@@ -122,10 +247,6 @@ static int64_t st_off_coord(int64_t a, uint64_t l2, int64_t w)
     mag = (st_isqrt_floor((uint64_t)q) + 1) >> 1;
     return a < 0 ? -(int64_t)mag : (int64_t)mag;
 }
-
-typedef struct st_vec {
-    int64_t x, y;
-} st_vec;
 
 /* N(d): the left offset (-dy, dx) w / (2 |d|), rounded per coordinate. */
 static st_vec st_normal(st_vec d, int64_t w)
@@ -164,7 +285,7 @@ typedef struct st_ctx {
     st_out out;
     /* the pen: one open or closed polyline */
     uint32_t n;           /* distinct points so far */
-    st_vec p0, prev, dfirst, dprev, hint;
+    st_vec p0, prev, dfirst, dprev, ofirst, oprev, hint;
     int has_hint;
 } st_ctx;
 
@@ -239,7 +360,7 @@ static uint32_t st_after(const st_ctx *c, st_vec s)
  * not in it; a longer one leaves out at most H's first points (within a
  * rounding's angle of s), stepped over.  The points are those the
  * whole circle's scan took, in the same order. */
-static void st_arc(st_ctx *c, st_vec v, st_vec s, st_vec e)
+static void st_arc(st_ctx *c, st_vec v, st_vec s, st_vec e, int side)
 {
     uint32_t n4 = 4 * c->m, j = st_after(c, s), t;
     st_vec last = s, p = st_circle_point(c, j);
@@ -252,7 +373,7 @@ static void st_arc(st_ctx *c, st_vec v, st_vec s, st_vec e)
     }
     for (t = 0; t < n4 && st_in_sweep(s, p, e); t++) {
         if (st_cross(last, p) > 0) {
-            st_put(&c->out, v.x + p.x, v.y + p.y);
+            st_emit(&c->out, v.x + p.x, v.y + p.y, side);
             last = p;
         }
         j = (j + 1) % n4;
@@ -260,45 +381,29 @@ static void st_arc(st_ctx *c, st_vec v, st_vec s, st_vec e)
     }
 }
 
-static void st_piece4(st_ctx *c, st_vec a, st_vec b, st_vec o)
+static st_vec st_neg(st_vec a)
 {
-    st_ring_begin(&c->out);
-    st_put(&c->out, a.x - o.x, a.y - o.y);
-    st_put(&c->out, b.x - o.x, b.y - o.y);
-    st_put(&c->out, b.x + o.x, b.y + o.y);
-    st_put(&c->out, a.x + o.x, a.y + o.y);
+    a.x = -a.x;
+    a.y = -a.y;
+    return a;
 }
 
-/* The half disc beyond b, the path arriving along d (offset o = N(d)). */
-static void st_half_disc(st_ctx *c, st_vec b, st_vec o)
-{
-    st_vec mo;
-    mo.x = -o.x;
-    mo.y = -o.y;
-    st_ring_begin(&c->out);
-    st_put(&c->out, b.x - o.x, b.y - o.y);
-    st_arc(c, b, mo, o);
-    st_put(&c->out, b.x + o.x, b.y + o.y);
-}
-
-/* A cap at b, the path arriving along d. */
+/* A cap's points strictly between b - o and b + o (the ring's own points
+ * on either side), the path arriving at b along d (o = N(d)). */
 static void st_cap(st_ctx *c, st_vec b, st_vec d)
 {
     st_vec o = st_normal(d, c->w), x;
     if (c->style->cap == RAST_CAP_SQUARE) {
         x.x = o.y;
         x.y = -o.x;
-        st_ring_begin(&c->out);
-        st_put(&c->out, b.x - o.x, b.y - o.y);
         st_put(&c->out, b.x + x.x - o.x, b.y + x.y - o.y);
         st_put(&c->out, b.x + x.x + o.x, b.y + x.y + o.y);
-        st_put(&c->out, b.x + o.x, b.y + o.y);
     } else if (c->style->cap == RAST_CAP_ROUND) {
-        st_half_disc(c, b, o);
+        st_arc(c, b, st_neg(o), o, ST_R); /* the half disc beyond b */
     }
 }
 
-/* A zero-length subpath at p. */
+/* A zero-length subpath at p: a ring of its own. */
 static void st_dot(st_ctx *c, st_vec p)
 {
     if (c->style->cap == RAST_CAP_ROUND) {
@@ -347,53 +452,68 @@ static int st_miter_ok(const st_ctx *c, st_vec d1, st_vec d2)
     return (int64_t)diff.hi >= 0;
 }
 
-/* A join at v between d1 (arriving) and d2 (leaving). */
-static void st_join(st_ctx *c, st_vec v, st_vec d1, st_vec d2)
+/* The pivot v on both sides: a join with no piece J (the file's comment). */
+static void st_pivot(st_ctx *c, st_vec v)
 {
-    int64_t t = st_cross(d1, d2);
-    st_vec o1 = st_normal(d1, c->w), o2 = st_normal(d2, c->w), p1, p2, s, e;
-    int kind = c->style->join;
+    st_emit(&c->out, v.x, v.y, ST_R);
+    st_emit(&c->out, v.x, v.y, ST_L);
+}
+
+/* A join at v between d1 (arriving, offset o1) and d2 (leaving, o2): the
+ * points strictly between v - o1 and v - o2 on the right side and between
+ * v + o1 and v + o2 on the left (made forward).  The outer side takes the
+ * piece J's points strictly between v + s and v + e (arc or miter tip),
+ * the inner side the pivot v. */
+static void st_join(st_ctx *c, st_vec v, st_vec d1, st_vec d2, st_vec o1, st_vec o2)
+{
+    int64_t t = st_cross(d1, d2), dot = d1.x * d2.x + d1.y * d2.y;
+    st_vec p1, p2, s, e;
+    int kind = c->style->join, outer;
     if (t == 0) {
-        if (d1.x * d2.x + d1.y * d2.y > 0) return; /* straight on */
-        if (kind == RAST_JOIN_ROUND) st_half_disc(c, v, o1); /* a turn back: half a disc */
-        return;                                       /* miter, bevel: nothing */
+        if (dot > 0) return; /* straight on: o1 = o2 */
+        if (kind == RAST_JOIN_ROUND) { /* a turn back (o2 = -o1): half a disc */
+            st_arc(c, v, st_neg(o1), o1, ST_R);
+            st_emit(&c->out, v.x, v.y, ST_L);
+        } else {
+            st_pivot(c, v);
+        }
+        return;
     }
-    if (t > 0) { /* turning counter-clockwise: the outer side is -o */
-        p1.x = -o1.x;
-        p1.y = -o1.y;
-        p2.x = -o2.x;
-        p2.y = -o2.y;
+    if (t > 0) { /* turning counter-clockwise: the outer side is -o, the right */
+        p1 = st_neg(o1);
+        p2 = st_neg(o2);
+        s = p1;
+        e = p2;
+        outer = ST_R;
     } else {
         p1 = o1;
         p2 = o2;
-    }
-    if (t > 0) { /* the outer arc runs counter-clockwise from p1 to p2 */
-        s = p1;
-        e = p2;
-    } else {
         s = p2;
         e = p1;
+        outer = ST_L;
     }
     /* Rounded offsets may cross: near a straight line there is then no
      * gap to fill; near a turn back the sweep passes a half turn by a
      * rounding's angle, which a round join still draws star-shaped (its
      * arc points in both half planes), a bevel or miter not at all. */
-    if (st_cross(s, e) <= 0 && (d1.x * d2.x + d1.y * d2.y >= 0 || kind != RAST_JOIN_ROUND)) return;
-    st_ring_begin(&c->out);
-    st_put(&c->out, v.x, v.y);
-    st_put(&c->out, v.x + s.x, v.y + s.y);
+    if (st_cross(s, e) <= 0 && (dot >= 0 || kind != RAST_JOIN_ROUND)) {
+        st_pivot(c, v);
+        return;
+    }
+    st_emit(&c->out, v.x, v.y, outer == ST_R ? ST_L : ST_R);
     if (kind == RAST_JOIN_ROUND) {
-        st_arc(c, v, s, e);
+        uint64_t nl0 = c->out.nl;
+        st_arc(c, v, s, e, outer);
+        if (outer == ST_L) st_left_reverse(&c->out, nl0);
     } else if (kind == RAST_JOIN_MITER && st_miter_ok(c, d1, d2)) {
         /* tip = v + (p1 + p2) H / (H + p1.p2), H = w^2 / 4 */
         int64_t den = c->w * c->w + 4 * (p1.x * p2.x + p1.y * p2.y);
         if (den > 0) {
             int64_t tx = st_round_div128(rast__i128_mul(p1.x + p2.x, c->w * c->w), den);
             int64_t ty = st_round_div128(rast__i128_mul(p1.y + p2.y, c->w * c->w), den);
-            st_put(&c->out, v.x + tx, v.y + ty);
+            st_emit(&c->out, v.x + tx, v.y + ty, outer);
         }
     }
-    st_put(&c->out, v.x + e.x, v.y + e.y);
 }
 
 /* ---- the pen: one polyline, points streamed in -------------------------- */
@@ -402,9 +522,18 @@ static void st_pen_begin(st_ctx *c)
     c->n = 0;
 }
 
+/* The segment a -> b (offset o) on both sides, after the join at a. */
+static void st_segment(st_ctx *c, st_vec a, st_vec b, st_vec o)
+{
+    st_emit(&c->out, a.x - o.x, a.y - o.y, ST_R);
+    st_emit(&c->out, a.x + o.x, a.y + o.y, ST_L);
+    st_emit(&c->out, b.x - o.x, b.y - o.y, ST_R);
+    st_emit(&c->out, b.x + o.x, b.y + o.y, ST_L);
+}
+
 static void st_pen_point(st_ctx *c, st_vec q)
 {
-    st_vec d;
+    st_vec d, o;
     if (c->n == 0) {
         c->p0 = c->prev = q;
         c->n = 1;
@@ -413,12 +542,18 @@ static void st_pen_point(st_ctx *c, st_vec q)
     if (q.x == c->prev.x && q.y == c->prev.y) return;
     d.x = q.x - c->prev.x;
     d.y = q.y - c->prev.y;
-    st_piece4(c, c->prev, q, st_normal(d, c->w));
-    if (c->n == 1)
+    o = st_normal(d, c->w);
+    if (c->n == 1) {
+        st_ring_begin(&c->out);
+        st_left_begin(&c->out);
         c->dfirst = d;
-    else
-        st_join(c, c->prev, c->dprev, d);
+        c->ofirst = o;
+    } else {
+        st_join(c, c->prev, c->dprev, d, c->oprev, o);
+    }
+    st_segment(c, c->prev, q, o);
     c->dprev = d;
+    c->oprev = o;
     c->prev = q;
     c->n++;
 }
@@ -428,22 +563,23 @@ static void st_pen_end(st_ctx *c, int closed)
     if (c->n == 0) return;
     if (c->n == 1) {
         st_dot(c, c->p0);
-    } else if (closed) {
+    } else if (closed) { /* two rings: the right side, the left one */
         st_vec d;
         d.x = c->p0.x - c->prev.x;
         d.y = c->p0.y - c->prev.y;
         if (d.x || d.y) {
-            st_piece4(c, c->prev, c->p0, st_normal(d, c->w));
-            st_join(c, c->prev, c->dprev, d);
+            st_vec o = st_normal(d, c->w);
+            st_join(c, c->prev, c->dprev, d, c->oprev, o);
+            st_segment(c, c->prev, c->p0, o);
             c->dprev = d;
+            c->oprev = o;
         }
-        st_join(c, c->p0, c->dprev, c->dfirst);
-    } else {
-        st_vec back;
-        back.x = -c->dfirst.x;
-        back.y = -c->dfirst.y;
-        st_cap(c, c->p0, back);
+        st_join(c, c->p0, c->dprev, c->dfirst, c->oprev, c->ofirst);
+        st_left_flush(&c->out, 1);
+    } else { /* one ring: right side, end cap, left side back, start cap */
         st_cap(c, c->prev, c->dprev);
+        st_left_flush(&c->out, 0);
+        st_cap(c, c->p0, st_neg(c->dfirst));
     }
     c->n = 0;
 }
@@ -773,6 +909,7 @@ rast_status rast_path_stroke(const rast_path *path, const rast_stroke_style *sty
     if (np > max_points || nr > max_rings) return RAST_E_SCRATCH;
     memset(&o, 0, sizeof o);
     o.pts = points;
+    o.top = np;
     o.sizes = ring_sizes;
     st = st_stroke_run(path, style, &o);
     if (st != RAST_OK) return st;

@@ -304,8 +304,8 @@ static int build_scene(void)
  * for the binary primitives by the bound macros of rastrum.h (the sun, 64
  * edges under the AET, and the star under edgeflag: a bit and a counter
  * per band pixel); for the anti-aliased gauge by the figure
- * rast_scene_scratch_size gives for its largest outline, the track's 580
- * edges ("area" coverage keeps about 200 bytes per edge and 32 KB of row
+ * rast_scene_scratch_size gives for its largest outline, the track's 333
+ * edges ("area" coverage keeps about 370 bytes per edge and 23 KB of row
  * buffers for the display's width, whatever the band's height), which the
  * program prints.  A scene that outgrew it would be refused
  * (RAST_E_SCRATCH) with nothing drawn. */

@@ -14,6 +14,7 @@ import sys
 
 import numpy as np
 import pytest
+
 import rastrum
 
 BENCH = os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), "bench")

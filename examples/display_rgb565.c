@@ -127,7 +127,8 @@ static const uint16_t c_sky = RGB565(30, 40, 90), c_sun = RGB565(250, 200, 40),
  * zero-length subpath with round caps: a disc).  Each arc is cubics of
  * 22.5 degrees (4 vertices of the 64-gon), control points at
  * 4/3 tan(22.5 / 4 degrees) = 4303 / 32767 of the radius along the
- * tangents (within 0.0003 px of the circle at this radius). */
+ * tangents (such a cubic is within 10^-5 px of the circle at this radius;
+ * its points, cut to the 1/16 px grid, move it by less than 1/16 px). */
 #define GAUGE_CX 160
 #define GAUGE_CY 178
 #define GAUGE_R 44

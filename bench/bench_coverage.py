@@ -9,6 +9,15 @@ a memset of the same buffer and to the fastest peer, and the coverage
 error in 1/255 against the reference: the max, the mean, and the number of
 pixels off by more than 1/255.
 
+Then the tolerance row family (bench/path_tolerance.py): a curved scene,
+glyph outlines of a real font (matplotlib's TextPath of DejaVu Sans; an SVG
+path of curves where matplotlib is missing), filled by rastrum's "area" at
+flattening tolerances 1, 1/4, 1/16, 1/64 and 1/256 px, beside the peers
+that fill the curves themselves (Blend2D, skia, cairo), each output's error
+against the exact area of the true curves (the path flattened at 1/4096 px
+on the 1/65536 px grid, about 0.1/255 off them); on the plot, a curve
+through rastrum's five points.
+
 Reference: rastrum's "area" with subpixel_bits=16, as float64 - the exact
 area (tests/test_coverage.py holds "area" to the rational oracle) of the
 vertices snapped to 2^-16 pixel, so within about 2^-16 of the exact area of
@@ -38,6 +47,7 @@ import rastrum
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from timing import median_s  # noqa: E402
+import path_tolerance  # noqa: E402
 
 # ---- scenes -------------------------------------------------------------------
 
@@ -392,6 +402,9 @@ def main():
             print("  %-20s %9.3f %9.1f %9.2f %8.2f %8.4f %9d" % (label, t, t / memset, t / fastest_peer, mx,
                                                                mean, n))
             points.setdefault(label, []).append((t / memset, mx))
+    trade = []
+    if not args.scenes or any(s in "curves tolerance" for s in args.scenes.split(",")):
+        trade = tolerance_family(size, memset, args.reps, points)
     if args.plot:
         import matplotlib
         matplotlib.use("Agg")
@@ -401,6 +414,12 @@ def main():
             xs = [p[0] for p in pts]
             ys = [max(p[1], 0.05) for p in pts]
             ax.scatter(xs, ys, label=label, marker="o" if label.startswith("rastrum") else "x")
+        if trade:
+            ax.plot([p[0] for p in trade], [max(p[1], 0.05) for p in trade], "-", color="black", lw=1,
+                    marker=".", label="rastrum area, tolerance 1 to 1/256 px (glyph curves)")
+            for x, y, t in trade:
+                ax.annotate(path_tolerance.tolerance_label(t).replace(" px", ""), (x, max(y, 0.05)),
+                            fontsize=6, xytext=(3, 3), textcoords="offset points")
         ax.set_xscale("log")
         ax.set_yscale("log")
         ax.axhline(0.5, color="grey", lw=0.5, ls=":")
@@ -411,6 +430,29 @@ def main():
         fig.tight_layout()
         fig.savefig(args.plot, dpi=110)
         print("\nwrote %s" % args.plot)
+
+
+def tolerance_family(size, memset, reps, points):
+    """The tolerance rows (bench/path_tolerance.py) at size x size, printed
+    as the other scenes are (plus the edges rastrum filled); the peers'
+    points join `points`; returns rastrum's [(time / memset, max error,
+    tolerance)] for the plot's curve."""
+    shape = (size, size)
+    label, path = path_tolerance.curved_scene(shape)
+    rows = path_tolerance.tolerance_rows(path, shape, lambda f: median_ms(f, reps))
+    fastest_peer = min((r[2] for r in rows if r[1] is None), default=float("nan"))
+    print("\n%s (nonzero, %d path verbs): tolerance rows, error against the true curves" % (label, len(path)))
+    print("  %-24s %9s %9s %9s %8s %8s %9s %8s" % ("method", "ms", "/memset", "/peer", "max err", "mean",
+                                                  "px > 1", "edges"))
+    trade = []
+    for name, t, ms, mx, mean, n, edges in rows:
+        print("  %-24s %9.3f %9.1f %9.2f %8.2f %8.4f %9d %8s" % (name, ms, ms / memset, ms / fastest_peer, mx,
+                                                               mean, n, "-" if edges is None else edges))
+        if t is None:
+            points.setdefault(name, []).append((ms / memset, mx))
+        else:
+            trade.append((ms / memset, mx, t))
+    return trade
 
 
 if __name__ == "__main__":

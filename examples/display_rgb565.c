@@ -4,9 +4,14 @@
  * display driver as spans, band by band, in one fixed static arena.
  *
  * The "display" is a uint16_t framebuffer behind push_span(y, x0, x1,
- * colour), the one call a display controller driver offers.  The program
- * prints the scratch it used and the bands, checks that the picture equals
- * the same scene drawn in one band of 240 rows, and writes a PPM.
+ * colour), the one call a display controller driver offers, and
+ * push_run(y, x0, x1, colour, levels), which blends a run of coverage
+ * levels into it (an anti-aliased gauge: a stroked arc of cubics with
+ * round caps and a needle, each outline built once by rast_path_stroke in
+ * static memory).  The program prints the scratch it used and the bands,
+ * checks that the picture equals the same scene drawn in one band of 240
+ * rows, and the library's own painting of it into a whole-frame target
+ * (rast_render_bands), and writes a PPM.
  *
  *     make display-example        (builds and runs it)
  *     build/display_rgb565 [out.ppm]
@@ -39,13 +44,42 @@ static void push_span(int32_t y, int32_t x0, int32_t x1, uint16_t colour)
     spans_pushed++;
 }
 
-/* rastrum's span callback: the primitive's pixel is its RGB565 colour. */
-static void on_span(void *user, const rast_prim *prim, int32_t y, int32_t x0, int32_t x1)
+/* One field (0..max) of the source s over the pixel's d at coverage level
+ * c (0..255): floor((s c + d (255 - c) + 127) / 255), the nearest level
+ * to the exact mix, as rastrum blends coverage into RGB565 (rastrum.h,
+ * rast_fill_polygon_aa). */
+static uint32_t mix(uint32_t s, uint32_t d, uint32_t c)
+{
+    return (s * c + d * (255u - c) + 127u) / 255u;
+}
+
+/* The anti-aliased counterpart of push_span: level values[i] (1..255) of
+ * colour over pixel x0 + i, each of R, G and B in its own levels. */
+static void push_run(int32_t y, int32_t x0, int32_t x1, uint16_t colour, const uint8_t *values)
+{
+    int32_t x;
+    for (x = x0; x < x1; x++) {
+        uint32_t d = framebuffer[y][x], c = values[x - x0];
+        framebuffer[y][x] = (uint16_t)(mix(colour >> 11, d >> 11, c) << 11 |
+                                       mix((colour >> 5) & 63u, (d >> 5) & 63u, c) << 5 |
+                                       mix(colour & 31u, d & 31u, c));
+    }
+    spans_pushed++;
+}
+
+/* rastrum's span callback: the primitive's pixel is its RGB565 colour;
+ * values is NULL for a binary primitive's span, the coverage levels of an
+ * anti-aliased one's run. */
+static void on_span(void *user, const rast_prim *prim, int32_t y, int32_t x0, int32_t x1,
+                    const uint8_t *values)
 {
     uint16_t colour;
     (void)user;
     memcpy(&colour, prim->pixel, sizeof colour);
-    push_span(y, x0, x1, colour);
+    if (values)
+        push_run(y, x0, x1, colour, values);
+    else
+        push_span(y, x0, x1, colour);
 }
 
 #define RGB565(r, g, b) (uint16_t)((((r) >> 3) << 11) | (((g) >> 2) << 5) | ((b) >> 3))
@@ -85,12 +119,105 @@ static const uint16_t c_sky = RGB565(30, 40, 90), c_sun = RGB565(250, 200, 40),
                       c_mesh = RGB565(90, 170, 80), c_graph = RGB565(255, 60, 60),
                       c_ray = RGB565(250, 230, 140), c_ring = RGB565(255, 255, 255);
 
-static rast_prim scene[9];
+/* ---- the gauge: anti-aliased strokes ----------------------------------------
+ * Centre (160, 178) px, radius 44 px: the track a 270-degree arc from the
+ * 64-gon's vertex 24 (135 degrees, bottom left) clockwise over the top to
+ * vertex 72 (45 degrees), 10 px wide with butt caps; the value its first
+ * 157.5 degrees with round caps; a needle with round caps and a hub (a
+ * zero-length subpath with round caps: a disc).  Each arc is cubics of
+ * 22.5 degrees (4 vertices of the 64-gon), control points at
+ * 4/3 tan(22.5 / 4 degrees) = 4303 / 32767 of the radius along the
+ * tangents (such a cubic is within 10^-5 px of the circle at this radius;
+ * its points, cut to the 1/16 px grid, move it by less than 1/16 px). */
+#define GAUGE_CX 160
+#define GAUGE_CY 178
+#define GAUGE_R 44
+#define GAUGE_START 24 /* the 64-gon's vertex */
+#define GAUGE_STEPS 12 /* cubics of the track */
+#define VALUE_STEPS 7  /* cubics of the value */
+#define ARC_K 4303
+#define OUTLINE_MAX 1200 /* outline vertices of the four strokes (checked) */
+#define RINGS_MAX 160
+
+static uint8_t track_verbs[1 + GAUGE_STEPS];
+static rast_point track_pts[1 + 3 * GAUGE_STEPS];
+static const uint8_t needle_verbs[2] = {RAST_PATH_MOVE, RAST_PATH_LINE};
+static rast_point needle_pts[2], hub_pts[2];
+static rast_point outline[OUTLINE_MAX];
+static uint32_t outline_rings[RINGS_MAX];
+static const rast_coverage_opts aa_opts = {RAST_AA_AREA, RAST_RULE_NONZERO, S, RAST_SAMPLE_CENTER};
+static const uint16_t c_track = RGB565(70, 70, 80), c_value = RGB565(255, 150, 30),
+                      c_needle = RGB565(255, 255, 255);
+
+/* The point at the 64-gon's vertex a on the circle of radius r (1/2^S
+ * pixel) around the gauge's centre, plus t times the unit tangent (the
+ * direction of increasing a) times ARC_K / 32767 of r. */
+static rast_point gauge_point(int a, int32_t r, int t)
+{
+    rast_point p;
+    int64_t kr = (int64_t)r * ARC_K / 32767 * t;
+    p.x = (GAUGE_CX << S) + (int32_t)(((int64_t)sine64(a + 16) * r - sine64(a) * kr) / 32767);
+    p.y = (GAUGE_CY << S) + (int32_t)(((int64_t)sine64(a) * r + sine64(a + 16) * kr) / 32767);
+    return p;
+}
+
+/* Stroke a path of nv verbs over pts with `style` into the free part of
+ * outline[] and make *prim an anti-aliased polygon of it; 0 on success. */
+static int stroke_prim(rast_prim *prim, const uint8_t *verbs, uint32_t nv, const rast_point *pts,
+                       uint32_t np, const rast_stroke_style *style, const uint16_t *colour)
+{
+    static uint32_t used_pts, used_rings;
+    rast_path path;
+    uint32_t npts, nrings;
+    path.verbs = verbs, path.nverbs = nv, path.points = pts, path.npoints = np;
+    if (rast_path_stroke_size(&path, style, &npts, &nrings) != RAST_OK ||
+        npts > OUTLINE_MAX - used_pts || nrings > RINGS_MAX - used_rings ||
+        rast_path_stroke(&path, style, outline + used_pts, OUTLINE_MAX - used_pts,
+                         outline_rings + used_rings, RINGS_MAX - used_rings,
+                         &prim->polygon) != RAST_OK)
+        return 1;
+    used_pts += npts, used_rings += nrings;
+    prim->kind = RAST_PRIM_POLYGON;
+    prim->aa = &aa_opts;
+    prim->pixel = colour;
+    return 0;
+}
+
+static int build_gauge(rast_prim *prims)
+{
+    /* tolerance 2 units (1/8 px) for the round caps */
+    static const rast_stroke_style track_st = {10 << S, RAST_JOIN_BEVEL, RAST_CAP_BUTT, 4 << 16, 2, NULL, 0, 0};
+    static const rast_stroke_style value_st = {10 << S, RAST_JOIN_BEVEL, RAST_CAP_ROUND, 4 << 16, 2, NULL, 0, 0};
+    static const rast_stroke_style needle_st = {3 << S, RAST_JOIN_ROUND, RAST_CAP_ROUND, 4 << 16, 2, NULL, 0, 0};
+    static const rast_stroke_style hub_st = {10 << S, RAST_JOIN_ROUND, RAST_CAP_ROUND, 4 << 16, 2, NULL, 0, 0};
+    const int32_t r = GAUGE_R << S;
+    int i;
+    track_verbs[0] = RAST_PATH_MOVE;
+    track_pts[0] = gauge_point(GAUGE_START, r, 0);
+    for (i = 0; i < GAUGE_STEPS; i++) {
+        int a = GAUGE_START + 4 * i;
+        track_verbs[1 + i] = RAST_PATH_CUBIC;
+        track_pts[1 + 3 * i] = gauge_point(a, r, 1);
+        track_pts[2 + 3 * i] = gauge_point(a + 4, r, -1);
+        track_pts[3 + 3 * i] = gauge_point(a + 4, r, 0);
+    }
+    needle_pts[0].x = hub_pts[0].x = hub_pts[1].x = GAUGE_CX << S;
+    needle_pts[0].y = hub_pts[0].y = hub_pts[1].y = GAUGE_CY << S;
+    needle_pts[1] = gauge_point(GAUGE_START + 4 * VALUE_STEPS, r - (12 << S), 0);
+    return stroke_prim(&prims[0], track_verbs, 1 + GAUGE_STEPS, track_pts, 1 + 3 * GAUGE_STEPS,
+                       &track_st, &c_track) |
+           stroke_prim(&prims[1], track_verbs, 1 + VALUE_STEPS, track_pts, 1 + 3 * VALUE_STEPS,
+                       &value_st, &c_value) |
+           stroke_prim(&prims[2], needle_verbs, 2, needle_pts, 2, &needle_st, &c_needle) |
+           stroke_prim(&prims[3], needle_verbs, 2, hub_pts, 2, &hub_st, &c_needle);
+}
+
+static rast_prim scene[12];
 static rast_fill_opts aet_opts, star_opts, ray_opts;
 static rast_tri_opts tri_opts;
 static rast_line_opts line_opts;
 
-static void build_scene(void)
+static int build_scene(void)
 {
     int i;
     memset(scene, 0, sizeof scene);
@@ -169,16 +296,25 @@ static void build_scene(void)
     scene[7].kind = RAST_PRIM_POLYLINE;
     scene[7].points = graph, scene[7].count = 20, scene[7].closed = 0;
     scene[7].line = &line_opts, scene[7].pixel = &c_graph;
+    /* 8-11: the gauge's track, value, needle and hub, anti-aliased */
+    return build_gauge(scene + 8);
 }
-#define NPRIMS 8
+#define NPRIMS 12
 
-/* The one work buffer, sized at compile time for a band of BAND_ROWS rows
- * by the bound macros of rastrum.h for the two largest primitives: the sun,
- * 64 edges under the AET, and the star under edgeflag (a bit and a counter
- * per band pixel).  rast_scene_scratch_size gives the exact figure. */
+/* The one work buffer, sized at compile time for a band of BAND_ROWS rows:
+ * for the binary primitives by the bound macros of rastrum.h (the sun, 64
+ * edges under the AET, and the star under edgeflag: a bit and a counter
+ * per band pixel); for the anti-aliased gauge by the figure
+ * rast_scene_scratch_size gives for its largest outline, the track's 333
+ * edges ("area" coverage keeps about 370 bytes per edge and 23 KB of row
+ * buffers for the display's width, whatever the band's height), which the
+ * program prints.  A scene that outgrew it would be refused
+ * (RAST_E_SCRATCH) with nothing drawn. */
 #define SUN_BYTES RAST_AET_SCRATCH_BOUND(64, BAND_ROWS)
 #define STAR_BYTES RAST_EDGEFLAG_SCRATCH_BOUND(5, DISPLAY_W, BAND_ROWS)
-#define ARENA_BYTES (SUN_BYTES > STAR_BYTES ? SUN_BYTES : STAR_BYTES)
+#define GAUGE_BYTES 147496u
+#define MAX2(a, b) ((a) > (b) ? (a) : (b))
+#define ARENA_BYTES MAX2(MAX2(SUN_BYTES, STAR_BYTES), GAUGE_BYTES)
 static uint64_t arena[(ARENA_BYTES + 7) / 8];
 
 /* FNV-1a over the frame's pixel values (each as its low byte, then its
@@ -220,45 +356,62 @@ int main(int argc, char **argv)
     static uint64_t big[1 << 16]; /* 512 KiB: enough for one 240-row band */
     const rast_rect screen = {0, 0, DISPLAY_W, DISPLAY_H};
     rast_band_stats stats;
+    rast_target whole;
     size_t need_band = 0, need_row = 0, need_frame = 0;
     rast_status st;
 
-    build_scene();
+    if (build_scene() != 0) {
+        fprintf(stderr, "the gauge's outlines do not fit their buffers\n");
+        return 1;
+    }
     rast_scene_scratch_size(scene, NPRIMS, BAND_ROWS, DISPLAY_W, &need_band);
     rast_scene_scratch_size(scene, NPRIMS, 1, DISPLAY_W, &need_row);
     rast_scene_scratch_size(scene, NPRIMS, DISPLAY_H, DISPLAY_W, &need_frame);
 
-    st = rast_render_bands_spans(scene, NPRIMS, &screen, BAND_ROWS, on_span, NULL, arena,
-                                 sizeof arena, &stats);
+    st = rast_render_bands_coverage(scene, NPRIMS, &screen, BAND_ROWS, on_span, NULL, arena,
+                                    sizeof arena, &stats);
     if (st != RAST_OK) {
         fprintf(stderr, "render: %s\n", rast_status_str(st));
         return 1;
     }
-    printf("display 320x240 rgb565, %d primitives, bands of %d rows\n", NPRIMS, BAND_ROWS);
+    printf("display 320x240 rgb565, %d primitives (4 anti-aliased), bands of %d rows\n", NPRIMS,
+           BAND_ROWS);
     printf("static arena: %lu bytes; peak scratch used: %lu bytes; bands: %lu; halvings: %lu\n",
            (unsigned long)sizeof arena, (unsigned long)stats.peak_scratch,
            (unsigned long)stats.bands, (unsigned long)stats.splits);
     printf("scene needs: %lu bytes per 1-row band, %lu per %d-row band, %lu for the whole frame\n",
            (unsigned long)need_row, (unsigned long)need_band, BAND_ROWS,
            (unsigned long)need_frame);
-    printf("spans pushed: %lu\n", spans_pushed);
+    printf("spans and runs pushed: %lu\n", spans_pushed);
     printf("frame hash: %08lx\n", (unsigned long)frame_hash());
 
     /* The same scene in one band of the whole screen: the same picture. */
     memcpy(banded, framebuffer, sizeof banded);
     memset(framebuffer, 0, sizeof framebuffer);
-    st = rast_render_bands_spans(scene, NPRIMS, &screen, DISPLAY_H, on_span, NULL, big,
-                                 sizeof big, NULL);
+    st = rast_render_bands_coverage(scene, NPRIMS, &screen, DISPLAY_H, on_span, NULL, big,
+                                    sizeof big, NULL);
     if (st != RAST_OK || memcmp(banded, framebuffer, sizeof banded) != 0) {
         fprintf(stderr, "banded picture differs from the one-band picture\n");
         return 1;
     }
     printf("identical to the one-band render: yes\n");
 
+    /* And rastrum painting the whole frame itself (its own RGB565 blend of
+     * the coverage, rast_render_bands into a target): the same picture. */
+    memset(framebuffer, 0, sizeof framebuffer);
+    if (rast_target_init(&whole, framebuffer, DISPLAY_W, DISPLAY_H, (int32_t)sizeof framebuffer[0],
+                         RAST_FORMAT_RGB565) != RAST_OK ||
+        rast_render_bands(&whole, scene, NPRIMS, DISPLAY_H, big, sizeof big, NULL) != RAST_OK ||
+        memcmp(banded, framebuffer, sizeof banded) != 0) {
+        fprintf(stderr, "banded picture differs from rastrum's whole-frame painting\n");
+        return 1;
+    }
+    printf("identical to rastrum's whole-frame painting: yes\n");
+
     /* An arena too small for a single row: an error, and no span pushed. */
     spans_pushed = 0;
-    st = rast_render_bands_spans(scene, NPRIMS, &screen, BAND_ROWS, on_span, NULL, arena,
-                                 need_row - 8, NULL);
+    st = rast_render_bands_coverage(scene, NPRIMS, &screen, BAND_ROWS, on_span, NULL, arena,
+                                    need_row - 8, NULL);
     if (st != RAST_E_SCRATCH || spans_pushed != 0) {
         fprintf(stderr, "a too small arena drew something\n");
         return 1;
@@ -267,6 +420,7 @@ int main(int argc, char **argv)
            rast_status_str(st));
 
 #ifndef DISPLAY_NO_FILES /* a microcontroller has no files */
+    memcpy(framebuffer, banded, sizeof banded);
     if (write_ppm(argc > 1 ? argv[1] : "display_rgb565.ppm")) {
         fprintf(stderr, "cannot write the PPM\n");
         return 1;

@@ -14,6 +14,8 @@ Where each comes from:
                                       to out/ with the others)
     docs/coco_rules.png               tools/coco_picture.py
     docs/opacity.png                  tools/opacity_picture.py
+    docs/display_gauge.png            examples/display_rgb565.c's PPM
+                                      (make display-example), enlarged
 - firmware size tables (deterministic for a given arm-none-eabi-gcc:
   checked against what make firmware-check prints):
     README.md "What typical applications link", docs/c.md's table of the
@@ -90,12 +92,29 @@ def render(out):
         stdout=subprocess.DEVNULL)
     run([sys.executable, os.path.join(ROOT, "tools", "opacity_picture.py"), os.path.join(out, "opacity.png")],
         stdout=subprocess.DEVNULL)
+    display_gauge(os.path.join(out, "display_gauge.png"))
     # docs/paths.png needs matplotlib (the font) and the peers (Blend2D, cairo)
     # beside rastrum: drawn, and so checked, only where they are installed
     paths = ["paths.png"] if os.path.exists(os.path.join(out, "paths.png")) else []
     if not paths:
         print("figures: docs/paths.png not drawn here (needs matplotlib, blend2d-python, pycairo or cairocffi)")
-    return DEMO_PICTURES + ["coco_rules.png", "opacity.png"] + paths
+    return DEMO_PICTURES + ["coco_rules.png", "opacity.png", "display_gauge.png"] + paths
+
+
+def display_gauge(path):
+    """docs/display_gauge.png: the frame the display example draws band by
+    band (make display-example writes it as a PPM), twice its size, beside
+    its anti-aliased gauge four times its size."""
+    print("figures: make display-example")
+    subprocess.run(["make", "--no-print-directory", "-s", "display-example"], check=True, cwd=ROOT,
+                   stdout=subprocess.DEVNULL)
+    frame = Image.open(os.path.join(ROOT, "build", "display_rgb565.ppm")).convert("RGB")
+    whole = frame.resize((frame.width * 2, frame.height * 2), Image.NEAREST)
+    gauge = frame.crop((108, 126, 212, 230)).resize((416, 416), Image.NEAREST)
+    pic = Image.new("RGB", (whole.width + 16 + gauge.width, whole.height), (255, 255, 255))
+    pic.paste(whole, (0, 0))
+    pic.paste(gauge, (whole.width + 16, (whole.height - gauge.height) // 2))
+    pic.save(path)
 
 
 def pixels(path):

@@ -305,14 +305,14 @@ static int build_scene(void)
  * for the binary primitives by the bound macros of rastrum.h (the sun, 64
  * edges under the AET, and the star under edgeflag: a bit and a counter
  * per band pixel); for the anti-aliased gauge by the figure
- * rast_scene_scratch_size gives for its largest outline, the track's 333
- * edges ("area" coverage keeps about 370 bytes per edge and 23 KB of row
- * buffers for the display's width, whatever the band's height), which the
- * program prints.  A scene that outgrew it would be refused
+ * rast_scene_scratch_size gives for its largest outline, the track's
+ * (one ring: "area" coverage keeps about 370 bytes per edge and 23 KB of
+ * row buffers for the display's width, whatever the band's height), which
+ * the program prints.  A scene that outgrew it would be refused
  * (RAST_E_SCRATCH) with nothing drawn. */
 #define SUN_BYTES RAST_AET_SCRATCH_BOUND(64, BAND_ROWS)
 #define STAR_BYTES RAST_EDGEFLAG_SCRATCH_BOUND(5, DISPLAY_W, BAND_ROWS)
-#define GAUGE_BYTES 147496u
+#define GAUGE_BYTES 112528u
 #define MAX2(a, b) ((a) > (b) ? (a) : (b))
 #define ARENA_BYTES MAX2(MAX2(SUN_BYTES, STAR_BYTES), GAUGE_BYTES)
 static uint64_t arena[(ARENA_BYTES + 7) / 8];

@@ -282,7 +282,7 @@ def main(argv=None, extra_peers=None):
     ap.add_argument("--limit", type=float, default=10.0, help="seconds a call may take (default 10)")
     ap.add_argument("--steps", type=int, default=5, help="doubling steps per series")
     ap.add_argument("--no-series", action="store_true")
-    ap.add_argument("--json", default=None, help="write every measurement here")
+    ap.add_argument("--json", default=None, help="write every measurement here (rewritten after each family)")
     args = ap.parse_args(argv)
     seeds, reps, steps = args.seeds, args.reps, args.steps
     sizes = "512,2048"
@@ -324,6 +324,8 @@ def main(argv=None, extra_peers=None):
             if not per_seed:
                 continue
             record["families"]["%s@%d" % (fam, size)] = per_seed
+            if args.json:  # after every family: a long run (2048 x 2048) keeps what it finished
+                _write(args.json, record)
             rows.append((fam, size, per_seed[0]["rings"], per_seed[0]["edges"],
                          {n: fmt_ratio(w[1], w[2], args.limit) for n, w in worst.items()},
                          {n: (w[1].get("off"), w[1].get("max")) for n, w in worst.items()}))
@@ -352,10 +354,15 @@ def main(argv=None, extra_peers=None):
             record["series"][sname] = ts
             print("| %s | %s |" % (sname, " | ".join("%.2f" % exponent(ts[c]) for c in cols)), flush=True)
     if args.json:
-        with open(args.json, "w") as fh:
-            json.dump(record, fh, indent=1, default=float)
+        _write(args.json, record)
         print("\nwrote %s" % args.json)
     return record
+
+
+def _write(path, record):
+    with open(path + ".tmp", "w") as fh:
+        json.dump(record, fh, indent=1, default=float)
+    os.replace(path + ".tmp", path)
 
 
 if __name__ == "__main__":

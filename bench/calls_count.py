@@ -19,6 +19,7 @@ import tempfile
 import numpy as np
 
 HEXA = np.array([[10.3, 5.2], [20.1, 8.7], [22.4, 18.2], [14.2, 24.9], [6.1, 19.3], [4.4, 11.1]])
+HEXA32 = np.round(HEXA).astype(np.int32)
 
 
 def cases():
@@ -31,8 +32,9 @@ def cases():
     canvas = rastrum.Canvas.wrap(np.zeros((512, 512), np.uint8))
     rings = _rings()
     loop = families.loop(0, 512).rings
-    return {
+    out = {
         "mask6": lambda: rastrum.polygon_mask(HEXA, (32, 32)),
+        "mask6_int32": lambda: rastrum.polygon_mask(HEXA32, (32, 32)),
         "cov6": lambda: rastrum.polygon_coverage(HEXA, (32, 32)),
         "fill_array": lambda: canvas.fill_polygon(HEXA, 255),
         "fill_tuples": lambda: canvas.fill_polygon(tup, 255),
@@ -41,7 +43,26 @@ def cases():
         "loop_area": lambda: [canvas.fill_polygon(r, 255, rule="nonzero", aa="area") for r in loop],
         "rings1409_mask": lambda: rastrum.polygon_mask(rings, (512, 512)),
         "rings1409_points": lambda: _core._points(rings),
+        "rings1409_cov": lambda: rastrum.polygon_coverage(rings, (512, 512)),
     }
+    try:
+        import cv2
+    except ImportError:  # the peers' cases only where OpenCV is installed
+        return out
+    hexa32 = np.round(HEXA - 0.5).astype(np.int32)
+    img = np.zeros((512, 512), np.uint8)
+    rings32 = [np.round(r - 0.5).astype(np.int32) for r in rings]
+
+    def cv2_mask6():
+        m = np.zeros((32, 32), np.uint8)
+        cv2.fillPoly(m, [np.round(HEXA - 0.5).astype(np.int32)], 1)
+        return m
+    out.update({
+        "cv2_mask6": cv2_mask6,  # as bench_calls.py's loop: the float->int32 conversion inside
+        "cv2_fill_int32": lambda: cv2.fillPoly(img, [hexa32], 255),
+        "cv2_rings1409": lambda: cv2.fillPoly(img, rings32, 255),
+    })
+    return out
 
 
 PER = {"loop_binary": 400, "loop_accumulate": 400, "loop_area": 400}

@@ -5,7 +5,7 @@
 
 Reads the measurements ``bench_scale.py --json`` wrote (every seed of every
 family, every method and peer, each output's error against the exact
-result) and prints, per family and size, the WORST seed's time as a ratio
+result) and prints, per family and size (a table per canvas size), the WORST seed's time as a ratio
 to Blend2D's anti-aliased fill for each rastrum method, marked against the
 speed targets the library holds itself to (docs/benchmarks.md):
 
@@ -91,13 +91,21 @@ def worst(seeds: List[dict], method: str, family: str) -> Tuple[str, bool]:
     return text + ("" if ok else " !"), ok
 
 
-def table(record: dict) -> Tuple[str, int, int]:
-    """The Markdown table, the number of cells and the number meeting their target."""
+def sizes(record: dict) -> List[int]:
+    """The canvas sizes the record holds, smallest first."""
+    return sorted({int(key.rsplit("@", 1)[1]) for key in record["families"]})
+
+
+def table(record: dict, size: Optional[int] = None) -> Tuple[str, int, int]:
+    """The Markdown table (of one canvas size, or of all), the number of
+    cells and the number meeting their target."""
     lines = ["| family | size | worst rings / edges | binary | \"accumulate\" | \"ss4\" | \"area\" |",
              "|---|---|---|---|---|---|---|"]
     cells = met = 0
     for key, seeds in record["families"].items():
-        fam, size = key.rsplit("@", 1)
+        fam, size_text = key.rsplit("@", 1)
+        if size is not None and int(size_text) != size:
+            continue
         edges = max(e["edges"] for e in seeds)
         rings = max(e["rings"] for e in seeds)
         row = []
@@ -107,7 +115,7 @@ def table(record: dict) -> Tuple[str, int, int]:
                 cells += 1
                 met += ok
             row.append(text)
-        lines.append("| %s | %s | %d / %d | %s |" % (fam, size, rings, edges, " | ".join(row)))
+        lines.append("| %s | %s | %d / %d | %s |" % (fam, size_text, rings, edges, " | ".join(row)))
     return "\n".join(lines), cells, met
 
 
@@ -177,11 +185,15 @@ def main(argv: Optional[List[str]] = None) -> Dict[str, object]:
     args = ap.parse_args(argv)
     with open(args.json) as fh:
         record = json.load(fh)
-    seeds = min((len(v) for v in record["families"].values()), default=0)
-    text, cells, met = table(record)
-    out = ["Worst of %d seeds per family: time / Blend2D's anti-aliased time "
-           "(`!`: misses its target)\n" % seeds, text, "",
-           "%d of %d cells meet their target." % (met, cells)]
+    out: List[str] = []
+    cells = met = 0
+    for size in sizes(record):  # a table per canvas size (512 and 2048 x 2048: issue 33)
+        seeds = min(len(v) for k, v in record["families"].items() if int(k.rsplit("@", 1)[1]) == size)
+        text, c, m = table(record, size)
+        cells, met = cells + c, met + m
+        out += ["%sWorst of %d seeds per family at %d x %d: time / Blend2D's anti-aliased time "
+                "(`!`: misses its target)\n" % ("\n" if out else "", seeds, size, size), text, "",
+                "%d of %d cells meet their target." % (m, c)]
     g = growth(record)
     if g:
         out += ["", "Growth exponents (time ~ work^e over the doubling series; target <= %.1f):\n" % GROWTH_LIMIT,

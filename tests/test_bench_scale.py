@@ -109,3 +109,26 @@ def test_scale_report_marks_each_target():
     text, _, met = scale_report.table(_record("circle", [ok], wrong=("area",)))
     assert met == 3 and "WRONG" in text
     assert scale_report.exponent([1.0, 2.0, 4.0]) == pytest.approx(1.0)
+
+
+def test_scale_report_a_table_per_size(tmp_path, capsys):
+    # a run at 512 and 2048 (issue 33 asks for both): one table per size,
+    # each family's row in its own size's table, each size's count of cells
+    scale_report = pytest.importorskip("scale_report")
+    ok = dict(blend=1.0, binary=0.5, accumulate=1.0, ss4=1.5, area=1.0)
+    slow = dict(blend=1.0, binary=0.9, accumulate=1.0, ss4=1.5, area=1.0)
+    record = {"families": {}, "series": {}}
+    for fam, size, t in (("circle", 512, ok), ("circle", 2048, slow), ("map", 2048, ok), ("map", 512, ok)):
+        record["families"]["%s@%d" % (fam, size)] = _record(fam, [t])["families"]["%s@512" % fam]
+    assert scale_report.sizes(record) == [512, 2048]
+    text512, cells, met = scale_report.table(record, 512)
+    assert (cells, met) == (8, 8) and "| 2048 |" not in text512 and text512.count("| 512 |") == 2
+    text2048, cells, met = scale_report.table(record, 2048)
+    assert (cells, met) == (8, 7) and "| 512 |" not in text2048 and "0.90 !" in text2048
+    path = tmp_path / "run.json"
+    path.write_text(__import__("json").dumps(record))
+    got = scale_report.main([str(path)])
+    out = capsys.readouterr().out
+    assert got == {"cells": 16, "met": 15}
+    assert out.index("at 512 x 512") < out.index("at 2048 x 2048")
+    assert "8 of 8 cells meet" in out and "7 of 8 cells meet" in out

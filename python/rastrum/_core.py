@@ -613,8 +613,8 @@ def make_target(array, fmt, width=None):
     return target
 
 
-#: Array dtypes that packed_rings takes (numpy's concatenation of them,
-#: then float64, gives the values real_array would give ring by ring).
+#: The array dtypes packed_rings takes (by identity: numpy's float64 and
+#: int32, native order), whose values real_array gives as they are.
 _RING_DTYPES = (np.dtype(np.float64), np.dtype(np.int32))
 
 
@@ -629,18 +629,7 @@ def packed_rings(rings):
     if got is None:
         return None
     raw, sizes = got
-    if raw is None:  # arrays of 2 dimensions: numpy joins them (and needs 2 columns in each)
-        try:
-            pts = np.concatenate(rings)
-        except ValueError:
-            return None
-        if pts.shape[1] != 2:
-            return None
-        # numpy keeps the inputs' layout: Fortran-ordered rings join into a
-        # Fortran-ordered array, which the C call cannot take as it is.
-        pts = np.ascontiguousarray(pts, _F64)
-    else:
-        pts = np.frombuffer(raw, _F64).reshape(-1, 2)
+    pts = np.frombuffer(raw, _F64).reshape(-1, 2)
     if len(pts) > lib.RAST_MAX_POINTS:
         return None
     if sizes is None:

@@ -422,12 +422,7 @@ class Canvas:
             cov = polygon_mask(geometry, shape, rule=rule, algorithm=algorithm, subpixel_bits=subpixel_bits,
                                sample_offset=sample_offset, rounding=rounding, boundary=boundary)
         cov = np.ascontiguousarray(cov, np.uint8) * np.uint8(255 if cov.dtype == np.bool_ else 1)
-        if blend[2] is not None:
-            if cov.size:
-                _linear_blend(self._array, cov, bytes(ffi.buffer(blend[0])), blend[1].opacity, blend[2])
-        elif cov.size:
-            _core._check(lib.rast_blend_coverage(target, ffi.from_buffer(cov), lib.RAST_COVERAGE_U8,
-                                                 cov.shape[1], blend[0], blend[1]))
+        _blend_mask(target, cov, blend)
 
     def composite(self, coverage: npt.ArrayLike, color: Color, *, opacity: Optional[float] = None,
                   premultiplied: bool = False) -> None:
@@ -1479,8 +1474,9 @@ def _blend_args(color, opacity, fmt, entry, gamma=None):
         return None, color
     tables = None
     if gamma is not None:
-        if fmt not in ("gray8", "rgb888"):
-            raise InputError("%s: gamma= blends gray8 and rgb888 canvases, not %s" % (entry, fmt))
+        if fmt not in _BLEND_FORMATS:
+            raise InputError("%s: gamma= blends gray8, rgb888, rgb565 and rgba8888 canvases, not %s"
+                             % (entry, fmt))
         tables = _gamma_tables(gamma, entry)
         if opacity is None:
             opacity = 1.0
@@ -1519,21 +1515,25 @@ _LINEAR_ONE = 1 << 24
 
 @functools.lru_cache(maxsize=16)
 def _gamma_table(gamma):
+    """The rast_gamma tables (docs/opacity.md): round(2**24 * decode(k / n))
+    for n = 255, 63 and 31 (rgb565's fields), decode the sRGB curve or the
+    power `gamma`; a cdata the core reads (rast_blend_coverage_linear)."""
     import math
 
-    if gamma == "srgb":
-        f = [v / 12.92 if v <= 0.04045 else ((v + 0.055) / 1.055) ** 2.4 for v in (k / 255 for k in range(256))]
-    else:
-        f = [(k / 255) ** gamma for k in range(256)]
-    dec = np.array([math.floor(_LINEAR_ONE * v + 0.5) for v in f], np.int64)
-    thresholds = 255 * (dec[:-1] + dec[1:])  # 2 x 255 x the midpoints between levels
-    return dec, thresholds
+    def decode(v):
+        if gamma == "srgb":
+            return v / 12.92 if v <= 0.04045 else ((v + 0.055) / 1.055) ** 2.4
+        return v ** gamma
+
+    g = ffi.new("rast_gamma *")
+    for name, n in (("dec8", 255), ("dec6", 63), ("dec5", 31)):
+        setattr(g, name, [math.floor(_LINEAR_ONE * decode(k / n) + 0.5) for k in range(n + 1)])
+    return g
 
 
 def _gamma_tables(gamma, entry):
-    """gamma "srgb" or a number in 0.3..3: the linear-light table of every
-    level, round(2**24 * decode(level / 255)), and its midpoints
-    (docs/opacity.md)."""
+    """gamma "srgb" or a number in 0.3..3: the linear-light tables of every
+    level, round(2**24 * decode(level / top)) (docs/opacity.md)."""
     if isinstance(gamma, str):
         if gamma != "srgb":
             raise InputError('%s: gamma must be "srgb" or a number in 0.3..3, not %r' % (entry, gamma))
@@ -1545,24 +1545,18 @@ def _gamma_tables(gamma, entry):
     return _gamma_table(gamma)
 
 
-def _linear_blend(array, cov, rgba, level, tables):
-    """The colour mixed in linear light into the gray8 (H, W) or rgb888
-    (H, W, 3) `array` at the alpha levels of the uint8 coverage `cov`:
-    A = round(alpha level cov / 255^2) as the core's; where A > 0, each
-    channel the level whose linear value is nearest to the exact mix
-    (dec[s] A + dec[d] (255 - A)) / 255, ties to the lower level."""
-    dec, thresholds = tables
-    a = (np.int64(rgba[3] * level) * cov.astype(np.int64) + 32512) // 65025
-    on = a > 0
-    if not on.any():
+def _blend_mask(target, cov, blend):
+    """Blend `blend` (from _blend_args) into `target` through the contiguous
+    uint8 coverage `cov` of the target's shape: rast_blend_coverage, or
+    rast_blend_coverage_linear with gamma= (docs/opacity.md)."""
+    if not cov.size:
         return
-    a = a[on]
-    d = array[on].astype(np.int64)
-    s = np.array(bytearray(rgba[:3]) if array.ndim == 3 else bytearray(rgba[:1]), np.int64)
-    if array.ndim == 3:
-        a = a[:, None]
-    x = dec[s] * a + dec[d] * (255 - a)
-    array[on] = np.searchsorted(thresholds, 2 * x, side="left").astype(np.uint8)
+    if blend[2] is not None:
+        _core._check(lib.rast_blend_coverage_linear(target, ffi.from_buffer(cov), lib.RAST_COVERAGE_U8,
+                                                    cov.shape[1], blend[0], blend[1], blend[2]))
+    else:
+        _core._check(lib.rast_blend_coverage(target, ffi.from_buffer(cov), lib.RAST_COVERAGE_U8,
+                                             cov.shape[1], blend[0], blend[1]))
 
 
 # A label value's bytes are copied verbatim by the painters of these formats.

@@ -195,3 +195,171 @@ def test_linear_canvas_every_format(kind):
         want = [linear_pixel(kind, 2.2, rgba, d, level(rgba[3], nearest(Q(0.9) * 255), int(cv), 255))
                 for d, cv in zip(to_channels(kind, flat), cov.reshape(-1))]
         np.testing.assert_array_equal(c.array, from_channels(kind, want).reshape(before.shape))
+
+
+# ---- lines, polylines, seed fills ------------------------------------------------
+
+SHAPE = (7, 9)
+CANVAS_KINDS = ["gray8", "rgb888", "rgb565", "rgba8888"]
+
+
+def colour_for(kind):
+    """(the colour as given, its straight RGBA)."""
+    if kind == "gray8":
+        return (90, 150), (90, 90, 90, 150)
+    return (200, 40, 250, 150), (200, 40, 250, 150)
+
+
+def footprint(draw):
+    """The pixels the opaque call paints: value 1 on a zero gray8 canvas,
+    as 255."""
+    m = rastrum.Canvas(SHAPE, format="gray8")
+    draw(m, 1)
+    return (m.array != 0).astype(np.uint8) * 255
+
+
+LINES = [
+    (lambda c, col, **k: c.line((0.5, 0.5), (8.2, 5.9), col, **k), None),
+    (lambda c, col, **k: c.polyline([(0.5, 6.5), (8.5, 0.5), (8.5, 6.5), (0.5, 0.5)], col, closed=True, **k), None),
+    (lambda c, col, **k: c.line([(1, 1), (7, 5), (2, 5)], fill=col, **k), None),
+]
+WIDE = [([(0.7, 1.2), (8.1, 5.3), (2.2, 6.1)], 2.5, "round", "area"), ([(0.5, 3.5), (8.5, 3.5)], 3, "bevel", "ss4"),
+        ([(1.2, 0.8), (6.6, 6.1)], 1, "bevel", "area")]
+
+
+@pytest.mark.parametrize("kind", CANVAS_KINDS)
+def test_lines_blend(kind):
+    """Binary lines and polylines: their pixels (self-crossing and shared
+    vertices too) blended once each; wide and anti-aliased lines: the
+    stroke's coverage, blended."""
+    rng = np.random.default_rng(34)
+    color, rgba = colour_for(kind)
+    for opacity in (None, 0.4) if kind != "rgba8888" else (0.4,):  # rgba8888 stores a value without opacity
+        lv = 255 if opacity is None else nearest(Q(opacity) * 255)
+        for draw, _ in LINES:
+            c = canvas(kind, rng)
+            before = c.array.copy()
+            draw(c, color, opacity=opacity)
+            cov = footprint(lambda m, v: draw(m, v))
+            np.testing.assert_array_equal(c.array, canvas_expected(kind, before, cov, rgba, lv))
+        for pts, width, join, aa in WIDE:
+            c = canvas(kind, rng)
+            before = c.array.copy()
+            c.line([(x - 0.5, y - 0.5) for x, y in pts], fill=color, width=width, aa=aa,
+                   joint="curve" if join == "round" else None, opacity=opacity)
+            outline = rastrum.stroke(pts, width, join=join, cap="butt")
+            cov = rastrum.polygon_coverage(outline, SHAPE, rule="nonzero", method=aa)
+            np.testing.assert_array_equal(c.array, canvas_expected(kind, before, cov, rgba, lv), err_msg=str(pts))
+
+
+def test_lines_linear_light():
+    rng = np.random.default_rng(3)
+    c = canvas("rgb888", rng)
+    before = c.array.copy()
+    c.polyline([(0.5, 0.5), (8.5, 6.5), (0.5, 6.5)], (255, 255, 255, 140), gamma="srgb")
+    cov = footprint(lambda m, v: m.polyline([(0.5, 0.5), (8.5, 6.5), (0.5, 6.5)], v))
+    for y, x in np.ndindex(*SHAPE):
+        want = linear_pixel("rgb888", "srgb", (255, 255, 255, 140), tuple(int(v) for v in before[y, x]),
+                            level(140, 255, int(cov[y, x]), 255))
+        assert tuple(c.array[y, x]) == want
+
+
+@pytest.mark.parametrize("kind", CANVAS_KINDS)
+def test_lines_opaque_unchanged(kind):
+    """Alpha 255 (or opacity 1): the value's line, bit for bit."""
+    color = {"gray8": 200, "rgba8888": (9, 200, 40, 255)}.get(kind, (9, 200, 40))
+    alpha = {"gray8": (200, 255), "rgba8888": (9, 200, 40, 255)}.get(kind, (9, 200, 40, 255))
+    plain = canvas(kind, np.random.default_rng(1))
+    plain.polyline([(0.5, 0.5), (8.5, 6.5), (0.5, 6.5)], color)
+    other = canvas(kind, np.random.default_rng(1))
+    other.polyline([(0.5, 0.5), (8.5, 6.5), (0.5, 6.5)], alpha, opacity=None if kind == "rgba8888" else 1.0)
+    np.testing.assert_array_equal(other.array, plain.array)
+
+
+def region(arr, seed, inside, connectivity):
+    """The pixels connected to seed through pixels where inside[y, x]: a
+    breadth-first walk."""
+    h, w = inside.shape
+    out = np.zeros((h, w), bool)
+    x, y = seed
+    if not inside[y, x]:
+        return out
+    steps = [(1, 0), (-1, 0), (0, 1), (0, -1)] + ([(1, 1), (1, -1), (-1, 1), (-1, -1)] if connectivity == 8 else [])
+    todo = deque([(x, y)])
+    out[y, x] = True
+    while todo:
+        x, y = todo.popleft()
+        for dx, dy in steps:
+            u, v = x + dx, y + dy
+            if 0 <= u < w and 0 <= v < h and inside[v, u] and not out[v, u]:
+                out[v, u] = True
+                todo.append((u, v))
+    return out
+
+
+def same_as(arr, value):
+    eq = arr == value
+    return eq.all(axis=2) if eq.ndim == 3 else eq
+
+
+@pytest.mark.parametrize("kind", CANVAS_KINDS)
+@pytest.mark.parametrize("connectivity", [4, 8])
+def test_seed_fills_blend(kind, connectivity):
+    """flood_fill: the seed's connected region of its value; boundary_fill:
+    the region connected through pixels not of the boundary; each blended
+    once (a gray8 (L, A), an RGBA colour, opacity)."""
+    rng = np.random.default_rng(connectivity)
+    color, rgba = colour_for(kind)
+    for _ in range(3):
+        c = canvas(kind, rng)
+        two = c.array[0, 0].copy(), c.array[0, 1].copy()
+        edge = two[0] if kind in ("gray8", "rgb565") else tuple(int(v) for v in two[0])
+        if kind == "rgb565":  # the boundary as a colour, its pixel the packed top bits
+            edge = (96, 200, 8)
+            two = (np.uint16((96 >> 3) << 11 | (200 >> 2) << 5 | 8 >> 3), np.uint16(0x1234))
+        pick = rng.integers(0, 2, SHAPE).astype(bool)
+        c.array[pick] = two[0]
+        c.array[~pick] = two[1]
+        before = c.array.copy()
+        seed = (int(rng.integers(0, 9)), int(rng.integers(0, 7)))
+        c.flood_fill(seed, color, connectivity=connectivity, opacity=0.8)
+        cov = region(before, seed, same_as(before, before[seed[1], seed[0]]), connectivity).astype(np.uint8) * 255
+        lv = nearest(Q(0.8) * 255)
+        np.testing.assert_array_equal(c.array, canvas_expected(kind, before, cov, rgba, lv))
+        c.array[...] = before
+        c.boundary_fill(seed, color, edge, connectivity=connectivity, opacity=1.0 if kind == "rgba8888" else None)
+        cov = region(before, seed, ~same_as(before, two[0]), connectivity).astype(np.uint8) * 255
+        np.testing.assert_array_equal(c.array, canvas_expected(kind, before, cov, rgba, 255))
+
+
+@pytest.mark.parametrize("call", [
+    lambda c: c.line((0, 0), (5, 3), (1, 2, 3), opacity=1.5),
+    lambda c: c.line((0, 0), (5, 3), (1, 2, 3, 256)),
+    lambda c: c.line([(0, 0), (5, 3)], fill=(1, 2, 3), width=3, aa="area", opacity="x"),
+    lambda c: c.line([(0, 0), (5, 3)], fill=(1, 2, 3), width=3, gamma="lab"),
+    lambda c: c.polyline([(0, 0), (5, 3)], (1, 2, 3), opacity=-0.5),
+    lambda c: c.polyline([(0, 0), (5, 3)], "#12345", gamma="srgb"),
+    lambda c: c.flood_fill((0, 0), (1, 2, 3), opacity=2),
+    lambda c: c.flood_fill((9, 0), (1, 2, 3), opacity=0.5),
+    lambda c: c.boundary_fill((0, 0), (1, 2, 3, 4), (1, 2), opacity=0.5),
+    lambda c: c.flood_fill((0, 0), (1, 2, 3), gamma=9.0),
+])
+def test_lines_seed_bad_input(call):
+    c = rastrum.Canvas((5, 5), format="rgb888", background=7)
+    before = c.array.copy()
+    with pytest.raises(rastrum.InputError):
+        call(c)
+    np.testing.assert_array_equal(c.array, before)
+
+
+@pytest.mark.parametrize("fmt", ["mono1", "label"])
+def test_lines_seed_refuse_opacity_without_colours(fmt):
+    c = rastrum.Canvas((5, 5), format=fmt) if fmt == "mono1" else rastrum.Canvas.wrap(np.zeros((5, 5), np.int64),
+                                                                                       "label")
+    before = (c.packed if fmt == "mono1" else c.array).copy()
+    for call in (lambda: c.line((0, 0), (4, 4), 1, opacity=0.5), lambda: c.polyline([(0, 0), (4, 4)], 1, gamma=2.2),
+                 lambda: c.flood_fill((0, 0), 1, opacity=0.5), lambda: c.line([(0, 0), (4, 4)], fill=1, width=2,
+                                                                              opacity=0.5)):
+        with pytest.raises(rastrum.InputError):
+            call()
+    np.testing.assert_array_equal(c.packed if fmt == "mono1" else c.array, before)

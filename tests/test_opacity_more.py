@@ -363,3 +363,21 @@ def test_lines_seed_refuse_opacity_without_colours(fmt):
         with pytest.raises(rastrum.InputError):
             call()
     np.testing.assert_array_equal(c.packed if fmt == "mono1" else c.array, before)
+
+
+def test_linear_core_ties_go_down():
+    """A table of the caller's (any strictly increasing one is taken) with
+    exact ties between two levels: the lower level wins (the sRGB and power
+    tables almost never tie)."""
+    dec = tuple(16 * k * (k + 1) for k in range(256))
+    g = ffi.new("rast_gamma *")
+    g.dec8, g.dec6, g.dec5 = dec, dec[:64], dec[:32]
+    mids = {255 * (dec[k] + dec[k + 1]) for k in range(255)}
+    cases = [(s, d, a) for s in range(0, 256, 5) for d in range(256) for a in (1, 3, 17, 51, 85, 170)
+             if 2 * (dec[s] * a + dec[d] * (255 - a)) in mids]
+    assert len(cases) > 20
+    for s, d, a in cases:
+        status, got = core_linear("gray8", [(d,)], np.array([[a]], np.uint8), (s, s, s, 255), 255, g)
+        want = nearest_level(dec, dec[s] * a + dec[d] * (255 - a), 255)
+        assert 2 * 255 * dec[want] < 2 * (dec[s] * a + dec[d] * (255 - a))  # the lower of the two
+        assert got == [(want,)], (s, d, a)

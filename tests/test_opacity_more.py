@@ -26,7 +26,7 @@ import rastrum
 import strategies as S_
 from rastrum import _core
 from rastrum._native import ffi, lib
-from test_opacity import (FORMAT, canvas, canvas_expected, from_channels, level, nearest, pixel,
+from test_opacity import (FORMAT, canvas, canvas_expected, from_channels, level, nearest,
                           to_channels)
 
 TOPS = {"gray8": [255], "rgb888": [255] * 3, "rgb565": [31, 63, 31], "rgba8888": [255] * 4}
@@ -140,7 +140,7 @@ def test_linear_core_identities():
         g = gamma_cdata(gamma)
         for s in (0, 3, 128, 255):
             for a in (255, 1, 100):
-                status, got = core_linear("gray8", [(s,)] * 3 + [(k,) for k in range(256)],
+                _, got = core_linear("gray8", [(s,)] * 3 + [(k,) for k in range(256)],
                                           np.full((1, 259), a, np.uint8), (s, s, s, 255), 255, g)
                 assert got[:3] == [(s,)] * 3
                 if a == 255:

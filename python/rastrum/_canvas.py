@@ -818,7 +818,8 @@ class Canvas:
                [0, 0, 0, 0, 1, 1]], dtype=uint8)
         """
         blend = None
-        if opacity is not None or gamma is not None or (color is not None and type(color) is not int):
+        if opacity is not None or gamma is not None or (type(color) is not int and not (
+                type(color) is tuple and len(color) != (2 if self._format == "gray8" else 4))):
             blend, color = _blend_args(color, opacity, self._format, "Canvas.line", gamma)
         opts = _lines.line_opts(algorithm, subpixel_bits, sample_offset)
         a = _lines.snap_point(p0, opts.subpixel_bits, "p0")
@@ -1251,8 +1252,12 @@ class Canvas:
             if color is None:
                 raise InputError("line needs a colour")
             if w == 1 and aa is None:
-                self._line(p0, p1, color, algorithm=algorithm, subpixel_bits=subpixel_bits,
-                           sample_offset=sample_offset, opacity=opacity, gamma=gamma)
+                if opacity is None and gamma is None:  # the common call: no more keywords to pass
+                    self._line(p0, p1, color, algorithm=algorithm, subpixel_bits=subpixel_bits,
+                               sample_offset=sample_offset)
+                else:
+                    self._line(p0, p1, color, algorithm=algorithm, subpixel_bits=subpixel_bits,
+                               sample_offset=sample_offset, opacity=opacity, gamma=gamma)
                 return
             pts = np.array([_pil_point(p0, "p0"), _pil_point(p1, "p1")])
         else:

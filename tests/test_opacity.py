@@ -375,15 +375,14 @@ def test_linear_light_rgb888_aa():
             assert c.array[y, x, k] == linear_expected(dec, s, int(before[y, x, k]), a), (y, x, k)
 
 
-@pytest.mark.parametrize("fmt, gamma", [("rgb565", "srgb"), ("rgba8888", 2.2), ("gray8", "linear"),
+@pytest.mark.parametrize("fmt, gamma", [("mono1", "srgb"), ("gray8", "linear"),
                                         ("gray8", 5.0), ("gray8", 0.1), ("gray8", True), ("gray8", float("nan"))])
 def test_linear_light_bad_input(fmt, gamma):
-    c = rastrum.Canvas((4, 4), format=fmt, background=3)
-    before = c.array.copy()
+    c = rastrum.Canvas((4, 4), format=fmt, background=1 if fmt == "mono1" else 3)
+    before = c.packed.copy()
     with pytest.raises(rastrum.InputError, match="gamma"):
-        c.fill_polygon([(0, 0), (4, 0), (4, 4)], 200 if fmt == "gray8" else (1, 2, 3, 4)[:4 if fmt == "rgba8888" else 3],
-                       gamma=gamma)
-    np.testing.assert_array_equal(c.array, before)
+        c.fill_polygon([(0, 0), (4, 0), (4, 4)], 1 if fmt == "mono1" else 200, gamma=gamma)
+    np.testing.assert_array_equal(c.packed, before)
 
 
 def test_docs_examples_run():

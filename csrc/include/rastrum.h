@@ -1080,6 +1080,32 @@ RAST_API rast_status rast_blend_coverage(const rast_target *target, const void *
                                          rast_coverage_format format, ptrdiff_t stride,
                                          const uint8_t *rgba, const rast_blend_opts *opts);
 
+/* Linear light: rast_blend_coverage mixing decoded values instead of
+ * stored levels, through the caller's tables (no float in the core, no
+ * table linked by callers that do not use it).  dec8[k] is the linear
+ * value of level k of 255 (docs/opacity.md: round(2^24 decode(k / 255)),
+ * decode the sRGB curve or a power law), dec6 and dec5 those of RGB565's
+ * 6- and 5-bit fields (k / 63, k / 31); each table strictly increasing and
+ * at most 2^24.  A as above; where A > 0 each colour channel becomes the
+ * level k whose dec[k] is nearest the exact linear mix, the lower level on
+ * a tie: GRAY8, RGB888, RGB565 (s the colour's top bits)
+ * (dec[s] A + dec[d] (255 - A)) / 255; straight RGBA8888, with a the
+ * pixel's alpha, (dec[s] A 255 + dec[d] a (255 - A)) / m, m as above, and
+ * alpha as above (alpha is linear).  s = d keeps d; A = 255 gives s.
+ * Errors: rast_blend_coverage's, RAST_E_NULL (gamma), RAST_E_ARG (a table
+ * not strictly increasing or above 2^24; premultiplied = 1, whose stored
+ * products of alpha and an encoded level have no linear value). */
+typedef struct rast_gamma {
+    uint32_t dec8[256];
+    uint32_t dec6[64];
+    uint32_t dec5[32];
+} rast_gamma;
+
+RAST_API rast_status rast_blend_coverage_linear(const rast_target *target, const void *coverage,
+                                                rast_coverage_format format, ptrdiff_t stride,
+                                                const uint8_t *rgba, const rast_blend_opts *opts,
+                                                const rast_gamma *gamma);
+
 /* rast_fill_polygon's pixels (c = 255) blended with `rgba` as above; each
  * pixel at most once.  Scratch and errors: rast_fill_polygon's, and those
  * of rast_blend_coverage's colour and options. */

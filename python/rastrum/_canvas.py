@@ -58,6 +58,8 @@ def _spill(self: "Canvas", method: Callable[..., Any], kwargs: Dict[str, Any]) -
         raise InputError("a label canvas holds labels, which do not blend: aa=None")
     if kwargs.get("vertex_colors") is not None or kwargs.get("depth") is not None:
         raise InputError("a label canvas has no channels to shade: give one int color")
+    if kwargs.get("opacity") is not None or kwargs.get("gamma") is not None:
+        raise InputError("a label canvas holds labels, which do not blend: no opacity or gamma")
     value = np.frombuffer(self._value_bytes(color), self._array.dtype)[0]
     if not self._array.flags.writeable:
         raise InputError("the canvas's array is read-only; nothing was drawn")
@@ -422,12 +424,7 @@ class Canvas:
             cov = polygon_mask(geometry, shape, rule=rule, algorithm=algorithm, subpixel_bits=subpixel_bits,
                                sample_offset=sample_offset, rounding=rounding, boundary=boundary)
         cov = np.ascontiguousarray(cov, np.uint8) * np.uint8(255 if cov.dtype == np.bool_ else 1)
-        if blend[2] is not None:
-            if cov.size:
-                _linear_blend(self._array, cov, bytes(ffi.buffer(blend[0])), blend[1].opacity, blend[2])
-        elif cov.size:
-            _core._check(lib.rast_blend_coverage(target, ffi.from_buffer(cov), lib.RAST_COVERAGE_U8,
-                                                 cov.shape[1], blend[0], blend[1]))
+        _blend_mask(target, cov, blend)
 
     def composite(self, coverage: npt.ArrayLike, color: Color, *, opacity: Optional[float] = None,
                   premultiplied: bool = False) -> None:
@@ -802,13 +799,15 @@ class Canvas:
 
     @_label_spill
     def _line(self, p0: Point, p1: Point, color: Color, *, algorithm: LineAlgorithm = "bresenham",
-              subpixel_bits: int = 8, sample_offset: float = 0.5) -> None:
+              subpixel_bits: int = 8, sample_offset: float = 0.5, opacity: Optional[float] = None,
+              gamma: Union[None, str, float] = None) -> None:
         """Paint `color` on the pixels of the segment p0 -> p1.
 
         The pixels are :func:`rastrum.line_pixels` (p0, p1) within the
         canvas; the rest of the line is clipped.  Arguments as there.
         Nothing is written when an argument is bad (an InputError says
-        which).  (Canvas.line's binary width-1 case.)
+        which).  (Canvas.line's binary width-1 case.)  `opacity`, `gamma`
+        and a colour's alpha as :meth:`fill_polygon` (docs/opacity.md).
 
         Examples
         --------
@@ -820,21 +819,35 @@ class Canvas:
                [0, 0, 1, 1, 0, 0],
                [0, 0, 0, 0, 1, 1]], dtype=uint8)
         """
+        blend = None
+        if opacity is not None or gamma is not None or (type(color) is not int and not (
+                type(color) is tuple and len(color) != (2 if self._format == "gray8" else 4))):
+            blend, color = _blend_args(color, opacity, self._format, "Canvas.line", gamma)
         opts = _lines.line_opts(algorithm, subpixel_bits, sample_offset)
         a = _lines.snap_point(p0, opts.subpixel_bits, "p0")
         b = _lines.snap_point(p1, opts.subpixel_bits, "p1")
+        if blend is not None:  # the line's pixels as a mask (255), blended once each
+            mask = np.zeros((self.height, self.width), np.uint8)
+            target = self._writable()
+            _core._check(lib.rast_draw_line(_core.make_target(mask, lib.RAST_FORMAT_GRAY8), a, b, opts, b"\xff"))
+            _blend_mask(target, mask, blend)
+            return
         _core._check(lib.rast_draw_line(self._writable(), a, b, opts, self._pixel(color)))
 
     @_label_spill
     def polyline(self, points: npt.ArrayLike, color: Color, *, closed: bool = False,
                  algorithm: LineAlgorithm = "bresenham", subpixel_bits: int = 8,
-                 sample_offset: float = 0.5) -> None:
+                 sample_offset: float = 0.5, opacity: Optional[float] = None,
+                 gamma: Union[None, str, float] = None) -> None:
         """Paint the segments points[k] -> points[k+1]; with ``closed=True``
         also the last point -> the first (an outline).
 
         Each segment is :meth:`line`; a vertex shared by two segments is
         painted by both.  `points` is an (N, 2) array-like, N >= 2 (N = 0
         draws nothing; N = 1 is an InputError); `closed` is a bool.
+        `opacity`, `gamma` and a colour's alpha as :meth:`fill_polygon`:
+        then the union of the segments' pixels is blended, each pixel once
+        (docs/opacity.md).
 
         Examples
         --------
@@ -851,7 +864,19 @@ class Canvas:
         opts = _lines.line_opts(algorithm, subpixel_bits, sample_offset)
         if not isinstance(closed, (bool, np.bool_)):
             raise InputError("closed must be True or False, not %r" % (closed,))
+        blend = None
+        if opacity is not None or gamma is not None or (color is not None and type(color) is not int):
+            blend, color = _blend_args(color, opacity, self._format, "Canvas.polyline", gamma)
         pts = _lines.snap_polyline(points, opts.subpixel_bits, 2)
+        if blend is not None:  # the segments' union as a mask (255), blended once each
+            target = self._writable()
+            if len(pts):
+                mask = np.zeros((self.height, self.width), np.uint8)
+                _core._check(lib.rast_draw_polyline(_core.make_target(mask, lib.RAST_FORMAT_GRAY8),
+                                                    ffi.from_buffer("rast_point[]", pts), len(pts),
+                                                    1 if closed else 0, opts, b"\xff"))
+                _blend_mask(target, mask, blend)
+            return
         pixel = self._pixel(color)
         target = self._writable()
         if len(pts):
@@ -859,7 +884,8 @@ class Canvas:
                                                 1 if closed else 0, opts, pixel))
 
     def flood_fill(self, seed: Tuple[int, int], value: Color, *_legacy: int,
-                   connectivity: Literal[4, 8] = 4) -> None:
+                   connectivity: Literal[4, 8] = 4, opacity: Optional[float] = None,
+                   gamma: Union[None, str, float] = None) -> None:
         """Flood fill: paint `value` on every pixel connected to `seed`
         through pixels of the seed's (original) value.
 
@@ -867,7 +893,10 @@ class Canvas:
         is 4 (through sides) or 8 (also through corners); `value` is a colour as for
         :meth:`fill_polygon`.  A value equal to the seed's paints nothing.
         Nothing is written when an argument is bad (an InputError says
-        which).
+        which).  With `opacity`, `gamma` or a colour's alpha (as
+        :meth:`fill_polygon`) the region (the pixels connected to the seed
+        through the seed's value) is blended, each pixel once
+        (docs/opacity.md).
 
         Examples
         --------
@@ -887,11 +916,17 @@ class Canvas:
                [7, 1, 7]], dtype=uint8)
         """
         connectivity = _connectivity(_legacy, connectivity)
+        if opacity is not None or gamma is not None or (value is not None and type(value) is not int):
+            blend, value = _blend_args(value, opacity, self._format, "Canvas.flood_fill", gamma)
+            if blend is not None:
+                self._seed_blend(seed, blend, None, connectivity)
+                return
         pixel = self._pixel(value)
         _core.seed_fill(self._writable(), seed, pixel, None, connectivity)
 
     def boundary_fill(self, seed: Tuple[int, int], value: Color, boundary: Color, *_legacy: int,
-                      connectivity: Literal[4, 8] = 4) -> None:
+                      connectivity: Literal[4, 8] = 4, opacity: Optional[float] = None,
+                      gamma: Union[None, str, float] = None) -> None:
         """Boundary fill: paint `value` on every pixel connected to `seed`
         through pixels that are neither `boundary` nor `value`.
 
@@ -900,7 +935,10 @@ class Canvas:
         ``boundary == value`` (an outline drawn in the fill colour) the
         region is every pixel connected to the seed through pixels that
         are not the boundary.  A seed of either value paints nothing.
-        Other arguments as :meth:`flood_fill`.
+        Other arguments as :meth:`flood_fill`.  With `opacity`, `gamma` or
+        a colour's alpha the region is every pixel connected to the seed
+        through pixels that are not `boundary` (a seed of the boundary
+        paints nothing), blended once each (docs/opacity.md).
 
         Examples
         --------
@@ -916,9 +954,36 @@ class Canvas:
                [1, 1, 1, 1, 0]], dtype=uint8)
         """
         connectivity = _connectivity(_legacy, connectivity)
+        if opacity is not None or gamma is not None or (value is not None and type(value) is not int):
+            blend, value = _blend_args(value, opacity, self._format, "Canvas.boundary_fill", gamma)
+            if blend is not None:
+                self._seed_blend(seed, blend, self._value_bytes(boundary), connectivity)
+                return
         pixel = self._pixel(value)
         edge = ffi.from_buffer(self._value_bytes(boundary))
         _core.seed_fill(self._writable(), seed, pixel, edge, connectivity)
+
+    def _seed_blend(self, seed, blend, boundary, connectivity):
+        """flood_fill (boundary None) or boundary_fill (`boundary` the
+        boundary's pixel bytes) with a blend: the region found by the core's
+        flood fill on a gray8 mask (1 where the pixel is the seed's value,
+        or is not the boundary), then blended through it (255 inside)."""
+        target = self._writable()
+        x, y = _core.seed_point(seed, target)
+        arr = self._array
+        if boundary is None:
+            pixel = arr[y, x]
+        else:
+            pixel = np.frombuffer(boundary, arr.dtype)
+            pixel = pixel if arr.ndim == 3 else pixel[0]
+        same = arr == pixel
+        if same.ndim == 3:
+            same = same.all(axis=2)
+        mask = (same if boundary is None else ~same).astype(np.uint8)
+        if not mask[y, x]:
+            return  # a seed on the boundary: nothing
+        _core.seed_fill(_core.make_target(mask, lib.RAST_FORMAT_GRAY8), (x, y), b"\x02", None, connectivity)
+        _blend_mask(target, np.where(mask == 2, np.uint8(255), np.uint8(0)), blend)
 
     def to_image(self) -> "PIL.Image.Image":
         """A Pillow image (a copy): mode L, RGB or RGBA; rgb565 as RGB (each
@@ -1139,7 +1204,8 @@ class Canvas:
     def line(self, p0: Any, p1: Any = None, color: Optional[Color] = None, *, fill: Optional[Color] = None,
              width: float = 1, joint: Optional[str] = None, aa: Optional[CoverageMethod] = None,
              tolerance: Optional[float] = None, algorithm: LineAlgorithm = "bresenham", subpixel_bits: int = 8,
-             sample_offset: float = 0.5) -> None:
+             sample_offset: float = 0.5, opacity: Optional[float] = None,
+             gamma: Union[None, str, float] = None) -> None:
         """Paint `color` on the pixels of the segment p0 -> p1; or, as
         Pillow's ``ImageDraw.line(xy, fill, width, joint)``, on the
         polyline `xy`.
@@ -1156,8 +1222,11 @@ class Canvas:
         Pillow's call, points at pixel centres; width 1 without `aa` is
         the binary line through them, else the polyline stroked `width`
         wide, butt ends, joins round with ``joint="curve"`` and bevelled
-        with None (Pillow leaves the bevel's notch open).  Nothing is
-        written when an argument is bad (an InputError says which).
+        with None (Pillow leaves the bevel's notch open).  `opacity`,
+        `gamma` and a colour's alpha as :meth:`fill_polygon`: the line's
+        pixels (or its stroke's coverage) blended, each pixel once
+        (docs/opacity.md).  Nothing is written when an argument is bad (an
+        InputError says which).
 
         Examples
         --------
@@ -1185,8 +1254,12 @@ class Canvas:
             if color is None:
                 raise InputError("line needs a colour")
             if w == 1 and aa is None:
-                self._line(p0, p1, color, algorithm=algorithm, subpixel_bits=subpixel_bits,
-                           sample_offset=sample_offset)
+                if opacity is None and gamma is None:  # the common call: no more keywords to pass
+                    self._line(p0, p1, color, algorithm=algorithm, subpixel_bits=subpixel_bits,
+                               sample_offset=sample_offset)
+                else:
+                    self._line(p0, p1, color, algorithm=algorithm, subpixel_bits=subpixel_bits,
+                               sample_offset=sample_offset, opacity=opacity, gamma=gamma)
                 return
             pts = np.array([_pil_point(p0, "p0"), _pil_point(p1, "p1")])
         else:
@@ -1200,8 +1273,20 @@ class Canvas:
                 if len(pts) == 1:
                     pts = np.concatenate([pts, pts])
                 self.polyline(pts, color, algorithm=algorithm, subpixel_bits=subpixel_bits,
-                              sample_offset=sample_offset)
+                              sample_offset=sample_offset, opacity=opacity, gamma=gamma)
                 return
+        if opacity is not None or gamma is not None:
+            if self._format == "label":
+                raise InputError("a label canvas holds labels, which do not blend: no opacity or gamma")
+            _blend_args(color, opacity, self._format, "Canvas.line", gamma)  # checked before anything is drawn
+            if w != 0 and len(pts):  # the stroke's outline (Canvas.stroke's), filled with the blend
+                from ._strokes import stroke as _stroke
+
+                outline = _stroke(_stroke_geometry(pts), w, join="round" if joint == "curve" else "bevel",
+                                  cap="butt", tolerance=tolerance)
+                self.fill_polygon(outline, color, rule="nonzero", aa=aa, subpixel_bits=subpixel_bits,
+                                  sample_offset=sample_offset, tolerance=tolerance, opacity=opacity, gamma=gamma)
+            return
         if w == 0 or len(pts) == 0:
             self._value_bytes(color)
             return
@@ -1481,8 +1566,9 @@ def _blend_args(color, opacity, fmt, entry, gamma=None):
         return None, color
     tables = None
     if gamma is not None:
-        if fmt not in ("gray8", "rgb888"):
-            raise InputError("%s: gamma= blends gray8 and rgb888 canvases, not %s" % (entry, fmt))
+        if fmt not in _BLEND_FORMATS:
+            raise InputError("%s: gamma= blends gray8, rgb888, rgb565 and rgba8888 canvases, not %s"
+                             % (entry, fmt))
         tables = _gamma_tables(gamma, entry)
         if opacity is None:
             opacity = 1.0
@@ -1521,21 +1607,25 @@ _LINEAR_ONE = 1 << 24
 
 @functools.lru_cache(maxsize=16)
 def _gamma_table(gamma):
+    """The rast_gamma tables (docs/opacity.md): round(2**24 * decode(k / n))
+    for n = 255, 63 and 31 (rgb565's fields), decode the sRGB curve or the
+    power `gamma`; a cdata the core reads (rast_blend_coverage_linear)."""
     import math
 
-    if gamma == "srgb":
-        f = [v / 12.92 if v <= 0.04045 else ((v + 0.055) / 1.055) ** 2.4 for v in (k / 255 for k in range(256))]
-    else:
-        f = [(k / 255) ** gamma for k in range(256)]
-    dec = np.array([math.floor(_LINEAR_ONE * v + 0.5) for v in f], np.int64)
-    thresholds = 255 * (dec[:-1] + dec[1:])  # 2 x 255 x the midpoints between levels
-    return dec, thresholds
+    def decode(v):
+        if gamma == "srgb":
+            return v / 12.92 if v <= 0.04045 else ((v + 0.055) / 1.055) ** 2.4
+        return v ** gamma
+
+    g = ffi.new("rast_gamma *")
+    for name, n in (("dec8", 255), ("dec6", 63), ("dec5", 31)):
+        setattr(g, name, [math.floor(_LINEAR_ONE * decode(k / n) + 0.5) for k in range(n + 1)])
+    return g
 
 
 def _gamma_tables(gamma, entry):
-    """gamma "srgb" or a number in 0.3..3: the linear-light table of every
-    level, round(2**24 * decode(level / 255)), and its midpoints
-    (docs/opacity.md)."""
+    """gamma "srgb" or a number in 0.3..3: the linear-light tables of every
+    level, round(2**24 * decode(level / top)) (docs/opacity.md)."""
     if isinstance(gamma, str):
         if gamma != "srgb":
             raise InputError('%s: gamma must be "srgb" or a number in 0.3..3, not %r' % (entry, gamma))
@@ -1547,24 +1637,18 @@ def _gamma_tables(gamma, entry):
     return _gamma_table(gamma)
 
 
-def _linear_blend(array, cov, rgba, level, tables):
-    """The colour mixed in linear light into the gray8 (H, W) or rgb888
-    (H, W, 3) `array` at the alpha levels of the uint8 coverage `cov`:
-    A = round(alpha level cov / 255^2) as the core's; where A > 0, each
-    channel the level whose linear value is nearest to the exact mix
-    (dec[s] A + dec[d] (255 - A)) / 255, ties to the lower level."""
-    dec, thresholds = tables
-    a = (np.int64(rgba[3] * level) * cov.astype(np.int64) + 32512) // 65025
-    on = a > 0
-    if not on.any():
+def _blend_mask(target, cov, blend):
+    """Blend `blend` (from _blend_args) into `target` through the contiguous
+    uint8 coverage `cov` of the target's shape: rast_blend_coverage, or
+    rast_blend_coverage_linear with gamma= (docs/opacity.md)."""
+    if not cov.size:
         return
-    a = a[on]
-    d = array[on].astype(np.int64)
-    s = np.array(bytearray(rgba[:3]) if array.ndim == 3 else bytearray(rgba[:1]), np.int64)
-    if array.ndim == 3:
-        a = a[:, None]
-    x = dec[s] * a + dec[d] * (255 - a)
-    array[on] = np.searchsorted(thresholds, 2 * x, side="left").astype(np.uint8)
+    if blend[2] is not None:
+        _core._check(lib.rast_blend_coverage_linear(target, ffi.from_buffer(cov), lib.RAST_COVERAGE_U8,
+                                                    cov.shape[1], blend[0], blend[1], blend[2]))
+    else:
+        _core._check(lib.rast_blend_coverage(target, ffi.from_buffer(cov), lib.RAST_COVERAGE_U8,
+                                             cov.shape[1], blend[0], blend[1]))
 
 
 # A label value's bytes are copied verbatim by the painters of these formats.

@@ -18,6 +18,11 @@
  *    colour of the exact mix, (s A 255 + d a (255 - A)) / (255 A + a (255 - A)),
  *    rounded half up.
  * A = 0 leaves the pixel untouched.  Integers only, 32 bits.
+ *
+ * rast_blend_coverage_linear mixes in linear light through the caller's
+ * tables (rast_gamma, docs/opacity.md "Linear light"): the same A; each
+ * colour channel the level whose table value is nearest the exact mix of
+ * the table values, the lower on a tie (rast__encode); 64-bit products.
  */
 #include <string.h>
 
@@ -31,6 +36,7 @@ typedef struct rast__blender {
     unsigned src[4];  /* the colour in the target's channel levels */
     uint32_t ao;      /* alpha * opacity, 0 .. 255^2 */
     unsigned full;    /* A of a full run (c = 255) */
+    const rast_gamma *gamma; /* NULL: stored levels (rast_blend_coverage) */
 } rast__blender;
 
 /* A for a uint8 coverage level c (0..255): round(ao c / 255^2); ao c is
@@ -85,6 +91,84 @@ static void rast__blend_px(const rast__blender *b, unsigned char *row, int32_t x
         p[3] = (unsigned char)rast__blend8(255u, da, a);
         break;
     }
+}
+
+/* The level k of 0..n-1 whose dec[k] is nearest x / den (the lower level on
+ * a tie): the number of midpoints (dec[j] + dec[j + 1]) / 2, j < n - 1,
+ * strictly below x / den, by bisection over the strictly increasing table
+ * (2 x < 2^42 and den (dec[j] + dec[j + 1]) < 2^16 2^25: no overflow). */
+static unsigned rast__encode(const uint32_t *dec, unsigned n, uint64_t x, uint64_t den)
+{
+    unsigned lo = 0, hi = n - 1;
+    while (lo < hi) {
+        unsigned mid = (lo + hi) / 2;
+        if (2u * x > den * ((uint64_t)dec[mid] + dec[mid + 1]))
+            lo = mid + 1;
+        else
+            hi = mid;
+    }
+    return lo;
+}
+
+/* Channel d (of n levels, table dec) after source s at alpha level a in
+ * linear light: the level nearest (dec[s] a + dec[d] (255 - a)) / 255. */
+static unsigned rast__lin(const uint32_t *dec, unsigned n, unsigned s, unsigned d, unsigned a)
+{
+    return rast__encode(dec, n, (uint64_t)dec[s] * a + (uint64_t)dec[d] * (255u - a), 255u);
+}
+
+/* Pixel x of `row` with the colour at alpha level a (1..255), mixed in
+ * linear light (b->gamma; straight alpha). */
+static void rast__blend_px_linear(const rast__blender *b, unsigned char *row, int32_t x, unsigned a)
+{
+    const rast_gamma *g = b->gamma;
+    unsigned char *p;
+    uint16_t d;
+    unsigned da, m, k;
+    switch (b->format) {
+    case RAST_FORMAT_GRAY8:
+        row[x] = (unsigned char)rast__lin(g->dec8, 256u, b->src[0], row[x], a);
+        break;
+    case RAST_FORMAT_RGB888:
+        p = row + (ptrdiff_t)x * 3;
+        for (k = 0; k < 3; k++) p[k] = (unsigned char)rast__lin(g->dec8, 256u, b->src[k], p[k], a);
+        break;
+    case RAST_FORMAT_RGB565:
+        memcpy(&d, row + (ptrdiff_t)x * 2, 2);
+        d = (uint16_t)((rast__lin(g->dec5, 32u, b->src[0], (unsigned)d >> 11, a) << 11) |
+                       (rast__lin(g->dec6, 64u, b->src[1], ((unsigned)d >> 5) & 63u, a) << 5) |
+                       rast__lin(g->dec5, 32u, b->src[2], (unsigned)d & 31u, a));
+        memcpy(row + (ptrdiff_t)x * 2, &d, 2);
+        break;
+    default: /* RAST_FORMAT_RGBA8888, straight: the linear colour of the
+              * exact source-over, (dec[s] a 255 + dec[d] da (255 - a)) / m */
+        p = row + (ptrdiff_t)x * 4;
+        da = p[3];
+        m = 255u * a + da * (255u - a);
+        for (k = 0; k < 3; k++)
+            p[k] = (unsigned char)rast__encode(
+                g->dec8, 256u,
+                (uint64_t)g->dec8[b->src[k]] * a * 255u + (uint64_t)g->dec8[p[k]] * da * (255u - a), m);
+        p[3] = (unsigned char)rast__blend8(255u, da, a);
+        break;
+    }
+}
+
+/* Each table strictly increasing and at most 2^24. */
+static int rast__gamma_ok(const rast_gamma *g)
+{
+    const uint32_t *t[3];
+    static const unsigned n[3] = {256u, 64u, 32u};
+    unsigned i, k;
+    t[0] = g->dec8;
+    t[1] = g->dec6;
+    t[2] = g->dec5;
+    for (i = 0; i < 3; i++) {
+        if (t[i][n[i] - 1] > (1u << 24)) return 0;
+        for (k = 0; k + 1 < n[i]; k++)
+            if (t[i][k] >= t[i][k + 1]) return 0;
+    }
+    return 1;
 }
 
 static void rast__blend_full(void *user, int32_t y, const int32_t *xs, int32_t n)
@@ -145,9 +229,10 @@ static rast_status rast__blend_init(rast__blender *b, const rast_target *t, cons
     return RAST_OK;
 }
 
-rast_status rast_blend_coverage(const rast_target *target, const void *coverage,
-                                rast_coverage_format format, ptrdiff_t stride,
-                                const uint8_t *rgba, const rast_blend_opts *opts)
+static rast_status rast__blend_image(const rast_target *target, const void *coverage,
+                                     rast_coverage_format format, ptrdiff_t stride,
+                                     const uint8_t *rgba, const rast_blend_opts *opts,
+                                     const rast_gamma *gamma)
 {
     rast__blender b;
     rast__painter p;
@@ -157,6 +242,10 @@ rast_status rast_blend_coverage(const rast_target *target, const void *coverage,
     rast_status st = rast__blend_init(&b, target, rgba, opts, &c, &p);
     if (st != RAST_OK) return st;
     if (format != RAST_COVERAGE_U8 && format != RAST_COVERAGE_U16) return RAST_E_ARG;
+    if (gamma) {
+        if (b.premultiplied || !rast__gamma_ok(gamma)) return RAST_E_ARG;
+        b.gamma = gamma;
+    }
     if (c.x0 >= c.x1 || c.y0 >= c.y1) return RAST_OK;
     if (!coverage) return RAST_E_NULL;
     if (stride < (ptrdiff_t)(c.x1 - c.x0) * size || stride % size != 0) return RAST_E_ARG;
@@ -173,10 +262,30 @@ rast_status rast_blend_coverage(const rast_target *target, const void *coverage,
                 memcpy(&v, cr + (ptrdiff_t)(x - c.x0) * 2, 2);
                 a = rast__level16(b.ao, v);
             }
-            if (a) rast__blend_px(&b, row, x, a);
+            if (!a) continue;
+            if (gamma)
+                rast__blend_px_linear(&b, row, x, a);
+            else
+                rast__blend_px(&b, row, x, a);
         }
     }
     return RAST_OK;
+}
+
+rast_status rast_blend_coverage(const rast_target *target, const void *coverage,
+                                rast_coverage_format format, ptrdiff_t stride,
+                                const uint8_t *rgba, const rast_blend_opts *opts)
+{
+    return rast__blend_image(target, coverage, format, stride, rgba, opts, NULL);
+}
+
+rast_status rast_blend_coverage_linear(const rast_target *target, const void *coverage,
+                                       rast_coverage_format format, ptrdiff_t stride,
+                                       const uint8_t *rgba, const rast_blend_opts *opts,
+                                       const rast_gamma *gamma)
+{
+    if (!gamma) return RAST_E_NULL;
+    return rast__blend_image(target, coverage, format, stride, rgba, opts, gamma);
 }
 
 rast_status rast_fill_polygon_blend(const rast_target *target, const rast_polygon *polygon,

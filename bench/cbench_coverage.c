@@ -23,7 +23,7 @@
 
 #define SIZE 512
 #define PI 3.14159265358979323846
-#define MAXP 40000
+#define MAXP 200000
 
 static rast_point pts[MAXP];
 static uint32_t sizes[MAXP];

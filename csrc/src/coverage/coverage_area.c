@@ -176,6 +176,7 @@ typedef struct rast__sweep {
     int32_t *live, *wb, *h, *hidx;
     uint64_t *ct;
     int32_t m;
+    int32_t swept; /* rast__cov_row_groups swept a group in the last row */
 } rast__sweep;
 
 #define NONE (T + 1)
@@ -1160,8 +1161,12 @@ static void rast__cov_row_groups(rast__cells *c, rast__cedge *e, int32_t *row, i
 {
     const int64_t Yj = (int64_t)j * c->p;
     int32_t *const key = sw->wb; /* (the sweep's room: after a sweep, the groups read qlo) */
-    int32_t k, g, pz, r = 0, wl = 0, swept = 0; /* once a group is swept, key[] is not */
+    /* swept: the exact cells for every group from then on (and key[] not
+     * read: a sweep reorders row[]); from the start when the last row swept
+     * a group, which this one then likely does too */
+    int32_t k, g, pz, r = 0, wl = 0, swept = sw->swept;
     int32_t nk = 0, parts = 0; /* the groups kept for the quick way, their parts */
+    sw->swept = 0;
     for (k = 0; k < nrow; k++) { /* the parts' ranges, their first columns as keys */
         rast__cedge *ed = &e[row[k]];
         rast__fast_range(ed, j, c);
@@ -1256,10 +1261,12 @@ static void rast__cov_row_groups(rast__cells *c, rast__cedge *e, int32_t *row, i
         }
         if (s == 2 && full) {
             rast__grp_blocks(c, e, row + k, m, sw, j, rule, wl);
+            sw->swept = 1;
             s = 0; /* done */
         }
         if (s == 2) {
             rast__cov_row_area(c, e, row + k, m, sw, j, rule, wl);
+            sw->swept = 1;
         } else if (s != 0 && swept) {
             rast__row_exact(c, e, row + k, m, j, s);
         } else if (s != 0) { /* kept: group nk starts at k, m edges, sign s */
@@ -1354,6 +1361,7 @@ rast_status rast__cov_area(rast__cedge *e, uint32_t n, int32_t s, rast_fill_rule
     sw.h = (int32_t *)rast__take(arena, (size_t)n * sizeof(int32_t));
     sw.hidx = (int32_t *)rast__take(arena, (size_t)n * sizeof(int32_t));
     sw.ct = (uint64_t *)rast__take(arena, (size_t)n * sizeof(uint64_t));
+    sw.swept = 0;
     c.cover = (rast__i128 *)rast__take(arena, (size_t)width * sizeof(rast__i128));
     c.area = (rast__i128 *)rast__take(arena, (size_t)width * sizeof(rast__i128));
     c.bits = (uint64_t *)rast__take(arena, ((size_t)width + 63) / 64 * sizeof(uint64_t));

@@ -282,8 +282,12 @@ def main(argv=None, extra_peers=None):
     ap.add_argument("--limit", type=float, default=10.0, help="seconds a call may take (default 10)")
     ap.add_argument("--steps", type=int, default=5, help="doubling steps per series")
     ap.add_argument("--no-series", action="store_true")
+    ap.add_argument("--span-count", type=int, default=None,
+                    help="canvas-spanning triangles in the span family (default %d)" % families.SPAN_COUNT)
     ap.add_argument("--json", default=None, help="write every measurement here (rewritten after each family)")
     args = ap.parse_args(argv)
+    if args.span_count:
+        families.SPAN_COUNT = args.span_count
     seeds, reps, steps = args.seeds, args.reps, args.steps
     sizes = "512,2048"
     if args.quick:

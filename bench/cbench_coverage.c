@@ -6,7 +6,10 @@
  *   valgrind --tool=callgrind build/cbench_coverage 1 SCENE METHOD
  * counts instructions of one call of one scene (SCENE: one of the names
  * below, trisN for N random triangles, or a file of rings: its count, then
- * each ring's size and vertices in 1/256 pixel). */
+ * each ring's size and vertices in 1/256 pixel; "t:FILE", the same file
+ * drawn as a triangle batch, rast_triangles_coverage, its rings of 3).
+ * Add --toggle-collect=draw to count the call alone, not the file's
+ * reading. */
 #define _POSIX_C_SOURCE 199309L
 #include <math.h>
 #include <stdint.h>
@@ -20,7 +23,7 @@
 
 #define SIZE 512
 #define PI 3.14159265358979323846
-#define MAXP 40000
+#define MAXP 200000
 
 static rast_point pts[MAXP];
 static uint32_t sizes[MAXP];
@@ -124,7 +127,12 @@ static uint32_t scene(const char *name, uint32_t *nrings, int *tris)
         return k;
     }
     { /* a file: the ring count, then each ring's size and its vertices (fixed, S = 8) */
-        FILE *f = fopen(name, "r");
+        FILE *f;
+        if (!strncmp(name, "t:", 2)) { /* as a triangle batch */
+            name += 2;
+            *tris = 1;
+        }
+        f = fopen(name, "r");
         uint32_t r, i;
         if (f && fscanf(f, "%u", nrings) == 1) {
             for (r = 0; r < *nrings && r < MAXP; r++) {

@@ -176,6 +176,7 @@ typedef struct rast__sweep {
     int32_t *live, *wb, *h, *hidx;
     uint64_t *ct;
     int32_t m;
+    int32_t swept; /* rast__cov_row_groups swept a group in the last row */
 } rast__sweep;
 
 #define NONE (T + 1)
@@ -1143,13 +1144,29 @@ static inline int32_t rast__grp_col(const rast__cells *c, int64_t v)
     return col < c->x0 ? 0 : col > c->x1 ? c->x1 - c->x0 + 1 : (int32_t)(col - c->x0) + 1;
 }
 
+/* The groups kept by rast__cov_row_groups (sw->h: where each starts in
+ * row[]; sw->live: its edge count times 2, plus 1 for sign +1), added the
+ * exact way. */
+static void rast__grp_flush(rast__cells *c, rast__cedge *e, int32_t *row, const rast__sweep *sw,
+                            int32_t nk, int32_t j)
+{
+    int32_t g;
+    for (g = 0; g < nk; g++)
+        rast__row_exact(c, e, row + sw->h[g], sw->live[g] >> 1, j, (sw->live[g] & 1) ? 1 : -1);
+}
+
 static void rast__cov_row_groups(rast__cells *c, rast__cedge *e, int32_t *row, int32_t nrow,
                                  rast__sweep *sw, int32_t j, rast_fill_rule rule,
                                  int32_t *rs, int32_t nrun)
 {
     const int64_t Yj = (int64_t)j * c->p;
     int32_t *const key = sw->wb; /* (the sweep's room: after a sweep, the groups read qlo) */
-    int32_t k, g, r = 0, wl = 0, swept = 0; /* once a group is swept, key[] is not */
+    /* swept: the exact cells for every group from then on (and key[] not
+     * read: a sweep reorders row[]); from the start when the last row swept
+     * a group, which this one then likely does too */
+    int32_t k, g, pz, r = 0, wl = 0, swept = sw->swept;
+    int32_t nk = 0, parts = 0; /* the groups kept for the quick way, their parts */
+    sw->swept = 0;
     for (k = 0; k < nrow; k++) { /* the parts' ranges, their first columns as keys */
         rast__cedge *ed = &e[row[k]];
         rast__fast_range(ed, j, c);
@@ -1237,19 +1254,41 @@ static void rast__cov_row_groups(rast__cells *c, rast__cedge *e, int32_t *row, i
             }
         }
         if (s == 2 && rast__grp_none(e, row + k, m, rule, wl)) s = 0; /* nothing to add */
+        if (s == 2 && !swept) { /* the exact cells from here on: the groups kept so far first */
+            rast__grp_flush(c, e, row, sw, nk, j);
+            nk = 0;
+            swept = 1;
+        }
         if (s == 2 && full) {
             rast__grp_blocks(c, e, row + k, m, sw, j, rule, wl);
+            sw->swept = 1;
             s = 0; /* done */
-            swept = 1;
         }
         if (s == 2) {
             rast__cov_row_area(c, e, row + k, m, sw, j, rule, wl);
-            swept = 1;
-        } else if (s != 0) {
+            sw->swept = 1;
+        } else if (s != 0 && swept) {
             rast__row_exact(c, e, row + k, m, j, s);
+        } else if (s != 0) { /* kept: group nk starts at k, m edges, sign s */
+            sw->h[nk] = k;
+            sw->live[nk++] = m * 2 + (s > 0);
+            parts += m;
         }
         wl = wr;
     }
+    if (swept || !nk) {
+        return;
+    } else if (rast__q_may(c, parts)) { /* no group swept: the row the quick way */
+        for (g = 0; g < nk; g++) {
+            const int32_t sg = (sw->live[g] & 1) ? 1 : -1, *gr = row + sw->h[g];
+            for (pz = 0; pz < sw->live[g] >> 1; pz++) {
+                rast__cedge *ed = &e[gr[pz]];
+                rast__q_piece(c, ed, Yj, ed->qa, ed->qta, ed->qb, ed->qtb, ed->dir * sg);
+            }
+        }
+        if (rast__q_emit(c, j, parts)) return; /* emitted */
+    }
+    rast__grp_flush(c, e, row, sw, nk, j);
 }
 
 /* The row after a fast row, with the same edges, none of them starting or
@@ -1322,6 +1361,7 @@ rast_status rast__cov_area(rast__cedge *e, uint32_t n, int32_t s, rast_fill_rule
     sw.h = (int32_t *)rast__take(arena, (size_t)n * sizeof(int32_t));
     sw.hidx = (int32_t *)rast__take(arena, (size_t)n * sizeof(int32_t));
     sw.ct = (uint64_t *)rast__take(arena, (size_t)n * sizeof(uint64_t));
+    sw.swept = 0;
     c.cover = (rast__i128 *)rast__take(arena, (size_t)width * sizeof(rast__i128));
     c.area = (rast__i128 *)rast__take(arena, (size_t)width * sizeof(rast__i128));
     c.bits = (uint64_t *)rast__take(arena, ((size_t)width + 63) / 64 * sizeof(uint64_t));

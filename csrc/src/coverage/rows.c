@@ -255,9 +255,24 @@ void rast__cov_rows(rast__cedge *e, uint32_t n, int32_t p, int32_t *order, const
     *jb = ymax < o->clip.y1 ? (int32_t)(ymax > *ja ? ymax : *ja) : o->clip.y1;
 }
 
+/* Below this many, an insertion sort (stable, the same order): a radix
+ * pass clears and sums 256 counts, which a polygon of a few edges (one
+ * small shape a call) does not repay. */
+#define RAST__COV_SORT_FEW 24
+
 void rast__cov_radix_sort(int32_t *ix, int32_t *tmp, const int32_t *key, uint32_t n)
 {
     uint32_t cnt[256], i, d, sh, top = 0;
+    if (n < RAST__COV_SORT_FEW) {
+        for (i = 1; i < n; i++) {
+            const int32_t x = ix[i];
+            const uint32_t kx = (uint32_t)key[x];
+            uint32_t q = i;
+            for (; q > 0 && (uint32_t)key[ix[q - 1]] > kx; q--) ix[q] = ix[q - 1];
+            ix[q] = x;
+        }
+        return;
+    }
     for (i = 0; i < n; i++) top |= (uint32_t)key[ix[i]];
     for (sh = 0; sh < 32 && (top >> sh); sh += 8) {
         int32_t *t;

@@ -246,8 +246,9 @@ void rast__cov_zero_rows(const rast__cov_out *o, int32_t y0, int32_t y1);
  * cancel). */
 int rast__cov_tri(const rast_point *t, rast_point *v);
 /* Stable radix sort (8 bits a pass, as many passes as the largest key
- * needs) of the indices ix[0..n) by key[ix[i]], each key's bits read as
- * unsigned; tmp[0..n) is room.  The result is in ix. */
+ * needs; an insertion sort for a few) of the indices ix[0..n) by
+ * key[ix[i]], each key's bits read as unsigned; tmp[0..n) is room.  The
+ * result is in ix. */
 void rast__cov_radix_sort(int32_t *ix, int32_t *tmp, const int32_t *key, uint32_t n);
 /* Each edge's steps set (when quick, those of the quick way only: then
  * rast__cov_exact_steps before an exact row), order[i] = i, and the rows

@@ -1208,6 +1208,7 @@ typedef struct rast__acc_walk {
     int32_t *order, *row, *tmp, *key, *last, *thru;
     rast__i128 *cover, *area;
     uint64_t *bits;
+    unsigned char *exact; /* each edge's: its exact steps set (cleared at the first exact row) */
 } rast__acc_walk;
 
 /* The edges of rows j0 .. j1 - 1 in row[]: of its nrow (returns the new
@@ -1247,7 +1248,7 @@ static void rast__acc_by_rows(const rast__acc_walk *w, rast__acc *a)
     int32_t *const row = w->row;
     int32_t nrow = 0, j, k, drop = INT32_MAX;
     uint32_t next = 0, *const cnt = a->z + w->width; /* (in area[], after z[]: cleared) */
-    int exact = 0; /* the edges' exact steps set */
+    int exact = 0; /* w->exact[] cleared */
     for (j = w->ja; j < w->jb; j++) {
         const int64_t Yj = (int64_t)j * a->p;
         nrow = rast__acc_edges_of(w, nrow, &next, &drop, j, j + 1, a->p);
@@ -1265,9 +1266,10 @@ static void rast__acc_by_rows(const rast__acc_walk *w, rast__acc *a)
             if (rast__acc_emit(a, 1, o, j, w->rule, m, rast__acc_win((uint64_t)nrow, m), e, row, nrow)) continue;
         }
         if (!exact) { /* the first exact row (rare) */
-            rast__cov_exact_steps(e, w->n);
+            memset(w->exact, 0, w->n);
             exact = 1;
         }
+        rast__cov_exact_steps_of(e, row, nrow, w->exact);
         rast__cov_acc_exact_row(e, row, nrow, j, w->s, w->rule, o, w->cover, w->area, w->bits);
     }
 }
@@ -1289,7 +1291,7 @@ static void rast__acc_by_bands(const rast__acc_walk *w, rast__acc *v)
     int dense, quad; /* every row of the band dense; its rows read out together */
     uint32_t qbad = 0; /* (their tie flags) */
     uint32_t next = 0;
-    int clean = 0; /* cover[], area[] and bits[] cleared, the exact steps set */
+    int clean = 0; /* cover[], area[], bits[] and w->exact[] cleared */
     for (j0 = ja; j0 < w->jb; j0 = j1) {
         j1 = w->jb - j0 > RAST__ACC_BAND ? j0 + RAST__ACC_BAND : w->jb;
         nrow = rast__acc_edges_of(w, nrow, &next, &drop, j0, j1, v->p);
@@ -1358,14 +1360,14 @@ static void rast__acc_by_bands(const rast__acc_walk *w, rast__acc *v)
                 continue;
             for (k = 0, q = 0; k < nrow; k++) /* the row's edges */
                 if (key[row[k]] + ja <= j && last[row[k]] >= j) w->tmp[q++] = row[k];
-            if (!clean) { /* the first exact row (rare): the edges' exact steps,
-                           * the cells cleared (the sums leave z[] as they
-                           * find it) */
-                rast__cov_exact_steps(e, w->n);
+            if (!clean) { /* the first exact row (rare): the cells cleared (the sums
+                           * leave z[] as they find it) */
+                memset(w->exact, 0, w->n);
                 for (k = 0; k < w->width; k++) w->cover[k] = w->area[k] = rast__i128_u64(0);
                 for (k = 0; k < w->nw; k++) w->bits[k] = 0;
                 clean = 1;
             }
+            rast__cov_exact_steps_of(e, w->tmp, q, w->exact);
             rast__cov_acc_exact_row(e, w->tmp, q, j, w->s, w->rule, o, w->cover, w->area, w->bits);
         }
     }
@@ -1470,14 +1472,14 @@ static rast_status rast__acc_walk_all(rast__cedge *e, uint32_t n, int32_t s, ras
     w.key = (int32_t *)rast__take(arena, (size_t)n * sizeof(int32_t));
     w.last = (int32_t *)rast__take(arena, (size_t)n * sizeof(int32_t));
     w.thru = (int32_t *)rast__take(arena, (size_t)n * sizeof(int32_t));
-    (void)rast__take(arena, (size_t)n * sizeof(uint64_t));
+    w.exact = (unsigned char *)rast__take(arena, (size_t)n * sizeof(uint64_t));
     w.cover = (rast__i128 *)rast__take(arena, (size_t)w.width * sizeof(rast__i128));
     w.area = (rast__i128 *)rast__take(arena, (size_t)w.width * sizeof(rast__i128));
     w.bits = (uint64_t *)rast__take(arena, (size_t)w.nw * sizeof(uint64_t));
     /* the band's cells and bits (rast__cov_area_scratch counts them) */
     cells = (uint64_t *)rast__take(arena, (size_t)RAST__ACC_BAND * ((size_t)w.width + 1) * sizeof(uint64_t));
     bandbits = (uint64_t *)rast__take(arena, (size_t)RAST__ACC_BAND * (size_t)w.nw * sizeof(uint64_t));
-    if ((n && (!w.order || !w.row || !w.tmp || !w.key || !w.last || !w.thru)) || !w.cover || !w.area ||
+    if ((n && (!w.order || !w.row || !w.tmp || !w.key || !w.last || !w.thru || !w.exact)) || !w.cover || !w.area ||
         !w.bits || !cells || !bandbits)
         return RAST_E_SCRATCH;
     /* (the dense rows' sums go to z[], in area[]: not read here but by the

@@ -208,6 +208,17 @@ static void rast__cov_steps(rast__cedge *e)
     rast__cov_steps_quick(e, q30, r30);
 }
 
+void rast__cov_exact_steps_of(rast__cedge *e, const int32_t *ix, int32_t n, unsigned char *done)
+{
+    uint64_t q30, r30;
+    int32_t k;
+    for (k = 0; k < n; k++)
+        if (!done[ix[k]]) {
+            rast__cov_steps_exact(&e[ix[k]], &q30, &r30);
+            done[ix[k]] = 1;
+        }
+}
+
 void rast__cov_exact_steps(rast__cedge *e, uint32_t n)
 {
     uint64_t q30, r30;

@@ -256,5 +256,8 @@ void rast__cov_radix_sort(int32_t *ix, int32_t *tmp, const int32_t *key, uint32_
 void rast__cov_rows(rast__cedge *e, uint32_t n, int32_t p, int32_t *order, const rast__cov_out *o,
                     int32_t *ja, int32_t *jb, int quick);
 void rast__cov_exact_steps(rast__cedge *e, uint32_t n);
+/* The exact steps of the edges e[ix[k]], k < n, whose done[] is 0 (then
+ * 1): an exact row's edges, not every edge of the call. */
+void rast__cov_exact_steps_of(rast__cedge *e, const int32_t *ix, int32_t n, unsigned char *done);
 
 #endif /* RAST_COV_ROWS_H */

@@ -284,19 +284,22 @@ void rast__cov_radix_sort(int32_t *ix, int32_t *tmp, const int32_t *key, uint32_
         }
         return;
     }
+    int32_t *src = ix, *dst = tmp, *t;
     for (i = 0; i < n; i++) top |= (uint32_t)key[ix[i]];
     for (sh = 0; sh < 32 && (top >> sh); sh += 8) {
-        int32_t *t;
         uint32_t sum = 0;
         for (d = 0; d < 256; d++) cnt[d] = 0;
-        for (i = 0; i < n; i++) cnt[((uint32_t)key[ix[i]] >> sh) & 0xFF]++;
+        for (i = 0; i < n; i++) cnt[((uint32_t)key[src[i]] >> sh) & 0xFF]++;
         for (d = 0; d < 256; d++) {
             uint32_t c = cnt[d];
             cnt[d] = sum;
             sum += c;
         }
-        for (i = 0; i < n; i++) tmp[cnt[((uint32_t)key[ix[i]] >> sh) & 0xFF]++] = ix[i];
-        t = ix;
-        for (i = 0; i < n; i++) t[i] = tmp[i];
+        for (i = 0; i < n; i++) dst[cnt[((uint32_t)key[src[i]] >> sh) & 0xFF]++] = src[i];
+        t = src; /* (each pass reads the other's result: no copy back) */
+        src = dst;
+        dst = t;
     }
+    if (src != ix)
+        for (i = 0; i < n; i++) ix[i] = src[i];
 }

@@ -1415,6 +1415,10 @@ rast_status rast__cov_acc(rast__cedge *e, uint32_t n, int32_t s, rast_fill_rule 
         rast__cov_zero_rows(o, o->clip.y0, o->clip.y1);
         return RAST_OK;
     }
+    /* (an array: its rows are written whole either way, and the side
+     * columns' fills cost more calls than they save: 4% more
+     * instructions on the 64-gon circle) */
+    if (!o->paint) return rast__acc_walk_all(e, n, s, rule, o, arena);
     rast__acc_cols_reached(e, n, (int32_t)1 << s, &c0, &c1);
     if (c0 <= o->clip.x0 && c1 >= o->clip.x1) return rast__acc_walk_all(e, n, s, rule, o, arena);
     c0 = c0 > o->clip.x0 ? c0 : o->clip.x0;

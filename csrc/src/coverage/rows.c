@@ -208,6 +208,17 @@ static void rast__cov_steps(rast__cedge *e)
     rast__cov_steps_quick(e, q30, r30);
 }
 
+void rast__cov_exact_steps_of(rast__cedge *e, const int32_t *ix, int32_t n, unsigned char *done)
+{
+    uint64_t q30, r30;
+    int32_t k;
+    for (k = 0; k < n; k++)
+        if (!done[ix[k]]) {
+            rast__cov_steps_exact(&e[ix[k]], &q30, &r30);
+            done[ix[k]] = 1;
+        }
+}
+
 void rast__cov_exact_steps(rast__cedge *e, uint32_t n)
 {
     uint64_t q30, r30;
@@ -255,22 +266,40 @@ void rast__cov_rows(rast__cedge *e, uint32_t n, int32_t p, int32_t *order, const
     *jb = ymax < o->clip.y1 ? (int32_t)(ymax > *ja ? ymax : *ja) : o->clip.y1;
 }
 
+/* Below this many, an insertion sort (stable, the same order): a radix
+ * pass clears and sums 256 counts, which a polygon of a few edges (one
+ * small shape a call) does not repay. */
+#define RAST__COV_SORT_FEW 24
+
 void rast__cov_radix_sort(int32_t *ix, int32_t *tmp, const int32_t *key, uint32_t n)
 {
     uint32_t cnt[256], i, d, sh, top = 0;
+    if (n < RAST__COV_SORT_FEW) {
+        for (i = 1; i < n; i++) {
+            const int32_t x = ix[i];
+            const uint32_t kx = (uint32_t)key[x];
+            uint32_t q = i;
+            for (; q > 0 && (uint32_t)key[ix[q - 1]] > kx; q--) ix[q] = ix[q - 1];
+            ix[q] = x;
+        }
+        return;
+    }
+    int32_t *src = ix, *dst = tmp, *t;
     for (i = 0; i < n; i++) top |= (uint32_t)key[ix[i]];
     for (sh = 0; sh < 32 && (top >> sh); sh += 8) {
-        int32_t *t;
         uint32_t sum = 0;
         for (d = 0; d < 256; d++) cnt[d] = 0;
-        for (i = 0; i < n; i++) cnt[((uint32_t)key[ix[i]] >> sh) & 0xFF]++;
+        for (i = 0; i < n; i++) cnt[((uint32_t)key[src[i]] >> sh) & 0xFF]++;
         for (d = 0; d < 256; d++) {
             uint32_t c = cnt[d];
             cnt[d] = sum;
             sum += c;
         }
-        for (i = 0; i < n; i++) tmp[cnt[((uint32_t)key[ix[i]] >> sh) & 0xFF]++] = ix[i];
-        t = ix;
-        for (i = 0; i < n; i++) t[i] = tmp[i];
+        for (i = 0; i < n; i++) dst[cnt[((uint32_t)key[src[i]] >> sh) & 0xFF]++] = src[i];
+        t = src; /* (each pass reads the other's result: no copy back) */
+        src = dst;
+        dst = t;
     }
+    if (src != ix)
+        for (i = 0; i < n; i++) ix[i] = src[i];
 }

@@ -246,8 +246,9 @@ void rast__cov_zero_rows(const rast__cov_out *o, int32_t y0, int32_t y1);
  * cancel). */
 int rast__cov_tri(const rast_point *t, rast_point *v);
 /* Stable radix sort (8 bits a pass, as many passes as the largest key
- * needs) of the indices ix[0..n) by key[ix[i]], each key's bits read as
- * unsigned; tmp[0..n) is room.  The result is in ix. */
+ * needs; an insertion sort for a few) of the indices ix[0..n) by
+ * key[ix[i]], each key's bits read as unsigned; tmp[0..n) is room.  The
+ * result is in ix. */
 void rast__cov_radix_sort(int32_t *ix, int32_t *tmp, const int32_t *key, uint32_t n);
 /* Each edge's steps set (when quick, those of the quick way only: then
  * rast__cov_exact_steps before an exact row), order[i] = i, and the rows
@@ -255,5 +256,8 @@ void rast__cov_radix_sort(int32_t *ix, int32_t *tmp, const int32_t *key, uint32_
 void rast__cov_rows(rast__cedge *e, uint32_t n, int32_t p, int32_t *order, const rast__cov_out *o,
                     int32_t *ja, int32_t *jb, int quick);
 void rast__cov_exact_steps(rast__cedge *e, uint32_t n);
+/* The exact steps of the edges e[ix[k]], k < n, whose done[] is 0 (then
+ * 1): an exact row's edges, not every edge of the call. */
+void rast__cov_exact_steps_of(rast__cedge *e, const int32_t *ix, int32_t n, unsigned char *done);
 
 #endif /* RAST_COV_ROWS_H */

@@ -305,7 +305,9 @@ def real_array(x, what, shape_text):
                          % (what, shape_text, a.dtype))
     if not a.ndim:  # a number where an array is needed: shape () for the caller to refuse
         return np.array(a, np.float64)  # (ascontiguousarray would make it (1,), one coordinate)
-    return np.ascontiguousarray(a, dtype=np.float64)
+    # aligned too: the C glue reads doubles, and a view at an odd address
+    # (np.frombuffer with an offset) is C-contiguous but not aligned
+    return np.require(a, np.float64, ("C", "A"))
 
 
 def count_array(x, what):

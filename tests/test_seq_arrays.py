@@ -101,6 +101,12 @@ def test_unaligned_float64_is_left_to_the_general_path(route):
     assert not a.flags.aligned
     assert _core.packed_rings([a]) is None
     assert np.array_equal(rastrum.polygon_mask([a], (4, 4)), rastrum.polygon_mask([a.copy()], (4, 4)))
+    assert np.array_equal(rastrum.polygon_mask(a, (4, 4)), rastrum.polygon_mask(a.copy(), (4, 4)))
+    for aa in (None, "area"):  # Canvas.fill_polygon's quick paths take the copy too
+        c, d = rastrum.Canvas((4, 4)), rastrum.Canvas((4, 4))
+        c.fill_polygon(a, 255, aa=aa)
+        d.fill_polygon(a.copy(), 255, aa=aa)
+        assert np.array_equal(c.array, d.array)
 
 
 def test_head_route_is_the_default_and_checked():

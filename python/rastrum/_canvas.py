@@ -544,7 +544,8 @@ class Canvas:
                 opts = _fill_opts(algorithm, rule, subpixel_bits, sample_offset, rounding, boundary)
             xy = None
             if type(rings) is _ndarray:
-                if rings.dtype is _F64 and rings.strides == _PACKED and rings.shape[1] == 2:
+                if rings.dtype is _F64 and rings.strides == _PACKED and rings.shape[1] == 2 \
+                        and rings.flags.aligned:  # C reads doubles: not a view at an odd address
                     xy, n = rings, len(rings)
             elif type(rings) is list:
                 got = _seq_rings(rings, _ndarray, _RING_DTYPES)
@@ -573,7 +574,8 @@ class Canvas:
                 # one C-contiguous float64 ring of 3 points or more: straight to
                 # C (an error status: fill_polygon_aa's call below says which)
                 if type(rings) is _ndarray and rings.dtype is _F64 and rings.strides == _PACKED \
-                        and rings.shape[1] == 2 and len(rings) >= 3 and len(rings) <= _MAX_POINTS:
+                        and rings.shape[1] == 2 and len(rings) >= 3 and len(rings) <= _MAX_POINTS \
+                        and rings.flags.aligned:
                     if not _lent(_fill_ring_aa, target, _from_buffer(_DOUBLES, rings), len(rings), _NULL, 1,
                                  opts, pixel):
                         return

@@ -564,7 +564,7 @@ def rings_f64(rings, holes=None):
     ring_list = _ring_list(rings, flags)
     for k, ring in enumerate(ring_list):
         if type(ring) is np.ndarray and ring.dtype == _F64 and ring.ndim == 2 and ring.shape[1:] == (2,) \
-                and ring.flags.c_contiguous:
+                and ring.flags.c_contiguous and ring.flags.aligned:
             a = ring
         else:
             a = real_array(ring, "rings: ring %d" % k, "an (N, 2) array-like")
@@ -729,6 +729,7 @@ def mask_polygon(shape, rings, opts, s):
         and rings.shape[1] == 2
         and rings.shape[0] >= 3
         and rings.flags.c_contiguous
+        and rings.flags.aligned  # C reads doubles: not a view at an odd address
     ):
         pts, sizes, nrings = rings, ffi.NULL, 1
     else:

@@ -1,5 +1,5 @@
 """Filling a paragraph of glyph curves anti-aliased: rastrum against
-Blend2D (and cairo, where installed), paths prebuilt, one run, every
+Blend2D (and skia and cairo, where installed), paths prebuilt, one run, every
 peer's output checked against the exact coverage.
 
     python bench/bench_paths.py                 # wall-clock medians and ratios
@@ -10,7 +10,8 @@ The text is matplotlib's TextPath of DejaVu Sans (quadratic curves, as
 TrueType has them), 14 px, ~600 glyphs; rastrum fills it with
 ``Canvas.fill_polygon(path, 255, rule="nonzero", aa="area")`` (its curves
 flattened in C within Path.DEFAULT_TOLERANCE, then the exact area), Blend2D
-with ``fill_path`` on an A8 image, cairo with ``fill`` on an A8 surface.
+with ``fill_path`` on an A8 image, skia with ``drawPath`` on an Alpha_8
+surface, cairo with ``fill`` on an A8 surface.
 Wall-clock times on a shared machine are noisy: the ratios are also
 given in CPU time (process_time), and ``--draws N`` draws N times with
 no timing, for callgrind (the difference of a ``--draws 0`` run).
@@ -85,64 +86,17 @@ def seeded_text(seed):
 
 
 def drawers(path, aa="area", tolerance=None):
-    """{name: draw()} for rastrum and the peers installed, paths prebuilt."""
-    h, w = SIZE
-    out = {}
+    """{name: draw()} for rastrum and the curve-drawing peers installed
+    (path_tolerance.curve_peers: Blend2D, skia, cairo), paths prebuilt."""
+    import path_tolerance
+
     canvas = rastrum.Canvas(SIZE, format="gray8")
 
     def r_draw():
         canvas.array[...] = 0
         canvas.fill_polygon(path, 255, rule="nonzero", aa=aa, tolerance=tolerance)
         return canvas.array
-    out["rastrum"] = r_draw
-    try:
-        import blend2d as b
-
-        bp = b.BLPath()
-        paths_scene._trace(path, bp.move_to, bp.line_to, bp.quadric_to, bp.cubic_to, bp.close)
-        img = b.BLImage(w, h, b.BLFormat.A8)
-
-        def b_draw():
-            ctx = b.BLContext(img)
-            ctx.clear_all()
-            ctx.fill_rule = b.BLFillRule.NON_ZERO
-            ctx.set_fill_style((255, 255, 255, 255))
-            ctx.fill_path(bp)
-            ctx.end() if hasattr(ctx, "end") else ctx.flush()
-            return img.getDataAsNumPy().reshape(h, w)
-        out["Blend2D"] = b_draw
-    except ImportError:
-        pass
-    try:
-        try:
-            import cairo as c
-        except ImportError:
-            import cairocffi as c
-        surf = c.ImageSurface(c.FORMAT_A8, w, h)
-        ctx = c.Context(surf)
-        ctx.set_fill_rule(c.FILL_RULE_WINDING)
-
-        def quad(x1, y1, x, y):
-            x0, y0 = ctx.get_current_point()
-            ctx.curve_to(x0 + 2 / 3 * (x1 - x0), y0 + 2 / 3 * (y1 - y0), x + 2 / 3 * (x1 - x), y + 2 / 3 * (y1 - y),
-                         x, y)
-        ctx.new_path()
-        paths_scene._trace(path, ctx.move_to, ctx.line_to, quad, ctx.curve_to, ctx.close_path)
-        cpath = ctx.copy_path()
-
-        def c_draw():
-            ctx.set_operator(c.OPERATOR_CLEAR)
-            ctx.paint()
-            ctx.set_operator(c.OPERATOR_OVER)
-            ctx.new_path()
-            ctx.append_path(cpath)
-            ctx.fill()
-            surf.flush()
-            return np.frombuffer(bytes(surf.get_data()), np.uint8).reshape(h, surf.get_stride())[:, :w]
-        out["cairo"] = c_draw
-    except (ImportError, OSError):
-        pass
-    return out
+    return {"rastrum": r_draw, **path_tolerance.curve_peers(path, SIZE)}
 
 
 _REF: dict = {}

@@ -243,11 +243,12 @@ static int32_t rast__cov_sign(rast_fill_rule rule, int32_t wb, int32_t dir)
     return wb == 0 ? 1 : (wb + dir == 0) ? -1 : 0;
 }
 
-/* When a, left of b (edge ib) just after t, crosses it before tv (else
- * NONE).  Lines in order at the row's bottom do not cross in between.  The
- * crossing does not depend on t (a pair in order just after t crosses
- * after it), so each edge keeps the last one it computed, for its right
- * neighbour: a vertex event, which sorts the row again, finds most pairs
+/* The first crossing of a, left of b (edge ib), in row j, rounded up
+ * (rast__cov_cross), from the row's top; T or NONE when they do not cross
+ * inside the row (lines in order at the row's bottom do not cross in
+ * between).  The crossing does not depend on where the sweep is (a pair in
+ * order just after t crosses after it), so each edge keeps the last one it
+ * computed, for its right neighbour: a vertex event finds most pairs
  * unchanged. */
 static uint64_t rast__cov_pair_t(rast__cedge *a, int32_t ib, const rast__cedge *b, int64_t Yj,
                                  int32_t j, const rast__cells *c)
@@ -263,6 +264,8 @@ static uint64_t rast__cov_pair_t(rast__cedge *a, int32_t ib, const rast__cedge *
     return a->ctime;
 }
 
+/* When a, left of b (edge ib) just after t, crosses it before tv (else
+ * NONE). */
 static uint64_t rast__cov_pair(rast__cedge *a, int32_t ib, const rast__cedge *b, int64_t Yj,
                                int32_t j, uint64_t t, uint64_t tv, const rast__cells *c)
 {

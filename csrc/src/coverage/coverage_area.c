@@ -51,6 +51,20 @@ static int rast__cov_before(const rast__cedge *a, const rast__cedge *b)
     return (int64_t)a->dx * b->dy < (int64_t)b->dx * a->dy;
 }
 
+/* rast__cov_before at ordinate t of row j, where a is cached and b is
+ * cached there or computed here (b's own cache, the start of its piece,
+ * is left alone). */
+static int rast__cov_before_at(const rast__cedge *a, const rast__cedge *b, int64_t Yj, int32_t j,
+                               uint64_t t, int32_t h)
+{
+    rast__cedge bt;
+    if (b->rowx == j && b->tx == t) return rast__cov_before(a, b);
+    bt.dx = b->dx;
+    bt.dy = b->dy;
+    rast__cov_x_at(b, Yj, t, h, &bt.x, &bt.r);
+    return rast__cov_before(a, &bt);
+}
+
 /* The first ordinate after t (U; up to T) where a, left of b just below
  * t, crosses it; T when they do not cross inside the row. */
 static uint64_t rast__cov_cross(const rast__cedge *a, const rast__cedge *b, int64_t Yj,
@@ -229,26 +243,33 @@ static int32_t rast__cov_sign(rast_fill_rule rule, int32_t wb, int32_t dir)
     return wb == 0 ? 1 : (wb + dir == 0) ? -1 : 0;
 }
 
-/* When a, left of b (edge ib) just after t, crosses it before tv (else
- * NONE).  Lines in order at the row's bottom do not cross in between.  The
- * crossing does not depend on t (a pair in order just after t crosses
- * after it), so each edge keeps the last one it computed, for its right
- * neighbour: a vertex event, which sorts the row again, finds most pairs
+/* The first crossing of a, left of b (edge ib), in row j, rounded up
+ * (rast__cov_cross), from the row's top; T or NONE when they do not cross
+ * inside the row (lines in order at the row's bottom do not cross in
+ * between).  The crossing does not depend on where the sweep is (a pair in
+ * order just after t crosses after it), so each edge keeps the last one it
+ * computed, for its right neighbour: a vertex event finds most pairs
  * unchanged. */
+static uint64_t rast__cov_pair_t(rast__cedge *a, int32_t ib, const rast__cedge *b, int64_t Yj,
+                                 int32_t j, const rast__cells *c)
+{
+    if (a->cn != ib || a->crow != j) {
+        int cmp = rast__i128_cmp(a->xT, b->xT);
+        a->ctime = (cmp < 0 || (cmp == 0 && a->rT * b->dy <= b->rT * a->dy))
+                       ? NONE
+                       : rast__cov_cross(a, b, Yj, 0, c);
+        a->cn = ib;
+        a->crow = j;
+    }
+    return a->ctime;
+}
+
+/* When a, left of b (edge ib) just after t, crosses it before tv (else
+ * NONE). */
 static uint64_t rast__cov_pair(rast__cedge *a, int32_t ib, const rast__cedge *b, int64_t Yj,
                                int32_t j, uint64_t t, uint64_t tv, const rast__cells *c)
 {
-    uint64_t tc;
-    if (a->cn == ib && a->crow == j) {
-        tc = a->ctime;
-    } else {
-        int cmp = rast__i128_cmp(a->xT, b->xT);
-        tc = (cmp < 0 || (cmp == 0 && a->rT * b->dy <= b->rT * a->dy)) ? NONE
-                                                                          : rast__cov_cross(a, b, Yj, 0, c);
-        a->cn = ib;
-        a->crow = j;
-        a->ctime = tc;
-    }
+    uint64_t tc = rast__cov_pair_t(a, ib, b, Yj, j, c);
     if (tc <= t) tc = t + 1;
     return tc < tv ? tc : NONE;
 }
@@ -267,20 +288,117 @@ static void rast__cov_resign(rast__cells *c, rast__cedge *e, int64_t Yj, int32_t
     e->sg = s;
 }
 
+/* The ordinates (U from the top of row j, Yj = j P) where e starts and
+ * ends in the row: 0 and T where it passes the row's top and bottom. */
+static void rast__cov_span(const rast__cedge *e, int64_t Yj, const rast__cells *c, uint64_t *t0,
+                           uint64_t *t1)
+{
+    const int64_t rel0 = (int64_t)e->yt - Yj, rel1 = (int64_t)e->yt + e->dy - Yj;
+    *t0 = rel0 <= 0 ? 0 : (uint64_t)rel0 << c->h;
+    *t1 = rel1 >= c->p ? T : (uint64_t)rel1 << c->h;
+}
+
+/* The vertex event at tv (inside the row) without sorting the row again:
+ * the order just after tv is the order just before it (live[0..*pn), the
+ * crossings before tv done) with the edges ending at tv taken out and
+ * those starting there put in (a binary search each, by their exact order
+ * just below tv), when no two edges that stay neighbours cross at or
+ * before tv (their cached crossing, rounded up, comes after tv: then they
+ * are strictly in order at tv and just below it).  Only the edges ending
+ * there, and those whose sign changes (rast__cov_sign: the winding on
+ * their left changed), end a piece at tv; the others' pieces go on.  So an
+ * event costs its own edges and a pass of integer work over the live ones,
+ * not an exact abscissa for each (on a stroke's round joins, most of
+ * "area"'s instructions).  Returns 1 with live[0..*pn), wb, the signs and
+ * the crossings' heap set for the slab up to the next event (*ptvn); 0,
+ * nothing changed but the pair caches, when neighbours meet at tv: the
+ * caller ends every piece there and sorts again. */
+static int rast__cov_event(rast__cells *c, rast__cedge *e, const int32_t *row, int32_t nrow,
+                           rast__sweep *sw, int32_t *pn, int32_t j, rast_fill_rule rule, int32_t w0,
+                           uint64_t tv, uint64_t *ptvn)
+{
+    const int64_t Yj = (int64_t)j * c->p;
+    int32_t *live = sw->live, n = *pn, k, m, prev = -1, wsum = w0;
+    uint64_t t0, t1, tvn = T;
+    for (k = 0; k < n; k++) { /* the neighbours that stay */
+        rast__cedge *ed = &e[live[k]];
+        rast__cov_span(ed, Yj, c, &t0, &t1);
+        if (t1 == tv) continue;
+        if (prev >= 0 && rast__cov_pair_t(&e[prev], live[k], ed, Yj, j, c) <= tv) return 0;
+        prev = live[k];
+    }
+    for (k = 0, m = 0; k < n; k++) { /* the edges ending at tv: their pieces end */
+        rast__cedge *ed = &e[live[k]];
+        rast__cov_span(ed, Yj, c, &t0, &t1);
+        if (t1 != tv) {
+            live[m++] = live[k];
+            continue;
+        }
+        rast__cov_x_end(ed, Yj, ed->tx, tv, c->h);
+        if (ed->sg) rast__cells_piece(c, ed, Yj, ed->x, ed->tx, ed->xn, tv, ed->sg);
+        rast__cov_x_keep(ed, j, tv);
+    }
+    n = m;
+    for (k = 0; k < nrow; k++) { /* those starting at tv go in; the next event */
+        rast__cedge *ed = &e[row[k]];
+        int32_t lo = 0, hi = n;
+        rast__cov_span(ed, Yj, c, &t0, &t1);
+        if (t0 > tv && t0 < tvn) tvn = t0;
+        if (t0 <= tv && t1 > tv && t1 < tvn) tvn = t1;
+        if (t0 != tv) continue;
+        rast__cov_x_at(ed, Yj, tv, c->h, &ed->x, &ed->r); /* its top */
+        ed->rowx = j;
+        ed->tx = tv;
+        while (lo < hi) {
+            const int32_t mid = lo + (hi - lo) / 2;
+            if (rast__cov_before_at(ed, &e[live[mid]], Yj, j, tv, c->h))
+                hi = mid;
+            else
+                lo = mid + 1;
+        }
+        memmove(live + lo + 1, live + lo, (size_t)(n - lo) * sizeof *live);
+        live[lo] = row[k];
+        n++;
+        ed->sg = 2; /* new: its sign below */
+    }
+    for (k = 0; k < n; k++) { /* windings and signs */
+        rast__cedge *ed = &e[live[k]];
+        const int32_t sg = rast__cov_sign(rule, wsum, ed->dir);
+        sw->wb[k] = wsum;
+        if (ed->sg == 2)
+            ed->sg = sg;
+        else
+            rast__cov_resign(c, ed, Yj, j, tv, sg);
+        wsum += ed->dir;
+    }
+    sw->m = n > 0 ? n - 1 : 0;
+    for (k = 0; k < sw->m; k++) {
+        sw->ct[k] = rast__cov_pair(&e[live[k]], live[k + 1], &e[live[k + 1]], Yj, j, tv, tvn, c);
+        sw->h[k] = k;
+        sw->hidx[k] = k;
+    }
+    for (k = sw->m / 2; k-- > 0;) rast__heap_down(sw, k);
+    *pn = n;
+    *ptvn = tvn;
+    return 1;
+}
+
 /* The row's sweep (area): edges row[0..nrow) of row j.  Between vertex
  * events (an edge starting or ending inside the row) the order changes
  * only where neighbours cross: the earliest crossing comes off the heap,
  * the two edges swap, and only they can change sign (the winding number
  * between them is the only one that changes); an edge's piece runs from
- * one change of its sign to the next.  w0: the winding number left of
+ * one change of its sign to the next.  At a vertex event the order is
+ * mended (rast__cov_event), or, where neighbours meet there, every piece
+ * ends and the edges are sorted again.  w0: the winding number left of
  * them all (rast__cov_row_groups sweeps a group of a row alone). */
 static void rast__cov_row_area(rast__cells *c, rast__cedge *e, int32_t *row, int32_t nrow,
                                rast__sweep *sw, int32_t j, rast_fill_rule rule, int32_t w0)
 {
     const int64_t Yj = (int64_t)j * c->p;
     int32_t *live = sw->live;
-    uint64_t t = 0;
-    int32_t k;
+    uint64_t t = 0, tv = T;
+    int32_t k, n = 0, mended = 0; /* mended: live[] by rast__cov_event, not sorted at t */
     for (k = 0; k < nrow; k++) { /* every line at the row's bottom */
         rast__cedge *ed = &e[row[k]];
         if (ed->rowx == j && ed->tx == 0) {
@@ -292,49 +410,52 @@ static void rast__cov_row_area(rast__cells *c, rast__cedge *e, int32_t *row, int
         }
     }
     while (t < T) {
-        uint64_t tv = T;
-        int32_t n = 0, wsum = w0, rest = nrow; /* live[rest..nrow): the others */
-        /* The edges reaching below t, in order; the next start or end. */
-        for (k = 0; k < nrow; k++) {
-            rast__cedge *ed = &e[row[k]];
-            int64_t rel0 = (int64_t)ed->yt - Yj, rel1 = (int64_t)ed->yt + ed->dy - Yj;
-            uint64_t t0 = rel0 <= 0 ? 0 : (uint64_t)rel0 << c->h;
-            uint64_t t1 = rel1 >= c->p ? T : (uint64_t)rel1 << c->h;
-            if (t0 > t || t1 <= t) {
-                if (t0 > t && t0 < tv) tv = t0;
-                live[--rest] = row[k];
-                continue;
-            }
-            if (t1 < tv) tv = t1;
-            if (ed->rowx != j || ed->tx != t) {
-                rast__cov_x_at(ed, Yj, t, c->h, &ed->x, &ed->r);
-                ed->rowx = j;
-                ed->tx = t;
-            }
-            {   /* insertion, by the exact order below t */
-                int32_t m = n++, id = row[k];
-                while (m > 0 && rast__cov_before(ed, &e[live[m - 1]])) {
-                    live[m] = live[m - 1];
-                    m--;
+        int32_t rest = nrow; /* live[rest..nrow): the others */
+        if (!mended) {
+            int32_t wsum = w0;
+            tv = T;
+            n = 0;
+            /* The edges reaching below t, in order; the next start or end. */
+            for (k = 0; k < nrow; k++) {
+                rast__cedge *ed = &e[row[k]];
+                uint64_t t0, t1;
+                rast__cov_span(ed, Yj, c, &t0, &t1);
+                if (t0 > t || t1 <= t) {
+                    if (t0 > t && t0 < tv) tv = t0;
+                    live[--rest] = row[k];
+                    continue;
                 }
-                live[m] = id;
+                if (t1 < tv) tv = t1;
+                if (ed->rowx != j || ed->tx != t) {
+                    rast__cov_x_at(ed, Yj, t, c->h, &ed->x, &ed->r);
+                    ed->rowx = j;
+                    ed->tx = t;
+                }
+                {   /* insertion, by the exact order below t */
+                    int32_t m = n++, id = row[k];
+                    while (m > 0 && rast__cov_before(ed, &e[live[m - 1]])) {
+                        live[m] = live[m - 1];
+                        m--;
+                    }
+                    live[m] = id;
+                }
             }
+            /* Windings and signs; every piece starts at t. */
+            for (k = 0; k < n; k++) {
+                rast__cedge *ed = &e[live[k]];
+                sw->wb[k] = wsum;
+                ed->sg = rast__cov_sign(rule, wsum, ed->dir);
+                wsum += ed->dir;
+            }
+            /* The neighbours' crossings before tv, in a heap. */
+            sw->m = n > 0 ? n - 1 : 0;
+            for (k = 0; k < sw->m; k++) {
+                sw->ct[k] = rast__cov_pair(&e[live[k]], live[k + 1], &e[live[k + 1]], Yj, j, t, tv, c);
+                sw->h[k] = k;
+                sw->hidx[k] = k;
+            }
+            for (k = sw->m / 2; k-- > 0;) rast__heap_down(sw, k);
         }
-        /* Windings and signs; every piece starts at t. */
-        for (k = 0; k < n; k++) {
-            rast__cedge *ed = &e[live[k]];
-            sw->wb[k] = wsum;
-            ed->sg = rast__cov_sign(rule, wsum, ed->dir);
-            wsum += ed->dir;
-        }
-        /* The neighbours' crossings before tv, in a heap. */
-        sw->m = n > 0 ? n - 1 : 0;
-        for (k = 0; k < sw->m; k++) {
-            sw->ct[k] = rast__cov_pair(&e[live[k]], live[k + 1], &e[live[k + 1]], Yj, j, t, tv, c);
-            sw->h[k] = k;
-            sw->hidx[k] = k;
-        }
-        for (k = sw->m / 2; k-- > 0;) rast__heap_down(sw, k);
         while (sw->m > 0 && sw->ct[sw->h[0]] < tv) {
             int32_t p = sw->h[0], ia = live[p], ib = live[p + 1];
             uint64_t tc = sw->ct[p];
@@ -350,6 +471,15 @@ static void rast__cov_row_area(rast__cells *c, rast__cedge *e, int32_t *row, int
             if (p + 2 < n)
                 rast__heap_set(sw, p + 1, rast__cov_pair(a, live[p + 2], &e[live[p + 2]], Yj, j, tc, tv, c));
         }
+        if (tv < T) { /* a vertex event: mended where it can be */
+            uint64_t tvn;
+            if (rast__cov_event(c, e, row, nrow, sw, &n, j, rule, w0, tv, &tvn)) {
+                mended = 1;
+                t = tv;
+                tv = tvn;
+                continue;
+            }
+        }
         /* The open pieces end at tv. */
         for (k = 0; k < n; k++) {
             rast__cedge *ed = &e[live[k]];
@@ -358,9 +488,22 @@ static void rast__cov_row_area(rast__cells *c, rast__cedge *e, int32_t *row, int
             rast__cov_x_keep(ed, j, tv);
         }
         /* The row's edges in this order, so that the next sort (here, or
-         * in the next row) has little to do. */
-        memcpy(row, live, (size_t)n * sizeof *row);
-        for (k = rest; k < nrow; k++) row[n + k - rest] = live[k];
+         * in the next row) has little to do: when live[] came from a sort
+         * at t, with the others after them; else the edges reaching the
+         * row's bottom (all live in its last slab) and the others. */
+        if (!mended) {
+            memcpy(row, live, (size_t)n * sizeof *row);
+            for (k = rest; k < nrow; k++) row[n + k - rest] = live[k];
+        } else if (tv == T) {
+            int32_t m = n;
+            for (k = 0; k < nrow && m < nrow; k++) {
+                uint64_t t0, t1;
+                rast__cov_span(&e[row[k]], Yj, c, &t0, &t1);
+                if (t1 < T) live[m++] = row[k];
+            }
+            if (m == nrow && k == nrow) memcpy(row, live, (size_t)nrow * sizeof *row);
+        }
+        mended = 0;
         t = tv;
     }
 }

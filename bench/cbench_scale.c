@@ -18,6 +18,12 @@
  *                crossings x 4
  *   meshrings N  a mesh of N cells (40 across, 12 px), each cell two
  *                triangles given as two rings of one polygon: rings x 2
+ *   @FILE        a scene bench/dump_scene.py wrote (a family of
+ *                bench/families.py at a seed and size <= 1024; N is not
+ *                read): a polygon in one call, a triangle batch in one call
+ *                (rast_triangles_coverage; binary: rast_fill_triangles), or
+ *                the "loop" family's call a ring (rast_fill_polygon_aa into
+ *                a gray8 canvas; binary: rast_fill_polygon), its rule
  * Methods: area, accumulate, ss4 (rast_polygon_coverage, uint8), binary
  * (rast_fill_polygon, AET, gray8); the triangle families also as a batch:
  * tarea, taccumulate, tss4 (rast_triangles_coverage), tbinary
@@ -38,6 +44,11 @@
 
 static rast_point *pts;
 static uint32_t *sizes;
+/* a scene file's: 0 polygon, 1 triangles, 2 a call a ring (-1: a family
+ * of this file); its rule and canvas size */
+static int fkind = -1;
+static rast_fill_rule frule = RAST_RULE_NONZERO;
+static int32_t fsize = SIZE;
 static unsigned char img[SIZE * SIZE];
 static void *scratch;
 static size_t scratch_bytes;
@@ -68,6 +79,47 @@ static void ellipse(uint32_t *at, uint32_t *nr, double cx, double cy, double rx,
     }
     *at += n;
     sizes[(*nr)++] = n;
+}
+
+static uint32_t u32(FILE *f)
+{
+    unsigned char b[4];
+    if (fread(b, 1, 4, f) != 4) {
+        fprintf(stderr, "short scene file\n");
+        exit(2);
+    }
+    return (uint32_t)b[0] | (uint32_t)b[1] << 8 | (uint32_t)b[2] << 16 | (uint32_t)b[3] << 24;
+}
+
+/* A scene file (bench/dump_scene.py) into pts, sizes, fkind, frule, fsize. */
+static void scene_file(const char *path, uint32_t *npoints, uint32_t *nrings)
+{
+    FILE *f = fopen(path, "rb");
+    char magic[4];
+    uint32_t i, nr, np;
+    if (!f || fread(magic, 1, 4, f) != 4 || memcmp(magic, "RSC1", 4)) {
+        fprintf(stderr, "%s: not a scene file\n", path);
+        exit(2);
+    }
+    fkind = (int)u32(f);
+    frule = u32(f) ? RAST_RULE_EVENODD : RAST_RULE_NONZERO;
+    fsize = (int32_t)u32(f);
+    nr = u32(f);
+    np = u32(f);
+    if (fsize <= 0 || fsize > SIZE || fkind < 0 || fkind > 2) {
+        fprintf(stderr, "%s: size %d or kind %d not taken\n", path, (int)fsize, fkind);
+        exit(2);
+    }
+    pts = (rast_point *)malloc((np + 1) * sizeof *pts);
+    sizes = (uint32_t *)malloc((nr + 1) * sizeof *sizes);
+    for (i = 0; i < nr; i++) sizes[i] = u32(f);
+    for (i = 0; i < np; i++) {
+        pts[i].x = (int32_t)u32(f);
+        pts[i].y = (int32_t)u32(f);
+    }
+    fclose(f);
+    *npoints = np;
+    *nrings = nr;
 }
 
 /* The family's geometry: *npoints vertices, *nrings rings (a triangle
@@ -148,6 +200,65 @@ static void room(size_t need)
     }
 }
 
+/* A scene file's call(s) of method m (0 .. 3), into img (fsize x fsize) */
+static rast_status draw_file(int m, uint32_t npoints, uint32_t nrings)
+{
+    rast_rect clip;
+    rast_target t;
+    rast_polygon poly;
+    size_t need = 0;
+    const unsigned char one = 255;
+    uint32_t k, at = 0;
+    rast_status st = RAST_OK;
+    clip.x0 = clip.y0 = 0;
+    clip.x1 = clip.y1 = fsize;
+    memset(img, 0, sizeof img);
+    rast_target_init(&t, img, fsize, fsize, fsize, RAST_FORMAT_GRAY8);
+    if (m == 3) {
+        rast_fill_opts o = {RAST_ALGO_AET, RAST_RULE_NONZERO, 8, RAST_SAMPLE_CENTER, 0, 0};
+        o.rule = frule;
+        rast_scratch_size(&o, npoints, fsize, fsize, &need);
+        room(need);
+        if (fkind == 1) {
+            rast_tri_opts to = {RAST_TRI_EDGE, 8, RAST_SAMPLE_CENTER, 0, 0};
+            rast_tri_scratch_size(&to, fsize, fsize, &need);
+            room(need ? need : 16);
+            return rast_fill_triangles(&t, pts, npoints / 3, &to, &one, scratch, scratch_bytes);
+        }
+        for (k = 0; k < (fkind == 2 ? nrings : 1) && st == RAST_OK; k++) {
+            poly.points = pts + at;
+            poly.ring_sizes = fkind == 2 ? sizes + k : sizes;
+            poly.nrings = fkind == 2 ? 1 : nrings;
+            at += fkind == 2 ? sizes[k] : 0;
+            st = rast_fill_polygon(&t, &poly, &o, &one, scratch, scratch_bytes);
+        }
+        return st;
+    } else {
+        rast_coverage_opts o = {aa[m & 3], RAST_RULE_NONZERO, 8, RAST_SAMPLE_CENTER};
+        o.rule = frule;
+        rast_coverage_scratch_size(&o, npoints, fsize, fsize, &need);
+        room(need);
+        if (fkind == 1)
+            return rast_triangles_coverage(pts, npoints / 3, &o, &clip, RAST_COVERAGE_U8, img, (size_t)fsize,
+                                           scratch, scratch_bytes);
+        if (fkind == 0) {
+            poly.points = pts;
+            poly.ring_sizes = sizes;
+            poly.nrings = nrings;
+            return rast_polygon_coverage(&poly, &o, &clip, RAST_COVERAGE_U8, img, (size_t)fsize, scratch,
+                                         scratch_bytes);
+        }
+        for (k = 0; k < nrings && st == RAST_OK; k++) {
+            poly.points = pts + at;
+            poly.ring_sizes = sizes + k;
+            poly.nrings = 1;
+            at += sizes[k];
+            st = rast_fill_polygon_aa(&t, &poly, &o, &one, scratch, scratch_bytes);
+        }
+        return st;
+    }
+}
+
 /* One call of method m on the scene (the function callgrind counts). */
 __attribute__((noinline)) static rast_status draw(int m, uint32_t npoints, uint32_t nrings)
 {
@@ -157,6 +268,7 @@ __attribute__((noinline)) static rast_status draw(int m, uint32_t npoints, uint3
     poly.points = pts;
     poly.ring_sizes = sizes;
     poly.nrings = nrings;
+    if (fkind >= 0) return draw_file(m, npoints, nrings);
     if (m == 3 || m == 7) {
         rast_target t;
         const unsigned char one = 255;
@@ -210,8 +322,11 @@ int main(int argc, char **argv)
         return 2;
     }
     reps = argc > 4 ? atoi(argv[4]) : 1;
-    scene(argv[1], n, &npoints, &nrings);
-    if (m >= 4 && strstr(argv[1], "tris") == NULL) {
+    if (argv[1][0] == '@')
+        scene_file(argv[1] + 1, &npoints, &nrings);
+    else
+        scene(argv[1], n, &npoints, &nrings);
+    if (m >= 4 && (fkind >= 0 || strstr(argv[1], "tris") == NULL)) {
         fprintf(stderr, "%s: a triangle family only\n", argv[3]);
         return 2;
     }

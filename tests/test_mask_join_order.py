@@ -3,9 +3,8 @@ bit for bit:
 
 - rows on which many edges start at once, in no order across the row or
   nearly in order, row after row: the AET sorts a row's new edges by
-  insertion within a budget, heapsorts past it, and after a row that ran
-  out of its budget heapsorts the next rows of many new edges at once
-  before trying the insertion again (csrc/src/base/aet.h, rast__aet_join);
+  insertion within a budget and heapsorts past it (csrc/src/base/aet.h,
+  rast__aet_join);
 - a list of one ring ([ring]), which polygon_mask hands to C as the ring
   itself, as float64, int32 and an unaligned float64 view (which must
   take the general path: the glue reads aligned doubles).
@@ -25,9 +24,8 @@ SHAPE = (40, 40)
 def rows_of_teeth(draw):
     """Triangles hanging from a few rows, 9-11 from each (so that more
     than 16 edges start on the row), each row's triangles in a random
-    order or left to right; 2-11 such rows (more than the 8 rows the AET
-    heapsorts at once after a row out of order, so that it tries the
-    insertion again)."""
+    order or left to right; 2-11 such rows, so that rows sorted by
+    insertion and rows past its budget follow each other."""
     H, W = SHAPE
     nrows = draw(st.integers(2, 11))
     tops = draw(st.lists(st.integers(0, 4 * (H - 2)), min_size=nrows, max_size=nrows))

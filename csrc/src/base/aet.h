@@ -119,41 +119,25 @@ static inline int rast__aet_sort_within(rast__edge *e, int32_t n, int32_t budget
     return 1;
 }
 
-/* Rows of many new edges that go straight to the heapsort after one
- * whose edges were out of order (see rast__aet_join). */
-#define RAST__AET_SKIP 8
-
 /* Sort the k edges add[] by column (insertion; for many, insertion with
  * a budget and a heapsort past it, which bounds the worst case) and merge
  * them into the n sorted ones of aet[] (room for n + k), from the back;
- * an edge goes after active ones of equal column.  Returns n + k.
- * `skip` is the walk's memory of the rows before: a scene whose rows come
- * in no order (a map's countries across a row) spent the insertion's
- * budget on every row before heapsorting, so after a row that ran out of
- * it the next RAST__AET_SKIP rows of many new edges heapsort at once,
- * and then the insertion is tried again (a scene may change its order
- * down the canvas). */
-static inline int32_t rast__aet_join(rast__edge *aet, int32_t n, rast__edge *add, int32_t k,
-                                     int32_t *skip)
+ * an edge goes after active ones of equal column.  Returns n + k. */
+static inline int32_t rast__aet_join(rast__edge *aet, int32_t n, rast__edge *add, int32_t k)
 {
     const int32_t total = n + k;
     int32_t m = total;
 #if defined(__OPTIMIZE_SIZE__)
     /* a build for size (firmware): no more code than the plain heapsort */
-    (void)skip;
     if (k > 16)
         rast__aet_heapsort(add, k);
     else
         rast__aet_sort(add, k);
 #else
-    if (k <= 16) {
+    if (k <= 16)
         rast__aet_sort(add, k); /* few: insertion is quicker */
-    } else if (*skip > 0) {
-        (*skip)--; /* the rows before were in no order */
-        rast__aet_heapsort(add, k);
-    } else if (!rast__aet_sort_within(add, k, 4 * k)) { /* nearly sorted? */
-        *skip = RAST__AET_SKIP;
-    }
+    else
+        (void)rast__aet_sort_within(add, k, 4 * k); /* nearly sorted? */
 #endif
     for (n--, k--; k >= 0;) {
         if (n >= 0 && aet[n].x > add[k].x)
@@ -175,7 +159,7 @@ static inline void rast__aet_sweep(rast__edge *edges, rast__edge *aet, int32_t *
                                    rast_fill_rule rule, rast__aet_span_fn span,
                                    rast__aet_order_fn order, void *user)
 {
-    int32_t j, first, nactive = 0, k, run = 0, skip = 0;
+    int32_t j, first, nactive = 0, k, run = 0;
     /* the first row after the current one that an active edge does not
      * cross: only then is the AET compacted (an edge ends on few rows, and
      * checking every edge on every row for it cost an eighth of a walk) */
@@ -198,7 +182,7 @@ static inline void rast__aet_sweep(rast__edge *edges, rast__edge *aet, int32_t *
         if (last != first) {
             for (k = first; k < last; k++)
                 if (edges[k].end < soonest) soonest = edges[k].end;
-            nactive = rast__aet_join(aet, nactive, &edges[first], last - first, &skip);
+            nactive = rast__aet_join(aet, nactive, &edges[first], last - first);
             first = last;
         }
         if (nactive == 0) continue;

@@ -726,10 +726,14 @@ class Canvas:
           one colour per triangle (flat shading);
         - `vertex_colors`: an (N, 3, C) int array, a colour per vertex,
           interpolated over each triangle (Gouraud).  C is 1 (a level, used
-          for R, G and B), 3 (R, G, B; alpha 255) or 4 (R, G, B, A: rgba8888
-          stores the interpolated alpha, nothing is blended); gray8 and
-          mono1 take C = 1.  Levels are 0..255 whatever the format: rgb565
-          keeps their top bits, mono1 is on iff the level is >= 128.
+          for R, G and B), 3 (R, G, B; alpha 255) or 4 (R, G, B, A); gray8
+          takes 1 or 2 (L, A), mono1 1.  Levels are 0..255 whatever the
+          format: rgb565 keeps their top bits, mono1 is on iff the level
+          is >= 128.  rgba8888 stores the interpolated alpha; on gray8,
+          rgb888 and rgb565 an alpha is applied: each pixel's
+          interpolated colour blended source-over with its interpolated
+          alpha (times `opacity`, also on rgba8888), binary or with `aa`,
+          as docs/opacity.md "Shaded fills" states (no `depth` then).
 
         `shading`: "gouraud" (the default: vertex colours interpolated) or
         "flat" (each triangle in its first vertex's colour).  `precision`

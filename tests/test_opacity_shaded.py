@@ -292,3 +292,61 @@ def test_c_errors_before_writing():
     assert lib.rast_fill_triangles_shaded_blend(t, tris, 1, cols, topts, sh, b, scratch,
                                                 len(scratch)) == lib.RAST_OK
     assert buf[0, 0] == over("gray8", 9, (200, 200, 200, 200), 128, 255)
+
+
+def over_premultiplied(d, s, o, c):
+    """Premultiplied rgba8888 pixel d after the colour s (straight R, G, B,
+    A) at opacity o, coverage c (rastrum.h rast_blend_opts): each channel
+    the nearest level to (v A + d (255 - A)) / 255 with v the straight
+    colour channel, alpha with v = 255."""
+    A = _near(F(int(s[3]) * o * c, 255 * 255))
+    if A == 0:
+        return d
+    src = [int(s[0]), int(s[1]), int(s[2]), 255]
+    return [_near(F(src[k] * A + int(d[k]) * (255 - A), 255)) for k in range(4)]
+
+
+@settings(max_examples=S_.examples(15), deadline=None)
+@given(data=st.data(), o=st.integers(0, 255), aa=st.booleans(), seed=st.integers(0, 2 ** 32 - 1))
+def test_c_premultiplied_rgba8888(data, o, aa, seed):
+    """The C entries with premultiplied = 1 (the Canvas composites
+    straight): the reference colours, blended premultiplied."""
+    from rastrum._native import ffi, lib
+
+    h, w = 5, 6
+    pts = data.draw(st.lists(st.tuples(st.integers(-256, 7 * 256), st.integers(-256, 6 * 256)),
+                             min_size=3, max_size=3), label="pts")
+    vc = np.array(data.draw(st.lists(st.integers(0, 255), min_size=12, max_size=12), label="vc"),
+                  np.int64).reshape(1, 3, 4)
+    rng = np.random.default_rng(seed)
+    buf = rng.integers(0, 256, (h, w, 4), dtype=np.uint8)
+    before = buf.copy()
+    t = ffi.new("rast_target *", {"pixels": ffi.from_buffer(buf), "width": w, "height": h, "stride": 4 * w,
+                                  "format": lib.RAST_FORMAT_RGBA8888,
+                                  "clip": {"x0": 0, "y0": 0, "x1": w, "y1": h}})
+    tris = ffi.new("rast_point[3]", [{"x": x, "y": y} for x, y in pts])
+    cols = ffi.new("uint8_t[12]", [int(v) for v in vc.ravel()])
+    sh = ffi.new("rast_shade_opts *", {"precision": lib.RAST_PRECISION_EXACT})
+    b = ffi.new("rast_blend_opts *", {"opacity": o, "premultiplied": 1})
+    scratch = ffi.new("unsigned char[]", 1 << 16)
+    tri = np.array([[(x / 256, y / 256) for x, y in pts]])
+    if aa:
+        copts = ffi.new("rast_coverage_opts *", {"method": lib.RAST_AA_AREA, "subpixel_bits": 8,
+                                                 "sample": lib.RAST_SAMPLE_CENTER})
+        assert lib.rast_fill_triangles_shaded_aa_blend(t, tris, 1, cols, copts, sh, b, scratch,
+                                                       len(scratch)) == lib.RAST_OK
+        cov = checked_coverage(tri, (h, w), "area", 8, 0.5)
+        ref = reference_colors(tri, vc, (h, w), 8, 0.5, "gouraud", cov)
+    else:
+        topts = ffi.new("rast_tri_opts *", {"algorithm": lib.RAST_TRI_EDGE, "subpixel_bits": 8,
+                                            "sample": lib.RAST_SAMPLE_CENTER})
+        assert lib.rast_fill_triangles_shaded_blend(t, tris, 1, cols, topts, sh, b, scratch,
+                                                    len(scratch)) == lib.RAST_OK
+        cov = np.full((h, w), 255)
+        ref, _ = oracle_shade.shade(tri, vc, (h, w))
+    want = before.astype(np.int64)
+    for j in range(h):
+        for i in range(w):
+            if ref[j, i, 0] >= 0 and cov[j, i]:
+                want[j, i] = over_premultiplied(want[j, i], ref[j, i], o, int(cov[j, i]))
+    np.testing.assert_array_equal(buf, want)

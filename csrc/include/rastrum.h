@@ -1346,6 +1346,40 @@ RAST_API rast_status rast_fill_triangles_shaded_aa(const rast_target *target,
                                                    const rast_shade_opts *shade,
                                                    void *scratch, size_t scratch_bytes);
 
+/* ---- shaded fills with opacity (blend.c; docs/opacity.md) -------------------
+ * rast_fill_triangles_shaded (no depth) and rast_fill_triangles_shaded_aa
+ * with each pixel's colour blended source-over instead of stored: the same
+ * pixels, and at each the same interpolated colour, every channel (alpha
+ * too, on every format) interpolated as those interpolate R, G and B.
+ * With s that colour (RGB565: its top bits, as rast_pack_color), alpha its
+ * interpolated alpha level, o = blend->opacity and c the pixel's coverage
+ * level (255 for the binary fill), the pixel is mixed exactly as
+ * rast_blend_coverage mixes a colour s of alpha `alpha` at level c (one
+ * rounding to A = round(alpha o c / 255^2), then each channel; straight or
+ * premultiplied RGBA8888 as blend->premultiplied; A = 0 leaves the pixel).
+ * blend NULL: o = 255, straight.  o = 255 with alpha 255 at every vertex
+ * gives the stored fill's pixels on GRAY8, RGB888 and RGB565 (and on
+ * RGBA8888 over opaque pixels).  Only the four formats of
+ * rast_blend_coverage.  Scratch as rast_fill_triangles_shaded /
+ * rast_shaded_aa_scratch_size.  Errors, all before anything is written:
+ * those of rast_blend_coverage's target and options (RAST_E_FORMAT for a
+ * format other than the four, RAST_E_ARG for o outside 0..255 or
+ * premultiplied not 0 or 1), then those of the unblended call. */
+RAST_API rast_status rast_fill_triangles_shaded_blend(const rast_target *target,
+                                                      const rast_point *tris, uint32_t ntris,
+                                                      const uint8_t *colors,
+                                                      const rast_tri_opts *opts,
+                                                      const rast_shade_opts *shade,
+                                                      const rast_blend_opts *blend,
+                                                      void *scratch, size_t scratch_bytes);
+RAST_API rast_status rast_fill_triangles_shaded_aa_blend(const rast_target *target,
+                                                         const rast_point *tris, uint32_t ntris,
+                                                         const uint8_t *colors,
+                                                         const rast_coverage_opts *opts,
+                                                         const rast_shade_opts *shade,
+                                                         const rast_blend_opts *blend,
+                                                         void *scratch, size_t scratch_bytes);
+
 /* ==========================================================================
  * Scenes, band by band
  * ========================================================================== */

@@ -22,6 +22,7 @@ typedef struct rastpy_cov_dest {
     const void *pixel;
     const uint8_t *colors;
     const rast_shade_opts *shade;
+    const rast_blend_opts *blend; /* shaded: blended (rast_fill_triangles_shaded_aa_blend) */
 } rastpy_cov_dest;
 
 static long rastpy_coverage(const rastpy_cov_dest *d, const double *xy, uint32_t npoints,
@@ -66,7 +67,10 @@ static long rastpy_coverage(const rastpy_cov_dest *d, const double *xy, uint32_t
     poly.points = (const rast_point *)(void *)pts;
     poly.ring_sizes = ring_sizes ? ring_sizes : &npoints;
     poly.nrings = ring_sizes ? nrings : 1;
-    if (d->colors)
+    if (d->colors && d->blend)
+        st = rast_fill_triangles_shaded_aa_blend(d->target, poly.points, npoints / 3, d->colors,
+                                                 opts, d->shade, d->blend, scratch, need);
+    else if (d->colors)
         st = rast_fill_triangles_shaded_aa(d->target, poly.points, npoints / 3, d->colors, opts,
                                            d->shade, scratch, need);
     else if (d->target && triangles)
@@ -110,6 +114,7 @@ static rastpy_cov_dest rastpy_array(void *out, int32_t height, int32_t width, in
     d.pixel = NULL;
     d.colors = NULL;
     d.shade = NULL;
+    d.blend = NULL;
     return d;
 }
 
@@ -165,5 +170,21 @@ long rastpy_fill_triangles_shaded_aa(const rast_target *target, const double *xy
     d = rastpy_paint(target, NULL);
     d.colors = colors;
     d.shade = shade;
+    return rastpy_coverage(&d, xy, 3 * ntris, NULL, 0, 1, opts, sc);
+}
+
+/* rastpy_fill_triangles_shaded_aa blended (opacity, the colours' alpha). */
+long rastpy_fill_triangles_shaded_aa_blend(const rast_target *target, const double *xy,
+                                           uint32_t ntris, const uint8_t *colors,
+                                           const rast_coverage_opts *opts,
+                                           const rast_shade_opts *shade,
+                                           const rast_blend_opts *blend, rastpy_scratch *sc)
+{
+    rastpy_cov_dest d;
+    if (!target || !colors || !shade) return RAST_E_NULL;
+    d = rastpy_paint(target, NULL);
+    d.colors = colors;
+    d.shade = shade;
+    d.blend = blend;
     return rastpy_coverage(&d, xy, 3 * ntris, NULL, 0, 1, opts, sc);
 }

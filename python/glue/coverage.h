@@ -38,6 +38,11 @@ long rastpy_fill_triangles_aa(const rast_target *target, const double *xy, uint3
 long rastpy_fill_triangles_shaded_aa(const rast_target *target, const double *xy, uint32_t ntris,
                                      const uint8_t *colors, const rast_coverage_opts *opts,
                                      const rast_shade_opts *shade, rastpy_scratch *sc);
+long rastpy_fill_triangles_shaded_aa_blend(const rast_target *target, const double *xy,
+                                           uint32_t ntris, const uint8_t *colors,
+                                           const rast_coverage_opts *opts,
+                                           const rast_shade_opts *shade,
+                                           const rast_blend_opts *blend, rastpy_scratch *sc);
 /* The n values of buf, a in units of 2^-62 as uint64_t (the
  * RAST_COVERAGE_FIX62 output), turned in place into the double a: each
  * integer rounded to the nearest double once, then scaled by 2^-62

@@ -263,7 +263,7 @@ long rastpy_fill_ring(const rast_target *target, const double *xy, uint32_t npoi
 static long rastpy_tris(const rast_target *target, const double *xy, uint32_t ntris,
                         const rast_tri_opts *opts, const void *pixel,
                         const rast_shade_opts *shade, const uint8_t *colors,
-                        const int32_t *z, int32_t *zbuf)
+                        const int32_t *z, int32_t *zbuf, const rast_blend_opts *blend)
 {
     rast_status st;
     size_t need, n = 3 * (size_t)ntris;
@@ -280,7 +280,10 @@ static long rastpy_tris(const rast_target *target, const double *xy, uint32_t nt
         free(mem);
         return bad + 1;
     }
-    st = shade ? rast_fill_triangles_shaded(target, (const rast_point *)(void *)mem, ntris, colors, z,
+    if (shade && blend)
+        st = rast_fill_triangles_shaded_blend(target, (const rast_point *)(void *)mem, ntris,
+                                              colors, opts, shade, blend, mem + head, need);
+    else st = shade ? rast_fill_triangles_shaded(target, (const rast_point *)(void *)mem, ntris, colors, z,
                                             zbuf, opts, shade, mem + head, need)
                : rast_fill_triangles(target, (const rast_point *)(void *)mem, ntris, opts, pixel,
                                      mem + head, need);
@@ -292,7 +295,7 @@ long rastpy_fill_triangles(const rast_target *target, const double *xy,
                            uint32_t ntris, const rast_tri_opts *opts,
                            const void *pixel)
 {
-    return rastpy_tris(target, xy, ntris, opts, pixel, NULL, NULL, NULL, NULL);
+    return rastpy_tris(target, xy, ntris, opts, pixel, NULL, NULL, NULL, NULL, NULL);
 }
 
 long rastpy_fill_triangles_shaded(const rast_target *target, const double *xy,
@@ -301,7 +304,18 @@ long rastpy_fill_triangles_shaded(const rast_target *target, const double *xy,
                                   const rast_tri_opts *opts,
                                   const rast_shade_opts *shade)
 {
-    return rastpy_tris(target, xy, ntris, opts, NULL, shade, colors, z, zbuf);
+    return rastpy_tris(target, xy, ntris, opts, NULL, shade, colors, z, zbuf, NULL);
+}
+
+/* rastpy_fill_triangles_shaded blended, without depth
+ * (rast_fill_triangles_shaded_blend). */
+long rastpy_fill_triangles_shaded_blend(const rast_target *target, const double *xy,
+                                        uint32_t ntris, const uint8_t *colors,
+                                        const rast_tri_opts *opts, const rast_shade_opts *shade,
+                                        const rast_blend_opts *blend)
+{
+    if (!shade) return RAST_E_NULL;
+    return rastpy_tris(target, xy, ntris, opts, NULL, shade, colors, NULL, NULL, blend);
 }
 
 /* rastpy_poly with vertex colours: rast_fill_polygon_gouraud. */

@@ -45,6 +45,10 @@ long rastpy_fill_triangles_shaded(const rast_target *target, const double *xy,
                                   const int32_t *z, int32_t *zbuf,
                                   const rast_tri_opts *opts,
                                   const rast_shade_opts *shade);
+long rastpy_fill_triangles_shaded_blend(const rast_target *target, const double *xy,
+                                        uint32_t ntris, const uint8_t *colors,
+                                        const rast_tri_opts *opts, const rast_shade_opts *shade,
+                                        const rast_blend_opts *blend);
 int rastpy_gil_held(void);
 long rastpy_fill_polygon_gouraud(const rast_target *target, const double *xy,
                                  uint32_t npoints, const uint32_t *ring_sizes,

@@ -338,7 +338,7 @@ class Canvas:
         return self._format
 
     def _fill_aa(self, geometry, color, aa, rule, subpixel_bits, sample_offset, entry, *,
-                 vertex_colors=None, depth=None, path_tolerance=None, **binary_only):
+                 vertex_colors=None, depth=None, path_tolerance=None, shade_blend=None, **binary_only):
         """An anti-aliased fill (``aa=`` not None) of a polygon's rings, or of
         a checked (N, 3, 2) triangle batch for the triangle entries."""
         if depth is not None:
@@ -357,7 +357,7 @@ class Canvas:
             raise InputError("a label canvas holds labels, which do not blend: aa=None")
         if vertex_colors is not None:
             self._fill_shaded_aa(geometry, color, vertex_colors, shading, precision, aa, opts,
-                                 entry)
+                                 entry, shade_blend)
             return
         if color is None:
             raise InputError("%s needs color" % entry)
@@ -373,9 +373,12 @@ class Canvas:
             _coverage.fill_triangles_aa(self._writable(), geometry, pixel, opts,
                                         "tri" if entry == "Canvas.fill_triangle" else "tris")
 
-    def _fill_shaded_aa(self, batch, color, vertex_colors, shading, precision, aa, opts, entry):
+    def _fill_shaded_aa(self, batch, color, vertex_colors, shading, precision, aa, opts, entry,
+                        shade_blend=None):
         """Gouraud (or flat) colour times the batch's coverage
-        (rast_fill_triangles_shaded_aa)."""
+        (rast_fill_triangles_shaded_aa); shade_blend: (RGBA vertex colours,
+        rast_blend_opts) from _shaded_blend, blended source-over
+        (rast_fill_triangles_shaded_aa_blend, docs/opacity.md)."""
         if color is not None:
             raise InputError("%s takes exactly one of color and vertex_colors" % entry)
         precision = _core.shading_precision(shading, precision)
@@ -389,10 +392,53 @@ class Canvas:
         if entry == "Canvas.fill_triangle":
             vc = np.asarray(vertex_colors)
             vertex_colors = vc[None] if vc.ndim == 2 else vc
-        colors = _shading.rgba(vertex_colors, batch.shape[0], True, self._format, channels)
+        if shade_blend is not None:
+            colors, blend = shade_blend
+        else:
+            colors, blend = _shading.rgba(vertex_colors, batch.shape[0], True, self._format, channels), None
         _coverage.fill_triangles_shaded_aa(self._writable(), batch, colors, opts,
                                            _shading.shade_opts(precision, 16),
-                                           "tri" if entry == "Canvas.fill_triangle" else "tris")
+                                           "tri" if entry == "Canvas.fill_triangle" else "tris", blend)
+
+    def _shaded_blend(self, batch, vertex_colors, opacity, depth, entry):
+        """None for a shaded fill that stores its colours (no `opacity`, and
+        vertex colours without alpha or on rgba8888, which stores it); else
+        (RGBA vertex colours as uint8 (N, 3, 4), ``rast_blend_opts *`` or
+        None when nothing can blend: opacity 1, every alpha 255, a format
+        without alpha), checked (docs/opacity.md "Shaded fills")."""
+        fmt = self._format
+        if opacity is None:
+            if fmt not in ("gray8", "rgb888", "rgb565"):
+                return None
+            try:
+                a = np.asarray(vertex_colors)
+            except (TypeError, ValueError):
+                return None
+            if a.ndim != 3 or a.shape[-1] != (2 if fmt == "gray8" else 4):
+                return None
+            level = 255
+        else:
+            level = _opacity_level(opacity, entry)
+            if fmt not in _BLEND_FORMATS:
+                raise InputError("%s: opacity is for gray8, rgb888, rgb565 and rgba8888 canvases, not %s"
+                                 % (entry, fmt))
+        if depth is not None:
+            raise InputError("%s: depth is for shaded fills that store their colours; with opacity or "
+                             "vertex alpha leave it out (draw the batch back to front)" % entry)
+        n = batch.shape[0]
+        colors = None
+        if fmt == "gray8":  # (L, A) per vertex, as fill_polygon's gray8 colour
+            try:
+                a = np.asarray(vertex_colors)
+            except (TypeError, ValueError):
+                a = None
+            if a is not None and a.dtype.kind in "iu" and a.shape == (n, 3, 2):
+                colors = _shading.to_rgba(a[..., [0, 0, 0, 1]], "vertex_colors")
+        if colors is None:
+            colors = _shading.rgba(vertex_colors, n, True, fmt, _CHANNELS[fmt])
+        if level == 255 and fmt != "rgba8888" and bool(np.all(colors[..., 3] == 255)):
+            return colors, None  # opaque: the stored fill writes the same pixels
+        return colors, ffi.new("rast_blend_opts *", {"opacity": level, "premultiplied": 0})
 
     def _blend(self, entry, geometry, blend, aa, rule, subpixel_bits, sample_offset, algorithm, rounding,
                boundary, vertex_colors, depth=None):
@@ -619,6 +665,18 @@ class Canvas:
         :meth:`fill_polygon`.  `aa`: anti-aliased, as :meth:`fill_triangles`;
         `opacity` and a colour's alpha as :meth:`fill_polygon`.
         """
+        if vertex_colors is not None and color is None and gamma is None and self._format != "label":
+            vc = _core.as_numpy(vertex_colors)
+            alpha = self._format in ("gray8", "rgb888", "rgb565") and np.ndim(vc) == 2 and \
+                np.shape(vc)[-1] == (2 if self._format == "gray8" else 4)
+            if opacity is not None or alpha:  # blended: fill_triangles' shaded blend
+                batch = _triangles.tris_f64(tri, single=True)
+                vc = np.asarray(vc)
+                self.fill_triangles(batch, vertex_colors=vc[None] if vc.ndim == 2 else vc, shading=shading,
+                                    precision=precision, fraction_bits=fraction_bits, algorithm=algorithm,
+                                    subpixel_bits=subpixel_bits, sample_offset=sample_offset,
+                                    rounding=rounding, boundary=boundary, aa=aa, opacity=opacity)
+                return
         if opacity is not None or gamma is not None or (color is not None and type(color) is not int):
             blend, color = _blend_args(color, opacity, self._format, "Canvas.fill_triangle", gamma)
             if blend is not None:
@@ -668,10 +726,14 @@ class Canvas:
           one colour per triangle (flat shading);
         - `vertex_colors`: an (N, 3, C) int array, a colour per vertex,
           interpolated over each triangle (Gouraud).  C is 1 (a level, used
-          for R, G and B), 3 (R, G, B; alpha 255) or 4 (R, G, B, A: rgba8888
-          stores the interpolated alpha, nothing is blended); gray8 and
-          mono1 take C = 1.  Levels are 0..255 whatever the format: rgb565
-          keeps their top bits, mono1 is on iff the level is >= 128.
+          for R, G and B), 3 (R, G, B; alpha 255) or 4 (R, G, B, A); gray8
+          takes 1 or 2 (L, A), mono1 1.  Levels are 0..255 whatever the
+          format: rgb565 keeps their top bits, mono1 is on iff the level
+          is >= 128.  rgba8888 stores the interpolated alpha; on gray8,
+          rgb888 and rgb565 an alpha is applied: each pixel's
+          interpolated colour blended source-over with its interpolated
+          alpha (times `opacity`, also on rgba8888), binary or with `aa`,
+          as docs/opacity.md "Shaded fills" states (no `depth` then).
 
         `shading`: "gouraud" (the default: vertex colours interpolated) or
         "flat" (each triangle in its first vertex's colour).  `precision`
@@ -718,6 +780,22 @@ class Canvas:
                [9, 9, 9, 9, 0, 0],
                [9, 9, 9, 9, 0, 0]], dtype=uint8)
         """
+        if vertex_colors is not None and color is None and gamma is None and self._format != "label":
+            batch = _triangles.tris_f64(tris)
+            shade_blend = self._shaded_blend(batch, vertex_colors, opacity, depth, "Canvas.fill_triangles")
+            if shade_blend is not None:
+                colors, blend = shade_blend
+                if aa is not None:
+                    self._fill_aa(batch, None, aa, "nonzero", subpixel_bits, sample_offset,
+                                  "Canvas.fill_triangles", algorithm=(algorithm, "edge"),
+                                  rounding=(rounding, "exact"), boundary=(boundary, "exact"),
+                                  shading=(shading, "gouraud"), precision=(precision, "exact"),
+                                  vertex_colors=colors, shade_blend=shade_blend)
+                    return
+                opts = _triangles.tri_opts(algorithm, subpixel_bits, sample_offset, rounding, boundary)
+                sopts = _shading.shade_opts(_core.shading_precision(shading, precision), fraction_bits)
+                _shading.fill(self._writable(), batch, colors, None, None, opts, sopts, blend)
+                return
         if opacity is not None or gamma is not None or (
                 color is not None and type(color) is not int and np.ndim(color) < 2):
             blend, color = _blend_args(color, opacity, self._format, "Canvas.fill_triangles", gamma)

@@ -490,13 +490,18 @@ def fill_triangles_aa(target, batch, pixel, opts, what="tris"):
         _check(result, batch.reshape(-1, 2), opts, what, 3)
 
 
-def fill_triangles_shaded_aa(target, batch, colors, opts, sopts, what="tris"):
+def fill_triangles_shaded_aa(target, batch, colors, opts, sopts, what="tris", blend=None):
     """rast_fill_triangles_shaded_aa of the (N, 3, 2) float64 `batch` with
-    the (N, 3, 4) uint8 RGBA vertex `colors`: one region, a colour per pixel."""
+    the (N, 3, 4) uint8 RGBA vertex `colors`: one region, a colour per pixel
+    (blend: a ``rast_blend_opts *``, rast_fill_triangles_shaded_aa_blend)."""
     n = _ntris(batch)
     if n == 0:
         return
-    result = _lent(lib.rastpy_fill_triangles_shaded_aa, target, ffi.from_buffer("double[]", batch), n,
-                   ffi.from_buffer("uint8_t[]", colors), opts, sopts)
+    if blend is not None:
+        result = _lent(lib.rastpy_fill_triangles_shaded_aa_blend, target, ffi.from_buffer("double[]", batch),
+                       n, ffi.from_buffer("uint8_t[]", colors), opts, sopts, blend)
+    else:
+        result = _lent(lib.rastpy_fill_triangles_shaded_aa, target, ffi.from_buffer("double[]", batch), n,
+                       ffi.from_buffer("uint8_t[]", colors), opts, sopts)
     if result:
         _check(result, batch.reshape(-1, 2), opts, what, 3)

@@ -114,16 +114,23 @@ def depths(depth, n):
 
 
 
-def fill(target, tris, colors, z, zbuf, opts, sopts):
-    """Snap the checked (N, 3, 2) float64 batch and paint it shaded."""
+def fill(target, tris, colors, z, zbuf, opts, sopts, blend=None):
+    """Snap the checked (N, 3, 2) float64 batch and paint it shaded (blend:
+    a ``rast_blend_opts *``, source-over without depth,
+    rast_fill_triangles_shaded_blend)."""
     n = tris.shape[0]
     if n == 0:
         return
-    result = lib.rastpy_fill_triangles_shaded(
-        target, ffi.from_buffer("double[]", tris), n, ffi.from_buffer("uint8_t[]", colors),
-        ffi.NULL if z is None else ffi.from_buffer("int32_t[]", z),
-        ffi.NULL if zbuf is None else ffi.from_buffer("int32_t[]", zbuf, require_writable=True),
-        opts, sopts)
+    if blend is not None:
+        result = lib.rastpy_fill_triangles_shaded_blend(
+            target, ffi.from_buffer("double[]", tris), n, ffi.from_buffer("uint8_t[]", colors), opts, sopts,
+            blend)
+    else:
+        result = lib.rastpy_fill_triangles_shaded(
+            target, ffi.from_buffer("double[]", tris), n, ffi.from_buffer("uint8_t[]", colors),
+            ffi.NULL if z is None else ffi.from_buffer("int32_t[]", z),
+            ffi.NULL if zbuf is None else ffi.from_buffer("int32_t[]", zbuf, require_writable=True),
+            opts, sopts)
     if result:
         _core._check_glue(result, tris.reshape(-1, 2), opts.subpixel_bits, "tris", 3)
 

@@ -328,3 +328,63 @@ rast_status rast_fill_triangles_aa_blend(const rast_target *target, const rast_p
     if (st != RAST_OK) return st;
     return rast__cov_paint(NULL, tris, ntris, opts, &clip, &p, scratch, scratch_bytes);
 }
+
+/* ---- shaded fills: a source colour per pixel ------------------------------- */
+
+/* The blend of rast__fill_shaded*: ctx a rast__blender whose src is set
+ * per pixel (rast__blend_init's checks and opacity; its colour unused). */
+static void rast__rgba_put(const void *ctx, unsigned char *row, int32_t x, int32_t n,
+                           const unsigned char *rgba, const uint8_t *cov)
+{
+    rast__blender b = *(const rast__blender *)ctx;
+    const uint32_t o = b.ao / 255u; /* the opacity level (b's colour: alpha 255) */
+    int32_t k;
+    for (k = 0; k < n; k++, rgba += 4) {
+        unsigned a = rast__level8((uint32_t)rgba[3] * o, cov ? cov[k] : 255u);
+        if (!a) continue;
+        if (b.format == RAST_FORMAT_RGB565) { /* the top bits, as rast_pack_color */
+            b.src[0] = rgba[0] >> 3u;
+            b.src[1] = rgba[1] >> 2u;
+            b.src[2] = rgba[2] >> 3u;
+        } else {
+            b.src[0] = rgba[0];
+            b.src[1] = rgba[1];
+            b.src[2] = rgba[2];
+        }
+        rast__blend_px(&b, row, x + k, a);
+    }
+}
+
+rast_status rast_fill_triangles_shaded_blend(const rast_target *target, const rast_point *tris,
+                                             uint32_t ntris, const uint8_t *colors,
+                                             const rast_tri_opts *opts,
+                                             const rast_shade_opts *shade,
+                                             const rast_blend_opts *blend, void *scratch,
+                                             size_t scratch_bytes)
+{
+    static const uint8_t white[4] = {255, 255, 255, 255};
+    rast__blender b;
+    rast__painter p;
+    rast_rect clip;
+    rast_status st = rast__blend_init(&b, target, white, blend, &clip, &p);
+    if (st != RAST_OK) return st;
+    return rast__fill_shaded(target, tris, ntris, colors, NULL, NULL, opts, shade, rast__rgba_put,
+                             &b, scratch, scratch_bytes);
+}
+
+rast_status rast_fill_triangles_shaded_aa_blend(const rast_target *target, const rast_point *tris,
+                                                uint32_t ntris, const uint8_t *colors,
+                                                const rast_coverage_opts *opts,
+                                                const rast_shade_opts *shade,
+                                                const rast_blend_opts *blend, void *scratch,
+                                                size_t scratch_bytes)
+{
+    static const uint8_t white[4] = {255, 255, 255, 255};
+    rast__blender b;
+    rast__painter p;
+    rast_rect clip;
+    rast_status st = rast__blend_init(&b, target, white, blend, &clip, &p);
+    if (st != RAST_OK) return st;
+    return rast__fill_shaded_aa(target, tris, ntris, colors, opts, shade, rast__rgba_put, &b,
+                                scratch, scratch_bytes);
+}

@@ -235,4 +235,27 @@ rast_status rast__cov_paint_checked(const rast_polygon *poly, const rast_point *
                                     const rast_coverage_opts *opts, const rast_rect *clip,
                                     const rast__painter *p, void *scratch, size_t scratch_bytes);
 
+/* Source-over of a per-pixel source colour (blend.c, rastrum.h "shaded
+ * fills with opacity"): n pixels from x of `row`, pixel k from the RGBA
+ * colour rgba[4k .. 4k + 3] (its alpha times the opacity) at coverage
+ * level cov[k] (cov NULL: 255), rounded as rast_blend_coverage rounds.
+ * ctx is what rast__rgba_blend_init set up.  The shaded fills call it in
+ * place of the format's put (shade.c) or blend (shade_aa.c). */
+typedef void (*rast__rgba_put_fn)(const void *ctx, unsigned char *row, int32_t x, int32_t n,
+                                  const unsigned char *rgba, const uint8_t *cov);
+
+/* rast_fill_triangles_shaded (no depth) / rast_fill_triangles_shaded_aa
+ * with each pixel's colour handed to bput (NULL: stored as they store it):
+ * every channel, alpha too, interpolated whatever the format. */
+rast_status rast__fill_shaded(const rast_target *target, const rast_point *tris, uint32_t ntris,
+                              const uint8_t *colors, const int32_t *z, int32_t *zbuf,
+                              const rast_tri_opts *opts, const rast_shade_opts *shade,
+                              rast__rgba_put_fn bput, const void *bctx, void *scratch,
+                              size_t scratch_bytes);
+rast_status rast__fill_shaded_aa(const rast_target *target, const rast_point *tris,
+                                 uint32_t ntris, const uint8_t *colors,
+                                 const rast_coverage_opts *opts, const rast_shade_opts *shade,
+                                 rast__rgba_put_fn bput, const void *bctx, void *scratch,
+                                 size_t scratch_bytes);
+
 #endif /* RAST_PAINT_H */

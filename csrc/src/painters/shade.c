@@ -102,6 +102,8 @@ typedef struct rast__shade {
     int32_t cull;            /* skip triangles whose rows miss the clip (bands) */
     rast__solid solid;
     rast__painter solid_p;   /* its full entry (user: &solid) */
+    rast__rgba_put_fn bput;  /* NULL, or the blend in place of the put (blend.c) */
+    const void *bctx;
 } rast__shade;
 
 /* Bits of |v| (0 for 0): the compiler's count-leading-zeros, or (other
@@ -281,7 +283,8 @@ static void rast__shade_span(rast__shade *s, int32_t y, int32_t xa, int32_t xb)
         for (x = xa; x < xb; x += RAST__SHADE_RUN) {
             int32_t n = xb - x < RAST__SHADE_RUN ? xb - x : RAST__SHADE_RUN;
             rast__fixed_colours(s, q, nch, n, buf);
-            s->fmt->put(row, x - s->ox, n, buf);
+            if (s->bput) s->bput(s->bctx, row, x - s->ox, n, buf, NULL);
+            else s->fmt->put(row, x - s->ox, n, buf);
         }
         return;
     }
@@ -301,7 +304,8 @@ static void rast__shade_span(rast__shade *s, int32_t y, int32_t xa, int32_t xb)
             for (k = 0; k < n; k++) buf[4 * k + c] = (unsigned char)val[k];
         }
         if (!zrow) {
-            s->fmt->put(row, x - s->ox, n, buf);
+            if (s->bput) s->bput(s->bctx, row, x - s->ox, n, buf, NULL);
+            else s->fmt->put(row, x - s->ox, n, buf);
             continue;
         }
         c = RAST__CH_Z;
@@ -321,7 +325,8 @@ static void rast__shade_span(rast__shade *s, int32_t y, int32_t xa, int32_t xb)
                 continue;
             }
             for (e = k + 1; e < n && pass[e]; e++) {}
-            s->fmt->put(row, x + k - s->ox, e - k, buf + 4 * k);
+            if (s->bput) s->bput(s->bctx, row, x + k - s->ox, e - k, buf + 4 * k, NULL);
+            else s->fmt->put(row, x + k - s->ox, e - k, buf + 4 * k);
             k = e;
         }
     }
@@ -737,6 +742,16 @@ rast_status rast_fill_triangles_shaded(const rast_target *target, const rast_poi
                                        const rast_shade_opts *shade, void *scratch,
                                        size_t scratch_bytes)
 {
+    return rast__fill_shaded(target, tris, ntris, colors, z, zbuf, opts, shade, NULL, NULL,
+                             scratch, scratch_bytes);
+}
+
+rast_status rast__fill_shaded(const rast_target *target, const rast_point *tris, uint32_t ntris,
+                              const uint8_t *colors, const int32_t *z, int32_t *zbuf,
+                              const rast_tri_opts *opts, const rast_shade_opts *shade,
+                              rast__rgba_put_fn bput, const void *bctx, void *scratch,
+                              size_t scratch_bytes)
+{
     rast__shade s;
     rast__painter p;
     rast_rect clip;
@@ -755,7 +770,13 @@ rast_status rast_fill_triangles_shaded(const rast_target *target, const rast_poi
         st = rast__solid_init(&s.solid, target, &clip, zero, NULL, &s.solid_p);
         if (st != RAST_OK) return st;
     }
-    s.flat = s.prec == RAST_PRECISION_FLAT && !z;
+    s.flat = s.prec == RAST_PRECISION_FLAT && !z && !bput;
+    if (bput) { /* every channel (alpha is the source's), through bput: not packed */
+        s.bput = bput;
+        s.bctx = bctx;
+        s.nch = 4;
+        s.packable = 0;
+    }
     return rast__tri_fill(tris, ntris, opts, &clip, rast__shade_painter(&s, &p), rast__shade_begin,
                           scratch, scratch_bytes);
 }

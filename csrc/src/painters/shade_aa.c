@@ -107,6 +107,8 @@ typedef struct rast__aa_shade {
     const unsigned char *rgba; /* the band's colours */
     ptrdiff_t rgba_stride;
     rast_rect band;
+    rast__rgba_put_fn bput; /* NULL, or the blend in place of the format's (blend.c) */
+    const void *bctx;
 } rast__aa_shade;
 
 static void rast__aa_shade_run(void *user, int32_t y, int32_t x0, int32_t x1, const uint8_t *cov)
@@ -116,6 +118,10 @@ static void rast__aa_shade_run(void *user, int32_t y, int32_t x0, int32_t x1, co
     const unsigned char *col =
         p->rgba + (ptrdiff_t)(y - p->band.y0) * p->rgba_stride + (ptrdiff_t)(x0 - p->band.x0) * 4;
     int32_t x, c, n = p->fmt->value;
+    if (p->bput) {
+        p->bput(p->bctx, row, x0, x1 - x0, col, cov);
+        return;
+    }
     if (p->fmt->bits == 8 * n && p->fmt->channels == n) {
         /* GRAY8, RGB888, RGBA8888: a colour packs to its first n levels,
          * each blended as the format's blend does (rast__blend8) */
@@ -163,6 +169,16 @@ rast_status rast_fill_triangles_shaded_aa(const rast_target *target, const rast_
                                           const rast_shade_opts *shade, void *scratch,
                                           size_t scratch_bytes)
 {
+    return rast__fill_shaded_aa(target, tris, ntris, colors, opts, shade, NULL, NULL, scratch,
+                                scratch_bytes);
+}
+
+rast_status rast__fill_shaded_aa(const rast_target *target, const rast_point *tris,
+                                 uint32_t ntris, const uint8_t *colors,
+                                 const rast_coverage_opts *opts, const rast_shade_opts *shade,
+                                 rast__rgba_put_fn bput, const void *bctx, void *scratch,
+                                 size_t scratch_bytes)
+{
     rast__aa_shade p;
     rast__painter paint;
     rast_rect clip;
@@ -179,6 +195,8 @@ rast_status rast_fill_triangles_shaded_aa(const rast_target *target, const rast_
     if (shade->precision != RAST_PRECISION_EXACT && shade->precision != RAST_PRECISION_FLAT)
         return RAST_E_ARG;
     p.fmt = &rast__formats[target->format];
+    p.bput = bput;
+    p.bctx = bctx;
     if (!p.fmt->pack) return RAST_E_FORMAT;
     width = clip.x1 - clip.x0;
     height = clip.y1 - clip.y0;

@@ -185,14 +185,14 @@ class _Only:
     def __enter__(self):
         def boom(*a, **k):
             raise AssertionError("the C call declined")
-        self.saved = (self.m.Canvas._fill_polygon, self.m._fill_ring)
+        self.saved = (self.m._fill_polygon, self.m._fill_ring)
         if self.kw:
             self.m._fill_ring = boom  # the full method is entered; its cffi call must not be
         else:
-            self.m.Canvas._fill_polygon = boom
+            self.m._fill_polygon = boom
 
     def __exit__(self, *exc):
-        self.m.Canvas._fill_polygon, self.m._fill_ring = self.saved
+        self.m._fill_polygon, self.m._fill_ring = self.saved
 
 
 @settings(max_examples=examples(40), deadline=None)
@@ -224,7 +224,7 @@ def test_canvas_c_call_declines_what_the_general_path_takes():
     for src in others:
         for color in (200, 7, np.uint8(200), np.int64(7)):
             want = _canvas("gray8")
-            want._fill_polygon(src, color)
+            want.fill_polygon(src, color)
             got = _canvas("gray8")
             got.fill_polygon(_EMPTY, 200)
             got.fill_polygon(src, color)

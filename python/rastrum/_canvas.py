@@ -1,8 +1,8 @@
 """Canvas: a target over a numpy array, with drawing methods."""
 
 import functools
+import inspect
 import math
-from inspect import signature as _signature
 from typing import (IO, TYPE_CHECKING, Any, Callable, Dict, Literal, Optional, Sequence, Tuple, TypeVar, Union, cast,
                     overload)
 
@@ -466,7 +466,11 @@ class Canvas:
                 target, ffi.from_buffer(cov), lib.RAST_COVERAGE_U16 if cov.dtype == np.uint16 else lib.RAST_COVERAGE_U8,
                 cov.shape[1] * cov.itemsize, rgba, opts))
 
-    def _fill_polygon(self, rings: Rings, color: Optional[Color] = None, *, rule: Rule = "evenodd",
+    # (target, color, their addresses, the array, the pixel) of the last
+    # common fill_polygon call: see _fill_polygon_call at the end
+    _fpq: Tuple[Any, ...] = (None, None, 0, 0, None, None)
+
+    def fill_polygon(self, rings: Rings, color: Optional[Color] = None, *, rule: Rule = "evenodd",
                      algorithm: PolygonAlgorithm = "aet", subpixel_bits: int = 8, sample_offset: float = 0.5,
                      rounding: Rounding = "exact", boundary: Boundary = "exact",
                      vertex_colors: Optional[npt.ArrayLike] = None, shading: Shading = "gouraud",
@@ -544,7 +548,7 @@ class Canvas:
             else:  # checked (InputError as below), remembered
                 opts = _fill_opts(algorithm, rule, subpixel_bits, sample_offset, rounding, boundary)
             if type(color) is int and _fill_quick(self._fpq, self._target, rings, color, _opts_address(opts)):
-                return  # the remembered target and colour, these options (see fill_polygon below)
+                return  # the remembered target and colour, these options (_fill_polygon_call)
             xy = None
             if type(rings) is _ndarray:
                 if rings.dtype is _F64 and rings.strides == _PACKED and rings.shape[1] == 2 \
@@ -561,7 +565,7 @@ class Canvas:
                 last = self._last_color
                 pixel = last[1] if color is last[0] and type(color) is int else self._pixel(color)
                 if not _fill_ring(target, _from_buffer(_DOUBLES, xy), n, opts, pixel):
-                    if type(color) is int:  # remembered for the next call (fill_polygon below)
+                    if type(color) is int:  # remembered for the next call (_fill_polygon_call)
                         self._fpq = (target, color, int(_cast(_UINTPTR, target)), int(_cast(_UINTPTR, pixel)),
                                      self._array, pixel)
                     return
@@ -607,29 +611,6 @@ class Canvas:
             raise InputError("fill_polygon needs color or vertex_colors")
         pixel = self._pixel(color)
         _core.fill_polygon(self._writable(), rings, pixel, opts, opts.subpixel_bits)
-
-    # The common call, a ring and an int colour and no keyword, is done in
-    # C in one call (_seq.fill) once the full method below has drawn with
-    # that canvas target and colour object and remembered them in _fpq
-    # (target, color, their addresses, the array, the pixel): no frame of
-    # sixteen keyword arguments, no cffi conversions.  Anything else, and
-    # anything _seq.fill declines, is the full method's: its checks, its
-    # InputErrors, its pixels (the same C fill for what both take).
-    _fpq: Tuple[Any, ...] = (None, None, 0, 0, None, None)
-    if TYPE_CHECKING:
-        fill_polygon = _fill_polygon
-    else:
-        def fill_polygon(self, rings, color=None, **kw):
-            if not kw and _fill_quick(self._fpq, self._target, rings, color):
-                return None
-            return self._fill_polygon(rings, color, **kw)
-
-        fill_polygon.__doc__ = _fill_polygon.__doc__
-        fill_polygon.__signature__ = _signature(_fill_polygon)
-        # its TypeErrors (an unknown keyword) name fill_polygon
-        _fill_polygon.__qualname__ = "Canvas.fill_polygon"
-        _fill_polygon.__code__ = _fill_polygon.__code__.replace(co_name="fill_polygon", **(
-            {"co_qualname": "Canvas.fill_polygon"} if hasattr(_fill_polygon.__code__, "co_qualname") else {}))
 
     @_label_spill
     def fill_triangle(self, tri: npt.ArrayLike, color: Optional[Color] = None, *,
@@ -1761,10 +1742,10 @@ def _canvas_shape(shape, legacy_height, width, height):
 
 # Canvas.fill_polygon's quick path: its default options (the very objects)
 # and the C call for one ring.
-_AET, _EVENODD, _S8, _HALF, _EXACT, _GOURAUD = (Canvas._fill_polygon.__kwdefaults__[k] for k in (
+_AET, _EVENODD, _S8, _HALF, _EXACT, _GOURAUD = (Canvas.fill_polygon.__kwdefaults__[k] for k in (
     "algorithm", "rule", "subpixel_bits", "sample_offset", "rounding", "shading"))
-assert Canvas._fill_polygon.__kwdefaults__["boundary"] is _EXACT
-assert Canvas._fill_polygon.__kwdefaults__["precision"] is _EXACT
+assert Canvas.fill_polygon.__kwdefaults__["boundary"] is _EXACT
+assert Canvas.fill_polygon.__kwdefaults__["precision"] is _EXACT
 _DEFAULT_OPTS = _core.fill_opts(_AET, _EVENODD, _S8, _HALF, _EXACT, _EXACT)
 _ndarray, _F64, _PACKED = np.ndarray, np.dtype(np.float64), (16, 8)
 _DOUBLES, _from_buffer, _fill_ring = ffi.typeof("double[]"), ffi.from_buffer, lib.rastpy_fill_ring
@@ -1774,6 +1755,7 @@ _cast, _UINTPTR, _fill_quick = ffi.cast, ffi.typeof("uintptr_t"), _core._seq.fil
 _core._seq.fill_setup(int(_cast(_UINTPTR, ffi.addressof(lib, "rastpy_fill_ring"))), int(_cast(_UINTPTR, _DEFAULT_OPTS)),
                       _ndarray, _F64)
 _OPTS_ADDRESS: Dict[Any, int] = {}
+_lent, _fill_ring_aa, _NULL, _MAX_POINTS = _coverage._lent, lib.rastpy_fill_polygon_aa, ffi.NULL, lib.RAST_MAX_POINTS
 
 
 def _opts_address(opts):
@@ -1787,7 +1769,29 @@ def _opts_address(opts):
         if len(_OPTS_ADDRESS) < 256 and opts in _FILL_OPTS.values():
             _OPTS_ADDRESS[opts] = a
     return a
-_lent, _fill_ring_aa, _NULL, _MAX_POINTS = _coverage._lent, lib.rastpy_fill_polygon_aa, ffi.NULL, lib.RAST_MAX_POINTS
+
+
+# Canvas.fill_polygon's common call, a ring and an int colour and no
+# keyword, is done in C in one call (_seq.fill) once the full method has
+# drawn with that canvas target and colour object and remembered them in
+# _fpq: no frame of sixteen keyword arguments, no cffi conversions.
+# Anything else, and anything _seq.fill declines, is the full method's:
+# its checks, its InputErrors, its pixels (the same C fill for what both
+# take).  The class keeps the full method's source, signature and
+# docstring for readers and type checkers; this call takes its place.
+_fill_polygon = Canvas.fill_polygon
+
+
+def _fill_polygon_call(self, rings, color=None, **kw):
+    if not kw and _fill_quick(self._fpq, self._target, rings, color):
+        return None
+    return _fill_polygon(self, rings, color, **kw)
+
+
+functools.update_wrapper(_fill_polygon_call, _fill_polygon)
+del _fill_polygon_call.__wrapped__
+_fill_polygon_call.__signature__ = inspect.signature(_fill_polygon)  # type: ignore[attr-defined]
+setattr(Canvas, "fill_polygon", _fill_polygon_call)
 
 
 def _fill_opts(algorithm, rule, subpixel_bits, sample_offset, rounding, boundary):

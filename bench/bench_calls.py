@@ -96,6 +96,7 @@ def main():
     for src in (HEXA, hexa_tuples):
         a = rastrum.Canvas.wrap(np.zeros(SHAPE, np.uint8))
         b = rastrum.Canvas.wrap(np.zeros(SHAPE, np.uint8))
+        a.fill_polygon(np.zeros((3, 2)), 255)  # remembered: the next call is one C call (_seq.fill)
         a.fill_polygon(src, 255)
         b.fill_polygon(_slow(HEXA), 255)
         assert np.array_equal(a.array, b.array), "Canvas.fill_polygon quick path differs"
@@ -113,6 +114,7 @@ def main():
         "1 cv2 loop (zeros, float->int32, fillPoly)": cv2_mask,
         "2 Canvas.fill_polygon (6, 2) array": lambda: canvas.fill_polygon(HEXA, 255),
         "2 Canvas.fill_polygon list of tuples": lambda: canvas.fill_polygon(hexa_tuples, 255),
+        "2 Canvas.fill_polygon (6, 2) array, rule nonzero": lambda: canvas.fill_polygon(HEXA, 255, rule="nonzero"),
         "2 cv2.fillPoly int32 (converted before)": lambda: cv2.fillPoly(img, [hexa32], 255),
         "2 cv2.fillPoly with float->int32 in the loop": lambda: cv2.fillPoly(
             img, [np.round(HEXA - 0.5).astype(np.int32)], 255),

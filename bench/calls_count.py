@@ -38,6 +38,8 @@ def cases():
         "cov6": lambda: rastrum.polygon_coverage(HEXA, (32, 32)),
         "fill_array": lambda: canvas.fill_polygon(HEXA, 255),
         "fill_tuples": lambda: canvas.fill_polygon(tup, 255),
+        "fill_nonzero": lambda: canvas.fill_polygon(HEXA, 255, rule="nonzero"),
+        "fill_opacity": lambda: canvas.fill_polygon(HEXA, 255, opacity=0.5),
         "loop_binary": lambda: [canvas.fill_polygon(r, 255, rule="nonzero") for r in loop],
         "loop_accumulate": lambda: [canvas.fill_polygon(r, 255, rule="nonzero", aa="accumulate") for r in loop],
         "loop_area": lambda: [canvas.fill_polygon(r, 255, rule="nonzero", aa="area") for r in loop],

@@ -156,3 +156,137 @@ def test_canvas_aa_quick_path_refuses_as_the_general_path():
     for dtype in (np.int32, np.int64):  # a label canvas never blends
         with pytest.raises(InputError, match="label"):
             rastrum.Canvas.wrap(np.zeros((8, 8), dtype), format="label").fill_polygon(tri, 3, aa="area")
+
+
+# ---- Canvas.fill_polygon's call done in C (rastrum._seq.fill): once a
+# canvas has drawn with an int colour object, the next call with the same
+# target and colour (a float64 ring array or a list of pairs, no keyword,
+# or the keyword options' checked rast_fill_opts) goes to C in one call.
+# It must give the general path's pixels, decline what that path alone
+# takes, and leave errors to it.
+
+_FORMATS = {"gray8": 200, "rgb888": 77, "rgb565": 140, "rgba8888": 17, "mono1": 1}
+_EMPTY = np.zeros((3, 2))  # a degenerate ring: no pixel, but the call is remembered
+
+
+def _canvas(fmt):
+    if fmt.startswith("label"):
+        return rastrum.Canvas.wrap(np.zeros((40, 44), np.int32 if fmt == "label32" else np.uint16), format="label")
+    return rastrum.Canvas((40, 44), format=fmt, background=0)
+
+
+class _Only:
+    """Within: the named fallbacks raise, so that only the C call can draw."""
+
+    def __init__(self, kw):
+        import rastrum._canvas as m
+        self.m, self.kw = m, kw
+
+    def __enter__(self):
+        def boom(*a, **k):
+            raise AssertionError("the C call declined")
+        self.saved = (self.m._fill_polygon, self.m._fill_ring)
+        if self.kw:
+            self.m._fill_ring = boom  # the full method is entered; its cffi call must not be
+        else:
+            self.m._fill_polygon = boom
+
+    def __exit__(self, *exc):
+        self.m._fill_polygon, self.m._fill_ring = self.saved
+
+
+@settings(max_examples=examples(40), deadline=None)
+@given(_hexagons(), st.sampled_from([{}, {"rule": "nonzero"}, {"sample_offset": 0.0}, {"subpixel_bits": 4},
+                                     {"algorithm": "edgeflag", "boundary": "closed"}]),
+       st.sampled_from(list(_FORMATS) + ["label32", "label16"]), st.booleans())
+def test_canvas_c_call_as_the_general_path(pts, kw, fmt, tuples):
+    color = _FORMATS.get(fmt, 1000)
+    src = [tuple(p) for p in pts] if tuples else np.array(pts, np.float64)
+    general, quick = _canvas(fmt), _canvas(fmt)
+    general.fill_polygon(_general(np.array(pts, np.float64)), color, **kw)
+    quick.fill_polygon(_EMPTY, color, **kw)  # remembered
+    assert quick._fpq[0] is quick._target and quick._fpq[1] is color
+    with _Only(kw):
+        quick.fill_polygon(src, color, **kw)
+    assert np.array_equal(quick.array, general.array)
+
+
+def test_canvas_c_call_declines_what_the_general_path_takes():
+    pts = [(0.5, 0.25), (30.0, 3.0), (25.5, 31.0), (2.0, 20.0)]
+    a = np.array(pts)
+    f = np.empty((4, 2), order="F")
+    f[:] = a
+    odd = np.frombuffer(np.zeros(8 * 9, np.uint8).data, np.float64, 8, 1).reshape(4, 2)  # unaligned
+    odd[:] = a
+    others = [_general(a), f, odd, a.astype(np.float32), a.astype(np.int32), [list(p) for p in pts],
+              tuple(pts), [(np.float64(x), y) for x, y in pts], [pts, pts[:3]], [a], a.reshape(1, 4, 2),
+              rastrum.Path().move_to(*pts[0]).line_to(*pts[1]).line_to(*pts[2]).close()]
+    for src in others:
+        for color in (200, 7, np.uint8(200), np.int64(7)):
+            want = _canvas("gray8")
+            want.fill_polygon(src, color)
+            got = _canvas("gray8")
+            got.fill_polygon(_EMPTY, 200)
+            got.fill_polygon(src, color)
+            got.fill_polygon(src, color)  # and again, remembered if it may be
+            assert np.array_equal(got.array, want.array), (src, color)
+    big = _canvas("label32")  # an int not cached by CPython: equal but not the same object
+    big.fill_polygon(_EMPTY, int("70000"))
+    big.fill_polygon(a, int("70001"))
+    assert set(np.unique(big.array)) == {0, 70001}
+
+
+@pytest.mark.parametrize("kw", [{}, {"rule": "nonzero"}])
+def test_canvas_c_call_leaves_errors_to_the_general_path(kw):
+    tri = np.array([[1.0, 1.0], [9.0, 2.0], [4.0, 6.0]])
+    for bad in (np.nan, np.inf, 1e9, 3e5):
+        a = tri.copy()
+        a[2, 1] = bad
+        msgs = []
+        for src in (a, [tuple(p) for p in a.tolist()]):
+            fresh, primed = (rastrum.Canvas.wrap(np.zeros((10, 10), np.uint8)) for _ in range(2))
+            primed.fill_polygon(_EMPTY, 255, **kw)
+            for c in (fresh, primed):
+                if bad == 3e5:  # past the 32-bit range: C declines, the 64-bit path draws
+                    c.fill_polygon(src, 255, **kw)
+                    continue
+                with pytest.raises(InputError) as e:
+                    c.fill_polygon(src, 255, **kw)
+                msgs.append(str(e.value))
+                assert not c.array.any()
+            assert np.array_equal(fresh.array, primed.array)
+        assert len(set(msgs)) <= 1
+    for short in (tri[:2], [(1.0, 1.0), (2.0, 2.0)], np.zeros((0, 2)), []):
+        fresh, primed = (rastrum.Canvas.wrap(np.zeros((10, 10), np.uint8)) for _ in range(2))
+        primed.fill_polygon(_EMPTY, 255, **kw)
+        for c in (fresh, primed):
+            try:
+                c.fill_polygon(short, 255, **kw)
+                out = None
+            except InputError as e:
+                out = str(e)
+            assert not c.array.any()
+            if c is fresh:
+                first = out
+        assert out == first
+    arr = np.zeros((8, 8), np.uint8)
+    ro = rastrum.Canvas.wrap(arr)
+    ro.fill_polygon(_EMPTY, 255, **kw)
+    arr.flags.writeable = False
+    with pytest.raises(InputError, match="read-only"):
+        ro.fill_polygon(tri, 255, **kw)
+    with pytest.raises(InputError, match="read-only"):
+        ro.fill_polygon([tuple(p) for p in tri.tolist()], 255, **kw)
+
+
+def test_canvas_fill_polygon_reads_as_its_signature():
+    import inspect
+    sig = inspect.signature(rastrum.Canvas.fill_polygon)
+    assert list(sig.parameters)[:3] == ["self", "rings", "color"] and "opacity" in sig.parameters
+    assert sig.parameters["rule"].kind is inspect.Parameter.KEYWORD_ONLY
+    assert "Paint `color`" in rastrum.Canvas.fill_polygon.__doc__
+    c = rastrum.Canvas.wrap(np.zeros((8, 8), np.uint8))
+    with pytest.raises(TypeError, match=r"fill_polygon\(\) got an unexpected keyword argument 'rul'"):
+        c.fill_polygon(_EMPTY, 1, rul="nonzero")
+    with pytest.raises(TypeError):
+        c.fill_polygon(_EMPTY, 1, "nonzero")

@@ -473,6 +473,116 @@ fail:
     return NULL;
 }
 
+/* Canvas.fill_polygon's common call, whole in C (docs/api.md): one ring
+ * of 3 points or more -- an exact ndarray, C-contiguous aligned native
+ * float64 (n, 2), read through its head; or an exact list of (x, y)
+ * pairs -- filled with the default options through the cffi module's
+ * rastpy_fill_ring, whose address fill_setup gives (a module of its
+ * own: this one takes Python objects, that one does not). */
+typedef long (*seq_fill_fn)(const void *target, const double *xy, uint32_t n, const void *opts,
+                            const void *pixel);
+static seq_fill_fn seq_fill;
+static const void *seq_fill_opts;
+static PyObject *seq_ndarray, *seq_f64;
+#define SEQ_ARRAY_WRITEABLE 0x400
+#define SEQ_STACK_POINTS 64
+
+/* fill_setup(rastpy_fill_ring address, default rast_fill_opts address,
+ * numpy.ndarray, numpy's float64 dtype) -> None */
+static PyObject *seq_fill_setup(PyObject *self, PyObject *args)
+{
+    PyObject *fn, *opts, *nd, *f64;
+    void *f;
+    (void)self;
+    if (!PyArg_UnpackTuple(args, "fill_setup", 4, 4, &fn, &opts, &nd, &f64)) return NULL;
+    f = PyLong_AsVoidPtr(fn);
+    if (!f && PyErr_Occurred()) return NULL;
+    seq_fill_opts = PyLong_AsVoidPtr(opts);
+    if (!seq_fill_opts && PyErr_Occurred()) return NULL;
+    memcpy(&seq_fill, &f, sizeof f); /* an object pointer to a function pointer (POSIX) */
+    Py_XINCREF(nd);
+    Py_XINCREF(f64);
+    Py_XDECREF(seq_ndarray);
+    Py_XDECREF(seq_f64);
+    seq_ndarray = nd;
+    seq_f64 = f64;
+    Py_RETURN_NONE;
+}
+
+/* fill(q, target, rings, color[, opts address]) -> bool: True when the
+ * ring was filled.  q is the canvas's remembered call, (target, color,
+ * target address, pixel address, array, pixel): it holds only for the
+ * very target and colour objects given, and the canvas's array still
+ * writable.  False (nothing written, no exception) for anything else or
+ * an error status: the caller's general path then checks and says what
+ * is wrong. */
+static PyObject *seq_fill_call(PyObject *self, PyObject *args)
+{
+    PyObject *q, *target, *rings, *color, *opt = NULL, *arr;
+    const seq_array_head *h;
+    double stack[2 * SEQ_STACK_POINTS], *xy = NULL, *heap = NULL;
+    const void *t, *pix, *opts = seq_fill_opts;
+    Py_ssize_t n = 0, k;
+    long st;
+    (void)self;
+    if (!PyArg_UnpackTuple(args, "fill", 4, 5, &q, &target, &rings, &color, &opt)) return NULL;
+    if (!seq_fill || !PyTuple_CheckExact(q) || PyTuple_Size(q) != 6 || target == Py_None ||
+        PyTuple_GetItem(q, 0) != target || PyTuple_GetItem(q, 1) != color)
+        Py_RETURN_FALSE;
+    arr = PyTuple_GetItem(q, 4);
+    if ((PyObject *)Py_TYPE(arr) != seq_ndarray) Py_RETURN_FALSE;
+    if (seq_head_ok < 0) seq_head_ok = seq_head_check(arr);
+    if (seq_head_ok <= 0 ||
+        !(((const seq_array_head *)(const void *)arr)->flags & SEQ_ARRAY_WRITEABLE))
+        Py_RETURN_FALSE;
+    if (opt && opt != Py_None) {
+        opts = PyLong_AsVoidPtr(opt);
+        if (!opts) {
+            PyErr_Clear();
+            Py_RETURN_FALSE;
+        }
+    }
+    if ((PyObject *)Py_TYPE(rings) == seq_ndarray) {
+        h = (const seq_array_head *)(const void *)rings;
+        if (h->descr != seq_f64 || h->nd != 2 || h->dimensions[1] != 2 || h->strides[0] != 16 ||
+            h->strides[1] != 8 || !(h->flags & SEQ_ARRAY_ALIGNED))
+            Py_RETURN_FALSE;
+        n = h->dimensions[0];
+        xy = (double *)(void *)h->data;
+    } else if (PyList_CheckExact(rings)) {
+        n = PyList_Size(rings);
+        if (n >= 3 && n <= (Py_ssize_t)UINT32_MAX) {
+            xy = stack;
+            if (n > SEQ_STACK_POINTS) {
+                heap = (double *)PyMem_Malloc((size_t)n * 2 * sizeof(double));
+                if (!heap) return PyErr_NoMemory();
+                xy = heap;
+            }
+            for (k = 0; k < n; k++) {
+                if (!seq_pair(PyList_GetItem(rings, k), xy + 2 * k)) {
+                    PyMem_Free(heap);
+                    if (PyErr_Occurred()) return NULL;
+                    Py_RETURN_FALSE;
+                }
+            }
+        }
+    }
+    if (!xy || n < 3 || n > (Py_ssize_t)UINT32_MAX) {
+        PyMem_Free(heap);
+        Py_RETURN_FALSE;
+    }
+    t = PyLong_AsVoidPtr(PyTuple_GetItem(q, 2));
+    pix = PyLong_AsVoidPtr(PyTuple_GetItem(q, 3));
+    if (!t || !pix) {
+        PyMem_Free(heap);
+        PyErr_Clear();
+        Py_RETURN_FALSE;
+    }
+    st = seq_fill(t, xy, (uint32_t)n, opts, pix);
+    PyMem_Free(heap);
+    return PyBool_FromLong(st == 0);
+}
+
 /* use_head(flag): read arrays through their head (when it checks out:
  * the default) or always through __array_struct__; the previous setting. */
 static PyObject *seq_use_head(PyObject *self, PyObject *flag)
@@ -491,6 +601,10 @@ static PyMethodDef seq_methods[] = {
      "rings(rings, ndarray, (float64, int32)) -> (points, ring_sizes or None) as bytearrays, or None"},
     {"use_head", seq_use_head, METH_O,
      "use_head(flag) -> bool: whether arrays are read through their head (once checked) or __array_struct__"},
+    {"fill_setup", seq_fill_setup, METH_VARARGS,
+     "fill_setup(fill_ring address, default opts address, ndarray, float64) -> None"},
+    {"fill", seq_fill_call, METH_VARARGS,
+     "fill(q, target, rings, color[, opts address]) -> bool: Canvas.fill_polygon's common call, done"},
     {NULL, NULL, 0, NULL},
 };
 

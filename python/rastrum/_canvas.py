@@ -1,6 +1,7 @@
 """Canvas: a target over a numpy array, with drawing methods."""
 
 import functools
+import inspect
 import math
 from typing import (IO, TYPE_CHECKING, Any, Callable, Dict, Literal, Optional, Sequence, Tuple, TypeVar, Union, cast,
                     overload)
@@ -511,6 +512,10 @@ class Canvas:
                 target, ffi.from_buffer(cov), lib.RAST_COVERAGE_U16 if cov.dtype == np.uint16 else lib.RAST_COVERAGE_U8,
                 cov.shape[1] * cov.itemsize, rgba, opts))
 
+    # (target, color, their addresses, the array, the pixel) of the last
+    # common fill_polygon call: see _fill_polygon_call at the end
+    _fpq: Tuple[Any, ...] = (None, None, 0, 0, None, None)
+
     def fill_polygon(self, rings: Rings, color: Optional[Color] = None, *, rule: Rule = "evenodd",
                      algorithm: PolygonAlgorithm = "aet", subpixel_bits: int = 8, sample_offset: float = 0.5,
                      rounding: Rounding = "exact", boundary: Boundary = "exact",
@@ -588,6 +593,8 @@ class Canvas:
                 opts = _DEFAULT_OPTS
             else:  # checked (InputError as below), remembered
                 opts = _fill_opts(algorithm, rule, subpixel_bits, sample_offset, rounding, boundary)
+            if type(color) is int and _fill_quick(self._fpq, self._target, rings, color, _opts_address(opts)):
+                return  # the remembered target and colour, these options (_fill_polygon_call)
             xy = None
             if type(rings) is _ndarray:
                 if rings.dtype is _F64 and rings.strides == _PACKED and rings.shape[1] == 2 \
@@ -604,6 +611,9 @@ class Canvas:
                 last = self._last_color
                 pixel = last[1] if color is last[0] and type(color) is int else self._pixel(color)
                 if not _fill_ring(target, _from_buffer(_DOUBLES, xy), n, opts, pixel):
+                    if type(color) is int:  # remembered for the next call (_fill_polygon_call)
+                        self._fpq = (target, color, int(_cast(_UINTPTR, target)), int(_cast(_UINTPTR, pixel)),
+                                     self._array, pixel)
                     return
         elif vertex_colors is None and type(color) is int and algorithm is _AET and rounding is _EXACT \
                 and boundary is _EXACT and shading is _GOURAUD and precision is _EXACT and self._format != "label":
@@ -1819,7 +1829,47 @@ _ndarray, _F64, _PACKED = np.ndarray, np.dtype(np.float64), (16, 8)
 _DOUBLES, _from_buffer, _fill_ring = ffi.typeof("double[]"), ffi.from_buffer, lib.rastpy_fill_ring
 _seq_rings, _RING_DTYPES = _core._seq.rings, _core._RING_DTYPES
 _FILL_OPTS: Dict[Any, Any] = {}
+_cast, _UINTPTR, _fill_quick = ffi.cast, ffi.typeof("uintptr_t"), _core._seq.fill
+_core._seq.fill_setup(int(_cast(_UINTPTR, ffi.addressof(lib, "rastpy_fill_ring"))), int(_cast(_UINTPTR, _DEFAULT_OPTS)),
+                      _ndarray, _F64)
+_OPTS_ADDRESS: Dict[Any, int] = {}
 _lent, _fill_ring_aa, _NULL, _MAX_POINTS = _coverage._lent, lib.rastpy_fill_polygon_aa, ffi.NULL, lib.RAST_MAX_POINTS
+
+
+def _opts_address(opts):
+    """The address of a checked rast_fill_opts for _seq.fill (None: the
+    default options), remembered for those _fill_opts keeps."""
+    if opts is _DEFAULT_OPTS:
+        return None
+    a = _OPTS_ADDRESS.get(opts)
+    if a is None:
+        a = int(_cast(_UINTPTR, opts))
+        if len(_OPTS_ADDRESS) < 256 and opts in _FILL_OPTS.values():
+            _OPTS_ADDRESS[opts] = a
+    return a
+
+
+# Canvas.fill_polygon's common call, a ring and an int colour and no
+# keyword, is done in C in one call (_seq.fill) once the full method has
+# drawn with that canvas target and colour object and remembered them in
+# _fpq: no frame of sixteen keyword arguments, no cffi conversions.
+# Anything else, and anything _seq.fill declines, is the full method's:
+# its checks, its InputErrors, its pixels (the same C fill for what both
+# take).  The class keeps the full method's source, signature and
+# docstring for readers and type checkers; this call takes its place.
+_fill_polygon = Canvas.fill_polygon
+
+
+def _fill_polygon_call(self, rings, color=None, **kw):
+    if not kw and _fill_quick(self._fpq, self._target, rings, color):
+        return None
+    return _fill_polygon(self, rings, color, **kw)
+
+
+functools.update_wrapper(_fill_polygon_call, _fill_polygon)
+del _fill_polygon_call.__wrapped__
+_fill_polygon_call.__signature__ = inspect.signature(_fill_polygon)  # type: ignore[attr-defined]
+setattr(Canvas, "fill_polygon", _fill_polygon_call)
 
 
 def _fill_opts(algorithm, rule, subpixel_bits, sample_offset, rounding, boundary):

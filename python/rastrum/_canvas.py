@@ -419,10 +419,7 @@ class Canvas:
                 return None
             level = 255
         else:
-            level = _opacity_level(opacity, entry)
-            if fmt not in _BLEND_FORMATS:
-                raise InputError("%s: opacity is for gray8, rgb888, rgb565 and rgba8888 canvases, not %s"
-                                 % (entry, fmt))
+            level = _blend_level(opacity, entry, fmt)
         if depth is not None:
             raise InputError("%s: depth is for shaded fills that store their colours; with opacity or "
                              "vertex alpha leave it out (draw the batch back to front)" % entry)
@@ -1596,6 +1593,16 @@ def _rgba_bytes(color, fmt):
 _BLEND_FORMATS = ("gray8", "rgb888", "rgb565", "rgba8888")
 
 
+def _blend_level(opacity, entry, fmt):
+    """`opacity` as a level (_opacity_level) on a canvas of format fmt, which
+    must be one the blend takes."""
+    level = _opacity_level(opacity, entry)
+    if fmt not in _BLEND_FORMATS:
+        raise InputError("%s: opacity is for gray8, rgb888, rgb565 and rgba8888 canvases, not %s"
+                         % (entry, fmt))
+    return level
+
+
 def _opacity_level(opacity, entry):
     """`opacity` (a real number in 0..1) as a level 0..255:
     floor(opacity * 255 + 1/2) of the number's exact value (docs/opacity.md)."""
@@ -1674,10 +1681,7 @@ def _blend_args(color, opacity, fmt, entry, gamma=None):
                 return None, color
         level = 255
     else:
-        level = _opacity_level(opacity, entry)
-        if fmt not in _BLEND_FORMATS:
-            raise InputError("%s: opacity is for gray8, rgb888, rgb565 and rgba8888 canvases, not %s"
-                             % (entry, fmt))
+        level = _blend_level(opacity, entry, fmt)
         if np.ndim(color) >= 2:
             raise InputError("%s: opacity takes one colour, not one per triangle" % entry)
     rgba = _blend_rgba(color, fmt)

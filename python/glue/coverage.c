@@ -161,19 +161,8 @@ long rastpy_fill_triangles_aa(const rast_target *target, const double *xy, uint3
     return rastpy_coverage(&d, xy, 3 * ntris, NULL, 0, 1, opts, sc);
 }
 
-long rastpy_fill_triangles_shaded_aa(const rast_target *target, const double *xy, uint32_t ntris,
-                                     const uint8_t *colors, const rast_coverage_opts *opts,
-                                     const rast_shade_opts *shade, rastpy_scratch *sc)
-{
-    rastpy_cov_dest d;
-    if (!target || !colors || !shade) return RAST_E_NULL;
-    d = rastpy_paint(target, NULL);
-    d.colors = colors;
-    d.shade = shade;
-    return rastpy_coverage(&d, xy, 3 * ntris, NULL, 0, 1, opts, sc);
-}
-
-/* rastpy_fill_triangles_shaded_aa blended (opacity, the colours' alpha). */
+/* Shaded triangles with coverage, blended (opacity, the colours' alpha)
+ * or, with blend NULL, stored. */
 long rastpy_fill_triangles_shaded_aa_blend(const rast_target *target, const double *xy,
                                            uint32_t ntris, const uint8_t *colors,
                                            const rast_coverage_opts *opts,
@@ -187,4 +176,11 @@ long rastpy_fill_triangles_shaded_aa_blend(const rast_target *target, const doub
     d.shade = shade;
     d.blend = blend;
     return rastpy_coverage(&d, xy, 3 * ntris, NULL, 0, 1, opts, sc);
+}
+
+long rastpy_fill_triangles_shaded_aa(const rast_target *target, const double *xy, uint32_t ntris,
+                                     const uint8_t *colors, const rast_coverage_opts *opts,
+                                     const rast_shade_opts *shade, rastpy_scratch *sc)
+{
+    return rastpy_fill_triangles_shaded_aa_blend(target, xy, ntris, colors, opts, shade, NULL, sc);
 }

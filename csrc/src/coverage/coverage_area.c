@@ -1081,6 +1081,193 @@ static int rast__fast_mixed(const rast__cedge *e, const int32_t *g, int32_t m, c
     return 1;
 }
 
+/* A group too big for rast__fast_mixed (more than RAST__FAST_MIXED edges,
+ * or more than RAST__FAST_CUTS ordinates inside the strip): the same test,
+ * made as a sweep that only checks.  The edges over the strip are kept in
+ * their order (lv[0..n)), the others by the ordinate where they start
+ * (pend[]); at each ordinate inside the strip where an edge starts or
+ * ends, the edges ending there leave the order and those starting there
+ * enter it (by their exact abscissa there, then their slope).  Two edges
+ * are neighbours from the ordinate where they become so to the one where
+ * they stop (a start or end between them, or the strip's bottom): in order
+ * at both (exact), and not equal at both, they do not cross in between,
+ * being straight; the first crossing in the strip is between neighbours,
+ * so none is missed.  Each entry keeps the winding number right of its
+ * edge; after an ordinate's changes the windings are walked again from the
+ * leftmost change until past every changed entry and equal to the kept
+ * ones (the rest then follows unchanged): every one 0 or s, the last wr.
+ * The test's work is its edges' starts and ends and what lies between
+ * an ordinate's changes, not slabs times edges.  1 when the group is fast. */
+#define RAST__FS_ID(v) ((int32_t)((v) & 0xFFFFFFFFu))
+#define RAST__FS_REL(v) ((int64_t)(((v) >> 32) & 0xFFFFF)) /* when the pair became neighbours */
+#define RAST__FS_W(v) ((int32_t)(((v) >> 52) & 3) - 1)    /* the winding right of the edge */
+#define RAST__FS_EQ ((uint64_t)1 << 55)                    /* the pair equal when it began */
+
+static int rast__fs_cmp(const rast__cedge *a, const rast__cedge *b, int64_t Y)
+{
+    return rast__fast_cmpn(rast__fast_num(a, Y), a, rast__fast_num(b, Y), b);
+}
+
+/* The pair (lv[k], lv[k + 1]) stops being neighbours at Y (rel: Y - Yj): 1
+ * when they kept their order since they became neighbours. */
+static int rast__fs_close(const rast__cedge *e, const uint64_t *lv, int32_t k, int64_t Y, int64_t rel)
+{
+    int cm;
+    if (RAST__FS_REL(lv[k]) == rel) return 1; /* neighbours for no length */
+    cm = rast__fs_cmp(&e[RAST__FS_ID(lv[k])], &e[RAST__FS_ID(lv[k + 1])], Y);
+    return cm < 0 || (cm == 0 && !(lv[k] & RAST__FS_EQ));
+}
+
+/* lv[k] (k + 1 < n) becomes neighbour of lv[k + 1] at Y (rel). */
+static void rast__fs_open(const rast__cedge *e, uint64_t *lv, int32_t k, int64_t Y, int64_t rel)
+{
+    const uint64_t keep = lv[k] & (0xFFFFFFFFu | ((uint64_t)3 << 52));
+    lv[k] = keep | ((uint64_t)rel << 32)
+            | (rast__fs_cmp(&e[RAST__FS_ID(lv[k])], &e[RAST__FS_ID(lv[k + 1])], Y) == 0 ? RAST__FS_EQ : 0);
+}
+
+/* Edge id, which starts at Y (or is over the strip's top there), into the
+ * order lv[0..*n); its position, or -1 when it would lie on a neighbour
+ * (collinear) or its neighbours crossed before Y. */
+static int32_t rast__fs_insert(const rast__cedge *e, uint64_t *lv, int32_t *n, int32_t id, int64_t Y,
+                               int64_t rel)
+{
+    const rast__cedge *a = &e[id];
+    int32_t lo = 0, hi = *n;
+    while (lo < hi) { /* the first edge after a */
+        const int32_t mid = lo + (hi - lo) / 2;
+        const rast__cedge *b = &e[RAST__FS_ID(lv[mid])];
+        int cm = rast__fs_cmp(a, b, Y);
+        if (cm == 0) {
+            const int64_t l = (int64_t)a->dx * b->dy, r = (int64_t)b->dx * a->dy;
+            if (l == r) return -1;
+            cm = l < r ? -1 : 1;
+        }
+        if (cm < 0) hi = mid;
+        else lo = mid + 1;
+    }
+    if (lo > 0 && lo < *n && !rast__fs_close(e, lv, lo - 1, Y, rel)) return -1;
+    memmove(lv + lo + 1, lv + lo, (size_t)(*n - lo) * sizeof *lv);
+    lv[lo] = (uint32_t)id | ((uint64_t)rel << 32) | ((uint64_t)1 << 52);
+    (*n)++;
+    if (lo > 0) rast__fs_open(e, lv, lo - 1, Y, rel);
+    if (lo + 1 < *n) rast__fs_open(e, lv, lo, Y, rel);
+    return lo;
+}
+
+/* The ordinate sorted by: an edge's top (bot 0) or bottom (bot 1). */
+static int64_t rast__fs_key(const rast__cedge *e, int bot)
+{
+    return (int64_t)e->yt + (bot ? e->dy : 0);
+}
+
+/* Edges pend[0..np) by their tops or bottoms (heapsort: any number, no room). */
+static void rast__fs_sort(const rast__cedge *e, int32_t *pend, int32_t np, int bot)
+{
+    int32_t end, i;
+    for (end = np, i = np / 2; end > 1;) {
+        int32_t r, ch, v;
+        if (i > 0) {
+            r = --i;
+        } else {
+            v = pend[0];
+            pend[0] = pend[--end];
+            pend[end] = v;
+            r = 0;
+        }
+        v = pend[r];
+        while ((ch = 2 * r + 1) < end) {
+            if (ch + 1 < end && rast__fs_key(&e[pend[ch + 1]], bot) > rast__fs_key(&e[pend[ch]], bot)) ch++;
+            if (rast__fs_key(&e[pend[ch]], bot) <= rast__fs_key(&e[v], bot)) break;
+            pend[r] = pend[ch];
+            r = ch;
+        }
+        pend[r] = v;
+    }
+}
+
+/* Where edge id (over the strip at Y, in the order) is in lv[0..n): -1
+ * when not found (the order broke: some neighbours crossed). */
+static int32_t rast__fs_find(const rast__cedge *e, const uint64_t *lv, int32_t n, int32_t id, int64_t Y)
+{
+    const rast__cedge *a = &e[id];
+    int32_t lo = 0, hi = n;
+    while (lo < hi) { /* the first edge not left of a at Y */
+        const int32_t mid = lo + (hi - lo) / 2;
+        if (rast__fs_cmp(&e[RAST__FS_ID(lv[mid])], a, Y) < 0) lo = mid + 1;
+        else hi = mid;
+    }
+    for (; lo < n; lo++) {
+        if (RAST__FS_ID(lv[lo]) == id) return lo;
+        if (rast__fs_cmp(&e[RAST__FS_ID(lv[lo])], a, Y) != 0) break;
+    }
+    return -1;
+}
+
+static int rast__fast_sweep(const rast__cedge *e, int32_t *g, int32_t m, int64_t Yj,
+                            const rast__cells *c, int32_t wl, int32_t wr, int32_t *s, int32_t *pend,
+                            uint64_t *lv)
+{
+    int32_t n = 0, np = 0, ip = 0, ne = 0, ie = 0, k, lo = 0, hi;
+    int64_t rel;
+    if (c->p > ((int32_t)1 << 19)) return 0;
+    for (k = 0; k < m; k++) { /* the edges starting inside the strip; the order at the top */
+        if ((int64_t)e[g[k]].yt > Yj) pend[np++] = g[k];
+        else if (rast__fs_insert(e, lv, &n, g[k], Yj, 0) < 0) return 0;
+    }
+    for (k = 0; k < m; k++) { /* the edges ending inside it, first in g[] (reordered) */
+        const int32_t id = g[k];
+        if ((int64_t)e[id].yt + e[id].dy < Yj + c->p) {
+            g[k] = g[ne];
+            g[ne++] = id;
+        }
+    }
+    rast__fs_sort(e, pend, np, 0);
+    rast__fs_sort(e, g, ne, 1);
+    hi = n - 1;
+    for (;;) {
+        int32_t w = lo > 0 ? RAST__FS_W(lv[lo - 1]) : wl;
+        int64_t next = c->p;
+        for (k = lo; k < n; k++) { /* the windings from the leftmost change */
+            w += e[RAST__FS_ID(lv[k])].dir;
+            if (k > hi && w == RAST__FS_W(lv[k])) break; /* the rest as it was */
+            if (!rast__fast_ok(w, s)) return 0;
+            lv[k] = (lv[k] & ~((uint64_t)3 << 52)) | ((uint64_t)(w + 1) << 52);
+        }
+        if (k == n && w != wr) return 0;
+        if (ie < ne) next = rast__fs_key(&e[g[ie]], 1) - Yj;
+        if (ip < np && (int64_t)e[pend[ip]].yt - Yj < next) next = (int64_t)e[pend[ip]].yt - Yj;
+        if (next >= c->p) break;
+        rel = next;
+        lo = n;
+        hi = -1;
+        while (ie < ne && rast__fs_key(&e[g[ie]], 1) - Yj == rel) { /* the edges ending at rel leave */
+            const int64_t Y = Yj + rel;
+            const int32_t at = rast__fs_find(e, lv, n, g[ie++], Y);
+            if (at < 0) return 0;
+            if (at > 0 && !rast__fs_close(e, lv, at - 1, Y, rel)) return 0;
+            if (at + 1 < n && !rast__fs_close(e, lv, at, Y, rel)) return 0;
+            memmove(lv + at, lv + at + 1, (size_t)(n - at - 1) * sizeof *lv);
+            n--;
+            if (at > 0 && at < n) rast__fs_open(e, lv, at - 1, Y, rel);
+            if (hi > at) hi--;
+            if (at > hi) hi = at; /* (the entry now there: its winding may change) */
+            if (at - 1 < lo) lo = at > 0 ? at - 1 : 0;
+        }
+        while (ip < np && (int64_t)e[pend[ip]].yt - Yj == rel) { /* those starting there enter */
+            const int32_t at = rast__fs_insert(e, lv, &n, pend[ip++], Yj + rel, rel);
+            if (at < 0) return 0;
+            if (hi >= at) hi++;
+            if (at + 1 > hi) hi = at + 1;
+            if (at - 1 < lo) lo = at > 0 ? at - 1 : 0;
+        }
+        if (lo > n) lo = n;
+    }
+    for (k = 0; k + 1 < n; k++) /* the strip's bottom */
+        if (!rast__fs_close(e, lv, k, Yj + c->p, c->p)) return 0;
+    return 1;
+}
+
 /* A fast row's parts (rast__fast_range has set them), whole, each with the
  * sign dir * s. */
 static void rast__fast_add(rast__cells *c, rast__cedge *e, const int32_t *row, int32_t nrow,
@@ -1367,7 +1554,8 @@ static void rast__cov_row_groups(rast__cells *c, rast__cedge *e, int32_t *row, i
             uint64_t u[RAST__FAST_CUTS + 2];
             int32_t w[RAST__FAST_CUTS + 1], nu = 1, i;
             u[0] = 0;
-            for (z = k; z < g && s != 2; z++) { /* the group's ordinates inside, sorted, once each */
+            int32_t big = m > RAST__FAST_MIXED;
+            for (z = k; z < g && s != 2 && !big; z++) { /* the group's ordinates inside, sorted, once each */
                 const rast__cedge *ed = &e[row[z]];
                 const int64_t rel0 = (int64_t)ed->yt - Yj, rel1 = (int64_t)ed->yt + ed->dy - Yj;
                 uint64_t cut[2];
@@ -1380,7 +1568,7 @@ static void rast__cov_row_groups(rast__cells *c, rast__cedge *e, int32_t *row, i
                     while (y > 1 && u[y - 1] > cut[y2]) y--;
                     if (u[y - 1] == cut[y2]) continue;
                     if (nu > RAST__FAST_CUTS) {
-                        s = 2;
+                        big = 1;
                         break;
                     }
                     memmove(u + y + 1, u + y, (size_t)(nu - y) * sizeof *u);
@@ -1388,7 +1576,9 @@ static void rast__cov_row_groups(rast__cells *c, rast__cedge *e, int32_t *row, i
                     nu++;
                 }
             }
-            if (s != 2) {
+            if (big) { /* (the sweep's room is free here: no group is being swept) */
+                if (!rast__fast_sweep(e, row + k, m, Yj, c, wl, wr, &s, sw->hidx, sw->ct)) s = 2;
+            } else if (s != 2) {
                 u[nu++] = T;
                 for (i = 0; i + 1 < nu; i++) w[i] = wl;
                 if (!rast__fast_mixed(e, row + k, m, u, nu, Yj, c, w, &s)) s = 2;
@@ -1496,6 +1686,10 @@ rast_status rast__cov_area(rast__cedge *e, uint32_t n, int32_t s, rast_fill_rule
     int32_t unsimple = 0; /* the last row was not simple (or not tried) */
     int64_t bottom = INT64_MAX; /* the least of the row edges' bottom ordinates */
     const int simple = !accumulate && rast__cov_acc_may(o, s);
+    /* rows by groups (rast__cov_row_groups) on every output: its ranges are
+     * quick units, which need S <= 16; its cells the exact ones where the
+     * output has no quick way */
+    const int grouped = !accumulate && s >= 0 && s <= 16;
 
     order = (int32_t *)rast__take(arena, (size_t)n * sizeof(int32_t));
     row = (int32_t *)rast__take(arena, (size_t)n * sizeof(int32_t));
@@ -1583,8 +1777,8 @@ rast_status rast__cov_area(rast__cedge *e, uint32_t n, int32_t s, rast_fill_rule
             } else {
                 unsimple = simple;
                 /* (a row of more edges than a fast row may have ends inside: by groups) */
-                fast = simple && nrow > RAST__FAST_CUTS ? 0 : rast__cov_row_fast(&c, e, row, nrow, j);
-                if (!fast && simple)
+                fast = grouped && nrow > RAST__FAST_CUTS ? 0 : rast__cov_row_fast(&c, e, row, nrow, j);
+                if (!fast && grouped)
                     rast__cov_row_groups(&c, e, row, nrow, &sw, j, rule, runs + rnext, rend - rnext);
                 else if (!fast)
                     rast__cov_row_area(&c, e, row, nrow, &sw, j, rule, 0);

@@ -1719,7 +1719,7 @@ rast_status rast__cov_area(rast__cedge *e, uint32_t n, int32_t s, rast_fill_rule
     rast__cov_rows(e, n, c.p, order, o, &ja, &jb, 0);
     rast__cov_sort_tops(order, row, sw.live, e, n); /* (row and live: room until the rows) */
     nlive = rast__cov_cancel(order, e, n);
-    if (simple) { /* the runs, by ordinate (wb and h: room until the rows) */
+    if (grouped) { /* the runs, by ordinate (wb and h: room until the rows) */
         int32_t ymin = INT32_MAX;
         for (k = 0; k < (int32_t)n; k++)
             if (e[k].hz & RAST__HZ_RUN) {

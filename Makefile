@@ -153,7 +153,7 @@ test-py: | $(VENV)
 	@$(PYTHON) tools/extras.py $(PY_TEST_EXTRAS)
 	$(PY_CLEAN)
 	$(PYTHON) -m pip install --quiet --disable-pip-version-check '.[$(PY_TEST_EXTRAS)]'
-	$(PYTHON) -m pytest -q tests
+	$(PYTHON) -m pytest -q --durations=15 tests
 
 # The wheel as a user installs it: built once (cp39-abi3), installed into
 # fresh virtualenvs of the oldest and newest Python found (pyenv's, python3.N

@@ -1499,12 +1499,23 @@ static rast_status rast__acc_walk_all(rast__cedge *e, uint32_t n, int32_t s, ras
         return RAST_OK;
     }
     rast__cov_rows(e, n, v[0].p, w.order, o, &w.ja, &w.jb, 1); /* (the exact steps when needed) */
-    for (i = 0; i < n; i++) { /* the row where each starts, from ja; its last row */
-        const int64_t r0 = rast__acc_floorp(e[i].yt, &v[0]) - w.ja;
-        w.key[i] = r0 < 0 ? 0 : (int32_t)r0;
-        nkeys = (uint32_t)w.key[i] >= nkeys ? (uint32_t)w.key[i] + 1 : nkeys;
-        w.last[i] = (int32_t)(-rast__acc_floorp(-((int64_t)e[i].yt + e[i].dy), &v[0]) - 1);
-        rows += (uint64_t)((int64_t)w.last[i] - (r0 < 0 ? w.ja : r0 + w.ja) + 1);
+    {
+        /* the row where each starts, from ja; its last row.  (In locals:
+         * the stores to key[] and last[] may alias any int32_t, and would
+         * have every one of them read again an edge.)  floor(y / P) by
+         * rast__acc_floorp's shift, S = s. */
+        const int64_t ja = w.ja, bias = (int64_t)1 << (62 - s);
+        int32_t *const key = w.key, *const last = w.last;
+        for (i = 0; i < n; i++) {
+            const int64_t yt = e[i].yt, yb = yt + e[i].dy;
+            const int64_t r0 = (int64_t)(((uint64_t)yt + ((uint64_t)1 << 62)) >> s) - bias - ja;
+            const int64_t l = -((int64_t)(((uint64_t)-yb + ((uint64_t)1 << 62)) >> s) - bias) - 1;
+            const int32_t kk = r0 < 0 ? 0 : (int32_t)r0;
+            key[i] = kk;
+            last[i] = (int32_t)l;
+            nkeys = (uint32_t)kk >= nkeys ? (uint32_t)kk + 1 : nkeys;
+            rows += (uint64_t)(l - (kk + ja) + 1);
+        }
     }
     /* By counts of the rows when the rows are few for the edges (a radix
      * sort takes two passes over the edges past 256 rows, and clears and

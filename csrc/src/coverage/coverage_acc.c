@@ -118,6 +118,7 @@ static inline int64_t rast__acc_col(int64_t v)
 typedef struct rast__acc {
     uint64_t *acc;     /* clip width + 1 cells */
     int32_t x0, x1;    /* clip columns */
+    int32_t last;      /* x1 - x0 - 1: the last cell with a bit (of a column of the clip) */
     uint64_t *blk;     /* a bit for each cell touched (the last, width, not: never read) */
     uint32_t *z;       /* width words: a dense row's sums, cleared as they are read */
     int32_t lo, hi;    /* cells touched this row: [lo, hi] (lo > hi: none) */
@@ -149,6 +150,7 @@ static void rast__acc_init(rast__acc *a, uint64_t *acc, uint64_t *bits, uint32_t
     a->z = z;
     a->x0 = o->clip.x0;
     a->x1 = o->clip.x1;
+    a->last = a->x1 - a->x0 - 1;
     a->lo = INT32_MAX;
     a->hi = -1;
     a->p = (int32_t)1 << s;
@@ -190,19 +192,18 @@ RAST__HOT void rast__acc_ends(rast__cedge *e, int32_t j, int64_t rel0, const ras
  * hold hundreds of parts. */
 static void rast__acc_count(rast__acc *a, int32_t lo, int32_t hi)
 {
-    const int32_t last = a->x1 - a->x0 - 1;
-    if (hi > last) hi = last;
+    if (hi > a->last) hi = a->last;
     for (lo >>= 4; lo <= hi >> 4; lo++) a->cnt[lo]++;
 }
 
 /* Cells [lo, hi] touched: their bits set unless the row is dense. */
 RAST__HOT void rast__acc_mark(rast__acc *a, int32_t lo, int32_t hi)
 {
-    int32_t w0, w1, last = a->x1 - a->x0 - 1;
+    int32_t w0, w1;
     a->lo = lo < a->lo ? lo : a->lo; /* (no branch: at random per part) */
     a->hi = hi > a->hi ? hi : a->hi;
     if (a->dense) return;
-    if (hi > last) hi = last;
+    if (hi > a->last) hi = a->last;
     if (lo > hi) return;
     w0 = lo >> 6;
     w1 = hi >> 6;

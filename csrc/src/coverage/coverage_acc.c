@@ -118,6 +118,7 @@ static inline int64_t rast__acc_col(int64_t v)
 typedef struct rast__acc {
     uint64_t *acc;     /* clip width + 1 cells */
     int32_t x0, x1;    /* clip columns */
+    int32_t last;      /* x1 - x0 - 1: the last cell with a bit (of a column of the clip) */
     uint64_t *blk;     /* a bit for each cell touched (the last, width, not: never read) */
     uint32_t *z;       /* width words: a dense row's sums, cleared as they are read */
     int32_t lo, hi;    /* cells touched this row: [lo, hi] (lo > hi: none) */
@@ -149,6 +150,7 @@ static void rast__acc_init(rast__acc *a, uint64_t *acc, uint64_t *bits, uint32_t
     a->z = z;
     a->x0 = o->clip.x0;
     a->x1 = o->clip.x1;
+    a->last = a->x1 - a->x0 - 1;
     a->lo = INT32_MAX;
     a->hi = -1;
     a->p = (int32_t)1 << s;
@@ -190,19 +192,18 @@ RAST__HOT void rast__acc_ends(rast__cedge *e, int32_t j, int64_t rel0, const ras
  * hold hundreds of parts. */
 static void rast__acc_count(rast__acc *a, int32_t lo, int32_t hi)
 {
-    const int32_t last = a->x1 - a->x0 - 1;
-    if (hi > last) hi = last;
+    if (hi > a->last) hi = a->last;
     for (lo >>= 4; lo <= hi >> 4; lo++) a->cnt[lo]++;
 }
 
 /* Cells [lo, hi] touched: their bits set unless the row is dense. */
 RAST__HOT void rast__acc_mark(rast__acc *a, int32_t lo, int32_t hi)
 {
-    int32_t w0, w1, last = a->x1 - a->x0 - 1;
+    int32_t w0, w1;
     a->lo = lo < a->lo ? lo : a->lo; /* (no branch: at random per part) */
     a->hi = hi > a->hi ? hi : a->hi;
     if (a->dense) return;
-    if (hi > last) hi = last;
+    if (hi > a->last) hi = a->last;
     if (lo > hi) return;
     w0 = lo >> 6;
     w1 = hi >> 6;
@@ -1462,7 +1463,7 @@ static rast_status rast__acc_walk_all(rast__cedge *e, uint32_t n, int32_t s, ras
     rast__acc_walk w;
     rast__acc v[RAST__ACC_BAND];
     uint64_t *cells, *bandbits, rows = 0; /* (the edges' rows, in all) */
-    uint32_t i;
+    uint32_t i, nkeys = 0; /* (the greatest key + 1) */
     int32_t r, k, band;
     w.e = e;
     w.n = n;
@@ -1499,13 +1500,32 @@ static rast_status rast__acc_walk_all(rast__cedge *e, uint32_t n, int32_t s, ras
         return RAST_OK;
     }
     rast__cov_rows(e, n, v[0].p, w.order, o, &w.ja, &w.jb, 1); /* (the exact steps when needed) */
-    for (i = 0; i < n; i++) { /* the row where each starts, from ja; its last row */
-        const int64_t r0 = rast__acc_floorp(e[i].yt, &v[0]) - w.ja;
-        w.key[i] = r0 < 0 ? 0 : (int32_t)r0;
-        w.last[i] = (int32_t)(-rast__acc_floorp(-((int64_t)e[i].yt + e[i].dy), &v[0]) - 1);
-        rows += (uint64_t)((int64_t)w.last[i] - (r0 < 0 ? w.ja : r0 + w.ja) + 1);
+    {
+        /* the row where each starts, from ja; its last row.  (In locals:
+         * the stores to key[] and last[] may alias any int32_t, and would
+         * have every one of them read again an edge.)  floor(y / P) by
+         * rast__acc_floorp's shift, S = s. */
+        const int64_t ja = w.ja, bias = (int64_t)1 << (62 - s);
+        int32_t *const key = w.key, *const last = w.last;
+        for (i = 0; i < n; i++) {
+            const int64_t yt = e[i].yt, yb = yt + e[i].dy;
+            const int64_t r0 = (int64_t)(((uint64_t)yt + ((uint64_t)1 << 62)) >> s) - bias - ja;
+            const int64_t l = -((int64_t)(((uint64_t)-yb + ((uint64_t)1 << 62)) >> s) - bias) - 1;
+            const int32_t kk = r0 < 0 ? 0 : (int32_t)r0;
+            key[i] = kk;
+            last[i] = (int32_t)l;
+            nkeys = (uint32_t)kk >= nkeys ? (uint32_t)kk + 1 : nkeys;
+            rows += (uint64_t)(l - (kk + ja) + 1);
+        }
     }
-    rast__cov_radix_sort(w.order, w.tmp, w.key, n);
+    /* By counts of the rows when the rows are few for the edges (a radix
+     * sort takes two passes over the edges past 256 rows, and clears and
+     * sums 256 counts a pass): the counts in cover[], free until the walk
+     * (4 width of them), the same order either way (both stable). */
+    if (n >= 24 && nkeys < n + 512 && nkeys <= 4 * (uint32_t)w.width)
+        rast__cov_count_sort(w.order, (uint32_t *)(void *)w.cover, w.key, n, nkeys);
+    else
+        rast__cov_radix_sort(w.order, w.tmp, w.key, n);
     rast__cov_zero_rows(o, o->clip.y0, w.ja);
     /* Long edges (RAST__ACC_LONG rows each or more, on the mean) are walked
      * a band at a time, each edge's steppers in registers from row to row;

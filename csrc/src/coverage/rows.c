@@ -68,44 +68,56 @@ uint32_t rast__cov_edges_polygon(const rast_polygon *poly, rast__cedge *e)
 {
     uint32_t k, i, base, n = 0;
     for (k = 0, base = 0; k < poly->nrings; base += poly->ring_sizes[k], k++) {
-        uint32_t size = poly->ring_sizes[k];
+        const uint32_t size = poly->ring_sizes[k];
+        const rast_point *pt = poly->points + base;
+        rast_point a, b;
+        int32_t yp; /* the ordinate of the vertex before a */
+        if (!size) continue;
+        /* a vertex and the next in registers from one edge to the next:
+         * one vertex read an edge (a third of the reads, and of the index
+         * wraps, of reading each edge's four) */
+        yp = pt[size - 1].y;
+        a = pt[0];
+        b = pt[size > 1 ? 1 : 0];
         for (i = 0; i < size; i++) {
-            rast_point a = poly->points[base + i];
-            rast_point b = poly->points[base + (i + 1 == size ? 0 : i + 1)];
-            rast__cedge *ed = &e[n];
-            /* the ring's edges before a and after b horizontal (or empty)? */
             uint32_t i2 = i + 2; /* (i + 2) mod size, without a division per edge */
             if (i2 >= size) i2 -= size;
             if (i2 >= size) i2 -= size;
-            int32_t ha = poly->points[base + (i == 0 ? size - 1 : i - 1)].y == a.y;
-            int32_t hb = poly->points[base + i2].y == b.y;
-            if (a.y == b.y) continue;
-            ed->dir = 1;
-            ed->hz = (ha ? RAST__HZ_TOP : 0) | (hb ? RAST__HZ_BOTTOM : 0);
-            if (hb) { /* the horizontal run after b: its abscissae */
-                uint32_t q = i2;
-                ed->hz |= RAST__HZ_RUN;
-                ed->hx0 = ed->hx1 = b.x;
-                for (;;) {
-                    int32_t x = poly->points[base + q].x;
-                    if (x < ed->hx0) ed->hx0 = x;
-                    if (x > ed->hx1) ed->hx1 = x;
-                    q = q + 1 < size ? q + 1 : 0;
-                    if (poly->points[base + q].y != b.y) break;
+            const rast_point c = pt[i2];
+            if (a.y != b.y) {
+                rast__cedge *ed = &e[n];
+                /* the ring's edges before a and after b horizontal (or empty)? */
+                const int32_t ha = yp == a.y, hb = c.y == b.y;
+                rast_point ta = a, tb = b;
+                ed->dir = 1;
+                ed->hz = (ha ? RAST__HZ_TOP : 0) | (hb ? RAST__HZ_BOTTOM : 0);
+                if (hb) { /* the horizontal run after b: its abscissae */
+                    uint32_t q = i2;
+                    ed->hz |= RAST__HZ_RUN;
+                    ed->hx0 = ed->hx1 = b.x;
+                    for (;;) {
+                        int32_t x = pt[q].x;
+                        if (x < ed->hx0) ed->hx0 = x;
+                        if (x > ed->hx1) ed->hx1 = x;
+                        q = q + 1 < size ? q + 1 : 0;
+                        if (pt[q].y != b.y) break;
+                    }
                 }
+                if (a.y > b.y) {
+                    ta = b;
+                    tb = a;
+                    ed->dir = -1;
+                    ed->hz = (ed->hz & RAST__HZ_RUN) | (hb ? RAST__HZ_TOP : 0) | (ha ? RAST__HZ_BOTTOM : 0);
+                }
+                ed->xt = ta.x;
+                ed->yt = ta.y;
+                ed->dx = tb.x - ta.x;
+                ed->dy = tb.y - ta.y;
+                n++;
             }
-            if (a.y > b.y) {
-                rast_point t = a;
-                a = b;
-                b = t;
-                ed->dir = -1;
-                ed->hz = (ed->hz & RAST__HZ_RUN) | (hb ? RAST__HZ_TOP : 0) | (ha ? RAST__HZ_BOTTOM : 0);
-            }
-            ed->xt = a.x;
-            ed->yt = a.y;
-            ed->dx = b.x - a.x;
-            ed->dy = b.y - a.y;
-            n++;
+            yp = a.y;
+            a = b;
+            b = c;
         }
     }
     return n;
@@ -302,4 +314,17 @@ void rast__cov_radix_sort(int32_t *ix, int32_t *tmp, const int32_t *key, uint32_
     }
     if (src != ix)
         for (i = 0; i < n; i++) ix[i] = src[i];
+}
+
+void rast__cov_count_sort(int32_t *ix, uint32_t *cnt, const int32_t *key, uint32_t n, uint32_t nkeys)
+{
+    uint32_t i, sum = 0;
+    for (i = 0; i < nkeys; i++) cnt[i] = 0;
+    for (i = 0; i < n; i++) cnt[key[i]]++;
+    for (i = 0; i < nkeys; i++) {
+        const uint32_t c = cnt[i];
+        cnt[i] = sum;
+        sum += c;
+    }
+    for (i = 0; i < n; i++) ix[cnt[key[i]]++] = (int32_t)i;
 }

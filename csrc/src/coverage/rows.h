@@ -250,6 +250,11 @@ int rast__cov_tri(const rast_point *t, rast_point *v);
  * key[ix[i]], each key's bits read as unsigned; tmp[0..n) is room.  The
  * result is in ix. */
 void rast__cov_radix_sort(int32_t *ix, int32_t *tmp, const int32_t *key, uint32_t n);
+/* ix[0..n) = 0 .. n - 1 ordered by key[i] in [0, nkeys), stably (what
+ * rast__cov_radix_sort makes of ix[i] = i): one counting pass, one pass
+ * over the nkeys counts cnt[0..nkeys) (room, not cleared), one placing
+ * pass; for keys that are rows, where there are far fewer than edges. */
+void rast__cov_count_sort(int32_t *ix, uint32_t *cnt, const int32_t *key, uint32_t n, uint32_t nkeys);
 /* Each edge's steps set (when quick, those of the quick way only: then
  * rast__cov_exact_steps before an exact row), order[i] = i, and the rows
  * [*ja, *jb) of the clip the edges' strips reach (n > 0). */

@@ -360,10 +360,12 @@ import oracle_shading
 from oracle import oracle_mask
 
 
-def colours_2d(data, fmt, n):
+def colours_2d(data, fmt, n, with_alpha=None):
     """(n, C) colours in one of the spellings fmt takes, with alpha ((L, A)
-    on gray8, (R, G, B, A)) or without, as vertex_colours draws them."""
-    with_alpha = data.draw(st.booleans(), label="alpha")
+    on gray8, (R, G, B, A)) or without (with_alpha None: either), as
+    vertex_colours draws them."""
+    if with_alpha is None:
+        with_alpha = data.draw(st.booleans(), label="alpha")
     c = (2 if with_alpha else 1) if fmt == "gray8" else (4 if with_alpha or fmt == "rgba8888" else 3)
     alpha = st.sampled_from([0, 1, 127, 128, 254, 255]) | st.integers(0, 255)
     vals = []
@@ -423,7 +425,9 @@ def test_polygon_equals_reference(data, fmt, opacity, rule, shading, S, seed):
     rings = [data.draw(st.lists(st.tuples(coord, coord), min_size=3, max_size=6), label="ring")
              for _ in range(nrings)]
     n = sum(len(r) for r in rings)
-    vc = colours_2d(data, fmt, n)
+    # with opacity, alpha too: A = round(alpha o / 255) is rounded only when
+    # neither is 255 (opacity without alpha: test_rect_equals_reference)
+    vc = colours_2d(data, fmt, n, True if opacity is not None else None)
     canvas = random_canvas(fmt, (h, w), np.random.default_rng(seed))
     before = canvas.array.copy()
     canvas.fill_polygon([np.array(r, np.float64) for r in rings], vertex_colors=vc, rule=rule, shading=shading,

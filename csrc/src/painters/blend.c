@@ -375,9 +375,9 @@ rast_status rast_fill_triangles_shaded_blend(const rast_target *target, const ra
 {
     rast__blender b;
     rast_status st = rast__shade_blender(&b, target, blend);
-    if (st != RAST_OK) return st;
-    return rast__fill_shaded(target, tris, ntris, colors, NULL, NULL, opts, shade, rast__rgba_put,
-                             &b, scratch, scratch_bytes);
+    return st != RAST_OK ? st
+                         : rast__fill_shaded(target, tris, ntris, colors, NULL, NULL, opts, shade,
+                                             rast__rgba_put, &b, scratch, scratch_bytes);
 }
 
 rast_status rast_fill_triangles_shaded_aa_blend(const rast_target *target, const rast_point *tris,
@@ -389,9 +389,9 @@ rast_status rast_fill_triangles_shaded_aa_blend(const rast_target *target, const
 {
     rast__blender b;
     rast_status st = rast__shade_blender(&b, target, blend);
-    if (st != RAST_OK) return st;
-    return rast__fill_shaded_aa(target, tris, ntris, colors, opts, shade, rast__rgba_put, &b,
-                                scratch, scratch_bytes);
+    return st != RAST_OK ? st
+                         : rast__fill_shaded_aa(target, tris, ntris, colors, opts, shade,
+                                                rast__rgba_put, &b, scratch, scratch_bytes);
 }
 
 rast_status rast_fill_rect_gouraud_blend(const rast_target *target, rast_point p0, rast_point p1,
@@ -401,8 +401,9 @@ rast_status rast_fill_rect_gouraud_blend(const rast_target *target, rast_point p
 {
     rast__blender b;
     rast_status st = rast__shade_blender(&b, target, blend);
-    if (st != RAST_OK) return st;
-    return rast__fill_rect_shaded(target, p0, p1, colors, opts, shade, rast__rgba_put, &b);
+    return st != RAST_OK ? st
+                         : rast__fill_rect_shaded(target, p0, p1, colors, opts, shade,
+                                                  rast__rgba_put, &b);
 }
 
 rast_status rast_fill_polygon_gouraud_blend(const rast_target *target, const rast_polygon *polygon,
@@ -413,7 +414,7 @@ rast_status rast_fill_polygon_gouraud_blend(const rast_target *target, const ras
 {
     rast__blender b;
     rast_status st = rast__shade_blender(&b, target, blend);
-    if (st != RAST_OK) return st;
-    return rast__fill_polygon_shaded(target, polygon, colors, opts, shade, rast__rgba_put, &b,
-                                     scratch, scratch_bytes);
+    return st != RAST_OK ? st
+                         : rast__fill_polygon_shaded(target, polygon, colors, opts, shade,
+                                                     rast__rgba_put, &b, scratch, scratch_bytes);
 }

@@ -302,7 +302,7 @@ def test_canvas_rgba_stores():
     (dict(opacity=True), (1, 2, 3), "rgb888"), (dict(opacity=0.5), 1, "mono1"),
     (dict(), (1, 2, 3, 256), "rgb888"), (dict(), (1, 2, 3, -1), "rgb888"), (dict(), (1, 2.5, 3, 9), "rgb888"),
     (dict(), "#12345", "rgb888"), (dict(opacity=0.5), "nocolour", "gray8"),
-    (dict(opacity=0.5, vertex_colors=[[1, 2, 3]] * 4), None, "rgb888"),
+    (dict(gamma=2.2, vertex_colors=[[1, 2, 3]] * 4), None, "rgb888"),  # opacity: test_opacity_shaded.py
 ])
 def test_canvas_bad_input(kwargs, color, fmt):
     c = rastrum.Canvas((5, 5), format=fmt, background=0 if fmt == "mono1" else 7)

@@ -350,3 +350,248 @@ def test_c_premultiplied_rgba8888(data, o, aa, seed):
             if ref[j, i, 0] >= 0 and cov[j, i]:
                 want[j, i] = over_premultiplied(want[j, i], ref[j, i], o, int(cov[j, i]))
     np.testing.assert_array_equal(buf, want)
+
+
+# ---- Gouraud rectangles and colour polygons (fill_rect_gouraud, -------------
+# ---- fill_polygon(vertex_colors=)): rast_fill_rect_gouraud_blend, -----------
+# ---- rast_fill_polygon_gouraud_blend -----------------------------------------
+
+import oracle_shading
+from oracle import oracle_mask
+
+
+def colours_2d(data, fmt, n, with_alpha=None):
+    """(n, C) colours in one of the spellings fmt takes, with alpha ((L, A)
+    on gray8, (R, G, B, A)) or without (with_alpha None: either), as
+    vertex_colours draws them."""
+    if with_alpha is None:
+        with_alpha = data.draw(st.booleans(), label="alpha")
+    c = (2 if with_alpha else 1) if fmt == "gray8" else (4 if with_alpha or fmt == "rgba8888" else 3)
+    alpha = st.sampled_from([0, 1, 127, 128, 254, 255]) | st.integers(0, 255)
+    vals = []
+    for _ in range(n):
+        v = data.draw(st.lists(st.integers(0, 255), min_size=c, max_size=c), label="vc")
+        if c in (2, 4):
+            v[-1] = data.draw(alpha, label="a")
+        vals.append(v)
+    return np.array(vals, np.int64).reshape(n, c)
+
+
+def rgba_2d(vc):
+    """The RGBA (n, 4) each (n, C) colour stands for."""
+    return vertex_rgba(None, np.asarray(vc)[None])[0]
+
+
+def expected(fmt, before, ref, painted, opacity, stored):
+    """`before` with the pixels `painted` (H, W) given the RGBA ref (H, W, 4):
+    stored as rgba8888 stores them, or blended by the reference."""
+    if stored:  # rgba8888 without opacity: the colour, alpha too
+        return np.where(painted[..., None], ref, before).astype(before.dtype)
+    rgba = np.where(painted[..., None], ref.astype(np.int64), -1)
+    o = 255 if opacity is None else level_of(opacity)
+    return blend_image(fmt, before, rgba, o, np.full(painted.shape, 255))
+
+
+@settings(max_examples=S_.examples(20), deadline=None)
+@given(data=st.data(), fmt=st.sampled_from(FORMATS), opacity=st.none() | OPACITY,
+       precision=st.sampled_from(["exact", "exact", "fixed", "flat"]), S=st.sampled_from([0, 2, 8]),
+       seed=st.integers(0, 2 ** 32 - 1))
+def test_rect_equals_reference(data, fmt, opacity, precision, S, seed):
+    h, w = data.draw(S_.shapes(7, 8), label="shape")
+    coord = st.one_of(st.floats(-2, 10, allow_nan=False), st.integers(-1, 9).map(float))
+    rect = data.draw(st.tuples(coord, coord, coord, coord), label="rect")
+    F_ = data.draw(st.integers(1, 16), label="F")
+    vc = colours_2d(data, fmt, 4)
+    canvas = random_canvas(fmt, (h, w), np.random.default_rng(seed))
+    before = canvas.array.copy()
+    shading = {"shading": "flat"} if precision == "flat" else {"precision": precision}
+    canvas.fill_rect_gouraud(rect, vc, fraction_bits=F_, subpixel_bits=S, opacity=opacity, **shading)
+    x0, y0, x1, y1 = rect
+    painted = oracle_mask([[(x0, y0), (x1, y0), (x1, y1), (x0, y1)]], (h, w), subpixel_bits=S)
+    ref = oracle_shading.rect_gouraud(rect, rgba_2d(vc), (h, w), precision=precision, fraction_bits=F_,
+                                      subpixel_bits=S)
+    np.testing.assert_array_equal(
+        canvas.array, expected(fmt, before, ref, painted, opacity, opacity is None and fmt == "rgba8888"))
+
+
+@settings(max_examples=S_.examples(20), deadline=None)
+@given(data=st.data(), fmt=st.sampled_from(FORMATS), opacity=st.none() | OPACITY,
+       rule=st.sampled_from(["evenodd", "nonzero"]), shading=st.sampled_from(["gouraud", "gouraud", "flat"]),
+       S=st.sampled_from([0, 2, 8]), seed=st.integers(0, 2 ** 32 - 1))
+def test_polygon_equals_reference(data, fmt, opacity, rule, shading, S, seed):
+    h, w = data.draw(S_.shapes(7, 8), label="shape")
+    coord = st.one_of(st.floats(-2, 10, allow_nan=False), st.integers(-1, 9).map(float))
+    nrings = data.draw(st.integers(1, 2), label="nrings")
+    rings = [data.draw(st.lists(st.tuples(coord, coord), min_size=3, max_size=6), label="ring")
+             for _ in range(nrings)]
+    n = sum(len(r) for r in rings)
+    # with opacity, alpha too: A = round(alpha o / 255) is rounded only when
+    # neither is 255 (opacity without alpha: test_rect_equals_reference)
+    vc = colours_2d(data, fmt, n, True if opacity is not None else None)
+    canvas = random_canvas(fmt, (h, w), np.random.default_rng(seed))
+    before = canvas.array.copy()
+    canvas.fill_polygon([np.array(r, np.float64) for r in rings], vertex_colors=vc, rule=rule, shading=shading,
+                        subpixel_bits=S, opacity=opacity)
+    painted = oracle_mask(rings, (h, w), rule=rule, subpixel_bits=S)
+    rgba = rgba_2d(vc)
+    if shading == "flat":
+        ref = np.broadcast_to(rgba[0], (h, w, 4))
+    else:
+        ref = oracle_shading.polygon_gouraud(rings, rgba, (h, w), rule=rule, subpixel_bits=S)
+    np.testing.assert_array_equal(
+        canvas.array, expected(fmt, before, ref, painted, opacity, opacity is None and fmt == "rgba8888"))
+
+
+@settings(max_examples=S_.examples(15), deadline=None)
+@given(data=st.data(), fmt=st.sampled_from(FORMATS), which=st.sampled_from(["rect", "tris", "polygon"]),
+       precision=st.sampled_from(["exact", "fixed"]), seed=st.integers(0, 2 ** 32 - 1))
+def test_rect_polygon_opacity_one_is_todays_fill(data, fmt, which, precision, seed):
+    """opacity=1 with opaque colours: bit for bit the fill without opacity
+    (rgba8888: over opaque pixels)."""
+    c = 1 if fmt == "gray8" else 3
+    n = 4 if which != "polygon" else data.draw(st.integers(3, 7), label="n")
+    vc = np.array(data.draw(st.lists(st.integers(0, 255), min_size=n * c, max_size=n * c), label="vc")).reshape(n, c)
+    pts = data.draw(st.lists(st.tuples(st.floats(-1, 10, allow_nan=False), st.floats(-1, 9, allow_nan=False)),
+                             min_size=n, max_size=n), label="pts")
+    a = random_canvas(fmt, (8, 9), np.random.default_rng(seed))
+    if fmt == "rgba8888":
+        a.array[..., 3] = 255
+    b = rastrum.Canvas.wrap(a.array.copy(), fmt)
+    for canvas, kw in ((a, {}), (b, {"opacity": 1.0})):
+        if which == "polygon":
+            canvas.fill_polygon(np.array(pts), vertex_colors=vc, **kw)
+        else:
+            canvas.fill_rect_gouraud(pts[0] + pts[1], vc, precision=precision,
+                                     method="bilinear" if which == "rect" else "triangles", **kw)
+    np.testing.assert_array_equal(a.array, b.array)
+
+
+def test_rect_triangles_method_blends_its_triangles():
+    """method="triangles" with opacity: the two triangles' shaded blend."""
+    vc = [(255, 0, 0, 200), (0, 255, 0, 100), (0, 0, 255, 255), (90, 90, 9, 0)]
+    for fmt, corner in (("rgb888", vc), ("gray8", [(v[0], v[3]) for v in vc])):
+        a = rastrum.Canvas((6, 8), format=fmt, background=(40, 50, 60) if fmt == "rgb888" else 40)
+        b = rastrum.Canvas((6, 8), format=fmt, background=(40, 50, 60) if fmt == "rgb888" else 40)
+        a.fill_rect_gouraud((0.5, 0.25, 7.5, 5.75), corner, method="triangles", opacity=0.6)
+        quad = np.array([(0.5, 0.25), (7.5, 0.25), (7.5, 5.75), (0.5, 5.75)])
+        split = [(0, 1, 2), (0, 2, 3)]
+        b.fill_triangles(quad[split], vertex_colors=np.array(corner)[split], opacity=0.6)
+        np.testing.assert_array_equal(a.array, b.array)
+        assert (a.array != 40).any()
+
+
+@pytest.mark.parametrize("which", ["rect", "polygon"])
+@pytest.mark.parametrize("fmt,kwargs,message", [
+    ("rgb888", {"opacity": 1.5}, "opacity must be a number in 0..1"),
+    ("rgb888", {"opacity": float("nan")}, "opacity must be a number in 0..1"),
+    ("rgb888", {"opacity": "half"}, "opacity must be a number in 0..1"),
+    ("mono1", {"opacity": 0.5}, "opacity is for gray8, rgb888, rgb565 and rgba8888"),
+    ("rgb888", {"opacity": 0.5, "colors": [(1, 2, 3, 4, 5)] * 4}, "C in|channels"),
+    ("rgb888", {"opacity": 0.5, "colors": [(1, 2, 300)] * 4}, "0..255"),
+    ("rgb888", {"colors": [(1, 2, 3, -1)] * 4}, "0..255"),
+    ("gray8", {"colors": [(1, 256)] * 4}, "0..255"),
+    ("rgb888", {"opacity": 0.5, "colors": [(1, 2, 3, 4)] * 3}, "4|vertices|colour"),
+])
+def test_rect_polygon_bad_input_writes_nothing(which, fmt, kwargs, message):
+    c = rastrum.Canvas((5, 6), format=fmt)
+    if fmt != "mono1":
+        c.array[...] = 7
+    before = c.array.copy()
+    kw = dict(kwargs)
+    colors = kw.pop("colors", [(255, 0, 0), (0, 255, 0), (0, 0, 255), (9, 9, 9)] if fmt != "gray8"
+                    else [(9, 3)] * 4)
+    with pytest.raises(rastrum.InputError, match=message):
+        if which == "rect":
+            c.fill_rect_gouraud((0, 0, 6, 5), colors, **kw)
+        else:
+            c.fill_polygon([(0, 0), (6, 0), (6, 5), (0, 5)], vertex_colors=colors, **kw)
+    np.testing.assert_array_equal(c.array, before)
+
+
+def test_c_rect_polygon_errors_before_writing():
+    """rast_fill_rect_gouraud_blend and rast_fill_polygon_gouraud_blend
+    refuse a format without the blend, a bad opacity and a bad
+    premultiplied flag before writing anything (rastrum.h)."""
+    from rastrum._native import ffi, lib
+
+    buf = np.full((4, 4), 9, np.uint8)
+    t = ffi.new("rast_target *", {"pixels": ffi.from_buffer(buf), "width": 4, "height": 4, "stride": 4,
+                                  "format": lib.RAST_FORMAT_GRAY8, "clip": {"x0": 0, "y0": 0, "x1": 4, "y1": 4}})
+    pts = ffi.new("rast_point[4]", [{"x": 0, "y": 0}, {"x": 4 << 8, "y": 0}, {"x": 4 << 8, "y": 4 << 8},
+                                    {"x": 0, "y": 4 << 8}])
+    sizes = ffi.new("uint32_t[1]", [4])
+    poly = ffi.new("rast_polygon *", {"points": pts, "ring_sizes": sizes, "nrings": 1})
+    cols = ffi.new("uint8_t[16]", [200] * 16)
+    topts = ffi.new("rast_tri_opts *", {"algorithm": lib.RAST_TRI_EDGE, "subpixel_bits": 8,
+                                        "sample": lib.RAST_SAMPLE_CENTER})
+    fopts = ffi.new("rast_fill_opts *", {"algorithm": lib.RAST_ALGO_AET, "subpixel_bits": 8,
+                                         "sample": lib.RAST_SAMPLE_CENTER})
+    sh = ffi.new("rast_shade_opts *", {"precision": lib.RAST_PRECISION_EXACT})
+    scratch = ffi.new("unsigned char[]", 1 << 16)
+
+    def both(b):
+        return (lib.rast_fill_rect_gouraud_blend(t, pts[0], pts[2], cols, topts, sh, b),
+                lib.rast_fill_polygon_gouraud_blend(t, poly, cols, fopts, sh, b, scratch, len(scratch)))
+
+    for opacity, premul in ((256, 0), (-1, 0), (128, 2)):
+        assert both(ffi.new("rast_blend_opts *", {"opacity": opacity, "premultiplied": premul})) == \
+            (lib.RAST_E_ARG, lib.RAST_E_ARG)
+    b = ffi.new("rast_blend_opts *", {"opacity": 128, "premultiplied": 0})
+    t.format = lib.RAST_FORMAT_MONO1
+    assert both(b) == (lib.RAST_E_FORMAT, lib.RAST_E_FORMAT)
+    t.format = lib.RAST_FORMAT_GRAY8
+    sh.precision = 99
+    assert both(b) == (lib.RAST_E_ARG, lib.RAST_E_ARG)
+    assert (buf == 9).all()
+    sh.precision = lib.RAST_PRECISION_EXACT
+    assert both(b) == (lib.RAST_OK, lib.RAST_OK)  # the polygon over the rectangle's pixels
+    once = over("gray8", 9, (200, 200, 200, 200), 128, 255)
+    assert (buf == over("gray8", once, (200, 200, 200, 200), 128, 255)).all()
+
+
+@settings(max_examples=S_.examples(10), deadline=None)
+@given(data=st.data(), o=st.integers(0, 255), which=st.sampled_from(["rect", "polygon"]),
+       seed=st.integers(0, 2 ** 32 - 1))
+def test_c_rect_polygon_premultiplied(data, o, which, seed):
+    """premultiplied = 1 (the Canvas composites straight): the reference
+    colours blended premultiplied."""
+    from rastrum._native import ffi, lib
+
+    h, w = 5, 6
+    n = 2 if which == "rect" else 4
+    xy = data.draw(st.lists(st.tuples(st.integers(-256, 7 * 256), st.integers(-256, 6 * 256)),
+                            min_size=n, max_size=n), label="pts")
+    vc = np.array(data.draw(st.lists(st.integers(0, 255), min_size=16, max_size=16), label="vc"),
+                  np.int64).reshape(4, 4)
+    buf = np.random.default_rng(seed).integers(0, 256, (h, w, 4), dtype=np.uint8)
+    before = buf.copy()
+    t = ffi.new("rast_target *", {"pixels": ffi.from_buffer(buf), "width": w, "height": h, "stride": 4 * w,
+                                  "format": lib.RAST_FORMAT_RGBA8888,
+                                  "clip": {"x0": 0, "y0": 0, "x1": w, "y1": h}})
+    pts = ffi.new("rast_point[]", [{"x": x, "y": y} for x, y in xy])
+    cols = ffi.new("uint8_t[16]", [int(v) for v in vc.ravel()])
+    sh = ffi.new("rast_shade_opts *", {"precision": lib.RAST_PRECISION_EXACT})
+    b = ffi.new("rast_blend_opts *", {"opacity": o, "premultiplied": 1})
+    px = [(F(x, 256), F(y, 256)) for x, y in xy]
+    if which == "rect":
+        topts = ffi.new("rast_tri_opts *", {"algorithm": lib.RAST_TRI_EDGE, "subpixel_bits": 8,
+                                            "sample": lib.RAST_SAMPLE_CENTER})
+        assert lib.rast_fill_rect_gouraud_blend(t, pts[0], pts[1], cols, topts, sh, b) == lib.RAST_OK
+        rect = (px[0][0], px[0][1], px[1][0], px[1][1])
+        ring = [(rect[0], rect[1]), (rect[2], rect[1]), (rect[2], rect[3]), (rect[0], rect[3])]
+        ref = oracle_shading.rect_gouraud(rect, vc, (h, w))
+    else:
+        fopts = ffi.new("rast_fill_opts *", {"algorithm": lib.RAST_ALGO_AET, "subpixel_bits": 8,
+                                             "sample": lib.RAST_SAMPLE_CENTER})
+        sizes = ffi.new("uint32_t[1]", [4])
+        poly = ffi.new("rast_polygon *", {"points": pts, "ring_sizes": sizes, "nrings": 1})
+        scratch = ffi.new("unsigned char[]", 1 << 16)
+        assert lib.rast_fill_polygon_gouraud_blend(t, poly, cols, fopts, sh, b, scratch,
+                                                   len(scratch)) == lib.RAST_OK
+        ring = px
+        ref = oracle_shading.polygon_gouraud([ring], vc, (h, w))
+    painted = oracle_mask([[(float(x), float(y)) for x, y in ring]], (h, w))
+    want = before.astype(np.int64)
+    for j, i in zip(*np.nonzero(painted)):
+        want[j, i] = over_premultiplied(want[j, i], ref[j, i], o, 255)
+    np.testing.assert_array_equal(buf, want)

@@ -1380,6 +1380,31 @@ RAST_API rast_status rast_fill_triangles_shaded_aa_blend(const rast_target *targ
                                                          const rast_blend_opts *blend,
                                                          void *scratch, size_t scratch_bytes);
 
+/* rast_fill_rect_gouraud and rast_fill_polygon_gouraud blended the same
+ * way: the same pixels, at each the same interpolated colour (every
+ * channel, alpha too; RAST_PRECISION_FLAT: corner / vertex 0's colour,
+ * alpha too), mixed at c = 255 exactly as rast_blend_coverage mixes a
+ * colour of that alpha (A = round(alpha o / 255); straight or
+ * premultiplied RGBA8888 as blend->premultiplied; A = 0 leaves the pixel).
+ * blend NULL: o = 255, straight.  o = 255 with alpha 255 at every corner
+ * (vertex) gives the stored fill's pixels on GRAY8, RGB888 and RGB565
+ * (and on RGBA8888 over opaque pixels).  Only the four formats of
+ * rast_blend_coverage.  Scratch (the polygon's) as the stored fill's.
+ * Errors, all before anything is written: those of rast_blend_coverage's
+ * target and options, then those of the stored fill. */
+RAST_API rast_status rast_fill_rect_gouraud_blend(const rast_target *target, rast_point p0,
+                                                  rast_point p1, const uint8_t *colors,
+                                                  const rast_tri_opts *opts,
+                                                  const rast_shade_opts *shade,
+                                                  const rast_blend_opts *blend);
+RAST_API rast_status rast_fill_polygon_gouraud_blend(const rast_target *target,
+                                                     const rast_polygon *polygon,
+                                                     const uint8_t *colors,
+                                                     const rast_fill_opts *opts,
+                                                     const rast_shade_opts *shade,
+                                                     const rast_blend_opts *blend,
+                                                     void *scratch, size_t scratch_bytes);
+
 /* ==========================================================================
  * Scenes, band by band
  * ========================================================================== */

@@ -147,7 +147,8 @@ static long rastpy_poly(const rast_target *target, const double *xy,
                         uint32_t npoints, const uint32_t *ring_sizes,
                         uint32_t nrings, const rast_fill_opts *opts,
                         const void *pixel, const void *background,
-                        const uint8_t *colors, const rast_shade_opts *shade)
+                        const uint8_t *colors, const rast_shade_opts *shade,
+                        const rast_blend_opts *blend)
 {
     rast_polygon poly;
     rast_target cut = *target;
@@ -199,7 +200,8 @@ static long rastpy_poly(const rast_target *target, const double *xy,
         return RASTPY_E_NOMEM;
     }
     cut.clip = b;
-    st = shade ? rast_fill_polygon_gouraud(&cut, &poly, colors, opts, shade, scratch, need)
+    st = shade && blend ? rast_fill_polygon_gouraud_blend(&cut, &poly, colors, opts, shade, blend, scratch, need)
+         : shade ? rast_fill_polygon_gouraud(&cut, &poly, colors, opts, shade, scratch, need)
          : background ? rast_fill_polygon_opaque(&cut, &poly, opts, pixel, background, scratch, need)
                       : rast_fill_polygon(&cut, &poly, opts, pixel, scratch, need);
     if (scratch != (void *)(local + RASTPY_LOCAL_WORDS / 2)) free(scratch);
@@ -223,7 +225,7 @@ long rastpy_fill_polygon(const rast_target *target, const double *xy,
                          uint32_t nrings, const rast_fill_opts *opts,
                          const void *pixel, const void *background)
 {
-    return rastpy_poly(target, xy, npoints, ring_sizes, nrings, opts, pixel, background, NULL, NULL);
+    return rastpy_poly(target, xy, npoints, ring_sizes, nrings, opts, pixel, background, NULL, NULL, NULL);
 }
 
 /* A complete gray8 (height, width) mask, 1 inside and 0 outside, written
@@ -253,7 +255,7 @@ long rastpy_mask_ring(void *mask, int32_t height, int32_t width, const double *x
 long rastpy_fill_ring(const rast_target *target, const double *xy, uint32_t npoints,
                       const rast_fill_opts *opts, const void *pixel)
 {
-    return rastpy_poly(target, xy, npoints, NULL, 1, opts, pixel, NULL, NULL, NULL);
+    return rastpy_poly(target, xy, npoints, NULL, 1, opts, pixel, NULL, NULL, NULL, NULL);
 }
 
 /* Snap the 3 * ntris vertices xy (x, y float pairs), then
@@ -318,13 +320,16 @@ long rastpy_fill_triangles_shaded_blend(const rast_target *target, const double 
     return rastpy_tris(target, xy, ntris, opts, NULL, shade, colors, NULL, NULL, blend);
 }
 
-/* rastpy_poly with vertex colours: rast_fill_polygon_gouraud. */
+/* rastpy_poly with vertex colours: rast_fill_polygon_gouraud, or with
+ * blend not NULL rast_fill_polygon_gouraud_blend. */
 long rastpy_fill_polygon_gouraud(const rast_target *target, const double *xy,
                                  uint32_t npoints, const uint32_t *ring_sizes,
                                  uint32_t nrings, const rast_fill_opts *opts,
-                                 const uint8_t *colors, const rast_shade_opts *shade)
+                                 const uint8_t *colors, const rast_shade_opts *shade,
+                                 const rast_blend_opts *blend)
 {
-    return rastpy_poly(target, xy, npoints, ring_sizes, nrings, opts, NULL, NULL, colors, shade);
+    if (!shade) return RAST_E_NULL;
+    return rastpy_poly(target, xy, npoints, ring_sizes, nrings, opts, NULL, NULL, colors, shade, blend);
 }
 
 /* For the tests: does the thread running a C call hold the GIL?  cffi

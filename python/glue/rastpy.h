@@ -53,7 +53,8 @@ int rastpy_gil_held(void);
 long rastpy_fill_polygon_gouraud(const rast_target *target, const double *xy,
                                  uint32_t npoints, const uint32_t *ring_sizes,
                                  uint32_t nrings, const rast_fill_opts *opts,
-                                 const uint8_t *colors, const rast_shade_opts *shade);
+                                 const uint8_t *colors, const rast_shade_opts *shade,
+                                 const rast_blend_opts *blend);
 /* cdef-end */
 
 #endif

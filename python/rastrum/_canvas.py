@@ -438,6 +438,33 @@ class Canvas:
             return colors, None  # opaque: the stored fill writes the same pixels
         return colors, ffi.new("rast_blend_opts *", {"opacity": level, "premultiplied": 0})
 
+    def _vertex_blend(self, colors, opacity, entry, what):
+        """_shaded_blend for the (N, C) corner or vertex colours of
+        fill_rect_gouraud and fill_polygon: None (stored), else (RGBA
+        colours as uint8 (N, 4), ``rast_blend_opts *`` or None when
+        opaque), checked (docs/opacity.md "Shaded fills")."""
+        fmt = self._format
+        try:
+            a = np.asarray(colors)
+        except (TypeError, ValueError):
+            a = None
+        if opacity is None:
+            if fmt not in ("gray8", "rgb888", "rgb565") or a is None or a.ndim != 2 \
+                    or a.shape[-1] != (2 if fmt == "gray8" else 4):
+                return None
+            level = 255
+        else:
+            level = _blend_level(opacity, entry, fmt)
+        rgba = None
+        if fmt == "gray8" and a is not None and a.dtype.kind in "iu" and a.ndim == 2 and a.shape[-1] == 2:
+            rgba = _shading.to_rgba(a[..., [0, 0, 0, 1]], what)  # (L, A), as fill_polygon's colour
+        if rgba is None:
+            n = a.shape[0] if a is not None and a.ndim >= 1 else -1
+            rgba = _shading.colors_rgba(colors, n, fmt, what)
+        if level == 255 and fmt != "rgba8888" and bool(np.all(rgba[..., 3] == 255)):
+            return rgba, None  # opaque: the stored fill writes the same pixels
+        return rgba, ffi.new("rast_blend_opts *", {"opacity": level, "premultiplied": 0})
+
     def _blend(self, entry, geometry, blend, aa, rule, subpixel_bits, sample_offset, algorithm, rounding,
                boundary, vertex_colors, depth=None):
         """A fill whose colour's alpha (times opacity) is applied: the
@@ -546,7 +573,11 @@ class Canvas:
         ``shading="flat"`` paints vertex 0's colour instead.  Only
         ``algorithm="aet"``.  Give exactly one of `color` and
         `vertex_colors`, as for :meth:`fill_triangle` and
-        :meth:`fill_triangles`.
+        :meth:`fill_triangles`.  A vertex colour's alpha ((R, G, B, A);
+        gray8 (L, A)) and `opacity` are applied as :meth:`fill_triangles`
+        applies them: each pixel's interpolated colour blended
+        source-over at its interpolated alpha times the opacity level
+        (rgba8888 without `opacity` stores the alpha).
 
         A colour's alpha ((R, G, B, A); gray8 (L, A); "#rrggbbaa") and
         `opacity` (a number in 0..1, the level floor(opacity*255 + 1/2))
@@ -572,6 +603,15 @@ class Canvas:
                                  precision=(precision, "exact"), path_tolerance=tolerance):
                     return
             rings = path_rings(rings, subpixel_bits, tolerance)
+        if vertex_colors is not None and color is None and aa is None and gamma is None \
+                and self._format != "label":
+            vc = _shading.polygon_vertex_colors(vertex_colors)
+            shade_blend = self._vertex_blend(vc, opacity, "Canvas.fill_polygon", "vertex_colors")
+            if shade_blend is not None:  # blended (docs/opacity.md "Shaded fills")
+                _shading.fill_polygon_gouraud(self, rings, vc, _core.fill_opts(
+                    algorithm, rule, subpixel_bits, sample_offset, rounding, boundary), _core.shading_precision(
+                    shading, precision), shade_blend)
+                return
         if opacity is not None or gamma is not None or (color is not None and type(color) is not int):
             blend, color = _blend_args(color, opacity, self._format, "Canvas.fill_polygon", gamma)
             if blend is not None:
@@ -855,7 +895,7 @@ class Canvas:
     def fill_rect_gouraud(self, rect: npt.ArrayLike, corner_colors: npt.ArrayLike, *,
                           method: Literal["bilinear", "triangles"] = "bilinear", shading: Shading = "gouraud",
                           precision: Precision = "exact", fraction_bits: int = 16, subpixel_bits: int = 8,
-                          sample_offset: float = 0.5) -> None:
+                          sample_offset: float = 0.5, opacity: Optional[float] = None) -> None:
         """A Gouraud rectangle: four corner colours, interpolated (the textbook's §3.2.3).
 
         `rect` is (x0, y0, x1, y1) in pixels; `corner_colors` is (4, C), C
@@ -869,6 +909,14 @@ class Canvas:
         to (x1, y1) and fills the two Gouraud triangles instead: the
         difference of the textbook's Figure 3-18.
 
+        A corner colour's alpha ((R, G, B, A); gray8 (L, A)) and `opacity`
+        (0..1, the level floor(opacity*255 + 1/2)) are applied source-over
+        on gray8, rgb888, rgb565 and rgba8888 canvases, as
+        :meth:`fill_triangles` applies a vertex colour's: each pixel's
+        interpolated colour at its interpolated alpha times the opacity
+        (rgba8888 without `opacity` stores the alpha; docs/opacity.md
+        "Shaded fills").
+
         Examples
         --------
         >>> import rastrum
@@ -881,8 +929,11 @@ class Canvas:
 
         if self._format == "label":
             raise InputError("a label canvas has no channels to shade")
+        shade_blend = self._vertex_blend(corner_colors, opacity, "Canvas.fill_rect_gouraud", "corner_colors")
+        if shade_blend is not None and shade_blend[0].shape[0] != 4:
+            raise InputError("corner_colors must be 4 colours, one per corner, not %d" % shade_blend[0].shape[0])
         _shading.fill_rect_gouraud(self, rect, corner_colors, method, _core.shading_precision(shading, precision),
-                                   fraction_bits, subpixel_bits, sample_offset)
+                                   fraction_bits, subpixel_bits, sample_offset, shade_blend, opacity)
 
     @_label_spill
     def _line(self, p0: Point, p1: Point, color: Color, *, algorithm: LineAlgorithm = "bresenham",

@@ -750,9 +750,10 @@ def mask_polygon(shape, rings, opts, s):
 INT32_MAX = 2**31 - 1
 
 
-def fill_polygon_gouraud(target, rings, colors, opts, shade, s):
+def fill_polygon_gouraud(target, rings, colors, opts, shade, s, blend=None):
     """As fill_polygon, with RGBA `colors` (uint8 (N, 4), one per vertex of
-    the rings in order) interpolated by the AET (rast_fill_polygon_gouraud)."""
+    the rings in order) interpolated by the AET (rast_fill_polygon_gouraud;
+    `blend` a ``rast_blend_opts *``: rast_fill_polygon_gouraud_blend)."""
     pts, sizes, nrings = _points(rings)
     if not nrings:
         return
@@ -764,7 +765,8 @@ def fill_polygon_gouraud(target, rings, colors, opts, shade, s):
                                                         plural(len(pts), "vertex", "vertices")))
     xy = ffi.from_buffer("double[]", pts)
     _check_glue(lib.rastpy_fill_polygon_gouraud(target, xy, len(pts), sizes, nrings, opts,
-                                                ffi.from_buffer("uint8_t[]", colors), shade), pts, s,
+                                                ffi.from_buffer("uint8_t[]", colors), shade,
+                                                blend if blend is not None else ffi.NULL), pts, s,
                 "rings", [len(pts)] if nrings == 1 else sizes)
 
 

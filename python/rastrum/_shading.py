@@ -164,11 +164,19 @@ def rect_corners(rect):
 
 
 def fill_rect_gouraud(canvas, rect, corner_colors, method, precision, fraction_bits, subpixel_bits,
-                      sample_offset):
+                      sample_offset, shade_blend=None, opacity=None):
+    """shade_blend: None (the colours stored), or (RGBA corner colours as
+    uint8 (4, 4), ``rast_blend_opts *`` or None when opaque) from
+    Canvas._vertex_blend: rast_fill_rect_gouraud_blend; method "triangles"
+    hands the corner colours and `opacity` to fill_triangles."""
     r = rect_corners(rect)
     if not isinstance(method, str) or method not in RECT_METHODS:
         raise InputError("unknown method %r; choose one of: %s" % (method, ", ".join(RECT_METHODS)))
-    cols = colors_rgba(corner_colors, 4, canvas.format, "corner_colors")
+    blend = None
+    if shade_blend is not None:
+        cols, blend = shade_blend
+    else:
+        cols = colors_rgba(corner_colors, 4, canvas.format, "corner_colors")
     x0, y0, x1, y1 = r
     if method == "triangles":
         # The diagonal from corner 0 (x0, y0) to corner 2 (x1, y1).
@@ -176,8 +184,12 @@ def fill_rect_gouraud(canvas, rect, corner_colors, method, precision, fraction_b
         split = [(0, 1, 2), (0, 2, 3)]
         tris = quad[split]
         vc = cols[split]
+        if canvas.format == "gray8":
+            vc = vc[..., [0, 3]]  # (L, A): gray8's spelling of a colour with alpha
+        elif _CHANNELS.get(canvas.format) == 1:
+            vc = vc[..., :1]  # a level
         canvas.fill_triangles(tris, vertex_colors=vc, precision=precision, fraction_bits=fraction_bits,
-                              subpixel_bits=subpixel_bits, sample_offset=sample_offset)
+                              subpixel_bits=subpixel_bits, sample_offset=sample_offset, opacity=opacity)
         return
     opts = _triangles.tri_opts("edge", subpixel_bits, sample_offset)
     sh = shade_opts(precision, fraction_bits)
@@ -190,15 +202,30 @@ def fill_rect_gouraud(canvas, rect, corner_colors, method, precision, fraction_b
                             lib.RAST_GOURAUD_RECT_MAX_SIZE / 2.0 ** opts.subpixel_bits, opts.subpixel_bits))
     p0 = ffi.new("rast_point *", (int(pts[0, 0]), int(pts[0, 1])))
     p1 = ffi.new("rast_point *", (int(pts[1, 0]), int(pts[1, 1])))
+    if blend is not None:
+        _core._check(lib.rast_fill_rect_gouraud_blend(canvas._writable(), p0[0], p1[0],
+                                                      ffi.from_buffer("uint8_t[]", cols), opts, sh, blend))
+        return
     _core._check(lib.rast_fill_rect_gouraud(canvas._writable(), p0[0], p1[0],
                                             ffi.from_buffer("uint8_t[]", cols), opts, sh))
 
 
-def fill_polygon_gouraud(canvas, rings, vertex_colors, opts, precision):
+def polygon_vertex_colors(vertex_colors):
+    """fill_polygon's vertex colours as one array-like: a list of one
+    (N_k, C) per ring concatenated."""
     if isinstance(vertex_colors, (list, tuple)) and vertex_colors and _core.ndim(vertex_colors[0]) == 2:
-        vertex_colors = np.concatenate([np.asarray(v) for v in vertex_colors])
-    vc = np.asarray(vertex_colors)
-    n = vc.shape[0] if vc.ndim >= 1 else -1
-    cols = colors_rgba(vc, n, canvas.format, "vertex_colors")
+        return np.concatenate([np.asarray(v) for v in vertex_colors])
+    return vertex_colors
+
+
+def fill_polygon_gouraud(canvas, rings, vertex_colors, opts, precision, shade_blend=None):
+    """shade_blend as fill_rect_gouraud's: rast_fill_polygon_gouraud_blend."""
+    blend = None
+    if shade_blend is not None:
+        cols, blend = shade_blend
+    else:
+        vc = np.asarray(polygon_vertex_colors(vertex_colors))
+        n = vc.shape[0] if vc.ndim >= 1 else -1
+        cols = colors_rgba(vc, n, canvas.format, "vertex_colors")
     _core.fill_polygon_gouraud(canvas._writable(), rings, cols, opts, shade_opts(precision, 16),
-                               opts.subpixel_bits)
+                               opts.subpixel_bits, blend)

@@ -355,6 +355,17 @@ static void rast__rgba_put(const void *ctx, unsigned char *row, int32_t x, int32
     }
 }
 
+/* The blender of a shaded fill (rast__rgba_put's ctx): rast__blend_init's
+ * checks of the target and options, its colour unused. */
+static rast_status rast__shade_blender(rast__blender *b, const rast_target *target,
+                                       const rast_blend_opts *blend)
+{
+    static const uint8_t white[4] = {255, 255, 255, 255};
+    rast__painter p;
+    rast_rect clip;
+    return rast__blend_init(b, target, white, blend, &clip, &p);
+}
+
 rast_status rast_fill_triangles_shaded_blend(const rast_target *target, const rast_point *tris,
                                              uint32_t ntris, const uint8_t *colors,
                                              const rast_tri_opts *opts,
@@ -362,14 +373,11 @@ rast_status rast_fill_triangles_shaded_blend(const rast_target *target, const ra
                                              const rast_blend_opts *blend, void *scratch,
                                              size_t scratch_bytes)
 {
-    static const uint8_t white[4] = {255, 255, 255, 255};
     rast__blender b;
-    rast__painter p;
-    rast_rect clip;
-    rast_status st = rast__blend_init(&b, target, white, blend, &clip, &p);
-    if (st != RAST_OK) return st;
-    return rast__fill_shaded(target, tris, ntris, colors, NULL, NULL, opts, shade, rast__rgba_put,
-                             &b, scratch, scratch_bytes);
+    rast_status st = rast__shade_blender(&b, target, blend);
+    return st != RAST_OK ? st
+                         : rast__fill_shaded(target, tris, ntris, colors, NULL, NULL, opts, shade,
+                                             rast__rgba_put, &b, scratch, scratch_bytes);
 }
 
 rast_status rast_fill_triangles_shaded_aa_blend(const rast_target *target, const rast_point *tris,
@@ -379,12 +387,34 @@ rast_status rast_fill_triangles_shaded_aa_blend(const rast_target *target, const
                                                 const rast_blend_opts *blend, void *scratch,
                                                 size_t scratch_bytes)
 {
-    static const uint8_t white[4] = {255, 255, 255, 255};
     rast__blender b;
-    rast__painter p;
-    rast_rect clip;
-    rast_status st = rast__blend_init(&b, target, white, blend, &clip, &p);
-    if (st != RAST_OK) return st;
-    return rast__fill_shaded_aa(target, tris, ntris, colors, opts, shade, rast__rgba_put, &b,
-                                scratch, scratch_bytes);
+    rast_status st = rast__shade_blender(&b, target, blend);
+    return st != RAST_OK ? st
+                         : rast__fill_shaded_aa(target, tris, ntris, colors, opts, shade,
+                                                rast__rgba_put, &b, scratch, scratch_bytes);
+}
+
+rast_status rast_fill_rect_gouraud_blend(const rast_target *target, rast_point p0, rast_point p1,
+                                         const uint8_t *colors, const rast_tri_opts *opts,
+                                         const rast_shade_opts *shade,
+                                         const rast_blend_opts *blend)
+{
+    rast__blender b;
+    rast_status st = rast__shade_blender(&b, target, blend);
+    return st != RAST_OK ? st
+                         : rast__fill_rect_shaded(target, p0, p1, colors, opts, shade,
+                                                  rast__rgba_put, &b);
+}
+
+rast_status rast_fill_polygon_gouraud_blend(const rast_target *target, const rast_polygon *polygon,
+                                            const uint8_t *colors, const rast_fill_opts *opts,
+                                            const rast_shade_opts *shade,
+                                            const rast_blend_opts *blend, void *scratch,
+                                            size_t scratch_bytes)
+{
+    rast__blender b;
+    rast_status st = rast__shade_blender(&b, target, blend);
+    return st != RAST_OK ? st
+                         : rast__fill_polygon_shaded(target, polygon, colors, opts, shade,
+                                                     rast__rgba_put, &b, scratch, scratch_bytes);
 }

@@ -239,8 +239,9 @@ rast_status rast__cov_paint_checked(const rast_polygon *poly, const rast_point *
  * fills with opacity"): n pixels from x of `row`, pixel k from the RGBA
  * colour rgba[4k .. 4k + 3] (its alpha times the opacity) at coverage
  * level cov[k] (cov NULL: 255), rounded as rast_blend_coverage rounds.
- * ctx is what rast__rgba_blend_init set up.  The shaded fills call it in
- * place of the format's put (shade.c) or blend (shade_aa.c). */
+ * ctx is what blend.c set up for it.  The shaded fills call it in place
+ * of the format's put (shade.c, shade_rect.c, shade_poly.c) or blend
+ * (shade_aa.c). */
 typedef void (*rast__rgba_put_fn)(const void *ctx, unsigned char *row, int32_t x, int32_t n,
                                   const unsigned char *rgba, const uint8_t *cov);
 
@@ -257,5 +258,18 @@ rast_status rast__fill_shaded_aa(const rast_target *target, const rast_point *tr
                                  const rast_coverage_opts *opts, const rast_shade_opts *shade,
                                  rast__rgba_put_fn bput, const void *bctx, void *scratch,
                                  size_t scratch_bytes);
+
+/* rast_fill_rect_gouraud (shade_rect.c) and rast_fill_polygon_gouraud
+ * (shade_poly.c) with each pixel's colour handed to bput (NULL: stored as
+ * they store it): every channel, alpha too, interpolated whatever the
+ * format; FLAT hands vertex (corner) 0's colour to the same pixels. */
+rast_status rast__fill_rect_shaded(const rast_target *target, rast_point p0, rast_point p1,
+                                   const uint8_t *colors, const rast_tri_opts *opts,
+                                   const rast_shade_opts *shade, rast__rgba_put_fn bput,
+                                   const void *bctx);
+rast_status rast__fill_polygon_shaded(const rast_target *target, const rast_polygon *polygon,
+                                      const uint8_t *colors, const rast_fill_opts *opts,
+                                      const rast_shade_opts *shade, rast__rgba_put_fn bput,
+                                      const void *bctx, void *scratch, size_t scratch_bytes);
 
 #endif /* RAST_PAINT_H */

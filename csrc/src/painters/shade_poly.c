@@ -88,6 +88,8 @@ static int32_t rast__i128_small_div(rast__i128 n, rast__i128 d, rast__i128 *rem)
  * current run, whose bounding edges rast__gpoly_begin was given. */
 typedef struct rast__shade_poly {
     const rast_target *target;
+    rast__rgba_out out;    /* stored, or blended (rast_fill_polygon_gouraud_blend) */
+    int flat;              /* FLAT through the blend: vertex 0's colour */
     const rast_point *pts;
     const uint8_t *colors; /* 4 per vertex */
     const int32_t *src;    /* edge k: from vertex src[2k] to src[2k+1] */
@@ -176,7 +178,7 @@ static void rast__gpoly_span(const rast__shade_poly *s, int32_t row, int32_t x0,
             }
             fill = 1;
             if (n == 1) {
-                rast__put_rgba(s->target, p, x, fill, run);
+                rast__put_rgba(&s->out, p, x, fill, run);
                 return;
             }
             xs += g->unit;
@@ -205,7 +207,7 @@ static void rast__gpoly_span(const rast__shade_poly *s, int32_t row, int32_t x0,
             }
         }
         if (++fill == RAST__SHADE_RUN || i + 1 == n) {
-            rast__put_rgba(s->target, p, x, fill, run);
+            rast__put_rgba(&s->out, p, x, fill, run);
             x += fill;
             fill = 0;
         }
@@ -225,6 +227,11 @@ static void rast__gpoly_run(void *user, int32_t row, const rast__edge *l, const 
     rast__shade_poly *s = (rast__shade_poly *)user;
     int32_t x0 = l->x > s->cx0 ? l->x : s->cx0, x1 = r->x < s->cx1 ? r->x : s->cx1;
     if (x0 >= x1) return;
+    if (s->flat) {
+        rast__put_rgba_flat(&s->out, (unsigned char *)s->target->pixels + (ptrdiff_t)row * s->target->stride,
+                            x0, x1 - x0, s->colors);
+        return;
+    }
     rast__gpoly_begin(s, l->next, r->next);
     rast__gpoly_span(s, row, x0, x1);
 }
@@ -274,10 +281,12 @@ rast_status rast_polygon_gouraud_scratch_size(uint32_t npoints, int32_t width, i
     return RAST_OK;
 }
 
-rast_status rast_fill_polygon_gouraud(const rast_target *target, const rast_polygon *polygon,
+/* rast_fill_polygon_gouraud with each run's colours to bput (NULL:
+ * stored), as paint.h says. */
+rast_status rast__fill_polygon_shaded(const rast_target *target, const rast_polygon *polygon,
                                       const uint8_t *colors, const rast_fill_opts *opts,
-                                      const rast_shade_opts *shade, void *scratch,
-                                      size_t scratch_bytes)
+                                      const rast_shade_opts *shade, rast__rgba_put_fn bput,
+                                      const void *bctx, void *scratch, size_t scratch_bytes)
 {
     rast__shade_poly s;
     rast__grid g;
@@ -323,7 +332,7 @@ rast_status rast_fill_polygon_gouraud(const rast_target *target, const rast_poly
     arena.left = scratch_bytes;
     src = (int32_t *)rast__take(&arena, (size_t)npoints * 2 * sizeof(int32_t));
     if (!src) return RAST_E_SCRATCH;
-    if (shade->precision == RAST_PRECISION_FLAT) {
+    if (shade->precision == RAST_PRECISION_FLAT && !bput) {
         /* One colour, vertex 0's: the solid painter of its value (a
          * format's fill of pack(c) writes what its put of c writes), fed by
          * the AET filler, which owns the same pixels as the walk below. */
@@ -338,6 +347,8 @@ rast_status rast_fill_polygon_gouraud(const rast_target *target, const rast_poly
         return rast__aet_fill(polygon, npoints, &g, opts->rule, &clip, &sink, &arena);
     }
     s.target = target;
+    rast__rgba_out_init(&s.out, target, bput, bctx);
+    s.flat = shade->precision == RAST_PRECISION_FLAT; /* blended: the walk's pixels, one colour */
     s.pts = polygon->points;
     s.colors = colors;
     s.src = src;
@@ -346,4 +357,13 @@ rast_status rast_fill_polygon_gouraud(const rast_target *target, const rast_poly
     s.cx1 = clip.x1;
     return rast__aet_walk(polygon, npoints, &g, opts->rule, &clip, &arena, rast__gpoly_run,
                           rast__shade_order, &s, src);
+}
+
+rast_status rast_fill_polygon_gouraud(const rast_target *target, const rast_polygon *polygon,
+                                      const uint8_t *colors, const rast_fill_opts *opts,
+                                      const rast_shade_opts *shade, void *scratch,
+                                      size_t scratch_bytes)
+{
+    return rast__fill_polygon_shaded(target, polygon, colors, opts, shade, NULL, NULL, scratch,
+                                     scratch_bytes);
 }

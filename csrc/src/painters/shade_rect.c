@@ -56,6 +56,7 @@ static rast_status rast__rect_check(const rast_target *target, rast_point p0, ra
 /* The bilinear Gouraud painter: what the rectangle's pixels get. */
 typedef struct rast__rect_shade {
     const rast_target *target;
+    rast__rgba_out out;     /* stored, or blended (rast_fill_rect_gouraud_blend) */
     const uint8_t *colors;  /* as given: FLAT paints corner p0's */
     const rast__grid *g;
     rast_precision prec;
@@ -85,16 +86,13 @@ static void rast__rect_span(const rast__rect_shade *s, int64_t j, int64_t r0, in
 #define RAST__RECT_EMIT()                                               \
     do {                                                                \
         if (++fill == RAST__SHADE_RUN || i + 1 == n) {                   \
-            rast__put_rgba(s->target, p, x, fill, run);                     \
+            rast__put_rgba(&s->out, p, x, fill, run);                      \
             x += fill;                                                  \
             fill = 0;                                                   \
         }                                                               \
     } while (0)
     if (s->prec == RAST_PRECISION_FLAT) {
-        for (i = 0; i < n; i++) {
-            for (ch = 0; ch < 4; ch++) run[4 * fill + ch] = s->colors[ch]; /* corner p0, as given */
-            RAST__RECT_EMIT();
-        }
+        rast__put_rgba_flat(&s->out, p, x, (int32_t)n, s->colors); /* corner p0, as given */
         return;
     }
     if (s->prec == RAST_PRECISION_EXACT) {
@@ -164,9 +162,12 @@ static void rast__rect_row(void *user, int32_t y, const int32_t *xs, int32_t n)
     for (k = 0; k < n; k++) rast__rect_span(s, y, xs[2 * k], xs[2 * k + 1]);
 }
 
-rast_status rast_fill_rect_gouraud(const rast_target *target, rast_point p0, rast_point p1,
+/* rast_fill_rect_gouraud with each run's colours to bput (NULL: stored),
+ * as paint.h says. */
+rast_status rast__fill_rect_shaded(const rast_target *target, rast_point p0, rast_point p1,
                                    const uint8_t *colors, const rast_tri_opts *opts,
-                                   const rast_shade_opts *shade)
+                                   const rast_shade_opts *shade, rast__rgba_put_fn bput,
+                                   const void *bctx)
 {
     rast__grid g;
     rast_rect clip;
@@ -198,6 +199,7 @@ rast_status rast_fill_rect_gouraud(const rast_target *target, rast_point p0, ras
         if (s.H < 0) s.H = -s.H;
     }
     s.target = target;
+    rast__rgba_out_init(&s.out, target, bput, bctx);
     s.colors = colors;
     s.g = &g;
     s.prec = shade->precision;
@@ -211,4 +213,11 @@ rast_status rast_fill_rect_gouraud(const rast_target *target, rast_point p0, ras
     /* The rectangle filler feeds it the rectangle polygon's pixels. */
     rast__rect_fill(s.X0, s.Y0, s.W, s.H, &g, &clip, &paint);
     return RAST_OK;
+}
+
+rast_status rast_fill_rect_gouraud(const rast_target *target, rast_point p0, rast_point p1,
+                                   const uint8_t *colors, const rast_tri_opts *opts,
+                                   const rast_shade_opts *shade)
+{
+    return rast__fill_rect_shaded(target, p0, p1, colors, opts, shade, NULL, NULL);
 }

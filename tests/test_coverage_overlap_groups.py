@@ -79,6 +79,46 @@ def test_rings_on_a_quarter_pixel_grid_equal_oracle(rings, rule):
     _check(rings, (2, 4), rule, np.uint8, repr(rings))
 
 
+@st.composite
+def chains(draw):
+    """Rings made of two y-monotone chains (down one side, up the other,
+    with horizontal steps) with vertices on a 1/8 px grid, two or three overlapping in one group
+    of the row, beside a quick box (a group of its own) and a box touching
+    the group's box at a pixel corner: nearly every vertex inside a row is
+    one edge ending where the next of its direction starts (the sweep puts
+    the new edge in the old one's place, rast__cov_event), and the grid
+    makes the new edge start on a neighbour, neighbours cross right at a
+    vertex, chains of two rings coincide (the ways the sweep must not take
+    that shortcut)."""
+    e8 = st.integers(0, 16)
+    rings, chain = [], []
+    for _ in range(draw(st.integers(2, 3))):
+        ys = sorted(set(draw(st.lists(st.integers(1, 15), min_size=1, max_size=5))))
+        x0 = draw(st.integers(0, 12))
+        # a vertex, or two joined by a horizontal edge: the next edge of
+        # the chain starts away from where the last ended
+        left = [((x0 + draw(e8)) / 8, y / 8) for y in ys for _ in range(draw(st.integers(1, 2)))]
+        if chain and draw(st.booleans()):
+            # along the last ring's chain to halfway down its first edge
+            # (coincident), then off to either side of it
+            left = [chain[0], ((chain[0][0] + chain[1][0]) / 2, (chain[0][1] + chain[1][1]) / 2)] + \
+                [((x0 + draw(e8)) / 8, p[1]) for p in chain[1:]]
+        chain = left if len(left) > 1 else chain
+        right = [((x0 + draw(e8)) / 8, y / 8) for y in reversed(ys) for _ in range(draw(st.integers(1, 2)))]
+        ring = [((x0 + draw(e8)) / 8, draw(st.integers(0, 1)) / 8)] + left + \
+            [((x0 + draw(e8)) / 8, draw(st.integers(15, 16)) / 8)] + right
+        rings.append(ring[::-1] if draw(st.booleans()) else ring)
+    box = [(4.25, 0.5), (5.0, 0.5), (5.0, 1.5), (4.25, 1.5)]  # quick, apart
+    corner = [(5.0, 1.5), (5.75, 1.5), (5.75, 2.0), (5.0, 2.0)]  # touches it at a corner
+    return rings + [box, corner]
+
+
+@settings(max_examples=S_.examples(12), deadline=None)
+@given(chains(), st.sampled_from(["nonzero", "evenodd"]))
+def test_overlapping_chains_among_quick_groups_equal_oracle(rings, rule):
+    _check(rings, (3, 6), rule, np.uint8, repr(rings))
+
+
 @settings(max_examples=S_.examples(6), deadline=None)
 @given(st.integers(0, 5), st.sampled_from([0.0, 0.25, 0.5]), st.booleans(),
        st.sampled_from(["nonzero", "evenodd"]))

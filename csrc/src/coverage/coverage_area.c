@@ -65,6 +65,19 @@ static int rast__cov_before_at(const rast__cedge *a, const rast__cedge *b, int64
     return rast__cov_before(a, &bt);
 }
 
+/* Is b strictly before a just below ordinate t of row j, a cached there,
+ * b computed here (rast__cov_before_at with the roles turned)? */
+static int rast__cov_behind_at(const rast__cedge *a, const rast__cedge *b, int64_t Yj, int32_t j,
+                              uint64_t t, int32_t h)
+{
+    rast__cedge bt;
+    if (b->rowx == j && b->tx == t) return rast__cov_before(b, a);
+    bt.dx = b->dx;
+    bt.dy = b->dy;
+    rast__cov_x_at(b, Yj, t, h, &bt.x, &bt.r);
+    return rast__cov_before(&bt, a);
+}
+
 /* The first ordinate after t (U; up to T) where a, left of b just below
  * t, crosses it; T when they do not cross inside the row. */
 static uint64_t rast__cov_cross(const rast__cedge *a, const rast__cedge *b, int64_t Yj,
@@ -264,14 +277,15 @@ static uint64_t rast__cov_pair_t(rast__cedge *a, int32_t ib, const rast__cedge *
     return a->ctime;
 }
 
-/* When a, left of b (edge ib) just after t, crosses it before tv (else
- * NONE). */
+/* When a, left of b (edge ib) just after t, crosses it (after t; T or
+ * NONE: not in the row).  Not cut at the slab's end: the sweep takes
+ * only the crossings before it, and a vertex event that leaves a pair
+ * neighbours keeps its time (rast__cov_event). */
 static uint64_t rast__cov_pair(rast__cedge *a, int32_t ib, const rast__cedge *b, int64_t Yj,
-                               int32_t j, uint64_t t, uint64_t tv, const rast__cells *c)
+                               int32_t j, uint64_t t, const rast__cells *c)
 {
     uint64_t tc = rast__cov_pair_t(a, ib, b, Yj, j, c);
-    if (tc <= t) tc = t + 1;
-    return tc < tv ? tc : NONE;
+    return tc <= t ? t + 1 : tc;
 }
 
 /* Edge e's piece sign becomes s at tc: the piece so far is added. */
@@ -318,8 +332,51 @@ static int rast__cov_event(rast__cells *c, rast__cedge *e, const int32_t *row, i
                            uint64_t tv, uint64_t *ptvn)
 {
     const int64_t Yj = (int64_t)j * c->p;
-    int32_t *live = sw->live, n = *pn, k, m, prev = -1, wsum = w0;
+    int32_t *live = sw->live, n = *pn, k, m, prev = -1, wsum = w0, nend = 0, nbeg = 0, ia = -1, ib = -1;
     uint64_t t0, t1, tvn = T;
+    for (k = 0; k < nrow; k++) { /* the edges ending and starting at tv; the next event */
+        rast__cov_span(&e[row[k]], Yj, c, &t0, &t1);
+        if (t0 > tv) {
+            if (t0 < tvn) tvn = t0;
+            continue;
+        }
+        if (t0 == tv) {
+            nbeg++;
+            ib = row[k];
+        }
+        if (t1 == tv) {
+            nend++;
+            ia = row[k];
+        } else if (t1 > tv && t1 < tvn) {
+            tvn = t1;
+        }
+    }
+    /* One edge ends and one of its direction starts (a ring's vertex, but
+     * a turn in y), no neighbours' crossing at or before tv (the heap's
+     * least time is after it), and the new edge strictly between the old
+     * one's neighbours just below tv: it takes the old one's place, its
+     * winding and sign, and only the two pairs it is in change.  What the
+     * general way below would do, without its passes over the order. */
+    if (nend == 1 && nbeg == 1 && e[ia].dir == e[ib].dir && (sw->m == 0 || sw->ct[sw->h[0]] > tv)) {
+        rast__cedge *a = &e[ia], *b = &e[ib];
+        int32_t pa = 0;
+        while (live[pa] != ia) pa++;
+        rast__cov_x_at(b, Yj, tv, c->h, &b->x, &b->r); /* its top */
+        b->rowx = j;
+        b->tx = tv;
+        if ((pa == 0 || rast__cov_behind_at(b, &e[live[pa - 1]], Yj, j, tv, c->h)) &&
+            (pa + 1 == n || rast__cov_before_at(b, &e[live[pa + 1]], Yj, j, tv, c->h))) {
+            rast__cov_x_end(a, Yj, a->tx, tv, c->h);
+            if (a->sg) rast__cells_piece(c, a, Yj, a->x, a->tx, a->xn, tv, a->sg);
+            rast__cov_x_keep(a, j, tv);
+            b->sg = rast__cov_sign(rule, sw->wb[pa], b->dir);
+            live[pa] = ib;
+            if (pa > 0) rast__heap_set(sw, pa - 1, rast__cov_pair(&e[live[pa - 1]], ib, b, Yj, j, tv, c));
+            if (pa + 1 < n) rast__heap_set(sw, pa, rast__cov_pair(b, live[pa + 1], &e[live[pa + 1]], Yj, j, tv, c));
+            *ptvn = tvn;
+            return 1;
+        }
+    }
     for (k = 0; k < n; k++) { /* the neighbours that stay */
         rast__cedge *ed = &e[live[k]];
         rast__cov_span(ed, Yj, c, &t0, &t1);
@@ -373,7 +430,7 @@ static int rast__cov_event(rast__cells *c, rast__cedge *e, const int32_t *row, i
     }
     sw->m = n > 0 ? n - 1 : 0;
     for (k = 0; k < sw->m; k++) {
-        sw->ct[k] = rast__cov_pair(&e[live[k]], live[k + 1], &e[live[k + 1]], Yj, j, tv, tvn, c);
+        sw->ct[k] = rast__cov_pair(&e[live[k]], live[k + 1], &e[live[k + 1]], Yj, j, tv, c);
         sw->h[k] = k;
         sw->hidx[k] = k;
     }
@@ -450,7 +507,7 @@ static void rast__cov_row_area(rast__cells *c, rast__cedge *e, int32_t *row, int
             /* The neighbours' crossings before tv, in a heap. */
             sw->m = n > 0 ? n - 1 : 0;
             for (k = 0; k < sw->m; k++) {
-                sw->ct[k] = rast__cov_pair(&e[live[k]], live[k + 1], &e[live[k + 1]], Yj, j, t, tv, c);
+                sw->ct[k] = rast__cov_pair(&e[live[k]], live[k + 1], &e[live[k + 1]], Yj, j, t, c);
                 sw->h[k] = k;
                 sw->hidx[k] = k;
             }
@@ -467,9 +524,9 @@ static void rast__cov_row_area(rast__cells *c, rast__cedge *e, int32_t *row, int
             rast__cov_resign(c, a, Yj, j, tc, rast__cov_sign(rule, sw->wb[p + 1], a->dir));
             rast__heap_set(sw, p, NONE);
             if (p > 0)
-                rast__heap_set(sw, p - 1, rast__cov_pair(&e[live[p - 1]], ib, b, Yj, j, tc, tv, c));
+                rast__heap_set(sw, p - 1, rast__cov_pair(&e[live[p - 1]], ib, b, Yj, j, tc, c));
             if (p + 2 < n)
-                rast__heap_set(sw, p + 1, rast__cov_pair(a, live[p + 2], &e[live[p + 2]], Yj, j, tc, tv, c));
+                rast__heap_set(sw, p + 1, rast__cov_pair(a, live[p + 2], &e[live[p + 2]], Yj, j, tc, c));
         }
         if (tv < T) { /* a vertex event: mended where it can be */
             uint64_t tvn;

@@ -139,20 +139,6 @@ static void rast__ss_flush(rast__ss *ss)
     rast__cov_row_done(o, y);
 }
 
-/* A run's end at clip-relative fine column x, sign sg (+1 where a run
- * starts, -1 where it ends): the count of pixel i = x / k changes by
- * sg (k - x mod k) and that of every pixel after it by sg k, i.e. d[i]
- * by the first and d[i + 1] by the rest. */
-static inline void rast__ss_end(rast__ss *ss, int32_t x, int32_t sg)
-{
-    const int32_t kb = ss->kbits;
-    int32_t i = x >> kb, f = x & (((int32_t)1 << kb) - 1);
-    ss->d[i] += sg * (((int32_t)1 << kb) - f);
-    ss->d[i + 1] += sg * f;
-    ss->mark[i >> 6] |= (uint64_t)1 << (i & 63); /* i + 1 goes with it */
-    ss->ends++;
-}
-
 /* Runs of clip-relative fine row y come next: flush the output row before
  * when it is another. */
 static void rast__ss_row(rast__ss *ss, int32_t y)
@@ -375,14 +361,46 @@ static void rast__ss_finish(rast__ss *ss)
     rast__cov_zero_rows(ss->o, ss->o->clip.y0 + ss->next, ss->o->clip.y1);
 }
 
+/* A painter's output (its rows handed on as runs, rast__cov_row_done)
+ * narrowed to the pixels the polygon's crossings can reach, a pixel
+ * either side (so that rast__ss_inside still holds): the rows' counters,
+ * flushes and scans then cost those columns, not the clip's width (400
+ * tiny polygons a call each on a 512-wide canvas spent 60% of their
+ * instructions scanning rows of 0).  The columns left out hold 0: no run
+ * reaches them.  0 when no column is left (nothing to hand on). */
+static int rast__ss_narrow(const rast_point *pts, uint32_t npoints, int32_t s, int32_t kbits,
+                           const rast__cov_out *o, rast__cov_out *sub)
+{
+    int64_t lo, hi, p0, p1;
+    uint32_t i;
+    *sub = *o;
+    if (!o->paint || npoints == 0) return 1;
+    lo = hi = pts[0].x;
+    for (i = 1; i < npoints; i++) {
+        lo = pts[i].x < lo ? pts[i].x : lo;
+        hi = pts[i].x > hi ? pts[i].x : hi;
+    }
+    /* crossings in fine columns [floor(lo / 2^S) - 1, floor(hi / 2^S) + 1]
+     * (rast__ss_inside), their pixels widened by one */
+    p0 = rast__floordiv(rast__floordiv(lo, (int64_t)1 << s) - 1, (int64_t)1 << kbits) - 1;
+    p1 = rast__floordiv(rast__floordiv(hi, (int64_t)1 << s) + 1, (int64_t)1 << kbits) + 2;
+    if (p0 > o->clip.x0) sub->clip.x0 = (int32_t)(p0 < o->clip.x1 ? p0 : o->clip.x1);
+    if (p1 < o->clip.x1) sub->clip.x1 = (int32_t)(p1 > o->clip.x0 ? p1 : o->clip.x0);
+    return sub->clip.x0 < sub->clip.x1;
+}
+
 rast_status rast__cov_ss(const rast_polygon *poly, uint32_t npoints, int32_t s,
                          int32_t kbits, rast_fill_rule rule, rast_sample sample,
-                         const rast__cov_out *o, rast__arena *arena)
+                         const rast__cov_out *out, rast__arena *arena)
 {
     rast__ss ss;
     rast__grid g;
     rast_rect fine;
+    rast__cov_out sub;
+    const rast__cov_out *o = &sub;
     rast_status st = rast__grid_init(&g, s, sample, RAST_ROUND_EXACT, RAST_BOUNDARY_EXACT);
+    if (st == RAST_OK && !rast__ss_narrow(poly->points, npoints, s, kbits, out, &sub))
+        return RAST_OK;
     if (st == RAST_OK) st = rast__ss_begin(&ss, kbits, o, arena, &fine);
     if (st != RAST_OK) return st;
     ss.evenodd = rule == RAST_RULE_EVENODD;
@@ -630,24 +648,152 @@ static inline void rast__ss_bits(uint64_t *bits, int32_t a, int32_t b)
     bits[kb] |= mb;
 }
 
-/* Clip-relative fine row y's set bits, words [k0, k1], into the counts as
- * runs, the words cleared. */
-static void rast__ss_bit_runs(rast__ss *ss, int32_t y, uint64_t *bits, int32_t k0, int32_t k1)
+/* The samples of word k of the K rows of bits (wpr words apart) counted
+ * a pixel at a time (64 / K pixels a word, K bits each a row), the words
+ * cleared: each row's bits summed within each pixel's K bits (the SWAR
+ * popcount, to K-bit lanes), then the rows' sums added in lanes twice as
+ * wide, the even pixels' in *ev and the odd ones' in *od (a lane of 2K
+ * bits holds K^2); *any, *all: the OR and the AND of the words. */
+RAST__HOT void rast__ss_word(uint64_t *bits, size_t wpr, int32_t k, int32_t kb, uint64_t *ev,
+                                 uint64_t *od, uint64_t *any, uint64_t *all)
 {
-    uint64_t carry = 0;
-    int32_t k;
-    rast__ss_row(ss, y);
-    for (k = k0; k <= k1; k++) {
-        uint64_t w = bits[k], t = w ^ ((w << 1) | carry);
-        bits[k] = 0;
-        carry = w >> 63;
-        while (t) {
-            int32_t p = (int32_t)rast__ctz64(t);
-            t &= t - 1;
-            rast__ss_end(ss, k * 64 + p, (w >> p) & 1 ? 1 : -1);
-        }
+    const int32_t K = (int32_t)1 << kb;
+    const uint64_t me = kb == 1   ? (uint64_t)0x3333333333333333u
+                        : kb == 2 ? (uint64_t)0x0F0F0F0F0F0F0F0Fu
+                        : kb == 3 ? (uint64_t)0x00FF00FF00FF00FFu
+                                  : (uint64_t)0x0000FFFF0000FFFFu;
+    uint64_t e = 0, o = 0, a = 0, l = ~(uint64_t)0;
+    int32_t t;
+    for (t = 0; t < K; t++) {
+        uint64_t x = bits[(size_t)t * wpr + (size_t)k];
+        bits[(size_t)t * wpr + (size_t)k] = 0;
+        a |= x;
+        l &= x;
+        x = x - ((x >> 1) & (uint64_t)0x5555555555555555u);
+        if (kb >= 2) x = (x & (uint64_t)0x3333333333333333u) + ((x >> 2) & (uint64_t)0x3333333333333333u);
+        if (kb >= 3) x = (x + (x >> 4)) & (uint64_t)0x0F0F0F0F0F0F0F0Fu;
+        if (kb >= 4) x = (x + (x >> 8)) & (uint64_t)0x00FF00FF00FF00FFu;
+        e += x & me;
+        o += (x >> K) & me;
     }
-    if (carry) rast__ss_end(ss, (k1 + 1) * 64, -1);
+    *ev = e;
+    *od = o;
+    *any = a;
+    *all = l;
+}
+
+/* The 8 bytes of x's low half (32 bits) spread to every other byte. */
+static inline uint64_t rast__ss_spread(uint64_t x)
+{
+    x &= (uint64_t)0xFFFFFFFFu;
+    x = (x | (x << 16)) & (uint64_t)0x0000FFFF0000FFFFu;
+    return (x | (x << 8)) & (uint64_t)0x00FF00FF00FF00FFu;
+}
+
+/* x's bytes to p[0..7], the lowest first: one store where the compiler
+ * says the byte order is little-endian, else a byte at a time. */
+static inline void rast__ss_put8(unsigned char *p, uint64_t x)
+{
+#if defined(__BYTE_ORDER__) && defined(__ORDER_LITTLE_ENDIAN__) && \
+    __BYTE_ORDER__ == __ORDER_LITTLE_ENDIAN__
+    memcpy(p, &x, 8);
+#else
+    p[0] = (unsigned char)x;
+    p[1] = (unsigned char)(x >> 8);
+    p[2] = (unsigned char)(x >> 16);
+    p[3] = (unsigned char)(x >> 24);
+    p[4] = (unsigned char)(x >> 32);
+    p[5] = (unsigned char)(x >> 40);
+    p[6] = (unsigned char)(x >> 48);
+    p[7] = (unsigned char)(x >> 56);
+#endif
+}
+
+/* 16 pixels of uint8_t levels at p, k = 4, their counts c (0 .. 16) in the
+ * bytes of ev (the even pixels) and od (the odd ones): each level is
+ * rast__cov_level's floor((255 c + 8) / 16) = 16 c - (c > 8), in every
+ * byte at once as 16 (c - g) + 15 g, g = (c > 8) (c + 0x77 reaches bit 7
+ * iff c > 8; c - g >= 0 and 16 (c - g) <= 240: no lane spills), then the
+ * even and odd bytes interleaved and stored a byte at a time (compilers
+ * join the stores where the byte order allows). */
+static inline void rast__ss_u8x16(unsigned char *p, uint64_t ev, uint64_t od)
+{
+    const uint64_t ones = (uint64_t)0x0101010101010101u;
+    const uint64_t ge = ((ev + 0x77 * ones) >> 7) & ones, go = ((od + 0x77 * ones) >> 7) & ones;
+    const uint64_t le = ((ev - ge) << 4) | (ge * 15), lo = ((od - go) << 4) | (go * 15);
+    const uint64_t a = rast__ss_spread(le) | (rast__ss_spread(lo) << 8);
+    const uint64_t b = rast__ss_spread(le >> 32) | (rast__ss_spread(lo >> 32) << 8);
+    rast__ss_put8(p, a);
+    rast__ss_put8(p + 8, b);
+}
+
+/* Output row R (clip-relative) from the K = 2^kb fine rows of bits (wpr
+ * words each; only words [k0, k1] may hold set bits): each pixel's value
+ * the level of its count of samples set, the words read cleared, rows
+ * R's predecessors not written yet zeroed, R handed on.  Words with no
+ * bit set, or all, are constant runs, written as runs. */
+RAST__HOT void rast__ss_bits_row_k(rast__ss *ss, int32_t kb, int32_t R, uint64_t *bits,
+                                       size_t wpr, int32_t k0, int32_t k1)
+{
+    const rast__cov_out *o = ss->o;
+    const rast_coverage_format f = o->format;
+    const uint64_t *level = ss->level;
+    const int32_t K = (int32_t)1 << kb, ppw = 64 >> kb, w = o->clip.x1 - o->clip.x0,
+                  y = o->clip.y0 + R;
+    const uint64_t lm = kb == 4 ? (uint64_t)0xFFFFFFFFu : ((uint64_t)1 << (2 * K)) - 1;
+    unsigned char *row;
+    uint64_t v = level[0];
+    int32_t k, j, at = 0, end;
+    rast__cov_zero_rows(o, o->clip.y0 + ss->next, y);
+    ss->next = R + 1;
+    row = rast__cov_row(o, y);
+    for (k = k0; k <= k1; k++) {
+        const int32_t base = k * ppw, n = w - base < ppw ? w - base : ppw;
+        uint64_t ev, od, any, all;
+        rast__ss_word(bits, wpr, k, kb, &ev, &od, &any, &all);
+        if (!any || !~all) { /* a constant run: joins the pending one, or starts */
+            const uint64_t c = any ? level[K * K] : level[0];
+            if (c != v) {
+                rast__cov_fill(f, row, at, base, v);
+                at = base;
+                v = c;
+            }
+            continue;
+        }
+        rast__cov_fill(f, row, at, base, v);
+        if (kb == 2 && f == RAST_COVERAGE_U8 && n == ppw) {
+            rast__ss_u8x16(row + base, ev, od);
+        } else if (f == RAST_COVERAGE_U8 && n == ppw) { /* (no test a pixel) */
+            unsigned char *p = row + base;
+            for (j = 0; j < ppw; j += 2) {
+                p[j] = (unsigned char)level[(ev >> (j * K)) & lm];
+                p[j + 1] = (unsigned char)level[(od >> (j * K)) & lm];
+            }
+        } else {
+            for (j = 0; j + 1 < n; j += 2) {
+                rast__cov_store(f, row, base + j, level[(ev >> (j * K)) & lm]);
+                rast__cov_store(f, row, base + j + 1, level[(od >> (j * K)) & lm]);
+            }
+            if (j < n) rast__cov_store(f, row, base + j, level[(ev >> (j * K)) & lm]);
+        }
+        at = base + n;
+        v = level[0];
+    }
+    end = (k1 + 1) * ppw < w ? (k1 + 1) * ppw : w;
+    rast__cov_fill(f, row, at, end > at ? end : at, v);
+    rast__cov_fill(f, row, end > at ? end : at, w, level[0]);
+    rast__cov_row_done(o, y);
+}
+
+static void rast__ss_bits_row(rast__ss *ss, int32_t R, uint64_t *bits, size_t wpr, int32_t k0,
+                              int32_t k1)
+{
+    switch (ss->kbits) {
+    case 1: rast__ss_bits_row_k(ss, 1, R, bits, wpr, k0, k1); break;
+    case 2: rast__ss_bits_row_k(ss, 2, R, bits, wpr, k0, k1); break;
+    case 3: rast__ss_bits_row_k(ss, 3, R, bits, wpr, k0, k1); break;
+    default: rast__ss_bits_row_k(ss, 4, R, bits, wpr, k0, k1); break;
+    }
 }
 
 /* The left end of a triangle's run on its current row. */
@@ -881,10 +1027,8 @@ rast_status rast__cov_ss_tris(const rast_point *tris, uint32_t ntris, int32_t s,
             }
         }
         if (lo >= hi) continue; /* no run */
-        for (t = 0; t < K; t++)
-            rast__ss_bit_runs(&ss, b0 + t, bits + (size_t)t * wpr, (lo - fx0) >> 6,
-                              (hi - fx0 - 1) >> 6);
+        rast__ss_bits_row(&ss, b0 >> kbits, bits, wpr, (lo - fx0) >> 6, (hi - fx0 - 1) >> 6);
     }
-    rast__ss_finish(&ss);
+    rast__cov_zero_rows(o, o->clip.y0 + ss.next, o->clip.y1);
     return RAST_OK;
 }

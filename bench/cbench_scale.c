@@ -27,7 +27,9 @@
  * Methods: area, accumulate, ss4 (rast_polygon_coverage, uint8), binary
  * (rast_fill_polygon, AET, gray8); the triangle families also as a batch:
  * tarea, taccumulate, tss4 (rast_triangles_coverage), tbinary
- * (rast_fill_triangles, "edge"). */
+ * (rast_fill_triangles, "edge"); mask, a one-polygon scene file only:
+ * polygon_mask's call (rast_fill_polygon_opaque, background 0: every
+ * pixel written once, nothing cleared first). */
 #define _POSIX_C_SOURCE 199309L
 #include <math.h>
 #include <stdint.h>
@@ -186,7 +188,7 @@ static void scene(const char *fam, uint32_t n, uint32_t *npoints, uint32_t *nrin
 }
 
 static const char *const mnames[] = {"area", "accumulate", "ss4", "binary",
-                                     "tarea", "taccumulate", "tss4", "tbinary"};
+                                     "tarea", "taccumulate", "tss4", "tbinary", "mask"};
 static const rast_aa_method aa[] = {RAST_AA_AREA, RAST_AA_ACCUMULATE, RAST_AA_SS4};
 
 /* The scratch grown to `need` bytes (before the call: its size is read
@@ -212,6 +214,18 @@ static rast_status draw_file(int m, uint32_t npoints, uint32_t nrings)
     rast_status st = RAST_OK;
     clip.x0 = clip.y0 = 0;
     clip.x1 = clip.y1 = fsize;
+    if (m == 8) { /* polygon_mask's call: every pixel written once, no clearing first */
+        const unsigned char zero = 0;
+        rast_fill_opts o = {RAST_ALGO_AET, RAST_RULE_NONZERO, 8, RAST_SAMPLE_CENTER, 0, 0};
+        o.rule = frule;
+        rast_target_init(&t, img, fsize, fsize, fsize, RAST_FORMAT_GRAY8);
+        rast_scratch_size(&o, npoints, fsize, fsize, &need);
+        room(need);
+        poly.points = pts;
+        poly.ring_sizes = sizes;
+        poly.nrings = nrings;
+        return rast_fill_polygon_opaque(&t, &poly, &o, &one, &zero, scratch, scratch_bytes);
+    }
     memset(img, 0, sizeof img);
     rast_target_init(&t, img, fsize, fsize, fsize, RAST_FORMAT_GRAY8);
     if (m == 3) {
@@ -315,9 +329,9 @@ int main(int argc, char **argv)
         return 2;
     }
     n = (uint32_t)atoi(argv[2]);
-    for (m = 0; m < 8 && strcmp(argv[3], mnames[m]); m++) {
+    for (m = 0; m < 9 && strcmp(argv[3], mnames[m]); m++) {
     }
-    if (m == 8) {
+    if (m == 9 || (m == 8 && argv[1][0] != '@')) {
         fprintf(stderr, "unknown method %s\n", argv[3]);
         return 2;
     }
@@ -326,7 +340,11 @@ int main(int argc, char **argv)
         scene_file(argv[1] + 1, &npoints, &nrings);
     else
         scene(argv[1], n, &npoints, &nrings);
-    if (m >= 4 && (fkind >= 0 || strstr(argv[1], "tris") == NULL)) {
+    if (m == 8 && fkind != 0) {
+        fprintf(stderr, "mask: a one-polygon scene file only\n");
+        return 2;
+    }
+    if (m >= 4 && m < 8 && (fkind >= 0 || strstr(argv[1], "tris") == NULL)) {
         fprintf(stderr, "%s: a triangle family only\n", argv[3]);
         return 2;
     }

@@ -75,6 +75,7 @@ def _blend(back, c, s):
 @example(_STAR, "nonzero", None, "gray8", False, ("rule",))
 @example(_STAR, "nonzero", "area", "rgb888", True, ("rule", "aa"))
 @example(_STAR, "evenodd", "ss4", "gray8", False, ("rule", "aa"))
+@example(_STAR, "nonzero", "area", "gray8", True, ("rule", "aa"))
 def test_keyword_c_call_as_the_general_path(pts, rule, aa, fmt, tuples, given_kw):
     color = _FORMATS[fmt]
     kw = {k: {"rule": rule, "aa": aa}[k] for k in given_kw}

@@ -8,8 +8,10 @@ Three cases (issue 33), each against OpenCV doing the same:
    new 32 x 32 mask, against a cv2.fillPoly loop that makes the mask and
    converts the float vertices to int32 in the loop, as its users write it;
 2. ``Canvas.fill_polygon`` in a loop, from an (N, 2) float64 array and
-   from a list of (x, y) tuples, against cv2.fillPoly of int32 vertices
-   converted beforehand;
+   from a list of (x, y) tuples, with no keyword, with ``rule="nonzero"``
+   and with ``aa=`` (the calls of bench/families.py's "loop" family: one
+   C call each, rastrum._seq.fill), against cv2.fillPoly of int32
+   vertices converted beforehand;
 3. a list of 1,409 small ring arrays (a paragraph's worth) in one
    ``polygon_mask`` call: the whole call, and the Python work before the C
    call (``_core._points``), against cv2.fillPoly of the same rings.
@@ -100,6 +102,13 @@ def main():
         a.fill_polygon(src, 255)
         b.fill_polygon(_slow(HEXA), 255)
         assert np.array_equal(a.array, b.array), "Canvas.fill_polygon quick path differs"
+    for kw in ({"rule": "nonzero"}, {"rule": "nonzero", "aa": "area"}, {"aa": "accumulate"}, {"aa": "ss4"}):
+        a = rastrum.Canvas.wrap(np.zeros(SHAPE, np.uint8))
+        b = rastrum.Canvas.wrap(np.zeros(SHAPE, np.uint8))
+        a.fill_polygon(np.zeros((3, 2)), 255, **kw)  # remembered: the next call is one C call
+        a.fill_polygon(HEXA, 255, **kw)
+        b.fill_polygon(_slow(HEXA), 255, **kw)
+        assert np.array_equal(a.array, b.array), "Canvas.fill_polygon(%s) quick path differs" % kw
     many = rastrum.polygon_mask(rings, (512, 512))
     assert np.array_equal(many, rastrum.polygon_mask([_slow(r) for r in rings], (512, 512)))
     off1 = int((cv2_mask().astype(bool) != exact).sum())
@@ -115,6 +124,9 @@ def main():
         "2 Canvas.fill_polygon (6, 2) array": lambda: canvas.fill_polygon(HEXA, 255),
         "2 Canvas.fill_polygon list of tuples": lambda: canvas.fill_polygon(hexa_tuples, 255),
         "2 Canvas.fill_polygon (6, 2) array, rule nonzero": lambda: canvas.fill_polygon(HEXA, 255, rule="nonzero"),
+        "2 Canvas.fill_polygon (6, 2) array, aa accumulate": lambda: canvas.fill_polygon(HEXA, 255, aa="accumulate"),
+        "2 Canvas.fill_polygon (6, 2) array, aa ss4": lambda: canvas.fill_polygon(HEXA, 255, aa="ss4"),
+        "2 Canvas.fill_polygon (6, 2) array, aa area": lambda: canvas.fill_polygon(HEXA, 255, aa="area"),
         "2 cv2.fillPoly int32 (converted before)": lambda: cv2.fillPoly(img, [hexa32], 255),
         "2 cv2.fillPoly with float->int32 in the loop": lambda: cv2.fillPoly(
             img, [np.round(HEXA - 0.5).astype(np.int32)], 255),

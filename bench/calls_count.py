@@ -42,7 +42,9 @@ def cases():
         "fill_opacity": lambda: canvas.fill_polygon(HEXA, 255, opacity=0.5),
         "loop_binary": lambda: [canvas.fill_polygon(r, 255, rule="nonzero") for r in loop],
         "loop_accumulate": lambda: [canvas.fill_polygon(r, 255, rule="nonzero", aa="accumulate") for r in loop],
+        "loop_ss4": lambda: [canvas.fill_polygon(r, 255, rule="nonzero", aa="ss4") for r in loop],
         "loop_area": lambda: [canvas.fill_polygon(r, 255, rule="nonzero", aa="area") for r in loop],
+        "fill_area": lambda: canvas.fill_polygon(HEXA, 255, aa="area"),
         "rings1409_mask": lambda: rastrum.polygon_mask(rings, (512, 512)),
         "rings1409_points": lambda: _core._points(rings),
         "rings1409_cov": lambda: rastrum.polygon_coverage(rings, (512, 512)),
@@ -67,7 +69,7 @@ def cases():
     return out
 
 
-PER = {"loop_binary": 400, "loop_accumulate": 400, "loop_area": 400}
+PER = {"loop_binary": 400, "loop_accumulate": 400, "loop_ss4": 400, "loop_area": 400}
 
 
 def child(name, calls):

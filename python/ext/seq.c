@@ -19,6 +19,7 @@
 #include <Python.h>
 
 #include <stdint.h>
+#include <stdlib.h>
 #include <string.h>
 
 /* The parts of one segmentation: a list of lists, or one flat list (its
@@ -476,46 +477,115 @@ fail:
 /* Canvas.fill_polygon's common call, whole in C (docs/api.md): one ring
  * of 3 points or more -- an exact ndarray, C-contiguous aligned native
  * float64 (n, 2), read through its head; or an exact list of (x, y)
- * pairs -- filled with the default options through the cffi module's
- * rastpy_fill_ring, whose address fill_setup gives (a module of its
- * own: this one takes Python objects, that one does not). */
+ * pairs -- filled through the cffi module's rastpy_fill_ring (binary) or
+ * rastpy_fill_polygon_aa (aa=...), whose addresses fill_setup gives (a
+ * module of its own: this one takes Python objects, that one does not). */
 typedef long (*seq_fill_fn)(const void *target, const double *xy, uint32_t n, const void *opts,
                             const void *pixel);
+/* rastpy_scratch (python/glue/coverage.h): scratch lent to the aa call. */
+typedef struct {
+    void *buf;
+    size_t size;
+    size_t want;
+} seq_scratch;
+typedef long (*seq_fill_aa_fn)(const void *target, const double *xy, uint32_t n, const uint32_t *ring_sizes,
+                               uint32_t nrings, const void *opts, const void *pixel, seq_scratch *sc);
 static seq_fill_fn seq_fill;
+static seq_fill_aa_fn seq_fill_aa;
 static const void *seq_fill_opts;
 static PyObject *seq_ndarray, *seq_f64;
+/* {rule: {aa: options address}} for keyword calls (fill_setup), and the
+ * keyword names, interned. */
+static PyObject *seq_kw_table, *seq_rule_name, *seq_aa_name, *seq_evenodd;
+/* The aa call's scratch, kept between calls as _coverage._lent keeps its
+ * own (a block taken and freed on every call can go back to the system
+ * and fault in again), up to SEQ_SCRATCH_KEEP bytes.  The GIL is held
+ * through the call: one block serves every thread. */
+static seq_scratch seq_sc;
+#define SEQ_SCRATCH_KEEP ((size_t)32 << 20)
 #define SEQ_ARRAY_WRITEABLE 0x400
 #define SEQ_STACK_POINTS 64
 
+static void *seq_address(PyObject *v)
+{
+    void *a = PyLong_AsVoidPtr(v);
+    if (!a && !PyErr_Occurred()) PyErr_SetString(PyExc_ValueError, "fill_setup: a NULL address");
+    return a;
+}
+
 /* fill_setup(rastpy_fill_ring address, default rast_fill_opts address,
- * numpy.ndarray, numpy's float64 dtype) -> None */
+ * numpy.ndarray, numpy's float64 dtype[, rastpy_fill_polygon_aa address,
+ * {rule: {aa: options address}}]) -> None.  The table's addresses are of
+ * a rast_fill_opts (aa None) or a rast_coverage_opts, the options of a
+ * call whose keywords are only rule and aa, and must outlive the module's
+ * use (the caller keeps them). */
 static PyObject *seq_fill_setup(PyObject *self, PyObject *args)
 {
-    PyObject *fn, *opts, *nd, *f64;
-    void *f;
+    PyObject *fn, *opts, *nd, *f64, *fn_aa = NULL, *table = NULL;
+    void *f, *fa = NULL;
     (void)self;
-    if (!PyArg_UnpackTuple(args, "fill_setup", 4, 4, &fn, &opts, &nd, &f64)) return NULL;
-    f = PyLong_AsVoidPtr(fn);
-    if (!f && PyErr_Occurred()) return NULL;
-    seq_fill_opts = PyLong_AsVoidPtr(opts);
-    if (!seq_fill_opts && PyErr_Occurred()) return NULL;
+    if (!PyArg_UnpackTuple(args, "fill_setup", 4, 6, &fn, &opts, &nd, &f64, &fn_aa, &table)) return NULL;
+    f = seq_address(fn);
+    if (!f) return NULL;
+    seq_fill_opts = seq_address(opts);
+    if (!seq_fill_opts) return NULL;
+    if (fn_aa && !(fa = seq_address(fn_aa))) return NULL;
+    if (table && !PyDict_CheckExact(table)) {
+        PyErr_SetString(PyExc_TypeError, "fill_setup: the table is a dict");
+        return NULL;
+    }
     memcpy(&seq_fill, &f, sizeof f); /* an object pointer to a function pointer (POSIX) */
+    memcpy(&seq_fill_aa, &fa, sizeof fa);
     Py_XINCREF(nd);
     Py_XINCREF(f64);
+    Py_XINCREF(table);
     Py_XDECREF(seq_ndarray);
     Py_XDECREF(seq_f64);
+    Py_XDECREF(seq_kw_table);
     seq_ndarray = nd;
     seq_f64 = f64;
+    seq_kw_table = table;
     Py_RETURN_NONE;
 }
 
-/* fill(q, target, rings, color[, opts address]) -> bool: True when the
- * ring was filled.  q is the canvas's remembered call, (target, color,
- * target address, pixel address, array, pixel): it holds only for the
- * very target and colour objects given, and the canvas's array still
- * writable.  False (nothing written, no exception) for anything else or
- * an error status: the caller's general path then checks and says what
- * is wrong. */
+static int seq_is(PyObject *key, PyObject *name)
+{
+    return key == name || (PyUnicode_CheckExact(key) && PyUnicode_Compare(key, name) == 0);
+}
+
+/* The options of a keyword dict kw of only rule= (an exact str) and aa=
+ * (None or an exact str) found in the table: the address, *aa set when it
+ * is a coverage method; NULL (no exception) for anything else. */
+static const void *seq_kw_opts(PyObject *kw, int *aa)
+{
+    PyObject *key, *value, *rule = seq_evenodd, *method = Py_None, *row, *addr;
+    Py_ssize_t pos = 0;
+    const void *a;
+    while (PyDict_Next(kw, &pos, &key, &value)) {
+        if (seq_is(key, seq_rule_name) && PyUnicode_CheckExact(value))
+            rule = value;
+        else if (seq_is(key, seq_aa_name) && (value == Py_None || PyUnicode_CheckExact(value)))
+            method = value;
+        else
+            return NULL;
+    }
+    if (!seq_kw_table || !(row = PyDict_GetItem(seq_kw_table, rule)) || !PyDict_CheckExact(row) ||
+        !(addr = PyDict_GetItem(row, method)))
+        return NULL;
+    a = PyLong_AsVoidPtr(addr);
+    if (!a) PyErr_Clear();
+    *aa = method != Py_None;
+    return a;
+}
+
+/* fill(q, target, rings, color[, opts]) -> bool: True when the ring was
+ * filled.  q is the canvas's remembered call, (target, color, target
+ * address, pixel address, array, pixel, aa allowed): it holds only for
+ * the very target and colour objects given, and the canvas's array still
+ * writable.  opts: None or an empty dict (the default options), the
+ * address of a rast_fill_opts, or the call's keyword dict (seq_kw_opts).
+ * False (nothing written, no exception) for anything else or an error
+ * status: the caller's general path then checks and says what is wrong. */
 static PyObject *seq_fill_call(PyObject *self, PyObject *args)
 {
     PyObject *q, *target, *rings, *color, *opt = NULL, *arr;
@@ -524,9 +594,10 @@ static PyObject *seq_fill_call(PyObject *self, PyObject *args)
     const void *t, *pix, *opts = seq_fill_opts;
     Py_ssize_t n = 0, k;
     long st;
+    int aa = 0;
     (void)self;
     if (!PyArg_UnpackTuple(args, "fill", 4, 5, &q, &target, &rings, &color, &opt)) return NULL;
-    if (!seq_fill || !PyTuple_CheckExact(q) || PyTuple_Size(q) != 6 || target == Py_None ||
+    if (!seq_fill || !PyTuple_CheckExact(q) || PyTuple_Size(q) != 7 || target == Py_None ||
         PyTuple_GetItem(q, 0) != target || PyTuple_GetItem(q, 1) != color)
         Py_RETURN_FALSE;
     arr = PyTuple_GetItem(q, 4);
@@ -535,7 +606,12 @@ static PyObject *seq_fill_call(PyObject *self, PyObject *args)
     if (seq_head_ok <= 0 ||
         !(((const seq_array_head *)(const void *)arr)->flags & SEQ_ARRAY_WRITEABLE))
         Py_RETURN_FALSE;
-    if (opt && opt != Py_None) {
+    if (opt && PyDict_CheckExact(opt)) {
+        if (PyDict_Size(opt) != 0) {
+            opts = seq_kw_opts(opt, &aa);
+            if (!opts || (aa && (!seq_fill_aa || PyTuple_GetItem(q, 6) != Py_True))) Py_RETURN_FALSE;
+        }
+    } else if (opt && opt != Py_None) {
         opts = PyLong_AsVoidPtr(opt);
         if (!opts) {
             PyErr_Clear();
@@ -578,7 +654,19 @@ static PyObject *seq_fill_call(PyObject *self, PyObject *args)
         PyErr_Clear();
         Py_RETURN_FALSE;
     }
-    st = seq_fill(t, xy, (uint32_t)n, opts, pix);
+    if (aa) {
+        st = seq_fill_aa(t, xy, (uint32_t)n, NULL, 1, opts, pix, &seq_sc);
+        if (seq_sc.size < seq_sc.want && seq_sc.want <= SEQ_SCRATCH_KEEP) {
+            void *grown = malloc(seq_sc.want); /* 16-byte aligned, as the glue wants */
+            if (grown) {
+                free(seq_sc.buf);
+                seq_sc.buf = grown;
+                seq_sc.size = seq_sc.want;
+            }
+        }
+    } else {
+        st = seq_fill(t, xy, (uint32_t)n, opts, pix);
+    }
     PyMem_Free(heap);
     return PyBool_FromLong(st == 0);
 }
@@ -602,9 +690,10 @@ static PyMethodDef seq_methods[] = {
     {"use_head", seq_use_head, METH_O,
      "use_head(flag) -> bool: whether arrays are read through their head (once checked) or __array_struct__"},
     {"fill_setup", seq_fill_setup, METH_VARARGS,
-     "fill_setup(fill_ring address, default opts address, ndarray, float64) -> None"},
+     "fill_setup(fill_ring address, default opts address, ndarray, float64[, fill_polygon_aa address, "
+     "{rule: {aa: opts address}}]) -> None"},
     {"fill", seq_fill_call, METH_VARARGS,
-     "fill(q, target, rings, color[, opts address]) -> bool: Canvas.fill_polygon's common call, done"},
+     "fill(q, target, rings, color[, opts address or keyword dict]) -> bool: Canvas.fill_polygon's common call, done"},
     {NULL, NULL, 0, NULL},
 };
 
@@ -618,6 +707,9 @@ PyMODINIT_FUNC PyInit__seq(void)
 {
     if (!seq_struct_name) seq_struct_name = PyUnicode_InternFromString("__array_struct__");
     if (!seq_dtype_name) seq_dtype_name = PyUnicode_InternFromString("dtype");
-    if (!seq_struct_name || !seq_dtype_name) return NULL;
+    if (!seq_rule_name) seq_rule_name = PyUnicode_InternFromString("rule");
+    if (!seq_aa_name) seq_aa_name = PyUnicode_InternFromString("aa");
+    if (!seq_evenodd) seq_evenodd = PyUnicode_InternFromString("evenodd");
+    if (!seq_struct_name || !seq_dtype_name || !seq_rule_name || !seq_aa_name || !seq_evenodd) return NULL;
     return PyModule_Create(&seq_module);
 }

@@ -25,23 +25,78 @@ typedef struct rastpy_cov_dest {
     const rast_blend_opts *blend; /* shaded: blended (rast_fill_triangles_shaded_aa_blend) */
 } rastpy_cov_dest;
 
+/* Points of a call snapped on the stack (else malloc): a small polygon's
+ * call then takes only its scratch. */
+#define RASTPY_COV_LOCAL_POINTS 256
+
+/* The part of `clip` where a fill of the snapped points pts[0 .. n) can
+ * paint: their box in pixels (subpixel_bits s), widened by a pixel on each
+ * side, cut to the clip.  A pixel's coverage comes from the part of the
+ * shape inside that pixel's square (its samples too lie in it,
+ * docs/semantics.md), so every pixel outside the box has coverage 0 and a
+ * painter leaves it untouched: the fill cut to it paints the same pixels,
+ * and its rows, scratch and scans grow with the shape's box, not with the
+ * target (400 tiny polygons, each its own call on a 512 x 512 canvas,
+ * scanned 512 columns a row each).  n = 0: an empty rectangle. */
+static rast_rect rastpy_cov_cut(const rast_rect *clip, const int32_t *pts, uint32_t n, int s)
+{
+    rast_rect b = *clip;
+    int32_t x0, y0, x1, y1;
+    uint32_t i;
+    if (n == 0) {
+        b.x1 = b.x0;
+        b.y1 = b.y0;
+        return b;
+    }
+    x0 = x1 = pts[0];
+    y0 = y1 = pts[1];
+    for (i = 1; i < n; i++) {
+        int32_t x = pts[2 * i], y = pts[2 * i + 1];
+        if (x < x0) x0 = x;
+        if (x > x1) x1 = x;
+        if (y < y0) y0 = y;
+        if (y > y1) y1 = y;
+    }
+    /* floor(v / 2^s) of |v| <= RAST_COORD_MAX, without a shift of a
+     * negative value (implementation-defined in C99) */
+#define RASTPY_FLOOR_PX(v) ((v) >= 0 ? (v) >> s : -((-(v) - 1) >> s) - 1)
+    x0 = RASTPY_FLOOR_PX(x0) - 1;
+    y0 = RASTPY_FLOOR_PX(y0) - 1;
+    x1 = RASTPY_FLOOR_PX(x1) + 2;
+    y1 = RASTPY_FLOOR_PX(y1) + 2;
+#undef RASTPY_FLOOR_PX
+    if (x0 > b.x0) b.x0 = x0;
+    if (y0 > b.y0) b.y0 = y0;
+    if (x1 < b.x1) b.x1 = x1;
+    if (y1 < b.y1) b.y1 = y1;
+    if (b.x1 < b.x0) b.x1 = b.x0;
+    if (b.y1 < b.y0) b.y1 = b.y0;
+    return b;
+}
+
 static long rastpy_coverage(const rastpy_cov_dest *d, const double *xy, uint32_t npoints,
                             const uint32_t *ring_sizes, uint32_t nrings, int triangles,
                             const rast_coverage_opts *opts, rastpy_scratch *sc)
 {
     rast_polygon poly;
     rast_status st;
-    size_t need, head;
-    unsigned char *mem;
+    size_t need;
+    unsigned char *mem = NULL;
     int32_t *pts;
+    int32_t local[2 * RASTPY_COV_LOCAL_POINTS];
     void *scratch;
     long bad;
     const rast_rect *clip = d->target ? &d->target->clip : &d->clip;
+    rast_target cut;
+    const rast_target *tg = NULL;
+    rast_rect c;
     ptrdiff_t stride = 0;
     if (!d->target) {
         if (d->format < 0 || d->format > 2) return RAST_E_ARG;
         stride = (ptrdiff_t)(d->clip.x1 - d->clip.x0) * rastpy_cov_size[d->format];
     }
+    /* the options and sizes checked first, with the whole clip, as the
+     * core checks them (its statuses before any point's) */
     if (d->colors)
         st = rast_shaded_aa_scratch_size(opts, npoints / 3, clip->x1 - clip->x0,
                                          clip->y1 - clip->y0, &need);
@@ -49,35 +104,62 @@ static long rastpy_coverage(const rastpy_cov_dest *d, const double *xy, uint32_t
         st = rast_coverage_scratch_size(opts, npoints, clip->x1 - clip->x0, clip->y1 - clip->y0,
                                         &need);
     if (st != RAST_OK) return st;
-    /* one block: the snapped points, then (16-byte aligned) the scratch */
-    head = ((size_t)npoints * sizeof(rast_point) + 15) & ~(size_t)15;
-    if (need > (size_t)-1 - 1 - head) return RASTPY_E_NOMEM;
-    if (sc) sc->want = head + need + 1;
-    if (sc && sc->buf && head + need + 1 <= sc->size)
-        mem = (unsigned char *)sc->buf;
-    else if (!(mem = (unsigned char *)malloc(head + need + 1)))
-        return RASTPY_E_NOMEM;
-    pts = (int32_t *)(void *)mem;
+    pts = npoints <= RASTPY_COV_LOCAL_POINTS ? local
+                                             : (int32_t *)malloc((size_t)npoints * sizeof(rast_point) + 1);
+    if (!pts) return RASTPY_E_NOMEM;
     bad = rastpy_snap_points(xy, npoints, opts->subpixel_bits, pts);
     if (bad >= 0) {
-        if (!sc || mem != sc->buf) free(mem);
+        if (pts != local) free(pts);
         return bad + 1;
     }
-    scratch = mem + head;
+    if (d->target) {
+        /* A target is painted only where the coverage is not 0: its clip
+         * (cut to the target, as the core cuts it) cut to the points' box,
+         * and the scratch that needs. */
+        c = d->target->clip;
+        if (c.x0 < 0) c.x0 = 0;
+        if (c.y0 < 0) c.y0 = 0;
+        if (c.x1 > d->target->width) c.x1 = d->target->width;
+        if (c.y1 > d->target->height) c.y1 = d->target->height;
+        if (c.x1 < c.x0) c.x1 = c.x0;
+        if (c.y1 < c.y0) c.y1 = c.y0;
+        cut = *d->target;
+        cut.clip = rastpy_cov_cut(&c, pts, npoints, opts->subpixel_bits);
+        tg = &cut;
+        clip = &cut.clip;
+        if (d->colors)
+            st = rast_shaded_aa_scratch_size(opts, npoints / 3, clip->x1 - clip->x0,
+                                             clip->y1 - clip->y0, &need);
+        else
+            st = rast_coverage_scratch_size(opts, npoints, clip->x1 - clip->x0,
+                                            clip->y1 - clip->y0, &need);
+        if (st != RAST_OK) {
+            if (pts != local) free(pts);
+            return st;
+        }
+    }
+    if (need > (size_t)-1 - 1 || (!(sc && sc->buf && need + 1 <= sc->size) &&
+                                  !(mem = (unsigned char *)malloc(need + 1)))) {
+        if (pts != local) free(pts);
+        return RASTPY_E_NOMEM;
+    }
+    if (sc) sc->want = need + 1;
+    if (!mem) mem = (unsigned char *)sc->buf;
+    scratch = mem;
     poly.points = (const rast_point *)(void *)pts;
     poly.ring_sizes = ring_sizes ? ring_sizes : &npoints;
     poly.nrings = ring_sizes ? nrings : 1;
     if (d->colors && d->blend)
-        st = rast_fill_triangles_shaded_aa_blend(d->target, poly.points, npoints / 3, d->colors,
+        st = rast_fill_triangles_shaded_aa_blend(tg, poly.points, npoints / 3, d->colors,
                                                  opts, d->shade, d->blend, scratch, need);
     else if (d->colors)
-        st = rast_fill_triangles_shaded_aa(d->target, poly.points, npoints / 3, d->colors, opts,
+        st = rast_fill_triangles_shaded_aa(tg, poly.points, npoints / 3, d->colors, opts,
                                            d->shade, scratch, need);
     else if (d->target && triangles)
-        st = rast_fill_triangles_aa(d->target, poly.points, npoints / 3, opts, d->pixel, scratch,
+        st = rast_fill_triangles_aa(tg, poly.points, npoints / 3, opts, d->pixel, scratch,
                                     need);
     else if (d->target)
-        st = rast_fill_polygon_aa(d->target, &poly, opts, d->pixel, scratch, need);
+        st = rast_fill_polygon_aa(tg, &poly, opts, d->pixel, scratch, need);
     else if (triangles)
         st = rast_triangles_coverage(poly.points, npoints / 3, opts, clip,
                                      (rast_coverage_format)d->format, d->out, stride, scratch,
@@ -86,6 +168,7 @@ static long rastpy_coverage(const rastpy_cov_dest *d, const double *xy, uint32_t
         st = rast_polygon_coverage(&poly, opts, clip, (rast_coverage_format)d->format, d->out,
                                    stride, scratch, need);
     if (!sc || mem != sc->buf) free(mem);
+    if (pts != local) free(pts);
     return st;
 }
 

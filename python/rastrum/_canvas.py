@@ -538,7 +538,7 @@ class Canvas:
 
     # (target, color, their addresses, the array, the pixel) of the last
     # common fill_polygon call: see _fill_polygon_call at the end
-    _fpq: Tuple[Any, ...] = (None, None, 0, 0, None, None)
+    _fpq: Tuple[Any, ...] = (None, None, 0, 0, None, None, False)
 
     def fill_polygon(self, rings: Rings, color: Optional[Color] = None, *, rule: Rule = "evenodd",
                      algorithm: PolygonAlgorithm = "aet", subpixel_bits: int = 8, sample_offset: float = 0.5,
@@ -650,7 +650,7 @@ class Canvas:
                 if not _fill_ring(target, _from_buffer(_DOUBLES, xy), n, opts, pixel):
                     if type(color) is int:  # remembered for the next call (_fill_polygon_call)
                         self._fpq = (target, color, int(_cast(_UINTPTR, target)), int(_cast(_UINTPTR, pixel)),
-                                     self._array, pixel)
+                                     self._array, pixel, self._format != "label")
                     return
         elif vertex_colors is None and type(color) is int and algorithm is _AET and rounding is _EXACT \
                 and boundary is _EXACT and shading is _GOURAUD and precision is _EXACT and self._format != "label":
@@ -671,6 +671,9 @@ class Canvas:
                         and rings.flags.aligned:
                     if not _lent(_fill_ring_aa, target, _from_buffer(_DOUBLES, rings), len(rings), _NULL, 1,
                                  opts, pixel):
+                        # remembered for the next call (_fill_polygon_call)
+                        self._fpq = (target, color, int(_cast(_UINTPTR, target)), int(_cast(_UINTPTR, pixel)),
+                                     self._array, pixel, True)
                         return
                 _coverage.fill_polygon_aa(target, rings, pixel, opts)
                 return
@@ -1885,8 +1888,16 @@ _DOUBLES, _from_buffer, _fill_ring = ffi.typeof("double[]"), ffi.from_buffer, li
 _seq_rings, _RING_DTYPES = _core._seq.rings, _core._RING_DTYPES
 _FILL_OPTS: Dict[Any, Any] = {}
 _cast, _UINTPTR, _fill_quick = ffi.cast, ffi.typeof("uintptr_t"), _core._seq.fill
+# The options of keyword calls _seq.fill takes whole ({rule: {aa: address}}:
+# rule= and aa= and no other keyword), checked here once and kept alive.
+_KW_OPTS = [(rule, aa, _core.fill_opts(_AET, rule, _S8, _HALF, _EXACT, _EXACT) if aa is None
+             else _coverage.aa_opts_quick(aa, rule, _S8, _HALF, "Canvas.fill_polygon"))
+            for rule in ("evenodd", "nonzero") for aa in (None,) + tuple(_coverage.METHODS)]
+_KW_TABLE: Dict[str, Dict[Optional[str], int]] = {}
+for _rule, _aa, _o in _KW_OPTS:
+    _KW_TABLE.setdefault(_rule, {})[_aa] = int(_cast(_UINTPTR, _o))
 _core._seq.fill_setup(int(_cast(_UINTPTR, ffi.addressof(lib, "rastpy_fill_ring"))), int(_cast(_UINTPTR, _DEFAULT_OPTS)),
-                      _ndarray, _F64)
+                      _ndarray, _F64, int(_cast(_UINTPTR, ffi.addressof(lib, "rastpy_fill_polygon_aa"))), _KW_TABLE)
 _OPTS_ADDRESS: Dict[Any, int] = {}
 _lent, _fill_ring_aa, _NULL, _MAX_POINTS = _coverage._lent, lib.rastpy_fill_polygon_aa, ffi.NULL, lib.RAST_MAX_POINTS
 
@@ -1905,9 +1916,10 @@ def _opts_address(opts):
 
 
 # Canvas.fill_polygon's common call, a ring and an int colour and no
-# keyword, is done in C in one call (_seq.fill) once the full method has
-# drawn with that canvas target and colour object and remembered them in
-# _fpq: no frame of sixteen keyword arguments, no cffi conversions.
+# keyword but rule= and aa= (the loop every cv2.fillPoly user writes), is
+# done in C in one call (_seq.fill) once the full method has drawn with
+# that canvas target and colour object and remembered them in _fpq: no
+# frame of sixteen keyword arguments, no cffi conversions.
 # Anything else, and anything _seq.fill declines, is the full method's:
 # its checks, its InputErrors, its pixels (the same C fill for what both
 # take).  The class keeps the full method's source, signature and
@@ -1916,7 +1928,7 @@ _fill_polygon = Canvas.fill_polygon
 
 
 def _fill_polygon_call(self, rings, color=None, **kw):
-    if not kw and _fill_quick(self._fpq, self._target, rings, color):
+    if _fill_quick(self._fpq, self._target, rings, color, kw):
         return None
     return _fill_polygon(self, rings, color, **kw)
 

@@ -181,6 +181,32 @@ def test_far_coordinates_switch_at_low_s():
     assert rastrum.polygon_mask(ring, (2, 5), subpixel_bits=8).sum() == 6  # (its path switches too)
 
 
+@pytest.mark.parametrize("s", [0, 8, 16])
+@pytest.mark.parametrize("frac", [0.0, 0.25, 0.4375])
+def test_path_choice_at_the_range_end_is_the_same_every_call(s, frac):
+    """A coordinate that snaps to +-RAST_COORD_MAX itself (t = v 2^s in
+    [M, M + 1/2)) is the 32-bit path's, whether the call comes the quick
+    way (the 32-bit call first) or the general way (the range test first):
+    the same call gives the same levels every time.  (Found by hypothesis
+    in test_coverage_paint: a level at a tie came out 128, then 127, once
+    the call was remembered, the first call having gone the 64-bit way.)"""
+    import rastrum._coverage as C
+    big = (lib.RAST_COORD_MAX + frac) / 2.0 ** s
+    rings = [np.array([[big, 42.89], [-1.5, 3.17e7 / 2 ** s], [-1.0, 2.0], [8.5, 5.5], [8.5, 12.0],
+                       [37.0, 11.0], [3.0, 489.1]]),
+             np.array([[-1.9, -2.0], [-1.9, 10.5], [9.0, 10.5]]),
+             np.array([[1.0, -569.5], [-big, 9.5], [7.5, 1.5]])]
+    pts = C._points(rings)[0]
+    assert not C._use_wide(C._opts("area", "nonzero", s, 0.5, "polygon_coverage"), pts)
+    for dtype in (np.uint8, np.uint16, np.float64):
+        C._QUICK.clear()
+        outs = [rastrum.polygon_coverage(rings, (10, 7), rule="nonzero", subpixel_bits=s, dtype=dtype)
+                for _ in range(3)]
+        assert all((o == outs[0]).all() for o in outs[1:]), dtype
+    over = [np.array([[(lib.RAST_COORD_MAX + 0.5) / 2.0 ** s, 1.0], [0.0, 0.0], [0.0, 3.0]])]
+    assert C._use_wide(C._opts("area", "nonzero", s, 0.5, "polygon_coverage"), C._points(over)[0])
+
+
 def test_known_values_at_s32():
     """Hand-computed areas at S = 32 near 2^28: a triangle of half a pixel,
     a bow tie (two triangles of 1/4 pixel each, even-odd and non-zero alike),

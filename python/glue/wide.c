@@ -13,9 +13,14 @@
  *
  * rastpy_needs_wide(xy, n, s): 1 when the 32-bit path cannot take the
  * input (s > RAST_MAX_SUBPIXEL_BITS, or a coordinate that is not finite or
- * whose |v| * 2^s is not below RAST_COORD_MAX), else 0.  The 64-bit path
- * gives the same pixels wherever both apply, so the choice near the bound
- * changes nothing. */
+ * that snaps outside +-RAST_COORD_MAX: t = v * 2^s outside
+ * -M - 1/2 <= t < M + 1/2, the 32-bit glue's own test, python/glue/fill.c),
+ * else 0.  So a call takes the 64-bit path exactly when the 32-bit one
+ * would refuse it, whether it comes the quick way (the 32-bit call first,
+ * the general way on its error) or the general way (this test first): the
+ * two paths give the same binary pixels, but an "area" level at a tie may
+ * be either neighbour (docs/coverage.md), so the same call must not take
+ * one path one time and the other the next. */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -41,11 +46,13 @@ long rastpy_snap64(const double *xy, size_t npoints, int s, int64_t *out)
 
 int rastpy_needs_wide(const double *xy, size_t npoints, int s)
 {
-    const double lim = ldexp((double)RAST_COORD_MAX, -s);
+    const double scale = ldexp(1.0, s), lim = (double)RAST_COORD_MAX + 0.5;
     size_t i;
-    if (s > RAST_MAX_SUBPIXEL_BITS) return 1;
-    for (i = 0; i < 2 * npoints; i++)
-        if (!(xy[i] < lim && xy[i] > -lim)) return 1;
+    if (s < 0 || s > RAST_MAX_SUBPIXEL_BITS) return 1;
+    for (i = 0; i < 2 * npoints; i++) {
+        const double t = xy[i] * scale;
+        if (!(t >= -lim && t < lim)) return 1; /* also NaN */
+    }
     return 0;
 }
 

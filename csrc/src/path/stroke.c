@@ -143,9 +143,14 @@
 
 #define ST_MAXDASH 65536u
 /* round parts: the first quarter circle's points kept in the stroker's
- * state (on the stack: 8 ST_CQ bytes) when m <= ST_CQ, else made each time */
+ * state (on the stack: 8 ST_CQ bytes) when m <= ST_CQ, else made each time
+ * (64: widths to about 64 px at 1/256 px; a build for size keeps 128 B) */
 #ifndef ST_CQ
+#ifdef __OPTIMIZE_SIZE__
+#define ST_CQ 16u
+#else
 #define ST_CQ 64u
+#endif
 #endif
 
 /* ---- the output: counted (pts NULL) or stored ---------------------------- */

@@ -17,7 +17,10 @@ polyline's self-crossings twice).
 --join and --tolerance (pixels; default rastrum's, 1/256) change rastrum's
 stroke only (Blend2D keeps round joins at its own tolerance, about 0.2 px):
 "area"'s time follows the outline's vertex count, which round joins at a
-fine tolerance dominate (docs/paths.md, "Strokes").
+fine tolerance dominate (docs/paths.md, "Strokes").  Each line also gives
+rastrum.stroke's time alone (the C stroker, one pass, and the Path it
+returns), the outline's vertices per polyline vertex, and each method's
+fill of the prebuilt outline alone.
 """
 
 import argparse
@@ -101,11 +104,16 @@ def main(argv=None):
             pts = polyline(a.size, n, seed)
             res = {m: timed(lambda: run_rastrum(pts, a.size, m), a.repeat) for m in METHODS}
             t_stroke, outline = timed(lambda: rastrum.stroke(pts, 3, cap="butt", **STYLE), a.repeat)
+            fills = {m: timed(lambda: rastrum.polygon_coverage(outline, (a.size, a.size), rule="nonzero",
+                                                               method=m, dtype=np.uint8), a.repeat)[0]
+                     for m in METHODS}
             ref = res["area"][1]
-            line = "n=%d seed=%d: stroke alone %.2f ms (%d vertices, %d rings);" % (
-                n, seed, 1e3 * t_stroke, len(outline.points), int((outline.verbs == 0).sum()))
+            verbs, xy = outline._as_arrays()
+            nv = int((verbs != rastrum._path.CLOSE).sum())
+            line = "n=%d seed=%d: stroke alone %.2f ms (%d vertices, %.1f per polyline vertex, %d rings);" % (
+                n, seed, 1e3 * t_stroke, nv, nv / n, int((verbs == rastrum._path.MOVE).sum()))
             for m in METHODS:
-                line += " %s %.2f ms" % (m, 1e3 * res[m][0])
+                line += " %s %.2f ms (fill of the outline alone %.2f ms)" % (m, 1e3 * res[m][0], 1e3 * fills[m])
                 if m != "area":
                     line += " (vs exact: %s)" % off(res[m][1], ref)
                 line += ";"
@@ -117,8 +125,9 @@ def main(argv=None):
                     bt.append(dt)
                 tb = statistics.median(bt)
                 ratios = {m: res[m][0] / tb for m in METHODS}
-                print("    Blend2D stroke_path %.2f ms (vs exact: %s); rastrum / Blend2D CPU time: %s"
-                      % (1e3 * tb, off(img, ref), ", ".join("%s %.1fx" % (m, r) for m, r in ratios.items())))
+                print("    Blend2D stroke_path %.2f ms (vs exact: %s); rastrum / Blend2D CPU time: %s;"
+                      " rastrum.stroke alone %.2fx" % (1e3 * tb, off(img, ref), ", ".join(
+                          "%s %.1fx" % (m, r) for m, r in ratios.items()), t_stroke / tb))
                 for m, r in ratios.items():
                     if r > worst.get((n, m), (0, 0))[0]:
                         worst[(n, m)] = (r, seed)

@@ -99,6 +99,16 @@ class _ArrayPath(Path):
 _JOINS = {"miter": lib.RAST_JOIN_MITER, "round": lib.RAST_JOIN_ROUND, "bevel": lib.RAST_JOIN_BEVEL}
 _CAPS = {"butt": lib.RAST_CAP_BUTT, "round": lib.RAST_CAP_ROUND, "square": lib.RAST_CAP_SQUARE}
 _MAX_LIMIT = (2 ** 31 - 1) / 65536.0
+_ROOM = 1 << 22  # the most room a guess takes (np.empty: pages touched only as written)
+
+
+def _circle_m(w: int, tol: int) -> int:
+    """rast_path_stroke's m for round parts (4m points on the circle):
+    ceil(sqrt(ceil(w / (4 tol - 3)))), at most w // 4, at least 1
+    (csrc/src/path/stroke.c, "Round parts")."""
+    need = (w + 4 * tol - 4) // (4 * tol - 3)
+    m = math.isqrt(need - 1) + 1 if need > 0 else 0
+    return max(1, min(m, w // 4))
 
 
 def _as_path(geometry: object) -> Path:
@@ -253,18 +263,31 @@ def stroke(geometry: Union[Path, Sequence[Sequence[float]], Sequence[Sequence[Se
     cpath.nverbs = len(verbs)
     cpath.points = ffi.cast("rast_point *", ffi.from_buffer(fixed)) if len(fixed) else ffi.NULL
     cpath.npoints = len(fixed)
+    # One pass into room guessed from the path (python/glue/stroke.c), not a
+    # count and then a second pass.  The guess, for lines without dashes:
+    # per vertex a segment's 4 points, a join's pivot and an arc of about
+    # half the circle's 4m points; per subpath two caps or a dot.  Curves
+    # and dashes may need more; too little room only costs the count first
+    # (the outline is the same either way).
+    m = _circle_m(style.width, style.tolerance)
+    nsub = int(np.count_nonzero(verbs == MOVE)) + 1
+    room = min(lib.RAST_MAX_POINTS, len(fixed) * (2 * m + 6) + nsub * (4 * m + 4), _ROOM)
+    rooms = min(lib.RAST_MAX_POINTS, 2 * (len(verbs) + 1))
     np_, nr = ffi.new("uint32_t *"), ffi.new("uint32_t *")
-    st = lib.rast_path_stroke_size(cpath, style, np_, nr)
+    for _ in range(2):
+        ring_pts = np.empty((max(room, 1), 2), dtype=np.int32)
+        sizes = np.empty(max(rooms, 1), dtype=np.uint32)
+        st = lib.rastpy_path_stroke(cpath, style, ffi.cast("rast_point *", ffi.from_buffer(ring_pts)), room,
+                                    ffi.from_buffer("uint32_t[]", sizes), rooms, np_, nr)
+        if st != lib.RAST_E_SCRATCH:
+            break
+        st = lib.rast_path_stroke_size(cpath, style, np_, nr)  # how much, or the error first
+        if st != lib.RAST_OK:
+            break
+        room, rooms = np_[0], nr[0]
     if st == lib.RAST_E_TOO_MANY:
         raise InputError("geometry: the stroke's outline has more than %d vertices" % lib.RAST_MAX_POINTS)
     if st != lib.RAST_OK:
-        raise InputError("geometry: %s" % ffi.string(lib.rast_status_str(st)).decode())
-    ring_pts = np.empty((max(np_[0], 1), 2), dtype=np.int32)
-    sizes = np.empty(max(nr[0], 1), dtype=np.uint32)
-    poly = ffi.new("rast_polygon *")
-    st = lib.rast_path_stroke(cpath, style, ffi.cast("rast_point *", ffi.from_buffer(ring_pts)), np_[0],
-                              ffi.from_buffer("uint32_t[]", sizes), nr[0], poly)
-    if st != lib.RAST_OK:  # pragma: no cover - the sizes came from the same path
         raise InputError("geometry: %s" % ffi.string(lib.rast_status_str(st)).decode())
     n, r = np_[0], nr[0]
     sizes = sizes[:r]

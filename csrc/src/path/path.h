@@ -29,4 +29,15 @@ rast_point rast__curve_point(const rast_point *p, int d, uint32_t i, uint32_t n)
 
 rast_status rast__path_flatten(const rast_path *path, int32_t tolerance, rast__flat *f);
 
+/* rast_path_stroke's outline in one pass, without the counting pass first
+ * (path/stroke.c): into points[0 .. max_points) and ring_sizes[0 ..
+ * max_rings), laid out as rast_path_stroke lays it out, *npoints and
+ * *nrings set.  The room may be any size: too little gives RAST_E_SCRATCH
+ * (rast_path_stroke_size then says how much, or which other error comes
+ * first), with some of the room written.  Errors otherwise as
+ * rast_path_stroke_size's, and RAST_E_NULL. */
+rast_status rast__path_stroke_into(const rast_path *path, const rast_stroke_style *style, rast_point *points,
+                                   uint32_t max_points, uint32_t *ring_sizes, uint32_t max_rings,
+                                   uint32_t *npoints, uint32_t *nrings);
+
 #endif

@@ -79,9 +79,17 @@
  * inner ring turns clockwise.  Count: the size pass runs the same code.
  *
  * Storing.  The left side is made forward but needed backward: it is
- * stored downwards from the end of the outline (the size pass's count; the
- * rings after it have not been written yet), then moved after the right
- * side; an outer arc on the left is reversed in place.  No heap.
+ * stored downwards from the end of the room (the size pass's count, or any
+ * room rast__path_stroke_into is given; the rings after it have not been
+ * written yet), then moved after the right side; an outer arc on the left
+ * is reversed in place.  The right side's next slot and the left's stay
+ * apart while the points so far are fewer than the room; past it, the
+ * pass stores nothing more and ends RAST_E_SCRATCH.  No heap.
+ *
+ * Speed.  The round parts' first quarter circle is made once per call
+ * (kept in the state when m <= ST_CQ) and walked by quadrant and index, no
+ * division per point; the few small helpers a point passes through are
+ * inlined (RAST__HOT).  The outline is the same point for point.
  *
  * The offset N(d), proven.  The ideal offset is (-dy, dx) h / L, h =
  * w / 2, L = |d|.  Each coordinate's magnitude is c = w |a| / (2 L) (a =
@@ -134,6 +142,16 @@
 #include "../base/wide.h"
 
 #define ST_MAXDASH 65536u
+/* round parts: the first quarter circle's points kept in the stroker's
+ * state (on the stack: 8 ST_CQ bytes) when m <= ST_CQ, else made each time
+ * (64: widths to about 64 px at 1/256 px; a build for size keeps 128 B) */
+#ifndef ST_CQ
+#ifdef __OPTIMIZE_SIZE__
+#define ST_CQ 16u
+#else
+#define ST_CQ 64u
+#endif
+#endif
 
 /* ---- the output: counted (pts NULL) or stored ---------------------------- */
 typedef struct st_vec {
@@ -153,7 +171,8 @@ typedef struct st_out {
     rast_point *pts;
     uint32_t *sizes;
     uint64_t np, nr; /* points (both streams) and rings so far */
-    uint64_t top;    /* stored: the outline's size (the count's np) */
+    uint64_t top;    /* stored: room for points (the count's np, or more) */
+    uint64_t maxr;   /* stored: room for ring sizes */
     uint64_t nl;     /* left points held at pts[top - nl .. top) */
     st_vec last[2];
     int has[2];
@@ -162,12 +181,13 @@ typedef struct st_out {
 
 static void st_ring_begin(st_out *o)
 {
+    if (o->pts && o->nr >= o->maxr && o->err == RAST_OK) o->err = RAST_E_SCRATCH;
     if (o->pts && o->err == RAST_OK) o->sizes[o->nr] = 0;
     o->nr++;
     o->has[ST_R] = 0;
 }
 
-static void st_emit(st_out *o, int64_t x, int64_t y, int side)
+RAST__HOT void st_emit(st_out *o, int64_t x, int64_t y, int side)
 {
     if (x < -RAST_COORD_MAX || x > RAST_COORD_MAX || y < -RAST_COORD_MAX || y > RAST_COORD_MAX) {
         if (o->err == RAST_OK) o->err = RAST_E_RANGE;
@@ -181,6 +201,9 @@ static void st_emit(st_out *o, int64_t x, int64_t y, int side)
         if (o->err == RAST_OK) o->err = RAST_E_TOO_MANY;
         return;
     }
+    /* the right side's next slot np - nl and the left's top - 1 - nl stay
+     * apart and in the room while np < top (nl <= np) */
+    if (o->pts && o->np >= o->top && o->err == RAST_OK) o->err = RAST_E_SCRATCH;
     if (o->pts && o->err == RAST_OK) {
         rast_point *q = side == ST_R ? &o->pts[o->np - o->nl] : &o->pts[o->top - 1 - o->nl];
         q->x = (int32_t)x;
@@ -258,7 +281,7 @@ static st_vec st_normal(st_vec d, int64_t w)
     return o;
 }
 
-static int64_t st_cross(st_vec a, st_vec b)
+RAST__HOT int64_t st_cross(st_vec a, st_vec b)
 {
     return a.x * b.y - a.y * b.x;
 }
@@ -282,6 +305,8 @@ typedef struct st_ctx {
     const rast_stroke_style *style;
     int64_t w;
     uint32_t m; /* round parts: 4m points on the circle */
+    int cached; /* cq holds the first quarter's points (m <= ST_CQ) */
+    int32_t cq[2 * ST_CQ];
     st_out out;
     /* the pen: one open or closed polyline */
     uint32_t n;           /* distinct points so far */
@@ -289,14 +314,27 @@ typedef struct st_ctx {
     int has_hint;
 } st_ctx;
 
-/* The circle's point j (0 .. 4m - 1), relative to the centre. */
-static st_vec st_circle_point(const st_ctx *c, uint32_t j)
+/* The first quarter's point k (0 .. m - 1), relative to the centre. */
+RAST__HOT st_vec st_quarter_point(const st_ctx *c, uint32_t k)
 {
-    int64_t m = c->m, k = (int64_t)(j % c->m), den = 2 * (m * m + k * k);
-    st_vec p, r;
-    p.x = st_round_div(c->w * (m * m - k * k), den);
-    p.y = st_round_div(c->w * (2 * k * m), den);
-    switch ((j / c->m) & 3u) {
+    st_vec p;
+    if (c->cached) {
+        p.x = c->cq[2 * k];
+        p.y = c->cq[2 * k + 1];
+    } else {
+        int64_t m = c->m, kk = k, den = 2 * (m * m + kk * kk);
+        p.x = st_round_div(c->w * (m * m - kk * kk), den);
+        p.y = st_round_div(c->w * (2 * kk * m), den);
+    }
+    return p;
+}
+
+/* The circle's point q m + k (quadrant q, 0 .. 3, and k < m), relative to
+ * the centre: the first quarter's point k turned q quarters. */
+RAST__HOT st_vec st_circle_qk(const st_ctx *c, uint32_t q, uint32_t k)
+{
+    st_vec p = st_quarter_point(c, k), r;
+    switch (q & 3u) {
     case 0: r = p; break;
     case 1: r.x = -p.y; r.y = p.x; break;
     case 2: r.x = -p.x; r.y = -p.y; break;
@@ -305,7 +343,36 @@ static st_vec st_circle_point(const st_ctx *c, uint32_t j)
     return r;
 }
 
-static int st_in_sweep(st_vec s, st_vec p, st_vec e)
+/* The circle's point j (0 .. 4m - 1), relative to the centre. */
+static st_vec st_circle_point(const st_ctx *c, uint32_t j)
+{
+    return st_circle_qk(c, j / c->m, j % c->m);
+}
+
+/* A walk round the circle's points: the point j = q m + k and its index
+ * parts, stepped without a division. */
+typedef struct st_walk {
+    uint32_t q, k;
+    st_vec p;
+} st_walk;
+
+static void st_walk_at(const st_ctx *c, st_walk *wk, uint32_t j)
+{
+    wk->q = j / c->m;
+    wk->k = j % c->m;
+    wk->p = st_circle_qk(c, wk->q, wk->k);
+}
+
+RAST__HOT void st_walk_next(const st_ctx *c, st_walk *wk)
+{
+    if (++wk->k == c->m) {
+        wk->k = 0;
+        wk->q = (wk->q + 1) & 3u;
+    }
+    wk->p = st_circle_qk(c, wk->q, wk->k);
+}
+
+RAST__HOT int st_in_sweep(st_vec s, st_vec p, st_vec e)
 {
     return st_cross(s, p) > 0 && st_cross(p, e) > 0;
 }
@@ -329,7 +396,7 @@ static uint32_t st_after(const st_ctx *c, st_vec s)
     hi = m; /* the first k < m in the quadrant after s, else m */
     while (lo < hi) {
         uint32_t mid = lo + (hi - lo) / 2;
-        if (st_cross(s, st_circle_point(c, q * m + mid)) > 0)
+        if (st_cross(s, st_circle_qk(c, q, mid)) > 0)
             hi = mid;
         else
             lo = mid + 1;
@@ -362,22 +429,20 @@ static uint32_t st_after(const st_ctx *c, st_vec s)
  * whole circle's scan took, in the same order. */
 static void st_arc(st_ctx *c, st_vec v, st_vec s, st_vec e, int side)
 {
-    uint32_t n4 = 4 * c->m, j = st_after(c, s), t;
-    st_vec last = s, p = st_circle_point(c, j);
-    if (!st_in_sweep(s, p, e)) {
+    uint32_t n4 = 4 * c->m, t;
+    st_vec last = s;
+    st_walk wk;
+    st_walk_at(c, &wk, st_after(c, s));
+    if (!st_in_sweep(s, wk.p, e)) {
         if (st_cross(s, e) > 0) return; /* under a half turn: nothing in it */
-        for (t = 1; t < n4 && !st_in_sweep(s, p, e); t++) {
-            j = (j + 1) % n4;
-            p = st_circle_point(c, j);
-        }
+        for (t = 1; t < n4 && !st_in_sweep(s, wk.p, e); t++) st_walk_next(c, &wk);
     }
-    for (t = 0; t < n4 && st_in_sweep(s, p, e); t++) {
-        if (st_cross(last, p) > 0) {
-            st_emit(&c->out, v.x + p.x, v.y + p.y, side);
-            last = p;
+    for (t = 0; t < n4 && st_in_sweep(s, wk.p, e); t++) {
+        if (st_cross(last, wk.p) > 0) {
+            st_emit(&c->out, v.x + wk.p.x, v.y + wk.p.y, side);
+            last = wk.p;
         }
-        j = (j + 1) % n4;
-        p = st_circle_point(c, j);
+        st_walk_next(c, &wk);
     }
 }
 
@@ -409,12 +474,13 @@ static void st_dot(st_ctx *c, st_vec p)
     if (c->style->cap == RAST_CAP_ROUND) {
         uint32_t n4 = 4 * c->m, j;
         st_vec last = st_circle_point(c, n4 - 1);
+        st_walk wk;
+        st_walk_at(c, &wk, 0);
         st_ring_begin(&c->out);
-        for (j = 0; j < n4; j++) {
-            st_vec q = st_circle_point(c, j);
-            if (st_cross(last, q) > 0) {
-                st_put(&c->out, p.x + q.x, p.y + q.y);
-                last = q;
+        for (j = 0; j < n4; j++, st_walk_next(c, &wk)) {
+            if (st_cross(last, wk.p) > 0) {
+                st_put(&c->out, p.x + wk.p.x, p.y + wk.p.y);
+                last = wk.p;
             }
         }
     } else if (c->style->cap == RAST_CAP_SQUARE) {
@@ -871,6 +937,15 @@ static rast_status st_stroke_run(const rast_path *path, const rast_stroke_style 
     c.m = rast__isqrt_ceil(need);
     if (c.m > (uint32_t)(c.w / 4)) c.m = (uint32_t)(c.w / 4);
     if (c.m < 1) c.m = 1;
+    if (c.m <= ST_CQ) { /* the first quarter's points, made once */
+        uint32_t k;
+        for (k = 0; k < c.m; k++) {
+            st_vec p = st_quarter_point(&c, k);
+            c.cq[2 * k] = (int32_t)p.x;
+            c.cq[2 * k + 1] = (int32_t)p.y;
+        }
+        c.cached = 1;
+    }
     c.out = *out;
     memset(&it, 0, sizeof it);
     it.path = path;
@@ -897,21 +972,38 @@ rast_status rast_path_stroke_size(const rast_path *path, const rast_stroke_style
     return RAST_OK;
 }
 
+/* One storing pass into the room given (path.h): no count first. */
+rast_status rast__path_stroke_into(const rast_path *path, const rast_stroke_style *style, rast_point *points,
+                                   uint32_t max_points, uint32_t *ring_sizes, uint32_t max_rings,
+                                   uint32_t *npoints, uint32_t *nrings)
+{
+    st_out o;
+    rast_status st;
+    if (!points || !ring_sizes || !npoints || !nrings) return RAST_E_NULL;
+    memset(&o, 0, sizeof o);
+    o.pts = points;
+    o.top = max_points;
+    o.sizes = ring_sizes;
+    o.maxr = max_rings;
+    st = st_stroke_run(path, style, &o);
+    if (st != RAST_OK) return st;
+    *npoints = (uint32_t)o.np;
+    *nrings = (uint32_t)o.nr;
+    return RAST_OK;
+}
+
 rast_status rast_path_stroke(const rast_path *path, const rast_stroke_style *style,
                              rast_point *points, uint32_t max_points, uint32_t *ring_sizes,
                              uint32_t max_rings, rast_polygon *polygon)
 {
-    st_out o;
     uint32_t np, nr;
     rast_status st = rast_path_stroke_size(path, style, &np, &nr);
     if (st != RAST_OK) return st;
     if (!points || !ring_sizes || !polygon) return RAST_E_NULL;
     if (np > max_points || nr > max_rings) return RAST_E_SCRATCH;
-    memset(&o, 0, sizeof o);
-    o.pts = points;
-    o.top = np;
-    o.sizes = ring_sizes;
-    st = st_stroke_run(path, style, &o);
+    /* the room the count gave: the pass below meets no error (the same
+     * path, the same code) and fills it exactly */
+    st = rast__path_stroke_into(path, style, points, np, ring_sizes, nr, &np, &nr);
     if (st != RAST_OK) return st;
     polygon->points = points;
     polygon->ring_sizes = ring_sizes;

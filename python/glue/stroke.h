@@ -1,0 +1,16 @@
+/* stroke.h - the binding glue of strokes (python/glue/stroke.c): the C
+ * stroker's outline in one pass into room the caller guessed
+ * (rastrum.stroke), not a count and then a second pass.  Results as
+ * rastpy.h's: 0, or a negative status. */
+#ifndef RASTPY_STROKE_H
+#define RASTPY_STROKE_H
+
+#include "rastpy.h"
+
+/* cdef-begin */
+long rastpy_path_stroke(const rast_path *path, const rast_stroke_style *style, rast_point *points,
+                        uint32_t max_points, uint32_t *ring_sizes, uint32_t max_rings,
+                        uint32_t *npoints, uint32_t *nrings);
+/* cdef-end */
+
+#endif

@@ -58,10 +58,9 @@ def _cpath(verbs, pts):
     return path
 
 
-@given(strokes(), st.integers(0, 3), st.integers(0, 40))
-def test_one_pass_into_any_room(case, extra_rings, extra):
-    verbs, pts, style, dash = case
-    path = _cpath(verbs, pts)
+def _public_stroke(path, style):
+    """The outline by the public two-pass rast_path_stroke: (points, rings,
+    the points, the ring sizes)."""
     np_, nr = ffi.new("uint32_t *"), ffi.new("uint32_t *")
     assert lib.rast_path_stroke_size(path, style, np_, nr) == lib.RAST_OK
     n, r = np_[0], nr[0]
@@ -70,6 +69,14 @@ def test_one_pass_into_any_room(case, extra_rings, extra):
     poly = ffi.new("rast_polygon *")
     assert lib.rast_path_stroke(path, style, ffi.cast("rast_point *", ffi.from_buffer(want)), n,
                                 ffi.from_buffer("uint32_t[]", wsizes), r, poly) == lib.RAST_OK
+    return n, r, want, wsizes
+
+
+@given(strokes(), st.integers(0, 3), st.integers(0, 40))
+def test_one_pass_into_any_room(case, extra_rings, extra):
+    verbs, pts, style, dash = case
+    path = _cpath(verbs, pts)
+    n, r, want, wsizes = _public_stroke(path, style)
     for room, rooms in ((n + extra, r + extra_rings), (n, r), (max(n - 1 - extra, 0), r),
                         (n, max(r - 1 - extra_rings, 0))):
         got = np.full((room + 8, 2), SENTINEL, dtype=np.int32)
@@ -92,14 +99,7 @@ def test_stroke_same_outline_guessed_or_counted(case):
     path far from the origin is not needed; compare through the Path)."""
     verbs, pts, style, dash = case
     path = _cpath(verbs, pts)
-    np_, nr = ffi.new("uint32_t *"), ffi.new("uint32_t *")
-    assert lib.rast_path_stroke_size(path, style, np_, nr) == lib.RAST_OK
-    n, r = np_[0], nr[0]
-    want = np.zeros((max(n, 1), 2), dtype=np.int32)
-    wsizes = np.zeros(max(r, 1), dtype=np.uint32)
-    poly = ffi.new("rast_polygon *")
-    assert lib.rast_path_stroke(path, style, ffi.cast("rast_point *", ffi.from_buffer(want)), n,
-                                ffi.from_buffer("uint32_t[]", wsizes), r, poly) == lib.RAST_OK
+    n, r, want, wsizes = _public_stroke(path, style)
     # the same stroke through rastrum.stroke: points at 1/2**16 px (the grid
     # stroke() picks for this extent), width and tolerance in pixels
     one = float(1 << 16)

@@ -123,6 +123,106 @@ static void test_rectangles(void)
     }
 }
 
+/* ---- accumulate: many rectangles, exact --------------------------------------------
+ * 12 to 24 rectangles on the 2^-S grid (24 edges or more: the rows'
+ * counting sort), their corners on a coarse grid so that sides coincide,
+ * of both directions; as rings of one polygon (16 rings or more: the
+ * shared sides cancel first) or, two triangles each, as a batch (a
+ * shared diagonal).  The accumulation's value is the integral a of the
+ * winding number over the pixel, a count of 2^-S cells here, the rule
+ * applied (non-zero min(|a|, 1), even-odd |a| folded mod 2: rastrum.h),
+ * and every level must be floor(a' M + 1/2): no bound wider than that. */
+static void test_acc_many(void)
+{
+    int iter, n = check_count(150);
+    for (iter = 0; iter < n; iter++) {
+        int32_t s = (int32_t)(rng() % 3), g = 1 << s, nr = 12 + (int)(rng() % 13), r, i, j;
+        rast_point pts[4 * 24], tris[6 * 24];
+        uint32_t sizes[24], M;
+        int32_t rx0[24], ry0[24], rx1[24], ry1[24], sg[24];
+        rast_polygon poly;
+        rast_coverage_opts o;
+        rast_rect clip;
+        uint16_t out[H][W];
+        const int batch = (int)(rng() % 2), rule = batch ? RAST_RULE_NONZERO : (int)(rng() % 2);
+        const rast_coverage_format f = rng() % 2 ? RAST_COVERAGE_U8 : RAST_COVERAGE_U16;
+        for (r = 0; r < nr; r++) {
+            int32_t a, b, c, d;
+            do { /* (corners on the grid of half pixels, or whole ones) */
+                a = (int32_t)(rng() % (2 * (W + 2))) * g / 2 - g;
+                b = (int32_t)(rng() % (2 * (W + 2))) * g / 2 - g;
+                c = (int32_t)(rng() % (2 * (H + 2))) * g / 2 - g;
+                d = (int32_t)(rng() % (2 * (H + 2))) * g / 2 - g;
+            } while (a == b || c == d);
+            if (r > 0 && rng() % 2) { /* a side of the last one's, either way */
+                a = rng() % 2 ? rx0[r - 1] : rx1[r - 1];
+                if (a == b) b = a + 1;
+            }
+            rx0[r] = a < b ? a : b;
+            rx1[r] = a < b ? b : a;
+            ry0[r] = c < d ? c : d;
+            ry1[r] = c < d ? d : c;
+            sg[r] = batch || rng() % 2 ? 1 : -1;
+            pts[4 * r].x = rx0[r]; /* (x0,y0) (x0,y1) (x1,y1) (x1,y0): +1 inside, y down */
+            pts[4 * r].y = ry0[r];
+            pts[4 * r + 1].x = sg[r] > 0 ? rx0[r] : rx1[r];
+            pts[4 * r + 1].y = sg[r] > 0 ? ry1[r] : ry0[r];
+            pts[4 * r + 2].x = rx1[r];
+            pts[4 * r + 2].y = ry1[r];
+            pts[4 * r + 3].x = sg[r] > 0 ? rx1[r] : rx0[r];
+            pts[4 * r + 3].y = sg[r] > 0 ? ry0[r] : ry1[r];
+            sizes[r] = 4;
+            /* two triangles, one of them turned the other way (a batch
+             * orients each) */
+            tris[6 * r] = pts[4 * r];
+            tris[6 * r + 1] = pts[4 * r + 1];
+            tris[6 * r + 2] = pts[4 * r + 2];
+            tris[6 * r + 3] = pts[4 * r];
+            tris[6 * r + 4] = pts[4 * r + 2];
+            tris[6 * r + 5] = pts[4 * r + 3];
+            if (rng() % 2) {
+                tris[6 * r + 4] = pts[4 * r + 3];
+                tris[6 * r + 5] = pts[4 * r + 2];
+            }
+        }
+        poly.points = pts;
+        poly.ring_sizes = sizes;
+        poly.nrings = (uint32_t)nr;
+        memset(&o, 0, sizeof o);
+        o.rule = (rast_fill_rule)rule;
+        o.subpixel_bits = s;
+        o.method = RAST_AA_ACCUMULATE;
+        clip.x0 = (int32_t)(rng() % 3);
+        clip.y0 = (int32_t)(rng() % 3);
+        clip.x1 = W - (int32_t)(rng() % 3);
+        clip.y1 = H - (int32_t)(rng() % 3);
+        M = f == RAST_COVERAGE_U8 ? 255 : 65535;
+        CHECK(cover(batch ? NULL : &poly, batch ? tris : NULL, batch ? 2 * (uint32_t)nr : 0, &o, &clip, f,
+                    &out[0][0], W * 2) == RAST_OK);
+        for (j = clip.y0; j < clip.y1; j++)
+            for (i = clip.x0; i < clip.x1; i++) {
+                const uint64_t one = (uint64_t)g * (uint64_t)g;
+                const unsigned char *row = (const unsigned char *)&out[j - clip.y0][0];
+                int64_t sum = 0;
+                uint64_t x;
+                int32_t u, v;
+                for (v = j * g; v < (j + 1) * g; v++)
+                    for (u = i * g; u < (i + 1) * g; u++)
+                        for (r = 0; r < nr; r++)
+                            if (u >= rx0[r] && u < rx1[r] && v >= ry0[r] && v < ry1[r]) sum += sg[r];
+                x = (uint64_t)(sum < 0 ? -sum : sum); /* |a| one^-1 */
+                if (rule == RAST_RULE_NONZERO) {
+                    x = x > one ? one : x;
+                } else {
+                    x %= 2 * one;
+                    x = x > one ? 2 * one - x : x;
+                }
+                CHECK((f == RAST_COVERAGE_U8 ? row[i - clip.x0] : out[j - clip.y0][i - clip.x0]) ==
+                      level(x, one, M));
+            }
+    }
+}
+
 /* ---- supersampling: the binary fill k times finer ------------------------------ */
 
 static void test_ss(void)
@@ -1016,6 +1116,7 @@ static void test_long_edges(void)
 int main(void)
 {
     test_rectangles();
+    test_acc_many();
     test_ss();
     test_ss_wide();
     test_ss_dense();

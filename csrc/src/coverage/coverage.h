@@ -39,6 +39,11 @@ rast_status rast__cov_area(rast__cedge *e, uint32_t n, int32_t s, rast_fill_rule
 int rast__cov_acc_may(const rast__cov_out *o, int32_t s);
 rast_status rast__cov_acc(rast__cedge *e, uint32_t n, int32_t s, rast_fill_rule rule,
                           const rast__cov_out *o, rast__arena *arena);
+/* rast__cov_acc with coincident edges of opposite directions dropped
+ * first (the same levels; a hash table's cost an edge): for a triangle
+ * batch, or a polygon of many small rings (a mesh's inner edges). */
+rast_status rast__cov_acc_shared(rast__cedge *e, uint32_t n, int32_t s, rast_fill_rule rule,
+                                 const rast__cov_out *o, rast__arena *arena);
 /* Row j of "area" by the accumulation, when the row is simple (see
  * coverage_acc.c) and its levels are certain: 1, written and handed on;
  * else 0, nothing handed on (the row may be written), the cells clean.

@@ -1413,6 +1413,68 @@ static rast_status rast__acc_narrow(rast__cedge *e, uint32_t n, int32_t s, rast_
 static rast_status rast__acc_walk_all(rast__cedge *e, uint32_t n, int32_t s, rast_fill_rule rule,
                                       const rast__cov_out *o, rast__arena *arena);
 
+/* The probes a hash lookup takes at most (rast__acc_cancel): past them
+ * an edge is neither cancelled nor kept for another to cancel, so that no
+ * input, however its hashes collide, costs more than this per edge. */
+#define RAST__ACC_PROBES 32
+
+/* Coincident edges of opposite directions (a mesh's inner edges, two
+ * triangles of a batch sharing a side) change no winding number on
+ * either side: their parts put the same values in the same cells with
+ * opposite signs (rast__acc_put's are exact negations modulo 2^64), so
+ * the sums, and every level, are the same without them.  Each edge looks
+ * for an equal one (xt, yt, dx, dy) of the other direction not yet
+ * cancelled, in a hash table of edge indices (open addressing, at least
+ * 2 n slots, in room taken from a copy of the arena: the walk's after);
+ * if it finds one, both go (their dir set to 0), else it is added.  The
+ * edges that go are replaced by the last ones (the order does not
+ * matter: the sums are the same in any order); returns how many are
+ * left.  With no room for the table nothing goes. */
+static uint32_t rast__acc_cancel(rast__cedge *e, uint32_t n, rast__arena room)
+{
+    uint32_t size = 16, i, h, probe, gone = 0;
+    int32_t *slot, k;
+    while (size < 2 * n) size <<= 1;
+    slot = (int32_t *)rast__take(&room, (size_t)size * sizeof(int32_t));
+    if (n < 2 || !slot) return n;
+    for (i = 0; i < size; i++) slot[i] = -1; /* (-1 empty, -2 cancelled) */
+    for (i = 0; i < n; i++) {
+        rast__cedge *x = &e[i];
+        h = (uint32_t)x->xt * 0x9E3779B1u + (uint32_t)x->yt * 0x85EBCA77u + (uint32_t)x->dx * 0xC2B2AE3Du +
+            (uint32_t)x->dy * 0x27D4EB2Fu;
+        h ^= h >> 15;
+        for (probe = 0; probe < RAST__ACC_PROBES; probe++, h++) {
+            k = slot[h & (size - 1)];
+            if (k == -1) {
+                slot[h & (size - 1)] = (int32_t)i;
+                break;
+            }
+            if (k >= 0 && e[k].xt == x->xt && e[k].yt == x->yt && e[k].dx == x->dx && e[k].dy == x->dy &&
+                e[k].dir == -x->dir) {
+                slot[h & (size - 1)] = -2;
+                e[k].dir = x->dir = 0;
+                gone += 2;
+                break;
+            }
+        }
+    }
+    if (!gone) return n;
+    for (i = 0; i < n;) {
+        if (e[i].dir) {
+            i++;
+        } else if (i < --n) {
+            e[i] = e[n]; /* (checked again: it may have gone too) */
+        }
+    }
+    return n;
+}
+
+rast_status rast__cov_acc_shared(rast__cedge *e, uint32_t n, int32_t s, rast_fill_rule rule,
+                                 const rast__cov_out *o, rast__arena *arena)
+{
+    return rast__cov_acc(e, rast__acc_cancel(e, n, *arena), s, rule, o, arena);
+}
+
 rast_status rast__cov_acc(rast__cedge *e, uint32_t n, int32_t s, rast_fill_rule rule,
                           const rast__cov_out *o, rast__arena *arena)
 {

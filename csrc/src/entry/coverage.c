@@ -166,7 +166,15 @@ static rast_status rast__cov_run(const rast_polygon *poly, const rast_point *tri
         if (!tris && rast__cov_acc_may(o, s) &&
             (opts->method == RAST_AA_ACCUMULATE ||
              (rast__cov_plain_pays(e, n, s, npoints) && rast__cov_plain(poly, npoints, arena))))
-            return rast__cov_acc(e, n, s, rule, o, &arena);
+            /* (16 rings or more of 8 vertices or fewer on the mean: a
+             * mesh's, whose shared sides cancel first) */
+            return opts->method == RAST_AA_ACCUMULATE && poly->nrings >= 16 &&
+                           (uint64_t)poly->nrings * 8 >= npoints
+                       ? rast__cov_acc_shared(e, n, s, rule, o, &arena)
+                       : rast__cov_acc(e, n, s, rule, o, &arena);
+        /* a triangle batch's accumulation: its shared sides cancel first */
+        if (tris && opts->method == RAST_AA_ACCUMULATE && rast__cov_acc_may(o, s))
+            return rast__cov_acc_shared(e, n, s, rule, o, &arena);
         return rast__cov_area(e, n, s, rule, opts->method == RAST_AA_ACCUMULATE, o, &arena);
     } else {
         int32_t scale = s < kb ? kb - s : 0;

@@ -561,12 +561,14 @@ typedef struct rast__ss_tri {
 static inline int rast__ss_jump(rast__ss_tri *r, int k, rast__edge *ed, int32_t K)
 {
     int64_t e;
-    if (r->drk[k] == -1) {
-        const int64_t n = (int64_t)K * ed->dr, whole = (int64_t)K * ed->step + n / ed->q;
-        r->drk[k] = whole > -((int64_t)1 << 29) && whole < ((int64_t)1 << 29) ? n % ed->q : -2;
-        r->stepk[k] = (int32_t)(r->drk[k] == -2 ? 0 : whole);
+    if (r->drk[k] < 0) { /* (one test on the way taken once worked out) */
+        if (r->drk[k] == -1) {
+            const int64_t n = (int64_t)K * ed->dr, whole = (int64_t)K * ed->step + n / ed->q;
+            r->drk[k] = whole > -((int64_t)1 << 29) && whole < ((int64_t)1 << 29) ? n % ed->q : -2;
+            r->stepk[k] = (int32_t)(r->drk[k] == -2 ? 0 : whole);
+        }
+        if (r->drk[k] == -2) return 0;
     }
-    if (r->drk[k] == -2) return 0;
     e = ed->e - r->drk[k];
     ed->x += r->stepk[k] + (int32_t)(e < 0);
     ed->e = e + (ed->q & -(int64_t)(e < 0));
@@ -945,7 +947,9 @@ rast_status rast__cov_ss_tris(const rast_point *tris, uint32_t ntris, int32_t s,
                     int32_t u0, v0, u1, v1;
                     rast__ss_run_of(&l, &e, fx0, fx1, &u0, &v0);
                     rast__ss_run_of(&l2, &e2, fx0, fx1, &u1, &v1);
-                    if (u0 >= fa && v0 <= fb && u1 >= fa && v1 <= fb) { /* inside F: skipped */
+                    /* inside F: skipped (the four tests as one sign) */
+                    if ((((int64_t)(u0 < u1 ? u0 : u1) - fa) |
+                         ((int64_t)fb - (v0 > v1 ? v0 : v1))) >= 0) {
                         l = l2;
                         y = top + K;
                         if (y == sw) {

@@ -465,15 +465,11 @@ static int rast__ss_cancel(rast__ss *ss, const rast_point *tris, uint32_t ntris,
         *arena = keep;
         return 0;
     }
-    for (i = 0; i < (int32_t)ntris * 3; i++) {
-        const rast_point p = tris[i], q = tris[i % 3 == 2 ? i - 2 : i + 1];
-        const int fwd = p.y < q.y || (p.y == q.y && p.x < q.x);
-        seg[i].a = fwd ? p : q;
-        seg[i].b = fwd ? q : p;
-        seg[i].n = fwd ? 1 : -1;
-    }
     /* equal segments summed into the first (a hash table of indices, at
-     * most half full); those at 0 gone */
+     * most half full), each made and put in in one pass, and `left`, the
+     * edges that stay (the first's |n| summed; a horizontal edge crosses
+     * no row and counts none), kept as it goes: a batch that is not a
+     * mesh is given up before the pass that gathers what stays */
     while (((int64_t)1 << tbits) < (int64_t)ntris * 6) tbits++;
     slot = (int32_t *)rast__take(arena, ((size_t)1 << tbits) * sizeof *slot);
     if (!slot) {
@@ -482,29 +478,37 @@ static int rast__ss_cancel(rast__ss *ss, const rast_point *tris, uint32_t ntris,
     }
     memset(slot, 0xFF, ((size_t)1 << tbits) * sizeof *slot); /* -1: free */
     for (i = 0; i < (int32_t)ntris * 3; i++) {
-        uint32_t h = rast__ss_seg_hash(&seg[i], tbits);
+        const rast_point p = tris[i], q = tris[i % 3 == 2 ? i - 2 : i + 1];
+        const int fwd = p.y < q.y || (p.y == q.y && p.x < q.x);
+        uint32_t h;
+        seg[i].a = fwd ? p : q;
+        seg[i].b = fwd ? q : p;
+        seg[i].n = fwd ? 1 : -1;
+        h = rast__ss_seg_hash(&seg[i], tbits);
         while (slot[h] >= 0 && !rast__ss_seg_eq(&seg[slot[h]], &seg[i]))
             h = (h + 1) & (((uint32_t)1 << tbits) - 1);
         if (slot[h] < 0) {
             slot[h] = i;
+            left += p.y != q.y;
         } else {
-            seg[slot[h]].n += seg[i].n;
+            const int32_t was = seg[slot[h]].n, now = was + seg[i].n;
+            seg[slot[h]].n = now;
             seg[i].n = 0;
-        }
-    }
-    for (i = 0; i < (int32_t)ntris * 3; i++) {
-        const int32_t n = seg[i].n;
-        if (n != 0 && seg[i].a.y != seg[i].b.y) { /* (a horizontal edge crosses no row) */
-            seg[m] = seg[i];
-            left += n < 0 ? -n : n;
-            miny = seg[m].a.y < miny ? seg[m].a.y : miny;
-            maxy = seg[m].b.y > maxy ? seg[m].b.y : maxy;
-            m++;
+            if (p.y != q.y) left += (now < 0 ? -now : now) - (was < 0 ? -was : was);
         }
     }
     if ((int64_t)left * 2 > (int64_t)ntris * 3) {
         *arena = keep;
         return 0;
+    }
+    /* those at 0 gone */
+    for (i = 0; i < (int32_t)ntris * 3; i++) {
+        if (seg[i].n != 0 && seg[i].a.y != seg[i].b.y) {
+            seg[m] = seg[i];
+            miny = seg[m].a.y < miny ? seg[m].a.y : miny;
+            maxy = seg[m].b.y > maxy ? seg[m].b.y : maxy;
+            m++;
+        }
     }
     if (left == 0) return 1;
     r = rast__row_at_or_after(2 * (int64_t)miny, g);
@@ -561,12 +565,14 @@ typedef struct rast__ss_tri {
 static inline int rast__ss_jump(rast__ss_tri *r, int k, rast__edge *ed, int32_t K)
 {
     int64_t e;
-    if (r->drk[k] == -1) {
-        const int64_t n = (int64_t)K * ed->dr, whole = (int64_t)K * ed->step + n / ed->q;
-        r->drk[k] = whole > -((int64_t)1 << 29) && whole < ((int64_t)1 << 29) ? n % ed->q : -2;
-        r->stepk[k] = (int32_t)(r->drk[k] == -2 ? 0 : whole);
+    if (r->drk[k] < 0) { /* (one test on the way taken once worked out) */
+        if (r->drk[k] == -1) {
+            const int64_t n = (int64_t)K * ed->dr, whole = (int64_t)K * ed->step + n / ed->q;
+            r->drk[k] = whole > -((int64_t)1 << 29) && whole < ((int64_t)1 << 29) ? n % ed->q : -2;
+            r->stepk[k] = (int32_t)(r->drk[k] == -2 ? 0 : whole);
+        }
+        if (r->drk[k] == -2) return 0;
     }
-    if (r->drk[k] == -2) return 0;
     e = ed->e - r->drk[k];
     ed->x += r->stepk[k] + (int32_t)(e < 0);
     ed->e = e + (ed->q & -(int64_t)(e < 0));
@@ -945,7 +951,9 @@ rast_status rast__cov_ss_tris(const rast_point *tris, uint32_t ntris, int32_t s,
                     int32_t u0, v0, u1, v1;
                     rast__ss_run_of(&l, &e, fx0, fx1, &u0, &v0);
                     rast__ss_run_of(&l2, &e2, fx0, fx1, &u1, &v1);
-                    if (u0 >= fa && v0 <= fb && u1 >= fa && v1 <= fb) { /* inside F: skipped */
+                    /* inside F: skipped (the four tests as one sign) */
+                    if ((((int64_t)(u0 < u1 ? u0 : u1) - fa) |
+                         ((int64_t)fb - (v0 > v1 ? v0 : v1))) >= 0) {
                         l = l2;
                         y = top + K;
                         if (y == sw) {

@@ -240,24 +240,29 @@ static inline int rast__aet_tables(rast__arena *arena, uint32_t npoints, int32_t
  * of text), its ends ordered without a branch (which way an edge goes is
  * a coin toss: the inlined branch mispredicted on 7,000 of the
  * paragraph's 34,000 edges), except in a build for size, where the
- * out-of-line copy saves code (as rast__edge_setup_tri, internal.h). */
+ * out-of-line copy saves code (as rast__edge_setup_tri, internal.h).
+ * The rows of its ends come known (ra, rb: rast__row_at_or_after of each
+ * end's y), which the walk finds once a vertex, not twice (a vertex ends
+ * two edges; finding them was a twelfth of a paragraph's fill).  Equal
+ * rows: the edge crosses none (a horizontal edge, and the many short ones
+ * of text that stay between two row centres), told before anything else
+ * is done. */
 #if !defined(__OPTIMIZE_SIZE__)
-static inline int rast__aet_edge_setup(rast__edge *ed, const rast_point *pa, const rast_point *pb,
-                                       const rast__grid *g, int32_t row0, int32_t row1)
+static inline int rast__aet_edge_rows(rast__edge *ed, const rast_point *pa, const rast_point *pb,
+                                      int32_t ra, int32_t rb, const rast__grid *g, int32_t row0,
+                                      int32_t row1)
 {
-    const int32_t down = pa->y < pb->y;
+    /* (rows grow with y: different rows, the same order as the ends' y) */
+    const int32_t down = ra < rb;
     /* (pointer arithmetic, which compilers do not turn into a branch) */
     const ptrdiff_t swap = (pb - pa) & -(ptrdiff_t)(1 - down);
     const rast_point *top = pa + swap, *bottom = pb - swap;
-    int64_t first, end;
-    if (pa->y == pb->y) return 0; /* horizontal edges never cross */
-    /* Rows j with ya <= j*unit + off < yb, cut to [row0, row1). */
-    first = rast__row_at_or_after(2 * (int64_t)top->y, g);
-    end = rast__row_at_or_after(2 * (int64_t)bottom->y, g);
+    int32_t first = down ? ra : rb, end = down ? rb : ra;
+    if (ra == rb) return 0;
     if (first < row0) first = row0;
     if (end > row1) end = row1;
     if (first >= end) return 0;
-    rast__edge_start_inline(ed, *top, *bottom, down ? 1 : -1, (int32_t)first, (int32_t)end, g);
+    rast__edge_start_inline(ed, *top, *bottom, down ? 1 : -1, first, end, g);
     return 1;
 }
 #endif
@@ -271,8 +276,10 @@ static inline rast_status rast__aet_walk(const rast_polygon *poly, uint32_t npoi
     const rast_point *pts = poly->points;
     rast__edge *edges, *aet;
     int32_t *bucket;
-    int32_t miny, maxy, row0, row1, nedges = 0;
+    int32_t row0, row1, nedges = 0;
     uint32_t i, k, base;
+#if defined(__OPTIMIZE_SIZE__)
+    int32_t miny, maxy;
     int64_t r;
 
     if (npoints == 0) return RAST_OK;
@@ -291,6 +298,36 @@ static inline rast_status rast__aet_walk(const rast_polygon *poly, uint32_t npoi
 
     if (!rast__aet_tables(arena, npoints, row0, row1, &edges, &aet, &bucket))
         return RAST_E_SCRATCH;
+#else
+    /* The grid in a local: the edge records' int32 stores might alias the
+     * caller's, which made the setup reload it for every edge. */
+    const rast__grid gl = *g;
+    /* Each vertex's row (rast__row_at_or_after of its y), in the edge
+     * table's room, which the walk needs only once every edge is set up. */
+    int32_t *vrow, lo, hi;
+
+    if (npoints == 0) return RAST_OK;
+    edges = (rast__edge *)rast__take(arena, (size_t)npoints * sizeof(rast__edge));
+    aet = (rast__edge *)rast__take(arena, (size_t)npoints * sizeof(rast__edge));
+    if (!edges || !aet) return RAST_E_SCRATCH;
+    vrow = (int32_t *)(void *)edges;
+
+    /* Visible rows: the clip's rows that the polygon's y extent reaches
+     * (rows grow with y: the lowest vertex row is the top one's). */
+    lo = hi = vrow[0] = (int32_t)rast__row_at_or_after(2 * (int64_t)pts[0].y, &gl);
+    for (i = 1; i < npoints; i++) {
+        int32_t v = (int32_t)rast__row_at_or_after(2 * (int64_t)pts[i].y, &gl);
+        vrow[i] = v;
+        if (v < lo) lo = v;
+        if (v > hi) hi = v;
+    }
+    row0 = lo > clip->y0 ? lo : clip->y0;
+    row1 = hi < clip->y1 ? hi : clip->y1;
+    if (row0 >= row1) return RAST_OK;
+    bucket = (int32_t *)rast__take(arena, ((size_t)(row1 - row0) + 1) * sizeof(int32_t));
+    if (!bucket) return RAST_E_SCRATCH;
+    memset(bucket, 0, ((size_t)(row1 - row0) + 1) * sizeof(int32_t));
+#endif
 
     /* The edge table, grouped by first visible row: set the edges up in
      * the AET's room (`next` holding each edge's index, see `src`), count
@@ -305,8 +342,8 @@ static inline rast_status rast__aet_walk(const rast_polygon *poly, uint32_t npoi
             rast_point b = pts[base + (i + 1 == n ? 0 : i + 1)];
             if (rast__edge_setup(ed, a, b, g, row0, row1)) {
 #else
-            if (rast__aet_edge_setup(ed, &pts[base + i], &pts[base + (i + 1 == n ? 0 : i + 1)], g,
-                                     row0, row1)) {
+            const uint32_t ia = base + i, ib = base + (i + 1 == n ? 0 : i + 1);
+            if (rast__aet_edge_rows(ed, &pts[ia], &pts[ib], vrow[ia], vrow[ib], &gl, row0, row1)) {
 #endif
                 if (src) {
                     src[2 * nedges] = (int32_t)(base + i);

@@ -1730,12 +1730,52 @@ static void rast__cov_row_acc(rast__cells *c, rast__cedge *e, const int32_t *row
     rast__row_exact(c, e, row, nrow, j, 0);
 }
 
+/* Column of abscissa x (fixed units, P = 2^s a pixel): floor(x / P). */
+static int64_t rast__cov_col_of(int64_t x, int32_t s)
+{
+    const int64_t p = (int64_t)1 << s;
+    return x >= 0 ? x / p : -((-x + p - 1) / p);
+}
+
+/* A painter's output (o->paint: its rows handed on as runs of levels not
+ * 0, rast__cov_row_done) narrowed to the columns the edges reach: left of
+ * every edge and right of every edge the winding number is 0 (closed
+ * rings), so those pixels are 0, which no painter is handed; the engines
+ * then clear, keep and scan only the polygon's width, not the canvas's
+ * (one small polygon a call on a wide canvas).  *on: o's copy, its clip's
+ * x0 and x1 moved in (base, pixel (clip.x0, clip.y0), is the row's start
+ * either way: the row is the engines' room). */
+static void rast__cov_narrow(const rast__cedge *e, uint32_t n, int32_t s, rast__cov_out *on)
+{
+    int64_t lo = INT64_MAX, hi = INT64_MIN, c0, c1;
+    uint32_t k;
+    if (!on->paint || n == 0) return;
+    for (k = 0; k < n; k++) {
+        const int64_t a = e[k].xt, b = (int64_t)e[k].xt + e[k].dx;
+        if (a < lo) lo = a;
+        if (b < lo) lo = b;
+        if (a > hi) hi = a;
+        if (b > hi) hi = b;
+        if (e[k].hz & RAST__HZ_RUN) {
+            if (e[k].hx0 < lo) lo = e[k].hx0;
+            if (e[k].hx1 > hi) hi = e[k].hx1;
+        }
+    }
+    c0 = rast__cov_col_of(lo, s);
+    c1 = rast__cov_col_of(hi, s) + 1;
+    if (c0 >= on->clip.x1 || c1 <= on->clip.x0) return; /* none in the clip: as it is */
+    if (c0 > on->clip.x0) on->clip.x0 = (int32_t)c0;
+    if (c1 < on->clip.x1) on->clip.x1 = (int32_t)c1;
+}
+
 rast_status rast__cov_area(rast__cedge *e, uint32_t n, int32_t s, rast_fill_rule rule,
-                           int accumulate, const rast__cov_out *o, rast__arena *arena)
+                           int accumulate, const rast__cov_out *o0, rast__arena *arena)
 {
     rast__cells c;
     rast__sweep sw;
-    int32_t *order, *row, nrow = 0, j, ja, jb, k, width = o->clip.x1 - o->clip.x0;
+    rast__cov_out on = *o0;
+    const rast__cov_out *const o = &on;
+    int32_t *order, *row, nrow = 0, j, ja, jb, k, width;
     uint32_t next = 0, nlive;
     int32_t fast = 0, same; /* the last row's s if it was a fast row; its edges kept */
     uint64_t *own; /* simple rows (rast__cov_acc_area_row): the columns' marks */
@@ -1748,6 +1788,8 @@ rast_status rast__cov_area(rast__cedge *e, uint32_t n, int32_t s, rast_fill_rule
      * output has no quick way */
     const int grouped = !accumulate && s >= 0 && s <= 16;
 
+    rast__cov_narrow(e, n, s, &on);
+    width = on.clip.x1 - on.clip.x0;
     order = (int32_t *)rast__take(arena, (size_t)n * sizeof(int32_t));
     row = (int32_t *)rast__take(arena, (size_t)n * sizeof(int32_t));
     sw.live = (int32_t *)rast__take(arena, (size_t)n * sizeof(int32_t));

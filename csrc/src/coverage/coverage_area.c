@@ -1218,29 +1218,47 @@ static int64_t rast__fs_key(const rast__cedge *e, int bot)
     return (int64_t)e->yt + (bot ? e->dy : 0);
 }
 
-/* Edges pend[0..np) by their tops or bottoms (heapsort: any number, no room). */
-static void rast__fs_sort(const rast__cedge *e, int32_t *pend, int32_t np, int bot)
+/* Edges ids[0..np) by their tops (bot 0) or bottoms (bot 1), all in the
+ * strip from Yj (0 < key - Yj < 2^20), ties by id: each packed into room[]
+ * as (key - Yj) 2^32 + id, so that the sort compares plain numbers in a
+ * row of memory, not edges through their indices; by insertion when
+ * few, else a heapsort (any number, no more room). */
+static void rast__fs_sort(const rast__cedge *e, int32_t *ids, int32_t np, int bot, int64_t Yj,
+                          uint64_t *room)
 {
     int32_t end, i;
-    for (end = np, i = np / 2; end > 1;) {
-        int32_t r, ch, v;
-        if (i > 0) {
-            r = --i;
-        } else {
-            v = pend[0];
-            pend[0] = pend[--end];
-            pend[end] = v;
-            r = 0;
+    for (i = 0; i < np; i++)
+        room[i] = ((uint64_t)(rast__fs_key(&e[ids[i]], bot) - Yj) << 32) | (uint32_t)ids[i];
+    if (np <= 16) {
+        for (i = 1; i < np; i++) {
+            const uint64_t v = room[i];
+            int32_t q = i;
+            for (; q > 0 && room[q - 1] > v; q--) room[q] = room[q - 1];
+            room[q] = v;
         }
-        v = pend[r];
-        while ((ch = 2 * r + 1) < end) {
-            if (ch + 1 < end && rast__fs_key(&e[pend[ch + 1]], bot) > rast__fs_key(&e[pend[ch]], bot)) ch++;
-            if (rast__fs_key(&e[pend[ch]], bot) <= rast__fs_key(&e[v], bot)) break;
-            pend[r] = pend[ch];
-            r = ch;
+    } else {
+        for (end = np, i = np / 2; end > 1;) {
+            int32_t r, ch;
+            uint64_t v;
+            if (i > 0) {
+                r = --i;
+            } else {
+                v = room[0];
+                room[0] = room[--end];
+                room[end] = v;
+                r = 0;
+            }
+            v = room[r];
+            while ((ch = 2 * r + 1) < end) {
+                if (ch + 1 < end && room[ch + 1] > room[ch]) ch++;
+                if (room[ch] <= v) break;
+                room[r] = room[ch];
+                r = ch;
+            }
+            room[r] = v;
         }
-        pend[r] = v;
     }
+    for (i = 0; i < np; i++) ids[i] = (int32_t)(uint32_t)room[i];
 }
 
 /* Where edge id (over the strip at Y, in the order) is in lv[0..n): -1
@@ -1268,9 +1286,8 @@ static int rast__fast_sweep(const rast__cedge *e, int32_t *g, int32_t m, int64_t
     int32_t n = 0, np = 0, ip = 0, ne = 0, ie = 0, k, lo = 0, hi;
     int64_t rel;
     if (c->p > ((int32_t)1 << 19)) return 0;
-    for (k = 0; k < m; k++) { /* the edges starting inside the strip; the order at the top */
+    for (k = 0; k < m; k++) { /* the edges starting inside the strip */
         if ((int64_t)e[g[k]].yt > Yj) pend[np++] = g[k];
-        else if (rast__fs_insert(e, lv, &n, g[k], Yj, 0) < 0) return 0;
     }
     for (k = 0; k < m; k++) { /* the edges ending inside it, first in g[] (reordered) */
         const int32_t id = g[k];
@@ -1279,8 +1296,10 @@ static int rast__fast_sweep(const rast__cedge *e, int32_t *g, int32_t m, int64_t
             g[ne++] = id;
         }
     }
-    rast__fs_sort(e, pend, np, 0);
-    rast__fs_sort(e, g, ne, 1);
+    rast__fs_sort(e, pend, np, 0, Yj, lv); /* (lv: room until the order is made) */
+    rast__fs_sort(e, g, ne, 1, Yj, lv);
+    for (k = 0; k < m; k++) /* the order at the top (made in any order: no pair is closed there) */
+        if ((int64_t)e[g[k]].yt <= Yj && rast__fs_insert(e, lv, &n, g[k], Yj, 0) < 0) return 0;
     hi = n - 1;
     for (;;) {
         int32_t w = lo > 0 ? RAST__FS_W(lv[lo - 1]) : wl;
@@ -1730,12 +1749,52 @@ static void rast__cov_row_acc(rast__cells *c, rast__cedge *e, const int32_t *row
     rast__row_exact(c, e, row, nrow, j, 0);
 }
 
+/* Column of abscissa x (fixed units, P = 2^s a pixel): floor(x / P). */
+static int64_t rast__cov_col_of(int64_t x, int32_t s)
+{
+    const int64_t p = (int64_t)1 << s;
+    return x >= 0 ? x / p : -((-x + p - 1) / p);
+}
+
+/* A painter's output (o->paint: its rows handed on as runs of levels not
+ * 0, rast__cov_row_done) narrowed to the columns the edges reach: left of
+ * every edge and right of every edge the winding number is 0 (closed
+ * rings), so those pixels are 0, which no painter is handed; the engines
+ * then clear, keep and scan only the polygon's width, not the canvas's
+ * (one small polygon a call on a wide canvas).  *on: o's copy, its clip's
+ * x0 and x1 moved in (base, pixel (clip.x0, clip.y0), is the row's start
+ * either way: the row is the engines' room). */
+static void rast__cov_narrow(const rast__cedge *e, uint32_t n, int32_t s, rast__cov_out *on)
+{
+    int64_t lo = INT64_MAX, hi = INT64_MIN, c0, c1;
+    uint32_t k;
+    if (!on->paint || n == 0) return;
+    for (k = 0; k < n; k++) {
+        const int64_t a = e[k].xt, b = (int64_t)e[k].xt + e[k].dx;
+        if (a < lo) lo = a;
+        if (b < lo) lo = b;
+        if (a > hi) hi = a;
+        if (b > hi) hi = b;
+        if (e[k].hz & RAST__HZ_RUN) {
+            if (e[k].hx0 < lo) lo = e[k].hx0;
+            if (e[k].hx1 > hi) hi = e[k].hx1;
+        }
+    }
+    c0 = rast__cov_col_of(lo, s);
+    c1 = rast__cov_col_of(hi, s) + 1;
+    if (c0 >= on->clip.x1 || c1 <= on->clip.x0) return; /* none in the clip: as it is */
+    if (c0 > on->clip.x0) on->clip.x0 = (int32_t)c0;
+    if (c1 < on->clip.x1) on->clip.x1 = (int32_t)c1;
+}
+
 rast_status rast__cov_area(rast__cedge *e, uint32_t n, int32_t s, rast_fill_rule rule,
-                           int accumulate, const rast__cov_out *o, rast__arena *arena)
+                           int accumulate, const rast__cov_out *o0, rast__arena *arena)
 {
     rast__cells c;
     rast__sweep sw;
-    int32_t *order, *row, nrow = 0, j, ja, jb, k, width = o->clip.x1 - o->clip.x0;
+    rast__cov_out on = *o0;
+    const rast__cov_out *const o = &on;
+    int32_t *order, *row, nrow = 0, j, ja, jb, k, width;
     uint32_t next = 0, nlive;
     int32_t fast = 0, same; /* the last row's s if it was a fast row; its edges kept */
     uint64_t *own; /* simple rows (rast__cov_acc_area_row): the columns' marks */
@@ -1748,6 +1807,8 @@ rast_status rast__cov_area(rast__cedge *e, uint32_t n, int32_t s, rast_fill_rule
      * output has no quick way */
     const int grouped = !accumulate && s >= 0 && s <= 16;
 
+    rast__cov_narrow(e, n, s, &on);
+    width = on.clip.x1 - on.clip.x0;
     order = (int32_t *)rast__take(arena, (size_t)n * sizeof(int32_t));
     row = (int32_t *)rast__take(arena, (size_t)n * sizeof(int32_t));
     sw.live = (int32_t *)rast__take(arena, (size_t)n * sizeof(int32_t));

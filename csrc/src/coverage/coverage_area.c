@@ -561,6 +561,33 @@ static int rast__cov_event_local(rast__cells *c, rast__cedge *e, const int32_t *
             tvn = t1;
         }
     }
+    /* One edge ends and one of its direction starts (a ring's vertex, but
+     * a turn in y), no neighbours' crossing at or before tv, and the new
+     * edge strictly between the old one's neighbours just below tv: it
+     * takes the old one's place, its winding and sign, and only the two
+     * pairs it is in change. */
+    if (nend == 1 && nbeg == 1 && e[ends[0]].dir == e[begs[0]].dir && (sw->m == 0 || sw->ct[0] > tv)) {
+        rast__cedge *a = &e[ends[0]], *b = &e[begs[0]];
+        int32_t pa = 0;
+        while (pa < n && live[pa] != ends[0]) pa++;
+        if (pa == n) return -1; /* (not expected) */
+        rast__cov_x_at(b, Yj, tv, c->h, &b->x, &b->r); /* its top */
+        b->rowx = j;
+        b->tx = tv;
+        if ((pa == 0 || rast__cov_behind_at(b, &e[live[pa - 1]], Yj, j, tv, c->h)) &&
+            (pa + 1 == n || rast__cov_before_at(b, &e[live[pa + 1]], Yj, j, tv, c->h))) {
+            rast__cov_x_end(a, Yj, a->tx, tv, c->h);
+            if (a->sg) rast__cells_piece(c, a, Yj, a->x, a->tx, a->xn, tv, a->sg);
+            rast__cov_x_keep(a, j, tv);
+            b->sg = rast__cov_sign(rule, sw->wb[pa], b->dir);
+            live[pa] = begs[0];
+            if (pa > 0) rast__heap_set(sw, pa - 1, rast__cov_pair(&e[live[pa - 1]], begs[0], b, Yj, j, tv, c));
+            if (pa + 1 < n)
+                rast__heap_set(sw, pa, rast__cov_pair(b, live[pa + 1], &e[live[pa + 1]], Yj, j, tv, c));
+            *ptvn = tvn;
+            return 1;
+        }
+    }
     /* Neighbours that meet at or before tv (the crossings before it are
      * done: the heap's times are tv or later): the passes decide, unless
      * one of the two ends at tv (a ring's lower vertex). */
@@ -672,6 +699,8 @@ static int rast__cov_event_local(rast__cells *c, rast__cedge *e, const int32_t *
     return 1;
 }
 
+#define RAST__SPLIT_MIN 16 /* rows of more edges split them (below) */
+
 /* row[0..nrow) with the edges that start or end inside row j moved to
  * its end, the others (spanning the row) in their order before them
  * (tmp: room for nrow); returns where the first moved. */
@@ -707,7 +736,9 @@ static void rast__cov_row_area(rast__cells *c, rast__cedge *e, int32_t *row, int
     int32_t *live = sw->live;
     uint64_t t = 0, tv = T;
     int32_t k, n = 0, mended = 0; /* mended: live[] by rast__cov_event, not sorted at t */
-    int32_t nfull = rast__cov_split(e, row, nrow, live, Yj, c); /* row[nfull..nrow): the events' edges */
+    /* row[nfull..nrow): the edges of the row's events (in a short row,
+     * all: those that span it have none) */
+    int32_t nfull = nrow > RAST__SPLIT_MIN ? rast__cov_split(e, row, nrow, live, Yj, c) : 0;
     for (k = 0; k < nrow; k++) { /* every line at the row's bottom */
         rast__cedge *ed = &e[row[k]];
         if (ed->rowx == j && ed->tx == 0) {
@@ -801,7 +832,7 @@ static void rast__cov_row_area(rast__cells *c, rast__cedge *e, int32_t *row, int
         if (!mended) {
             memcpy(row, live, (size_t)n * sizeof *row);
             for (k = rest; k < nrow; k++) row[n + k - rest] = live[k];
-            if (tv < T) nfull = rast__cov_split(e, row, nrow, live, Yj, c);
+            if (tv < T && nfull > 0) nfull = rast__cov_split(e, row, nrow, live, Yj, c);
         } else if (tv == T) {
             int32_t m = n;
             for (k = 0; k < nrow && m < nrow; k++) {

@@ -196,9 +196,10 @@ static uint32_t rast__cov_cancel(int32_t *order, const rast__cedge *e, uint32_t 
 }
 
 /* The sweep's arrays, by position in the row's order: the edges (live),
- * the winding number left of each (wb), and the crossing time of each
- * position with the next (ct; NONE: not before the next vertex), kept in
- * a heap of positions (h, hidx its inverse, m entries). */
+ * the winding number left of each (wb); a heap (m entries) of the
+ * positions p whose edge crosses the next one inside the row (the pair p),
+ * by the crossing's time: h[s] the pair at slot s, ct[s] its time, hidx[p]
+ * its slot (-1: not in the heap, no crossing in the row). */
 typedef struct rast__sweep {
     int32_t *live, *wb, *h, *hidx;
     uint64_t *ct;
@@ -208,45 +209,101 @@ typedef struct rast__sweep {
 
 #define NONE (T + 1)
 
-static void rast__heap_swap(rast__sweep *w, int32_t i, int32_t k)
-{
-    int32_t a = w->h[i], b = w->h[k];
-    w->h[i] = b;
-    w->h[k] = a;
-    w->hidx[b] = i;
-    w->hidx[a] = k;
-}
-
+/* The heap moves a hole, not swapped pairs: the entry (pos, key) goes up
+ * from slot i (or down, below) and is written once where it stops. */
 static void rast__heap_up(rast__sweep *w, int32_t i)
 {
+    const int32_t pos = w->h[i];
+    const uint64_t key = w->ct[i];
     while (i > 0) {
-        int32_t p = (i - 1) / 2;
-        if (w->ct[w->h[p]] <= w->ct[w->h[i]]) break;
-        rast__heap_swap(w, p, i);
+        const int32_t p = (i - 1) / 2;
+        if (w->ct[p] <= key) break;
+        w->h[i] = w->h[p];
+        w->ct[i] = w->ct[p];
+        w->hidx[w->h[i]] = i;
         i = p;
     }
+    w->h[i] = pos;
+    w->ct[i] = key;
+    w->hidx[pos] = i;
 }
 
 static void rast__heap_down(rast__sweep *w, int32_t i)
 {
+    const int32_t pos = w->h[i];
+    const uint64_t key = w->ct[i];
     for (;;) {
-        int32_t l = 2 * i + 1, r = l + 1, m = i;
-        if (l < w->m && w->ct[w->h[l]] < w->ct[w->h[m]]) m = l;
-        if (r < w->m && w->ct[w->h[r]] < w->ct[w->h[m]]) m = r;
-        if (m == i) break;
-        rast__heap_swap(w, i, m);
-        i = m;
+        int32_t l = 2 * i + 1;
+        if (l >= w->m) break;
+        if (l + 1 < w->m && w->ct[l + 1] < w->ct[l]) l++;
+        if (w->ct[l] >= key) break;
+        w->h[i] = w->h[l];
+        w->ct[i] = w->ct[l];
+        w->hidx[w->h[i]] = i;
+        i = l;
     }
+    w->h[i] = pos;
+    w->ct[i] = key;
+    w->hidx[pos] = i;
 }
 
+/* Pair pos's crossing time becomes v: in the heap while it is inside the
+ * row (v < T), out of it (hidx -1) otherwise, so that the heap holds only
+ * the pairs that cross: most neighbours do not, in a row. */
 static void rast__heap_set(rast__sweep *w, int32_t pos, uint64_t v)
 {
-    uint64_t old = w->ct[pos];
-    w->ct[pos] = v;
+    const int32_t s = w->hidx[pos];
+    uint64_t old;
+    if (s < 0) {
+        if (v >= T) return;
+        w->h[w->m] = pos;
+        w->ct[w->m] = v;
+        rast__heap_up(w, w->m++);
+        return;
+    }
+    old = w->ct[s];
+    if (v >= T) { /* out: its slot sinks to a leaf (the smaller child up
+                   * each time: one comparison a level), where the last
+                   * entry goes in, and up */
+        const int32_t last = --w->m;
+        int32_t i = s, l;
+        w->hidx[pos] = -1;
+        if (s == last) return;
+        while ((l = 2 * i + 1) < w->m) {
+            if (l + 1 < w->m && w->ct[l + 1] < w->ct[l]) l++;
+            w->h[i] = w->h[l];
+            w->ct[i] = w->ct[l];
+            w->hidx[w->h[i]] = i;
+            i = l;
+        }
+        w->h[i] = w->h[last];
+        w->ct[i] = w->ct[last];
+        rast__heap_up(w, i);
+        return;
+    }
+    w->ct[s] = v;
     if (v < old)
-        rast__heap_up(w, w->hidx[pos]);
+        rast__heap_up(w, s);
     else if (v > old)
-        rast__heap_down(w, w->hidx[pos]);
+        rast__heap_down(w, s);
+}
+
+/* The heap of the pairs 0..np of live[] from their times (pair k's in
+ * ct[k]; those inside the row kept, each at its slot). */
+static void rast__heap_build(rast__sweep *w, int32_t np)
+{
+    int32_t k;
+    w->m = 0;
+    for (k = 0; k <= np; k++) {
+        if (w->ct[k] < T) {
+            w->h[w->m] = k;
+            w->ct[w->m] = w->ct[k];
+            w->hidx[k] = w->m++;
+        } else {
+            w->hidx[k] = -1;
+        }
+    }
+    for (k = w->m / 2; k-- > 0;) rast__heap_down(w, k);
 }
 
 /* The sign of an edge's piece with winding wb on its left. */
@@ -357,7 +414,7 @@ static int rast__cov_event(rast__cells *c, rast__cedge *e, const int32_t *row, i
      * one's neighbours just below tv: it takes the old one's place, its
      * winding and sign, and only the two pairs it is in change.  What the
      * general way below would do, without its passes over the order. */
-    if (nend == 1 && nbeg == 1 && e[ia].dir == e[ib].dir && (sw->m == 0 || sw->ct[sw->h[0]] > tv)) {
+    if (nend == 1 && nbeg == 1 && e[ia].dir == e[ib].dir && (sw->m == 0 || sw->ct[0] > tv)) {
         rast__cedge *a = &e[ia], *b = &e[ib];
         int32_t pa = 0;
         while (live[pa] != ia) pa++;
@@ -428,16 +485,239 @@ static int rast__cov_event(rast__cells *c, rast__cedge *e, const int32_t *row, i
             rast__cov_resign(c, ed, Yj, j, tv, sg);
         wsum += ed->dir;
     }
-    sw->m = n > 0 ? n - 1 : 0;
-    for (k = 0; k < sw->m; k++) {
+    for (k = 0; k + 1 < n; k++)
         sw->ct[k] = rast__cov_pair(&e[live[k]], live[k + 1], &e[live[k + 1]], Yj, j, tv, c);
-        sw->h[k] = k;
-        sw->hidx[k] = k;
-    }
-    for (k = sw->m / 2; k-- > 0;) rast__heap_down(sw, k);
+    rast__heap_build(sw, n - 2);
     *pn = n;
     *ptvn = tvn;
     return 1;
+}
+
+/* ---- a vertex event mended where it happens ------------------------------
+ *
+ * The heap holds the pairs of neighbours by position (pair p: live[p] and
+ * live[p + 1]).  An edge taken out of live[] or put in moves the positions
+ * right of it by one: the heap's entries, the pairs' crossing times and
+ * their slots are relabelled in one pass of integer work (no comparison,
+ * no exact abscissa), the heap's order unchanged; the pairs the edit makes
+ * or breaks are marked (time 0, which no pair has: a pair's time is after
+ * the ordinate it was set at) and computed once all edits are done. */
+#define RAST__EV_MAX 8 /* edits in one event mended this way; more: rast__cov_event's passes */
+
+/* Pair dp of the np pairs leaves; those right of it move left by one. */
+static void rast__heap_drop(rast__sweep *w, int32_t dp, int32_t np)
+{
+    int32_t i;
+    rast__heap_set(w, dp, NONE);
+    for (i = 0; i < w->m; i++) w->h[i] -= w->h[i] > dp;
+    memmove(w->hidx + dp, w->hidx + dp + 1, (size_t)(np - dp - 1) * sizeof *w->hidx);
+}
+
+/* A new pair np comes in (np0 pairs before), marked; the pairs from np
+ * on move right. */
+static void rast__heap_make(rast__sweep *w, int32_t np, int32_t np0)
+{
+    int32_t i;
+    for (i = 0; i < w->m; i++) w->h[i] += w->h[i] >= np;
+    memmove(w->hidx + np + 1, w->hidx + np, (size_t)(np0 - np) * sizeof *w->hidx);
+    w->hidx[np] = -1;
+    rast__heap_set(w, np, 0);
+}
+
+/* Pair p is marked (its time computed when the event's edits are done). */
+static void rast__heap_mark(rast__sweep *w, int32_t p)
+{
+    rast__heap_set(w, p, 0);
+}
+
+/* rast__cov_event where few edges start and end at tv: ev[0..nev) the
+ * row's edges that start or end inside it (the others span it).  The same
+ * order, windings, signs and pieces as rast__cov_event's passes; returns
+ * -1 when it cannot (too many edits, or neighbours that may meet at tv:
+ * nothing changed, the passes decide). */
+static int rast__cov_event_local(rast__cells *c, rast__cedge *e, const int32_t *ev, int32_t nev,
+                                 rast__sweep *sw, int32_t *pn, int32_t j, rast_fill_rule rule,
+                                 int32_t w0, uint64_t tv, uint64_t *ptvn)
+{
+    const int64_t Yj = (int64_t)j * c->p;
+    int32_t *live = sw->live, n = *pn, k, i, nend = 0, nbeg = 0, nd = 0;
+    int32_t ends[RAST__EV_MAX], begs[RAST__EV_MAX], pos[RAST__EV_MAX], dirty[2 * RAST__EV_MAX];
+    uint64_t t0, t1, tvn = T;
+    int32_t wsum;
+    for (k = 0; k < nev; k++) { /* the edges ending and starting at tv; the next event */
+        rast__cov_span(&e[ev[k]], Yj, c, &t0, &t1);
+        if (t0 > tv) {
+            if (t0 < tvn) tvn = t0;
+            continue;
+        }
+        if (t0 == tv) {
+            if (nbeg == RAST__EV_MAX) return -1;
+            begs[nbeg++] = ev[k];
+        }
+        if (t1 == tv) {
+            if (nend == RAST__EV_MAX) return -1;
+            ends[nend++] = ev[k];
+        } else if (t1 > tv && t1 < tvn) {
+            tvn = t1;
+        }
+    }
+    /* One edge ends and one of its direction starts (a ring's vertex, but
+     * a turn in y), no neighbours' crossing at or before tv, and the new
+     * edge strictly between the old one's neighbours just below tv: it
+     * takes the old one's place, its winding and sign, and only the two
+     * pairs it is in change. */
+    if (nend == 1 && nbeg == 1 && e[ends[0]].dir == e[begs[0]].dir && (sw->m == 0 || sw->ct[0] > tv)) {
+        rast__cedge *a = &e[ends[0]], *b = &e[begs[0]];
+        int32_t pa = 0;
+        while (pa < n && live[pa] != ends[0]) pa++;
+        if (pa == n) return -1; /* (not expected) */
+        rast__cov_x_at(b, Yj, tv, c->h, &b->x, &b->r); /* its top */
+        b->rowx = j;
+        b->tx = tv;
+        if ((pa == 0 || rast__cov_behind_at(b, &e[live[pa - 1]], Yj, j, tv, c->h)) &&
+            (pa + 1 == n || rast__cov_before_at(b, &e[live[pa + 1]], Yj, j, tv, c->h))) {
+            rast__cov_x_end(a, Yj, a->tx, tv, c->h);
+            if (a->sg) rast__cells_piece(c, a, Yj, a->x, a->tx, a->xn, tv, a->sg);
+            rast__cov_x_keep(a, j, tv);
+            b->sg = rast__cov_sign(rule, sw->wb[pa], b->dir);
+            live[pa] = begs[0];
+            if (pa > 0) rast__heap_set(sw, pa - 1, rast__cov_pair(&e[live[pa - 1]], begs[0], b, Yj, j, tv, c));
+            if (pa + 1 < n)
+                rast__heap_set(sw, pa, rast__cov_pair(b, live[pa + 1], &e[live[pa + 1]], Yj, j, tv, c));
+            *ptvn = tvn;
+            return 1;
+        }
+    }
+    /* Neighbours that meet at or before tv (the crossings before it are
+     * done: the heap's times are tv or later): the passes decide, unless
+     * one of the two ends at tv (a ring's lower vertex). */
+    if (sw->m > 0 && sw->ct[0] <= tv) {
+        int32_t stack[32], ns = 1;
+        stack[0] = 0;
+        while (ns > 0) {
+            const int32_t s = stack[--ns], p = sw->h[s];
+            int32_t l = 2 * s + 1, q;
+            for (q = 0; q < nend && ends[q] != live[p] && ends[q] != live[p + 1]; q++) {
+            }
+            if (q == nend) return -1;
+            for (; l <= 2 * s + 2; l++) {
+                if (l < sw->m && sw->ct[l] <= tv) {
+                    if (ns == 32) return -1;
+                    stack[ns++] = l;
+                }
+            }
+        }
+    }
+    /* Where the ending edges are (ascending), and whether the neighbours
+     * they leave may meet at or before tv (then the passes decide). */
+    for (k = 0, i = 0; k < n && i < nend; k++) {
+        int32_t q;
+        for (q = 0; q < nend && ends[q] != live[k]; q++) {
+        }
+        if (q < nend) pos[i++] = k;
+    }
+    if (i < nend) return -1; /* (not expected: an ending edge not in the order) */
+    for (i = 0; i < nend;) {
+        int32_t a = pos[i], b = a;
+        while (i + 1 < nend && pos[i + 1] == b + 1) {
+            i++;
+            b++;
+        }
+        i++;
+        if (a > 0 && b + 1 < n &&
+            rast__cov_pair_t(&e[live[a - 1]], live[b + 1], &e[live[b + 1]], Yj, j, c) <= tv)
+            return -1;
+    }
+    /* The ending edges' pieces end; they go (right to left, so that the
+     * positions found stay right). */
+    for (i = nend; i-- > 0;) {
+        const int32_t p = pos[i];
+        rast__cedge *ed = &e[live[p]];
+        rast__cov_x_end(ed, Yj, ed->tx, tv, c->h);
+        if (ed->sg) rast__cells_piece(c, ed, Yj, ed->x, ed->tx, ed->xn, tv, ed->sg);
+        rast__cov_x_keep(ed, j, tv);
+        if (n >= 2) rast__heap_drop(sw, p < n - 1 ? p : p - 1, n - 1);
+        n--;
+        memmove(live + p, live + p + 1, (size_t)(n - p) * sizeof *live);
+        memmove(sw->wb + p, sw->wb + p + 1, (size_t)(n - p) * sizeof *sw->wb);
+        for (k = 0; k < nd; k++) dirty[k] -= dirty[k] > p;
+        if (p > 0 && p < n) rast__heap_mark(sw, p - 1);
+        dirty[nd++] = p;
+    }
+    for (i = 0; i < nbeg; i++) { /* those starting at tv go in */
+        rast__cedge *ed = &e[begs[i]];
+        int32_t lo = 0, hi = n;
+        rast__cov_x_at(ed, Yj, tv, c->h, &ed->x, &ed->r); /* its top */
+        ed->rowx = j;
+        ed->tx = tv;
+        while (lo < hi) {
+            const int32_t mid = lo + (hi - lo) / 2;
+            if (rast__cov_before_at(ed, &e[live[mid]], Yj, j, tv, c->h))
+                hi = mid;
+            else
+                lo = mid + 1;
+        }
+        memmove(live + lo + 1, live + lo, (size_t)(n - lo) * sizeof *live);
+        memmove(sw->wb + lo + 1, sw->wb + lo, (size_t)(n - lo) * sizeof *sw->wb);
+        live[lo] = begs[i];
+        if (n >= 1) {
+            rast__heap_make(sw, lo < n ? lo : lo - 1, n - 1);
+            if (lo > 0 && lo < n) rast__heap_mark(sw, lo - 1);
+        }
+        n++;
+        for (k = 0; k < nd; k++) dirty[k] += dirty[k] >= lo;
+        dirty[nd++] = lo;
+        ed->sg = 2; /* new: its sign below */
+    }
+    /* Windings and signs: from each edit on, as far as they change. */
+    for (i = 1; i < nd; i++) { /* the edits' positions in order */
+        const int32_t v = dirty[i];
+        for (k = i; k > 0 && dirty[k - 1] > v; k--) dirty[k] = dirty[k - 1];
+        dirty[k] = v;
+    }
+    for (i = 0; i < nd && dirty[i] < n;) {
+        k = dirty[i];
+        wsum = k > 0 ? sw->wb[k - 1] + e[live[k - 1]].dir : w0;
+        for (; k < n; k++) {
+            rast__cedge *ed = &e[live[k]];
+            if (ed->sg != 2 && sw->wb[k] == wsum) break; /* as before, up to the next edit */
+            sw->wb[k] = wsum;
+            if (ed->sg == 2)
+                ed->sg = rast__cov_sign(rule, wsum, ed->dir);
+            else
+                rast__cov_resign(c, ed, Yj, j, tv, rast__cov_sign(rule, wsum, ed->dir));
+            wsum += ed->dir;
+        }
+        while (i < nd && dirty[i] <= k) i++;
+    }
+    while (sw->m > 0 && sw->ct[0] == 0) { /* the pairs made */
+        const int32_t p = sw->h[0];
+        rast__heap_set(sw, p, rast__cov_pair(&e[live[p]], live[p + 1], &e[live[p + 1]], Yj, j, tv, c));
+    }
+    *pn = n;
+    *ptvn = tvn;
+    return 1;
+}
+
+#define RAST__SPLIT_MIN 16 /* rows of more edges split them (below) */
+
+/* row[0..nrow) with the edges that start or end inside row j moved to
+ * its end, the others (spanning the row) in their order before them
+ * (tmp: room for nrow); returns where the first moved. */
+static int32_t rast__cov_split(const rast__cedge *e, int32_t *row, int32_t nrow, int32_t *tmp,
+                               int64_t Yj, const rast__cells *c)
+{
+    int32_t k, a = 0, b = 0;
+    for (k = 0; k < nrow; k++) {
+        uint64_t t0, t1;
+        rast__cov_span(&e[row[k]], Yj, c, &t0, &t1);
+        if (t0 == 0 && t1 == T)
+            row[a++] = row[k];
+        else
+            tmp[b++] = row[k];
+    }
+    memcpy(row + a, tmp, (size_t)b * sizeof *row);
+    return a;
 }
 
 /* The row's sweep (area): edges row[0..nrow) of row j.  Between vertex
@@ -456,6 +736,9 @@ static void rast__cov_row_area(rast__cells *c, rast__cedge *e, int32_t *row, int
     int32_t *live = sw->live;
     uint64_t t = 0, tv = T;
     int32_t k, n = 0, mended = 0; /* mended: live[] by rast__cov_event, not sorted at t */
+    /* row[nfull..nrow): the edges of the row's events (in a short row,
+     * all: those that span it have none) */
+    int32_t nfull = nrow > RAST__SPLIT_MIN ? rast__cov_split(e, row, nrow, live, Yj, c) : 0;
     for (k = 0; k < nrow; k++) { /* every line at the row's bottom */
         rast__cedge *ed = &e[row[k]];
         if (ed->rowx == j && ed->tx == 0) {
@@ -505,17 +788,13 @@ static void rast__cov_row_area(rast__cells *c, rast__cedge *e, int32_t *row, int
                 wsum += ed->dir;
             }
             /* The neighbours' crossings before tv, in a heap. */
-            sw->m = n > 0 ? n - 1 : 0;
-            for (k = 0; k < sw->m; k++) {
+            for (k = 0; k + 1 < n; k++)
                 sw->ct[k] = rast__cov_pair(&e[live[k]], live[k + 1], &e[live[k + 1]], Yj, j, t, c);
-                sw->h[k] = k;
-                sw->hidx[k] = k;
-            }
-            for (k = sw->m / 2; k-- > 0;) rast__heap_down(sw, k);
+            rast__heap_build(sw, n - 2);
         }
-        while (sw->m > 0 && sw->ct[sw->h[0]] < tv) {
+        while (sw->m > 0 && sw->ct[0] < tv) {
             int32_t p = sw->h[0], ia = live[p], ib = live[p + 1];
-            uint64_t tc = sw->ct[p];
+            uint64_t tc = sw->ct[0];
             rast__cedge *a = &e[ia], *b = &e[ib];
             live[p] = ib;
             live[p + 1] = ia;
@@ -530,7 +809,9 @@ static void rast__cov_row_area(rast__cells *c, rast__cedge *e, int32_t *row, int
         }
         if (tv < T) { /* a vertex event: mended where it can be */
             uint64_t tvn;
-            if (rast__cov_event(c, e, row, nrow, sw, &n, j, rule, w0, tv, &tvn)) {
+            int r = rast__cov_event_local(c, e, row + nfull, nrow - nfull, sw, &n, j, rule, w0, tv, &tvn);
+            if (r < 0) r = rast__cov_event(c, e, row, nrow, sw, &n, j, rule, w0, tv, &tvn);
+            if (r) {
                 mended = 1;
                 t = tv;
                 tv = tvn;
@@ -551,6 +832,7 @@ static void rast__cov_row_area(rast__cells *c, rast__cedge *e, int32_t *row, int
         if (!mended) {
             memcpy(row, live, (size_t)n * sizeof *row);
             for (k = rest; k < nrow; k++) row[n + k - rest] = live[k];
+            if (tv < T && nfull > 0) nfull = rast__cov_split(e, row, nrow, live, Yj, c);
         } else if (tv == T) {
             int32_t m = n;
             for (k = 0; k < nrow && m < nrow; k++) {

@@ -369,6 +369,25 @@ static void rast__cov_span(const rast__cedge *e, int64_t Yj, const rast__cells *
     *t1 = rel1 >= c->p ? T : (uint64_t)rel1 << c->h;
 }
 
+/* An edge starting at tv (row j): its top, and the slot among
+ * live[0..n) it goes into (the first edge it comes before). */
+static int32_t rast__cov_place(const rast__cells *c, const rast__cedge *e, rast__cedge *ed,
+                               const int32_t *live, int32_t n, int64_t Yj, int32_t j, uint64_t tv)
+{
+    int32_t lo = 0, hi = n;
+    rast__cov_x_at(ed, Yj, tv, c->h, &ed->x, &ed->r); /* its top */
+    ed->rowx = j;
+    ed->tx = tv;
+    while (lo < hi) {
+        const int32_t mid = lo + (hi - lo) / 2;
+        if (rast__cov_before_at(ed, &e[live[mid]], Yj, j, tv, c->h))
+            hi = mid;
+        else
+            lo = mid + 1;
+    }
+    return lo;
+}
+
 /* The vertex event at tv (inside the row) without sorting the row again:
  * the order just after tv is the order just before it (live[0..*pn), the
  * crossings before tv done) with the edges ending at tv taken out and
@@ -455,21 +474,12 @@ static int rast__cov_event(rast__cells *c, rast__cedge *e, const int32_t *row, i
     n = m;
     for (k = 0; k < nrow; k++) { /* those starting at tv go in; the next event */
         rast__cedge *ed = &e[row[k]];
-        int32_t lo = 0, hi = n;
+        int32_t lo;
         rast__cov_span(ed, Yj, c, &t0, &t1);
         if (t0 > tv && t0 < tvn) tvn = t0;
         if (t0 <= tv && t1 > tv && t1 < tvn) tvn = t1;
         if (t0 != tv) continue;
-        rast__cov_x_at(ed, Yj, tv, c->h, &ed->x, &ed->r); /* its top */
-        ed->rowx = j;
-        ed->tx = tv;
-        while (lo < hi) {
-            const int32_t mid = lo + (hi - lo) / 2;
-            if (rast__cov_before_at(ed, &e[live[mid]], Yj, j, tv, c->h))
-                hi = mid;
-            else
-                lo = mid + 1;
-        }
+        lo = rast__cov_place(c, e, ed, live, n, Yj, j, tv);
         memmove(live + lo + 1, live + lo, (size_t)(n - lo) * sizeof *live);
         live[lo] = row[k];
         n++;
@@ -651,17 +661,7 @@ static int rast__cov_event_local(rast__cells *c, rast__cedge *e, const int32_t *
     }
     for (i = 0; i < nbeg; i++) { /* those starting at tv go in */
         rast__cedge *ed = &e[begs[i]];
-        int32_t lo = 0, hi = n;
-        rast__cov_x_at(ed, Yj, tv, c->h, &ed->x, &ed->r); /* its top */
-        ed->rowx = j;
-        ed->tx = tv;
-        while (lo < hi) {
-            const int32_t mid = lo + (hi - lo) / 2;
-            if (rast__cov_before_at(ed, &e[live[mid]], Yj, j, tv, c->h))
-                hi = mid;
-            else
-                lo = mid + 1;
-        }
+        const int32_t lo = rast__cov_place(c, e, ed, live, n, Yj, j, tv);
         memmove(live + lo + 1, live + lo, (size_t)(n - lo) * sizeof *live);
         memmove(sw->wb + lo + 1, sw->wb + lo, (size_t)(n - lo) * sizeof *sw->wb);
         live[lo] = begs[i];

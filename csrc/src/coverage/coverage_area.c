@@ -388,6 +388,33 @@ static int32_t rast__cov_place(const rast__cells *c, const rast__cedge *e, rast_
     return lo;
 }
 
+/* One edge ending at tv, in slot pa of live[0..n), and one of its
+ * direction, ib, starting there, with no neighbours' crossing at or before
+ * tv: when ib lies strictly between the old edge's neighbours just below
+ * tv, it takes the old edge's place (whose piece ends at tv), its winding
+ * and sign, and only the two pairs it is in change: returns 1.  Else 0,
+ * nothing changed but ib's top. */
+static int rast__cov_replace(rast__cells *c, rast__cedge *e, rast__sweep *sw, int32_t n, int32_t pa,
+                             int32_t ib, int64_t Yj, int32_t j, rast_fill_rule rule, uint64_t tv)
+{
+    int32_t *live = sw->live;
+    rast__cedge *a = &e[live[pa]], *b = &e[ib];
+    rast__cov_x_at(b, Yj, tv, c->h, &b->x, &b->r); /* its top */
+    b->rowx = j;
+    b->tx = tv;
+    if (!((pa == 0 || rast__cov_behind_at(b, &e[live[pa - 1]], Yj, j, tv, c->h)) &&
+          (pa + 1 == n || rast__cov_before_at(b, &e[live[pa + 1]], Yj, j, tv, c->h))))
+        return 0;
+    rast__cov_x_end(a, Yj, a->tx, tv, c->h);
+    if (a->sg) rast__cells_piece(c, a, Yj, a->x, a->tx, a->xn, tv, a->sg);
+    rast__cov_x_keep(a, j, tv);
+    b->sg = rast__cov_sign(rule, sw->wb[pa], b->dir);
+    live[pa] = ib;
+    if (pa > 0) rast__heap_set(sw, pa - 1, rast__cov_pair(&e[live[pa - 1]], ib, b, Yj, j, tv, c));
+    if (pa + 1 < n) rast__heap_set(sw, pa, rast__cov_pair(b, live[pa + 1], &e[live[pa + 1]], Yj, j, tv, c));
+    return 1;
+}
+
 /* The vertex event at tv (inside the row) without sorting the row again:
  * the order just after tv is the order just before it (live[0..*pn), the
  * crossings before tv done) with the edges ending at tv taken out and
@@ -434,21 +461,9 @@ static int rast__cov_event(rast__cells *c, rast__cedge *e, const int32_t *row, i
      * winding and sign, and only the two pairs it is in change.  What the
      * general way below would do, without its passes over the order. */
     if (nend == 1 && nbeg == 1 && e[ia].dir == e[ib].dir && (sw->m == 0 || sw->ct[0] > tv)) {
-        rast__cedge *a = &e[ia], *b = &e[ib];
         int32_t pa = 0;
         while (live[pa] != ia) pa++;
-        rast__cov_x_at(b, Yj, tv, c->h, &b->x, &b->r); /* its top */
-        b->rowx = j;
-        b->tx = tv;
-        if ((pa == 0 || rast__cov_behind_at(b, &e[live[pa - 1]], Yj, j, tv, c->h)) &&
-            (pa + 1 == n || rast__cov_before_at(b, &e[live[pa + 1]], Yj, j, tv, c->h))) {
-            rast__cov_x_end(a, Yj, a->tx, tv, c->h);
-            if (a->sg) rast__cells_piece(c, a, Yj, a->x, a->tx, a->xn, tv, a->sg);
-            rast__cov_x_keep(a, j, tv);
-            b->sg = rast__cov_sign(rule, sw->wb[pa], b->dir);
-            live[pa] = ib;
-            if (pa > 0) rast__heap_set(sw, pa - 1, rast__cov_pair(&e[live[pa - 1]], ib, b, Yj, j, tv, c));
-            if (pa + 1 < n) rast__heap_set(sw, pa, rast__cov_pair(b, live[pa + 1], &e[live[pa + 1]], Yj, j, tv, c));
+        if (rast__cov_replace(c, e, sw, n, pa, ib, Yj, j, rule, tv)) {
             *ptvn = tvn;
             return 1;
         }
@@ -582,23 +597,10 @@ static int rast__cov_event_local(rast__cells *c, rast__cedge *e, const int32_t *
      * takes the old one's place, its winding and sign, and only the two
      * pairs it is in change. */
     if (nend == 1 && nbeg == 1 && e[ends[0]].dir == e[begs[0]].dir && (sw->m == 0 || sw->ct[0] > tv)) {
-        rast__cedge *a = &e[ends[0]], *b = &e[begs[0]];
         int32_t pa = 0;
         while (pa < n && live[pa] != ends[0]) pa++;
         if (pa == n) return -1; /* (not expected) */
-        rast__cov_x_at(b, Yj, tv, c->h, &b->x, &b->r); /* its top */
-        b->rowx = j;
-        b->tx = tv;
-        if ((pa == 0 || rast__cov_behind_at(b, &e[live[pa - 1]], Yj, j, tv, c->h)) &&
-            (pa + 1 == n || rast__cov_before_at(b, &e[live[pa + 1]], Yj, j, tv, c->h))) {
-            rast__cov_x_end(a, Yj, a->tx, tv, c->h);
-            if (a->sg) rast__cells_piece(c, a, Yj, a->x, a->tx, a->xn, tv, a->sg);
-            rast__cov_x_keep(a, j, tv);
-            b->sg = rast__cov_sign(rule, sw->wb[pa], b->dir);
-            live[pa] = begs[0];
-            if (pa > 0) rast__heap_set(sw, pa - 1, rast__cov_pair(&e[live[pa - 1]], begs[0], b, Yj, j, tv, c));
-            if (pa + 1 < n)
-                rast__heap_set(sw, pa, rast__cov_pair(b, live[pa + 1], &e[live[pa + 1]], Yj, j, tv, c));
+        if (rast__cov_replace(c, e, sw, n, pa, begs[0], Yj, j, rule, tv)) {
             *ptvn = tvn;
             return 1;
         }

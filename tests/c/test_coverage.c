@@ -57,6 +57,20 @@ static uint32_t level(uint64_t num, uint64_t den, uint32_t M)
 
 /* ---- rectangles: the exact area by cells ----------------------------------- */
 
+/* The options of one random case (rule, grid, method) and a clip a few
+ * pixels inside the W x H image on each side. */
+static void opts_and_clip(rast_coverage_opts *o, rast_rect *clip, int rule, int32_t s, rast_aa_method m)
+{
+    memset(o, 0, sizeof *o);
+    o->rule = (rast_fill_rule)rule;
+    o->subpixel_bits = s;
+    o->method = m;
+    clip->x0 = (int32_t)(rng() % 3);
+    clip->y0 = (int32_t)(rng() % 3);
+    clip->x1 = W - (int32_t)(rng() % 3);
+    clip->y1 = H - (int32_t)(rng() % 3);
+}
+
 static void test_rectangles(void)
 {
     int iter, n = check_count(300);
@@ -98,14 +112,7 @@ static void test_rectangles(void)
         poly.points = pts;
         poly.ring_sizes = sizes;
         poly.nrings = (uint32_t)nr;
-        memset(&o, 0, sizeof o);
-        o.rule = (rast_fill_rule)rule;
-        o.subpixel_bits = s;
-        o.method = (nr == 1 && rng() % 2) ? RAST_AA_ACCUMULATE : RAST_AA_AREA;
-        clip.x0 = (int32_t)(rng() % 3);
-        clip.y0 = (int32_t)(rng() % 3);
-        clip.x1 = W - (int32_t)(rng() % 3);
-        clip.y1 = H - (int32_t)(rng() % 3);
+        opts_and_clip(&o, &clip, rule, s, (nr == 1 && rng() % 2) ? RAST_AA_ACCUMULATE : RAST_AA_AREA);
         CHECK(cover(&poly, NULL, 0, &o, &clip, RAST_COVERAGE_U16, &out[0][0], W * 2) == RAST_OK);
         for (j = clip.y0; j < clip.y1; j++)
             for (i = clip.x0; i < clip.x1; i++) {
@@ -188,14 +195,7 @@ static void test_acc_many(void)
         poly.points = pts;
         poly.ring_sizes = sizes;
         poly.nrings = (uint32_t)nr;
-        memset(&o, 0, sizeof o);
-        o.rule = (rast_fill_rule)rule;
-        o.subpixel_bits = s;
-        o.method = RAST_AA_ACCUMULATE;
-        clip.x0 = (int32_t)(rng() % 3);
-        clip.y0 = (int32_t)(rng() % 3);
-        clip.x1 = W - (int32_t)(rng() % 3);
-        clip.y1 = H - (int32_t)(rng() % 3);
+        opts_and_clip(&o, &clip, rule, s, RAST_AA_ACCUMULATE);
         M = f == RAST_COVERAGE_U8 ? 255 : 65535;
         CHECK(cover(batch ? NULL : &poly, batch ? tris : NULL, batch ? 2 * (uint32_t)nr : 0, &o, &clip, f,
                     &out[0][0], W * 2) == RAST_OK);

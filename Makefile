@@ -11,6 +11,7 @@
 #   make asan            C and Python tests under AddressSanitizer + UBSan
 #   make strict          the core and the Python glue under gcc and clang, -std=c99 -pedantic -Werror
 #   make valgrind        C tests under valgrind memcheck, then valgrind-py
+#   make valgrind-c      the C tests alone under valgrind memcheck
 #   make valgrind-py     a quick profile of the Python tests under memcheck
 #   make firmware-check  the core for Cortex-M0 and rv32: no float, heap or stdio; .text sizes,
 #                        and what the firmware examples link (examples/firmware_*.c)
@@ -97,7 +98,7 @@ C_TESTS := $(patsubst tests/c/%.c,build/tests/%,$(wildcard tests/c/test_*.c))
 comma   := ,
 SAN     := -fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer -g
 
-.PHONY: test-wheel test-core figures figures-check test-config race-check fuzz-long bench docs bench-precision cbench-coverage cbench-scale bench-precision-callgrind single test-single display-qemu fuzz-check fuzz-regress display-example valgrind valgrind-py firmware-check cross-check all lib test test-c test-install test-py demo asan asan-c asan-py strict install uninstall example clean
+.PHONY: test-wheel test-core figures figures-check test-config race-check fuzz-long bench docs bench-precision cbench-coverage cbench-scale bench-precision-callgrind single test-single display-qemu fuzz-check fuzz-regress display-example valgrind valgrind-c valgrind-py firmware-check cross-check all lib test test-c test-install test-py demo asan asan-c asan-py strict install uninstall example clean
 
 all: lib
 lib: build/librastrum.a build/librastrum.so
@@ -269,10 +270,13 @@ strict:
 	done
 
 # ---- valgrind ------------------------------------------------------------------
-valgrind: $(C_TESTS)
+valgrind: valgrind-c
+	@$(MAKE) --no-print-directory valgrind-py
+
+# The C tests alone under memcheck (CI runs them in its C-only lane).
+valgrind-c: $(C_TESTS)
 	@for t in $(C_TESTS); do echo "== $$t (memcheck)"; \
 	  RAST_TEST_QUICK=1 valgrind -q --error-exitcode=1 --leak-check=full ./$$t || exit 1; done
-	@$(MAKE) --no-print-directory valgrind-py
 
 # A quick profile of the Python tests under memcheck, against an extension
 # built with -g: the real interpreter binary (not a pyenv shim, which

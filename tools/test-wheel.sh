@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # test-wheel.sh - the wheel as a user installs it (make test-wheel):
-#  1. builds the wheel once, as pip does for a user (an isolated build);
+#  1. builds the wheel once, as pip does for a user (an isolated build),
+#     from a copy of the tree;
 #  2. checks its name says cp39-abi3 (one wheel for CPython 3.9 and later),
 #     that both extension modules are *.abi3.so, and that it carries the
 #     licence (License-Expression: MIT, the LICENSE file);
@@ -61,8 +62,14 @@ newest=$(printf '%s\n' $minors | tail -1)
 echo "test-wheel: Pythons found: $(echo $minors); trying $oldest (${by_minor[$oldest]}) and $newest (${by_minor[$newest]})"
 
 # --- 1. the wheel, built once -----------------------------------------------------
-rm -rf "$out"; mkdir -p "$out/dist"
-(cd "$root" && rm -rf build/lib.* build/temp.* build/bdist.* &&
+# From a copy of the tree (what is there, committed or not; without build/,
+# .venv and .git): setuptools builds in the source folder, and the copy
+# leaves the tree's build/ to whatever else runs meanwhile (CI runs this
+# beside the sanitizer runs, which build the extension in the tree).
+rm -rf "$out"; mkdir -p "$out/dist" "$out/src"
+tar -C "$root" --exclude=./build --exclude=./.venv --exclude=./.git --exclude=__pycache__ \
+  --exclude=./.hypothesis -cf - . | tar -C "$out/src" -xf - || fail "copying the tree"
+(cd "$out/src" &&
   "$build_python" -m pip wheel --quiet --disable-pip-version-check --no-deps -w "$out/dist" .) \
   > "$out/build.log" 2>&1 || { tail -30 "$out/build.log"; fail "building the wheel"; }
 wheel=$(ls "$out"/dist/rastrum-*.whl)

@@ -42,8 +42,8 @@ static void rast__touch_x(int64_t num, int64_t den, int64_t u, int64_t *lo, int6
 /* The columns [*lo, *hi] of the pixels whose closed square meets the
  * closed segment ab in the closed strip yt <= y <= yb (input units, u a
  * pixel), cut to the clip's columns: 0 when there are none. */
-static int rast__seg_strip(const rast_point *a, const rast_point *b, int64_t u, int64_t yt,
-                           int64_t yb, const rast_rect *clip, int64_t *lo, int64_t *hi)
+static inline int rast__seg_strip(const rast_point *a, const rast_point *b, int64_t u, int64_t yt,
+                                  int64_t yb, const rast_rect *clip, int64_t *lo, int64_t *hi)
 {
     *lo = INT64_MAX;
     *hi = INT64_MIN;

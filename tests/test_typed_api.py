@@ -58,6 +58,12 @@ def test_canvas() -> None:
     assert packed.shape == (4, 2) and mono.to_image().mode == "1" and repr(mono).startswith("Canvas(")
 
 
+def test_shaded_aa_rect() -> None:
+    c = rastrum.Canvas((6, 8), format="rgba8888")
+    c.fill_rect_gouraud((0.5, 0.5, 7.5, 5.5), [(0, 0, 0, 255)] * 4, aa="ss4", shading="flat", opacity=0.5)
+    assert c.array[2, 2, 3] > 0
+
+
 def test_batches_coco_gis_scene() -> None:
     polys = coco.polygons([[[1.0, 1.0, 5.0, 1.0, 3.0, 4.0]], [[0.0, 0.0, 2.0, 0.0, 0.0, 2.0]]])
     batch: rastrum.Polygons = polys

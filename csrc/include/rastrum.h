@@ -1346,6 +1346,40 @@ RAST_API rast_status rast_fill_triangles_shaded_aa(const rast_target *target,
                                                    const rast_shade_opts *shade,
                                                    void *scratch, size_t scratch_bytes);
 
+/* An anti-aliased Gouraud polygon (docs/coverage.md "Shaded polygons"):
+ * the polygon's coverage c (rast_fill_polygon_aa's: opts->method, rule,
+ * subpixel_bits, sample) times a colour per pixel, blended as
+ * rast_fill_triangles_shaded_aa blends it.  The colour (4 channels, one
+ * per vertex in `colors`, the rings' vertices in order):
+ *  - where rast_fill_polygon_gouraud (RAST_ALGO_AET, the same rule,
+ *    subpixel_bits and sample, exact rounding and boundary) paints the
+ *    pixel, exactly its colour (edge, then span, rounded half up);
+ *  - elsewhere (c > 0, the sample outside: the boundary meets the pixel's
+ *    closed square), the colour at the point nearest the sample of the
+ *    edges (of non-zero length) that meet the closed square, each edge's
+ *    colour interpolated linearly from its first vertex's to its
+ *    second's and rounded half up; of the first edge in ring order among
+ *    the nearest.  A rectangle given as its four corners so gets the
+ *    bilinear colour at its point nearest the sample.
+ * shade->precision: RAST_PRECISION_EXACT, or RAST_PRECISION_FLAT (vertex
+ * 0's colour for every pixel).  Pixels with c = 0 are not touched.
+ * Memory: for a band of min(16, clip height) rows, the coverage scratch,
+ * 12 bytes a pixel and rast_polygon_gouraud_scratch_size's:
+ * rast_polygon_gouraud_aa_scratch_size (more scratch: bigger bands, the
+ * same pixels).  Errors, all before anything is written: those of
+ * rast_fill_polygon_aa and rast_fill_polygon_gouraud's polygon (NULL
+ * colors with vertices), RAST_E_FORMAT (COUNT16), RAST_E_ARG (a precision
+ * other than EXACT and FLAT). */
+RAST_API rast_status rast_polygon_gouraud_aa_scratch_size(const rast_coverage_opts *opts,
+                                                          uint32_t npoints, int32_t width,
+                                                          int32_t height, size_t *bytes);
+RAST_API rast_status rast_fill_polygon_gouraud_aa(const rast_target *target,
+                                                  const rast_polygon *polygon,
+                                                  const uint8_t *colors,
+                                                  const rast_coverage_opts *opts,
+                                                  const rast_shade_opts *shade, void *scratch,
+                                                  size_t scratch_bytes);
+
 /* ---- shaded fills with opacity (blend.c; docs/opacity.md) -------------------
  * rast_fill_triangles_shaded (no depth) and rast_fill_triangles_shaded_aa
  * with each pixel's colour blended source-over instead of stored: the same
@@ -1404,6 +1438,16 @@ RAST_API rast_status rast_fill_polygon_gouraud_blend(const rast_target *target,
                                                      const rast_shade_opts *shade,
                                                      const rast_blend_opts *blend,
                                                      void *scratch, size_t scratch_bytes);
+/* rast_fill_polygon_gouraud_aa blended the same way, at each pixel's
+ * coverage level c as rast_fill_triangles_shaded_aa_blend (A =
+ * round(alpha o c / 255^2)). */
+RAST_API rast_status rast_fill_polygon_gouraud_aa_blend(const rast_target *target,
+                                                        const rast_polygon *polygon,
+                                                        const uint8_t *colors,
+                                                        const rast_coverage_opts *opts,
+                                                        const rast_shade_opts *shade,
+                                                        const rast_blend_opts *blend,
+                                                        void *scratch, size_t scratch_bytes);
 
 /* ==========================================================================
  * Scenes, band by band

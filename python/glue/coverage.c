@@ -74,6 +74,17 @@ static rast_rect rastpy_cov_cut(const rast_rect *clip, const int32_t *pts, uint3
     return b;
 }
 
+/* The scratch the call of rastpy_coverage needs for `clip`. */
+static rast_status rastpy_cov_need(const rastpy_cov_dest *d, const rast_coverage_opts *opts,
+                                   uint32_t npoints, int triangles, const rast_rect *clip,
+                                   size_t *need)
+{
+    int32_t w = clip->x1 - clip->x0, h = clip->y1 - clip->y0;
+    if (d->colors && triangles) return rast_shaded_aa_scratch_size(opts, npoints / 3, w, h, need);
+    if (d->colors) return rast_polygon_gouraud_aa_scratch_size(opts, npoints, w, h, need);
+    return rast_coverage_scratch_size(opts, npoints, w, h, need);
+}
+
 static long rastpy_coverage(const rastpy_cov_dest *d, const double *xy, uint32_t npoints,
                             const uint32_t *ring_sizes, uint32_t nrings, int triangles,
                             const rast_coverage_opts *opts, rastpy_scratch *sc)
@@ -97,12 +108,7 @@ static long rastpy_coverage(const rastpy_cov_dest *d, const double *xy, uint32_t
     }
     /* the options and sizes checked first, with the whole clip, as the
      * core checks them (its statuses before any point's) */
-    if (d->colors)
-        st = rast_shaded_aa_scratch_size(opts, npoints / 3, clip->x1 - clip->x0,
-                                         clip->y1 - clip->y0, &need);
-    else
-        st = rast_coverage_scratch_size(opts, npoints, clip->x1 - clip->x0, clip->y1 - clip->y0,
-                                        &need);
+    st = rastpy_cov_need(d, opts, npoints, triangles, clip, &need);
     if (st != RAST_OK) return st;
     pts = npoints <= RASTPY_COV_LOCAL_POINTS ? local
                                              : (int32_t *)malloc((size_t)npoints * sizeof(rast_point) + 1);
@@ -127,12 +133,7 @@ static long rastpy_coverage(const rastpy_cov_dest *d, const double *xy, uint32_t
         cut.clip = rastpy_cov_cut(&c, pts, npoints, opts->subpixel_bits);
         tg = &cut;
         clip = &cut.clip;
-        if (d->colors)
-            st = rast_shaded_aa_scratch_size(opts, npoints / 3, clip->x1 - clip->x0,
-                                             clip->y1 - clip->y0, &need);
-        else
-            st = rast_coverage_scratch_size(opts, npoints, clip->x1 - clip->x0,
-                                            clip->y1 - clip->y0, &need);
+        st = rastpy_cov_need(d, opts, npoints, triangles, clip, &need);
         if (st != RAST_OK) {
             if (pts != local) free(pts);
             return st;
@@ -149,7 +150,12 @@ static long rastpy_coverage(const rastpy_cov_dest *d, const double *xy, uint32_t
     poly.points = (const rast_point *)(void *)pts;
     poly.ring_sizes = ring_sizes ? ring_sizes : &npoints;
     poly.nrings = ring_sizes ? nrings : 1;
-    if (d->colors && d->blend)
+    if (d->colors && !triangles && d->blend)
+        st = rast_fill_polygon_gouraud_aa_blend(tg, &poly, d->colors, opts, d->shade, d->blend,
+                                                scratch, need);
+    else if (d->colors && !triangles)
+        st = rast_fill_polygon_gouraud_aa(tg, &poly, d->colors, opts, d->shade, scratch, need);
+    else if (d->colors && d->blend)
         st = rast_fill_triangles_shaded_aa_blend(tg, poly.points, npoints / 3, d->colors,
                                                  opts, d->shade, d->blend, scratch, need);
     else if (d->colors)
@@ -266,4 +272,21 @@ long rastpy_fill_triangles_shaded_aa(const rast_target *target, const double *xy
                                      const rast_shade_opts *shade, rastpy_scratch *sc)
 {
     return rastpy_fill_triangles_shaded_aa_blend(target, xy, ntris, colors, opts, shade, NULL, sc);
+}
+
+/* A polygon with a colour per vertex, with coverage: blended (opacity,
+ * the colours' alpha) or, with blend NULL, as rast_fill_polygon_gouraud_aa. */
+long rastpy_fill_polygon_gouraud_aa(const rast_target *target, const double *xy, uint32_t npoints,
+                                    const uint32_t *ring_sizes, uint32_t nrings,
+                                    const uint8_t *colors, const rast_coverage_opts *opts,
+                                    const rast_shade_opts *shade, const rast_blend_opts *blend,
+                                    rastpy_scratch *sc)
+{
+    rastpy_cov_dest d;
+    if (!target || !colors || !shade) return RAST_E_NULL;
+    d = rastpy_paint(target, NULL);
+    d.colors = colors;
+    d.shade = shade;
+    d.blend = blend;
+    return rastpy_coverage(&d, xy, npoints, ring_sizes, nrings, 0, opts, sc);
 }

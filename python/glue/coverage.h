@@ -2,7 +2,7 @@
  * (python/glue/coverage.c): snap float64 input, take scratch from malloc,
  * one call to rast_polygon_coverage or rast_triangles_coverage (an array),
  * or to rast_fill_polygon_aa, rast_fill_triangles_aa or
- * rast_fill_triangles_shaded_aa (a target).
+ * rast_fill_triangles_shaded_aa or rast_fill_polygon_gouraud_aa (a target).
  * Results as rastpy.h's: 0, a negative status (or RASTPY_E_NOMEM), or
  * k + 1 when point k is bad. */
 #ifndef RASTPY_COVERAGE_H
@@ -43,6 +43,11 @@ long rastpy_fill_triangles_shaded_aa_blend(const rast_target *target, const doub
                                            const rast_coverage_opts *opts,
                                            const rast_shade_opts *shade,
                                            const rast_blend_opts *blend, rastpy_scratch *sc);
+long rastpy_fill_polygon_gouraud_aa(const rast_target *target, const double *xy, uint32_t npoints,
+                                    const uint32_t *ring_sizes, uint32_t nrings,
+                                    const uint8_t *colors, const rast_coverage_opts *opts,
+                                    const rast_shade_opts *shade, const rast_blend_opts *blend,
+                                    rastpy_scratch *sc);
 /* The n values of buf, a in units of 2^-62 as uint64_t (the
  * RAST_COVERAGE_FIX62 output), turned in place into the double a: each
  * integer rounded to the nearest double once, then scaled by 2^-62

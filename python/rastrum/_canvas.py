@@ -898,7 +898,8 @@ class Canvas:
     def fill_rect_gouraud(self, rect: npt.ArrayLike, corner_colors: npt.ArrayLike, *,
                           method: Literal["bilinear", "triangles"] = "bilinear", shading: Shading = "gouraud",
                           precision: Precision = "exact", fraction_bits: int = 16, subpixel_bits: int = 8,
-                          sample_offset: float = 0.5, opacity: Optional[float] = None) -> None:
+                          sample_offset: float = 0.5, opacity: Optional[float] = None,
+                          aa: Optional[CoverageMethod] = None) -> None:
         """A Gouraud rectangle: four corner colours, interpolated (the textbook's §3.2.3).
 
         `rect` is (x0, y0, x1, y1) in pixels; `corner_colors` is (4, C), C
@@ -920,6 +921,18 @@ class Canvas:
         (rgba8888 without `opacity` stores the alpha; docs/opacity.md
         "Shaded fills").
 
+        `aa` (one of ``AA_METHODS["Canvas.fill_polygon"]``) anti-aliases a
+        rectangle with fractional sides: each pixel's colour weighted by
+        the rectangle's coverage as :meth:`fill_polygon` weights a colour
+        (times its alpha and the opacity, as above).  method "bilinear":
+        the colour of the binary fill where it paints the pixel; on the
+        rim, the bilinear colour at the rectangle's point nearest the
+        pixel's sample (rast_fill_polygon_gouraud_aa of its four corners,
+        docs/coverage.md "Shaded rectangles and polygons, anti-aliased");
+        precision "exact" or shading "flat" (`fraction_bits` unused).
+        method "triangles": the two triangles through
+        ``fill_triangles(..., aa=aa)``.
+
         Examples
         --------
         >>> import rastrum
@@ -936,7 +949,7 @@ class Canvas:
         if shade_blend is not None and shade_blend[0].shape[0] != 4:
             raise InputError("corner_colors must be 4 colours, one per corner, not %d" % shade_blend[0].shape[0])
         _shading.fill_rect_gouraud(self, rect, corner_colors, method, _core.shading_precision(shading, precision),
-                                   fraction_bits, subpixel_bits, sample_offset, shade_blend, opacity)
+                                   fraction_bits, subpixel_bits, sample_offset, shade_blend, opacity, aa)
 
     @_label_spill
     def _line(self, p0: Point, p1: Point, color: Color, *, algorithm: LineAlgorithm = "bresenham",

@@ -1,7 +1,7 @@
 """Shaded fills: the checks and conversions behind
 ``Canvas.fill_triangles(..., vertex_colors=..., depth=...)``,
-``Canvas.fill_polygon(..., vertex_colors=...)`` and
-``Canvas.fill_rect_gouraud``.
+``Canvas.fill_polygon(..., vertex_colors=..., aa=...)`` and
+``Canvas.fill_rect_gouraud(..., aa=...)``.
 
 Thin, like the rest: colours become an (N, 3, 4) uint8 RGBA array, depths
 an (N, 3) int32 array, and one C call (rast_fill_triangles_shaded, without
@@ -164,11 +164,15 @@ def rect_corners(rect):
 
 
 def fill_rect_gouraud(canvas, rect, corner_colors, method, precision, fraction_bits, subpixel_bits,
-                      sample_offset, shade_blend=None, opacity=None):
+                      sample_offset, shade_blend=None, opacity=None, aa=None):
     """shade_blend: None (the colours stored), or (RGBA corner colours as
     uint8 (4, 4), ``rast_blend_opts *`` or None when opaque) from
     Canvas._vertex_blend: rast_fill_rect_gouraud_blend; method "triangles"
-    hands the corner colours and `opacity` to fill_triangles."""
+    hands the corner colours, `opacity` and `aa` to fill_triangles.  With
+    `aa` (method "bilinear"): the rectangle's ring, its corners' colours,
+    anti-aliased as fill_polygon_gouraud_aa paints it (docs/coverage.md
+    "Shaded polygons"): at a pixel whose sample it owns, the bilinear
+    colour of the binary fill."""
     r = rect_corners(rect)
     if not isinstance(method, str) or method not in RECT_METHODS:
         raise InputError("unknown method %r; choose one of: %s" % (method, ", ".join(RECT_METHODS)))
@@ -189,7 +193,12 @@ def fill_rect_gouraud(canvas, rect, corner_colors, method, precision, fraction_b
         elif _CHANNELS.get(canvas.format) == 1:
             vc = vc[..., :1]  # a level
         canvas.fill_triangles(tris, vertex_colors=vc, precision=precision, fraction_bits=fraction_bits,
-                              subpixel_bits=subpixel_bits, sample_offset=sample_offset, opacity=opacity)
+                              subpixel_bits=subpixel_bits, sample_offset=sample_offset, opacity=opacity, aa=aa)
+        return
+    if aa is not None:
+        ring = np.array([(x0, y0), (x1, y0), (x1, y1), (x0, y1)])
+        fill_polygon_gouraud_aa(canvas, ring, cols, aa, "nonzero", subpixel_bits, sample_offset, precision,
+                                blend, "Canvas.fill_rect_gouraud", {})
         return
     opts = _triangles.tri_opts("edge", subpixel_bits, sample_offset)
     sh = shade_opts(precision, fraction_bits)
@@ -218,14 +227,42 @@ def polygon_vertex_colors(vertex_colors):
     return vertex_colors
 
 
+def vertex_rgba(vertex_colors, fmt):
+    """fill_polygon's vertex colours (an (N, C) array-like, or a list of
+    one per ring) as uint8 (N, 4) RGBA, checked as colors_rgba checks."""
+    vc = np.asarray(polygon_vertex_colors(vertex_colors))
+    return colors_rgba(vc, vc.shape[0] if vc.ndim >= 1 else -1, fmt, "vertex_colors")
+
+
 def fill_polygon_gouraud(canvas, rings, vertex_colors, opts, precision, shade_blend=None):
     """shade_blend as fill_rect_gouraud's: rast_fill_polygon_gouraud_blend."""
-    blend = None
-    if shade_blend is not None:
-        cols, blend = shade_blend
-    else:
-        vc = np.asarray(polygon_vertex_colors(vertex_colors))
-        n = vc.shape[0] if vc.ndim >= 1 else -1
-        cols = colors_rgba(vc, n, canvas.format, "vertex_colors")
+    cols, blend = shade_blend if shade_blend is not None else (vertex_rgba(vertex_colors, canvas.format), None)
     _core.fill_polygon_gouraud(canvas._writable(), rings, cols, opts, shade_opts(precision, 16),
                                opts.subpixel_bits, blend)
+
+
+def fill_polygon_gouraud_aa(canvas, rings, colors, aa, rule, subpixel_bits, sample_offset, precision, blend,
+                            entry, binary_only):
+    """The anti-aliased Gouraud polygon (rast_fill_polygon_gouraud_aa, or
+    with `blend` a ``rast_blend_opts *`` rast_fill_polygon_gouraud_aa_blend)
+    of `rings` with the checked RGBA `colors` (uint8 (N, 4), one per vertex
+    of the rings in order); `binary_only` as _coverage.aa_opts takes it.
+    Everything is checked before the one C call, which checks again and
+    writes nothing on an error."""
+    from . import _coverage
+
+    opts = _coverage.aa_opts(aa, rule, subpixel_bits, sample_offset, entry, binary_only)
+    if not isinstance(precision, str) or precision not in ("exact", "flat"):
+        raise InputError("%s: aa=%r shades with precision \"exact\" (or shading=\"flat\"), not %r; "
+                         "precision=\"fixed\" is for binary fills (aa=None)" % (entry, aa, precision))
+    pts, sizes, nrings = _coverage._points(rings)
+    if colors.shape != (len(pts), 4):
+        raise InputError("vertex_colors: %s for %s" % (_core.plural(colors.shape[0], "colour"),
+                                                        _core.plural(len(pts), "vertex", "vertices")))
+    if not nrings:
+        return
+    result = _coverage._lent(lib.rastpy_fill_polygon_gouraud_aa, canvas._writable(), ffi.from_buffer("double[]", pts),
+                             len(pts), sizes, nrings, ffi.from_buffer("uint8_t[]", colors), opts,
+                             shade_opts(precision, 16), ffi.NULL if blend is None else blend)
+    if result:
+        _coverage._check(result, pts, opts, "rings", [len(pts)] if nrings == 1 else sizes)

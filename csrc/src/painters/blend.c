@@ -418,3 +418,19 @@ rast_status rast_fill_polygon_gouraud_blend(const rast_target *target, const ras
                          : rast__fill_polygon_shaded(target, polygon, colors, opts, shade,
                                                      rast__rgba_put, &b, scratch, scratch_bytes);
 }
+
+rast_status rast_fill_polygon_gouraud_aa_blend(const rast_target *target,
+                                               const rast_polygon *polygon,
+                                               const uint8_t *colors,
+                                               const rast_coverage_opts *opts,
+                                               const rast_shade_opts *shade,
+                                               const rast_blend_opts *blend, void *scratch,
+                                               size_t scratch_bytes)
+{
+    rast__blender b;
+    rast_status st = rast__shade_blender(&b, target, blend);
+    return st != RAST_OK ? st
+                         : rast__fill_polygon_shaded_aa(target, polygon, colors, opts, shade,
+                                                        rast__rgba_put, &b, scratch,
+                                                        scratch_bytes);
+}

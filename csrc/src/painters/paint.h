@@ -272,4 +272,26 @@ rast_status rast__fill_polygon_shaded(const rast_target *target, const rast_poly
                                       const rast_shade_opts *shade, rast__rgba_put_fn bput,
                                       const void *bctx, void *scratch, size_t scratch_bytes);
 
+/* The polygon of a shaded fill checked (shade_poly.c): ring sizes, their
+ * total (*npoints), NULL pointers and every vertex's range, as
+ * rast_fill_polygon_gouraud checks them. */
+rast_status rast__poly_shade_check(const rast_polygon *polygon, const uint8_t *colors,
+                                   uint32_t *npoints);
+/* The binary Gouraud polygon (rast_fill_polygon_gouraud's walk, its
+ * pixels and colours for `rule` on grid g; flat: vertex 0's colour) into
+ * RGBA8888 colours: pixel (band->x0 + i, band->y0 + j) at
+ * rgba + j stride + 4 i.  A polygon that passed rast__poly_shade_check
+ * (npoints its count); scratch of rast_polygon_gouraud_scratch_size for
+ * the band. */
+rast_status rast__poly_shade_band(unsigned char *rgba, ptrdiff_t stride, const rast_rect *band,
+                                  const rast_polygon *polygon, uint32_t npoints,
+                                  const uint8_t *colors, const rast__grid *g, rast_fill_rule rule,
+                                  int flat, void *scratch, size_t scratch_bytes);
+/* rast_fill_polygon_gouraud_aa (shade_aa.c) with each pixel's colour
+ * handed to bput (NULL: blended as the format blends a value). */
+rast_status rast__fill_polygon_shaded_aa(const rast_target *target, const rast_polygon *polygon,
+                                         const uint8_t *colors, const rast_coverage_opts *opts,
+                                         const rast_shade_opts *shade, rast__rgba_put_fn bput,
+                                         const void *bctx, void *scratch, size_t scratch_bytes);
+
 #endif /* RAST_PAINT_H */

@@ -87,7 +87,9 @@ static int32_t rast__i128_small_div(rast__i128 n, rast__i128 d, rast__i128 *rem)
 /* The polygon's Gouraud painter: rast__gpoly_span colours columns of the
  * current run, whose bounding edges rast__gpoly_begin was given. */
 typedef struct rast__shade_poly {
-    const rast_target *target;
+    unsigned char *base;   /* pixel (x, y) of the destination: row y - oy of */
+    ptrdiff_t stride;      /* base, column x - ox (a target: ox = oy = 0) */
+    int32_t ox, oy;
     rast__rgba_out out;    /* stored, or blended (rast_fill_polygon_gouraud_blend) */
     int flat;              /* FLAT through the blend: vertex 0's colour */
     const rast_point *pts;
@@ -141,13 +143,13 @@ static void rast__gpoly_span(const rast__shade_poly *s, int32_t row, int32_t x0,
 {
     const rast__grid *g = s->g;
     unsigned char run[4 * RAST__SHADE_RUN];
-    unsigned char *p = (unsigned char *)s->target->pixels + (ptrdiff_t)row * s->target->stride;
+    unsigned char *p = s->base + (ptrdiff_t)(row - s->oy) * s->stride;
     int32_t i, n, ch, fill = 0, x;
     rast__i128 D, R[4], SR[4];
     int32_t q[4], sq[4];
 
     n = x1 - x0;
-    x = x0;
+    x = x0 - s->ox;
     {
         int64_t yc = (int64_t)row * g->unit + g->off;
         int64_t xs = (int64_t)x0 * g->unit + g->off; /* |xs| < 2^28 */
@@ -228,8 +230,8 @@ static void rast__gpoly_run(void *user, int32_t row, const rast__edge *l, const 
     int32_t x0 = l->x > s->cx0 ? l->x : s->cx0, x1 = r->x < s->cx1 ? r->x : s->cx1;
     if (x0 >= x1) return;
     if (s->flat) {
-        rast__put_rgba_flat(&s->out, (unsigned char *)s->target->pixels + (ptrdiff_t)row * s->target->stride,
-                            x0, x1 - x0, s->colors);
+        rast__put_rgba_flat(&s->out, s->base + (ptrdiff_t)(row - s->oy) * s->stride, x0 - s->ox,
+                            x1 - x0, s->colors);
         return;
     }
     rast__gpoly_begin(s, l->next, r->next);
@@ -281,6 +283,70 @@ rast_status rast_polygon_gouraud_scratch_size(uint32_t npoints, int32_t width, i
     return RAST_OK;
 }
 
+rast_status rast__poly_shade_check(const rast_polygon *polygon, const uint8_t *colors,
+                                   uint32_t *npoints)
+{
+    uint64_t total = 0;
+    uint32_t k, i;
+    if (!polygon) return RAST_E_NULL;
+    if (polygon->nrings > 0 && !polygon->ring_sizes) return RAST_E_NULL;
+    for (k = 0; k < polygon->nrings; k++) {
+        total += polygon->ring_sizes[k];
+        if (total > RAST_MAX_POINTS) return RAST_E_TOO_MANY;
+    }
+    *npoints = (uint32_t)total;
+    if (total > 0 && (!polygon->points || !colors)) return RAST_E_NULL;
+    for (i = 0; i < *npoints; i++) {
+        int32_t x = polygon->points[i].x, y = polygon->points[i].y;
+        if (x < -RAST_COORD_MAX || x > RAST_COORD_MAX || y < -RAST_COORD_MAX || y > RAST_COORD_MAX)
+            return RAST_E_RANGE;
+    }
+    return RAST_OK;
+}
+
+/* The walk of a checked polygon into the painter s (its destination and
+ * out set), its runs cut to `clip`, with scratch of
+ * rast_polygon_gouraud_scratch_size for the clip. */
+static rast_status rast__gpoly_walk(rast__shade_poly *s, const rast_polygon *polygon,
+                                    uint32_t npoints, const uint8_t *colors, const rast__grid *g,
+                                    rast_fill_rule rule, int flat, const rast_rect *clip,
+                                    void *scratch, size_t scratch_bytes)
+{
+    rast__arena arena;
+    int32_t *src;
+    arena.p = (unsigned char *)scratch;
+    arena.left = scratch_bytes;
+    src = (int32_t *)rast__take(&arena, (size_t)npoints * 2 * sizeof(int32_t));
+    if (!src) return RAST_E_SCRATCH;
+    s->flat = flat;
+    s->pts = polygon->points;
+    s->colors = colors;
+    s->src = src;
+    s->g = g;
+    s->cx0 = clip->x0;
+    s->cx1 = clip->x1;
+    return rast__aet_walk(polygon, npoints, g, rule, clip, &arena, rast__gpoly_run,
+                          rast__shade_order, s, src);
+}
+
+rast_status rast__poly_shade_band(unsigned char *rgba, ptrdiff_t stride, const rast_rect *band,
+                                  const rast_polygon *polygon, uint32_t npoints,
+                                  const uint8_t *colors, const rast__grid *g, rast_fill_rule rule,
+                                  int flat, void *scratch, size_t scratch_bytes)
+{
+    rast__shade_poly s;
+    s.base = rgba;
+    s.stride = stride;
+    s.ox = band->x0;
+    s.oy = band->y0;
+    s.out.put = rast__formats[RAST_FORMAT_RGBA8888].put;
+    s.out.bput = NULL;
+    s.out.bctx = NULL;
+    if (band->x0 >= band->x1 || band->y0 >= band->y1 || npoints == 0) return RAST_OK;
+    return rast__gpoly_walk(&s, polygon, npoints, colors, g, rule, flat, band, scratch,
+                            scratch_bytes);
+}
+
 /* rast_fill_polygon_gouraud with each run's colours to bput (NULL:
  * stored), as paint.h says. */
 rast_status rast__fill_polygon_shaded(const rast_target *target, const rast_polygon *polygon,
@@ -290,12 +356,9 @@ rast_status rast__fill_polygon_shaded(const rast_target *target, const rast_poly
 {
     rast__shade_poly s;
     rast__grid g;
-    rast__arena arena;
     rast_rect clip;
-    uint64_t total = 0;
-    uint32_t k, i, npoints;
+    uint32_t npoints;
     size_t need;
-    int32_t *src;
     rast_status st;
 
     if (!target || !polygon || !opts || !shade) return RAST_E_NULL;
@@ -306,18 +369,8 @@ rast_status rast__fill_polygon_shaded(const rast_target *target, const rast_poly
     if (opts->boundary != RAST_BOUNDARY_EXACT) return RAST_E_ARG;
     if (shade->precision != RAST_PRECISION_EXACT && shade->precision != RAST_PRECISION_FLAT)
         return RAST_E_ARG;
-    if (polygon->nrings > 0 && !polygon->ring_sizes) return RAST_E_NULL;
-    for (k = 0; k < polygon->nrings; k++) {
-        total += polygon->ring_sizes[k];
-        if (total > RAST_MAX_POINTS) return RAST_E_TOO_MANY;
-    }
-    npoints = (uint32_t)total;
-    if (npoints > 0 && (!polygon->points || !colors)) return RAST_E_NULL;
-    for (i = 0; i < npoints; i++) {
-        int32_t x = polygon->points[i].x, y = polygon->points[i].y;
-        if (x < -RAST_COORD_MAX || x > RAST_COORD_MAX || y < -RAST_COORD_MAX || y > RAST_COORD_MAX)
-            return RAST_E_RANGE;
-    }
+    st = rast__poly_shade_check(polygon, colors, &npoints);
+    if (st != RAST_OK) return st;
     st = rast__target_check(target, &clip);
     if (st != RAST_OK) return st;
     st = rast__shade_format(target);
@@ -328,10 +381,6 @@ rast_status rast__fill_polygon_shaded(const rast_target *target, const rast_poly
     if (st != RAST_OK) return st;
     if (clip.x0 >= clip.x1 || clip.y0 >= clip.y1 || npoints == 0) return RAST_OK;
 
-    arena.p = (unsigned char *)scratch;
-    arena.left = scratch_bytes;
-    src = (int32_t *)rast__take(&arena, (size_t)npoints * 2 * sizeof(int32_t));
-    if (!src) return RAST_E_SCRATCH;
     if (shade->precision == RAST_PRECISION_FLAT && !bput) {
         /* One colour, vertex 0's: the solid painter of its value (a
          * format's fill of pack(c) writes what its put of c writes), fed by
@@ -339,24 +388,24 @@ rast_status rast__fill_polygon_shaded(const rast_target *target, const rast_poly
         rast__solid solid;
         rast__painter paint;
         rast__sink sink;
+        rast__arena arena;
         unsigned char value[4] = {0, 0, 0, 0};
+        arena.p = (unsigned char *)scratch;
+        arena.left = scratch_bytes;
+        if (!rast__take(&arena, (size_t)npoints * 2 * sizeof(int32_t))) return RAST_E_SCRATCH;
         rast__formats[target->format].pack(colors, value);
         st = rast__solid_init(&solid, target, &clip, value, NULL, &paint);
         if (st != RAST_OK) return st;
         rast__sink_init(&sink, &paint, &clip);
         return rast__aet_fill(polygon, npoints, &g, opts->rule, &clip, &sink, &arena);
     }
-    s.target = target;
+    s.base = (unsigned char *)target->pixels;
+    s.stride = target->stride;
+    s.ox = s.oy = 0;
     rast__rgba_out_init(&s.out, target, bput, bctx);
-    s.flat = shade->precision == RAST_PRECISION_FLAT; /* blended: the walk's pixels, one colour */
-    s.pts = polygon->points;
-    s.colors = colors;
-    s.src = src;
-    s.g = &g;
-    s.cx0 = clip.x0;
-    s.cx1 = clip.x1;
-    return rast__aet_walk(polygon, npoints, &g, opts->rule, &clip, &arena, rast__gpoly_run,
-                          rast__shade_order, &s, src);
+    /* FLAT through the blend: the walk's pixels, one colour */
+    return rast__gpoly_walk(&s, polygon, npoints, colors, &g, opts->rule,
+                            shade->precision == RAST_PRECISION_FLAT, &clip, scratch, scratch_bytes);
 }
 
 rast_status rast_fill_polygon_gouraud(const rast_target *target, const rast_polygon *polygon,

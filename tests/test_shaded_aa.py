@@ -226,8 +226,16 @@ def test_bad_input_writes_nothing(kwargs, match):
     np.testing.assert_array_equal(canvas.array, before)
 
 
-def test_polygon_vertex_colors_with_aa_names_the_alternative():
+def test_polygon_vertex_colors_with_aa_is_the_colour_polygon():
+    # (It refused the pair until the anti-aliased colour polygon existed;
+    # tests/test_shaded_polygon_aa.py holds that fill to its oracle.)  One
+    # colour at every vertex: the one-colour anti-aliased fill, byte for byte.
+    ring = [(0.3, 0.2), (5.6, 1.1), (2.2, 5.7)]
     canvas = rastrum.Canvas((6, 6), format="rgb888")
-    with pytest.raises(rastrum.InputError, match=r"triangulate.*fill_triangles"):
-        canvas.fill_polygon([(0, 0), (5, 1), (2, 5)], vertex_colors=[(1, 2, 3)] * 3, aa="area")
-    assert not canvas.array.any()
+    canvas.fill_polygon(ring, vertex_colors=[(1, 2, 250)] * 3, aa="area")
+    plain = rastrum.Canvas((6, 6), format="rgb888")
+    plain.fill_polygon(ring, (1, 2, 250), aa="area")
+    assert canvas.array.any() and (canvas.array == plain.array).all()
+    with pytest.raises(rastrum.InputError, match=r"fixed"):
+        canvas.fill_polygon(ring, vertex_colors=[(9, 9, 9)] * 3, aa="area", precision="fixed")
+    assert (canvas.array == plain.array).all()

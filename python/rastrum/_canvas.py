@@ -345,10 +345,8 @@ class Canvas:
         if depth is not None:
             raise InputError("%s: depth is for binary shaded fills (aa=None); with aa=%r leave "
                              "it out (draw the batch back to front)" % (entry, aa))
-        if vertex_colors is not None and entry == "Canvas.fill_polygon":
-            raise InputError("Canvas.fill_polygon: aa=%r paints one colour; vertex_colors is for "
-                             "binary shaded polygons (aa=None), or triangulate the polygon and "
-                             "use fill_triangles(..., vertex_colors=..., aa=%r)" % (aa, aa))
+        if vertex_colors is not None and entry == "Canvas.fill_polygon" and color is not None:
+            raise InputError("fill_polygon takes exactly one of color and vertex_colors")
         shading = binary_only.pop("shading", ("gouraud", "gouraud"))[0]
         precision = binary_only.pop("precision", ("exact", "exact"))[0]
         if vertex_colors is None:  # one colour: no shading to choose
@@ -560,10 +558,10 @@ class Canvas:
         `subpixel_bits` and `sample_offset`) weights `color`: every channel
         d becomes (s*c + d*(255 - c) + 127) // 255 (rgb565: on its 5/6/5
         bits; rgba8888: alpha too), mono1 takes the colour where c >= 128,
-        pixels with c = 0 are untouched.  `algorithm`, `rounding`,
-        `boundary` and `vertex_colors` are for binary fills (aa=None) only
-        (for colours per vertex, triangulate and use :meth:`fill_triangles`
-        with `vertex_colors` and `aa`).
+        pixels with c = 0 are untouched.  `algorithm`, `rounding`
+        and `boundary` are for binary fills (aa=None) only; with
+        `vertex_colors` and `aa`, the anti-aliased colour polygon
+        (docs/coverage.md "Shaded rectangles and polygons, anti-aliased").
 
         With `vertex_colors` instead of `color`: one colour per vertex, an
         (N, C) array-like for the N vertices of all rings in order (or a
@@ -603,10 +601,19 @@ class Canvas:
                                  precision=(precision, "exact"), path_tolerance=tolerance):
                     return
             rings = path_rings(rings, subpixel_bits, tolerance)
-        if vertex_colors is not None and color is None and aa is None and gamma is None \
-                and self._format != "label":
+        if vertex_colors is not None and color is None and gamma is None and self._format != "label":
             vc = _shading.polygon_vertex_colors(vertex_colors)
             shade_blend = self._vertex_blend(vc, opacity, "Canvas.fill_polygon", "vertex_colors")
+            if aa is not None:  # anti-aliased (docs/coverage.md "Anti-aliased Gouraud polygons")
+                if shade_blend is None:
+                    n = len(vc) if hasattr(vc, "__len__") and _core.ndim(vc) >= 1 else -1
+                    shade_blend = _shading.colors_rgba(vc, n, self._format, "vertex_colors"), None
+                _shading.fill_polygon_gouraud_aa(
+                    self, rings, shade_blend[0], aa, rule, subpixel_bits, sample_offset,
+                    _core.shading_precision(shading, precision), shade_blend[1], "Canvas.fill_polygon",
+                    dict(algorithm=(algorithm, "aet"), rounding=(rounding, "exact"),
+                         boundary=(boundary, "exact")))
+                return
             if shade_blend is not None:  # blended (docs/opacity.md "Shaded fills")
                 _shading.fill_polygon_gouraud(self, rings, vc, _core.fill_opts(
                     algorithm, rule, subpixel_bits, sample_offset, rounding, boundary), _core.shading_precision(

@@ -557,6 +557,11 @@ typedef struct rast__ss_tri {
                        worked out yet, -2: too far to take */
     int32_t x[2], step[2], end[2], stepk[2];
     int32_t row, next;
+    int32_t c0, c1; /* every run's columns within [c0, c1] (the vertices'
+                       columns, clipped) */
+    int32_t flip;   /* 1: edge 1 is the left one (else edge 0, or both the
+                       same: no run) */
+    int32_t clamp;  /* 1: a run may reach outside the clip's columns */
 } rast__ss_tri;
 
 /* Edge k of triangle r (held in *ed) moved k rows on: one step of the
@@ -622,9 +627,19 @@ static int rast__ss_tri_rows(const rast_point *t, const rast__grid *g, int32_t l
 
 /* Its edges into *r and *low, from rast__ss_tri_rows' v[] and row[]. */
 static void rast__ss_tri_setup(rast__ss_tri *r, rast__edge *low, const rast_point *v,
-                               const int32_t *row, const rast__grid *g)
+                               const int32_t *row, const rast__grid *g, int32_t fx0, int32_t fx1)
 {
     rast__edge ed;
+    /* a crossing's column lies between its edge's ends' columns (the
+     * first at or right of a point, as for rows); the middle vertex right
+     * of the long edge (clockwise on screen) puts that edge on the left */
+    const int32_t xa = v[0].x < v[1].x ? v[0].x : v[1].x, xb = v[0].x < v[1].x ? v[1].x : v[0].x;
+    const int64_t c0 = rast__row_at_or_after(2 * (int64_t)(xa < v[2].x ? xa : v[2].x), g),
+                  c1 = rast__row_at_or_after(2 * (int64_t)(xb > v[2].x ? xb : v[2].x), g);
+    r->clamp = c0 < fx0 || c1 > fx1;
+    r->c0 = (int32_t)(c0 < fx0 ? fx0 : c0 > fx1 ? fx1 : c0);
+    r->c1 = (int32_t)(c1 < fx0 ? fx0 : c1 > fx1 ? fx1 : c1);
+    r->flip = rast__cross3(v[0], v[1], v[2]) < 0;
     /* the long edge's rows are the short edges' rows, one after the other */
     rast__edge_start_tri(&ed, v[0], v[2], 1, row[0], row[2], g);
     rast__ss_set(r, 0, &ed);
@@ -652,6 +667,26 @@ static inline void rast__ss_bits(uint64_t *bits, int32_t a, int32_t b)
     bits[ka] |= ma;
     for (k = ka + 1; k < kb; k++) bits[k] = ~(uint64_t)0;
     bits[kb] |= mb;
+}
+
+/* n fine rows of a triangle, its run on each [L's column, R's column)
+ * (with `clamp`, between the two, clipped to [fx0, fx1]) set in its row
+ * of bits (the first at `row`, wpr words apart), both edges stepped. */
+RAST__HOT void rast__ss_walk(rast__edge *L, rast__edge *R, int32_t n, uint64_t *row, size_t wpr,
+                             int32_t fx0, int32_t fx1, int clamp)
+{
+    for (; n > 0; n--, row += wpr) {
+        int32_t a = L->x, b = R->x;
+        if (clamp) {
+            const int32_t t = a < b ? a : b;
+            b = a < b ? b : a;
+            a = t < fx0 ? fx0 : t;
+            b = b > fx1 ? fx1 : b;
+        }
+        if (a < b) rast__ss_bits(row, a - fx0, b - fx0);
+        rast__edge_step(L);
+        rast__edge_step(R);
+    }
 }
 
 /* The samples of word k of the K rows of bits (wpr words apart) counted
@@ -865,6 +900,9 @@ static void rast__ss_grow(uint64_t *bits, size_t wpr, int32_t K, int32_t fx0, in
     }
 }
 
+/* Output rows walked together when few triangles are active. */
+#define RAST__SS_BAND 8
+
 rast_status rast__cov_ss_tris(const rast_point *tris, uint32_t ntris, int32_t s, int32_t kbits,
                               rast_sample sample, const rast__cov_out *o, rast__arena *arena)
 {
@@ -876,7 +914,7 @@ rast_status rast__cov_ss_tris(const rast_point *tris, uint32_t ntris, int32_t s,
     int32_t *bucket, *act;
     uint64_t *bits;
     uint32_t k;
-    int32_t j, b0, n = 0, nact = 0, first = 0, rows, pa[16], pb[16];
+    int32_t j, b0, n = 0, nact = 0, first = 0, rows, pa[16], pb[16], band, nb = 1;
     const int32_t K = (int32_t)1 << kbits;
     size_t wpr;
     rast_status st = rast__grid_init(&g, s, sample, RAST_ROUND_EXACT, RAST_BOUNDARY_EXACT);
@@ -894,10 +932,15 @@ rast_status rast__cov_ss_tris(const rast_point *tris, uint32_t ntris, int32_t s,
     low = (rast__edge *)rast__take(arena, (size_t)ntris * sizeof(rast__edge));
     act = (int32_t *)rast__take(arena, (size_t)ntris * sizeof(int32_t));
     bucket = (int32_t *)rast__take(arena, ((size_t)rows + 1) * sizeof(int32_t));
-    bits = (uint64_t *)rast__take(arena, (size_t)K * wpr * 8);
+    /* rows of bits for a band of up to RAST__SS_BAND output rows, as many
+     * as the room left holds (the scratch holds one; the records leave
+     * more when there are many triangles) */
+    band = (int32_t)(arena->left / (rast__align((size_t)K * wpr * 8) + RAST_SCRATCH_ALIGN));
+    band = band < 1 ? 1 : band > RAST__SS_BAND ? RAST__SS_BAND : band;
+    bits = (uint64_t *)rast__take(arena, (size_t)band * K * wpr * 8);
     if ((ntris && (!table || !low || !act)) || !bucket || !bits) return RAST_E_SCRATCH;
     memset(bucket, 0, ((size_t)rows + 1) * sizeof(int32_t));
-    memset(bits, 0, (size_t)K * wpr * 8);
+    memset(bits, 0, (size_t)band * K * wpr * 8);
     /* the triangles grouped by first row (a counting sort: counted, then
      * set up where their row's run goes) */
     for (k = 0; k < ntris; k++) {
@@ -914,16 +957,23 @@ rast_status rast__cov_ss_tris(const rast_point *tris, uint32_t ntris, int32_t s,
         int32_t row[3];
         if (rast__ss_tri_rows(&tris[3 * k], &g, fine.y0, fine.y1, v, row)) {
             int32_t at = bucket[row[0] - fine.y0]++;
-            rast__ss_tri_setup(&table[at], &low[at], v, row, &g);
+            rast__ss_tri_setup(&table[at], &low[at], v, row, &g, ss.fx0, ss.fx1);
         }
     }
     /* now bucket[j] is where row j's run ends.  An output row (K fine
      * rows) at a time: each active triangle's record is read once, its K
      * rows walked with its edges in registers; each fine row keeps a
      * pending run that the triangles' runs meeting it join. */
-    for (b0 = 0; b0 < rows && (nact || first < n); b0 += K) {
-        const int32_t b1 = b0 + K, top = fine.y0 + b0, fx0 = ss.fx0, fx1 = ss.fx1;
-        int32_t i, m, t, lo = INT32_MAX, hi = INT32_MIN, fa, fb, overlap;
+    for (b0 = 0; b0 < rows && (nact || first < n); b0 += nb * K) {
+        int32_t b1, top = fine.y0 + b0, fx0 = ss.fx0, fx1 = ss.fx1;
+        int32_t i, m, t, lo = INT32_MAX, hi = INT32_MIN, fa, fb, overlap, direct, span;
+        /* few active: a band of output rows at once (a triangle's record
+         * read once for them all), each run straight into its row's bits;
+         * many: an output row at a time (below) */
+        nb = nact < 256 ? band : 1;
+        nb = nb < (rows - b0) >> kbits ? nb : (rows - b0) >> kbits;
+        span = nb * K;
+        b1 = b0 + span;
         /* few active: in order of their left ends, so that neighbours' runs
          * join; many (they overlap anyway): in table order, which walks
          * the records in memory order */
@@ -933,7 +983,8 @@ rast_status rast__cov_ss_tris(const rast_point *tris, uint32_t ntris, int32_t s,
             else
                 act[nact++] = first;
         if (!nact) continue;
-        overlap = nact >= 256;
+        overlap = nb == 1 && nact >= 256;
+        direct = !overlap;
         for (t = 0; t < K; t++) pa[t] = pb[t] = 0;
         fa = fb = 0;
         for (i = 0, m = 0; i < nact; i++) {
@@ -942,7 +993,7 @@ rast_status rast__cov_ss_tris(const rast_point *tris, uint32_t ntris, int32_t s,
             int32_t y = r->row, end, sw, low_in = 0;
             rast__ss_get(r, 0, &l);
             rast__ss_get(r, 1, &e);
-            end = l.end < top + K ? l.end : top + K;
+            end = l.end < top + span ? l.end : top + span;
             sw = r->next ? e.end : INT32_MAX; /* where the edge below the middle takes over */
             if (overlap && y == top && end == top + K && sw >= top + K) {
                 /* straight across the K rows: F (see above) */
@@ -978,31 +1029,49 @@ rast_status rast__cov_ss_tris(const rast_point *tris, uint32_t ntris, int32_t s,
                     if (u0 < v0 && l.x != e.x) rast__ss_grow(bits, wpr, K, fx0, u0, v0, &fa, &fb);
                 }
             }
-            for (; y < end; y++) {
-                int32_t a = l.x < e.x ? l.x : e.x, b = l.x < e.x ? e.x : l.x;
-                t = y - top;
-                a = a < fx0 ? fx0 : a;
-                b = b > fx1 ? fx1 : b;
-                if (a <= pb[t] && b >= pa[t]) {
-                    pa[t] = a < pa[t] ? a : pa[t];
-                    pb[t] = b > pb[t] ? b : pb[t];
-                } else if (a < b) {
-                    if (pa[t] < pb[t]) { /* into the bits; lo, hi: the columns they reach */
-                        rast__ss_bits(bits + (size_t)t * wpr, pa[t] - fx0, pb[t] - fx0);
-                        lo = pa[t] < lo ? pa[t] : lo;
-                        hi = pb[t] > hi ? pb[t] : hi;
-                    }
-                    pa[t] = a;
-                    pb[t] = b;
-                }
-                rast__edge_step(&l);
-                if (y + 1 == sw) {
-                    e = low[act[i]];
-                    sw = INT32_MAX;
-                    low_in = 1;
+            /* the rows to the end of the output row or of edge 0, the
+             * lower edge taking over from edge 1 on its first row */
+            if (direct) {
+                lo = r->c0 < lo ? r->c0 : lo;
+                hi = r->c1 > hi ? r->c1 : hi;
+            }
+            for (;;) {
+                const int32_t stop = end < sw ? end : sw;
+                if (direct) { /* each run straight into its row's bits */
+                    uint64_t *row = bits + (size_t)(y - top) * wpr;
+                    if (r->clamp)
+                        rast__ss_walk(&l, &e, stop - y, row, wpr, fx0, fx1, 1);
+                    else if (r->flip)
+                        rast__ss_walk(&e, &l, stop - y, row, wpr, fx0, fx1, 0);
+                    else
+                        rast__ss_walk(&l, &e, stop - y, row, wpr, fx0, fx1, 0);
+                    y = stop > y ? stop : y;
                 } else {
-                    rast__edge_step(&e);
+                    for (; y < stop; y++) {
+                        int32_t a = l.x < e.x ? l.x : e.x, b = l.x < e.x ? e.x : l.x;
+                        t = y - top;
+                        a = a < fx0 ? fx0 : a;
+                        b = b > fx1 ? fx1 : b;
+                        if (a <= pb[t] && b >= pa[t]) {
+                            pa[t] = a < pa[t] ? a : pa[t];
+                            pb[t] = b > pb[t] ? b : pb[t];
+                        } else if (a < b) {
+                            if (pa[t] < pb[t]) { /* into the bits; lo, hi: the columns they reach */
+                                rast__ss_bits(bits + (size_t)t * wpr, pa[t] - fx0, pb[t] - fx0);
+                                lo = pa[t] < lo ? pa[t] : lo;
+                                hi = pb[t] > hi ? pb[t] : hi;
+                            }
+                            pa[t] = a;
+                            pb[t] = b;
+                        }
+                        rast__edge_step(&l);
+                        rast__edge_step(&e);
+                    }
                 }
+                if (y != sw) break;
+                e = low[act[i]];
+                sw = INT32_MAX;
+                low_in = 1;
             }
         walked:
             if (y == l.end) continue; /* done: dropped */
@@ -1035,7 +1104,9 @@ rast_status rast__cov_ss_tris(const rast_point *tris, uint32_t ntris, int32_t s,
             }
         }
         if (lo >= hi) continue; /* no run */
-        rast__ss_bits_row(&ss, b0 >> kbits, bits, wpr, (lo - fx0) >> 6, (hi - fx0 - 1) >> 6);
+        for (t = 0; t < nb; t++)
+            rast__ss_bits_row(&ss, (b0 >> kbits) + t, bits + (size_t)t * K * wpr, wpr, (lo - fx0) >> 6,
+                              (hi - fx0 - 1) >> 6);
     }
     rast__cov_zero_rows(o, o->clip.y0 + ss.next, o->clip.y1);
     return RAST_OK;

@@ -675,18 +675,27 @@ static inline void rast__ss_bits(uint64_t *bits, int32_t a, int32_t b)
 RAST__HOT void rast__ss_walk(rast__edge *L, rast__edge *R, int32_t n, uint64_t *row, size_t wpr,
                              int32_t fx0, int32_t fx1, int clamp)
 {
+    /* (copies in locals, their columns relative to fx0) */
+    rast__edge l = *L, r = *R;
+    const int32_t w = fx1 - fx0;
+    l.x -= fx0;
+    r.x -= fx0;
     for (; n > 0; n--, row += wpr) {
-        int32_t a = L->x, b = R->x;
+        int32_t a = l.x, b = r.x;
         if (clamp) {
             const int32_t t = a < b ? a : b;
             b = a < b ? b : a;
-            a = t < fx0 ? fx0 : t;
-            b = b > fx1 ? fx1 : b;
+            a = t < 0 ? 0 : t;
+            b = b > w ? w : b;
         }
-        if (a < b) rast__ss_bits(row, a - fx0, b - fx0);
-        rast__edge_step(L);
-        rast__edge_step(R);
+        if (a < b) rast__ss_bits(row, a, b);
+        rast__edge_step(&l);
+        rast__edge_step(&r);
     }
+    L->e = l.e;
+    R->e = r.e;
+    L->x = l.x + fx0;
+    R->x = r.x + fx0;
 }
 
 /* The samples of word k of the K rows of bits (wpr words apart) counted

@@ -490,6 +490,12 @@ static int rast__ss_cancel(rast__ss *ss, const rast_point *tris, uint32_t ntris,
         if (slot[h] < 0) {
             slot[h] = i;
             left += p.y != q.y;
+            /* each edge still to come takes at most one off `left`: when
+             * even that leaves more than half, the test below fails now */
+            if (((int64_t)left - ((int64_t)ntris * 3 - 1 - i)) * 2 > (int64_t)ntris * 3) {
+                *arena = keep;
+                return 0;
+            }
         } else {
             const int32_t was = seg[slot[h]].n, now = was + seg[i].n;
             seg[slot[h]].n = now;
@@ -623,6 +629,21 @@ static int rast__ss_tri_rows(const rast_point *t, const rast__grid *g, int32_t l
         row[k] = (int32_t)(r < lo ? lo : r > hi ? hi : r);
     }
     return row[0] < row[2];
+}
+
+/* The first of the rows [lo, hi) triangle t crosses into *first (its
+ * vertices' least row, as rast__ss_tri_rows' row[0], without sorting
+ * them); 0 when it crosses none of them. */
+static int rast__ss_tri_first(const rast_point *t, const rast__grid *g, int32_t lo, int32_t hi,
+                              int32_t *first)
+{
+    const int32_t a = t[0].y < t[1].y ? t[0].y : t[1].y, b = t[0].y < t[1].y ? t[1].y : t[0].y;
+    int64_t r0 = rast__row_at_or_after(2 * (int64_t)(a < t[2].y ? a : t[2].y), g),
+            r2 = rast__row_at_or_after(2 * (int64_t)(b > t[2].y ? b : t[2].y), g);
+    r0 = r0 < lo ? lo : r0 > hi ? hi : r0;
+    r2 = r2 < lo ? lo : r2 > hi ? hi : r2;
+    *first = (int32_t)r0;
+    return r0 < r2;
 }
 
 /* Its edges into *r and *low, from rast__ss_tri_rows' v[] and row[]. */
@@ -953,10 +974,9 @@ rast_status rast__cov_ss_tris(const rast_point *tris, uint32_t ntris, int32_t s,
     /* the triangles grouped by first row (a counting sort: counted, then
      * set up where their row's run goes) */
     for (k = 0; k < ntris; k++) {
-        rast_point v[3];
-        int32_t row[3];
-        if (rast__ss_tri_rows(&tris[3 * k], &g, fine.y0, fine.y1, v, row)) {
-            bucket[row[0] - fine.y0 + 1]++;
+        int32_t row0;
+        if (rast__ss_tri_first(&tris[3 * k], &g, fine.y0, fine.y1, &row0)) {
+            bucket[row0 - fine.y0 + 1]++;
             n++;
         }
     }

@@ -690,15 +690,40 @@ static inline void rast__ss_bits(uint64_t *bits, int32_t a, int32_t b)
     bits[kb] |= mb;
 }
 
+/* Set bits [a, b) (a < b) of a row of words as rast__ss_bits does: where
+ * the words' bytes are in little-endian order (bit i of the row is bit
+ * i mod 8 of its byte i / 8) a run of at most 57 bits is one OR of the 8
+ * bytes from a's, when they lie within the row (a < lim, 64 wpr - 56 for
+ * rows of wpr words: its bits past b are 0, so the bytes it reaches
+ * past the run's keep their values). */
+static inline void rast__ss_bits_run(uint64_t *bits, int32_t a, int32_t b, int32_t lim)
+{
+#if defined(__BYTE_ORDER__) && defined(__ORDER_LITTLE_ENDIAN__) && \
+    __BYTE_ORDER__ == __ORDER_LITTLE_ENDIAN__
+    if (b - a <= 57 && a < lim) {
+        unsigned char *p = (unsigned char *)bits + (a >> 3);
+        uint64_t x;
+        memcpy(&x, p, 8);
+        x |= (((uint64_t)1 << (b - a)) - 1) << (a & 7);
+        memcpy(p, &x, 8);
+        return;
+    }
+#else
+    (void)lim;
+#endif
+    rast__ss_bits(bits, a, b);
+}
+
 /* n fine rows of a triangle, its run on each [L's column, R's column)
  * (with `clamp`, between the two, clipped to [fx0, fx1]) set in its row
- * of bits (the first at `row`, wpr words apart), both edges stepped. */
+ * of bits (the first at `row`, wpr words apart), both edges stepped;
+ * `narrow`: the runs are mostly short (rast__ss_bits_run). */
 RAST__HOT void rast__ss_walk(rast__edge *L, rast__edge *R, int32_t n, uint64_t *row, size_t wpr,
-                             int32_t fx0, int32_t fx1, int clamp)
+                             int32_t fx0, int32_t fx1, int clamp, int narrow)
 {
     /* (copies in locals, their columns relative to fx0) */
     rast__edge l = *L, r = *R;
-    const int32_t w = fx1 - fx0;
+    const int32_t w = fx1 - fx0, lim = (int32_t)wpr * 64 - 56;
     l.x -= fx0;
     r.x -= fx0;
     for (; n > 0; n--, row += wpr) {
@@ -709,7 +734,12 @@ RAST__HOT void rast__ss_walk(rast__edge *L, rast__edge *R, int32_t n, uint64_t *
             a = t < 0 ? 0 : t;
             b = b > w ? w : b;
         }
-        if (a < b) rast__ss_bits(row, a, b);
+        if (a < b) {
+            if (narrow)
+                rast__ss_bits_run(row, a, b, lim);
+            else
+                rast__ss_bits(row, a, b);
+        }
         rast__edge_step(&l);
         rast__edge_step(&r);
     }
@@ -1069,11 +1099,16 @@ rast_status rast__cov_ss_tris(const rast_point *tris, uint32_t ntris, int32_t s,
                 if (direct) { /* each run straight into its row's bits */
                     uint64_t *row = bits + (size_t)(y - top) * wpr;
                     if (r->clamp)
-                        rast__ss_walk(&l, &e, stop - y, row, wpr, fx0, fx1, 1);
+                        rast__ss_walk(&l, &e, stop - y, row, wpr, fx0, fx1, 1, 0);
+                    else if (r->c1 - r->c0 > 256) /* wide: runs mostly long */
+                        if (r->flip)
+                            rast__ss_walk(&e, &l, stop - y, row, wpr, fx0, fx1, 0, 0);
+                        else
+                            rast__ss_walk(&l, &e, stop - y, row, wpr, fx0, fx1, 0, 0);
                     else if (r->flip)
-                        rast__ss_walk(&e, &l, stop - y, row, wpr, fx0, fx1, 0);
+                        rast__ss_walk(&e, &l, stop - y, row, wpr, fx0, fx1, 0, 1);
                     else
-                        rast__ss_walk(&l, &e, stop - y, row, wpr, fx0, fx1, 0);
+                        rast__ss_walk(&l, &e, stop - y, row, wpr, fx0, fx1, 0, 1);
                     y = stop > y ? stop : y;
                 } else {
                     for (; y < stop; y++) {

@@ -548,8 +548,10 @@ static int rast__ss_cancel(rast__ss *ss, const rast_point *tris, uint32_t ntris,
  * x of the other) sets bits in a row of bits; the row's runs of set bits
  * then go into the counts.  No sort of edges by column (the AET's cost
  * when many triangles overlap): a fine row costs its triangles and a pass
- * over the words they touched.  The k fine rows of an output row are
- * walked together, a triangle at a time (rows of bits for each). */
+ * over the words they touched.  The k fine rows of an output row, or of
+ * a band of up to RAST__SS_BAND of them while fewer than 256 triangles
+ * are active, are walked together, a triangle at a time (rows of bits
+ * for each). */
 
 /* A triangle on the fine grid, what its walk reads on every output row
  * (the table of them is walked once per output row: the smaller, the
@@ -1019,10 +1021,12 @@ rast_status rast__cov_ss_tris(const rast_point *tris, uint32_t ntris, int32_t s,
             rast__ss_tri_setup(&table[at], &low[at], v, row, &g, ss.fx0, ss.fx1);
         }
     }
-    /* now bucket[j] is where row j's run ends.  An output row (K fine
-     * rows) at a time: each active triangle's record is read once, its K
-     * rows walked with its edges in registers; each fine row keeps a
-     * pending run that the triangles' runs meeting it join. */
+    /* now bucket[j] is where row j's run ends.  A band of output rows
+     * (K fine rows each) at a time: each active triangle's record is read
+     * once, its rows walked with its edges in registers.  Its runs go
+     * straight into the bits, or (many active, or no room for more than
+     * one output row) each fine row keeps a pending run that the
+     * triangles' runs meeting it join. */
     for (b0 = 0; b0 < rows && (nact || first < n); b0 += nb * K) {
         int32_t b1, top = fine.y0 + b0, fx0 = ss.fx0, fx1 = ss.fx1;
         int32_t i, m, t, lo = INT32_MAX, hi = INT32_MIN, fa, fb, overlap, direct, span;
@@ -1033,11 +1037,12 @@ rast_status rast__cov_ss_tris(const rast_point *tris, uint32_t ntris, int32_t s,
         nb = nb < (rows - b0) >> kbits ? nb : (rows - b0) >> kbits;
         span = nb * K;
         b1 = b0 + span;
-        /* few active: in order of their left ends, so that neighbours' runs
-         * join; many (they overlap anyway): in table order, which walks
-         * the records in memory order */
+        /* few active an output row at a time (no room for a band): in
+         * order of their left ends, so that neighbours' runs join; else
+         * (runs straight into the bits, or many that overlap anyway) in
+         * table order, which walks the records in memory order */
         for (; first < bucket[b1 - 1]; first++)
-            if (nact < 256)
+            if (nact < 256 && band == 1)
                 nact = rast__ss_insert(table, act, nact, first);
             else
                 act[nact++] = first;

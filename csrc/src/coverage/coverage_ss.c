@@ -553,6 +553,18 @@ static int rast__ss_cancel(rast__ss *ss, const rast_point *tris, uint32_t ntris,
  * are active, are walked together, a triangle at a time (rows of bits
  * for each). */
 
+/* Output rows walked together when few triangles are active, their runs
+ * straight into the bits.  Size-optimised builds keep the smaller walk
+ * of before: an output row at a time, every run through the pending
+ * ones (the same bits, the same pixels). */
+#if defined(__OPTIMIZE_SIZE__)
+#define RAST__SS_BAND 1
+#define RAST__SS_DIRECT 0
+#else
+#define RAST__SS_BAND 8
+#define RAST__SS_DIRECT 1
+#endif
+
 /* A triangle on the fine grid, what its walk reads on every output row
  * (the table of them is walked once per output row: the smaller, the
  * fewer bytes read): edge 0 from its top to its bottom vertex and edge 1
@@ -653,6 +665,7 @@ static void rast__ss_tri_setup(rast__ss_tri *r, rast__edge *low, const rast_poin
                                const int32_t *row, const rast__grid *g, int32_t fx0, int32_t fx1)
 {
     rast__edge ed;
+#if RAST__SS_DIRECT
     /* a crossing's column lies between its edge's ends' columns (the
      * first at or right of a point, as for rows); the middle vertex right
      * of the long edge (clockwise on screen) puts that edge on the left */
@@ -663,6 +676,10 @@ static void rast__ss_tri_setup(rast__ss_tri *r, rast__edge *low, const rast_poin
     r->c0 = (int32_t)(c0 < fx0 ? fx0 : c0 > fx1 ? fx1 : c0);
     r->c1 = (int32_t)(c1 < fx0 ? fx0 : c1 > fx1 ? fx1 : c1);
     r->flip = rast__cross3(v[0], v[1], v[2]) < 0;
+#else
+    (void)fx0;
+    (void)fx1;
+#endif
     /* the long edge's rows are the short edges' rows, one after the other */
     rast__edge_start_tri(&ed, v[0], v[2], 1, row[0], row[2], g);
     rast__ss_set(r, 0, &ed);
@@ -962,9 +979,6 @@ static void rast__ss_grow(uint64_t *bits, size_t wpr, int32_t K, int32_t fx0, in
     }
 }
 
-/* Output rows walked together when few triangles are active. */
-#define RAST__SS_BAND 8
-
 rast_status rast__cov_ss_tris(const rast_point *tris, uint32_t ntris, int32_t s, int32_t kbits,
                               rast_sample sample, const rast__cov_out *o, rast__arena *arena)
 {
@@ -1048,7 +1062,7 @@ rast_status rast__cov_ss_tris(const rast_point *tris, uint32_t ntris, int32_t s,
                 act[nact++] = first;
         if (!nact) continue;
         overlap = nb == 1 && nact >= 256;
-        direct = !overlap;
+        direct = RAST__SS_DIRECT && !overlap;
         for (t = 0; t < K; t++) pa[t] = pb[t] = 0;
         fa = fb = 0;
         for (i = 0, m = 0; i < nact; i++) {

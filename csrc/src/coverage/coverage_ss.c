@@ -490,6 +490,12 @@ static int rast__ss_cancel(rast__ss *ss, const rast_point *tris, uint32_t ntris,
         if (slot[h] < 0) {
             slot[h] = i;
             left += p.y != q.y;
+            /* each edge still to come takes at most one off `left`: when
+             * even that leaves more than half, the test below fails now */
+            if (((int64_t)left - ((int64_t)ntris * 3 - 1 - i)) * 2 > (int64_t)ntris * 3) {
+                *arena = keep;
+                return 0;
+            }
         } else {
             const int32_t was = seg[slot[h]].n, now = was + seg[i].n;
             seg[slot[h]].n = now;
@@ -542,8 +548,22 @@ static int rast__ss_cancel(rast__ss *ss, const rast_point *tris, uint32_t ntris,
  * x of the other) sets bits in a row of bits; the row's runs of set bits
  * then go into the counts.  No sort of edges by column (the AET's cost
  * when many triangles overlap): a fine row costs its triangles and a pass
- * over the words they touched.  The k fine rows of an output row are
- * walked together, a triangle at a time (rows of bits for each). */
+ * over the words they touched.  The k fine rows of an output row, or of
+ * a band of up to RAST__SS_BAND of them while fewer than 256 triangles
+ * are active, are walked together, a triangle at a time (rows of bits
+ * for each). */
+
+/* Output rows walked together when few triangles are active, their runs
+ * straight into the bits.  Size-optimised builds keep the smaller walk
+ * of before: an output row at a time, every run through the pending
+ * ones (the same bits, the same pixels). */
+#if defined(__OPTIMIZE_SIZE__)
+#define RAST__SS_BAND 1
+#define RAST__SS_DIRECT 0
+#else
+#define RAST__SS_BAND 8
+#define RAST__SS_DIRECT 1
+#endif
 
 /* A triangle on the fine grid, what its walk reads on every output row
  * (the table of them is walked once per output row: the smaller, the
@@ -557,6 +577,11 @@ typedef struct rast__ss_tri {
                        worked out yet, -2: too far to take */
     int32_t x[2], step[2], end[2], stepk[2];
     int32_t row, next;
+    int32_t c0, c1; /* every run's columns within [c0, c1] (the vertices'
+                       columns, clipped) */
+    int32_t flip;   /* 1: edge 1 is the left one (else edge 0, or both the
+                       same: no run) */
+    int32_t clamp;  /* 1: a run may reach outside the clip's columns */
 } rast__ss_tri;
 
 /* Edge k of triangle r (held in *ed) moved k rows on: one step of the
@@ -620,11 +645,41 @@ static int rast__ss_tri_rows(const rast_point *t, const rast__grid *g, int32_t l
     return row[0] < row[2];
 }
 
+/* The first of the rows [lo, hi) triangle t crosses into *first (its
+ * vertices' least row, as rast__ss_tri_rows' row[0], without sorting
+ * them); 0 when it crosses none of them. */
+static int rast__ss_tri_first(const rast_point *t, const rast__grid *g, int32_t lo, int32_t hi,
+                              int32_t *first)
+{
+    const int32_t a = t[0].y < t[1].y ? t[0].y : t[1].y, b = t[0].y < t[1].y ? t[1].y : t[0].y;
+    int64_t r0 = rast__row_at_or_after(2 * (int64_t)(a < t[2].y ? a : t[2].y), g),
+            r2 = rast__row_at_or_after(2 * (int64_t)(b > t[2].y ? b : t[2].y), g);
+    r0 = r0 < lo ? lo : r0 > hi ? hi : r0;
+    r2 = r2 < lo ? lo : r2 > hi ? hi : r2;
+    *first = (int32_t)r0;
+    return r0 < r2;
+}
+
 /* Its edges into *r and *low, from rast__ss_tri_rows' v[] and row[]. */
 static void rast__ss_tri_setup(rast__ss_tri *r, rast__edge *low, const rast_point *v,
-                               const int32_t *row, const rast__grid *g)
+                               const int32_t *row, const rast__grid *g, int32_t fx0, int32_t fx1)
 {
     rast__edge ed;
+#if RAST__SS_DIRECT
+    /* a crossing's column lies between its edge's ends' columns (the
+     * first at or right of a point, as for rows); the middle vertex right
+     * of the long edge (clockwise on screen) puts that edge on the left */
+    const int32_t xa = v[0].x < v[1].x ? v[0].x : v[1].x, xb = v[0].x < v[1].x ? v[1].x : v[0].x;
+    const int64_t c0 = rast__row_at_or_after(2 * (int64_t)(xa < v[2].x ? xa : v[2].x), g),
+                  c1 = rast__row_at_or_after(2 * (int64_t)(xb > v[2].x ? xb : v[2].x), g);
+    r->clamp = c0 < fx0 || c1 > fx1;
+    r->c0 = (int32_t)(c0 < fx0 ? fx0 : c0 > fx1 ? fx1 : c0);
+    r->c1 = (int32_t)(c1 < fx0 ? fx0 : c1 > fx1 ? fx1 : c1);
+    r->flip = rast__cross3(v[0], v[1], v[2]) < 0;
+#else
+    (void)fx0;
+    (void)fx1;
+#endif
     /* the long edge's rows are the short edges' rows, one after the other */
     rast__edge_start_tri(&ed, v[0], v[2], 1, row[0], row[2], g);
     rast__ss_set(r, 0, &ed);
@@ -652,6 +707,65 @@ static inline void rast__ss_bits(uint64_t *bits, int32_t a, int32_t b)
     bits[ka] |= ma;
     for (k = ka + 1; k < kb; k++) bits[k] = ~(uint64_t)0;
     bits[kb] |= mb;
+}
+
+/* Set bits [a, b) (a < b) of a row of words as rast__ss_bits does: where
+ * the words' bytes are in little-endian order (bit i of the row is bit
+ * i mod 8 of its byte i / 8) a run of at most 57 bits is one OR of the 8
+ * bytes from a's, when they lie within the row (a < lim, 64 wpr - 56 for
+ * rows of wpr words: its bits past b are 0, so the bytes it reaches
+ * past the run's keep their values). */
+static inline void rast__ss_bits_run(uint64_t *bits, int32_t a, int32_t b, int32_t lim)
+{
+#if defined(__BYTE_ORDER__) && defined(__ORDER_LITTLE_ENDIAN__) && \
+    __BYTE_ORDER__ == __ORDER_LITTLE_ENDIAN__
+    if (b - a <= 57 && a < lim) {
+        unsigned char *p = (unsigned char *)bits + (a >> 3);
+        uint64_t x;
+        memcpy(&x, p, 8);
+        x |= (((uint64_t)1 << (b - a)) - 1) << (a & 7);
+        memcpy(p, &x, 8);
+        return;
+    }
+#else
+    (void)lim;
+#endif
+    rast__ss_bits(bits, a, b);
+}
+
+/* n fine rows of a triangle, its run on each [L's column, R's column)
+ * (with `clamp`, between the two, clipped to [fx0, fx1]) set in its row
+ * of bits (the first at `row`, wpr words apart), both edges stepped;
+ * `narrow`: the runs are mostly short (rast__ss_bits_run). */
+RAST__HOT void rast__ss_walk(rast__edge *L, rast__edge *R, int32_t n, uint64_t *row, size_t wpr,
+                             int32_t fx0, int32_t fx1, int clamp, int narrow)
+{
+    /* (copies in locals, their columns relative to fx0) */
+    rast__edge l = *L, r = *R;
+    const int32_t w = fx1 - fx0, lim = (int32_t)wpr * 64 - 56;
+    l.x -= fx0;
+    r.x -= fx0;
+    for (; n > 0; n--, row += wpr) {
+        int32_t a = l.x, b = r.x;
+        if (clamp) {
+            const int32_t t = a < b ? a : b;
+            b = a < b ? b : a;
+            a = t < 0 ? 0 : t;
+            b = b > w ? w : b;
+        }
+        if (a < b) {
+            if (narrow)
+                rast__ss_bits_run(row, a, b, lim);
+            else
+                rast__ss_bits(row, a, b);
+        }
+        rast__edge_step(&l);
+        rast__edge_step(&r);
+    }
+    L->e = l.e;
+    R->e = r.e;
+    L->x = l.x + fx0;
+    R->x = r.x + fx0;
 }
 
 /* The samples of word k of the K rows of bits (wpr words apart) counted
@@ -876,7 +990,7 @@ rast_status rast__cov_ss_tris(const rast_point *tris, uint32_t ntris, int32_t s,
     int32_t *bucket, *act;
     uint64_t *bits;
     uint32_t k;
-    int32_t j, b0, n = 0, nact = 0, first = 0, rows, pa[16], pb[16];
+    int32_t j, b0, n = 0, nact = 0, first = 0, rows, pa[16], pb[16], band, nb = 1;
     const int32_t K = (int32_t)1 << kbits;
     size_t wpr;
     rast_status st = rast__grid_init(&g, s, sample, RAST_ROUND_EXACT, RAST_BOUNDARY_EXACT);
@@ -894,17 +1008,21 @@ rast_status rast__cov_ss_tris(const rast_point *tris, uint32_t ntris, int32_t s,
     low = (rast__edge *)rast__take(arena, (size_t)ntris * sizeof(rast__edge));
     act = (int32_t *)rast__take(arena, (size_t)ntris * sizeof(int32_t));
     bucket = (int32_t *)rast__take(arena, ((size_t)rows + 1) * sizeof(int32_t));
-    bits = (uint64_t *)rast__take(arena, (size_t)K * wpr * 8);
+    /* rows of bits for a band of up to RAST__SS_BAND output rows, as many
+     * as the room left holds (the scratch holds one; the records leave
+     * more when there are many triangles) */
+    band = (int32_t)(arena->left / (rast__align((size_t)K * wpr * 8) + RAST_SCRATCH_ALIGN));
+    band = band < 1 ? 1 : band > RAST__SS_BAND ? RAST__SS_BAND : band;
+    bits = (uint64_t *)rast__take(arena, (size_t)band * K * wpr * 8);
     if ((ntris && (!table || !low || !act)) || !bucket || !bits) return RAST_E_SCRATCH;
     memset(bucket, 0, ((size_t)rows + 1) * sizeof(int32_t));
-    memset(bits, 0, (size_t)K * wpr * 8);
+    memset(bits, 0, (size_t)band * K * wpr * 8);
     /* the triangles grouped by first row (a counting sort: counted, then
      * set up where their row's run goes) */
     for (k = 0; k < ntris; k++) {
-        rast_point v[3];
-        int32_t row[3];
-        if (rast__ss_tri_rows(&tris[3 * k], &g, fine.y0, fine.y1, v, row)) {
-            bucket[row[0] - fine.y0 + 1]++;
+        int32_t row0;
+        if (rast__ss_tri_first(&tris[3 * k], &g, fine.y0, fine.y1, &row0)) {
+            bucket[row0 - fine.y0 + 1]++;
             n++;
         }
     }
@@ -914,26 +1032,37 @@ rast_status rast__cov_ss_tris(const rast_point *tris, uint32_t ntris, int32_t s,
         int32_t row[3];
         if (rast__ss_tri_rows(&tris[3 * k], &g, fine.y0, fine.y1, v, row)) {
             int32_t at = bucket[row[0] - fine.y0]++;
-            rast__ss_tri_setup(&table[at], &low[at], v, row, &g);
+            rast__ss_tri_setup(&table[at], &low[at], v, row, &g, ss.fx0, ss.fx1);
         }
     }
-    /* now bucket[j] is where row j's run ends.  An output row (K fine
-     * rows) at a time: each active triangle's record is read once, its K
-     * rows walked with its edges in registers; each fine row keeps a
-     * pending run that the triangles' runs meeting it join. */
-    for (b0 = 0; b0 < rows && (nact || first < n); b0 += K) {
-        const int32_t b1 = b0 + K, top = fine.y0 + b0, fx0 = ss.fx0, fx1 = ss.fx1;
-        int32_t i, m, t, lo = INT32_MAX, hi = INT32_MIN, fa, fb, overlap;
-        /* few active: in order of their left ends, so that neighbours' runs
-         * join; many (they overlap anyway): in table order, which walks
-         * the records in memory order */
+    /* now bucket[j] is where row j's run ends.  A band of output rows
+     * (K fine rows each) at a time: each active triangle's record is read
+     * once, its rows walked with its edges in registers.  Its runs go
+     * straight into the bits, or (many active, or no room for more than
+     * one output row) each fine row keeps a pending run that the
+     * triangles' runs meeting it join. */
+    for (b0 = 0; b0 < rows && (nact || first < n); b0 += nb * K) {
+        int32_t b1, top = fine.y0 + b0, fx0 = ss.fx0, fx1 = ss.fx1;
+        int32_t i, m, t, lo = INT32_MAX, hi = INT32_MIN, fa, fb, overlap, direct, span;
+        /* few active: a band of output rows at once (a triangle's record
+         * read once for them all), each run straight into its row's bits;
+         * many: an output row at a time (below) */
+        nb = nact < 256 ? band : 1;
+        nb = nb < (rows - b0) >> kbits ? nb : (rows - b0) >> kbits;
+        span = nb * K;
+        b1 = b0 + span;
+        /* few active an output row at a time (no room for a band): in
+         * order of their left ends, so that neighbours' runs join; else
+         * (runs straight into the bits, or many that overlap anyway) in
+         * table order, which walks the records in memory order */
         for (; first < bucket[b1 - 1]; first++)
-            if (nact < 256)
+            if (nact < 256 && band == 1)
                 nact = rast__ss_insert(table, act, nact, first);
             else
                 act[nact++] = first;
         if (!nact) continue;
-        overlap = nact >= 256;
+        overlap = nb == 1 && nact >= 256;
+        direct = RAST__SS_DIRECT && !overlap;
         for (t = 0; t < K; t++) pa[t] = pb[t] = 0;
         fa = fb = 0;
         for (i = 0, m = 0; i < nact; i++) {
@@ -942,7 +1071,7 @@ rast_status rast__cov_ss_tris(const rast_point *tris, uint32_t ntris, int32_t s,
             int32_t y = r->row, end, sw, low_in = 0;
             rast__ss_get(r, 0, &l);
             rast__ss_get(r, 1, &e);
-            end = l.end < top + K ? l.end : top + K;
+            end = l.end < top + span ? l.end : top + span;
             sw = r->next ? e.end : INT32_MAX; /* where the edge below the middle takes over */
             if (overlap && y == top && end == top + K && sw >= top + K) {
                 /* straight across the K rows: F (see above) */
@@ -978,31 +1107,54 @@ rast_status rast__cov_ss_tris(const rast_point *tris, uint32_t ntris, int32_t s,
                     if (u0 < v0 && l.x != e.x) rast__ss_grow(bits, wpr, K, fx0, u0, v0, &fa, &fb);
                 }
             }
-            for (; y < end; y++) {
-                int32_t a = l.x < e.x ? l.x : e.x, b = l.x < e.x ? e.x : l.x;
-                t = y - top;
-                a = a < fx0 ? fx0 : a;
-                b = b > fx1 ? fx1 : b;
-                if (a <= pb[t] && b >= pa[t]) {
-                    pa[t] = a < pa[t] ? a : pa[t];
-                    pb[t] = b > pb[t] ? b : pb[t];
-                } else if (a < b) {
-                    if (pa[t] < pb[t]) { /* into the bits; lo, hi: the columns they reach */
-                        rast__ss_bits(bits + (size_t)t * wpr, pa[t] - fx0, pb[t] - fx0);
-                        lo = pa[t] < lo ? pa[t] : lo;
-                        hi = pb[t] > hi ? pb[t] : hi;
-                    }
-                    pa[t] = a;
-                    pb[t] = b;
-                }
-                rast__edge_step(&l);
-                if (y + 1 == sw) {
-                    e = low[act[i]];
-                    sw = INT32_MAX;
-                    low_in = 1;
+            /* the rows to the end of the output row or of edge 0, the
+             * lower edge taking over from edge 1 on its first row */
+            if (direct) {
+                lo = r->c0 < lo ? r->c0 : lo;
+                hi = r->c1 > hi ? r->c1 : hi;
+            }
+            for (;;) {
+                const int32_t stop = end < sw ? end : sw;
+                if (direct) { /* each run straight into its row's bits */
+                    uint64_t *row = bits + (size_t)(y - top) * wpr;
+                    if (r->clamp)
+                        rast__ss_walk(&l, &e, stop - y, row, wpr, fx0, fx1, 1, 0);
+                    else if (r->c1 - r->c0 > 256) /* wide: runs mostly long */
+                        if (r->flip)
+                            rast__ss_walk(&e, &l, stop - y, row, wpr, fx0, fx1, 0, 0);
+                        else
+                            rast__ss_walk(&l, &e, stop - y, row, wpr, fx0, fx1, 0, 0);
+                    else if (r->flip)
+                        rast__ss_walk(&e, &l, stop - y, row, wpr, fx0, fx1, 0, 1);
+                    else
+                        rast__ss_walk(&l, &e, stop - y, row, wpr, fx0, fx1, 0, 1);
+                    y = stop > y ? stop : y;
                 } else {
-                    rast__edge_step(&e);
+                    for (; y < stop; y++) {
+                        int32_t a = l.x < e.x ? l.x : e.x, b = l.x < e.x ? e.x : l.x;
+                        t = y - top;
+                        a = a < fx0 ? fx0 : a;
+                        b = b > fx1 ? fx1 : b;
+                        if (a <= pb[t] && b >= pa[t]) {
+                            pa[t] = a < pa[t] ? a : pa[t];
+                            pb[t] = b > pb[t] ? b : pb[t];
+                        } else if (a < b) {
+                            if (pa[t] < pb[t]) { /* into the bits; lo, hi: the columns they reach */
+                                rast__ss_bits(bits + (size_t)t * wpr, pa[t] - fx0, pb[t] - fx0);
+                                lo = pa[t] < lo ? pa[t] : lo;
+                                hi = pb[t] > hi ? pb[t] : hi;
+                            }
+                            pa[t] = a;
+                            pb[t] = b;
+                        }
+                        rast__edge_step(&l);
+                        rast__edge_step(&e);
+                    }
                 }
+                if (y != sw) break;
+                e = low[act[i]];
+                sw = INT32_MAX;
+                low_in = 1;
             }
         walked:
             if (y == l.end) continue; /* done: dropped */
@@ -1035,7 +1187,9 @@ rast_status rast__cov_ss_tris(const rast_point *tris, uint32_t ntris, int32_t s,
             }
         }
         if (lo >= hi) continue; /* no run */
-        rast__ss_bits_row(&ss, b0 >> kbits, bits, wpr, (lo - fx0) >> 6, (hi - fx0 - 1) >> 6);
+        for (t = 0; t < nb; t++)
+            rast__ss_bits_row(&ss, (b0 >> kbits) + t, bits + (size_t)t * K * wpr, wpr, (lo - fx0) >> 6,
+                              (hi - fx0 - 1) >> 6);
     }
     rast__cov_zero_rows(o, o->clip.y0 + ss.next, o->clip.y1);
     return RAST_OK;

@@ -1337,6 +1337,33 @@ static void rast__acc_by_rows(const rast__acc_walk *w, rast__acc *a)
     }
 }
 
+#if !defined(__OPTIMIZE_SIZE__)
+/* A band's row j with a level near a tie by the window of all its parts
+ * (rast__acc_win of the row's count): its q parts w->tmp[0..q) deposited
+ * again into its cells a (cleared), a row at a time as rast__acc_by_rows
+ * does, counted per 16 columns, so that each pixel's window is that of the
+ * parts that touch its columns, not of the row's (a thousand parts on a
+ * row of a thousand small triangles, twenty or so in any 16 columns: one
+ * row in thirty went to the exact sweep, at ~470 instructions a part, where
+ * this takes ~100).  Returns rast__acc_emit's: 1 when done.  The edges'
+ * steppers are left at this row (the next band finds them by their tags);
+ * the counts' room, after z[] in area[] as the rows' walk has it, cleared
+ * as the walk's (the caller clears area[] before the first time). */
+static int rast__acc_again(rast__acc *a, const rast__acc_walk *w, int32_t j, int32_t q)
+{
+    rast__cedge *const e = w->e;
+    const int64_t Yj = (int64_t)j * a->p;
+    int32_t k, done;
+    a->dense = (int64_t)q * RAST__ACC_DENSE >= w->width;
+    a->cnt = a->z + w->width;
+    for (k = 0; k < q; k++)
+        rast__acc_row_part_in(a, &e[w->tmp[k]], j, (int64_t)e[w->tmp[k]].yt - Yj, RAST__ACC_SX, 1);
+    done = rast__acc_emit(a, RAST__ACC_SX, w->o, j, w->rule, w->m, 0, e, w->tmp, q);
+    a->cnt = NULL;
+    return done;
+}
+#endif
+
 /* Rows ja to jb a band of RAST__ACC_BAND at a time, into the cells v[r] of
  * the band's row r, each edge walked over the band's rows at once
  * (rast__acc_edge; the long edges' walk); the exact rows' cells cleared
@@ -1428,6 +1455,11 @@ static void rast__acc_by_bands(const rast__acc_walk *w, rast__acc *v)
                 for (k = 0; k < w->nw; k++) w->bits[k] = 0;
                 clean = 1;
             }
+#if !defined(__OPTIMIZE_SIZE__)
+            /* (the parts counted per 16 columns first, when there are
+             * enough of them for it to narrow the window) */
+            if (ok[r] && q >= RAST__ACC_FEW && rast__acc_again(&v[r], w, j, q)) continue;
+#endif
             rast__cov_exact_steps_of(e, w->tmp, q, w->exact);
             rast__cov_acc_exact_row(e, w->tmp, q, j, w->s, w->rule, o, w->cover, w->area, w->bits);
         }

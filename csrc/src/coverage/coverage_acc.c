@@ -77,6 +77,14 @@
  * the loop family 1%, 1 the text family 24%: callgrind, families.py seed
  * 0, 512 x 512) */
 #define RAST__ACC_LONG 8
+/* Dense uint8 non-zero rows of 256 parts or more summed the quick way too
+ * (rast__acc_sum24's big), but in size-optimised builds, which keep the
+ * smaller way (a cell at a time) */
+#if defined(__OPTIMIZE_SIZE__)
+#define RAST__ACC_BIG24 0
+#else
+#define RAST__ACC_BIG24 1
+#endif
 /* With AVX2, a band's cells of a column, one for each of its rows, are
  * next to each other (so that the rows are read out together, a column at
  * a time: rast__acc_quad): a band row's cells are RAST__ACC_SX words
@@ -450,7 +458,7 @@ RAST__APART void rast__acc_cols_l(rast__acc *a, rast__cedge *e, int64_t off, int
 typedef struct rast__acc_run {
     int64_t qx, qxs, bias, ca; /* qx from the clip's left side (bias: its abscissa), >= 0; ca its column */
     uint64_t neg;
-    uint32_t qxr, qxsr, dy;
+    uint32_t qxr, qxsr, dy, adx; /* (adx = |dx|, but in size-optimised builds) */
 } rast__acc_run;
 
 /* e's part in the row of cells a that it runs through, whole, at the
@@ -474,7 +482,11 @@ RAST__HOT void rast__acc_run_row(rast__acc *a, rast__cedge *e, rast__acc_run *u,
         /* one vertical crossed, the column stepper there (as the last
          * crossing left it): the two columns' pieces here, with no call */
         const uint64_t t = (uint64_t)(e->qt - off);
+#if defined(__OPTIMIZE_SIZE__)
         const uint32_t adx = (uint32_t)(e->dx < 0 ? -e->dx : e->dx);
+#else
+        const uint32_t adx = u->adx; /* (once a band: 1% of the spanning triangles' instructions) */
+#endif
         uint32_t qtr = e->qtr + e->qtsr;
         rast__acc_put(a->acc, ca, (uint64_t)u->qx & fm, right ? QT : 0, t, u->neg, RAST__ACC_SX);
         rast__acc_put(a->acc, cb, right ? 0 : QT, (uint64_t)xb & fm, QT - t, u->neg, RAST__ACC_SX);
@@ -506,6 +518,9 @@ RAST__HOT void rast__acc_run_init(rast__acc_run *u, const rast__acc *v, const ra
     u->qxs = e->qxs;
     u->qxsr = e->qxsr;
     u->dy = (uint32_t)e->dy;
+#if !defined(__OPTIMIZE_SIZE__)
+    u->adx = (uint32_t)(e->dx < 0 ? -e->dx : e->dx);
+#endif
     u->neg = e->dir < 0 ? ~(uint64_t)0 : 0;
     u->bias = (int64_t)v->x0 * (int64_t)QT;
     u->qx -= u->bias;
@@ -642,35 +657,49 @@ RAST__HOT uint64_t rast__acc_level(int64_t v, rast_fill_rule rule, uint32_t m, u
     return x >> 51;
 }
 
+/* A dense row's z for the running sum v (from 2^62, or from 0 when big:
+ * see rast__acc_sum24); big is a constant at each call. */
+RAST__HOT uint32_t rast__acc_z(uint64_t v, int big)
+{
+    return (uint32_t)((big ? rast__acc_apply(v, RAST_RULE_NONZERO) : v) >> 27);
+}
+
 /* Dense uint8 rows in two passes, the second of which a compiler can run
  * on 16 cells at a time.  The first sums cells [lo, hi) and leaves in each
  * z = floor(v / 2^27) modulo 2^32 (v = 2^51 a, the running sum: |a| <= n /
  * 2, n the row's parts), nothing else, so that the rule is applied in the
  * second pass, on 32 bits: z is v / 2^27 exactly as a signed 32-bit value
  * when |a| < 2^7 (n < 256: the caller's condition for non-zero), and its
- * low 25 bits are (v mod 2^52) / 2^27 floored whatever n (even-odd). */
-RAST__HOT void rast__acc_sum24(uint64_t *restrict acc, uint32_t *restrict z, int32_t lo, int32_t hi, int32_t step)
+ * low 25 bits are (v mod 2^52) / 2^27 floored whatever n (even-odd).  For
+ * non-zero with more parts (big, a constant at each call), z is
+ * min(|v|, 2^51) / 2^27 floored, the rule applied on 64 bits
+ * (rast__acc_apply): 0 <= z <= 2^24, which the second pass's non-zero
+ * rule leaves as it is, within one unit of 2^24 a' as before (a paragraph
+ * of text or a thousand triangles on a row: their rows were summed a cell
+ * at a time, twice the instructions). */
+RAST__HOT void rast__acc_sum24(uint64_t *restrict acc, uint32_t *restrict z, int32_t lo, int32_t hi, int32_t step,
+                               int big)
 {
     /* from 2^62: no >> of a negative value; it adds 2^35 to the floor,
      * which leaves the low 32 bits as they were; the cells step words
      * apart */
     const size_t sx = (size_t)step;
-    uint64_t v = (uint64_t)1 << 62, *c = acc + (size_t)lo * sx;
+    uint64_t v = big ? 0 : (uint64_t)1 << 62, *c = acc + (size_t)lo * sx;
     size_t n = (size_t)(hi - lo), i;
     z += lo;
     for (; n >= 4; n -= 4, c += 4 * sx, z += 4) { /* (4 a turn, written out: -O2 does not unroll) */
         const uint64_t v0 = v + c[0], v1 = v0 + c[sx], v2 = v1 + c[2 * sx];
         v = v2 + c[3 * sx];
-        z[0] = (uint32_t)(v0 >> 27);
-        z[1] = (uint32_t)(v1 >> 27);
-        z[2] = (uint32_t)(v2 >> 27);
-        z[3] = (uint32_t)(v >> 27);
+        z[0] = rast__acc_z(v0, big);
+        z[1] = rast__acc_z(v1, big);
+        z[2] = rast__acc_z(v2, big);
+        z[3] = rast__acc_z(v, big);
         c[0] = c[sx] = c[2 * sx] = c[3 * sx] = 0;
     }
     for (i = 0; i < n; i++) {
         v += c[i * sx];
         c[i * sx] = 0;
-        z[i] = (uint32_t)(v >> 27);
+        z[i] = rast__acc_z(v, big);
     }
 }
 
@@ -763,19 +792,31 @@ rast__acc_lanes8(uint32_t *z, __m256i vw, __m256i vlim, __m256i *below, __m256i 
     return rast__acc_x8(x, vw, vlim, below, above, rule);
 }
 
+/* rast__acc_apply's non-zero rule on 4 lanes of running sums (from 0) */
+__attribute__((target("avx2"), always_inline)) static inline __m256i rast__acc_nz4(__m256i v)
+{
+    const __m256i one = _mm256_set1_epi64x(QONE), neg = _mm256_cmpgt_epi64(_mm256_setzero_si256(), v);
+    v = _mm256_sub_epi64(_mm256_xor_si256(v, neg), neg);
+    return _mm256_blendv_epi8(v, one, _mm256_cmpgt_epi64(v, one));
+}
+
 /* Two columns' levels in the 4 rows of a band: the running sums s (of
  * the columns so far, one lane a row) plus the cells at c, then at c + 4
  * (cleared): [k0 k1 l0 l1 | k2 k3 l2 l3], k and l the columns, 0..3 the
- * rows (vw, vlim in that order) */
+ * rows (vw, vlim in that order); big as rast__acc_sum24's (s from 0) */
 __attribute__((target("avx2"), always_inline)) static inline __m256i
 rast__acc_pair8(uint64_t *c, __m256i *s, __m256i vw, __m256i vlim, __m256i *below, __m256i *above,
-                rast_fill_rule rule)
+                rast_fill_rule rule, int big)
 {
     __m256i *p = (__m256i *)(void *)c, a, b;
     a = *s = _mm256_add_epi64(*s, _mm256_loadu_si256(p));
     b = *s = _mm256_add_epi64(*s, _mm256_loadu_si256(p + 1));
     _mm256_storeu_si256(p, _mm256_setzero_si256());
     _mm256_storeu_si256(p + 1, _mm256_setzero_si256());
+    if (big) {
+        a = rast__acc_nz4(a);
+        b = rast__acc_nz4(b);
+    }
     a = _mm256_srli_epi64(a, 27); /* (z, as rast__acc_sum24's, in each low word) */
     b = _mm256_srli_epi64(b, 27);
     return rast__acc_x8(_mm256_castps_si256(_mm256_shuffle_ps(_mm256_castsi256_ps(a), _mm256_castsi256_ps(b), 0x88)),
@@ -785,11 +826,12 @@ rast__acc_pair8(uint64_t *c, __m256i *s, __m256i vw, __m256i vlim, __m256i *belo
 /* The levels of the 4 rows of a band, out[r] each, from the cells of
  * columns [lo, hi) (cleared), 8 columns at a time, the rest one at a time
  * as rast__acc_sum24 and rast__acc_level24 do (a row's z from its lane);
- * w[r]: row r's window as rast__acc_levels24's.  Returns the rows' tie
- * flags, bit r for row r. */
-__attribute__((target("avx2"))) static uint32_t rast__acc_quad_avx2(uint64_t *restrict cells, int32_t lo,
-                                                                   int32_t hi, unsigned char *const *out,
-                                                                   const uint32_t *w, rast_fill_rule rule)
+ * w[r]: row r's window as rast__acc_levels24's; big as rast__acc_sum24's
+ * (a constant at each call).  Returns the rows' tie flags, bit r for row
+ * r. */
+__attribute__((target("avx2"), always_inline)) static inline uint32_t
+rast__acc_quad_in(uint64_t *restrict cells, int32_t lo, int32_t hi, unsigned char *const *out, const uint32_t *w,
+                  rast_fill_rule rule, int big)
 {
     const uint32_t one = (uint32_t)1 << 24;
     const __m256i vw = _mm256_setr_epi32((int32_t)w[0], (int32_t)w[1], (int32_t)w[0], (int32_t)w[1],
@@ -798,16 +840,17 @@ __attribute__((target("avx2"))) static uint32_t rast__acc_quad_avx2(uint64_t *re
     /* a lane's bytes, the 8 columns of its first row, then of its second */
     const __m256i order = _mm256_setr_epi8(0, 2, 4, 6, 8, 10, 12, 14, 1, 3, 5, 7, 9, 11, 13, 15, 0, 2, 4, 6, 8,
                                            10, 12, 14, 1, 3, 5, 7, 9, 11, 13, 15);
-    __m256i below = _mm256_setzero_si256(), above = below, s = _mm256_set1_epi64x((int64_t)1 << 62), y0, y1, y2, y3;
+    __m256i below = _mm256_setzero_si256(), above = below, s = _mm256_set1_epi64x(big ? 0 : (int64_t)1 << 62), y0,
+            y1, y2, y3;
     uint64_t *c = cells + (size_t)lo * RAST__ACC_SX, v[4];
     uint32_t bad = 0, m, z;
     int32_t k = lo, r;
     for (; hi - k >= 8; k += 8, c += 8 * RAST__ACC_SX) {
         __m128i q0, q1;
-        y0 = rast__acc_pair8(c, &s, vw, vlim, &below, &above, rule);
-        y1 = rast__acc_pair8(c + 2 * RAST__ACC_SX, &s, vw, vlim, &below, &above, rule);
-        y2 = rast__acc_pair8(c + 4 * RAST__ACC_SX, &s, vw, vlim, &below, &above, rule);
-        y3 = rast__acc_pair8(c + 6 * RAST__ACC_SX, &s, vw, vlim, &below, &above, rule);
+        y0 = rast__acc_pair8(c, &s, vw, vlim, &below, &above, rule, big);
+        y1 = rast__acc_pair8(c + 2 * RAST__ACC_SX, &s, vw, vlim, &below, &above, rule, big);
+        y2 = rast__acc_pair8(c + 4 * RAST__ACC_SX, &s, vw, vlim, &below, &above, rule, big);
+        y3 = rast__acc_pair8(c + 6 * RAST__ACC_SX, &s, vw, vlim, &below, &above, rule, big);
         y0 = _mm256_shuffle_epi8(_mm256_packus_epi16(_mm256_packs_epi32(y0, y1), _mm256_packs_epi32(y2, y3)), order);
         q0 = _mm256_castsi256_si128(y0);
         q1 = _mm256_extracti128_si256(y0, 1);
@@ -823,10 +866,18 @@ __attribute__((target("avx2"))) static uint32_t rast__acc_quad_avx2(uint64_t *re
         for (r = 0; r < 4; r++) {
             v[r] += c[r];
             c[r] = 0;
-            z = (uint32_t)(v[r] >> 27);
+            z = rast__acc_z(v[r], big);
             bad |= rast__acc_level24(&z, out[r] + k, w[r], one - 2 * w[r], rule) << r;
         }
     return bad;
+}
+
+/* (one for each big: its test out of the loops) */
+__attribute__((target("avx2"))) static uint32_t rast__acc_quad_avx2(uint64_t *restrict cells, int32_t lo,
+                                                                   int32_t hi, unsigned char *const *out,
+                                                                   const uint32_t *w, rast_fill_rule rule, int big)
+{
+    return big ? rast__acc_quad_in(cells, lo, hi, out, w, rule, 1) : rast__acc_quad_in(cells, lo, hi, out, w, rule, 0);
 }
 
 /* rast__acc_levels24's first 32 n cells and levels, 32 at a time: its
@@ -909,9 +960,19 @@ RAST__HOT uint64_t rast__acc_row(uint64_t *acc, int32_t sx, uint64_t *blk, uint3
     uint16_t *r16 = (uint16_t *)(void *)row;
     int32_t k = lo, wi;
     rast__cov_fill(f, row, 0, lo, 0);
+#if RAST__ACC_BIG24
+    if (dense && m == 255 && lo < hi) {
+        /* (non-zero: big past n = 256, dense 2, or a window that wide;
+         * w < 2^23 for n < RAST__ACC_MAXN) */
+        if (rule == RAST_RULE_NONZERO && (dense == 2 || win > rast__acc_win(255, 255)))
+            rast__acc_sum24(acc, z, lo, hi, sx, 1);
+        else
+            rast__acc_sum24(acc, z, lo, hi, sx, 0);
+#else
     if (dense == 1 && m == 255 && lo < hi && (rule == RAST_RULE_EVENODD || win <= rast__acc_win(255, 255))) {
         /* (non-zero: n < 256; dense 2: every cell read, but not this way) */
-        rast__acc_sum24(acc, z, lo, hi, sx);
+        rast__acc_sum24(acc, z, lo, hi, sx, 0);
+#endif
         bad = rast__acc_levels24(z, row, lo, hi, (uint32_t)(win >> 27) + 256, rule);
         lev = row[hi - 1];
         k = hi;
@@ -1039,8 +1100,9 @@ RAST__HOT int rast__acc_emit(rast__acc *a, int32_t sx, const rast__cov_out *o, i
 
 #ifdef RAST__ACC_AVX2
 /* The 4 rows of the band j0 .. j0 + 3 (cells v[r], all dense, uint8, each
- * as rast__acc_row reads its quickly: cnt[r] parts, rule), read out
- * together (rast__acc_quad_avx2) into o, an array; the cells cleared.
+ * as rast__acc_row reads its quickly: cnt[r] parts, rule; non-zero rows of
+ * 256 parts or more as rast__acc_sum24's big), read out together
+ * (rast__acc_quad_avx2) into o, an array; the cells cleared.
  * Returns 1 with the rows' tie flags in *bad (bit r: row r), or 0 (no
  * cell touched: nothing done). */
 static int rast__acc_quad(rast__acc *v, const rast__cov_out *o, int32_t j0, const int32_t *cnt,
@@ -1061,7 +1123,9 @@ static int rast__acc_quad(rast__acc *v, const rast__cov_out *o, int32_t j0, cons
         win[r] = (uint32_t)(rast__acc_win((uint64_t)cnt[r], 255) >> 27) + 256;
         rast__cov_fill(RAST_COVERAGE_U8, out[r], 0, lo, 0);
     }
-    *bad = rast__acc_quad_avx2(v->acc, lo, hi, out, win, rule);
+    *bad = rast__acc_quad_avx2(v->acc, lo, hi, out, win, rule,
+                               rule == RAST_RULE_NONZERO && (cnt[0] >= 256 || cnt[1] >= 256 || cnt[2] >= 256 ||
+                                                             cnt[3] >= 256));
     for (r = 0; r < 4; r++) {
         rast__cov_fill(RAST_COVERAGE_U8, out[r], hi, w, out[r][hi - 1]);
         v->acc[w * RAST__ACC_SX + r] = 0;
@@ -1280,6 +1344,33 @@ static void rast__acc_by_rows(const rast__acc_walk *w, rast__acc *a)
     }
 }
 
+#if !defined(__OPTIMIZE_SIZE__)
+/* A band's row j with a level near a tie by the window of all its parts
+ * (rast__acc_win of the row's count): its q parts w->tmp[0..q) deposited
+ * again into its cells a (cleared), a row at a time as rast__acc_by_rows
+ * does, counted per 16 columns, so that each pixel's window is that of the
+ * parts that touch its columns, not of the row's (a thousand parts on a
+ * row of a thousand small triangles, twenty or so in any 16 columns: one
+ * row in thirty went to the exact sweep, at ~470 instructions a part, where
+ * this takes ~100).  Returns rast__acc_emit's: 1 when done.  The edges'
+ * steppers are left at this row (the next band finds them by their tags);
+ * the counts' room, after z[] in area[] as the rows' walk has it, cleared
+ * as the walk's (the caller clears area[] before the first time). */
+static int rast__acc_again(rast__acc *a, const rast__acc_walk *w, int32_t j, int32_t q)
+{
+    rast__cedge *const e = w->e;
+    const int64_t Yj = (int64_t)j * a->p;
+    int32_t k, done;
+    a->dense = (int64_t)q * RAST__ACC_DENSE >= w->width;
+    a->cnt = a->z + w->width;
+    for (k = 0; k < q; k++)
+        rast__acc_row_part_in(a, &e[w->tmp[k]], j, (int64_t)e[w->tmp[k]].yt - Yj, RAST__ACC_SX, 1);
+    done = rast__acc_emit(a, RAST__ACC_SX, w->o, j, w->rule, w->m, 0, e, w->tmp, q);
+    a->cnt = NULL;
+    return done;
+}
+#endif
+
 /* Rows ja to jb a band of RAST__ACC_BAND at a time, into the cells v[r] of
  * the band's row r, each edge walked over the band's rows at once
  * (rast__acc_edge; the long edges' walk); the exact rows' cells cleared
@@ -1352,9 +1443,7 @@ static void rast__acc_by_bands(const rast__acc_walk *w, rast__acc *v)
 #ifdef RAST__ACC_AVX2
         /* the four rows read out together, when each would be read the
          * quick way (rast__acc_row) into an array */
-        if (ok[RAST__ACC_BAND] && dense && m == 255 && !o->paint &&
-            (w->rule == RAST_RULE_EVENODD || (cnt[0] < 256 && cnt[1] < 256 && cnt[2] < 256 && cnt[3] < 256)) &&
-            __builtin_cpu_supports("avx2"))
+        if (ok[RAST__ACC_BAND] && dense && m == 255 && !o->paint && __builtin_cpu_supports("avx2"))
             quad = rast__acc_quad(v, o, j0, cnt, w->rule, &qbad);
 #endif
         for (r = 0; r < j1 - j0; r++) {
@@ -1373,6 +1462,11 @@ static void rast__acc_by_bands(const rast__acc_walk *w, rast__acc *v)
                 for (k = 0; k < w->nw; k++) w->bits[k] = 0;
                 clean = 1;
             }
+#if !defined(__OPTIMIZE_SIZE__)
+            /* (the parts counted per 16 columns first, when there are
+             * enough of them for it to narrow the window) */
+            if (ok[r] && q >= RAST__ACC_FEW && rast__acc_again(&v[r], w, j, q)) continue;
+#endif
             rast__cov_exact_steps_of(e, w->tmp, q, w->exact);
             rast__cov_acc_exact_row(e, w->tmp, q, j, w->s, w->rule, o, w->cover, w->area, w->bits);
         }

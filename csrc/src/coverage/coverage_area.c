@@ -878,8 +878,19 @@ static void rast__cov_row_area(rast__cells *c, rast__cedge *e, int32_t *row, int
  * v = a 2^51 = 2^21 cover - area.  Each part moves a pixel's value by less
  * than 2 Q + 2^-51 < 2^-28 from its exact share (a rounded crossing or end
  * moves the trapezoid right of it by less than Q times the column's width,
- * and a part meets a pixel at two such points at most); with n parts in
- * the row, |v 2^-51 - a| < n 2^-28.  The level floor(a M + 1/2) is then
+ * and a part meets a pixel at two such points at most).  Only the pixels
+ * in a part's columns (from its top end's to its bottom end's) are moved:
+ * a part wholly left of a column adds to the cover summed along the row
+ * its exact height (its column crossings' ordinates cancel in the sum, its
+ * ends' are exact), one wholly right of it nothing.  So with at most n
+ * parts meeting any one column (the row's parts, or those of the largest
+ * of its groups, whose columns lie apart: rast__cov_row_groups),
+ * |v 2^-51 - a| < n 2^-28; and v = a 2^51 in a column that no part meets,
+ * which is one without a cell (every part marks a cell in each column of
+ * the clip from its top end's to its bottom end's, rast__q_add): no window
+ * there (a pixel half covered by a horizontal edge between two parts, an
+ * exact tie, is rounded as the exact way rounds it, not added again).
+ * The level floor(a M + 1/2) is then
  * known unless a' M + 1/2 lies within (n + 1) M 2^-27 of an integer (a tie,
  * or nearly): then the row is added again the exact way above, and only
  * then.  So a row's levels are floor(a M + 1/2) where the quick values
@@ -969,7 +980,7 @@ static inline void rast__q_add(rast__cells *c, int64_t col, uint64_t f0, uint64_
 {
     uint64_t dy = t1 - t0, ar;
     rast__i128 *cell;
-    if (dy == 0 || col >= c->x1) return;
+    if (col >= c->x1) return; /* (dy 0: the column marked all the same, see above) */
     if (col < c->x0) {
         c->qcarry += s < 0 ? 0 - dy : dy;
         return;
@@ -1205,8 +1216,8 @@ RAST__HOT int rast__q_scan(rast__cells *c, unsigned char *row, uint64_t win, con
         c->bits[wi] = 0;
         for (; b; b &= b - 1) {
             int32_t col = (wi << 6) + (int32_t)rast__ctz64(b);
-            if (k < col) /* the run before it */
-                rast__q_run(c, row, k, col, rast__q_fold(acc << 21, mode), win, u8, &bad);
+            if (k < col) /* the run before it: no part meets it, exact (no window) */
+                rast__q_run(c, row, k, col, rast__q_fold(acc << 21, mode), 0, u8, &bad);
             acc += c->cover[col].lo;
             rast__q_run(c, row, col, col + 1, rast__q_fold((acc << 21) - c->cover[col].hi, mode),
                         win, u8, &bad);
@@ -1214,7 +1225,7 @@ RAST__HOT int rast__q_scan(rast__cells *c, unsigned char *row, uint64_t win, con
             k = col + 1;
         }
     }
-    rast__q_run(c, row, k, c->x1 - c->x0, rast__q_fold(acc << 21, mode), win, u8, &bad);
+    rast__q_run(c, row, k, c->x1 - c->x0, rast__q_fold(acc << 21, mode), 0, u8, &bad);
     return bad != 0;
 }
 
@@ -1239,9 +1250,10 @@ static int rast__q_scan_evenodd(rast__cells *c, unsigned char *row, uint64_t win
     return rast__q_scan(c, row, win, RAST__Q_U8_EVENODD);
 }
 
-/* The quick cells into row y, then cleared: 1 (the row is done, handed
- * on), or 0 when a level is not certain (the row is left to the exact
- * way; its values written here are all written again). */
+/* The quick cells into row y, then cleared (nrow: the most parts meeting
+ * one column, which sets the window): 1 (the row is done, handed on), or 0
+ * when a level is not certain (the row is left to the exact way; its
+ * values written here are all written again). */
 static int rast__q_emit(rast__cells *c, int32_t y, int32_t nrow)
 {
     const rast__cov_out *o = c->o;
@@ -1265,8 +1277,9 @@ static int rast__q_emit(rast__cells *c, int32_t y, int32_t nrow)
     return 1;
 }
 
-/* May a row of nrow parts be added the quick way?  (The bound needs
- * (n + 1) M < 2^25; past 511 parts a row would too often be added twice.) */
+/* May a row be added the quick way, nrow parts at most meeting one column
+ * (above)?  (The bound needs (n + 1) M < 2^25; past 511 parts a row would
+ * too often be added twice.) */
 static int rast__q_may(const rast__cells *c, int32_t nrow)
 {
     return c->quick && nrow < 512 && ((uint64_t)nrow + 1) * c->quick < ((uint64_t)1 << 25);
@@ -1871,7 +1884,11 @@ static void rast__cov_row_groups(rast__cells *c, rast__cedge *e, int32_t *row, i
      * read: a sweep reorders row[]); from the start when the last row swept
      * a group, which this one then likely does too */
     int32_t k, g, pz, r = 0, wl = 0, swept = sw->swept;
-    int32_t nk = 0, parts = 0; /* the groups kept for the quick way, their parts */
+    /* the groups kept for the quick way, and the most parts one of them
+     * has: every column is met by one group's parts at most (their columns
+     * lie apart), so the quick values' error at a pixel is that group's,
+     * not the row's (see the quick accumulation) */
+    int32_t nk = 0, most = 0;
     sw->swept = 0;
     for (k = 0; k < nrow; k++) { /* the parts' ranges, their first columns as keys */
         rast__cedge *ed = &e[row[k]];
@@ -1981,13 +1998,13 @@ static void rast__cov_row_groups(rast__cells *c, rast__cedge *e, int32_t *row, i
         } else if (s != 0) { /* kept: group nk starts at k, m edges, sign s */
             sw->h[nk] = k;
             sw->live[nk++] = m * 2 + (s > 0);
-            parts += m;
+            if (m > most) most = m;
         }
         wl = wr;
     }
     if (swept || !nk) {
         return;
-    } else if (rast__q_may(c, parts)) { /* no group swept: the row the quick way */
+    } else if (rast__q_may(c, most)) { /* no group swept: the row the quick way */
         for (g = 0; g < nk; g++) {
             const int32_t sg = (sw->live[g] & 1) ? 1 : -1, *gr = row + sw->h[g];
             for (pz = 0; pz < sw->live[g] >> 1; pz++) {
@@ -1995,7 +2012,7 @@ static void rast__cov_row_groups(rast__cells *c, rast__cedge *e, int32_t *row, i
                 rast__q_piece(c, ed, Yj, ed->qa, ed->qta, ed->qb, ed->qtb, ed->dir * sg);
             }
         }
-        if (rast__q_emit(c, j, parts)) return; /* emitted */
+        if (rast__q_emit(c, j, most)) return; /* emitted */
     }
     rast__grp_flush(c, e, row, sw, nk, j);
 }

@@ -1387,6 +1387,32 @@ static int rast__fast_full(const rast__cedge *e, int32_t *g, int32_t m, int32_t 
 #define RAST__FAST_CUTS 32
 #define RAST__FAST_MIXED 32
 
+/* The ordinates inside row Yj's strip where e starts or ends (U from its
+ * top) into u[1..*nu), sorted, once each (u[0] = 0): 0 when there would be
+ * more than RAST__FAST_CUTS (u[] has room for RAST__FAST_CUTS + 2).  The
+ * entries are moved by a loop, not memmove: a few, and a call each took 4%
+ * of "area" on a paragraph (with the search). */
+static int rast__fast_cuts(const rast__cedge *e, int64_t Yj, const rast__cells *c, uint64_t *u,
+                           int32_t *nu)
+{
+    const int64_t rel0 = (int64_t)e->yt - Yj, rel1 = (int64_t)e->yt + e->dy - Yj;
+    uint64_t cut[2];
+    int32_t z;
+    cut[0] = rel0 <= 0 ? 0 : (uint64_t)rel0 << c->h;
+    cut[1] = rel1 >= c->p ? 0 : (uint64_t)rel1 << c->h;
+    for (z = 0; z < 2; z++) {
+        int32_t y = *nu, i;
+        if (!cut[z]) continue;
+        while (y > 1 && u[y - 1] > cut[z]) y--;
+        if (u[y - 1] == cut[z]) continue;
+        if (*nu > RAST__FAST_CUTS) return 0;
+        for (i = *nu; i > y; i--) u[i] = u[i - 1];
+        u[y] = cut[z];
+        (*nu)++;
+    }
+    return 1;
+}
+
 /* A group g[0..m) with edges starting or ending inside the strip, at the
  * ordinates u[1..nu-1) (u[0] = 0, u[nu-1] = T): in each slab between two
  * of them its edges there span the slab; they must be in the same order at
@@ -1688,24 +1714,9 @@ static int rast__cov_row_fast(rast__cells *c, rast__cedge *e, int32_t *row, int3
     u[0] = 0;
     for (k = 0; k < nrow; k++) { /* the ends of each part, sorted by lo */
         rast__cedge *ed = &e[row[k]];
-        int64_t rel0 = (int64_t)ed->yt - Yj, rel1 = (int64_t)ed->yt + ed->dy - Yj;
-        uint64_t t0 = rel0 <= 0 ? 0 : (uint64_t)rel0 << c->h;
-        uint64_t t1 = rel1 >= c->p ? T : (uint64_t)rel1 << c->h;
-        uint64_t cut[2];
-        int32_t id = row[k], q = k, z;
+        int32_t id = row[k], q = k;
         int64_t lo;
-        cut[0] = t0;
-        cut[1] = t1 == T ? 0 : t1;
-        for (z = 0; z < 2; z++) { /* the ordinates inside, sorted, once each */
-            int32_t y = nu;
-            if (!cut[z]) continue;
-            while (y > 1 && u[y - 1] > cut[z]) y--;
-            if (u[y - 1] == cut[z]) continue;
-            if (nu > RAST__FAST_CUTS) return 0;
-            memmove(u + y + 1, u + y, (size_t)(nu - y) * sizeof *u);
-            u[y] = cut[z];
-            nu++;
-        }
+        if (!rast__fast_cuts(ed, Yj, c, u, &nu)) return 0;
         rast__fast_range(ed, j, c);
         lo = ed->qlo;
         while (q > 0 && lo < e[row[q - 1]].qlo) {
@@ -1948,27 +1959,8 @@ static void rast__cov_row_groups(rast__cells *c, rast__cedge *e, int32_t *row, i
             int32_t w[RAST__FAST_CUTS + 1], nu = 1, i;
             u[0] = 0;
             int32_t big = m > RAST__FAST_MIXED;
-            for (z = k; z < g && s != 2 && !big; z++) { /* the group's ordinates inside, sorted, once each */
-                const rast__cedge *ed = &e[row[z]];
-                const int64_t rel0 = (int64_t)ed->yt - Yj, rel1 = (int64_t)ed->yt + ed->dy - Yj;
-                uint64_t cut[2];
-                int32_t y2;
-                cut[0] = rel0 <= 0 ? 0 : (uint64_t)rel0 << c->h;
-                cut[1] = rel1 >= c->p ? 0 : (uint64_t)rel1 << c->h;
-                for (y2 = 0; y2 < 2; y2++) {
-                    int32_t y = nu;
-                    if (!cut[y2]) continue;
-                    while (y > 1 && u[y - 1] > cut[y2]) y--;
-                    if (u[y - 1] == cut[y2]) continue;
-                    if (nu > RAST__FAST_CUTS) {
-                        big = 1;
-                        break;
-                    }
-                    memmove(u + y + 1, u + y, (size_t)(nu - y) * sizeof *u);
-                    u[y] = cut[y2];
-                    nu++;
-                }
-            }
+            for (z = k; z < g && s != 2 && !big; z++) /* the group's ordinates inside */
+                big = !rast__fast_cuts(&e[row[z]], Yj, c, u, &nu);
             if (big) { /* (the sweep's room is free here: no group is being swept) */
                 if (!rast__fast_sweep(e, row + k, m, Yj, c, wl, wr, &s, sw->hidx, sw->ct)) s = 2;
             } else if (s != 2) {

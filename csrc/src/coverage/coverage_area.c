@@ -1442,13 +1442,20 @@ static int rast__fast_mixed(const rast__cedge *e, const int32_t *g, int32_t m, c
         /* the slab [Ya, Yb] (fixed units: the ordinates inside the row are
          * vertices', multiples of 2^H) */
         const int64_t Ya = Yj + (int64_t)(u[i] >> c->h), Yb = Yj + (int64_t)(u[i + 1] >> c->h);
-        for (k = 0, n = 0; k < m; k++) { /* the edges over the slab, by top then bottom */
+        for (k = 0, n = 0; k < m; k++) { /* the edges over the slab */
             const rast__cedge *ed = &e[g[k]];
-            int64_t x0, x1;
-            int32_t q = n;
-            if (ed->yt > Ya || (int64_t)ed->yt + ed->dy < Yb) continue;
-            x0 = rast__fast_num(ed, Ya);
-            x1 = rast__fast_num(ed, Yb);
+            if (ed->yt <= Ya && (int64_t)ed->yt + ed->dy >= Yb) id[n++] = g[k];
+        }
+        if (n == 1) { /* (most slabs: no order to check) */
+            w[i] += e[id[0]].dir;
+            if (!rast__fast_ok(w[i], s)) return 0;
+            continue;
+        }
+        for (k = 0; k < n; k++) { /* by top, then bottom (insertion, as they came) */
+            const int32_t ik = id[k];
+            const rast__cedge *ed = &e[ik];
+            const int64_t x0 = rast__fast_num(ed, Ya), x1 = rast__fast_num(ed, Yb);
+            int32_t q = k;
             while (q > 0) {
                 const rast__cedge *b = &e[id[q - 1]];
                 int ct = rast__fast_cmpn(x0, ed, na[q - 1], b);
@@ -1458,10 +1465,9 @@ static int rast__fast_mixed(const rast__cedge *e, const int32_t *g, int32_t m, c
                 nb[q] = nb[q - 1];
                 q--;
             }
-            id[q] = g[k];
+            id[q] = ik;
             na[q] = x0;
             nb[q] = x1;
-            n++;
         }
         for (k = 0; k < n; k++) {
             if (k + 1 < n) {

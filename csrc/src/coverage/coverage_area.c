@@ -878,8 +878,19 @@ static void rast__cov_row_area(rast__cells *c, rast__cedge *e, int32_t *row, int
  * v = a 2^51 = 2^21 cover - area.  Each part moves a pixel's value by less
  * than 2 Q + 2^-51 < 2^-28 from its exact share (a rounded crossing or end
  * moves the trapezoid right of it by less than Q times the column's width,
- * and a part meets a pixel at two such points at most); with n parts in
- * the row, |v 2^-51 - a| < n 2^-28.  The level floor(a M + 1/2) is then
+ * and a part meets a pixel at two such points at most).  Only the pixels
+ * in a part's columns (from its top end's to its bottom end's) are moved:
+ * a part wholly left of a column adds to the cover summed along the row
+ * its exact height (its column crossings' ordinates cancel in the sum, its
+ * ends' are exact), one wholly right of it nothing.  So with at most n
+ * parts meeting any one column (the row's parts, or those of the largest
+ * of its groups, whose columns lie apart: rast__cov_row_groups),
+ * |v 2^-51 - a| < n 2^-28; and v = a 2^51 in a column that no part meets,
+ * which is one without a cell (every part marks a cell in each column of
+ * the clip from its top end's to its bottom end's, rast__q_add): no window
+ * there (a pixel half covered by a horizontal edge between two parts, an
+ * exact tie, is rounded as the exact way rounds it, not added again).
+ * The level floor(a M + 1/2) is then
  * known unless a' M + 1/2 lies within (n + 1) M 2^-27 of an integer (a tie,
  * or nearly): then the row is added again the exact way above, and only
  * then.  So a row's levels are floor(a M + 1/2) where the quick values
@@ -969,7 +980,7 @@ static inline void rast__q_add(rast__cells *c, int64_t col, uint64_t f0, uint64_
 {
     uint64_t dy = t1 - t0, ar;
     rast__i128 *cell;
-    if (dy == 0 || col >= c->x1) return;
+    if (col >= c->x1) return; /* (dy 0: the column marked all the same, see above) */
     if (col < c->x0) {
         c->qcarry += s < 0 ? 0 - dy : dy;
         return;
@@ -1205,8 +1216,8 @@ RAST__HOT int rast__q_scan(rast__cells *c, unsigned char *row, uint64_t win, con
         c->bits[wi] = 0;
         for (; b; b &= b - 1) {
             int32_t col = (wi << 6) + (int32_t)rast__ctz64(b);
-            if (k < col) /* the run before it */
-                rast__q_run(c, row, k, col, rast__q_fold(acc << 21, mode), win, u8, &bad);
+            if (k < col) /* the run before it: no part meets it, exact (no window) */
+                rast__q_run(c, row, k, col, rast__q_fold(acc << 21, mode), 0, u8, &bad);
             acc += c->cover[col].lo;
             rast__q_run(c, row, col, col + 1, rast__q_fold((acc << 21) - c->cover[col].hi, mode),
                         win, u8, &bad);
@@ -1214,7 +1225,7 @@ RAST__HOT int rast__q_scan(rast__cells *c, unsigned char *row, uint64_t win, con
             k = col + 1;
         }
     }
-    rast__q_run(c, row, k, c->x1 - c->x0, rast__q_fold(acc << 21, mode), win, u8, &bad);
+    rast__q_run(c, row, k, c->x1 - c->x0, rast__q_fold(acc << 21, mode), 0, u8, &bad);
     return bad != 0;
 }
 
@@ -1239,9 +1250,10 @@ static int rast__q_scan_evenodd(rast__cells *c, unsigned char *row, uint64_t win
     return rast__q_scan(c, row, win, RAST__Q_U8_EVENODD);
 }
 
-/* The quick cells into row y, then cleared: 1 (the row is done, handed
- * on), or 0 when a level is not certain (the row is left to the exact
- * way; its values written here are all written again). */
+/* The quick cells into row y, then cleared (nrow: the most parts meeting
+ * one column, which sets the window): 1 (the row is done, handed on), or 0
+ * when a level is not certain (the row is left to the exact way; its
+ * values written here are all written again). */
 static int rast__q_emit(rast__cells *c, int32_t y, int32_t nrow)
 {
     const rast__cov_out *o = c->o;
@@ -1265,8 +1277,9 @@ static int rast__q_emit(rast__cells *c, int32_t y, int32_t nrow)
     return 1;
 }
 
-/* May a row of nrow parts be added the quick way?  (The bound needs
- * (n + 1) M < 2^25; past 511 parts a row would too often be added twice.) */
+/* May a row be added the quick way, nrow parts at most meeting one column
+ * (above)?  (The bound needs (n + 1) M < 2^25; past 511 parts a row would
+ * too often be added twice.) */
 static int rast__q_may(const rast__cells *c, int32_t nrow)
 {
     return c->quick && nrow < 512 && ((uint64_t)nrow + 1) * c->quick < ((uint64_t)1 << 25);
@@ -1374,6 +1387,32 @@ static int rast__fast_full(const rast__cedge *e, int32_t *g, int32_t m, int32_t 
 #define RAST__FAST_CUTS 32
 #define RAST__FAST_MIXED 32
 
+/* The ordinates inside row Yj's strip where e starts or ends (U from its
+ * top) into u[1..*nu), sorted, once each (u[0] = 0): 0 when there would be
+ * more than RAST__FAST_CUTS (u[] has room for RAST__FAST_CUTS + 2).  The
+ * entries are moved by a loop, not memmove: a few, and a call each took 4%
+ * of "area" on a paragraph (with the search). */
+static int rast__fast_cuts(const rast__cedge *e, int64_t Yj, const rast__cells *c, uint64_t *u,
+                           int32_t *nu)
+{
+    const int64_t rel0 = (int64_t)e->yt - Yj, rel1 = (int64_t)e->yt + e->dy - Yj;
+    uint64_t cut[2];
+    int32_t z;
+    cut[0] = rel0 <= 0 ? 0 : (uint64_t)rel0 << c->h;
+    cut[1] = rel1 >= c->p ? 0 : (uint64_t)rel1 << c->h;
+    for (z = 0; z < 2; z++) {
+        int32_t y = *nu, i;
+        if (!cut[z]) continue;
+        while (y > 1 && u[y - 1] > cut[z]) y--;
+        if (u[y - 1] == cut[z]) continue;
+        if (*nu > RAST__FAST_CUTS) return 0;
+        for (i = *nu; i > y; i--) u[i] = u[i - 1];
+        u[y] = cut[z];
+        (*nu)++;
+    }
+    return 1;
+}
+
 /* A group g[0..m) with edges starting or ending inside the strip, at the
  * ordinates u[1..nu-1) (u[0] = 0, u[nu-1] = T): in each slab between two
  * of them its edges there span the slab; they must be in the same order at
@@ -1403,13 +1442,20 @@ static int rast__fast_mixed(const rast__cedge *e, const int32_t *g, int32_t m, c
         /* the slab [Ya, Yb] (fixed units: the ordinates inside the row are
          * vertices', multiples of 2^H) */
         const int64_t Ya = Yj + (int64_t)(u[i] >> c->h), Yb = Yj + (int64_t)(u[i + 1] >> c->h);
-        for (k = 0, n = 0; k < m; k++) { /* the edges over the slab, by top then bottom */
+        for (k = 0, n = 0; k < m; k++) { /* the edges over the slab */
             const rast__cedge *ed = &e[g[k]];
-            int64_t x0, x1;
-            int32_t q = n;
-            if (ed->yt > Ya || (int64_t)ed->yt + ed->dy < Yb) continue;
-            x0 = rast__fast_num(ed, Ya);
-            x1 = rast__fast_num(ed, Yb);
+            if (ed->yt <= Ya && (int64_t)ed->yt + ed->dy >= Yb) id[n++] = g[k];
+        }
+        if (n == 1) { /* (most slabs: no order to check) */
+            w[i] += e[id[0]].dir;
+            if (!rast__fast_ok(w[i], s)) return 0;
+            continue;
+        }
+        for (k = 0; k < n; k++) { /* by top, then bottom (insertion, as they came) */
+            const int32_t ik = id[k];
+            const rast__cedge *ed = &e[ik];
+            const int64_t x0 = rast__fast_num(ed, Ya), x1 = rast__fast_num(ed, Yb);
+            int32_t q = k;
             while (q > 0) {
                 const rast__cedge *b = &e[id[q - 1]];
                 int ct = rast__fast_cmpn(x0, ed, na[q - 1], b);
@@ -1419,10 +1465,9 @@ static int rast__fast_mixed(const rast__cedge *e, const int32_t *g, int32_t m, c
                 nb[q] = nb[q - 1];
                 q--;
             }
-            id[q] = g[k];
+            id[q] = ik;
             na[q] = x0;
             nb[q] = x1;
-            n++;
         }
         for (k = 0; k < n; k++) {
             if (k + 1 < n) {
@@ -1675,24 +1720,9 @@ static int rast__cov_row_fast(rast__cells *c, rast__cedge *e, int32_t *row, int3
     u[0] = 0;
     for (k = 0; k < nrow; k++) { /* the ends of each part, sorted by lo */
         rast__cedge *ed = &e[row[k]];
-        int64_t rel0 = (int64_t)ed->yt - Yj, rel1 = (int64_t)ed->yt + ed->dy - Yj;
-        uint64_t t0 = rel0 <= 0 ? 0 : (uint64_t)rel0 << c->h;
-        uint64_t t1 = rel1 >= c->p ? T : (uint64_t)rel1 << c->h;
-        uint64_t cut[2];
-        int32_t id = row[k], q = k, z;
+        int32_t id = row[k], q = k;
         int64_t lo;
-        cut[0] = t0;
-        cut[1] = t1 == T ? 0 : t1;
-        for (z = 0; z < 2; z++) { /* the ordinates inside, sorted, once each */
-            int32_t y = nu;
-            if (!cut[z]) continue;
-            while (y > 1 && u[y - 1] > cut[z]) y--;
-            if (u[y - 1] == cut[z]) continue;
-            if (nu > RAST__FAST_CUTS) return 0;
-            memmove(u + y + 1, u + y, (size_t)(nu - y) * sizeof *u);
-            u[y] = cut[z];
-            nu++;
-        }
+        if (!rast__fast_cuts(ed, Yj, c, u, &nu)) return 0;
         rast__fast_range(ed, j, c);
         lo = ed->qlo;
         while (q > 0 && lo < e[row[q - 1]].qlo) {
@@ -1871,7 +1901,11 @@ static void rast__cov_row_groups(rast__cells *c, rast__cedge *e, int32_t *row, i
      * read: a sweep reorders row[]); from the start when the last row swept
      * a group, which this one then likely does too */
     int32_t k, g, pz, r = 0, wl = 0, swept = sw->swept;
-    int32_t nk = 0, parts = 0; /* the groups kept for the quick way, their parts */
+    /* the groups kept for the quick way, and the most parts one of them
+     * has: every column is met by one group's parts at most (their columns
+     * lie apart), so the quick values' error at a pixel is that group's,
+     * not the row's (see the quick accumulation) */
+    int32_t nk = 0, most = 0;
     sw->swept = 0;
     for (k = 0; k < nrow; k++) { /* the parts' ranges, their first columns as keys */
         rast__cedge *ed = &e[row[k]];
@@ -1931,27 +1965,8 @@ static void rast__cov_row_groups(rast__cells *c, rast__cedge *e, int32_t *row, i
             int32_t w[RAST__FAST_CUTS + 1], nu = 1, i;
             u[0] = 0;
             int32_t big = m > RAST__FAST_MIXED;
-            for (z = k; z < g && s != 2 && !big; z++) { /* the group's ordinates inside, sorted, once each */
-                const rast__cedge *ed = &e[row[z]];
-                const int64_t rel0 = (int64_t)ed->yt - Yj, rel1 = (int64_t)ed->yt + ed->dy - Yj;
-                uint64_t cut[2];
-                int32_t y2;
-                cut[0] = rel0 <= 0 ? 0 : (uint64_t)rel0 << c->h;
-                cut[1] = rel1 >= c->p ? 0 : (uint64_t)rel1 << c->h;
-                for (y2 = 0; y2 < 2; y2++) {
-                    int32_t y = nu;
-                    if (!cut[y2]) continue;
-                    while (y > 1 && u[y - 1] > cut[y2]) y--;
-                    if (u[y - 1] == cut[y2]) continue;
-                    if (nu > RAST__FAST_CUTS) {
-                        big = 1;
-                        break;
-                    }
-                    memmove(u + y + 1, u + y, (size_t)(nu - y) * sizeof *u);
-                    u[y] = cut[y2];
-                    nu++;
-                }
-            }
+            for (z = k; z < g && s != 2 && !big; z++) /* the group's ordinates inside */
+                big = !rast__fast_cuts(&e[row[z]], Yj, c, u, &nu);
             if (big) { /* (the sweep's room is free here: no group is being swept) */
                 if (!rast__fast_sweep(e, row + k, m, Yj, c, wl, wr, &s, sw->hidx, sw->ct)) s = 2;
             } else if (s != 2) {
@@ -1981,13 +1996,13 @@ static void rast__cov_row_groups(rast__cells *c, rast__cedge *e, int32_t *row, i
         } else if (s != 0) { /* kept: group nk starts at k, m edges, sign s */
             sw->h[nk] = k;
             sw->live[nk++] = m * 2 + (s > 0);
-            parts += m;
+            if (m > most) most = m;
         }
         wl = wr;
     }
     if (swept || !nk) {
         return;
-    } else if (rast__q_may(c, parts)) { /* no group swept: the row the quick way */
+    } else if (rast__q_may(c, most)) { /* no group swept: the row the quick way */
         for (g = 0; g < nk; g++) {
             const int32_t sg = (sw->live[g] & 1) ? 1 : -1, *gr = row + sw->h[g];
             for (pz = 0; pz < sw->live[g] >> 1; pz++) {
@@ -1995,7 +2010,7 @@ static void rast__cov_row_groups(rast__cells *c, rast__cedge *e, int32_t *row, i
                 rast__q_piece(c, ed, Yj, ed->qa, ed->qta, ed->qb, ed->qtb, ed->dir * sg);
             }
         }
-        if (rast__q_emit(c, j, parts)) return; /* emitted */
+        if (rast__q_emit(c, j, most)) return; /* emitted */
     }
     rast__grp_flush(c, e, row, sw, nk, j);
 }

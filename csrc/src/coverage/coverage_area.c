@@ -596,24 +596,35 @@ static int rast__cov_event_local(rast__cells *c, rast__cedge *e, const int32_t *
     const int64_t Yj = (int64_t)j * c->p;
     int32_t *live = sw->live, n = *pn, k, i, nend = 0, nbeg = 0, nd = 0;
     int32_t ends[RAST__EV_MAX], begs[RAST__EV_MAX], pos[RAST__EV_MAX], dirty[2 * RAST__EV_MAX];
-    uint64_t t0, t1, tvn = T;
+    uint64_t tvn = T;
     int32_t wsum;
-    for (k = 0; k < nev; k++) { /* the edges ending and starting at tv; the next event */
-        rast__cov_span(&e[ev[k]], Yj, c, &t0, &t1);
-        if (t0 > tv) {
-            if (t0 < tvn) tvn = t0;
-            continue;
+    /* The edges ending and starting at tv, and the next event: the scan
+     * of rast__cov_span's ordinates, in units from the row's top (tv, a
+     * vertex's, is v 2^H, 0 < v < P; an end at or past P is none), one
+     * pass over the row's events at each (on a stroke's round joins, a
+     * tenth of "area"'s instructions). */
+    {
+        const int64_t v = (int64_t)(tv >> c->h);
+        int64_t vn = c->p;
+        for (k = 0; k < nev; k++) {
+            const rast__cedge *ed = &e[ev[k]];
+            const int64_t r0 = (int64_t)ed->yt - Yj, r1 = r0 + ed->dy;
+            if (r0 > v) {
+                if (r0 < vn) vn = r0;
+                continue;
+            }
+            if (r0 == v) {
+                if (nbeg == RAST__EV_MAX) return -1;
+                begs[nbeg++] = ev[k];
+            }
+            if (r1 == v) {
+                if (nend == RAST__EV_MAX) return -1;
+                ends[nend++] = ev[k];
+            } else if (r1 > v && r1 < vn) {
+                vn = r1;
+            }
         }
-        if (t0 == tv) {
-            if (nbeg == RAST__EV_MAX) return -1;
-            begs[nbeg++] = ev[k];
-        }
-        if (t1 == tv) {
-            if (nend == RAST__EV_MAX) return -1;
-            ends[nend++] = ev[k];
-        } else if (t1 > tv && t1 < tvn) {
-            tvn = t1;
-        }
+        if (vn < c->p) tvn = (uint64_t)vn << c->h;
     }
     /* One edge ends and one of its direction starts (a ring's vertex, but
      * a turn in y), no neighbours' crossing at or before tv, and the new

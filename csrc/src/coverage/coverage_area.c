@@ -235,7 +235,7 @@ typedef struct rast__sweep {
 
 /* The heap moves a hole, not swapped pairs: the entry (pos, key) goes up
  * from slot i (or down, below) and is written once where it stops. */
-static void rast__heap_up(rast__sweep *w, int32_t i)
+static inline void rast__heap_up(rast__sweep *w, int32_t i)
 {
     const int32_t pos = w->h[i];
     const uint64_t key = w->ct[i];
@@ -289,19 +289,21 @@ static void rast__heap_set(rast__sweep *w, int32_t pos, uint64_t v)
     if (v >= T) { /* out: its slot sinks to a leaf (the smaller child up
                    * each time: one comparison a level), where the last
                    * entry goes in, and up */
-        const int32_t last = --w->m;
+        const int32_t last = --w->m, hl = w->h[last];
+        const uint64_t cl = w->ct[last];
         int32_t i = s, l;
         w->hidx[pos] = -1;
         if (s == last) return;
+        w->ct[last] = NONE; /* past the end now: no child's test a level */
         while ((l = 2 * i + 1) < w->m) {
-            if (l + 1 < w->m && w->ct[l + 1] < w->ct[l]) l++;
+            if (w->ct[l + 1] < w->ct[l]) l++;
             w->h[i] = w->h[l];
             w->ct[i] = w->ct[l];
             w->hidx[w->h[i]] = i;
             i = l;
         }
-        w->h[i] = w->h[last];
-        w->ct[i] = w->ct[last];
+        w->h[i] = hl;
+        w->ct[i] = cl;
         rast__heap_up(w, i);
         return;
     }

@@ -1,7 +1,7 @@
 """"area"'s crossing times at the edge of their 64-bit way (issue 33): a
-pair of edges whose crossing's numerator has all seven factors below 2^20
-fixed units (the offsets of the tops, the rise and run of both edges) takes
-64-bit products and divisions (coverage_area.c, rast__cov_cross;
+pair of edges whose crossing's numerator has all seven factors in
+[-2^20, 2^20) fixed units (the offsets of the tops, the rise and run of
+both edges) takes 64-bit products and divisions (coverage_area.c, rast__cov_cross;
 rast__shl_div64 in base/wide.h), any other pair the 128-bit way.  Long
 slanted quads whose sides rise and run 2^20 units give or take a few (the
 tops 2^19 units above the canvas), crossing each other inside it, put pairs
@@ -16,7 +16,7 @@ import rastrum
 import strategies as S_
 from test_coverage import M_OF, _n_m, check_area, exact_area
 
-LIM = 2 ** 20  # the 64-bit way's bound on each factor, in fixed units
+LIM = 2 ** 20  # the 64-bit way's bound on each factor (-LIM <= v < LIM), in fixed units
 NEAR = st.sampled_from([LIM - 2, LIM - 1, LIM, LIM + 1])
 
 

@@ -173,12 +173,13 @@ static inline void rast__wide_floordiv(rast__i128 a, int64_t d, int64_t *q, int6
 #endif
 }
 
-/* floor(r 2^n / d), its remainder into *rem, for 0 <= r < d < 2^41 and
+/* floor(r 2^n / d), its remainder into *rem, for 0 <= r < d <= 2^41 and
  * 0 <= n <= 62, in 64-bit divisions only: base-2^k long division, k bits
- * of the quotient a step, r 2^k < d 2^k <= 2^64 (k = 64 - d's bit length,
- * at least 23; without the compiler's count of leading zeros, 32 while
- * d < 2^32, else 23), so two or three machine divisions instead of a
- * 128-bit division's call (the quotient is below 2^n). */
+ * of the quotient a step, r 2^k < 2^64 (k = 64 - d's bit length, at
+ * least 22, and r < d < 2^(64 - k); without the compiler's count of
+ * leading zeros, 32 while d < 2^32, else 23), so at most three machine
+ * divisions where n <= 60 instead of a 128-bit division's call (the
+ * quotient is below 2^n). */
 static inline uint64_t rast__shl_div64(uint64_t r, uint64_t d, int32_t n, uint64_t *rem)
 {
 #if (defined(__GNUC__) || defined(__clang__)) && !defined(RAST_NO_BUILTIN_CTZ)

@@ -78,10 +78,10 @@ static int rast__cov_behind_at(const rast__cedge *a, const rast__cedge *b, int64
     return rast__cov_before(&bt, a);
 }
 
-/* |v| as an unsigned word (v > INT64_MIN). */
-static inline uint64_t rast__cov_mag(int64_t v)
+/* v + 2^20 as an unsigned word: below 2^21 for v in [-2^20, 2^20). */
+static inline uint64_t rast__cov_off(int64_t v)
 {
-    return v < 0 ? 0 - (uint64_t)v : (uint64_t)v;
+    return (uint64_t)v + ((uint64_t)1 << 20);
 }
 
 /* The first ordinate after t (U; up to T) where a, left of b just below
@@ -95,14 +95,15 @@ static uint64_t rast__cov_cross(const rast__cedge *a, const rast__cedge *b, int6
     uint64_t tc;
     if (D <= 0) return T; /* a is not steeper to the right: no crossing */
     /* The crossing's ordinate y = Yj + N / D (fixed units), N below.
-     * When the seven factors of N's three products are all below 2^20 in
-     * magnitude (coordinates within 4,096 px at S = 8, as on most
-     * canvases), each product is below 2^60, |N| < 3 2^60 < 2^62 and
-     * D < 2^41: N in 64 bits, and the time by 64-bit divisions
+     * When the seven factors of N's three products all lie in
+     * [-2^20, 2^20) (coordinates within 4,096 px at S = 8, as on most
+     * canvases; v + 2^20 < 2^21 for each, so for the OR of them), each
+     * product is at most 2^60 in magnitude, |N| <= 3 2^60 < 2^62 and
+     * D <= 2^41: N in 64 bits, and the time by 64-bit divisions
      * (rast__shl_div64); the same value as the 128-bit way below, which
      * the other pairs take. */
-    if ((rast__cov_mag(ex) | rast__cov_mag(ea) | rast__cov_mag(eb) | rast__cov_mag(a->dx) |
-         rast__cov_mag(a->dy) | rast__cov_mag(b->dx) | rast__cov_mag(b->dy)) < ((uint64_t)1 << 20)) {
+    if ((rast__cov_off(ex) | rast__cov_off(ea) | rast__cov_off(eb) | rast__cov_off(a->dx) |
+         rast__cov_off(a->dy) | rast__cov_off(b->dx) | rast__cov_off(b->dy)) < ((uint64_t)1 << 21)) {
         const int64_t n = ex * a->dy * b->dy + ea * a->dx * b->dy - eb * b->dx * a->dy;
         uint64_t rem;
         /* inside the row: 0 <= n < D P, i.e. floor(n / P) < D (P = 2^S) */

@@ -90,7 +90,6 @@ static uint64_t rast__cov_cross(const rast__cedge *a, const rast__cedge *b, int6
                                 uint64_t t, const rast__cells *c)
 {
     int64_t D = (int64_t)a->dx * b->dy - (int64_t)b->dx * a->dy, q0, r0, qq, rr;
-    const int64_t ex = (int64_t)b->xt - a->xt, ea = (int64_t)a->yt - Yj, eb = (int64_t)b->yt - Yj;
     rast__i128 N;
     uint64_t tc;
     if (D <= 0) return T; /* a is not steeper to the right: no crossing */
@@ -101,18 +100,26 @@ static uint64_t rast__cov_cross(const rast__cedge *a, const rast__cedge *b, int6
      * product is at most 2^60 in magnitude, |N| <= 3 2^60 < 2^62 and
      * D <= 2^41: N in 64 bits, and the time by 64-bit divisions
      * (rast__shl_div64); the same value as the 128-bit way below, which
-     * the other pairs take. */
-    if ((rast__cov_off(ex) | rast__cov_off(ea) | rast__cov_off(eb) | rast__cov_off(a->dx) |
-         rast__cov_off(a->dy) | rast__cov_off(b->dx) | rast__cov_off(b->dy)) < ((uint64_t)1 << 21)) {
-        const int64_t n = ex * a->dy * b->dy + ea * a->dx * b->dy - eb * b->dx * a->dy;
-        uint64_t rem;
-        /* inside the row: 0 <= n < D P, i.e. floor(n / P) < D (P = 2^S) */
-        if (n < 0 || ((uint64_t)n >> (G - c->h)) >= (uint64_t)D) return T;
-        tc = ((uint64_t)(n / D) << c->h) + rast__shl_div64((uint64_t)(n % D), (uint64_t)D, c->h, &rem);
-        tc += rem > 0;
-        if (tc <= t) tc = t + 1;
-        return tc > T ? T : tc;
+     * the other pairs take.  Size-optimised builds (firmware, -Os) take
+     * the 128-bit way for every pair: less .text on Cortex-M0, where a
+     * 64-bit division is a library call too. */
+#if !defined(__OPTIMIZE_SIZE__)
+    {
+        const int64_t ex = (int64_t)b->xt - a->xt, ea = (int64_t)a->yt - Yj, eb = (int64_t)b->yt - Yj;
+        if ((rast__cov_off(ex) | rast__cov_off(ea) | rast__cov_off(eb) | rast__cov_off(a->dx) |
+             rast__cov_off(a->dy) | rast__cov_off(b->dx) | rast__cov_off(b->dy)) < ((uint64_t)1 << 21)) {
+            const int64_t n = ex * a->dy * b->dy + ea * a->dx * b->dy - eb * b->dx * a->dy;
+            uint64_t rem;
+            /* inside the row: 0 <= n < D P, i.e. floor(n / P) < D (P = 2^S) */
+            if (n < 0 || ((uint64_t)n >> (G - c->h)) >= (uint64_t)D) return T;
+            tc = ((uint64_t)(n / D) << c->h) +
+                 rast__shl_div64((uint64_t)(n % D), (uint64_t)D, c->h, &rem);
+            tc += rem > 0;
+            if (tc <= t) tc = t + 1;
+            return tc > T ? T : tc;
+        }
     }
+#endif
     N = rast__i128_mul((int64_t)(b->xt - a->xt) * a->dy, b->dy);
     N = rast__i128_add(N, rast__i128_mul((a->yt - Yj) * a->dx, b->dy));
     N = rast__i128_sub(N, rast__i128_mul((b->yt - Yj) * b->dx, a->dy));
@@ -234,6 +241,15 @@ typedef struct rast__sweep {
 
 #define NONE (T + 1)
 
+/* The heap's removal sinks its hole with no test for a second child a
+ * level: the slot past the end holds NONE while it sinks (20 B more on
+ * Cortex-M0: size-optimised builds test for it, as before). */
+#if !defined(__OPTIMIZE_SIZE__)
+#define RAST__HEAP_END 1
+#else
+#define RAST__HEAP_END 0
+#endif
+
 /* The heap moves a hole, not swapped pairs: the entry (pos, key) goes up
  * from slot i (or down, below) and is written once where it stops. */
 static inline void rast__heap_up(rast__sweep *w, int32_t i)
@@ -290,21 +306,21 @@ static void rast__heap_set(rast__sweep *w, int32_t pos, uint64_t v)
     if (v >= T) { /* out: its slot sinks to a leaf (the smaller child up
                    * each time: one comparison a level), where the last
                    * entry goes in, and up */
-        const int32_t last = --w->m, hl = w->h[last];
+        const int32_t last = --w->m;
         const uint64_t cl = w->ct[last];
         int32_t i = s, l;
         w->hidx[pos] = -1;
         if (s == last) return;
-        w->ct[last] = NONE; /* past the end now: no child's test a level */
+        if (RAST__HEAP_END) w->ct[last] = NONE; /* past the end now */
         while ((l = 2 * i + 1) < w->m) {
-            if (w->ct[l + 1] < w->ct[l]) l++;
+            if ((RAST__HEAP_END || l + 1 < w->m) && w->ct[l + 1] < w->ct[l]) l++;
             w->h[i] = w->h[l];
             w->ct[i] = w->ct[l];
             w->hidx[w->h[i]] = i;
             i = l;
         }
-        w->h[i] = hl;
-        w->ct[i] = cl;
+        w->h[i] = w->h[last];
+        w->ct[i] = RAST__HEAP_END ? cl : w->ct[last];
         rast__heap_up(w, i);
         return;
     }

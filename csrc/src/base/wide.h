@@ -173,6 +173,32 @@ static inline void rast__wide_floordiv(rast__i128 a, int64_t d, int64_t *q, int6
 #endif
 }
 
+/* floor(r 2^n / d), its remainder into *rem, for 0 <= r < d <= 2^41 and
+ * 0 <= n <= 62, in 64-bit divisions only: base-2^k long division, k bits
+ * of the quotient a step, r 2^k < 2^64 (k = 64 - d's bit length, at
+ * least 22, and r < d < 2^(64 - k); without the compiler's count of
+ * leading zeros, 32 while d < 2^32, else 23), so at most three machine
+ * divisions where n <= 60 instead of a 128-bit division's call (the
+ * quotient is below 2^n). */
+static inline uint64_t rast__shl_div64(uint64_t r, uint64_t d, int32_t n, uint64_t *rem)
+{
+#if (defined(__GNUC__) || defined(__clang__)) && !defined(RAST_NO_BUILTIN_CTZ)
+    const int32_t k = __builtin_clzll(d);
+#else
+    const int32_t k = (d >> 32) ? 23 : 32;
+#endif
+    uint64_t q = 0;
+    while (n > 0) {
+        const int32_t s = n < k ? n : k;
+        const uint64_t v = r << s;
+        q = (q << s) | (v / d);
+        r = v % d;
+        n -= s;
+    }
+    *rem = r;
+    return q;
+}
+
 /* The high 64 bits of the 128-bit product a * b: one instruction where
  * the compiler has a 128-bit type (GCC and clang on 64-bit targets; the
  * __extension__ keeps -pedantic quiet), else four 32-bit products. */

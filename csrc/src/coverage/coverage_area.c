@@ -78,6 +78,12 @@ static int rast__cov_behind_at(const rast__cedge *a, const rast__cedge *b, int64
     return rast__cov_before(&bt, a);
 }
 
+/* v + 2^20 as an unsigned word: below 2^21 for v in [-2^20, 2^20). */
+static inline uint64_t rast__cov_off(int64_t v)
+{
+    return (uint64_t)v + ((uint64_t)1 << 20);
+}
+
 /* The first ordinate after t (U; up to T) where a, left of b just below
  * t, crosses it; T when they do not cross inside the row. */
 static uint64_t rast__cov_cross(const rast__cedge *a, const rast__cedge *b, int64_t Yj,
@@ -87,7 +93,33 @@ static uint64_t rast__cov_cross(const rast__cedge *a, const rast__cedge *b, int6
     rast__i128 N;
     uint64_t tc;
     if (D <= 0) return T; /* a is not steeper to the right: no crossing */
-    /* The crossing's ordinate y = Yj + N / D (fixed units). */
+    /* The crossing's ordinate y = Yj + N / D (fixed units), N below.
+     * When the seven factors of N's three products all lie in
+     * [-2^20, 2^20) (coordinates within 4,096 px at S = 8, as on most
+     * canvases; v + 2^20 < 2^21 for each, so for the OR of them), each
+     * product is at most 2^60 in magnitude, |N| <= 3 2^60 < 2^62 and
+     * D <= 2^41: N in 64 bits, and the time by 64-bit divisions
+     * (rast__shl_div64); the same value as the 128-bit way below, which
+     * the other pairs take.  Size-optimised builds (firmware, -Os) take
+     * the 128-bit way for every pair: less .text on Cortex-M0, where a
+     * 64-bit division is a library call too. */
+#if !defined(__OPTIMIZE_SIZE__)
+    {
+        const int64_t ex = (int64_t)b->xt - a->xt, ea = (int64_t)a->yt - Yj, eb = (int64_t)b->yt - Yj;
+        if ((rast__cov_off(ex) | rast__cov_off(ea) | rast__cov_off(eb) | rast__cov_off(a->dx) |
+             rast__cov_off(a->dy) | rast__cov_off(b->dx) | rast__cov_off(b->dy)) < ((uint64_t)1 << 21)) {
+            const int64_t n = ex * a->dy * b->dy + ea * a->dx * b->dy - eb * b->dx * a->dy;
+            uint64_t rem;
+            /* inside the row: 0 <= n < D P, i.e. floor(n / P) < D (P = 2^S) */
+            if (n < 0 || ((uint64_t)n >> (G - c->h)) >= (uint64_t)D) return T;
+            tc = ((uint64_t)(n / D) << c->h) +
+                 rast__shl_div64((uint64_t)(n % D), (uint64_t)D, c->h, &rem);
+            tc += rem > 0;
+            if (tc <= t) tc = t + 1;
+            return tc > T ? T : tc;
+        }
+    }
+#endif
     N = rast__i128_mul((int64_t)(b->xt - a->xt) * a->dy, b->dy);
     N = rast__i128_add(N, rast__i128_mul((a->yt - Yj) * a->dx, b->dy));
     N = rast__i128_sub(N, rast__i128_mul((b->yt - Yj) * b->dx, a->dy));
@@ -209,9 +241,18 @@ typedef struct rast__sweep {
 
 #define NONE (T + 1)
 
+/* The heap's removal sinks its hole with no test for a second child a
+ * level: the slot past the end holds NONE while it sinks (20 B more on
+ * Cortex-M0: size-optimised builds test for it, as before). */
+#if !defined(__OPTIMIZE_SIZE__)
+#define RAST__HEAP_END 1
+#else
+#define RAST__HEAP_END 0
+#endif
+
 /* The heap moves a hole, not swapped pairs: the entry (pos, key) goes up
  * from slot i (or down, below) and is written once where it stops. */
-static void rast__heap_up(rast__sweep *w, int32_t i)
+static inline void rast__heap_up(rast__sweep *w, int32_t i)
 {
     const int32_t pos = w->h[i];
     const uint64_t key = w->ct[i];
@@ -266,18 +307,20 @@ static void rast__heap_set(rast__sweep *w, int32_t pos, uint64_t v)
                    * each time: one comparison a level), where the last
                    * entry goes in, and up */
         const int32_t last = --w->m;
+        const uint64_t cl = w->ct[last];
         int32_t i = s, l;
         w->hidx[pos] = -1;
         if (s == last) return;
+        if (RAST__HEAP_END) w->ct[last] = NONE; /* past the end now */
         while ((l = 2 * i + 1) < w->m) {
-            if (l + 1 < w->m && w->ct[l + 1] < w->ct[l]) l++;
+            if ((RAST__HEAP_END || l + 1 < w->m) && w->ct[l + 1] < w->ct[l]) l++;
             w->h[i] = w->h[l];
             w->ct[i] = w->ct[l];
             w->hidx[w->h[i]] = i;
             i = l;
         }
         w->h[i] = w->h[last];
-        w->ct[i] = w->ct[last];
+        w->ct[i] = RAST__HEAP_END ? cl : w->ct[last];
         rast__heap_up(w, i);
         return;
     }
@@ -572,24 +615,35 @@ static int rast__cov_event_local(rast__cells *c, rast__cedge *e, const int32_t *
     const int64_t Yj = (int64_t)j * c->p;
     int32_t *live = sw->live, n = *pn, k, i, nend = 0, nbeg = 0, nd = 0;
     int32_t ends[RAST__EV_MAX], begs[RAST__EV_MAX], pos[RAST__EV_MAX], dirty[2 * RAST__EV_MAX];
-    uint64_t t0, t1, tvn = T;
+    uint64_t tvn = T;
     int32_t wsum;
-    for (k = 0; k < nev; k++) { /* the edges ending and starting at tv; the next event */
-        rast__cov_span(&e[ev[k]], Yj, c, &t0, &t1);
-        if (t0 > tv) {
-            if (t0 < tvn) tvn = t0;
-            continue;
+    /* The edges ending and starting at tv, and the next event: the scan
+     * of rast__cov_span's ordinates, in units from the row's top (tv, a
+     * vertex's, is v 2^H, 0 < v < P; an end at or past P is none), one
+     * pass over the row's events at each (on a stroke's round joins, a
+     * tenth of "area"'s instructions). */
+    {
+        const int64_t v = (int64_t)(tv >> c->h);
+        int64_t vn = c->p;
+        for (k = 0; k < nev; k++) {
+            const rast__cedge *ed = &e[ev[k]];
+            const int64_t r0 = (int64_t)ed->yt - Yj, r1 = r0 + ed->dy;
+            if (r0 > v) {
+                if (r0 < vn) vn = r0;
+                continue;
+            }
+            if (r0 == v) {
+                if (nbeg == RAST__EV_MAX) return -1;
+                begs[nbeg++] = ev[k];
+            }
+            if (r1 == v) {
+                if (nend == RAST__EV_MAX) return -1;
+                ends[nend++] = ev[k];
+            } else if (r1 > v && r1 < vn) {
+                vn = r1;
+            }
         }
-        if (t0 == tv) {
-            if (nbeg == RAST__EV_MAX) return -1;
-            begs[nbeg++] = ev[k];
-        }
-        if (t1 == tv) {
-            if (nend == RAST__EV_MAX) return -1;
-            ends[nend++] = ev[k];
-        } else if (t1 > tv && t1 < tvn) {
-            tvn = t1;
-        }
+        if (vn < c->p) tvn = (uint64_t)vn << c->h;
     }
     /* One edge ends and one of its direction starts (a ring's vertex, but
      * a turn in y), no neighbours' crossing at or before tv, and the new

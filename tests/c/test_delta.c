@@ -63,6 +63,14 @@ static rast_status fill(canvas *c, const rast_polygon *poly, uint32_t npoints, c
     return st;
 }
 
+/* v rounded down to a multiple of 2^s. */
+static int32_t floor_to(int32_t v, int s)
+{
+    const int32_t one = (int32_t)1 << s;
+    int32_t m = v % one;
+    return v - (m < 0 ? m + one : m);
+}
+
 /* A random point: on a sample point, on a sample row, or anywhere, within
  * a margin around the canvas (so that rings cross the clip's sides). */
 static rast_point point(int s, int center)
@@ -73,10 +81,10 @@ static rast_point point(int s, int center)
     q.x = (int32_t)(rng() % (uint32_t)((W + 8) * one)) - 4 * one;
     q.y = (int32_t)(rng() % (uint32_t)((H + 8) * one)) - 4 * one;
     if (kind == 0) { /* a sample point */
-        q.x = (q.x >> s << s) + half;
-        q.y = (q.y >> s << s) + half;
+        q.x = floor_to(q.x, s) + half;
+        q.y = floor_to(q.y, s) + half;
     } else if (kind == 1) { /* on a sample row */
-        q.y = (q.y >> s << s) + half;
+        q.y = floor_to(q.y, s) + half;
     }
     return q;
 }

@@ -267,11 +267,26 @@ static inline int rast__aet_edge_rows(rast__edge *ed, const rast_point *pa, cons
 }
 #endif
 
-static inline rast_status rast__aet_walk(const rast_polygon *poly, uint32_t npoints,
-                                         const rast__grid *g, rast_fill_rule rule,
-                                         const rast_rect *clip, rast__arena *arena,
-                                         rast__aet_span_fn span, rast__aet_order_fn order,
-                                         void *user, int32_t *src)
+/* The walk's tables (rast__aet_prepare): the edge records, set up in
+ * aet[0..nedges) (`row` each one's first row in [row0, row1)), the room
+ * for the edge table (edges[], npoints records, free until the sweep) and
+ * the buckets (bucket[r - row0 + 1]: how many edges start on row r); and,
+ * except in a build for size, the vertices' least and greatest x (minx, maxx),
+ * which the fill by winding deltas (fillers/aet.c) wants. */
+typedef struct rast__aet_tab {
+    rast__edge *edges, *aet;
+    int32_t *bucket;
+    int32_t nedges, row0, row1;
+    int32_t minx, maxx;
+} rast__aet_tab;
+
+/* The walk's setup: the visible rows and the edge records of `poly`
+ * (src as rast__aet_walk's).  RAST_OK with t->row0 >= t->row1 when no
+ * visible row is crossed (nothing to walk), RAST_E_SCRATCH when the arena
+ * is too small. */
+static inline rast_status rast__aet_prepare(const rast_polygon *poly, uint32_t npoints,
+                                            const rast__grid *g, const rast_rect *clip,
+                                            rast__arena *arena, int32_t *src, rast__aet_tab *t)
 {
     const rast_point *pts = poly->points;
     rast__edge *edges, *aet;
@@ -282,6 +297,7 @@ static inline rast_status rast__aet_walk(const rast_polygon *poly, uint32_t npoi
     int32_t miny, maxy;
     int64_t r;
 
+    t->row0 = t->row1 = 0;
     if (npoints == 0) return RAST_OK;
 
     /* Visible rows: the clip's rows that the polygon's y extent reaches. */
@@ -304,8 +320,9 @@ static inline rast_status rast__aet_walk(const rast_polygon *poly, uint32_t npoi
     const rast__grid gl = *g;
     /* Each vertex's row (rast__row_at_or_after of its y), in the edge
      * table's room, which the walk needs only once every edge is set up. */
-    int32_t *vrow, lo, hi;
+    int32_t *vrow, lo, hi, minx, maxx;
 
+    t->row0 = t->row1 = 0;
     if (npoints == 0) return RAST_OK;
     edges = (rast__edge *)rast__take(arena, (size_t)npoints * sizeof(rast__edge));
     aet = (rast__edge *)rast__take(arena, (size_t)npoints * sizeof(rast__edge));
@@ -315,12 +332,17 @@ static inline rast_status rast__aet_walk(const rast_polygon *poly, uint32_t npoi
     /* Visible rows: the clip's rows that the polygon's y extent reaches
      * (rows grow with y: the lowest vertex row is the top one's). */
     lo = hi = vrow[0] = (int32_t)rast__row_at_or_after(2 * (int64_t)pts[0].y, &gl);
+    minx = maxx = pts[0].x;
     for (i = 1; i < npoints; i++) {
         int32_t v = (int32_t)rast__row_at_or_after(2 * (int64_t)pts[i].y, &gl);
         vrow[i] = v;
         if (v < lo) lo = v;
         if (v > hi) hi = v;
+        if (pts[i].x < minx) minx = pts[i].x;
+        if (pts[i].x > maxx) maxx = pts[i].x;
     }
+    t->minx = minx;
+    t->maxx = maxx;
     row0 = lo > clip->y0 ? lo : clip->y0;
     row1 = hi < clip->y1 ? hi : clip->y1;
     if (row0 >= row1) return RAST_OK;
@@ -354,7 +376,25 @@ static inline rast_status rast__aet_walk(const rast_polygon *poly, uint32_t npoi
             }
         }
     }
-    rast__aet_sweep(edges, aet, bucket, nedges, row0, row1, rule, span, order, user);
+    t->edges = edges;
+    t->aet = aet;
+    t->bucket = bucket;
+    t->nedges = nedges;
+    t->row0 = row0;
+    t->row1 = row1;
+    return RAST_OK;
+}
+
+static inline rast_status rast__aet_walk(const rast_polygon *poly, uint32_t npoints,
+                                         const rast__grid *g, rast_fill_rule rule,
+                                         const rast_rect *clip, rast__arena *arena,
+                                         rast__aet_span_fn span, rast__aet_order_fn order,
+                                         void *user, int32_t *src)
+{
+    rast__aet_tab t;
+    rast_status st = rast__aet_prepare(poly, npoints, g, clip, arena, src, &t);
+    if (st != RAST_OK || t.row0 >= t.row1) return st;
+    rast__aet_sweep(t.edges, t.aet, t.bucket, t.nedges, t.row0, t.row1, rule, span, order, user);
     return RAST_OK;
 }
 

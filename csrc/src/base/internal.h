@@ -651,5 +651,19 @@ rast_status rast__aet_fill(const rast_polygon *poly, uint32_t npoints,
                            const rast_rect *clip, rast__sink *sink,
                            rast__arena *arena);
 size_t rast__aet_scratch(uint32_t npoints, int32_t width, int32_t height);
+/* The same with the way chosen: RAST__AET_BY_RULE (rast__aet_fill: the
+ * rule in aet.c), the AET's sweep (RAST__AET_BY_SWEEP), or the winding
+ * deltas wherever they can be used (RAST__AET_BY_DELTA, else the sweep):
+ * the same runs (tests/c/test_delta.c).  A build for size has the sweep
+ * only, and this is rast__aet_fill there. */
+enum { RAST__AET_BY_RULE = 0, RAST__AET_BY_SWEEP = 1, RAST__AET_BY_DELTA = 2 };
+#if defined(__OPTIMIZE_SIZE__)
+#define rast__aet_fill_by(poly, npoints, g, rule, clip, sink, arena, how) \
+    rast__aet_fill(poly, npoints, g, rule, clip, sink, arena)
+#else
+rast_status rast__aet_fill_by(const rast_polygon *poly, uint32_t npoints, const rast__grid *g,
+                              rast_fill_rule rule, const rast_rect *clip, rast__sink *sink,
+                              rast__arena *arena, int how);
+#endif
 
 #endif /* RAST_INTERNAL_H */

@@ -8,7 +8,10 @@
  * Scratch: the edge table and the AET (an edge record each) and one bucket
  * per visible row (where its run of the table ends).
  */
+#include <string.h>
+
 #include "../base/aet.h"
+#include "../base/bits.h"
 
 /* The edge record's size is part of the scratch contract in rastrum.h. */
 typedef char rast__aet_edge_size_check[sizeof(rast__edge) == RAST_AET_EDGE_BYTES ? 1 : -1];
@@ -26,6 +29,178 @@ static inline void rast__aet_span(void *user, int32_t row, const rast__edge *l, 
     rast__sink_span((rast__sink *)user, row, l->x, r->x);
 }
 
+#if !defined(__OPTIMIZE_SIZE__)
+/* ---- many small rings: winding deltas, summed along each row ---------------
+ * The AET pays per row and per active edge for keeping its table sorted
+ * (joining, stepping through the table, re-sorting, compacting); a
+ * paragraph of text, a mesh or a map has thousands of short edges and a
+ * hundred or more active on a row, and that upkeep was most of the fill.
+ * Here instead (the edge flag method's idea, section 3.3 of seed 001, as
+ * edgeflag.c does it over a whole clip): every edge walks its rows with
+ * the AET's own DDA (the same crossing columns, to the bit) and adds its
+ * direction (1 under even-odd) to a byte counter at its crossing's column
+ * in the row; then each row is swept left to right, its running sum giving
+ * the winding number of each sample: sample i is inside iff the crossings
+ * with column <= i make it so, exactly the AET's runs (aet.h).  No sorting.
+ *
+ * The counters and the running sum are kept modulo 2^8.  Even-odd needs
+ * only the parity.  Non-zero is exact when no row has 512 crossings or
+ * more: a row's crossings sum to 0 (closed rings), so a sample's winding
+ * number, the sum of those that count for it, is minus the sum of those
+ * that do not, and at most half the row's crossings in magnitude, below
+ * 2^8, so it is 0 iff it is 0 modulo 2^8.
+ *
+ * Columns: the polygon's box (rast__box_of) cut to the clip, bits =
+ * col1 - col0; a crossing left of it is counted at its first column, one
+ * right of it at column `bits`, past every sample (the row's sum still
+ * returns to 0 there).  A row takes stride = bits + 1 bytes rounded up to
+ * whole 8-byte words, and the sweep tests a word at a time, so an empty
+ * stretch costs a word test per 8 columns.  The rows go in bands in the
+ * edge table's room (npoints edge records: rast__aet_scratch is unchanged);
+ * each band walks every edge that reaches it, whose DDA is carried from
+ * the band before.
+ *
+ * When (a rule on counts known before filling, never on a scene):
+ *  - many edges for the rows: at least RAST__DELTA_EDGES edges a row on
+ *    average (then edges join and leave the AET on most rows, and each
+ *    time the AET merges or compacts its whole row: a mesh, a map, a
+ *    paragraph); one big ring (a star, a circle, a glyph) keeps the AET,
+ *    whose steady rows cost less than a sweep of the row's words;
+ *  - the sweep's word tests and the bands' passes over the edges are at
+ *    most RAST__DELTA_WORDS per crossing: rows x words + bands x edges
+ *    <= RAST__DELTA_WORDS x crossings (a wide canvas with few crossings
+ *    keeps the AET);
+ *  - it can: a row of counters fits the room, and, non-zero, every row has
+ *    at most 510 crossings (or there are at most 511 edges), as above. */
+#ifndef RAST__DELTA_EDGES
+#define RAST__DELTA_EDGES 8
+#endif
+#ifndef RAST__DELTA_WORDS
+#define RAST__DELTA_WORDS 8
+#endif
+
+/* Is this build's byte order little-endian (a constant to the compiler)?
+ * It maps a set bit of a loaded word back to its byte. */
+static inline int rast__little_endian(void)
+{
+    const uint32_t one = 1;
+    unsigned char c;
+    memcpy(&c, &one, 1);
+    return c;
+}
+
+/* Sweep row `y`'s counters (stride bytes, the counters past `bits`
+ * included) into its runs, clearing them as it goes. */
+static void rast__delta_row(unsigned char *row, int32_t stride, uint32_t mask, int32_t col0,
+                            int32_t y, rast__sink *sink)
+{
+    const int little = rast__little_endian();
+    uint32_t sum = 0;
+    int32_t k, start = 0, in = 0;
+    for (k = 0; k < stride; k += 8) {
+        uint64_t w;
+        memcpy(&w, row + k, 8);
+        if (!w) continue;
+        memset(row + k, 0, 8);
+        do {
+            const int bit = rast__ctz64(w) & ~7;
+            int now;
+            sum += (uint32_t)(w >> bit) & 0xFF;
+            w &= ~((uint64_t)0xFF << bit);
+            now = (sum & mask) != 0;
+            if (now != in) {
+                const int32_t c = k + (little ? bit >> 3 : 7 - (bit >> 3));
+                if (now) start = c;
+                else rast__sink_span(sink, y, col0 + start, col0 + c);
+                in = now;
+            }
+        } while (w);
+    }
+}
+
+/* The fill by winding deltas, when the rule above takes it (or, `force`,
+ * whenever it can): returns 1, the runs handed to `sink`; 0, having done
+ * nothing, when not. */
+static int rast__aet_delta(uint32_t npoints, const rast__grid *g, rast_fill_rule rule,
+                           const rast_rect *clip, const rast__aet_tab *t, rast__sink *sink,
+                           int force)
+{
+    const int32_t rows = t->row1 - t->row0;
+    rast__edge *const ed = t->aet;
+    int32_t col0, col1, bits, stride, hb, nb, e, j0;
+    int64_t crossings = 0, cost, r;
+    uint32_t mask;
+    unsigned char *buf;
+    size_t room;
+
+    if (t->nedges == 0) return 1;
+    if (!force && t->nedges < RAST__DELTA_EDGES * (int64_t)rows) return 0;
+    /* Columns: the polygon's box within the clip's (as rast__box_of: the
+     * first columns counting the least and the greatest abscissa bound
+     * every crossing's). */
+    r = rast__cross_col(2 * (int64_t)t->minx, 1, g);
+    col0 = r > clip->x0 ? (int32_t)r : clip->x0;
+    r = rast__cross_col(2 * (int64_t)t->maxx, 1, g);
+    col1 = r < clip->x1 ? (int32_t)r : clip->x1;
+    if (col0 >= col1) return 1; /* no visible column: nothing inside */
+    bits = col1 - col0;
+    stride = (bits + 1 + 7) & ~7;
+    room = (size_t)npoints * sizeof(rast__edge);
+    if ((size_t)stride > room) return 0;
+    hb = (int32_t)(room / (size_t)stride < (size_t)rows ? room / (size_t)stride : (size_t)rows);
+    nb = (rows + hb - 1) / hb;
+    /* The crossings, and (non-zero, more than 511 edges) the most on a
+     * row: the running count of edges started less edges ended, the
+     * starts from the buckets (bucket[r - row0 + 1]: row r's), the ends
+     * taken off there for the count and put back after it (the sweep
+     * wants the buckets as they were). */
+    mask = rule == RAST_RULE_EVENODD ? 1 : 0xFF;
+    for (e = 0; e < t->nedges; e++) crossings += ed[e].end - ed[e].row;
+    if (mask != 1 && t->nedges > 511) {
+        int32_t *b = t->bucket, run = 0, most = 0, y;
+        for (e = 0; e < t->nedges; e++)
+            if (ed[e].end < t->row1) b[ed[e].end - t->row0 + 1]--;
+        for (y = 1; y <= rows; y++) {
+            run += b[y];
+            if (run > most) most = run;
+        }
+        for (e = 0; e < t->nedges; e++)
+            if (ed[e].end < t->row1) b[ed[e].end - t->row0 + 1]++;
+        if (most > 510) return 0;
+    }
+    cost = (int64_t)rows * (stride / 8) + (int64_t)nb * t->nedges;
+    if (!force && cost > RAST__DELTA_WORDS * crossings) return 0;
+
+    buf = (unsigned char *)(void *)t->edges;
+    memset(buf, 0, (size_t)hb * (size_t)stride);
+    for (j0 = t->row0; j0 < t->row1; j0 += hb) {
+        const int32_t j1 = t->row1 - j0 > hb ? j0 + hb : t->row1;
+        int32_t j;
+        /* Edge by edge: its direction at each of its crossings. */
+        for (e = 0; e < t->nedges; e++) {
+            rast__edge *d = &ed[e];
+            const int32_t a = d->row > j0 ? d->row : j0, b = d->end < j1 ? d->end : j1;
+            const unsigned char dir = (unsigned char)(mask == 1 ? 1 : d->dir);
+            unsigned char *p = buf + (size_t)(a - j0) * (size_t)stride;
+            for (j = a; j < b; j++, p += stride) {
+                int32_t c = d->x - col0;
+                c = c < 0 ? 0 : c;
+                c = c > bits ? bits : c;
+                p[c] = (unsigned char)(p[c] + dir);
+                rast__edge_step(d);
+            }
+        }
+        /* Row by row: the runs. */
+        for (j = j0; j < j1; j++)
+            rast__delta_row(buf + (size_t)(j - j0) * (size_t)stride, stride, mask, col0, j,
+                            sink);
+    }
+    return 1;
+}
+#endif
+
+#if defined(__OPTIMIZE_SIZE__)
+/* a build for size (firmware): the AET alone */
 rast_status rast__aet_fill(const rast_polygon *poly, uint32_t npoints,
                            const rast__grid *g, rast_fill_rule rule,
                            const rast_rect *clip, rast__sink *sink,
@@ -35,3 +210,28 @@ rast_status rast__aet_fill(const rast_polygon *poly, uint32_t npoints,
     rast__sink_flush(sink);
     return st;
 }
+
+#else
+rast_status rast__aet_fill_by(const rast_polygon *poly, uint32_t npoints, const rast__grid *g,
+                              rast_fill_rule rule, const rast_rect *clip, rast__sink *sink,
+                              rast__arena *arena, int how)
+{
+    rast__aet_tab t;
+    rast_status st = rast__aet_prepare(poly, npoints, g, clip, arena, NULL, &t);
+    if (st == RAST_OK && t.row0 < t.row1 &&
+        (how == RAST__AET_BY_SWEEP ||
+         !rast__aet_delta(npoints, g, rule, clip, &t, sink, how == RAST__AET_BY_DELTA)))
+        rast__aet_sweep(t.edges, t.aet, t.bucket, t.nedges, t.row0, t.row1, rule, rast__aet_span,
+                        NULL, sink);
+    rast__sink_flush(sink);
+    return st;
+}
+
+rast_status rast__aet_fill(const rast_polygon *poly, uint32_t npoints,
+                           const rast__grid *g, rast_fill_rule rule,
+                           const rast_rect *clip, rast__sink *sink,
+                           rast__arena *arena)
+{
+    return rast__aet_fill_by(poly, npoints, g, rule, clip, sink, arena, RAST__AET_BY_RULE);
+}
+#endif

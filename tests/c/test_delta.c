@@ -1,0 +1,227 @@
+/* test_delta.c - the AET filler's two ways (fillers/aet.c): the sweep of
+ * the active edge table and the winding deltas summed along each row give
+ * the same runs, bit for bit, and both the pixels of the reference
+ * winding number (ref.h, straight from DESIGN: a pixel is inside when its
+ * sample is, by the rule).  Random corpora of what breaks fillers: many
+ * small rings overlapping, holes (rings turned the other way), vertices
+ * on sample points and on sample rows, collinear vertices, horizontal
+ * edges, rings crossing the clip's sides, both rules, both samples,
+ * several subpixel precisions, and clips cut small so that the deltas go
+ * in bands.  (A build for size has the sweep only: the two then agree
+ * trivially.) */
+#include <stdint.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "check.h"
+#include "ref.h"
+#include "base/internal.h"
+#include "rastrum.h"
+
+enum { W = 48, H = 24, MAXP = 400 };
+
+typedef struct canvas {
+    unsigned char px[H][W];
+    int bad; /* a run out of the clip, empty, or out of order */
+    int32_t last_y;
+} canvas;
+
+static void put_row(void *user, int32_t y, const int32_t *xs, int32_t n)
+{
+    canvas *c = (canvas *)user;
+    int32_t k, x;
+    if (y < c->last_y || y < 0 || y >= H) {
+        c->bad = 1;
+        return;
+    }
+    c->last_y = y;
+    for (k = 0; k < n; k++) {
+        if (xs[2 * k] >= xs[2 * k + 1] || xs[2 * k] < 0 || xs[2 * k + 1] > W) {
+            c->bad = 1;
+            return;
+        }
+        for (x = xs[2 * k]; x < xs[2 * k + 1]; x++) c->px[y][x]++;
+    }
+}
+
+/* Fill by `how` into c (cleared first); the status. */
+static rast_status fill(canvas *c, const rast_polygon *poly, uint32_t npoints, const rast__grid *g,
+                        rast_fill_rule rule, const rast_rect *clip, void *scratch, size_t bytes,
+                        int how)
+{
+    rast__painter p;
+    rast__sink sink;
+    rast__arena arena = rast__arena_of(scratch, bytes);
+    rast_status st;
+    memset(c, 0, sizeof *c);
+    c->last_y = -1;
+    memset(&p, 0, sizeof p);
+    p.full = put_row;
+    p.user = c;
+    rast__sink_init(&sink, &p, clip);
+    st = rast__aet_fill_by(poly, npoints, g, rule, clip, &sink, &arena, how);
+    return st;
+}
+
+/* v rounded down to a multiple of 2^s. */
+static int32_t floor_to(int32_t v, int s)
+{
+    const int32_t one = (int32_t)1 << s;
+    int32_t m = v % one;
+    return v - (m < 0 ? m + one : m);
+}
+
+/* A random point: on a sample point, on a sample row, or anywhere, within
+ * a margin around the canvas (so that rings cross the clip's sides). */
+static rast_point point(int s, int center)
+{
+    const int32_t one = (int32_t)1 << s, half = center ? one / 2 : 0;
+    rast_point q;
+    int kind = (int)(rng() % 3);
+    q.x = (int32_t)(rng() % (uint32_t)((W + 8) * one)) - 4 * one;
+    q.y = (int32_t)(rng() % (uint32_t)((H + 8) * one)) - 4 * one;
+    if (kind == 0) { /* a sample point */
+        q.x = floor_to(q.x, s) + half;
+        q.y = floor_to(q.y, s) + half;
+    } else if (kind == 1) { /* on a sample row */
+        q.y = floor_to(q.y, s) + half;
+    }
+    return q;
+}
+
+/* Non-zero past the byte counters' reach: a triangle walked round `turns`
+ * times (3 x turns edges, 2 x turns crossings on a row through it, the
+ * winding number `turns` inside).  Up to 510 crossings a row the deltas
+ * are exact and taken; past that the sweep fills (the buckets, which the
+ * deltas' count of crossings borrows, given back as they were). */
+static void test_wound(void)
+{
+    static rast_point pts[3 * 400];
+    static unsigned char scratch[1 << 20];
+    static canvas a, b;
+    static const uint32_t turns[] = {85, 127, 128, 200, 255, 256, 300, 400};
+    rast__grid g;
+    size_t t;
+    CHECK(rast__grid_init(&g, 4, RAST_SAMPLE_CENTER, RAST_ROUND_EXACT, RAST_BOUNDARY_EXACT) == RAST_OK);
+    for (t = 0; t < sizeof turns / sizeof turns[0]; t++) {
+        uint32_t n = 3 * turns[t], v;
+        rast_polygon poly;
+        rast_rect clip = {0, 0, W, H};
+        int32_t i, j, ok = 1, inside = 0;
+        for (v = 0; v < n; v += 3) {
+            pts[v].x = 2 << 4;
+            pts[v].y = 1 << 4;
+            pts[v + 1].x = (W - 3) << 4;
+            pts[v + 1].y = (H / 2) << 4;
+            pts[v + 2].x = 5 << 4;
+            pts[v + 2].y = (H - 2) << 4;
+        }
+        poly.points = pts;
+        poly.ring_sizes = &n;
+        poly.nrings = 1;
+        CHECK(fill(&a, &poly, n, &g, RAST_RULE_NONZERO, &clip, scratch, rast__aet_scratch(n, W, H),
+                   RAST__AET_BY_SWEEP) == RAST_OK);
+        CHECK(fill(&b, &poly, n, &g, RAST_RULE_NONZERO, &clip, scratch, rast__aet_scratch(n, W, H),
+                   RAST__AET_BY_DELTA) == RAST_OK);
+        CHECK(!a.bad && !b.bad);
+        CHECK(memcmp(a.px, b.px, sizeof a.px) == 0);
+        for (j = 0; j < H; j++)
+            for (i = 0; i < W; i++) {
+                int in = ref_winding(pts, &n, 1, 4, 1, 0, i, j, NULL) != 0;
+                if (b.px[j][i] != in) ok = 0;
+                inside += in;
+            }
+        CHECK(ok && inside > 0);
+    }
+}
+
+int main(void)
+{
+    static rast_point pts[MAXP];
+    static uint32_t sizes[MAXP];
+    static canvas a, b;
+    static unsigned char scratch[1 << 20];
+    int iter, n = check_count(3000);
+    for (iter = 0; iter < n; iter++) {
+        const int s = (int)(rng() % 5), center = (int)(rng() & 1), textbook = (int)(rng() % 4 == 0);
+        const rast_fill_rule rule = (rng() & 1) ? RAST_RULE_EVENODD : RAST_RULE_NONZERO;
+        uint32_t nrings = 1 + rng() % 60, np = 0, k, v;
+        rast__grid g;
+        rast_polygon poly;
+        rast_rect clip;
+        size_t need;
+        int32_t i, j, ok = 1;
+
+        CHECK(rast__grid_init(&g, s, center ? RAST_SAMPLE_CENTER : RAST_SAMPLE_CORNER,
+                              textbook ? RAST_ROUND_TEXTBOOK : RAST_ROUND_EXACT,
+                              RAST_BOUNDARY_EXACT) == RAST_OK);
+        for (k = 0; k < nrings && np + 8 <= MAXP; k++) {
+            /* a small ring (3..6 vertices) around a point, either way
+             * round; sometimes a vertex halfway along an edge
+             * (collinear), or a repeated vertex */
+            uint32_t m = 3 + rng() % 4, first = np;
+            rast_point c0 = point(s, center);
+            const int32_t r = (int32_t)(1 + rng() % 6) << s;
+            for (v = 0; v < m; v++) {
+                rast_point q = point(s, center);
+                q.x = c0.x + (q.x % r);
+                q.y = c0.y + (q.y % r);
+                pts[np++] = q;
+            }
+            if (rng() % 4 == 0) { /* a collinear vertex between the first two */
+                rast_point mid;
+                mid.x = pts[first].x + (pts[first + 1].x - pts[first].x) / 2;
+                mid.y = pts[first].y + (pts[first + 1].y - pts[first].y) / 2;
+                if ((int64_t)(mid.x - pts[first].x) * (pts[first + 1].y - pts[first].y) ==
+                    (int64_t)(mid.y - pts[first].y) * (pts[first + 1].x - pts[first].x)) {
+                    memmove(&pts[first + 2], &pts[first + 1], (np - first - 1) * sizeof *pts);
+                    pts[first + 1] = mid;
+                    np++;
+                    m++;
+                }
+            }
+            if (rng() % 8 == 0) pts[first + 2] = pts[first + 1]; /* a repeated vertex */
+            if (rng() % 8 == 0) { /* one big ring across the canvas, the hole of its rings */
+                pts[first].x = -(2 << s);
+                pts[first].y = (int32_t)(rng() % H) << s;
+                pts[first + 1].x = (W + 2) << s;
+                pts[first + 1].y = pts[first].y + (int32_t)(rng() % 3);
+            }
+            sizes[k] = m;
+        }
+        nrings = k;
+        poly.points = pts;
+        poly.ring_sizes = sizes;
+        poly.nrings = nrings;
+        clip.x0 = (int32_t)(rng() % 6);
+        clip.y0 = (int32_t)(rng() % 6);
+        clip.x1 = W - (int32_t)(rng() % 6);
+        clip.y1 = H - (int32_t)(rng() % 6);
+        /* exactly the AET's scratch: the counters' rows (at most 56
+         * bytes) always fit the room of 3 or more edge records, and a
+         * polygon of few vertices holds only a few rows of them, so they
+         * go in bands; with at most MAXP < 512 edges non-zero is exact,
+         * so RAST__AET_BY_DELTA always takes the deltas */
+        need = rast__aet_scratch(np, W, H);
+        CHECK(need <= sizeof scratch);
+        CHECK(fill(&a, &poly, np, &g, rule, &clip, scratch, need, RAST__AET_BY_SWEEP) == RAST_OK);
+        CHECK(fill(&b, &poly, np, &g, rule, &clip, scratch, need, RAST__AET_BY_DELTA) == RAST_OK);
+        CHECK(!a.bad && !b.bad);
+        CHECK(memcmp(a.px, b.px, sizeof a.px) == 0);
+        for (j = 0; j < H && ok; j++) {
+            for (i = 0; i < W && ok; i++) {
+                int cr, w = ref_winding(pts, sizes, nrings, s, center, textbook, i, j, &cr);
+                int in = i >= clip.x0 && i < clip.x1 && j >= clip.y0 && j < clip.y1 &&
+                         (rule == RAST_RULE_EVENODD ? (cr & 1) : w != 0);
+                if (b.px[j][i] != in) {
+                    fprintf(stderr, "iter %d: pixel (%d, %d) is %d, the reference %d\n", iter, (int)i,
+                            (int)j, b.px[j][i], in);
+                    ok = 0;
+                }
+            }
+        }
+        CHECK(ok);
+    }
+    test_wound();
+    return check_report("test_delta");
+}

@@ -616,7 +616,10 @@ static PyObject *seq_fill_call(PyObject *self, PyObject *args)
     if (seq_head_ok <= 0 ||
         !(((const seq_array_head *)(const void *)arr)->flags & SEQ_ARRAY_WRITEABLE))
         Py_RETURN_FALSE;
-    if (method || (opt && PyDict_CheckExact(opt) && PyDict_Size(opt) != 0)) {
+    if (method == Py_None && opt == seq_evenodd) {
+        /* rule= and aa= at their defaults (the interned "evenodd"): the
+         * default options, without the table's two lookups */
+    } else if (method || (opt && PyDict_CheckExact(opt) && PyDict_Size(opt) != 0)) {
         opts = method ? seq_table_opts(opt, method, &aa) : seq_kw_opts(opt, &aa);
         if (!opts || (aa && (!seq_fill_aa || PyTuple_GetItem(q, 6) != Py_True))) Py_RETURN_FALSE;
     } else if (opt && opt != Py_None && !PyDict_CheckExact(opt)) {

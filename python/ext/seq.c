@@ -553,23 +553,15 @@ static int seq_is(PyObject *key, PyObject *name)
     return key == name || (PyUnicode_CheckExact(key) && PyUnicode_Compare(key, name) == 0);
 }
 
-/* The options of a keyword dict kw of only rule= (an exact str) and aa=
- * (None or an exact str) found in the table: the address, *aa set when it
- * is a coverage method; NULL (no exception) for anything else. */
-static const void *seq_kw_opts(PyObject *kw, int *aa)
+/* The options of rule (an exact str) and aa (None or an exact str) found
+ * in the table: the address, *aa set when it is a coverage method; NULL
+ * (no exception) for anything else. */
+static const void *seq_table_opts(PyObject *rule, PyObject *method, int *aa)
 {
-    PyObject *key, *value, *rule = seq_evenodd, *method = Py_None, *row, *addr;
-    Py_ssize_t pos = 0;
+    PyObject *row, *addr;
     const void *a;
-    while (PyDict_Next(kw, &pos, &key, &value)) {
-        if (seq_is(key, seq_rule_name) && PyUnicode_CheckExact(value))
-            rule = value;
-        else if (seq_is(key, seq_aa_name) && (value == Py_None || PyUnicode_CheckExact(value)))
-            method = value;
-        else
-            return NULL;
-    }
-    if (!seq_kw_table || !(row = PyDict_GetItem(seq_kw_table, rule)) || !PyDict_CheckExact(row) ||
+    if (!PyUnicode_CheckExact(rule) || (method != Py_None && !PyUnicode_CheckExact(method)) || !seq_kw_table ||
+        !(row = PyDict_GetItem(seq_kw_table, rule)) || !PyDict_CheckExact(row) ||
         !(addr = PyDict_GetItem(row, method)))
         return NULL;
     a = PyLong_AsVoidPtr(addr);
@@ -578,17 +570,35 @@ static const void *seq_kw_opts(PyObject *kw, int *aa)
     return a;
 }
 
+/* The options of a keyword dict kw of only rule= and aa= (seq_table_opts). */
+static const void *seq_kw_opts(PyObject *kw, int *aa)
+{
+    PyObject *key, *value, *rule = seq_evenodd, *method = Py_None;
+    Py_ssize_t pos = 0;
+    while (PyDict_Next(kw, &pos, &key, &value)) {
+        if (seq_is(key, seq_rule_name))
+            rule = value;
+        else if (seq_is(key, seq_aa_name))
+            method = value;
+        else
+            return NULL;
+    }
+    return seq_table_opts(rule, method, aa);
+}
+
 /* fill(q, target, rings, color[, opts]) -> bool: True when the ring was
  * filled.  q is the canvas's remembered call, (target, color, target
  * address, pixel address, array, pixel, aa allowed): it holds only for
  * the very target and colour objects given, and the canvas's array still
  * writable.  opts: None or an empty dict (the default options), the
- * address of a rast_fill_opts, or the call's keyword dict (seq_kw_opts).
+ * address of a rast_fill_opts, or the call's keyword dict (seq_kw_opts);
+ * or, as fill(q, target, rings, color, rule, aa), the call's rule= and
+ * aa= themselves (seq_table_opts: no dict made for them).
  * False (nothing written, no exception) for anything else or an error
  * status: the caller's general path then checks and says what is wrong. */
 static PyObject *seq_fill_call(PyObject *self, PyObject *args)
 {
-    PyObject *q, *target, *rings, *color, *opt = NULL, *arr;
+    PyObject *q, *target, *rings, *color, *opt = NULL, *method = NULL, *arr;
     const seq_array_head *h;
     double stack[2 * SEQ_STACK_POINTS], *xy = NULL, *heap = NULL;
     const void *t, *pix, *opts = seq_fill_opts;
@@ -596,7 +606,7 @@ static PyObject *seq_fill_call(PyObject *self, PyObject *args)
     long st;
     int aa = 0;
     (void)self;
-    if (!PyArg_UnpackTuple(args, "fill", 4, 5, &q, &target, &rings, &color, &opt)) return NULL;
+    if (!PyArg_UnpackTuple(args, "fill", 4, 6, &q, &target, &rings, &color, &opt, &method)) return NULL;
     if (!seq_fill || !PyTuple_CheckExact(q) || PyTuple_Size(q) != 7 || target == Py_None ||
         PyTuple_GetItem(q, 0) != target || PyTuple_GetItem(q, 1) != color)
         Py_RETURN_FALSE;
@@ -606,12 +616,13 @@ static PyObject *seq_fill_call(PyObject *self, PyObject *args)
     if (seq_head_ok <= 0 ||
         !(((const seq_array_head *)(const void *)arr)->flags & SEQ_ARRAY_WRITEABLE))
         Py_RETURN_FALSE;
-    if (opt && PyDict_CheckExact(opt)) {
-        if (PyDict_Size(opt) != 0) {
-            opts = seq_kw_opts(opt, &aa);
-            if (!opts || (aa && (!seq_fill_aa || PyTuple_GetItem(q, 6) != Py_True))) Py_RETURN_FALSE;
-        }
-    } else if (opt && opt != Py_None) {
+    if (method == Py_None && opt == seq_evenodd) {
+        /* rule= and aa= at their defaults (the interned "evenodd"): the
+         * default options, without the table's two lookups */
+    } else if (method || (opt && PyDict_CheckExact(opt) && PyDict_Size(opt) != 0)) {
+        opts = method ? seq_table_opts(opt, method, &aa) : seq_kw_opts(opt, &aa);
+        if (!opts || (aa && (!seq_fill_aa || PyTuple_GetItem(q, 6) != Py_True))) Py_RETURN_FALSE;
+    } else if (opt && opt != Py_None && !PyDict_CheckExact(opt)) {
         opts = PyLong_AsVoidPtr(opt);
         if (!opts) {
             PyErr_Clear();
@@ -693,7 +704,8 @@ static PyMethodDef seq_methods[] = {
      "fill_setup(fill_ring address, default opts address, ndarray, float64[, fill_polygon_aa address, "
      "{rule: {aa: opts address}}]) -> None"},
     {"fill", seq_fill_call, METH_VARARGS,
-     "fill(q, target, rings, color[, opts address or keyword dict]) -> bool: Canvas.fill_polygon's common call, done"},
+     "fill(q, target, rings, color[, opts address or keyword dict | rule, aa]) -> bool: Canvas.fill_polygon's common call, "
+     "done"},
     {NULL, NULL, 0, NULL},
 };
 

@@ -1939,7 +1939,9 @@ def _opts_address(opts):
 # keyword but rule= and aa= (the loop every cv2.fillPoly user writes), is
 # done in C in one call (_seq.fill) once the full method has drawn with
 # that canvas target and colour object and remembered them in _fpq: no
-# frame of sixteen keyword arguments, no cffi conversions.
+# frame of sixteen keyword arguments, no cffi conversions.  rule and aa
+# are this call's own keywords, handed to C as they are: a dict of them
+# (**kw) cost more than the rest of the call's Python (issue 33).
 # Anything else, and anything _seq.fill declines, is the full method's:
 # its checks, its InputErrors, its pixels (the same C fill for what both
 # take).  The class keeps the full method's source, signature and
@@ -1947,10 +1949,10 @@ def _opts_address(opts):
 _fill_polygon = Canvas.fill_polygon
 
 
-def _fill_polygon_call(self, rings, color=None, **kw):
-    if _fill_quick(self._fpq, self._target, rings, color, kw):
+def _fill_polygon_call(self, rings, color=None, *, rule=_EVENODD, aa=None, **kw):
+    if not kw and _fill_quick(self._fpq, self._target, rings, color, rule, aa):
         return None
-    return _fill_polygon(self, rings, color, **kw)
+    return _fill_polygon(self, rings, color, rule=rule, aa=aa, **kw)
 
 
 functools.update_wrapper(_fill_polygon_call, _fill_polygon)

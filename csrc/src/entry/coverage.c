@@ -143,6 +143,66 @@ static int rast__cov_plain_pays(const rast__cedge *e, uint32_t n, int32_t s, uin
     return rows >= 6 * (uint64_t)npoints;
 }
 
+#if !defined(__OPTIMIZE_SIZE__)
+/* 1 when the polygon is one ring that is convex: its edges of length 0
+ * skipped, every two consecutive ones turn the same way or go straight on
+ * (none turns back), and their direction goes round once (dx changes sign
+ * exactly twice round the ring).  Each turn is then below a half turn, so
+ * the direction turns monotonically through 2 pi times the number of
+ * rounds, and passes the vertical, where dx changes sign, twice a round;
+ * a closed polygon that turns one way through 2 pi is convex and simple.
+ * Its winding number is 0 outside and +1 or -1 inside: it is plain
+ * (coverage_plain.c), found in a few operations a vertex, and "area" may
+ * take it by the accumulation at any size (the tiny polygons of a
+ * call each, where rast__cov_plain_pays says no).  |coordinates| <=
+ * RAST_COORD_MAX (checked): differences < 2^28, products < 2^57. */
+static int rast__cov_convex(const rast_polygon *poly)
+{
+    const rast_point *p = poly->points;
+    uint32_t n, i, j;
+    int64_t px = 0, py = 0, dx, dy, c;
+    int turn = 0, flips = 0, sx = 0;
+    if (poly->nrings != 1 || (n = poly->ring_sizes[0]) < 3) return 0;
+    /* the ring's last edge of length not 0, and the sign of the last dx
+     * not 0: what comes before the first edge */
+    for (i = n; i-- > 0 && !(sx && (px || py));) {
+        j = i + 1 < n ? i + 1 : 0;
+        dx = (int64_t)p[j].x - p[i].x;
+        if (!px && !py) {
+            px = dx;
+            py = (int64_t)p[j].y - p[i].y;
+        }
+        if (!sx && dx) sx = dx > 0 ? 1 : -1;
+    }
+    if (!sx) return 0; /* every edge vertical or of length 0: no area */
+    for (i = 0; i < n; i++) {
+        j = i + 1 < n ? i + 1 : 0;
+        dx = (int64_t)p[j].x - p[i].x;
+        dy = (int64_t)p[j].y - p[i].y;
+        if (!dx && !dy) continue;
+        c = px * dy - py * dx;
+        if (c == 0) {
+            if (px * dx + py * dy < 0) return 0; /* turns back */
+        } else {
+            const int t = c > 0 ? 1 : -1;
+            if (turn && t != turn) return 0;
+            turn = t;
+        }
+        if (dx) {
+            const int sd = dx > 0 ? 1 : -1;
+            if (sd != sx && ++flips > 2) return 0;
+            sx = sd;
+        }
+        px = dx;
+        py = dy;
+    }
+    return turn != 0 && flips == 2;
+}
+#define RAST__COV_CONVEX(poly) rast__cov_convex(poly)
+#else
+#define RAST__COV_CONVEX(poly) 0 /* (size-optimised: the plain test's way only) */
+#endif
+
 static rast_status rast__cov_run(const rast_polygon *poly, const rast_point *tris, uint32_t ntris,
                                  uint32_t npoints, const rast_coverage_opts *opts,
                                  const rast__cov_out *o, void *scratch, size_t scratch_bytes)
@@ -165,6 +225,7 @@ static rast_status rast__cov_run(const rast_polygon *poly, const rast_point *tri
          * the accumulation is the coverage) */
         if (!tris && rast__cov_acc_may(o, s) &&
             (opts->method == RAST_AA_ACCUMULATE ||
+             RAST__COV_CONVEX(poly) ||
              (rast__cov_plain_pays(e, n, s, npoints) && rast__cov_plain(poly, npoints, arena))))
             /* (16 rings or more of 8 vertices or fewer on the mean: a
              * mesh's, whose shared sides cancel first) */

@@ -64,8 +64,8 @@ echo "test-wheel: Pythons found: $(echo $minors); trying $oldest (${by_minor[$ol
 # --- 1. the wheel, built once -----------------------------------------------------
 # From a copy of the tree (what is there, committed or not; without build/,
 # .venv and .git): setuptools builds in the source folder, and the copy
-# leaves the tree's build/ to whatever else runs meanwhile (CI runs this
-# beside the sanitizer runs, which build the extension in the tree).
+# leaves the tree's build/ (the extension other targets built there) as
+# it was.
 rm -rf "$out"; mkdir -p "$out/dist" "$out/src"
 tar -C "$root" --exclude=./build --exclude=./.venv --exclude=./.git --exclude=__pycache__ \
   --exclude=./.hypothesis -cf - . | tar -C "$out/src" -xf - || fail "copying the tree"

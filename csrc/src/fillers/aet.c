@@ -89,8 +89,17 @@ static inline int rast__little_endian(void)
     return c;
 }
 
+/* `w`'s bytes in the other order: a big-endian load made little-endian,
+ * so that the lowest set bit is the first column's byte either way. */
+static inline uint64_t rast__swap64(uint64_t w)
+{
+    w = ((w & UINT64_C(0x00FF00FF00FF00FF)) << 8) | ((w >> 8) & UINT64_C(0x00FF00FF00FF00FF));
+    w = ((w & UINT64_C(0x0000FFFF0000FFFF)) << 16) | ((w >> 16) & UINT64_C(0x0000FFFF0000FFFF));
+    return (w << 32) | (w >> 32);
+}
+
 /* Sweep row `y`'s counters (stride bytes, the counters past `bits`
- * included) into its runs, clearing them as it goes. */
+ * included) into its runs, left to right, clearing them as it goes. */
 static void rast__delta_row(unsigned char *row, int32_t stride, uint32_t mask, int32_t col0,
                             int32_t y, rast__sink *sink)
 {
@@ -102,6 +111,7 @@ static void rast__delta_row(unsigned char *row, int32_t stride, uint32_t mask, i
         memcpy(&w, row + k, 8);
         if (!w) continue;
         memset(row + k, 0, 8);
+        if (!little) w = rast__swap64(w);  /* the columns in order of the bits */
         do {
             const int bit = rast__ctz64(w) & ~7;
             int now;
@@ -109,7 +119,7 @@ static void rast__delta_row(unsigned char *row, int32_t stride, uint32_t mask, i
             w &= ~((uint64_t)0xFF << bit);
             now = (sum & mask) != 0;
             if (now != in) {
-                const int32_t c = k + (little ? bit >> 3 : 7 - (bit >> 3));
+                const int32_t c = k + (bit >> 3);
                 if (now) start = c;
                 else rast__sink_span(sink, y, col0 + start, col0 + c);
                 in = now;

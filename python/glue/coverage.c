@@ -215,6 +215,18 @@ static rastpy_cov_dest rastpy_paint(const rast_target *target, const void *pixel
     return d;
 }
 
+/* A shaded fill's destination: the target, a colour per vertex, the
+ * shading and the blend (NULL: the colours stored). */
+static rastpy_cov_dest rastpy_shaded(const rast_target *target, const uint8_t *colors,
+                                     const rast_shade_opts *shade, const rast_blend_opts *blend)
+{
+    rastpy_cov_dest d = rastpy_paint(target, NULL);
+    d.colors = colors;
+    d.shade = shade;
+    d.blend = blend;
+    return d;
+}
+
 long rastpy_polygon_coverage(void *out, int32_t height, int32_t width, int format,
                              const double *xy, uint32_t npoints, const uint32_t *ring_sizes,
                              uint32_t nrings, const rast_coverage_opts *opts, rastpy_scratch *sc)
@@ -260,10 +272,7 @@ long rastpy_fill_triangles_shaded_aa_blend(const rast_target *target, const doub
 {
     rastpy_cov_dest d;
     if (!target || !colors || !shade) return RAST_E_NULL;
-    d = rastpy_paint(target, NULL);
-    d.colors = colors;
-    d.shade = shade;
-    d.blend = blend;
+    d = rastpy_shaded(target, colors, shade, blend);
     return rastpy_coverage(&d, xy, 3 * ntris, NULL, 0, 1, opts, sc);
 }
 
@@ -284,9 +293,6 @@ long rastpy_fill_polygon_gouraud_aa(const rast_target *target, const double *xy,
 {
     rastpy_cov_dest d;
     if (!target || !colors || !shade) return RAST_E_NULL;
-    d = rastpy_paint(target, NULL);
-    d.colors = colors;
-    d.shade = shade;
-    d.blend = blend;
+    d = rastpy_shaded(target, colors, shade, blend);
     return rastpy_coverage(&d, xy, npoints, ring_sizes, nrings, 0, opts, sc);
 }

@@ -18,10 +18,22 @@ rast_status rast_aa_method_info(rast_aa_method method, const char **name)
     return RAST_OK;
 }
 
+/* Some supersampling method is kept by the build's configuration (a
+ * constant: where none is, rast__aa_kbits is 0 for every method the
+ * checks let through, and the fine-grid path, rast__cov_ss and
+ * rast__cov_ss_tris, is not linked: docs/c.md, "Pay for what you call").
+ * The same for "accumulate" (whose own paths "area" does not take). */
+#define RAST__SS_KEPT                                                          \
+    (RAST__HAS(RAST_CONFIG_AA_METHODS, RAST_AA_SS2) ||                         \
+     RAST__HAS(RAST_CONFIG_AA_METHODS, RAST_AA_SS4) ||                         \
+     RAST__HAS(RAST_CONFIG_AA_METHODS, RAST_AA_SS8) ||                         \
+     RAST__HAS(RAST_CONFIG_AA_METHODS, RAST_AA_SS16))
+#define RAST__IS_ACC(m) (RAST__HAS(RAST_CONFIG_AA_METHODS, RAST_AA_ACCUMULATE) && (m) == RAST_AA_ACCUMULATE)
+
 /* log2 of k for the supersampling methods, 0 for the others. */
 static int32_t rast__aa_kbits(rast_aa_method m)
 {
-    return (m >= RAST_AA_SS2 && m <= RAST_AA_SS16) ? (int32_t)(m - RAST_AA_SS2) + 1 : 0;
+    return (RAST__SS_KEPT && m >= RAST_AA_SS2 && m <= RAST_AA_SS16) ? (int32_t)(m - RAST_AA_SS2) + 1 : 0;
 }
 
 static rast_status rast__cov_check_opts(const rast_coverage_opts *o)
@@ -224,19 +236,19 @@ static rast_status rast__cov_run(const rast_polygon *poly, const rast_point *tri
          * and so does "area" of a plain polygon (coverage_plain.c: there
          * the accumulation is the coverage) */
         if (!tris && rast__cov_acc_may(o, s) &&
-            (opts->method == RAST_AA_ACCUMULATE ||
+            (RAST__IS_ACC(opts->method) ||
              RAST__COV_CONVEX(poly) ||
              (rast__cov_plain_pays(e, n, s, npoints) && rast__cov_plain(poly, npoints, arena))))
             /* (16 rings or more of 8 vertices or fewer on the mean: a
              * mesh's, whose shared sides cancel first) */
-            return opts->method == RAST_AA_ACCUMULATE && poly->nrings >= 16 &&
+            return RAST__IS_ACC(opts->method) && poly->nrings >= 16 &&
                            (uint64_t)poly->nrings * 8 >= npoints
                        ? rast__cov_acc_shared(e, n, s, rule, o, &arena)
                        : rast__cov_acc(e, n, s, rule, o, &arena);
         /* a triangle batch's accumulation: its shared sides cancel first */
-        if (tris && opts->method == RAST_AA_ACCUMULATE && rast__cov_acc_may(o, s))
+        if (tris && RAST__IS_ACC(opts->method) && rast__cov_acc_may(o, s))
             return rast__cov_acc_shared(e, n, s, rule, o, &arena);
-        return rast__cov_area(e, n, s, rule, opts->method == RAST_AA_ACCUMULATE, o, &arena);
+        return rast__cov_area(e, n, s, rule, RAST__IS_ACC(opts->method), o, &arena);
     } else {
         int32_t scale = s < kb ? kb - s : 0;
         rast_point *q = (rast_point *)rast__take(&arena, (size_t)npoints * sizeof(rast_point));

@@ -94,6 +94,35 @@ def test_keyword_c_call_as_the_general_path(pts, rule, aa, fmt, tuples, given_kw
         assert np.array_equal(quick.array, _blend(back, cov, color))
 
 
+def _fresh(s):
+    """A str of the same value as s that is another object (not interned)."""
+    t = "".join([s[:1], s[1:]])
+    assert t == s and t is not s
+    return t
+
+
+@settings(max_examples=examples(20), deadline=None)
+@given(st.lists(st.tuples(st.sampled_from(["evenodd", "nonzero"]), st.sampled_from([None] + METHODS),
+                          st.booleans()), min_size=2, max_size=8))
+@example([("nonzero", "area", False), ("nonzero", "area", True), ("evenodd", "area", False),
+          ("evenodd", None, True), ("nonzero", "ss4", False), ("nonzero", "ss4", False)])
+def test_keyword_c_call_options_follow_each_call(calls):
+    """_seq.fill remembers the last rule= and aa= objects it looked up
+    (python/ext/seq.c, seq_table_opts): calls that alternate them, as the
+    same objects or as other str objects of the same value, each draw with
+    their own options, as the general path draws the same sequence."""
+    general, quick = _canvas("gray8", back=True), _canvas("gray8", back=True)
+    quick.fill_polygon(_EMPTY, 200, rule="nonzero", aa="area")  # remembered
+    for k, (rule, aa, fresh) in enumerate(calls):
+        a = np.array(_STAR, np.float64) + (k % 3, k % 2)
+        if fresh:
+            rule, aa = _fresh(rule), aa and _fresh(aa)
+        general.fill_polygon(_general(a), 200, rule=rule, aa=aa)
+        with _COnly():
+            quick.fill_polygon(a, 200, rule=rule, aa=aa)
+        assert np.array_equal(quick.array, general.array)
+
+
 @pytest.mark.parametrize("kw", [
     dict(aa="area", subpixel_bits=8), dict(aa="area", opacity=None), dict(rule=np.str_("nonzero")),
     dict(aa=np.str_("area")), dict(aa="ss4", sample_offset=0.5), dict(rule="nonzero", algorithm="aet"),

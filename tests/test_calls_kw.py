@@ -219,3 +219,37 @@ def test_cut_to_the_box_inside_a_target_clip(pts, method, xywh, triangles):
     else:
         cov = rastrum.polygon_coverage(a, (40, 44), method=method, rule="nonzero")
     assert np.array_equal(full, _blend(np.full((40, 44), 9, np.uint8), cov, 200))
+
+
+@pytest.mark.parametrize("bad_point", [False, True])
+@pytest.mark.parametrize("clip", [None, (2, 3, 30, 20), (0, 0, 2**30 + 5, 10), (10, 10, 5, 30), (-7, 0, 40, 2**30)])
+@pytest.mark.parametrize("change", [None, ("method", 99), ("rule", 7), ("subpixel_bits", 40), ("subpixel_bits", -1),
+                                    ("sample", 3), "null"])
+def test_fill_polygon_aa_status_order(change, clip, bad_point):
+    """rastpy_fill_polygon_aa (python/glue/coverage.c) answers the status
+    rast_coverage_scratch_size gives for the options, the target's whole
+    clip and the count before any point's (k + 1 for bad point k), whether
+    it checks them before the snap or after it (rastpy_cov_late); with
+    good options and a good clip, the point's; nothing written but for 0."""
+    opts = _coverage._opts("area", "nonzero", 8, 0.5, "test")
+    if change == "null":
+        opts = ffi.NULL
+    elif change is not None:
+        opts = ffi.new("rast_coverage_opts *", {f: getattr(opts, f) for f in ("method", "rule", "subpixel_bits",
+                                                                          "sample")})
+        setattr(opts, *change)
+    a = np.array([[1.0, 1.0], [19.0, 2.5], [6.0, 17.0], [2.0, 9.0]])
+    if bad_point:
+        a[2, 0] = np.nan
+    arr = np.full((30, 40), 9, np.uint8)
+    t = _core.make_target(arr, lib.RAST_FORMAT_GRAY8)
+    if clip is not None:
+        t.clip.x0, t.clip.y0, t.clip.x1, t.clip.y1 = clip
+    need = ffi.new("size_t *")
+    want = lib.rast_coverage_scratch_size(opts, len(a), t.clip.x1 - t.clip.x0, t.clip.y1 - t.clip.y0, need)
+    if want == 0 and bad_point:
+        want = 3
+    got = lib.rastpy_fill_polygon_aa(t, ffi.from_buffer("double[]", a), len(a), ffi.NULL, 1, opts,
+                                     ffi.new("uint8_t[1]", [200]), ffi.NULL)
+    assert got == want
+    assert want == 0 or (arr == 9).all()

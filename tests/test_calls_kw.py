@@ -94,6 +94,35 @@ def test_keyword_c_call_as_the_general_path(pts, rule, aa, fmt, tuples, given_kw
         assert np.array_equal(quick.array, _blend(back, cov, color))
 
 
+def _fresh(s):
+    """A str of the same value as s that is another object (not interned)."""
+    t = "".join([s[:1], s[1:]])
+    assert t == s and t is not s
+    return t
+
+
+@settings(max_examples=examples(20), deadline=None)
+@given(st.lists(st.tuples(st.sampled_from(["evenodd", "nonzero"]), st.sampled_from([None] + METHODS),
+                          st.booleans()), min_size=2, max_size=8))
+@example([("nonzero", "area", False), ("nonzero", "area", True), ("evenodd", "area", False),
+          ("evenodd", None, True), ("nonzero", "ss4", False), ("nonzero", "ss4", False)])
+def test_keyword_c_call_options_follow_each_call(calls):
+    """_seq.fill remembers the last rule= and aa= objects it looked up
+    (python/ext/seq.c, seq_table_opts): calls that alternate them, as the
+    same objects or as other str objects of the same value, each draw with
+    their own options, as the general path draws the same sequence."""
+    general, quick = _canvas("gray8", back=True), _canvas("gray8", back=True)
+    quick.fill_polygon(_EMPTY, 200, rule="nonzero", aa="area")  # remembered
+    for k, (rule, aa, fresh) in enumerate(calls):
+        a = np.array(_STAR, np.float64) + (k % 3, k % 2)
+        if fresh:
+            rule, aa = _fresh(rule), aa and _fresh(aa)
+        general.fill_polygon(_general(a), 200, rule=rule, aa=aa)
+        with _COnly():
+            quick.fill_polygon(a, 200, rule=rule, aa=aa)
+        assert np.array_equal(quick.array, general.array)
+
+
 @pytest.mark.parametrize("kw", [
     dict(aa="area", subpixel_bits=8), dict(aa="area", opacity=None), dict(rule=np.str_("nonzero")),
     dict(aa=np.str_("area")), dict(aa="ss4", sample_offset=0.5), dict(rule="nonzero", algorithm="aet"),
@@ -190,3 +219,37 @@ def test_cut_to_the_box_inside_a_target_clip(pts, method, xywh, triangles):
     else:
         cov = rastrum.polygon_coverage(a, (40, 44), method=method, rule="nonzero")
     assert np.array_equal(full, _blend(np.full((40, 44), 9, np.uint8), cov, 200))
+
+
+@pytest.mark.parametrize("bad_point", [False, True])
+@pytest.mark.parametrize("clip", [None, (2, 3, 30, 20), (0, 0, 2**30 + 5, 10), (10, 10, 5, 30), (-7, 0, 40, 2**30)])
+@pytest.mark.parametrize("change", [None, ("method", 99), ("rule", 7), ("subpixel_bits", 40), ("subpixel_bits", -1),
+                                    ("sample", 3), "null"])
+def test_fill_polygon_aa_status_order(change, clip, bad_point):
+    """rastpy_fill_polygon_aa (python/glue/coverage.c) answers the status
+    rast_coverage_scratch_size gives for the options, the target's whole
+    clip and the count before any point's (k + 1 for bad point k), whether
+    it checks them before the snap or after it (rastpy_cov_late); with
+    good options and a good clip, the point's; nothing written but for 0."""
+    opts = _coverage._opts("area", "nonzero", 8, 0.5, "test")
+    if change == "null":
+        opts = ffi.NULL
+    elif change is not None:
+        opts = ffi.new("rast_coverage_opts *", {f: getattr(opts, f) for f in ("method", "rule", "subpixel_bits",
+                                                                          "sample")})
+        setattr(opts, *change)
+    a = np.array([[1.0, 1.0], [19.0, 2.5], [6.0, 17.0], [2.0, 9.0]])
+    if bad_point:
+        a[2, 0] = np.nan
+    arr = np.full((30, 40), 9, np.uint8)
+    t = _core.make_target(arr, lib.RAST_FORMAT_GRAY8)
+    if clip is not None:
+        t.clip.x0, t.clip.y0, t.clip.x1, t.clip.y1 = clip
+    need = ffi.new("size_t *")
+    want = lib.rast_coverage_scratch_size(opts, len(a), t.clip.x1 - t.clip.x0, t.clip.y1 - t.clip.y0, need)
+    if want == 0 and bad_point:
+        want = 3
+    got = lib.rastpy_fill_polygon_aa(t, ffi.from_buffer("double[]", a), len(a), ffi.NULL, 1, opts,
+                                     ffi.new("uint8_t[1]", [200]), ffi.NULL)
+    assert got == want
+    assert want == 0 or (arr == 9).all()

@@ -506,6 +506,25 @@ static seq_scratch seq_sc;
 #define SEQ_ARRAY_WRITEABLE 0x400
 #define SEQ_STACK_POINTS 64
 
+/* The last rule and aa objects seq_table_opts found, held, and what it
+ * found for them: a loop of calls passes the very same objects each time
+ * (its code's constants), and the table's two lookups cost more than the
+ * rest of the call's checks (~350 instructions of a call: a method name
+ * the table holds as another str object of the same value is compared by
+ * value).  Held, a cached object cannot be freed and another one made at
+ * its address; str is immutable: the same objects, the same options.
+ * fill_setup (a new table) forgets it. */
+static PyObject *seq_last_rule, *seq_last_method;
+static const void *seq_last_opts;
+static int seq_last_aa;
+
+static void seq_forget_last(void)
+{
+    Py_CLEAR(seq_last_rule);
+    Py_CLEAR(seq_last_method);
+    seq_last_opts = NULL;
+}
+
 static void *seq_address(PyObject *v)
 {
     void *a = PyLong_AsVoidPtr(v);
@@ -542,6 +561,7 @@ static PyObject *seq_fill_setup(PyObject *self, PyObject *args)
     Py_XDECREF(seq_ndarray);
     Py_XDECREF(seq_f64);
     Py_XDECREF(seq_kw_table);
+    seq_forget_last();
     seq_ndarray = nd;
     seq_f64 = f64;
     seq_kw_table = table;
@@ -560,13 +580,27 @@ static const void *seq_table_opts(PyObject *rule, PyObject *method, int *aa)
 {
     PyObject *row, *addr;
     const void *a;
+    if (rule == seq_last_rule && method == seq_last_method && seq_last_opts) {
+        *aa = seq_last_aa;
+        return seq_last_opts;
+    }
     if (!PyUnicode_CheckExact(rule) || (method != Py_None && !PyUnicode_CheckExact(method)) || !seq_kw_table ||
         !(row = PyDict_GetItem(seq_kw_table, rule)) || !PyDict_CheckExact(row) ||
         !(addr = PyDict_GetItem(row, method)))
         return NULL;
     a = PyLong_AsVoidPtr(addr);
-    if (!a) PyErr_Clear();
+    if (!a) {
+        PyErr_Clear();
+        return NULL;
+    }
     *aa = method != Py_None;
+    Py_INCREF(rule);
+    Py_INCREF(method);
+    seq_forget_last();
+    seq_last_rule = rule;
+    seq_last_method = method;
+    seq_last_opts = a;
+    seq_last_aa = *aa;
     return a;
 }
 

@@ -85,6 +85,23 @@ static rast_status rastpy_cov_need(const rastpy_cov_dest *d, const rast_coverage
     return rast_coverage_scratch_size(opts, npoints, w, h, need);
 }
 
+/* Does rastpy_coverage check a target's options after the snap, with the
+ * cut clip only?  For a plain fill (rast_coverage_scratch_size: options,
+ * then the clip's size, then the point count) of a count the core takes
+ * and a target clip whose size it takes: the cut clip's status is then
+ * the whole clip's (the options' alone), and the points are not too many
+ * to snap first; opts not NULL and its S one the snap and the cut take. */
+static int rastpy_cov_late(const rastpy_cov_dest *d, const rast_coverage_opts *opts, uint32_t npoints)
+{
+    const rast_rect *c;
+    if (!d->target || d->colors || npoints > RAST_MAX_POINTS || !opts || opts->subpixel_bits < 0 ||
+        opts->subpixel_bits > RAST_MAX_SUBPIXEL_BITS)
+        return 0;
+    c = &d->target->clip;
+    return c->x1 - (int64_t)c->x0 >= 0 && c->y1 - (int64_t)c->y0 >= 0 &&
+           c->x1 - (int64_t)c->x0 <= RAST_MAX_DIM && c->y1 - (int64_t)c->y0 <= RAST_MAX_DIM;
+}
+
 static long rastpy_coverage(const rastpy_cov_dest *d, const double *xy, uint32_t npoints,
                             const uint32_t *ring_sizes, uint32_t nrings, int triangles,
                             const rast_coverage_opts *opts, rastpy_scratch *sc)
@@ -102,20 +119,29 @@ static long rastpy_coverage(const rastpy_cov_dest *d, const double *xy, uint32_t
     const rast_target *tg = NULL;
     rast_rect c;
     ptrdiff_t stride = 0;
+    int late;
     if (!d->target) {
         if (d->format < 0 || d->format > 2) return RAST_E_ARG;
         stride = (ptrdiff_t)(d->clip.x1 - d->clip.x0) * rastpy_cov_size[d->format];
     }
     /* the options and sizes checked first, with the whole clip, as the
-     * core checks them (its statuses before any point's) */
-    st = rastpy_cov_need(d, opts, npoints, triangles, clip, &need);
-    if (st != RAST_OK) return st;
+     * core checks them (its statuses before any point's).  A target's
+     * plain fill whose clip size and count the core takes
+     * (rastpy_cov_late) is checked with the cut clip below instead, or
+     * when a point is bad: the same status (the options' alone), and one
+     * call for the scratch size, not two (issue 33). */
+    late = rastpy_cov_late(d, opts, npoints);
+    if (!late) {
+        st = rastpy_cov_need(d, opts, npoints, triangles, clip, &need);
+        if (st != RAST_OK) return st;
+    }
     pts = npoints <= RASTPY_COV_LOCAL_POINTS ? local
                                              : (int32_t *)malloc((size_t)npoints * sizeof(rast_point) + 1);
     if (!pts) return RASTPY_E_NOMEM;
     bad = rastpy_snap_points(xy, npoints, opts->subpixel_bits, pts);
     if (bad >= 0) {
         if (pts != local) free(pts);
+        if (late && (st = rastpy_cov_need(d, opts, npoints, triangles, clip, &need)) != RAST_OK) return st;
         return bad + 1;
     }
     if (d->target) {

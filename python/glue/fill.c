@@ -16,9 +16,9 @@
  * all are good (then all of out is written).  The snapped value is in
  * range iff -M - 1/2 <= t < M + 1/2 (M = RAST_COORD_MAX; exact doubles),
  * which NaN fails too. */
-static long rastpy_snap_scalar(const double *xy, size_t npoints, int s, int32_t *out, size_t i)
+static long rastpy_snap_scalar(const double *xy, size_t npoints, double scale, int32_t *out, size_t i)
 {
-    const double scale = ldexp(1.0, s), lim = (double)RAST_COORD_MAX + 0.5;
+    const double lim = (double)RAST_COORD_MAX + 0.5;
     /* Branch-free but for the range test (which a batch passes): the
      * rounding of random input is a coin toss a branch would mispredict.
      * Inside +-lim, t converts to int32_t exactly (truncating) and floor
@@ -75,17 +75,21 @@ __attribute__((target("avx"))) static size_t rastpy_snap_avx(const double *xy, s
 long rastpy_snap(const double *xy, size_t npoints, int s, int32_t *out)
 {
     size_t i = 0;
+    /* 2^s, exactly, as ldexp(1.0, s) gives it: a shift where it fits (the
+     * S of every call); libm's ldexp, called once a path, was ~140
+     * instructions of a tiny polygon's call (issue 33) */
+    const double pow2 = s >= 0 && s < 63 ? (double)((uint64_t)1 << s) : ldexp(1.0, s);
 #if defined(RASTPY_AVX)
     if (__builtin_cpu_supports("avx")) {
         int ok;
-        i = rastpy_snap_avx(xy, 2 * npoints, ldexp(1.0, s), out, &ok);
-        if (!ok) return rastpy_snap_scalar(xy, npoints, s, out, 0);
+        i = rastpy_snap_avx(xy, 2 * npoints, pow2, out, &ok);
+        if (!ok) return rastpy_snap_scalar(xy, npoints, pow2, out, 0);
     }
 #endif
 #if defined(__SSE2__)
     {
         const double lim = (double)RAST_COORD_MAX + 0.5;
-        const __m128d scale = _mm_set1_pd(ldexp(1.0, s)), lo = _mm_set1_pd(-lim),
+        const __m128d scale = _mm_set1_pd(pow2), lo = _mm_set1_pd(-lim),
                       hi = _mm_set1_pd(lim), one = _mm_set1_pd(1.0), half = _mm_set1_pd(0.5);
         __m128d ok = _mm_cmpeq_pd(one, one);
         for (; i + 2 <= 2 * npoints; i += 2) {
@@ -96,10 +100,10 @@ long rastpy_snap(const double *xy, size_t npoints, int s, int32_t *out)
             f = _mm_add_pd(f, _mm_and_pd(_mm_cmpge_pd(_mm_sub_pd(t, f), half), one));
             _mm_storel_epi64((__m128i *)(void *)(out + i), _mm_cvttpd_epi32(f));
         }
-        if (_mm_movemask_pd(ok) != 3) return rastpy_snap_scalar(xy, npoints, s, out, 0);
+        if (_mm_movemask_pd(ok) != 3) return rastpy_snap_scalar(xy, npoints, pow2, out, 0);
     }
 #endif
-    return rastpy_snap_scalar(xy, npoints, s, out, i);
+    return rastpy_snap_scalar(xy, npoints, pow2, out, i);
 }
 
 /* rastpy_snap for callers in Python (lines, predicates, small inputs). */

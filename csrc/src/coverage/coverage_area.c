@@ -1401,7 +1401,7 @@ static int rast__q_may(const rast__cells *c, int32_t nrow)
 
 /* e's part in row j, quick units (rast__q_part), into e->qa .. e->qtb,
  * and its range [qlo, qhi) (the floors at its two ends, qhi one more). */
-static void rast__fast_range(rast__cedge *e, int32_t j, const rast__cells *c)
+static inline void rast__fast_range(rast__cedge *e, int32_t j, const rast__cells *c)
 {
     rast__q_part(e, j, c, &e->qa, &e->qta, &e->qb, &e->qtb);
     e->qlo = e->qa < e->qb ? e->qa : e->qb;
@@ -1472,7 +1472,7 @@ static int rast__fast_full(const rast__cedge *e, int32_t *g, int32_t m, int32_t 
  * more than RAST__FAST_CUTS (u[] has room for RAST__FAST_CUTS + 2).  The
  * entries are moved by a loop, not memmove: a few, and a call each took 4%
  * of "area" on a paragraph (with the search). */
-static int rast__fast_cuts(const rast__cedge *e, int64_t Yj, const rast__cells *c, uint64_t *u,
+static inline int rast__fast_cuts(const rast__cedge *e, int64_t Yj, const rast__cells *c, uint64_t *u,
                            int32_t *nu)
 {
     const int64_t rel0 = (int64_t)e->yt - Yj, rel1 = (int64_t)e->yt + e->dy - Yj;
@@ -1531,6 +1531,23 @@ static int rast__fast_mixed(const rast__cedge *e, const int32_t *g, int32_t m, c
             if (!rast__fast_ok(w[i], s)) return 0;
             continue;
         }
+        if (RAST__SHORTCUTS && n == 2) { /* (most others: one pair, compared once at each end) */
+            const rast__cedge *a = &e[id[0]], *b = &e[id[1]];
+            const int ct = rast__fast_cmpn(rast__fast_num(a, Ya), a, rast__fast_num(b, Ya), b);
+            const int cb = rast__fast_cmpn(rast__fast_num(a, Yb), a, rast__fast_num(b, Yb), b);
+            /* equal at both ends, or crossing: not fast; else a first
+             * when it is before b by (top, bottom), as the sort below */
+            if ((ct == 0 && cb == 0) || (ct < 0 && cb > 0) || (ct > 0 && cb < 0)) return 0;
+            if (ct > 0 || (ct == 0 && cb > 0)) {
+                a = &e[id[1]];
+                b = &e[id[0]];
+            }
+            w[i] += a->dir;
+            if (!rast__fast_ok(w[i], s)) return 0;
+            w[i] += b->dir;
+            if (!rast__fast_ok(w[i], s)) return 0;
+            continue;
+        }
         for (k = 0; k < n; k++) { /* by top, then bottom (insertion, as they came) */
             const int32_t ik = id[k];
             const rast__cedge *ed = &e[ik];
@@ -1559,6 +1576,44 @@ static int rast__fast_mixed(const rast__cedge *e, const int32_t *g, int32_t m, c
             w[i] += e[id[k]].dir;
             if (!rast__fast_ok(w[i], s)) return 0;
         }
+    }
+    return 1;
+}
+
+/* rast__fast_mixed's test, and its ordinates' (rast__fast_cuts), for a
+ * group g[0..m) whose parts tile the strip: by their spans in it, sorted,
+ * the first from the strip's top, each from where the one before it ends,
+ * the last to the bottom (a chain of a ring's edges through the row: most
+ * of a paragraph's groups with a vertex inside the row).  Each slab then
+ * holds one edge, no order to check, and the winding on the group's right
+ * there is wl plus its direction, which must be 0 or *s (rast__fast_ok)
+ * and wr, the winding right of the group at the row's top: 1 when fast,
+ * 0 when not (*s as rast__fast_mixed leaves it); -1 when the parts do not
+ * tile the strip (nothing changed).  A walk of the edges, not of the slabs
+ * times the edges with their cuts sorted in. */
+static int rast__fast_chain(const rast__cedge *e, const int32_t *g, int32_t m, int64_t Yj, int32_t p,
+                            int32_t wl, int32_t wr, int32_t *s)
+{
+    int64_t r0[RAST__FAST_MIXED], r1[RAST__FAST_MIXED];
+    int32_t k;
+    if (m > RAST__FAST_MIXED) return -1;
+    for (k = 0; k < m; k++) { /* the spans, by their tops (insertion: a few) */
+        const rast__cedge *ed = &e[g[k]];
+        const int64_t a = (int64_t)ed->yt - Yj, b = a + ed->dy;
+        int32_t q = k;
+        for (; q > 0 && r0[q - 1] > a; q--) {
+            r0[q] = r0[q - 1];
+            r1[q] = r1[q - 1];
+        }
+        r0[q] = a < 0 ? 0 : a;
+        r1[q] = b > p ? p : b;
+    }
+    if (r0[0] != 0 || r1[m - 1] != p) return -1;
+    for (k = 0; k + 1 < m; k++)
+        if (r1[k] != r0[k + 1]) return -1;
+    for (k = 0; k < m; k++) {
+        const int32_t w = wl + e[g[k]].dir;
+        if (!rast__fast_ok(w, s) || w != wr) return 0;
     }
     return 1;
 }
@@ -2040,6 +2095,8 @@ static void rast__cov_row_groups(rast__cells *c, rast__cedge *e, int32_t *row, i
         } else if (full) {
             int32_t ww = wl;
             if (!rast__fast_full(e, row + k, m, &ww, &s) || ww != wr) s = 2;
+        } else if (RAST__SHORTCUTS && (z = rast__fast_chain(e, row + k, m, Yj, c->p, wl, wr, &s)) >= 0) {
+            if (!z) s = 2;
         } else {
             uint64_t u[RAST__FAST_CUTS + 2];
             int32_t w[RAST__FAST_CUTS + 1], nu = 1, i;

@@ -945,6 +945,34 @@ static void rast__cov_row_area(rast__cells *c, rast__cedge *e, int32_t *row, int
     }
 }
 
+/* "area" sets an edge's exact steps (rast__cov_exact_steps) when it first
+ * goes the exact way, not every edge's before the rows (their divisions
+ * were 4% of "area" on a paragraph, whose rows are mostly quick): xsr < 0
+ * marks an edge without them (they set it in [0, dy)).  Size-optimised
+ * builds set them all before the rows, as before (less .text). */
+static void rast__area_steps(rast__cedge *e, const int32_t *row, int32_t nrow)
+{
+    int32_t k;
+    for (k = 0; RAST__SHORTCUTS && k < nrow; k++)
+        if (e[row[k]].xsr < 0) rast__cov_exact_steps(&e[row[k]], 1);
+}
+
+/* rast__row_exact and rast__cov_row_area on edges whose exact steps may
+ * not be set yet (above). */
+static void rast__area_exact(rast__cells *c, rast__cedge *e, const int32_t *row, int32_t nrow, int32_t j,
+                             int32_t s)
+{
+    rast__area_steps(e, row, nrow);
+    rast__row_exact(c, e, row, nrow, j, s);
+}
+
+static void rast__area_sweep(rast__cells *c, rast__cedge *e, int32_t *row, int32_t nrow, rast__sweep *sw,
+                             int32_t j, rast_fill_rule rule, int32_t w0)
+{
+    rast__area_steps(e, row, nrow);
+    rast__cov_row_area(c, e, row, nrow, sw, j, rule, w0);
+}
+
 /* ---- the quick accumulation ----------------------------------------------
  *
  * Rows whose parts are added whole (fast rows, and every row when
@@ -1838,7 +1866,7 @@ static void rast__fast_add(rast__cells *c, rast__cedge *e, const int32_t *row, i
         }
         if (rast__q_emit(c, j, nrow)) return;
     }
-    rast__row_exact(c, e, row, nrow, j, s);
+    rast__area_exact(c, e, row, nrow, j, s);
 }
 
 /* The row's edges, as a fast row if it is one: its s (+1 or -1), its parts
@@ -1982,13 +2010,13 @@ static void rast__grp_blocks(rast__cells *c, rast__cedge *e, int32_t *g, int32_t
         if (!cut) continue;
         if (k == b0) {
             const int32_t dir = e[g[k]].dir, sg = rast__cov_sign(rule, w, dir);
-            if (sg) rast__row_exact(c, e, g + k, 1, j, sg * dir); /* sign dir (sg dir) = sg */
+            if (sg) rast__area_exact(c, e, g + k, 1, j, sg * dir); /* sign dir (sg dir) = sg */
             w += dir;
         } else {
             int32_t z, w1 = w;
             for (z = b0; z <= k; z++) w1 += e[g[z]].dir;
             if (!rast__grp_none(e, g + b0, k + 1 - b0, rule, w))
-                rast__cov_row_area(c, e, g + b0, k + 1 - b0, sw, j, rule, w);
+                rast__area_sweep(c, e, g + b0, k + 1 - b0, sw, j, rule, w);
             w = w1;
         }
         b0 = k + 1;
@@ -2023,7 +2051,7 @@ static void rast__grp_flush(rast__cells *c, rast__cedge *e, int32_t *row, const 
 {
     int32_t g;
     for (g = 0; g < nk; g++)
-        rast__row_exact(c, e, row + sw->h[g], sw->live[g] >> 1, j, (sw->live[g] & 1) ? 1 : -1);
+        rast__area_exact(c, e, row + sw->h[g], sw->live[g] >> 1, j, (sw->live[g] & 1) ? 1 : -1);
 }
 
 static void rast__cov_row_groups(rast__cells *c, rast__cedge *e, int32_t *row, int32_t nrow,
@@ -2126,10 +2154,10 @@ static void rast__cov_row_groups(rast__cells *c, rast__cedge *e, int32_t *row, i
             s = 0; /* done */
         }
         if (s == 2) {
-            rast__cov_row_area(c, e, row + k, m, sw, j, rule, wl);
+            rast__area_sweep(c, e, row + k, m, sw, j, rule, wl);
             sw->swept = 1;
         } else if (s != 0 && swept) {
-            rast__row_exact(c, e, row + k, m, j, s);
+            rast__area_exact(c, e, row + k, m, j, s);
         } else if (s != 0) { /* kept: group nk starts at k, m edges, sign s */
             sw->h[nk] = k;
             sw->live[nk++] = m * 2 + (s > 0);
@@ -2198,7 +2226,7 @@ static void rast__cov_row_acc(rast__cells *c, rast__cedge *e, const int32_t *row
         }
         if (rast__q_emit(c, j, nrow)) return;
     }
-    rast__row_exact(c, e, row, nrow, j, 0);
+    rast__area_exact(c, e, row, nrow, j, 0);
 }
 
 /* Column of abscissa x (fixed units, P = 2^s a pixel): floor(x / P). */
@@ -2286,7 +2314,8 @@ rast_status rast__cov_area(rast__cedge *e, uint32_t n, int32_t s, rast_fill_rule
         rast__cov_zero_rows(o, o->clip.y0, o->clip.y1);
         return RAST_OK;
     }
-    rast__cov_rows(e, n, c.p, order, o, &ja, &jb, 0);
+    rast__cov_rows(e, n, c.p, order, o, &ja, &jb, RAST__SHORTCUTS); /* (the exact steps when needed: above) */
+    for (k = 0; RAST__SHORTCUTS && k < (int32_t)n; k++) e[k].xsr = -1;
     rast__cov_sort_tops(order, row, sw.live, e, n); /* (row and live: room until the rows) */
     nlive = rast__cov_cancel(order, e, n);
     if (grouped) { /* the runs, by ordinate (wb and h: room until the rows) */
@@ -2351,7 +2380,7 @@ rast_status rast__cov_area(rast__cedge *e, uint32_t n, int32_t s, rast_fill_rule
                 if (!fast && grouped)
                     rast__cov_row_groups(&c, e, row, nrow, &sw, j, rule, runs + rnext, rend - rnext);
                 else if (!fast)
-                    rast__cov_row_area(&c, e, row, nrow, &sw, j, rule, 0);
+                    rast__area_sweep(&c, e, row, nrow, &sw, j, rule, 0);
             }
         } else {
             fast = 0;

@@ -39,6 +39,15 @@
 #define G RAST__COV_G
 #define T ((uint64_t)1 << G)
 
+/* Shortcuts that only save instructions (the same results as the general
+ * way next to each) are left out of size-optimised builds (firmware, -Os):
+ * with them, "area" took 1.2 KB more .text on Cortex-M0. */
+#if !defined(__OPTIMIZE_SIZE__)
+#define RAST__SHORTCUTS 1
+#else
+#define RAST__SHORTCUTS 0
+#endif
+
 /* Is a strictly before b just below the ordinate both have cached? */
 static int rast__cov_before(const rast__cedge *a, const rast__cedge *b)
 {
@@ -196,6 +205,16 @@ static uint32_t rast__cov_cancel(int32_t *order, const rast__cedge *e, uint32_t 
             order[out++] = order[a++];
             continue;
         }
+        if (RAST__SHORTCUTS && b == a + 2) { /* two (a ring's cusp, most often): in their order, unless coincident */
+            const rast__cedge *x = &e[order[a]], *y = &e[order[a + 1]];
+            if (x->xt != y->xt || x->dx != y->dx || x->dy != y->dy) {
+                const int32_t u = order[a], v = order[a + 1], sw = rast__cov_key_before(y, x);
+                order[out++] = sw ? v : u;
+                order[out++] = sw ? u : v;
+                a = b;
+                continue;
+            }
+        }
         for (gap = (b - a) / 2; gap > 0; gap = gap == 2 ? 1 : gap * 5 / 11) {
             for (p = a + gap; p < b; p++) {
                 int32_t v = order[p];
@@ -203,6 +222,13 @@ static uint32_t rast__cov_cancel(int32_t *order, const rast__cedge *e, uint32_t 
                     order[q] = order[q - gap];
                 order[q] = v;
             }
+        }
+        for (p = a; RAST__SHORTCUTS && p + 1 < b && rast__cov_key_before(&e[order[p]], &e[order[p + 1]]); p++) {
+        }
+        if (RAST__SHORTCUTS && p + 1 == b) { /* no two coincident (each its own block): all kept, in order */
+            for (p = a; p < b; p++) order[out++] = order[p];
+            a = b;
+            continue;
         }
         for (p = a; p < b;) { /* a block of coincident edges: [p, q) */
             const rast__cedge *x = &e[order[p]];
@@ -919,6 +945,34 @@ static void rast__cov_row_area(rast__cells *c, rast__cedge *e, int32_t *row, int
     }
 }
 
+/* "area" sets an edge's exact steps (rast__cov_exact_steps) when it first
+ * goes the exact way, not every edge's before the rows (their divisions
+ * were 4% of "area" on a paragraph, whose rows are mostly quick): xsr < 0
+ * marks an edge without them (they set it in [0, dy)).  Size-optimised
+ * builds set them all before the rows, as before (less .text). */
+static void rast__area_steps(rast__cedge *e, const int32_t *row, int32_t nrow)
+{
+    int32_t k;
+    for (k = 0; RAST__SHORTCUTS && k < nrow; k++)
+        if (e[row[k]].xsr < 0) rast__cov_exact_steps(&e[row[k]], 1);
+}
+
+/* rast__row_exact and rast__cov_row_area on edges whose exact steps may
+ * not be set yet (above). */
+static void rast__area_exact(rast__cells *c, rast__cedge *e, const int32_t *row, int32_t nrow, int32_t j,
+                             int32_t s)
+{
+    rast__area_steps(e, row, nrow);
+    rast__row_exact(c, e, row, nrow, j, s);
+}
+
+static void rast__area_sweep(rast__cells *c, rast__cedge *e, int32_t *row, int32_t nrow, rast__sweep *sw,
+                             int32_t j, rast_fill_rule rule, int32_t w0)
+{
+    rast__area_steps(e, row, nrow);
+    rast__cov_row_area(c, e, row, nrow, sw, j, rule, w0);
+}
+
 /* ---- the quick accumulation ----------------------------------------------
  *
  * Rows whose parts are added whole (fast rows, and every row when
@@ -1375,7 +1429,7 @@ static int rast__q_may(const rast__cells *c, int32_t nrow)
 
 /* e's part in row j, quick units (rast__q_part), into e->qa .. e->qtb,
  * and its range [qlo, qhi) (the floors at its two ends, qhi one more). */
-static void rast__fast_range(rast__cedge *e, int32_t j, const rast__cells *c)
+static inline void rast__fast_range(rast__cedge *e, int32_t j, const rast__cells *c)
 {
     rast__q_part(e, j, c, &e->qa, &e->qta, &e->qb, &e->qtb);
     e->qlo = e->qa < e->qb ? e->qa : e->qb;
@@ -1446,7 +1500,7 @@ static int rast__fast_full(const rast__cedge *e, int32_t *g, int32_t m, int32_t 
  * more than RAST__FAST_CUTS (u[] has room for RAST__FAST_CUTS + 2).  The
  * entries are moved by a loop, not memmove: a few, and a call each took 4%
  * of "area" on a paragraph (with the search). */
-static int rast__fast_cuts(const rast__cedge *e, int64_t Yj, const rast__cells *c, uint64_t *u,
+static inline int rast__fast_cuts(const rast__cedge *e, int64_t Yj, const rast__cells *c, uint64_t *u,
                            int32_t *nu)
 {
     const int64_t rel0 = (int64_t)e->yt - Yj, rel1 = (int64_t)e->yt + e->dy - Yj;
@@ -1505,6 +1559,23 @@ static int rast__fast_mixed(const rast__cedge *e, const int32_t *g, int32_t m, c
             if (!rast__fast_ok(w[i], s)) return 0;
             continue;
         }
+        if (RAST__SHORTCUTS && n == 2) { /* (most others: one pair, compared once at each end) */
+            const rast__cedge *a = &e[id[0]], *b = &e[id[1]];
+            const int ct = rast__fast_cmpn(rast__fast_num(a, Ya), a, rast__fast_num(b, Ya), b);
+            const int cb = rast__fast_cmpn(rast__fast_num(a, Yb), a, rast__fast_num(b, Yb), b);
+            /* equal at both ends, or crossing: not fast; else a first
+             * when it is before b by (top, bottom), as the sort below */
+            if ((ct == 0 && cb == 0) || (ct < 0 && cb > 0) || (ct > 0 && cb < 0)) return 0;
+            if (ct > 0 || (ct == 0 && cb > 0)) {
+                a = &e[id[1]];
+                b = &e[id[0]];
+            }
+            w[i] += a->dir;
+            if (!rast__fast_ok(w[i], s)) return 0;
+            w[i] += b->dir;
+            if (!rast__fast_ok(w[i], s)) return 0;
+            continue;
+        }
         for (k = 0; k < n; k++) { /* by top, then bottom (insertion, as they came) */
             const int32_t ik = id[k];
             const rast__cedge *ed = &e[ik];
@@ -1533,6 +1604,44 @@ static int rast__fast_mixed(const rast__cedge *e, const int32_t *g, int32_t m, c
             w[i] += e[id[k]].dir;
             if (!rast__fast_ok(w[i], s)) return 0;
         }
+    }
+    return 1;
+}
+
+/* rast__fast_mixed's test, and its ordinates' (rast__fast_cuts), for a
+ * group g[0..m) whose parts tile the strip: by their spans in it, sorted,
+ * the first from the strip's top, each from where the one before it ends,
+ * the last to the bottom (a chain of a ring's edges through the row: most
+ * of a paragraph's groups with a vertex inside the row).  Each slab then
+ * holds one edge, no order to check, and the winding on the group's right
+ * there is wl plus its direction, which must be 0 or *s (rast__fast_ok)
+ * and wr, the winding right of the group at the row's top: 1 when fast,
+ * 0 when not (*s as rast__fast_mixed leaves it); -1 when the parts do not
+ * tile the strip (nothing changed).  A walk of the edges, not of the slabs
+ * times the edges with their cuts sorted in. */
+static int rast__fast_chain(const rast__cedge *e, const int32_t *g, int32_t m, int64_t Yj, int32_t p,
+                            int32_t wl, int32_t wr, int32_t *s)
+{
+    int64_t r0[RAST__FAST_MIXED], r1[RAST__FAST_MIXED];
+    int32_t k;
+    if (m > RAST__FAST_MIXED) return -1;
+    for (k = 0; k < m; k++) { /* the spans, by their tops (insertion: a few) */
+        const rast__cedge *ed = &e[g[k]];
+        const int64_t a = (int64_t)ed->yt - Yj, b = a + ed->dy;
+        int32_t q = k;
+        for (; q > 0 && r0[q - 1] > a; q--) {
+            r0[q] = r0[q - 1];
+            r1[q] = r1[q - 1];
+        }
+        r0[q] = a < 0 ? 0 : a;
+        r1[q] = b > p ? p : b;
+    }
+    if (r0[0] != 0 || r1[m - 1] != p) return -1;
+    for (k = 0; k + 1 < m; k++)
+        if (r1[k] != r0[k + 1]) return -1;
+    for (k = 0; k < m; k++) {
+        const int32_t w = wl + e[g[k]].dir;
+        if (!rast__fast_ok(w, s) || w != wr) return 0;
     }
     return 1;
 }
@@ -1757,7 +1866,7 @@ static void rast__fast_add(rast__cells *c, rast__cedge *e, const int32_t *row, i
         }
         if (rast__q_emit(c, j, nrow)) return;
     }
-    rast__row_exact(c, e, row, nrow, j, s);
+    rast__area_exact(c, e, row, nrow, j, s);
 }
 
 /* The row's edges, as a fast row if it is one: its s (+1 or -1), its parts
@@ -1901,13 +2010,13 @@ static void rast__grp_blocks(rast__cells *c, rast__cedge *e, int32_t *g, int32_t
         if (!cut) continue;
         if (k == b0) {
             const int32_t dir = e[g[k]].dir, sg = rast__cov_sign(rule, w, dir);
-            if (sg) rast__row_exact(c, e, g + k, 1, j, sg * dir); /* sign dir (sg dir) = sg */
+            if (sg) rast__area_exact(c, e, g + k, 1, j, sg * dir); /* sign dir (sg dir) = sg */
             w += dir;
         } else {
             int32_t z, w1 = w;
             for (z = b0; z <= k; z++) w1 += e[g[z]].dir;
             if (!rast__grp_none(e, g + b0, k + 1 - b0, rule, w))
-                rast__cov_row_area(c, e, g + b0, k + 1 - b0, sw, j, rule, w);
+                rast__area_sweep(c, e, g + b0, k + 1 - b0, sw, j, rule, w);
             w = w1;
         }
         b0 = k + 1;
@@ -1942,7 +2051,7 @@ static void rast__grp_flush(rast__cells *c, rast__cedge *e, int32_t *row, const 
 {
     int32_t g;
     for (g = 0; g < nk; g++)
-        rast__row_exact(c, e, row + sw->h[g], sw->live[g] >> 1, j, (sw->live[g] & 1) ? 1 : -1);
+        rast__area_exact(c, e, row + sw->h[g], sw->live[g] >> 1, j, (sw->live[g] & 1) ? 1 : -1);
 }
 
 static void rast__cov_row_groups(rast__cells *c, rast__cedge *e, int32_t *row, int32_t nrow,
@@ -2014,6 +2123,8 @@ static void rast__cov_row_groups(rast__cells *c, rast__cedge *e, int32_t *row, i
         } else if (full) {
             int32_t ww = wl;
             if (!rast__fast_full(e, row + k, m, &ww, &s) || ww != wr) s = 2;
+        } else if (RAST__SHORTCUTS && (z = rast__fast_chain(e, row + k, m, Yj, c->p, wl, wr, &s)) >= 0) {
+            if (!z) s = 2;
         } else {
             uint64_t u[RAST__FAST_CUTS + 2];
             int32_t w[RAST__FAST_CUTS + 1], nu = 1, i;
@@ -2043,10 +2154,10 @@ static void rast__cov_row_groups(rast__cells *c, rast__cedge *e, int32_t *row, i
             s = 0; /* done */
         }
         if (s == 2) {
-            rast__cov_row_area(c, e, row + k, m, sw, j, rule, wl);
+            rast__area_sweep(c, e, row + k, m, sw, j, rule, wl);
             sw->swept = 1;
         } else if (s != 0 && swept) {
-            rast__row_exact(c, e, row + k, m, j, s);
+            rast__area_exact(c, e, row + k, m, j, s);
         } else if (s != 0) { /* kept: group nk starts at k, m edges, sign s */
             sw->h[nk] = k;
             sw->live[nk++] = m * 2 + (s > 0);
@@ -2115,7 +2226,7 @@ static void rast__cov_row_acc(rast__cells *c, rast__cedge *e, const int32_t *row
         }
         if (rast__q_emit(c, j, nrow)) return;
     }
-    rast__row_exact(c, e, row, nrow, j, 0);
+    rast__area_exact(c, e, row, nrow, j, 0);
 }
 
 /* Column of abscissa x (fixed units, P = 2^s a pixel): floor(x / P). */
@@ -2203,7 +2314,8 @@ rast_status rast__cov_area(rast__cedge *e, uint32_t n, int32_t s, rast_fill_rule
         rast__cov_zero_rows(o, o->clip.y0, o->clip.y1);
         return RAST_OK;
     }
-    rast__cov_rows(e, n, c.p, order, o, &ja, &jb, 0);
+    rast__cov_rows(e, n, c.p, order, o, &ja, &jb, RAST__SHORTCUTS); /* (the exact steps when needed: above) */
+    for (k = 0; RAST__SHORTCUTS && k < (int32_t)n; k++) e[k].xsr = -1;
     rast__cov_sort_tops(order, row, sw.live, e, n); /* (row and live: room until the rows) */
     nlive = rast__cov_cancel(order, e, n);
     if (grouped) { /* the runs, by ordinate (wb and h: room until the rows) */
@@ -2268,7 +2380,7 @@ rast_status rast__cov_area(rast__cedge *e, uint32_t n, int32_t s, rast_fill_rule
                 if (!fast && grouped)
                     rast__cov_row_groups(&c, e, row, nrow, &sw, j, rule, runs + rnext, rend - rnext);
                 else if (!fast)
-                    rast__cov_row_area(&c, e, row, nrow, &sw, j, rule, 0);
+                    rast__area_sweep(&c, e, row, nrow, &sw, j, rule, 0);
             }
         } else {
             fast = 0;

@@ -59,6 +59,50 @@ void rast__opaque_finish(rast__solid *s)
     rast__opaque_rows(s, s->clip.y1);
 }
 
+#if !defined(__OPTIMIZE_SIZE__)
+int rast__sink_byte_rows(const rast__sink *sink, rast__byte_rows *b)
+{
+    if (sink->n) return 0;
+    if (sink->direct) { /* the solid painter's fast kind (rast__solid_init) */
+        b->base = sink->direct;
+        b->stride = sink->stride;
+        b->value = (unsigned char)sink->value;
+        b->background = 0;
+        b->opaque = 0;
+        b->x0 = sink->cx0;
+        b->x1 = sink->cx1;
+        b->solid = NULL;
+        return 1;
+    }
+    if (sink->fn == rast__opaque_row) {
+        rast__solid *s = (rast__solid *)sink->user;
+        /* one byte a pixel and a value (gray8), the sink's columns the
+         * painter's (what rast__opaque_row writes: the clip's row, then
+         * the runs) */
+        if (s->fmt->bits != 8 || s->fmt->value != 1 || s->fmt->row == NULL ||
+            sink->cx0 != s->clip.x0 || sink->cx1 != s->clip.x1)
+            return 0;
+        b->base = s->base;
+        b->stride = s->stride;
+        b->value = s->value[0];
+        b->background = s->background[0];
+        b->opaque = 1;
+        b->x0 = s->clip.x0;
+        b->x1 = s->clip.x1;
+        b->solid = s;
+        return 1;
+    }
+    return 0;
+}
+
+void rast__byte_rows_claim(const rast__byte_rows *b, int32_t y0, int32_t y1)
+{
+    rast__solid *s = b->solid;
+    rast__opaque_rows(s, y0);
+    s->row = y1 - 1; /* the last row written */
+}
+#endif
+
 rast_status rast_format_bytes(rast_format format, int32_t *bytes)
 {
     if (!bytes) return RAST_E_NULL;

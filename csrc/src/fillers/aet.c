@@ -274,21 +274,25 @@ static int rast__aet_delta(uint32_t npoints, const rast__grid *g, rast_fill_rule
     /* The crossings, and (non-zero, more than 511 edges) the most on a
      * row: the running count of edges started less edges ended, the
      * starts from the buckets (bucket[r - row0 + 1]: row r's), the ends
-     * taken off there for the count and put back after it (the sweep
-     * wants the buckets as they were). */
+     * counted in the same pass over the edges, into the edge table's room
+     * (free until the counters: rows + 1 counts fit it whenever the rule
+     * can take the deltas, 8 edges a row; else the sweep fills). */
     mask = rule == RAST_RULE_EVENODD ? 1 : 0xFF;
-    for (e = 0; e < t->nedges; e++) crossings += ed[e].end - ed[e].row;
     if (mask != 1 && t->nedges > 511) {
-        int32_t *b = t->bucket, run = 0, most = 0, y;
-        for (e = 0; e < t->nedges; e++)
-            if (ed[e].end < t->row1) b[ed[e].end - t->row0 + 1]--;
+        int32_t *b = t->bucket, *ends = (int32_t *)(void *)t->edges, run = 0, most = 0, y;
+        if (((size_t)rows + 1) * sizeof(int32_t) > room) return 0;
+        memset(ends, 0, ((size_t)rows + 1) * sizeof(int32_t));
+        for (e = 0; e < t->nedges; e++) {
+            crossings += ed[e].end - ed[e].row;
+            ends[ed[e].end - t->row0]++; /* (an edge ending at row1: ends[rows]) */
+        }
         for (y = 1; y <= rows; y++) {
-            run += b[y];
+            run += b[y] - ends[y - 1];
             if (run > most) most = run;
         }
-        for (e = 0; e < t->nedges; e++)
-            if (ed[e].end < t->row1) b[ed[e].end - t->row0 + 1]++;
         if (most > 510) return 0;
+    } else {
+        for (e = 0; e < t->nedges; e++) crossings += ed[e].end - ed[e].row;
     }
     cost = (int64_t)rows * (stride / 8) + (int64_t)nb * t->nedges;
     if (!force && cost > RAST__DELTA_WORDS * crossings) return 0;

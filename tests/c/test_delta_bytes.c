@@ -9,8 +9,9 @@
  * as test_delta.c's (many small rings overlapping, holes, vertices on
  * sample points and rows, collinear and repeated vertices, rings across
  * the clip's sides, both rules, samples and roundings), on a target whose
- * width is no multiple of 8, with clips cut at random (so the polygon's
- * box is the clip's or inside it, and its last word partial), small
+ * width is no multiple of 8, with clips cut at random or not at all and
+ * polygons inside the target or across its sides (so the polygon's box
+ * is cut by the clip or inside it, and its last word partial), small
  * scratch (the counters in bands), and windings up to 255 and past it
  * (the lanes' sums modulo 2^8).  (A build for size has the sweep only:
  * the two then agree trivially.) */
@@ -187,6 +188,12 @@ int main(void)
             sizes[k] = m;
         }
         nrings = k;
+        if (rng() % 3 == 0) { /* all inside the target: the box not cut by the clip */
+            for (v = 0; v < np; v++) {
+                pts[v].x = pts[v].x < 0 ? 0 : pts[v].x > (W << s) ? W << s : pts[v].x;
+                pts[v].y = pts[v].y < 0 ? 0 : pts[v].y > (H << s) ? H << s : pts[v].y;
+            }
+        }
         /* a clip cut at random, or the whole target (the polygon's box then
          * mostly the clip's) */
         clip.x0 = clip.y0 = 0;

@@ -238,6 +238,34 @@ static void rast__delta_bytes(unsigned char *row, int32_t stride, int32_t bits, 
     }
 }
 
+/* Edge d's direction (1 under even-odd) added at each of its crossings of
+ * the band of rows [j0, j1) (counters from buf, stride bytes a row);
+ * `cut`: its rows and columns cut to the band and to [0, bits] (else they
+ * are inside them).  The edge's DDA is left on the band's end when it
+ * goes on past it (not stepped past its last row: nothing reads it). */
+static inline void rast__delta_walk(rast__edge *d, unsigned char *buf, int32_t j0, int32_t j1,
+                                    int32_t stride, int32_t col0, int32_t bits, uint32_t mask,
+                                    int cut)
+{
+    const int32_t a = cut && d->row < j0 ? j0 : d->row, b = cut && d->end > j1 ? j1 : d->end;
+    const unsigned char dir = (unsigned char)(mask == 1 ? 1 : d->dir);
+    unsigned char *p = buf + (ptrdiff_t)(a - j0) * stride;
+    int32_t j;
+    if (a >= b) return;
+    for (j = a;;) {
+        int32_t c = d->x - col0;
+        if (cut) {
+            c = c < 0 ? 0 : c;
+            c = c > bits ? bits : c;
+        }
+        p[c] = (unsigned char)(p[c] + dir);
+        if (++j == b) break;
+        p += stride;
+        rast__edge_step(d);
+    }
+    if (b < d->end) rast__edge_step(d);
+}
+
 /* The fill by winding deltas, when the rule above takes it (or, `force`,
  * whenever it can): returns 1, the runs handed to `sink`; 0, having done
  * nothing, when not. */
@@ -253,7 +281,7 @@ static int rast__aet_delta(uint32_t npoints, const rast__grid *g, rast_fill_rule
     unsigned char *buf;
     size_t room;
     rast__byte_rows out;
-    int direct;
+    int direct, whole;
 
     if (t->nedges == 0) return 1;
     if (!force && t->nedges < RAST__DELTA_EDGES * (int64_t)rows) return 0;
@@ -262,8 +290,10 @@ static int rast__aet_delta(uint32_t npoints, const rast__grid *g, rast_fill_rule
      * every crossing's). */
     r = rast__cross_col(2 * (int64_t)t->minx, 1, g);
     col0 = r > clip->x0 ? (int32_t)r : clip->x0;
+    whole = r >= clip->x0;
     r = rast__cross_col(2 * (int64_t)t->maxx, 1, g);
     col1 = r < clip->x1 ? (int32_t)r : clip->x1;
+    whole = whole && r <= clip->x1;
     if (col0 >= col1) return 1; /* no visible column: nothing inside */
     bits = col1 - col0;
     stride = (bits + 1 + 7) & ~7;
@@ -271,6 +301,7 @@ static int rast__aet_delta(uint32_t npoints, const rast__grid *g, rast_fill_rule
     if ((size_t)stride > room) return 0;
     hb = (int32_t)(room / (size_t)stride < (size_t)rows ? room / (size_t)stride : (size_t)rows);
     nb = (rows + hb - 1) / hb;
+    whole = whole && nb == 1; /* (the edges' rows are [row0, row1)'s: aet.h) */
     /* The crossings, and (non-zero, more than 511 edges) the most on a
      * row: the running count of edges started less edges ended, the
      * starts from the buckets (bucket[r - row0 + 1]: row r's), the ends
@@ -304,19 +335,15 @@ static int rast__aet_delta(uint32_t npoints, const rast__grid *g, rast_fill_rule
     for (j0 = t->row0; j0 < t->row1; j0 += hb) {
         const int32_t j1 = t->row1 - j0 > hb ? j0 + hb : t->row1;
         int32_t j;
-        /* Edge by edge: its direction at each of its crossings. */
-        for (e = 0; e < t->nedges; e++) {
-            rast__edge *d = &ed[e];
-            const int32_t a = d->row > j0 ? d->row : j0, b = d->end < j1 ? d->end : j1;
-            const unsigned char dir = (unsigned char)(mask == 1 ? 1 : d->dir);
-            unsigned char *p = buf + (size_t)(a - j0) * (size_t)stride;
-            for (j = a; j < b; j++, p += stride) {
-                int32_t c = d->x - col0;
-                c = c < 0 ? 0 : c;
-                c = c > bits ? bits : c;
-                p[c] = (unsigned char)(p[c] + dir);
-                rast__edge_step(d);
-            }
+        /* Edge by edge: its direction at each of its crossings (in one
+         * band of a box the clip does not cut, every edge's rows are the
+         * band's and its crossings the box's: nothing to cut). */
+        if (whole) {
+            for (e = 0; e < t->nedges; e++)
+                rast__delta_walk(&ed[e], buf, j0, j1, stride, col0, bits, mask, 0);
+        } else {
+            for (e = 0; e < t->nedges; e++)
+                rast__delta_walk(&ed[e], buf, j0, j1, stride, col0, bits, mask, 1);
         }
         /* Row by row: the runs. */
         for (j = j0; j < j1; j++) {

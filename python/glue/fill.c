@@ -141,7 +141,8 @@ static void rastpy_paint_rect(const rast_target *t, rast_rect r, const void *px)
  * NULL) with scratch from malloc.  The fill's clip is cut to
  * rast_fill_bounds first, so that the scratch grows with the polygon's
  * box, not with the target (the mask algorithms need a bit, or a counter,
- * per clip pixel); an opaque fill's background outside the cut is painted
+ * per clip pixel; the AET's grows with the vertices, and is not cut when
+ * its count a clip row is no more than them); an opaque fill's background outside the cut is painted
  * here (rastpy_paint_rect: byte formats, which is what the opaque path,
  * rastpy_mask_polygon's gray8, uses), after the core has accepted every
  * argument.  ring_sizes NULL means one ring of all the points.  Returns 0,
@@ -186,6 +187,16 @@ static long rastpy_poly(const rast_target *target, const double *xy,
      * (and painting the background around them row by row) costs more
      * than it saves there, and a small clip's scratch is small. */
     if (c.x0 < c.x1 && c.y0 < c.y1 && (int64_t)(c.x1 - c.x0) * (c.y1 - c.y0) <= RASTPY_SMALL_CLIP) {
+        b = c;
+        st = RAST_OK;
+    } else if (!shade && opts->algorithm == RAST_ALGO_AET && opts->boundary == RAST_BOUNDARY_EXACT &&
+               (uint64_t)npoints * 2 * RAST_AET_EDGE_BYTES >= ((uint64_t)(c.y1 - c.y0) + 1) * 4) {
+        /* The AET's scratch grows with the vertices (two edge records
+         * each) and the clip's height (a count a row), never its width:
+         * when the rows' counts are no more than the records, nothing to
+         * cut, and the fill's own painter writes the background
+         * (rast_fill_bounds was a pass over every vertex, a twentieth of
+         * a paragraph of text's call). */
         b = c;
         st = RAST_OK;
     } else {

@@ -357,16 +357,12 @@ static inline rast_status rast__aet_prepare(const rast_polygon *poly, uint32_t n
      * running sum). */
     for (k = 0, base = 0; k < poly->nrings; base += poly->ring_sizes[k], k++) {
         uint32_t n = poly->ring_sizes[k];
+#if defined(__OPTIMIZE_SIZE__)
         for (i = 0; i < n; i++) {
             rast__edge *ed = &aet[nedges];
-#if defined(__OPTIMIZE_SIZE__)
             rast_point a = pts[base + i];
             rast_point b = pts[base + (i + 1 == n ? 0 : i + 1)];
             if (rast__edge_setup(ed, a, b, g, row0, row1)) {
-#else
-            const uint32_t ia = base + i, ib = base + (i + 1 == n ? 0 : i + 1);
-            if (rast__aet_edge_rows(ed, &pts[ia], &pts[ib], vrow[ia], vrow[ib], &gl, row0, row1)) {
-#endif
                 if (src) {
                     src[2 * nedges] = (int32_t)(base + i);
                     src[2 * nedges + 1] = (int32_t)(base + (i + 1 == n ? 0 : i + 1));
@@ -375,6 +371,26 @@ static inline rast_status rast__aet_prepare(const rast_polygon *poly, uint32_t n
                 bucket[ed->row - row0 + 1]++;
             }
         }
+#else
+        /* edge ia -> ib: the next vertex, or the ring's first after its
+         * last; an edge between two vertices of one row crosses none (most
+         * of a paragraph's), told from the rows alone */
+        uint32_t ia, ib;
+        const uint32_t stop = base + n;
+        for (ia = base, ib = base + 1; ia < stop; ia++, ib++) {
+            rast__edge *ed = &aet[nedges];
+            if (ib == stop) ib = base;
+            if (vrow[ia] == vrow[ib]) continue;
+            if (rast__aet_edge_rows(ed, &pts[ia], &pts[ib], vrow[ia], vrow[ib], &gl, row0, row1)) {
+                if (src) {
+                    src[2 * nedges] = (int32_t)ia;
+                    src[2 * nedges + 1] = (int32_t)ib;
+                }
+                ed->next = nedges++;
+                bucket[ed->row - row0 + 1]++;
+            }
+        }
+#endif
     }
     t->edges = edges;
     t->aet = aet;

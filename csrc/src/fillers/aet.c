@@ -12,6 +12,7 @@
 
 #include "../base/aet.h"
 #include "../base/bits.h"
+#include "../painters/paint.h"
 
 /* The edge record's size is part of the scratch contract in rastrum.h. */
 typedef char rast__aet_edge_size_check[sizeof(rast__edge) == RAST_AET_EDGE_BYTES ? 1 : -1];
@@ -128,6 +129,143 @@ static void rast__delta_row(unsigned char *row, int32_t stride, uint32_t mask, i
     }
 }
 
+/* ---- the rows written a word at a time -------------------------------------
+ * When the sink's painter is rows of one-byte pixels (rast__sink_byte_rows,
+ * painters/paint.c: a gray8 fill, or polygon_mask's opaque one), a row's
+ * counters go straight to its pixels, eight columns a word, instead of
+ * runs through the sink and the painter: a paragraph of text has ~150
+ * runs a row, and forming them, gathering them and writing each was a
+ * third of its fill.  The same samples: a column is inside iff the
+ * running sum of the counters up to it, modulo 2^8, is (masked by the
+ * rule) not 0, exactly the runs rast__delta_row forms.
+ *
+ * A word of eight counters is summed along its lanes at once
+ * (rast__delta_lanes), lane i the column k + i on every byte order (a
+ * big-endian load is swapped, as rast__delta_row does); a run of words
+ * with no crossing is one memset (opaque, or inside). */
+#define RAST__LANES_LO UINT64_C(0x0101010101010101)
+#define RAST__HALVES_FF UINT64_C(0x00FF00FF00FF00FF)
+#define RAST__HALVES_LO UINT64_C(0x0001000100010001)
+
+/* Eight counters (a word, lane i the column k + i) into masks of their
+ * lanes, 0xFF where the column is inside, 0 where not, given the running
+ * sum (0..255) before them, *sum, which moves on past them.  The lanes'
+ * running sums are formed in 16-bit halves, where no carry reaches the
+ * next: even lanes e (lanes 0, 2, 4, 6) and odd ones o, each summed
+ * along by one multiplication (A = e 0x0001000100010001: half f holds
+ * c0 + c2 + .. + c2f; B the same of the odd lanes, c1 + .. + c2f+1, all
+ * at most 4 x 255), and then column 2f's sum is A's half f plus B's half
+ * f - 1, column 2f + 1's A's and B's halves f; modulo 2^8 the low byte
+ * of each half. */
+static inline uint64_t rast__delta_lanes(uint64_t w, uint32_t *sum, uint32_t mask)
+{
+    const uint64_t s = RAST__HALVES_LO * *sum;
+    const uint64_t A = (w & RAST__HALVES_FF) * RAST__HALVES_LO;
+    const uint64_t B = ((w >> 8) & RAST__HALVES_FF) * RAST__HALVES_LO;
+    const uint64_t pe = (A + (B << 16) + s) & RAST__HALVES_FF; /* columns 0, 2, 4, 6 */
+    const uint64_t po = (A + B + s) & RAST__HALVES_FF;         /* columns 1, 3, 5, 7 */
+    uint64_t ie, io;
+    *sum = (uint32_t)(po >> 48);
+    if (mask == 1) { /* even-odd: odd sums */
+        ie = pe & RAST__HALVES_LO;
+        io = po & RAST__HALVES_LO;
+    } else { /* non-zero: sums not 0 (a half plus 0xFF carries into bit 8) */
+        ie = ((pe + RAST__HALVES_FF) >> 8) & RAST__HALVES_LO;
+        io = ((po + RAST__HALVES_FF) >> 8) & RAST__HALVES_LO;
+    }
+    return (ie | (io << 8)) * 0xFF;
+}
+
+/* Row y's counters (stride = 8 (bits / 8) + 8 bytes: the columns [0, bits)
+ * are pixels col0 .., the last word's other lanes past the box) into its
+ * pixels, clearing the counters; opaque: the whole clip row. */
+static void rast__delta_bytes(unsigned char *row, int32_t stride, int32_t bits, uint32_t mask,
+                              int32_t col0, int32_t y, const rast__byte_rows *b)
+{
+    const int little = rast__little_endian();
+    unsigned char *px = b->base + (ptrdiff_t)y * b->stride;
+    const uint64_t vw = RAST__LANES_LO * b->value, bw = RAST__LANES_LO * b->background;
+    const int32_t last = stride - 8; /* the last word's first column */
+    uint32_t sum = 0; /* the running sum, modulo 2^8 */
+    uint64_t m, w, o;
+    /* words of no crossing from column `from` on: all their columns as
+     * the one before (inside: in), written as one run when they end */
+    int32_t k, from = 0, i;
+    int in = 0;
+    if (b->opaque) { /* (the row claimed: rast__aet_delta) */
+        if (col0 > b->x0) memset(px + b->x0, b->background, (size_t)(col0 - b->x0));
+        if (col0 + bits < b->x1)
+            memset(px + col0 + bits, b->background, (size_t)(b->x1 - col0 - bits));
+    }
+    px += col0;
+    for (k = 0;; k += 8) {
+        /* (two words a test over a sparse row) */
+        uint64_t w2;
+        for (; k + 8 < last; k += 16) {
+            memcpy(&w, row + k, 8);
+            memcpy(&w2, row + k + 8, 8);
+            if (w | w2) break;
+        }
+        memcpy(&w, row + k, 8);
+        if (!w && k < last) continue;
+        if (from < k && (in || b->opaque))
+            memset(px + from, in ? b->value : b->background, (size_t)(k - from));
+        if (k == last) break;
+        from = k + 8;
+        memset(row + k, 0, 8);
+        if (!little) w = rast__swap64(w);
+        m = rast__delta_lanes(w, &sum, mask);
+        in = (int)(m >> 63);
+        if (b->opaque) {
+            o = bw ^ ((bw ^ vw) & m);
+        } else {
+            if (!m) continue;
+            memcpy(&o, px + k, 8);
+            if (!little) o = rast__swap64(o);
+            o ^= (o ^ vw) & m;
+        }
+        if (!little) o = rast__swap64(o);
+        memcpy(px + k, &o, 8);
+    }
+    /* the last word: its columns below `bits`, lane by lane (the rest are
+     * past the box: their counters cleared, no pixel touched) */
+    memset(row + k, 0, 8);
+    if (!little) w = rast__swap64(w);
+    m = rast__delta_lanes(w, &sum, mask);
+    for (i = 0; k + i < bits; i++) {
+        if ((m >> (8 * i)) & 1) px[k + i] = b->value;
+        else if (b->opaque) px[k + i] = b->background;
+    }
+}
+
+/* Edge d's direction (1 under even-odd) added at each of its crossings of
+ * the band of rows [j0, j1) (counters from buf, stride bytes a row);
+ * `cut`: its rows and columns cut to the band and to [0, bits] (else they
+ * are inside them).  The edge's DDA is left on the band's end when it
+ * goes on past it (not stepped past its last row: nothing reads it). */
+static inline void rast__delta_walk(rast__edge *d, unsigned char *buf, int32_t j0, int32_t j1,
+                                    int32_t stride, int32_t col0, int32_t bits, uint32_t mask,
+                                    int cut)
+{
+    const int32_t a = cut && d->row < j0 ? j0 : d->row, b = cut && d->end > j1 ? j1 : d->end;
+    const unsigned char dir = (unsigned char)(mask == 1 ? 1 : d->dir);
+    unsigned char *p = buf + (ptrdiff_t)(a - j0) * stride;
+    int32_t j;
+    if (a >= b) return;
+    for (j = a;;) {
+        int32_t c = d->x - col0;
+        if (cut) {
+            c = c < 0 ? 0 : c;
+            c = c > bits ? bits : c;
+        }
+        p[c] = (unsigned char)(p[c] + dir);
+        if (++j == b) break;
+        p += stride;
+        rast__edge_step(d);
+    }
+    if (b < d->end) rast__edge_step(d);
+}
+
 /* The fill by winding deltas, when the rule above takes it (or, `force`,
  * whenever it can): returns 1, the runs handed to `sink`; 0, having done
  * nothing, when not. */
@@ -142,6 +280,8 @@ static int rast__aet_delta(uint32_t npoints, const rast__grid *g, rast_fill_rule
     uint32_t mask;
     unsigned char *buf;
     size_t room;
+    rast__byte_rows out;
+    int direct, whole;
 
     if (t->nedges == 0) return 1;
     if (!force && t->nedges < RAST__DELTA_EDGES * (int64_t)rows) return 0;
@@ -150,8 +290,10 @@ static int rast__aet_delta(uint32_t npoints, const rast__grid *g, rast_fill_rule
      * every crossing's). */
     r = rast__cross_col(2 * (int64_t)t->minx, 1, g);
     col0 = r > clip->x0 ? (int32_t)r : clip->x0;
+    whole = r >= clip->x0;
     r = rast__cross_col(2 * (int64_t)t->maxx, 1, g);
     col1 = r < clip->x1 ? (int32_t)r : clip->x1;
+    whole = whole && r <= clip->x1;
     if (col0 >= col1) return 1; /* no visible column: nothing inside */
     bits = col1 - col0;
     stride = (bits + 1 + 7) & ~7;
@@ -159,51 +301,56 @@ static int rast__aet_delta(uint32_t npoints, const rast__grid *g, rast_fill_rule
     if ((size_t)stride > room) return 0;
     hb = (int32_t)(room / (size_t)stride < (size_t)rows ? room / (size_t)stride : (size_t)rows);
     nb = (rows + hb - 1) / hb;
+    whole = whole && nb == 1; /* (the edges' rows are [row0, row1)'s: aet.h) */
     /* The crossings, and (non-zero, more than 511 edges) the most on a
      * row: the running count of edges started less edges ended, the
      * starts from the buckets (bucket[r - row0 + 1]: row r's), the ends
-     * taken off there for the count and put back after it (the sweep
-     * wants the buckets as they were). */
+     * counted in the same pass over the edges, into the edge table's room
+     * (free until the counters: rows + 1 counts fit it whenever the rule
+     * can take the deltas, 8 edges a row; else the sweep fills). */
     mask = rule == RAST_RULE_EVENODD ? 1 : 0xFF;
-    for (e = 0; e < t->nedges; e++) crossings += ed[e].end - ed[e].row;
     if (mask != 1 && t->nedges > 511) {
-        int32_t *b = t->bucket, run = 0, most = 0, y;
-        for (e = 0; e < t->nedges; e++)
-            if (ed[e].end < t->row1) b[ed[e].end - t->row0 + 1]--;
+        int32_t *b = t->bucket, *ends = (int32_t *)(void *)t->edges, run = 0, most = 0, y;
+        if (((size_t)rows + 1) * sizeof(int32_t) > room) return 0;
+        memset(ends, 0, ((size_t)rows + 1) * sizeof(int32_t));
+        for (e = 0; e < t->nedges; e++) {
+            crossings += ed[e].end - ed[e].row;
+            ends[ed[e].end - t->row0]++; /* (an edge ending at row1: ends[rows]) */
+        }
         for (y = 1; y <= rows; y++) {
-            run += b[y];
+            run += b[y] - ends[y - 1];
             if (run > most) most = run;
         }
-        for (e = 0; e < t->nedges; e++)
-            if (ed[e].end < t->row1) b[ed[e].end - t->row0 + 1]++;
         if (most > 510) return 0;
+    } else {
+        for (e = 0; e < t->nedges; e++) crossings += ed[e].end - ed[e].row;
     }
     cost = (int64_t)rows * (stride / 8) + (int64_t)nb * t->nedges;
     if (!force && cost > RAST__DELTA_WORDS * crossings) return 0;
 
+    direct = rast__sink_byte_rows(sink, &out) && col0 >= out.x0 && col1 <= out.x1;
+    if (direct && out.opaque) rast__byte_rows_claim(&out, t->row0, t->row1);
     buf = (unsigned char *)(void *)t->edges;
     memset(buf, 0, (size_t)hb * (size_t)stride);
     for (j0 = t->row0; j0 < t->row1; j0 += hb) {
         const int32_t j1 = t->row1 - j0 > hb ? j0 + hb : t->row1;
         int32_t j;
-        /* Edge by edge: its direction at each of its crossings. */
-        for (e = 0; e < t->nedges; e++) {
-            rast__edge *d = &ed[e];
-            const int32_t a = d->row > j0 ? d->row : j0, b = d->end < j1 ? d->end : j1;
-            const unsigned char dir = (unsigned char)(mask == 1 ? 1 : d->dir);
-            unsigned char *p = buf + (size_t)(a - j0) * (size_t)stride;
-            for (j = a; j < b; j++, p += stride) {
-                int32_t c = d->x - col0;
-                c = c < 0 ? 0 : c;
-                c = c > bits ? bits : c;
-                p[c] = (unsigned char)(p[c] + dir);
-                rast__edge_step(d);
-            }
+        /* Edge by edge: its direction at each of its crossings (in one
+         * band of a box the clip does not cut, every edge's rows are the
+         * band's and its crossings the box's: nothing to cut). */
+        if (whole) {
+            for (e = 0; e < t->nedges; e++)
+                rast__delta_walk(&ed[e], buf, j0, j1, stride, col0, bits, mask, 0);
+        } else {
+            for (e = 0; e < t->nedges; e++)
+                rast__delta_walk(&ed[e], buf, j0, j1, stride, col0, bits, mask, 1);
         }
         /* Row by row: the runs. */
-        for (j = j0; j < j1; j++)
-            rast__delta_row(buf + (size_t)(j - j0) * (size_t)stride, stride, mask, col0, j,
-                            sink);
+        for (j = j0; j < j1; j++) {
+            unsigned char *row = buf + (size_t)(j - j0) * (size_t)stride;
+            if (direct) rast__delta_bytes(row, stride, bits, mask, col0, j, &out);
+            else rast__delta_row(row, stride, mask, col0, j, sink);
+        }
     }
     return 1;
 }

@@ -54,10 +54,72 @@ static void rast__opaque_row(void *user, int32_t y, const int32_t *xs, int32_t n
     else rast__solid_row(user, y, xs, n);
 }
 
+#if !defined(__OPTIMIZE_SIZE__)
+/* The same for one byte a pixel and a value (gray8): memsets, without the
+ * format's entries in between (on a circle's rows those calls were a
+ * tenth of the fill).  Not in a build for size: rast__opaque_row does it. */
+static void rast__opaque_row8(void *user, int32_t y, const int32_t *xs, int32_t n)
+{
+    rast__solid *s = (rast__solid *)user;
+    unsigned char *row = s->base + (ptrdiff_t)y * s->stride;
+    int32_t k;
+    if (y != s->row) {
+        rast__opaque_rows(s, y);
+        s->row = y;
+        memset(row + s->clip.x0, s->background[0], (size_t)(s->clip.x1 - s->clip.x0));
+    }
+    for (k = 0; k < n; k++) memset(row + xs[2 * k], s->value[0], (size_t)(xs[2 * k + 1] - xs[2 * k]));
+}
+#endif
+
 void rast__opaque_finish(rast__solid *s)
 {
     rast__opaque_rows(s, s->clip.y1);
 }
+
+#if !defined(__OPTIMIZE_SIZE__)
+int rast__sink_byte_rows(const rast__sink *sink, rast__byte_rows *b)
+{
+    if (sink->n) return 0;
+    if (sink->direct) { /* the solid painter's fast kind (rast__solid_init) */
+        b->base = sink->direct;
+        b->stride = sink->stride;
+        b->value = (unsigned char)sink->value;
+        b->background = 0;
+        b->opaque = 0;
+        b->x0 = sink->cx0;
+        b->x1 = sink->cx1;
+        b->solid = NULL;
+        return 1;
+    }
+    if (sink->fn == rast__opaque_row || sink->fn == rast__opaque_row8) {
+        rast__solid *s = (rast__solid *)sink->user;
+        /* one byte a pixel and a value (gray8), the sink's columns the
+         * painter's (what rast__opaque_row writes: the clip's row, then
+         * the runs) */
+        if (s->fmt->bits != 8 || s->fmt->value != 1 || s->fmt->row == NULL ||
+            sink->cx0 != s->clip.x0 || sink->cx1 != s->clip.x1)
+            return 0;
+        b->base = s->base;
+        b->stride = s->stride;
+        b->value = s->value[0];
+        b->background = s->background[0];
+        b->opaque = 1;
+        b->x0 = s->clip.x0;
+        b->x1 = s->clip.x1;
+        b->solid = s;
+        return 1;
+    }
+    return 0;
+}
+
+void rast__byte_rows_claim(const rast__byte_rows *b, int32_t y0, int32_t y1)
+{
+    rast__solid *s = b->solid;
+    rast__opaque_rows(s, y0);
+    s->row = y1 - 1; /* the last row written */
+}
+#endif
 
 rast_status rast_format_bytes(rast_format format, int32_t *bytes)
 {
@@ -175,7 +237,11 @@ rast_status rast__solid_init(rast__solid *s, const rast_target *t, const rast_re
     if (background) {
         memcpy(s->background, background, (size_t)f->value);
         s->row = clip->y0 - 1; /* the last row written */
+#if defined(__OPTIMIZE_SIZE__)
         p->full = rast__opaque_row;
+#else
+        p->full = f->bits == 8 && f->value == 1 && f->row ? rast__opaque_row8 : rast__opaque_row;
+#endif
     } else {
         p->full = f->row ? f->row : rast__solid_row;
         p->levels = rast__solid_levels;

@@ -100,6 +100,31 @@ rast_status rast__solid_init(rast__solid *s, const rast_target *t, const rast_re
                              const void *pixel, const void *background, rast__painter *p);
 void rast__opaque_finish(rast__solid *s);
 
+#if !defined(__OPTIMIZE_SIZE__)
+/* A sink's painter seen as rows of one-byte pixels that a filler may
+ * write itself, a word at a time (the winding-delta fill, fillers/aet.c):
+ * the solid painter's fast kind (full runs set `value`, nothing else
+ * written), or the opaque painter of a one-byte format (`opaque`: the
+ * rows the filler takes are first claimed, rast__byte_rows_claim, then
+ * each written whole, columns [x0, x1) (the clip's), `value` inside and
+ * `background` outside).  Pixel (x, y) is base[y stride + x].  0 when
+ * the sink's painter is neither, or the sink holds spans.  Not in a build
+ * for size (which has no such filler). */
+typedef struct rast__byte_rows {
+    unsigned char *base;
+    ptrdiff_t stride;
+    unsigned char value, background;
+    int opaque;
+    int32_t x0, x1;
+    rast__solid *solid; /* opaque: the painter */
+} rast__byte_rows;
+int rast__sink_byte_rows(const rast__sink *sink, rast__byte_rows *b);
+/* Opaque: the rows before y0 that nothing wrote get the background; rows
+ * [y0, y1) (y0 < y1, after any row written) are the caller's, to write
+ * whole, the painter going on after them. */
+void rast__byte_rows_claim(const rast__byte_rows *b, int32_t y0, int32_t y1);
+#endif
+
 /* Called before triangle k (vertices t, grid g) is filled, with the
  * painter's `user`: set the painter up for it; 0 skips the triangle. */
 typedef int (*rast__tri_begin_fn)(void *user, const rast_point *t, uint32_t k,

@@ -1,0 +1,215 @@
+/* test_delta_bytes.c - the AET filler's winding deltas written straight
+ * to one-byte pixels, a word of eight columns at a time (fillers/aet.c,
+ * rast__delta_bytes: a gray8 fill's fast kind, and polygon_mask's opaque
+ * gray8 painter), against the AET's sweep through the same painter and
+ * against the reference winding number (ref.h, straight from DESIGN: a
+ * pixel is inside when its sample is, by the rule).  Bit for bit, the
+ * whole buffer: inside the clip the value (or, opaque, the background
+ * outside the polygon), outside the clip nothing touched.  Random corpora
+ * as test_delta.c's (many small rings overlapping, holes, vertices on
+ * sample points and rows, collinear and repeated vertices, rings across
+ * the clip's sides, both rules, samples and roundings), on a target whose
+ * width is no multiple of 8, with clips cut at random or not at all and
+ * polygons inside the target or across its sides (so the polygon's box
+ * is cut by the clip or inside it, and its last word partial), small
+ * scratch (the counters in bands), and windings up to 255 and past it
+ * (the lanes' sums modulo 2^8).  (A build for size has the sweep only:
+ * the two then agree trivially.) */
+#include <stdint.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "check.h"
+#include "ref.h"
+#include "base/internal.h"
+#include "painters/paint.h"
+#include "rastrum.h"
+
+enum { W = 53, H = 21, STRIDE = W + 11, MAXP = 400 };
+static const unsigned char SENTINEL = 0xA5, VALUE = 200, BACKGROUND = 7;
+
+/* Fill by `how` into px (a gray8 target W x H, rows of STRIDE bytes, set
+ * to `pre` first): opaque (background BACKGROUND), or the solid fill;
+ * the status. */
+static rast_status fill(unsigned char *px, const unsigned char *pre, const rast_polygon *poly,
+                        uint32_t npoints, const rast__grid *g, rast_fill_rule rule,
+                        const rast_rect *clip, void *scratch, size_t bytes, int opaque, int how)
+{
+    rast_target t;
+    rast__solid solid;
+    rast__painter p;
+    rast__sink sink;
+    rast__arena arena = rast__arena_of(scratch, bytes);
+    rast_status st;
+    memcpy(px, pre, (size_t)STRIDE * H);
+    CHECK(rast_target_init(&t, px, W, H, STRIDE, RAST_FORMAT_GRAY8) == RAST_OK);
+    CHECK(rast__solid_init(&solid, &t, clip, &VALUE, opaque ? &BACKGROUND : NULL, &p) == RAST_OK);
+    rast__sink_init(&sink, &p, clip);
+    st = rast__aet_fill_by(poly, npoints, g, rule, clip, &sink, &arena, how);
+    if (st == RAST_OK && opaque) rast__opaque_finish(&solid);
+    return st;
+}
+
+/* v rounded down to a multiple of 2^s. */
+static int32_t floor_to(int32_t v, int s)
+{
+    const int32_t one = (int32_t)1 << s;
+    int32_t m = v % one;
+    return v - (m < 0 ? m + one : m);
+}
+
+/* A random point: on a sample point, on a sample row, or anywhere, within
+ * a margin around the target. */
+static rast_point point(int s, int center)
+{
+    const int32_t one = (int32_t)1 << s, half = center ? one / 2 : 0;
+    rast_point q;
+    int kind = (int)(rng() % 3);
+    q.x = (int32_t)(rng() % (uint32_t)((W + 8) * one)) - 4 * one;
+    q.y = (int32_t)(rng() % (uint32_t)((H + 8) * one)) - 4 * one;
+    if (kind == 0) {
+        q.x = floor_to(q.x, s) + half;
+        q.y = floor_to(q.y, s) + half;
+    } else if (kind == 1) {
+        q.y = floor_to(q.y, s) + half;
+    }
+    return q;
+}
+
+/* Both ways into both painters, the same bytes; the deltas' against the
+ * reference. */
+static void check_scene(int iter, const rast_point *pts, const uint32_t *sizes, uint32_t nrings,
+                        uint32_t np, int s, int center, int textbook, rast_fill_rule rule,
+                        const rast_rect *clip, size_t need)
+{
+    static unsigned char pre[STRIDE * H], a[STRIDE * H], b[STRIDE * H];
+    static unsigned char scratch[1 << 20];
+    rast__grid g;
+    rast_polygon poly;
+    int opaque;
+    int32_t i, j, k;
+    CHECK(need <= sizeof scratch);
+    CHECK(rast__grid_init(&g, s, center ? RAST_SAMPLE_CENTER : RAST_SAMPLE_CORNER,
+                          textbook ? RAST_ROUND_TEXTBOOK : RAST_ROUND_EXACT,
+                          RAST_BOUNDARY_EXACT) == RAST_OK);
+    poly.points = pts;
+    poly.ring_sizes = sizes;
+    poly.nrings = nrings;
+    for (k = 0; k < STRIDE * H; k++) pre[k] = (k & 1) ? SENTINEL : (unsigned char)rng();
+    for (opaque = 0; opaque < 2; opaque++) {
+        int ok = 1;
+        CHECK(fill(a, pre, &poly, np, &g, rule, clip, scratch, need, opaque, RAST__AET_BY_SWEEP) ==
+              RAST_OK);
+        CHECK(fill(b, pre, &poly, np, &g, rule, clip, scratch, need, opaque, RAST__AET_BY_DELTA) ==
+              RAST_OK);
+        CHECK(memcmp(a, b, sizeof a) == 0);
+        for (j = 0; j < H && ok; j++) {
+            for (i = 0; i < STRIDE && ok; i++) {
+                const unsigned char got = b[j * STRIDE + i], was = pre[j * STRIDE + i];
+                unsigned char want = was;
+                if (i >= clip->x0 && i < clip->x1 && j >= clip->y0 && j < clip->y1) {
+                    int cr, w = ref_winding(pts, sizes, nrings, s, center, textbook, i, j, &cr);
+                    int in = rule == RAST_RULE_EVENODD ? (cr & 1) : w != 0;
+                    want = in ? VALUE : opaque ? BACKGROUND : was;
+                }
+                if (got != want) {
+                    fprintf(stderr, "iter %d (%s): byte (%d, %d) is %d, the reference %d\n", iter,
+                            opaque ? "opaque" : "solid", (int)i, (int)j, got, want);
+                    ok = 0;
+                }
+            }
+        }
+        CHECK(ok);
+    }
+}
+
+/* Non-zero with windings up to 400: a triangle walked round `turns`
+ * times (the deltas exact up to 510 crossings a row, the sweep past). */
+static void test_wound(void)
+{
+    static rast_point pts[3 * 400];
+    static const uint32_t turns[] = {1, 127, 128, 255, 256, 257, 400};
+    size_t t;
+    for (t = 0; t < sizeof turns / sizeof turns[0]; t++) {
+        uint32_t n = 3 * turns[t], v;
+        rast_rect clip = {1, 0, W - 2, H};
+        for (v = 0; v < n; v += 3) {
+            pts[v].x = 2 << 4;
+            pts[v].y = 1 << 4;
+            pts[v + 1].x = (W - 3) << 4;
+            pts[v + 1].y = (H / 2) << 4;
+            pts[v + 2].x = 5 << 4;
+            pts[v + 2].y = (H - 2) << 4;
+        }
+        check_scene(-1, pts, &n, 1, n, 4, 1, 0, RAST_RULE_NONZERO, &clip,
+                    rast__aet_scratch(n, W, H));
+    }
+}
+
+int main(void)
+{
+    static rast_point pts[MAXP];
+    static uint32_t sizes[MAXP];
+    int iter, n = check_count(1500);
+    for (iter = 0; iter < n; iter++) {
+        const int s = (int)(rng() % 5), center = (int)(rng() & 1), textbook = (int)(rng() % 4 == 0);
+        const rast_fill_rule rule = (rng() & 1) ? RAST_RULE_EVENODD : RAST_RULE_NONZERO;
+        uint32_t nrings = 1 + rng() % 60, np = 0, k, v;
+        rast_rect clip;
+        for (k = 0; k < nrings && np + 8 <= MAXP; k++) {
+            uint32_t m = 3 + rng() % 4, first = np;
+            rast_point c0 = point(s, center);
+            const int32_t r = (int32_t)(1 + rng() % 6) << s;
+            for (v = 0; v < m; v++) {
+                rast_point q = point(s, center);
+                q.x = c0.x + (q.x % r);
+                q.y = c0.y + (q.y % r);
+                pts[np++] = q;
+            }
+            if (rng() % 4 == 0) { /* a collinear vertex between the first two */
+                rast_point mid;
+                mid.x = pts[first].x + (pts[first + 1].x - pts[first].x) / 2;
+                mid.y = pts[first].y + (pts[first + 1].y - pts[first].y) / 2;
+                if ((int64_t)(mid.x - pts[first].x) * (pts[first + 1].y - pts[first].y) ==
+                    (int64_t)(mid.y - pts[first].y) * (pts[first + 1].x - pts[first].x)) {
+                    memmove(&pts[first + 2], &pts[first + 1], (np - first - 1) * sizeof *pts);
+                    pts[first + 1] = mid;
+                    np++;
+                    m++;
+                }
+            }
+            if (rng() % 8 == 0) pts[first + 2] = pts[first + 1]; /* a repeated vertex */
+            if (rng() % 8 == 0) { /* one big ring across the target */
+                pts[first].x = -(2 << s);
+                pts[first].y = (int32_t)(rng() % H) << s;
+                pts[first + 1].x = (W + 2) << s;
+                pts[first + 1].y = pts[first].y + (int32_t)(rng() % 3);
+            }
+            sizes[k] = m;
+        }
+        nrings = k;
+        if (rng() % 3 == 0) { /* all inside the target: the box not cut by the clip */
+            for (v = 0; v < np; v++) {
+                pts[v].x = pts[v].x < 0 ? 0 : pts[v].x > (W << s) ? W << s : pts[v].x;
+                pts[v].y = pts[v].y < 0 ? 0 : pts[v].y > (H << s) ? H << s : pts[v].y;
+            }
+        }
+        /* a clip cut at random, or the whole target (the polygon's box then
+         * mostly the clip's) */
+        clip.x0 = clip.y0 = 0;
+        clip.x1 = W;
+        clip.y1 = H;
+        if (rng() % 3) {
+            clip.x0 = (int32_t)(rng() % 12);
+            clip.y0 = (int32_t)(rng() % 6);
+            clip.x1 = W - (int32_t)(rng() % 12);
+            clip.y1 = H - (int32_t)(rng() % 6);
+        }
+        /* the AET's scratch (the counters in bands for few vertices), or
+         * room for them all */
+        check_scene(iter, pts, sizes, nrings, np, s, center, textbook, rule, &clip,
+                    rng() % 2 ? rast__aet_scratch(np, W, H) : rast__aet_scratch(np + 200, W, H));
+    }
+    test_wound();
+    return check_report("test_delta_bytes");
+}

@@ -239,7 +239,7 @@ RAST__HOT void rast__acc_put(uint64_t *acc, int64_t k, uint64_t f0, uint64_t f1,
 RAST__HOT void rast__acc_touch(rast__acc *a, int32_t lo, int32_t hi, int count)
 {
     rast__acc_mark(a, lo, hi);
-    if (count) rast__acc_count(a, lo, hi);
+    if (count) rast__acc_count(a, lo, hi - 1);
 }
 
 /* The part of e from (xa, ta) to (xb, tb) (Q units; t from the row's top,
@@ -1308,6 +1308,7 @@ static int32_t rast__acc_edges_of(const rast__acc_walk *w, int32_t nrow, uint32_
     return nrow;
 }
 
+#if defined(__OPTIMIZE_SIZE__)
 /* Row ja to jb one at a time, each edge's part deposited as it comes, into
  * the cells of a (the short edges' walk). */
 static void rast__acc_by_rows(const rast__acc_walk *w, rast__acc *a)
@@ -1343,6 +1344,109 @@ static void rast__acc_by_rows(const rast__acc_walk *w, rast__acc *a)
         rast__cov_acc_exact_row(e, row, nrow, j, w->s, w->rule, o, w->cover, w->area, w->bits);
     }
 }
+#else
+/* Row j's parts of the edges ix[0..n) into the cells of a (sx 1), as
+ * rast__acc_row_part_in puts them, and the edges that go on below row j
+ * copied to nx[], in order (returns how many).  A part in one column of
+ * the clip (four in five of a line of text's) is put here, the row's
+ * bounds lo, hi in registers, its two cells marked and counted as
+ * rast__acc_touch would (the column and the next, the last of the clip at
+ * most); any other goes to rast__acc_part.  count as rast__acc_part's (a
+ * constant at each call).  (From 79 instructions a part to ~50 on the
+ * text family: the struct's fields reloaded after each store, which may
+ * alias them, the clip tests of the general way, the calls.) */
+RAST__HOT int32_t rast__acc_parts(rast__acc *a, rast__cedge *e, const int32_t *ix, int32_t n, int32_t *nx,
+                                  int32_t j, int count)
+{
+    const int32_t p = a->p, hq = a->hq, last = a->last;
+    const int64_t Yj = (int64_t)j * p, x0 = a->x0;
+    const uint64_t fm = QT - 1, w = (uint64_t)(a->x1 - a->x0);
+    uint64_t *const acc = a->acc, *const blk = a->blk;
+    uint32_t *const cnt = a->cnt;
+    const int dense = a->dense;
+    int32_t lo = a->lo, hi = a->hi, k, q = 0;
+    for (k = 0; k < n; k++) {
+        rast__cedge *const ed = &e[ix[k]];
+        const int64_t rel0 = (int64_t)ed->yt - Yj;
+        int64_t xa, xb, ca;
+        uint64_t ta, tb;
+        nx[q] = ix[k];
+        q += rel0 + ed->dy > p; /* (it ends below row j) */
+        rast__acc_ends(ed, j, rel0, a, &xa, &ta, &xb, &tb);
+        ca = rast__acc_col(xa) - x0;
+        if (ca == rast__acc_col(xb) - x0 && (uint64_t)ca < w) {
+            const int32_t c0 = (int32_t)ca, c1 = c0 < last ? c0 + 1 : c0;
+            rast__acc_put(acc, ca, (uint64_t)xa & fm, (uint64_t)xb & fm, tb - ta, ed->dir < 0 ? ~(uint64_t)0 : 0, 1);
+            lo = c0 < lo ? c0 : lo;
+            hi = c0 + 1 > hi ? c0 + 1 : hi;
+            if (!dense) {
+                blk[c0 >> 6] |= (uint64_t)1 << (c0 & 63);
+                blk[c1 >> 6] |= (uint64_t)1 << (c1 & 63);
+            }
+            if (count) cnt[c0 >> 4]++;
+        } else {
+            a->lo = lo;
+            a->hi = hi;
+            rast__acc_part(a, ed, -rel0 * ((int64_t)1 << hq), xa, ta, xb, tb, ed->dir, 1, count);
+            lo = a->lo;
+            hi = a->hi;
+        }
+    }
+    a->lo = lo;
+    a->hi = hi;
+    return q;
+}
+
+/* Row ja to jb one at a time, each edge's part deposited as it comes, into
+ * the cells of a (the short edges' walk).  The row's edges are in cur[]
+ * (w->row); those that go on below it are copied to nxt[] (w->tmp) as the
+ * parts are put, and the two swap: no pass over the list to drop the
+ * edges that end (rast__acc_edges_of's, a tenth of the text family's
+ * instructions with it); the edges that start in the row come from
+ * order[] by key[]. */
+static void rast__acc_by_rows(const rast__acc_walk *w, rast__acc *a)
+{
+    rast__cedge *const e = w->e;
+    const rast__cov_out *const o = w->o;
+    const uint32_t m = w->m;
+    const int32_t *const order = w->order, *const key = w->key, *const last = w->last;
+    int32_t *cur = w->row, *nxt = w->tmp, *t;
+    int32_t nrow = 0, j, k, q;
+    uint32_t next = 0, *const cnt = a->z + w->width; /* (in area[], after z[]: cleared) */
+    int exact = 0, done; /* w->exact[] cleared */
+    for (j = w->ja; j < w->jb; j++) {
+        for (; next < w->n && key[order[next]] + w->ja <= j; next++)
+            if (last[order[next]] >= j) cur[nrow++] = order[next];
+        done = 0;
+        if (nrow < RAST__ACC_MAXN && ((uint64_t)nrow + 1) * m < ((uint64_t)1 << 25)) {
+            /* Bits for the cells touched, so that the scan skips the
+             * others, unless the row's parts are many for its width
+             * (a part or more for every RAST__ACC_DENSE columns): then every
+             * cell from the first touched to the last is read. */
+            a->dense = (int64_t)nrow * RAST__ACC_DENSE >= w->width;
+            a->cnt = nrow >= RAST__ACC_FEW ? cnt : NULL;
+            /* (two calls: the count costs nothing where not asked) */
+            q = a->cnt ? rast__acc_parts(a, e, cur, nrow, nxt, j, 1) : rast__acc_parts(a, e, cur, nrow, nxt, j, 0);
+            done = rast__acc_emit(a, 1, o, j, w->rule, m, rast__acc_win((uint64_t)nrow, m), e, cur, nrow);
+        } else {
+            for (k = 0, q = 0; k < nrow; k++)
+                if (last[cur[k]] > j) nxt[q++] = cur[k];
+        }
+        if (!done) {
+            if (!exact) { /* the first exact row (rare) */
+                memset(w->exact, 0, w->n);
+                exact = 1;
+            }
+            rast__cov_exact_steps_of(e, cur, nrow, w->exact);
+            rast__cov_acc_exact_row(e, cur, nrow, j, w->s, w->rule, o, w->cover, w->area, w->bits);
+        }
+        t = cur;
+        cur = nxt;
+        nxt = t;
+        nrow = q;
+    }
+}
+#endif
 
 #if !defined(__OPTIMIZE_SIZE__)
 /* A band's row j with a level near a tie by the window of all its parts

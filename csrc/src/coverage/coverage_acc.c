@@ -66,8 +66,12 @@
  * 2^11); a row with more goes to the exact sweep. */
 #define RAST__ACC_MAXN 4096
 /* A row of this many parts or more counts them per 16 columns for its
- * window (rast__acc_count); fewer make a window narrow enough. */
-#define RAST__ACC_FEW 256
+ * window (rast__acc_count); fewer make a window narrow enough.  (256
+ * until the text family's rows of 100 to 255 parts sent 6 of its 460
+ * rows to the exact sweep by the window of all their parts, at ~130,000
+ * instructions each; at 64, 16 to 128 alike, only its rows with a pixel
+ * at an exact tie go there: 10.) */
+#define RAST__ACC_FEW 64
 /* (a band's rows are read whole sooner: where all four are, its long
  * edges mark no cell, rast__acc_dband_r) */
 #define RAST__ACC_DENSE_BAND 32
@@ -1368,13 +1372,14 @@ RAST__HOT int32_t rast__acc_parts(rast__acc *a, rast__cedge *e, const int32_t *i
     for (k = 0; k < n; k++) {
         rast__cedge *const ed = &e[ix[k]];
         const int64_t rel0 = (int64_t)ed->yt - Yj;
-        int64_t xa, xb, ca;
+        int64_t xa, xb, ca, cb;
         uint64_t ta, tb;
         nx[q] = ix[k];
         q += rel0 + ed->dy > p; /* (it ends below row j) */
         rast__acc_ends(ed, j, rel0, a, &xa, &ta, &xb, &tb);
         ca = rast__acc_col(xa) - x0;
-        if (ca == rast__acc_col(xb) - x0 && (uint64_t)ca < w) {
+        cb = rast__acc_col(xb) - x0;
+        if (ca == cb && (uint64_t)ca < w) {
             const int32_t c0 = (int32_t)ca, c1 = c0 < last ? c0 + 1 : c0;
             rast__acc_put(acc, ca, (uint64_t)xa & fm, (uint64_t)xb & fm, tb - ta, ed->dir < 0 ? ~(uint64_t)0 : 0, 1);
             lo = c0 < lo ? c0 : lo;
@@ -1384,6 +1389,36 @@ RAST__HOT int32_t rast__acc_parts(rast__acc *a, rast__cedge *e, const int32_t *i
                 blk[c1 >> 6] |= (uint64_t)1 << (c1 & 63);
             }
             if (count) cnt[c0 >> 4]++;
+        } else if ((cb - ca == 1 || ca - cb == 1) && (uint64_t)ca < w && (uint64_t)cb < w) {
+            /* one vertical crossed, inside the clip (most of the rest):
+             * rast__acc_part's two pieces, the column stepper there */
+            const int right = cb > ca;
+            const int32_t c0 = (int32_t)(right ? ca : cb), c1 = c0 + 1, c2 = c1 < last ? c1 + 1 : c1;
+            const uint64_t neg = ed->dir < 0 ? ~(uint64_t)0 : 0;
+            const uint32_t adx = (uint32_t)(ed->dx < 0 ? -ed->dx : ed->dx);
+            uint32_t qtr;
+            int64_t qt;
+            uint64_t tx;
+            if (ed->qX != c1 + x0) rast__acc_t_first(ed, c1 + x0, a);
+            qt = ed->qt + rel0 * ((int64_t)1 << hq);
+            tx = qt < (int64_t)ta ? ta : qt > (int64_t)tb ? tb : (uint64_t)qt;
+            rast__acc_put(acc, ca, (uint64_t)xa & fm, right ? QT : 0, tx - ta, neg, 1);
+            rast__acc_put(acc, cb, right ? 0 : QT, (uint64_t)xb & fm, tb - tx, neg, 1);
+            qtr = ed->qtr + ed->qtsr;
+            ed->qt += ed->qts + rast__acc_carry(&qtr, adx);
+            ed->qtr = qtr;
+            ed->qX += right ? 1 : -1;
+            lo = c0 < lo ? c0 : lo;
+            hi = c1 + 1 > hi ? c1 + 1 : hi;
+            if (!dense) {
+                blk[c0 >> 6] |= (uint64_t)1 << (c0 & 63);
+                blk[c1 >> 6] |= (uint64_t)1 << (c1 & 63);
+                blk[c2 >> 6] |= (uint64_t)1 << (c2 & 63);
+            }
+            if (count) {
+                cnt[c0 >> 4]++;
+                cnt[c1 >> 4] += (uint32_t)((c1 >> 4) != (c0 >> 4));
+            }
         } else {
             a->lo = lo;
             a->hi = hi;

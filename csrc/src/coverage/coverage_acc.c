@@ -1432,6 +1432,108 @@ RAST__HOT int32_t rast__acc_parts(rast__acc *a, rast__cedge *e, const int32_t *i
     return q;
 }
 
+/* Columns [c0, c1] of the clip (clamped to it) in the bits b. */
+static void rast__acc_cols_mark(uint64_t *b, int64_t c0, int64_t c1, int32_t last)
+{
+    c0 = c0 < 0 ? 0 : c0;
+    c1 = c1 > last ? last : c1;
+    for (; c0 <= c1; c0++) b[c0 >> 6] |= (uint64_t)1 << (c0 & 63);
+}
+
+/* Row j again, when a level of its quick sums was near a tie (most often
+ * a pixel at an exact tie: half covered by a bar on a half pixel, which no
+ * window can decide): its parts ix[0..n) put again into the cleared cells
+ * of a (sx 1), as rast__acc_parts puts them, and each pixel's level
+ * decided with the window of the row's parts (per 16 columns where they
+ * are many) unless no part that may move it (rast__acc_count's) has a
+ * rounded value: then its sum is exact, and so is its level, ties too.
+ * A part's values are exact where its ends' abscissae are (a vertex, or
+ * a row's top or bottom where the row stepper's remainder is 0), it
+ * crosses no vertical, and the floor of ar drops nothing (its low 10 bits
+ * 0); the columns of any other part are marked in a->blk (w->bits,
+ * cleared, and left so).  Returns rast__acc_done's: 1 when written and
+ * handed on, else 0 (the exact sweep's).  The steppers are left as the
+ * first pass left them (the row's bottom). */
+static int rast__acc_ties(rast__acc *a, const rast__acc_walk *w, rast__cedge *e, const int32_t *ix, int32_t n,
+                          int32_t j)
+{
+    const int32_t p = a->p, hq = a->hq, last = a->last, wd = w->width;
+    const int64_t Yj = (int64_t)j * p, x0 = a->x0;
+    const uint64_t fm = QT - 1;
+    const uint32_t m = w->m;
+    const rast_coverage_format f = m == 255 ? RAST_COVERAGE_U8 : RAST_COVERAGE_U16;
+    uint64_t *const acc = a->acc, *const ib = a->blk, win, bad = 0, lev = 0, v = 0;
+    uint32_t *const cnt = n >= RAST__ACC_FEW ? a->z + wd : NULL, most = 0;
+    unsigned char *const row = rast__cov_row(w->o, j);
+    int32_t k, lo, hi;
+    a->dense = 1; /* (rast__acc_part marks no bit: ib[] is this pass's) */
+    a->cnt = cnt;
+    for (k = 0; k < n; k++) {
+        rast__cedge *const ed = &e[ix[k]];
+        const int64_t rel0 = (int64_t)ed->yt - Yj, rel1 = rel0 + ed->dy;
+        int64_t xa, xb, ca, cb;
+        uint64_t ta, tb;
+        int exact = 1;
+        if (rel0 > 0) {
+            ta = (uint64_t)rel0 << hq;
+            xa = (int64_t)ed->xt * ((int64_t)1 << hq);
+        } else {
+            ta = 0;
+            xa = rast__acc_top(ed, j, a);
+            exact = ed->qxr == 0;
+        }
+        if (rel1 < p) {
+            tb = (uint64_t)rel1 << hq;
+            xb = ((int64_t)ed->xt + ed->dx) * ((int64_t)1 << hq);
+        } else {
+            tb = QT;
+            xb = rast__acc_top(ed, j + 1, a);
+            exact &= ed->qxr == 0;
+        }
+        ca = rast__acc_col(xa) - x0;
+        cb = rast__acc_col(xb) - x0;
+        if (ca == cb && ca >= 0 && ca < wd) {
+            const uint64_t fs = ((uint64_t)xa & fm) + ((uint64_t)xb & fm);
+            rast__acc_put(acc, ca, (uint64_t)xa & fm, (uint64_t)xb & fm, tb - ta, ed->dir < 0 ? ~(uint64_t)0 : 0, 1);
+            a->lo = ca < a->lo ? (int32_t)ca : a->lo;
+            a->hi = ca + 1 > a->hi ? (int32_t)ca + 1 : a->hi;
+            if (cnt) cnt[ca >> 4]++;
+            if (!exact || ((fs * (tb - ta)) & 1023)) ib[ca >> 6] |= (uint64_t)1 << (ca & 63);
+        } else {
+            rast__acc_part(a, ed, -rel0 * ((int64_t)1 << hq), xa, ta, xb, tb, ed->dir, 1, cnt != NULL);
+            rast__acc_cols_mark(ib, ca < cb ? ca : cb, ca < cb ? cb : ca, last);
+        }
+    }
+    lo = a->lo;
+    hi = a->hi < wd ? a->hi + 1 : wd;
+    if (lo >= hi) lo = hi = 0;
+    if (cnt) {
+        for (k = 0; k <= last >> 4; k++) {
+            most = cnt[k] > most ? cnt[k] : most;
+            cnt[k] = 0;
+        }
+        win = rast__acc_win(most, m);
+    } else {
+        win = rast__acc_win((uint64_t)n, m);
+    }
+    rast__cov_fill(f, row, 0, lo, 0);
+    for (k = lo; k < hi; k++) {
+        v += acc[k];
+        acc[k] = 0;
+        lev = rast__acc_level((int64_t)v, w->rule, m, (ib[k >> 6] >> (k & 63)) & 1 ? win : 0, &bad);
+        rast__cov_store(f, row, k, lev);
+    }
+    rast__cov_fill(f, row, hi, wd, lev);
+    acc[wd] = 0;
+    for (k = 0; k <= last >> 6; k++) ib[k] = 0;
+    a->lo = INT32_MAX;
+    a->hi = -1;
+    a->cnt = NULL;
+    if (bad) return 0;
+    rast__cov_row_done(w->o, j);
+    return 1;
+}
+
 /* Row ja to jb one at a time, each edge's part deposited as it comes, into
  * the cells of a (the short edges' walk).  The row's edges are in cur[]
  * (w->row); those that go on below it are copied to nxt[] (w->tmp) as the
@@ -1462,7 +1564,8 @@ static void rast__acc_by_rows(const rast__acc_walk *w, rast__acc *a)
             a->cnt = nrow >= RAST__ACC_FEW ? cnt : NULL;
             /* (two calls: the count costs nothing where not asked) */
             q = a->cnt ? rast__acc_parts(a, e, cur, nrow, nxt, j, 1) : rast__acc_parts(a, e, cur, nrow, nxt, j, 0);
-            done = rast__acc_emit(a, 1, o, j, w->rule, m, rast__acc_win((uint64_t)nrow, m), e, cur, nrow);
+            done = rast__acc_emit(a, 1, o, j, w->rule, m, rast__acc_win((uint64_t)nrow, m), e, cur, nrow) ||
+                   rast__acc_ties(a, w, e, cur, nrow, j);
         } else {
             for (k = 0, q = 0; k < nrow; k++)
                 if (last[cur[k]] > j) nxt[q++] = cur[k];

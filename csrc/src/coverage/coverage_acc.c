@@ -66,8 +66,12 @@
  * 2^11); a row with more goes to the exact sweep. */
 #define RAST__ACC_MAXN 4096
 /* A row of this many parts or more counts them per 16 columns for its
- * window (rast__acc_count); fewer make a window narrow enough. */
-#define RAST__ACC_FEW 256
+ * window (rast__acc_count); fewer make a window narrow enough.  (256
+ * until the text family's rows of 100 to 255 parts sent 6 of its 460
+ * rows to the exact sweep by the window of all their parts, at ~130,000
+ * instructions each; at 64, 16 to 128 alike, only its rows with a pixel
+ * at an exact tie go there: 10.) */
+#define RAST__ACC_FEW 64
 /* (a band's rows are read whole sooner: where all four are, its long
  * edges mark no cell, rast__acc_dband_r) */
 #define RAST__ACC_DENSE_BAND 32
@@ -167,6 +171,29 @@ static void rast__acc_init(rast__acc *a, uint64_t *acc, uint64_t *bits, uint32_t
     a->cnt = NULL;
 }
 
+#if !defined(__OPTIMIZE_SIZE__)
+/* rast__cov_qtop_set at the top of row j1 = e's first row + 1 (0 < d =
+ * j1 P - yt <= P): floor(dx d 2^HQ / dy) by one unsigned division of
+ * |dx| d 2^HQ <= 2^58, the floor of the negative quotient from it, inline
+ * (a call and a signed division's tests an edge: 0.7 M instructions of
+ * the text family's 20 M) */
+static inline int64_t rast__acc_top1(rast__cedge *e, int32_t j1, const rast__acc *a)
+{
+    const uint64_t d = (uint64_t)((int64_t)j1 * a->p - e->yt), dy = (uint64_t)e->dy;
+    const uint64_t n = (uint64_t)(e->dx < 0 ? -(int64_t)e->dx : e->dx) * d << a->hq, q = n / dy, r = n % dy;
+    const int64_t x = (int64_t)e->xt * ((int64_t)1 << a->hq);
+    if (e->dx >= 0) {
+        e->qx = x + (int64_t)q;
+        e->qxr = (uint32_t)r;
+    } else {
+        e->qx = x - (int64_t)q - (r != 0);
+        e->qxr = (uint32_t)(r ? dy - r : 0);
+    }
+    e->qrow = j1;
+    return e->qx;
+}
+#endif
+
 /* e's part in row j (top Yj): from (*xa, *ta) to (*xb, *tb), Q units, t
  * from the row's top; its top rel0 = yt - Yj below the row's. */
 RAST__HOT void rast__acc_ends(rast__cedge *e, int32_t j, int64_t rel0, const rast__acc *a, int64_t *xa,
@@ -185,7 +212,12 @@ RAST__HOT void rast__acc_ends(rast__cedge *e, int32_t j, int64_t rel0, const ras
         *xb = ((int64_t)e->xt + e->dx) * ((int64_t)1 << a->hq);
     } else {
         *tb = QT;
-        *xb = rast__acc_top(e, j + 1, a);
+#if !defined(__OPTIMIZE_SIZE__)
+        if (rel0 > 0 && e->qrow != j + 1) /* (e starts in row j) */
+            *xb = rast__acc_top1(e, j + 1, a);
+        else
+#endif
+            *xb = rast__acc_top(e, j + 1, a);
     }
 }
 
@@ -239,7 +271,13 @@ RAST__HOT void rast__acc_put(uint64_t *acc, int64_t k, uint64_t f0, uint64_t f1,
 RAST__HOT void rast__acc_touch(rast__acc *a, int32_t lo, int32_t hi, int count)
 {
     rast__acc_mark(a, lo, hi);
+    /* (the column after the last, hi, gets the part's whole height: exact;
+     * size-optimised builds count it too, one instruction fewer) */
+#if defined(__OPTIMIZE_SIZE__)
     if (count) rast__acc_count(a, lo, hi);
+#else
+    if (count) rast__acc_count(a, lo, hi - 1);
+#endif
 }
 
 /* The part of e from (xa, ta) to (xb, tb) (Q units; t from the row's top,
@@ -1308,6 +1346,7 @@ static int32_t rast__acc_edges_of(const rast__acc_walk *w, int32_t nrow, uint32_
     return nrow;
 }
 
+#if defined(__OPTIMIZE_SIZE__)
 /* Row ja to jb one at a time, each edge's part deposited as it comes, into
  * the cells of a (the short edges' walk). */
 static void rast__acc_by_rows(const rast__acc_walk *w, rast__acc *a)
@@ -1343,6 +1382,243 @@ static void rast__acc_by_rows(const rast__acc_walk *w, rast__acc *a)
         rast__cov_acc_exact_row(e, row, nrow, j, w->s, w->rule, o, w->cover, w->area, w->bits);
     }
 }
+#else
+/* Row j's parts of the edges ix[0..n) into the cells of a (sx 1), as
+ * rast__acc_row_part_in puts them, and the edges that go on below row j
+ * copied to nx[], in order (returns how many).  A part in one column of
+ * the clip (four in five of a line of text's) is put here, the row's
+ * bounds lo, hi in registers, its two cells marked and counted as
+ * rast__acc_touch would (the column and the next, the last of the clip at
+ * most); any other goes to rast__acc_part.  count as rast__acc_part's (a
+ * constant at each call).  (From 79 instructions a part to ~50 on the
+ * text family: the struct's fields reloaded after each store, which may
+ * alias them, the clip tests of the general way, the calls.) */
+RAST__HOT int32_t rast__acc_parts(rast__acc *a, rast__cedge *e, const int32_t *ix, int32_t n, int32_t *nx,
+                                  int32_t j, int count)
+{
+    const int32_t p = a->p, hq = a->hq, last = a->last;
+    const int64_t Yj = (int64_t)j * p, x0 = a->x0;
+    const uint64_t fm = QT - 1, w = (uint64_t)(a->x1 - a->x0);
+    uint64_t *const acc = a->acc, *const blk = a->blk;
+    uint32_t *const cnt = a->cnt;
+    const int dense = a->dense;
+    int32_t lo = a->lo, hi = a->hi, k, q = 0;
+    for (k = 0; k < n; k++) {
+        rast__cedge *const ed = &e[ix[k]];
+        const int64_t rel0 = (int64_t)ed->yt - Yj;
+        int64_t xa, xb, ca, cb;
+        uint64_t ta, tb;
+        nx[q] = ix[k];
+        q += rel0 + ed->dy > p; /* (it ends below row j) */
+        rast__acc_ends(ed, j, rel0, a, &xa, &ta, &xb, &tb);
+        ca = rast__acc_col(xa) - x0;
+        cb = rast__acc_col(xb) - x0;
+        if (ca == cb && (uint64_t)ca < w) {
+            const int32_t c0 = (int32_t)ca, c1 = c0 < last ? c0 + 1 : c0;
+            rast__acc_put(acc, ca, (uint64_t)xa & fm, (uint64_t)xb & fm, tb - ta, ed->dir < 0 ? ~(uint64_t)0 : 0, 1);
+            lo = c0 < lo ? c0 : lo;
+            hi = c0 + 1 > hi ? c0 + 1 : hi;
+            if (!dense) {
+                blk[c0 >> 6] |= (uint64_t)1 << (c0 & 63);
+                blk[c1 >> 6] |= (uint64_t)1 << (c1 & 63);
+            }
+            if (count) cnt[c0 >> 4]++;
+        } else if ((cb - ca == 1 || ca - cb == 1) && (uint64_t)ca < w && (uint64_t)cb < w) {
+            /* one vertical crossed, inside the clip (most of the rest):
+             * rast__acc_part's two pieces, the column stepper there */
+            const int right = cb > ca;
+            const int32_t c0 = (int32_t)(right ? ca : cb), c1 = c0 + 1, c2 = c1 < last ? c1 + 1 : c1;
+            const uint64_t neg = ed->dir < 0 ? ~(uint64_t)0 : 0;
+            const uint32_t adx = (uint32_t)(ed->dx < 0 ? -ed->dx : ed->dx);
+            uint32_t qtr;
+            int64_t qt;
+            uint64_t tx;
+            if (ed->qX != c1 + x0) rast__acc_t_first(ed, c1 + x0, a);
+            qt = ed->qt + rel0 * ((int64_t)1 << hq);
+            tx = qt < (int64_t)ta ? ta : qt > (int64_t)tb ? tb : (uint64_t)qt;
+            rast__acc_put(acc, ca, (uint64_t)xa & fm, right ? QT : 0, tx - ta, neg, 1);
+            rast__acc_put(acc, cb, right ? 0 : QT, (uint64_t)xb & fm, tb - tx, neg, 1);
+            qtr = ed->qtr + ed->qtsr;
+            ed->qt += ed->qts + rast__acc_carry(&qtr, adx);
+            ed->qtr = qtr;
+            ed->qX += right ? 1 : -1;
+            lo = c0 < lo ? c0 : lo;
+            hi = c1 + 1 > hi ? c1 + 1 : hi;
+            if (!dense) {
+                blk[c0 >> 6] |= (uint64_t)1 << (c0 & 63);
+                blk[c1 >> 6] |= (uint64_t)1 << (c1 & 63);
+                blk[c2 >> 6] |= (uint64_t)1 << (c2 & 63);
+            }
+            if (count) {
+                cnt[c0 >> 4]++;
+                cnt[c1 >> 4] += (uint32_t)((c1 >> 4) != (c0 >> 4));
+            }
+        } else {
+            a->lo = lo;
+            a->hi = hi;
+            rast__acc_part(a, ed, -rel0 * ((int64_t)1 << hq), xa, ta, xb, tb, ed->dir, 1, count);
+            lo = a->lo;
+            hi = a->hi;
+        }
+    }
+    a->lo = lo;
+    a->hi = hi;
+    return q;
+}
+
+/* Columns [c0, c1] of the clip (clamped to it) in the bits b. */
+static void rast__acc_cols_mark(uint64_t *b, int64_t c0, int64_t c1, int32_t last)
+{
+    c0 = c0 < 0 ? 0 : c0;
+    c1 = c1 > last ? last : c1;
+    for (; c0 <= c1; c0++) b[c0 >> 6] |= (uint64_t)1 << (c0 & 63);
+}
+
+/* Row j again, when a level of its quick sums was near a tie (most often
+ * a pixel at an exact tie: half covered by a bar on a half pixel, which no
+ * window can decide): its parts ix[0..n) put again into the cleared cells
+ * of a (sx 1), as rast__acc_parts puts them, and each pixel's level
+ * decided with the window of the row's parts (per 16 columns where they
+ * are many) unless no part that may move it (rast__acc_count's) has a
+ * rounded value: then its sum is exact, and so is its level, ties too.
+ * A part's values are exact where its ends' abscissae are (a vertex, or
+ * a row's top or bottom where the row stepper's remainder is 0), it
+ * crosses no vertical, and the floor of ar drops nothing (its low 10 bits
+ * 0); the columns of any other part are marked in a->blk (w->bits,
+ * cleared, and left so).  Returns rast__acc_done's: 1 when written and
+ * handed on, else 0 (the exact sweep's).  The steppers are left as the
+ * first pass left them (the row's bottom). */
+static int rast__acc_ties(rast__acc *a, const rast__acc_walk *w, rast__cedge *e, const int32_t *ix, int32_t n,
+                          int32_t j)
+{
+    const int32_t p = a->p, hq = a->hq, last = a->last, wd = w->width;
+    const int64_t Yj = (int64_t)j * p, x0 = a->x0;
+    const uint64_t fm = QT - 1;
+    const uint32_t m = w->m;
+    const rast_coverage_format f = m == 255 ? RAST_COVERAGE_U8 : RAST_COVERAGE_U16;
+    uint64_t *const acc = a->acc, *const ib = a->blk, win, bad = 0, lev = 0, v = 0;
+    uint32_t *const cnt = n >= RAST__ACC_FEW ? a->z + wd : NULL, most = 0;
+    unsigned char *const row = rast__cov_row(w->o, j);
+    int32_t k, lo, hi;
+    a->dense = 1; /* (rast__acc_part marks no bit: ib[] is this pass's) */
+    a->cnt = cnt;
+    for (k = 0; k < n; k++) {
+        rast__cedge *const ed = &e[ix[k]];
+        const int64_t rel0 = (int64_t)ed->yt - Yj, rel1 = rel0 + ed->dy;
+        int64_t xa, xb, ca, cb;
+        uint64_t ta, tb;
+        int exact = 1;
+        if (rel0 > 0) {
+            ta = (uint64_t)rel0 << hq;
+            xa = (int64_t)ed->xt * ((int64_t)1 << hq);
+        } else {
+            ta = 0;
+            xa = rast__acc_top(ed, j, a);
+            exact = ed->qxr == 0;
+        }
+        if (rel1 < p) {
+            tb = (uint64_t)rel1 << hq;
+            xb = ((int64_t)ed->xt + ed->dx) * ((int64_t)1 << hq);
+        } else {
+            tb = QT;
+            xb = rast__acc_top(ed, j + 1, a);
+            exact &= ed->qxr == 0;
+        }
+        ca = rast__acc_col(xa) - x0;
+        cb = rast__acc_col(xb) - x0;
+        if (ca == cb && ca >= 0 && ca < wd) {
+            const uint64_t fs = ((uint64_t)xa & fm) + ((uint64_t)xb & fm);
+            rast__acc_put(acc, ca, (uint64_t)xa & fm, (uint64_t)xb & fm, tb - ta, ed->dir < 0 ? ~(uint64_t)0 : 0, 1);
+            a->lo = ca < a->lo ? (int32_t)ca : a->lo;
+            a->hi = ca + 1 > a->hi ? (int32_t)ca + 1 : a->hi;
+            if (cnt) cnt[ca >> 4]++;
+            if (!exact || ((fs * (tb - ta)) & 1023)) ib[ca >> 6] |= (uint64_t)1 << (ca & 63);
+        } else {
+            rast__acc_part(a, ed, -rel0 * ((int64_t)1 << hq), xa, ta, xb, tb, ed->dir, 1, cnt != NULL);
+            rast__acc_cols_mark(ib, ca < cb ? ca : cb, ca < cb ? cb : ca, last);
+        }
+    }
+    lo = a->lo;
+    hi = a->hi < wd ? a->hi + 1 : wd;
+    if (lo >= hi) lo = hi = 0;
+    if (cnt) {
+        for (k = 0; k <= last >> 4; k++) {
+            most = cnt[k] > most ? cnt[k] : most;
+            cnt[k] = 0;
+        }
+        win = rast__acc_win(most, m);
+    } else {
+        win = rast__acc_win((uint64_t)n, m);
+    }
+    rast__cov_fill(f, row, 0, lo, 0);
+    for (k = lo; k < hi; k++) {
+        v += acc[k];
+        acc[k] = 0;
+        lev = rast__acc_level((int64_t)v, w->rule, m, (ib[k >> 6] >> (k & 63)) & 1 ? win : 0, &bad);
+        rast__cov_store(f, row, k, lev);
+    }
+    rast__cov_fill(f, row, hi, wd, lev);
+    acc[wd] = 0;
+    for (k = 0; k <= last >> 6; k++) ib[k] = 0;
+    a->lo = INT32_MAX;
+    a->hi = -1;
+    a->cnt = NULL;
+    if (bad) return 0;
+    rast__cov_row_done(w->o, j);
+    return 1;
+}
+
+/* Row ja to jb one at a time, each edge's part deposited as it comes, into
+ * the cells of a (the short edges' walk).  The row's edges are in cur[]
+ * (w->row); those that go on below it are copied to nxt[] (w->tmp) as the
+ * parts are put, and the two swap: no pass over the list to drop the
+ * edges that end (rast__acc_edges_of's, a tenth of the text family's
+ * instructions with it); the edges that start in the row come from
+ * order[] by key[]. */
+static void rast__acc_by_rows(const rast__acc_walk *w, rast__acc *a)
+{
+    rast__cedge *const e = w->e;
+    const rast__cov_out *const o = w->o;
+    const uint32_t m = w->m;
+    const int32_t *const order = w->order, *const key = w->key, *const last = w->last;
+    int32_t *cur = w->row, *nxt = w->tmp, *t;
+    int32_t nrow = 0, j, k, q;
+    uint32_t next = 0, *const cnt = a->z + w->width; /* (in area[], after z[]: cleared) */
+    int exact = 0, done; /* w->exact[] cleared */
+    for (j = w->ja; j < w->jb; j++) {
+        for (; next < w->n && key[order[next]] + w->ja <= j; next++)
+            if (last[order[next]] >= j) cur[nrow++] = order[next];
+        done = 0;
+        if (nrow < RAST__ACC_MAXN && ((uint64_t)nrow + 1) * m < ((uint64_t)1 << 25)) {
+            /* Bits for the cells touched, so that the scan skips the
+             * others, unless the row's parts are many for its width
+             * (a part or more for every RAST__ACC_DENSE columns): then every
+             * cell from the first touched to the last is read. */
+            a->dense = (int64_t)nrow * RAST__ACC_DENSE >= w->width;
+            a->cnt = nrow >= RAST__ACC_FEW ? cnt : NULL;
+            /* (two calls: the count costs nothing where not asked) */
+            q = a->cnt ? rast__acc_parts(a, e, cur, nrow, nxt, j, 1) : rast__acc_parts(a, e, cur, nrow, nxt, j, 0);
+            done = rast__acc_emit(a, 1, o, j, w->rule, m, rast__acc_win((uint64_t)nrow, m), e, cur, nrow) ||
+                   rast__acc_ties(a, w, e, cur, nrow, j);
+        } else {
+            for (k = 0, q = 0; k < nrow; k++)
+                if (last[cur[k]] > j) nxt[q++] = cur[k];
+        }
+        if (!done) {
+            if (!exact) { /* the first exact row (rare) */
+                memset(w->exact, 0, w->n);
+                exact = 1;
+            }
+            rast__cov_exact_steps_of(e, cur, nrow, w->exact);
+            rast__cov_acc_exact_row(e, cur, nrow, j, w->s, w->rule, o, w->cover, w->area, w->bits);
+        }
+        t = cur;
+        cur = nxt;
+        nxt = t;
+        nrow = q;
+    }
+}
+#endif
 
 #if !defined(__OPTIMIZE_SIZE__)
 /* A band's row j with a level near a tie by the window of all its parts

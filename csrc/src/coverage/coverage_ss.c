@@ -261,6 +261,16 @@ static void rast__ss_row_ends(void *user, int32_t y, rast__edge *aet, int32_t n)
  * need no marks (a mark costs about as much as a run's end; with fewer
  * ends, summing every column costs more than the marks save).  Only for
  * uint8_t rows, which that flush writes; the choice changes no value. */
+/* The test itself, from the edges' heights summed (sum) and the least
+ * and greatest y of their ends (lo, hi). */
+static int rast__ss_dense_of(uint64_t sum, int32_t lo, int32_t hi, const rast__ss *ss)
+{
+    /* sum / (hi - lo) k 4 >= w (both sides below 2^63) */
+    return ss->o->format == RAST_COVERAGE_U8 && hi > lo &&
+           sum / (uint64_t)((int64_t)hi - lo) * ((uint64_t)4 << ss->kbits) >=
+               (uint64_t)(ss->fx1 - ss->fx0) >> ss->kbits;
+}
+
 static int rast__ss_dense(const rast_polygon *poly, const rast__ss *ss)
 {
     const rast_point *p = poly->points;
@@ -278,9 +288,7 @@ static int rast__ss_dense(const rast_polygon *poly, const rast__ss *ss)
             if (ya > hi) hi = ya;
         }
     }
-    /* sum / (hi - lo) k 4 >= w (both sides below 2^63) */
-    return hi > lo && sum / (uint64_t)((int64_t)hi - lo) * ((uint64_t)4 << ss->kbits) >=
-                          (uint64_t)(ss->fx1 - ss->fx0) >> ss->kbits;
+    return rast__ss_dense_of(sum, lo, hi, ss);
 }
 
 /* 1 when every crossing of the polygon (points on the fine grid, S
@@ -389,6 +397,10 @@ static int rast__ss_narrow(const rast_point *pts, uint32_t npoints, int32_t s, i
     return sub->clip.x0 < sub->clip.x1;
 }
 
+static int rast__ss_cancel(rast__ss *ss, const rast_point *pts, const uint32_t *ring_sizes,
+                           uint32_t npoints, const rast__grid *g, const rast_rect *fine,
+                           rast__arena *arena);
+
 rast_status rast__cov_ss(const rast_polygon *poly, uint32_t npoints, int32_t s,
                          int32_t kbits, rast_fill_rule rule, rast_sample sample,
                          const rast__cov_out *out, rast__arena *arena)
@@ -405,6 +417,13 @@ rast_status rast__cov_ss(const rast_polygon *poly, uint32_t npoints, int32_t s,
     if (st != RAST_OK) return st;
     ss.evenodd = rule == RAST_RULE_EVENODD;
     ss.clip = !rast__ss_inside(poly->points, npoints, s, &ss);
+    /* many small rings (a mesh's cells, at most 8 vertices a ring on
+     * average): their shared edges may cancel (rast__ss_cancel) */
+    if (npoints <= 8 * (uint64_t)poly->nrings &&
+        rast__ss_cancel(&ss, poly->points, poly->ring_sizes, npoints, &g, &fine, arena)) {
+        rast__ss_finish(&ss);
+        return RAST_OK;
+    }
     ss.dense = rast__ss_dense(poly, &ss);
     st = rast__aet_walk(poly, npoints, &g, rule, &fine, arena, NULL, rast__ss_row_ends, &ss,
                         NULL);
@@ -445,22 +464,30 @@ static inline uint32_t rast__ss_seg_hash(const rast__ss_seg *p, int32_t bits)
     return (uint32_t)(h >> (64 - bits));
 }
 
-/* The batch's edges less those that cancel, walked as a polygon into the
- * counts when at most half of them are left; returns 1 then, else 0 with
- * the arena as it was.  (Its memory, the segments, the table and the
- * AET's for at most 3 ntris / 2 edges, is less than the AET's for 3 ntris
- * edges that the scratch holds.) */
-static int rast__ss_cancel(rast__ss *ss, const rast_point *tris, uint32_t ntris,
-                           const rast__grid *g, const rast_rect *fine, rast__arena *arena)
+/* The edges of `pts` (rings of ring_sizes[0 .. nrings), or, with
+ * ring_sizes NULL, triangles) less those that cancel, walked into
+ * the counts (the rule ss->evenodd's) when at most half of them are left;
+ * returns 1 then, else 0 with the arena as it was.  The winding number
+ * is the sum of the edges' parts, so the cancelled ones change it
+ * nowhere: non-zero keeps |n| copies of a segment, even-odd n mod 2 (the
+ * parity).  (Its memory, the segments, the table and the AET's for at
+ * most npoints / 2 edges, is less than the AET's for npoints edges that
+ * the scratch holds.) */
+static int rast__ss_cancel(rast__ss *ss, const rast_point *pts, const uint32_t *ring_sizes,
+                           uint32_t npoints, const rast__grid *g, const rast_rect *fine,
+                           rast__arena *arena)
 {
     const rast__arena keep = *arena;
+    const int32_t N = (int32_t)npoints;
     rast__ss_seg *seg;
     rast__edge *edges, *aet;
     int32_t *bucket, *slot, i, k, m = 0, left = 0, nedges = 0, row0, row1, tbits = 1,
-                                  miny = INT32_MAX, maxy = INT32_MIN;
+                                  miny = INT32_MAX, maxy = INT32_MIN, rs = 0, re = 0;
+    uint32_t ring = 0;
+    uint64_t sum = 0;
     int64_t r;
-    if (ntris == 0 || ntris > (uint32_t)INT32_MAX / 3) return 0;
-    seg = (rast__ss_seg *)rast__take(arena, (size_t)ntris * 3 * sizeof *seg);
+    if (npoints == 0 || npoints > (uint32_t)INT32_MAX / 2) return 0;
+    seg = (rast__ss_seg *)rast__take(arena, (size_t)npoints * sizeof *seg);
     if (!seg) {
         *arena = keep;
         return 0;
@@ -470,17 +497,24 @@ static int rast__ss_cancel(rast__ss *ss, const rast_point *tris, uint32_t ntris,
      * edges that stay (the first's |n| summed; a horizontal edge crosses
      * no row and counts none), kept as it goes: a batch that is not a
      * mesh is given up before the pass that gathers what stays */
-    while (((int64_t)1 << tbits) < (int64_t)ntris * 6) tbits++;
+    while (((int64_t)1 << tbits) < (int64_t)N * 2) tbits++;
     slot = (int32_t *)rast__take(arena, ((size_t)1 << tbits) * sizeof *slot);
     if (!slot) {
         *arena = keep;
         return 0;
     }
     memset(slot, 0xFF, ((size_t)1 << tbits) * sizeof *slot); /* -1: free */
-    for (i = 0; i < (int32_t)ntris * 3; i++) {
-        const rast_point p = tris[i], q = tris[i % 3 == 2 ? i - 2 : i + 1];
-        const int fwd = p.y < q.y || (p.y == q.y && p.x < q.x);
+    for (i = 0; i < N; i++) {
+        rast_point p, q;
+        int fwd;
         uint32_t h;
+        while (i == re) { /* the next ring (empty ones skipped) */
+            rs = re;
+            re += ring_sizes ? (int32_t)ring_sizes[ring++] : 3;
+        }
+        p = pts[i];
+        q = pts[i + 1 == re ? rs : i + 1];
+        fwd = p.y < q.y || (p.y == q.y && p.x < q.x);
         seg[i].a = fwd ? p : q;
         seg[i].b = fwd ? q : p;
         seg[i].n = fwd ? 1 : -1;
@@ -492,7 +526,7 @@ static int rast__ss_cancel(rast__ss *ss, const rast_point *tris, uint32_t ntris,
             left += p.y != q.y;
             /* each edge still to come takes at most one off `left`: when
              * even that leaves more than half, the test below fails now */
-            if (((int64_t)left - ((int64_t)ntris * 3 - 1 - i)) * 2 > (int64_t)ntris * 3) {
+            if (((int64_t)left - ((int64_t)N - 1 - i)) * 2 > (int64_t)N) {
                 *arena = keep;
                 return 0;
             }
@@ -503,27 +537,33 @@ static int rast__ss_cancel(rast__ss *ss, const rast_point *tris, uint32_t ntris,
             if (p.y != q.y) left += (now < 0 ? -now : now) - (was < 0 ? -was : was);
         }
     }
-    if ((int64_t)left * 2 > (int64_t)ntris * 3) {
+    if ((int64_t)left * 2 > (int64_t)N) {
         *arena = keep;
         return 0;
     }
-    /* those at 0 gone */
-    for (i = 0; i < (int32_t)ntris * 3; i++) {
-        if (seg[i].n != 0 && seg[i].a.y != seg[i].b.y) {
+    /* those at 0 gone (even-odd: those at an even count), the rest's
+     * copies in n's sign */
+    for (i = 0; i < N; i++) {
+        int32_t n = seg[i].n;
+        if (ss->evenodd) n = n & 1 ? (n < 0 ? -1 : 1) : 0;
+        if (n != 0 && seg[i].a.y != seg[i].b.y) {
             seg[m] = seg[i];
+            seg[m].n = n;
             miny = seg[m].a.y < miny ? seg[m].a.y : miny;
             maxy = seg[m].b.y > maxy ? seg[m].b.y : maxy;
+            sum += (uint64_t)((int64_t)seg[m].b.y - seg[m].a.y) * (uint64_t)(n < 0 ? -n : n);
             m++;
         }
     }
-    if (left == 0) return 1;
+    if (m == 0) return 1;
+    ss->dense = rast__ss_dense_of(sum, miny, maxy, ss);
     r = rast__row_at_or_after(2 * (int64_t)miny, g);
     row0 = r > fine->y0 ? (int32_t)r : fine->y0;
     r = rast__row_at_or_after(2 * (int64_t)maxy, g);
     row1 = r < fine->y1 ? (int32_t)r : fine->y1;
     if (row0 >= row1) return 1;
     if (!rast__aet_tables(arena, (uint32_t)left, row0, row1, &edges, &aet, &bucket)) {
-        *arena = keep; /* (it fits: the triangles' own walk then says so) */
+        *arena = keep; /* (it fits: the walk of all edges then says so) */
         return 0;
     }
     for (i = 0; i < m; i++)
@@ -535,8 +575,9 @@ static int rast__ss_cancel(rast__ss *ss, const rast_point *tris, uint32_t ntris,
                 bucket[ed->row - row0 + 1]++;
             }
         }
-    rast__aet_sweep(edges, aet, bucket, nedges, row0, row1, RAST_RULE_NONZERO, NULL,
-                    rast__ss_row_ends, ss);
+    rast__aet_sweep(edges, aet, bucket, nedges, row0, row1,
+                    ss->evenodd ? RAST_RULE_EVENODD : RAST_RULE_NONZERO, NULL, rast__ss_row_ends,
+                    ss);
     return 1;
 }
 
@@ -996,7 +1037,8 @@ rast_status rast__cov_ss_tris(const rast_point *tris, uint32_t ntris, int32_t s,
     rast_status st = rast__grid_init(&g, s, sample, RAST_ROUND_EXACT, RAST_BOUNDARY_EXACT);
     if (st == RAST_OK) st = rast__ss_begin(&ss, kbits, o, arena, &fine);
     if (st != RAST_OK) return st;
-    if (rast__ss_cancel(&ss, tris, ntris, &g, &fine, arena)) {
+    if (ntris <= (uint32_t)INT32_MAX / 6 &&
+        rast__ss_cancel(&ss, tris, NULL, ntris * 3, &g, &fine, arena)) {
         rast__ss_finish(&ss);
         return RAST_OK;
     }

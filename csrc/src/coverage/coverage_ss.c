@@ -168,10 +168,18 @@ static inline void rast__ss_pair(int32_t *d, uint64_t *mark, int32_t kb, int32_t
     }
 }
 
-/* The runs of a non-zero row no end of which needs clamping, and the
- * edges stepped: as rast__ss_row_ends.  1 when two edges changed places. */
-static inline int rast__ss_nz_in(rast__edge *aet, int32_t n, int32_t *d, uint64_t *mark,
-                                 int32_t kb, int32_t fx0)
+/* Column x of a fine row as a run's end: clamped to the clip's columns
+ * [fx0, fx1] with `clamp` (a run wholly outside gets two ends that
+ * cancel), relative to fx0. */
+static inline int32_t rast__ss_at(int32_t x, int32_t fx0, int32_t fx1, int clamp)
+{
+    return (clamp ? (x < fx0 ? fx0 : x > fx1 ? fx1 : x) : x) - fx0;
+}
+
+/* The runs of a non-zero row (rast__ss_row_ends), their ends clamped
+ * with `clamp`, and the edges stepped.  1 when two edges changed places. */
+RAST__HOT int rast__ss_nz(rast__edge *aet, int32_t n, int32_t *d, uint64_t *mark, int32_t kb,
+                              int32_t fx0, int32_t fx1, int clamp)
 {
     int32_t i = 0, w = 0, x0 = 0, last = INT32_MIN, swapped = 0;
     /* Pairs of edges of opposite directions, while they come: the winding
@@ -179,14 +187,16 @@ static inline int rast__ss_nz_in(rast__edge *aet, int32_t n, int32_t *d, uint64_
      * rows of most polygons are only such pairs); from the first pair
      * that is not, edge by edge, the winding number counted from 0. */
     for (; i + 1 < n && aet[i].dir + aet[i + 1].dir == 0; i += 2) {
-        rast__ss_pair(d, mark, kb, aet[i].x - fx0, aet[i + 1].x - fx0);
+        rast__ss_pair(d, mark, kb, rast__ss_at(aet[i].x, fx0, fx1, clamp),
+                      rast__ss_at(aet[i + 1].x, fx0, fx1, clamp));
         rast__edge_step(&aet[i]);
         rast__edge_step(&aet[i + 1]);
         swapped |= (aet[i].x < last) | (aet[i + 1].x < aet[i].x);
         last = aet[i + 1].x;
     }
     for (; i < n; i++) {
-        const int32_t x = aet[i].x;
+        /* (clamped, not yet relative to fx0: taken off at a run only) */
+        const int32_t x = rast__ss_at(aet[i].x, fx0, fx1, clamp) + fx0;
         if (w == 0) x0 = x;
         w += aet[i].dir;
         if (w == 0) rast__ss_pair(d, mark, kb, x0 - fx0, x - fx0);
@@ -197,60 +207,59 @@ static inline int rast__ss_nz_in(rast__edge *aet, int32_t n, int32_t *d, uint64_
     return swapped;
 }
 
+/* The runs of an even-odd row, between edges 2k and 2k + 1, as
+ * rast__ss_nz. */
+RAST__HOT int rast__ss_eo(rast__edge *aet, int32_t n, int32_t *d, uint64_t *mark, int32_t kb,
+                              int32_t fx0, int32_t fx1, int clamp)
+{
+    int32_t i, last = INT32_MIN, swapped = 0;
+    for (i = 0; i + 1 < n; i += 2) {
+        rast__ss_pair(d, mark, kb, rast__ss_at(aet[i].x, fx0, fx1, clamp),
+                      rast__ss_at(aet[i + 1].x, fx0, fx1, clamp));
+        rast__edge_step(&aet[i]);
+        rast__edge_step(&aet[i + 1]);
+        swapped |= (aet[i].x < last) | (aet[i + 1].x < aet[i].x);
+        last = aet[i + 1].x;
+    }
+    if (i < n) { /* an odd edge out bounds no run */
+        rast__edge_step(&aet[i]);
+        swapped |= aet[i].x < last;
+    }
+    return swapped;
+}
+
 /* Fine row y's runs, from its active edges in order, and the edges
  * stepped to the next row, in one pass (the walk's order hook, given no
  * run function): even-odd, runs between edges 2k and 2k + 1; non-zero,
  * from where the winding number leaves 0 to where it comes back.  The
  * row's numbers are held in locals.  Clamping each end to the clip clamps
- * the run (one wholly outside gets two ends that cancel); it is skipped
- * when every crossing of the polygon is known to lie within the clip's
- * columns (rast__ss_inside), as it mostly does. */
+ * the run; it is skipped when every crossing of the polygon is known to
+ * lie within the clip's columns (rast__ss_inside), as it mostly does.
+ * (Each case its own loop, its tests taken out of it, but in a build for
+ * size.) */
 static void rast__ss_row_ends(void *user, int32_t y, rast__edge *aet, int32_t n)
 {
     rast__ss *ss = (rast__ss *)user;
-    const int32_t kb = ss->kbits, fx0 = ss->fx0, fx1 = ss->fx1;
+    const int32_t kb = ss->kbits, fx0 = ss->fx0, fx1 = ss->fx1, clip = ss->clip;
     int32_t *d = ss->d;
     uint64_t *mark = ss->dense ? NULL : ss->mark;
-    int32_t i, w = 0, x0 = 0, last = INT32_MIN, swapped = 0;
+    int swapped;
     rast__ss_row(ss, y - ss->fy0);
     ss->ends += n;
-    if (ss->evenodd && !ss->clip) {
-        for (i = 0; i + 1 < n; i += 2) {
-            rast__ss_pair(d, mark, kb, aet[i].x - fx0, aet[i + 1].x - fx0);
-            rast__edge_step(&aet[i]);
-            rast__edge_step(&aet[i + 1]);
-            swapped |= (aet[i].x < last) | (aet[i + 1].x < aet[i].x);
-            last = aet[i + 1].x;
-        }
-        if (i < n) { /* an odd edge out bounds no run */
-            rast__edge_step(&aet[i]);
-            swapped |= aet[i].x < last;
-        }
-    } else if (!ss->clip) {
-        /* (the commonest case, with the marks' test taken out of the loop) */
-        swapped = mark ? rast__ss_nz_in(aet, n, d, mark, kb, fx0)
-                       : rast__ss_nz_in(aet, n, d, NULL, kb, fx0);
-    } else {
-        for (i = 0; i < n; i++) {
-            int32_t x = aet[i].x;
-            x = (x < fx0 ? fx0 : x > fx1 ? fx1 : x) - fx0;
-            rast__edge_step(&aet[i]);
-            swapped |= aet[i].x < last;
-            last = aet[i].x;
-            if (ss->evenodd) {
-                if (!(i & 1)) {
-                    x0 = x;
-                    continue;
-                }
-            } else {
-                const int32_t was = w;
-                w += aet[i].dir;
-                if (was == 0) x0 = x;
-                if (w != 0) continue;
-            }
-            rast__ss_pair(d, mark, kb, x0, x);
-        }
-    }
+#if defined(__OPTIMIZE_SIZE__)
+    swapped = ss->evenodd ? rast__ss_eo(aet, n, d, mark, kb, fx0, fx1, clip)
+                          : rast__ss_nz(aet, n, d, mark, kb, fx0, fx1, clip);
+#else
+    if (ss->evenodd)
+        swapped = clip ? rast__ss_eo(aet, n, d, mark, kb, fx0, fx1, 1)
+                       : rast__ss_eo(aet, n, d, mark, kb, fx0, fx1, 0);
+    else if (!clip) /* (the commonest case) */
+        swapped = mark ? rast__ss_nz(aet, n, d, mark, kb, fx0, fx1, 0)
+                       : rast__ss_nz(aet, n, d, NULL, kb, fx0, fx1, 0);
+    else
+        swapped = mark ? rast__ss_nz(aet, n, d, mark, kb, fx0, fx1, 1)
+                       : rast__ss_nz(aet, n, d, NULL, kb, fx0, fx1, 1);
+#endif
     if (swapped) rast__aet_sort(aet, n);
 }
 

@@ -632,6 +632,10 @@ typedef struct rast__ss_tri {
     int32_t flip;   /* 1: edge 1 is the left one (else edge 0, or both the
                        same: no run) */
     int32_t clamp;  /* 1: a run may reach outside the clip's columns */
+    int32_t lim;    /* output rows skipped whole (rast__cov_ss_tris) while
+                       they end at or before it: edge 0's end and the
+                       lower edge's start; INT32_MIN until both edges'
+                       growth over k rows is worked out (rast__ss_jump) */
 } rast__ss_tri;
 
 /* Edge k of triangle r (held in *ed) moved k rows on: one step of the
@@ -647,6 +651,8 @@ static inline int rast__ss_jump(rast__ss_tri *r, int k, rast__edge *ed, int32_t 
             r->stepk[k] = (int32_t)(r->drk[k] == -2 ? 0 : whole);
         }
         if (r->drk[k] == -2) return 0;
+        if ((r->drk[0] | r->drk[1]) >= 0)
+            r->lim = r->next && r->end[1] < r->end[0] ? r->end[1] : r->end[0];
     }
     e = ed->e - r->drk[k];
     ed->x += r->stepk[k] + (int32_t)(e < 0);
@@ -735,6 +741,7 @@ static void rast__ss_tri_setup(rast__ss_tri *r, rast__edge *low, const rast_poin
     rast__ss_set(r, 0, &ed);
     r->row = row[0];
     r->drk[0] = r->drk[1] = -1;
+    r->lim = INT32_MIN;
     r->next = row[0] < row[1] && row[1] < row[2];
     if (row[0] < row[1]) {
         rast__edge_start_tri(&ed, v[0], v[1], 1, row[0], row[1], g);
@@ -1120,6 +1127,39 @@ rast_status rast__cov_ss_tris(const rast_point *tris, uint32_t ntris, int32_t s,
             rast__ss_tri *r = &table[act[i]];
             rast__edge l, e;
             int32_t y = r->row, end, sw, low_in = 0;
+            if (overlap && y == top && top + K <= r->lim) {
+                /* the test below (straight across the K rows, runs inside
+                 * F) with the edges' k rows' growth known, on the fields
+                 * it needs only: most triangles of a pile are skipped so */
+                const int64_t e0 = r->e[0] - r->drk[0], e1 = r->e[1] - r->drk[1];
+                const int32_t x0 = r->x[0] + r->stepk[0] + (int32_t)(e0 < 0),
+                              x1 = r->x[1] + r->stepk[1] + (int32_t)(e1 < 0);
+                const int32_t p0 = r->x[0] < r->x[1] ? r->x[0] : r->x[1],
+                              p1 = r->x[0] < r->x[1] ? r->x[1] : r->x[0];
+                int32_t a = x0 < x1 ? x0 : x1, b = x0 < x1 ? x1 : x0;
+                a = a < p0 ? a : p0;
+                b = b > p1 ? b : p1;
+                a = a < fx0 ? fx0 : a;
+                b = b > fx1 ? fx1 : b;
+                if ((((int64_t)a - fa) | ((int64_t)fb - b)) >= 0) {
+                    y = top + K;
+                    if (y == r->end[0]) continue; /* done: dropped */
+                    r->row = y;
+                    r->e[0] = e0 + (r->q[0] & -(int64_t)(e0 < 0));
+                    r->x[0] = x0;
+                    if (r->next && y == r->end[1]) { /* the lower edge takes over */
+                        rast__ss_set(r, 1, &low[act[i]]);
+                        r->drk[1] = -1;
+                        r->lim = INT32_MIN;
+                        r->next = 0;
+                    } else {
+                        r->e[1] = e1 + (r->q[1] & -(int64_t)(e1 < 0));
+                        r->x[1] = x1;
+                    }
+                    act[m++] = act[i];
+                    continue;
+                }
+            }
             rast__ss_get(r, 0, &l);
             rast__ss_get(r, 1, &e);
             end = l.end < top + span ? l.end : top + span;
@@ -1217,6 +1257,7 @@ rast_status rast__cov_ss_tris(const rast_point *tris, uint32_t ntris, int32_t s,
             if (low_in) {
                 rast__ss_set(r, 1, &e);
                 r->drk[1] = -1;
+                r->lim = INT32_MIN;
                 r->next = 0;
             } else {
                 r->e[1] = e.e;

@@ -1036,6 +1036,58 @@ static void rast__ss_grow(uint64_t *bits, size_t wpr, int32_t K, int32_t fx0, in
     }
 }
 
+/* In a pile (rast__cov_ss_tris: an output row at a time, F = [fa, fb)
+ * the columns covered on all k rows so far), triangles act[i], act[i + 1],
+ * ... skipped while they can be on what the test needs only: straight
+ * across the K rows from `top` (r->lim), their edges' growth over K rows
+ * known, and their runs on the first row and the row after the last (so
+ * on all, the edges being straight) inside F; their edges moved K rows,
+ * each kept at act[(*m)++] unless it ends there.  Returns the index of
+ * the first that cannot be (n when none): its own loop, its numbers in
+ * registers, as most triangles of a pile are skipped so. */
+static int32_t rast__ss_skips(rast__ss_tri *table, const rast__edge *low, int32_t *act, int32_t i,
+                              int32_t n, int32_t *m, int32_t top, int32_t K, int32_t fa,
+                              int32_t fb, int32_t fx0, int32_t fx1)
+{
+    const int32_t y = top + K;
+    int32_t k = *m;
+    for (; i < n; i++) {
+        rast__ss_tri *r = &table[act[i]];
+        int64_t e0, e1;
+        int32_t x0, x1, a, b;
+        if (r->row != top || y > r->lim) break;
+        e0 = r->e[0] - r->drk[0];
+        e1 = r->e[1] - r->drk[1];
+        x0 = r->x[0] + r->stepk[0] + (int32_t)(e0 < 0);
+        x1 = r->x[1] + r->stepk[1] + (int32_t)(e1 < 0);
+        a = x0 < x1 ? x0 : x1;
+        b = x0 < x1 ? x1 : x0;
+        a = a < r->x[0] ? a : r->x[0];
+        a = a < r->x[1] ? a : r->x[1];
+        b = b > r->x[0] ? b : r->x[0];
+        b = b > r->x[1] ? b : r->x[1];
+        a = a < fx0 ? fx0 : a;
+        b = b > fx1 ? fx1 : b;
+        if ((((int64_t)a - fa) | ((int64_t)fb - b)) < 0) break;
+        if (y == r->end[0]) continue; /* done: dropped */
+        r->row = y;
+        r->e[0] = e0 + (r->q[0] & -(int64_t)(e0 < 0));
+        r->x[0] = x0;
+        if (r->next && y == r->end[1]) { /* the lower edge takes over */
+            rast__ss_set(r, 1, &low[act[i]]);
+            r->drk[1] = -1;
+            r->lim = INT32_MIN;
+            r->next = 0;
+        } else {
+            r->e[1] = e1 + (r->q[1] & -(int64_t)(e1 < 0));
+            r->x[1] = x1;
+        }
+        act[k++] = act[i];
+    }
+    *m = k;
+    return i;
+}
+
 rast_status rast__cov_ss_tris(const rast_point *tris, uint32_t ntris, int32_t s, int32_t kbits,
                               rast_sample sample, const rast__cov_out *o, rast__arena *arena)
 {
@@ -1124,42 +1176,15 @@ rast_status rast__cov_ss_tris(const rast_point *tris, uint32_t ntris, int32_t s,
         for (t = 0; t < K; t++) pa[t] = pb[t] = 0;
         fa = fb = 0;
         for (i = 0, m = 0; i < nact; i++) {
-            rast__ss_tri *r = &table[act[i]];
+            rast__ss_tri *r;
             rast__edge l, e;
-            int32_t y = r->row, end, sw, low_in = 0;
-            if (overlap && y == top && top + K <= r->lim) {
-                /* the test below (straight across the K rows, runs inside
-                 * F) with the edges' k rows' growth known, on the fields
-                 * it needs only: most triangles of a pile are skipped so */
-                const int64_t e0 = r->e[0] - r->drk[0], e1 = r->e[1] - r->drk[1];
-                const int32_t x0 = r->x[0] + r->stepk[0] + (int32_t)(e0 < 0),
-                              x1 = r->x[1] + r->stepk[1] + (int32_t)(e1 < 0);
-                const int32_t p0 = r->x[0] < r->x[1] ? r->x[0] : r->x[1],
-                              p1 = r->x[0] < r->x[1] ? r->x[1] : r->x[0];
-                int32_t a = x0 < x1 ? x0 : x1, b = x0 < x1 ? x1 : x0;
-                a = a < p0 ? a : p0;
-                b = b > p1 ? b : p1;
-                a = a < fx0 ? fx0 : a;
-                b = b > fx1 ? fx1 : b;
-                if ((((int64_t)a - fa) | ((int64_t)fb - b)) >= 0) {
-                    y = top + K;
-                    if (y == r->end[0]) continue; /* done: dropped */
-                    r->row = y;
-                    r->e[0] = e0 + (r->q[0] & -(int64_t)(e0 < 0));
-                    r->x[0] = x0;
-                    if (r->next && y == r->end[1]) { /* the lower edge takes over */
-                        rast__ss_set(r, 1, &low[act[i]]);
-                        r->drk[1] = -1;
-                        r->lim = INT32_MIN;
-                        r->next = 0;
-                    } else {
-                        r->e[1] = e1 + (r->q[1] & -(int64_t)(e1 < 0));
-                        r->x[1] = x1;
-                    }
-                    act[m++] = act[i];
-                    continue;
-                }
+            int32_t y, end, sw, low_in = 0;
+            if (overlap) { /* those that can be skipped at once, first */
+                i = rast__ss_skips(table, low, act, i, nact, &m, top, K, fa, fb, fx0, fx1);
+                if (i == nact) break;
             }
+            r = &table[act[i]];
+            y = r->row;
             rast__ss_get(r, 0, &l);
             rast__ss_get(r, 1, &e);
             end = l.end < top + span ? l.end : top + span;

@@ -926,10 +926,18 @@ RAST__HOT void rast__ss_bits_row_k(rast__ss *ss, int32_t kb, int32_t R, uint64_t
     row = rast__cov_row(o, y);
     for (k = k0; k <= k1; k++) {
         const int32_t base = k * ppw, n = w - base < ppw ? w - base : ppw;
-        uint64_t ev, od, any, all;
-        rast__ss_word(bits, wpr, k, kb, &ev, &od, &any, &all);
+        uint64_t ev, od, any = 0, all = ~(uint64_t)0;
+        /* (a word with no bit set, or all, told before any counting: most
+         * of a row of small triangles, or of a pile) */
+        for (j = 0; j < K; j++) {
+            const uint64_t x = bits[(size_t)j * wpr + (size_t)k];
+            any |= x;
+            all &= x;
+        }
         if (!any || !~all) { /* a constant run: joins the pending one, or starts */
             const uint64_t c = any ? level[K * K] : level[0];
+            if (any)
+                for (j = 0; j < K; j++) bits[(size_t)j * wpr + (size_t)k] = 0;
             if (c != v) {
                 rast__cov_fill(f, row, at, base, v);
                 at = base;
@@ -937,6 +945,7 @@ RAST__HOT void rast__ss_bits_row_k(rast__ss *ss, int32_t kb, int32_t R, uint64_t
             }
             continue;
         }
+        rast__ss_word(bits, wpr, k, kb, &ev, &od, &any, &all);
         rast__cov_fill(f, row, at, base, v);
         if (kb == 2 && f == RAST_COVERAGE_U8 && n == ppw) {
             rast__ss_u8x16(row + base, ev, od);

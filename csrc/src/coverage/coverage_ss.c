@@ -614,6 +614,11 @@ static int rast__ss_cancel(rast__ss *ss, const rast_point *pts, const uint32_t *
 #define RAST__SS_BAND 8
 #define RAST__SS_DIRECT 1
 #endif
+/* A pile's skips in a loop of their own (rast__ss_skips) and words of
+ * bits told empty or full before they are counted: not in a build for
+ * size (the walk's own test skips the same triangles, the count gives
+ * the same values). */
+#define RAST__SS_QUICK RAST__SS_DIRECT
 
 /* A triangle on the fine grid, what its walk reads on every output row
  * (the table of them is walked once per output row: the smaller, the
@@ -927,13 +932,17 @@ RAST__HOT void rast__ss_bits_row_k(rast__ss *ss, int32_t kb, int32_t R, uint64_t
     for (k = k0; k <= k1; k++) {
         const int32_t base = k * ppw, n = w - base < ppw ? w - base : ppw;
         uint64_t ev, od, any = 0, all = ~(uint64_t)0;
+#if RAST__SS_QUICK
         /* (a word with no bit set, or all, told before any counting: most
-         * of a row of small triangles, or of a pile) */
+         * of a row of a pile) */
         for (j = 0; j < K; j++) {
             const uint64_t x = bits[(size_t)j * wpr + (size_t)k];
             any |= x;
             all &= x;
         }
+#else
+        rast__ss_word(bits, wpr, k, kb, &ev, &od, &any, &all);
+#endif
         if (!any || !~all) { /* a constant run: joins the pending one, or starts */
             const uint64_t c = any ? level[K * K] : level[0];
             if (any)
@@ -945,7 +954,9 @@ RAST__HOT void rast__ss_bits_row_k(rast__ss *ss, int32_t kb, int32_t R, uint64_t
             }
             continue;
         }
+#if RAST__SS_QUICK
         rast__ss_word(bits, wpr, k, kb, &ev, &od, &any, &all);
+#endif
         rast__cov_fill(f, row, at, base, v);
         if (kb == 2 && f == RAST_COVERAGE_U8 && n == ppw) {
             rast__ss_u8x16(row + base, ev, od);
@@ -1045,6 +1056,7 @@ static void rast__ss_grow(uint64_t *bits, size_t wpr, int32_t K, int32_t fx0, in
     }
 }
 
+#if RAST__SS_QUICK
 /* In a pile (rast__cov_ss_tris: an output row at a time, F = [fa, fb)
  * the columns covered on all k rows so far), triangles act[i], act[i + 1],
  * ... skipped while they can be on what the test needs only: straight
@@ -1096,6 +1108,7 @@ static int32_t rast__ss_skips(rast__ss_tri *table, const rast__edge *low, int32_
     *m = k;
     return i;
 }
+#endif
 
 rast_status rast__cov_ss_tris(const rast_point *tris, uint32_t ntris, int32_t s, int32_t kbits,
                               rast_sample sample, const rast__cov_out *o, rast__arena *arena)
@@ -1188,10 +1201,12 @@ rast_status rast__cov_ss_tris(const rast_point *tris, uint32_t ntris, int32_t s,
             rast__ss_tri *r;
             rast__edge l, e;
             int32_t y, end, sw, low_in = 0;
+#if RAST__SS_QUICK
             if (overlap) { /* those that can be skipped at once, first */
                 i = rast__ss_skips(table, low, act, i, nact, &m, top, K, fa, fb, fx0, fx1);
                 if (i == nact) break;
             }
+#endif
             r = &table[act[i]];
             y = r->row;
             rast__ss_get(r, 0, &l);

@@ -55,3 +55,32 @@ def test_dense_rows_change_mode_mid_canvas():
         out = rastrum.triangles_coverage(tris, (h, w), method=method)
         want = oc.coverage_ss(list(tris), (h, w), int(method[2:]), triangles=True)
         S_.assert_same(out.astype(np.int64), want, method)
+
+
+def _pile(seed, h, w, n, nlong):
+    # n triangles piled in a band of rows (hundreds active on each: the
+    # walk skips those inside the columns covered by the rest, their edges
+    # moved k rows at once) and nlong ones that start in the pile and
+    # leave it (walked again below it, from where the skips left them)
+    rnd = np.random.default_rng(seed)
+    y0 = rnd.uniform(-1, h / 3)
+    y1 = y0 + rnd.uniform(3, h / 2)
+    pile = rnd.uniform([-3, y0], [w + 3, y1], (n, 3, 2))
+    pile[:, 0, 1], pile[:, 1, 1] = y0 - 1, y1 + 1  # each across the whole band
+    long_ = np.concatenate([rnd.uniform([-2, y0], [w + 2, y1], (nlong, 1, 2)),
+                            rnd.uniform([-2, y0], [w + 2, h + 2], (nlong, 2, 2))], 1)
+    tris = np.concatenate([pile, long_])
+    flip = rnd.random(len(tris)) < 0.5
+    tris[flip] = tris[flip][:, ::-1]  # either turn
+    rnd.shuffle(tris)
+    return tris
+
+
+@settings(max_examples=S_.examples(8), deadline=None)
+@given(st.integers(12, 36), st.integers(4, 20), st.integers(260, 420), st.integers(1, 12),
+       st.integers(0, 2 ** 32 - 1), st.sampled_from(["ss2", "ss4", "ss8"]))
+def test_piles_then_triangles_leaving_them_equal_oracle(h, w, n, nlong, seed, method):
+    tris = _pile(seed, h, w, n, nlong)
+    out = rastrum.triangles_coverage(tris, (h, w), method=method)
+    want = oc.coverage_ss(list(tris), (h, w), int(method[2:]), triangles=True)
+    S_.assert_same(out.astype(np.int64), want, tris.tolist())

@@ -168,10 +168,18 @@ static inline void rast__ss_pair(int32_t *d, uint64_t *mark, int32_t kb, int32_t
     }
 }
 
-/* The runs of a non-zero row no end of which needs clamping, and the
- * edges stepped: as rast__ss_row_ends.  1 when two edges changed places. */
-static inline int rast__ss_nz_in(rast__edge *aet, int32_t n, int32_t *d, uint64_t *mark,
-                                 int32_t kb, int32_t fx0)
+/* Column x of a fine row as a run's end: clamped to the clip's columns
+ * [fx0, fx1] with `clamp` (a run wholly outside gets two ends that
+ * cancel), relative to fx0. */
+static inline int32_t rast__ss_at(int32_t x, int32_t fx0, int32_t fx1, int clamp)
+{
+    return (clamp ? (x < fx0 ? fx0 : x > fx1 ? fx1 : x) : x) - fx0;
+}
+
+/* The runs of a non-zero row (rast__ss_row_ends), their ends clamped
+ * with `clamp`, and the edges stepped.  1 when two edges changed places. */
+RAST__HOT int rast__ss_nz(rast__edge *aet, int32_t n, int32_t *d, uint64_t *mark, int32_t kb,
+                              int32_t fx0, int32_t fx1, int clamp)
 {
     int32_t i = 0, w = 0, x0 = 0, last = INT32_MIN, swapped = 0;
     /* Pairs of edges of opposite directions, while they come: the winding
@@ -179,14 +187,16 @@ static inline int rast__ss_nz_in(rast__edge *aet, int32_t n, int32_t *d, uint64_
      * rows of most polygons are only such pairs); from the first pair
      * that is not, edge by edge, the winding number counted from 0. */
     for (; i + 1 < n && aet[i].dir + aet[i + 1].dir == 0; i += 2) {
-        rast__ss_pair(d, mark, kb, aet[i].x - fx0, aet[i + 1].x - fx0);
+        rast__ss_pair(d, mark, kb, rast__ss_at(aet[i].x, fx0, fx1, clamp),
+                      rast__ss_at(aet[i + 1].x, fx0, fx1, clamp));
         rast__edge_step(&aet[i]);
         rast__edge_step(&aet[i + 1]);
         swapped |= (aet[i].x < last) | (aet[i + 1].x < aet[i].x);
         last = aet[i + 1].x;
     }
     for (; i < n; i++) {
-        const int32_t x = aet[i].x;
+        /* (clamped, not yet relative to fx0: taken off at a run only) */
+        const int32_t x = rast__ss_at(aet[i].x, fx0, fx1, clamp) + fx0;
         if (w == 0) x0 = x;
         w += aet[i].dir;
         if (w == 0) rast__ss_pair(d, mark, kb, x0 - fx0, x - fx0);
@@ -197,60 +207,59 @@ static inline int rast__ss_nz_in(rast__edge *aet, int32_t n, int32_t *d, uint64_
     return swapped;
 }
 
+/* The runs of an even-odd row, between edges 2k and 2k + 1, as
+ * rast__ss_nz. */
+RAST__HOT int rast__ss_eo(rast__edge *aet, int32_t n, int32_t *d, uint64_t *mark, int32_t kb,
+                              int32_t fx0, int32_t fx1, int clamp)
+{
+    int32_t i, last = INT32_MIN, swapped = 0;
+    for (i = 0; i + 1 < n; i += 2) {
+        rast__ss_pair(d, mark, kb, rast__ss_at(aet[i].x, fx0, fx1, clamp),
+                      rast__ss_at(aet[i + 1].x, fx0, fx1, clamp));
+        rast__edge_step(&aet[i]);
+        rast__edge_step(&aet[i + 1]);
+        swapped |= (aet[i].x < last) | (aet[i + 1].x < aet[i].x);
+        last = aet[i + 1].x;
+    }
+    if (i < n) { /* an odd edge out bounds no run */
+        rast__edge_step(&aet[i]);
+        swapped |= aet[i].x < last;
+    }
+    return swapped;
+}
+
 /* Fine row y's runs, from its active edges in order, and the edges
  * stepped to the next row, in one pass (the walk's order hook, given no
  * run function): even-odd, runs between edges 2k and 2k + 1; non-zero,
  * from where the winding number leaves 0 to where it comes back.  The
  * row's numbers are held in locals.  Clamping each end to the clip clamps
- * the run (one wholly outside gets two ends that cancel); it is skipped
- * when every crossing of the polygon is known to lie within the clip's
- * columns (rast__ss_inside), as it mostly does. */
+ * the run; it is skipped when every crossing of the polygon is known to
+ * lie within the clip's columns (rast__ss_inside), as it mostly does.
+ * (Each case its own loop, its tests taken out of it, but in a build for
+ * size.) */
 static void rast__ss_row_ends(void *user, int32_t y, rast__edge *aet, int32_t n)
 {
     rast__ss *ss = (rast__ss *)user;
-    const int32_t kb = ss->kbits, fx0 = ss->fx0, fx1 = ss->fx1;
+    const int32_t kb = ss->kbits, fx0 = ss->fx0, fx1 = ss->fx1, clip = ss->clip;
     int32_t *d = ss->d;
     uint64_t *mark = ss->dense ? NULL : ss->mark;
-    int32_t i, w = 0, x0 = 0, last = INT32_MIN, swapped = 0;
+    int swapped;
     rast__ss_row(ss, y - ss->fy0);
     ss->ends += n;
-    if (ss->evenodd && !ss->clip) {
-        for (i = 0; i + 1 < n; i += 2) {
-            rast__ss_pair(d, mark, kb, aet[i].x - fx0, aet[i + 1].x - fx0);
-            rast__edge_step(&aet[i]);
-            rast__edge_step(&aet[i + 1]);
-            swapped |= (aet[i].x < last) | (aet[i + 1].x < aet[i].x);
-            last = aet[i + 1].x;
-        }
-        if (i < n) { /* an odd edge out bounds no run */
-            rast__edge_step(&aet[i]);
-            swapped |= aet[i].x < last;
-        }
-    } else if (!ss->clip) {
-        /* (the commonest case, with the marks' test taken out of the loop) */
-        swapped = mark ? rast__ss_nz_in(aet, n, d, mark, kb, fx0)
-                       : rast__ss_nz_in(aet, n, d, NULL, kb, fx0);
-    } else {
-        for (i = 0; i < n; i++) {
-            int32_t x = aet[i].x;
-            x = (x < fx0 ? fx0 : x > fx1 ? fx1 : x) - fx0;
-            rast__edge_step(&aet[i]);
-            swapped |= aet[i].x < last;
-            last = aet[i].x;
-            if (ss->evenodd) {
-                if (!(i & 1)) {
-                    x0 = x;
-                    continue;
-                }
-            } else {
-                const int32_t was = w;
-                w += aet[i].dir;
-                if (was == 0) x0 = x;
-                if (w != 0) continue;
-            }
-            rast__ss_pair(d, mark, kb, x0, x);
-        }
-    }
+#if defined(__OPTIMIZE_SIZE__)
+    swapped = ss->evenodd ? rast__ss_eo(aet, n, d, mark, kb, fx0, fx1, clip)
+                          : rast__ss_nz(aet, n, d, mark, kb, fx0, fx1, clip);
+#else
+    if (ss->evenodd)
+        swapped = clip ? rast__ss_eo(aet, n, d, mark, kb, fx0, fx1, 1)
+                       : rast__ss_eo(aet, n, d, mark, kb, fx0, fx1, 0);
+    else if (!clip) /* (the commonest case) */
+        swapped = mark ? rast__ss_nz(aet, n, d, mark, kb, fx0, fx1, 0)
+                       : rast__ss_nz(aet, n, d, NULL, kb, fx0, fx1, 0);
+    else
+        swapped = mark ? rast__ss_nz(aet, n, d, mark, kb, fx0, fx1, 1)
+                       : rast__ss_nz(aet, n, d, NULL, kb, fx0, fx1, 1);
+#endif
     if (swapped) rast__aet_sort(aet, n);
 }
 
@@ -261,6 +270,16 @@ static void rast__ss_row_ends(void *user, int32_t y, rast__edge *aet, int32_t n)
  * need no marks (a mark costs about as much as a run's end; with fewer
  * ends, summing every column costs more than the marks save).  Only for
  * uint8_t rows, which that flush writes; the choice changes no value. */
+/* The test itself, from the edges' heights summed (sum) and the least
+ * and greatest y of their ends (lo, hi). */
+static int rast__ss_dense_of(uint64_t sum, int32_t lo, int32_t hi, const rast__ss *ss)
+{
+    /* sum / (hi - lo) k 4 >= w (both sides below 2^63) */
+    return ss->o->format == RAST_COVERAGE_U8 && hi > lo &&
+           sum / (uint64_t)((int64_t)hi - lo) * ((uint64_t)4 << ss->kbits) >=
+               (uint64_t)(ss->fx1 - ss->fx0) >> ss->kbits;
+}
+
 static int rast__ss_dense(const rast_polygon *poly, const rast__ss *ss)
 {
     const rast_point *p = poly->points;
@@ -278,9 +297,7 @@ static int rast__ss_dense(const rast_polygon *poly, const rast__ss *ss)
             if (ya > hi) hi = ya;
         }
     }
-    /* sum / (hi - lo) k 4 >= w (both sides below 2^63) */
-    return hi > lo && sum / (uint64_t)((int64_t)hi - lo) * ((uint64_t)4 << ss->kbits) >=
-                          (uint64_t)(ss->fx1 - ss->fx0) >> ss->kbits;
+    return rast__ss_dense_of(sum, lo, hi, ss);
 }
 
 /* 1 when every crossing of the polygon (points on the fine grid, S
@@ -389,6 +406,10 @@ static int rast__ss_narrow(const rast_point *pts, uint32_t npoints, int32_t s, i
     return sub->clip.x0 < sub->clip.x1;
 }
 
+static int rast__ss_cancel(rast__ss *ss, const rast_point *pts, const uint32_t *ring_sizes,
+                           uint32_t npoints, const rast__grid *g, const rast_rect *fine,
+                           rast__arena *arena);
+
 rast_status rast__cov_ss(const rast_polygon *poly, uint32_t npoints, int32_t s,
                          int32_t kbits, rast_fill_rule rule, rast_sample sample,
                          const rast__cov_out *out, rast__arena *arena)
@@ -405,6 +426,13 @@ rast_status rast__cov_ss(const rast_polygon *poly, uint32_t npoints, int32_t s,
     if (st != RAST_OK) return st;
     ss.evenodd = rule == RAST_RULE_EVENODD;
     ss.clip = !rast__ss_inside(poly->points, npoints, s, &ss);
+    /* many small rings (a mesh's cells, at most 8 vertices a ring on
+     * average): their shared edges may cancel (rast__ss_cancel) */
+    if (npoints <= 8 * (uint64_t)poly->nrings &&
+        rast__ss_cancel(&ss, poly->points, poly->ring_sizes, npoints, &g, &fine, arena)) {
+        rast__ss_finish(&ss);
+        return RAST_OK;
+    }
     ss.dense = rast__ss_dense(poly, &ss);
     st = rast__aet_walk(poly, npoints, &g, rule, &fine, arena, NULL, rast__ss_row_ends, &ss,
                         NULL);
@@ -445,22 +473,30 @@ static inline uint32_t rast__ss_seg_hash(const rast__ss_seg *p, int32_t bits)
     return (uint32_t)(h >> (64 - bits));
 }
 
-/* The batch's edges less those that cancel, walked as a polygon into the
- * counts when at most half of them are left; returns 1 then, else 0 with
- * the arena as it was.  (Its memory, the segments, the table and the
- * AET's for at most 3 ntris / 2 edges, is less than the AET's for 3 ntris
- * edges that the scratch holds.) */
-static int rast__ss_cancel(rast__ss *ss, const rast_point *tris, uint32_t ntris,
-                           const rast__grid *g, const rast_rect *fine, rast__arena *arena)
+/* The edges of `pts` (rings of ring_sizes[0 .. nrings), or, with
+ * ring_sizes NULL, triangles) less those that cancel, walked into
+ * the counts (the rule ss->evenodd's) when at most half of them are left;
+ * returns 1 then, else 0 with the arena as it was.  The winding number
+ * is the sum of the edges' parts, so the cancelled ones change it
+ * nowhere: non-zero keeps |n| copies of a segment, even-odd n mod 2 (the
+ * parity).  (Its memory, the segments, the table and the AET's for at
+ * most npoints / 2 edges, is less than the AET's for npoints edges that
+ * the scratch holds.) */
+static int rast__ss_cancel(rast__ss *ss, const rast_point *pts, const uint32_t *ring_sizes,
+                           uint32_t npoints, const rast__grid *g, const rast_rect *fine,
+                           rast__arena *arena)
 {
     const rast__arena keep = *arena;
+    const int32_t N = (int32_t)npoints;
     rast__ss_seg *seg;
     rast__edge *edges, *aet;
     int32_t *bucket, *slot, i, k, m = 0, left = 0, nedges = 0, row0, row1, tbits = 1,
-                                  miny = INT32_MAX, maxy = INT32_MIN;
+                                  miny = INT32_MAX, maxy = INT32_MIN, rs = 0, re = 0;
+    uint32_t ring = 0;
+    uint64_t sum = 0;
     int64_t r;
-    if (ntris == 0 || ntris > (uint32_t)INT32_MAX / 3) return 0;
-    seg = (rast__ss_seg *)rast__take(arena, (size_t)ntris * 3 * sizeof *seg);
+    if (npoints == 0 || npoints > (uint32_t)INT32_MAX / 2) return 0;
+    seg = (rast__ss_seg *)rast__take(arena, (size_t)npoints * sizeof *seg);
     if (!seg) {
         *arena = keep;
         return 0;
@@ -470,17 +506,24 @@ static int rast__ss_cancel(rast__ss *ss, const rast_point *tris, uint32_t ntris,
      * edges that stay (the first's |n| summed; a horizontal edge crosses
      * no row and counts none), kept as it goes: a batch that is not a
      * mesh is given up before the pass that gathers what stays */
-    while (((int64_t)1 << tbits) < (int64_t)ntris * 6) tbits++;
+    while (((int64_t)1 << tbits) < (int64_t)N * 2) tbits++;
     slot = (int32_t *)rast__take(arena, ((size_t)1 << tbits) * sizeof *slot);
     if (!slot) {
         *arena = keep;
         return 0;
     }
     memset(slot, 0xFF, ((size_t)1 << tbits) * sizeof *slot); /* -1: free */
-    for (i = 0; i < (int32_t)ntris * 3; i++) {
-        const rast_point p = tris[i], q = tris[i % 3 == 2 ? i - 2 : i + 1];
-        const int fwd = p.y < q.y || (p.y == q.y && p.x < q.x);
+    for (i = 0; i < N; i++) {
+        rast_point p, q;
+        int fwd;
         uint32_t h;
+        while (i == re) { /* the next ring (empty ones skipped) */
+            rs = re;
+            re += ring_sizes ? (int32_t)ring_sizes[ring++] : 3;
+        }
+        p = pts[i];
+        q = pts[i + 1 == re ? rs : i + 1];
+        fwd = p.y < q.y || (p.y == q.y && p.x < q.x);
         seg[i].a = fwd ? p : q;
         seg[i].b = fwd ? q : p;
         seg[i].n = fwd ? 1 : -1;
@@ -492,7 +535,7 @@ static int rast__ss_cancel(rast__ss *ss, const rast_point *tris, uint32_t ntris,
             left += p.y != q.y;
             /* each edge still to come takes at most one off `left`: when
              * even that leaves more than half, the test below fails now */
-            if (((int64_t)left - ((int64_t)ntris * 3 - 1 - i)) * 2 > (int64_t)ntris * 3) {
+            if (((int64_t)left - ((int64_t)N - 1 - i)) * 2 > (int64_t)N) {
                 *arena = keep;
                 return 0;
             }
@@ -503,27 +546,33 @@ static int rast__ss_cancel(rast__ss *ss, const rast_point *tris, uint32_t ntris,
             if (p.y != q.y) left += (now < 0 ? -now : now) - (was < 0 ? -was : was);
         }
     }
-    if ((int64_t)left * 2 > (int64_t)ntris * 3) {
+    if ((int64_t)left * 2 > (int64_t)N) {
         *arena = keep;
         return 0;
     }
-    /* those at 0 gone */
-    for (i = 0; i < (int32_t)ntris * 3; i++) {
-        if (seg[i].n != 0 && seg[i].a.y != seg[i].b.y) {
+    /* those at 0 gone (even-odd: those at an even count), the rest's
+     * copies in n's sign */
+    for (i = 0; i < N; i++) {
+        int32_t n = seg[i].n;
+        if (ss->evenodd) n = n & 1 ? (n < 0 ? -1 : 1) : 0;
+        if (n != 0 && seg[i].a.y != seg[i].b.y) {
             seg[m] = seg[i];
+            seg[m].n = n;
             miny = seg[m].a.y < miny ? seg[m].a.y : miny;
             maxy = seg[m].b.y > maxy ? seg[m].b.y : maxy;
+            sum += (uint64_t)((int64_t)seg[m].b.y - seg[m].a.y) * (uint64_t)(n < 0 ? -n : n);
             m++;
         }
     }
-    if (left == 0) return 1;
+    if (m == 0) return 1;
+    ss->dense = rast__ss_dense_of(sum, miny, maxy, ss);
     r = rast__row_at_or_after(2 * (int64_t)miny, g);
     row0 = r > fine->y0 ? (int32_t)r : fine->y0;
     r = rast__row_at_or_after(2 * (int64_t)maxy, g);
     row1 = r < fine->y1 ? (int32_t)r : fine->y1;
     if (row0 >= row1) return 1;
     if (!rast__aet_tables(arena, (uint32_t)left, row0, row1, &edges, &aet, &bucket)) {
-        *arena = keep; /* (it fits: the triangles' own walk then says so) */
+        *arena = keep; /* (it fits: the walk of all edges then says so) */
         return 0;
     }
     for (i = 0; i < m; i++)
@@ -535,8 +584,9 @@ static int rast__ss_cancel(rast__ss *ss, const rast_point *tris, uint32_t ntris,
                 bucket[ed->row - row0 + 1]++;
             }
         }
-    rast__aet_sweep(edges, aet, bucket, nedges, row0, row1, RAST_RULE_NONZERO, NULL,
-                    rast__ss_row_ends, ss);
+    rast__aet_sweep(edges, aet, bucket, nedges, row0, row1,
+                    ss->evenodd ? RAST_RULE_EVENODD : RAST_RULE_NONZERO, NULL, rast__ss_row_ends,
+                    ss);
     return 1;
 }
 
@@ -564,6 +614,11 @@ static int rast__ss_cancel(rast__ss *ss, const rast_point *tris, uint32_t ntris,
 #define RAST__SS_BAND 8
 #define RAST__SS_DIRECT 1
 #endif
+/* A pile's skips in a loop of their own (rast__ss_skips) and words of
+ * bits told empty or full before they are counted: not in a build for
+ * size (the walk's own test skips the same triangles, the count gives
+ * the same values). */
+#define RAST__SS_QUICK RAST__SS_DIRECT
 
 /* A triangle on the fine grid, what its walk reads on every output row
  * (the table of them is walked once per output row: the smaller, the
@@ -582,6 +637,10 @@ typedef struct rast__ss_tri {
     int32_t flip;   /* 1: edge 1 is the left one (else edge 0, or both the
                        same: no run) */
     int32_t clamp;  /* 1: a run may reach outside the clip's columns */
+    int32_t lim;    /* output rows skipped whole (rast__cov_ss_tris) while
+                       they end at or before it: edge 0's end and the
+                       lower edge's start; INT32_MIN until both edges'
+                       growth over k rows is worked out (rast__ss_jump) */
 } rast__ss_tri;
 
 /* Edge k of triangle r (held in *ed) moved k rows on: one step of the
@@ -597,6 +656,8 @@ static inline int rast__ss_jump(rast__ss_tri *r, int k, rast__edge *ed, int32_t 
             r->stepk[k] = (int32_t)(r->drk[k] == -2 ? 0 : whole);
         }
         if (r->drk[k] == -2) return 0;
+        if ((r->drk[0] | r->drk[1]) >= 0)
+            r->lim = r->next && r->end[1] < r->end[0] ? r->end[1] : r->end[0];
     }
     e = ed->e - r->drk[k];
     ed->x += r->stepk[k] + (int32_t)(e < 0);
@@ -685,6 +746,7 @@ static void rast__ss_tri_setup(rast__ss_tri *r, rast__edge *low, const rast_poin
     rast__ss_set(r, 0, &ed);
     r->row = row[0];
     r->drk[0] = r->drk[1] = -1;
+    r->lim = INT32_MIN;
     r->next = row[0] < row[1] && row[1] < row[2];
     if (row[0] < row[1]) {
         rast__edge_start_tri(&ed, v[0], v[1], 1, row[0], row[1], g);
@@ -869,10 +931,22 @@ RAST__HOT void rast__ss_bits_row_k(rast__ss *ss, int32_t kb, int32_t R, uint64_t
     row = rast__cov_row(o, y);
     for (k = k0; k <= k1; k++) {
         const int32_t base = k * ppw, n = w - base < ppw ? w - base : ppw;
-        uint64_t ev, od, any, all;
+        uint64_t ev, od, any = 0, all = ~(uint64_t)0;
+#if RAST__SS_QUICK
+        /* (a word with no bit set, or all, told before any counting: most
+         * of a row of a pile) */
+        for (j = 0; j < K; j++) {
+            const uint64_t x = bits[(size_t)j * wpr + (size_t)k];
+            any |= x;
+            all &= x;
+        }
+#else
         rast__ss_word(bits, wpr, k, kb, &ev, &od, &any, &all);
+#endif
         if (!any || !~all) { /* a constant run: joins the pending one, or starts */
             const uint64_t c = any ? level[K * K] : level[0];
+            if (any)
+                for (j = 0; j < K; j++) bits[(size_t)j * wpr + (size_t)k] = 0;
             if (c != v) {
                 rast__cov_fill(f, row, at, base, v);
                 at = base;
@@ -880,6 +954,9 @@ RAST__HOT void rast__ss_bits_row_k(rast__ss *ss, int32_t kb, int32_t R, uint64_t
             }
             continue;
         }
+#if RAST__SS_QUICK
+        rast__ss_word(bits, wpr, k, kb, &ev, &od, &any, &all);
+#endif
         rast__cov_fill(f, row, at, base, v);
         if (kb == 2 && f == RAST_COVERAGE_U8 && n == ppw) {
             rast__ss_u8x16(row + base, ev, od);
@@ -979,6 +1056,60 @@ static void rast__ss_grow(uint64_t *bits, size_t wpr, int32_t K, int32_t fx0, in
     }
 }
 
+#if RAST__SS_QUICK
+/* In a pile (rast__cov_ss_tris: an output row at a time, F = [fa, fb)
+ * the columns covered on all k rows so far), triangles act[i], act[i + 1],
+ * ... skipped while they can be on what the test needs only: straight
+ * across the K rows from `top` (r->lim), their edges' growth over K rows
+ * known, and their runs on the first row and the row after the last (so
+ * on all, the edges being straight) inside F; their edges moved K rows,
+ * each kept at act[(*m)++] unless it ends there.  Returns the index of
+ * the first that cannot be (n when none): its own loop, its numbers in
+ * registers, as most triangles of a pile are skipped so. */
+static int32_t rast__ss_skips(rast__ss_tri *table, const rast__edge *low, int32_t *act, int32_t i,
+                              int32_t n, int32_t *m, int32_t top, int32_t K, int32_t fa,
+                              int32_t fb, int32_t fx0, int32_t fx1)
+{
+    const int32_t y = top + K;
+    int32_t k = *m;
+    for (; i < n; i++) {
+        rast__ss_tri *r = &table[act[i]];
+        int64_t e0, e1;
+        int32_t x0, x1, a, b;
+        if (r->row != top || y > r->lim) break;
+        e0 = r->e[0] - r->drk[0];
+        e1 = r->e[1] - r->drk[1];
+        x0 = r->x[0] + r->stepk[0] + (int32_t)(e0 < 0);
+        x1 = r->x[1] + r->stepk[1] + (int32_t)(e1 < 0);
+        a = x0 < x1 ? x0 : x1;
+        b = x0 < x1 ? x1 : x0;
+        a = a < r->x[0] ? a : r->x[0];
+        a = a < r->x[1] ? a : r->x[1];
+        b = b > r->x[0] ? b : r->x[0];
+        b = b > r->x[1] ? b : r->x[1];
+        a = a < fx0 ? fx0 : a;
+        b = b > fx1 ? fx1 : b;
+        if ((((int64_t)a - fa) | ((int64_t)fb - b)) < 0) break;
+        if (y == r->end[0]) continue; /* done: dropped */
+        r->row = y;
+        r->e[0] = e0 + (r->q[0] & -(int64_t)(e0 < 0));
+        r->x[0] = x0;
+        if (r->next && y == r->end[1]) { /* the lower edge takes over */
+            rast__ss_set(r, 1, &low[act[i]]);
+            r->drk[1] = -1;
+            r->lim = INT32_MIN;
+            r->next = 0;
+        } else {
+            r->e[1] = e1 + (r->q[1] & -(int64_t)(e1 < 0));
+            r->x[1] = x1;
+        }
+        act[k++] = act[i];
+    }
+    *m = k;
+    return i;
+}
+#endif
+
 rast_status rast__cov_ss_tris(const rast_point *tris, uint32_t ntris, int32_t s, int32_t kbits,
                               rast_sample sample, const rast__cov_out *o, rast__arena *arena)
 {
@@ -996,7 +1127,8 @@ rast_status rast__cov_ss_tris(const rast_point *tris, uint32_t ntris, int32_t s,
     rast_status st = rast__grid_init(&g, s, sample, RAST_ROUND_EXACT, RAST_BOUNDARY_EXACT);
     if (st == RAST_OK) st = rast__ss_begin(&ss, kbits, o, arena, &fine);
     if (st != RAST_OK) return st;
-    if (rast__ss_cancel(&ss, tris, ntris, &g, &fine, arena)) {
+    if (ntris <= (uint32_t)INT32_MAX / 6 &&
+        rast__ss_cancel(&ss, tris, NULL, ntris * 3, &g, &fine, arena)) {
         rast__ss_finish(&ss);
         return RAST_OK;
     }
@@ -1066,9 +1198,17 @@ rast_status rast__cov_ss_tris(const rast_point *tris, uint32_t ntris, int32_t s,
         for (t = 0; t < K; t++) pa[t] = pb[t] = 0;
         fa = fb = 0;
         for (i = 0, m = 0; i < nact; i++) {
-            rast__ss_tri *r = &table[act[i]];
+            rast__ss_tri *r;
             rast__edge l, e;
-            int32_t y = r->row, end, sw, low_in = 0;
+            int32_t y, end, sw, low_in = 0;
+#if RAST__SS_QUICK
+            if (overlap) { /* those that can be skipped at once, first */
+                i = rast__ss_skips(table, low, act, i, nact, &m, top, K, fa, fb, fx0, fx1);
+                if (i == nact) break;
+            }
+#endif
+            r = &table[act[i]];
+            y = r->row;
             rast__ss_get(r, 0, &l);
             rast__ss_get(r, 1, &e);
             end = l.end < top + span ? l.end : top + span;
@@ -1166,6 +1306,7 @@ rast_status rast__cov_ss_tris(const rast_point *tris, uint32_t ntris, int32_t s,
             if (low_in) {
                 rast__ss_set(r, 1, &e);
                 r->drk[1] = -1;
+                r->lim = INT32_MIN;
                 r->next = 0;
             } else {
                 r->e[1] = e.e;

@@ -254,12 +254,6 @@ static void st_left_flush(st_out *o, int own_ring)
 }
 
 /* ---- arithmetic ----------------------------------------------------------- */
-static uint32_t st_isqrt_floor(uint64_t v)
-{
-    uint32_t c = rast__isqrt_ceil(v);
-    return (uint64_t)c * c > v ? c - 1 : c;
-}
-
 /* round(w |a| / (2 sqrt(l2))) with a's sign (the file's comment). */
 static int64_t st_off_coord(int64_t a, uint64_t l2, int64_t w)
 {
@@ -267,7 +261,7 @@ static int64_t st_off_coord(int64_t a, uint64_t l2, int64_t w)
     uint64_t mag = a < 0 ? (uint64_t)(-a) : (uint64_t)a;
     rast__i128 num = rast__i128_mul(w * w, (int64_t)(mag * mag));
     rast__wide_floordiv(num, (int64_t)l2, &q, &r);
-    mag = (st_isqrt_floor((uint64_t)q) + 1) >> 1;
+    mag = (rast__isqrt_floor((uint64_t)q) + 1) >> 1;
     return a < 0 ? -(int64_t)mag : (int64_t)mag;
 }
 
@@ -414,6 +408,21 @@ static uint32_t st_after(const st_ctx *c, st_vec s)
     return g;
 }
 
+/* Can an arc about v (at most the circle's 4m points) skip st_emit's
+ * checks (and walk the first quarter's points kept in the state)?  Its points are within the range (each coordinate of the
+ * circle's points is a rounding of at most h, so at most round(h) =
+ * floor((w + 1) / 2) from v's), fewer than RAST_MAX_POINTS and the room
+ * (stored: np + 4m <= top) make, and no error is pending. */
+static int st_arc_room(const st_ctx *c, st_vec v)
+{
+    const st_out *o = &c->out;
+    int64_t r = (c->w + 1) / 2, n4 = 4 * (int64_t)c->m;
+    if (!c->cached || o->err != RAST_OK || o->np + (uint64_t)n4 > RAST_MAX_POINTS) return 0;
+    if (o->pts && o->np + (uint64_t)n4 > o->top) return 0;
+    return v.x - r >= -RAST_COORD_MAX && v.x + r <= RAST_COORD_MAX && v.y - r >= -RAST_COORD_MAX &&
+           v.y + r <= RAST_COORD_MAX;
+}
+
 /* The circle's points strictly between s and e counter-clockwise (the
  * sweep s -> e at most a half turn, or past it by a rounding's angle),
  * each advancing in angle.
@@ -436,6 +445,62 @@ static void st_arc(st_ctx *c, st_vec v, st_vec s, st_vec e, int side)
     if (!st_in_sweep(s, wk.p, e)) {
         if (st_cross(s, e) > 0) return; /* under a half turn: nothing in it */
         for (t = 1; t < n4 && !st_in_sweep(s, wk.p, e); t++) st_walk_next(c, &wk);
+    }
+    if (st_arc_room(c, v)) { /* st_emit's checks made once for the arc */
+        st_out *o = &c->out;
+        rast_point *q = NULL;
+        uint64_t kept = 0;
+        int down = side == ST_L;
+        /* the walk by quadrant qd and index k, the point the first
+         * quarter's (a, b) = cq[k] turned: x = sx a', y = sy b' with (a',
+         * b') = (a, b) in quadrants 0 and 2, (b, a) in 1 and 3 */
+        uint32_t m = c->m, k = wk.k, qd = wk.q, ix = qd & 1u;
+        int64_t sx = qd == 1 || qd == 2 ? -1 : 1, sy = qd >= 2 ? -1 : 1;
+        int half = st_cross(s, e) > 0;
+        st_vec p = wk.p;
+        if (o->pts) q = down ? o->pts + (o->top - 1 - o->nl) : o->pts + (o->np - o->nl);
+        /* Under a half turn (cross(s, e) > 0, angle phi from s), cross(s,
+         * p) > 0 holds for every point the walk meets before its stop:
+         * the first point is in the sweep (above), the angle from s grows
+         * by less than a quarter a step, and the first point past phi
+         * fails cross(p, e) > 0 (angles phi .. phi + pi); so the test of
+         * e alone stops where st_in_sweep() stops. */
+        for (t = 0; t < n4 && (half ? st_cross(p, e) > 0 : st_in_sweep(s, p, e)); t++) {
+            if (st_cross(last, p) > 0) {
+                int64_t x = v.x + p.x, y = v.y + p.y;
+                /* only the first can equal the side's last point: the
+                 * others differ from the one before (cross > 0) */
+                if (kept || !o->has[side] || o->last[side].x != x || o->last[side].y != y) {
+                    if (q) {
+                        q->x = (int32_t)x;
+                        q->y = (int32_t)y;
+                        q = down ? q - 1 : q + 1;
+                    }
+                    kept++;
+                }
+                last = p;
+            }
+            if (++k == m) {
+                k = 0;
+                qd = (qd + 1) & 3u;
+                ix = qd & 1u;
+                sx = qd == 1 || qd == 2 ? -1 : 1;
+                sy = qd >= 2 ? -1 : 1;
+            }
+            p.x = sx * c->cq[2 * k + ix];
+            p.y = sy * c->cq[2 * k + 1 - ix];
+        }
+        if (kept) {
+            o->has[side] = 1;
+            o->last[side].x = v.x + last.x;
+            o->last[side].y = v.y + last.y;
+            o->np += kept;
+            if (down)
+                o->nl += kept;
+            else if (o->pts)
+                o->sizes[o->nr - 1] += (uint32_t)kept;
+        }
+        return;
     }
     for (t = 0; t < n4 && st_in_sweep(s, wk.p, e); t++) {
         if (st_cross(last, wk.p) > 0) {
@@ -793,7 +858,7 @@ static int st_dash_walk(st_ctx *c, st_it *it, st_vec start, st_dash ds, int mode
         if (!d.x && !d.y) continue;
         {
             uint64_t l2 = (uint64_t)(d.x * d.x) + (uint64_t)(d.y * d.y);
-            lr = (int64_t)((st_isqrt_floor(4 * l2) + 1) >> 1);
+            lr = (int64_t)((rast__isqrt_floor(4 * l2) + 1) >> 1);
             if (lr < 1) lr = 1;
         }
         c->hint = d;

@@ -224,10 +224,11 @@ def stroke(geometry: Union[Path, Sequence[Sequence[float]], Sequence[Sequence[Se
     sizes = sizes[sizes > 0].astype(np.int64)
     if not n:
         return out
-    vs = np.full(n, LINE, dtype=np.uint8)
-    starts = np.concatenate([[0], np.cumsum(sizes[:-1])])
-    vs[starts] = MOVE
-    vs = np.insert(vs, starts + sizes, lib.RAST_PATH_CLOSE)  # a CLOSE ends each ring
+    # ring k: MOVE, LINE ..., CLOSE, its points after the k CLOSEs before it
+    closes = np.cumsum(sizes) + np.arange(len(sizes))
+    vs = np.full(n + len(sizes), LINE, dtype=np.uint8)
+    vs[closes] = lib.RAST_PATH_CLOSE
+    vs[closes - sizes] = MOVE
     # held as the stroker made it, on its grid: a fill at subpixel_bits <=
     # bits rounds the integers (Path._fixed), no float64 points made
     return Path._lines(vs, fixed=(ring_pts[:n], bits), tolerance=tolerance)

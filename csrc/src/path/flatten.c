@@ -71,6 +71,16 @@ uint32_t rast__isqrt_floor(uint64_t v)
     if (bit >> 4 > v) bit >>= 4;
     if (bit >> 2 > v) bit >>= 2;
     if (bit > v) bit >>= 2;
+    /* each step taken or not by a mask, not a branch: the bits of a root
+     * are as good as random, and half the steps' branches mispredicted
+     * cost more than the step */
+    while (bit) {
+        uint64_t t = r + bit, take = (uint64_t)0 - (uint64_t)(v >= t);
+        v -= t & take;
+        r = (r >> 1) + (bit & take);
+        bit >>= 2;
+    }
+    return (uint32_t)r;
 #endif
     while (bit) {
         if (v >= r + bit) {

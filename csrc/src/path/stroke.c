@@ -408,6 +408,7 @@ static uint32_t st_after(const st_ctx *c, st_vec s)
     return g;
 }
 
+#ifndef __OPTIMIZE_SIZE__ /* a build for size emits every arc point through st_emit (~1 KB less) */
 /* Can an arc about v (at most the circle's 4m points) skip st_emit's
  * checks (and walk the first quarter's points kept in the state)?  Its points are within the range (each coordinate of the
  * circle's points is a rounding of at most h, so at most round(h) =
@@ -422,6 +423,7 @@ static int st_arc_room(const st_ctx *c, st_vec v)
     return v.x - r >= -RAST_COORD_MAX && v.x + r <= RAST_COORD_MAX && v.y - r >= -RAST_COORD_MAX &&
            v.y + r <= RAST_COORD_MAX;
 }
+#endif
 
 /* The circle's points strictly between s and e counter-clockwise (the
  * sweep s -> e at most a half turn, or past it by a rounding's angle),
@@ -446,6 +448,7 @@ static void st_arc(st_ctx *c, st_vec v, st_vec s, st_vec e, int side)
         if (st_cross(s, e) > 0) return; /* under a half turn: nothing in it */
         for (t = 1; t < n4 && !st_in_sweep(s, wk.p, e); t++) st_walk_next(c, &wk);
     }
+#ifndef __OPTIMIZE_SIZE__
     if (st_arc_room(c, v)) { /* st_emit's checks made once for the arc */
         st_out *o = &c->out;
         rast_point *q = NULL;
@@ -502,6 +505,7 @@ static void st_arc(st_ctx *c, st_vec v, st_vec s, st_vec e, int side)
         }
         return;
     }
+#endif
     for (t = 0; t < n4 && st_in_sweep(s, wk.p, e); t++) {
         if (st_cross(last, wk.p) > 0) {
             st_emit(&c->out, v.x + wk.p.x, v.y + wk.p.y, side);

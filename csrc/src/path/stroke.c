@@ -254,24 +254,59 @@ static void st_left_flush(st_out *o, int own_ring)
 }
 
 /* ---- arithmetic ----------------------------------------------------------- */
-/* round(w |a| / (2 sqrt(l2))) with a's sign (the file's comment). */
-static int64_t st_off_coord(int64_t a, uint64_t l2, int64_t w)
+/* Is r = floor(c + 1/2), c = wa / (2 sqrt(l2)) >= 0, wa2 = wa^2?  That is
+ * r - 1/2 <= c < r + 1/2, squared: (2r - 1)^2 l2 <= wa2 (r >= 1; r = 0:
+ * nothing) and wa2 < (2r + 1)^2 l2, exactly in 128 bits (r <= 2^29 + 1,
+ * so (2r + 1)^2 < 2^61; l2 < 2^59). */
+#ifndef __OPTIMIZE_SIZE__ /* a build for size takes the construction alone (~400 B less) */
+static int st_off_is(int64_t r, uint64_t l2, rast__i128 wa2)
+{
+    int64_t hi = 2 * r + 1, lo = 2 * r - 1;
+    if (r < 0 || rast__i128_cmp(wa2, rast__i128_mul(hi * hi, (int64_t)l2)) >= 0) return 0;
+    return r == 0 || rast__i128_cmp(rast__i128_mul(lo * lo, (int64_t)l2), wa2) <= 0;
+}
+#endif
+
+/* round(w |a| / (2 sqrt(l2))) with a's sign (the file's comment), lf =
+ * floor(sqrt(l2)) >= 1.  The guess round(w |a| / (2 lf)) is the answer or
+ * next to it but for short segments (lf <= L < lf + 1: it is off by less
+ * than w / (2 lf) + 1); st_off_is() decides, exactly, which, and the
+ * file's construction (floor(w^2 a^2 / l2), a 128-bit division and a
+ * root) is left for the guesses it refuses: the same value either way. */
+static int64_t st_off_coord(int64_t a, uint64_t l2, uint32_t lf, int64_t w)
 {
     int64_t q, r;
     uint64_t mag = a < 0 ? (uint64_t)(-a) : (uint64_t)a;
-    rast__i128 num = rast__i128_mul(w * w, (int64_t)(mag * mag));
-    rast__wide_floordiv(num, (int64_t)l2, &q, &r);
-    mag = (rast__isqrt_floor((uint64_t)q) + 1) >> 1;
-    return a < 0 ? -(int64_t)mag : (int64_t)mag;
+#ifndef __OPTIMIZE_SIZE__
+    int64_t wa = w * (int64_t)mag; /* < 2^30 2^29 */
+    rast__i128 wa2 = rast__i128_mul(wa, wa);
+    r = (wa + (int64_t)lf) / (2 * (int64_t)lf);
+    if (st_off_is(r, l2, wa2)) return a < 0 ? -r : r;
+    if (st_off_is(r - 1, l2, wa2)) return a < 0 ? 1 - r : r - 1;
+    if (st_off_is(r + 1, l2, wa2)) return a < 0 ? -r - 1 : r + 1;
+#else
+    (void)lf;
+#endif
+    {
+        rast__i128 num = rast__i128_mul(w * w, (int64_t)(mag * mag));
+        rast__wide_floordiv(num, (int64_t)l2, &q, &r);
+        r = (int64_t)((rast__isqrt_floor((uint64_t)q) + 1) >> 1);
+    }
+    return a < 0 ? -r : r;
 }
 
 /* N(d): the left offset (-dy, dx) w / (2 |d|), rounded per coordinate. */
 static st_vec st_normal(st_vec d, int64_t w)
 {
     uint64_t l2 = (uint64_t)(d.x * d.x) + (uint64_t)(d.y * d.y);
+#ifndef __OPTIMIZE_SIZE__
+    uint32_t lf = rast__isqrt_floor(l2);
+#else
+    uint32_t lf = 0;
+#endif
     st_vec o;
-    o.x = st_off_coord(-d.y, l2, w);
-    o.y = st_off_coord(d.x, l2, w);
+    o.x = st_off_coord(-d.y, l2, lf, w);
+    o.y = st_off_coord(d.x, l2, lf, w);
     return o;
 }
 

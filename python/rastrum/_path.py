@@ -129,8 +129,63 @@ class Path:
         if self._fixed_at:
             self._fixed_at = {}
 
+    # ---- a Path of lines held as arrays (rastrum.stroke's input and outline) ---
+    #: None, or (verbs, int32 points, bits) / (verbs, None, None): the
+    #: arrays are the truth and the lists are made on first use (by
+    #: __getattr__, which only runs when _vl / _pl are not set), so that a
+    #: fill reads the outline without a Python tuple per vertex.
+    _held: Optional[tuple] = None
+
+    @classmethod
+    def _lines(cls, verbs: np.ndarray, points: Optional[np.ndarray] = None, *,
+               fixed: Optional[Tuple[np.ndarray, int]] = None, tolerance: Optional[float] = None) -> "Path":
+        """A Path of MOVE, LINE and CLOSE verbs held as arrays: `points`
+        (N, 2) float64 pixels, or `fixed` (int32 (N, 2) on the 1/2**bits
+        grid, bits): rastrum.stroke's outline, which a fill at
+        subpixel_bits <= bits then takes rounded from the integers (the
+        same values as from the float64 points, which hold them exactly)."""
+        p = cls.__new__(cls)
+        p._start = p._cur = None
+        p._closed = False
+        p._tolerance = None
+        p.tolerance = tolerance
+        v = np.ascontiguousarray(verbs, dtype=np.uint8)
+        v.flags.writeable = False
+        p._fixed_at = {}
+        if fixed is not None:
+            q, bits = fixed
+            q = np.ascontiguousarray(q, dtype=np.int32).reshape(-1, 2)
+            q.flags.writeable = False
+            p._arrays = None
+            p._fixed_at[bits] = q
+            p._held = (v, q, bits)
+        else:
+            q = np.ascontiguousarray(points, dtype=np.float64).reshape(-1, 2)
+            q.flags.writeable = False
+            p._arrays = (v, q)
+            p._held = (v, None, None)
+        return p
+
+    def __getattr__(self, name: str) -> object:
+        # only when normal lookup fails: a held Path's lists, made once
+        held = self.__dict__.get("_held")
+        if held is None or name not in ("_vl", "_pl"):
+            raise AttributeError(name)
+        v, q = self._as_arrays()
+        d = self.__dict__
+        d["_vl"], d["_pl"] = v.tolist(), list(map(tuple, q.tolist()))
+        d["_held"] = None  # the lists are the truth from now on
+        return d[name]
+
     def _as_arrays(self) -> Tuple[np.ndarray, np.ndarray]:
         a = self._arrays
+        held = self._held
+        if held is not None:
+            if a is None:  # points from the integers: n / 2**bits, exact in float64
+                q = held[1].astype(np.float64) / float(1 << held[2])
+                q.flags.writeable = False
+                a = self._arrays = (held[0], q)
+            return a
         if a is None or len(a[0]) != len(self._vl) or len(a[1]) != len(self._pl):
             a = self._arrays = (np.array(self._vl, dtype=np.uint8),
                                 np.array(self._pl, dtype=np.float64).reshape(-1, 2))
@@ -165,7 +220,8 @@ class Path:
         return self._as_arrays()[1].copy()
 
     def __len__(self) -> int:
-        return len(self._verbs)
+        held = self._held
+        return len(self._vl) if held is None else len(held[0])
 
     def __repr__(self) -> str:
         return "Path(%d verbs, %d points, tolerance=%r)" % (len(self._verbs), len(self._pts), self._tolerance)
@@ -518,6 +574,14 @@ class Path:
     def _fixed(self, bits: int) -> Tuple[np.ndarray, np.ndarray]:
         """The points on the 1/2**bits grid (int32, kept until the path
         changes) and the verbs."""
+        held = self._held
+        if held is not None and held[1] is not None and bits <= held[2]:
+            v = self._fixed_at.get(bits)
+            if v is None:  # floor(n / 2**k + 1/2) of the held integers n, exactly
+                k = held[2] - bits
+                v = self._fixed_at[bits] = held[1] if k == 0 else (held[1] + (1 << (k - 1))) >> k
+                v.flags.writeable = False
+            return v, held[0]
         verbs, pts = self._as_arrays()
         v = self._fixed_at.get(bits)
         if v is None:
@@ -559,6 +623,12 @@ class Path:
         bits = min(subpixel_bits, lib.RAST_MAX_SUBPIXEL_BITS)
         tol = self._grid_tolerance(tolerance, bits, subpixel_bits)
         pts, verbs = self._fixed(bits)
+        if self._held is not None and len(pts) <= lib.RAST_MAX_POINTS:
+            # lines only: each MOVE starts a ring of the points up to the
+            # next MOVE, as rast_path_flatten makes them, cut from one array
+            starts = (np.cumsum(verbs != CLOSE) - 1)[verbs == MOVE]
+            rings = np.split(pts.astype(np.float64) / float(1 << bits), starts[1:])
+            return [r for r in rings if len(r) >= 3]
         out = [r.astype(np.float64) / float(1 << bits) for r in _flatten_fixed(verbs, pts, tol)]
         return [r for r in out if len(r) >= 3]
 

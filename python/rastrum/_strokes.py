@@ -15,7 +15,7 @@ tolerance (or 2 grid steps, when coarser) of the true arcs.
 from __future__ import annotations
 
 import math
-from typing import List, Optional, Sequence, Tuple, Union
+from typing import List, Optional, Sequence, Union
 
 import numpy as np
 
@@ -25,76 +25,6 @@ from ._path import DEFAULT_TOLERANCE, LINE, MOVE, Path, _real
 
 __all__ = ["stroke"]
 
-
-class _ArrayPath(Path):
-    """A Path of lines only (MOVE, LINE, CLOSE) held as numpy arrays: the
-    stroker's input polylines and its outline, without a Python tuple per
-    vertex.  Path keeps the arrays a fill takes beside the lists it builds
-    with (``_vl``, ``_pl``); here the arrays come first and the lists are
-    made on first use (any method that reads or extends them), so that
-    ``polygon_coverage(stroke(...))`` and ``Canvas.stroke`` pass the
-    vertices from the C stroker to the filler as arrays (the same values:
-    float64 holds the grid's int32 / 2**b exactly)."""
-
-    def __init__(self, verbs: np.ndarray, pts: np.ndarray, *, tolerance: Optional[float] = None) -> None:
-        self.__dict__["_lazy"] = None
-        super().__init__(tolerance=tolerance)
-        v = np.ascontiguousarray(verbs, dtype=np.uint8)
-        q = np.ascontiguousarray(pts, dtype=np.float64).reshape(-1, 2)
-        v.flags.writeable = q.flags.writeable = False
-        self.__dict__["_lazy"] = (v, q)
-        self._arrays = (v, q)
-
-    def _lists(self) -> None:
-        lazy = self.__dict__["_lazy"]
-        if lazy is not None:
-            self.__dict__["_lazy"] = None
-            self.__dict__["_vl_"] = lazy[0].tolist()
-            self.__dict__["_pl_"] = list(map(tuple, lazy[1].tolist()))
-
-    @property  # type: ignore[override]
-    def _vl(self) -> List[int]:
-        self._lists()
-        return self.__dict__["_vl_"]
-
-    @_vl.setter
-    def _vl(self, value: List[int]) -> None:
-        self._lists()
-        self.__dict__["_vl_"] = value
-
-    @property  # type: ignore[override]
-    def _pl(self) -> List[Tuple[float, float]]:
-        self._lists()
-        return self.__dict__["_pl_"]
-
-    @_pl.setter
-    def _pl(self, value: List[Tuple[float, float]]) -> None:
-        self._lists()
-        self.__dict__["_pl_"] = value
-
-    def _as_arrays(self) -> Tuple[np.ndarray, np.ndarray]:
-        lazy = self.__dict__["_lazy"]
-        return lazy if lazy is not None else super()._as_arrays()
-
-    def __len__(self) -> int:
-        lazy = self.__dict__["_lazy"]
-        return len(lazy[0]) if lazy is not None else super().__len__()
-
-    def flatten(self, subpixel_bits: int = 8, tolerance: Optional[float] = None) -> List[np.ndarray]:
-        """As Path.flatten (lines only: each MOVE starts a ring of the
-        points up to the next MOVE, as rast_path_flatten makes them), the
-        rings cut from one array instead of one conversion per ring."""
-        lazy = self.__dict__["_lazy"]
-        if lazy is None or len(lazy[1]) > lib.RAST_MAX_POINTS:
-            return super().flatten(subpixel_bits, tolerance)
-        # the arguments checked (and refused with Path's messages) on an empty Path
-        Path(tolerance=self._tolerance).flatten(subpixel_bits, tolerance)
-        bits = min(subpixel_bits, lib.RAST_MAX_SUBPIXEL_BITS)
-        fixed, verbs = self._fixed(bits)
-        takes = verbs != lib.RAST_PATH_CLOSE
-        starts = (np.cumsum(takes) - 1)[verbs == MOVE]
-        rings = np.split(fixed.astype(np.float64) / float(1 << bits), starts[1:])
-        return [r for r in rings if len(r) >= 3]
 
 _JOINS = {"miter": lib.RAST_JOIN_MITER, "round": lib.RAST_JOIN_ROUND, "bevel": lib.RAST_JOIN_BEVEL}
 _CAPS = {"butt": lib.RAST_CAP_BUTT, "round": lib.RAST_CAP_ROUND, "square": lib.RAST_CAP_SQUARE}
@@ -142,7 +72,7 @@ def _as_path(geometry: object) -> Path:
         pts.append(np.asarray(a, dtype=np.float64))
     if not verbs:
         return Path()
-    return _ArrayPath(np.concatenate(verbs), np.concatenate(pts).reshape(-1, 2))
+    return Path._lines(np.concatenate(verbs), np.concatenate(pts).reshape(-1, 2))
 
 
 def stroke(geometry: Union[Path, Sequence[Sequence[float]], Sequence[Sequence[Sequence[float]]]],
@@ -294,8 +224,11 @@ def stroke(geometry: Union[Path, Sequence[Sequence[float]], Sequence[Sequence[Se
     sizes = sizes[sizes > 0].astype(np.int64)
     if not n:
         return out
-    vs = np.full(n, LINE, dtype=np.uint8)
-    starts = np.concatenate([[0], np.cumsum(sizes[:-1])])
-    vs[starts] = MOVE
-    vs = np.insert(vs, starts + sizes, lib.RAST_PATH_CLOSE)  # a CLOSE ends each ring
-    return _ArrayPath(vs, ring_pts[:n].astype(np.float64) / one, tolerance=tolerance)
+    # ring k: MOVE, LINE ..., CLOSE, its points after the k CLOSEs before it
+    closes = np.cumsum(sizes) + np.arange(len(sizes))
+    vs = np.full(n + len(sizes), LINE, dtype=np.uint8)
+    vs[closes] = lib.RAST_PATH_CLOSE
+    vs[closes - sizes] = MOVE
+    # held as the stroker made it, on its grid: a fill at subpixel_bits <=
+    # bits rounds the integers (Path._fixed), no float64 points made
+    return Path._lines(vs, fixed=(ring_pts[:n], bits), tolerance=tolerance)

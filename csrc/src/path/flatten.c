@@ -54,11 +54,34 @@
 #include "path.h"
 #include "../base/wide.h"
 
-/* floor(sqrt(v)), bit by bit (no division, no float). */
-static uint32_t isqrt_floor(uint64_t v)
+/* floor(sqrt(v)), bit by bit (no division, no float).  The first bit,
+ * the highest power of 4 <= v (0 for v = 0), is found by halves: the
+ * largest even shift S <= 62 with 2^62 >> S > v, binary digit by digit
+ * (32, 16, .., 2: the test is monotone in S), then one step more; a build for size
+ * steps down one power at a time. */
+uint32_t rast__isqrt_floor(uint64_t v)
 {
     uint64_t r = 0, bit = (uint64_t)1 << 62;
+#ifdef __OPTIMIZE_SIZE__
     while (bit > v) bit >>= 2;
+#else
+    if (bit >> 32 > v) bit >>= 32;
+    if (bit >> 16 > v) bit >>= 16;
+    if (bit >> 8 > v) bit >>= 8;
+    if (bit >> 4 > v) bit >>= 4;
+    if (bit >> 2 > v) bit >>= 2;
+    if (bit > v) bit >>= 2;
+    /* each step taken or not by a mask, not a branch: the bits of a root
+     * are as good as random, and half the steps' branches mispredicted
+     * cost more than the step */
+    while (bit) {
+        uint64_t t = r + bit, take = (uint64_t)0 - (uint64_t)(v >= t);
+        v -= t & take;
+        r = (r >> 1) + (bit & take);
+        bit >>= 2;
+    }
+    return (uint32_t)r;
+#endif
     while (bit) {
         if (v >= r + bit) {
             v -= r + bit;
@@ -73,7 +96,7 @@ static uint32_t isqrt_floor(uint64_t v)
 
 uint32_t rast__isqrt_ceil(uint64_t v)
 {
-    uint32_t r = isqrt_floor(v);
+    uint32_t r = rast__isqrt_floor(v);
     return (uint64_t)r * r < v ? r + 1 : r;
 }
 

@@ -6,8 +6,10 @@
 
 #include "../base/internal.h"
 
-/* ceil(sqrt(v)) for any v < 2^62, exactly (integer square root). */
+/* ceil(sqrt(v)) for any v < 2^62, exactly (integer square root), and
+ * floor(sqrt(v)) for any v. */
 uint32_t rast__isqrt_ceil(uint64_t v);
+uint32_t rast__isqrt_floor(uint64_t v);
 
 /* The flattened path, as rast_path_flatten writes it, or only counted:
  * with points == NULL nothing is stored and the counts are the sizes. */

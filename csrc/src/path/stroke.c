@@ -254,30 +254,59 @@ static void st_left_flush(st_out *o, int own_ring)
 }
 
 /* ---- arithmetic ----------------------------------------------------------- */
-static uint32_t st_isqrt_floor(uint64_t v)
+/* Is r = floor(c + 1/2), c = wa / (2 sqrt(l2)) >= 0, wa2 = wa^2?  That is
+ * r - 1/2 <= c < r + 1/2, squared: (2r - 1)^2 l2 <= wa2 (r >= 1; r = 0:
+ * nothing) and wa2 < (2r + 1)^2 l2, exactly in 128 bits (r <= 2^29 + 1,
+ * so (2r + 1)^2 < 2^61; l2 < 2^59). */
+#ifndef __OPTIMIZE_SIZE__ /* a build for size takes the construction alone (~400 B less) */
+static int st_off_is(int64_t r, uint64_t l2, rast__i128 wa2)
 {
-    uint32_t c = rast__isqrt_ceil(v);
-    return (uint64_t)c * c > v ? c - 1 : c;
+    int64_t hi = 2 * r + 1, lo = 2 * r - 1;
+    if (r < 0 || rast__i128_cmp(wa2, rast__i128_mul(hi * hi, (int64_t)l2)) >= 0) return 0;
+    return r == 0 || rast__i128_cmp(rast__i128_mul(lo * lo, (int64_t)l2), wa2) <= 0;
 }
+#endif
 
-/* round(w |a| / (2 sqrt(l2))) with a's sign (the file's comment). */
-static int64_t st_off_coord(int64_t a, uint64_t l2, int64_t w)
+/* round(w |a| / (2 sqrt(l2))) with a's sign (the file's comment), lf =
+ * floor(sqrt(l2)) >= 1.  The guess round(w |a| / (2 lf)) is the answer or
+ * next to it but for short segments (lf <= L < lf + 1: it is off by less
+ * than w / (2 lf) + 1); st_off_is() decides, exactly, which, and the
+ * file's construction (floor(w^2 a^2 / l2), a 128-bit division and a
+ * root) is left for the guesses it refuses: the same value either way. */
+static int64_t st_off_coord(int64_t a, uint64_t l2, uint32_t lf, int64_t w)
 {
     int64_t q, r;
     uint64_t mag = a < 0 ? (uint64_t)(-a) : (uint64_t)a;
-    rast__i128 num = rast__i128_mul(w * w, (int64_t)(mag * mag));
-    rast__wide_floordiv(num, (int64_t)l2, &q, &r);
-    mag = (st_isqrt_floor((uint64_t)q) + 1) >> 1;
-    return a < 0 ? -(int64_t)mag : (int64_t)mag;
+#ifndef __OPTIMIZE_SIZE__
+    int64_t wa = w * (int64_t)mag; /* < 2^30 2^29 */
+    rast__i128 wa2 = rast__i128_mul(wa, wa);
+    r = (wa + (int64_t)lf) / (2 * (int64_t)lf);
+    if (st_off_is(r, l2, wa2)) return a < 0 ? -r : r;
+    if (st_off_is(r - 1, l2, wa2)) return a < 0 ? 1 - r : r - 1;
+    if (st_off_is(r + 1, l2, wa2)) return a < 0 ? -r - 1 : r + 1;
+#else
+    (void)lf;
+#endif
+    {
+        rast__i128 num = rast__i128_mul(w * w, (int64_t)(mag * mag));
+        rast__wide_floordiv(num, (int64_t)l2, &q, &r);
+        r = (int64_t)((rast__isqrt_floor((uint64_t)q) + 1) >> 1);
+    }
+    return a < 0 ? -r : r;
 }
 
 /* N(d): the left offset (-dy, dx) w / (2 |d|), rounded per coordinate. */
 static st_vec st_normal(st_vec d, int64_t w)
 {
     uint64_t l2 = (uint64_t)(d.x * d.x) + (uint64_t)(d.y * d.y);
+#ifndef __OPTIMIZE_SIZE__
+    uint32_t lf = rast__isqrt_floor(l2);
+#else
+    uint32_t lf = 0;
+#endif
     st_vec o;
-    o.x = st_off_coord(-d.y, l2, w);
-    o.y = st_off_coord(d.x, l2, w);
+    o.x = st_off_coord(-d.y, l2, lf, w);
+    o.y = st_off_coord(d.x, l2, lf, w);
     return o;
 }
 
@@ -414,6 +443,23 @@ static uint32_t st_after(const st_ctx *c, st_vec s)
     return g;
 }
 
+#ifndef __OPTIMIZE_SIZE__ /* a build for size emits every arc point through st_emit (~1 KB less) */
+/* Can an arc about v (at most the circle's 4m points) skip st_emit's
+ * checks (and walk the first quarter's points kept in the state)?  Its points are within the range (each coordinate of the
+ * circle's points is a rounding of at most h, so at most round(h) =
+ * floor((w + 1) / 2) from v's), fewer than RAST_MAX_POINTS and the room
+ * (stored: np + 4m <= top) make, and no error is pending. */
+static int st_arc_room(const st_ctx *c, st_vec v)
+{
+    const st_out *o = &c->out;
+    int64_t r = (c->w + 1) / 2, n4 = 4 * (int64_t)c->m;
+    if (!c->cached || o->err != RAST_OK || o->np + (uint64_t)n4 > RAST_MAX_POINTS) return 0;
+    if (o->pts && o->np + (uint64_t)n4 > o->top) return 0;
+    return v.x - r >= -RAST_COORD_MAX && v.x + r <= RAST_COORD_MAX && v.y - r >= -RAST_COORD_MAX &&
+           v.y + r <= RAST_COORD_MAX;
+}
+#endif
+
 /* The circle's points strictly between s and e counter-clockwise (the
  * sweep s -> e at most a half turn, or past it by a rounding's angle),
  * each advancing in angle.
@@ -437,6 +483,64 @@ static void st_arc(st_ctx *c, st_vec v, st_vec s, st_vec e, int side)
         if (st_cross(s, e) > 0) return; /* under a half turn: nothing in it */
         for (t = 1; t < n4 && !st_in_sweep(s, wk.p, e); t++) st_walk_next(c, &wk);
     }
+#ifndef __OPTIMIZE_SIZE__
+    if (st_arc_room(c, v)) { /* st_emit's checks made once for the arc */
+        st_out *o = &c->out;
+        rast_point *q = NULL;
+        uint64_t kept = 0;
+        int down = side == ST_L;
+        /* the walk by quadrant qd and index k, the point the first
+         * quarter's (a, b) = cq[k] turned: x = sx a', y = sy b' with (a',
+         * b') = (a, b) in quadrants 0 and 2, (b, a) in 1 and 3 */
+        uint32_t m = c->m, k = wk.k, qd = wk.q, ix = qd & 1u;
+        int64_t sx = qd == 1 || qd == 2 ? -1 : 1, sy = qd >= 2 ? -1 : 1;
+        int half = st_cross(s, e) > 0;
+        st_vec p = wk.p;
+        if (o->pts) q = down ? o->pts + (o->top - 1 - o->nl) : o->pts + (o->np - o->nl);
+        /* Under a half turn (cross(s, e) > 0, angle phi from s), cross(s,
+         * p) > 0 holds for every point the walk meets before its stop:
+         * the first point is in the sweep (above), the angle from s grows
+         * by less than a quarter a step, and the first point past phi
+         * fails cross(p, e) > 0 (angles phi .. phi + pi); so the test of
+         * e alone stops where st_in_sweep() stops. */
+        for (t = 0; t < n4 && (half ? st_cross(p, e) > 0 : st_in_sweep(s, p, e)); t++) {
+            if (st_cross(last, p) > 0) {
+                int64_t x = v.x + p.x, y = v.y + p.y;
+                /* only the first can equal the side's last point: the
+                 * others differ from the one before (cross > 0) */
+                if (kept || !o->has[side] || o->last[side].x != x || o->last[side].y != y) {
+                    if (q) {
+                        q->x = (int32_t)x;
+                        q->y = (int32_t)y;
+                        q = down ? q - 1 : q + 1;
+                    }
+                    kept++;
+                }
+                last = p;
+            }
+            if (++k == m) {
+                k = 0;
+                qd = (qd + 1) & 3u;
+                ix = qd & 1u;
+                sx = qd == 1 || qd == 2 ? -1 : 1;
+                sy = qd >= 2 ? -1 : 1;
+            }
+            p.x = sx * c->cq[2 * k + ix];
+            p.y = sy * c->cq[2 * k + 1 - ix];
+        }
+        if (kept) {
+            o->has[side] = 1;
+            o->last[side].x = v.x + last.x;
+            o->last[side].y = v.y + last.y;
+            o->np += kept;
+            if (down)
+                o->nl += kept;
+            else if (o->pts)
+                o->sizes[o->nr - 1] += (uint32_t)kept;
+        }
+        return;
+    }
+#endif
     for (t = 0; t < n4 && st_in_sweep(s, wk.p, e); t++) {
         if (st_cross(last, wk.p) > 0) {
             st_emit(&c->out, v.x + wk.p.x, v.y + wk.p.y, side);
@@ -793,7 +897,7 @@ static int st_dash_walk(st_ctx *c, st_it *it, st_vec start, st_dash ds, int mode
         if (!d.x && !d.y) continue;
         {
             uint64_t l2 = (uint64_t)(d.x * d.x) + (uint64_t)(d.y * d.y);
-            lr = (int64_t)((st_isqrt_floor(4 * l2) + 1) >> 1);
+            lr = (int64_t)((rast__isqrt_floor(4 * l2) + 1) >> 1);
             if (lr < 1) lr = 1;
         }
         c->hint = d;

@@ -20,6 +20,8 @@
 
 enum { W = 48, H = 24, MAXP = 400 };
 
+#include "rings.h"
+
 typedef struct canvas {
     unsigned char px[H][W];
     int bad; /* a run out of the clip, empty, or out of order */
@@ -61,32 +63,6 @@ static rast_status fill(canvas *c, const rast_polygon *poly, uint32_t npoints, c
     rast__sink_init(&sink, &p, clip);
     st = rast__aet_fill_by(poly, npoints, g, rule, clip, &sink, &arena, how);
     return st;
-}
-
-/* v rounded down to a multiple of 2^s. */
-static int32_t floor_to(int32_t v, int s)
-{
-    const int32_t one = (int32_t)1 << s;
-    int32_t m = v % one;
-    return v - (m < 0 ? m + one : m);
-}
-
-/* A random point: on a sample point, on a sample row, or anywhere, within
- * a margin around the canvas (so that rings cross the clip's sides). */
-static rast_point point(int s, int center)
-{
-    const int32_t one = (int32_t)1 << s, half = center ? one / 2 : 0;
-    rast_point q;
-    int kind = (int)(rng() % 3);
-    q.x = (int32_t)(rng() % (uint32_t)((W + 8) * one)) - 4 * one;
-    q.y = (int32_t)(rng() % (uint32_t)((H + 8) * one)) - 4 * one;
-    if (kind == 0) { /* a sample point */
-        q.x = floor_to(q.x, s) + half;
-        q.y = floor_to(q.y, s) + half;
-    } else if (kind == 1) { /* on a sample row */
-        q.y = floor_to(q.y, s) + half;
-    }
-    return q;
 }
 
 /* Non-zero past the byte counters' reach: a triangle walked round `turns`
@@ -145,7 +121,7 @@ int main(void)
     for (iter = 0; iter < n; iter++) {
         const int s = (int)(rng() % 5), center = (int)(rng() & 1), textbook = (int)(rng() % 4 == 0);
         const rast_fill_rule rule = (rng() & 1) ? RAST_RULE_EVENODD : RAST_RULE_NONZERO;
-        uint32_t nrings = 1 + rng() % 60, np = 0, k, v;
+        uint32_t nrings = 1 + rng() % 60, np = 0;
         rast__grid g;
         rast_polygon poly;
         rast_rect clip;
@@ -155,41 +131,7 @@ int main(void)
         CHECK(rast__grid_init(&g, s, center ? RAST_SAMPLE_CENTER : RAST_SAMPLE_CORNER,
                               textbook ? RAST_ROUND_TEXTBOOK : RAST_ROUND_EXACT,
                               RAST_BOUNDARY_EXACT) == RAST_OK);
-        for (k = 0; k < nrings && np + 8 <= MAXP; k++) {
-            /* a small ring (3..6 vertices) around a point, either way
-             * round; sometimes a vertex halfway along an edge
-             * (collinear), or a repeated vertex */
-            uint32_t m = 3 + rng() % 4, first = np;
-            rast_point c0 = point(s, center);
-            const int32_t r = (int32_t)(1 + rng() % 6) << s;
-            for (v = 0; v < m; v++) {
-                rast_point q = point(s, center);
-                q.x = c0.x + (q.x % r);
-                q.y = c0.y + (q.y % r);
-                pts[np++] = q;
-            }
-            if (rng() % 4 == 0) { /* a collinear vertex between the first two */
-                rast_point mid;
-                mid.x = pts[first].x + (pts[first + 1].x - pts[first].x) / 2;
-                mid.y = pts[first].y + (pts[first + 1].y - pts[first].y) / 2;
-                if ((int64_t)(mid.x - pts[first].x) * (pts[first + 1].y - pts[first].y) ==
-                    (int64_t)(mid.y - pts[first].y) * (pts[first + 1].x - pts[first].x)) {
-                    memmove(&pts[first + 2], &pts[first + 1], (np - first - 1) * sizeof *pts);
-                    pts[first + 1] = mid;
-                    np++;
-                    m++;
-                }
-            }
-            if (rng() % 8 == 0) pts[first + 2] = pts[first + 1]; /* a repeated vertex */
-            if (rng() % 8 == 0) { /* one big ring across the canvas, the hole of its rings */
-                pts[first].x = -(2 << s);
-                pts[first].y = (int32_t)(rng() % H) << s;
-                pts[first + 1].x = (W + 2) << s;
-                pts[first + 1].y = pts[first].y + (int32_t)(rng() % 3);
-            }
-            sizes[k] = m;
-        }
-        nrings = k;
+        nrings = small_rings(pts, sizes, MAXP, nrings, s, center, &np);
         poly.points = pts;
         poly.ring_sizes = sizes;
         poly.nrings = nrings;

@@ -1,8 +1,12 @@
 """The whole-array calls' fixed cost (issue 33): polygon_mask of a list of
 several rings goes to C in one call (rastrum._core.packed_call, no numpy
-form of the points, no scan for the 64-bit path).  It must give what the
-exact oracle gives, take the 64-bit path when a point needs it, and raise
-what the general path raises; and the quick path must really be taken."""
+form of the points, no scan for the 64-bit path), and polygon_coverage's
+float32 output is converted from the 2^-62 integers in one pass
+(rastpy_fix62_to_float).  Each must give what the exact oracle gives, take
+the 64-bit path when a point needs it, and raise what the general path
+raises; and the quick path must really be taken."""
+
+from fractions import Fraction
 
 import numpy as np
 import pytest
@@ -10,6 +14,7 @@ from hypothesis import given, settings, strategies as st
 
 import rastrum
 from rastrum import _core
+from rastrum._native import ffi, lib
 from oracle import oracle_mask
 from strategies import examples
 
@@ -79,3 +84,39 @@ def test_several_rings_bad_point_named_as_before(bad, where):
         rastrum.polygon_mask([np.array(square), other], (10, 11))
     with pytest.raises(rastrum.InputError, match="shape"):
         rastrum.polygon_mask([np.array(square), np.array(square)], (10, -1))
+
+
+def _fix62_values():
+    rnd = np.random.default_rng(5)
+    # ties of the float32 rounding: a float64 halfway between two float32
+    ties = [(2 ** 24 + 1) << 37, (2 ** 24 + 3) << 37, ((2 ** 23 + 1) << 38) + (1 << 13)]
+    edge = [0, 1, 2 ** 52 + 1, 2 ** 53 + 1, 2 ** 61 + 12345, 2 ** 62 - 1, 2 ** 62,
+            2 ** 63 - 1, 2 ** 63, 2 ** 63 + 2 ** 11 + 1, 2 ** 64 - 1]  # (above 2^62: never written)
+    return edge + ties + [int(v) for v in rnd.integers(0, 2 ** 62, 300, dtype=np.uint64)]
+
+
+def test_fix62_to_float_rounds_as_documented():
+    """float32 output: a = u / 2^62 rounded to the nearest float64, then to
+    the nearest float32 (ties to even), from the exact fraction."""
+    u = _fix62_values()
+    buf = np.array(u, np.uint64)
+    out = np.full(len(u), np.nan, np.float32)
+    lib.rastpy_fix62_to_float(ffi.from_buffer(buf), ffi.from_buffer(out), len(u))
+    want = np.array([np.float32(float(Fraction(v, 2 ** 62))) for v in u], np.float32)
+    np.testing.assert_array_equal(out, want)
+    assert buf.tolist() == u  # the integers left as they were
+    # and the float64 conversion on the same values
+    lib.rastpy_fix62_to_double(ffi.from_buffer(buf), len(u))
+    np.testing.assert_array_equal(buf.view(np.float64), [float(Fraction(v, 2 ** 62)) for v in u])
+
+
+@pytest.mark.parametrize("method", ["area", "accumulate", "ss4"])
+def test_float32_coverage_is_float32_of_float64(method):
+    t = np.linspace(0, 2 * np.pi, 19, endpoint=False)
+    ring = np.stack([8.3 + 6.1 * np.cos(t), 7.6 + 5.4 * np.sin(t)], 1)
+    f64 = rastrum.polygon_coverage([ring], (16, 17), method=method, dtype=np.float64)
+    f32 = rastrum.polygon_coverage([ring], (16, 17), method=method, dtype=np.float32)
+    assert f32.dtype == np.float32 and f32.shape == (16, 17) and f32.flags.c_contiguous
+    np.testing.assert_array_equal(f32, f64.astype(np.float32))
+    assert ((f64 > 0) & (f64 < 1)).sum() > 20
+    assert rastrum.polygon_coverage([], (3, 0), dtype=np.float32).shape == (3, 0)

@@ -224,10 +224,14 @@ def _finish(raw, d):
     # In place, over the uint64 array's own memory (C): more arrays of that
     # size (astype, ldexp, or numpy's temporary for a ufunc whose output
     # overlaps its input) cost more than the arithmetic, in fresh pages.
+    if d == _F32:  # float32 straight from the integers: one pass, no float64 array then a cast
+        out = _empty(raw.shape, _F32)
+        if raw.size:
+            lib.rastpy_fix62_to_float(_from_buffer(raw), _from_buffer(out), raw.size)
+        return out
     if raw.size:
         lib.rastpy_fix62_to_double(_from_buffer(raw), raw.size)
-    out = raw.view(np.float64)
-    return out if d == _F64 else out.astype(d)
+    return raw.view(np.float64)
 
 
 def _path_coverage(path, shape, quick, tolerance):

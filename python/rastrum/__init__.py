@@ -172,6 +172,18 @@ def polygon_mask(rings: PathRings, shape: Shape, *, rule: Rule = "evenodd", algo
     # A list of one such ring ([ring], as a loop over shapes passes it) is
     # that ring: the general path's packing and checks were two thirds of
     # a 64-gon's call on a 512 x 512 mask.
+    ring = rings[0] if type(rings) is list and len(rings) == 1 else rings
+    if type(ring) is _ndarray and ring.dtype is _I32 and ring.strides == _PACKED32:
+        ring = ring.astype(_F64)  # an OpenCV-style int32 (N, 2) ring: exact as float64
+    if type(ring) is _ndarray and ring.dtype is _F64 and ring.strides == _PACKED and type(shape) is tuple \
+            and len(shape) == 2 and ring.shape[1] == 2 and ring.flags.aligned:
+        h, w = shape
+        n = len(ring)
+        # (_plain_shape's test, inline: a call of its own was ~2% of a 64-gon's 512 x 512 mask)
+        if type(h) is int and type(w) is int and 0 < h <= _MAX_DIM and 0 < w <= _MAX_DIM and n >= 3:
+            mask = _empty(shape, _BOOL)
+            if not _mask_call(_from_buffer(mask), h, w, _from_buffer(_DOUBLES, ring), n, opts):
+                return mask
     # A list of several rings in a form _seq.rings packs in one C pass (holes,
     # glyphs) is one C call too, on the 32-bit path: the general path's
     # numpy form of the points, its scan of every point for the 64-bit path
@@ -186,16 +198,6 @@ def polygon_mask(rings: PathRings, shape: Shape, *, rule: Rule = "evenodd", algo
                 mask = _empty(shape, _BOOL)
                 if not _mask_rings(_from_buffer(mask), h, w, *got, opts):
                     return mask
-        return _core.mask_polygon(_core.shape2(shape), rings, opts, opts.subpixel_bits)
-    ring = rings[0] if type(rings) is list and len(rings) == 1 else rings
-    if type(ring) is _ndarray and ring.dtype is _I32 and ring.strides == _PACKED32:
-        ring = ring.astype(_F64)  # an OpenCV-style int32 (N, 2) ring: exact as float64
-    if type(ring) is _ndarray and ring.dtype is _F64 and ring.strides == _PACKED and ring.shape[1] == 2 \
-            and ring.flags.aligned and len(ring) >= 3 and _plain_shape(shape) is not None:
-        h, w = shape
-        mask = _empty(shape, _BOOL)
-        if not _mask_call(_from_buffer(mask), h, w, _from_buffer(_DOUBLES, ring), len(ring), opts):
-            return mask
     return _core.mask_polygon(_core.shape2(shape), rings, opts, opts.subpixel_bits)
 
 

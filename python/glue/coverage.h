@@ -53,6 +53,11 @@ long rastpy_fill_polygon_gouraud_aa(const rast_target *target, const double *xy,
  * integer rounded to the nearest double once, then scaled by 2^-62
  * (exact).  Each value is read before its own 8 bytes are written. */
 void rastpy_fix62_to_double(void *buf, size_t n);
+/* The same values as float32: each the double above rounded to the
+ * nearest float (what numpy's astype(float32) of it gives), written to
+ * out[0 .. n), which must not overlap buf: one pass, not the double array
+ * then a cast of it. */
+void rastpy_fix62_to_float(const void *buf, void *out, size_t n);
 /* cdef-end */
 
 #endif

@@ -627,16 +627,43 @@ def packed_rings(rings):
     rings of pairs); None for anything else, which _points checks.  No
     point is checked here: the C call refuses a bad one, and the caller
     then takes the general path, which names it."""
-    got = _seq.rings(rings, np.ndarray, _RING_DTYPES) if type(rings) is list else None
+    got = _packed(rings)
     if got is None:
         return None
     raw, sizes = got
     pts = np.frombuffer(raw, _F64).reshape(-1, 2)
-    if len(pts) > lib.RAST_MAX_POINTS:
-        return None
     if sizes is None:
         return pts, ffi.NULL, 1
-    return pts, ffi.from_buffer("uint32_t[]", sizes), len(sizes) >> 2
+    return pts, _from_buffer(_UINT32S, sizes), len(sizes) >> 2
+
+
+def packed_call(rings):
+    """packed_rings' rings as one C call takes them: (the points as a
+    ``double[]`` cdata, their number, ring sizes or NULL, number of rings),
+    or None.  No numpy array is made of the points (a quick path's call
+    needs their memory and count only; its errors go to the general path,
+    which packs them again and names the bad point)."""
+    got = _packed(rings)
+    if got is None:
+        return None
+    raw, sizes = got
+    if sizes is None:
+        return _from_buffer(_DOUBLES, raw), len(raw) >> 4, ffi.NULL, 1
+    return _from_buffer(_DOUBLES, raw), len(raw) >> 4, _from_buffer(_UINT32S, sizes), len(sizes) >> 2
+
+
+def _packed(rings):
+    """(bytearray of float64 (x, y) pairs, bytearray of uint32 ring sizes or
+    None for one ring) of a list _seq.rings reads, at most RAST_MAX_POINTS
+    points; None for anything else."""
+    got = _seq.rings(rings, np.ndarray, _RING_DTYPES) if type(rings) is list else None
+    if got is None or len(got[0]) > _MAX_POINTS_BYTES:
+        return None
+    return got
+
+
+_from_buffer, _DOUBLES, _UINT32S = ffi.from_buffer, ffi.typeof("double[]"), ffi.typeof("uint32_t[]")
+_MAX_POINTS_BYTES = 16 * lib.RAST_MAX_POINTS  # two float64 a point
 
 
 def _points(rings):

@@ -106,7 +106,7 @@ def _dtype(dtype):
 # checked them; only for str names, an int S and a float offset (so that
 # True, 8.0 or 0 still take the general path and its checks).
 _QUICK = {}
-_ndarray, _empty, _concatenate, _from_buffer = np.ndarray, np.empty, np.concatenate, ffi.from_buffer
+_ndarray, _empty, _concatenate, _from_buffer, _NULL = np.ndarray, np.empty, np.concatenate, ffi.from_buffer, ffi.NULL
 _DOUBLES = ffi.typeof("double[]")
 _PACKED = (16, 8)          # strides of a C-contiguous float64 (N, 2) array
 _PACKED_TRIS = (48, 16, 8)  # ... and of an (N, 3, 2) one
@@ -137,22 +137,18 @@ def _lent(fn, *args):
     return result
 
 
-def _quick_key(method, rule, subpixel_bits, sample_offset, dtype):
-    """The _QUICK key of these arguments, or None when they may not take it."""
+def _quick(method, rule, subpixel_bits, sample_offset, dtype):
+    """(the _QUICK key of these arguments, or None when they may not take
+    it; what _QUICK holds under it, or None: nothing, or an unhashable
+    dtype), in one call."""
     if type(subpixel_bits) is int and type(sample_offset) is float and type(method) is str \
             and type(rule) is str:
-        return (method, rule, subpixel_bits, sample_offset, dtype)
-    return None
-
-
-def _quick(key):
-    """What _QUICK holds under `key` (None if nothing, or an unhashable dtype)."""
-    if key is None:
-        return None
-    try:
-        return _QUICK.get(key)
-    except TypeError:  # e.g. dtype=[...]
-        return None
+        key = (method, rule, subpixel_bits, sample_offset, dtype)
+        try:
+            return key, _QUICK.get(key)
+        except TypeError:  # e.g. dtype=[...]
+            return key, None
+    return None, None
 
 
 def _remember(key, opts, fmt, d):
@@ -172,30 +168,33 @@ def _plain_shape(shape):
     return None
 
 
-def _plain_ring(r):
-    return type(r) is _ndarray and r.dtype is _F64 and r.ndim == 2 and r.shape[1] == 2 \
-        and r.shape[0] >= 3
-
-
-def _quick_points(rings):
-    """(float64 points, ring sizes or NULL, number of rings) of rings that
-    need no checking or conversion: one float64 (N, 2) array with N >= 3
-    (C-contiguous), or a list in a form _core.packed_rings reads in one C
-    pass (float64 or int32 arrays of any strides, or (x, y) pairs); None
-    for anything else, which _core._points checks."""
-    if type(rings) is list:
-        if len(rings) == 1:
-            rings = rings[0]
-        else:
-            return _core.packed_rings(rings)  # checked and measured in one C pass
-    if _plain_ring(rings) and rings.strides == _PACKED and len(rings) <= _MAX_POINTS:
-        return rings, ffi.NULL, 1
+def _one_ring(rings):
+    """The ring itself of one float64 (N, 2) array with N >= 3 (C-contiguous,
+    at most RAST_MAX_POINTS), or of a list of one such array; else None."""
+    r = rings[0] if type(rings) is list and len(rings) == 1 else rings
+    if type(r) is _ndarray and r.dtype is _F64 and r.ndim == 2 and r.shape[1] == 2 and r.strides == _PACKED \
+            and 3 <= len(r) <= _MAX_POINTS:
+        return r
     return None
 
 
+def _quick_points(rings):
+    """(points as a ``double[]`` cdata, their number, ring sizes or NULL,
+    number of rings) of rings that need no checking or conversion: one
+    ring as _one_ring takes it, or a list of several in a form
+    _core.packed_rings reads in one C pass (float64 or int32 arrays of any
+    strides, or (x, y) pairs: no numpy array made of them, _core.packed_call);
+    None for anything else, which _core._points checks."""
+    if type(rings) is list and len(rings) != 1:
+        return _core.packed_call(rings)  # checked and measured in one C pass
+    ring = _one_ring(rings)
+    return None if ring is None else (_from_buffer(_DOUBLES, ring), len(ring), _NULL, 1)
+
+
 def _points(rings):
-    quick = _quick_points(rings)
-    return quick if quick is not None else _core._points(rings)
+    """(float64 (N, 2) points, ring sizes or NULL, number of rings), as _core._points."""
+    ring = _one_ring(rings)
+    return (ring, _NULL, 1) if ring is not None else _core._points(rings)
 
 
 def _check(result, pts, opts, what, sizes):
@@ -225,10 +224,14 @@ def _finish(raw, d):
     # In place, over the uint64 array's own memory (C): more arrays of that
     # size (astype, ldexp, or numpy's temporary for a ufunc whose output
     # overlaps its input) cost more than the arithmetic, in fresh pages.
+    if d == _F32:  # float32 straight from the integers: one pass, no float64 array then a cast
+        out = _empty(raw.shape, _F32)
+        if raw.size:
+            lib.rastpy_fix62_to_float(_from_buffer(raw), _from_buffer(out), raw.size)
+        return out
     if raw.size:
         lib.rastpy_fix62_to_double(_from_buffer(raw), raw.size)
-    out = raw.view(np.float64)
-    return out if d == _F64 else out.astype(d)
+    return raw.view(np.float64)
 
 
 def _path_coverage(path, shape, quick, tolerance):
@@ -296,8 +299,7 @@ def polygon_coverage(rings: PathRings, shape: Shape, *, rule: Rule = "evenodd", 
     >>> rastrum.polygon_coverage([(0.5, 0), (2, 0), (2, 1), (0.5, 1)], (1, 3))
     array([[128, 255,   0]], dtype=uint8)
     """
-    key = _quick_key(method, rule, subpixel_bits, sample_offset, dtype)
-    quick = _quick(key)
+    key, quick = _quick(method, rule, subpixel_bits, sample_offset, dtype)
     if type(rings) is _Path and quick is not None and _plain_shape(shape) is not None:
         got = _path_coverage(rings, shape, quick, tolerance)
         if got is not None:
@@ -308,11 +310,10 @@ def polygon_coverage(rings: PathRings, shape: Shape, *, rule: Rule = "evenodd", 
         points = _quick_points(rings)
         if points is not None:
             opts, fmt, c_dtype, d = quick
-            pts, sizes, nrings = points
+            xy, n, sizes, nrings = points
             h, w = shape
             raw = _empty(shape, c_dtype)
-            if not _lent(_poly_call, _from_buffer(raw), h, w, fmt, _from_buffer(_DOUBLES, pts), len(pts),
-                         sizes, nrings, opts):
+            if not _lent(_poly_call, _from_buffer(raw), h, w, fmt, xy, n, sizes, nrings, opts):
                 return raw if fmt != _FIX62 else _finish(raw, d)
             # an error: the general path says which
     opts = _opts(method, rule, subpixel_bits, sample_offset, "polygon_coverage")
@@ -397,8 +398,7 @@ def triangles_coverage(tris: npt.ArrayLike, shape: Shape, *, method: CoverageMet
     >>> rastrum.triangles_coverage(sq, (2, 2)).tolist()
     [[255, 255], [255, 255]]
     """
-    key = _quick_key(method, "nonzero", subpixel_bits, sample_offset, dtype)
-    quick = _quick(key)
+    key, quick = _quick(method, "nonzero", subpixel_bits, sample_offset, dtype)
     if quick is not None and _plain_shape(shape) is not None and type(tris) is _ndarray \
             and tris.dtype is _F64 and tris.strides == _PACKED_TRIS and tris.shape[1:] == (3, 2) \
             and 0 < 3 * len(tris) <= _MAX_POINTS:

@@ -452,7 +452,10 @@ static inline void rast__acc_col_step(uint64_t *cell, uint32_t *r, uint32_t qtsr
  * next vertical it crosses (as the part in the row above leaves it) or
  * set there; off as rast__acc_part's; right: e goes right (ca < cb), a
  * constant at each call.  The verticals between are crossed at ordinates
- * in [0, QT] (floors of values in it) in order: no clamping. */
+ * in [0, QT] (floors of values in it) in order: no clamping.  The cells
+ * touched, from the lesser of ca and cb to the greater + 1, are the
+ * caller's to mark (rast__acc_run_row: not in a dense band, whose span
+ * covers them). */
 RAST__HOT void rast__acc_cols_in(rast__acc *a, rast__cedge *e, int64_t off, int64_t xa, int64_t xb,
                                  int64_t ca, int64_t cb, int right)
 {
@@ -476,13 +479,11 @@ RAST__HOT void rast__acc_cols_in(rast__acc *a, rast__cedge *e, int64_t off, int6
         for (col = ca + 1; col != cb; col++)
             rast__acc_col_step(&acc[col * RAST__ACC_SX], &qtr, qtsr, adx, d0, d1, &prev, &sum);
         acc[cb * RAST__ACC_SX] += prev;
-        rast__acc_mark(a, (int32_t)ca, (int32_t)cb + 1);
         f = 0;
     } else {
         for (col = ca - 1; col != cb; col--)
             rast__acc_col_step(&acc[(col + 1) * RAST__ACC_SX], &qtr, qtsr, adx, d0, d1, &prev, &sum);
         acc[(cb + 1) * RAST__ACC_SX] += prev;
-        rast__acc_mark(a, (int32_t)cb, (int32_t)ca + 1);
         f = QT;
     }
     /* the last vertical's ordinate: the first's and the columns' heights
@@ -553,15 +554,15 @@ RAST__HOT void rast__acc_run_row(rast__acc *a, rast__cedge *e, rast__acc_run *u,
         e->qt += e->qts + rast__acc_carry(&qtr, adx);
         e->qtr = qtr;
         e->qX += right ? 1 : -1;
-        if (marks && right)
-            rast__acc_mark(a, (int32_t)ca, (int32_t)cb + 1);
-        else if (marks)
-            rast__acc_mark(a, (int32_t)cb, (int32_t)ca + 1);
     } else if (right) {
         rast__acc_cols_r(a, e, off, u->qx, xb, ca, cb);
     } else {
         rast__acc_cols_l(a, e, off, u->qx, xb, ca, cb);
     }
+    if (marks && ca != cb && right) /* (the columns crossed: a dense band's span has them) */
+        rast__acc_mark(a, (int32_t)ca, (int32_t)cb + 1);
+    else if (marks && ca != cb)
+        rast__acc_mark(a, (int32_t)cb, (int32_t)ca + 1);
     u->qx = xb;
     u->ca = cb;
 }

@@ -203,7 +203,7 @@ static void fd_start(flat_fd *s, const int32_t *c, int d, int64_t n)
     s->r0 = n * n * n;
     fd_part(2 * (a * n * n + b * n + g), den, &s->q1, &s->r1);
     fd_part(2 * (2 * b * n + 6 * g), den, &s->q2, &s->r2);
-    fd_part(12 * g, den, &s->q3, &s->r3);
+    if (d == 3) fd_part(12 * g, den, &s->q3, &s->r3); /* a quadratic's is 0, not used */
 }
 
 /* (q, r) += (dq, dr), r kept in [0, den). */

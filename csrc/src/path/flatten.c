@@ -77,10 +77,25 @@ uint32_t rast__isqrt_ceil(uint64_t v)
     return (uint64_t)r * r < v ? r + 1 : r;
 }
 
+/* dd = max_k |D_k|^2, the largest squared second difference (step 4). */
+static uint64_t curve_dd(const rast_point *p, int d)
+{
+    uint64_t dd = 0;
+    int k;
+    for (k = 0; k + 2 <= d; k++) {
+        int64_t dx = (int64_t)p[k].x - 2 * (int64_t)p[k + 1].x + p[k + 2].x;
+        int64_t dy = (int64_t)p[k].y - 2 * (int64_t)p[k + 1].y + p[k + 2].y;
+        uint64_t s = (uint64_t)(dx * dx) + (uint64_t)(dy * dy);
+        if (s > dd) dd = s;
+    }
+    return dd;
+}
+
+#if !defined(__OPTIMIZE_SIZE__)
 /* Whether n edges are enough (step 4 above, without a square root):
  * n^2 >= ceil(c m / q) iff n^2 q >= c m iff K = floor(n^2 q / c) >= m
- * (m an integer) iff K >= sqrt(dd) iff K^2 >= dd (K >= 0).  n < 2^17, q <
- * 2^29: n^2 q < 2^63; K >= 2^30 is enough (dd <= 2^59). */
+ * (m an integer) iff K >= sqrt(dd) iff K^2 >= dd (K >= 0).  n <= 2^16, q
+ * < 2^29: n^2 q < 2^61; K >= 2^30 is enough (dd <= 2^59). */
 static int enough_edges(uint64_t n, uint64_t dd, uint64_t q, int d)
 {
     uint64_t k = n * n * q;
@@ -91,19 +106,14 @@ static int enough_edges(uint64_t n, uint64_t dd, uint64_t q, int d)
 /* The number of edges of a curve of degree d (2 or 3) with control points
  * p[0 .. d] at tolerance tol (step 4 above): the smallest n >= 1 that is
  * enough (enough_edges), by doubling from 1 and then halving the last
- * step, so ~2 log2(n) tests (a flat curve: one) and no square root; the
- * same n as n = ceil(sqrt(ceil(c m / (4T - 3)))). */
+ * step, so ~2 log2(n) tests (a flat curve: one) and no square root (two
+ * bit-by-bit roots cost ~330 instructions a curve); the same n as n =
+ * ceil(sqrt(ceil(c m / (4T - 3)))), which a build for size computes so
+ * (the smaller code). */
 uint32_t rast__curve_edges(const rast_point *p, int d, int32_t tol)
 {
-    uint64_t dd = 0, q = (uint64_t)4 * (uint64_t)tol - 3;
+    uint64_t dd = curve_dd(p, d), q = (uint64_t)4 * (uint64_t)tol - 3;
     uint32_t lo, hi, mid;
-    int k;
-    for (k = 0; k + 2 <= d; k++) {
-        int64_t dx = (int64_t)p[k].x - 2 * (int64_t)p[k + 1].x + p[k + 2].x;
-        int64_t dy = (int64_t)p[k].y - 2 * (int64_t)p[k + 1].y + p[k + 2].y;
-        uint64_t s = (uint64_t)(dx * dx) + (uint64_t)(dy * dy);
-        if (s > dd) dd = s;
-    }
     /* enough(hi), not enough(lo) (lo = 0: below any count); hi <= 2^16 */
     for (lo = 0, hi = 1; !enough_edges(hi, dd, q, d); hi *= 2) lo = hi;
     while (hi - lo > 1) {
@@ -115,6 +125,14 @@ uint32_t rast__curve_edges(const rast_point *p, int d, int32_t tol)
     }
     return hi;
 }
+#else
+uint32_t rast__curve_edges(const rast_point *p, int d, int32_t tol)
+{
+    uint64_t m = rast__isqrt_ceil(curve_dd(p, d)), q = (uint64_t)4 * (uint64_t)tol - 3;
+    uint32_t n = rast__isqrt_ceil(((d == 3 ? 3 : 1) * m + q - 1) / q);
+    return n ? n : 1;
+}
+#endif
 
 /* floor(num / den + 1/2) for den > 0, |2 num + den| < 2^62. */
 static int32_t round_div(int64_t num, int64_t den)
@@ -172,11 +190,14 @@ rast_point rast__curve_point(const rast_point *p, int d, uint32_t i, uint32_t n)
  * differences X(1) - X(0) = 2 (a n^2 + b n + g), the second 2 (2 b n + 6
  * g), the third 12 g; each of the four is kept as q D + r, 0 <= r < D, and
  * a step adds them pairwise (a carry when a remainder reaches D): exact,
- * no division but three per coordinate at the start.  Ranges: |e_k| <
- * 2^28, n <= 47,726 (a quadratic's <= 27,556), so |a n^2| < 3 2^28 n^2 <
- * 2^61.1 and the first difference is < 2^62.2, the others far less; D <
- * 2^48; the quotients stay near the coordinates' (< 2^36: X/D at t <= (n
- * + 2)/n <= 3, past the curve's end only in the differences not used). */
+ * no division but three per coordinate at the start (two for a
+ * quadratic).  Ranges: |e_k| < 2^28, so |a| < 3 2^28, |b| < 9 2^28, |g| <
+ * 8 2^28; n <= 47,726 (a quadratic's <= 27,555), so |a n^2| < 2^61 and the
+ * first difference is < 2^62, the others far less; D < 2^48, r + dr <
+ * 2^49.  The quotients: X/D - 1/2 = B(t) - c_0 with t = j/n <= 2 (the last
+ * step makes a second difference that reaches X(n + 1), never used), so
+ * |X/D| < (6 + 36 + 64) 2^28 + 1 < 2^35, and a difference of up to four
+ * such values is < 2^37: far inside int64_t. */
 typedef struct flat_fd {
     int64_t q0, r0, q1, r1, q2, r2, q3, r3;
 } flat_fd;

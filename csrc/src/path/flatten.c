@@ -277,12 +277,6 @@ static void curve_points(rast_point *out, const rast_point *q, int d, uint32_t n
     else
         fd_points(out, q, 0, n);
 }
-#else
-static void curve_points(rast_point *out, const rast_point *q, int d, uint32_t n)
-{
-    uint32_t i;
-    for (i = 1; i < n; i++) out[i - 1] = rast__curve_point(q, d, i, n);
-}
 #endif
 
 static int in_range(rast_point p)
@@ -371,12 +365,32 @@ rast_status rast__path_flatten(const rast_path *path, int32_t tolerance, rast__f
                 n = rast__curve_edges(q, d, tolerance);
                 total += n;
                 if (total > RAST_MAX_POINTS) return RAST_E_TOO_MANY;
+#if !defined(__OPTIMIZE_SIZE__)
                 if (f->points) {
                     if (n > 1) curve_points(f->points + f->npoints, q, d, n);
                     f->points[f->npoints + n - 1] = q[d];
                     f->ring_sizes[f->nrings - 1] += n;
                 }
                 f->npoints += n;
+#else /* a build for size: each point eval_coord's (the smaller code) */
+                if (f->points) {
+                    int32_t xs[4], ys[4];
+                    uint32_t i;
+                    for (j = 0; j <= d; j++) {
+                        xs[j] = q[j].x;
+                        ys[j] = q[j].y;
+                    }
+                    for (i = 1; i < n; i++) {
+                        rast_point w;
+                        w.x = eval_coord(xs, d, i, n);
+                        w.y = eval_coord(ys, d, i, n);
+                        put(f, w);
+                    }
+                    put(f, q[d]);
+                } else {
+                    f->npoints += n;
+                }
+#endif
                 cur = q[d];
             }
         }

@@ -398,6 +398,12 @@ build/cbench_scale: bench/cbench_scale.c bench/cbench_time.h build/librastrum.a
 cbench-scale: build/cbench_scale
 	@tools/callgrind-scale.sh build/cbench_scale
 
+# The path flattener alone (issue 34): `python bench/dump_path.py FILE`,
+# then `valgrind --tool=callgrind --toggle-collect=flatten_pass
+# build/cbench_flatten FILE flatten` (or count_pass ... size).
+build/cbench_flatten: bench/cbench_flatten.c build/librastrum.a
+	@$(CC) $(WARN) -O2 -Icsrc/include $< build/librastrum.a -o $@
+
 bench-precision: build/bench_precision
 	@./build/bench_precision $(ROUNDS)
 

@@ -1,7 +1,10 @@
 /* Binding glue of paths (not part of the core): rast_path_flatten into
  * one block (scratch lent by the caller, else malloc), subpaths of fewer
  * than 3 vertices left out (as rastrum.Path.flatten leaves them out: they
- * enclose nothing), then one rast_fill_polygon_aa.  The points are in
+ * enclose nothing), then one rast_fill_polygon_aa.  The vertices are
+ * rast_path_flatten's: counted by rast_path_flatten_size, then made in one
+ * pass of rast__path_flatten (path/path.h) into the block sized by the
+ * count, without rast_path_flatten's second count.  The points are in
  * units of the fill's grid (1/2^opts->subpixel_bits pixel) already, so the
  * filler takes the flattened vertices exactly as Path.flatten returns them
  * (docs/paths.md). */
@@ -9,6 +12,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include "pathfill.h"
+#include "path/path.h"
 
 static size_t rastpy_up16(size_t n)
 {
@@ -26,6 +30,7 @@ static long rastpy_path_run(const rast_target *target, const void *pixel, void *
     static const int32_t size[3] = {1, 2, 8};
     rast_path path;
     rast_polygon poly;
+    rast__flat flat;
     rast_status st;
     uint32_t np, nr, k, kept, from, to;
     size_t need, head, sizes;
@@ -65,7 +70,14 @@ static long rastpy_path_run(const rast_target *target, const void *pixel, void *
         return RASTPY_E_NOMEM;
     pts = (rast_point *)(void *)mem;
     ring_sizes = (uint32_t *)(void *)(mem + head);
-    st = rast_path_flatten(&path, tolerance, pts, np, ring_sizes, nr, &poly);
+    /* the path checked and counted above: flattened in one pass, not
+     * counted again first as rast_path_flatten would (path/path.h) */
+    memset(&flat, 0, sizeof flat);
+    flat.points = pts;
+    flat.ring_sizes = ring_sizes;
+    st = rast__path_flatten(&path, tolerance, &flat);
+    poly.points = pts;
+    poly.ring_sizes = ring_sizes;
     if (st == RAST_OK) {
         /* leave out the rings of fewer than 3 vertices, in place */
         kept = from = to = 0;

@@ -100,12 +100,10 @@ uint32_t rast__isqrt_ceil(uint64_t v)
     return (uint64_t)r * r < v ? r + 1 : r;
 }
 
-/* The number of edges of a curve of degree d (2 or 3) with control points
- * p[0 .. d] at tolerance tol (step 4 above). */
-uint32_t rast__curve_edges(const rast_point *p, int d, int32_t tol)
+/* dd = max_k |D_k|^2, the largest squared second difference (step 4). */
+static uint64_t curve_dd(const rast_point *p, int d)
 {
-    uint64_t dd = 0, m, need, q = (uint64_t)4 * (uint64_t)tol - 3;
-    uint32_t n;
+    uint64_t dd = 0;
     int k;
     for (k = 0; k + 2 <= d; k++) {
         int64_t dx = (int64_t)p[k].x - 2 * (int64_t)p[k + 1].x + p[k + 2].x;
@@ -113,11 +111,51 @@ uint32_t rast__curve_edges(const rast_point *p, int d, int32_t tol)
         uint64_t s = (uint64_t)(dx * dx) + (uint64_t)(dy * dy);
         if (s > dd) dd = s;
     }
-    m = rast__isqrt_ceil(dd);
-    need = ((d == 3 ? 3 : 1) * m + q - 1) / q;
-    n = rast__isqrt_ceil(need);
+    return dd;
+}
+
+#if !defined(__OPTIMIZE_SIZE__)
+/* Whether n edges are enough (step 4 above, without a square root):
+ * n^2 >= ceil(c m / q) iff n^2 q >= c m iff K = floor(n^2 q / c) >= m
+ * (m an integer) iff K >= sqrt(dd) iff K^2 >= dd (K >= 0).  n <= 2^16, q
+ * < 2^29: n^2 q < 2^61; K >= 2^30 is enough (dd <= 2^59). */
+static int enough_edges(uint64_t n, uint64_t dd, uint64_t q, int d)
+{
+    uint64_t k = n * n * q;
+    if (d == 3) k /= 3;
+    return k >= ((uint64_t)1 << 30) || k * k >= dd;
+}
+
+/* The number of edges of a curve of degree d (2 or 3) with control points
+ * p[0 .. d] at tolerance tol (step 4 above): the smallest n >= 1 that is
+ * enough (enough_edges), by doubling from 1 and then halving the last
+ * step, so ~2 log2(n) tests (a flat curve: one) and no square root (two
+ * bit-by-bit roots cost ~330 instructions a curve); the same n as n =
+ * ceil(sqrt(ceil(c m / (4T - 3)))), which a build for size computes so
+ * (the smaller code). */
+uint32_t rast__curve_edges(const rast_point *p, int d, int32_t tol)
+{
+    uint64_t dd = curve_dd(p, d), q = (uint64_t)4 * (uint64_t)tol - 3;
+    uint32_t lo, hi, mid;
+    /* enough(hi), not enough(lo) (lo = 0: below any count); hi <= 2^16 */
+    for (lo = 0, hi = 1; !enough_edges(hi, dd, q, d); hi *= 2) lo = hi;
+    while (hi - lo > 1) {
+        mid = lo + (hi - lo) / 2;
+        if (enough_edges(mid, dd, q, d))
+            hi = mid;
+        else
+            lo = mid;
+    }
+    return hi;
+}
+#else
+uint32_t rast__curve_edges(const rast_point *p, int d, int32_t tol)
+{
+    uint64_t m = rast__isqrt_ceil(curve_dd(p, d)), q = (uint64_t)4 * (uint64_t)tol - 3;
+    uint32_t n = rast__isqrt_ceil(((d == 3 ? 3 : 1) * m + q - 1) / q);
     return n ? n : 1;
 }
+#endif
 
 /* floor(num / den + 1/2) for den > 0, |2 num + den| < 2^62. */
 static int32_t round_div(int64_t num, int64_t den)
@@ -162,6 +200,107 @@ rast_point rast__curve_point(const rast_point *p, int d, uint32_t i, uint32_t n)
     w.y = eval_coord(ys, d, i, n);
     return w;
 }
+
+#if !defined(__OPTIMIZE_SIZE__)
+/* The points of a curve by forward differences (not in a build for size:
+ * there each point is eval_coord's, the same points in less code).  Per
+ * coordinate, with e_k = c_k - c_0, B(t) - c_0 = a t + b t^2 + g t^3: a
+ * = 3 e1, b = 3 (e2 - 2 e1), g = e3 - 3 e2 + 3 e1 (cubic); a = 2 e1, b =
+ * e2 - 2 e1, g = 0 (quadratic).  eval_coord's rounded value is c_0 +
+ * floor(X(i) / D), X(i) = 2 n^3 (B(i/n) - c_0) + n^3 = 2 (a n^2 i + b n
+ * i^2 + g i^3) + n^3, D = 2 n^3 (a quadratic's numerator and denominator
+ * there times n: the same quotient).  X is a cubic in i: X(0) = n^3, its
+ * differences X(1) - X(0) = 2 (a n^2 + b n + g), the second 2 (2 b n + 6
+ * g), the third 12 g; each of the four is kept as q D + r, 0 <= r < D, and
+ * a step adds them pairwise (a carry when a remainder reaches D): exact,
+ * no division but three per coordinate at the start (two for a
+ * quadratic).  Ranges: |e_k| < 2^28, so |a| < 3 2^28, |b| < 9 2^28, |g| <
+ * 8 2^28; n <= 47,726 (a quadratic's <= 27,555), so |a n^2| < 2^61 and the
+ * first difference is < 2^62, the others far less; D < 2^48, r + dr <
+ * 2^49.  The quotients: X/D - 1/2 = B(t) - c_0 with t = j/n <= 2 (the last
+ * step makes a second difference that reaches X(n + 1), never used), so
+ * |X/D| < (6 + 36 + 64) 2^28 + 1 < 2^35, and a difference of up to four
+ * such values is < 2^37: far inside int64_t. */
+typedef struct flat_fd {
+    int64_t q0, r0, q1, r1, q2, r2, q3, r3;
+} flat_fd;
+
+static void fd_part(int64_t v, int64_t den, int64_t *q, int64_t *r)
+{
+    *q = rast__floordiv(v, den);
+    *r = v - *q * den;
+}
+
+static void fd_start(flat_fd *s, const int32_t *c, int d, int64_t n)
+{
+    int64_t e1 = (int64_t)c[1] - c[0], e2 = (int64_t)c[2] - c[0], a, b, g, den = 2 * n * n * n;
+    if (d == 3) {
+        a = 3 * e1;
+        b = 3 * (e2 - 2 * e1);
+        g = (int64_t)c[3] - c[0] - 3 * e2 + 3 * e1;
+    } else {
+        a = 2 * e1;
+        b = e2 - 2 * e1;
+        g = 0;
+    }
+    s->q0 = 0;
+    s->r0 = n * n * n;
+    fd_part(2 * (a * n * n + b * n + g), den, &s->q1, &s->r1);
+    fd_part(2 * (2 * b * n + 6 * g), den, &s->q2, &s->r2);
+    if (d == 3) fd_part(12 * g, den, &s->q3, &s->r3); /* a quadratic's is 0, not used */
+}
+
+/* (q, r) += (dq, dr), r kept in [0, den). */
+RAST__HOT void fd_add(int64_t *q, int64_t *r, int64_t dq, int64_t dr, int64_t den)
+{
+    *q += dq;
+    *r += dr;
+    if (*r >= den) {
+        *r -= den;
+        *q += 1;
+    }
+}
+
+/* One step, i to i + 1 (the third difference is constant). */
+RAST__HOT void fd_step(flat_fd *s, int cubic, int64_t den)
+{
+    fd_add(&s->q0, &s->r0, s->q1, s->r1, den);
+    fd_add(&s->q1, &s->r1, s->q2, s->r2, den);
+    if (cubic) fd_add(&s->q2, &s->r2, s->q3, s->r3, den);
+}
+
+/* The points i = 1 .. n - 1 of the curve q[0 .. d] into out[0 .. n - 1),
+ * each eval_coord's (n >= 2). */
+RAST__HOT void fd_points(rast_point *out, const rast_point *q, int cubic, uint32_t n)
+{
+    int32_t xs[4], ys[4];
+    flat_fd fx, fy;
+    int64_t den = 2 * (int64_t)n * n * n;
+    uint32_t i;
+    int j, d = cubic ? 3 : 2;
+    for (j = 0; j <= d; j++) {
+        xs[j] = q[j].x;
+        ys[j] = q[j].y;
+    }
+    fd_start(&fx, xs, d, n);
+    fd_start(&fy, ys, d, n);
+    for (i = 1; i < n; i++) {
+        fd_step(&fx, cubic, den);
+        fd_step(&fy, cubic, den);
+        out[i - 1].x = xs[0] + (int32_t)fx.q0;
+        out[i - 1].y = ys[0] + (int32_t)fy.q0;
+    }
+}
+
+/* The curve's points i = 1 .. n - 1 into out (n >= 2). */
+static void curve_points(rast_point *out, const rast_point *q, int d, uint32_t n)
+{
+    if (d == 3)
+        fd_points(out, q, 1, n);
+    else
+        fd_points(out, q, 0, n);
+}
+#endif
 
 static int in_range(rast_point p)
 {
@@ -242,15 +381,24 @@ rast_status rast__path_flatten(const rast_path *path, int32_t tolerance, rast__f
             } else {
                 int d = v; /* RAST_PATH_QUAD = 2, RAST_PATH_CUBIC = 3: the degree */
                 rast_point q[4];
-                int32_t xs[4], ys[4];
-                uint32_t n, i;
+                uint32_t n;
                 int j;
                 q[0] = cur;
                 for (j = 1; j <= d; j++) q[j] = *p++;
                 n = rast__curve_edges(q, d, tolerance);
                 total += n;
                 if (total > RAST_MAX_POINTS) return RAST_E_TOO_MANY;
+#if !defined(__OPTIMIZE_SIZE__)
                 if (f->points) {
+                    if (n > 1) curve_points(f->points + f->npoints, q, d, n);
+                    f->points[f->npoints + n - 1] = q[d];
+                    f->ring_sizes[f->nrings - 1] += n;
+                }
+                f->npoints += n;
+#else /* a build for size: each point eval_coord's (the smaller code) */
+                if (f->points) {
+                    int32_t xs[4], ys[4];
+                    uint32_t i;
                     for (j = 0; j <= d; j++) {
                         xs[j] = q[j].x;
                         ys[j] = q[j].y;
@@ -265,6 +413,7 @@ rast_status rast__path_flatten(const rast_path *path, int32_t tolerance, rast__f
                 } else {
                     f->npoints += n;
                 }
+#endif
                 cur = q[d];
             }
         }

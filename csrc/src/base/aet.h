@@ -148,6 +148,44 @@ static inline int32_t rast__aet_join(rast__edge *aet, int32_t n, rast__edge *add
     return total;
 }
 
+#if !defined(__OPTIMIZE_SIZE__)
+/* rast__aet_join for a run function's own row pass (span NULL, the
+ * order hook's: supersampling), 16 < k <= RAST__AET_KEYS edges (fewer:
+ * the records' insertion sort is quicker): what is sorted
+ * is a key an edge, its column over its index (so that the order is the
+ * stable one), not the 48-byte records, which each move once, into the
+ * AET.  Sorting the records (insertion, or a heapsort past its budget)
+ * was a sixteenth of a stroke outline's supersampled fill (a score of
+ * short edges joining on most fine rows).  The heapsort may order edges
+ * of equal column otherwise: the order hook's counts do not depend on
+ * that order (rast__aet_order_fn); the run functions' users keep
+ * rast__aet_join. */
+#define RAST__AET_KEYS 64
+static inline int32_t rast__aet_join_keys(rast__edge *aet, int32_t n, const rast__edge *add,
+                                          int32_t k)
+{
+    uint64_t key[RAST__AET_KEYS];
+    const int32_t total = n + k;
+    int32_t i, m = total;
+    for (i = 0; i < k; i++) {
+        const uint64_t v = ((uint64_t)((uint32_t)add[i].x ^ 0x80000000u) << 32) | (uint32_t)i;
+        int32_t at = i;
+        for (; at > 0 && key[at - 1] > v; at--) key[at] = key[at - 1];
+        key[at] = v;
+    }
+    for (n--, k--; k >= 0;) {
+        const rast__edge *e = &add[(uint32_t)key[k]];
+        if (n >= 0 && aet[n].x > e->x)
+            aet[--m] = aet[n--];
+        else {
+            aet[--m] = *e;
+            k--;
+        }
+    }
+    return total;
+}
+#endif
+
 /* The walk once the edge table is set up: nedges edge records in aet[]
  * (each with `row` its first row in [row0, row1)), bucket[r - row0 + 1]
  * holding how many start on row r (bucket[0] = 0).  Groups the table by
@@ -182,7 +220,12 @@ static inline void rast__aet_sweep(rast__edge *edges, rast__edge *aet, int32_t *
         if (last != first) {
             for (k = first; k < last; k++)
                 if (edges[k].end < soonest) soonest = edges[k].end;
-            nactive = rast__aet_join(aet, nactive, &edges[first], last - first);
+#if !defined(__OPTIMIZE_SIZE__)
+            if (!span && last - first > 16 && last - first <= RAST__AET_KEYS)
+                nactive = rast__aet_join_keys(aet, nactive, &edges[first], last - first);
+            else
+#endif
+                nactive = rast__aet_join(aet, nactive, &edges[first], last - first);
             first = last;
         }
         if (nactive == 0) continue;
@@ -209,10 +252,19 @@ static inline void rast__aet_sweep(rast__edge *edges, rast__edge *aet, int32_t *
          * compaction is a separate, rare pass, and finds the next such
          * row). */
         if (soonest == j + 1) {
+            /* the edges before the first that ends stay where they are
+             * (copying each onto itself cost a percent of a map's
+             * supersampled walk), but in a build for size (flash) */
+#if defined(__OPTIMIZE_SIZE__)
             for (soonest = row1, m = n = 0; n < nactive; n++) {
+#else
+            for (soonest = row1, n = 0; n < nactive && aet[n].end != j + 1; n++)
+                if (aet[n].end < soonest) soonest = aet[n].end;
+            for (m = n; n < nactive; n++) {
+#endif
                 if (aet[n].end == j + 1) continue;
                 if (aet[n].end < soonest) soonest = aet[n].end;
-                aet[m++] = aet[n]; /* (onto itself until the first that ends) */
+                aet[m++] = aet[n];
             }
             nactive = m;
         }

@@ -280,6 +280,9 @@ static int rast__ss_dense_of(uint64_t sum, int32_t lo, int32_t hi, const rast__s
                (uint64_t)(ss->fx1 - ss->fx0) >> ss->kbits;
 }
 
+#if defined(__OPTIMIZE_SIZE__)
+/* (a build for size: from the rings, before the walk's setup, which saves
+ * the setup's call and the walk's, inlined in rast__aet_walk) */
 static int rast__ss_dense(const rast_polygon *poly, const rast__ss *ss)
 {
     const rast_point *p = poly->points;
@@ -299,6 +302,21 @@ static int rast__ss_dense(const rast_polygon *poly, const rast__ss *ss)
     }
     return rast__ss_dense_of(sum, lo, hi, ss);
 }
+#else
+/* The polygon's test from its walk's edge records (rast__aet_prepare):
+ * the fine rows each crosses, summed, over the visible rows (the same
+ * ratio as the heights over the height), counted in the setup's records
+ * (a pass over the rings for it was a thirtieth of a stroke outline's
+ * ss4). */
+static int rast__ss_dense_tab(const rast__aet_tab *t, const rast__ss *ss)
+{
+    uint64_t sum = 0;
+    int32_t k;
+    if (ss->o->format != RAST_COVERAGE_U8) return 0;
+    for (k = 0; k < t->nedges; k++) sum += (uint32_t)(t->aet[k].end - t->aet[k].row);
+    return rast__ss_dense_of(sum, t->row0, t->row1, ss);
+}
+#endif
 
 /* 1 when every crossing of the polygon (points on the fine grid, S
  * fraction bits) lies within the fine clip's columns: the crossing of a
@@ -417,6 +435,9 @@ rast_status rast__cov_ss(const rast_polygon *poly, uint32_t npoints, int32_t s,
     rast__ss ss;
     rast__grid g;
     rast_rect fine;
+#if !defined(__OPTIMIZE_SIZE__)
+    rast__aet_tab t;
+#endif
     rast__cov_out sub;
     const rast__cov_out *o = &sub;
     rast_status st = rast__grid_init(&g, s, sample, RAST_ROUND_EXACT, RAST_BOUNDARY_EXACT);
@@ -433,10 +454,20 @@ rast_status rast__cov_ss(const rast_polygon *poly, uint32_t npoints, int32_t s,
         rast__ss_finish(&ss);
         return RAST_OK;
     }
+#if defined(__OPTIMIZE_SIZE__)
     ss.dense = rast__ss_dense(poly, &ss);
     st = rast__aet_walk(poly, npoints, &g, rule, &fine, arena, NULL, rast__ss_row_ends, &ss,
                         NULL);
     if (st != RAST_OK) return st;
+#else
+    st = rast__aet_prepare(poly, npoints, &g, &fine, arena, NULL, &t);
+    if (st != RAST_OK) return st;
+    if (t.row0 < t.row1) {
+        ss.dense = rast__ss_dense_tab(&t, &ss);
+        rast__aet_sweep(t.edges, t.aet, t.bucket, t.nedges, t.row0, t.row1, rule, NULL,
+                        rast__ss_row_ends, &ss);
+    }
+#endif
     rast__ss_finish(&ss);
     return RAST_OK;
 }

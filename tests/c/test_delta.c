@@ -80,18 +80,11 @@ static void test_wound(void)
     size_t t;
     CHECK(rast__grid_init(&g, 4, RAST_SAMPLE_CENTER, RAST_ROUND_EXACT, RAST_BOUNDARY_EXACT) == RAST_OK);
     for (t = 0; t < sizeof turns / sizeof turns[0]; t++) {
-        uint32_t n = 3 * turns[t], v;
+        uint32_t n = 3 * turns[t];
         rast_polygon poly;
         rast_rect clip = {0, 0, W, H};
         int32_t i, j, ok = 1, inside = 0;
-        for (v = 0; v < n; v += 3) {
-            pts[v].x = 2 << 4;
-            pts[v].y = 1 << 4;
-            pts[v + 1].x = (W - 3) << 4;
-            pts[v + 1].y = (H / 2) << 4;
-            pts[v + 2].x = 5 << 4;
-            pts[v + 2].y = (H - 2) << 4;
-        }
+        wound_triangle(pts, n);
         poly.points = pts;
         poly.ring_sizes = &n;
         poly.nrings = 1;

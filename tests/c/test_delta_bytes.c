@@ -107,16 +107,9 @@ static void test_wound(void)
     static const uint32_t turns[] = {1, 127, 128, 255, 256, 257, 400};
     size_t t;
     for (t = 0; t < sizeof turns / sizeof turns[0]; t++) {
-        uint32_t n = 3 * turns[t], v;
+        uint32_t n = 3 * turns[t];
         rast_rect clip = {1, 0, W - 2, H};
-        for (v = 0; v < n; v += 3) {
-            pts[v].x = 2 << 4;
-            pts[v].y = 1 << 4;
-            pts[v + 1].x = (W - 3) << 4;
-            pts[v + 1].y = (H / 2) << 4;
-            pts[v + 2].x = 5 << 4;
-            pts[v + 2].y = (H - 2) << 4;
-        }
+        wound_triangle(pts, n);
         check_scene(-1, pts, &n, 1, n, 4, 1, 0, RAST_RULE_NONZERO, &clip,
                     rast__aet_scratch(n, W, H));
     }

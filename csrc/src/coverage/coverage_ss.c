@@ -176,6 +176,23 @@ static inline int32_t rast__ss_at(int32_t x, int32_t fx0, int32_t fx1, int clamp
     return (clamp ? (x < fx0 ? fx0 : x > fx1 ? fx1 : x) : x) - fx0;
 }
 
+/* Edges e[0] and e[1] bound one run of a row (a pair of opposite
+ * directions, or of an even-odd row): the run added, both edges stepped;
+ * 1 when they are out of order after it (with the last abscissa *last
+ * before them), *last set to e[1]'s.  (rast__ss_nz's and rast__ss_eo's
+ * step.) */
+static inline int rast__ss_run2(rast__edge *e, int32_t *d, uint64_t *mark, int32_t kb, int32_t fx0,
+                                int32_t fx1, int clamp, int32_t *last)
+{
+    int swapped;
+    rast__ss_pair(d, mark, kb, rast__ss_at(e[0].x, fx0, fx1, clamp), rast__ss_at(e[1].x, fx0, fx1, clamp));
+    rast__edge_step(&e[0]);
+    rast__edge_step(&e[1]);
+    swapped = (e[0].x < *last) | (e[1].x < e[0].x);
+    *last = e[1].x;
+    return swapped;
+}
+
 /* The runs of a non-zero row (rast__ss_row_ends), their ends clamped
  * with `clamp`, and the edges stepped.  1 when two edges changed places. */
 RAST__HOT int rast__ss_nz(rast__edge *aet, int32_t n, int32_t *d, uint64_t *mark, int32_t kb,
@@ -186,14 +203,8 @@ RAST__HOT int rast__ss_nz(rast__edge *aet, int32_t n, int32_t *d, uint64_t *mark
      * number is back to 0 after each, so each pair bounds one run (most
      * rows of most polygons are only such pairs); from the first pair
      * that is not, edge by edge, the winding number counted from 0. */
-    for (; i + 1 < n && aet[i].dir + aet[i + 1].dir == 0; i += 2) {
-        rast__ss_pair(d, mark, kb, rast__ss_at(aet[i].x, fx0, fx1, clamp),
-                      rast__ss_at(aet[i + 1].x, fx0, fx1, clamp));
-        rast__edge_step(&aet[i]);
-        rast__edge_step(&aet[i + 1]);
-        swapped |= (aet[i].x < last) | (aet[i + 1].x < aet[i].x);
-        last = aet[i + 1].x;
-    }
+    for (; i + 1 < n && aet[i].dir + aet[i + 1].dir == 0; i += 2)
+        swapped |= rast__ss_run2(&aet[i], d, mark, kb, fx0, fx1, clamp, &last);
     for (; i < n; i++) {
         /* (clamped, not yet relative to fx0: taken off at a run only) */
         const int32_t x = rast__ss_at(aet[i].x, fx0, fx1, clamp) + fx0;
@@ -213,14 +224,8 @@ RAST__HOT int rast__ss_eo(rast__edge *aet, int32_t n, int32_t *d, uint64_t *mark
                               int32_t fx0, int32_t fx1, int clamp)
 {
     int32_t i, last = INT32_MIN, swapped = 0;
-    for (i = 0; i + 1 < n; i += 2) {
-        rast__ss_pair(d, mark, kb, rast__ss_at(aet[i].x, fx0, fx1, clamp),
-                      rast__ss_at(aet[i + 1].x, fx0, fx1, clamp));
-        rast__edge_step(&aet[i]);
-        rast__edge_step(&aet[i + 1]);
-        swapped |= (aet[i].x < last) | (aet[i + 1].x < aet[i].x);
-        last = aet[i + 1].x;
-    }
+    for (i = 0; i + 1 < n; i += 2)
+        swapped |= rast__ss_run2(&aet[i], d, mark, kb, fx0, fx1, clamp, &last);
     if (i < n) { /* an odd edge out bounds no run */
         rast__edge_step(&aet[i]);
         swapped |= aet[i].x < last;

@@ -57,6 +57,16 @@ int rast__cov_acc_area_row(rast__cedge *e, const int32_t *row, int32_t nrow, con
                            int32_t nrun, int32_t j, int32_t s, rast_fill_rule rule,
                            const rast__cov_out *o, uint64_t *acc, uint64_t *bits, uint32_t *z,
                            uint64_t *own, uint32_t stamp);
+/* The second half of rast__cov_acc_area_row: row j's parts row[0..nrow),
+ * their ends already in qa, qta, qb, qtb (rast__q_part's quick units),
+ * added with their directions and the levels emitted, when the caller
+ * knows the winding number on every pixel of the row takes two
+ * consecutive values at most (rast__cov_row_groups: each group fast) and
+ * that no column is touched by more than `most` parts (the window).
+ * The same answers and cells. */
+int rast__cov_acc_area_parts(rast__cedge *e, const int32_t *row, int32_t nrow, int32_t most, int32_t j, int32_t s,
+                             rast_fill_rule rule, const rast__cov_out *o, uint64_t *acc, uint64_t *bits,
+                             uint32_t *z);
 
 /* Supersampling k x k (k = 2^kbits) of `poly` (a polygon in range, already
  * scaled or not: see coverage_ss.c) into o. */

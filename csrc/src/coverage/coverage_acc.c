@@ -1280,18 +1280,42 @@ RAST__HOT int rast__acc_meet(uint64_t *own, int32_t c, uint64_t tag, uint32_t pa
     return 1;
 }
 
+/* Does row j of nrow parts fit "area" by the accumulation (its window)? */
+static int rast__acc_area_fits(const rast__cov_out *o, int32_t nrow)
+{
+    const uint32_t m = o->format == RAST_COVERAGE_U8 ? 255 : 65535;
+    return nrow < 512 && ((uint64_t)nrow + 1) * m < ((uint64_t)1 << 25);
+}
+
+/* The parts row[0..nrow) of row j (their ends in qa, qta, qb, qtb), each
+ * whole with its direction, into a's cells, then the row's levels:
+ * rast__acc_emit's answer, its window that of `most` parts (no column is
+ * touched by more). */
+static int rast__acc_area_add(rast__acc *a, rast__cedge *e, const int32_t *row, int32_t nrow, int32_t most,
+                              int32_t j, rast_fill_rule rule, const rast__cov_out *o)
+{
+    const uint32_t m = o->format == RAST_COVERAGE_U8 ? 255 : 65535;
+    const int64_t Yj = (int64_t)j * a->p;
+    int32_t k;
+    for (k = 0; k < nrow; k++) {
+        rast__cedge *ed = &e[row[k]];
+        rast__acc_part(a, ed, -((int64_t)ed->yt - Yj) * ((int64_t)1 << a->hq), ed->qa, ed->qta,
+                       ed->qb, ed->qtb, ed->dir, 1, 0);
+    }
+    return rast__acc_emit(a, 1, o, j, rule, m, rast__acc_win((uint64_t)most, m), e, row, nrow);
+}
+
 int rast__cov_acc_area_row(rast__cedge *e, const int32_t *row, int32_t nrow, const int32_t *runs,
                            int32_t nrun, int32_t j, int32_t s, rast_fill_rule rule,
                            const rast__cov_out *o, uint64_t *acc, uint64_t *bits, uint32_t *z,
                            uint64_t *own, uint32_t stamp)
 {
-    const uint32_t m = o->format == RAST_COVERAGE_U8 ? 255 : 65535;
     const uint64_t tag = (uint64_t)stamp << 32;
     const int32_t w = o->clip.x1 - o->clip.x0;
     rast__acc a;
     int64_t Yj;
     int32_t k, c;
-    if (nrow >= 512 || ((uint64_t)nrow + 1) * m >= ((uint64_t)1 << 25)) return 0;
+    if (!rast__acc_area_fits(o, nrow)) return 0;
     rast__acc_init(&a, acc, bits, z, o, s, nrow);
     Yj = (int64_t)j * a.p;
     for (k = 0; k < nrow; k++) { /* the parts, and the test */
@@ -1313,12 +1337,17 @@ int rast__cov_acc_area_row(rast__cedge *e, const int32_t *row, int32_t nrow, con
         for (c = (int32_t)lo; c <= hi; c++)
             if (!rast__acc_meet(own, c, tag, RAST__OWN_RUN, e, row, Yj, a.p, a.x0)) return 0;
     }
-    for (k = 0; k < nrow; k++) {
-        rast__cedge *ed = &e[row[k]];
-        rast__acc_part(&a, ed, -((int64_t)ed->yt - Yj) * ((int64_t)1 << a.hq), ed->qa, ed->qta,
-                       ed->qb, ed->qtb, ed->dir, 1, 0);
-    }
-    return rast__acc_emit(&a, 1, o, j, rule, m, rast__acc_win((uint64_t)nrow, m), e, row, nrow);
+    return rast__acc_area_add(&a, e, row, nrow, nrow, j, rule, o);
+}
+
+int rast__cov_acc_area_parts(rast__cedge *e, const int32_t *row, int32_t nrow, int32_t most, int32_t j, int32_t s,
+                             rast_fill_rule rule, const rast__cov_out *o, uint64_t *acc, uint64_t *bits,
+                             uint32_t *z)
+{
+    rast__acc a;
+    if (!rast__acc_area_fits(o, most)) return 0;
+    rast__acc_init(&a, acc, bits, z, o, s, nrow);
+    return rast__acc_area_add(&a, e, row, nrow, most, j, rule, o);
 }
 
 int rast__cov_acc_may(const rast__cov_out *o, int32_t s)

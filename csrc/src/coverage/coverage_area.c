@@ -2414,7 +2414,14 @@ rast_status rast__cov_area(rast__cedge *e, uint32_t n, int32_t s, rast_fill_rule
     int32_t fast = 0, same; /* the last row's s if it was a fast row; its edges kept */
     uint64_t *own; /* simple rows (rast__cov_acc_area_row): the columns' marks */
     int32_t *runs, nrun = 0, rnext = 0, rend; /* and the runs, by ordinate */
-    int32_t unsimple = 0; /* the last row was not simple (or not tried) */
+    /* the last row was not simple (or not tried): then a row of its edges
+     * (same) is not tried, nor one that would go by groups (more than
+     * RAST__FAST_CUTS edges) but every fourth: a paragraph of text failed
+     * the test in most of its rows (3 M instructions of 55 M, issue 33),
+     * and a grouped row whose groups are all fast ends in the simple rows'
+     * cells anyway (rast__cov_acc_area_parts).  Either way the levels are
+     * the exact ones: which way a row goes changes no level. */
+    int32_t unsimple = 0;
     int64_t bottom = INT64_MAX; /* the least of the row edges' bottom ordinates */
     const int simple = !accumulate && rast__cov_acc_may(o, s);
     /* rows by groups (rast__cov_row_groups) on every output: its ranges are
@@ -2500,7 +2507,7 @@ rast_status rast__cov_area(rast__cedge *e, uint32_t n, int32_t s, rast_fill_rule
                 rast__cov_row_acc(&c, e, row, nrow, j);
             } else if (fast && same && rast__cov_row_cont(&c, e, row, nrow, j, fast)) {
                 /* done: the fast row's continuation, the cheapest test */
-            } else if (simple && !(unsimple && same) && !(same && nrow <= 4) &&
+            } else if (simple && !(unsimple && (same || (nrow > RAST__FAST_CUTS && (j & 3)))) && !(same && nrow <= 4) &&
                        rast__cov_acc_area_row(e, row, nrow, runs + rnext, rend - rnext, j, s, rule, o,
                                               (uint64_t *)(void *)c.cover, c.bits,
                                               (uint32_t *)(void *)c.area, own,

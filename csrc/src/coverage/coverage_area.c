@@ -1544,16 +1544,20 @@ static int rast__fast_mixed(const rast__cedge *e, const int32_t *g, int32_t m, c
                             int32_t nu, int64_t Yj, const rast__cells *c, int32_t *w, int32_t *s)
 {
     int64_t na[RAST__FAST_MIXED], nb[RAST__FAST_MIXED];
+    int64_t r0[RAST__FAST_MIXED], r1[RAST__FAST_MIXED]; /* each edge's top and bottom - Yj */
     int32_t id[RAST__FAST_MIXED], i, k, n;
     if (m > RAST__FAST_MIXED) return 0;
+    for (k = 0; k < m; k++) { /* (read once, not once a slab) */
+        r0[k] = (int64_t)e[g[k]].yt - Yj;
+        r1[k] = r0[k] + e[g[k]].dy;
+    }
     for (i = 0; i + 1 < nu; i++) {
         /* the slab [Ya, Yb] (fixed units: the ordinates inside the row are
          * vertices', multiples of 2^H) */
-        const int64_t Ya = Yj + (int64_t)(u[i] >> c->h), Yb = Yj + (int64_t)(u[i + 1] >> c->h);
-        for (k = 0, n = 0; k < m; k++) { /* the edges over the slab */
-            const rast__cedge *ed = &e[g[k]];
-            if (ed->yt <= Ya && (int64_t)ed->yt + ed->dy >= Yb) id[n++] = g[k];
-        }
+        const int64_t ra = (int64_t)(u[i] >> c->h), rb = (int64_t)(u[i + 1] >> c->h);
+        const int64_t Ya = Yj + ra, Yb = Yj + rb;
+        for (k = 0, n = 0; k < m; k++) /* the edges over the slab */
+            if (r0[k] <= ra && r1[k] >= rb) id[n++] = g[k];
         if (n == 1) { /* (most slabs: no order to check) */
             w[i] += e[id[0]].dir;
             if (!rast__fast_ok(w[i], s)) return 0;

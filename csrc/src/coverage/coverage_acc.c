@@ -1340,6 +1340,7 @@ int rast__cov_acc_area_row(rast__cedge *e, const int32_t *row, int32_t nrow, con
     return rast__acc_area_add(&a, e, row, nrow, nrow, j, rule, o);
 }
 
+#if !defined(__OPTIMIZE_SIZE__) /* (its one caller: not in size-optimised builds) */
 int rast__cov_acc_area_parts(rast__cedge *e, const int32_t *row, int32_t nrow, int32_t most, int32_t j, int32_t s,
                              rast_fill_rule rule, const rast__cov_out *o, uint64_t *acc, uint64_t *bits,
                              uint32_t *z)
@@ -1349,6 +1350,7 @@ int rast__cov_acc_area_parts(rast__cedge *e, const int32_t *row, int32_t nrow, i
     rast__acc_init(&a, acc, bits, z, o, s, nrow);
     return rast__acc_area_add(&a, e, row, nrow, most, j, rule, o);
 }
+#endif
 
 int rast__cov_acc_may(const rast__cov_out *o, int32_t s)
 {

@@ -1,6 +1,8 @@
 """"area" on rows whose groups all pass the fast tests (coverage_area.c,
-rast__cov_row_groups): such a row is added the quick way (64-bit cells,
-rast__q_piece), and again the exact way only where a level is not certain;
+rast__cov_row_groups): such a row is added the quick way (in builds for
+speed, the accumulation's 64-bit cells, rast__cov_acc_area_parts; where
+those refuse it, or built for size, this file's quick cells, rast__q_piece),
+and again the exact way only where a level is not certain;
 a row with a group to sweep is added the exact way throughout.  Rows of more
 than 32 edges, where the simple rows of the accumulation do not apply
 (three short edges of a flattened curve in one column): many small

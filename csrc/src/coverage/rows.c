@@ -57,9 +57,10 @@ void rast__cov_row_done(const rast__cov_out *o, int32_t y)
 void rast__cov_zero_rows(const rast__cov_out *o, int32_t y0, int32_t y1)
 {
     static const int32_t size[3] = {1, 2, 8};
-    const size_t row = (size_t)(o->clip.x1 - o->clip.x0) * (size_t)size[o->format];
+    size_t row;
     int32_t y;
     if (o->paint || y0 >= y1) return; /* nothing to hand on */
+    row = (size_t)(o->clip.x1 - o->clip.x0) * (size_t)size[o->format];
     /* rows back to back (stride = the row: a whole array's, as the
      * binding's): one memset, not one a row (a small shape's coverage
      * into a 512 x 512 array cleared 500 rows each apart, issue 33) */

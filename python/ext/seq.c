@@ -518,6 +518,20 @@ static PyObject *seq_last_rule, *seq_last_method;
 static const void *seq_last_opts;
 static int seq_last_aa;
 
+/* After a call that lent seq_sc: keep a block as large as it wanted
+ * (within SEQ_SCRATCH_KEEP) for the next. */
+static void seq_keep_scratch(void)
+{
+    if (seq_sc.size < seq_sc.want && seq_sc.want <= SEQ_SCRATCH_KEEP) {
+        void *grown = malloc(seq_sc.want); /* 16-byte aligned, as the glue wants */
+        if (grown) {
+            free(seq_sc.buf);
+            seq_sc.buf = grown;
+            seq_sc.size = seq_sc.want;
+        }
+    }
+}
+
 static void seq_forget_last(void)
 {
     Py_CLEAR(seq_last_rule);
@@ -701,19 +715,152 @@ static PyObject *seq_fill_call(PyObject *self, PyObject *args)
     }
     if (aa) {
         st = seq_fill_aa(t, xy, (uint32_t)n, NULL, 1, opts, pix, &seq_sc);
-        if (seq_sc.size < seq_sc.want && seq_sc.want <= SEQ_SCRATCH_KEEP) {
-            void *grown = malloc(seq_sc.want); /* 16-byte aligned, as the glue wants */
-            if (grown) {
-                free(seq_sc.buf);
-                seq_sc.buf = grown;
-                seq_sc.size = seq_sc.want;
-            }
-        }
+        seq_keep_scratch();
     } else {
         st = seq_fill(t, xy, (uint32_t)n, opts, pix);
     }
     PyMem_Free(heap);
     return PyBool_FromLong(st == 0);
+}
+
+/* rastrum.polygon_coverage's common call, whole in C (issue 33: its
+ * Python and cffi cost more than the C of a small polygon's coverage):
+ * one ring -- an exact ndarray, C-contiguous aligned native float64
+ * (n, 2) with 3 <= n <= SEQ_COV_POINTS, alone or the one item of an exact
+ * list -- into a (h, w) of two exact ints, at most SEQ_COV_PIXELS, with
+ * (method, rule, subpixel_bits, sample_offset, dtype) a key the general
+ * path has checked and remembered in the table coverage_setup gives:
+ * {key: (rast_coverage_opts address, uint8 or uint16 format, numpy
+ * dtype, the options kept alive)}.  The array is made by numpy.empty and
+ * written whole by rastpy_polygon_coverage with the GIL held (small calls
+ * only: a large one, and everything else, is the general path's, which
+ * lets other threads run), lent this thread's scratch as _coverage._lent
+ * lends it (the threading.local's `at`, its address; _coverage._keep
+ * called after when the call wanted more); None (no exception, nothing kept) for
+ * anything else or an error status: the general path then checks and
+ * says what is wrong. */
+typedef long (*seq_cov_fn)(void *out, int32_t height, int32_t width, int format, const double *xy,
+                           uint32_t npoints, const uint32_t *ring_sizes, uint32_t nrings, const void *opts,
+                           seq_scratch *sc);
+static seq_cov_fn seq_cov;
+static PyObject *seq_cov_table, *seq_empty, *seq_cov_tls, *seq_cov_keep, *seq_at_name;
+#define SEQ_COV_POINTS 256
+#define SEQ_COV_PIXELS ((long)1 << 18)
+
+/* coverage_setup(table, numpy.empty, rastpy_polygon_coverage address,
+ * the scratch's threading.local, _coverage._keep) -> None */
+static PyObject *seq_coverage_setup(PyObject *self, PyObject *args)
+{
+    PyObject *table, *empty, *fn, *tls, *keep;
+    void *f;
+    (void)self;
+    if (!PyArg_UnpackTuple(args, "coverage_setup", 5, 5, &table, &empty, &fn, &tls, &keep)) return NULL;
+    if (!PyDict_CheckExact(table)) {
+        PyErr_SetString(PyExc_TypeError, "coverage_setup: the table is a dict");
+        return NULL;
+    }
+    if (!(f = seq_address(fn))) return NULL;
+    memcpy(&seq_cov, &f, sizeof f); /* an object pointer to a function pointer (POSIX) */
+    if (!seq_at_name && !(seq_at_name = PyUnicode_InternFromString("at"))) return NULL;
+    Py_INCREF(table);
+    Py_INCREF(empty);
+    Py_INCREF(tls);
+    Py_INCREF(keep);
+    Py_XDECREF(seq_cov_table);
+    Py_XDECREF(seq_empty);
+    Py_XDECREF(seq_cov_tls);
+    Py_XDECREF(seq_cov_keep);
+    seq_cov_table = table;
+    seq_empty = empty;
+    seq_cov_tls = tls;
+    seq_cov_keep = keep;
+    Py_RETURN_NONE;
+}
+
+/* The one ring of `rings` as seq_coverage_call takes it (its points at
+ * *xy, their number returned), else 0. */
+static Py_ssize_t seq_cov_ring(PyObject *rings, const double **xy)
+{
+    const seq_array_head *h;
+    if (PyList_CheckExact(rings) && PyList_Size(rings) == 1) rings = PyList_GetItem(rings, 0);
+    if ((PyObject *)Py_TYPE(rings) != seq_ndarray) return 0;
+    if (seq_head_ok < 0) seq_head_ok = seq_head_check(rings);
+    if (seq_head_ok <= 0) return 0;
+    h = (const seq_array_head *)(const void *)rings;
+    if (h->descr != seq_f64 || h->nd != 2 || h->dimensions[1] != 2 || h->strides[0] != 16 ||
+        h->strides[1] != 8 || !(h->flags & SEQ_ARRAY_ALIGNED) || h->dimensions[0] < 3 ||
+        h->dimensions[0] > SEQ_COV_POINTS)
+        return 0;
+    *xy = (const double *)(const void *)h->data;
+    return h->dimensions[0];
+}
+
+/* coverage(rings, shape, method, rule, subpixel_bits, sample_offset,
+ * dtype) -> array or None */
+static PyObject *seq_coverage_call(PyObject *self, PyObject *args)
+{
+    PyObject *rings, *shape, *method, *rule, *s, *offset, *dtype, *key, *got, *arr, *at;
+    const double *xy = NULL;
+    const void *opts;
+    seq_scratch *sc;
+    Py_ssize_t n;
+    long h, w, fmt, st;
+    (void)self;
+    if (!PyArg_UnpackTuple(args, "coverage", 7, 7, &rings, &shape, &method, &rule, &s, &offset, &dtype))
+        return NULL;
+    if (!seq_cov || !seq_cov_table || !PyUnicode_CheckExact(method) || !PyUnicode_CheckExact(rule) ||
+        !PyLong_CheckExact(s) || !PyFloat_CheckExact(offset) || !PyTuple_CheckExact(shape) ||
+        PyTuple_Size(shape) != 2 || !PyLong_CheckExact(PyTuple_GetItem(shape, 0)) ||
+        !PyLong_CheckExact(PyTuple_GetItem(shape, 1)))
+        Py_RETURN_NONE;
+    if (!(n = seq_cov_ring(rings, &xy))) Py_RETURN_NONE;
+    h = PyLong_AsLong(PyTuple_GetItem(shape, 0));
+    w = PyLong_AsLong(PyTuple_GetItem(shape, 1));
+    if (PyErr_Occurred()) {
+        PyErr_Clear();
+        Py_RETURN_NONE;
+    }
+    if (h <= 0 || w <= 0 || h > SEQ_COV_PIXELS / w) /* (so both below RAST_MAX_DIM, 2^30 - 1) */
+        Py_RETURN_NONE;
+    key = PyTuple_Pack(5, method, rule, s, offset, dtype);
+    if (!key) return NULL;
+    got = PyDict_GetItem(seq_cov_table, key); /* (an unhashable dtype: NULL, no exception) */
+    Py_DECREF(key);
+    if (!got || !PyTuple_CheckExact(got) || PyTuple_Size(got) != 4) Py_RETURN_NONE;
+    opts = PyLong_AsVoidPtr(PyTuple_GetItem(got, 0));
+    fmt = PyLong_AsLong(PyTuple_GetItem(got, 1));
+    if (!opts || PyErr_Occurred()) {
+        PyErr_Clear();
+        Py_RETURN_NONE;
+    }
+    at = PyObject_GetAttr(seq_cov_tls, seq_at_name); /* (none yet: _lent makes it) */
+    sc = at ? (seq_scratch *)PyLong_AsVoidPtr(at) : NULL;
+    Py_XDECREF(at);
+    if (!sc) {
+        PyErr_Clear();
+        Py_RETURN_NONE;
+    }
+    arr = PyObject_CallFunctionObjArgs(seq_empty, shape, PyTuple_GetItem(got, 2), NULL);
+    if (!arr) return NULL;
+    if ((PyObject *)Py_TYPE(arr) != seq_ndarray) {
+        Py_DECREF(arr);
+        Py_RETURN_NONE;
+    }
+    st = seq_cov(((const seq_array_head *)(const void *)arr)->data, (int32_t)h, (int32_t)w, (int)fmt, xy,
+                 (uint32_t)n, NULL, 1, opts, sc);
+    if (st) {
+        Py_DECREF(arr);
+        Py_RETURN_NONE;
+    }
+    if (sc->size < sc->want) { /* (the cap is _keep's) */
+        PyObject *r = PyObject_CallObject(seq_cov_keep, NULL);
+        if (!r) {
+            Py_DECREF(arr);
+            return NULL;
+        }
+        Py_DECREF(r);
+    }
+    return arr;
 }
 
 /* use_head(flag): read arrays through their head (when it checks out:
@@ -740,6 +887,11 @@ static PyMethodDef seq_methods[] = {
     {"fill", seq_fill_call, METH_VARARGS,
      "fill(q, target, rings, color[, opts address or keyword dict | rule, aa]) -> bool: Canvas.fill_polygon's common call, "
      "done"},
+    {"coverage_setup", seq_coverage_setup, METH_VARARGS,
+     "coverage_setup({key: (opts address, format, dtype, opts)}, numpy.empty, polygon_coverage address) -> None"},
+    {"coverage", seq_coverage_call, METH_VARARGS,
+     "coverage(rings, shape, method, rule, subpixel_bits, sample_offset, dtype) -> array or None: "
+     "polygon_coverage's common call, done"},
     {NULL, NULL, 0, NULL},
 };
 

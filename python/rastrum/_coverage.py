@@ -130,11 +130,20 @@ def _lent(fn, *args):
         sc = _tls.sc
     except AttributeError:
         sc = _tls.sc = ffi.new("rastpy_scratch *")
+        _tls.at = int(ffi.cast("uintptr_t", sc))  # (for _seq.coverage)
     result = fn(*args, sc)
+    if sc.size < sc.want:
+        _keep()
+    return result
+
+
+def _keep():
+    """After a call that lent this thread's scratch and wanted more: a block
+    as large as it wanted, kept (within the cap); _seq.coverage calls it too."""
+    sc = _tls.sc
     if sc.size < sc.want <= _SCRATCH_KEEP:
         _tls.buf = ffi.new("char[]", sc.want)  # (malloc'd: 16-byte aligned)
         sc.buf, sc.size = _tls.buf, sc.want
-    return result
 
 
 def _quick(method, rule, subpixel_bits, sample_offset, dtype):
@@ -156,7 +165,19 @@ def _remember(key, opts, fmt, d):
         try:
             _QUICK[key] = (opts, fmt, _C_DTYPE[fmt], d)
         except TypeError:
-            pass
+            return
+        if fmt != _FIX62:  # uint8, uint16: the array C writes is the result
+            _QUICK_C[key] = (int(ffi.cast("uintptr_t", opts)), fmt, _C_DTYPE[fmt], opts)
+
+
+# polygon_coverage's common call (one small ring, a key _remember holds, a
+# uint8 or uint16 result) made whole in C by _seq.coverage (python/ext/seq.c):
+# no Python checks, no cffi conversions; this thread's scratch, as _lent
+# lends it (once _lent has made it: _tls.at, its address), _keep after
+# (issue 33).
+# Anything it declines (None) is for the rest of polygon_coverage.
+_QUICK_C: dict = {}
+_cov_quick = _core._seq.coverage
 
 
 def _plain_shape(shape):
@@ -299,6 +320,10 @@ def polygon_coverage(rings: PathRings, shape: Shape, *, rule: Rule = "evenodd", 
     >>> rastrum.polygon_coverage([(0.5, 0), (2, 0), (2, 1), (0.5, 1)], (1, 3))
     array([[128, 255,   0]], dtype=uint8)
     """
+    if tolerance is None:
+        got = _cov_quick(rings, shape, method, rule, subpixel_bits, sample_offset, dtype)
+        if got is not None:
+            return got
     key, quick = _quick(method, rule, subpixel_bits, sample_offset, dtype)
     if type(rings) is _Path and quick is not None and _plain_shape(shape) is not None:
         got = _path_coverage(rings, shape, quick, tolerance)
@@ -427,6 +452,8 @@ def triangles_coverage(tris: npt.ArrayLike, shape: Shape, *, method: CoverageMet
 
 
 _poly_call, _tris_call = lib.rastpy_polygon_coverage, lib.rastpy_triangles_coverage
+_core._seq.coverage_setup(_QUICK_C, np.empty, int(ffi.cast("uintptr_t", ffi.addressof(lib, "rastpy_polygon_coverage"))),
+                          _tls, _keep)
 _FIX62 = lib.RAST_COVERAGE_FIX62
 
 

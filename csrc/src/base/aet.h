@@ -453,6 +453,32 @@ static inline rast_status rast__aet_prepare(const rast_polygon *poly, uint32_t n
     return RAST_OK;
 }
 
+#if !defined(__OPTIMIZE_SIZE__)
+/* ---- shared edges cancel (base/edge.c) ----------------------------------------
+ * The winding number of a sample is the sum of the edges' parts, and an
+ * edge a->b and an edge b->a (two cells of a mesh on either side of their
+ * common edge) cross the same rows at the same columns (the DDA of each
+ * runs from the same upper end to the same lower one) in opposite
+ * directions: their parts cancel at every sample, and neither need be
+ * walked.  A segment from its upper end to its lower one (by y, then x),
+ * n the times it is in the polygon that way less the other way. */
+typedef struct rast__seg {
+    rast_point a, b;
+    int32_t n;
+} rast__seg;
+
+/* The edges of `poly` (npoints vertices, nrings >= 1) as segments, equal
+ * ones summed, out of the arena: returns m, the segments left in
+ * (*seg)[0 .. m), crossing edges only (a horizontal one crosses no row),
+ * n of each not 0 (even-odd, `evenodd`: n mod 2 with its sign, +-1) and
+ * *copies the sum of their |n| (the edges to walk), when at most half of
+ * the polygon's edges are left so; else -1, the arena as it was (also
+ * when it is too small).  Memory: npoints segments (20 bytes) and a table
+ * of indices of at most 16 bytes a vertex. */
+int32_t rast__segs_cancel(const rast_polygon *poly, uint32_t npoints, int evenodd,
+                          rast__arena *arena, rast__seg **seg, uint32_t *copies);
+#endif
+
 static inline rast_status rast__aet_walk(const rast_polygon *poly, uint32_t npoints,
                                          const rast__grid *g, rast_fill_rule rule,
                                          const rast_rect *clip, rast__arena *arena,

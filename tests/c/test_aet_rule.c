@@ -1,15 +1,22 @@
-/* test_cancel.c - the AET filler's shared edges (fillers/aet.c,
- * rast__segs_cancel in base/edge.c): a polygon of many small rings whose
- * edges cancel in pairs (a mesh's cells) is filled from what is left, and
- * that gives the same pixels, bit for bit, as the AET's sweep of every
- * edge and as the reference winding number (ref.h, straight from DESIGN).
- * Random meshes: jittered grids of cells, each a quad or two triangles
- * (either diagonal), some cells turned the other way (a hole where they
- * are), some given twice (the same way: winding 2 under non-zero, 0
- * under even-odd), vertices on sample points and rows, meshes crossing
- * the clip's sides, both rules, both samples, several subpixel
- * precisions, exact and textbook rounding; and polygons whose edges do
- * not cancel (given up: the arena as it was). */
+/* test_aet_rule.c - the AET filler's own choices (fillers/aet.c, the way
+ * rast__aet_fill takes, RAST__AET_BY_RULE) against the AET's sweep of
+ * every edge (RAST__AET_BY_SWEEP) and the reference winding number (ref.h,
+ * straight from DESIGN), bit for bit:
+ *  - shared edges cancelled first (rast__segs_cancel, base/edge.c): a
+ *    polygon of many small rings whose edges cancel in pairs (a mesh's
+ *    cells) filled from what is left.  Random meshes: jittered grids of
+ *    cells, each a quad or two triangles (either diagonal), some cells
+ *    turned the other way (a hole where they are), some given twice (the
+ *    same way: winding 2 under non-zero, 0 under even-odd), vertices on
+ *    sample points and rows, meshes crossing the clip's sides; and
+ *    polygons whose edges do not cancel (given up: the arena as it was);
+ *  - the winding deltas added as the edges are set up (rast__aet_delta_now):
+ *    rings.h's many small rings on a clip of few rows (the rule's counts,
+ *    checked here, take them), and a triangle wound round 170 to 400
+ *    times (past 510 crossings a row the counters are left unread and the
+ *    sweep fills);
+ * both rules, both samples, several subpixel precisions, exact and
+ * textbook rounding. */
 #include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
@@ -19,7 +26,9 @@
 #include "base/aet.h"
 #include "rastrum.h"
 
-enum { W = 40, H = 28, MAXP = 800 };
+enum { W = 40, H = 28, MAXP = 1200 };
+
+#include "rings.h"
 
 typedef struct canvas {
     unsigned char px[H][W];
@@ -122,13 +131,51 @@ static uint32_t mesh(rast_point *pts, uint32_t *sizes, int s, int center, uint32
     return k;
 }
 
+/* Non-zero past the byte counters' reach: a triangle walked round `turns`
+ * times (rings.h), 3 x turns vertices on a clip of 4 rows: the deltas are
+ * walked as the edges go, and up to 510 crossings a row read; past that
+ * the sweep fills. */
+static void test_wound(void)
+{
+    static rast_point pts[3 * 400];
+    static unsigned char scratch[1 << 20];
+    static canvas a, b;
+    static const uint32_t turns[] = {170, 200, 255, 256, 300, 400};
+    rast__grid g;
+    size_t t;
+    CHECK(rast__grid_init(&g, 4, RAST_SAMPLE_CENTER, RAST_ROUND_EXACT, RAST_BOUNDARY_EXACT) == RAST_OK);
+    for (t = 0; t < sizeof turns / sizeof turns[0]; t++) {
+        uint32_t n = 3 * turns[t];
+        rast_polygon poly;
+        rast_rect clip = {0, H / 2 - 2, W, H / 2 + 2};
+        int32_t i, j, ok = 1, inside = 0;
+        wound_triangle(pts, n);
+        poly.points = pts;
+        poly.ring_sizes = &n;
+        poly.nrings = 1;
+        CHECK(fill(&a, &poly, n, &g, RAST_RULE_NONZERO, &clip, scratch, rast__aet_scratch(n, W, H),
+                   RAST__AET_BY_SWEEP) == RAST_OK);
+        CHECK(fill(&b, &poly, n, &g, RAST_RULE_NONZERO, &clip, scratch, rast__aet_scratch(n, W, H),
+                   RAST__AET_BY_RULE) == RAST_OK);
+        CHECK(!a.bad && !b.bad);
+        CHECK(memcmp(a.px, b.px, sizeof a.px) == 0);
+        for (j = 0; j < H; j++)
+            for (i = 0; i < W; i++) {
+                int in = j >= clip.y0 && j < clip.y1 && ref_winding(pts, &n, 1, 4, 1, 0, i, j, NULL) != 0;
+                if (b.px[j][i] != in) ok = 0;
+                inside += in;
+            }
+        CHECK(ok && inside > 0);
+    }
+}
+
 int main(void)
 {
     static rast_point pts[MAXP];
     static uint32_t sizes[MAXP];
     static canvas a, b;
     static unsigned char scratch[1 << 20];
-    int iter, n = check_count(3000), cancelled = 0;
+    int iter, n = check_count(3000), cancelled = 0, now = 0;
     for (iter = 0; iter < n; iter++) {
         const int s = (int)(rng() % 5), center = (int)(rng() & 1), textbook = (int)(rng() % 4 == 0);
         const rast_fill_rule rule = (rng() & 1) ? RAST_RULE_EVENODD : RAST_RULE_NONZERO;
@@ -145,7 +192,9 @@ int main(void)
         CHECK(rast__grid_init(&g, s, center ? RAST_SAMPLE_CENTER : RAST_SAMPLE_CORNER,
                               textbook ? RAST_ROUND_TEXTBOOK : RAST_ROUND_EXACT,
                               RAST_BOUNDARY_EXACT) == RAST_OK);
-        if (iter % 4 == 3) { /* rings that share no edge: the cancelling given up */
+        if (iter % 4 == 2) { /* many small rings on few rows: the deltas as the edges go */
+            nrings = small_rings(pts, sizes, MAXP, 8 + rng() % 120, s, center, &np);
+        } else if (iter % 4 == 3) { /* rings that share no edge: the cancelling given up */
             uint32_t v;
             nrings = 2 + rng() % 40;
             for (i = 0; i < (int32_t)nrings; i++) {
@@ -166,6 +215,17 @@ int main(void)
         clip.y0 = (int32_t)(rng() % 6);
         clip.x1 = W - (int32_t)(rng() % 6);
         clip.y1 = H - (int32_t)(rng() % 6);
+        if (iter % 4 == 2) { /* a few rows, so that the rule takes the deltas */
+            clip.y0 = (int32_t)(rng() % (H - 3));
+            clip.y1 = clip.y0 + 1 + (int32_t)(rng() % 3);
+        }
+        /* the rule's counts (fillers/aet.c): 8 vertices a clip row, the
+         * counters of its rows in the room of the vertices' edge records,
+         * at most 8 words of them a vertex */
+        if (np >= 8 * (uint32_t)(clip.y1 - clip.y0) &&
+            (clip.y1 - clip.y0) * ((clip.x1 - clip.x0 + 8) & ~7) <= (int32_t)np * 48 &&
+            (clip.y1 - clip.y0) * ((clip.x1 - clip.x0 + 8) / 8) <= 8 * (int32_t)np)
+            now++;
         /* exactly the AET's scratch */
         need = rast__aet_scratch(np, W, H);
         CHECK(need <= sizeof scratch);
@@ -201,5 +261,7 @@ int main(void)
 #if !defined(__OPTIMIZE_SIZE__)
     CHECK(cancelled > n / 3); /* the meshes do take the cancelling */
 #endif
-    return check_report("test_cancel");
+    CHECK(now > n / 8); /* and the small rings the deltas */
+    test_wound();
+    return check_report("test_aet_rule");
 }

@@ -1,16 +1,22 @@
-"""Meshes given as rings: the AET filler's shared edges cancel first.
+"""The AET filler's own ways (csrc/src/fillers/aet.c), against the exact
+oracle (tests/oracle.py), bit for bit.
 
-The "aet" polygon fill of two rings or more of at most 8 vertices on
-average first sums equal edges (an edge a->b of one cell and b->a of the
-next cancel) and fills from what is left when at most half of the edges
-are (csrc/src/fillers/aet.c, rast__segs_cancel in csrc/src/base/edge.c).
-The meshes here meet that rule (checked below from the same counts), so
-every example takes the cancelling, checked bit for bit against the exact
-oracle (tests/oracle.py): jittered grids of quads or triangles (either
+Meshes given as rings: the "aet" polygon fill of two rings or more of at
+most 8 vertices on average first sums equal edges (an edge a->b of one
+cell and b->a of the next cancel) and fills from what is left when at most
+half of the edges are (rast__segs_cancel in csrc/src/base/edge.c).  The
+meshes here meet that rule (checked below from the same counts), so every
+example takes the cancelling: jittered grids of quads or triangles (either
 diagonal), cells turned the other way (holes), cells given twice (winding
 2 under non-zero, 0 under even-odd), vertices on sample points and sample
 rows, meshes past the canvas' sides, both rules, both sample offsets, both
-roundings.  tests/c/test_cancel.c compares with the AET's sweep of every
+roundings.
+
+Many vertices for the rows: the winding deltas are added as the edges are
+set up (rast__aet_delta_now); test_polygon_delta.py's scenes take that way
+now, and a ring wound round more times than the byte counters hold (past
+510 crossings a row, non-zero) is filled by the sweep instead.
+tests/c/test_aet_rule.c compares both ways with the AET's sweep of every
 edge directly.
 """
 
@@ -106,3 +112,14 @@ def test_mesh_of_triangles_cancels_to_its_outline(rule):
     rings[5] = rings[5][::-1]  # a triangle turned round: winding 0 there (even-odd: in)
     assert 2 * edges_left(rings, rule, 8) <= sum(len(r) for r in rings)
     check_equal(rings, (10, 20), algorithms=["aet"], rule=rule)
+
+
+@pytest.mark.parametrize("turns", [200, 256])
+def test_ring_wound_past_the_counters(turns):
+    """A triangle walked round `turns` times (winding `turns` inside, 2 x
+    turns crossings a row): 200 is read from the byte counters; 256 would
+    wrap them to 0 (512 crossings a row), and the sweep fills."""
+    tri = [(2.25, 0.5), (37.5, 3.25), (5.0, 5.75)]
+    ring = tri * turns
+    check_equal([ring], (6, 40), algorithms=["aet"], rule="nonzero")
+    check_equal([tri[::-1] * turns], (6, 40), algorithms=["aet"], rule="nonzero")

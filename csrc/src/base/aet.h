@@ -332,6 +332,7 @@ typedef struct rast__aet_tab {
     int32_t minx, maxx;
 } rast__aet_tab;
 
+#if defined(__OPTIMIZE_SIZE__)
 /* The walk's setup: the visible rows and the edge records of `poly`
  * (src as rast__aet_walk's).  RAST_OK with t->row0 >= t->row1 when no
  * visible row is crossed (nothing to walk), RAST_E_SCRATCH when the arena
@@ -345,7 +346,6 @@ static inline rast_status rast__aet_prepare(const rast_polygon *poly, uint32_t n
     int32_t *bucket;
     int32_t row0, row1, nedges = 0;
     uint32_t i, k, base;
-#if defined(__OPTIMIZE_SIZE__)
     int32_t miny, maxy;
     int64_t r;
 
@@ -366,20 +366,60 @@ static inline rast_status rast__aet_prepare(const rast_polygon *poly, uint32_t n
 
     if (!rast__aet_tables(arena, npoints, row0, row1, &edges, &aet, &bucket))
         return RAST_E_SCRATCH;
+
+    /* The edge table, grouped by first visible row: set the edges up in
+     * the AET's room (`next` holding each edge's index, see `src`), count
+     * them per row, and place each row's run at bucket[row] (the counts'
+     * running sum). */
+    for (k = 0, base = 0; k < poly->nrings; base += poly->ring_sizes[k], k++) {
+        uint32_t n = poly->ring_sizes[k];
+        for (i = 0; i < n; i++) {
+            rast__edge *ed = &aet[nedges];
+            rast_point a = pts[base + i];
+            rast_point b = pts[base + (i + 1 == n ? 0 : i + 1)];
+            if (rast__edge_setup(ed, a, b, g, row0, row1)) {
+                if (src) {
+                    src[2 * nedges] = (int32_t)(base + i);
+                    src[2 * nedges + 1] = (int32_t)(base + (i + 1 == n ? 0 : i + 1));
+                }
+                ed->next = nedges++;
+                bucket[ed->row - row0 + 1]++;
+            }
+        }
+    }
+    t->edges = edges;
+    t->aet = aet;
+    t->bucket = bucket;
+    t->nedges = nedges;
+    t->row0 = row0;
+    t->row1 = row1;
+    return RAST_OK;
+}
 #else
-    /* The grid in a local: the edge records' int32 stores might alias the
-     * caller's, which made the setup reload it for every edge. */
+/* The walk's setup in two steps.  First the rows: the room for the edge
+ * table and the AET (an edge record per vertex each: t->edges, t->aet),
+ * each vertex's row (rast__row_at_or_after of its y) in the edge table's
+ * room (t->edges as int32_t[npoints]: the rows the edges' setup reads),
+ * the visible rows t->row0, t->row1 and the vertices' least and greatest
+ * x.  RAST_OK with t->row0 >= t->row1 when no visible row is crossed
+ * (nothing to walk), RAST_E_SCRATCH when the arena is too small. */
+static inline rast_status rast__aet_prepare_rows(const rast_polygon *poly, uint32_t npoints,
+                                                 const rast__grid *g, const rast_rect *clip,
+                                                 rast__arena *arena, rast__aet_tab *t)
+{
+    const rast_point *pts = poly->points;
+    /* The grid in a local: the int32 stores of the rows might alias the
+     * caller's, which made the loop reload it for every vertex. */
     const rast__grid gl = *g;
-    /* Each vertex's row (rast__row_at_or_after of its y), in the edge
-     * table's room, which the walk needs only once every edge is set up. */
     int32_t *vrow, lo, hi, minx, maxx;
+    uint32_t i;
 
     t->row0 = t->row1 = 0;
     if (npoints == 0) return RAST_OK;
-    edges = (rast__edge *)rast__take(arena, (size_t)npoints * sizeof(rast__edge));
-    aet = (rast__edge *)rast__take(arena, (size_t)npoints * sizeof(rast__edge));
-    if (!edges || !aet) return RAST_E_SCRATCH;
-    vrow = (int32_t *)(void *)edges;
+    t->edges = (rast__edge *)rast__take(arena, (size_t)npoints * sizeof(rast__edge));
+    t->aet = (rast__edge *)rast__take(arena, (size_t)npoints * sizeof(rast__edge));
+    if (!t->edges || !t->aet) return RAST_E_SCRATCH;
+    vrow = (int32_t *)(void *)t->edges;
 
     /* Visible rows: the clip's rows that the polygon's y extent reaches
      * (rows grow with y: the lowest vertex row is the top one's). */
@@ -395,40 +435,41 @@ static inline rast_status rast__aet_prepare(const rast_polygon *poly, uint32_t n
     }
     t->minx = minx;
     t->maxx = maxx;
-    row0 = lo > clip->y0 ? lo : clip->y0;
-    row1 = hi < clip->y1 ? hi : clip->y1;
-    if (row0 >= row1) return RAST_OK;
+    t->row0 = lo > clip->y0 ? lo : clip->y0;
+    t->row1 = hi < clip->y1 ? hi : clip->y1;
+    return RAST_OK;
+}
+
+/* Then the edge records (rows as rast__aet_prepare_rows left them, t->row0
+ * < t->row1): set up in t->aet[0 .. t->nedges) (`next` each one's index,
+ * see `src`), and the buckets, bucket[r - row0 + 1] how many start on row
+ * r.  RAST_E_SCRATCH when the arena is too small for the buckets. */
+static inline rast_status rast__aet_prepare_edges(const rast_polygon *poly, const rast__grid *g,
+                                                  rast__arena *arena, int32_t *src,
+                                                  rast__aet_tab *t)
+{
+    const rast_point *pts = poly->points;
+    const rast__grid gl = *g; /* (as above: not reloaded every edge) */
+    const int32_t *vrow = (const int32_t *)(const void *)t->edges;
+    rast__edge *const aet = t->aet;
+    const int32_t row0 = t->row0, row1 = t->row1;
+    int32_t *bucket, nedges = 0;
+    uint32_t k, base;
+
     bucket = (int32_t *)rast__take(arena, ((size_t)(row1 - row0) + 1) * sizeof(int32_t));
     if (!bucket) return RAST_E_SCRATCH;
     memset(bucket, 0, ((size_t)(row1 - row0) + 1) * sizeof(int32_t));
-#endif
 
     /* The edge table, grouped by first visible row: set the edges up in
      * the AET's room (`next` holding each edge's index, see `src`), count
      * them per row, and place each row's run at bucket[row] (the counts'
      * running sum). */
     for (k = 0, base = 0; k < poly->nrings; base += poly->ring_sizes[k], k++) {
-        uint32_t n = poly->ring_sizes[k];
-#if defined(__OPTIMIZE_SIZE__)
-        for (i = 0; i < n; i++) {
-            rast__edge *ed = &aet[nedges];
-            rast_point a = pts[base + i];
-            rast_point b = pts[base + (i + 1 == n ? 0 : i + 1)];
-            if (rast__edge_setup(ed, a, b, g, row0, row1)) {
-                if (src) {
-                    src[2 * nedges] = (int32_t)(base + i);
-                    src[2 * nedges + 1] = (int32_t)(base + (i + 1 == n ? 0 : i + 1));
-                }
-                ed->next = nedges++;
-                bucket[ed->row - row0 + 1]++;
-            }
-        }
-#else
         /* edge ia -> ib: the next vertex, or the ring's first after its
          * last; an edge between two vertices of one row crosses none (most
          * of a paragraph's), told from the rows alone */
         uint32_t ia, ib;
-        const uint32_t stop = base + n;
+        const uint32_t stop = base + poly->ring_sizes[k];
         for (ia = base, ib = base + 1; ia < stop; ia++, ib++) {
             rast__edge *ed = &aet[nedges];
             if (ib == stop) ib = base;
@@ -442,16 +483,51 @@ static inline rast_status rast__aet_prepare(const rast_polygon *poly, uint32_t n
                 bucket[ed->row - row0 + 1]++;
             }
         }
-#endif
     }
-    t->edges = edges;
-    t->aet = aet;
     t->bucket = bucket;
     t->nedges = nedges;
-    t->row0 = row0;
-    t->row1 = row1;
     return RAST_OK;
 }
+
+/* The walk's setup: the visible rows and the edge records of `poly`
+ * (src as rast__aet_walk's): the two steps above.  RAST_OK with t->row0
+ * >= t->row1 when no visible row is crossed (nothing to walk),
+ * RAST_E_SCRATCH when the arena is too small. */
+static inline rast_status rast__aet_prepare(const rast_polygon *poly, uint32_t npoints,
+                                            const rast__grid *g, const rast_rect *clip,
+                                            rast__arena *arena, int32_t *src, rast__aet_tab *t)
+{
+    rast_status st = rast__aet_prepare_rows(poly, npoints, g, clip, arena, t);
+    if (st != RAST_OK || t->row0 >= t->row1) return st;
+    return rast__aet_prepare_edges(poly, g, arena, src, t);
+}
+#endif
+
+#if !defined(__OPTIMIZE_SIZE__)
+/* ---- shared edges cancel (base/edge.c) ----------------------------------------
+ * The winding number of a sample is the sum of the edges' parts, and an
+ * edge a->b and an edge b->a (two cells of a mesh on either side of their
+ * common edge) cross the same rows at the same columns (the DDA of each
+ * runs from the same upper end to the same lower one) in opposite
+ * directions: their parts cancel at every sample, and neither need be
+ * walked.  A segment from its upper end to its lower one (by y, then x),
+ * n the times it is in the polygon that way less the other way. */
+typedef struct rast__seg {
+    rast_point a, b;
+    int32_t n;
+} rast__seg;
+
+/* The edges of `poly` (npoints vertices, nrings >= 1) as segments, equal
+ * ones summed, out of the arena: returns m, the segments left in
+ * (*seg)[0 .. m), crossing edges only (a horizontal one crosses no row),
+ * n of each not 0 (even-odd, `evenodd`: n mod 2 with its sign, +-1) and
+ * *copies the sum of their |n| (the edges to walk), when at most half of
+ * the polygon's edges are left so; else -1, the arena as it was (also
+ * when it is too small).  Memory: npoints segments (20 bytes) and a table
+ * of indices of at most 16 bytes a vertex. */
+int32_t rast__segs_cancel(const rast_polygon *poly, uint32_t npoints, int evenodd,
+                          rast__arena *arena, rast__seg **seg, uint32_t *copies);
+#endif
 
 static inline rast_status rast__aet_walk(const rast_polygon *poly, uint32_t npoints,
                                          const rast__grid *g, rast_fill_rule rule,

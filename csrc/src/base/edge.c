@@ -18,3 +18,99 @@ int rast__edge_setup(rast__edge *ed, rast_point a, rast_point b,
 {
     return rast__edge_setup_inline(ed, a, b, g, row_lo, row_hi);
 }
+
+#if !defined(__OPTIMIZE_SIZE__)
+#include <string.h>
+
+#include "aet.h"
+
+static inline int rast__seg_eq(const rast__seg *p, const rast__seg *q)
+{
+    return p->a.x == q->a.x && p->a.y == q->a.y && p->b.x == q->b.x && p->b.y == q->b.y;
+}
+
+/* A segment's slot in a table of 2^bits (its ends' coordinates mixed). */
+static inline uint32_t rast__seg_hash(const rast__seg *p, int32_t bits)
+{
+    uint64_t h = (uint64_t)(uint32_t)p->a.x * UINT64_C(0x9E3779B97F4A7C15);
+    h = (h ^ (uint32_t)p->a.y) * UINT64_C(0xC2B2AE3D27D4EB4F);
+    h = (h ^ (uint32_t)p->b.x) * UINT64_C(0x165667B19E3779F9);
+    h = (h ^ (uint32_t)p->b.y) * UINT64_C(0x9E3779B97F4A7C15);
+    return (uint32_t)(h >> (64 - bits));
+}
+
+int32_t rast__segs_cancel(const rast_polygon *poly, uint32_t npoints, int evenodd,
+                          rast__arena *arena, rast__seg **out, uint32_t *copies)
+{
+    const rast__arena keep = *arena;
+    const rast_point *pts = poly->points;
+    const int32_t N = (int32_t)npoints;
+    rast__seg *seg;
+    int32_t *slot, i, m = 0, left = 0, rs = 0, re = 0, tbits = 1;
+    uint32_t ring = 0, mask, sum = 0;
+    if (npoints == 0 || npoints > (uint32_t)INT32_MAX / 4) return -1;
+    while (((int64_t)1 << tbits) < (int64_t)N * 2) tbits++;
+    mask = ((uint32_t)1 << tbits) - 1;
+    seg = (rast__seg *)rast__take(arena, (size_t)npoints * sizeof *seg);
+    slot = (int32_t *)rast__take(arena, ((size_t)1 << tbits) * sizeof *slot);
+    if (!seg || !slot) {
+        *arena = keep;
+        return -1;
+    }
+    memset(slot, 0xFF, ((size_t)1 << tbits) * sizeof *slot); /* -1: free */
+    /* equal segments summed into the first (the table at most half full),
+     * and `left`, the crossing edges that stay (the first's |n| summed),
+     * kept as it goes: each edge still to come takes at most one off it,
+     * so a polygon whose edges do not cancel is given up as soon as even
+     * that would leave more than half */
+    for (i = 0; i < N; i++) {
+        rast_point p, q;
+        int fwd;
+        uint32_t h;
+        while (i == re) { /* the next ring (empty ones skipped) */
+            rs = re;
+            re += (int32_t)poly->ring_sizes[ring++];
+        }
+        p = pts[i];
+        q = pts[i + 1 == re ? rs : i + 1];
+        fwd = p.y < q.y || (p.y == q.y && p.x < q.x);
+        seg[i].a = fwd ? p : q;
+        seg[i].b = fwd ? q : p;
+        seg[i].n = fwd ? 1 : -1;
+        h = rast__seg_hash(&seg[i], tbits);
+        while (slot[h] >= 0 && !rast__seg_eq(&seg[slot[h]], &seg[i])) h = (h + 1) & mask;
+        if (slot[h] < 0) {
+            slot[h] = i;
+            left += p.y != q.y;
+            if (((int64_t)left - ((int64_t)N - 1 - i)) * 2 > (int64_t)N) {
+                *arena = keep;
+                return -1;
+            }
+        } else {
+            const int32_t was = seg[slot[h]].n, now = was + seg[i].n;
+            seg[slot[h]].n = now;
+            seg[i].n = 0;
+            if (p.y != q.y) left += (now < 0 ? -now : now) - (was < 0 ? -was : was);
+        }
+    }
+    if ((int64_t)left * 2 > (int64_t)N) {
+        *arena = keep;
+        return -1;
+    }
+    /* those at 0 gone (even-odd: those at an even count), the rest's
+     * copies in n's sign */
+    for (i = 0; i < N; i++) {
+        int32_t n = seg[i].n;
+        if (evenodd) n = n & 1 ? (n < 0 ? -1 : 1) : 0;
+        if (n != 0 && seg[i].a.y != seg[i].b.y) {
+            seg[m] = seg[i];
+            seg[m].n = n;
+            sum += (uint32_t)(n < 0 ? -n : n);
+            m++;
+        }
+    }
+    *out = seg;
+    *copies = sum;
+    return m;
+}
+#endif

@@ -266,50 +266,88 @@ static inline void rast__delta_walk(rast__edge *d, unsigned char *buf, int32_t j
     if (b < d->end) rast__edge_step(d);
 }
 
+/* The counters' columns: the polygon's box within the clip's (as
+ * rast__box_of: the first columns counting the least and the greatest
+ * abscissa bound every crossing's), col0 and bits = col1 - col0, a row's
+ * stride (bits + 1 counters rounded up to whole words), the rule's mask,
+ * and whether the clip leaves the box whole.  0 when no column is
+ * visible (nothing inside). */
+typedef struct rast__delta_cols {
+    int32_t col0, bits, stride;
+    uint32_t mask;
+    int whole;
+} rast__delta_cols;
+
+static int rast__delta_box(const rast__grid *g, rast_fill_rule rule, const rast_rect *clip,
+                           const rast__aet_tab *t, rast__delta_cols *d)
+{
+    int64_t r = rast__cross_col(2 * (int64_t)t->minx, 1, g);
+    int32_t col1;
+    d->col0 = r > clip->x0 ? (int32_t)r : clip->x0;
+    d->whole = r >= clip->x0;
+    r = rast__cross_col(2 * (int64_t)t->maxx, 1, g);
+    col1 = r < clip->x1 ? (int32_t)r : clip->x1;
+    d->whole = d->whole && r <= clip->x1;
+    if (d->col0 >= col1) return 0;
+    d->bits = col1 - d->col0;
+    d->stride = (d->bits + 1 + 7) & ~7;
+    d->mask = rule == RAST_RULE_EVENODD ? 1 : 0xFF;
+    return 1;
+}
+
+/* Whether the rows go straight to one-byte pixels (rast__delta_bytes, the
+ * rows [row0, row1) claimed when the painter is opaque), into *out. */
+static int rast__delta_direct(rast__sink *sink, const rast__delta_cols *d, int32_t row0,
+                              int32_t row1, rast__byte_rows *out)
+{
+    const int direct = rast__sink_byte_rows(sink, out) && d->col0 >= out->x0 &&
+                       d->col0 + d->bits <= out->x1;
+    if (direct && out->opaque) rast__byte_rows_claim(out, row0, row1);
+    return direct;
+}
+
+/* Rows [j0, j1) of counters (from buf) into their runs or pixels. */
+static void rast__delta_out(unsigned char *buf, int32_t j0, int32_t j1, const rast__delta_cols *d,
+                            int direct, const rast__byte_rows *out, rast__sink *sink)
+{
+    int32_t j;
+    for (j = j0; j < j1; j++) {
+        unsigned char *row = buf + (size_t)(j - j0) * (size_t)d->stride;
+        if (direct) rast__delta_bytes(row, d->stride, d->bits, d->mask, d->col0, j, out);
+        else rast__delta_row(row, d->stride, d->mask, d->col0, j, sink);
+    }
+}
+
 /* The fill by winding deltas, when the rule above takes it (or, `force`,
- * whenever it can): returns 1, the runs handed to `sink`; 0, having done
- * nothing, when not. */
-static int rast__aet_delta(uint32_t npoints, const rast__grid *g, rast_fill_rule rule,
+ * whenever it can), in the `room` bytes of the edge table t->edges:
+ * returns 1, the runs handed to `sink`; 0, having done nothing, when not. */
+static int rast__aet_delta(size_t room, const rast__grid *g, rast_fill_rule rule,
                            const rast_rect *clip, const rast__aet_tab *t, rast__sink *sink,
                            int force)
 {
     const int32_t rows = t->row1 - t->row0;
     rast__edge *const ed = t->aet;
-    int32_t col0, col1, bits, stride, hb, nb, e, j0;
-    int64_t crossings = 0, cost, r;
-    uint32_t mask;
+    rast__delta_cols d;
+    int32_t hb, nb, e, j0;
+    int64_t crossings = 0, cost;
     unsigned char *buf;
-    size_t room;
     rast__byte_rows out;
     int direct, whole;
 
     if (t->nedges == 0) return 1;
     if (!force && t->nedges < RAST__DELTA_EDGES * (int64_t)rows) return 0;
-    /* Columns: the polygon's box within the clip's (as rast__box_of: the
-     * first columns counting the least and the greatest abscissa bound
-     * every crossing's). */
-    r = rast__cross_col(2 * (int64_t)t->minx, 1, g);
-    col0 = r > clip->x0 ? (int32_t)r : clip->x0;
-    whole = r >= clip->x0;
-    r = rast__cross_col(2 * (int64_t)t->maxx, 1, g);
-    col1 = r < clip->x1 ? (int32_t)r : clip->x1;
-    whole = whole && r <= clip->x1;
-    if (col0 >= col1) return 1; /* no visible column: nothing inside */
-    bits = col1 - col0;
-    stride = (bits + 1 + 7) & ~7;
-    room = (size_t)npoints * sizeof(rast__edge);
-    if ((size_t)stride > room) return 0;
-    hb = (int32_t)(room / (size_t)stride < (size_t)rows ? room / (size_t)stride : (size_t)rows);
+    if (!rast__delta_box(g, rule, clip, t, &d)) return 1; /* no visible column: nothing inside */
+    if ((size_t)d.stride > room) return 0;
+    hb = (int32_t)(room / (size_t)d.stride < (size_t)rows ? room / (size_t)d.stride : (size_t)rows);
     nb = (rows + hb - 1) / hb;
-    whole = whole && nb == 1; /* (the edges' rows are [row0, row1)'s: aet.h) */
+    whole = d.whole && nb == 1; /* (the edges' rows are [row0, row1)'s: aet.h) */
     /* The crossings, and (non-zero, more than 511 edges) the most on a
      * row: the running count of edges started less edges ended, the
      * starts from the buckets (bucket[r - row0 + 1]: row r's), the ends
      * counted in the same pass over the edges, into the edge table's room
      * (free until the counters: rows + 1 counts fit it whenever the rule
      * can take the deltas, 8 edges a row; else the sweep fills). */
-    mask = rule == RAST_RULE_EVENODD ? 1 : 0xFF;
-    if (mask != 1 && t->nedges > 511) {
+    if (d.mask != 1 && t->nedges > 511) {
         int32_t *b = t->bucket, *ends = (int32_t *)(void *)t->edges, run = 0, most = 0, y;
         if (((size_t)rows + 1) * sizeof(int32_t) > room) return 0;
         memset(ends, 0, ((size_t)rows + 1) * sizeof(int32_t));
@@ -325,33 +363,125 @@ static int rast__aet_delta(uint32_t npoints, const rast__grid *g, rast_fill_rule
     } else {
         for (e = 0; e < t->nedges; e++) crossings += ed[e].end - ed[e].row;
     }
-    cost = (int64_t)rows * (stride / 8) + (int64_t)nb * t->nedges;
+    cost = (int64_t)rows * (d.stride / 8) + (int64_t)nb * t->nedges;
     if (!force && cost > RAST__DELTA_WORDS * crossings) return 0;
 
-    direct = rast__sink_byte_rows(sink, &out) && col0 >= out.x0 && col1 <= out.x1;
-    if (direct && out.opaque) rast__byte_rows_claim(&out, t->row0, t->row1);
+    direct = rast__delta_direct(sink, &d, t->row0, t->row1, &out);
     buf = (unsigned char *)(void *)t->edges;
-    memset(buf, 0, (size_t)hb * (size_t)stride);
+    memset(buf, 0, (size_t)hb * (size_t)d.stride);
     for (j0 = t->row0; j0 < t->row1; j0 += hb) {
         const int32_t j1 = t->row1 - j0 > hb ? j0 + hb : t->row1;
-        int32_t j;
         /* Edge by edge: its direction at each of its crossings (in one
          * band of a box the clip does not cut, every edge's rows are the
          * band's and its crossings the box's: nothing to cut). */
         if (whole) {
             for (e = 0; e < t->nedges; e++)
-                rast__delta_walk(&ed[e], buf, j0, j1, stride, col0, bits, mask, 0);
+                rast__delta_walk(&ed[e], buf, j0, j1, d.stride, d.col0, d.bits, d.mask, 0);
         } else {
             for (e = 0; e < t->nedges; e++)
-                rast__delta_walk(&ed[e], buf, j0, j1, stride, col0, bits, mask, 1);
+                rast__delta_walk(&ed[e], buf, j0, j1, d.stride, d.col0, d.bits, d.mask, 1);
         }
         /* Row by row: the runs. */
-        for (j = j0; j < j1; j++) {
-            unsigned char *row = buf + (size_t)(j - j0) * (size_t)stride;
-            if (direct) rast__delta_bytes(row, stride, bits, mask, col0, j, &out);
-            else rast__delta_row(row, stride, mask, col0, j, sink);
+        rast__delta_out(buf, j0, j1, &d, direct, &out, sink);
+    }
+    return 1;
+}
+
+/* ---- the deltas added as the edges are set up ------------------------------
+ * Finding each vertex's row in a pass of its own, setting every edge up
+ * as a record of the edge table and walking the records afterwards was
+ * half of a paragraph's fill (the rows stored and loaded again, stores
+ * and loads of 48-byte records, the buckets, a pass to count the
+ * crossings).  When the counters of all the clip's rows fit the AET's
+ * room at once (one band), an edge can instead be walked into them as
+ * soon as it is set up, ring by ring, each vertex's row found once, no
+ * record kept: the same DDA, the same crossings, the same counters; their
+ * columns are the clip's (a crossing left of it counted at its first
+ * column, one right of it past every sample, as above), and every row of
+ * the clip is swept.  When (counts known before any edge is set up: the
+ * vertices and the clip's size): as the rule above with the vertices for
+ * the edges and the clip for the polygon's box (at least
+ * RAST__DELTA_EDGES vertices a row; the sweep's word tests at most
+ * RAST__DELTA_WORDS a vertex) and one band.  Non-zero with more than 511
+ * vertices needs at most 510 crossings on every row (above): the
+ * crossings a row are counted as the edges go (a start and an end each,
+ * summed along the rows once they are all walked), and past that the
+ * counters, which may have wrapped, are left unread.  Returns 0 (the
+ * rule does not take it, or it gave up: the arena as it was) or 1, the
+ * runs handed to the sink. */
+static int rast__aet_delta_now(const rast_polygon *poly, uint32_t npoints, const rast__grid *g,
+                               rast_fill_rule rule, const rast_rect *clip, rast__arena *arena,
+                               rast__sink *sink)
+{
+    const rast__arena keep = *arena;
+    const rast_point *pts = poly->points;
+    const rast__grid gl = *g; /* (not reloaded every edge: aet.h) */
+    const int32_t row0 = clip->y0, row1 = clip->y1, rows = row1 - row0;
+    rast__delta_cols d;
+    rast__byte_rows out;
+    unsigned char *buf;
+    int32_t *starts = NULL;
+    uint32_t k, base;
+    int direct;
+
+    if (rows <= 0 || npoints < RAST__DELTA_EDGES * (uint64_t)rows) return 0;
+    d.col0 = clip->x0;
+    d.bits = clip->x1 - clip->x0;
+    d.stride = (d.bits + 1 + 7) & ~7;
+    d.mask = rule == RAST_RULE_EVENODD ? 1 : 0xFF;
+    d.whole = 0;
+    if (d.bits <= 0 ||
+        (uint64_t)rows * (uint64_t)d.stride > (uint64_t)npoints * sizeof(rast__edge) ||
+        (uint64_t)rows * (uint64_t)(d.stride / 8) > RAST__DELTA_WORDS * (uint64_t)npoints)
+        return 0;
+    buf = (unsigned char *)rast__take(arena, (size_t)rows * (size_t)d.stride);
+    if (buf && d.mask != 1 && npoints > 511) {
+        /* starts[r - row0] less ends: row r's crossings, summed along */
+        starts = (int32_t *)rast__take(arena, ((size_t)rows + 1) * sizeof(int32_t));
+        if (starts) memset(starts, 0, ((size_t)rows + 1) * sizeof(int32_t));
+        else buf = NULL;
+    }
+    if (!buf) {
+        *arena = keep;
+        return 0;
+    }
+    memset(buf, 0, (size_t)rows * (size_t)d.stride);
+    for (k = 0, base = 0; k < poly->nrings; base += poly->ring_sizes[k], k++) {
+        /* edge ia -> ib (as rast__aet_prepare_edges walks them), the row
+         * of ib found once and carried to the next edge */
+        const uint32_t stop = base + poly->ring_sizes[k];
+        uint32_t ia, ib;
+        int32_t ra, rb, r0;
+        if (stop == base) continue;
+        ra = r0 = (int32_t)rast__row_at_or_after(2 * (int64_t)pts[base].y, &gl);
+        for (ia = base, ib = base + 1; ia < stop; ia++, ib++, ra = rb) {
+            rast__edge ed;
+            if (ib == stop) {
+                ib = base;
+                rb = r0;
+            } else {
+                rb = (int32_t)rast__row_at_or_after(2 * (int64_t)pts[ib].y, &gl);
+            }
+            if (ra == rb ||
+                !rast__aet_edge_rows(&ed, &pts[ia], &pts[ib], ra, rb, &gl, row0, row1))
+                continue;
+            if (starts) {
+                starts[ed.row - row0]++;
+                starts[ed.end - row0]--;
+            }
+            rast__delta_walk(&ed, buf, row0, row1, d.stride, d.col0, d.bits, d.mask, 1);
         }
     }
+    *arena = keep; /* (nothing taken is read after the fill) */
+    if (starts) {
+        int32_t y, run = 0;
+        for (y = 0; y < rows; y++) {
+            run += starts[y];
+            if (run > 510) return 0;
+        }
+    }
+    direct = rast__delta_direct(sink, &d, row0, row1, &out);
+    rast__delta_out(buf, row0, row1, &d, direct, &out, sink);
     return 1;
 }
 #endif
@@ -369,15 +499,85 @@ rast_status rast__aet_fill(const rast_polygon *poly, uint32_t npoints,
 }
 
 #else
+/* ---- many small rings: shared edges cancel first ---------------------------
+ * A mesh given as rings (its cells turned the same way) has each inner
+ * edge twice, once each way: their parts of the winding number cancel at
+ * every sample (rast__segs_cancel, aet.h), and walking them was nearly
+ * all of the fill (a 40 x 40 grid of triangles: 9,600 edges of which the
+ * 160 of its outline are left).  When (counts known before filling):
+ * two rings or more of at most 8 vertices on average, and at most half
+ * of the edges left (else the AET's own setup, the arena as it was).
+ * What is left is set up as the walk's edge table, |n| copies of each
+ * segment turned as n says: the same winding number at every sample,
+ * so the same runs under either rule (even-odd: the parity). */
+static int rast__aet_cancel(const rast_polygon *poly, uint32_t npoints, const rast__grid *g,
+                            rast_fill_rule rule, const rast_rect *clip, rast__arena *arena,
+                            rast__aet_tab *t, size_t *room)
+{
+    const rast__arena keep = *arena;
+    rast__seg *seg;
+    uint32_t copies;
+    int32_t m, i, k, nedges = 0, miny, maxy, minx, maxx;
+    int64_t r;
+    m = rast__segs_cancel(poly, npoints, rule == RAST_RULE_EVENODD, arena, &seg, &copies);
+    if (m < 0) return 0;
+    t->row0 = t->row1 = 0;
+    if (m == 0) return 1;
+    miny = seg[0].a.y;
+    maxy = seg[0].b.y;
+    minx = maxx = seg[0].a.x;
+    for (i = 0; i < m; i++) {
+        miny = seg[i].a.y < miny ? seg[i].a.y : miny;
+        maxy = seg[i].b.y > maxy ? seg[i].b.y : maxy;
+        minx = seg[i].a.x < minx ? seg[i].a.x : minx;
+        minx = seg[i].b.x < minx ? seg[i].b.x : minx;
+        maxx = seg[i].a.x > maxx ? seg[i].a.x : maxx;
+        maxx = seg[i].b.x > maxx ? seg[i].b.x : maxx;
+    }
+    r = rast__row_at_or_after(2 * (int64_t)miny, g);
+    t->row0 = r > clip->y0 ? (int32_t)r : clip->y0;
+    r = rast__row_at_or_after(2 * (int64_t)maxy, g);
+    t->row1 = r < clip->y1 ? (int32_t)r : clip->y1;
+    if (t->row0 >= t->row1) return 1;
+    t->minx = minx;
+    t->maxx = maxx;
+    if (!rast__aet_tables(arena, copies, t->row0, t->row1, &t->edges, &t->aet, &t->bucket)) {
+        *arena = keep;
+        return 0;
+    }
+    for (i = 0; i < m; i++)
+        for (k = 0; k < (seg[i].n < 0 ? -seg[i].n : seg[i].n); k++) {
+            rast__edge *ed = &t->aet[nedges];
+            if (seg[i].n > 0 ? rast__edge_setup(ed, seg[i].a, seg[i].b, g, t->row0, t->row1)
+                             : rast__edge_setup(ed, seg[i].b, seg[i].a, g, t->row0, t->row1)) {
+                ed->next = nedges++;
+                t->bucket[ed->row - t->row0 + 1]++;
+            }
+        }
+    t->nedges = nedges;
+    *room = (size_t)copies * sizeof(rast__edge);
+    return 1;
+}
+
 rast_status rast__aet_fill_by(const rast_polygon *poly, uint32_t npoints, const rast__grid *g,
                               rast_fill_rule rule, const rast_rect *clip, rast__sink *sink,
                               rast__arena *arena, int how)
 {
     rast__aet_tab t;
-    rast_status st = rast__aet_prepare(poly, npoints, g, clip, arena, NULL, &t);
+    rast_status st = RAST_OK;
+    size_t room = (size_t)npoints * sizeof(rast__edge);
+    if (!(how == RAST__AET_BY_RULE && poly->nrings >= 2 &&
+          npoints <= 8 * (uint64_t)poly->nrings &&
+          rast__aet_cancel(poly, npoints, g, rule, clip, arena, &t, &room))) {
+        if (how == RAST__AET_BY_RULE && rast__aet_delta_now(poly, npoints, g, rule, clip, arena, sink)) {
+            rast__sink_flush(sink);
+            return RAST_OK;
+        }
+        st = rast__aet_prepare(poly, npoints, g, clip, arena, NULL, &t);
+    }
     if (st == RAST_OK && t.row0 < t.row1 &&
         (how == RAST__AET_BY_SWEEP ||
-         !rast__aet_delta(npoints, g, rule, clip, &t, sink, how == RAST__AET_BY_DELTA)))
+         !rast__aet_delta(room, g, rule, clip, &t, sink, how == RAST__AET_BY_DELTA)))
         rast__aet_sweep(t.edges, t.aet, t.bucket, t.nedges, t.row0, t.row1, rule, rast__aet_span,
                         NULL, sink);
     rast__sink_flush(sink);

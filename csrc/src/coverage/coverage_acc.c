@@ -1464,21 +1464,22 @@ static void rast__acc_by_rows(const rast__acc_walk *w, rast__acc *a)
  * rast__acc_row_part_in puts them, and the edges that go on below row j
  * copied to nx[], in order (returns how many).  A part in one column of
  * the clip (four in five of a line of text's) is put here, the row's
- * bounds lo, hi in registers, its two cells marked and counted as
- * rast__acc_touch would (the column and the next, the last of the clip at
- * most); any other goes to rast__acc_part.  count as rast__acc_part's (a
- * constant at each call).  (From 79 instructions a part to ~50 on the
- * text family: the struct's fields reloaded after each store, which may
- * alias them, the clip tests of the general way, the calls.) */
+ * bounds lo, hi in registers (not moved when count: rast__acc_spread),
+ * its two cells marked and counted as rast__acc_touch would (the column
+ * and the next, the last of the clip at most); any other goes to
+ * rast__acc_part.  count as rast__acc_part's, dense a->dense (constants
+ * at each call: no test of either a part).  (From 79 instructions a part
+ * to ~50 on the text family: the struct's fields reloaded after each
+ * store, which may alias them, the clip tests of the general way, the
+ * calls.) */
 RAST__HOT int32_t rast__acc_parts(rast__acc *a, rast__cedge *e, const int32_t *ix, int32_t n, int32_t *nx,
-                                  int32_t j, int count)
+                                  int32_t j, int count, int dense)
 {
     const int32_t p = a->p, hq = a->hq, last = a->last;
     const int64_t Yj = (int64_t)j * p, x0 = a->x0;
     const uint64_t fm = QT - 1, w = (uint64_t)(a->x1 - a->x0);
     uint64_t *const acc = a->acc, *const blk = a->blk;
     uint32_t *const cnt = a->cnt;
-    const int dense = a->dense;
     int32_t lo = a->lo, hi = a->hi, k, q = 0;
     for (k = 0; k < n; k++) {
         rast__cedge *const ed = &e[ix[k]];
@@ -1678,7 +1679,13 @@ static void rast__acc_by_rows(const rast__acc_walk *w, rast__acc *a)
             a->dense = (int64_t)nrow * RAST__ACC_DENSE >= w->width;
             a->cnt = nrow >= RAST__ACC_FEW ? cnt : NULL;
             /* (two calls: the count costs nothing where not asked) */
-            q = a->cnt ? rast__acc_parts(a, e, cur, nrow, nxt, j, 1) : rast__acc_parts(a, e, cur, nrow, nxt, j, 0);
+            /* (and two for dense rows: no test a part) */
+            if (a->cnt)
+                q = a->dense ? rast__acc_parts(a, e, cur, nrow, nxt, j, 1, 1)
+                             : rast__acc_parts(a, e, cur, nrow, nxt, j, 1, 0);
+            else
+                q = a->dense ? rast__acc_parts(a, e, cur, nrow, nxt, j, 0, 1)
+                             : rast__acc_parts(a, e, cur, nrow, nxt, j, 0, 0);
             a->spread = a->cnt != NULL;
             done = rast__acc_emit(a, 1, o, j, w->rule, m, rast__acc_win((uint64_t)nrow, m), e, cur, nrow) ||
                    rast__acc_ties(a, w, e, cur, nrow, j);
@@ -1733,7 +1740,13 @@ static int rast__acc_again(rast__acc *a, const rast__acc_walk *w, int32_t j, int
  * the band's row r, each edge walked over the band's rows at once
  * (rast__acc_edge; the long edges' walk); the exact rows' cells cleared
  * when the first is needed. */
+#if defined(__OPTIMIZE_SIZE__)
 static void rast__acc_by_bands(const rast__acc_walk *w, rast__acc *v)
+#else
+/* (out of line: inline, the rows' walk in the same function had fewer
+ * registers, ~1% of the text family's instructions) */
+RAST__APART void rast__acc_by_bands(const rast__acc_walk *w, rast__acc *v)
+#endif
 {
     rast__cedge *const e = w->e;
     const rast__cov_out *const o = w->o;

@@ -150,10 +150,20 @@ typedef struct rast__acc {
     int32_t lo, hi;    /* cells touched this row: [lo, hi] (lo > hi: none) */
     int32_t p, hq;     /* P = 2^S; HQ = 30 - S */
     int dense;         /* this row: no bits, every cell in [lo, hi] read */
+#if !defined(__OPTIMIZE_SIZE__)
+    int spread;        /* the counted parts did not all move lo, hi
+                        * (rast__acc_parts: rast__acc_spread) */
+#endif
     uint32_t *cnt;     /* NULL, or for each 16 columns the parts that touch
                         * them this row (rast__acc_count; rast__acc_part
                         * counts when asked) */
 } rast__acc;
+
+#if defined(__OPTIMIZE_SIZE__)
+#define RAST__ACC_SPREAD(a) 0
+#else
+#define RAST__ACC_SPREAD(a) ((a)->spread)
+#endif
 
 /* rast__cov_qtop, rast__cov_qt_first with this engine's P and HQ */
 static inline int64_t rast__acc_top(rast__cedge *e, int32_t j, const rast__acc *a)
@@ -183,6 +193,9 @@ static void rast__acc_init(rast__acc *a, uint64_t *acc, uint64_t *bits, uint32_t
     a->hq = QF - s;
     a->dense = (int64_t)nrow * RAST__ACC_DENSE >= a->x1 - a->x0;
     a->cnt = NULL;
+#if !defined(__OPTIMIZE_SIZE__)
+    a->spread = 0;
+#endif
 }
 
 #if !defined(__OPTIMIZE_SIZE__)
@@ -1121,6 +1134,40 @@ static int rast__acc_done(const rast__cov_out *o, int32_t y, uint64_t bad, const
     return 1;
 }
 
+#if !defined(__OPTIMIZE_SIZE__)
+/* The most parts in any 16 columns of a row of width w whose parts
+ * rast__acc_parts counted (a->spread), every count read and cleared; the
+ * cells [*lo, *hi) to read widened to those the counted parts touched.
+ * The parts that it puts in one column or two are counted but leave lo
+ * and hi as they are (8 instructions a part, a twentieth of the text
+ * family's), so the counts say which cells they touched: from the first
+ * counted 16 columns to the last's and the cell after (a part counted in
+ * the columns of c touches c + 1 at most).  The cells read past those
+ * touched hold 0: the same levels.  (Out of line: inline, the bands'
+ * walk, which does not take it, lost registers to it.) */
+RAST__APART uint32_t rast__acc_spread(rast__acc *a, int32_t w, int32_t *lo, int32_t *hi)
+{
+    const int32_t nb = (w - 1) >> 4;
+    uint32_t most = 0, c;
+    int32_t b, b0 = -1, b1 = -1;
+    for (b = 0; b <= nb; b++) {
+        c = a->cnt[b];
+        if (c) {
+            b0 = b0 < 0 ? b : b0;
+            b1 = b;
+            most = c > most ? c : most;
+            a->cnt[b] = 0;
+        }
+    }
+    if (b0 >= 0) {
+        *lo = b0 * 16 < *lo ? b0 * 16 : *lo;
+        *hi = b1 * 16 + 17 > *hi ? b1 * 16 + 17 : *hi;
+        *hi = *hi < w ? *hi : w;
+    }
+    return most;
+}
+#endif
+
 /* Row y from the cells touched, which are cleared: rast__acc_done's.
  * win: the window of the row's n parts, or, where a counts the parts per
  * 16 columns, that of the most of them (the counts cleared). */
@@ -1132,8 +1179,15 @@ RAST__HOT int rast__acc_emit(rast__acc *a, int32_t sx, const rast__cov_out *o, i
     const int dense = a->dense;
     uint64_t bad;
     int32_t lo = a->lo, hi = a->hi < w ? a->hi + 1 : w; /* [lo, hi) */
+#if !defined(__OPTIMIZE_SIZE__)
+    if (a->cnt && a->spread) {
+        win = rast__acc_win(rast__acc_spread(a, w, &lo, &hi), m);
+        /* (the quick way's 32-bit sums need |a| < 2^7: n < 256) */
+        if (dense && rule == RAST_RULE_NONZERO && n >= 256) a->dense = 2;
+    }
+#endif
     if (lo >= hi) lo = hi = 0;
-    if (a->cnt) {
+    if (a->cnt && !RAST__ACC_SPREAD(a)) {
         uint32_t most = 0;
         int32_t b;
         for (b = lo >> 4; lo < hi && b <= (hi - 1) >> 4; b++) {
@@ -1441,21 +1495,22 @@ static void rast__acc_by_rows(const rast__acc_walk *w, rast__acc *a)
  * rast__acc_row_part_in puts them, and the edges that go on below row j
  * copied to nx[], in order (returns how many).  A part in one column of
  * the clip (four in five of a line of text's) is put here, the row's
- * bounds lo, hi in registers, its two cells marked and counted as
- * rast__acc_touch would (the column and the next, the last of the clip at
- * most); any other goes to rast__acc_part.  count as rast__acc_part's (a
- * constant at each call).  (From 79 instructions a part to ~50 on the
- * text family: the struct's fields reloaded after each store, which may
- * alias them, the clip tests of the general way, the calls.) */
+ * bounds lo, hi in registers (not moved when count: rast__acc_spread),
+ * its two cells marked and counted as rast__acc_touch would (the column
+ * and the next, the last of the clip at most); any other goes to
+ * rast__acc_part.  count as rast__acc_part's, dense a->dense (constants
+ * at each call: no test of either a part).  (From 79 instructions a part
+ * to ~50 on the text family: the struct's fields reloaded after each
+ * store, which may alias them, the clip tests of the general way, the
+ * calls.) */
 RAST__HOT int32_t rast__acc_parts(rast__acc *a, rast__cedge *e, const int32_t *ix, int32_t n, int32_t *nx,
-                                  int32_t j, int count)
+                                  int32_t j, int count, int dense)
 {
     const int32_t p = a->p, hq = a->hq, last = a->last;
     const int64_t Yj = (int64_t)j * p, x0 = a->x0;
     const uint64_t fm = QT - 1, w = (uint64_t)(a->x1 - a->x0);
     uint64_t *const acc = a->acc, *const blk = a->blk;
     uint32_t *const cnt = a->cnt;
-    const int dense = a->dense;
     int32_t lo = a->lo, hi = a->hi, k, q = 0;
     for (k = 0; k < n; k++) {
         rast__cedge *const ed = &e[ix[k]];
@@ -1470,8 +1525,10 @@ RAST__HOT int32_t rast__acc_parts(rast__acc *a, rast__cedge *e, const int32_t *i
         if (ca == cb && (uint64_t)ca < w) {
             const int32_t c0 = (int32_t)ca, c1 = c0 < last ? c0 + 1 : c0;
             rast__acc_put(acc, ca, (uint64_t)xa & fm, (uint64_t)xb & fm, tb - ta, ed->dir < 0 ? ~(uint64_t)0 : 0, 1);
-            lo = c0 < lo ? c0 : lo;
-            hi = c0 + 1 > hi ? c0 + 1 : hi;
+            if (!count) { /* (counted: the counts have them, rast__acc_emit) */
+                lo = c0 < lo ? c0 : lo;
+                hi = c0 + 1 > hi ? c0 + 1 : hi;
+            }
             if (!dense) {
                 blk[c0 >> 6] |= (uint64_t)1 << (c0 & 63);
                 blk[c1 >> 6] |= (uint64_t)1 << (c1 & 63);
@@ -1496,8 +1553,10 @@ RAST__HOT int32_t rast__acc_parts(rast__acc *a, rast__cedge *e, const int32_t *i
             ed->qt += ed->qts + rast__acc_carry(&qtr, adx);
             ed->qtr = qtr;
             ed->qX += right ? 1 : -1;
-            lo = c0 < lo ? c0 : lo;
-            hi = c1 + 1 > hi ? c1 + 1 : hi;
+            if (!count) {
+                lo = c0 < lo ? c0 : lo;
+                hi = c1 + 1 > hi ? c1 + 1 : hi;
+            }
             if (!dense) {
                 blk[c0 >> 6] |= (uint64_t)1 << (c0 & 63);
                 blk[c1 >> 6] |= (uint64_t)1 << (c1 & 63);
@@ -1651,7 +1710,14 @@ static void rast__acc_by_rows(const rast__acc_walk *w, rast__acc *a)
             a->dense = (int64_t)nrow * RAST__ACC_DENSE >= w->width;
             a->cnt = nrow >= RAST__ACC_FEW ? cnt : NULL;
             /* (two calls: the count costs nothing where not asked) */
-            q = a->cnt ? rast__acc_parts(a, e, cur, nrow, nxt, j, 1) : rast__acc_parts(a, e, cur, nrow, nxt, j, 0);
+            /* (and two for dense rows: no test a part) */
+            if (a->cnt)
+                q = a->dense ? rast__acc_parts(a, e, cur, nrow, nxt, j, 1, 1)
+                             : rast__acc_parts(a, e, cur, nrow, nxt, j, 1, 0);
+            else
+                q = a->dense ? rast__acc_parts(a, e, cur, nrow, nxt, j, 0, 1)
+                             : rast__acc_parts(a, e, cur, nrow, nxt, j, 0, 0);
+            a->spread = a->cnt != NULL;
             done = rast__acc_emit(a, 1, o, j, w->rule, m, rast__acc_win((uint64_t)nrow, m), e, cur, nrow) ||
                    rast__acc_ties(a, w, e, cur, nrow, j);
         } else {
@@ -1705,7 +1771,13 @@ static int rast__acc_again(rast__acc *a, const rast__acc_walk *w, int32_t j, int
  * the band's row r, each edge walked over the band's rows at once
  * (rast__acc_edge; the long edges' walk); the exact rows' cells cleared
  * when the first is needed. */
+#if defined(__OPTIMIZE_SIZE__)
 static void rast__acc_by_bands(const rast__acc_walk *w, rast__acc *v)
+#else
+/* (out of line: inline, the rows' walk in the same function had fewer
+ * registers, ~1% of the text family's instructions) */
+RAST__APART void rast__acc_by_bands(const rast__acc_walk *w, rast__acc *v)
+#endif
 {
     rast__cedge *const e = w->e;
     const rast__cov_out *const o = w->o;

@@ -357,6 +357,19 @@ static void rast__heap_set(rast__sweep *w, int32_t pos, uint64_t v)
         rast__heap_down(w, s);
 }
 
+/* The top (the crossing just done, whose pair is in order now) leaves and
+ * pair q, not in the heap, comes in with time v < T: it takes the top's
+ * slot and sinks, one pass instead of the removal's and the insertion's
+ * (the removal alone was a quarter of "area"'s instructions on 2,000
+ * canvas-spanning triangles). */
+static void rast__heap_retop(rast__sweep *w, int32_t q, uint64_t v)
+{
+    w->hidx[w->h[0]] = -1;
+    w->h[0] = q;
+    w->ct[0] = v;
+    rast__heap_down(w, 0);
+}
+
 /* The heap of the pairs 0..np of live[] from their times (pair k's in
  * ct[k]; those inside the row kept, each at its slot). */
 static void rast__heap_build(rast__sweep *w, int32_t np)
@@ -894,11 +907,22 @@ static void rast__cov_row_area(rast__cells *c, rast__cedge *e, int32_t *row, int
             sw->wb[p + 1] = sw->wb[p] + b->dir;
             rast__cov_resign(c, b, Yj, j, tc, rast__cov_sign(rule, sw->wb[p], b->dir));
             rast__cov_resign(c, a, Yj, j, tc, rast__cov_sign(rule, sw->wb[p + 1], a->dir));
-            rast__heap_set(sw, p, NONE);
-            if (p > 0)
-                rast__heap_set(sw, p - 1, rast__cov_pair(&e[live[p - 1]], ib, b, Yj, j, tc, c));
-            if (p + 2 < n)
-                rast__heap_set(sw, p + 1, rast__cov_pair(a, live[p + 2], &e[live[p + 2]], Yj, j, tc, c));
+            {   /* pair p is in order now; its neighbours' times change.  A
+                 * neighbour new to the heap takes the top's slot. */
+                const uint64_t vl = p > 0 ? rast__cov_pair(&e[live[p - 1]], ib, b, Yj, j, tc, c) : NONE;
+                const uint64_t vr = p + 2 < n ? rast__cov_pair(a, live[p + 2], &e[live[p + 2]], Yj, j, tc, c) : NONE;
+                if (vl < T && sw->hidx[p - 1] < 0) {
+                    rast__heap_retop(sw, p - 1, vl);
+                    if (p + 2 < n) rast__heap_set(sw, p + 1, vr);
+                } else if (vr < T && sw->hidx[p + 1] < 0) {
+                    rast__heap_retop(sw, p + 1, vr);
+                    if (p > 0) rast__heap_set(sw, p - 1, vl);
+                } else {
+                    rast__heap_set(sw, p, NONE);
+                    if (p > 0) rast__heap_set(sw, p - 1, vl);
+                    if (p + 2 < n) rast__heap_set(sw, p + 1, vr);
+                }
+            }
         }
         if (tv < T) { /* a vertex event: mended where it can be */
             uint64_t tvn;

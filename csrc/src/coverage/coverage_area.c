@@ -2098,14 +2098,16 @@ static inline int64_t rast__dead_floor(int64_t v)
            ((int64_t)1 << (62 - RAST__DEAD_SH));
 }
 
-static int rast__grp_dead(const rast__cells *c, rast__cedge *e, const int32_t *g, int32_t m,
-                          rast__sweep *sw, int32_t j, rast_fill_rule rule, int32_t w)
+RAST__APART int rast__grp_dead(const rast__cells *c, rast__cedge *e, const int32_t *g, int32_t m,
+                            rast__sweep *sw, int32_t j, rast_fill_rule rule, int32_t w)
 {
     const int64_t Yj = (int64_t)j * c->p;
     int32_t *const klo = sw->wb, *const khi = sw->hidx, *const bl = sw->live, *const bh = sw->h;
     int64_t mn = INT64_MAX, mx = INT64_MIN;
     int32_t k, q, pa = 0, na = 0, ps = 0, ns = 0;
-    if (rule != RAST_RULE_NONZERO || m < RAST__DEAD_MIN) return 0;
+    /* (w = 0: the edge of least lo has no edge of the first kind, its
+     * bound holds w) */
+    if (rule != RAST_RULE_NONZERO || m < RAST__DEAD_MIN || w == 0) return 0;
     for (k = 0; k < m; k++) {
         rast__cedge *ed = &e[g[k]];
         const int64_t a = ed->qa < ed->qb ? ed->qa : ed->qb, b = ed->qa < ed->qb ? ed->qb : ed->qa;

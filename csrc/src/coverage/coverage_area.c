@@ -381,7 +381,8 @@ static void rast__heap_set(rast__sweep *w, int32_t pos, uint64_t v)
  * pair q, not in the heap, comes in with time v < T: it takes the top's
  * slot and sinks, one pass instead of the removal's and the insertion's
  * (the removal alone was a quarter of "area"'s instructions on 2,000
- * canvas-spanning triangles). */
+ * canvas-spanning triangles).  Size-optimised builds (firmware, -Os)
+ * remove and insert, as before (RAST__SHORTCUTS). */
 static void rast__heap_retop(rast__sweep *w, int32_t q, uint64_t v)
 {
     w->hidx[w->h[0]] = -1;
@@ -931,10 +932,10 @@ static void rast__cov_row_area(rast__cells *c, rast__cedge *e, int32_t *row, int
                  * neighbour new to the heap takes the top's slot. */
                 const uint64_t vl = p > 0 ? rast__cov_pair(&e[live[p - 1]], ib, b, Yj, j, tc, c) : NONE;
                 const uint64_t vr = p + 2 < n ? rast__cov_pair(a, live[p + 2], &e[live[p + 2]], Yj, j, tc, c) : NONE;
-                if (vl < T && sw->hidx[p - 1] < 0) {
+                if (RAST__SHORTCUTS && vl < T && sw->hidx[p - 1] < 0) {
                     rast__heap_retop(sw, p - 1, vl);
                     if (p + 2 < n) rast__heap_set(sw, p + 1, vr);
-                } else if (vr < T && sw->hidx[p + 1] < 0) {
+                } else if (RAST__SHORTCUTS && vr < T && sw->hidx[p + 1] < 0) {
                     rast__heap_retop(sw, p + 1, vr);
                     if (p > 0) rast__heap_set(sw, p - 1, vl);
                 } else {

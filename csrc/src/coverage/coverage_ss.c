@@ -176,39 +176,20 @@ static inline int32_t rast__ss_at(int32_t x, int32_t fx0, int32_t fx1, int clamp
     return (clamp ? (x < fx0 ? fx0 : x > fx1 ? fx1 : x) : x) - fx0;
 }
 
-/* Edges a and b (a's successor) bound one run of a row (a pair of
- * opposite directions, or of an even-odd row): the run added, both edges
- * stepped; 1 when they are out of order after it (with the last abscissa
- * *last before them), *last set to b's.  (The step of rast__ss_nz,
- * rast__ss_eo and their list forms.) */
-static inline int rast__ss_run2(rast__edge *a, rast__edge *b, int32_t *d, uint64_t *mark, int32_t kb,
-                                int32_t fx0, int32_t fx1, int clamp, int32_t *last)
+/* Edges e[0] and e[1] bound one run of a row (a pair of opposite
+ * directions, or of an even-odd row): the run added, both edges stepped;
+ * 1 when they are out of order after it (with the last abscissa *last
+ * before them), *last set to e[1]'s.  (rast__ss_nz's and rast__ss_eo's
+ * step.) */
+static inline int rast__ss_run2(rast__edge *e, int32_t *d, uint64_t *mark, int32_t kb, int32_t fx0,
+                                int32_t fx1, int clamp, int32_t *last)
 {
     int swapped;
-    rast__ss_pair(d, mark, kb, rast__ss_at(a->x, fx0, fx1, clamp), rast__ss_at(b->x, fx0, fx1, clamp));
-    rast__edge_step(a);
-    rast__edge_step(b);
-    swapped = (a->x < *last) | (b->x < a->x);
-    *last = b->x;
-    return swapped;
-}
-
-/* Edge a of a non-zero row counted edge by edge: the winding number *w
- * (from 0 where a run starts, at column *x0) moved by its direction, the
- * run added where it comes back to 0, the edge stepped; 1 when it is out
- * of order after it (*last as rast__ss_run2's). */
-static inline int rast__ss_wind1(rast__edge *a, int32_t *w, int32_t *x0, int32_t *d, uint64_t *mark,
-                                 int32_t kb, int32_t fx0, int32_t fx1, int clamp, int32_t *last)
-{
-    /* (clamped, not yet relative to fx0: taken off at a run only) */
-    const int32_t x = rast__ss_at(a->x, fx0, fx1, clamp) + fx0;
-    int swapped;
-    if (*w == 0) *x0 = x;
-    *w += a->dir;
-    if (*w == 0) rast__ss_pair(d, mark, kb, *x0 - fx0, x - fx0);
-    rast__edge_step(a);
-    swapped = a->x < *last;
-    *last = a->x;
+    rast__ss_pair(d, mark, kb, rast__ss_at(e[0].x, fx0, fx1, clamp), rast__ss_at(e[1].x, fx0, fx1, clamp));
+    rast__edge_step(&e[0]);
+    rast__edge_step(&e[1]);
+    swapped = (e[0].x < *last) | (e[1].x < e[0].x);
+    *last = e[1].x;
     return swapped;
 }
 
@@ -223,9 +204,17 @@ RAST__HOT int rast__ss_nz(rast__edge *aet, int32_t n, int32_t *d, uint64_t *mark
      * rows of most polygons are only such pairs); from the first pair
      * that is not, edge by edge, the winding number counted from 0. */
     for (; i + 1 < n && aet[i].dir + aet[i + 1].dir == 0; i += 2)
-        swapped |= rast__ss_run2(&aet[i], &aet[i + 1], d, mark, kb, fx0, fx1, clamp, &last);
-    for (; i < n; i++)
-        swapped |= rast__ss_wind1(&aet[i], &w, &x0, d, mark, kb, fx0, fx1, clamp, &last);
+        swapped |= rast__ss_run2(&aet[i], d, mark, kb, fx0, fx1, clamp, &last);
+    for (; i < n; i++) {
+        /* (clamped, not yet relative to fx0: taken off at a run only) */
+        const int32_t x = rast__ss_at(aet[i].x, fx0, fx1, clamp) + fx0;
+        if (w == 0) x0 = x;
+        w += aet[i].dir;
+        if (w == 0) rast__ss_pair(d, mark, kb, x0 - fx0, x - fx0);
+        rast__edge_step(&aet[i]);
+        swapped |= aet[i].x < last;
+        last = aet[i].x;
+    }
     return swapped;
 }
 
@@ -236,7 +225,7 @@ RAST__HOT int rast__ss_eo(rast__edge *aet, int32_t n, int32_t *d, uint64_t *mark
 {
     int32_t i, last = INT32_MIN, swapped = 0;
     for (i = 0; i + 1 < n; i += 2)
-        swapped |= rast__ss_run2(&aet[i], &aet[i + 1], d, mark, kb, fx0, fx1, clamp, &last);
+        swapped |= rast__ss_run2(&aet[i], d, mark, kb, fx0, fx1, clamp, &last);
     if (i < n) { /* an odd edge out bounds no run */
         rast__edge_step(&aet[i]);
         swapped |= aet[i].x < last;
@@ -278,191 +267,6 @@ static void rast__ss_row_ends(void *user, int32_t y, rast__edge *aet, int32_t n)
 #endif
     if (swapped) rast__aet_sort(aet, n);
 }
-
-#if !defined(__OPTIMIZE_SIZE__)
-/* ---- the polygon's walk with its active edges in a list -----------------
- * The AET (aet.h) keeps a row's active edges in an array of records in
- * order of column: an edge that joins or ends moves every record after
- * it, and text, a map or a stroke's outline has edges of a few fine rows
- * (a fine row of a paragraph joins and drops a dozen of its ~200), so
- * that merging and compacting the array was a third of their ss4.  Here
- * the records stay where the edge table has them (grouped by first row)
- * and the active ones are a list in order of column (`next`: the next
- * record's index, -1 at the end): the edges that start on a row are
- * sorted among themselves and merged in as one pass of comparisons (no
- * record moved), an edge that ends is unlinked in the pass that steps
- * them, and a row where two changed places is put back in order by an
- * insertion sort (rast__ss_list_sort).  The same
- * edges in the same order on every row (edges of equal column in some
- * order, which changes no count: rast__aet_order_fn), so the same runs.
- * Not in a build for size, which keeps the AET's walk (less code). */
-
-/* The edges E[first..last) (one row's, from the grouped table) merged
- * into the list from *head in order of column, each after the active
- * ones of equal column: up to RAST__AET_KEYS of them in order of a key
- * an edge (its column over its index, as rast__aet_join_keys), more
- * sorted in the table (as rast__aet_join sorts them). */
-static void rast__ss_list_join(rast__edge *E, int32_t *head, int32_t first, int32_t last)
-{
-    uint64_t key[RAST__AET_KEYS];
-    int32_t k = last - first, i, c, *link = head;
-    if (k <= 16 || k > RAST__AET_KEYS) {
-        if (k <= 16)
-            rast__aet_sort(E + first, k); /* few: insertion is quicker */
-        else
-            (void)rast__aet_sort_within(E + first, k, 4 * k);
-    } else {
-        for (i = 0; i < k; i++) {
-            const uint64_t v = ((uint64_t)((uint32_t)E[first + i].x ^ 0x80000000u) << 32) |
-                               (uint32_t)(first + i);
-            int32_t at = i;
-            for (; at > 0 && key[at - 1] > v; at--) key[at] = key[at - 1];
-            key[at] = v;
-        }
-    }
-    for (i = 0; i < k; i++) {
-        const int32_t e = k <= 16 || k > RAST__AET_KEYS ? first + i : (int32_t)(uint32_t)key[i],
-                      x = E[e].x;
-        while ((c = *link) >= 0 && E[c].x <= x) link = &E[c].next;
-        E[e].next = c;
-        *link = e;
-        link = &E[e].next;
-    }
-}
-
-/* The list put back in order of column after a row where edges changed
- * places: an insertion sort, front to back, each edge left of the one
- * before it unlinked and put back after the nearest one before it at or
- * left of it, found going back along `row`, set on the way to the index
- * of the edge before (-1: none; the walk no longer reads `row` once an
- * edge is active).  Few move, and not far. */
-static void rast__ss_list_sort(rast__edge *E, int32_t *head)
-{
-    int32_t a = *head, nx, p = -1, q, r, x = INT32_MIN;
-    for (; a >= 0; a = nx) {
-        nx = E[a].next;
-        if (E[a].x >= x) { /* in order (x: the greatest column before it) */
-            E[a].row = p;
-            p = a;
-            x = E[a].x;
-            continue;
-        }
-        E[p].next = nx; /* (p: the last edge in order, which stays last) */
-        for (q = E[p].row; q >= 0 && E[q].x > E[a].x; q = E[q].row) {
-        }
-        r = q >= 0 ? E[q].next : *head;
-        E[a].next = r;
-        E[a].row = q;
-        E[r].row = a;
-        if (q >= 0)
-            E[q].next = a;
-        else
-            *head = a;
-    }
-}
-
-/* Edge A (at *link) stepped past row y1 - 1: unlinked when it ends
- * there (counted in *gone); returns where the next edge's link is. */
-static inline int32_t *rast__ss_list_keep(rast__edge *A, int32_t *link, int32_t y1, int32_t *gone)
-{
-    if (A->end == y1) {
-        *link = A->next;
-        ++*gone;
-        return link;
-    }
-    return &A->next;
-}
-
-/* A non-zero fine row's runs from the list (rast__ss_nz's, edge for
- * edge), the edges stepped, those that end unlinked; returns twice
- * those unlinked, plus 1 when two changed places.  `y1`: the next row. */
-RAST__HOT int rast__ss_list_nz(rast__edge *E, int32_t *head, int32_t y1, int32_t *d,
-                               uint64_t *mark, int32_t kb, int32_t fx0, int32_t fx1, int clamp)
-{
-    int32_t *link = head, a, w = 0, x0 = 0, last = INT32_MIN, swapped = 0, gone = 0;
-    while ((a = *link) >= 0) { /* pairs of opposite directions while they come */
-        rast__edge *A = &E[a], *B;
-        if (A->next < 0) break;
-        B = &E[A->next];
-        if (A->dir + B->dir != 0) break;
-        swapped |= rast__ss_run2(A, B, d, mark, kb, fx0, fx1, clamp, &last);
-        link = rast__ss_list_keep(A, link, y1, &gone);
-        link = rast__ss_list_keep(B, link, y1, &gone);
-    }
-    while ((a = *link) >= 0) { /* then edge by edge, the winding number from 0 */
-        swapped |= rast__ss_wind1(&E[a], &w, &x0, d, mark, kb, fx0, fx1, clamp, &last);
-        link = rast__ss_list_keep(&E[a], link, y1, &gone);
-    }
-    return gone * 2 + swapped;
-}
-
-/* An even-odd fine row's, as rast__ss_list_nz (runs between edges 2k and
- * 2k + 1). */
-RAST__HOT int rast__ss_list_eo(rast__edge *E, int32_t *head, int32_t y1, int32_t *d,
-                               uint64_t *mark, int32_t kb, int32_t fx0, int32_t fx1, int clamp)
-{
-    int32_t *link = head, a, last = INT32_MIN, swapped = 0, gone = 0;
-    while ((a = *link) >= 0) {
-        rast__edge *A = &E[a], *B;
-        if (A->next < 0) { /* an odd edge out bounds no run */
-            rast__edge_step(A);
-            swapped |= A->x < last;
-            (void)rast__ss_list_keep(A, link, y1, &gone);
-            break;
-        }
-        B = &E[A->next];
-        swapped |= rast__ss_run2(A, B, d, mark, kb, fx0, fx1, clamp, &last);
-        link = rast__ss_list_keep(A, link, y1, &gone);
-        link = rast__ss_list_keep(B, link, y1, &gone);
-    }
-    return gone * 2 + swapped;
-}
-
-/* The walk of the edge table t (rast__aet_prepare's) under `rule`: fine
- * row by fine row, the edges that start joined, the row's runs counted
- * (each case its own loop, as rast__ss_row_ends), the list put back in
- * order where needed. */
-static void rast__ss_list_walk(rast__ss *ss, const rast__aet_tab *t, rast_fill_rule rule)
-{
-    rast__edge *const E = t->edges;
-    int32_t *const bucket = t->bucket;
-    const int32_t row0 = t->row0, row1 = t->row1, kb = ss->kbits, fx0 = ss->fx0, fx1 = ss->fx1;
-    const int clip = ss->clip, eo = rule == RAST_RULE_EVENODD;
-    int32_t *d = ss->d;
-    uint64_t *mark = ss->dense ? NULL : ss->mark;
-    int32_t j, k, run = 0, first = 0, head = -1, n = 0;
-    /* grouped by first row: bucket[r - row0] ends up where row r's run
-     * ends (as rast__aet_sweep groups them) */
-    for (j = 0; j <= row1 - row0; j++) {
-        run += bucket[j];
-        bucket[j] = run;
-    }
-    for (k = 0; k < t->nedges; k++) E[bucket[t->aet[k].row - row0]++] = t->aet[k];
-    for (j = row0; j < row1; j++) {
-        const int32_t last = bucket[j - row0];
-        int32_t swapped;
-        if (last != first) {
-            rast__ss_list_join(E, &head, first, last);
-            n += last - first;
-            first = last;
-        }
-        if (head < 0) continue;
-        rast__ss_row(ss, j - ss->fy0);
-        ss->ends += n;
-        if (eo)
-            swapped = clip ? rast__ss_list_eo(E, &head, j + 1, d, mark, kb, fx0, fx1, 1)
-                           : rast__ss_list_eo(E, &head, j + 1, d, mark, kb, fx0, fx1, 0);
-        else if (!clip)
-            swapped = mark ? rast__ss_list_nz(E, &head, j + 1, d, mark, kb, fx0, fx1, 0)
-                           : rast__ss_list_nz(E, &head, j + 1, d, NULL, kb, fx0, fx1, 0);
-        else
-            swapped = mark ? rast__ss_list_nz(E, &head, j + 1, d, mark, kb, fx0, fx1, 1)
-                           : rast__ss_list_nz(E, &head, j + 1, d, NULL, kb, fx0, fx1, 1);
-        n -= swapped >> 1;
-        if (swapped & 1) rast__ss_list_sort(E, &head);
-    }
-}
-#endif
 
 /* 1 when the polygon's output rows are expected to hold many runs' ends
  * (one a column in 4 or more): its edges' heights summed (the crossings
@@ -665,7 +469,8 @@ rast_status rast__cov_ss(const rast_polygon *poly, uint32_t npoints, int32_t s,
     if (st != RAST_OK) return st;
     if (t.row0 < t.row1) {
         ss.dense = rast__ss_dense_tab(&t, &ss);
-        rast__ss_list_walk(&ss, &t, rule);
+        rast__aet_sweep(t.edges, t.aet, t.bucket, t.nedges, t.row0, t.row1, rule, NULL,
+                        rast__ss_row_ends, &ss);
     }
 #endif
     rast__ss_finish(&ss);

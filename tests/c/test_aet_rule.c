@@ -231,7 +231,8 @@ int main(void)
         CHECK(need <= sizeof scratch);
         ar = rast__arena_of(scratch, need);
 #if !defined(__OPTIMIZE_SIZE__)
-        if (rast__segs_cancel(&poly, np, rule == RAST_RULE_EVENODD, &ar, &seg, &copies) >= 0) {
+        if (rast__segs_cancel(poly.points, poly.ring_sizes, np, rule == RAST_RULE_EVENODD, &ar, &seg,
+                              &copies) >= 0) {
             CHECK(2 * copies <= np);
             cancelled++;
         } else {

@@ -503,7 +503,6 @@ static inline rast_status rast__aet_prepare(const rast_polygon *poly, uint32_t n
 }
 #endif
 
-#if !defined(__OPTIMIZE_SIZE__)
 /* ---- shared edges cancel (base/edge.c) ----------------------------------------
  * The winding number of a sample is the sum of the edges' parts, and an
  * edge a->b and an edge b->a (two cells of a mesh on either side of their
@@ -517,17 +516,26 @@ typedef struct rast__seg {
     int32_t n;
 } rast__seg;
 
-/* The edges of `poly` (npoints vertices, nrings >= 1) as segments, equal
- * ones summed, out of the arena: returns m, the segments left in
+/* The edges of the rings `pts` (npoints vertices in rings of
+ * ring_sizes[], or, ring_sizes NULL, triangles) as segments, equal ones
+ * summed, out of the arena: returns m, the segments left in
  * (*seg)[0 .. m), crossing edges only (a horizontal one crosses no row),
  * n of each not 0 (even-odd, `evenodd`: n mod 2 with its sign, +-1) and
  * *copies the sum of their |n| (the edges to walk), when at most half of
- * the polygon's edges are left so; else -1, the arena as it was (also
- * when it is too small).  Memory: npoints segments (20 bytes) and a table
- * of indices of at most 16 bytes a vertex. */
-int32_t rast__segs_cancel(const rast_polygon *poly, uint32_t npoints, int evenodd,
-                          rast__arena *arena, rast__seg **seg, uint32_t *copies);
-#endif
+ * the edges are left so; else -1, the arena as it was (also when it is
+ * too small, or when a quarter of the way fewer than one edge in 64 has
+ * met another).  Memory: npoints segments (20 bytes) and a table of
+ * indices of at most 16 bytes a vertex.  Used by the binary fill (builds
+ * for speed) and supersampling. */
+int32_t rast__segs_cancel(const rast_point *pts, const uint32_t *ring_sizes, uint32_t npoints,
+                          int evenodd, rast__arena *arena, rast__seg **seg, uint32_t *copies);
+
+/* seg[0 .. m) (rast__segs_cancel's) set up as a walk's edge table between
+ * rows row0 and row1: |n| edges of each, turned as n says, into aet[]
+ * (room for *copies) and counted into bucket[] (rast__aet_tables');
+ * returns how many cross a row there. */
+int32_t rast__segs_edges(const rast__seg *seg, int32_t m, const rast__grid *g, int32_t row0,
+                         int32_t row1, rast__edge *aet, int32_t *bucket);
 
 static inline rast_status rast__aet_walk(const rast_polygon *poly, uint32_t npoints,
                                          const rast__grid *g, rast_fill_rule rule,

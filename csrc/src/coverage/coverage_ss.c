@@ -487,28 +487,6 @@ rast_status rast__cov_ss(const rast_polygon *poly, uint32_t npoints, int32_t s,
  * polygon under the non-zero rule (the AET), at the cost of its outline;
  * else the triangles are walked each on its own (below). */
 
-/* An edge as a segment from its upper end to its lower one (by y, then
- * x) and how many times it is in the batch that way less the other way. */
-typedef struct rast__ss_seg {
-    rast_point a, b;
-    int32_t n;
-} rast__ss_seg;
-
-static inline int rast__ss_seg_eq(const rast__ss_seg *p, const rast__ss_seg *q)
-{
-    return p->a.x == q->a.x && p->a.y == q->a.y && p->b.x == q->b.x && p->b.y == q->b.y;
-}
-
-/* A segment's slot in a table of 2^bits (its ends' coordinates mixed). */
-static inline uint32_t rast__ss_seg_hash(const rast__ss_seg *p, int32_t bits)
-{
-    uint64_t h = (uint64_t)(uint32_t)p->a.x * 0x9E3779B97F4A7C15u;
-    h = (h ^ (uint32_t)p->a.y) * 0xC2B2AE3D27D4EB4Fu;
-    h = (h ^ (uint32_t)p->b.x) * 0x165667B19E3779F9u;
-    h = (h ^ (uint32_t)p->b.y) * 0x9E3779B97F4A7C15u;
-    return (uint32_t)(h >> (64 - bits));
-}
-
 /* The edges of `pts` (rings of ring_sizes[0 .. nrings), or, with
  * ring_sizes NULL, triangles) less those that cancel, walked into
  * the counts (the rule ss->evenodd's) when at most half of them are left;
@@ -523,94 +501,22 @@ static int rast__ss_cancel(rast__ss *ss, const rast_point *pts, const uint32_t *
                            rast__arena *arena)
 {
     const rast__arena keep = *arena;
-    const int32_t N = (int32_t)npoints, quarter = N / 4;
-    rast__ss_seg *seg;
+    rast__seg *seg;
     rast__edge *edges, *aet;
-    int32_t *bucket, *slot, i, k, m = 0, left = 0, nedges = 0, row0, row1, tbits = 1,
-                                  miny = INT32_MAX, maxy = INT32_MIN, rs = 0, re = 0, fresh = 0;
-    uint32_t ring = 0;
+    int32_t *bucket, i, m, nedges, row0, row1, miny = INT32_MAX, maxy = INT32_MIN;
+    uint32_t copies;
     uint64_t sum = 0;
     int64_t r;
-    if (npoints == 0 || npoints > (uint32_t)INT32_MAX / 2) return 0;
-    seg = (rast__ss_seg *)rast__take(arena, (size_t)npoints * sizeof *seg);
-    if (!seg) {
-        *arena = keep;
-        return 0;
-    }
-    /* equal segments summed into the first (a hash table of indices, at
-     * most half full), each made and put in in one pass, and `left`, the
-     * edges that stay (the first's |n| summed; a horizontal edge crosses
-     * no row and counts none), kept as it goes: a batch that is not a
-     * mesh is given up before the pass that gathers what stays */
-    while (((int64_t)1 << tbits) < (int64_t)N * 2) tbits++;
-    slot = (int32_t *)rast__take(arena, ((size_t)1 << tbits) * sizeof *slot);
-    if (!slot) {
-        *arena = keep;
-        return 0;
-    }
-    memset(slot, 0xFF, ((size_t)1 << tbits) * sizeof *slot); /* -1: free */
-    for (i = 0; i < N; i++) {
-        rast_point p, q;
-        int fwd;
-        uint32_t h;
-        /* a quarter of the way, fewer than one edge in 64 met again (i -
-         * fresh of them): taken for a batch that is not a mesh, and given
-         * up (the bound below waits for three quarters of the edges, and
-         * hashing them was a fifteenth of 10,000 random triangles' ss4).
-         * A mesh meets its edges again from its first cells on in its
-         * own order, and about N / 32 of them by then shuffled; either
-         * path gives the same counts. */
-        if (i == quarter && (int64_t)(i - fresh) * 64 < (int64_t)N) {
-            *arena = keep;
-            return 0;
-        }
-        while (i == re) { /* the next ring (empty ones skipped) */
-            rs = re;
-            re += ring_sizes ? (int32_t)ring_sizes[ring++] : 3;
-        }
-        p = pts[i];
-        q = pts[i + 1 == re ? rs : i + 1];
-        fwd = p.y < q.y || (p.y == q.y && p.x < q.x);
-        seg[i].a = fwd ? p : q;
-        seg[i].b = fwd ? q : p;
-        seg[i].n = fwd ? 1 : -1;
-        h = rast__ss_seg_hash(&seg[i], tbits);
-        while (slot[h] >= 0 && !rast__ss_seg_eq(&seg[slot[h]], &seg[i]))
-            h = (h + 1) & (((uint32_t)1 << tbits) - 1);
-        if (slot[h] < 0) {
-            slot[h] = i;
-            fresh++;
-            left += p.y != q.y;
-            /* each edge still to come takes at most one off `left`: when
-             * even that leaves more than half, the test below fails now */
-            if (((int64_t)left - ((int64_t)N - 1 - i)) * 2 > (int64_t)N) {
-                *arena = keep;
-                return 0;
-            }
-        } else {
-            const int32_t was = seg[slot[h]].n, now = was + seg[i].n;
-            seg[slot[h]].n = now;
-            seg[i].n = 0;
-            if (p.y != q.y) left += (now < 0 ? -now : now) - (was < 0 ? -was : was);
-        }
-    }
-    if ((int64_t)left * 2 > (int64_t)N) {
-        *arena = keep;
-        return 0;
-    }
-    /* those at 0 gone (even-odd: those at an even count), the rest's
-     * copies in n's sign */
-    for (i = 0; i < N; i++) {
-        int32_t n = seg[i].n;
-        if (ss->evenodd) n = n & 1 ? (n < 0 ? -1 : 1) : 0;
-        if (n != 0 && seg[i].a.y != seg[i].b.y) {
-            seg[m] = seg[i];
-            seg[m].n = n;
-            miny = seg[m].a.y < miny ? seg[m].a.y : miny;
-            maxy = seg[m].b.y > maxy ? seg[m].b.y : maxy;
-            sum += (uint64_t)((int64_t)seg[m].b.y - seg[m].a.y) * (uint64_t)(n < 0 ? -n : n);
-            m++;
-        }
+    /* the segments that stay (base/edge.c: equal ones summed, a batch that
+     * is not a mesh given up on the way), their rows and the fine rows
+     * they cross, for the counts' density */
+    m = rast__segs_cancel(pts, ring_sizes, npoints, ss->evenodd, arena, &seg, &copies);
+    if (m < 0) return 0;
+    for (i = 0; i < m; i++) {
+        const int32_t n = seg[i].n;
+        miny = seg[i].a.y < miny ? seg[i].a.y : miny;
+        maxy = seg[i].b.y > maxy ? seg[i].b.y : maxy;
+        sum += (uint64_t)((int64_t)seg[i].b.y - seg[i].a.y) * (uint64_t)(n < 0 ? -n : n);
     }
     if (m == 0) return 1;
     ss->dense = rast__ss_dense_of(sum, miny, maxy, ss);
@@ -619,19 +525,11 @@ static int rast__ss_cancel(rast__ss *ss, const rast_point *pts, const uint32_t *
     r = rast__row_at_or_after(2 * (int64_t)maxy, g);
     row1 = r < fine->y1 ? (int32_t)r : fine->y1;
     if (row0 >= row1) return 1;
-    if (!rast__aet_tables(arena, (uint32_t)left, row0, row1, &edges, &aet, &bucket)) {
+    if (!rast__aet_tables(arena, copies, row0, row1, &edges, &aet, &bucket)) {
         *arena = keep; /* (it fits: the walk of all edges then says so) */
         return 0;
     }
-    for (i = 0; i < m; i++)
-        for (k = 0; k < (seg[i].n < 0 ? -seg[i].n : seg[i].n); k++) {
-            rast__edge *ed = &aet[nedges];
-            if (seg[i].n > 0 ? rast__edge_setup(ed, seg[i].a, seg[i].b, g, row0, row1)
-                             : rast__edge_setup(ed, seg[i].b, seg[i].a, g, row0, row1)) {
-                ed->next = nedges++;
-                bucket[ed->row - row0 + 1]++;
-            }
-        }
+    nedges = rast__segs_edges(seg, m, g, row0, row1, aet, bucket);
     rast__aet_sweep(edges, aet, bucket, nedges, row0, row1,
                     ss->evenodd ? RAST_RULE_EVENODD : RAST_RULE_NONZERO, NULL, rast__ss_row_ends,
                     ss);

@@ -517,9 +517,10 @@ static int rast__aet_cancel(const rast_polygon *poly, uint32_t npoints, const ra
     const rast__arena keep = *arena;
     rast__seg *seg;
     uint32_t copies;
-    int32_t m, i, k, nedges = 0, miny, maxy, minx, maxx;
+    int32_t m, i, miny, maxy, minx, maxx;
     int64_t r;
-    m = rast__segs_cancel(poly, npoints, rule == RAST_RULE_EVENODD, arena, &seg, &copies);
+    m = rast__segs_cancel(poly->points, poly->ring_sizes, npoints, rule == RAST_RULE_EVENODD, arena, &seg,
+                          &copies);
     if (m < 0) return 0;
     t->row0 = t->row1 = 0;
     if (m == 0) return 1;
@@ -545,16 +546,7 @@ static int rast__aet_cancel(const rast_polygon *poly, uint32_t npoints, const ra
         *arena = keep;
         return 0;
     }
-    for (i = 0; i < m; i++)
-        for (k = 0; k < (seg[i].n < 0 ? -seg[i].n : seg[i].n); k++) {
-            rast__edge *ed = &t->aet[nedges];
-            if (seg[i].n > 0 ? rast__edge_setup(ed, seg[i].a, seg[i].b, g, t->row0, t->row1)
-                             : rast__edge_setup(ed, seg[i].b, seg[i].a, g, t->row0, t->row1)) {
-                ed->next = nedges++;
-                t->bucket[ed->row - t->row0 + 1]++;
-            }
-        }
-    t->nedges = nedges;
+    t->nedges = rast__segs_edges(seg, m, g, t->row0, t->row1, t->aet, t->bucket);
     *room = (size_t)copies * sizeof(rast__edge);
     return 1;
 }

@@ -7,6 +7,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include "rastpy.h"
+#include "painters/paint.h"
 
 /* out = floor(xy * 2^s + 1/2), exactly.  t = xy * 2^s is exact (a power
  * of two), and so is its fraction t - floor(t); but t + 1/2 is NOT: for
@@ -217,8 +218,11 @@ static long rastpy_poly(const rast_target *target, const double *xy,
     cut.clip = b;
     st = shade && blend ? rast_fill_polygon_gouraud_blend(&cut, &poly, colors, opts, shade, blend, scratch, need)
          : shade ? rast_fill_polygon_gouraud(&cut, &poly, colors, opts, shade, scratch, need)
-         : background ? rast_fill_polygon_opaque(&cut, &poly, opts, pixel, background, scratch, need)
-                      : rast_fill_polygon(&cut, &poly, opts, pixel, scratch, need);
+         /* rast_fill_polygon(_opaque) without the core's second pass over
+          * the points for their range: rastpy_snap has refused every point
+          * outside it (rast__fill_snapped's contract, painters/paint.h) */
+         : rast__fill_target(&cut, &poly, opts, pixel, background, background != NULL, rast__fill_snapped,
+                             scratch, need);
     if (scratch != (void *)(local + RASTPY_LOCAL_WORDS / 2)) free(scratch);
     if (pts != (int32_t *)(void *)local) free(pts);
     if (st == RAST_OK && background && c.x0 < c.x1 && c.y0 < c.y1 &&

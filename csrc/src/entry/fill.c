@@ -21,8 +21,9 @@ static rast_status rast__check_opts(const rast_fill_opts *o, rast__grid *g,
     return rast__grid_init(g, o->subpixel_bits, o->sample, o->rounding, o->boundary);
 }
 
-/* Count the vertices and check that every one is in range. */
-static rast_status rast__check_polygon(const rast_polygon *p, uint32_t *npoints)
+/* Count the vertices and, with range set, check that every one is in
+ * range (rast__fill_snapped's callers have checked them already). */
+static rast_status rast__check_polygon(const rast_polygon *p, uint32_t *npoints, int range)
 {
     uint64_t n = 0;
     uint32_t k, i;
@@ -33,7 +34,7 @@ static rast_status rast__check_polygon(const rast_polygon *p, uint32_t *npoints)
         if (n > RAST_MAX_POINTS) return RAST_E_TOO_MANY;
     }
     if (n > 0 && !p->points) return RAST_E_NULL;
-    for (i = 0; i < (uint32_t)n; i++) {
+    for (i = 0; range && i < (uint32_t)n; i++) {
         int32_t x = p->points[i].x, y = p->points[i].y;
         if (x < -RAST_COORD_MAX || x > RAST_COORD_MAX ||
             y < -RAST_COORD_MAX || y > RAST_COORD_MAX)
@@ -113,10 +114,11 @@ rast_status rast__fill_checked(const rast__fill_setup *f, const rast_polygon *po
     }
 }
 
-/* Check the polygon, options and scratch for a clip; run the filler. */
-rast_status rast__fill(const void *polygon, const rast_fill_opts *opts,
-                              const rast_rect *clip, const rast__painter *p,
-                              void *scratch, size_t scratch_bytes)
+/* Check the polygon (its points' range too when range is set), options and
+ * scratch for a clip; run the filler. */
+static rast_status rast__fill_by(const void *polygon, const rast_fill_opts *opts,
+                                 const rast_rect *clip, const rast__painter *p,
+                                 void *scratch, size_t scratch_bytes, int range)
 {
     const rast_polygon *poly = (const rast_polygon *)polygon;
     rast__fill_setup f;
@@ -126,7 +128,7 @@ rast_status rast__fill(const void *polygon, const rast_fill_opts *opts,
 
     st = rast__fill_prepare(opts, &f);
     if (st != RAST_OK) return st;
-    st = rast__check_polygon(poly, &npoints);
+    st = rast__check_polygon(poly, &npoints, range);
     if (st != RAST_OK) return st;
     need = rast__need(f.al, opts, npoints, clip->x1 - clip->x0, clip->y1 - clip->y0);
     st = rast__scratch_check(scratch, scratch_bytes, need);
@@ -134,6 +136,27 @@ rast_status rast__fill(const void *polygon, const rast_fill_opts *opts,
     if (clip->x0 >= clip->x1 || clip->y0 >= clip->y1) return RAST_OK;
     return rast__fill_checked(&f, poly, npoints, clip, p, scratch, scratch_bytes);
 }
+
+rast_status rast__fill(const void *polygon, const rast_fill_opts *opts,
+                       const rast_rect *clip, const rast__painter *p,
+                       void *scratch, size_t scratch_bytes)
+{
+    return rast__fill_by(polygon, opts, clip, p, scratch, scratch_bytes, 1);
+}
+
+#if !defined(__OPTIMIZE_SIZE__)
+/* rast__fill without the pass over every vertex for its range: the
+ * binding's snap (python/glue/fill.c, rastpy_snap) has refused any point
+ * outside +-RAST_COORD_MAX already (11 instructions a vertex, ~380 K on a
+ * paragraph of text).  Size-optimised builds (firmware, no binding) leave
+ * it out: rast__fill's only caller then, the range check folded in. */
+rast_status rast__fill_snapped(const void *polygon, const rast_fill_opts *opts,
+                               const rast_rect *clip, const rast__painter *p,
+                               void *scratch, size_t scratch_bytes)
+{
+    return rast__fill_by(polygon, opts, clip, p, scratch, scratch_bytes, 0);
+}
+#endif
 
 rast_status rast__fill_target(const rast_target *target, const void *polygon,
                               const rast_fill_opts *opts, const void *pixel,

@@ -226,6 +226,13 @@ rast_status rast__fill64_checked(const rast_polygon64 *poly, uint32_t npoints,
  * options and scratch for `clip`, then run the filler into painter p. */
 rast_status rast__fill(const void *polygon, const rast_fill_opts *opts, const rast_rect *clip,
                        const rast__painter *p, void *scratch, size_t scratch_bytes);
+/* rast__fill for a polygon whose every point the caller has checked to lie
+ * in +-RAST_COORD_MAX (the internal contract of the Python binding, whose
+ * snap refuses any other before the call); every other check the same.
+ * Not in size-optimised builds (__OPTIMIZE_SIZE__). */
+rast_status rast__fill_snapped(const void *polygon, const rast_fill_opts *opts,
+                               const rast_rect *clip, const rast__painter *p, void *scratch,
+                               size_t scratch_bytes);
 typedef rast_status (*rast__fill_any_fn)(const void *polygon, const rast_fill_opts *opts,
                                          const rast_rect *clip, const rast__painter *p,
                                          void *scratch, size_t scratch_bytes);

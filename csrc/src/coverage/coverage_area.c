@@ -2237,10 +2237,15 @@ static void rast__cov_row_groups(rast__cells *c, rast__cedge *e, int32_t *row, i
     }
     for (k = 0; k < nrow; k = g) {
         int32_t hi = -1, wr = wl, m, full = 1, s = wl, z, r0 = r;
-        for (g = k;; g++) { /* the group: row[k..g), the columns up to hi */
+        for (g = k;; g++) { /* the group: row[k..g), the columns up to hi; its windings */
             if (g < nrow && (g == k || (swept ? rast__grp_col(c, e[row[g]].qlo) : key[row[g]]) <= hi)) {
-                const int32_t h = rast__grp_col(c, e[row[g]].qhi - 1);
+                /* (each edge joins once: after a run joins, g is tried again) */
+                const rast__cedge *ed = &e[row[g]];
+                const int32_t h = rast__grp_col(c, ed->qhi - 1);
+                const int64_t yb = (int64_t)ed->yt + ed->dy;
                 if (h > hi) hi = h;
+                if (ed->yt <= Yj && yb > Yj) wr += ed->dir;
+                if (ed->yt > Yj || yb < Yj + c->p) full = 0;
                 continue;
             }
             if (r < nrun && rast__grp_col(c, (int64_t)e[rs[r]].hx0 * ((int64_t)1 << (QF - (G - c->h)))) <= hi) {
@@ -2254,11 +2259,6 @@ static void rast__cov_row_groups(rast__cells *c, rast__cedge *e, int32_t *row, i
         }
         m = g - k;
         ngrp++;
-        for (z = k; z < g; z++) {
-            const rast__cedge *ed = &e[row[z]];
-            if (ed->yt <= Yj && (int64_t)ed->yt + ed->dy > Yj) wr += ed->dir;
-            if (ed->yt > Yj || (int64_t)ed->yt + ed->dy < Yj + c->p) full = 0;
-        }
         if (s < -1 || s > 1) {
             s = 2; /* not fast */
         } else if (full) {

@@ -2321,7 +2321,12 @@ static void rast__cov_row_groups(rast__cells *c, rast__cedge *e, int32_t *row, i
             s = 2; /* not fast */
         } else if (full) {
             int32_t ww = wl;
-            if (!rast__fast_full(e, row + k, m, &ww, &s) || ww != wr) s = 2;
+            if (RAST__SHORTCUTS && m == 1) { /* one edge, nothing to order: rast__fast_full's walk, inline */
+                ww += e[row[k]].dir; /* (text: half its groups, a stroke's side alone in its columns) */
+                if (!rast__fast_ok(ww, &s) || ww != wr) s = 2;
+            } else if (!rast__fast_full(e, row + k, m, &ww, &s) || ww != wr) {
+                s = 2;
+            }
         } else if (RAST__SHORTCUTS && (z = rast__fast_chain(e, row + k, m, Yj, c->p, wl, wr, &s)) >= 0) {
             if (!z) s = 2;
         } else {

@@ -415,6 +415,9 @@ static inline rast_status rast__aet_prepare_rows(const rast_polygon *poly, uint3
     uint32_t i;
 
     t->row0 = t->row1 = 0;
+    t->edges = t->aet = NULL; /* (set on every path: gcc -O1 could not tell) */
+    t->bucket = NULL;
+    t->minx = t->maxx = 0;
     if (npoints == 0) return RAST_OK;
     t->edges = (rast__edge *)rast__take(arena, (size_t)npoints * sizeof(rast__edge));
     t->aet = (rast__edge *)rast__take(arena, (size_t)npoints * sizeof(rast__edge));

@@ -290,7 +290,9 @@ static int rast__delta_box(const rast__grid *g, rast_fill_rule rule, const rast_
     d->whole = d->whole && r <= clip->x1;
     if (d->col0 >= col1) return 0;
     d->bits = col1 - d->col0;
-    d->stride = (d->bits + 1 + 7) & ~7;
+    /* (a clip 2^31 - 8 columns wide or more: a stride no room holds, the
+     * caller's sweep instead) */
+    d->stride = d->bits < INT32_MAX - 8 ? (d->bits + 1 + 7) & ~7 : INT32_MAX & ~7;
     d->mask = rule == RAST_RULE_EVENODD ? 1 : 0xFF;
     return 1;
 }
@@ -337,7 +339,7 @@ static int rast__aet_delta(size_t room, const rast__grid *g, rast_fill_rule rule
     if (t->nedges == 0) return 1;
     if (!force && t->nedges < RAST__DELTA_EDGES * (int64_t)rows) return 0;
     if (!rast__delta_box(g, rule, clip, t, &d)) return 1; /* no visible column: nothing inside */
-    if ((size_t)d.stride > room) return 0;
+    if ((size_t)d.stride > room || d.bits >= INT32_MAX - 8) return 0;
     hb = (int32_t)(room / (size_t)d.stride < (size_t)rows ? room / (size_t)d.stride : (size_t)rows);
     nb = (rows + hb - 1) / hb;
     whole = d.whole && nb == 1; /* (the edges' rows are [row0, row1)'s: aet.h) */
@@ -427,11 +429,11 @@ static int rast__aet_delta_now(const rast_polygon *poly, uint32_t npoints, const
     if (rows <= 0 || npoints < RAST__DELTA_EDGES * (uint64_t)rows) return 0;
     d.col0 = clip->x0;
     d.bits = clip->x1 - clip->x0;
+    if (d.bits <= 0 || d.bits >= INT32_MAX - 8) return 0; /* (the stride below fits an int32) */
     d.stride = (d.bits + 1 + 7) & ~7;
     d.mask = rule == RAST_RULE_EVENODD ? 1 : 0xFF;
     d.whole = 0;
-    if (d.bits <= 0 ||
-        (uint64_t)rows * (uint64_t)d.stride > (uint64_t)npoints * sizeof(rast__edge) ||
+    if ((uint64_t)rows * (uint64_t)d.stride > (uint64_t)npoints * sizeof(rast__edge) ||
         (uint64_t)rows * (uint64_t)(d.stride / 8) > RAST__DELTA_WORDS * (uint64_t)npoints)
         return 0;
     buf = (unsigned char *)rast__take(arena, (size_t)rows * (size_t)d.stride);

@@ -29,30 +29,7 @@
 enum { W = 40, H = 28, MAXP = 1200 };
 
 #include "rings.h"
-
-typedef struct canvas {
-    unsigned char px[H][W];
-    int bad; /* a run out of the clip, empty, or out of order */
-    int32_t last_y;
-} canvas;
-
-static void put_row(void *user, int32_t y, const int32_t *xs, int32_t n)
-{
-    canvas *c = (canvas *)user;
-    int32_t k, x;
-    if (y < c->last_y || y < 0 || y >= H) {
-        c->bad = 1;
-        return;
-    }
-    c->last_y = y;
-    for (k = 0; k < n; k++) {
-        if (xs[2 * k] >= xs[2 * k + 1] || xs[2 * k] < 0 || xs[2 * k + 1] > W) {
-            c->bad = 1;
-            return;
-        }
-        for (x = xs[2 * k]; x < xs[2 * k + 1]; x++) c->px[y][x]++;
-    }
-}
+#include "row_canvas.h"
 
 static rast_status fill(canvas *c, const rast_polygon *poly, uint32_t npoints, const rast__grid *g,
                         rast_fill_rule rule, const rast_rect *clip, unsigned char *scratch,

@@ -96,7 +96,6 @@ int main(void)
         rast_polygon poly;
         rast_rect clip;
         size_t need;
-        int32_t i, j, ok = 1;
 
         CHECK(rast__grid_init(&g, s, center ? RAST_SAMPLE_CENTER : RAST_SAMPLE_CORNER,
                               textbook ? RAST_ROUND_TEXTBOOK : RAST_ROUND_EXACT,
@@ -120,19 +119,7 @@ int main(void)
         CHECK(fill(&b, &poly, np, &g, rule, &clip, scratch, need, RAST__AET_BY_DELTA) == RAST_OK);
         CHECK(!a.bad && !b.bad);
         CHECK(memcmp(a.px, b.px, sizeof a.px) == 0);
-        for (j = 0; j < H && ok; j++) {
-            for (i = 0; i < W && ok; i++) {
-                int cr, w = ref_winding(pts, sizes, nrings, s, center, textbook, i, j, &cr);
-                int in = i >= clip.x0 && i < clip.x1 && j >= clip.y0 && j < clip.y1 &&
-                         (rule == RAST_RULE_EVENODD ? (cr & 1) : w != 0);
-                if (b.px[j][i] != in) {
-                    fprintf(stderr, "iter %d: pixel (%d, %d) is %d, the reference %d\n", iter, (int)i,
-                            (int)j, b.px[j][i], in);
-                    ok = 0;
-                }
-            }
-        }
-        CHECK(ok);
+        CHECK(canvas_matches_ref(&b, pts, sizes, nrings, s, center, textbook, rule, &clip, iter));
     }
     test_wound();
     return check_report("test_delta");

@@ -779,6 +779,175 @@ static PyObject *seq_fill_call(PyObject *self, PyObject *args)
     return seq_unpack("fill", 4, 6, args, a) ? seq_fill_fast(self, a, PyTuple_Size(args)) : NULL;
 }
 
+/* Canvas.fill_polygon itself, called from Python (issue 33): the common
+ * call -- rings and a colour by position, no keyword but rule= and aa= --
+ * goes from the interpreter straight to seq_fill_do, with no Python frame
+ * in between.  That frame (its keyword matching, its **kw dict, its
+ * attribute loads and its call of fill) was ~930 of the ~6,800
+ * instructions of a tiny polygon's binary call.  Anything else, and
+ * anything seq_fill_do declines, goes to the full method with the same
+ * arguments: the function that _canvas's global `_fill_polygon` names at
+ * the time of the call (looked up then, so that a test can stand in for
+ * it).
+ *
+ * fill_method(cls, globals, name, doc) makes the class attribute: a method
+ * descriptor of cls (PyDescr_NewMethod, as a builtin type's methods are
+ * made), which the interpreter calls with the canvas and the arguments as
+ * they are (no bound method made, no tuple or dict on 3.10+); doc is its
+ * text signature and docstring, what help() and inspect read.  The call
+ * reads one attribute, _fpq, the canvas's remembered call, whose target
+ * is the canvas's (Canvas._set forgets _fpq when it sets another). */
+static PyObject *seq_fp_globals, *seq_fp_name, *seq_fp_doc, *seq_fpq_name;
+static PyMethodDef seq_fp_def = {"fill_polygon", NULL, 0, NULL};
+
+/* The full method's call: func(self, *args, **kw) (kw NULL: none). */
+static PyObject *seq_fp_full(PyObject *self, PyObject *args, PyObject *kw)
+{
+    PyObject *f = seq_fp_globals ? PyDict_GetItem(seq_fp_globals, seq_fp_name) : NULL, *t, *r = NULL;
+    Py_ssize_t n = PyTuple_Size(args), k;
+    if (!f) {
+        PyErr_SetString(PyExc_RuntimeError, "fill_method: the full method is gone");
+        return NULL;
+    }
+    Py_INCREF(f);
+    t = PyTuple_New(n + 1);
+    if (t) {
+        Py_INCREF(self);
+        PyTuple_SetItem(t, 0, self);
+        for (k = 0; k < n; k++) {
+            PyObject *v = PyTuple_GetItem(args, k);
+            Py_INCREF(v);
+            PyTuple_SetItem(t, k + 1, v);
+        }
+        r = PyObject_Call(f, t, kw);
+        Py_DECREF(t);
+    }
+    Py_DECREF(f);
+    return r;
+}
+
+/* The common call by seq_fill_do (rule and aa NULL: their defaults):
+ * None when it drew, NULL with no exception when it declined, NULL with
+ * one when a number could not be read. */
+static PyObject *seq_fp_quick(PyObject *self, PyObject *const *args, Py_ssize_t nargs, PyObject *rule,
+                              PyObject *aa)
+{
+    PyObject *a[6], *r;
+    if (nargs < 1 || nargs > 2) return NULL;
+    if (!(a[0] = PyObject_GetAttr(self, seq_fpq_name))) {
+        PyErr_Clear();
+        return NULL;
+    }
+    if (!PyTuple_CheckExact(a[0]) || PyTuple_Size(a[0]) != 7) {
+        Py_DECREF(a[0]);
+        return NULL;
+    }
+    a[1] = PyTuple_GetItem(a[0], 0); /* (the canvas's target: see above) */
+    a[2] = args[0];
+    a[3] = nargs > 1 ? args[1] : Py_None;
+    a[4] = rule ? rule : seq_evenodd;
+    a[5] = aa ? aa : Py_None;
+    r = seq_fill_do(a, 6);
+    Py_DECREF(a[0]);
+    if (r == Py_True) {
+        Py_DECREF(r);
+        Py_RETURN_NONE;
+    }
+    Py_XDECREF(r);
+    return NULL;
+}
+
+/* rule= or aa= given as the keyword `key` with `value` to *rule or *aa;
+ * 0 for any other keyword.  (The names are compared as objects first: a
+ * call's keywords are its code's interned constants.) */
+static int seq_fp_keyword(PyObject *key, PyObject *value, PyObject **rule, PyObject **aa)
+{
+    if (key == seq_rule_name || (key != seq_aa_name && seq_is(key, seq_rule_name)))
+        *rule = value;
+    else if (key == seq_aa_name || seq_is(key, seq_aa_name))
+        *aa = value;
+    else
+        return 0;
+    return 1;
+}
+
+/* The forms of the call (METH_FASTCALL | METH_KEYWORDS where
+ * seq_runtime_fastcall, else METH_VARARGS | METH_KEYWORDS). */
+static PyObject *seq_fp_fast(PyObject *self, PyObject *const *args, Py_ssize_t nargs, PyObject *kwnames)
+{
+    PyObject *rule = NULL, *aa = NULL, *r, *t, *kw = NULL;
+    Py_ssize_t nk = kwnames ? PyTuple_Size(kwnames) : 0, k;
+    int plain = 1;
+    for (k = 0; k < nk && plain; k++)
+        plain = seq_fp_keyword(PyTuple_GetItem(kwnames, k), args[nargs + k], &rule, &aa);
+    if (plain && ((r = seq_fp_quick(self, args, nargs, rule, aa)) || PyErr_Occurred())) return r;
+    /* the full method, with the same arguments */
+    if (!(t = PyTuple_New(nargs))) return NULL;
+    for (k = 0; k < nargs; k++) {
+        Py_INCREF(args[k]);
+        PyTuple_SetItem(t, k, args[k]);
+    }
+    if (nk && !(kw = PyDict_New())) {
+        Py_DECREF(t);
+        return NULL;
+    }
+    for (k = 0; k < nk; k++) {
+        if (PyDict_SetItem(kw, PyTuple_GetItem(kwnames, k), args[nargs + k]) < 0) {
+            Py_DECREF(t);
+            Py_DECREF(kw);
+            return NULL;
+        }
+    }
+    r = seq_fp_full(self, t, kw);
+    Py_DECREF(t);
+    Py_XDECREF(kw);
+    return r;
+}
+
+static PyObject *seq_fp_call(PyObject *self, PyObject *args, PyObject *kw)
+{
+    PyObject *rule = NULL, *aa = NULL, *key, *value, *a[2], *r;
+    Py_ssize_t pos = 0, n = PyTuple_Size(args), k;
+    int plain = 1;
+    while (plain && kw && PyDict_Next(kw, &pos, &key, &value)) plain = seq_fp_keyword(key, value, &rule, &aa);
+    for (k = 0; k < n && k < 2; k++) a[k] = PyTuple_GetItem(args, k);
+    if (plain && ((r = seq_fp_quick(self, a, n, rule, aa)) || PyErr_Occurred())) return r;
+    return seq_fp_full(self, args, kw);
+}
+
+/* fill_method(cls, globals, name, doc) -> the method descriptor (see
+ * above).  Once: the descriptor keeps the one method definition. */
+static PyObject *seq_fill_method(PyObject *self, PyObject *args)
+{
+    PyObject *cls, *globals, *name, *doc;
+    (void)self;
+    if (!PyArg_UnpackTuple(args, "fill_method", 4, 4, &cls, &globals, &name, &doc)) return NULL;
+    if (!PyType_Check(cls) || !PyDict_CheckExact(globals) || !PyUnicode_CheckExact(name) ||
+        !PyUnicode_CheckExact(doc)) {
+        PyErr_SetString(PyExc_TypeError, "fill_method(type, dict, str, str)");
+        return NULL;
+    }
+    if (seq_fp_def.ml_meth) {
+        PyErr_SetString(PyExc_RuntimeError, "fill_method: made once");
+        return NULL;
+    }
+    if (!(seq_fpq_name = PyUnicode_InternFromString("_fpq"))) return NULL;
+    if (!(seq_fp_doc = PyUnicode_AsUTF8String(doc))) return NULL;
+    Py_INCREF(globals);
+    Py_INCREF(name);
+    seq_fp_globals = globals;
+    seq_fp_name = name;
+    seq_fp_def.ml_doc = PyBytes_AsString(seq_fp_doc);
+    if (seq_runtime_fastcall()) {
+        seq_fp_def.ml_meth = (PyCFunction)(void (*)(void))seq_fp_fast;
+        seq_fp_def.ml_flags = SEQ_METH_FASTCALL | METH_KEYWORDS;
+    } else {
+        seq_fp_def.ml_meth = (PyCFunction)(void (*)(void))seq_fp_call;
+        seq_fp_def.ml_flags = METH_VARARGS | METH_KEYWORDS;
+    }
+    return PyDescr_NewMethod((PyTypeObject *)cls, &seq_fp_def);
+}
+
 /* rastrum.polygon_coverage's common call, whole in C (issue 33: its
  * Python and cffi cost more than the C of a small polygon's coverage):
  * one ring -- an exact ndarray, C-contiguous aligned native float64
@@ -955,6 +1124,9 @@ static PyMethodDef seq_methods[] = {
     {"fill", seq_fill_call, METH_VARARGS,
      "fill(q, target, rings, color[, opts address or keyword dict | rule, aa]) -> bool: Canvas.fill_polygon's common call, "
      "done"},
+    {"fill_method", seq_fill_method, METH_VARARGS,
+     "fill_method(Canvas, the _canvas module's globals, the full method's name there, doc) -> "
+     "Canvas.fill_polygon's method descriptor"},
     {"coverage_setup", seq_coverage_setup, METH_VARARGS,
      "coverage_setup({key: (opts address, format, dtype, opts)}, numpy.empty, polygon_coverage address) -> None"},
     {"coverage", seq_coverage_call, METH_VARARGS,

@@ -474,6 +474,51 @@ fail:
     return NULL;
 }
 
+/* The calls of every small fill (fill, coverage) take their arguments as
+ * a C array (METH_FASTCALL) where the running Python's stable ABI has it:
+ * no tuple made, filled, unpacked and freed (~240 instructions of a
+ * six-argument call, a third of what the call cost besides the fill).
+ * The flag (0x0080) and the function's form are the stable ABI's from
+ * Python 3.10; this module names 3.9 (setup.py), whose headers do not
+ * define it, so PyInit__seq turns it on only when the running Python is
+ * 3.10 or later, and 3.9 keeps the tuple form (seq_unpack's).  Both
+ * forms run the same code and say the same things. */
+#define SEQ_METH_FASTCALL 0x0080
+typedef PyObject *(*seq_fast_fn)(PyObject *self, PyObject *const *args, Py_ssize_t nargs);
+
+/* 1 when a call of `name` may take nargs arguments, else 0 with
+ * PyArg_UnpackTuple's TypeError. */
+static int seq_nargs(const char *name, Py_ssize_t lo, Py_ssize_t hi, Py_ssize_t nargs)
+{
+    if (nargs >= lo && nargs <= hi) return 1;
+    if (lo == hi)
+        PyErr_Format(PyExc_TypeError, "%s expected %s%zd argument%s, got %zd", name, "", lo, lo == 1 ? "" : "s",
+                     nargs);
+    else
+        PyErr_Format(PyExc_TypeError, "%s expected %s%zd argument%s, got %zd", name,
+                     nargs < lo ? "at least " : "at most ", nargs < lo ? lo : hi,
+                     (nargs < lo ? lo : hi) == 1 ? "" : "s", nargs);
+    return 0;
+}
+
+/* The tuple form: args's items to a[] (borrowed), their number checked. */
+static int seq_unpack(const char *name, Py_ssize_t lo, Py_ssize_t hi, PyObject *args, PyObject **a)
+{
+    Py_ssize_t n = PyTuple_Size(args), k;
+    if (!seq_nargs(name, lo, hi, n)) return 0;
+    for (k = 0; k < n; k++) a[k] = PyTuple_GetItem(args, k);
+    return 1;
+}
+
+/* Is the running Python 3.10 or later (Py_GetVersion: "3.11.7 (main, ...")? */
+static int seq_runtime_fastcall(void)
+{
+    const char *v = Py_GetVersion();
+    char *end;
+    long major = strtol(v, &end, 10), minor = *end == '.' ? strtol(end + 1, NULL, 10) : 0;
+    return major > 3 || (major == 3 && minor >= 10);
+}
+
 /* Canvas.fill_polygon's common call, whole in C (docs/api.md): one ring
  * of 3 points or more -- an exact ndarray, C-contiguous aligned native
  * float64 (n, 2), read through its head; or an exact list of (x, y)
@@ -644,17 +689,16 @@ static const void *seq_kw_opts(PyObject *kw, int *aa)
  * aa= themselves (seq_table_opts: no dict made for them).
  * False (nothing written, no exception) for anything else or an error
  * status: the caller's general path then checks and says what is wrong. */
-static PyObject *seq_fill_call(PyObject *self, PyObject *args)
+static PyObject *seq_fill_do(PyObject *const *a, Py_ssize_t nargs)
 {
-    PyObject *q, *target, *rings, *color, *opt = NULL, *method = NULL, *arr;
+    PyObject *q = a[0], *target = a[1], *rings = a[2], *color = a[3], *opt = nargs > 4 ? a[4] : NULL,
+             *method = nargs > 5 ? a[5] : NULL, *arr;
     const seq_array_head *h;
     double stack[2 * SEQ_STACK_POINTS], *xy = NULL, *heap = NULL;
     const void *t, *pix, *opts = seq_fill_opts;
     Py_ssize_t n = 0, k;
     long st;
     int aa = 0;
-    (void)self;
-    if (!PyArg_UnpackTuple(args, "fill", 4, 6, &q, &target, &rings, &color, &opt, &method)) return NULL;
     if (!seq_fill || !PyTuple_CheckExact(q) || PyTuple_Size(q) != 7 || target == Py_None ||
         PyTuple_GetItem(q, 0) != target || PyTuple_GetItem(q, 1) != color)
         Py_RETURN_FALSE;
@@ -721,6 +765,187 @@ static PyObject *seq_fill_call(PyObject *self, PyObject *args)
     }
     PyMem_Free(heap);
     return PyBool_FromLong(st == 0);
+}
+
+static PyObject *seq_fill_fast(PyObject *self, PyObject *const *args, Py_ssize_t nargs)
+{
+    (void)self;
+    return seq_nargs("fill", 4, 6, nargs) ? seq_fill_do(args, nargs) : NULL;
+}
+
+static PyObject *seq_fill_call(PyObject *self, PyObject *args)
+{
+    PyObject *a[6];
+    return seq_unpack("fill", 4, 6, args, a) ? seq_fill_fast(self, a, PyTuple_Size(args)) : NULL;
+}
+
+/* Canvas.fill_polygon itself, called from Python (issue 33): the common
+ * call -- rings and a colour by position, no keyword but rule= and aa= --
+ * goes from the interpreter straight to seq_fill_do, with no Python frame
+ * in between.  That frame (its keyword matching, its **kw dict, its
+ * attribute loads and its call of fill) was ~930 of the ~6,800
+ * instructions of a tiny polygon's binary call.  Anything else, and
+ * anything seq_fill_do declines, goes to the full method with the same
+ * arguments: the function that _canvas's global `_fill_polygon` names at
+ * the time of the call (looked up then, so that a test can stand in for
+ * it).
+ *
+ * fill_method(cls, globals, name, doc) makes the class attribute: a method
+ * descriptor of cls (PyDescr_NewMethod, as a builtin type's methods are
+ * made), which the interpreter calls with the canvas and the arguments as
+ * they are (no bound method made, no tuple or dict on 3.10+); doc is its
+ * text signature and docstring, what help() and inspect read.  The call
+ * reads one attribute, _fpq, the canvas's remembered call, whose target
+ * is the canvas's (Canvas._set forgets _fpq when it sets another). */
+static PyObject *seq_fp_globals, *seq_fp_name, *seq_fp_doc, *seq_fpq_name;
+static PyMethodDef seq_fp_def = {"fill_polygon", NULL, 0, NULL};
+
+/* The full method's call: func(self, *args, **kw) (kw NULL: none). */
+static PyObject *seq_fp_full(PyObject *self, PyObject *args, PyObject *kw)
+{
+    PyObject *f = seq_fp_globals ? PyDict_GetItem(seq_fp_globals, seq_fp_name) : NULL, *t, *r = NULL;
+    Py_ssize_t n = PyTuple_Size(args), k;
+    if (!f) {
+        PyErr_SetString(PyExc_RuntimeError, "fill_method: the full method is gone");
+        return NULL;
+    }
+    Py_INCREF(f);
+    t = PyTuple_New(n + 1);
+    if (t) {
+        Py_INCREF(self);
+        PyTuple_SetItem(t, 0, self);
+        for (k = 0; k < n; k++) {
+            PyObject *v = PyTuple_GetItem(args, k);
+            Py_INCREF(v);
+            PyTuple_SetItem(t, k + 1, v);
+        }
+        r = PyObject_Call(f, t, kw);
+        Py_DECREF(t);
+    }
+    Py_DECREF(f);
+    return r;
+}
+
+/* The common call by seq_fill_do (rule and aa NULL: their defaults):
+ * None when it drew, NULL with no exception when it declined, NULL with
+ * one when a number could not be read. */
+static PyObject *seq_fp_quick(PyObject *self, PyObject *const *args, Py_ssize_t nargs, PyObject *rule,
+                              PyObject *aa)
+{
+    PyObject *a[6], *r;
+    if (nargs < 1 || nargs > 2) return NULL;
+    if (!(a[0] = PyObject_GetAttr(self, seq_fpq_name))) {
+        PyErr_Clear();
+        return NULL;
+    }
+    if (!PyTuple_CheckExact(a[0]) || PyTuple_Size(a[0]) != 7) {
+        Py_DECREF(a[0]);
+        return NULL;
+    }
+    a[1] = PyTuple_GetItem(a[0], 0); /* (the canvas's target: see above) */
+    a[2] = args[0];
+    a[3] = nargs > 1 ? args[1] : Py_None;
+    a[4] = rule ? rule : seq_evenodd;
+    a[5] = aa ? aa : Py_None;
+    r = seq_fill_do(a, 6);
+    Py_DECREF(a[0]);
+    if (r == Py_True) {
+        Py_DECREF(r);
+        Py_RETURN_NONE;
+    }
+    Py_XDECREF(r);
+    return NULL;
+}
+
+/* rule= or aa= given as the keyword `key` with `value` to *rule or *aa;
+ * 0 for any other keyword.  (The names are compared as objects first: a
+ * call's keywords are its code's interned constants.) */
+static int seq_fp_keyword(PyObject *key, PyObject *value, PyObject **rule, PyObject **aa)
+{
+    if (key == seq_rule_name || (key != seq_aa_name && seq_is(key, seq_rule_name)))
+        *rule = value;
+    else if (key == seq_aa_name || seq_is(key, seq_aa_name))
+        *aa = value;
+    else
+        return 0;
+    return 1;
+}
+
+/* The forms of the call (METH_FASTCALL | METH_KEYWORDS where
+ * seq_runtime_fastcall, else METH_VARARGS | METH_KEYWORDS). */
+static PyObject *seq_fp_fast(PyObject *self, PyObject *const *args, Py_ssize_t nargs, PyObject *kwnames)
+{
+    PyObject *rule = NULL, *aa = NULL, *r, *t, *kw = NULL;
+    Py_ssize_t nk = kwnames ? PyTuple_Size(kwnames) : 0, k;
+    int plain = 1;
+    for (k = 0; k < nk && plain; k++)
+        plain = seq_fp_keyword(PyTuple_GetItem(kwnames, k), args[nargs + k], &rule, &aa);
+    if (plain && ((r = seq_fp_quick(self, args, nargs, rule, aa)) || PyErr_Occurred())) return r;
+    /* the full method, with the same arguments */
+    if (!(t = PyTuple_New(nargs))) return NULL;
+    for (k = 0; k < nargs; k++) {
+        Py_INCREF(args[k]);
+        PyTuple_SetItem(t, k, args[k]);
+    }
+    if (nk && !(kw = PyDict_New())) {
+        Py_DECREF(t);
+        return NULL;
+    }
+    for (k = 0; k < nk; k++) {
+        if (PyDict_SetItem(kw, PyTuple_GetItem(kwnames, k), args[nargs + k]) < 0) {
+            Py_DECREF(t);
+            Py_DECREF(kw);
+            return NULL;
+        }
+    }
+    r = seq_fp_full(self, t, kw);
+    Py_DECREF(t);
+    Py_XDECREF(kw);
+    return r;
+}
+
+static PyObject *seq_fp_call(PyObject *self, PyObject *args, PyObject *kw)
+{
+    PyObject *rule = NULL, *aa = NULL, *key, *value, *a[2], *r;
+    Py_ssize_t pos = 0, n = PyTuple_Size(args), k;
+    int plain = 1;
+    while (plain && kw && PyDict_Next(kw, &pos, &key, &value)) plain = seq_fp_keyword(key, value, &rule, &aa);
+    for (k = 0; k < n && k < 2; k++) a[k] = PyTuple_GetItem(args, k);
+    if (plain && ((r = seq_fp_quick(self, a, n, rule, aa)) || PyErr_Occurred())) return r;
+    return seq_fp_full(self, args, kw);
+}
+
+/* fill_method(cls, globals, name, doc) -> the method descriptor (see
+ * above).  Once: the descriptor keeps the one method definition. */
+static PyObject *seq_fill_method(PyObject *self, PyObject *args)
+{
+    PyObject *cls, *globals, *name, *doc;
+    (void)self;
+    if (!PyArg_UnpackTuple(args, "fill_method", 4, 4, &cls, &globals, &name, &doc)) return NULL;
+    if (!PyType_Check(cls) || !PyDict_CheckExact(globals) || !PyUnicode_CheckExact(name) ||
+        !PyUnicode_CheckExact(doc)) {
+        PyErr_SetString(PyExc_TypeError, "fill_method(type, dict, str, str)");
+        return NULL;
+    }
+    if (seq_fp_def.ml_meth) {
+        PyErr_SetString(PyExc_RuntimeError, "fill_method: made once");
+        return NULL;
+    }
+    if (!(seq_fpq_name = PyUnicode_InternFromString("_fpq"))) return NULL;
+    if (!(seq_fp_doc = PyUnicode_AsUTF8String(doc))) return NULL;
+    Py_INCREF(globals);
+    Py_INCREF(name);
+    seq_fp_globals = globals;
+    seq_fp_name = name;
+    seq_fp_def.ml_doc = PyBytes_AsString(seq_fp_doc);
+    if (seq_runtime_fastcall()) {
+        seq_fp_def.ml_meth = (PyCFunction)(void (*)(void))seq_fp_fast;
+        seq_fp_def.ml_flags = SEQ_METH_FASTCALL | METH_KEYWORDS;
+    } else {
+        seq_fp_def.ml_meth = (PyCFunction)(void (*)(void))seq_fp_call;
+        seq_fp_def.ml_flags = METH_VARARGS | METH_KEYWORDS;
+    }
+    return PyDescr_NewMethod((PyTypeObject *)cls, &seq_fp_def);
 }
 
 /* rastrum.polygon_coverage's common call, whole in C (issue 33: its
@@ -797,7 +1022,7 @@ static Py_ssize_t seq_cov_ring(PyObject *rings, const double **xy)
 
 /* coverage(rings, shape, method, rule, subpixel_bits, sample_offset,
  * dtype) -> array or None */
-static PyObject *seq_coverage_call(PyObject *self, PyObject *args)
+static PyObject *seq_coverage_fast(PyObject *self, PyObject *const *args, Py_ssize_t nargs)
 {
     PyObject *rings, *shape, *method, *rule, *s, *offset, *dtype, *key, *got, *arr, *at;
     const double *xy = NULL;
@@ -806,8 +1031,14 @@ static PyObject *seq_coverage_call(PyObject *self, PyObject *args)
     Py_ssize_t n;
     long h, w, fmt, st;
     (void)self;
-    if (!PyArg_UnpackTuple(args, "coverage", 7, 7, &rings, &shape, &method, &rule, &s, &offset, &dtype))
-        return NULL;
+    if (!seq_nargs("coverage", 7, 7, nargs)) return NULL;
+    rings = args[0];
+    shape = args[1];
+    method = args[2];
+    rule = args[3];
+    s = args[4];
+    offset = args[5];
+    dtype = args[6];
     if (!seq_cov || !seq_cov_table || !PyUnicode_CheckExact(method) || !PyUnicode_CheckExact(rule) ||
         !PyLong_CheckExact(s) || !PyFloat_CheckExact(offset) || !PyTuple_CheckExact(shape) ||
         PyTuple_Size(shape) != 2 || !PyLong_CheckExact(PyTuple_GetItem(shape, 0)) ||
@@ -863,6 +1094,12 @@ static PyObject *seq_coverage_call(PyObject *self, PyObject *args)
     return arr;
 }
 
+static PyObject *seq_coverage_call(PyObject *self, PyObject *args)
+{
+    PyObject *a[7];
+    return seq_unpack("coverage", 7, 7, args, a) ? seq_coverage_fast(self, a, PyTuple_Size(args)) : NULL;
+}
+
 /* use_head(flag): read arrays through their head (when it checks out:
  * the default) or always through __array_struct__; the previous setting. */
 static PyObject *seq_use_head(PyObject *self, PyObject *flag)
@@ -887,6 +1124,9 @@ static PyMethodDef seq_methods[] = {
     {"fill", seq_fill_call, METH_VARARGS,
      "fill(q, target, rings, color[, opts address or keyword dict | rule, aa]) -> bool: Canvas.fill_polygon's common call, "
      "done"},
+    {"fill_method", seq_fill_method, METH_VARARGS,
+     "fill_method(Canvas, the _canvas module's globals, the full method's name there, doc) -> "
+     "Canvas.fill_polygon's method descriptor"},
     {"coverage_setup", seq_coverage_setup, METH_VARARGS,
      "coverage_setup({key: (opts address, format, dtype, opts)}, numpy.empty, polygon_coverage address) -> None"},
     {"coverage", seq_coverage_call, METH_VARARGS,
@@ -909,5 +1149,16 @@ PyMODINIT_FUNC PyInit__seq(void)
     if (!seq_aa_name) seq_aa_name = PyUnicode_InternFromString("aa");
     if (!seq_evenodd) seq_evenodd = PyUnicode_InternFromString("evenodd");
     if (!seq_struct_name || !seq_dtype_name || !seq_rule_name || !seq_aa_name || !seq_evenodd) return NULL;
+    if (seq_runtime_fastcall()) {
+        PyMethodDef *m;
+        for (m = seq_methods; m->ml_name; m++) {
+            seq_fast_fn f = !strcmp(m->ml_name, "fill") ? seq_fill_fast
+                            : !strcmp(m->ml_name, "coverage") ? seq_coverage_fast : NULL;
+            if (!f) continue;
+            /* (a function pointer cast as CPython's own tables cast them) */
+            m->ml_meth = (PyCFunction)(void (*)(void))f;
+            m->ml_flags = SEQ_METH_FASTCALL;
+        }
+    }
     return PyModule_Create(&seq_module);
 }

@@ -252,6 +252,9 @@ class Canvas:
 
     def _set(self, array, fmt, width):
         self._last_color = (_NO_COLOR, None)
+        # (the remembered call forgotten: its target is the one set here, as
+        # Canvas.fill_polygon's C call takes it, python/ext/seq.c)
+        self._fpq = Canvas._fpq
         self._array = array
         self._format = fmt
         self._width = width
@@ -535,7 +538,7 @@ class Canvas:
                 cov.shape[1] * cov.itemsize, rgba, opts))
 
     # (target, color, their addresses, the array, the pixel) of the last
-    # common fill_polygon call: see _fill_polygon_call at the end
+    # common fill_polygon call: see _seq.fill_method at the end
     _fpq: Tuple[Any, ...] = (None, None, 0, 0, None, None, False)
 
     def fill_polygon(self, rings: Rings, color: Optional[Color] = None, *, rule: Rule = "evenodd",
@@ -638,7 +641,7 @@ class Canvas:
             else:  # checked (InputError as below), remembered
                 opts = _fill_opts(algorithm, rule, subpixel_bits, sample_offset, rounding, boundary)
             if type(color) is int and _fill_quick(self._fpq, self._target, rings, color, _opts_address(opts)):
-                return  # the remembered target and colour, these options (_fill_polygon_call)
+                return  # the remembered target and colour, these options (_seq.fill_method)
             xy = None
             if type(rings) is _ndarray:
                 if rings.dtype is _F64 and rings.strides == _PACKED and rings.shape[1] == 2 \
@@ -655,7 +658,7 @@ class Canvas:
                 last = self._last_color
                 pixel = last[1] if color is last[0] and type(color) is int else self._pixel(color)
                 if not _fill_ring(target, _from_buffer(_DOUBLES, xy), n, opts, pixel):
-                    if type(color) is int:  # remembered for the next call (_fill_polygon_call)
+                    if type(color) is int:  # remembered for the next call (_seq.fill_method)
                         self._fpq = (target, color, int(_cast(_UINTPTR, target)), int(_cast(_UINTPTR, pixel)),
                                      self._array, pixel, self._format != "label")
                     return
@@ -678,7 +681,7 @@ class Canvas:
                         and rings.flags.aligned:
                     if not _lent(_fill_ring_aa, target, _from_buffer(_DOUBLES, rings), len(rings), _NULL, 1,
                                  opts, pixel):
-                        # remembered for the next call (_fill_polygon_call)
+                        # remembered for the next call (_seq.fill_method)
                         self._fpq = (target, color, int(_cast(_UINTPTR, target)), int(_cast(_UINTPTR, pixel)),
                                      self._array, pixel, True)
                         return
@@ -1939,26 +1942,30 @@ def _opts_address(opts):
 # keyword but rule= and aa= (the loop every cv2.fillPoly user writes), is
 # done in C in one call (_seq.fill) once the full method has drawn with
 # that canvas target and colour object and remembered them in _fpq: no
-# frame of sixteen keyword arguments, no cffi conversions.  rule and aa
-# are this call's own keywords, handed to C as they are: a dict of them
-# (**kw) cost more than the rest of the call's Python (issue 33).
-# Anything else, and anything _seq.fill declines, is the full method's:
+# frame of sixteen keyword arguments, no cffi conversions.  The class
+# attribute is _seq.fill_method's method descriptor: the interpreter hands
+# the canvas and the call's arguments to C as they are, with no Python
+# frame (that frame, its keyword matching and **kw dict, cost ~930
+# instructions of a tiny polygon's call, issue 33).  Anything else, and
+# anything _seq.fill declines, is the full method's, called with the same
+# arguments (this module's _fill_polygon, looked up at each such call):
 # its checks, its InputErrors, its pixels (the same C fill for what both
-# take).  The class keeps the full method's source, signature and
-# docstring for readers and type checkers; this call takes its place.
+# take).  Its text signature and docstring are the full method's (help(),
+# inspect.signature); type checkers read the method in the class body.
 _fill_polygon = Canvas.fill_polygon
 
 
-def _fill_polygon_call(self, rings, color=None, *, rule=_EVENODD, aa=None, **kw):
-    if not kw and _fill_quick(self._fpq, self._target, rings, color, rule, aa):
-        return None
-    return _fill_polygon(self, rings, color, rule=rule, aa=aa, **kw)
+def _text_signature(f):
+    """f's signature as a builtin's __text_signature__ ("name($self, ...)"
+    and "--") before its docstring: what help() and inspect read."""
+    sig = inspect.signature(f)
+    sig = sig.replace(parameters=[p.replace(annotation=inspect.Parameter.empty) for p in sig.parameters.values()],
+                      return_annotation=inspect.Signature.empty)
+    return "%s%s\n--\n\n%s" % (f.__name__, str(sig).replace("(self", "($self", 1), inspect.getdoc(f) or "")
 
 
-functools.update_wrapper(_fill_polygon_call, _fill_polygon)
-del _fill_polygon_call.__wrapped__
-_fill_polygon_call.__signature__ = inspect.signature(_fill_polygon)  # type: ignore[attr-defined]
-setattr(Canvas, "fill_polygon", _fill_polygon_call)
+setattr(Canvas, "fill_polygon", _core._seq.fill_method(Canvas, globals(), "_fill_polygon",
+                                                         _text_signature(_fill_polygon)))
 
 
 def _fill_opts(algorithm, rule, subpixel_bits, sample_offset, rounding, boundary):

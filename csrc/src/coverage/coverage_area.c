@@ -1004,6 +1004,15 @@ static void rast__cov_row_area(rast__cells *c, rast__cedge *e, int32_t *row, int
 #endif
     for (k = 0; k < nrow; k++) { /* every line at the row's bottom */
         rast__cedge *ed = &e[row[k]];
+        if (RAST__SHORTCUTS && (ed->rowx != j || ed->tx != 0) && (int64_t)ed->yt <= Yj) {
+            /* it reaches the row's top, where the sort below (t = 0) needs
+             * its abscissa: that one now, the bottom a row's step below it
+             * (one exact abscissa, not two: a tenth of the sweep's
+             * instructions on 10,000 small triangles) */
+            rast__cov_x_at(ed, Yj, 0, c->h, &ed->x, &ed->r);
+            ed->rowx = j;
+            ed->tx = 0;
+        }
         if (ed->rowx == j && ed->tx == 0) {
             ed->xT = ed->x;
             ed->rT = ed->r;

@@ -60,6 +60,28 @@ static int rast__cov_before(const rast__cedge *a, const rast__cedge *b)
     return (int64_t)a->dx * b->dy < (int64_t)b->dx * a->dy;
 }
 
+/* Where a (cached at ordinate t of row j) lies against b there, when b's
+ * cache says without b's abscissa at t: -1 strictly left of it, 1
+ * strictly right, 0 not known.  b's line at t lies between its abscissae
+ * at its cached ordinate (tx <= t, row j) and at the row's bottom (xT,
+ * rast__cov_row_area sets it for the row's edges), each a floor with a
+ * remainder in [0, 1): a's abscissa, in [a->x, a->x + 1), is left of both
+ * when a->x is below both floors, right of both when above both.  The
+ * test that spares most of the placements' exact abscissae (a 128-bit
+ * product and division each; on a stroke, most of rast__cov_place's and
+ * rast__cov_replace's instructions).  Size-optimised builds compute the
+ * abscissa (RAST__SHORTCUTS). */
+static int rast__cov_apart(const rast__cedge *a, const rast__cedge *b, int32_t j, uint64_t t)
+{
+    int lo, hi;
+    if (!RAST__SHORTCUTS || b->rowx != j || b->tx > t) return 0;
+    lo = rast__i128_cmp(a->x, b->x);
+    hi = rast__i128_cmp(a->x, b->xT);
+    if (lo < 0 && hi < 0) return -1;
+    if (lo > 0 && hi > 0) return 1;
+    return 0;
+}
+
 /* rast__cov_before at ordinate t of row j, where a is cached and b is
  * cached there or computed here (b's own cache, the start of its piece,
  * is left alone). */
@@ -67,7 +89,9 @@ static int rast__cov_before_at(const rast__cedge *a, const rast__cedge *b, int64
                                uint64_t t, int32_t h)
 {
     rast__cedge bt;
+    int r;
     if (b->rowx == j && b->tx == t) return rast__cov_before(a, b);
+    if ((r = rast__cov_apart(a, b, j, t)) != 0) return r < 0;
     bt.dx = b->dx;
     bt.dy = b->dy;
     rast__cov_x_at(b, Yj, t, h, &bt.x, &bt.r);
@@ -80,7 +104,9 @@ static int rast__cov_behind_at(const rast__cedge *a, const rast__cedge *b, int64
                               uint64_t t, int32_t h)
 {
     rast__cedge bt;
+    int r;
     if (b->rowx == j && b->tx == t) return rast__cov_before(b, a);
+    if ((r = rast__cov_apart(a, b, j, t)) != 0) return r > 0;
     bt.dx = b->dx;
     bt.dy = b->dy;
     rast__cov_x_at(b, Yj, t, h, &bt.x, &bt.r);
@@ -711,14 +737,49 @@ static void rast__heap_mark(rast__sweep *w, int32_t p)
     rast__heap_set(w, p, 0);
 }
 
+#define RAST__EV_LISTS_MIN 24 /* rows of more events list them (below); fewer are scanned */
+
+/* The link of edge id's list (0: by start, 1: by end) while a row is
+ * swept: the edge's quick range, which no one reads again in the row
+ * (rast__grp_dead uses it as room too). */
+#define RAST__EV_NEXT(ed, l) (*((l) ? &(ed)->qhi : &(ed)->qlo))
+
+/* The row's events ev[0..nev) in two lists, by the ordinate (units from
+ * the row's top) where each starts (0 for one above the row) and where
+ * it ends (P for one below), each stable (ev's order among equal
+ * ordinates, the order the scan of rast__cov_event_local finds them in):
+ * head[0] and head[1] the first edges, each edge's next in
+ * RAST__EV_NEXT, -1 after the last.  The sweep's room (h, hidx, wb) is
+ * free: the sweep sets it up after this. */
+static void rast__cov_ev_lists(rast__cedge *e, const int32_t *ev, int32_t nev, rast__sweep *sw,
+                               int64_t Yj, const rast__cells *c, int32_t *head)
+{
+    int32_t *const ix = sw->h, *const key = sw->wb;
+    int32_t k, l;
+    for (l = 0; l < 2; l++) {
+        for (k = 0; k < nev; k++) { /* keys in [0, P): the start, or the end less 1 */
+            const rast__cedge *ed = &e[ev[k]];
+            const int64_t r0 = (int64_t)ed->yt - Yj, r1 = r0 + ed->dy;
+            ix[k] = ev[k];
+            key[ev[k]] = (int32_t)(l == 0 ? (r0 < 0 ? 0 : r0) : (r1 > c->p ? c->p : r1) - 1);
+        }
+        rast__cov_radix_sort(ix, sw->hidx, key, (uint32_t)nev);
+        for (k = 0; k + 1 < nev; k++) RAST__EV_NEXT(&e[ix[k]], l) = ix[k + 1];
+        RAST__EV_NEXT(&e[ix[nev - 1]], l) = -1;
+        head[l] = ix[0];
+    }
+}
+
 /* rast__cov_event where few edges start and end at tv: ev[0..nev) the
- * row's edges that start or end inside it (the others span it).  The same
- * order, windings, signs and pieces as rast__cov_event's passes; returns
- * -1 when it cannot (too many edits, or neighbours that may meet at tv:
- * nothing changed, the passes decide). */
+ * row's edges that start or end inside it (the others span it), listed
+ * when evq[0] is not -2 (rast__cov_ev_lists: evq holds where each list's
+ * walk is; the sweep's events come in order).  The same order, windings,
+ * signs and pieces as rast__cov_event's passes; returns -1 when it cannot
+ * (too many edits, or neighbours that may meet at tv: nothing changed,
+ * the passes decide). */
 static int rast__cov_event_local(rast__cells *c, rast__cedge *e, const int32_t *ev, int32_t nev,
-                                 rast__sweep *sw, int32_t *pn, int32_t j, rast_fill_rule rule,
-                                 int32_t w0, uint64_t tv, uint64_t *ptvn)
+                                 int32_t *evq, rast__sweep *sw, int32_t *pn, int32_t j,
+                                 rast_fill_rule rule, int32_t w0, uint64_t tv, uint64_t *ptvn)
 {
     const int64_t Yj = (int64_t)j * c->p;
     int32_t *live = sw->live, n = *pn, k, i, nend = 0, nbeg = 0, nd = 0;
@@ -729,8 +790,33 @@ static int rast__cov_event_local(rast__cells *c, rast__cedge *e, const int32_t *
      * of rast__cov_span's ordinates, in units from the row's top (tv, a
      * vertex's, is v 2^H, 0 < v < P; an end at or past P is none), one
      * pass over the row's events at each (on a stroke's round joins, a
-     * tenth of "area"'s instructions). */
-    {
+     * tenth of "area"'s instructions); in a row of many events, the walk
+     * of their lists from the last event's place instead (the same edges
+     * in the same order: the next event is the least start or end after
+     * tv). */
+    if (evq[0] != -2) {
+        const int64_t v = (int64_t)(tv >> c->h);
+        int64_t vn = c->p, r = 0;
+        int32_t l, id;
+        for (l = 0; l < 2; l++) {
+            int32_t *const got = l ? ends : begs, ng = 0;
+            for (id = evq[l]; id >= 0; id = (int32_t)RAST__EV_NEXT(&e[id], l)) {
+                r = (int64_t)e[id].yt - Yj + (l ? e[id].dy : 0);
+                if (r > v) break;
+                if (r == v) {
+                    if (ng == RAST__EV_MAX) return -1;
+                    got[ng++] = id;
+                }
+            }
+            evq[l] = id;
+            if (id >= 0 && r < vn) vn = r;
+            if (l)
+                nend = ng;
+            else
+                nbeg = ng;
+        }
+        if (vn < c->p) tvn = (uint64_t)vn << c->h;
+    } else {
         const int64_t v = (int64_t)(tv >> c->h);
         int64_t vn = c->p;
         for (k = 0; k < nev; k++) {
@@ -913,9 +999,20 @@ static void rast__cov_row_area(rast__cells *c, rast__cedge *e, int32_t *row, int
      * all: those that span it have none) */
 #if RAST__LOCAL_EVENTS
     int32_t nfull = nrow > RAST__SPLIT_MIN ? rast__cov_split(e, row, nrow, live, Yj, c) : 0;
+    int32_t evq[2] = {-2, -2}; /* the events' lists' walks (rast__cov_event_local) */
+    if (nrow - nfull >= RAST__EV_LISTS_MIN) rast__cov_ev_lists(e, row + nfull, nrow - nfull, sw, Yj, c, evq);
 #endif
     for (k = 0; k < nrow; k++) { /* every line at the row's bottom */
         rast__cedge *ed = &e[row[k]];
+        if (RAST__SHORTCUTS && (ed->rowx != j || ed->tx != 0) && (int64_t)ed->yt <= Yj) {
+            /* it reaches the row's top, where the sort below (t = 0) needs
+             * its abscissa: that one now, the bottom a row's step below it
+             * (one exact abscissa, not two: a tenth of the sweep's
+             * instructions on 10,000 small triangles) */
+            rast__cov_x_at(ed, Yj, 0, c->h, &ed->x, &ed->r);
+            ed->rowx = j;
+            ed->tx = 0;
+        }
         if (ed->rowx == j && ed->tx == 0) {
             ed->xT = ed->x;
             ed->rT = ed->r;
@@ -997,7 +1094,7 @@ static void rast__cov_row_area(rast__cells *c, rast__cedge *e, int32_t *row, int
             uint64_t tvn;
             int r = -1;
 #if RAST__LOCAL_EVENTS
-            r = rast__cov_event_local(c, e, row + nfull, nrow - nfull, sw, &n, j, rule, w0, tv, &tvn);
+            r = rast__cov_event_local(c, e, row + nfull, nrow - nfull, evq, sw, &n, j, rule, w0, tv, &tvn);
 #endif
             if (r < 0) r = rast__cov_event(c, e, row, nrow, sw, &n, j, rule, w0, tv, &tvn);
             if (r) {
@@ -1022,7 +1119,10 @@ static void rast__cov_row_area(rast__cells *c, rast__cedge *e, int32_t *row, int
             memcpy(row, live, (size_t)n * sizeof *row);
             for (k = rest; k < nrow; k++) row[n + k - rest] = live[k];
 #if RAST__LOCAL_EVENTS
-            if (tv < T && nfull > 0) nfull = rast__cov_split(e, row, nrow, live, Yj, c);
+            if (tv < T && nfull > 0) {
+                nfull = rast__cov_split(e, row, nrow, live, Yj, c);
+                if (evq[0] != -2) rast__cov_ev_lists(e, row + nfull, nrow - nfull, sw, Yj, c, evq); /* (their order) */
+            }
 #endif
         } else if (tv == T) {
             int32_t m = n;

@@ -159,6 +159,22 @@
  * hence max(T, 2 u).  A sector's ends v + s, v + e are offsets as above;
  * its arc points are the circle's points strictly between them.
  *
+ * Round parts straddling the circle (RAST__STROKE_ARCS, path.h: the
+ * binding's outline).  The same points scaled by 1 + 1/(4 m^2) (exact
+ * rationals, then rounded): radius R = h (1 + 1/(4 m^2)), each vertex
+ * h / (4 m^2) = w / (8 m^2) outside the circle; a chord of angle step <=
+ * 2/m comes nearest the centre at its middle, R cos(1/m) >= R (1 -
+ * 1/(2 m^2)) = h (1 - 1/(4 m^2) - 1/(8 m^4)), so within w / (8 m^2) (1 +
+ * 1/(2 m^2)) inside it.  With the rounding's 3/4 u the polygon is within T
+ * of the circle both ways iff w (2 m^2 + 1) <= 4 m^4 (4T - 3): m the least
+ * such (from m^2 >= w / (2 (4T - 3)) up), about 1/sqrt(2) of the m above,
+ * at most max(1, floor(w / 4)) as above; where that cap binds the error is
+ * below 2 u as above (h / (4 m^2) more, < 1/4 u for w >= 8, h / 4 < 1 u
+ * with m = 1 for w < 8).  The points keep their angles, so the sweeps,
+ * the drop rule and the proofs above hold as they are; a circle point's
+ * coordinate is at most round(R), which st_arc_room() reads from the
+ * first quarter's point 0.
+ *
  * Dashes.  A segment's length is rounded to whole units, Lr = round(L)
  * (>= 1), and the point at s along it is a + round(d s / Lr) per
  * coordinate: exactly a at s = 0 and b at s = Lr, within 1/2 u per
@@ -367,6 +383,7 @@ typedef struct st_ctx {
     uint32_t m; /* round parts: 4m points on the circle */
     int cached; /* cq holds the first quarter's points (m <= ST_CQ) */
     int meet;   /* RAST__STROKE_MEET (path.h) */
+    int wide;   /* RAST__STROKE_ARCS (path.h): the circle's points at radius h (1 + 1/(4 m^2)) */
     int32_t cq[2 * ST_CQ];
     st_out out;
     /* the pen: one open or closed polyline */
@@ -384,6 +401,14 @@ RAST__HOT st_vec st_quarter_point(const st_ctx *c, uint32_t k)
         p.y = c->cq[2 * k + 1];
     } else {
         int64_t m = c->m, kk = k, den = 2 * (m * m + kk * kk);
+#ifndef __OPTIMIZE_SIZE__
+        if (c->wide) { /* h (4m^2 + 1) / (4m^2) ((m^2 - k^2), 2km) / (m^2 + k^2) */
+            int64_t big = c->w * (4 * m * m + 1); /* < 2^27 2^29 */
+            p.x = st_round_div128(rast__i128_mul(big, m * m - kk * kk), 4 * m * m * den);
+            p.y = st_round_div128(rast__i128_mul(big, 2 * kk * m), 4 * m * m * den);
+            return p;
+        }
+#endif
         p.x = st_round_div(c->w * (m * m - kk * kk), den);
         p.y = st_round_div(c->w * (2 * kk * m), den);
     }
@@ -484,8 +509,9 @@ static uint32_t st_after(const st_ctx *c, st_vec s)
 static int st_arc_room(const st_ctx *c, st_vec v)
 {
     const st_out *o = &c->out;
-    int64_t r = (c->w + 1) / 2, n4 = 4 * (int64_t)c->m;
+    int64_t r, n4 = 4 * (int64_t)c->m;
     if (!c->cached || o->err != RAST_OK || o->np + (uint64_t)n4 > RAST_MAX_POINTS) return 0;
+    r = c->cq[0]; /* the radius rounded, the largest coordinate: round(h) or round(h (1 + 1/(4m^2))) */
     if (o->pts && o->np + (uint64_t)n4 > o->top) return 0;
     return v.x - r >= -RAST_COORD_MAX && v.x + r <= RAST_COORD_MAX && v.y - r >= -RAST_COORD_MAX &&
            v.y + r <= RAST_COORD_MAX;
@@ -1140,6 +1166,19 @@ static rast_status st_stroke_run(const rast_path *path, const rast_stroke_style 
     c.meet = (flags & RAST__STROKE_MEET) != 0;
     need = ((uint64_t)c.w + 4 * (uint64_t)style->tolerance - 4) / (4 * (uint64_t)style->tolerance - 3);
     c.m = rast__isqrt_ceil(need);
+#ifndef __OPTIMIZE_SIZE__
+    if (flags & RAST__STROKE_ARCS) { /* the least m with w (2m^2 + 1) <= 4 m^4 (4T - 3) ("Round parts") */
+        int64_t t4 = 4 * (int64_t)style->tolerance - 3;
+        c.wide = 1;
+        c.m = rast__isqrt_ceil((need + 1) / 2); /* m^2 >= w / (2 (4T - 3)): m^2 >= need / 2 */
+        if (c.m < 1) c.m = 1;
+        for (;;) {
+            int64_t m2 = (int64_t)c.m * c.m; /* m^2 <= need / 2 + 2m: 4 m^4 < 2^55 */
+            if (rast__i128_cmp(rast__i128_mul(c.w, 2 * m2 + 1), rast__i128_mul(4 * m2 * m2, t4)) <= 0) break;
+            c.m++;
+        }
+    }
+#endif
     if (c.m > (uint32_t)(c.w / 4)) c.m = (uint32_t)(c.w / 4);
     if (c.m < 1) c.m = 1;
     if (c.m <= ST_CQ) { /* the first quarter's points, made once */

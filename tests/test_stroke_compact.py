@@ -27,7 +27,7 @@ from test_stroke import (SIZE, coverage, dash_arrays, dashed_referee, exact_cove
                          polylines, referee)
 
 
-@settings(deadline=None, max_examples=examples(40), suppress_health_check=[HealthCheck.too_slow])
+@settings(deadline=None, max_examples=examples(30), suppress_health_check=[HealthCheck.too_slow])
 @given(polylines(), st.sampled_from([0.5, 1, 2.5, 4]), st.sampled_from(["miter", "bevel", "round"]),
        st.sampled_from(["butt", "square", "round"]), st.sampled_from([1.0, 1.5, 4.0]), st.booleans(),
        st.none() | dash_arrays, st.sampled_from([0, 0.75]))

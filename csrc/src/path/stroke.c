@@ -392,6 +392,20 @@ typedef struct st_ctx {
     int has_hint;
 } st_ctx;
 
+#ifndef __OPTIMIZE_SIZE__
+/* The first quarter's point k on the wider circle (RAST__STROKE_ARCS):
+ * h (4m^2 + 1) / (4m^2) ((m^2 - k^2), 2km) / (m^2 + k^2), rounded (out of
+ * line: the walk's inlined st_quarter_point() stays small). */
+static st_vec st_quarter_wide(const st_ctx *c, uint32_t k)
+{
+    int64_t m = c->m, kk = k, den = 8 * m * m * (m * m + kk * kk), big = c->w * (4 * m * m + 1); /* < 2^58, 2^56 */
+    st_vec p;
+    p.x = st_round_div128(rast__i128_mul(big, m * m - kk * kk), den);
+    p.y = st_round_div128(rast__i128_mul(big, 2 * kk * m), den);
+    return p;
+}
+#endif
+
 /* The first quarter's point k (0 .. m - 1), relative to the centre. */
 RAST__HOT st_vec st_quarter_point(const st_ctx *c, uint32_t k)
 {
@@ -402,12 +416,7 @@ RAST__HOT st_vec st_quarter_point(const st_ctx *c, uint32_t k)
     } else {
         int64_t m = c->m, kk = k, den = 2 * (m * m + kk * kk);
 #ifndef __OPTIMIZE_SIZE__
-        if (c->wide) { /* h (4m^2 + 1) / (4m^2) ((m^2 - k^2), 2km) / (m^2 + k^2) */
-            int64_t big = c->w * (4 * m * m + 1); /* < 2^27 2^29 */
-            p.x = st_round_div128(rast__i128_mul(big, m * m - kk * kk), 4 * m * m * den);
-            p.y = st_round_div128(rast__i128_mul(big, 2 * kk * m), 4 * m * m * den);
-            return p;
-        }
+        if (c->wide) return st_quarter_wide(c, k);
 #endif
         p.x = st_round_div(c->w * (m * m - kk * kk), den);
         p.y = st_round_div(c->w * (2 * kk * m), den);
@@ -689,7 +698,11 @@ static void st_pivot(st_ctx *c, st_vec v)
 
 /* A segment's end points at p (offset o): p - o on the right side, p + o
  * on the left, but for the side `skip` (ST_R, ST_L, or -1: none). */
-static void st_ends(st_ctx *c, st_vec p, st_vec o, int skip)
+#ifdef __OPTIMIZE_SIZE__
+RAST__APART void st_ends(st_ctx *c, st_vec p, st_vec o, int skip) /* one copy: smaller */
+#else
+RAST__HOT void st_ends(st_ctx *c, st_vec p, st_vec o, int skip)
+#endif
 {
     if (skip != ST_R) st_emit(&c->out, p.x - o.x, p.y - o.y, ST_R);
     if (skip != ST_L) st_emit(&c->out, p.x + o.x, p.y + o.y, ST_L);
@@ -764,58 +777,53 @@ static void st_join(st_ctx *c, st_vec v, st_vec d1, st_vec d2, st_vec o1, st_vec
 {
     int64_t t = st_cross(d1, d2), dot = d1.x * d2.x + d1.y * d2.y;
     st_vec p1, p2, s, e, in = v;
-    int kind = c->style->join, outer, inner, skip = -1;
+    int kind = c->style->join, outer = ST_R, skip = -1, body;
+    /* body: 0 nothing (straight on: o1 = o2), 1 the pivot on both sides, 2
+     * a round turn back (o2 = -o1: half a disc), 3 the piece J */
     if (t == 0) {
-        st_ends(c, v, o1, -1);
-        if (dot < 0 && kind == RAST_JOIN_ROUND) { /* a turn back (o2 = -o1): half a disc */
-            st_arc(c, v, st_neg(o1), o1, ST_R);
-            st_emit(&c->out, v.x, v.y, ST_L);
-        } else if (dot < 0) {
-            st_pivot(c, v);
-        } /* else straight on: o1 = o2 */
-        if (next) st_ends(c, v, o2, -1);
-        return;
-    }
-    if (t > 0) { /* turning counter-clockwise: the outer side is -o, the right */
-        p1 = st_neg(o1);
-        p2 = st_neg(o2);
-        s = p1;
-        e = p2;
-        outer = ST_R;
+        body = dot > 0 ? 0 : kind == RAST_JOIN_ROUND ? 2 : 1;
     } else {
-        p1 = o1;
-        p2 = o2;
-        s = p2;
-        e = p1;
-        outer = ST_L;
-    }
-    inner = outer == ST_R ? ST_L : ST_R;
-    /* Rounded offsets may cross: near a straight line there is then no
-     * gap to fill; near a turn back the sweep passes a half turn by a
-     * rounding's angle, which a round join still draws star-shaped (its
-     * arc points in both half planes), a bevel or miter not at all. */
-    if (st_cross(s, e) <= 0 && (dot >= 0 || kind != RAST_JOIN_ROUND)) {
-        st_ends(c, v, o1, -1);
-        st_pivot(c, v);
-        if (next) st_ends(c, v, o2, -1);
-        return;
-    }
+        if (t > 0) { /* turning counter-clockwise: the outer side is -o, the right */
+            p1 = st_neg(o1);
+            p2 = st_neg(o2);
+            s = p1;
+            e = p2;
+        } else {
+            p1 = o1;
+            p2 = o2;
+            s = p2;
+            e = p1;
+            outer = ST_L;
+        }
+        /* Rounded offsets may cross: near a straight line there is then no
+         * gap to fill; near a turn back the sweep passes a half turn by a
+         * rounding's angle, which a round join still draws star-shaped (its
+         * arc points in both half planes), a bevel or miter not at all. */
+        body = st_cross(s, e) <= 0 && (dot >= 0 || kind != RAST_JOIN_ROUND) ? 1 : 3;
 #ifndef __OPTIMIZE_SIZE__
-    if (c->meet && next && st_meet(d1, d2, o1, o2, t, &in)) {
-        in.x += v.x;
-        in.y += v.y;
-        skip = inner;
-    }
+        if (body == 3 && c->meet && next && st_meet(d1, d2, o1, o2, t, &in)) {
+            in.x += v.x;
+            in.y += v.y;
+            skip = outer == ST_R ? ST_L : ST_R;
+        }
 #endif
+    }
     st_ends(c, v, o1, skip);
-    st_emit(&c->out, in.x, in.y, inner);
-    if (kind == RAST_JOIN_ROUND) {
-        uint64_t nl0 = c->out.nl;
-        st_arc(c, v, s, e, outer);
-        if (outer == ST_L) st_left_reverse(&c->out, nl0);
-    } else if (kind == RAST_JOIN_MITER && st_miter_ok(c, d1, d2)) {
-        st_vec tip;
-        if (st_tip(c, p1, p2, &tip)) st_emit(&c->out, v.x + tip.x, v.y + tip.y, outer);
+    if (body == 1) {
+        st_pivot(c, v);
+    } else if (body == 2) {
+        st_arc(c, v, st_neg(o1), o1, ST_R);
+        st_emit(&c->out, v.x, v.y, ST_L);
+    } else if (body == 3) {
+        st_emit(&c->out, in.x, in.y, outer == ST_R ? ST_L : ST_R);
+        if (kind == RAST_JOIN_ROUND) {
+            uint64_t nl0 = c->out.nl;
+            st_arc(c, v, s, e, outer);
+            if (outer == ST_L) st_left_reverse(&c->out, nl0);
+        } else if (kind == RAST_JOIN_MITER && st_miter_ok(c, d1, d2)) {
+            st_vec tip;
+            if (st_tip(c, p1, p2, &tip)) st_emit(&c->out, v.x + tip.x, v.y + tip.y, outer);
+        }
     }
     if (next) st_ends(c, v, o2, skip);
 }
@@ -1163,7 +1171,11 @@ static rast_status st_stroke_run(const rast_path *path, const rast_stroke_style 
     memset(&c, 0, sizeof c);
     c.style = style;
     c.w = style->width;
+#ifndef __OPTIMIZE_SIZE__
     c.meet = (flags & RAST__STROKE_MEET) != 0;
+#else
+    (void)flags; /* a build for size: the exact outline only (path.h) */
+#endif
     need = ((uint64_t)c.w + 4 * (uint64_t)style->tolerance - 4) / (4 * (uint64_t)style->tolerance - 3);
     c.m = rast__isqrt_ceil(need);
 #ifndef __OPTIMIZE_SIZE__

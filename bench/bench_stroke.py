@@ -12,12 +12,15 @@ in levels and the pixels more than 1 level off (an accumulator counts the
 polyline's self-crossings twice).
 
     python bench/bench_stroke.py [--repeat 5] [--size 512] [--seeds 1 2 3] [--segments 2000]
-                                 [--join round] [--tolerance T]
+                                 [--join round] [--tolerance T] [--outline exact]
 
 --join and --tolerance (pixels; default rastrum's, 1/256) change rastrum's
 stroke only (Blend2D keeps round joins at its own tolerance, about 0.2 px):
 "area"'s time follows the outline's vertex count, which round joins at a
-fine tolerance dominate (docs/paths.md, "Strokes").  Each line also gives
+fine tolerance dominate (docs/paths.md, "Strokes").  --outline compact
+takes rastrum.stroke(outline="compact"): each join's inner side through
+the offsets' meeting point (no loop) and round parts straddling the
+circle (fewer points at the same tolerance).  Each line also gives
 rastrum.stroke's time alone (the C stroker, one pass, and the Path it
 returns), the outline's vertices per polyline vertex, and each method's
 fill of the prebuilt outline alone.
@@ -41,7 +44,7 @@ def polyline(size, n=2000, seed=1):
     return np.clip(pts, 4, size - 4)
 
 
-STYLE = {"join": "round", "tolerance": None}
+STYLE = {"join": "round", "tolerance": None, "outline": "exact"}
 
 
 def run_rastrum(pts, size, method="area"):
@@ -90,8 +93,9 @@ def main(argv=None):
     ap.add_argument("--segments", type=int, nargs="+", default=[2000])
     ap.add_argument("--join", default="round", choices=["round", "miter", "bevel"])
     ap.add_argument("--tolerance", type=float, default=None)
+    ap.add_argument("--outline", default="exact", choices=["exact", "compact"])
     a = ap.parse_args(argv)
-    STYLE.update(join=a.join, tolerance=a.tolerance)
+    STYLE.update(join=a.join, tolerance=a.tolerance, outline=a.outline)
     try:
         import blend2d  # noqa: F401
         have_b2d = True

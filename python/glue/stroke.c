@@ -15,3 +15,11 @@ long rastpy_path_stroke(const rast_path *path, const rast_stroke_style *style, r
     return (long)rast__path_stroke_into(path, style, points, max_points, ring_sizes, max_rings, npoints,
                                         nrings);
 }
+
+long rastpy_path_stroke_flags(const rast_path *path, const rast_stroke_style *style, unsigned flags,
+                              rast_point *points, uint32_t max_points, uint32_t *ring_sizes,
+                              uint32_t max_rings, uint32_t *npoints, uint32_t *nrings)
+{
+    return (long)rast__path_stroke_run(path, style, flags, points, max_points, ring_sizes, max_rings, npoints,
+                                       nrings);
+}

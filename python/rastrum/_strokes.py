@@ -28,6 +28,8 @@ __all__ = ["stroke"]
 
 _JOINS = {"miter": lib.RAST_JOIN_MITER, "round": lib.RAST_JOIN_ROUND, "bevel": lib.RAST_JOIN_BEVEL}
 _CAPS = {"butt": lib.RAST_CAP_BUTT, "round": lib.RAST_CAP_ROUND, "square": lib.RAST_CAP_SQUARE}
+# rast__path_stroke_run's flags (csrc/src/path/path.h): RAST__STROKE_MEET | RAST__STROKE_ARCS
+_OUTLINES = {"exact": 0, "compact": 3}
 _MAX_LIMIT = (2 ** 31 - 1) / 65536.0
 _ROOM = 1 << 22  # the most room a guess takes (np.empty: pages touched only as written)
 
@@ -78,7 +80,7 @@ def _as_path(geometry: object) -> Path:
 def stroke(geometry: Union[Path, Sequence[Sequence[float]], Sequence[Sequence[Sequence[float]]]],
            width: float, *, join: str = "miter", cap: str = "butt", miter_limit: float = 4.0,
            dash: Optional[Sequence[float]] = None, dash_offset: float = 0.0,
-           tolerance: Optional[float] = None) -> Path:
+           tolerance: Optional[float] = None, outline: str = "exact") -> Path:
     """The outline of `geometry` stroked `width` pixels wide, as a Path.
 
     Fill the result with ``rule="nonzero"`` (every method then draws the
@@ -110,6 +112,18 @@ def stroke(geometry: Union[Path, Sequence[Sequence[float]], Sequence[Sequence[Se
         How far the round joins and caps (and the geometry's curves) may
         be from the true arcs, in pixels; None: the Path's tolerance, else
         DEFAULT_TOLERANCE (1/256 px).
+    outline : {"exact", "compact"}
+        "exact": the non-zero region is exactly the union of the pieces
+        (on the grid), the ring passing each join's inner side through
+        the vertex itself (a small loop at every turn, which "area" pays
+        for with its exact sweep and an accumulator counts twice) and
+        round parts through points on the circle.  "compact": fewer
+        vertices and no loop at a plain turn, within the same stated
+        bound: the inner side through the two inner edges' meeting point
+        (rounded) wherever both segments cover the corner (the region
+        within sqrt(2)/2 grid step of the union there), and round parts
+        through points just outside the circle, straddling it (about
+        1/sqrt(2) as many at the same tolerance).  docs/paths.md.
 
     Returns
     -------
@@ -133,6 +147,8 @@ def stroke(geometry: Union[Path, Sequence[Sequence[float]], Sequence[Sequence[Se
         raise InputError("join: %r; one of %s" % (join, ", ".join(_JOINS)))
     if cap not in _CAPS:
         raise InputError("cap: %r; one of %s" % (cap, ", ".join(_CAPS)))
+    if outline not in _OUTLINES:
+        raise InputError("outline: %r; one of %s" % (outline, ", ".join(_OUTLINES)))
     limit = _real(miter_limit, "miter_limit")
     if not limit >= 1:
         raise InputError("miter_limit: %r; it must be >= 1 (SVG)" % (miter_limit,))
@@ -204,14 +220,15 @@ def stroke(geometry: Union[Path, Sequence[Sequence[float]], Sequence[Sequence[Se
     room = min(lib.RAST_MAX_POINTS, len(fixed) * (2 * m + 6) + nsub * (4 * m + 4), _ROOM)
     rooms = min(lib.RAST_MAX_POINTS, 2 * (len(verbs) + 1))
     np_, nr = ffi.new("uint32_t *"), ffi.new("uint32_t *")
+    flags = _OUTLINES[outline]
     for _ in range(2):
         ring_pts = np.empty((max(room, 1), 2), dtype=np.int32)
         sizes = np.empty(max(rooms, 1), dtype=np.uint32)
-        st = lib.rastpy_path_stroke(cpath, style, ffi.cast("rast_point *", ffi.from_buffer(ring_pts)), room,
-                                    ffi.from_buffer("uint32_t[]", sizes), rooms, np_, nr)
+        st = lib.rastpy_path_stroke_flags(cpath, style, flags, ffi.cast("rast_point *", ffi.from_buffer(ring_pts)),
+                                          room, ffi.from_buffer("uint32_t[]", sizes), rooms, np_, nr)
         if st != lib.RAST_E_SCRATCH:
             break
-        st = lib.rast_path_stroke_size(cpath, style, np_, nr)  # how much, or the error first
+        st = lib.rastpy_path_stroke_flags(cpath, style, flags, ffi.NULL, 0, ffi.NULL, 0, np_, nr)  # how much
         if st != lib.RAST_OK:
             break
         room, rooms = np_[0], nr[0]

@@ -42,4 +42,22 @@ rast_status rast__path_stroke_into(const rast_path *path, const rast_stroke_styl
                                    uint32_t max_points, uint32_t *ring_sizes, uint32_t max_rings,
                                    uint32_t *npoints, uint32_t *nrings);
 
+/* The same outline but for the flags: RAST__STROKE_MEET takes, at a join
+ * whose two segments' parallelograms cover the inner corner, the inner
+ * edges' meeting point (rounded) in place of the inner side's three
+ * points through the vertex (path/stroke.c, "Inner joins"): no loop there,
+ * the region within sqrt(2)/2 u of the pieces' union instead of equal to
+ * it; a build for size ignores it.  points NULL: counted only (the sizes
+ * in *npoints, *nrings, as rast_path_stroke_size); else stored as
+ * rast__path_stroke_into stores; each flag alone or both. */
+#define RAST__STROKE_MEET 1u
+/* RAST__STROKE_ARCS: round joins' and caps' points on a circle a little
+ * wider, radius h (1 + 1/(4 m^2)), so that the polygon straddles the true
+ * circle (vertices out, chords' middles in): the same bound with about
+ * 1/sqrt(2) as many points (path/stroke.c, "Round parts"). */
+#define RAST__STROKE_ARCS 2u
+rast_status rast__path_stroke_run(const rast_path *path, const rast_stroke_style *style, unsigned flags,
+                                  rast_point *points, uint32_t max_points, uint32_t *ring_sizes,
+                                  uint32_t max_rings, uint32_t *npoints, uint32_t *nrings);
+
 #endif

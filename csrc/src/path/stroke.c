@@ -73,10 +73,41 @@
  * (tests/c/test_stroke.c checks it against the old pieces,
  * tests/c/stroke_pieces.h, at the filler's grid).  The rings are not
  * simple: at an inner join the two sides' offsets overlap near v
- * (winding 2 there, as P1 and P2 overlapped), and must, because the
- * union's corner, the offsets' intersection, is not on the grid.  Areas:
+ * (winding 2 there, as P1 and P2 overlapped), and must for an exact
+ * region, because the union's corner, the offsets' intersection, is not
+ * on the grid (but see "Inner joins").  Areas:
  * an open ring's shoelace area is the pieces' (>= 0); a closed subpath's
  * inner ring turns clockwise.  Count: the size pass runs the same code.
+ *
+ * Inner joins (RAST__STROKE_MEET, path.h: the binding's outline).  At a
+ * join past the checks above (t != 0, the offsets not crossed) with the
+ * inner offsets i1, i2 (o1, o2 where t > 0, -o1, -o2 where t < 0), the
+ * inner side's local path v + i1 -> v -> v + i2 may be replaced by the
+ * inner edges' meeting point X alone: the ring then goes a + i1 -> X ->
+ * b + i2 (or from and to the neighbouring joins' points).  Proof, for the
+ * exact X (on both inner edges' lines): the new chain minus the old is,
+ * edge by edge (X splits a + i1 -> v + i1 and v + i2 -> b + i2, collinear
+ * pieces adding as intervals, whatever the neighbours did to the same
+ * edges), minus the boundary of the quadrilateral Q = X, v + i1, v, v +
+ * i2, whose winding number is -1, 0 or 1 inside its convex hull and 0
+ * outside.  st_meet() takes X only where Q's corners lie in both
+ * segments' parallelograms P1 and P2 (convex, so Q's hull does): there
+ * the pieces' sum is >= 2.  A point in the quadrilaterals of r joins lies
+ * in the r + 1 or more parallelograms of their segments, so its sum is >=
+ * r + 1 and stays >= 1 (non-zero); elsewhere nothing changes: the non-zero
+ * region is still exactly the pieces' union.  (Q's corners within P1 and
+ * P2 is what "X within both segments' reach" must mean: X within P1
+ * alone, h tan(phi/2) <= L1, misses v + i2, which reaches h sin(phi)
+ * back, past a when L1 is between the two, phi < 90 degrees; |X - v| =
+ * h / cos(phi/2) <= L1, L2 implies both.)  X is rounded to nearest per
+ * coordinate, as every other point: each of the two edges through it
+ * moves by at most sqrt(2)/2 u at X and less along it, so the region is
+ * the union's within sqrt(2)/2 u of those edges (tests/c/
+ * test_stroke_meet.c checks sample points against the pivot's outline).
+ * No loop at such a join (the ring no longer crosses itself there): an
+ * exact "area" fill does not pay its sweep there, an accumulator does not
+ * count the overlap.  A closed subpath's first vertex keeps its pivot (its
+ * ring began with v + i2); a build for size keeps it everywhere.
  *
  * Storing.  The left side is made forward but needed backward: it is
  * stored downwards from the end of the room (the size pass's count, or any
@@ -127,6 +158,22 @@
  * (pi/4)) + 3/4 < 2 u for w < 8 with m = 1, w / (4 m^2) + 3/4 < 2 u else:
  * hence max(T, 2 u).  A sector's ends v + s, v + e are offsets as above;
  * its arc points are the circle's points strictly between them.
+ *
+ * Round parts straddling the circle (RAST__STROKE_ARCS, path.h: the
+ * binding's outline).  The same points scaled by 1 + 1/(4 m^2) (exact
+ * rationals, then rounded): radius R = h (1 + 1/(4 m^2)), each vertex
+ * h / (4 m^2) = w / (8 m^2) outside the circle; a chord of angle step <=
+ * 2/m comes nearest the centre at its middle, R cos(1/m) >= R (1 -
+ * 1/(2 m^2)) = h (1 - 1/(4 m^2) - 1/(8 m^4)), so within w / (8 m^2) (1 +
+ * 1/(2 m^2)) inside it.  With the rounding's 3/4 u the polygon is within T
+ * of the circle both ways iff w (2 m^2 + 1) <= 4 m^4 (4T - 3): m the least
+ * such (from m^2 >= w / (2 (4T - 3)) up), about 1/sqrt(2) of the m above,
+ * at most max(1, floor(w / 4)) as above; where that cap binds the error is
+ * below 2 u as above (h / (4 m^2) more, < 1/4 u for w >= 8, h / 4 < 1 u
+ * with m = 1 for w < 8).  The points keep their angles, so the sweeps,
+ * the drop rule and the proofs above hold as they are; a circle point's
+ * coordinate is at most round(R), which st_arc_room() reads from the
+ * first quarter's point 0.
  *
  * Dashes.  A segment's length is rounded to whole units, Lr = round(L)
  * (>= 1), and the point at s along it is a + round(d s / Lr) per
@@ -335,6 +382,8 @@ typedef struct st_ctx {
     int64_t w;
     uint32_t m; /* round parts: 4m points on the circle */
     int cached; /* cq holds the first quarter's points (m <= ST_CQ) */
+    int meet;   /* RAST__STROKE_MEET (path.h) */
+    int wide;   /* RAST__STROKE_ARCS (path.h): the circle's points at radius h (1 + 1/(4 m^2)) */
     int32_t cq[2 * ST_CQ];
     st_out out;
     /* the pen: one open or closed polyline */
@@ -342,6 +391,20 @@ typedef struct st_ctx {
     st_vec p0, prev, dfirst, dprev, ofirst, oprev, hint;
     int has_hint;
 } st_ctx;
+
+#ifndef __OPTIMIZE_SIZE__
+/* The first quarter's point k on the wider circle (RAST__STROKE_ARCS):
+ * h (4m^2 + 1) / (4m^2) ((m^2 - k^2), 2km) / (m^2 + k^2), rounded (out of
+ * line: the walk's inlined st_quarter_point() stays small). */
+static st_vec st_quarter_wide(const st_ctx *c, uint32_t k)
+{
+    int64_t m = c->m, kk = k, den = 8 * m * m * (m * m + kk * kk), big = c->w * (4 * m * m + 1); /* < 2^58, 2^56 */
+    st_vec p;
+    p.x = st_round_div128(rast__i128_mul(big, m * m - kk * kk), den);
+    p.y = st_round_div128(rast__i128_mul(big, 2 * kk * m), den);
+    return p;
+}
+#endif
 
 /* The first quarter's point k (0 .. m - 1), relative to the centre. */
 RAST__HOT st_vec st_quarter_point(const st_ctx *c, uint32_t k)
@@ -352,6 +415,9 @@ RAST__HOT st_vec st_quarter_point(const st_ctx *c, uint32_t k)
         p.y = c->cq[2 * k + 1];
     } else {
         int64_t m = c->m, kk = k, den = 2 * (m * m + kk * kk);
+#ifndef __OPTIMIZE_SIZE__
+        if (c->wide) return st_quarter_wide(c, k);
+#endif
         p.x = st_round_div(c->w * (m * m - kk * kk), den);
         p.y = st_round_div(c->w * (2 * kk * m), den);
     }
@@ -452,8 +518,9 @@ static uint32_t st_after(const st_ctx *c, st_vec s)
 static int st_arc_room(const st_ctx *c, st_vec v)
 {
     const st_out *o = &c->out;
-    int64_t r = (c->w + 1) / 2, n4 = 4 * (int64_t)c->m;
+    int64_t r, n4 = 4 * (int64_t)c->m;
     if (!c->cached || o->err != RAST_OK || o->np + (uint64_t)n4 > RAST_MAX_POINTS) return 0;
+    r = c->cq[0]; /* the radius rounded, the largest coordinate: round(h) or round(h (1 + 1/(4m^2))) */
     if (o->pts && o->np + (uint64_t)n4 > o->top) return 0;
     return v.x - r >= -RAST_COORD_MAX && v.x + r <= RAST_COORD_MAX && v.y - r >= -RAST_COORD_MAX &&
            v.y + r <= RAST_COORD_MAX;
@@ -629,76 +696,142 @@ static void st_pivot(st_ctx *c, st_vec v)
     st_emit(&c->out, v.x, v.y, ST_L);
 }
 
+/* A segment's end points at p (offset o): p - o on the right side, p + o
+ * on the left, but for the side `skip` (ST_R, ST_L, or -1: none). */
+#ifdef __OPTIMIZE_SIZE__
+RAST__APART void st_ends(st_ctx *c, st_vec p, st_vec o, int skip) /* one copy: smaller */
+#else
+RAST__HOT void st_ends(st_ctx *c, st_vec p, st_vec o, int skip)
+#endif
+{
+    if (skip != ST_R) st_emit(&c->out, p.x - o.x, p.y - o.y, ST_R);
+    if (skip != ST_L) st_emit(&c->out, p.x + o.x, p.y + o.y, ST_L);
+}
+
+/* The miter's tip relative to v, (p1 + p2) H / (H + p1.p2), H = w^2 / 4,
+ * rounded; 0 if H + p1.p2 <= 0 (the file's comment). */
+static int st_tip(const st_ctx *c, st_vec p1, st_vec p2, st_vec *tip)
+{
+    int64_t den = c->w * c->w + 4 * (p1.x * p2.x + p1.y * p2.y);
+    if (den <= 0) return 0;
+    tip->x = st_round_div128(rast__i128_mul(p1.x + p2.x, c->w * c->w), den);
+    tip->y = st_round_div128(rast__i128_mul(p1.y + p2.y, c->w * c->w), den);
+    return 1;
+}
+
+#ifndef __OPTIMIZE_SIZE__ /* RAST__STROKE_MEET: the binding's outline only (path.h) */
+/* Is a <= num / den <= b for den > 0? */
+static int st_within(int64_t num, int64_t den, int64_t a, int64_t b)
+{
+    return num >= a * den && num <= b * den;
+}
+
+/* The inner side's meeting point (RAST__STROKE_MEET, path.h; the file's
+ * comment "Inner joins"): with t = cross(d1, d2) != 0 and the inner
+ * offsets i1, i2 (o1, o2 for a turn counter-clockwise, -o1, -o2 else),
+ * the inner edges' lines v + i1 + tau d1 and v + i2 + kappa d2 meet at X
+ * = v + i1 + tau d1, tau = cross(i2 - i1, d2) / t, kappa = cross(i2 -
+ * i1, d1) / t.  Returns 1 and X - v rounded per coordinate if the
+ * quadrilateral v, v + i1, X, v + i2 lies in both segments'
+ * parallelograms P1 = {v + a d1 + m o1: -1 <= a <= 0, |m| <= 1} and P2 =
+ * {v + b d2 + n o2: 0 <= b <= 1, |n| <= 1} (each convex: its corners
+ * suffice, v is in both): X in P1 iff -1 <= tau <= 0, in P2 iff 0 <=
+ * kappa <= 1; v + i2 = v + a d1 + m o1 with a = cross(i2, o1) / D1, m =
+ * cross(d1, i2) / D1, D1 = cross(d1, o1) (> 0 needed: o1 to the left of
+ * d1); v + i1 likewise in P2.  Exact in 64 bits: offsets within 2^27,
+ * differences within 2^29, so each cross product is below 2^58 and each
+ * bound times a denominator below 2^60; d1 tau's numerator d1 cross(i2 -
+ * i1, d2) is below 2^87 (128 bits), the quotient within |d1|. */
+static int st_meet(st_vec d1, st_vec d2, st_vec o1, st_vec o2, int64_t t, st_vec *x)
+{
+    st_vec i1 = t > 0 ? o1 : st_neg(o1), i2 = t > 0 ? o2 : st_neg(o2), di;
+    int64_t T = t, A, K, D1 = st_cross(d1, o1), D2 = st_cross(d2, o2);
+    di.x = i2.x - i1.x;
+    di.y = i2.y - i1.y;
+    A = st_cross(di, d2);
+    K = st_cross(di, d1);
+    if (T < 0) {
+        T = -T;
+        A = -A;
+        K = -K;
+    }
+    if (D1 <= 0 || D2 <= 0 || !st_within(A, T, -1, 0) || !st_within(K, T, 0, 1)) return 0;
+    if (!st_within(st_cross(i2, o1), D1, -1, 0) || !st_within(st_cross(d1, i2), D1, -1, 1)) return 0;
+    if (!st_within(st_cross(i1, o2), D2, 0, 1) || !st_within(st_cross(d2, i1), D2, -1, 1)) return 0;
+    x->x = i1.x + st_round_div128(rast__i128_mul(d1.x, A), T);
+    x->y = i1.y + st_round_div128(rast__i128_mul(d1.y, A), T);
+    return 1;
+}
+#endif
+
 /* A join at v between d1 (arriving, offset o1) and d2 (leaving, o2): the
- * points strictly between v - o1 and v - o2 on the right side and between
- * v + o1 and v + o2 on the left (made forward).  The outer side takes the
- * piece J's points strictly between v + s and v + e (arc or miter tip),
- * the inner side the pivot v. */
-static void st_join(st_ctx *c, st_vec v, st_vec d1, st_vec d2, st_vec o1, st_vec o2)
+ * arriving segment's end points v -+ o1, then the points strictly between
+ * v - o1 and v - o2 on the right side and between v + o1 and v + o2 on
+ * the left (made forward), then, if `next`, the leaving segment's start
+ * points v -+ o2 (not at a closed subpath's start: its ring began with
+ * them).  The outer side takes the piece J's points strictly between v +
+ * s and v + e (arc or miter tip), the inner side the pivot v, or
+ * (RAST__STROKE_MEET, `next`) the inner edges' meeting point alone in
+ * place of v + i1, v, v + i2 where st_meet() allows. */
+static void st_join(st_ctx *c, st_vec v, st_vec d1, st_vec d2, st_vec o1, st_vec o2, int next)
 {
     int64_t t = st_cross(d1, d2), dot = d1.x * d2.x + d1.y * d2.y;
-    st_vec p1, p2, s, e;
-    int kind = c->style->join, outer;
+    st_vec p1, p2, s, e, in = v;
+    int kind = c->style->join, outer = ST_R, skip = -1, body;
+    /* body: 0 nothing (straight on: o1 = o2), 1 the pivot on both sides, 2
+     * a round turn back (o2 = -o1: half a disc), 3 the piece J */
     if (t == 0) {
-        if (dot > 0) return; /* straight on: o1 = o2 */
-        if (kind == RAST_JOIN_ROUND) { /* a turn back (o2 = -o1): half a disc */
-            st_arc(c, v, st_neg(o1), o1, ST_R);
-            st_emit(&c->out, v.x, v.y, ST_L);
-        } else {
-            st_pivot(c, v);
-        }
-        return;
-    }
-    if (t > 0) { /* turning counter-clockwise: the outer side is -o, the right */
-        p1 = st_neg(o1);
-        p2 = st_neg(o2);
-        s = p1;
-        e = p2;
-        outer = ST_R;
+        body = dot > 0 ? 0 : kind == RAST_JOIN_ROUND ? 2 : 1;
     } else {
-        p1 = o1;
-        p2 = o2;
-        s = p2;
-        e = p1;
-        outer = ST_L;
+        if (t > 0) { /* turning counter-clockwise: the outer side is -o, the right */
+            p1 = st_neg(o1);
+            p2 = st_neg(o2);
+            s = p1;
+            e = p2;
+        } else {
+            p1 = o1;
+            p2 = o2;
+            s = p2;
+            e = p1;
+            outer = ST_L;
+        }
+        /* Rounded offsets may cross: near a straight line there is then no
+         * gap to fill; near a turn back the sweep passes a half turn by a
+         * rounding's angle, which a round join still draws star-shaped (its
+         * arc points in both half planes), a bevel or miter not at all. */
+        body = st_cross(s, e) <= 0 && (dot >= 0 || kind != RAST_JOIN_ROUND) ? 1 : 3;
+#ifndef __OPTIMIZE_SIZE__
+        if (body == 3 && c->meet && next && st_meet(d1, d2, o1, o2, t, &in)) {
+            in.x += v.x;
+            in.y += v.y;
+            skip = outer == ST_R ? ST_L : ST_R;
+        }
+#endif
     }
-    /* Rounded offsets may cross: near a straight line there is then no
-     * gap to fill; near a turn back the sweep passes a half turn by a
-     * rounding's angle, which a round join still draws star-shaped (its
-     * arc points in both half planes), a bevel or miter not at all. */
-    if (st_cross(s, e) <= 0 && (dot >= 0 || kind != RAST_JOIN_ROUND)) {
+    st_ends(c, v, o1, skip);
+    if (body == 1) {
         st_pivot(c, v);
-        return;
-    }
-    st_emit(&c->out, v.x, v.y, outer == ST_R ? ST_L : ST_R);
-    if (kind == RAST_JOIN_ROUND) {
-        uint64_t nl0 = c->out.nl;
-        st_arc(c, v, s, e, outer);
-        if (outer == ST_L) st_left_reverse(&c->out, nl0);
-    } else if (kind == RAST_JOIN_MITER && st_miter_ok(c, d1, d2)) {
-        /* tip = v + (p1 + p2) H / (H + p1.p2), H = w^2 / 4 */
-        int64_t den = c->w * c->w + 4 * (p1.x * p2.x + p1.y * p2.y);
-        if (den > 0) {
-            int64_t tx = st_round_div128(rast__i128_mul(p1.x + p2.x, c->w * c->w), den);
-            int64_t ty = st_round_div128(rast__i128_mul(p1.y + p2.y, c->w * c->w), den);
-            st_emit(&c->out, v.x + tx, v.y + ty, outer);
+    } else if (body == 2) {
+        st_arc(c, v, st_neg(o1), o1, ST_R);
+        st_emit(&c->out, v.x, v.y, ST_L);
+    } else if (body == 3) {
+        st_emit(&c->out, in.x, in.y, outer == ST_R ? ST_L : ST_R);
+        if (kind == RAST_JOIN_ROUND) {
+            uint64_t nl0 = c->out.nl;
+            st_arc(c, v, s, e, outer);
+            if (outer == ST_L) st_left_reverse(&c->out, nl0);
+        } else if (kind == RAST_JOIN_MITER && st_miter_ok(c, d1, d2)) {
+            st_vec tip;
+            if (st_tip(c, p1, p2, &tip)) st_emit(&c->out, v.x + tip.x, v.y + tip.y, outer);
         }
     }
+    if (next) st_ends(c, v, o2, skip);
 }
 
 /* ---- the pen: one polyline, points streamed in -------------------------- */
 static void st_pen_begin(st_ctx *c)
 {
     c->n = 0;
-}
-
-/* The segment a -> b (offset o) on both sides, after the join at a. */
-static void st_segment(st_ctx *c, st_vec a, st_vec b, st_vec o)
-{
-    st_emit(&c->out, a.x - o.x, a.y - o.y, ST_R);
-    st_emit(&c->out, a.x + o.x, a.y + o.y, ST_L);
-    st_emit(&c->out, b.x - o.x, b.y - o.y, ST_R);
-    st_emit(&c->out, b.x + o.x, b.y + o.y, ST_L);
 }
 
 static void st_pen_point(st_ctx *c, st_vec q)
@@ -718,10 +851,10 @@ static void st_pen_point(st_ctx *c, st_vec q)
         st_left_begin(&c->out);
         c->dfirst = d;
         c->ofirst = o;
-    } else {
-        st_join(c, c->prev, c->dprev, d, c->oprev, o);
+        st_ends(c, c->prev, o, -1);
+    } else { /* the segment before ends, this one starts, at the join */
+        st_join(c, c->prev, c->dprev, d, c->oprev, o, 1);
     }
-    st_segment(c, c->prev, q, o);
     c->dprev = d;
     c->oprev = o;
     c->prev = q;
@@ -739,14 +872,14 @@ static void st_pen_end(st_ctx *c, int closed)
         d.y = c->p0.y - c->prev.y;
         if (d.x || d.y) {
             st_vec o = st_normal(d, c->w);
-            st_join(c, c->prev, c->dprev, d, c->oprev, o);
-            st_segment(c, c->prev, c->p0, o);
+            st_join(c, c->prev, c->dprev, d, c->oprev, o, 1);
             c->dprev = d;
             c->oprev = o;
         }
-        st_join(c, c->p0, c->dprev, c->dfirst, c->oprev, c->ofirst);
+        st_join(c, c->p0, c->dprev, c->dfirst, c->oprev, c->ofirst, 0);
         st_left_flush(&c->out, 1);
     } else { /* one ring: right side, end cap, left side back, start cap */
+        st_ends(c, c->prev, c->oprev, -1);
         st_cap(c, c->prev, c->dprev);
         st_left_flush(&c->out, 0);
         st_cap(c, c->p0, st_neg(c->dfirst));
@@ -1022,7 +1155,8 @@ static rast_status st_check_style(const rast_stroke_style *s)
     return RAST_OK;
 }
 
-static rast_status st_stroke_run(const rast_path *path, const rast_stroke_style *style, st_out *out)
+static rast_status st_stroke_run(const rast_path *path, const rast_stroke_style *style, unsigned flags,
+                                 st_out *out)
 {
     rast__flat f;
     st_ctx c;
@@ -1037,8 +1171,26 @@ static rast_status st_stroke_run(const rast_path *path, const rast_stroke_style 
     memset(&c, 0, sizeof c);
     c.style = style;
     c.w = style->width;
+#ifndef __OPTIMIZE_SIZE__
+    c.meet = (flags & RAST__STROKE_MEET) != 0;
+#else
+    (void)flags; /* a build for size: the exact outline only (path.h) */
+#endif
     need = ((uint64_t)c.w + 4 * (uint64_t)style->tolerance - 4) / (4 * (uint64_t)style->tolerance - 3);
     c.m = rast__isqrt_ceil(need);
+#ifndef __OPTIMIZE_SIZE__
+    if (flags & RAST__STROKE_ARCS) { /* the least m with w (2m^2 + 1) <= 4 m^4 (4T - 3) ("Round parts") */
+        int64_t t4 = 4 * (int64_t)style->tolerance - 3;
+        c.wide = 1;
+        c.m = rast__isqrt_ceil((need + 1) / 2); /* m^2 >= w / (2 (4T - 3)): m^2 >= need / 2 */
+        if (c.m < 1) c.m = 1;
+        for (;;) {
+            int64_t m2 = (int64_t)c.m * c.m; /* m^2 <= need / 2 + 2m: 4 m^4 < 2^55 */
+            if (rast__i128_cmp(rast__i128_mul(c.w, 2 * m2 + 1), rast__i128_mul(4 * m2 * m2, t4)) <= 0) break;
+            c.m++;
+        }
+    }
+#endif
     if (c.m > (uint32_t)(c.w / 4)) c.m = (uint32_t)(c.w / 4);
     if (c.m < 1) c.m = 1;
     if (c.m <= ST_CQ) { /* the first quarter's points, made once */
@@ -1062,18 +1214,32 @@ static rast_status st_stroke_run(const rast_path *path, const rast_stroke_style 
     return RAST_OK;
 }
 
-rast_status rast_path_stroke_size(const rast_path *path, const rast_stroke_style *style,
-                                  uint32_t *npoints, uint32_t *nrings)
+/* The outline, counted (points NULL) or stored into the room given (path.h). */
+rast_status rast__path_stroke_run(const rast_path *path, const rast_stroke_style *style, unsigned flags,
+                                  rast_point *points, uint32_t max_points, uint32_t *ring_sizes,
+                                  uint32_t max_rings, uint32_t *npoints, uint32_t *nrings)
 {
     st_out o;
     rast_status st;
-    if (!npoints || !nrings) return RAST_E_NULL;
+    if (!npoints || !nrings || (points && !ring_sizes)) return RAST_E_NULL;
     memset(&o, 0, sizeof o);
-    st = st_stroke_run(path, style, &o);
+    if (points) {
+        o.pts = points;
+        o.top = max_points;
+        o.sizes = ring_sizes;
+        o.maxr = max_rings;
+    }
+    st = st_stroke_run(path, style, flags, &o);
     if (st != RAST_OK) return st;
     *npoints = (uint32_t)o.np;
     *nrings = (uint32_t)o.nr;
     return RAST_OK;
+}
+
+rast_status rast_path_stroke_size(const rast_path *path, const rast_stroke_style *style,
+                                  uint32_t *npoints, uint32_t *nrings)
+{
+    return rast__path_stroke_run(path, style, 0, NULL, 0, NULL, 0, npoints, nrings);
 }
 
 /* One storing pass into the room given (path.h): no count first. */
@@ -1081,19 +1247,8 @@ rast_status rast__path_stroke_into(const rast_path *path, const rast_stroke_styl
                                    uint32_t max_points, uint32_t *ring_sizes, uint32_t max_rings,
                                    uint32_t *npoints, uint32_t *nrings)
 {
-    st_out o;
-    rast_status st;
-    if (!points || !ring_sizes || !npoints || !nrings) return RAST_E_NULL;
-    memset(&o, 0, sizeof o);
-    o.pts = points;
-    o.top = max_points;
-    o.sizes = ring_sizes;
-    o.maxr = max_rings;
-    st = st_stroke_run(path, style, &o);
-    if (st != RAST_OK) return st;
-    *npoints = (uint32_t)o.np;
-    *nrings = (uint32_t)o.nr;
-    return RAST_OK;
+    if (!points || !ring_sizes) return RAST_E_NULL;
+    return rast__path_stroke_run(path, style, 0, points, max_points, ring_sizes, max_rings, npoints, nrings);
 }
 
 rast_status rast_path_stroke(const rast_path *path, const rast_stroke_style *style,

@@ -117,3 +117,24 @@ def test_compact_round_parts_fewer_points():
 def test_compact_bad_argument():
     with pytest.raises(rastrum.InputError, match="outline"):
         rastrum.stroke([(1, 1), (5, 5)], 1, outline="meet")
+
+
+@pytest.mark.parametrize("aa", [None, "area", "ss4"])
+def test_canvas_stroke_passes_outline(aa):
+    """Canvas.stroke(outline=) paints the fill of rastrum.stroke(outline=):
+    the compact outline's pixels, which differ from the exact outline's
+    somewhere on this zigzag of round joins (so a dropped keyword fails)."""
+    pts = [(3.2, 4.1), (20.7, 18.3), (9.4, 27.9), (33.1, 30.2), (26.6, 6.5)]
+    out = {}
+    for kind in ("exact", "compact"):
+        c = rastrum.Canvas((40, 40), format="gray8")
+        c.stroke(pts, 255, width=5, join="round", cap="round", aa=aa, outline=kind)
+        ref = rastrum.Canvas((40, 40), format="gray8")
+        ref.fill_polygon(rastrum.stroke(pts, 5, join="round", cap="round", outline=kind), 255,
+                         rule="nonzero", aa=aa)
+        assert np.array_equal(c.array, ref.array)
+        out[kind] = c.array.copy()
+    if aa == "area":
+        assert not np.array_equal(out["exact"], out["compact"])
+    with pytest.raises(rastrum.InputError, match="outline"):
+        rastrum.Canvas((4, 4), format="gray8").stroke(pts, 255, width=1, outline="tight")

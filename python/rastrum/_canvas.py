@@ -1181,11 +1181,13 @@ class Canvas:
     def stroke(self, geometry: Any, color: Color, width: float = 1.0, *, join: str = "miter",
                cap: str = "butt", miter_limit: float = 4.0, dash: Optional[Sequence[float]] = None,
                dash_offset: float = 0.0, tolerance: Optional[float] = None,
-               aa: Optional[CoverageMethod] = None, subpixel_bits: int = 8, sample_offset: float = 0.5) -> None:
+               aa: Optional[CoverageMethod] = None, subpixel_bits: int = 8, sample_offset: float = 0.5,
+               outline: str = "exact") -> None:
         """Paint `color` on the stroke of `geometry`, `width` pixels wide.
 
         The outline is :func:`rastrum.stroke` (`join`, `cap`,
-        `miter_limit`, `dash`, `dash_offset`, `tolerance` as there), filled
+        `miter_limit`, `dash`, `dash_offset`, `tolerance`, `outline` as
+        there), filled
         non-zero by :meth:`fill_polygon`: ``aa=None`` (the default) the
         pixels whose sample is inside, ``aa="area"`` its exact coverage
         (crossings and overlaps counted once), "ss2".."ss16" sub-samples.
@@ -1205,7 +1207,8 @@ class Canvas:
         """
         from ._strokes import stroke as _stroke
 
-        kw: Dict[str, Any] = {"join": join, "cap": cap, "miter_limit": miter_limit, "tolerance": tolerance}
+        kw: Dict[str, Any] = {"join": join, "cap": cap, "miter_limit": miter_limit, "tolerance": tolerance,
+                              "outline": outline}
         if dash is not None or dash_offset != 0.0:  # dashes as rastrum.stroke has them (docs/paths.md)
             kw.update(dash=dash, dash_offset=dash_offset)
         outline = _stroke(_stroke_geometry(geometry), width, **kw)

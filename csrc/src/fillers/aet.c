@@ -553,6 +553,100 @@ static int rast__aet_cancel(const rast_polygon *poly, uint32_t npoints, const ra
     return 1;
 }
 
+/* ---- one outline's rows straight to one-byte pixels ------------------------
+ * When the sink's painter is rows of one-byte pixels (rast__sink_byte_rows,
+ * painters/paint.c: a gray8 fill, or polygon_mask's opaque one) and the
+ * sweep fills (a circle, a glyph, a star: few edges for the rows), the
+ * sweep's row hook (rast__aet_order_fn with no span function, aet.h)
+ * writes each row itself: the runs of the row's crossings, exactly the
+ * sweep's (aet.h), cut to the clip's columns, each pixel once (opaque: the
+ * background between the runs, not the whole row first and the runs over
+ * it), with no runs gathered in the sink and handed to the painter
+ * through its entry.  Rows [row0, row1) are claimed whole (opaque); the
+ * rows of no crossing among them (between two glyphs) are written as the
+ * next row with some, or at the end. */
+typedef struct rast__aet_bytes {
+    rast__byte_rows out;
+    rast_fill_rule rule;
+    int32_t next; /* opaque: the first claimed row not yet written */
+} rast__aet_bytes;
+
+/* Opaque: the claimed rows [a->next, to) that had no crossing. */
+static void rast__aet_bytes_blank(rast__aet_bytes *a, int32_t to)
+{
+    const rast__byte_rows *b = &a->out;
+    for (; a->next < to; a->next++)
+        memset(b->base + (ptrdiff_t)a->next * b->stride + b->x0, b->background, (size_t)(b->x1 - b->x0));
+}
+
+/* Run [l, r) of a row (px its first byte, opaque: the background from
+ * *pos up to it), cut to the columns [x0, x1); *pos moves past it. */
+static inline void rast__aet_bytes_run(const rast__byte_rows *b, unsigned char *px, int32_t *pos,
+                                       int32_t l, int32_t r, uint64_t vw, uint64_t bw)
+{
+    if (l < b->x0) l = b->x0;
+    if (r > b->x1) r = b->x1;
+    if (l >= r) return;
+    if (b->opaque) rast__run8(px + *pos, (size_t)(l - *pos), b->background, bw);
+    rast__run8(px + l, (size_t)(r - l), b->value, vw);
+    *pos = r;
+}
+
+/* The hook: row `row`'s runs into its pixels (opaque: the whole row), the
+ * n active edges stepped to the next row and sorted again, as the sweep's
+ * own pass does them (aet.h); each crossing read before its edge steps. */
+RAST__HOT void rast__aet_bytes_row(void *user, int32_t row, rast__edge *aet, int32_t n)
+{
+    rast__aet_bytes *a = (rast__aet_bytes *)user;
+    const rast__byte_rows *b = &a->out;
+    unsigned char *px = b->base + (ptrdiff_t)row * b->stride;
+    const uint64_t vw = RAST__LANES_LO * b->value, bw = RAST__LANES_LO * b->background;
+    int32_t k, pos = b->x0;
+    if (b->opaque) {
+        if (a->next < row) rast__aet_bytes_blank(a, row);
+        a->next = row + 1;
+    }
+    if (a->rule == RAST_RULE_EVENODD) {
+        /* crossings 2k and 2k + 1 */
+        for (k = 0; k + 1 < n; k += 2) {
+            const int32_t l = aet[k].x, r = aet[k + 1].x;
+            rast__edge_step(&aet[k]);
+            rast__edge_step(&aet[k + 1]);
+            rast__aet_bytes_run(b, px, &pos, l, r, vw, bw);
+        }
+        if (k < n) rast__edge_step(&aet[k]);
+    } else {
+        /* where the winding number leaves 0 and where it comes back */
+        int32_t w = 0, l = 0;
+        for (k = 0; k < n; k++) {
+            const int32_t x = aet[k].x;
+            if (w == 0) l = x;
+            w += aet[k].dir;
+            rast__edge_step(&aet[k]);
+            if (w == 0) rast__aet_bytes_run(b, px, &pos, l, x, vw, bw);
+        }
+    }
+    if (b->opaque) rast__run8(px + pos, (size_t)(b->x1 - pos), b->background, bw);
+    rast__aet_sort(aet, n);
+}
+
+/* The sweep of table t through the hook above, when the sink's painter
+ * is rows of one-byte pixels: 1; else 0, nothing done.  (Apart from
+ * rast__aet_fill_by: inlined there, it cost the winding deltas' setup
+ * loop a register, an instruction a vertex.) */
+RAST__APART int rast__aet_sweep_bytes(rast__aet_tab *t, rast_fill_rule rule, rast__sink *sink)
+{
+    rast__aet_bytes a;
+    if (!rast__sink_byte_rows(sink, &a.out)) return 0;
+    a.rule = rule;
+    a.next = t->row0;
+    if (a.out.opaque) rast__byte_rows_claim(&a.out, t->row0, t->row1);
+    rast__aet_sweep(t->edges, t->aet, t->bucket, t->nedges, t->row0, t->row1, rule, NULL,
+                    rast__aet_bytes_row, &a);
+    if (a.out.opaque) rast__aet_bytes_blank(&a, t->row1);
+    return 1;
+}
+
 rast_status rast__aet_fill_by(const rast_polygon *poly, uint32_t npoints, const rast__grid *g,
                               rast_fill_rule rule, const rast_rect *clip, rast__sink *sink,
                               rast__arena *arena, int how)
@@ -571,7 +665,10 @@ rast_status rast__aet_fill_by(const rast_polygon *poly, uint32_t npoints, const 
     }
     if (st == RAST_OK && t.row0 < t.row1 &&
         (how == RAST__AET_BY_SWEEP ||
-         !rast__aet_delta(room, g, rule, clip, &t, sink, how == RAST__AET_BY_DELTA)))
+         !rast__aet_delta(room, g, rule, clip, &t, sink, how == RAST__AET_BY_DELTA)) &&
+        /* (RAST__AET_BY_SWEEP: the sweep's runs through the sink, the
+         * reference the tests hold the others to) */
+        (how == RAST__AET_BY_SWEEP || !rast__aet_sweep_bytes(&t, rule, sink)))
         rast__aet_sweep(t.edges, t.aet, t.bucket, t.nedges, t.row0, t.row1, rule, rast__aet_span,
                         NULL, sink);
     rast__sink_flush(sink);

@@ -58,31 +58,6 @@ static void rast__opaque_row(void *user, int32_t y, const int32_t *xs, int32_t n
 /* The same for one byte a pixel and a value (gray8): memsets, without the
  * format's entries in between (on a circle's rows those calls were a
  * tenth of the fill).  Not in a build for size: rast__opaque_row does it. */
-/* Bytes p[0 .. len) set to v, w its byte in all eight: a run of up to 32
- * by word stores that stay inside it (overlapping), a longer one by
- * memset.  A spiky outline's rows are many short runs, a memset call each
- * (~27 instructions a run on the 200-spike star). */
-static void rast__run8(unsigned char *p, size_t len, unsigned char v, uint64_t w)
-{
-    if (len > 32) {
-        memset(p, v, len);
-    } else if (len >= 8) {
-        memcpy(p, &w, 8);
-        memcpy(p + len - 8, &w, 8);
-        if (len > 16) {
-            memcpy(p + 8, &w, 8);
-            memcpy(p + len - 16, &w, 8);
-        }
-    } else if (len >= 4) {
-        memcpy(p, &w, 4);
-        memcpy(p + len - 4, &w, 4);
-    } else if (len > 0) {
-        p[0] = v;
-        p[len / 2] = v;
-        p[len - 1] = v;
-    }
-}
-
 static void rast__opaque_row8(void *user, int32_t y, const int32_t *xs, int32_t n)
 {
     rast__solid *s = (rast__solid *)user;

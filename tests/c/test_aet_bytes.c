@@ -104,8 +104,8 @@ static void star(rast_point *pts, uint32_t m, int s)
         static const int8_t dx[16] = {8, 7, 6, 3, 0, -3, -6, -7, -8, -7, -6, -3, 0, 3, 6, 7};
         static const int8_t dy[16] = {0, 3, 6, 7, 8, 7, 6, 3, 0, -3, -6, -7, -8, -7, -6, -3};
         const int32_t r = (int32_t)(1 + rng() % 40), d = (int32_t)((v * 16) / m);
-        pts[v].x = cx + ((dx[d] * r) << s) / 8 + (int32_t)(rng() % (1u << s));
-        pts[v].y = cy + ((dy[d] * r) << s) / 8 + (int32_t)(rng() % (1u << s));
+        pts[v].x = cx + dx[d] * r * ((int32_t)1 << s) / 8 + (int32_t)(rng() % (1u << s));
+        pts[v].y = cy + dy[d] * r * ((int32_t)1 << s) / 8 + (int32_t)(rng() % (1u << s));
     }
 }
 

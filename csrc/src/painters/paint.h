@@ -119,10 +119,37 @@ typedef struct rast__byte_rows {
     rast__solid *solid; /* opaque: the painter */
 } rast__byte_rows;
 int rast__sink_byte_rows(const rast__sink *sink, rast__byte_rows *b);
+
 /* Opaque: the rows before y0 that nothing wrote get the background; rows
  * [y0, y1) (y0 < y1, after any row written) are the caller's, to write
  * whole, the painter going on after them. */
 void rast__byte_rows_claim(const rast__byte_rows *b, int32_t y0, int32_t y1);
+
+/* Bytes p[0 .. len) set to v, w its byte in all eight: a run of up to 32
+ * by word stores that stay inside it (overlapping), a longer one by
+ * memset.  A spiky outline's rows are many short runs, a memset call each
+ * (~27 instructions a run on the 200-spike star).  The opaque gray8
+ * painter's runs (paint.c) and the AET's own rows (fillers/aet.c). */
+static inline void rast__run8(unsigned char *p, size_t len, unsigned char v, uint64_t w)
+{
+    if (len > 32) {
+        memset(p, v, len);
+    } else if (len >= 8) {
+        memcpy(p, &w, 8);
+        memcpy(p + len - 8, &w, 8);
+        if (len > 16) {
+            memcpy(p + 8, &w, 8);
+            memcpy(p + len - 16, &w, 8);
+        }
+    } else if (len >= 4) {
+        memcpy(p, &w, 4);
+        memcpy(p + len - 4, &w, 4);
+    } else if (len > 0) {
+        p[0] = v;
+        p[len / 2] = v;
+        p[len - 1] = v;
+    }
+}
 #endif
 
 /* Called before triangle k (vertices t, grid g) is filled, with the

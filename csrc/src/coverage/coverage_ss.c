@@ -307,18 +307,26 @@ RAST__HOT void rast__ss_cross(const rast__edge *e, int32_t *w, int32_t *x0, int3
     if (*w == 0) rast__ss_pair(d, mark, kb, *x0, x);
 }
 
-/* The key of edge `at` of the table (column x): ordered as the columns. */
+/* The key of the edge at byte `at` of the table (column x): ordered as
+ * the columns.  (A byte offset, not an index: the record's address is
+ * then one addition, rast__ss_edge_at.) */
 static inline uint64_t rast__ss_key(int32_t x, uint32_t at)
 {
     return ((uint64_t)((uint32_t)x ^ 0x80000000u) << 32) | at;
 }
 
-/* Edge `at` of edges[] stepped, its key kept at act[*m] unless it ends
- * (y1 its end), its column checked against *last (the last kept). */
+static inline rast__edge *rast__ss_edge_at(rast__edge *edges, uint32_t at)
+{
+    return (rast__edge *)(void *)((unsigned char *)edges + at);
+}
+
+/* The edge at byte `at` of edges[] stepped, its key kept at act[*m]
+ * unless it ends (y1 its end), its column checked against *last (the
+ * last kept). */
 RAST__HOT int rast__ss_keep(rast__edge *edges, uint32_t at, uint64_t *act, int32_t *m, int32_t y1,
                             int32_t *last)
 {
-    rast__edge *e = &edges[at];
+    rast__edge *e = rast__ss_edge_at(edges, at);
     int sw;
     rast__edge_step(e);
     if (e->end == y1) return 0;
@@ -342,7 +350,7 @@ RAST__HOT int32_t rast__ss_pass(uint64_t *act, int32_t n, rast__edge *edges, int
     int32_t i, m = 0, w = 0, x0 = 0, last = INT32_MIN, sw = 0;
     for (i = 0; i + 1 < n; i += 2) {
         const uint32_t a = (uint32_t)act[i], b = (uint32_t)act[i + 1];
-        const rast__edge *l = &edges[a], *r = &edges[b];
+        const rast__edge *l = rast__ss_edge_at(edges, a), *r = rast__ss_edge_at(edges, b);
         if (!evenodd && l->dir + r->dir != 0) break;
         rast__ss_pair(d, mark, kb, rast__ss_at(l->x, fx0, fx1, clamp),
                       rast__ss_at(r->x, fx0, fx1, clamp));
@@ -351,7 +359,7 @@ RAST__HOT int32_t rast__ss_pass(uint64_t *act, int32_t n, rast__edge *edges, int
     }
     for (; i < n; i++) { /* (even-odd: an odd edge out, no run) */
         const uint32_t at = (uint32_t)act[i];
-        if (!evenodd) rast__ss_cross(&edges[at], &w, &x0, d, mark, kb, fx0, fx1, clamp);
+        if (!evenodd) rast__ss_cross(rast__ss_edge_at(edges, at), &w, &x0, d, mark, kb, fx0, fx1, clamp);
         sw |= rast__ss_keep(edges, at, act, &m, y1, &last);
     }
     *swapped = sw;
@@ -367,7 +375,8 @@ static uint64_t *rast__ss_keys(const rast__edge *edges, int32_t at, int32_t k, u
 {
     int32_t i, wd;
     for (i = 0; i < k; i++) {
-        const uint64_t v = rast__ss_key(edges[at + i].x, (uint32_t)(at + i));
+        const uint64_t v =
+            rast__ss_key(edges[at + i].x, (uint32_t)((size_t)(at + i) * sizeof(rast__edge)));
         int32_t to = i;
         for (; to > (i & ~15) && key[to - 1] > v; to--) key[to] = key[to - 1];
         key[to] = v;
@@ -414,7 +423,8 @@ static void rast__ss_sweep(rast__ss *ss, rast__edge *edges, rast__edge *aet, int
 {
     uint64_t *act = (uint64_t *)(void *)aet, *add = act + nedges;
     int32_t j, first = 0, n = 0;
-    if (nedges < 2 * ((int64_t)row1 - row0)) {
+    if (nedges < 2 * ((int64_t)row1 - row0) ||
+        (uint64_t)nedges * sizeof(rast__edge) > UINT32_MAX) {
         rast__ss_sweep_records(ss, edges, aet, bucket, nedges, row0, row1);
         return;
     }

@@ -911,7 +911,7 @@ static inline void rast__ss_bits_run(uint64_t *bits, int32_t a, int32_t b, int32
 {
 #if defined(__BYTE_ORDER__) && defined(__ORDER_LITTLE_ENDIAN__) && \
     __BYTE_ORDER__ == __ORDER_LITTLE_ENDIAN__
-    if (b - a <= 57 && a < lim) {
+    if ((lim == INT32_MAX || b - a <= 57) && a < lim) {
         unsigned char *p = (unsigned char *)bits + (a >> 3);
         uint64_t x;
         memcpy(&x, p, 8);
@@ -928,7 +928,10 @@ static inline void rast__ss_bits_run(uint64_t *bits, int32_t a, int32_t b, int32
 /* n fine rows of a triangle, its run on each [L's column, R's column)
  * (with `clamp`, between the two, clipped to [fx0, fx1]) set in its row
  * of bits (the first at `row`, wpr words apart), both edges stepped;
- * `narrow`: the runs are mostly short (rast__ss_bits_run). */
+ * `narrow`: the runs are mostly short (rast__ss_bits_run); 2: all are,
+ * at most 57 columns and starting before the row's last 56 (the
+ * triangle's columns told so: rast__ss_bits_run's one OR, its tests
+ * taken out). */
 RAST__HOT void rast__ss_walk(rast__edge *L, rast__edge *R, int32_t n, uint64_t *row, size_t wpr,
                              int32_t fx0, int32_t fx1, int clamp, int narrow)
 {
@@ -946,7 +949,9 @@ RAST__HOT void rast__ss_walk(rast__edge *L, rast__edge *R, int32_t n, uint64_t *
             b = b > w ? w : b;
         }
         if (a < b) {
-            if (narrow)
+            if (narrow == 2)
+                rast__ss_bits_run(row, a, b, INT32_MAX);
+            else if (narrow)
                 rast__ss_bits_run(row, a, b, lim);
             else
                 rast__ss_bits(row, a, b);
@@ -1394,6 +1399,13 @@ rast_status rast__cov_ss_tris(const rast_point *tris, uint32_t ntris, int32_t s,
                             rast__ss_walk(&e, &l, stop - y, row, wpr, fx0, fx1, 0, 0);
                         else
                             rast__ss_walk(&l, &e, stop - y, row, wpr, fx0, fx1, 0, 0);
+                    /* runs within [c0, c1]: at most 57 columns, starting
+                     * before the row's last 56 (tested once) */
+                    else if (r->c1 - r->c0 <= 57 && r->c1 - fx0 < (int32_t)wpr * 64 - 56)
+                        if (r->flip)
+                            rast__ss_walk(&e, &l, stop - y, row, wpr, fx0, fx1, 0, 2);
+                        else
+                            rast__ss_walk(&l, &e, stop - y, row, wpr, fx0, fx1, 0, 2);
                     else if (r->flip)
                         rast__ss_walk(&e, &l, stop - y, row, wpr, fx0, fx1, 0, 1);
                     else

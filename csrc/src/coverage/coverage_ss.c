@@ -6,8 +6,9 @@
  * its sample sits at ((I + o) / k, (J + o) / k): exactly sub-sample
  * (I mod k, J mod k) of section 1a.  The polygon arrives on that grid
  * already (coverage.c scales its vertices by k exactly); the exact AET
- * walk (aet.h) hands each row's edges, in order, to rast__ss_row_ends, and
- * a row of counters (one output row) adds them up.
+ * walk (aet.h) hands each row's edges, in order, to rast__ss_row_ends, or
+ * (many short edges) the walk of keys here (rast__ss_sweep) takes their
+ * runs itself, and a row of counters (one output row) adds them up.
  *
  * The counters are kept as differences (count[i] = d[0] + ... + d[i]), so
  * a run costs at most four additions whatever its length, and a bit per

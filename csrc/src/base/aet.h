@@ -161,18 +161,14 @@ static inline int32_t rast__aet_join(rast__edge *aet, int32_t n, rast__edge *add
  * that order (rast__aet_order_fn); the run functions' users keep
  * rast__aet_join. */
 #define RAST__AET_KEYS 64
-static inline int32_t rast__aet_join_keys(rast__edge *aet, int32_t n, const rast__edge *add,
-                                          int32_t k)
+/* The merge: the k edges add[(uint32_t)key[i]] (key[] in order of their
+ * columns) into the n sorted ones of aet[] (room for n + k), from the
+ * back, each after active ones of equal column.  Returns n + k. */
+static inline int32_t rast__aet_merge_keys(rast__edge *aet, int32_t n, const rast__edge *add,
+                                           const uint64_t *key, int32_t k)
 {
-    uint64_t key[RAST__AET_KEYS];
     const int32_t total = n + k;
-    int32_t i, m = total;
-    for (i = 0; i < k; i++) {
-        const uint64_t v = ((uint64_t)((uint32_t)add[i].x ^ 0x80000000u) << 32) | (uint32_t)i;
-        int32_t at = i;
-        for (; at > 0 && key[at - 1] > v; at--) key[at] = key[at - 1];
-        key[at] = v;
-    }
+    int32_t m = total;
     for (n--, k--; k >= 0;) {
         const rast__edge *e = &add[(uint32_t)key[k]];
         if (n >= 0 && aet[n].x > e->x)
@@ -184,7 +180,40 @@ static inline int32_t rast__aet_join_keys(rast__edge *aet, int32_t n, const rast
     }
     return total;
 }
+
+static inline int32_t rast__aet_join_keys(rast__edge *aet, int32_t n, const rast__edge *add,
+                                          int32_t k)
+{
+    uint64_t key[RAST__AET_KEYS];
+    int32_t i;
+    for (i = 0; i < k; i++) {
+        const uint64_t v = ((uint64_t)((uint32_t)add[i].x ^ 0x80000000u) << 32) | (uint32_t)i;
+        int32_t at = i;
+        for (; at > 0 && key[at - 1] > v; at--) key[at] = key[at - 1];
+        key[at] = v;
+    }
+    return rast__aet_merge_keys(aet, n, add, key, k);
+}
 #endif
+
+/* The edge table grouped by first row: the nedges records aet[k] (each
+ * with `row` its first row in [row0, row1), bucket[r - row0 + 1] holding
+ * how many start on row r, bucket[0] = 0) placed into edges[] by row;
+ * bucket[r - row0] is then where row r's run ends. */
+static inline void rast__aet_group(rast__edge *edges, const rast__edge *aet, int32_t *bucket,
+                                   int32_t nedges, int32_t row0, int32_t row1)
+{
+    int32_t j, k, run = 0;
+    /* (the running sum in a register: through memory, each row waited
+     * for the store of the one before) */
+    for (j = 0; j <= row1 - row0; j++) {
+        run += bucket[j];
+        bucket[j] = run;
+    }
+    /* Placing an edge moves its row's start on: bucket[r] ends up where
+     * row r's run ends. */
+    for (k = 0; k < nedges; k++) edges[bucket[aet[k].row - row0]++] = aet[k];
+}
 
 /* The walk once the edge table is set up: nedges edge records in aet[]
  * (each with `row` its first row in [row0, row1)), bucket[r - row0 + 1]
@@ -197,21 +226,12 @@ static inline void rast__aet_sweep(rast__edge *edges, rast__edge *aet, int32_t *
                                    rast_fill_rule rule, rast__aet_span_fn span,
                                    rast__aet_order_fn order, void *user)
 {
-    int32_t j, first, nactive = 0, k, run = 0;
+    int32_t j, first, nactive = 0, k;
     /* the first row after the current one that an active edge does not
      * cross: only then is the AET compacted (an edge ends on few rows, and
      * checking every edge on every row for it cost an eighth of a walk) */
     int32_t soonest = row1;
-    /* (the running sum in a register: through memory, each row waited
-     * for the store of the one before) */
-    for (j = 0; j <= row1 - row0; j++) {
-        run += bucket[j];
-        bucket[j] = run;
-    }
-    /* Placing an edge moves its row's start on: bucket[r] ends up where
-     * row r's run ends. */
-    for (k = 0; k < nedges; k++) edges[bucket[aet[k].row - row0]++] = aet[k];
-
+    rast__aet_group(edges, aet, bucket, nedges, row0, row1);
     for (j = row0, first = 0; j < row1; j++) {
         int32_t m, n, last = bucket[j - row0];
 

@@ -6,8 +6,9 @@
  * its sample sits at ((I + o) / k, (J + o) / k): exactly sub-sample
  * (I mod k, J mod k) of section 1a.  The polygon arrives on that grid
  * already (coverage.c scales its vertices by k exactly); the exact AET
- * walk (aet.h) hands each row's edges, in order, to rast__ss_row_ends, and
- * a row of counters (one output row) adds them up.
+ * walk (aet.h) hands each row's edges, in order, to rast__ss_row_ends, or
+ * (many short edges) the walk of keys here (rast__ss_sweep) takes their
+ * runs itself, and a row of counters (one output row) adds them up.
  *
  * The counters are kept as differences (count[i] = d[0] + ... + d[i]), so
  * a run costs at most four additions whatever its length, and a bit per
@@ -268,6 +269,193 @@ static void rast__ss_row_ends(void *user, int32_t y, rast__edge *aet, int32_t n)
     if (swapped) rast__aet_sort(aet, n);
 }
 
+/* The walk of the edge table aet[0 .. nedges) (rast__aet_prepare's, or
+ * rast__ss_cancel's; bucket[] its rows' counts, edges[] the room for
+ * the table grouped by row): aet.h's rast__aet_sweep, the order hook
+ * rast__ss_row_ends. */
+static void rast__ss_sweep_records(rast__ss *ss, rast__edge *edges, rast__edge *aet,
+                                   int32_t *bucket, int32_t nedges, int32_t row0, int32_t row1)
+{
+    rast__aet_sweep(edges, aet, bucket, nedges, row0, row1,
+                    ss->evenodd ? RAST_RULE_EVENODD : RAST_RULE_NONZERO, NULL, rast__ss_row_ends,
+                    ss);
+}
+
+#if defined(__OPTIMIZE_SIZE__)
+#define rast__ss_sweep rast__ss_sweep_records
+#else
+/* The walk with an AET of keys: each active edge a 64-bit key, its
+ * column over its index in the edge table, where its record stays from
+ * the row it joins to its end (rather than aet.h's sweep, whose AET of
+ * 48-byte records was merged and compacted on nearly every fine row of a
+ * paragraph of text, the records moved each time: a quarter of the
+ * fill).  A row: its new edges' keys sorted and merged in, then one pass
+ * over the keys that takes each edge's crossing into the runs, steps the
+ * edge, and writes its key back unless it ends.  The records the keys
+ * point at are those of the last few rows' new edges, neighbours in the
+ * edge table (grouped by first row): few, and read independently. */
+
+/* Edge *e's crossing of a non-zero row (the row's edges in order of
+ * column) into its runs: w the winding number, a run from where it
+ * leaves 0 to where it comes back (x0 the run's start, clamped and
+ * relative to fx0). */
+RAST__HOT void rast__ss_cross(const rast__edge *e, int32_t *w, int32_t *x0, int32_t *d,
+                              uint64_t *mark, int32_t kb, int32_t fx0, int32_t fx1, int clamp)
+{
+    const int32_t x = rast__ss_at(e->x, fx0, fx1, clamp);
+    if (*w == 0) *x0 = x;
+    *w += e->dir;
+    if (*w == 0) rast__ss_pair(d, mark, kb, *x0, x);
+}
+
+/* The key of the edge at byte `at` of the table (column x): ordered as
+ * the columns.  (A byte offset, not an index: the record's address is
+ * then one addition, rast__ss_edge_at.) */
+static inline uint64_t rast__ss_key(int32_t x, uint32_t at)
+{
+    return ((uint64_t)((uint32_t)x ^ 0x80000000u) << 32) | at;
+}
+
+static inline rast__edge *rast__ss_edge_at(rast__edge *edges, uint32_t at)
+{
+    return (rast__edge *)(void *)((unsigned char *)edges + at);
+}
+
+/* The edge at byte `at` of edges[] stepped, its key kept at act[*m]
+ * unless it ends (y1 its end), its column checked against *last (the
+ * last kept). */
+RAST__HOT int rast__ss_keep(rast__edge *edges, uint32_t at, uint64_t *act, int32_t *m, int32_t y1,
+                            int32_t *last)
+{
+    rast__edge *e = rast__ss_edge_at(edges, at);
+    int sw;
+    rast__edge_step(e);
+    if (e->end == y1) return 0;
+    sw = e->x < *last;
+    *last = e->x;
+    act[(*m)++] = rast__ss_key(e->x, at);
+    return sw;
+}
+
+/* Fine row y's pass over the n keys act[] of the AET (edges[]: the edge
+ * table): the runs, every edge stepped, its key written back unless it
+ * ends on the row (y1 = y + 1).  Returns how many are left; *swapped 1
+ * when two changed places.  Pairs of edges of opposite directions, while
+ * they come, each bound a run (the winding number is back to 0 after
+ * each: most rows of most polygons are only such pairs; all pairs,
+ * even-odd); from the first pair that is not, edge by edge. */
+RAST__HOT int32_t rast__ss_pass(uint64_t *act, int32_t n, rast__edge *edges, int32_t y1,
+                                int32_t *d, uint64_t *mark, int32_t kb, int32_t fx0, int32_t fx1,
+                                int clamp, int evenodd, int *swapped)
+{
+    int32_t i, m = 0, w = 0, x0 = 0, last = INT32_MIN, sw = 0;
+    for (i = 0; i + 1 < n; i += 2) {
+        const uint32_t a = (uint32_t)act[i], b = (uint32_t)act[i + 1];
+        const rast__edge *l = rast__ss_edge_at(edges, a), *r = rast__ss_edge_at(edges, b);
+        if (!evenodd && l->dir + r->dir != 0) break;
+        rast__ss_pair(d, mark, kb, rast__ss_at(l->x, fx0, fx1, clamp),
+                      rast__ss_at(r->x, fx0, fx1, clamp));
+        sw |= rast__ss_keep(edges, a, act, &m, y1, &last);
+        sw |= rast__ss_keep(edges, b, act, &m, y1, &last);
+    }
+    for (; i < n; i++) { /* (even-odd: an odd edge out, no run) */
+        const uint32_t at = (uint32_t)act[i];
+        if (!evenodd) rast__ss_cross(rast__ss_edge_at(edges, at), &w, &x0, d, mark, kb, fx0, fx1, clamp);
+        sw |= rast__ss_keep(edges, at, act, &m, y1, &last);
+    }
+    *swapped = sw;
+    return m;
+}
+
+/* The keys of the k edges edges[at .. at + k), sorted: runs of 16 by
+ * insertion (a row's new edges come mostly in order), then merged in
+ * pairs of runs twice as long, between key[] and tmp[] (room for k
+ * each); returns the array that holds them in order. */
+static uint64_t *rast__ss_keys(const rast__edge *edges, int32_t at, int32_t k, uint64_t *key,
+                               uint64_t *tmp)
+{
+    int32_t i, wd;
+    for (i = 0; i < k; i++) {
+        const uint64_t v =
+            rast__ss_key(edges[at + i].x, (uint32_t)((size_t)(at + i) * sizeof(rast__edge)));
+        int32_t to = i;
+        for (; to > (i & ~15) && key[to - 1] > v; to--) key[to] = key[to - 1];
+        key[to] = v;
+    }
+    for (wd = 16; wd < k; wd *= 2) {
+        uint64_t *t;
+        for (i = 0; i < k; i += 2 * wd) {
+            const int32_t mid = i + wd < k ? i + wd : k, hi = i + 2 * wd < k ? i + 2 * wd : k;
+            int32_t a = i, b = mid, o = i;
+            while (a < mid && b < hi) tmp[o++] = key[b] < key[a] ? key[b++] : key[a++];
+            while (a < mid) tmp[o++] = key[a++];
+            while (b < hi) tmp[o++] = key[b++];
+        }
+        t = key;
+        key = tmp;
+        tmp = t;
+    }
+    return key;
+}
+
+/* One fine row's pass with the rule, the clamp and the marks as constants
+ * in each copy. */
+static int32_t rast__ss_row_pass(rast__ss *ss, uint64_t *act, int32_t n, rast__edge *edges,
+                                 int32_t y1, int *sw)
+{
+    const int32_t kb = ss->kbits, fx0 = ss->fx0, fx1 = ss->fx1;
+    int32_t *d = ss->d;
+    uint64_t *mark = ss->dense ? NULL : ss->mark;
+    if (ss->evenodd || ss->clip)
+        return rast__ss_pass(act, n, edges, y1, d, mark, kb, fx0, fx1, ss->clip, ss->evenodd, sw);
+    /* (the commonest case) */
+    return mark ? rast__ss_pass(act, n, edges, y1, d, mark, kb, fx0, fx1, 0, 0, sw)
+                : rast__ss_pass(act, n, edges, y1, d, NULL, kb, fx0, fx1, 0, 0, sw);
+}
+
+/* The walk of the edge table, as rast__ss_sweep_records: with the keys
+ * when edges join and end on most rows (4 or more a row on average; aet[]'s
+ * room then holds the keys: at most nedges active, and twice a row's new
+ * ones while they are sorted), else (long edges: a star's, a circle's)
+ * with the records, which pays no key a row and an edge and moves the
+ * records on few rows. */
+static void rast__ss_sweep(rast__ss *ss, rast__edge *edges, rast__edge *aet, int32_t *bucket,
+                           int32_t nedges, int32_t row0, int32_t row1)
+{
+    uint64_t *act = (uint64_t *)(void *)aet, *add = act + nedges;
+    int32_t j, first = 0, n = 0;
+    if (nedges < 2 * ((int64_t)row1 - row0) ||
+        (uint64_t)nedges * sizeof(rast__edge) > UINT32_MAX) {
+        rast__ss_sweep_records(ss, edges, aet, bucket, nedges, row0, row1);
+        return;
+    }
+    rast__aet_group(edges, aet, bucket, nedges, row0, row1);
+    for (j = row0; j < row1; j++) {
+        const int32_t last = bucket[j - row0], k = last - first;
+        int swapped;
+        if (k) {
+            const uint64_t *keys = rast__ss_keys(edges, first, k, add, add + k);
+            int32_t m = n + k, a = n - 1, b = k - 1;
+            while (b >= 0) act[--m] = a >= 0 && act[a] > keys[b] ? act[a--] : keys[b--];
+            n += k;
+            first = last;
+        }
+        if (n == 0) continue;
+        rast__ss_row(ss, j - ss->fy0);
+        ss->ends += n;
+        n = rast__ss_row_pass(ss, act, n, edges, j + 1, &swapped);
+        if (swapped) { /* insertion sort of the keys */
+            int32_t i, t;
+            for (i = 1; i < n; i++) {
+                const uint64_t v = act[i];
+                for (t = i; t > 0 && act[t - 1] > v; t--) act[t] = act[t - 1];
+                act[t] = v;
+            }
+        }
+    }
+}
+#endif
+
 /* 1 when the polygon's output rows are expected to hold many runs' ends
  * (one a column in 4 or more): its edges' heights summed (the crossings
  * of all fine rows) times k over its height (k fine rows an output row).
@@ -469,8 +657,7 @@ rast_status rast__cov_ss(const rast_polygon *poly, uint32_t npoints, int32_t s,
     if (st != RAST_OK) return st;
     if (t.row0 < t.row1) {
         ss.dense = rast__ss_dense_tab(&t, &ss);
-        rast__aet_sweep(t.edges, t.aet, t.bucket, t.nedges, t.row0, t.row1, rule, NULL,
-                        rast__ss_row_ends, &ss);
+        rast__ss_sweep(&ss, t.edges, t.aet, t.bucket, t.nedges, t.row0, t.row1);
     }
 #endif
     rast__ss_finish(&ss);
@@ -530,9 +717,7 @@ static int rast__ss_cancel(rast__ss *ss, const rast_point *pts, const uint32_t *
         return 0;
     }
     nedges = rast__segs_edges(seg, m, g, row0, row1, aet, bucket);
-    rast__aet_sweep(edges, aet, bucket, nedges, row0, row1,
-                    ss->evenodd ? RAST_RULE_EVENODD : RAST_RULE_NONZERO, NULL, rast__ss_row_ends,
-                    ss);
+    rast__ss_sweep(ss, edges, aet, bucket, nedges, row0, row1);
     return 1;
 }
 
@@ -727,7 +912,7 @@ static inline void rast__ss_bits_run(uint64_t *bits, int32_t a, int32_t b, int32
 {
 #if defined(__BYTE_ORDER__) && defined(__ORDER_LITTLE_ENDIAN__) && \
     __BYTE_ORDER__ == __ORDER_LITTLE_ENDIAN__
-    if (b - a <= 57 && a < lim) {
+    if ((lim == INT32_MAX || b - a <= 57) && a < lim) {
         unsigned char *p = (unsigned char *)bits + (a >> 3);
         uint64_t x;
         memcpy(&x, p, 8);
@@ -744,7 +929,10 @@ static inline void rast__ss_bits_run(uint64_t *bits, int32_t a, int32_t b, int32
 /* n fine rows of a triangle, its run on each [L's column, R's column)
  * (with `clamp`, between the two, clipped to [fx0, fx1]) set in its row
  * of bits (the first at `row`, wpr words apart), both edges stepped;
- * `narrow`: the runs are mostly short (rast__ss_bits_run). */
+ * `narrow`: the runs are mostly short (rast__ss_bits_run); 2: all are,
+ * at most 57 columns and starting before the row's last 56 (the
+ * triangle's columns told so: rast__ss_bits_run's one OR, its tests
+ * taken out). */
 RAST__HOT void rast__ss_walk(rast__edge *L, rast__edge *R, int32_t n, uint64_t *row, size_t wpr,
                              int32_t fx0, int32_t fx1, int clamp, int narrow)
 {
@@ -762,7 +950,9 @@ RAST__HOT void rast__ss_walk(rast__edge *L, rast__edge *R, int32_t n, uint64_t *
             b = b > w ? w : b;
         }
         if (a < b) {
-            if (narrow)
+            if (narrow == 2)
+                rast__ss_bits_run(row, a, b, INT32_MAX);
+            else if (narrow)
                 rast__ss_bits_run(row, a, b, lim);
             else
                 rast__ss_bits(row, a, b);
@@ -1210,6 +1400,13 @@ rast_status rast__cov_ss_tris(const rast_point *tris, uint32_t ntris, int32_t s,
                             rast__ss_walk(&e, &l, stop - y, row, wpr, fx0, fx1, 0, 0);
                         else
                             rast__ss_walk(&l, &e, stop - y, row, wpr, fx0, fx1, 0, 0);
+                    /* runs within [c0, c1]: at most 57 columns, starting
+                     * before the row's last 56 (tested once) */
+                    else if (r->c1 - r->c0 <= 57 && r->c1 - fx0 < (int32_t)wpr * 64 - 56)
+                        if (r->flip)
+                            rast__ss_walk(&e, &l, stop - y, row, wpr, fx0, fx1, 0, 2);
+                        else
+                            rast__ss_walk(&l, &e, stop - y, row, wpr, fx0, fx1, 0, 2);
                     else if (r->flip)
                         rast__ss_walk(&e, &l, stop - y, row, wpr, fx0, fx1, 0, 1);
                     else

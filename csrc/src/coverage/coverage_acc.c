@@ -1491,88 +1491,100 @@ static void rast__acc_by_rows(const rast__acc_walk *w, rast__acc *a)
     }
 }
 #else
-/* Row j's parts of the edges ix[0..n) into the cells of a (sx 1), as
- * rast__acc_row_part_in puts them, and the edges that go on below row j
- * copied to nx[], in order (returns how many).  A part in one column of
- * the clip (four in five of a line of text's) is put here, the row's
- * bounds lo, hi in registers (not moved when count: rast__acc_spread),
- * its two cells marked and counted as rast__acc_touch would (the column
- * and the next, the last of the clip at most); any other goes to
- * rast__acc_part.  count as rast__acc_part's, dense a->dense (constants
- * at each call: no test of either a part).  (From 79 instructions a part
- * to ~50 on the text family: the struct's fields reloaded after each
- * store, which may alias them, the clip tests of the general way, the
- * calls.) */
+/* e's part in row j (rel0 = e's top - the row's; from (xa, ta) to (xb,
+ * tb), rast__acc_ends') into the cells a (sx 1), the row's bounds in *lo,
+ * *hi (locals of the caller: registers), the cells' fields given (a's,
+ * read once by the caller: a store to a cell may alias them).  A part in
+ * one column of the clip (four in five of a line of text's) is put here,
+ * lo and hi not moved when count (rast__acc_spread), its two cells marked
+ * and counted as rast__acc_touch would (the column and the next, the last
+ * of the clip at most); one crossing one vertical inside the clip too;
+ * any other goes to rast__acc_part.  count as rast__acc_part's, dense
+ * a->dense (constants at each call: no test of either a part). */
+RAST__HOT void rast__acc_deposit(rast__acc *a, uint64_t *acc, uint64_t *blk, uint32_t *cnt, int32_t last, int64_t x0,
+                                 uint64_t w, rast__cedge *ed, int64_t rel0, int64_t xa, uint64_t ta, int64_t xb,
+                                 uint64_t tb, int32_t *lo, int32_t *hi, int count, int dense)
+{
+    const uint64_t fm = QT - 1;
+    const int32_t hq = a->hq;
+    const int64_t ca = rast__acc_col(xa) - x0, cb = rast__acc_col(xb) - x0;
+    if (ca == cb && (uint64_t)ca < w) {
+        const int32_t c0 = (int32_t)ca, c1 = c0 < last ? c0 + 1 : c0;
+        rast__acc_put(acc, ca, (uint64_t)xa & fm, (uint64_t)xb & fm, tb - ta, ed->dir < 0 ? ~(uint64_t)0 : 0, 1);
+        if (!count) { /* (counted: the counts have them, rast__acc_emit) */
+            *lo = c0 < *lo ? c0 : *lo;
+            *hi = c0 + 1 > *hi ? c0 + 1 : *hi;
+        }
+        if (!dense) {
+            blk[c0 >> 6] |= (uint64_t)1 << (c0 & 63);
+            blk[c1 >> 6] |= (uint64_t)1 << (c1 & 63);
+        }
+        if (count) cnt[c0 >> 4]++;
+    } else if ((cb - ca == 1 || ca - cb == 1) && (uint64_t)ca < w && (uint64_t)cb < w) {
+        /* one vertical crossed, inside the clip (most of the rest):
+         * rast__acc_part's two pieces, the column stepper there */
+        const int right = cb > ca;
+        const int32_t c0 = (int32_t)(right ? ca : cb), c1 = c0 + 1, c2 = c1 < last ? c1 + 1 : c1;
+        const uint64_t neg = ed->dir < 0 ? ~(uint64_t)0 : 0;
+        const uint32_t adx = (uint32_t)(ed->dx < 0 ? -ed->dx : ed->dx);
+        uint32_t qtr;
+        int64_t qt;
+        uint64_t tx;
+        if (ed->qX != c1 + x0) rast__acc_t_first(ed, c1 + x0, a);
+        qt = ed->qt + rel0 * ((int64_t)1 << hq);
+        tx = qt < (int64_t)ta ? ta : qt > (int64_t)tb ? tb : (uint64_t)qt;
+        rast__acc_put(acc, ca, (uint64_t)xa & fm, right ? QT : 0, tx - ta, neg, 1);
+        rast__acc_put(acc, cb, right ? 0 : QT, (uint64_t)xb & fm, tb - tx, neg, 1);
+        qtr = ed->qtr + ed->qtsr;
+        ed->qt += ed->qts + rast__acc_carry(&qtr, adx);
+        ed->qtr = qtr;
+        ed->qX += right ? 1 : -1;
+        if (!count) {
+            *lo = c0 < *lo ? c0 : *lo;
+            *hi = c1 + 1 > *hi ? c1 + 1 : *hi;
+        }
+        if (!dense) {
+            blk[c0 >> 6] |= (uint64_t)1 << (c0 & 63);
+            blk[c1 >> 6] |= (uint64_t)1 << (c1 & 63);
+            blk[c2 >> 6] |= (uint64_t)1 << (c2 & 63);
+        }
+        if (count) {
+            cnt[c0 >> 4]++;
+            cnt[c1 >> 4] += (uint32_t)((c1 >> 4) != (c0 >> 4));
+        }
+    } else {
+        a->lo = *lo;
+        a->hi = *hi;
+        rast__acc_part(a, ed, -rel0 * ((int64_t)1 << hq), xa, ta, xb, tb, ed->dir, 1, count);
+        *lo = a->lo;
+        *hi = a->hi;
+    }
+}
+
+/* Row j's parts of the edges ix[0..n) into the cells of a (sx 1)
+ * (rast__acc_deposit), and the edges that go on below row j copied to
+ * nx[], in order (returns how many).  count as rast__acc_part's, dense
+ * a->dense (constants at each call).  (From 79 instructions a part to ~50
+ * on the text family: the struct's fields reloaded after each store,
+ * which may alias them, the clip tests of the general way, the calls.) */
 RAST__HOT int32_t rast__acc_parts(rast__acc *a, rast__cedge *e, const int32_t *ix, int32_t n, int32_t *nx,
                                   int32_t j, int count, int dense)
 {
-    const int32_t p = a->p, hq = a->hq, last = a->last;
+    const int32_t p = a->p, last = a->last;
     const int64_t Yj = (int64_t)j * p, x0 = a->x0;
-    const uint64_t fm = QT - 1, w = (uint64_t)(a->x1 - a->x0);
+    const uint64_t w = (uint64_t)(a->x1 - a->x0);
     uint64_t *const acc = a->acc, *const blk = a->blk;
     uint32_t *const cnt = a->cnt;
     int32_t lo = a->lo, hi = a->hi, k, q = 0;
     for (k = 0; k < n; k++) {
         rast__cedge *const ed = &e[ix[k]];
         const int64_t rel0 = (int64_t)ed->yt - Yj;
-        int64_t xa, xb, ca, cb;
+        int64_t xa, xb;
         uint64_t ta, tb;
         nx[q] = ix[k];
         q += rel0 + ed->dy > p; /* (it ends below row j) */
         rast__acc_ends(ed, j, rel0, a, &xa, &ta, &xb, &tb);
-        ca = rast__acc_col(xa) - x0;
-        cb = rast__acc_col(xb) - x0;
-        if (ca == cb && (uint64_t)ca < w) {
-            const int32_t c0 = (int32_t)ca, c1 = c0 < last ? c0 + 1 : c0;
-            rast__acc_put(acc, ca, (uint64_t)xa & fm, (uint64_t)xb & fm, tb - ta, ed->dir < 0 ? ~(uint64_t)0 : 0, 1);
-            if (!count) { /* (counted: the counts have them, rast__acc_emit) */
-                lo = c0 < lo ? c0 : lo;
-                hi = c0 + 1 > hi ? c0 + 1 : hi;
-            }
-            if (!dense) {
-                blk[c0 >> 6] |= (uint64_t)1 << (c0 & 63);
-                blk[c1 >> 6] |= (uint64_t)1 << (c1 & 63);
-            }
-            if (count) cnt[c0 >> 4]++;
-        } else if ((cb - ca == 1 || ca - cb == 1) && (uint64_t)ca < w && (uint64_t)cb < w) {
-            /* one vertical crossed, inside the clip (most of the rest):
-             * rast__acc_part's two pieces, the column stepper there */
-            const int right = cb > ca;
-            const int32_t c0 = (int32_t)(right ? ca : cb), c1 = c0 + 1, c2 = c1 < last ? c1 + 1 : c1;
-            const uint64_t neg = ed->dir < 0 ? ~(uint64_t)0 : 0;
-            const uint32_t adx = (uint32_t)(ed->dx < 0 ? -ed->dx : ed->dx);
-            uint32_t qtr;
-            int64_t qt;
-            uint64_t tx;
-            if (ed->qX != c1 + x0) rast__acc_t_first(ed, c1 + x0, a);
-            qt = ed->qt + rel0 * ((int64_t)1 << hq);
-            tx = qt < (int64_t)ta ? ta : qt > (int64_t)tb ? tb : (uint64_t)qt;
-            rast__acc_put(acc, ca, (uint64_t)xa & fm, right ? QT : 0, tx - ta, neg, 1);
-            rast__acc_put(acc, cb, right ? 0 : QT, (uint64_t)xb & fm, tb - tx, neg, 1);
-            qtr = ed->qtr + ed->qtsr;
-            ed->qt += ed->qts + rast__acc_carry(&qtr, adx);
-            ed->qtr = qtr;
-            ed->qX += right ? 1 : -1;
-            if (!count) {
-                lo = c0 < lo ? c0 : lo;
-                hi = c1 + 1 > hi ? c1 + 1 : hi;
-            }
-            if (!dense) {
-                blk[c0 >> 6] |= (uint64_t)1 << (c0 & 63);
-                blk[c1 >> 6] |= (uint64_t)1 << (c1 & 63);
-                blk[c2 >> 6] |= (uint64_t)1 << (c2 & 63);
-            }
-            if (count) {
-                cnt[c0 >> 4]++;
-                cnt[c1 >> 4] += (uint32_t)((c1 >> 4) != (c0 >> 4));
-            }
-        } else {
-            a->lo = lo;
-            a->hi = hi;
-            rast__acc_part(a, ed, -rel0 * ((int64_t)1 << hq), xa, ta, xb, tb, ed->dir, 1, count);
-            lo = a->lo;
-            hi = a->hi;
-        }
+        rast__acc_deposit(a, acc, blk, cnt, last, x0, w, ed, rel0, xa, ta, xb, tb, &lo, &hi, count, dense);
     }
     a->lo = lo;
     a->hi = hi;
@@ -1738,6 +1750,7 @@ static void rast__acc_by_rows(const rast__acc_walk *w, rast__acc *a)
         nrow = q;
     }
 }
+
 #endif
 
 #if !defined(__OPTIMIZE_SIZE__)

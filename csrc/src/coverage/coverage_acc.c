@@ -738,6 +738,56 @@ RAST__HOT uint32_t rast__acc_z(uint64_t v, int big)
     return (uint32_t)((big ? rast__acc_apply(v, RAST_RULE_NONZERO) : v) >> 27);
 }
 
+#ifdef RAST__ACC_AVX2
+/* rast__acc_apply's non-zero rule on 4 lanes of running sums (from 0) */
+__attribute__((target("avx2"), always_inline)) static inline __m256i rast__acc_nz4(__m256i v)
+{
+    const __m256i one = _mm256_set1_epi64x(QONE), neg = _mm256_cmpgt_epi64(_mm256_setzero_si256(), v);
+    v = _mm256_sub_epi64(_mm256_xor_si256(v, neg), neg);
+    return _mm256_blendv_epi8(v, one, _mm256_cmpgt_epi64(v, one));
+}
+
+/* rast__acc_sum24's way on the first 8 floor(n / 8) cells at c (a lone
+ * row's: next to each other), 8 at a time, the running sum from v: each
+ * vector of four cells summed in place by two shifts and adds, the sum so
+ * far added and carried on from its last lane; z from each sum as
+ * rast__acc_z makes it (big: rast__acc_nz4 first).  The cells cleared;
+ * returns the running sum after them.  (The same sums modulo 2^64 in
+ * another order of additions: the same z.) */
+__attribute__((target("avx2"))) static uint64_t rast__acc_sum24_avx2(uint64_t *restrict c, uint32_t *restrict z,
+                                                                    size_t n, uint64_t v, int big)
+{
+    const __m256i zero = _mm256_setzero_si256();
+    __m256i s = _mm256_set1_epi64x((int64_t)v), a, b, x;
+    for (; n >= 8; n -= 8, c += 8, z += 8) {
+        a = _mm256_loadu_si256((const __m256i *)(const void *)c);
+        b = _mm256_loadu_si256((const __m256i *)(const void *)(c + 4));
+        _mm256_storeu_si256((__m256i *)(void *)c, zero);
+        _mm256_storeu_si256((__m256i *)(void *)(c + 4), zero);
+        /* [a0 a1 a2 a3] + [0 a0 a1 a2], then + [0 0 s0 s1] */
+        a = _mm256_add_epi64(a, _mm256_blend_epi32(_mm256_permute4x64_epi64(a, 0x90), zero, 0x03));
+        b = _mm256_add_epi64(b, _mm256_blend_epi32(_mm256_permute4x64_epi64(b, 0x90), zero, 0x03));
+        a = _mm256_add_epi64(a, _mm256_permute2x128_si256(a, a, 0x08));
+        b = _mm256_add_epi64(b, _mm256_permute2x128_si256(b, b, 0x08));
+        a = _mm256_add_epi64(a, s);
+        s = _mm256_permute4x64_epi64(a, 0xFF);
+        b = _mm256_add_epi64(b, s);
+        s = _mm256_permute4x64_epi64(b, 0xFF);
+        if (big) {
+            a = rast__acc_nz4(a);
+            b = rast__acc_nz4(b);
+        }
+        a = _mm256_srli_epi64(a, 27);
+        b = _mm256_srli_epi64(b, 27);
+        /* each lane's low word, in order: [a0 a1 b0 b1 | a2 a3 b2 b3], its
+         * 64-bit pairs put back in order */
+        x = _mm256_castps_si256(_mm256_shuffle_ps(_mm256_castsi256_ps(a), _mm256_castsi256_ps(b), 0x88));
+        _mm256_storeu_si256((__m256i *)(void *)z, _mm256_permute4x64_epi64(x, 0xD8));
+    }
+    return (uint64_t)_mm_cvtsi128_si64(_mm256_castsi256_si128(s));
+}
+#endif
+
 /* Dense uint8 rows in two passes, the second of which a compiler can run
  * on 16 cells at a time.  The first sums cells [lo, hi) and leaves in each
  * z = floor(v / 2^27) modulo 2^32 (v = 2^51 a, the running sum: |a| <= n /
@@ -761,6 +811,14 @@ RAST__HOT void rast__acc_sum24(uint64_t *restrict acc, uint32_t *restrict z, int
     uint64_t v = big ? 0 : (uint64_t)1 << 62, *c = acc + (size_t)lo * sx;
     size_t n = (size_t)(hi - lo), i;
     z += lo;
+#ifdef RAST__ACC_AVX2
+    if (sx == 1 && n >= 32 && __builtin_cpu_supports("avx2")) { /* (a lone row's cells: 8 at a time) */
+        v = big ? rast__acc_sum24_avx2(c, z, n, v, 1) : rast__acc_sum24_avx2(c, z, n, v, 0);
+        c += n & ~(size_t)7;
+        z += n & ~(size_t)7;
+        n &= 7;
+    }
+#endif
     for (; n >= 4; n -= 4, c += 4 * sx, z += 4) { /* (4 a turn, written out: -O2 does not unroll) */
         const uint64_t v0 = v + c[0], v1 = v0 + c[sx], v2 = v1 + c[2 * sx];
         v = v2 + c[3 * sx];
@@ -864,14 +922,6 @@ rast__acc_lanes8(uint32_t *z, __m256i vw, __m256i vlim, __m256i *below, __m256i 
     __m256i *p = (__m256i *)(void *)z, x = _mm256_loadu_si256(p);
     _mm256_storeu_si256(p, _mm256_setzero_si256());
     return rast__acc_x8(x, vw, vlim, below, above, rule);
-}
-
-/* rast__acc_apply's non-zero rule on 4 lanes of running sums (from 0) */
-__attribute__((target("avx2"), always_inline)) static inline __m256i rast__acc_nz4(__m256i v)
-{
-    const __m256i one = _mm256_set1_epi64x(QONE), neg = _mm256_cmpgt_epi64(_mm256_setzero_si256(), v);
-    v = _mm256_sub_epi64(_mm256_xor_si256(v, neg), neg);
-    return _mm256_blendv_epi8(v, one, _mm256_cmpgt_epi64(v, one));
 }
 
 /* Two columns' levels in the 4 rows of a band: the running sums s (of

@@ -159,10 +159,19 @@ typedef struct rast__acc {
                         * counts when asked) */
 } rast__acc;
 
+/* rast__acc_row's keep, from rast__acc_emit's (the sums kept on a tie:
+ * rast__acc_ties_z); size-optimised builds have no such pass, and their
+ * readouts of uint8 rows no such argument */
 #if defined(__OPTIMIZE_SIZE__)
 #define RAST__ACC_SPREAD(a) 0
+#define RAST__ACC_KEEP_PARAM
+#define RAST__ACC_KEEP_ARG(k)
+#define RAST__ACC_KEEP_IN 0
 #else
 #define RAST__ACC_SPREAD(a) ((a)->spread)
+#define RAST__ACC_KEEP_PARAM , int keep
+#define RAST__ACC_KEEP_ARG(k) , (k) != NULL
+#define RAST__ACC_KEEP_IN keep
 #endif
 
 /* A row's sums z[lo, hi) kept on a tie (rast__acc_emit's keep; hi < 0:
@@ -852,8 +861,8 @@ RAST__HOT void rast__acc_sum24(uint64_t *restrict acc, uint32_t *restrict z, int
  * caller's win, (n + 1) 255 2^22, over 2^27, + 256) from 0 and from 1, lim
  * = 2^24 - 2 w;
  * returns nonzero when it is not.  rule is a constant at each call.  (z
- * is left as it is: rast__acc_levels24 clears it, or the row's are kept
- * for the ties' pass, rast__acc_ties_z.) */
+ * is left as it is, but in size-optimised builds: rast__acc_levels24
+ * clears it, or the row's are kept for the ties' pass, rast__acc_ties_z.) */
 RAST__HOT uint32_t rast__acc_level24(uint32_t *c, unsigned char *out, uint32_t w, uint32_t lim,
                                      rast_fill_rule rule)
 {
@@ -868,6 +877,9 @@ RAST__HOT uint32_t rast__acc_level24(uint32_t *c, unsigned char *out, uint32_t w
         x = x > one ? 2 * one - x : x;
     }
     y = (x << 8) - x + ((uint32_t)1 << 23);
+#if defined(__OPTIMIZE_SIZE__)
+    *c = 0; /* (there no pass keeps them: cleared here, the smaller way) */
+#endif
     *out = (unsigned char)(y >> 24);
     return (uint32_t)(((y & 0xFFFFFFu) - w) > lim);
 }
@@ -1039,6 +1051,17 @@ __attribute__((target("avx2"))) static uint32_t rast__acc_levels24_avx2(uint32_t
 }
 #endif
 
+/* z's word x cleared, when clear (size-optimised builds: rast__acc_level24
+ * clears it) */
+#if defined(__OPTIMIZE_SIZE__)
+#define RAST__ACC_CLEAR(clear, x) (void)(clear)
+#else
+#define RAST__ACC_CLEAR(clear, x) \
+    do {                          \
+        if (clear) (x) = 0;       \
+    } while (0)
+#endif
+
 RAST__HOT uint32_t rast__acc_levels24(uint32_t *restrict z, unsigned char *restrict row, int32_t lo,
                                       int32_t hi, uint32_t w, rast_fill_rule rule, int clear)
 {
@@ -1084,27 +1107,28 @@ RAST__HOT uint32_t rast__acc_levels24(uint32_t *restrict z, unsigned char *restr
     for (; n >= 16; n -= 16, z += 16, row += 16) /* 16 at a time: no tail loop to add */
         for (i = 0; i < 16; i++) {
             bad |= rast__acc_level24(z + i, row + i, w, lim, rule);
-            if (clear) z[i] = 0;
+            RAST__ACC_CLEAR(clear, z[i]);
         }
 #endif
     for (i = 0; i < n; i++) {
         bad |= rast__acc_level24(z + i, row + i, w, lim, rule);
-        if (clear) z[i] = 0;
+        RAST__ACC_CLEAR(clear, z[i]);
     }
     return bad;
 }
 
-/* Does a uint8 row read [lo, hi) by its sums z (rast__acc_sum24,
- * rast__acc_levels24)?  dense as rast__acc_row's, win its window. */
-static inline int rast__acc_zpath(int dense, int32_t lo, int32_t hi, rast_fill_rule rule, uint64_t win)
+/* Does a row read [lo, hi) by its sums z (rast__acc_sum24,
+ * rast__acc_levels24)?  dense and m (255: uint8) as rast__acc_row's, win
+ * its window. */
+static inline int rast__acc_zpath(int dense, uint32_t m, int32_t lo, int32_t hi, rast_fill_rule rule, uint64_t win)
 {
 #if RAST__ACC_BIG24
     (void)rule;
     (void)win;
-    return dense && lo < hi;
+    return dense && m == 255 && lo < hi;
 #else
     /* (non-zero: n < 256; dense 2: every cell read, but not this way) */
-    return dense == 1 && lo < hi && (rule == RAST_RULE_EVENODD || win <= rast__acc_win(255, 255));
+    return dense == 1 && m == 255 && lo < hi && (rule == RAST_RULE_EVENODD || win <= rast__acc_win(255, 255));
 #endif
 }
 
@@ -1121,8 +1145,11 @@ RAST__HOT uint64_t rast__acc_row(uint64_t *acc, int32_t sx, uint64_t *blk, uint3
     uint64_t bad = 0, lev = 0, v = 0;
     uint16_t *r16 = (uint16_t *)(void *)row;
     int32_t k = lo, wi;
+#if defined(__OPTIMIZE_SIZE__)
+    keep = 0; /* (no pass reads them again there: rast__acc_ties_z is not built) */
+#endif
     rast__cov_fill(f, row, 0, lo, 0);
-    if (m == 255 && rast__acc_zpath(dense, lo, hi, rule, win)) {
+    if (rast__acc_zpath(dense, m, lo, hi, rule, win)) {
 #if RAST__ACC_BIG24
         /* (non-zero: big past n = 256, dense 2, or a window that wide;
          * w < 2^23 for n < RAST__ACC_MAXN) */
@@ -1180,27 +1207,27 @@ RAST__HOT uint64_t rast__acc_row(uint64_t *acc, int32_t sx, uint64_t *blk, uint3
 /* rast__acc_row for uint8, one for each rule and spacing of the cells (a
  * lone row's, a band row's) */
 static uint64_t rast__acc_row_u8nz(uint64_t *acc, uint64_t *blk, uint32_t *z, unsigned char *row, int32_t lo,
-                                   int32_t hi, int32_t w, int dense, uint64_t win, int keep)
+                                   int32_t hi, int32_t w, int dense, uint64_t win RAST__ACC_KEEP_PARAM)
 {
-    return rast__acc_row(acc, 1, blk, z, row, lo, hi, w, dense, RAST_RULE_NONZERO, 255, win, keep);
+    return rast__acc_row(acc, 1, blk, z, row, lo, hi, w, dense, RAST_RULE_NONZERO, 255, win, RAST__ACC_KEEP_IN);
 }
 
 static uint64_t rast__acc_row_u8eo(uint64_t *acc, uint64_t *blk, uint32_t *z, unsigned char *row, int32_t lo,
-                                   int32_t hi, int32_t w, int dense, uint64_t win, int keep)
+                                   int32_t hi, int32_t w, int dense, uint64_t win RAST__ACC_KEEP_PARAM)
 {
-    return rast__acc_row(acc, 1, blk, z, row, lo, hi, w, dense, RAST_RULE_EVENODD, 255, win, keep);
+    return rast__acc_row(acc, 1, blk, z, row, lo, hi, w, dense, RAST_RULE_EVENODD, 255, win, RAST__ACC_KEEP_IN);
 }
 
 static uint64_t rast__acc_brow_u8nz(uint64_t *acc, uint64_t *blk, uint32_t *z, unsigned char *row, int32_t lo,
-                                    int32_t hi, int32_t w, int dense, uint64_t win, int keep)
+                                    int32_t hi, int32_t w, int dense, uint64_t win RAST__ACC_KEEP_PARAM)
 {
-    return rast__acc_row(acc, RAST__ACC_SX, blk, z, row, lo, hi, w, dense, RAST_RULE_NONZERO, 255, win, keep);
+    return rast__acc_row(acc, RAST__ACC_SX, blk, z, row, lo, hi, w, dense, RAST_RULE_NONZERO, 255, win, RAST__ACC_KEEP_IN);
 }
 
 static uint64_t rast__acc_brow_u8eo(uint64_t *acc, uint64_t *blk, uint32_t *z, unsigned char *row, int32_t lo,
-                                    int32_t hi, int32_t w, int dense, uint64_t win, int keep)
+                                    int32_t hi, int32_t w, int dense, uint64_t win RAST__ACC_KEEP_PARAM)
 {
-    return rast__acc_row(acc, RAST__ACC_SX, blk, z, row, lo, hi, w, dense, RAST_RULE_EVENODD, 255, win, keep);
+    return rast__acc_row(acc, RAST__ACC_SX, blk, z, row, lo, hi, w, dense, RAST_RULE_EVENODD, 255, win, RAST__ACC_KEEP_IN);
 }
 
 /* Are the edges ix[0..n) all vertical?  Then the sums of a row of their
@@ -1271,6 +1298,9 @@ RAST__HOT int rast__acc_emit(rast__acc *a, int32_t sx, const rast__cov_out *o, i
     const int dense = a->dense;
     uint64_t bad;
     int32_t lo = a->lo, hi = a->hi < w ? a->hi + 1 : w; /* [lo, hi) */
+#if defined(__OPTIMIZE_SIZE__)
+    (void)keep; /* (no sums kept there: rast__acc_ties_z is not built) */
+#endif
 #if !defined(__OPTIMIZE_SIZE__)
     if (a->cnt && a->spread) {
         win = rast__acc_win(rast__acc_spread(a, w, &lo, &hi), m);
@@ -1294,17 +1324,17 @@ RAST__HOT int rast__acc_emit(rast__acc *a, int32_t sx, const rast__cov_out *o, i
         bad = rast__acc_row(a->acc, sx, a->blk, a->z, row, lo, hi, w, a->dense, rule, m, win, 0);
     else if (rule == RAST_RULE_NONZERO)
         bad = (sx == 1 ? rast__acc_row_u8nz : rast__acc_brow_u8nz)(a->acc, a->blk, a->z, row, lo, hi, w, a->dense,
-                                                                    win, keep != NULL);
+                                                                    win RAST__ACC_KEEP_ARG(keep));
     else
         bad = (sx == 1 ? rast__acc_row_u8eo : rast__acc_brow_u8eo)(a->acc, a->blk, a->z, row, lo, hi, w, a->dense,
-                                                                    win, keep != NULL);
+                                                                    win RAST__ACC_KEEP_ARG(keep));
     a->acc[w * sx] = 0;
     a->lo = INT32_MAX;
     a->hi = -1;
 #if !defined(__OPTIMIZE_SIZE__)
     /* z[lo, hi) kept (rast__acc_row): where, and the window */
     if (keep) keep->hi = -1;
-    if (bad && keep && o->format == RAST_COVERAGE_U8 && rast__acc_zpath(a->dense, lo, hi, rule, win)) {
+    if (bad && keep && rast__acc_zpath(a->dense, m, lo, hi, rule, win)) {
         if (rast__acc_done(o, y, bad, e, ix, n)) { /* (all vertical: done, z cleared) */
             memset(a->z + lo, 0, (size_t)(hi - lo) * sizeof(uint32_t));
             a->dense = dense;

@@ -159,11 +159,27 @@ typedef struct rast__acc {
                         * counts when asked) */
 } rast__acc;
 
+/* rast__acc_row's keep, from rast__acc_emit's (the sums kept on a tie:
+ * rast__acc_ties_z); size-optimised builds have no such pass, and their
+ * readouts of uint8 rows no such argument */
 #if defined(__OPTIMIZE_SIZE__)
 #define RAST__ACC_SPREAD(a) 0
+#define RAST__ACC_KEEP_PARAM
+#define RAST__ACC_KEEP_ARG(k)
+#define RAST__ACC_KEEP_IN 0
 #else
 #define RAST__ACC_SPREAD(a) ((a)->spread)
+#define RAST__ACC_KEEP_PARAM , int keep
+#define RAST__ACC_KEEP_ARG(k) , (k) != NULL
+#define RAST__ACC_KEEP_IN keep
 #endif
+
+/* A row's sums z[lo, hi) kept on a tie (rast__acc_emit's keep; hi < 0:
+ * none), and their window: for rast__acc_ties_z */
+typedef struct rast__acc_kept {
+    int32_t lo, hi;
+    uint64_t win;
+} rast__acc_kept;
 
 /* rast__cov_qtop, rast__cov_qt_first with this engine's P and HQ */
 static inline int64_t rast__acc_top(rast__cedge *e, int32_t j, const rast__acc *a)
@@ -738,6 +754,56 @@ RAST__HOT uint32_t rast__acc_z(uint64_t v, int big)
     return (uint32_t)((big ? rast__acc_apply(v, RAST_RULE_NONZERO) : v) >> 27);
 }
 
+#ifdef RAST__ACC_AVX2
+/* rast__acc_apply's non-zero rule on 4 lanes of running sums (from 0) */
+__attribute__((target("avx2"), always_inline)) static inline __m256i rast__acc_nz4(__m256i v)
+{
+    const __m256i one = _mm256_set1_epi64x(QONE), neg = _mm256_cmpgt_epi64(_mm256_setzero_si256(), v);
+    v = _mm256_sub_epi64(_mm256_xor_si256(v, neg), neg);
+    return _mm256_blendv_epi8(v, one, _mm256_cmpgt_epi64(v, one));
+}
+
+/* rast__acc_sum24's way on the first 8 floor(n / 8) cells at c (a lone
+ * row's: next to each other), 8 at a time, the running sum from v: each
+ * vector of four cells summed in place by two shifts and adds, the sum so
+ * far added and carried on from its last lane; z from each sum as
+ * rast__acc_z makes it (big: rast__acc_nz4 first).  The cells cleared;
+ * returns the running sum after them.  (The same sums modulo 2^64 in
+ * another order of additions: the same z.) */
+__attribute__((target("avx2"))) static uint64_t rast__acc_sum24_avx2(uint64_t *restrict c, uint32_t *restrict z,
+                                                                    size_t n, uint64_t v, int big)
+{
+    const __m256i zero = _mm256_setzero_si256();
+    __m256i s = _mm256_set1_epi64x((int64_t)v), a, b, x;
+    for (; n >= 8; n -= 8, c += 8, z += 8) {
+        a = _mm256_loadu_si256((const __m256i *)(const void *)c);
+        b = _mm256_loadu_si256((const __m256i *)(const void *)(c + 4));
+        _mm256_storeu_si256((__m256i *)(void *)c, zero);
+        _mm256_storeu_si256((__m256i *)(void *)(c + 4), zero);
+        /* [a0 a1 a2 a3] + [0 a0 a1 a2], then + [0 0 s0 s1] */
+        a = _mm256_add_epi64(a, _mm256_blend_epi32(_mm256_permute4x64_epi64(a, 0x90), zero, 0x03));
+        b = _mm256_add_epi64(b, _mm256_blend_epi32(_mm256_permute4x64_epi64(b, 0x90), zero, 0x03));
+        a = _mm256_add_epi64(a, _mm256_permute2x128_si256(a, a, 0x08));
+        b = _mm256_add_epi64(b, _mm256_permute2x128_si256(b, b, 0x08));
+        a = _mm256_add_epi64(a, s);
+        s = _mm256_permute4x64_epi64(a, 0xFF);
+        b = _mm256_add_epi64(b, s);
+        s = _mm256_permute4x64_epi64(b, 0xFF);
+        if (big) {
+            a = rast__acc_nz4(a);
+            b = rast__acc_nz4(b);
+        }
+        a = _mm256_srli_epi64(a, 27);
+        b = _mm256_srli_epi64(b, 27);
+        /* each lane's low word, in order: [a0 a1 b0 b1 | a2 a3 b2 b3], its
+         * 64-bit pairs put back in order */
+        x = _mm256_castps_si256(_mm256_shuffle_ps(_mm256_castsi256_ps(a), _mm256_castsi256_ps(b), 0x88));
+        _mm256_storeu_si256((__m256i *)(void *)z, _mm256_permute4x64_epi64(x, 0xD8));
+    }
+    return (uint64_t)_mm_cvtsi128_si64(_mm256_castsi256_si128(s));
+}
+#endif
+
 /* Dense uint8 rows in two passes, the second of which a compiler can run
  * on 16 cells at a time.  The first sums cells [lo, hi) and leaves in each
  * z = floor(v / 2^27) modulo 2^32 (v = 2^51 a, the running sum: |a| <= n /
@@ -761,6 +827,14 @@ RAST__HOT void rast__acc_sum24(uint64_t *restrict acc, uint32_t *restrict z, int
     uint64_t v = big ? 0 : (uint64_t)1 << 62, *c = acc + (size_t)lo * sx;
     size_t n = (size_t)(hi - lo), i;
     z += lo;
+#ifdef RAST__ACC_AVX2
+    if (sx == 1 && n >= 32 && __builtin_cpu_supports("avx2")) { /* (a lone row's cells: 8 at a time) */
+        v = big ? rast__acc_sum24_avx2(c, z, n, v, 1) : rast__acc_sum24_avx2(c, z, n, v, 0);
+        c += n & ~(size_t)7;
+        z += n & ~(size_t)7;
+        n &= 7;
+    }
+#endif
     for (; n >= 4; n -= 4, c += 4 * sx, z += 4) { /* (4 a turn, written out: -O2 does not unroll) */
         const uint64_t v0 = v + c[0], v1 = v0 + c[sx], v2 = v1 + c[2 * sx];
         v = v2 + c[3 * sx];
@@ -786,7 +860,9 @@ RAST__HOT void rast__acc_sum24(uint64_t *restrict acc, uint32_t *restrict z, int
  * certain when y's fraction is at least that far (w, in 2^-24 levels: the
  * caller's win, (n + 1) 255 2^22, over 2^27, + 256) from 0 and from 1, lim
  * = 2^24 - 2 w;
- * returns nonzero when it is not.  rule is a constant at each call. */
+ * returns nonzero when it is not.  rule is a constant at each call.  (z
+ * is left as it is, but in size-optimised builds: rast__acc_levels24
+ * clears it, or the row's are kept for the ties' pass, rast__acc_ties_z.) */
 RAST__HOT uint32_t rast__acc_level24(uint32_t *c, unsigned char *out, uint32_t w, uint32_t lim,
                                      rast_fill_rule rule)
 {
@@ -801,13 +877,15 @@ RAST__HOT uint32_t rast__acc_level24(uint32_t *c, unsigned char *out, uint32_t w
         x = x > one ? 2 * one - x : x;
     }
     y = (x << 8) - x + ((uint32_t)1 << 23);
-    *c = 0;
+#if defined(__OPTIMIZE_SIZE__)
+    *c = 0; /* (there no pass keeps them: cleared here, the smaller way) */
+#endif
     *out = (unsigned char)(y >> 24);
     return (uint32_t)(((y & 0xFFFFFFu) - w) > lim);
 }
 
 #ifdef RAST__ACC_SSE2
-/* rast__acc_level24 on the 4 lanes at z (cleared): the levels, in the low
+/* rast__acc_level24 on the 4 lanes at z: the levels, in the low
  * byte of each lane; the tie test's d = frac - w ORed into *below (d < 0:
  * its sign) and d > lim into *above, signed.  z fits a signed lane (the
  * caller's condition for non-zero), and so do x and y >> 24. */
@@ -830,7 +908,6 @@ RAST__HOT __m128i rast__acc_lanes(uint32_t *z, __m128i vw, __m128i vlim, __m128i
     d = _mm_sub_epi32(_mm_and_si128(x, _mm_set1_epi32((1 << 24) - 1)), vw);
     *below = _mm_or_si128(*below, d);
     *above = _mm_or_si128(*above, _mm_cmpgt_epi32(d, vlim));
-    _mm_storeu_si128(p, _mm_setzero_si128());
     return _mm_srli_epi32(x, 24);
 }
 #endif
@@ -857,21 +934,12 @@ rast__acc_x8(__m256i x, __m256i vw, __m256i vlim, __m256i *below, __m256i *above
     return _mm256_srli_epi32(x, 24);
 }
 
-/* the same on the 8 words at z, which are cleared */
+/* the same on the 8 words at z */
 __attribute__((target("avx2"), always_inline)) static inline __m256i
 rast__acc_lanes8(uint32_t *z, __m256i vw, __m256i vlim, __m256i *below, __m256i *above, rast_fill_rule rule)
 {
-    __m256i *p = (__m256i *)(void *)z, x = _mm256_loadu_si256(p);
-    _mm256_storeu_si256(p, _mm256_setzero_si256());
+    const __m256i x = _mm256_loadu_si256((const __m256i *)(const void *)z);
     return rast__acc_x8(x, vw, vlim, below, above, rule);
-}
-
-/* rast__acc_apply's non-zero rule on 4 lanes of running sums (from 0) */
-__attribute__((target("avx2"), always_inline)) static inline __m256i rast__acc_nz4(__m256i v)
-{
-    const __m256i one = _mm256_set1_epi64x(QONE), neg = _mm256_cmpgt_epi64(_mm256_setzero_si256(), v);
-    v = _mm256_sub_epi64(_mm256_xor_si256(v, neg), neg);
-    return _mm256_blendv_epi8(v, one, _mm256_cmpgt_epi64(v, one));
 }
 
 /* Two columns' levels in the 4 rows of a band: the running sums s (of
@@ -954,12 +1022,12 @@ __attribute__((target("avx2"))) static uint32_t rast__acc_quad_avx2(uint64_t *re
     return big ? rast__acc_quad_in(cells, lo, hi, out, w, rule, 1) : rast__acc_quad_in(cells, lo, hi, out, w, rule, 0);
 }
 
-/* rast__acc_levels24's first 32 n cells and levels, 32 at a time: its
- * tie flag (nonzero: not certain) */
+/* rast__acc_levels24's first 32 n cells and levels, 32 at a time (the
+ * cells cleared when clear): its tie flag (nonzero: not certain) */
 __attribute__((target("avx2"))) static uint32_t rast__acc_levels24_avx2(uint32_t *restrict z,
                                                                        unsigned char *restrict row, size_t n,
                                                                        uint32_t w, uint32_t lim,
-                                                                       rast_fill_rule rule)
+                                                                       rast_fill_rule rule, int clear)
 {
     __m256i below = _mm256_setzero_si256(), above = below, y0, y1, y2, y3, p;
     const __m256i vw = _mm256_set1_epi32((int32_t)w), vlim = _mm256_set1_epi32((int32_t)lim);
@@ -969,6 +1037,12 @@ __attribute__((target("avx2"))) static uint32_t rast__acc_levels24_avx2(uint32_t
         y1 = rast__acc_lanes8(z + 8, vw, vlim, &below, &above, rule);
         y2 = rast__acc_lanes8(z + 16, vw, vlim, &below, &above, rule);
         y3 = rast__acc_lanes8(z + 24, vw, vlim, &below, &above, rule);
+        if (clear) {
+            _mm256_storeu_si256((__m256i *)(void *)z, _mm256_setzero_si256());
+            _mm256_storeu_si256((__m256i *)(void *)(z + 8), _mm256_setzero_si256());
+            _mm256_storeu_si256((__m256i *)(void *)(z + 16), _mm256_setzero_si256());
+            _mm256_storeu_si256((__m256i *)(void *)(z + 24), _mm256_setzero_si256());
+        }
         /* (the packs work within each half: the words put back in order) */
         p = _mm256_packus_epi16(_mm256_packs_epi32(y0, y1), _mm256_packs_epi32(y2, y3));
         _mm256_storeu_si256((__m256i *)(void *)row, _mm256_permutevar8x32_epi32(p, order));
@@ -977,8 +1051,19 @@ __attribute__((target("avx2"))) static uint32_t rast__acc_levels24_avx2(uint32_t
 }
 #endif
 
+/* z's word x cleared, when clear (size-optimised builds: rast__acc_level24
+ * clears it) */
+#if defined(__OPTIMIZE_SIZE__)
+#define RAST__ACC_CLEAR(clear, x) (void)(clear)
+#else
+#define RAST__ACC_CLEAR(clear, x) \
+    do {                          \
+        if (clear) (x) = 0;       \
+    } while (0)
+#endif
+
 RAST__HOT uint32_t rast__acc_levels24(uint32_t *restrict z, unsigned char *restrict row, int32_t lo,
-                                      int32_t hi, uint32_t w, rast_fill_rule rule)
+                                      int32_t hi, uint32_t w, rast_fill_rule rule, int clear)
 {
     const uint32_t lim = ((uint32_t)1 << 24) - 2 * w;
     uint32_t bad = 0;
@@ -989,7 +1074,7 @@ RAST__HOT uint32_t rast__acc_levels24(uint32_t *restrict z, unsigned char *restr
     row += lo;
 #ifdef RAST__ACC_AVX2
     if (n >= 32 && __builtin_cpu_supports("avx2")) {
-        bad = rast__acc_levels24_avx2(z, row, n, w, lim, rule);
+        bad = rast__acc_levels24_avx2(z, row, n, w, lim, rule, clear);
         z += n & ~(size_t)31;
         row += n & ~(size_t)31;
         n &= 31;
@@ -1008,16 +1093,43 @@ RAST__HOT uint32_t rast__acc_levels24(uint32_t *restrict z, unsigned char *restr
             y1 = rast__acc_lanes(z + 4, vw, vlim, &below, &above, rule);
             y2 = rast__acc_lanes(z + 8, vw, vlim, &below, &above, rule);
             y3 = rast__acc_lanes(z + 12, vw, vlim, &below, &above, rule);
+            if (clear) {
+                _mm_storeu_si128((__m128i *)(void *)z, _mm_setzero_si128());
+                _mm_storeu_si128((__m128i *)(void *)(z + 4), _mm_setzero_si128());
+                _mm_storeu_si128((__m128i *)(void *)(z + 8), _mm_setzero_si128());
+                _mm_storeu_si128((__m128i *)(void *)(z + 12), _mm_setzero_si128());
+            }
             _mm_storeu_si128((__m128i *)(void *)row, _mm_packus_epi16(_mm_packs_epi32(y0, y1), _mm_packs_epi32(y2, y3)));
         }
         bad |= (uint32_t)_mm_movemask_epi8(_mm_or_si128(_mm_srai_epi32(below, 31), above));
     }
 #else
     for (; n >= 16; n -= 16, z += 16, row += 16) /* 16 at a time: no tail loop to add */
-        for (i = 0; i < 16; i++) bad |= rast__acc_level24(z + i, row + i, w, lim, rule);
+        for (i = 0; i < 16; i++) {
+            bad |= rast__acc_level24(z + i, row + i, w, lim, rule);
+            RAST__ACC_CLEAR(clear, z[i]);
+        }
 #endif
-    for (i = 0; i < n; i++) bad |= rast__acc_level24(z + i, row + i, w, lim, rule);
+    for (i = 0; i < n; i++) {
+        bad |= rast__acc_level24(z + i, row + i, w, lim, rule);
+        RAST__ACC_CLEAR(clear, z[i]);
+    }
     return bad;
+}
+
+/* Does a row read [lo, hi) by its sums z (rast__acc_sum24,
+ * rast__acc_levels24)?  dense and m (255: uint8) as rast__acc_row's, win
+ * its window. */
+static inline int rast__acc_zpath(int dense, uint32_t m, int32_t lo, int32_t hi, rast_fill_rule rule, uint64_t win)
+{
+#if RAST__ACC_BIG24
+    (void)rule;
+    (void)win;
+    return dense && m == 255 && lo < hi;
+#else
+    /* (non-zero: n < 256; dense 2: every cell read, but not this way) */
+    return dense == 1 && m == 255 && lo < hi && (rule == RAST_RULE_EVENODD || win <= rast__acc_win(255, 255));
+#endif
 }
 
 /* Row y's levels from the cells in [lo, hi) (dense: all read; else those
@@ -1027,15 +1139,18 @@ RAST__HOT uint32_t rast__acc_levels24(uint32_t *restrict z, unsigned char *restr
  * a tie's flag (rast__acc_level's). */
 RAST__HOT uint64_t rast__acc_row(uint64_t *acc, int32_t sx, uint64_t *blk, uint32_t *z, unsigned char *row,
                                  int32_t lo, int32_t hi, int32_t w, int dense, rast_fill_rule rule, uint32_t m,
-                                 uint64_t win)
+                                 uint64_t win, int keep)
 {
     const rast_coverage_format f = m == 255 ? RAST_COVERAGE_U8 : RAST_COVERAGE_U16;
     uint64_t bad = 0, lev = 0, v = 0;
     uint16_t *r16 = (uint16_t *)(void *)row;
     int32_t k = lo, wi;
+#if defined(__OPTIMIZE_SIZE__)
+    keep = 0; /* (no pass reads them again there: rast__acc_ties_z is not built) */
+#endif
     rast__cov_fill(f, row, 0, lo, 0);
+    if (rast__acc_zpath(dense, m, lo, hi, rule, win)) {
 #if RAST__ACC_BIG24
-    if (dense && m == 255 && lo < hi) {
         /* (non-zero: big past n = 256, dense 2, or a window that wide;
          * w < 2^23 for n < RAST__ACC_MAXN) */
         if (rule == RAST_RULE_NONZERO && (dense == 2 || win > rast__acc_win(255, 255)))
@@ -1043,11 +1158,15 @@ RAST__HOT uint64_t rast__acc_row(uint64_t *acc, int32_t sx, uint64_t *blk, uint3
         else
             rast__acc_sum24(acc, z, lo, hi, sx, 0);
 #else
-    if (dense == 1 && m == 255 && lo < hi && (rule == RAST_RULE_EVENODD || win <= rast__acc_win(255, 255))) {
-        /* (non-zero: n < 256; dense 2: every cell read, but not this way) */
         rast__acc_sum24(acc, z, lo, hi, sx, 0);
 #endif
-        bad = rast__acc_levels24(z, row, lo, hi, (uint32_t)(win >> 27) + 256, rule);
+        /* (z cleared as read, but kept on a tie when asked: rast__acc_ties_z) */
+        if (!keep) {
+            bad = rast__acc_levels24(z, row, lo, hi, (uint32_t)(win >> 27) + 256, rule, 1);
+        } else {
+            bad = rast__acc_levels24(z, row, lo, hi, (uint32_t)(win >> 27) + 256, rule, 0);
+            if (!bad) memset(z + lo, 0, (size_t)(hi - lo) * sizeof(uint32_t));
+        }
         lev = row[hi - 1];
         k = hi;
     } else if (dense) { /* no branch on the cell: half of them are 0, at random */
@@ -1088,27 +1207,27 @@ RAST__HOT uint64_t rast__acc_row(uint64_t *acc, int32_t sx, uint64_t *blk, uint3
 /* rast__acc_row for uint8, one for each rule and spacing of the cells (a
  * lone row's, a band row's) */
 static uint64_t rast__acc_row_u8nz(uint64_t *acc, uint64_t *blk, uint32_t *z, unsigned char *row, int32_t lo,
-                                   int32_t hi, int32_t w, int dense, uint64_t win)
+                                   int32_t hi, int32_t w, int dense, uint64_t win RAST__ACC_KEEP_PARAM)
 {
-    return rast__acc_row(acc, 1, blk, z, row, lo, hi, w, dense, RAST_RULE_NONZERO, 255, win);
+    return rast__acc_row(acc, 1, blk, z, row, lo, hi, w, dense, RAST_RULE_NONZERO, 255, win, RAST__ACC_KEEP_IN);
 }
 
 static uint64_t rast__acc_row_u8eo(uint64_t *acc, uint64_t *blk, uint32_t *z, unsigned char *row, int32_t lo,
-                                   int32_t hi, int32_t w, int dense, uint64_t win)
+                                   int32_t hi, int32_t w, int dense, uint64_t win RAST__ACC_KEEP_PARAM)
 {
-    return rast__acc_row(acc, 1, blk, z, row, lo, hi, w, dense, RAST_RULE_EVENODD, 255, win);
+    return rast__acc_row(acc, 1, blk, z, row, lo, hi, w, dense, RAST_RULE_EVENODD, 255, win, RAST__ACC_KEEP_IN);
 }
 
 static uint64_t rast__acc_brow_u8nz(uint64_t *acc, uint64_t *blk, uint32_t *z, unsigned char *row, int32_t lo,
-                                    int32_t hi, int32_t w, int dense, uint64_t win)
+                                    int32_t hi, int32_t w, int dense, uint64_t win RAST__ACC_KEEP_PARAM)
 {
-    return rast__acc_row(acc, RAST__ACC_SX, blk, z, row, lo, hi, w, dense, RAST_RULE_NONZERO, 255, win);
+    return rast__acc_row(acc, RAST__ACC_SX, blk, z, row, lo, hi, w, dense, RAST_RULE_NONZERO, 255, win, RAST__ACC_KEEP_IN);
 }
 
 static uint64_t rast__acc_brow_u8eo(uint64_t *acc, uint64_t *blk, uint32_t *z, unsigned char *row, int32_t lo,
-                                    int32_t hi, int32_t w, int dense, uint64_t win)
+                                    int32_t hi, int32_t w, int dense, uint64_t win RAST__ACC_KEEP_PARAM)
 {
-    return rast__acc_row(acc, RAST__ACC_SX, blk, z, row, lo, hi, w, dense, RAST_RULE_EVENODD, 255, win);
+    return rast__acc_row(acc, RAST__ACC_SX, blk, z, row, lo, hi, w, dense, RAST_RULE_EVENODD, 255, win, RAST__ACC_KEEP_IN);
 }
 
 /* Are the edges ix[0..n) all vertical?  Then the sums of a row of their
@@ -1172,13 +1291,16 @@ RAST__APART uint32_t rast__acc_spread(rast__acc *a, int32_t w, int32_t *lo, int3
  * win: the window of the row's n parts, or, where a counts the parts per
  * 16 columns, that of the most of them (the counts cleared). */
 RAST__HOT int rast__acc_emit(rast__acc *a, int32_t sx, const rast__cov_out *o, int32_t y, rast_fill_rule rule,
-                          uint32_t m, uint64_t win, const rast__cedge *e, const int32_t *ix, int32_t n)
+                          uint32_t m, uint64_t win, const rast__cedge *e, const int32_t *ix, int32_t n, rast__acc_kept *keep)
 {
     unsigned char *row = rast__cov_row(o, y);
     const int32_t w = a->x1 - a->x0;
     const int dense = a->dense;
     uint64_t bad;
     int32_t lo = a->lo, hi = a->hi < w ? a->hi + 1 : w; /* [lo, hi) */
+#if defined(__OPTIMIZE_SIZE__)
+    (void)keep; /* (no sums kept there: rast__acc_ties_z is not built) */
+#endif
 #if !defined(__OPTIMIZE_SIZE__)
     if (a->cnt && a->spread) {
         win = rast__acc_win(rast__acc_spread(a, w, &lo, &hi), m);
@@ -1199,16 +1321,32 @@ RAST__HOT int rast__acc_emit(rast__acc *a, int32_t sx, const rast__cov_out *o, i
         if (dense && rule == RAST_RULE_NONZERO && n >= 256) a->dense = 2;
     }
     if (o->format != RAST_COVERAGE_U8)
-        bad = rast__acc_row(a->acc, sx, a->blk, a->z, row, lo, hi, w, a->dense, rule, m, win);
+        bad = rast__acc_row(a->acc, sx, a->blk, a->z, row, lo, hi, w, a->dense, rule, m, win, 0);
     else if (rule == RAST_RULE_NONZERO)
         bad = (sx == 1 ? rast__acc_row_u8nz : rast__acc_brow_u8nz)(a->acc, a->blk, a->z, row, lo, hi, w, a->dense,
-                                                                    win);
+                                                                    win RAST__ACC_KEEP_ARG(keep));
     else
         bad = (sx == 1 ? rast__acc_row_u8eo : rast__acc_brow_u8eo)(a->acc, a->blk, a->z, row, lo, hi, w, a->dense,
-                                                                    win);
+                                                                    win RAST__ACC_KEEP_ARG(keep));
     a->acc[w * sx] = 0;
     a->lo = INT32_MAX;
     a->hi = -1;
+#if !defined(__OPTIMIZE_SIZE__)
+    /* z[lo, hi) kept (rast__acc_row): where, and the window */
+    if (keep) keep->hi = -1;
+    if (bad && keep && rast__acc_zpath(a->dense, m, lo, hi, rule, win)) {
+        if (rast__acc_done(o, y, bad, e, ix, n)) { /* (all vertical: done, z cleared) */
+            memset(a->z + lo, 0, (size_t)(hi - lo) * sizeof(uint32_t));
+            a->dense = dense;
+            return 1;
+        }
+        keep->lo = lo;
+        keep->hi = hi;
+        keep->win = win;
+        a->dense = dense;
+        return 0;
+    }
+#endif
     a->dense = dense;
     return rast__acc_done(o, y, bad, e, ix, n);
 }
@@ -1356,7 +1494,7 @@ static int rast__acc_area_add(rast__acc *a, rast__cedge *e, const int32_t *row, 
         rast__acc_part(a, ed, -((int64_t)ed->yt - Yj) * ((int64_t)1 << a->hq), ed->qa, ed->qta,
                        ed->qb, ed->qtb, ed->dir, 1, 0);
     }
-    return rast__acc_emit(a, 1, o, j, rule, m, rast__acc_win((uint64_t)most, m), e, row, nrow);
+    return rast__acc_emit(a, 1, o, j, rule, m, rast__acc_win((uint64_t)most, m), e, row, nrow, NULL);
 }
 
 int rast__cov_acc_area_row(rast__cedge *e, const int32_t *row, int32_t nrow, const int32_t *runs,
@@ -1480,7 +1618,7 @@ static void rast__acc_by_rows(const rast__acc_walk *w, rast__acc *a)
                 for (k = 0; k < nrow; k++) rast__acc_row_part_in(a, &e[row[k]], j, (int64_t)e[row[k]].yt - Yj, 1, 1);
             else
                 for (k = 0; k < nrow; k++) rast__acc_row_part_in(a, &e[row[k]], j, (int64_t)e[row[k]].yt - Yj, 1, 0);
-            if (rast__acc_emit(a, 1, o, j, w->rule, m, rast__acc_win((uint64_t)nrow, m), e, row, nrow)) continue;
+            if (rast__acc_emit(a, 1, o, j, w->rule, m, rast__acc_win((uint64_t)nrow, m), e, row, nrow, NULL)) continue;
         }
         if (!exact) { /* the first exact row (rare) */
             memset(w->exact, 0, w->n);
@@ -1491,88 +1629,100 @@ static void rast__acc_by_rows(const rast__acc_walk *w, rast__acc *a)
     }
 }
 #else
-/* Row j's parts of the edges ix[0..n) into the cells of a (sx 1), as
- * rast__acc_row_part_in puts them, and the edges that go on below row j
- * copied to nx[], in order (returns how many).  A part in one column of
- * the clip (four in five of a line of text's) is put here, the row's
- * bounds lo, hi in registers (not moved when count: rast__acc_spread),
- * its two cells marked and counted as rast__acc_touch would (the column
- * and the next, the last of the clip at most); any other goes to
- * rast__acc_part.  count as rast__acc_part's, dense a->dense (constants
- * at each call: no test of either a part).  (From 79 instructions a part
- * to ~50 on the text family: the struct's fields reloaded after each
- * store, which may alias them, the clip tests of the general way, the
- * calls.) */
+/* e's part in row j (rel0 = e's top - the row's; from (xa, ta) to (xb,
+ * tb), rast__acc_ends') into the cells a (sx 1), the row's bounds in *lo,
+ * *hi (locals of the caller: registers), the cells' fields given (a's,
+ * read once by the caller: a store to a cell may alias them).  A part in
+ * one column of the clip (four in five of a line of text's) is put here,
+ * lo and hi not moved when count (rast__acc_spread), its two cells marked
+ * and counted as rast__acc_touch would (the column and the next, the last
+ * of the clip at most); one crossing one vertical inside the clip too;
+ * any other goes to rast__acc_part.  count as rast__acc_part's, dense
+ * a->dense (constants at each call: no test of either a part). */
+RAST__HOT void rast__acc_deposit(rast__acc *a, uint64_t *acc, uint64_t *blk, uint32_t *cnt, int32_t last, int64_t x0,
+                                 uint64_t w, rast__cedge *ed, int64_t rel0, int64_t xa, uint64_t ta, int64_t xb,
+                                 uint64_t tb, int32_t *lo, int32_t *hi, int count, int dense)
+{
+    const uint64_t fm = QT - 1;
+    const int32_t hq = a->hq;
+    const int64_t ca = rast__acc_col(xa) - x0, cb = rast__acc_col(xb) - x0;
+    if (ca == cb && (uint64_t)ca < w) {
+        const int32_t c0 = (int32_t)ca, c1 = c0 < last ? c0 + 1 : c0;
+        rast__acc_put(acc, ca, (uint64_t)xa & fm, (uint64_t)xb & fm, tb - ta, ed->dir < 0 ? ~(uint64_t)0 : 0, 1);
+        if (!count) { /* (counted: the counts have them, rast__acc_emit) */
+            *lo = c0 < *lo ? c0 : *lo;
+            *hi = c0 + 1 > *hi ? c0 + 1 : *hi;
+        }
+        if (!dense) {
+            blk[c0 >> 6] |= (uint64_t)1 << (c0 & 63);
+            blk[c1 >> 6] |= (uint64_t)1 << (c1 & 63);
+        }
+        if (count) cnt[c0 >> 4]++;
+    } else if ((cb - ca == 1 || ca - cb == 1) && (uint64_t)ca < w && (uint64_t)cb < w) {
+        /* one vertical crossed, inside the clip (most of the rest):
+         * rast__acc_part's two pieces, the column stepper there */
+        const int right = cb > ca;
+        const int32_t c0 = (int32_t)(right ? ca : cb), c1 = c0 + 1, c2 = c1 < last ? c1 + 1 : c1;
+        const uint64_t neg = ed->dir < 0 ? ~(uint64_t)0 : 0;
+        const uint32_t adx = (uint32_t)(ed->dx < 0 ? -ed->dx : ed->dx);
+        uint32_t qtr;
+        int64_t qt;
+        uint64_t tx;
+        if (ed->qX != c1 + x0) rast__acc_t_first(ed, c1 + x0, a);
+        qt = ed->qt + rel0 * ((int64_t)1 << hq);
+        tx = qt < (int64_t)ta ? ta : qt > (int64_t)tb ? tb : (uint64_t)qt;
+        rast__acc_put(acc, ca, (uint64_t)xa & fm, right ? QT : 0, tx - ta, neg, 1);
+        rast__acc_put(acc, cb, right ? 0 : QT, (uint64_t)xb & fm, tb - tx, neg, 1);
+        qtr = ed->qtr + ed->qtsr;
+        ed->qt += ed->qts + rast__acc_carry(&qtr, adx);
+        ed->qtr = qtr;
+        ed->qX += right ? 1 : -1;
+        if (!count) {
+            *lo = c0 < *lo ? c0 : *lo;
+            *hi = c1 + 1 > *hi ? c1 + 1 : *hi;
+        }
+        if (!dense) {
+            blk[c0 >> 6] |= (uint64_t)1 << (c0 & 63);
+            blk[c1 >> 6] |= (uint64_t)1 << (c1 & 63);
+            blk[c2 >> 6] |= (uint64_t)1 << (c2 & 63);
+        }
+        if (count) {
+            cnt[c0 >> 4]++;
+            cnt[c1 >> 4] += (uint32_t)((c1 >> 4) != (c0 >> 4));
+        }
+    } else {
+        a->lo = *lo;
+        a->hi = *hi;
+        rast__acc_part(a, ed, -rel0 * ((int64_t)1 << hq), xa, ta, xb, tb, ed->dir, 1, count);
+        *lo = a->lo;
+        *hi = a->hi;
+    }
+}
+
+/* Row j's parts of the edges ix[0..n) into the cells of a (sx 1)
+ * (rast__acc_deposit), and the edges that go on below row j copied to
+ * nx[], in order (returns how many).  count as rast__acc_part's, dense
+ * a->dense (constants at each call).  (From 79 instructions a part to ~50
+ * on the text family: the struct's fields reloaded after each store,
+ * which may alias them, the clip tests of the general way, the calls.) */
 RAST__HOT int32_t rast__acc_parts(rast__acc *a, rast__cedge *e, const int32_t *ix, int32_t n, int32_t *nx,
                                   int32_t j, int count, int dense)
 {
-    const int32_t p = a->p, hq = a->hq, last = a->last;
+    const int32_t p = a->p, last = a->last;
     const int64_t Yj = (int64_t)j * p, x0 = a->x0;
-    const uint64_t fm = QT - 1, w = (uint64_t)(a->x1 - a->x0);
+    const uint64_t w = (uint64_t)(a->x1 - a->x0);
     uint64_t *const acc = a->acc, *const blk = a->blk;
     uint32_t *const cnt = a->cnt;
     int32_t lo = a->lo, hi = a->hi, k, q = 0;
     for (k = 0; k < n; k++) {
         rast__cedge *const ed = &e[ix[k]];
         const int64_t rel0 = (int64_t)ed->yt - Yj;
-        int64_t xa, xb, ca, cb;
+        int64_t xa, xb;
         uint64_t ta, tb;
         nx[q] = ix[k];
         q += rel0 + ed->dy > p; /* (it ends below row j) */
         rast__acc_ends(ed, j, rel0, a, &xa, &ta, &xb, &tb);
-        ca = rast__acc_col(xa) - x0;
-        cb = rast__acc_col(xb) - x0;
-        if (ca == cb && (uint64_t)ca < w) {
-            const int32_t c0 = (int32_t)ca, c1 = c0 < last ? c0 + 1 : c0;
-            rast__acc_put(acc, ca, (uint64_t)xa & fm, (uint64_t)xb & fm, tb - ta, ed->dir < 0 ? ~(uint64_t)0 : 0, 1);
-            if (!count) { /* (counted: the counts have them, rast__acc_emit) */
-                lo = c0 < lo ? c0 : lo;
-                hi = c0 + 1 > hi ? c0 + 1 : hi;
-            }
-            if (!dense) {
-                blk[c0 >> 6] |= (uint64_t)1 << (c0 & 63);
-                blk[c1 >> 6] |= (uint64_t)1 << (c1 & 63);
-            }
-            if (count) cnt[c0 >> 4]++;
-        } else if ((cb - ca == 1 || ca - cb == 1) && (uint64_t)ca < w && (uint64_t)cb < w) {
-            /* one vertical crossed, inside the clip (most of the rest):
-             * rast__acc_part's two pieces, the column stepper there */
-            const int right = cb > ca;
-            const int32_t c0 = (int32_t)(right ? ca : cb), c1 = c0 + 1, c2 = c1 < last ? c1 + 1 : c1;
-            const uint64_t neg = ed->dir < 0 ? ~(uint64_t)0 : 0;
-            const uint32_t adx = (uint32_t)(ed->dx < 0 ? -ed->dx : ed->dx);
-            uint32_t qtr;
-            int64_t qt;
-            uint64_t tx;
-            if (ed->qX != c1 + x0) rast__acc_t_first(ed, c1 + x0, a);
-            qt = ed->qt + rel0 * ((int64_t)1 << hq);
-            tx = qt < (int64_t)ta ? ta : qt > (int64_t)tb ? tb : (uint64_t)qt;
-            rast__acc_put(acc, ca, (uint64_t)xa & fm, right ? QT : 0, tx - ta, neg, 1);
-            rast__acc_put(acc, cb, right ? 0 : QT, (uint64_t)xb & fm, tb - tx, neg, 1);
-            qtr = ed->qtr + ed->qtsr;
-            ed->qt += ed->qts + rast__acc_carry(&qtr, adx);
-            ed->qtr = qtr;
-            ed->qX += right ? 1 : -1;
-            if (!count) {
-                lo = c0 < lo ? c0 : lo;
-                hi = c1 + 1 > hi ? c1 + 1 : hi;
-            }
-            if (!dense) {
-                blk[c0 >> 6] |= (uint64_t)1 << (c0 & 63);
-                blk[c1 >> 6] |= (uint64_t)1 << (c1 & 63);
-                blk[c2 >> 6] |= (uint64_t)1 << (c2 & 63);
-            }
-            if (count) {
-                cnt[c0 >> 4]++;
-                cnt[c1 >> 4] += (uint32_t)((c1 >> 4) != (c0 >> 4));
-            }
-        } else {
-            a->lo = lo;
-            a->hi = hi;
-            rast__acc_part(a, ed, -rel0 * ((int64_t)1 << hq), xa, ta, xb, tb, ed->dir, 1, count);
-            lo = a->lo;
-            hi = a->hi;
-        }
+        rast__acc_deposit(a, acc, blk, cnt, last, x0, w, ed, rel0, xa, ta, xb, tb, &lo, &hi, count, dense);
     }
     a->lo = lo;
     a->hi = hi;
@@ -1681,6 +1831,148 @@ static int rast__acc_ties(rast__acc *a, const rast__acc_walk *w, rast__cedge *e,
     return 1;
 }
 
+/* e's abscissa at the top of row j, which it starts above, as
+ * rast__acc_parts leaves its row stepper (at row j, or at row j + 1 if e
+ * goes on below): there one step back (the remainder's borrow), no
+ * division; *rem its remainder (0: exact). */
+static inline int64_t rast__acc_top_back(rast__cedge *e, int32_t j, const rast__acc *a, uint32_t *rem)
+{
+    int64_t x;
+    if (e->qrow == j + 1) {
+        const uint32_t borrow = e->qxr < e->qxsr;
+        x = e->qx - e->qxs - (int64_t)borrow;
+        *rem = e->qxr - e->qxsr + ((uint32_t)e->dy & (0u - borrow));
+        return x;
+    }
+    x = rast__acc_top(e, j, a);
+    *rem = e->qxr;
+    return x;
+}
+
+/* Do any of the blocks of 16 columns b0 .. b1 hold a pixel not certain
+ * (flag[b] not 0)? */
+static inline int rast__acc_flagged(const uint32_t *flag, int32_t b0, int32_t b1)
+{
+    if (b1 - b0 <= 1) return (flag[b0] | flag[b1]) != 0; /* (most parts: one block or two) */
+    for (; b0 <= b1; b0++)
+        if (flag[b0]) return 1;
+    return 0;
+}
+
+/* rast__acc_ties_z's part of e from (xa, ta) to (xb, tb), in a flagged
+ * block: into the cells as rast__acc_ties puts it, its columns c0 .. c1
+ * (those of the clip) marked in ib when not exact (ex: its ends are), and
+ * counted in a->cnt for each 16 of them.
+ * (Out of line: the loop keeps its registers for the other parts.) */
+RAST__APART void rast__acc_tie_part(rast__acc *a, rast__cedge *e, int64_t off, int64_t xa, uint64_t ta, int64_t xb,
+                                    uint64_t tb, int64_t c0, int64_t c1, int ex)
+{
+    const uint64_t fm = QT - 1;
+    const int64_t ca = rast__acc_col(xa) - a->x0, cb = rast__acc_col(xb) - a->x0;
+    int64_t b;
+    for (b = c0 >> 4; b <= c1 >> 4; b++) a->cnt[b]++; /* (rast__acc_count's) */
+    if (ca == cb) {
+        const uint64_t fs = ((uint64_t)xa & fm) + ((uint64_t)xb & fm);
+        rast__acc_put(a->acc, ca, (uint64_t)xa & fm, (uint64_t)xb & fm, tb - ta, e->dir < 0 ? ~(uint64_t)0 : 0, 1);
+        if (!ex || ((fs * (tb - ta)) & 1023)) a->blk[ca >> 6] |= (uint64_t)1 << (ca & 63);
+    } else {
+        rast__acc_part(a, e, off, xa, ta, xb, tb, e->dir, 1, 0);
+        rast__acc_cols_mark(a->blk, c0, c1, a->last);
+    }
+}
+
+/* rast__acc_ties for a uint8 row read by its sums z (rast__acc_zpath),
+ * which rast__acc_emit kept (kept, its keep): only the
+ * pixels of the blocks of 16 columns where a level was not certain are
+ * decided again.  Their blocks come from z (the same test); z is cleared
+ * on the way and the blocks' flags put in z[b] (b <= the column read).
+ * Each part that touches no such block is put whole (its height's cover)
+ * at its first column (the sums from its last column + 1 on are the same:
+ * the cover is what its cells add up to; those of its columns are not
+ * read), any other as rast__acc_ties puts it, its columns marked when not
+ * exact; then the running sums, from the row's first cell, give the
+ * flagged blocks' pixels again (and the fill right of the last, if its
+ * block is flagged), the others left as the first pass wrote them.  The
+ * steppers: the ends from where the first pass left them (no division,
+ * rast__acc_top_back).  (A paragraph of text: 27 rows of 120 with a pixel
+ * at an exact tie, a stem's side on a half pixel; every part of them
+ * walked again cost a fifth of its instructions.) */
+static int rast__acc_ties_z(rast__acc *a, const rast__acc_walk *w, rast__cedge *e, const int32_t *ix, int32_t n,
+                            int32_t j, rast__acc_kept *kept)
+{
+    const int32_t p = a->p, hq = a->hq, last = a->last, wd = w->width, lo = kept->lo, hi = kept->hi;
+    const int64_t Yj = (int64_t)j * p, x0 = a->x0;
+    const uint32_t w24 = (uint32_t)(kept->win >> 27) + 256, lim = ((uint32_t)1 << 24) - 2 * w24;
+    uint32_t *const flag = a->z;
+    uint64_t *const acc = a->acc, *const ib = a->blk, bad = 0, lev = 0, v = 0;
+    unsigned char *const row = rast__cov_row(w->o, j);
+    int32_t k, kk;
+    unsigned char out;
+    for (k = lo; k < hi; k++) { /* (flag[k >> 4], k >> 4 <= k: read already) */
+        uint32_t zk = flag[k];
+        const uint32_t t = rast__acc_level24(&zk, &out, w24, lim, w->rule);
+        flag[k] = 0;
+        flag[k >> 4] |= t;
+    }
+    kept->hi = -1;
+    a->dense = 1; /* (rast__acc_part marks no bit: ib[] is this pass's) */
+    a->cnt = a->z + wd; /* (rast__acc_tie_part counts: cleared, as the first pass left them) */
+    for (kk = 0; kk < n; kk++) {
+        rast__cedge *const ed = &e[ix[kk]];
+        const int64_t rel0 = (int64_t)ed->yt - Yj, rel1 = rel0 + ed->dy;
+        const uint64_t neg = ed->dir < 0 ? ~(uint64_t)0 : 0;
+        int64_t xa, xb, c0, c1;
+        uint64_t ta, tb;
+        uint32_t rem = 0;
+        int exact = 1;
+        if (rel0 > 0) {
+            ta = (uint64_t)rel0 << hq;
+            xa = (int64_t)ed->xt * ((int64_t)1 << hq);
+        } else {
+            ta = 0;
+            xa = rast__acc_top_back(ed, j, a, &rem);
+            exact = rem == 0;
+        }
+        if (rel1 < p) {
+            tb = (uint64_t)rel1 << hq;
+            xb = ((int64_t)ed->xt + ed->dx) * ((int64_t)1 << hq);
+        } else {
+            tb = QT;
+            xb = rast__acc_top(ed, j + 1, a);
+            exact &= ed->qxr == 0;
+        }
+        c0 = rast__acc_col(xa < xb ? xa : xb) - x0;
+        c1 = rast__acc_col(xa < xb ? xb : xa) - x0;
+        if (c0 >= wd) continue; /* (right of the clip: nothing) */
+        c0 = c0 < 0 ? 0 : c0;
+        c1 = c1 > last ? last : c1;
+        if (c1 < 0 || !rast__acc_flagged(flag, (int32_t)c0 >> 4, (int32_t)c1 >> 4))
+            acc[c0] += (((tb - ta) << 21) ^ neg) - neg;
+        else /* (a flagged block: a single column's ca is c0, inside the clip) */
+            rast__acc_tie_part(a, ed, -rel0 * ((int64_t)1 << hq), xa, ta, xb, tb, c0, c1, exact);
+    }
+    for (k = lo; k < hi; k++) {
+        v += acc[k];
+        acc[k] = 0;
+        if (flag[k >> 4]) {
+            lev = rast__acc_level((int64_t)v, w->rule, 255,
+                                  (ib[k >> 6] >> (k & 63)) & 1 ? rast__acc_win(a->cnt[k >> 4], 255) : 0, &bad);
+            row[k] = (unsigned char)lev;
+        }
+    }
+    if (flag[(hi - 1) >> 4]) rast__cov_fill(RAST_COVERAGE_U8, row, hi, wd, lev);
+    acc[wd] = 0;
+    for (k = 0; k <= (hi - 1) >> 4; k++) flag[k] = 0;
+    for (k = 0; k <= last >> 4; k++) a->cnt[k] = 0;
+    a->cnt = NULL;
+    for (k = 0; k <= last >> 6; k++) ib[k] = 0;
+    a->lo = INT32_MAX;
+    a->hi = -1;
+    if (bad) return 0;
+    rast__cov_row_done(w->o, j);
+    return 1;
+}
+
 /* Row ja to jb one at a time, each edge's part deposited as it comes, into
  * the cells of a (the short edges' walk).  The row's edges are in cur[]
  * (w->row); those that go on below it are copied to nxt[] (w->tmp) as the
@@ -1698,6 +1990,7 @@ static void rast__acc_by_rows(const rast__acc_walk *w, rast__acc *a)
     int32_t nrow = 0, j, k, q;
     uint32_t next = 0, *const cnt = a->z + w->width; /* (in area[], after z[]: cleared) */
     int exact = 0, done; /* w->exact[] cleared */
+    rast__acc_kept kept; /* (a tie's row of many parts: rast__acc_ties_z) */
     for (j = w->ja; j < w->jb; j++) {
         for (; next < w->n && key[order[next]] + w->ja <= j; next++)
             if (last[order[next]] >= j) cur[nrow++] = order[next];
@@ -1718,8 +2011,10 @@ static void rast__acc_by_rows(const rast__acc_walk *w, rast__acc *a)
                 q = a->dense ? rast__acc_parts(a, e, cur, nrow, nxt, j, 0, 1)
                              : rast__acc_parts(a, e, cur, nrow, nxt, j, 0, 0);
             a->spread = a->cnt != NULL;
-            done = rast__acc_emit(a, 1, o, j, w->rule, m, rast__acc_win((uint64_t)nrow, m), e, cur, nrow) ||
-                   rast__acc_ties(a, w, e, cur, nrow, j);
+            done = rast__acc_emit(a, 1, o, j, w->rule, m, rast__acc_win((uint64_t)nrow, m), e, cur, nrow,
+                                  a->cnt ? &kept : NULL) ||
+                   (a->cnt && kept.hi >= 0 ? rast__acc_ties_z(a, w, e, cur, nrow, j, &kept)
+                                           : rast__acc_ties(a, w, e, cur, nrow, j));
         } else {
             for (k = 0, q = 0; k < nrow; k++)
                 if (last[cur[k]] > j) nxt[q++] = cur[k];
@@ -1738,6 +2033,7 @@ static void rast__acc_by_rows(const rast__acc_walk *w, rast__acc *a)
         nrow = q;
     }
 }
+
 #endif
 
 #if !defined(__OPTIMIZE_SIZE__)
@@ -1761,7 +2057,7 @@ static int rast__acc_again(rast__acc *a, const rast__acc_walk *w, int32_t j, int
     a->cnt = a->z + w->width;
     for (k = 0; k < q; k++)
         rast__acc_row_part_in(a, &e[w->tmp[k]], j, (int64_t)e[w->tmp[k]].yt - Yj, RAST__ACC_SX, 1);
-    done = rast__acc_emit(a, RAST__ACC_SX, w->o, j, w->rule, w->m, 0, e, w->tmp, q);
+    done = rast__acc_emit(a, RAST__ACC_SX, w->o, j, w->rule, w->m, 0, e, w->tmp, q, NULL);
     a->cnt = NULL;
     return done;
 }
@@ -1853,7 +2149,7 @@ RAST__APART void rast__acc_by_bands(const rast__acc_walk *w, rast__acc *v)
             /* (on a tie, the band's edges all vertical will do) */
             if (ok[r] && (quad ? rast__acc_done(o, j, (qbad >> r) & 1, e, row, nrow)
                                : rast__acc_emit(&v[r], RAST__ACC_SX, o, j, w->rule, m,
-                                                rast__acc_win((uint64_t)cnt[r], m), e, row, nrow)))
+                                                rast__acc_win((uint64_t)cnt[r], m), e, row, nrow, NULL)))
                 continue;
             for (k = 0, q = 0; k < nrow; k++) /* the row's edges */
                 if (key[row[k]] + ja <= j && last[row[k]] >= j) w->tmp[q++] = row[k];

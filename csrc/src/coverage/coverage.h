@@ -28,8 +28,8 @@ int rast__cov_plain(const rast_polygon *poly, uint32_t npoints, rast__arena aren
  * part is plain (the accumulation gives the exact coverage); else 0, and
  * the edges of the plain parts marked RAST__HZ_PLAIN (rast__cedge.hz: a
  * row of marked edges only may go by the accumulation).  Scratch from a
- * copy of the arena: about npoints * 36 + nrings * 56 bytes.  Not in
- * size-optimised builds. */
+ * copy of the arena: about nrings * 64 bytes and 36 a point of the
+ * largest part tested.  Not in size-optimised builds. */
 #define RAST__HZ_PLAIN 0x40000000
 int rast__cov_plain_parts(const rast_polygon *poly, uint32_t npoints, rast__arena arena, int32_t sb,
                           rast__cedge *e, uint32_t nedges);

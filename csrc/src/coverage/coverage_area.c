@@ -2722,9 +2722,9 @@ rast_status rast__cov_area(rast__cedge *e, uint32_t n, int32_t s, rast_fill_rule
     rast__cov_rows(e, n, c.p, order, o, &ja, &jb, RAST__SHORTCUTS); /* (the exact steps when needed: above) */
     for (k = 0; RAST__SHORTCUTS && k < (int32_t)n; k++) {
         e[k].xsr = -1;
-        plain |= e[k].hz & RAST__HZ_PLAIN;
+        plain |= e[k].hz;
     }
-    plain = plain && simple;
+    plain = RAST__SHORTCUTS && simple && (plain & RAST__HZ_PLAIN);
     rast__cov_sort_tops(order, row, sw.live, e, n); /* (row and live: room until the rows) */
     nlive = rast__cov_cancel(order, e, n, row); /* (row: room until the rows) */
     if (grouped) { /* the runs, by ordinate (wb and h: room until the rows) */
@@ -2753,7 +2753,7 @@ rast_status rast__cov_area(rast__cedge *e, uint32_t n, int32_t s, rast_fill_rule
                 if (yb > Yj) {
                     row[m++] = row[k];
                     if (yb < bottom) bottom = yb;
-                    unplain += RAST__SHORTCUTS && !(e[row[k]].hz & RAST__HZ_PLAIN);
+                    if (plain) unplain += !(e[row[k]].hz & RAST__HZ_PLAIN);
                 }
             }
             same = m == nrow;
@@ -2765,7 +2765,7 @@ rast_status rast__cov_area(rast__cedge *e, uint32_t n, int32_t s, rast_fill_rule
                 row[nrow++] = order[next];
                 if (yb < bottom) bottom = yb;
                 same = 0;
-                unplain += RAST__SHORTCUTS && !(e[order[next]].hz & RAST__HZ_PLAIN);
+                if (plain) unplain += !(e[order[next]].hz & RAST__HZ_PLAIN);
             }
             next++;
         }

@@ -2701,6 +2701,27 @@ static void rast__cov_row_acc(rast__cells *c, rast__cedge *e, const int32_t *row
     rast__area_exact(c, e, row, nrow, j, 0);
 }
 
+#if RAST__SHORTCUTS
+/* A row whose edges are all marked RAST__HZ_PLAIN (rast__cov_plain_parts:
+ * edges of plain parts of the polygon, whose pixels each see one part's
+ * winding numbers, 0 and its sign): the accumulation of its parts, the
+ * rule applied, is its coverage, with no test (the simple rows' cells,
+ * coverage_acc.c, every part whole with its direction; the window of the
+ * row's nrow parts).  1 when done; 0 when those cells cannot decide a
+ * level (nothing handed on: the row goes the usual way). */
+static int rast__cov_row_plain(rast__cells *c, rast__cedge *e, const int32_t *row, int32_t nrow, int32_t j,
+                               rast_fill_rule rule)
+{
+    int32_t k;
+    for (k = 0; k < nrow; k++) {
+        rast__cedge *ed = &e[row[k]];
+        rast__q_part(ed, j, c, &ed->qa, &ed->qta, &ed->qb, &ed->qtb);
+    }
+    return rast__cov_acc_area_parts(e, row, nrow, nrow, j, G - c->h, rule, c->o, (uint64_t *)(void *)c->cover,
+                                    c->bits, (uint32_t *)(void *)c->area);
+}
+#endif
+
 /* Column of abscissa x (fixed units, P = 2^s a pixel): floor(x / P). */
 static int64_t rast__cov_col_of(int64_t x, int32_t s)
 {
@@ -2765,6 +2786,11 @@ rast_status rast__cov_area(rast__cedge *e, uint32_t n, int32_t s, rast_fill_rule
      * quick units, which need S <= 16; its cells the exact ones where the
      * output has no quick way */
     const int grouped = !accumulate && s >= 0 && s <= 16;
+    /* rows of marked edges only by the accumulation (rast__cov_row_plain):
+     * plain, when the polygon's plain parts are marked; unplain, how many
+     * of the row's edges are not */
+    int plain = 0;
+    int32_t unplain = 0;
 
     rast__cov_narrow(e, n, s, &on);
     width = on.clip.x1 - on.clip.x0;
@@ -2794,7 +2820,11 @@ rast_status rast__cov_area(rast__cedge *e, uint32_t n, int32_t s, rast_fill_rule
         return RAST_OK;
     }
     rast__cov_rows(e, n, c.p, order, o, &ja, &jb, RAST__SHORTCUTS); /* (the exact steps when needed: above) */
-    for (k = 0; RAST__SHORTCUTS && k < (int32_t)n; k++) e[k].xsr = -1;
+    for (k = 0; RAST__SHORTCUTS && k < (int32_t)n; k++) {
+        e[k].xsr = -1;
+        plain |= e[k].hz;
+    }
+    plain = RAST__SHORTCUTS && simple && (plain & RAST__HZ_PLAIN);
     rast__cov_sort_tops(order, row, sw.live, e, n); /* (row and live: room until the rows) */
     nlive = rast__cov_cancel(order, e, n, row); /* (row: room until the rows) */
     if (grouped) { /* the runs, by ordinate (wb and h: room until the rows) */
@@ -2817,11 +2847,13 @@ rast_status rast__cov_area(rast__cedge *e, uint32_t n, int32_t s, rast_fill_rule
         same = 1;
         if (bottom <= Yj) {
             bottom = INT64_MAX;
+            unplain = 0;
             for (k = 0, m = 0; k < nrow; k++) {
                 const int64_t yb = (int64_t)e[row[k]].yt + e[row[k]].dy;
                 if (yb > Yj) {
                     row[m++] = row[k];
                     if (yb < bottom) bottom = yb;
+                    if (plain) unplain += !(e[row[k]].hz & RAST__HZ_PLAIN);
                 }
             }
             same = m == nrow;
@@ -2833,6 +2865,7 @@ rast_status rast__cov_area(rast__cedge *e, uint32_t n, int32_t s, rast_fill_rule
                 row[nrow++] = order[next];
                 if (yb < bottom) bottom = yb;
                 same = 0;
+                if (plain) unplain += !(e[order[next]].hz & RAST__HZ_PLAIN);
             }
             next++;
         }
@@ -2842,6 +2875,12 @@ rast_status rast__cov_area(rast__cedge *e, uint32_t n, int32_t s, rast_fill_rule
         if (nrow) {
             if (accumulate) {
                 rast__cov_row_acc(&c, e, row, nrow, j);
+#if RAST__SHORTCUTS
+            } else if (plain && !unplain && rast__cov_row_plain(&c, e, row, nrow, j, rule)) {
+                fast = 0;
+                unsimple = 0;
+                c.emitted = 1;
+#endif
             } else if (fast && same && rast__cov_row_cont(&c, e, row, nrow, j, fast)) {
                 /* done: the fast row's continuation, the cheapest test */
             } else if (simple && !(unsimple && (same || (RAST__SHORTCUTS && nrow > RAST__FAST_CUTS && (j & 3)))) &&

@@ -211,8 +211,16 @@ static int rast__cov_convex(const rast_polygon *poly)
     return turn != 0 && flips == 2;
 }
 #define RAST__COV_CONVEX(poly) rast__cov_convex(poly)
+/* Where the whole polygon's test does not pay (short edges: text, a row
+ * or two each), the test part by part (coverage_plain.c), whose cost is
+ * about linear in the vertices: 1 when every part is plain; else the
+ * plain parts' edges marked for rast__cov_area's rows (a polygon of
+ * several rings). */
+#define RAST__COV_PARTS(poly, npoints, arena, s, e, n) \
+    ((poly)->nrings >= 2 && rast__cov_plain_parts(poly, npoints, arena, s, e, n))
 #else
 #define RAST__COV_CONVEX(poly) 0 /* (size-optimised: the plain test's way only) */
+#define RAST__COV_PARTS(poly, npoints, arena, s, e, n) 0
 #endif
 
 static rast_status rast__cov_run(const rast_polygon *poly, const rast_point *tris, uint32_t ntris,
@@ -238,7 +246,8 @@ static rast_status rast__cov_run(const rast_polygon *poly, const rast_point *tri
         if (!tris && rast__cov_acc_may(o, s) &&
             (RAST__IS_ACC(opts->method) ||
              RAST__COV_CONVEX(poly) ||
-             (rast__cov_plain_pays(e, n, s, npoints) && rast__cov_plain(poly, npoints, arena))))
+             (rast__cov_plain_pays(e, n, s, npoints) ? rast__cov_plain(poly, npoints, arena)
+                                                     : RAST__COV_PARTS(poly, npoints, arena, s, e, n))))
             /* (16 rings or more of 8 vertices or fewer on the mean: a
              * mesh's, whose shared sides cancel first) */
             return RAST__IS_ACC(opts->method) && poly->nrings >= 16 &&

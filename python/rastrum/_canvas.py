@@ -1730,6 +1730,30 @@ def _blend_rgba(color, fmt):
 
 
 def _blend_args(color, opacity, fmt, entry, gamma=None):
+    """_made_blend_args, remembered for a colour of plain values (an int, a
+    str, a tuple of ints), a float or no opacity and a str, float or no
+    gamma: the exact level of an opacity (fractions) and the colour's
+    parse were half of a small translucent fill's call (issue 34).  The
+    cdata it returns are only read (const in C); errors are not
+    remembered, so each call raises its own message."""
+    tc = type(color)
+    if (tc is int or tc is str or (tc is tuple and all(type(v) is int for v in color))) \
+            and (opacity is None or type(opacity) is float) \
+            and (gamma is None or type(gamma) is str or type(gamma) is float):
+        key = (color, opacity, fmt, gamma)
+        got = _BLEND_ARGS.get(key)
+        if got is None:
+            got = _made_blend_args(color, opacity, fmt, entry, gamma)
+            if len(_BLEND_ARGS) < 256:
+                _BLEND_ARGS[key] = got
+        return got
+    return _made_blend_args(color, opacity, fmt, entry, gamma)
+
+
+_BLEND_ARGS: Dict[Any, Any] = {}
+
+
+def _made_blend_args(color, opacity, fmt, entry, gamma=None):
     """(blend, color): blend None for a colour painted as a value (no
     opacity or gamma given, and alpha 255 or a format whose alpha is
     stored), with `color` less its alpha 255 if it had one; else (RGBA

@@ -107,7 +107,7 @@ def whole_canvas_path(monkeypatch):
     monkeypatch.setattr(_canvas, "_blend_box", lambda *a: False)
 
 
-@settings(max_examples=S_.examples(60), deadline=None)
+@settings(max_examples=S_.examples(150), deadline=None)
 @given(cases())
 def test_box_blend_is_the_whole_canvas_blend(case):
     fmt, shape, tris, geom, aa, kw, color, opacity, gamma, seed = case

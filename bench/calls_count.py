@@ -20,6 +20,7 @@ import numpy as np
 
 HEXA = np.array([[10.3, 5.2], [20.1, 8.7], [22.4, 18.2], [14.2, 24.9], [6.1, 19.3], [4.4, 11.1]])
 HEXA32 = np.round(HEXA).astype(np.int32)
+TRIS = np.array([[HEXA[0], HEXA[1], HEXA[2]], [HEXA[0], HEXA[2], HEXA[4]]])
 
 
 def cases():
@@ -40,6 +41,11 @@ def cases():
         "fill_tuples": lambda: canvas.fill_polygon(tup, 255),
         "fill_nonzero": lambda: canvas.fill_polygon(HEXA, 255, rule="nonzero"),
         "fill_opacity": lambda: canvas.fill_polygon(HEXA, 255, opacity=0.5),
+        "fill_opacity_area": lambda: canvas.fill_polygon(HEXA, 255, opacity=0.5, aa="area"),
+        "fill_opacity_accumulate": lambda: canvas.fill_polygon(HEXA, 255, opacity=0.5, aa="accumulate"),
+        "fill_opacity_ss4": lambda: canvas.fill_polygon(HEXA, 255, opacity=0.5, aa="ss4"),
+        "tris_opacity": lambda: canvas.fill_triangles(TRIS, 255, opacity=0.5),
+        "tris_opacity_area": lambda: canvas.fill_triangles(TRIS, 255, opacity=0.5, aa="area"),
         "loop_binary": lambda: [canvas.fill_polygon(r, 255, rule="nonzero") for r in loop],
         "loop_accumulate": lambda: [canvas.fill_polygon(r, 255, rule="nonzero", aa="accumulate") for r in loop],
         "loop_ss4": lambda: [canvas.fill_polygon(r, 255, rule="nonzero", aa="ss4") for r in loop],

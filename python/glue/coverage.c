@@ -8,6 +8,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include "coverage.h"
+#include "blend.h"
 
 static const int32_t rastpy_cov_size[3] = {1, 2, 8};
 
@@ -22,57 +23,16 @@ typedef struct rastpy_cov_dest {
     const void *pixel;
     const uint8_t *colors;
     const rast_shade_opts *shade;
-    const rast_blend_opts *blend; /* shaded: blended (rast_fill_triangles_shaded_aa_blend) */
+    const rast_blend_opts *blend; /* shaded: blended (rast_fill_triangles_shaded_aa_blend);
+                                     with rgba, the blend's options */
+    const uint8_t *rgba;          /* not NULL: `rgba` blended through the uint8 coverage
+                                     (rastpy_blend_window), colors NULL */
+    const rast_gamma *gamma;      /* with rgba: linear light, or NULL */
 } rastpy_cov_dest;
 
 /* Points of a call snapped on the stack (else malloc): a small polygon's
  * call then takes only its scratch. */
 #define RASTPY_COV_LOCAL_POINTS 256
-
-/* The part of `clip` where a fill of the snapped points pts[0 .. n) can
- * paint: their box in pixels (subpixel_bits s), widened by a pixel on each
- * side, cut to the clip.  A pixel's coverage comes from the part of the
- * shape inside that pixel's square (its samples too lie in it,
- * docs/semantics.md), so every pixel outside the box has coverage 0 and a
- * painter leaves it untouched: the fill cut to it paints the same pixels,
- * and its rows, scratch and scans grow with the shape's box, not with the
- * target (400 tiny polygons, each its own call on a 512 x 512 canvas,
- * scanned 512 columns a row each).  n = 0: an empty rectangle. */
-static rast_rect rastpy_cov_cut(const rast_rect *clip, const int32_t *pts, uint32_t n, int s)
-{
-    rast_rect b = *clip;
-    int32_t x0, y0, x1, y1;
-    uint32_t i;
-    if (n == 0) {
-        b.x1 = b.x0;
-        b.y1 = b.y0;
-        return b;
-    }
-    x0 = x1 = pts[0];
-    y0 = y1 = pts[1];
-    for (i = 1; i < n; i++) {
-        int32_t x = pts[2 * i], y = pts[2 * i + 1];
-        if (x < x0) x0 = x;
-        if (x > x1) x1 = x;
-        if (y < y0) y0 = y;
-        if (y > y1) y1 = y;
-    }
-    /* floor(v / 2^s) of |v| <= RAST_COORD_MAX, without a shift of a
-     * negative value (implementation-defined in C99) */
-#define RASTPY_FLOOR_PX(v) ((v) >= 0 ? (v) >> s : -((-(v) - 1) >> s) - 1)
-    x0 = RASTPY_FLOOR_PX(x0) - 1;
-    y0 = RASTPY_FLOOR_PX(y0) - 1;
-    x1 = RASTPY_FLOOR_PX(x1) + 2;
-    y1 = RASTPY_FLOOR_PX(y1) + 2;
-#undef RASTPY_FLOOR_PX
-    if (x0 > b.x0) b.x0 = x0;
-    if (y0 > b.y0) b.y0 = y0;
-    if (x1 < b.x1) b.x1 = x1;
-    if (y1 < b.y1) b.y1 = y1;
-    if (b.x1 < b.x0) b.x1 = b.x0;
-    if (b.y1 < b.y0) b.y1 = b.y0;
-    return b;
-}
 
 /* The scratch the call of rastpy_coverage needs for `clip`. */
 static rast_status rastpy_cov_need(const rastpy_cov_dest *d, const rast_coverage_opts *opts,
@@ -120,6 +80,7 @@ static long rastpy_coverage(const rastpy_cov_dest *d, const double *xy, uint32_t
     rast_rect c;
     ptrdiff_t stride = 0;
     int late;
+    size_t head = 0, total; /* a blend's window: `total` bytes, its coverage from `head` */
     if (!d->target) {
         if (d->format < 0 || d->format > 2) return RAST_E_ARG;
         stride = (ptrdiff_t)(d->clip.x1 - d->clip.x0) * rastpy_cov_size[d->format];
@@ -148,15 +109,9 @@ static long rastpy_coverage(const rastpy_cov_dest *d, const double *xy, uint32_t
         /* A target is painted only where the coverage is not 0: its clip
          * (cut to the target, as the core cuts it) cut to the points' box,
          * and the scratch that needs. */
-        c = d->target->clip;
-        if (c.x0 < 0) c.x0 = 0;
-        if (c.y0 < 0) c.y0 = 0;
-        if (c.x1 > d->target->width) c.x1 = d->target->width;
-        if (c.y1 > d->target->height) c.y1 = d->target->height;
-        if (c.x1 < c.x0) c.x1 = c.x0;
-        if (c.y1 < c.y0) c.y1 = c.y0;
+        c = rastpy_target_clip(d->target);
         cut = *d->target;
-        cut.clip = rastpy_cov_cut(&c, pts, npoints, opts->subpixel_bits);
+        cut.clip = rastpy_points_box(&c, pts, npoints, opts->subpixel_bits);
         tg = &cut;
         clip = &cut.clip;
         st = rastpy_cov_need(d, opts, npoints, triangles, clip, &need);
@@ -165,12 +120,18 @@ static long rastpy_coverage(const rastpy_cov_dest *d, const double *xy, uint32_t
             return st;
         }
     }
-    if (need > (size_t)-1 - 1 || (!(sc && sc->buf && need + 1 <= sc->size) &&
-                                  !(mem = (unsigned char *)malloc(need + 1)))) {
+    total = need;
+    if (d->rgba) { /* the cut clip's uint8 coverage after the scratch (16-byte aligned) */
+        size_t wh = (size_t)(clip->x1 - clip->x0) * (size_t)(clip->y1 - clip->y0);
+        head = (need + 15) & ~(size_t)15;
+        total = head < need || wh > (size_t)-1 - 1 - head ? (size_t)-1 : head + wh;
+    }
+    if (total > (size_t)-1 - 1 || (!(sc && sc->buf && total + 1 <= sc->size) &&
+                                   !(mem = (unsigned char *)malloc(total + 1)))) {
         if (pts != local) free(pts);
         return RASTPY_E_NOMEM;
     }
-    if (sc) sc->want = need + 1;
+    if (sc) sc->want = total + 1;
     if (!mem) mem = (unsigned char *)sc->buf;
     scratch = mem;
     poly.points = (const rast_point *)(void *)pts;
@@ -187,6 +148,14 @@ static long rastpy_coverage(const rastpy_cov_dest *d, const double *xy, uint32_t
     else if (d->colors)
         st = rast_fill_triangles_shaded_aa(tg, poly.points, npoints / 3, d->colors, opts,
                                            d->shade, scratch, need);
+    else if (d->rgba) {
+        unsigned char *win = (unsigned char *)mem + head;
+        ptrdiff_t w = clip->x1 - clip->x0;
+        st = triangles ? rast_triangles_coverage(poly.points, npoints / 3, opts, clip, RAST_COVERAGE_U8,
+                                                 win, w, scratch, need)
+                       : rast_polygon_coverage(&poly, opts, clip, RAST_COVERAGE_U8, win, w, scratch, need);
+        if (st == RAST_OK) st = rastpy_blend_window(d->target, clip, win, d->rgba, d->blend, d->gamma);
+    }
     else if (d->target && triangles)
         st = rast_fill_triangles_aa(tg, poly.points, npoints / 3, opts, d->pixel, scratch,
                                     need);
@@ -270,6 +239,8 @@ static rastpy_cov_dest rastpy_array(void *out, int32_t height, int32_t width, in
     d.colors = NULL;
     d.shade = NULL;
     d.blend = NULL;
+    d.rgba = NULL;
+    d.gamma = NULL;
     return d;
 }
 
@@ -326,6 +297,44 @@ long rastpy_fill_triangles_aa(const rast_target *target, const double *xy, uint3
     if (!target) return RAST_E_NULL;
     d = rastpy_paint(target, pixel);
     return rastpy_coverage(&d, xy, 3 * ntris, NULL, 0, 1, opts, sc);
+}
+
+/* `rgba` blended (docs/opacity.md) through the polygon's uint8 coverage
+ * (ring_sizes NULL: one ring) or, with `triangles`, that of the union of
+ * npoints / 3 triangles: computed and blended over the points' box only
+ * (rastpy_points_box: a pixel outside it has coverage 0, which leaves it
+ * as it is), not the whole target; the same pixels as
+ * rast_blend_coverage(_linear) of the whole target's coverage. */
+static long rastpy_blend_cov(const rast_target *target, const double *xy, uint32_t npoints,
+                             const uint32_t *ring_sizes, uint32_t nrings, int triangles,
+                             const rast_coverage_opts *opts, const uint8_t *rgba,
+                             const rast_blend_opts *blend, const rast_gamma *gamma, rastpy_scratch *sc)
+{
+    rastpy_cov_dest d;
+    if (!target || !rgba) return RAST_E_NULL;
+    d = rastpy_paint(target, NULL);
+    d.rgba = rgba;
+    d.blend = blend;
+    d.gamma = gamma;
+    return rastpy_coverage(&d, xy, npoints, ring_sizes, nrings, triangles, opts, sc);
+}
+
+long rastpy_blend_polygon_coverage(const rast_target *target, const double *xy, uint32_t npoints,
+                                   const uint32_t *ring_sizes, uint32_t nrings,
+                                   const rast_coverage_opts *opts, const uint8_t *rgba,
+                                   const rast_blend_opts *blend, const rast_gamma *gamma,
+                                   rastpy_scratch *sc)
+{
+    return rastpy_blend_cov(target, xy, npoints, ring_sizes, nrings, 0, opts, rgba, blend, gamma, sc);
+}
+
+long rastpy_blend_triangles_coverage(const rast_target *target, const double *xy, uint32_t ntris,
+                                     const rast_coverage_opts *opts, const uint8_t *rgba,
+                                     const rast_blend_opts *blend, const rast_gamma *gamma,
+                                     rastpy_scratch *sc)
+{
+    if (ntris > RAST_MAX_POINTS / 3) return RAST_E_TOO_MANY;
+    return rastpy_blend_cov(target, xy, 3 * ntris, NULL, 0, 1, opts, rgba, blend, gamma, sc);
 }
 
 /* Shaded triangles with coverage, blended (opacity, the colours' alpha)

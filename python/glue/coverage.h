@@ -48,6 +48,19 @@ long rastpy_fill_polygon_gouraud_aa(const rast_target *target, const double *xy,
                                     const uint8_t *colors, const rast_coverage_opts *opts,
                                     const rast_shade_opts *shade, const rast_blend_opts *blend,
                                     rastpy_scratch *sc);
+/* `rgba` blended through the coverage of the polygon (or of the union
+ * of ntris triangles) as rast_blend_coverage (gamma NULL) or
+ * rast_blend_coverage_linear gives it for the whole target's coverage,
+ * computed and blended over the points' box only (issue 34). */
+long rastpy_blend_polygon_coverage(const rast_target *target, const double *xy, uint32_t npoints,
+                                   const uint32_t *ring_sizes, uint32_t nrings,
+                                   const rast_coverage_opts *opts, const uint8_t *rgba,
+                                   const rast_blend_opts *blend, const rast_gamma *gamma,
+                                   rastpy_scratch *sc);
+long rastpy_blend_triangles_coverage(const rast_target *target, const double *xy, uint32_t ntris,
+                                     const rast_coverage_opts *opts, const uint8_t *rgba,
+                                     const rast_blend_opts *blend, const rast_gamma *gamma,
+                                     rastpy_scratch *sc);
 /* The n values of buf, a in units of 2^-62 as uint64_t (the
  * RAST_COVERAGE_FIX62 output), turned in place into the double a: each
  * integer rounded to the nearest double once, then scaled by 2^-62

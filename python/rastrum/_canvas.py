@@ -483,6 +483,10 @@ class Canvas:
             _coverage.aa_opts(aa, rule, subpixel_bits, sample_offset, entry,
                               dict(algorithm=(algorithm, "edge" if tris else "aet"), rounding=(rounding, "exact"),
                                    boundary=(boundary, "exact")))
+        if _blend_box(target, geometry, tris, blend, shape, aa, rule, subpixel_bits, sample_offset, algorithm,
+                      rounding, boundary):
+            return
+        if aa is not None:
             if tris:
                 cov = _coverage.triangles_coverage(geometry, shape, method=aa, subpixel_bits=subpixel_bits,
                                                    sample_offset=sample_offset)
@@ -1729,6 +1733,30 @@ def _blend_rgba(color, fmt):
 
 
 def _blend_args(color, opacity, fmt, entry, gamma=None):
+    """_made_blend_args, remembered for a colour of plain values (an int, a
+    str, a tuple of ints), a float or no opacity and a str, float or no
+    gamma: the exact level of an opacity (fractions) and the colour's
+    parse were half of a small translucent fill's call (issue 34).  The
+    cdata it returns are only read (const in C); errors are not
+    remembered, so each call raises its own message."""
+    tc = type(color)
+    if (tc is int or tc is str or (tc is tuple and all(type(v) is int for v in color))) \
+            and (opacity is None or type(opacity) is float) \
+            and (gamma is None or type(gamma) is str or type(gamma) is float):
+        key = (color, opacity, fmt, gamma)
+        got = _BLEND_ARGS.get(key)
+        if got is None:
+            got = _made_blend_args(color, opacity, fmt, entry, gamma)
+            if len(_BLEND_ARGS) < 256:
+                _BLEND_ARGS[key] = got
+        return got
+    return _made_blend_args(color, opacity, fmt, entry, gamma)
+
+
+_BLEND_ARGS: Dict[Any, Any] = {}
+
+
+def _made_blend_args(color, opacity, fmt, entry, gamma=None):
     """(blend, color): blend None for a colour painted as a value (no
     opacity or gamma given, and alpha 255 or a format whose alpha is
     stored), with `color` less its alpha 255 if it had one; else (RGBA
@@ -1809,6 +1837,50 @@ def _gamma_tables(gamma, entry):
     else:
         gamma = float(gamma)
     return _gamma_table(gamma)
+
+
+def _blend_box(target, geometry, tris, blend, shape, aa, rule, subpixel_bits, sample_offset, algorithm,
+               rounding, boundary):
+    """Canvas._blend over the geometry's pixel box only (issue 34): its mask
+    or coverage computed there and blended there by one C call
+    (python/glue/blend.c, coverage.c), with the vertices snapped as
+    polygon_mask, triangles_mask and the coverage calls snap them (the
+    clip changes, never a coordinate), so the pixels are those of the
+    whole canvas's blend.  True when done; False when nothing was written
+    and the whole-canvas path must take the call (anything this does not
+    take: other ring forms, the 64-bit path, any error, whose message that
+    path gives)."""
+    try:
+        if aa is not None:
+            if aa[:2] == "ss" and max(shape) > _MAX_DIM >> 4:
+                return False  # (the core refuses such a clip for ssK: that path says so)
+            opts = _coverage._opts(aa, rule, subpixel_bits, sample_offset, "Canvas._blend")
+        elif tris:
+            opts = _triangles.tri_opts(algorithm, subpixel_bits, sample_offset, rounding, boundary)
+        else:
+            opts = _core.fill_opts(algorithm, rule, subpixel_bits, sample_offset, rounding, boundary)
+    except InputError:
+        return False
+    gamma = ffi.NULL if blend[2] is None else blend[2]
+    if tris:  # a checked C-contiguous float64 (N, 3, 2) array (tris_f64)
+        xy = ffi.from_buffer("double[]", geometry)
+        if aa is not None:
+            st = _coverage._lent(lib.rastpy_blend_triangles_coverage, target, xy, geometry.shape[0], opts,
+                                 blend[0], blend[1], gamma)
+        else:
+            st = lib.rastpy_blend_triangles(target, xy, geometry.shape[0], opts, blend[0], blend[1], gamma)
+        return st == 0
+    got = _coverage._quick_points(geometry)
+    if got is None:
+        return False
+    if aa is not None:
+        st = _coverage._lent(lib.rastpy_blend_polygon_coverage, target, *got, opts, blend[0], blend[1], gamma)
+    else:
+        st = lib.rastpy_blend_polygon(target, *got, opts, blend[0], blend[1], gamma)
+    return st == 0
+
+
+_MAX_DIM = lib.RAST_MAX_DIM
 
 
 def _blend_mask(target, cov, blend):

@@ -15,4 +15,6 @@ int PyGILState_Check(void) { return 0; }
 #include "../../python/glue/gdalline.c"
 #include "../../python/glue/batch.c"
 #include "../../python/glue/coco.c"
+#include "../../python/glue/blend.c"
+#include "../../python/glue/coverage.c"
 #endif

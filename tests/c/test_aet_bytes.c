@@ -31,26 +31,16 @@ enum { W = 45, H = 37, STRIDE = W + 7, MAXP = 1200 };
 
 #include "rings.h"
 static const unsigned char VALUE = 9, BACKGROUND = 250;
+#include "byte_canvas.h"
 
-/* Fill by `how` into px (a gray8 target W x H, rows of STRIDE bytes, set
- * to `pre` first), opaque or solid. */
+/* Fill by `how` (byte_canvas.h), with this file's scratch. */
 static void fill(unsigned char *px, const unsigned char *pre, const rast_polygon *poly, uint32_t np,
                  const rast__grid *g, rast_fill_rule rule, const rast_rect *clip, int opaque, int how)
 {
     static unsigned char scratch[1 << 18];
-    rast_target t;
-    rast__solid solid;
-    rast__painter p;
-    rast__sink sink;
-    rast__arena arena;
     CHECK(rast__aet_scratch(np, W, H) <= sizeof scratch);
-    arena = rast__arena_of(scratch, rast__aet_scratch(np, W, H));
-    memcpy(px, pre, (size_t)STRIDE * H);
-    CHECK(rast_target_init(&t, px, W, H, STRIDE, RAST_FORMAT_GRAY8) == RAST_OK);
-    CHECK(rast__solid_init(&solid, &t, clip, &VALUE, opaque ? &BACKGROUND : NULL, &p) == RAST_OK);
-    rast__sink_init(&sink, &p, clip);
-    CHECK(rast__aet_fill_by(poly, np, g, rule, clip, &sink, &arena, how) == RAST_OK);
-    if (opaque) rast__opaque_finish(&solid);
+    CHECK(bytes_fill(px, pre, poly, np, g, rule, clip, scratch, rast__aet_scratch(np, W, H), opaque, how) ==
+          RAST_OK);
 }
 
 static void check_scene(int iter, const rast_point *pts, const uint32_t *sizes, uint32_t nrings,
@@ -60,7 +50,7 @@ static void check_scene(int iter, const rast_point *pts, const uint32_t *sizes, 
     static unsigned char pre[STRIDE * H], a[STRIDE * H], b[STRIDE * H];
     rast__grid g;
     rast_polygon poly;
-    int opaque, i, j, k;
+    int opaque, k;
     CHECK(rast__grid_init(&g, s, center ? RAST_SAMPLE_CENTER : RAST_SAMPLE_CORNER,
                           textbook ? RAST_ROUND_TEXTBOOK : RAST_ROUND_EXACT,
                           RAST_BOUNDARY_EXACT) == RAST_OK);
@@ -69,27 +59,10 @@ static void check_scene(int iter, const rast_point *pts, const uint32_t *sizes, 
     poly.nrings = nrings;
     for (k = 0; k < STRIDE * H; k++) pre[k] = (unsigned char)(rng() | 1); /* never 0: no byte a fill writes by chance */
     for (opaque = 0; opaque < 2; opaque++) {
-        int ok = 1;
         fill(a, pre, &poly, np, &g, rule, clip, opaque, RAST__AET_BY_SWEEP);
         fill(b, pre, &poly, np, &g, rule, clip, opaque, RAST__AET_BY_RULE);
         CHECK(memcmp(a, b, sizeof a) == 0);
-        for (j = 0; j < H && ok; j++) {
-            for (i = 0; i < STRIDE && ok; i++) {
-                const unsigned char got = b[j * STRIDE + i], was = pre[j * STRIDE + i];
-                unsigned char want = was;
-                if (i >= clip->x0 && i < clip->x1 && j >= clip->y0 && j < clip->y1) {
-                    int cr, w = ref_winding(pts, sizes, nrings, s, center, textbook, i, j, &cr);
-                    int in = rule == RAST_RULE_EVENODD ? (cr & 1) : w != 0;
-                    want = in ? VALUE : opaque ? BACKGROUND : was;
-                }
-                if (got != want) {
-                    fprintf(stderr, "iter %d (%s): byte (%d, %d) is %d, the reference %d\n", iter,
-                            opaque ? "opaque" : "solid", i, j, got, want);
-                    ok = 0;
-                }
-            }
-        }
-        CHECK(ok);
+        CHECK(bytes_match_ref(b, pre, pts, sizes, nrings, s, center, textbook, rule, clip, opaque, iter));
     }
 }
 

@@ -29,28 +29,7 @@ enum { W = 53, H = 21, STRIDE = W + 11, MAXP = 400 };
 
 #include "rings.h"
 static const unsigned char SENTINEL = 0xA5, VALUE = 200, BACKGROUND = 7;
-
-/* Fill by `how` into px (a gray8 target W x H, rows of STRIDE bytes, set
- * to `pre` first): opaque (background BACKGROUND), or the solid fill;
- * the status. */
-static rast_status fill(unsigned char *px, const unsigned char *pre, const rast_polygon *poly,
-                        uint32_t npoints, const rast__grid *g, rast_fill_rule rule,
-                        const rast_rect *clip, void *scratch, size_t bytes, int opaque, int how)
-{
-    rast_target t;
-    rast__solid solid;
-    rast__painter p;
-    rast__sink sink;
-    rast__arena arena = rast__arena_of(scratch, bytes);
-    rast_status st;
-    memcpy(px, pre, (size_t)STRIDE * H);
-    CHECK(rast_target_init(&t, px, W, H, STRIDE, RAST_FORMAT_GRAY8) == RAST_OK);
-    CHECK(rast__solid_init(&solid, &t, clip, &VALUE, opaque ? &BACKGROUND : NULL, &p) == RAST_OK);
-    rast__sink_init(&sink, &p, clip);
-    st = rast__aet_fill_by(poly, npoints, g, rule, clip, &sink, &arena, how);
-    if (st == RAST_OK && opaque) rast__opaque_finish(&solid);
-    return st;
-}
+#include "byte_canvas.h"
 
 /* Both ways into both painters, the same bytes; the deltas' against the
  * reference. */
@@ -63,7 +42,7 @@ static void check_scene(int iter, const rast_point *pts, const uint32_t *sizes, 
     rast__grid g;
     rast_polygon poly;
     int opaque;
-    int32_t i, j, k;
+    int32_t k;
     CHECK(need <= sizeof scratch);
     CHECK(rast__grid_init(&g, s, center ? RAST_SAMPLE_CENTER : RAST_SAMPLE_CORNER,
                           textbook ? RAST_ROUND_TEXTBOOK : RAST_ROUND_EXACT,
@@ -73,29 +52,12 @@ static void check_scene(int iter, const rast_point *pts, const uint32_t *sizes, 
     poly.nrings = nrings;
     for (k = 0; k < STRIDE * H; k++) pre[k] = (k & 1) ? SENTINEL : (unsigned char)rng();
     for (opaque = 0; opaque < 2; opaque++) {
-        int ok = 1;
-        CHECK(fill(a, pre, &poly, np, &g, rule, clip, scratch, need, opaque, RAST__AET_BY_SWEEP) ==
+        CHECK(bytes_fill(a, pre, &poly, np, &g, rule, clip, scratch, need, opaque, RAST__AET_BY_SWEEP) ==
               RAST_OK);
-        CHECK(fill(b, pre, &poly, np, &g, rule, clip, scratch, need, opaque, RAST__AET_BY_DELTA) ==
+        CHECK(bytes_fill(b, pre, &poly, np, &g, rule, clip, scratch, need, opaque, RAST__AET_BY_DELTA) ==
               RAST_OK);
         CHECK(memcmp(a, b, sizeof a) == 0);
-        for (j = 0; j < H && ok; j++) {
-            for (i = 0; i < STRIDE && ok; i++) {
-                const unsigned char got = b[j * STRIDE + i], was = pre[j * STRIDE + i];
-                unsigned char want = was;
-                if (i >= clip->x0 && i < clip->x1 && j >= clip->y0 && j < clip->y1) {
-                    int cr, w = ref_winding(pts, sizes, nrings, s, center, textbook, i, j, &cr);
-                    int in = rule == RAST_RULE_EVENODD ? (cr & 1) : w != 0;
-                    want = in ? VALUE : opaque ? BACKGROUND : was;
-                }
-                if (got != want) {
-                    fprintf(stderr, "iter %d (%s): byte (%d, %d) is %d, the reference %d\n", iter,
-                            opaque ? "opaque" : "solid", (int)i, (int)j, got, want);
-                    ok = 0;
-                }
-            }
-        }
-        CHECK(ok);
+        CHECK(bytes_match_ref(b, pre, pts, sizes, nrings, s, center, textbook, rule, clip, opaque, iter));
     }
 }
 

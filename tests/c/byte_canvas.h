@@ -1,0 +1,74 @@
+/*
+ * byte_canvas.h - a gray8 target W x H (rows of STRIDE bytes) filled
+ * through the AET by a chosen way (RAST__AET_BY_*) into the solid or
+ * opaque painter, and the check of its bytes against the brute-force
+ * reference (ref.h), for the C tests that write one-byte pixels
+ * (test_delta_bytes.c, test_aet_bytes.c).  The includer defines W, H,
+ * STRIDE and the bytes VALUE and BACKGROUND first.
+ */
+#ifndef RAST_TEST_BYTE_CANVAS_H
+#define RAST_TEST_BYTE_CANVAS_H
+
+#include <stdint.h>
+#include <stdio.h>
+#include <string.h>
+
+#include "check.h"
+#include "ref.h"
+#include "base/internal.h"
+#include "painters/paint.h"
+#include "rastrum.h"
+
+/* Fill by `how` into px (set to `pre` first): opaque (background
+ * BACKGROUND outside the polygon, inside the clip), or the solid fill;
+ * the status. */
+static rast_status bytes_fill(unsigned char *px, const unsigned char *pre, const rast_polygon *poly,
+                              uint32_t npoints, const rast__grid *g, rast_fill_rule rule,
+                              const rast_rect *clip, void *scratch, size_t bytes, int opaque, int how)
+{
+    rast_target t;
+    rast__solid solid;
+    rast__painter p;
+    rast__sink sink;
+    rast__arena arena = rast__arena_of(scratch, bytes);
+    rast_status st;
+    (void)how; /* a build for size has the sweep only (base/internal.h) */
+    memcpy(px, pre, (size_t)STRIDE * H);
+    CHECK(rast_target_init(&t, px, W, H, STRIDE, RAST_FORMAT_GRAY8) == RAST_OK);
+    CHECK(rast__solid_init(&solid, &t, clip, &VALUE, opaque ? &BACKGROUND : NULL, &p) == RAST_OK);
+    rast__sink_init(&sink, &p, clip);
+    st = rast__aet_fill_by(poly, npoints, g, rule, clip, &sink, &arena, how);
+    if (st == RAST_OK && opaque) rast__opaque_finish(&solid);
+    return st;
+}
+
+/* Every byte of px (filled from pre) against the reference: inside the
+ * clip VALUE where the sample is inside by the rule, else BACKGROUND
+ * (opaque) or the byte it was; outside the clip the byte it was.  The
+ * first byte that differs is printed (iter names the case) and 0
+ * returned; 1 when all agree. */
+static int bytes_match_ref(const unsigned char *px, const unsigned char *pre, const rast_point *pts,
+                           const uint32_t *sizes, uint32_t nrings, int s, int center, int textbook,
+                           rast_fill_rule rule, const rast_rect *clip, int opaque, int iter)
+{
+    int32_t i, j;
+    for (j = 0; j < H; j++) {
+        for (i = 0; i < STRIDE; i++) {
+            const unsigned char got = px[j * STRIDE + i], was = pre[j * STRIDE + i];
+            unsigned char want = was;
+            if (i >= clip->x0 && i < clip->x1 && j >= clip->y0 && j < clip->y1) {
+                int cr, w = ref_winding(pts, sizes, nrings, s, center, textbook, i, j, &cr);
+                int in = rule == RAST_RULE_EVENODD ? (cr & 1) : w != 0;
+                want = in ? VALUE : opaque ? BACKGROUND : was;
+            }
+            if (got != want) {
+                fprintf(stderr, "iter %d (%s): byte (%d, %d) is %d, the reference %d\n", iter,
+                        opaque ? "opaque" : "solid", (int)i, (int)j, got, want);
+                return 0;
+            }
+        }
+    }
+    return 1;
+}
+
+#endif

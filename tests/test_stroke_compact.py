@@ -24,7 +24,7 @@ from strategies import examples
 shapely = pytest.importorskip("shapely")
 from shapely.geometry import LinearRing  # noqa: E402
 from test_stroke import (SIZE, coverage, dash_arrays, dashed_referee, exact_coverage, near_limit,  # noqa: E402
-                         polylines, referee)
+                         polyline_geometry, polylines, referee, stroke_bound)
 
 
 @settings(deadline=None, max_examples=examples(30), suppress_health_check=[HealthCheck.too_slow])
@@ -35,13 +35,7 @@ def test_compact_within_the_bound(pts, width, join, cap, limit, closed, dash, of
     closed = closed and len(set(pts)) >= 3
     assume(not near_limit(pts + ([pts[0]] if closed else []), limit, closed))
     tol = 1 / 1024
-    if closed:
-        geom = rastrum.Path().move_to(*pts[0])
-        for q in pts[1:]:
-            geom.line_to(*q)
-        geom.close()
-    else:
-        geom = pts
+    geom = polyline_geometry(pts, closed)
     kw = dict(join=join, cap=cap, miter_limit=limit, tolerance=tol)
     if dash:
         want, near = dashed_referee(pts, width, join, cap, limit, dash, offset, closed)
@@ -49,8 +43,8 @@ def test_compact_within_the_bound(pts, width, join, cap, limit, closed, dash, of
     else:
         want = referee(pts, width, join, cap, limit, closed=closed)
     got = coverage(rastrum.stroke(geom, width, outline="compact", dash=dash, dash_offset=offset, **kw))
-    bound = 2 * (tol + 2 ** -12) + 1e-4 if "round" in (join, cap) else 1 / 255
-    assert np.abs(got - exact_coverage(want)).max() <= bound, (pts, width, join, cap, limit, closed, dash)
+    assert np.abs(got - exact_coverage(want)).max() <= stroke_bound(tol, join, cap), \
+        (pts, width, join, cap, limit, closed, dash)
 
 
 def _rings(outline):

@@ -21,6 +21,22 @@
 
 #include "rastrum.h"
 
+#include <string.h>
+
+/* A stroke style of width w (grid units), the join and the cap, the
+ * default miter limit (4) and the finest tolerance (one grid step). */
+static inline rast_stroke_style sc_style(int32_t w, int join, int cap)
+{
+    rast_stroke_style s;
+    memset(&s, 0, sizeof s);
+    s.width = w;
+    s.join = join;
+    s.cap = cap;
+    s.miter_limit = 4 * 65536;
+    s.tolerance = 1;
+    return s;
+}
+
 /* The winding number of the outline at (x + 1/4, y + 1/8) units. */
 static int sc_winding(const rast_point *pts, const uint32_t *sizes, uint32_t nrings, int32_t x, int32_t y)
 {

@@ -25,18 +25,6 @@ static uint64_t scratch_mem[1 << 18];
 static rast_point out[MAXP], flat[MAXP], pout[MAXP];
 static uint32_t rings[MAXP / 3], frings[64], prings[MAXP / 3];
 
-static rast_stroke_style style(int32_t w, int join, int cap)
-{
-    rast_stroke_style s;
-    memset(&s, 0, sizeof s);
-    s.width = w;
-    s.join = join;
-    s.cap = cap;
-    s.miter_limit = 4 * 65536;
-    s.tolerance = 1;
-    return s;
-}
-
 static rast_status run(const uint8_t *verbs, uint32_t nv, const rast_point *pts, uint32_t np,
                        const rast_stroke_style *s, uint32_t *onp, uint32_t *onr)
 {
@@ -61,7 +49,7 @@ static void test_bad_input(void)
     static const rast_point p[2] = {{0, 0}, {100, 0}};
     int32_t dneg[2] = {5, -1}, dzero[2] = {0, 0};
     rast_path path = {v, 2, p, 2};
-    rast_stroke_style s = style(10, RAST_JOIN_MITER, RAST_CAP_BUTT), b;
+    rast_stroke_style s = sc_style(10, RAST_JOIN_MITER, RAST_CAP_BUTT), b;
     rast_polygon poly = {NULL, NULL, 777};
     uint32_t np = 99, nr = 99;
     CHECK(rast_path_stroke_size(NULL, &s, &np, &nr) == RAST_E_NULL);
@@ -125,7 +113,7 @@ static void test_exact_rings(void)
                                        144, 160, 144, 0, 160, 0, 160, 16, 0, 16};
     static const int32_t bevelled[18] = {0, -16, 160, -16, 176, 0, 176, 160,
                                          144, 160, 144, 0, 160, 0, 160, 16, 0, 16};
-    rast_stroke_style s = style(32, RAST_JOIN_MITER, RAST_CAP_BUTT);
+    rast_stroke_style s = sc_style(32, RAST_JOIN_MITER, RAST_CAP_BUTT);
     uint32_t np, nr;
     CHECK(run(v2, 2, seg, 2, &s, &np, &nr) == RAST_OK && nr == 1 && np == 4 && ring_is(0, rect, 4));
     s.cap = RAST_CAP_SQUARE;
@@ -151,7 +139,7 @@ static void test_offsets_rounded(void)
     int i;
     for (i = 0; i < check_count(3000); i++) {
         rast_point p[2];
-        rast_stroke_style s = style(1 + (int32_t)(rng() % 4000), RAST_JOIN_MITER, RAST_CAP_BUTT);
+        rast_stroke_style s = sc_style(1 + (int32_t)(rng() % 4000), RAST_JOIN_MITER, RAST_CAP_BUTT);
         uint32_t np, nr;
         int64_t dx = (int64_t)(rng() % 20001) - 10000, dy = (int64_t)(rng() % 20001) - 10000, l2, w, ox, oy, a;
         if (!dx && !dy) continue;
@@ -179,7 +167,7 @@ static void test_dashes_exact(void)
     static const uint8_t v2[2] = {RAST_PATH_MOVE, RAST_PATH_LINE}, v3[3] = {0, 1, 1};
     static const rast_point seg[2] = {{0, 0}, {1000, 0}}, ell[3] = {{0, 0}, {160, 0}, {160, 160}};
     int32_t d[2] = {100, 50}, one[1] = {40}, dots[2] = {0, 250};
-    rast_stroke_style s = style(20, RAST_JOIN_MITER, RAST_CAP_BUTT);
+    rast_stroke_style s = sc_style(20, RAST_JOIN_MITER, RAST_CAP_BUTT);
     uint32_t np, nr, k;
     s.dash = d;
     s.ndash = 2;
@@ -209,7 +197,7 @@ static void test_zero_length(void)
 {
     static const uint8_t mz[2] = {RAST_PATH_MOVE, RAST_PATH_CLOSE}, mm[2] = {0, 0}, ml[2] = {0, 1};
     static const rast_point p[2] = {{50, 50}, {50, 50}};
-    rast_stroke_style s = style(40, RAST_JOIN_MITER, RAST_CAP_ROUND);
+    rast_stroke_style s = sc_style(40, RAST_JOIN_MITER, RAST_CAP_ROUND);
     uint32_t np, nr;
     CHECK(run(mz, 2, p, 1, &s, &np, &nr) == RAST_OK && nr == 1 && np > 8);
     CHECK(run(ml, 2, p, 2, &s, &np, &nr) == RAST_OK && nr == 1 && np > 8);
@@ -230,7 +218,7 @@ static void test_random_bound(void)
         rast_point pts[24];
         int32_t dash[3];
         uint32_t nv = 2 + rng() % 6, np = 0, k, onp, onr, fnp, fnr;
-        rast_stroke_style s = style(1 + (int32_t)(rng() % 200), (int)(rng() % 3), (int)(rng() % 3));
+        rast_stroke_style s = sc_style(1 + (int32_t)(rng() % 200), (int)(rng() % 3), (int)(rng() % 3));
         rast_path path;
         rast_polygon fpoly;
         sc_path fp;
@@ -368,7 +356,7 @@ static void test_round_points(void)
     int i;
     for (i = 0; i < check_count(3000); i++) {
         rast_point p[3];
-        rast_stroke_style s = style(1 + (int32_t)(rng() % 5000), RAST_JOIN_ROUND, RAST_CAP_ROUND);
+        rast_stroke_style s = sc_style(1 + (int32_t)(rng() % 5000), RAST_JOIN_ROUND, RAST_CAP_ROUND);
         int64_t w = s.width, m, need, o1x, o1y, o2x, o2y, t, dot, vx, vy;
         uint32_t np, nr, at = 0;
         int turn_back = rng() % 4 == 0, pivot_r = 0, pivot_l = 0;
@@ -457,7 +445,7 @@ static void test_rings_equal_pieces(void)
         rast_point pts[48];
         int32_t dash[3];
         uint32_t nv = 2 + rng() % 14, np = 0, k, onp = 0, onr = 0, pnp = 0, pnr = 0;
-        rast_stroke_style s = style(1 + (int32_t)(rng() % 160), (int)(rng() % 3), (int)(rng() % 3));
+        rast_stroke_style s = sc_style(1 + (int32_t)(rng() % 160), (int)(rng() % 3), (int)(rng() % 3));
         rast_path path;
         rast_polygon ppoly, opoly;
         s.tolerance = 1 + (int32_t)(rng() % 8);

@@ -27,18 +27,6 @@
 static rast_point out[MAXP], piv[MAXP], flat[MAXP];
 static uint32_t rings[MAXP / 3], prings[MAXP / 3], frings[64];
 
-static rast_stroke_style style(int32_t w, int join, int cap)
-{
-    rast_stroke_style s;
-    memset(&s, 0, sizeof s);
-    s.width = w;
-    s.join = join;
-    s.cap = cap;
-    s.miter_limit = 4 * 65536;
-    s.tolerance = 1;
-    return s;
-}
-
 /* The outline with `flags` into o/r: counted, then stored into exactly
  * that room (which must give the same sizes). */
 static rast_status run(const uint8_t *verbs, uint32_t nv, const rast_point *pts, uint32_t np, unsigned flags,
@@ -76,7 +64,7 @@ static void test_right_angle(void)
      * through 144,0, 160,0, 160,16 (tests/c/test_stroke.c: "mitred") */
     static const int32_t mitred[16] = {0, -16, 160, -16, 176, -16, 176, 0, 176, 160, 144, 160, 144, 16, 0, 16};
     static const int32_t bevelled[14] = {0, -16, 160, -16, 176, 0, 176, 160, 144, 160, 144, 16, 0, 16};
-    rast_stroke_style s = style(32, RAST_JOIN_MITER, RAST_CAP_BUTT);
+    rast_stroke_style s = sc_style(32, RAST_JOIN_MITER, RAST_CAP_BUTT);
     uint32_t np, nr, k;
     CHECK(run(v3, 3, ell, 3, RAST__STROKE_MEET, &s, out, rings, &np, &nr) == RAST_OK && nr == 1 && np == 8 &&
           ring_is(mitred, 8));
@@ -98,7 +86,7 @@ static void test_range_limits(void)
     static const uint8_t v3[3] = {RAST_PATH_MOVE, RAST_PATH_LINE, RAST_PATH_LINE};
     const int32_t a = 1 << 26, h = a - 1;
     rast_point ell[3];
-    rast_stroke_style s = style(2 * h, RAST_JOIN_MITER, RAST_CAP_BUTT);
+    rast_stroke_style s = sc_style(2 * h, RAST_JOIN_MITER, RAST_CAP_BUTT);
     uint32_t np, nr;
     int32_t want[16];
     ell[0].x = -a;
@@ -131,7 +119,7 @@ static void test_pivot_kept(void)
     static const rast_point short2[3] = {{570, 134}, {1070, 1000}, {1140, 1000}};
     int join;
     for (join = 0; join < 3; join++) {
-        rast_stroke_style s = style(32, join, RAST_CAP_SQUARE);
+        rast_stroke_style s = sc_style(32, join, RAST_CAP_SQUARE);
         uint32_t np, nr, pn, pr;
         CHECK(run(v4, 4, zig, 4, RAST__STROKE_MEET, &s, out, rings, &np, &nr) == RAST_OK);
         CHECK(run(v4, 4, zig, 4, 0, &s, piv, prings, &pn, &pr) == RAST_OK);
@@ -182,7 +170,7 @@ static void test_random_bound(void)
         uint32_t nv = 2 + rng() % 10, np = 0, k, onp, onr, pn, pr, fnp, fnr;
         int32_t w0 = 1 + (int32_t)(rng() % 300);
         int join = (int)(rng() % 3), cap = (int)(rng() % 3); /* (one call a statement: the same cases on every compiler) */
-        rast_stroke_style s = style(w0, join, cap);
+        rast_stroke_style s = sc_style(w0, join, cap);
         rast_path path;
         rast_polygon fpoly;
         sc_path fp;
@@ -246,7 +234,7 @@ static uint32_t dot_within(int32_t w, int32_t tol, unsigned flags)
 {
     static const uint8_t v2[2] = {RAST_PATH_MOVE, RAST_PATH_LINE};
     const rast_point c = {3000, 3000}, p2[2] = {{3000, 3000}, {3000, 3000}};
-    rast_stroke_style s = style(w, RAST_JOIN_ROUND, RAST_CAP_ROUND);
+    rast_stroke_style s = sc_style(w, RAST_JOIN_ROUND, RAST_CAP_ROUND);
     uint32_t np = 0, nr = 0, k;
     int64_t t2 = 2 * (int64_t)(tol > 2 ? tol : 2), lo = w - t2 > 0 ? (w - t2) * (w - t2) : 0, hi = (w + t2) * (w + t2);
     s.tolerance = tol;

@@ -264,6 +264,25 @@ RAST__HOT void rast__acc_ends(rast__cedge *e, int32_t j, int64_t rel0, const ras
     }
 }
 
+/* The tie passes' end of e's part in row j (its bottom rel1 = yt + dy -
+ * Yj below the row's top): (x, *tb) in Q units, t from the row's top, as
+ * rast__acc_ends finds it (P = p, HQ = hq: the pass's copies of a's);
+ * *exact cleared when the abscissa at the row's
+ * bottom was floored (the stepper's remainder, read after the step). */
+static inline int64_t rast__acc_bottom(rast__cedge *e, int32_t j, int64_t rel1, int32_t p, int32_t hq,
+                                       const rast__acc *a, uint64_t *tb, int *exact)
+{
+    int64_t x;
+    if (rel1 < p) {
+        *tb = (uint64_t)rel1 << hq;
+        return ((int64_t)e->xt + e->dx) * ((int64_t)1 << hq);
+    }
+    *tb = QT;
+    x = rast__acc_top(e, j + 1, a);
+    *exact &= e->qxr == 0;
+    return x;
+}
+
 /* A part touches cells [lo, hi]: one more part for each 16 columns of
  * them in the clip.  A pixel's sum is off the exact integral only by the
  * parts that touch its column (the bound above, per part): one that lies
@@ -1779,14 +1798,7 @@ static int rast__acc_ties(rast__acc *a, const rast__acc_walk *w, rast__cedge *e,
             xa = rast__acc_top(ed, j, a);
             exact = ed->qxr == 0;
         }
-        if (rel1 < p) {
-            tb = (uint64_t)rel1 << hq;
-            xb = ((int64_t)ed->xt + ed->dx) * ((int64_t)1 << hq);
-        } else {
-            tb = QT;
-            xb = rast__acc_top(ed, j + 1, a);
-            exact &= ed->qxr == 0;
-        }
+        xb = rast__acc_bottom(ed, j, rel1, p, hq, a, &tb, &exact);
         ca = rast__acc_col(xa) - x0;
         cb = rast__acc_col(xb) - x0;
         if (ca == cb && ca >= 0 && ca < wd) {
@@ -1933,14 +1945,7 @@ static int rast__acc_ties_z(rast__acc *a, const rast__acc_walk *w, rast__cedge *
             xa = rast__acc_top_back(ed, j, a, &rem);
             exact = rem == 0;
         }
-        if (rel1 < p) {
-            tb = (uint64_t)rel1 << hq;
-            xb = ((int64_t)ed->xt + ed->dx) * ((int64_t)1 << hq);
-        } else {
-            tb = QT;
-            xb = rast__acc_top(ed, j + 1, a);
-            exact &= ed->qxr == 0;
-        }
+        xb = rast__acc_bottom(ed, j, rel1, p, hq, a, &tb, &exact);
         c0 = rast__acc_col(xa < xb ? xa : xb) - x0;
         c1 = rast__acc_col(xa < xb ? xb : xa) - x0;
         if (c0 >= wd) continue; /* (right of the clip: nothing) */

@@ -9,6 +9,7 @@
 #include <string.h>
 #include "coverage.h"
 #include "blend.h"
+#include "painters/paint.h"
 
 static const int32_t rastpy_cov_size[3] = {1, 2, 8};
 
@@ -60,6 +61,18 @@ static int rastpy_cov_late(const rastpy_cov_dest *d, const rast_coverage_opts *o
     c = &d->target->clip;
     return c->x1 - (int64_t)c->x0 >= 0 && c->y1 - (int64_t)c->y0 >= 0 &&
            c->x1 - (int64_t)c->x0 <= RAST_MAX_DIM && c->y1 - (int64_t)c->y0 <= RAST_MAX_DIM;
+}
+
+/* Do the ring sizes (NULL: one ring) add up to npoints, the count the
+ * scratch and the snap were made for?  (rast__fill_polygon_aa_snapped
+ * reads the count from them and trusts the scratch.) */
+static int rastpy_rings_add_up(const uint32_t *ring_sizes, uint32_t nrings, uint32_t npoints)
+{
+    uint64_t n = 0;
+    uint32_t k;
+    if (!ring_sizes) return 1;
+    for (k = 0; k < nrings; k++) n += ring_sizes[k];
+    return n == npoints;
 }
 
 static long rastpy_coverage(const rastpy_cov_dest *d, const double *xy, uint32_t npoints,
@@ -159,6 +172,13 @@ static long rastpy_coverage(const rastpy_cov_dest *d, const double *xy, uint32_t
     else if (d->target && triangles)
         st = rast_fill_triangles_aa(tg, poly.points, npoints / 3, opts, d->pixel, scratch,
                                     need);
+#if !defined(__OPTIMIZE_SIZE__)
+    else if (d->target && rastpy_rings_add_up(ring_sizes, nrings, npoints))
+        /* what rast__cov_begin and rast__cov_check_points would check
+         * again is checked above (rastpy_cov_need for the cut clip and
+         * this count, the snap, the scratch): that function's contract */
+        st = rast__fill_polygon_aa_snapped(tg, &poly, opts, d->pixel, scratch, need);
+#endif
     else if (d->target)
         st = rast_fill_polygon_aa(tg, &poly, opts, d->pixel, scratch, need);
     else if (triangles)

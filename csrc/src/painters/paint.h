@@ -293,6 +293,23 @@ rast_status rast__cov_paint_checked(const rast_polygon *poly, const rast_point *
                                     uint32_t ntris, uint32_t npoints,
                                     const rast_coverage_opts *opts, const rast_rect *clip,
                                     const rast__painter *p, void *scratch, size_t scratch_bytes);
+#if !defined(__OPTIMIZE_SIZE__)
+/* rast__cov_paint of a polygon (tris unused) for the Python binding's
+ * anti-aliased fill, whose glue has made the checks of rast__cov_begin
+ * and rast__cov_check_points before the call: the options, the clip's
+ * size and the vertex count by rast_coverage_scratch_size for this
+ * clip's size, the scratch that size (aligned), and every point snapped
+ * into +-RAST_COORD_MAX (rastpy_snap); the clip the target's, checked.
+ * Only a supersampling method's own checks (its fine grid's range) are
+ * made.  Not in size-optimised builds. */
+rast_status rast__cov_paint_snapped(const rast_polygon *poly, const rast_point *tris, uint32_t ntris,
+                                    const rast_coverage_opts *opts, const rast_rect *clip,
+                                    const rast__painter *p, void *scratch, size_t scratch_bytes);
+/* rast_fill_polygon_aa through rast__cov_paint_snapped (its contract). */
+rast_status rast__fill_polygon_aa_snapped(const rast_target *target, const rast_polygon *polygon,
+                                          const rast_coverage_opts *opts, const void *pixel,
+                                          void *scratch, size_t scratch_bytes);
+#endif
 
 /* Source-over of a per-pixel source colour (blend.c, rastrum.h "shaded
  * fills with opacity"): n pixels from x of `row`, pixel k from the RGBA

@@ -680,8 +680,11 @@ static const void *seq_kw_opts(PyObject *kw, int *aa)
 }
 
 /* fill(q, target, rings, color[, opts]) -> bool: True when the ring was
- * filled.  q is the canvas's remembered call, (target, color, target
- * address, pixel address, array, pixel, aa allowed): it holds only for
+ * filled.  q is the canvas's remembered call, (target, color, their
+ * addresses -- a bytes of two uintptr_t, the target's and the pixel's:
+ * two copies out of one object, where two ints' PyLong_AsVoidPtr and
+ * their lookups were ~110 instructions of a call (issue 33) --, None,
+ * array, pixel, aa allowed): it holds only for
  * the very target and colour objects given, and the canvas's array still
  * writable.  opts: None or an empty dict (the default options), the
  * address of a rast_fill_opts, or the call's keyword dict (seq_kw_opts);
@@ -692,8 +695,9 @@ static const void *seq_kw_opts(PyObject *kw, int *aa)
 static PyObject *seq_fill_do(PyObject *const *a, Py_ssize_t nargs)
 {
     PyObject *q = a[0], *target = a[1], *rings = a[2], *color = a[3], *opt = nargs > 4 ? a[4] : NULL,
-             *method = nargs > 5 ? a[5] : NULL, *arr;
+             *method = nargs > 5 ? a[5] : NULL, *arr, *addr;
     const seq_array_head *h;
+    uintptr_t ptr[2];
     double stack[2 * SEQ_STACK_POINTS], *xy = NULL, *heap = NULL;
     const void *t, *pix, *opts = seq_fill_opts;
     Py_ssize_t n = 0, k;
@@ -750,11 +754,16 @@ static PyObject *seq_fill_do(PyObject *const *a, Py_ssize_t nargs)
         PyMem_Free(heap);
         Py_RETURN_FALSE;
     }
-    t = PyLong_AsVoidPtr(PyTuple_GetItem(q, 2));
-    pix = PyLong_AsVoidPtr(PyTuple_GetItem(q, 3));
+    addr = PyTuple_GetItem(q, 2);
+    if (!PyBytes_CheckExact(addr) || PyBytes_Size(addr) != (Py_ssize_t)sizeof ptr) {
+        PyMem_Free(heap);
+        Py_RETURN_FALSE;
+    }
+    memcpy(ptr, PyBytes_AsString(addr), sizeof ptr);
+    t = (const void *)ptr[0];
+    pix = (const void *)ptr[1];
     if (!t || !pix) {
         PyMem_Free(heap);
-        PyErr_Clear();
         Py_RETURN_FALSE;
     }
     if (aa) {

@@ -543,7 +543,7 @@ class Canvas:
 
     # (target, color, their addresses, the array, the pixel) of the last
     # common fill_polygon call: see _seq.fill_method at the end
-    _fpq: Tuple[Any, ...] = (None, None, 0, 0, None, None, False)
+    _fpq: Tuple[Any, ...] = (None, None, b"", None, None, None, False)
 
     def fill_polygon(self, rings: Rings, color: Optional[Color] = None, *, rule: Rule = "evenodd",
                      algorithm: PolygonAlgorithm = "aet", subpixel_bits: int = 8, sample_offset: float = 0.5,
@@ -663,8 +663,7 @@ class Canvas:
                 pixel = last[1] if color is last[0] and type(color) is int else self._pixel(color)
                 if not _fill_ring(target, _from_buffer(_DOUBLES, xy), n, opts, pixel):
                     if type(color) is int:  # remembered for the next call (_seq.fill_method)
-                        self._fpq = (target, color, int(_cast(_UINTPTR, target)), int(_cast(_UINTPTR, pixel)),
-                                     self._array, pixel, self._format != "label")
+                        self._fpq = _fpq_of(target, color, self._array, pixel, self._format != "label")
                     return
         elif vertex_colors is None and type(color) is int and algorithm is _AET and rounding is _EXACT \
                 and boundary is _EXACT and shading is _GOURAUD and precision is _EXACT and self._format != "label":
@@ -686,8 +685,7 @@ class Canvas:
                     if not _lent(_fill_ring_aa, target, _from_buffer(_DOUBLES, rings), len(rings), _NULL, 1,
                                  opts, pixel):
                         # remembered for the next call (_seq.fill_method)
-                        self._fpq = (target, color, int(_cast(_UINTPTR, target)), int(_cast(_UINTPTR, pixel)),
-                                     self._array, pixel, True)
+                        self._fpq = _fpq_of(target, color, self._array, pixel, True)
                         return
                 _coverage.fill_polygon_aa(target, rings, pixel, opts)
                 return
@@ -1998,6 +1996,16 @@ _core._seq.fill_setup(int(_cast(_UINTPTR, ffi.addressof(lib, "rastpy_fill_ring")
                       _ndarray, _F64, int(_cast(_UINTPTR, ffi.addressof(lib, "rastpy_fill_polygon_aa"))), _KW_TABLE)
 _OPTS_ADDRESS: Dict[Any, int] = {}
 _lent, _fill_ring_aa, _NULL, _MAX_POINTS = _coverage._lent, lib.rastpy_fill_polygon_aa, ffi.NULL, lib.RAST_MAX_POINTS
+_TWO_ADDRESSES = ffi.typeof("uintptr_t[2]")
+
+
+def _fpq_of(target: Any, color: int, array: Any, pixel: Any, aa: bool) -> Tuple[Any, ...]:
+    """Canvas._fpq, the common call _seq.fill does in C: the target and
+    colour objects, the target's and the pixel's addresses as the bytes of
+    two uintptr_t, the array and pixel kept alive, and whether aa= may be
+    given (python/ext/seq.c)."""
+    addresses = ffi.new(_TWO_ADDRESSES, [int(_cast(_UINTPTR, target)), int(_cast(_UINTPTR, pixel))])
+    return (target, color, ffi.buffer(addresses)[:], None, array, pixel, aa)
 
 
 def _opts_address(opts):

@@ -354,13 +354,28 @@ static int seq_head_read(PyObject *a, Py_ssize_t m, PyObject *f64, PyObject *i32
     return 1;
 }
 
+/* A new buffer of n bytes for seq_rings' results and its memory: a
+ * bytearray, or (as_bytes) a bytes object, which a cffi call takes as a
+ * char * with no ffi.from_buffer made of it (polygon_mask's rings: the
+ * two were ~0.8 us of a glyph's 16 us call).  Written only before it is
+ * handed out. */
+static PyObject *seq_buf_new(Py_ssize_t n, int as_bytes)
+{
+    return as_bytes ? PyBytes_FromStringAndSize(NULL, n) : PyByteArray_FromStringAndSize(NULL, n);
+}
+
+static char *seq_buf(PyObject *b, int as_bytes)
+{
+    return as_bytes ? PyBytes_AsString(b) : PyByteArray_AsString(b);
+}
+
 /* The arrays' form: each item exactly of type `ndarray`, of shape (m >= 1,
  * 2), native float64 or int32 (`dtypes`: numpy's (float64, int32)):
- * (points, sizes) as new bytearrays in *pts, *sizes, 1; or 0 (nothing
- * made, no exception) if one is not of that form; -1 with an exception
- * (no memory). */
+ * (points, sizes) as new bytearrays (as_bytes: bytes) in *pts, *sizes, 1;
+ * or 0 (nothing made, no exception) if one is not of that form; -1 with
+ * an exception (no memory). */
 static int seq_arrays(PyObject *rings, Py_ssize_t n, PyObject *ndarray, PyObject *dtypes, PyObject **pts,
-                      PyObject **sizes)
+                      PyObject **sizes, int as_bytes)
 {
     PyObject *f64, *i32;
     Py_ssize_t k, m, npts = 0;
@@ -374,9 +389,9 @@ static int seq_arrays(PyObject *rings, Py_ssize_t n, PyObject *ndarray, PyObject
     f64 = PyTuple_GetItem(dtypes, 0);
     i32 = PyTuple_GetItem(dtypes, 1);
     if (seq_head_ok < 0) seq_head_ok = seq_head_check(PyList_GetItem(rings, 0));
-    *sizes = PyByteArray_FromStringAndSize(NULL, n * (Py_ssize_t)sizeof(uint32_t));
+    *sizes = seq_buf_new(n * (Py_ssize_t)sizeof(uint32_t), as_bytes);
     if (!*sizes) return -1;
-    sz = (uint32_t *)(void *)PyByteArray_AsString(*sizes);
+    sz = (uint32_t *)(void *)seq_buf(*sizes, as_bytes);
     for (k = 0; k < n; k++) { /* the lengths (len(): no attribute lookup) */
         PyObject *a = PyList_GetItem(rings, k);
         if ((PyObject *)Py_TYPE(a) != ndarray) goto no;
@@ -386,12 +401,12 @@ static int seq_arrays(PyObject *rings, Py_ssize_t n, PyObject *ndarray, PyObject
         npts += m;
         if (npts > (Py_ssize_t)UINT32_MAX) goto no;
     }
-    *pts = PyByteArray_FromStringAndSize(NULL, npts * 2 * (Py_ssize_t)sizeof(double));
+    *pts = seq_buf_new(npts * 2 * (Py_ssize_t)sizeof(double), as_bytes);
     if (!*pts) {
         Py_CLEAR(*sizes);
         return -1;
     }
-    p = (double *)(void *)PyByteArray_AsString(*pts);
+    p = (double *)(void *)seq_buf(*pts, as_bytes);
     for (k = 0; k < n; k++) {
         m = (Py_ssize_t)sz[k];
         PyObject *a = PyList_GetItem(rings, k);
@@ -412,13 +427,13 @@ static PyObject *seq_rings(PyObject *self, PyObject *args)
     Py_ssize_t n, k, j, npts = 0;
     double *p;
     uint32_t *sz = NULL;
-    int one;
+    int one, as_bytes = 0;
     (void)self;
-    if (!PyArg_ParseTuple(args, "OOO", &rings, &ndarray, &dtypes)) return NULL;
+    if (!PyArg_ParseTuple(args, "OOO|i", &rings, &ndarray, &dtypes, &as_bytes)) return NULL;
     if (!PyList_CheckExact(rings) || (n = PyList_Size(rings)) == 0) Py_RETURN_NONE;
     first = PyList_GetItem(rings, 0);
     if ((PyObject *)Py_TYPE(first) == ndarray) {
-        int got = seq_arrays(rings, n, ndarray, dtypes, &pts, &sizes);
+        int got = seq_arrays(rings, n, ndarray, dtypes, &pts, &sizes, as_bytes);
         if (got < 0) return NULL;
         if (!got) Py_RETURN_NONE;
         goto done;
@@ -435,16 +450,16 @@ static PyObject *seq_rings(PyObject *self, PyObject *args)
         }
     }
     if (npts > (Py_ssize_t)UINT32_MAX) Py_RETURN_NONE;
-    pts = PyByteArray_FromStringAndSize(NULL, npts * 2 * (Py_ssize_t)sizeof(double));
+    pts = seq_buf_new(npts * 2 * (Py_ssize_t)sizeof(double), as_bytes);
     if (!pts) return NULL;
-    p = (double *)(void *)PyByteArray_AsString(pts);
+    p = (double *)(void *)seq_buf(pts, as_bytes);
     if (one) {
         for (k = 0; k < n; k++, p += 2)
             if (!seq_pair(PyList_GetItem(rings, k), p)) goto none;
     } else {
-        sizes = PyByteArray_FromStringAndSize(NULL, n * (Py_ssize_t)sizeof(uint32_t));
+        sizes = seq_buf_new(n * (Py_ssize_t)sizeof(uint32_t), as_bytes);
         if (!sizes) goto fail;
-        sz = (uint32_t *)(void *)PyByteArray_AsString(sizes);
+        sz = (uint32_t *)(void *)seq_buf(sizes, as_bytes);
         for (k = 0; k < n; k++) {
             PyObject *ring = PyList_GetItem(rings, k);
             Py_ssize_t m = seq_len(ring);
@@ -1124,7 +1139,8 @@ static PyMethodDef seq_methods[] = {
     {"flat", seq_flat, METH_O,
      "flat(segmentations) -> (points, ring_sizes, rings_per_object) as bytearrays, or None"},
     {"rings", seq_rings, METH_VARARGS,
-     "rings(rings, ndarray, (float64, int32)) -> (points, ring_sizes or None) as bytearrays, or None"},
+     "rings(rings, ndarray, (float64, int32)[, as_bytes]) -> (points, ring_sizes or None) as bytearrays "
+     "(as_bytes: bytes), or None"},
     {"use_head", seq_use_head, METH_O,
      "use_head(flag) -> bool: whether arrays are read through their head (once checked) or __array_struct__"},
     {"fill_setup", seq_fill_setup, METH_VARARGS,

@@ -269,6 +269,21 @@ long rastpy_mask_ring(void *mask, int32_t height, int32_t width, const double *x
     return rastpy_mask_polygon(mask, height, width, xy, npoints, NULL, 1, opts);
 }
 
+/* rastpy_mask_polygon for the points and ring sizes as _seq.rings packs
+ * them in bytes objects (polygon_mask's list of rings: a cffi call takes a
+ * bytes object as a char * with no ffi.from_buffer made of it, two of
+ * which were ~0.8 us of a glyph's call); ring_sizes NULL: one ring.  Their
+ * memory is aligned for its items wherever CPython makes bytes objects,
+ * and RASTPY_E_ALIGN says it is not (then the caller packs them anew). */
+long rastpy_mask_packed(void *mask, int32_t height, int32_t width, const char *xy,
+                        uint32_t npoints, const char *ring_sizes, uint32_t nrings,
+                        const rast_fill_opts *opts)
+{
+    if ((uintptr_t)xy % sizeof(double) || (uintptr_t)ring_sizes % sizeof(uint32_t)) return RASTPY_E_ALIGN;
+    return rastpy_mask_polygon(mask, height, width, (const double *)(const void *)xy, npoints,
+                               (const uint32_t *)(const void *)ring_sizes, nrings, opts);
+}
+
 /* rastpy_fill_polygon for one ring, no background: the small-call path of
  * Canvas.fill_polygon (fewer arguments for cffi to convert). */
 long rastpy_fill_ring(const rast_target *target, const double *xy, uint32_t npoints,

@@ -16,6 +16,10 @@
 /* Out of memory in the glue (malloc failed); never a core status. */
 #define RASTPY_E_NOMEM (-1000)
 
+/* Packed points or ring sizes not aligned for their items
+ * (rastpy_mask_packed); never a core status. */
+#define RASTPY_E_ALIGN (-1001)
+
 /* Snap 2 * npoints float64 coordinates to the 1/2^s grid:
  * out = floor(xy * 2^s + 1/2) exactly.  Returns -1 when all are good (all
  * of out written), else the index of the first point that is NaN, infinite
@@ -34,6 +38,9 @@ long rastpy_mask_polygon(void *mask, int32_t height, int32_t width,
                          const rast_fill_opts *opts);
 long rastpy_mask_ring(void *mask, int32_t height, int32_t width, const double *xy,
                       uint32_t npoints, const rast_fill_opts *opts);
+long rastpy_mask_packed(void *mask, int32_t height, int32_t width, const char *xy,
+                        uint32_t npoints, const char *ring_sizes, uint32_t nrings,
+                        const rast_fill_opts *opts);
 long rastpy_fill_ring(const rast_target *target, const double *xy, uint32_t npoints,
                       const rast_fill_opts *opts, const void *pixel);
 long rastpy_snap_points(const double *xy, size_t npoints, int s, int32_t *out);

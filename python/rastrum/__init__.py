@@ -190,13 +190,18 @@ def polygon_mask(rings: PathRings, shape: Shape, *, rule: Rule = "evenodd", algo
     # (use_wide: a point past the 32-bit range is refused by this call, and
     # the general path then takes it) and its shape checks were ~2 us of a
     # 512 x 512 mask's call.
+    # (The points and ring sizes packed as bytes, which the call takes as
+    # they are: ffi.from_buffer of each, and a function to make them, were
+    # ~1.5 us of a glyph's 16 us call.)
     if type(rings) is list and len(rings) > 1:
         if _plain_shape(shape) is not None:
-            got = _packed_call(rings)
-            if got is not None:
+            got = _seq_rings(rings, _ndarray, _RING_DTYPES, 1)
+            if got is not None and len(got[0]) <= _MAX_POINTS_BYTES:
+                raw, sizes = got
                 h, w = shape
                 mask = _empty(shape, _BOOL)
-                if not _mask_rings(_from_buffer(mask), h, w, *got, opts):
+                if not _mask_packed(_from_buffer(mask), h, w, raw, len(raw) >> 4, _NULL if sizes is None else sizes,
+                                    1 if sizes is None else len(sizes) >> 2, opts):
                     return mask
     return _core.mask_polygon(_core.shape2(shape), rings, opts, opts.subpixel_bits)
 
@@ -212,7 +217,8 @@ _MAX_DIM = _lib.RAST_MAX_DIM
 _PACKED, _I32, _PACKED32 = (16, 8), _core.np.dtype(_core.np.int32), (8, 4)
 _DOUBLES = _core.ffi.typeof("double[]")
 _mask_call, _from_buffer = _lib.rastpy_mask_ring, _core.ffi.from_buffer
-_mask_rings, _packed_call = _lib.rastpy_mask_polygon, _core.packed_call
+_mask_packed, _NULL = _lib.rastpy_mask_packed, _core.ffi.NULL
+_seq_rings, _RING_DTYPES, _MAX_POINTS_BYTES = _core._seq.rings, _core._RING_DTYPES, _core._MAX_POINTS_BYTES
 
 
 def __getattr__(name: str) -> Any:

@@ -321,33 +321,44 @@ static inline rast__edge *rast__ss_edge_at(rast__edge *edges, uint32_t at)
     return (rast__edge *)(void *)((unsigned char *)edges + at);
 }
 
-/* The edge at byte `at` of edges[] stepped, its key kept at act[*m]
+/* The edge at byte `at` of edges[] stepped, its key written at out[*m]
  * unless it ends (y1 its end), its column checked against *last (the
- * last kept). */
-RAST__HOT int rast__ss_keep(rast__edge *edges, uint32_t at, uint64_t *act, int32_t *m, int32_t y1,
-                            int32_t *last)
+ * last kept); before it, the next row's new edges' keys that come before
+ * it (*nk the next of them, in order, ending in a sentinel above every
+ * key: the merge that joins them to the AET, done as the keys are
+ * written anyway).  A new key is at or after the key written before it
+ * (else it would have gone before that one), so it hides no swap. */
+RAST__HOT int rast__ss_keep(rast__edge *edges, uint32_t at, uint64_t *out, int32_t *m, int32_t y1,
+                            int32_t *last, const uint64_t **nk)
 {
     rast__edge *e = rast__ss_edge_at(edges, at);
+    uint64_t key;
     int sw;
     rast__edge_step(e);
     if (e->end == y1) return 0;
+    key = rast__ss_key(e->x, at);
+    while (**nk < key) out[(*m)++] = *(*nk)++;
     sw = e->x < *last;
     *last = e->x;
-    act[(*m)++] = rast__ss_key(e->x, at);
+    out[(*m)++] = key;
     return sw;
 }
 
 /* Fine row y's pass over the n keys act[] of the AET (edges[]: the edge
- * table): the runs, every edge stepped, its key written back unless it
- * ends on the row (y1 = y + 1).  Returns how many are left; *swapped 1
- * when two changed places.  Pairs of edges of opposite directions, while
- * they come, each bound a run (the winding number is back to 0 after
- * each: most rows of most polygons are only such pairs; all pairs,
- * even-odd); from the first pair that is not, edge by edge. */
-RAST__HOT int32_t rast__ss_pass(uint64_t *act, int32_t n, rast__edge *edges, int32_t y1,
-                                int32_t *d, uint64_t *mark, int32_t kb, int32_t fx0, int32_t fx1,
-                                int clamp, int evenodd, int *swapped)
+ * table): the runs, every edge stepped, its key written to out[] unless
+ * it ends on the row (y1 = y + 1), with the next row's new keys nk[0 ..
+ * kn) (in order, nk[kn] a sentinel above every key) merged in.  Returns
+ * how many are in out[]; *swapped 1 when two changed places.  Pairs of
+ * edges of opposite directions, while they come, each bound a run (the
+ * winding number is back to 0 after each: most rows of most polygons
+ * are only such pairs; all pairs, even-odd); from the first pair that is
+ * not, edge by edge. */
+RAST__HOT int32_t rast__ss_pass(const uint64_t *act, int32_t n, uint64_t *out, const uint64_t *nk,
+                                int32_t kn, rast__edge *edges, int32_t y1, int32_t *d,
+                                uint64_t *mark, int32_t kb, int32_t fx0, int32_t fx1, int clamp,
+                                int evenodd, int *swapped)
 {
+    const uint64_t *const nk_end = nk + kn;
     int32_t i, m = 0, w = 0, x0 = 0, last = INT32_MIN, sw = 0;
     for (i = 0; i + 1 < n; i += 2) {
         const uint32_t a = (uint32_t)act[i], b = (uint32_t)act[i + 1];
@@ -355,14 +366,15 @@ RAST__HOT int32_t rast__ss_pass(uint64_t *act, int32_t n, rast__edge *edges, int
         if (!evenodd && l->dir + r->dir != 0) break;
         rast__ss_pair(d, mark, kb, rast__ss_at(l->x, fx0, fx1, clamp),
                       rast__ss_at(r->x, fx0, fx1, clamp));
-        sw |= rast__ss_keep(edges, a, act, &m, y1, &last);
-        sw |= rast__ss_keep(edges, b, act, &m, y1, &last);
+        sw |= rast__ss_keep(edges, a, out, &m, y1, &last, &nk);
+        sw |= rast__ss_keep(edges, b, out, &m, y1, &last, &nk);
     }
     for (; i < n; i++) { /* (even-odd: an odd edge out, no run) */
         const uint32_t at = (uint32_t)act[i];
         if (!evenodd) rast__ss_cross(rast__ss_edge_at(edges, at), &w, &x0, d, mark, kb, fx0, fx1, clamp);
-        sw |= rast__ss_keep(edges, at, act, &m, y1, &last);
+        sw |= rast__ss_keep(edges, at, out, &m, y1, &last, &nk);
     }
+    while (nk < nk_end) out[m++] = *nk++; /* (after every key kept) */
     *swapped = sw;
     return m;
 }
@@ -400,29 +412,37 @@ static uint64_t *rast__ss_keys(const rast__edge *edges, int32_t at, int32_t k, u
 
 /* One fine row's pass with the rule, the clamp and the marks as constants
  * in each copy. */
-static int32_t rast__ss_row_pass(rast__ss *ss, uint64_t *act, int32_t n, rast__edge *edges,
-                                 int32_t y1, int *sw)
+static int32_t rast__ss_row_pass(rast__ss *ss, const uint64_t *act, int32_t n, uint64_t *out,
+                                 const uint64_t *nk, int32_t kn, rast__edge *edges, int32_t y1,
+                                 int *sw)
 {
     const int32_t kb = ss->kbits, fx0 = ss->fx0, fx1 = ss->fx1;
     int32_t *d = ss->d;
     uint64_t *mark = ss->dense ? NULL : ss->mark;
     if (ss->evenodd || ss->clip)
-        return rast__ss_pass(act, n, edges, y1, d, mark, kb, fx0, fx1, ss->clip, ss->evenodd, sw);
+        return rast__ss_pass(act, n, out, nk, kn, edges, y1, d, mark, kb, fx0, fx1, ss->clip,
+                             ss->evenodd, sw);
     /* (the commonest case) */
-    return mark ? rast__ss_pass(act, n, edges, y1, d, mark, kb, fx0, fx1, 0, 0, sw)
-                : rast__ss_pass(act, n, edges, y1, d, NULL, kb, fx0, fx1, 0, 0, sw);
+    return mark ? rast__ss_pass(act, n, out, nk, kn, edges, y1, d, mark, kb, fx0, fx1, 0, 0, sw)
+                : rast__ss_pass(act, n, out, nk, kn, edges, y1, d, NULL, kb, fx0, fx1, 0, 0, sw);
 }
 
 /* The walk of the edge table, as rast__ss_sweep_records: with the keys
  * when edges join and end on most rows (4 or more a row on average; aet[]'s
- * room then holds the keys: at most nedges active, and twice a row's new
- * ones while they are sorted), else (long edges: a star's, a circle's)
+ * room then holds the keys: at most nedges active, written by each row's
+ * pass to a second array with the next row's new ones merged in, and
+ * twice a row's new ones while they are sorted: the merge of them into
+ * the AET in a pass of its own, its comparisons mispredicted, was a tenth
+ * of the time of text), else (long edges: a star's, a circle's)
  * with the records, which pays no key a row and an edge and moves the
  * records on few rows. */
 static void rast__ss_sweep(rast__ss *ss, rast__edge *edges, rast__edge *aet, int32_t *bucket,
                            int32_t nedges, int32_t row0, int32_t row1)
 {
-    uint64_t *act = (uint64_t *)(void *)aet, *add = act + nedges;
+    /* aet[]'s room (nedges records of 48 bytes, 6 words each): the keys
+     * of this row and of the next (nedges words each) and a row's new
+     * keys sorted (twice their number, and a sentinel) */
+    uint64_t *act = (uint64_t *)(void *)aet, *out = act + nedges, *add = out + nedges;
     int32_t j, first = 0, n = 0;
     if (nedges < 2 * ((int64_t)row1 - row0) ||
         (uint64_t)nedges * sizeof(rast__edge) > UINT32_MAX) {
@@ -431,25 +451,33 @@ static void rast__ss_sweep(rast__ss *ss, rast__edge *edges, rast__edge *aet, int
     }
     rast__aet_group(edges, aet, bucket, nedges, row0, row1);
     for (j = row0; j < row1; j++) {
-        const int32_t last = bucket[j - row0], k = last - first;
+        uint64_t *nk, *t;
+        int32_t kn;
         int swapped;
-        if (k) {
-            const uint64_t *keys = rast__ss_keys(edges, first, k, add, add + k);
-            int32_t m = n + k, a = n - 1, b = k - 1;
-            while (b >= 0) act[--m] = a >= 0 && act[a] > keys[b] ? act[a--] : keys[b--];
-            n += k;
-            first = last;
+        if (n == 0) { /* none active: the row's new edges, if any */
+            const int32_t k = bucket[j - row0] - first;
+            if (!k) continue;
+            memcpy(act, rast__ss_keys(edges, first, k, add, add + k), (size_t)k * sizeof *act);
+            n = k;
+            first += k;
         }
-        if (n == 0) continue;
+        /* the next row's new edges' keys, sorted, merged in by the pass */
+        kn = j + 1 < row1 ? bucket[j + 1 - row0] - first : 0;
+        nk = rast__ss_keys(edges, first, kn, add, add + kn + 1);
+        nk[kn] = UINT64_MAX;
+        first += kn;
         rast__ss_row(ss, j - ss->fy0);
         ss->ends += n;
-        n = rast__ss_row_pass(ss, act, n, edges, j + 1, &swapped);
+        n = rast__ss_row_pass(ss, act, n, out, nk, kn, edges, j + 1, &swapped);
+        t = act;
+        act = out;
+        out = t;
         if (swapped) { /* insertion sort of the keys */
-            int32_t i, t;
+            int32_t i, s;
             for (i = 1; i < n; i++) {
                 const uint64_t v = act[i];
-                for (t = i; t > 0 && act[t - 1] > v; t--) act[t] = act[t - 1];
-                act[t] = v;
+                for (s = i; s > 0 && act[s - 1] > v; s--) act[s] = act[s - 1];
+                act[s] = v;
             }
         }
     }

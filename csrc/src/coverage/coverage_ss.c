@@ -379,16 +379,15 @@ RAST__HOT int32_t rast__ss_pass(const uint64_t *act, int32_t n, uint64_t *out, c
     return m;
 }
 
-/* The keys of the k edges at bytes at[0 .. k) of edges[], sorted: runs
- * of 16 by insertion (a row's new edges come mostly in order), then
- * merged in pairs of runs twice as long, between key[] and tmp[] (room
- * for k each); returns the array that holds them in order. */
-static uint64_t *rast__ss_keys(rast__edge *edges, const uint32_t *at, int32_t k, uint64_t *key,
-                               uint64_t *tmp)
+/* The k keys in[0 .. k) sorted: runs of 16 by insertion (a row's new
+ * edges come mostly in order), then merged in pairs of runs twice as
+ * long, between key[] and tmp[] (room for k each); returns the array
+ * that holds them in order. */
+static uint64_t *rast__ss_keys(const uint64_t *in, int32_t k, uint64_t *key, uint64_t *tmp)
 {
     int32_t i, wd;
     for (i = 0; i < k; i++) {
-        const uint64_t v = rast__ss_key(rast__ss_edge_at(edges, at[i])->x, at[i]);
+        const uint64_t v = in[i];
         int32_t to = i;
         for (; to > (i & ~15) && key[to - 1] > v; to--) key[to] = key[to - 1];
         key[to] = v;
@@ -442,11 +441,12 @@ static void rast__ss_sweep(rast__ss *ss, rast__edge *edges, rast__edge *aet, int
      * them by first row into edges[], 48 bytes an edge written and read
      * again, was a tenth of the time of text: 1.6 MB past the caches);
      * edges[]'s room (nedges records of 48 bytes, 6 words each, 2 <=
-     * nedges) holds their byte offsets grouped by first row (half a word
-     * each), the keys of this row and of the next (nedges words each) and
-     * a row's new keys sorted (twice their number, and a sentinel). */
-    uint32_t *at = (uint32_t *)(void *)edges;
-    uint64_t *act = (uint64_t *)(void *)edges + (nedges + 1) / 2, *out = act + nedges,
+     * nedges) holds their keys grouped by first row (read from the
+     * records in order: reading each record's column when its row came
+     * waited for it), the keys of this row and of the next (nedges words
+     * each) and a row's new keys sorted (twice their number, and a
+     * sentinel). */
+    uint64_t *at = (uint64_t *)(void *)edges, *act = at + nedges, *out = act + nedges,
              *add = out + nedges;
     int32_t j, e, first = 0, n = 0, run = 0;
     if (nedges < 2 * ((int64_t)row1 - row0) ||
@@ -454,14 +454,15 @@ static void rast__ss_sweep(rast__ss *ss, rast__edge *edges, rast__edge *aet, int
         rast__ss_sweep_records(ss, edges, aet, bucket, nedges, row0, row1);
         return;
     }
-    /* the offsets grouped by first row (rast__aet_group's counting sort):
+    /* the keys grouped by first row (rast__aet_group's counting sort):
      * bucket[r - row0] is then where row r's run ends */
     for (j = 0; j <= row1 - row0; j++) {
         run += bucket[j];
         bucket[j] = run;
     }
     for (e = 0; e < nedges; e++)
-        at[bucket[aet[e].row - row0]++] = (uint32_t)((size_t)e * sizeof(rast__edge));
+        at[bucket[aet[e].row - row0]++] =
+            rast__ss_key(aet[e].x, (uint32_t)((size_t)e * sizeof(rast__edge)));
     for (j = row0; j < row1; j++) {
         uint64_t *nk, *t;
         int32_t kn;
@@ -469,13 +470,13 @@ static void rast__ss_sweep(rast__ss *ss, rast__edge *edges, rast__edge *aet, int
         if (n == 0) { /* none active: the row's new edges, if any */
             const int32_t k = bucket[j - row0] - first;
             if (!k) continue;
-            memcpy(act, rast__ss_keys(aet, at + first, k, add, add + k), (size_t)k * sizeof *act);
+            memcpy(act, rast__ss_keys(at + first, k, add, add + k), (size_t)k * sizeof *act);
             n = k;
             first += k;
         }
         /* the next row's new edges' keys, sorted, merged in by the pass */
         kn = j + 1 < row1 ? bucket[j + 1 - row0] - first : 0;
-        nk = rast__ss_keys(aet, at + first, kn, add, add + kn + 1);
+        nk = rast__ss_keys(at + first, kn, add, add + kn + 1);
         nk[kn] = UINT64_MAX;
         first += kn;
         rast__ss_row(ss, j - ss->fy0);

@@ -285,7 +285,8 @@ static void rast__ss_sweep_records(rast__ss *ss, rast__edge *edges, rast__edge *
 static int rast__ss_dense_of(uint64_t sum, int32_t lo, int32_t hi, const rast__ss *ss);
 
 #if defined(__OPTIMIZE_SIZE__)
-#define rast__ss_sweep rast__ss_sweep_records
+#define rast__ss_sweep(ss, edges, aet, bucket, nedges, row0, row1, xlo, xhi) \
+    rast__ss_sweep_records(ss, edges, aet, bucket, nedges, row0, row1)
 #else
 /* The walk with an AET of keys: each active edge a 64-bit key, its
  * column over its index in the edge table, where its record stays from
@@ -428,6 +429,19 @@ static int32_t rast__ss_row_pass(rast__ss *ss, const uint64_t *act, int32_t n, u
                 : rast__ss_pass(act, n, out, nk, kn, edges, y1, d, NULL, kb, fx0, fx1, 0, 0, sw);
 }
 
+/* The counts of edges starting on each of `rows` rows (bucket[r + 1] for
+ * row r, bucket[0] = 0) made where each row's run starts in a table
+ * grouped by row (their running sum, in a register: through memory,
+ * each row waited for the store of the one before). */
+static void rast__ss_starts(int32_t *bucket, int32_t rows)
+{
+    int32_t j, run = 0;
+    for (j = 0; j <= rows; j++) {
+        run += bucket[j];
+        bucket[j] = run;
+    }
+}
+
 /* The walk of the edge table, as rast__ss_sweep_records: with the keys
  * when edges join and end on most rows (4 or more a row on average; aet[]'s
  * room then holds the keys: at most nedges active, written by each row's
@@ -438,7 +452,7 @@ static int32_t rast__ss_row_pass(rast__ss *ss, const uint64_t *act, int32_t n, u
  * with the records, which pays no key a row and an edge and moves the
  * records on few rows. */
 static void rast__ss_sweep(rast__ss *ss, rast__edge *edges, rast__edge *aet, int32_t *bucket,
-                           int32_t nedges, int32_t row0, int32_t row1)
+                           int32_t nedges, int32_t row0, int32_t row1, int64_t xlo, int64_t xhi)
 {
     /* The records stay in aet[], where the setup wrote them (grouping
      * them by first row into edges[], 48 bytes an edge written and read
@@ -446,12 +460,12 @@ static void rast__ss_sweep(rast__ss *ss, rast__edge *edges, rast__edge *aet, int
      * edges[]'s room (nedges records of 48 bytes, 6 words each, 2 <=
      * nedges) holds their keys grouped by first row (read from the
      * records in order: reading each record's column when its row came
-     * waited for it), the keys of this row and of the next (nedges words
-     * each) and a row's new keys sorted (twice their number, and a
-     * sentinel). */
-    uint64_t *at = (uint64_t *)(void *)edges, *act = at + nedges, *out = act + nedges,
+     * waited for it) and a word after them, the keys of this row and of
+     * the next (nedges words each) and a row's new keys sorted (twice
+     * their number, and a sentinel). */
+    uint64_t *at = (uint64_t *)(void *)edges, *act = at + nedges + 1, *out = act + nedges,
              *add = out + nedges;
-    int32_t j, e, first = 0, n = 0, run = 0;
+    int32_t j, e, first = 0, n = 0, sorted = 0;
     uint64_t sum = 0;
     if (nedges < 2 * ((int64_t)row1 - row0) ||
         (uint64_t)nedges * sizeof(rast__edge) > UINT32_MAX) {
@@ -464,14 +478,59 @@ static void rast__ss_sweep(rast__ss *ss, rast__edge *edges, rast__edge *aet, int
     }
     /* the keys grouped by first row (rast__aet_group's counting sort):
      * bucket[r - row0] is then where row r's run ends */
-    for (j = 0; j <= row1 - row0; j++) {
-        run += bucket[j];
-        bucket[j] = run;
+    rast__ss_starts(bucket, row1 - row0);
+    at[nedges] = 0;
+    if (xhi - xlo < 65536 && row1 - row0 < 65536) {
+        /* and sorted within each row, all at once, without a comparison
+         * (each row's dozen by insertion mispredicted where each stops:
+         * a tenth of the time of text): an element an edge, its column
+         * over xlo (16 bits: [xlo, xhi] holds every crossing), its row
+         * over row0 (16 bits) and its index, put in order of column by
+         * two passes of 8 bits (stable: equal columns stay in the order
+         * of the records, as the keys' offsets order them), then by row
+         * (stable) as it becomes its key in at[]; when a column is not
+         * within 65,536 of xlo after all (bad), as before */
+        uint32_t h0[256], h1[256];
+        uint32_t bad = 0;
+        memset(h0, 0, sizeof h0);
+        memset(h1, 0, sizeof h1);
+        for (e = 0; e < nedges; e++) {
+            const uint32_t xr = (uint32_t)((int64_t)aet[e].x - xlo);
+            sum += (uint32_t)(aet[e].end - aet[e].row);
+            bad |= xr;
+            act[e] = (uint64_t)(xr & 0xFFFFu) << 48 | (uint64_t)(aet[e].row - row0) << 32 |
+                     (uint32_t)e;
+            h0[xr & 255]++;
+            h1[(xr >> 8) & 255]++;
+        }
+        sorted = bad < 65536;
+        if (sorted) {
+            uint32_t s0 = 0, s1 = 0, k;
+            for (k = 0; k < 256; k++) {
+                const uint32_t c0 = h0[k], c1 = h1[k];
+                h0[k] = s0;
+                h1[k] = s1;
+                s0 += c0;
+                s1 += c1;
+            }
+            for (e = 0; e < nedges; e++) out[h0[(act[e] >> 48) & 255]++] = act[e];
+            for (e = 0; e < nedges; e++) act[h1[out[e] >> 56]++] = out[e];
+            for (e = 0; e < nedges; e++) {
+                const uint64_t v = act[e];
+                at[bucket[(v >> 32) & 0xFFFF]++] =
+                    rast__ss_key((int32_t)(xlo + (int64_t)(v >> 48)),
+                                 (uint32_t)((size_t)(uint32_t)v * sizeof(rast__edge)));
+            }
+        } else {
+            sum = 0; /* (counted again below) */
+        }
     }
-    for (e = 0; e < nedges; e++) {
-        sum += (uint32_t)(aet[e].end - aet[e].row);
-        at[bucket[aet[e].row - row0]++] =
-            rast__ss_key(aet[e].x, (uint32_t)((size_t)e * sizeof(rast__edge)));
+    if (!sorted) {
+        for (e = 0; e < nedges; e++) {
+            sum += (uint32_t)(aet[e].end - aet[e].row);
+            at[bucket[aet[e].row - row0]++] =
+                rast__ss_key(aet[e].x, (uint32_t)((size_t)e * sizeof(rast__edge)));
+        }
     }
     /* the choice of flush from the fine rows the edges cross, summed over
      * the visible rows (the same ratio as the heights over the height),
@@ -479,24 +538,33 @@ static void rast__ss_sweep(rast__ss *ss, rast__edge *edges, rast__edge *aet, int
      * 1.3 MB of text's records was 3% of its time) */
     if (ss->dense < 0) ss->dense = rast__ss_dense_of(sum, row0, row1, ss);
     for (j = row0; j < row1; j++) {
-        uint64_t *nk, *t;
+        uint64_t *nk, *t, keep = 0;
         int32_t kn;
         int swapped;
         if (n == 0) { /* none active: the row's new edges, if any */
             const int32_t k = bucket[j - row0] - first;
             if (!k) continue;
-            memcpy(act, rast__ss_keys(at + first, k, add, add + k), (size_t)k * sizeof *act);
+            memcpy(act, sorted ? at + first : rast__ss_keys(at + first, k, add, add + k),
+                   (size_t)k * sizeof *act);
             n = k;
             first += k;
         }
-        /* the next row's new edges' keys, sorted, merged in by the pass */
+        /* the next row's new edges' keys, sorted, merged in by the pass
+         * (a sentinel after them: in at[], the next row's first key kept
+         * aside) */
         kn = j + 1 < row1 ? bucket[j + 1 - row0] - first : 0;
-        nk = rast__ss_keys(at + first, kn, add, add + kn + 1);
+        if (sorted) {
+            nk = at + first;
+            keep = nk[kn];
+        } else {
+            nk = rast__ss_keys(at + first, kn, add, add + kn + 1);
+        }
         nk[kn] = UINT64_MAX;
-        first += kn;
         rast__ss_row(ss, j - ss->fy0);
         ss->ends += n;
         n = rast__ss_row_pass(ss, act, n, out, nk, kn, aet, j + 1, &swapped);
+        if (sorted) nk[kn] = keep;
+        first += kn;
         t = act;
         act = out;
         out = t;
@@ -700,7 +768,10 @@ rast_status rast__cov_ss(const rast_polygon *poly, uint32_t npoints, int32_t s,
     if (st != RAST_OK) return st;
     if (t.row0 < t.row1) {
         ss.dense = -1; /* (from the records, rast__ss_sweep) */
-        rast__ss_sweep(&ss, t.edges, t.aet, t.bucket, t.nedges, t.row0, t.row1);
+        /* (the crossings' columns: rast__ss_inside's) */
+        rast__ss_sweep(&ss, t.edges, t.aet, t.bucket, t.nedges, t.row0, t.row1,
+                       rast__floordiv(t.minx, (int64_t)1 << s) - 1,
+                       rast__floordiv(t.maxx, (int64_t)1 << s) + 1);
     }
 #endif
     rast__ss_finish(&ss);
@@ -760,7 +831,10 @@ static int rast__ss_cancel(rast__ss *ss, const rast_point *pts, const uint32_t *
         return 0;
     }
     nedges = rast__segs_edges(seg, m, g, row0, row1, aet, bucket);
-    rast__ss_sweep(ss, edges, aet, bucket, nedges, row0, row1);
+    /* (the clip's columns: a crossing outside them, if any, is found on
+     * the way) */
+    rast__ss_sweep(ss, edges, aet, bucket, nedges, row0, row1, (int64_t)fine->x0 - 1,
+                   (int64_t)fine->x1 + 1);
     return 1;
 }
 

@@ -293,11 +293,11 @@ static int rast__ss_dense_of(uint64_t sum, int32_t lo, int32_t hi, const rast__s
  * the row it joins to its end (rather than aet.h's sweep, whose AET of
  * 48-byte records was merged and compacted on nearly every fine row of a
  * paragraph of text, the records moved each time: a quarter of the
- * fill).  A row: its new edges' keys sorted and merged in, then one pass
- * over the keys that takes each edge's crossing into the runs, steps the
- * edge, and writes its key back unless it ends.  The records the keys
- * point at are those of the last few rows' new edges, neighbours in the
- * edge table (grouped by first row): few, and read independently. */
+ * fill).  A row: one pass over the keys that takes each edge's crossing
+ * into the runs, steps the edge, and writes its key back unless it ends,
+ * the next row's new edges' keys (sorted) merged in as it goes.  The
+ * records the keys point at stay where the setup wrote them, those of a
+ * row mostly neighbours (a ring's edges one after another). */
 
 /* Edge *e's crossing of a non-zero row (the row's edges in order of
  * column) into its runs: w the winding number, a run from where it
@@ -443,14 +443,14 @@ static void rast__ss_starts(int32_t *bucket, int32_t rows)
 }
 
 /* The walk of the edge table, as rast__ss_sweep_records: with the keys
- * when edges join and end on most rows (4 or more a row on average; aet[]'s
- * room then holds the keys: at most nedges active, written by each row's
- * pass to a second array with the next row's new ones merged in, and
- * twice a row's new ones while they are sorted: the merge of them into
- * the AET in a pass of its own, its comparisons mispredicted, was a tenth
- * of the time of text), else (long edges: a star's, a circle's)
- * with the records, which pays no key a row and an edge and moves the
- * records on few rows. */
+ * when edges join and end on most rows (4 or more a row on average: at
+ * most nedges active, written by each row's pass to a second array with
+ * the next row's new ones merged in, where the merge of them into the
+ * AET in a pass of its own, its comparisons mispredicted, was a tenth of
+ * the time of text), else (long edges: a star's, a circle's) with the
+ * records, which pays no key a row and an edge and moves the records on
+ * few rows.  [xlo, xhi]: bounds of the crossings' columns (a crossing
+ * outside them is found, and then costs only the sort at once). */
 static void rast__ss_sweep(rast__ss *ss, rast__edge *edges, rast__edge *aet, int32_t *bucket,
                            int32_t nedges, int32_t row0, int32_t row1, int64_t xlo, int64_t xhi)
 {

@@ -37,7 +37,8 @@ typedef struct rast__ss {
     int32_t ends;          /* runs' ends in the output row so far */
     int32_t evenodd;       /* the rule */
     int32_t clip;          /* 0: every crossing within the clip's columns */
-    int32_t dense;         /* 1: uint8_t rows, all summed, no marks (rast__ss_dense) */
+    int32_t dense;         /* 1: uint8_t rows, all summed, no marks (rast__ss_dense);
+                              -1: to be told by rast__ss_sweep from the records */
 } rast__ss;
 
 /* Pixels [k0, k1) of a clip row get value v. */
@@ -281,19 +282,22 @@ static void rast__ss_sweep_records(rast__ss *ss, rast__edge *edges, rast__edge *
                     ss);
 }
 
+static int rast__ss_dense_of(uint64_t sum, int32_t lo, int32_t hi, const rast__ss *ss);
+
 #if defined(__OPTIMIZE_SIZE__)
-#define rast__ss_sweep rast__ss_sweep_records
+#define rast__ss_sweep(ss, edges, aet, bucket, nedges, row0, row1, xlo, xhi) \
+    rast__ss_sweep_records(ss, edges, aet, bucket, nedges, row0, row1)
 #else
 /* The walk with an AET of keys: each active edge a 64-bit key, its
  * column over its index in the edge table, where its record stays from
  * the row it joins to its end (rather than aet.h's sweep, whose AET of
  * 48-byte records was merged and compacted on nearly every fine row of a
  * paragraph of text, the records moved each time: a quarter of the
- * fill).  A row: its new edges' keys sorted and merged in, then one pass
- * over the keys that takes each edge's crossing into the runs, steps the
- * edge, and writes its key back unless it ends.  The records the keys
- * point at are those of the last few rows' new edges, neighbours in the
- * edge table (grouped by first row): few, and read independently. */
+ * fill).  A row: one pass over the keys that takes each edge's crossing
+ * into the runs, steps the edge, and writes its key back unless it ends,
+ * the next row's new edges' keys (sorted) merged in as it goes.  The
+ * records the keys point at stay where the setup wrote them, those of a
+ * row mostly neighbours (a ring's edges one after another). */
 
 /* Edge *e's crossing of a non-zero row (the row's edges in order of
  * column) into its runs: w the winding number, a run from where it
@@ -321,33 +325,44 @@ static inline rast__edge *rast__ss_edge_at(rast__edge *edges, uint32_t at)
     return (rast__edge *)(void *)((unsigned char *)edges + at);
 }
 
-/* The edge at byte `at` of edges[] stepped, its key kept at act[*m]
+/* The edge at byte `at` of edges[] stepped, its key written at out[*m]
  * unless it ends (y1 its end), its column checked against *last (the
- * last kept). */
-RAST__HOT int rast__ss_keep(rast__edge *edges, uint32_t at, uint64_t *act, int32_t *m, int32_t y1,
-                            int32_t *last)
+ * last kept); before it, the next row's new edges' keys that come before
+ * it (*nk the next of them, in order, ending in a sentinel above every
+ * key: the merge that joins them to the AET, done as the keys are
+ * written anyway).  A new key is at or after the key written before it
+ * (else it would have gone before that one), so it hides no swap. */
+RAST__HOT int rast__ss_keep(rast__edge *edges, uint32_t at, uint64_t *out, int32_t *m, int32_t y1,
+                            int32_t *last, const uint64_t **nk)
 {
     rast__edge *e = rast__ss_edge_at(edges, at);
+    uint64_t key;
     int sw;
     rast__edge_step(e);
     if (e->end == y1) return 0;
+    key = rast__ss_key(e->x, at);
+    while (**nk < key) out[(*m)++] = *(*nk)++;
     sw = e->x < *last;
     *last = e->x;
-    act[(*m)++] = rast__ss_key(e->x, at);
+    out[(*m)++] = key;
     return sw;
 }
 
 /* Fine row y's pass over the n keys act[] of the AET (edges[]: the edge
- * table): the runs, every edge stepped, its key written back unless it
- * ends on the row (y1 = y + 1).  Returns how many are left; *swapped 1
- * when two changed places.  Pairs of edges of opposite directions, while
- * they come, each bound a run (the winding number is back to 0 after
- * each: most rows of most polygons are only such pairs; all pairs,
- * even-odd); from the first pair that is not, edge by edge. */
-RAST__HOT int32_t rast__ss_pass(uint64_t *act, int32_t n, rast__edge *edges, int32_t y1,
-                                int32_t *d, uint64_t *mark, int32_t kb, int32_t fx0, int32_t fx1,
-                                int clamp, int evenodd, int *swapped)
+ * table): the runs, every edge stepped, its key written to out[] unless
+ * it ends on the row (y1 = y + 1), with the next row's new keys nk[0 ..
+ * kn) (in order, nk[kn] a sentinel above every key) merged in.  Returns
+ * how many are in out[]; *swapped 1 when two changed places.  Pairs of
+ * edges of opposite directions, while they come, each bound a run (the
+ * winding number is back to 0 after each: most rows of most polygons
+ * are only such pairs; all pairs, even-odd); from the first pair that is
+ * not, edge by edge. */
+RAST__HOT int32_t rast__ss_pass(const uint64_t *act, int32_t n, uint64_t *out, const uint64_t *nk,
+                                int32_t kn, rast__edge *edges, int32_t y1, int32_t *d,
+                                uint64_t *mark, int32_t kb, int32_t fx0, int32_t fx1, int clamp,
+                                int evenodd, int *swapped)
 {
+    const uint64_t *const nk_end = nk + kn;
     int32_t i, m = 0, w = 0, x0 = 0, last = INT32_MIN, sw = 0;
     for (i = 0; i + 1 < n; i += 2) {
         const uint32_t a = (uint32_t)act[i], b = (uint32_t)act[i + 1];
@@ -355,29 +370,28 @@ RAST__HOT int32_t rast__ss_pass(uint64_t *act, int32_t n, rast__edge *edges, int
         if (!evenodd && l->dir + r->dir != 0) break;
         rast__ss_pair(d, mark, kb, rast__ss_at(l->x, fx0, fx1, clamp),
                       rast__ss_at(r->x, fx0, fx1, clamp));
-        sw |= rast__ss_keep(edges, a, act, &m, y1, &last);
-        sw |= rast__ss_keep(edges, b, act, &m, y1, &last);
+        sw |= rast__ss_keep(edges, a, out, &m, y1, &last, &nk);
+        sw |= rast__ss_keep(edges, b, out, &m, y1, &last, &nk);
     }
     for (; i < n; i++) { /* (even-odd: an odd edge out, no run) */
         const uint32_t at = (uint32_t)act[i];
         if (!evenodd) rast__ss_cross(rast__ss_edge_at(edges, at), &w, &x0, d, mark, kb, fx0, fx1, clamp);
-        sw |= rast__ss_keep(edges, at, act, &m, y1, &last);
+        sw |= rast__ss_keep(edges, at, out, &m, y1, &last, &nk);
     }
+    while (nk < nk_end) out[m++] = *nk++; /* (after every key kept) */
     *swapped = sw;
     return m;
 }
 
-/* The keys of the k edges edges[at .. at + k), sorted: runs of 16 by
- * insertion (a row's new edges come mostly in order), then merged in
- * pairs of runs twice as long, between key[] and tmp[] (room for k
- * each); returns the array that holds them in order. */
-static uint64_t *rast__ss_keys(const rast__edge *edges, int32_t at, int32_t k, uint64_t *key,
-                               uint64_t *tmp)
+/* The k keys in[0 .. k) sorted: runs of 16 by insertion (a row's new
+ * edges come mostly in order), then merged in pairs of runs twice as
+ * long, between key[] and tmp[] (room for k each); returns the array
+ * that holds them in order. */
+static uint64_t *rast__ss_keys(const uint64_t *in, int32_t k, uint64_t *key, uint64_t *tmp)
 {
     int32_t i, wd;
     for (i = 0; i < k; i++) {
-        const uint64_t v =
-            rast__ss_key(edges[at + i].x, (uint32_t)((size_t)(at + i) * sizeof(rast__edge)));
+        const uint64_t v = in[i];
         int32_t to = i;
         for (; to > (i & ~15) && key[to - 1] > v; to--) key[to] = key[to - 1];
         key[to] = v;
@@ -400,56 +414,166 @@ static uint64_t *rast__ss_keys(const rast__edge *edges, int32_t at, int32_t k, u
 
 /* One fine row's pass with the rule, the clamp and the marks as constants
  * in each copy. */
-static int32_t rast__ss_row_pass(rast__ss *ss, uint64_t *act, int32_t n, rast__edge *edges,
-                                 int32_t y1, int *sw)
+static int32_t rast__ss_row_pass(rast__ss *ss, const uint64_t *act, int32_t n, uint64_t *out,
+                                 const uint64_t *nk, int32_t kn, rast__edge *edges, int32_t y1,
+                                 int *sw)
 {
     const int32_t kb = ss->kbits, fx0 = ss->fx0, fx1 = ss->fx1;
     int32_t *d = ss->d;
     uint64_t *mark = ss->dense ? NULL : ss->mark;
     if (ss->evenodd || ss->clip)
-        return rast__ss_pass(act, n, edges, y1, d, mark, kb, fx0, fx1, ss->clip, ss->evenodd, sw);
+        return rast__ss_pass(act, n, out, nk, kn, edges, y1, d, mark, kb, fx0, fx1, ss->clip,
+                             ss->evenodd, sw);
     /* (the commonest case) */
-    return mark ? rast__ss_pass(act, n, edges, y1, d, mark, kb, fx0, fx1, 0, 0, sw)
-                : rast__ss_pass(act, n, edges, y1, d, NULL, kb, fx0, fx1, 0, 0, sw);
+    return mark ? rast__ss_pass(act, n, out, nk, kn, edges, y1, d, mark, kb, fx0, fx1, 0, 0, sw)
+                : rast__ss_pass(act, n, out, nk, kn, edges, y1, d, NULL, kb, fx0, fx1, 0, 0, sw);
+}
+
+/* The counts of edges starting on each of `rows` rows (bucket[r + 1] for
+ * row r, bucket[0] = 0) made where each row's run starts in a table
+ * grouped by row (their running sum, in a register: through memory,
+ * each row waited for the store of the one before). */
+static void rast__ss_starts(int32_t *bucket, int32_t rows)
+{
+    int32_t j, run = 0;
+    for (j = 0; j <= rows; j++) {
+        run += bucket[j];
+        bucket[j] = run;
+    }
 }
 
 /* The walk of the edge table, as rast__ss_sweep_records: with the keys
- * when edges join and end on most rows (4 or more a row on average; aet[]'s
- * room then holds the keys: at most nedges active, and twice a row's new
- * ones while they are sorted), else (long edges: a star's, a circle's)
- * with the records, which pays no key a row and an edge and moves the
- * records on few rows. */
+ * when edges join and end on most rows (4 or more a row on average: at
+ * most nedges active, written by each row's pass to a second array with
+ * the next row's new ones merged in, where the merge of them into the
+ * AET in a pass of its own, its comparisons mispredicted, was a tenth of
+ * the time of text), else (long edges: a star's, a circle's) with the
+ * records, which pays no key a row and an edge and moves the records on
+ * few rows.  [xlo, xhi]: bounds of the crossings' columns (a crossing
+ * outside them is found, and then costs only the sort at once). */
 static void rast__ss_sweep(rast__ss *ss, rast__edge *edges, rast__edge *aet, int32_t *bucket,
-                           int32_t nedges, int32_t row0, int32_t row1)
+                           int32_t nedges, int32_t row0, int32_t row1, int64_t xlo, int64_t xhi)
 {
-    uint64_t *act = (uint64_t *)(void *)aet, *add = act + nedges;
-    int32_t j, first = 0, n = 0;
+    /* The records stay in aet[], where the setup wrote them (grouping
+     * them by first row into edges[], 48 bytes an edge written and read
+     * again, was a tenth of the time of text: 1.6 MB past the caches);
+     * edges[]'s room (nedges records of 48 bytes, 6 words each, 2 <=
+     * nedges) holds their keys grouped by first row (read from the
+     * records in order: reading each record's column when its row came
+     * waited for it) and a word after them, the keys of this row and of
+     * the next (nedges words each) and a row's new keys sorted (twice
+     * their number, and a sentinel). */
+    uint64_t *at = (uint64_t *)(void *)edges, *act = at + nedges + 1, *out = act + nedges,
+             *add = out + nedges;
+    int32_t j, e, first = 0, n = 0, sorted = 0;
+    uint64_t sum = 0;
     if (nedges < 2 * ((int64_t)row1 - row0) ||
         (uint64_t)nedges * sizeof(rast__edge) > UINT32_MAX) {
+        if (ss->dense < 0) {
+            for (e = 0; e < nedges; e++) sum += (uint32_t)(aet[e].end - aet[e].row);
+            ss->dense = rast__ss_dense_of(sum, row0, row1, ss);
+        }
         rast__ss_sweep_records(ss, edges, aet, bucket, nedges, row0, row1);
         return;
     }
-    rast__aet_group(edges, aet, bucket, nedges, row0, row1);
-    for (j = row0; j < row1; j++) {
-        const int32_t last = bucket[j - row0], k = last - first;
-        int swapped;
-        if (k) {
-            const uint64_t *keys = rast__ss_keys(edges, first, k, add, add + k);
-            int32_t m = n + k, a = n - 1, b = k - 1;
-            while (b >= 0) act[--m] = a >= 0 && act[a] > keys[b] ? act[a--] : keys[b--];
-            n += k;
-            first = last;
+    /* the keys grouped by first row (rast__aet_group's counting sort):
+     * bucket[r - row0] is then where row r's run ends */
+    rast__ss_starts(bucket, row1 - row0);
+    at[nedges] = 0;
+    if (xhi - xlo < 65536 && row1 - row0 < 65536) {
+        /* and sorted within each row, all at once, without a comparison
+         * (each row's dozen by insertion mispredicted where each stops:
+         * a tenth of the time of text): an element an edge, its column
+         * over xlo (16 bits: [xlo, xhi] holds every crossing), its row
+         * over row0 (16 bits) and its index, put in order of column by
+         * two passes of 8 bits (stable: equal columns stay in the order
+         * of the records, as the keys' offsets order them), then by row
+         * (stable) as it becomes its key in at[]; when a column is not
+         * within 65,536 of xlo after all (bad), as before */
+        uint32_t h0[256], h1[256];
+        uint32_t bad = 0;
+        memset(h0, 0, sizeof h0);
+        memset(h1, 0, sizeof h1);
+        for (e = 0; e < nedges; e++) {
+            const uint32_t xr = (uint32_t)((int64_t)aet[e].x - xlo);
+            sum += (uint32_t)(aet[e].end - aet[e].row);
+            bad |= xr;
+            act[e] = (uint64_t)(xr & 0xFFFFu) << 48 | (uint64_t)(aet[e].row - row0) << 32 |
+                     (uint32_t)e;
+            h0[xr & 255]++;
+            h1[(xr >> 8) & 255]++;
         }
-        if (n == 0) continue;
+        sorted = bad < 65536;
+        if (sorted) {
+            uint32_t s0 = 0, s1 = 0, k;
+            for (k = 0; k < 256; k++) {
+                const uint32_t c0 = h0[k], c1 = h1[k];
+                h0[k] = s0;
+                h1[k] = s1;
+                s0 += c0;
+                s1 += c1;
+            }
+            for (e = 0; e < nedges; e++) out[h0[(act[e] >> 48) & 255]++] = act[e];
+            for (e = 0; e < nedges; e++) act[h1[out[e] >> 56]++] = out[e];
+            for (e = 0; e < nedges; e++) {
+                const uint64_t v = act[e];
+                at[bucket[(v >> 32) & 0xFFFF]++] =
+                    rast__ss_key((int32_t)(xlo + (int64_t)(v >> 48)),
+                                 (uint32_t)((size_t)(uint32_t)v * sizeof(rast__edge)));
+            }
+        } else {
+            sum = 0; /* (counted again below) */
+        }
+    }
+    if (!sorted) {
+        for (e = 0; e < nedges; e++) {
+            sum += (uint32_t)(aet[e].end - aet[e].row);
+            at[bucket[aet[e].row - row0]++] =
+                rast__ss_key(aet[e].x, (uint32_t)((size_t)e * sizeof(rast__edge)));
+        }
+    }
+    /* the choice of flush from the fine rows the edges cross, summed over
+     * the visible rows (the same ratio as the heights over the height),
+     * read here with the rest of each record (a pass of its own over
+     * 1.3 MB of text's records was 3% of its time) */
+    if (ss->dense < 0) ss->dense = rast__ss_dense_of(sum, row0, row1, ss);
+    for (j = row0; j < row1; j++) {
+        uint64_t *nk, *t, keep = 0;
+        int32_t kn;
+        int swapped;
+        if (n == 0) { /* none active: the row's new edges, if any */
+            const int32_t k = bucket[j - row0] - first;
+            if (!k) continue;
+            memcpy(act, sorted ? at + first : rast__ss_keys(at + first, k, add, add + k),
+                   (size_t)k * sizeof *act);
+            n = k;
+            first += k;
+        }
+        /* the next row's new edges' keys, sorted, merged in by the pass
+         * (a sentinel after them: in at[], the next row's first key kept
+         * aside) */
+        kn = j + 1 < row1 ? bucket[j + 1 - row0] - first : 0;
+        if (sorted) {
+            nk = at + first;
+            keep = nk[kn];
+        } else {
+            nk = rast__ss_keys(at + first, kn, add, add + kn + 1);
+        }
+        nk[kn] = UINT64_MAX;
         rast__ss_row(ss, j - ss->fy0);
         ss->ends += n;
-        n = rast__ss_row_pass(ss, act, n, edges, j + 1, &swapped);
+        n = rast__ss_row_pass(ss, act, n, out, nk, kn, aet, j + 1, &swapped);
+        if (sorted) nk[kn] = keep;
+        first += kn;
+        t = act;
+        act = out;
+        out = t;
         if (swapped) { /* insertion sort of the keys */
-            int32_t i, t;
+            int32_t i, s;
             for (i = 1; i < n; i++) {
                 const uint64_t v = act[i];
-                for (t = i; t > 0 && act[t - 1] > v; t--) act[t] = act[t - 1];
-                act[t] = v;
+                for (s = i; s > 0 && act[s - 1] > v; s--) act[s] = act[s - 1];
+                act[s] = v;
             }
         }
     }
@@ -496,19 +620,6 @@ static int rast__ss_dense(const rast_polygon *poly, const rast__ss *ss)
     return rast__ss_dense_of(sum, lo, hi, ss);
 }
 #else
-/* The polygon's test from its walk's edge records (rast__aet_prepare):
- * the fine rows each crosses, summed, over the visible rows (the same
- * ratio as the heights over the height), counted in the setup's records
- * (a pass over the rings for it was a thirtieth of a stroke outline's
- * ss4). */
-static int rast__ss_dense_tab(const rast__aet_tab *t, const rast__ss *ss)
-{
-    uint64_t sum = 0;
-    int32_t k;
-    if (ss->o->format != RAST_COVERAGE_U8) return 0;
-    for (k = 0; k < t->nedges; k++) sum += (uint32_t)(t->aet[k].end - t->aet[k].row);
-    return rast__ss_dense_of(sum, t->row0, t->row1, ss);
-}
 #endif
 
 /* 1 when every crossing of the polygon (points on the fine grid, S
@@ -656,8 +767,11 @@ rast_status rast__cov_ss(const rast_polygon *poly, uint32_t npoints, int32_t s,
     st = rast__aet_prepare(poly, npoints, &g, &fine, arena, NULL, &t);
     if (st != RAST_OK) return st;
     if (t.row0 < t.row1) {
-        ss.dense = rast__ss_dense_tab(&t, &ss);
-        rast__ss_sweep(&ss, t.edges, t.aet, t.bucket, t.nedges, t.row0, t.row1);
+        ss.dense = -1; /* (from the records, rast__ss_sweep) */
+        /* (the crossings' columns: rast__ss_inside's) */
+        rast__ss_sweep(&ss, t.edges, t.aet, t.bucket, t.nedges, t.row0, t.row1,
+                       rast__floordiv(t.minx, (int64_t)1 << s) - 1,
+                       rast__floordiv(t.maxx, (int64_t)1 << s) + 1);
     }
 #endif
     rast__ss_finish(&ss);
@@ -717,7 +831,10 @@ static int rast__ss_cancel(rast__ss *ss, const rast_point *pts, const uint32_t *
         return 0;
     }
     nedges = rast__segs_edges(seg, m, g, row0, row1, aet, bucket);
-    rast__ss_sweep(ss, edges, aet, bucket, nedges, row0, row1);
+    /* (the clip's columns: a crossing outside them, if any, is found on
+     * the way) */
+    rast__ss_sweep(ss, edges, aet, bucket, nedges, row0, row1, (int64_t)fine->x0 - 1,
+                   (int64_t)fine->x1 + 1);
     return 1;
 }
 

@@ -8,7 +8,8 @@
  * Input: a target (every format, the four the blend takes most often; up
  * to 64 x 64; a clip around it; a stride with 0..7 bytes of padding; the
  * pixels from a generator seeded by the input), a polygon (1..3 rings,
- * their sizes sometimes summing to fewer than the points) or triangles,
+ * their sizes sometimes any values: not summing to the points, or summing
+ * to them only modulo 2^32, which the glue refuses) or triangles,
  * with float64 coordinates near
  * the target, anywhere in range, out of it, NaN or infinite; the options
  * (binary: algorithm, rule, S, sample, rounding, boundary; coverage:
@@ -93,7 +94,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     int32_t w, h, bpp = 1, x, y, s;
     ptrdiff_t stride;
     uint32_t kind, npoints, nrings = 1, rings[3], i, seed, ntris = 0;
-    int triangles, coverage, has_rings;
+    int triangles, coverage, has_rings, sizes_ok;
     rast_fill_opts fo;
     rast_tri_opts to;
     rast_coverage_opts co;
@@ -201,9 +202,23 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         rings[nrings - 1] += BZ_MAXPTS - npoints;
         npoints = BZ_MAXPTS;
     }
-    /* ring sizes summing to fewer than npoints (the glue's callers, as
-     * Python, pass sizes summing to npoints: the core reads their sum) */
-    if (has_rings && fz_u8(&in) == 255 && rings[0] > 0) rings[0]--;
+    /* ring sizes fuzzed freely: the core reads their sum, and the glue
+     * refuses (RAST_E_ARG, before anything is read past the points or
+     * written) any sum but npoints (rastpy_check_rings): one short, one
+     * ring set to any value, or sizes whose 32-bit sum wraps to npoints */
+    sizes_ok = 1;
+    if (has_rings) {
+        uint32_t mode = fz_u8(&in);
+        uint64_t sum = 0;
+        if (mode == 255 && rings[0] > 0) rings[0]--;
+        if (mode >= 240 && mode < 255) rings[fz_below(&in, (int32_t)nrings)] = fz_u32(&in);
+        if (mode == 239 && nrings >= 2) {
+            rings[0] = 0xFFFFFFFFu;
+            rings[1] = npoints + 1u - (nrings == 3 ? rings[2] : 0u);
+        }
+        for (i = 0; i < nrings; i++) sum += rings[i];
+        sizes_ok = sum == npoints;
+    }
 
     /* the glue */
     memcpy(bz_glue, bz_orig, BZ_MEM);
@@ -220,8 +235,8 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     /* the oracle: the whole cut clip's mask or coverage, then its blend */
     memcpy(bz_want, bz_orig, BZ_MEM);
     cut.pixels = bz_want + BZ_GUARD;
-    want = RAST_OK;
-    if (coverage) { /* the options' errors first, as every coverage call of the binding */
+    want = sizes_ok ? RAST_OK : RAST_E_ARG; /* the sizes first, as the glue checks them */
+    if (want == RAST_OK && coverage) { /* the options' errors first, as every coverage call of the binding */
         want = rast_coverage_scratch_size(&co, npoints, t.clip.x1 - t.clip.x0, t.clip.y1 - t.clip.y0, &need);
     }
     if (want == RAST_OK) {

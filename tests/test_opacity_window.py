@@ -1,9 +1,10 @@
 """The translucent calls that blended the WHOLE canvas before (issue 34) now
 compute and blend their shape's box only: rings the box call did not read
 (int32 arrays, tuples, lists of them), the 64-bit path (subpixel_bits above
-16, a vertex past the 32-bit range, with "area" too), Paths, Canvas.line and
+16, a vertex past the 32-bit range, with "area" too), Canvas.line and
 polyline (python/glue/blend.c, rastpy_blend_polyline) and the seed fills
-(the region's box).  Each is checked against the whole canvas's blend
+(the region's box); Paths (flattened to rings the box call already read)
+are checked with them.  Each is checked against the whole canvas's blend
 computed here from public calls: the whole canvas's mask (polygon_mask,
 an opaque line / polyline on a gray8 canvas, an opaque flood fill of the
 region on a gray8 copy) or coverage (polygon_coverage) blended by the

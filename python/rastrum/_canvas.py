@@ -1878,18 +1878,19 @@ def _blend_box(target, geometry, tris, blend, shape, aa, rule, subpixel_bits, sa
         except InputError:
             return False
         got = (ffi.from_buffer("double[]", pts) if len(pts) else ffi.NULL, len(pts), sizes, nrings)
-    s = opts.subpixel_bits
     # The 64-bit path exactly where polygon_mask and polygon_coverage take
     # it (_core.use_wide, _coverage._use_wide: S above 16, or a point the
-    # 32-bit snap refuses), never where they do not (python/glue/wide.c)
-    if aa is None and s > _MAX_S32:
-        st = lib.rastpy_blend_polygon64(target, *got, opts, blend[0], blend[1], gamma)
-        return st == 0
+    # 32-bit snap refuses), never where they do not (python/glue/wide.c).
+    # (subpixel_bits: an int, as opts took it)
     if aa is not None:
         st = _coverage._lent(lib.rastpy_blend_polygon_coverage, target, *got, opts, blend[0], blend[1], gamma)
-    else:
+    elif subpixel_bits <= _MAX_S32:
         st = lib.rastpy_blend_polygon(target, *got, opts, blend[0], blend[1], gamma)
-    if st > 0 and got[1] and lib.rastpy_needs_wide(got[0], got[1], s):  # a point past the 32-bit range
+    else:
+        return lib.rastpy_blend_polygon64(target, *got, opts, blend[0], blend[1], gamma) == 0
+    if not st:
+        return True
+    if st > 0 and got[1] and lib.rastpy_needs_wide(got[0], got[1], opts.subpixel_bits):  # past the 32-bit range
         if aa is None and _core.can_wide(opts):
             st = lib.rastpy_blend_polygon64(target, *got, opts, blend[0], blend[1], gamma)
         elif aa is not None and opts.method == lib.RAST_AA_AREA:

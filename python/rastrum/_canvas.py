@@ -1141,7 +1141,8 @@ class Canvas:
         same = arr == pixel
         if same.ndim == 3:
             same = same.all(axis=2)
-        mask = (same if boundary is None else ~same).astype(np.uint8)
+        # (a fresh C-contiguous bool array: its bytes, 0 or 1, are the mask)
+        mask = np.ascontiguousarray(same if boundary is None else ~same).view(np.uint8)
         if not mask[y, x]:
             return  # a seed on the boundary: nothing
         _core.seed_fill(_core.make_target(mask, lib.RAST_FORMAT_GRAY8), (x, y), b"\x02", None, connectivity)

@@ -130,7 +130,7 @@ def test_polygon_forms_blend_their_box(case):
 
 def test_polygon_forms_take_the_box_call(monkeypatch):
     """Each of those forms is drawn by the box call (Canvas._blend_box),
-    not by the whole canvas's blend."""
+    and lines by rastpy_blend_polyline, not by the whole canvas's blend."""
     def whole(*a):
         raise AssertionError("the whole canvas blended")
 
@@ -143,6 +143,8 @@ def test_polygon_forms_take_the_box_call(monkeypatch):
                      ((tuple(ring[0]), tuple(ring[1]), tuple(ring[2])), {}), (path, {}), (path, dict(aa="ss4")),
                      (ring, dict(subpixel_bits=24)), (far, {}), (far, dict(aa="area")), ([], {})):
         c.fill_polygon(geom, (9, 99, 199, 100), **kw)
+    c.line((1.5, 1.5), (6.5, 4.0), (9, 99, 199), opacity=0.5)
+    c.polyline(ring, (9, 99, 199), closed=True, opacity=0.5, algorithm="dda")
 
 
 @st.composite

@@ -1876,7 +1876,7 @@ def _blend_box(target, geometry, tris, blend, shape, aa, rule, subpixel_bits, sa
     if got is None:  # any other form (int32 arrays, tuples, ...): checked and packed as polygon_mask packs it
         try:
             pts, sizes, nrings = _core._points(geometry)
-        except InputError:
+        except Exception:  # whatever it is, the whole-canvas path raises it, with its message
             return False
         got = (ffi.from_buffer("double[]", pts) if len(pts) else ffi.NULL, len(pts), sizes, nrings)
     # The 64-bit path exactly where polygon_mask and polygon_coverage take

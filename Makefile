@@ -124,6 +124,9 @@ build/tests/%: tests/c/%.c build/librastrum.a tests/c/check.h tests/c/ref.h test
 	@mkdir -p $(@D)
 	@$(CC) $(ALL_CFLAGS) -Wno-conversion -Itests/c $< build/librastrum.a -o $@
 
+# the glue's ring-size checks: the glue compiled in (#include)
+build/tests/test_glue_rings: $(GLUE_SRC) $(wildcard python/glue/*.h)
+
 # ---- tests -----------------------------------------------------------------
 test: test-c test-install test-py
 

@@ -20,11 +20,21 @@ import numpy as np
 
 HEXA = np.array([[10.3, 5.2], [20.1, 8.7], [22.4, 18.2], [14.2, 24.9], [6.1, 19.3], [4.4, 11.1]])
 HEXA32 = np.round(HEXA).astype(np.int32)
+PATH = None  # made in cases(): rastrum.Path needs the package
+
+
+def _path():
+    import rastrum
+    return rastrum.Path().move_to(10.3, 5.2).quad_to(30.0, 2.0, 22.4, 18.2).line_to(6.1, 19.3).close()
+
+
 TRIS = np.array([[HEXA[0], HEXA[1], HEXA[2]], [HEXA[0], HEXA[2], HEXA[4]]])
 
 
 def cases():
     import rastrum
+    global PATH
+    PATH = _path()
     from rastrum import _core
     sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
     import families
@@ -33,6 +43,8 @@ def cases():
     canvas = rastrum.Canvas.wrap(np.zeros((512, 512), np.uint8))
     rings = _rings()
     loop = families.loop(0, 512).rings
+    boxed = rastrum.Canvas.wrap(np.zeros((512, 512), np.uint8))  # a 31 x 31 region inside an outline
+    boxed.polyline([(10, 10), (40, 10), (40, 40), (10, 40)], 9, closed=True, subpixel_bits=0, sample_offset=0)
     out = {
         "mask6": lambda: rastrum.polygon_mask(HEXA, (32, 32)),
         "mask6_int32": lambda: rastrum.polygon_mask(HEXA32, (32, 32)),
@@ -46,6 +58,17 @@ def cases():
         "fill_opacity_ss4": lambda: canvas.fill_polygon(HEXA, 255, opacity=0.5, aa="ss4"),
         "tris_opacity": lambda: canvas.fill_triangles(TRIS, 255, opacity=0.5),
         "tris_opacity_area": lambda: canvas.fill_triangles(TRIS, 255, opacity=0.5, aa="area"),
+        # the translucent entries that blended the whole canvas before opa34e (issue 34)
+        "path_opacity": lambda: canvas.fill_polygon(PATH, 255, opacity=0.5),
+        "path_opacity_area": lambda: canvas.fill_polygon(PATH, 255, opacity=0.5, aa="area"),
+        "int32_opacity": lambda: canvas.fill_polygon(HEXA32, 255, opacity=0.5),
+        "int32_opacity_area": lambda: canvas.fill_polygon(HEXA32, 255, opacity=0.5, aa="area"),
+        "tuples_opacity": lambda: canvas.fill_polygon(tuple(tup), 255, opacity=0.5),
+        "s20_opacity": lambda: canvas.fill_polygon(HEXA, 255, opacity=0.5, subpixel_bits=20),
+        "line_opacity": lambda: canvas.line((3.2, 4.1), (40.5, 30.7), 255, opacity=0.5),
+        "polyline_opacity": lambda: canvas.polyline(HEXA, 255, closed=True, opacity=0.5),
+        "stroke_alpha": lambda: canvas.stroke(HEXA, (255, 128), 2.0),
+        "flood_opacity": lambda: boxed.flood_fill((20, 20), 255, opacity=0.5),
         "loop_binary": lambda: [canvas.fill_polygon(r, 255, rule="nonzero") for r in loop],
         "loop_accumulate": lambda: [canvas.fill_polygon(r, 255, rule="nonzero", aa="accumulate") for r in loop],
         "loop_ss4": lambda: [canvas.fill_polygon(r, 255, rule="nonzero", aa="ss4") for r in loop],

@@ -25,6 +25,26 @@ rast_rect rastpy_target_clip(const rast_target *target)
  * pixel's square (its samples too lie in it, docs/semantics.md), and a
  * mask's boundary modes add only pixels an edge passes through: every
  * pixel outside the box has coverage 0. */
+rast_rect rastpy_box_cut(const rast_rect *clip, int64_t x0, int64_t y0, int64_t x1, int64_t y1, int s)
+{
+    rast_rect b = *clip;
+    /* floor(v / 2^s) of |v| < 2^62, without a shift of a negative value
+     * (implementation-defined in C99) */
+#define RASTPY_FLOOR_PX(v) ((v) >= 0 ? (v) >> s : -((-(v) - 1) >> s) - 1)
+    x0 = RASTPY_FLOOR_PX(x0) - 1;
+    y0 = RASTPY_FLOOR_PX(y0) - 1;
+    x1 = RASTPY_FLOOR_PX(x1) + 2;
+    y1 = RASTPY_FLOOR_PX(y1) + 2;
+#undef RASTPY_FLOOR_PX
+    if (x0 > b.x0) b.x0 = (int32_t)x0;
+    if (y0 > b.y0) b.y0 = (int32_t)y0;
+    if (x1 < b.x1) b.x1 = (int32_t)x1;
+    if (y1 < b.y1) b.y1 = (int32_t)y1;
+    if (b.x1 < b.x0) b.x1 = b.x0;
+    if (b.y1 < b.y0) b.y1 = b.y0;
+    return b;
+}
+
 rast_rect rastpy_points_box(const rast_rect *clip, const int32_t *pts, uint32_t n, int s)
 {
     rast_rect b = *clip;
@@ -44,21 +64,7 @@ rast_rect rastpy_points_box(const rast_rect *clip, const int32_t *pts, uint32_t 
         if (y < y0) y0 = y;
         if (y > y1) y1 = y;
     }
-    /* floor(v / 2^s) of |v| <= RAST_COORD_MAX, without a shift of a
-     * negative value (implementation-defined in C99) */
-#define RASTPY_FLOOR_PX(v) ((v) >= 0 ? (v) >> s : -((-(v) - 1) >> s) - 1)
-    x0 = RASTPY_FLOOR_PX(x0) - 1;
-    y0 = RASTPY_FLOOR_PX(y0) - 1;
-    x1 = RASTPY_FLOOR_PX(x1) + 2;
-    y1 = RASTPY_FLOOR_PX(y1) + 2;
-#undef RASTPY_FLOOR_PX
-    if (x0 > b.x0) b.x0 = x0;
-    if (y0 > b.y0) b.y0 = y0;
-    if (x1 < b.x1) b.x1 = x1;
-    if (y1 < b.y1) b.y1 = y1;
-    if (b.x1 < b.x0) b.x1 = b.x0;
-    if (b.y1 < b.y0) b.y1 = b.y0;
-    return b;
+    return rastpy_box_cut(clip, x0, y0, x1, y1, s);
 }
 
 rast_status rastpy_blend_window(const rast_target *target, const rast_rect *r, const uint8_t *cov,
@@ -72,17 +78,23 @@ rast_status rastpy_blend_window(const rast_target *target, const rast_rect *r, c
                  : rast_blend_coverage(&cut, cov, RAST_COVERAGE_U8, w, rgba, blend);
 }
 
-/* The mask of a fill's window: 255 where a span is. */
-typedef struct rastpy_window {
-    uint8_t *cov;
-    rast_rect r;
-} rastpy_window;
-
-static void rastpy_window_span(void *user, int32_t y, int32_t x0, int32_t x1)
+void rastpy_window_span(void *user, int32_t y, int32_t x0, int32_t x1)
 {
     const rastpy_window *w = (const rastpy_window *)user;
     memset(w->cov + (size_t)(y - w->r.y0) * (size_t)(w->r.x1 - w->r.x0) + (size_t)(x0 - w->r.x0), 255,
            (size_t)(x1 - x0));
+}
+
+unsigned char *rastpy_window_new(rastpy_window *w, size_t need)
+{
+    size_t head = (need + 15) & ~(size_t)15;
+    size_t wh = (size_t)(w->r.x1 - w->r.x0) * (size_t)(w->r.y1 - w->r.y0);
+    unsigned char *mem;
+    if (head < need || wh > (size_t)-1 - 1 - head || !(mem = (unsigned char *)malloc(head + wh + 1)))
+        return NULL;
+    w->cov = mem + head;
+    memset(w->cov, 0, wh);
+    return mem;
 }
 
 /* Points of a call snapped on the stack (else malloc). */
@@ -101,11 +113,13 @@ static long rastpy_blend_fill(const rast_target *target, const double *xy, uint3
     rast_rect c;
     rastpy_window win;
     rast_status st;
-    size_t need = 0, head, wh;
+    size_t need = 0;
     unsigned char *mem = NULL;
     long bad;
     if (!target || !rgba || !(fopts || topts)) return RAST_E_NULL;
     if (npoints > RAST_MAX_POINTS) return RAST_E_TOO_MANY;
+    st = rastpy_check_rings(npoints, ring_sizes, nrings);
+    if (st != RAST_OK) return st;
     pts = npoints <= RASTPY_BLEND_LOCAL_POINTS ? local
                                                : (int32_t *)malloc((size_t)npoints * sizeof(rast_point) + 1);
     if (!pts) return RASTPY_E_NOMEM;
@@ -125,15 +139,8 @@ static long rastpy_blend_fill(const rast_target *target, const double *xy, uint3
         win.r = rastpy_points_box(&c, pts, npoints, topts->subpixel_bits);
         st = rast_tri_scratch_size(topts, win.r.x1 - win.r.x0, win.r.y1 - win.r.y0, &need);
     }
+    if (st == RAST_OK && !(mem = rastpy_window_new(&win, need))) st = (rast_status)RASTPY_E_NOMEM;
     if (st == RAST_OK) {
-        head = (need + 15) & ~(size_t)15;
-        wh = (size_t)(win.r.x1 - win.r.x0) * (size_t)(win.r.y1 - win.r.y0);
-        if (head < need || wh > (size_t)-1 - 1 - head || !(mem = (unsigned char *)malloc(head + wh + 1)))
-            st = (rast_status)RASTPY_E_NOMEM;
-    }
-    if (st == RAST_OK) {
-        win.cov = mem + head;
-        memset(win.cov, 0, wh);
         st = fopts ? rast_fill_polygon_spans(&poly, fopts, &win.r, rastpy_window_span, &win, mem, need)
                    : rast_fill_triangles_spans(poly.points, npoints / 3, topts, &win.r, rastpy_window_span,
                                                &win, mem, need);
@@ -159,4 +166,45 @@ long rastpy_blend_triangles(const rast_target *target, const double *xy, uint32_
     if (!opts) return RAST_E_NULL;
     if (ntris > RAST_MAX_POINTS / 3) return RAST_E_TOO_MANY;
     return rastpy_blend_fill(target, xy, 3 * ntris, NULL, 0, NULL, opts, rgba, blend, gamma);
+}
+
+/* The box of the spans handed to it (rastpy_blend_polyline's first pass). */
+static void rastpy_box_span(void *user, int32_t y, int32_t x0, int32_t x1)
+{
+    rast_rect *b = (rast_rect *)user;
+    if (b->x0 >= b->x1) { /* the first span */
+        b->x0 = x0;
+        b->x1 = x1;
+        b->y0 = y;
+        b->y1 = y + 1;
+        return;
+    }
+    if (x0 < b->x0) b->x0 = x0;
+    if (x1 > b->x1) b->x1 = x1;
+    if (y < b->y0) b->y0 = y;
+    if (y + 1 > b->y1) b->y1 = y + 1;
+}
+
+long rastpy_blend_polyline(const rast_target *target, const rast_point *points, uint32_t npoints,
+                           int closed, const rast_line_opts *opts, const uint8_t *rgba,
+                           const rast_blend_opts *blend, const rast_gamma *gamma)
+{
+    rast_rect c;
+    rastpy_window win;
+    unsigned char *mem;
+    rast_status st;
+    if (!target || !rgba) return RAST_E_NULL;
+    c = rastpy_target_clip(target);
+    /* the segments' box: their spans in the clip, every error first */
+    win.r = c;
+    win.r.x1 = win.r.x0;
+    win.r.y1 = win.r.y0;
+    st = rast_draw_polyline_spans(points, npoints, closed, opts, &c, rastpy_box_span, &win.r);
+    if (st != RAST_OK) return st;
+    if (!(mem = rastpy_window_new(&win, 0))) return RASTPY_E_NOMEM;
+    /* the same segments in that box: the same pixels (both clip exactly) */
+    st = rast_draw_polyline_spans(points, npoints, closed, opts, &win.r, rastpy_window_span, &win);
+    if (st == RAST_OK) st = rastpy_blend_window(target, &win.r, win.cov, rgba, blend, gamma);
+    free(mem);
+    return st;
 }

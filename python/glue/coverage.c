@@ -94,6 +94,8 @@ static long rastpy_coverage(const rastpy_cov_dest *d, const double *xy, uint32_t
     ptrdiff_t stride = 0;
     int late;
     size_t head = 0, total; /* a blend's window: `total` bytes, its coverage from `head` */
+    st = rastpy_check_rings(npoints, ring_sizes, nrings);
+    if (st != RAST_OK) return st;
     if (!d->target) {
         if (d->format < 0 || d->format > 2) return RAST_E_ARG;
         stride = (ptrdiff_t)(d->clip.x1 - d->clip.x0) * rastpy_cov_size[d->format];

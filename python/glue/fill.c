@@ -137,6 +137,18 @@ static void rastpy_paint_rect(const rast_target *t, rast_rect r, const void *px)
     }
 }
 
+rast_status rastpy_check_rings(uint32_t npoints, const uint32_t *ring_sizes, uint32_t nrings)
+{
+    uint64_t sum = 0;
+    uint32_t k;
+    if (!ring_sizes) return RAST_OK;
+    for (k = 0; k < nrings; k++) {
+        sum += ring_sizes[k];
+        if (sum > npoints) return RAST_E_ARG; /* past the buffer: stop reading sizes */
+    }
+    return sum == npoints ? RAST_OK : RAST_E_ARG;
+}
+
 /* Snap, then rast_fill_polygon (or rast_fill_polygon_opaque when
  * background is not NULL, or rast_fill_polygon_gouraud when shade is not
  * NULL) with scratch from malloc.  The fill's clip is cut to
@@ -168,6 +180,8 @@ static long rastpy_poly(const rast_target *target, const double *xy,
      * memory: for a 14 x 14 mask the two mallocs were a tenth of the call. */
     uint64_t local[RASTPY_LOCAL_WORDS];
     const size_t half = sizeof local / 2;
+    st = rastpy_check_rings(npoints, ring_sizes, nrings);
+    if (st != RAST_OK) return st;
     pts = (size_t)npoints * sizeof(rast_point) <= half ? (int32_t *)(void *)local
                                                        : (int32_t *)malloc((size_t)npoints * sizeof(rast_point) + 1);
     if (!pts) return RASTPY_E_NOMEM;

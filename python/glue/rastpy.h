@@ -27,6 +27,16 @@
  * files, not for Python.) */
 long rastpy_snap(const double *xy, size_t npoints, int s, int32_t *out);
 
+/* RAST_OK when the ring sizes (NULL: one ring of all the points) sum to
+ * exactly npoints, else RAST_E_ARG: the core reads sum(ring_sizes)
+ * points (rast_polygon holds no count), and the glue's snapped buffer
+ * holds npoints, so sizes summing past it would make the core read past
+ * it.  The Python layer always passes matching sizes; this guards any
+ * other caller of the glue.  A ring of size 0 is allowed, as the core
+ * allows rings of fewer than 3 points; the sum is 64-bit (no overflow).
+ * (fill.c; for the other glue files, not for Python.) */
+rast_status rastpy_check_rings(uint32_t npoints, const uint32_t *ring_sizes, uint32_t nrings);
+
 /* cdef-begin */
 long rastpy_fill_polygon(const rast_target *target, const double *xy,
                          uint32_t npoints, const uint32_t *ring_sizes,

@@ -25,6 +25,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include "wide.h"
+#include "blend.h"
 
 long rastpy_snap64(const double *xy, size_t npoints, int s, int64_t *out)
 {
@@ -59,7 +60,8 @@ int rastpy_needs_wide(const double *xy, size_t npoints, int s)
 /* What the fills below share: the points snapped (rastpy_snap64) into
  * c->pts, described by c->poly (ring_sizes NULL: one ring of all the
  * points), and need bytes of scratch, both from malloc; wide_end frees
- * them.  Returns 0, RASTPY_E_NOMEM, or k + 1 when point k is bad, with
+ * them.  Returns 0, RAST_E_ARG (sizes not summing to npoints,
+ * rastpy_check_rings), RASTPY_E_NOMEM, or k + 1 when point k is bad, with
  * nothing left allocated unless it returns 0. */
 typedef struct {
     rast_polygon64 poly;
@@ -71,7 +73,8 @@ typedef struct {
 static long wide_begin(wide_call *c, const double *xy, uint32_t npoints,
                        const uint32_t *ring_sizes, uint32_t nrings, int s, size_t need)
 {
-    long bad;
+    long bad = rastpy_check_rings(npoints, ring_sizes, nrings);
+    if (bad != RAST_OK) return bad;
     c->scratch = NULL;
     c->pts = (int64_t *)malloc((size_t)npoints * sizeof(rast_point64) + 1);
     if (!c->pts) return RASTPY_E_NOMEM;
@@ -238,4 +241,74 @@ long rastpy_coverage64_cells(const double *xy, uint32_t npoints, const uint32_t 
     wide_end(&c);
     *count = n;
     return st;
+}
+
+/* The translucent fills on rast_polygon64 (blend.h, issue 34): snapped
+ * (rastpy_snap64), the mask (opts: rast_fill_bounds64, then the spans) or
+ * the uint8 "area" coverage (cov_opts: rast_polygon_coverage64 over the
+ * points' box, rastpy_box_cut) computed over a window of the target's
+ * clip only, then blended there (rastpy_blend_window).  Results as
+ * rastpy_fill_polygon64's. */
+static long rastpy_blend64(const rast_target *target, const double *xy, uint32_t npoints,
+                           const uint32_t *ring_sizes, uint32_t nrings, const rast_fill_opts *opts,
+                           const rast_coverage_opts *cov_opts, const uint8_t *rgba,
+                           const rast_blend_opts *blend, const rast_gamma *gamma)
+{
+    wide_call c;
+    rast_rect clip;
+    rastpy_window win;
+    rast_status st;
+    size_t need = 0;
+    unsigned char *mem = NULL;
+    long r;
+    if (!target || !rgba || !(opts || cov_opts)) return RAST_E_NULL;
+    if (npoints > RAST_MAX_POINTS) return RAST_E_TOO_MANY;
+    r = wide_begin(&c, xy, npoints, ring_sizes, nrings, opts ? opts->subpixel_bits : cov_opts->subpixel_bits, 0);
+    if (r) return r;
+    clip = rastpy_target_clip(target);
+    if (opts) {
+        st = rast_fill_bounds64(opts, &c.poly, &clip, &win.r);
+        if (st == RAST_OK)
+            st = rast_scratch_size64(opts, npoints, win.r.x1 - win.r.x0, win.r.y1 - win.r.y0, &need);
+    } else {
+        const int64_t *p = c.pts;
+        int64_t x0 = 0, y0 = 0, x1 = 0, y1 = 0;
+        uint32_t i;
+        for (i = 0; i < npoints; i++) {
+            if (!i || p[2 * i] < x0) x0 = p[2 * i];
+            if (!i || p[2 * i] > x1) x1 = p[2 * i];
+            if (!i || p[2 * i + 1] < y0) y0 = p[2 * i + 1];
+            if (!i || p[2 * i + 1] > y1) y1 = p[2 * i + 1];
+        }
+        win.r = rastpy_box_cut(&clip, x0, y0, x1, y1, cov_opts->subpixel_bits);
+        if (!npoints) win.r.x1 = win.r.x0, win.r.y1 = win.r.y0;
+        st = rast_coverage64_scratch_size(cov_opts, npoints, win.r.x1 - win.r.x0, win.r.y1 - win.r.y0, &need);
+    }
+    if (st == RAST_OK && !(mem = rastpy_window_new(&win, need))) st = (rast_status)RASTPY_E_NOMEM;
+    if (st == RAST_OK) {
+        st = opts ? rast_fill_polygon64_spans(&c.poly, opts, &win.r, rastpy_window_span, &win, mem, need)
+                  : rast_polygon_coverage64(&c.poly, cov_opts, &win.r, RAST_COVERAGE_U8, win.cov,
+                                            win.r.x1 - win.r.x0, mem, need);
+        if (st == RAST_OK) st = rastpy_blend_window(target, &win.r, win.cov, rgba, blend, gamma);
+    }
+    free(mem);
+    wide_end(&c);
+    return st;
+}
+
+long rastpy_blend_polygon64(const rast_target *target, const double *xy, uint32_t npoints,
+                            const uint32_t *ring_sizes, uint32_t nrings, const rast_fill_opts *opts,
+                            const uint8_t *rgba, const rast_blend_opts *blend, const rast_gamma *gamma)
+{
+    if (!opts) return RAST_E_NULL;
+    return rastpy_blend64(target, xy, npoints, ring_sizes, nrings, opts, NULL, rgba, blend, gamma);
+}
+
+long rastpy_blend_polygon_coverage64(const rast_target *target, const double *xy, uint32_t npoints,
+                                     const uint32_t *ring_sizes, uint32_t nrings,
+                                     const rast_coverage_opts *opts, const uint8_t *rgba,
+                                     const rast_blend_opts *blend, const rast_gamma *gamma)
+{
+    if (!opts) return RAST_E_NULL;
+    return rastpy_blend64(target, xy, npoints, ring_sizes, nrings, NULL, opts, rgba, blend, gamma);
 }

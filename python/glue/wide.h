@@ -24,6 +24,15 @@ long rastpy_coverage64_cells(const double *xy, uint32_t npoints, const uint32_t 
                              uint32_t nrings, const rast_coverage_opts *opts, int32_t height,
                              int32_t width, int64_t cell0, int64_t row_step, int32_t band_rows,
                              int64_t *cells, double *cov, size_t *count);
+/* The translucent fills of blend.h on the 64-bit path: the mask (binary
+ * opts) or the "area" coverage computed over the polygon's box only. */
+long rastpy_blend_polygon64(const rast_target *target, const double *xy, uint32_t npoints,
+                            const uint32_t *ring_sizes, uint32_t nrings, const rast_fill_opts *opts,
+                            const uint8_t *rgba, const rast_blend_opts *blend, const rast_gamma *gamma);
+long rastpy_blend_polygon_coverage64(const rast_target *target, const double *xy, uint32_t npoints,
+                                     const uint32_t *ring_sizes, uint32_t nrings,
+                                     const rast_coverage_opts *opts, const uint8_t *rgba,
+                                     const rast_blend_opts *blend, const rast_gamma *gamma);
 /* cdef-end */
 
 #endif

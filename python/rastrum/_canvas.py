@@ -992,11 +992,8 @@ class Canvas:
         opts = _lines.line_opts(algorithm, subpixel_bits, sample_offset)
         a = _lines.snap_point(p0, opts.subpixel_bits, "p0")
         b = _lines.snap_point(p1, opts.subpixel_bits, "p1")
-        if blend is not None:  # the line's pixels as a mask (255), blended once each
-            mask = np.zeros((self.height, self.width), np.uint8)
-            target = self._writable()
-            _core._check(lib.rast_draw_line(_core.make_target(mask, lib.RAST_FORMAT_GRAY8), a, b, opts, b"\xff"))
-            _blend_mask(target, mask, blend)
+        if blend is not None:  # the line's pixels as a mask (255) over their box, blended once each
+            _blend_polyline(self._writable(), ffi.new("rast_point[2]", [a, b]), 2, 0, opts, blend)
             return
         _core._check(lib.rast_draw_line(self._writable(), a, b, opts, self._pixel(color)))
 
@@ -1034,14 +1031,11 @@ class Canvas:
         if opacity is not None or gamma is not None or (color is not None and type(color) is not int):
             blend, color = _blend_args(color, opacity, self._format, "Canvas.polyline", gamma)
         pts = _lines.snap_polyline(points, opts.subpixel_bits, 2)
-        if blend is not None:  # the segments' union as a mask (255), blended once each
+        if blend is not None:  # the segments' union as a mask (255) over its box, blended once each
             target = self._writable()
             if len(pts):
-                mask = np.zeros((self.height, self.width), np.uint8)
-                _core._check(lib.rast_draw_polyline(_core.make_target(mask, lib.RAST_FORMAT_GRAY8),
-                                                    ffi.from_buffer("rast_point[]", pts), len(pts),
-                                                    1 if closed else 0, opts, b"\xff"))
-                _blend_mask(target, mask, blend)
+                _blend_polyline(target, ffi.from_buffer("rast_point[]", pts), len(pts), 1 if closed else 0, opts,
+                                blend)
             return
         pixel = self._pixel(color)
         target = self._writable()
@@ -1145,11 +1139,19 @@ class Canvas:
         same = arr == pixel
         if same.ndim == 3:
             same = same.all(axis=2)
-        mask = (same if boundary is None else ~same).astype(np.uint8)
+        # (a fresh C-contiguous bool array: its bytes, 0 or 1, are the mask)
+        mask = np.ascontiguousarray(same if boundary is None else ~same).view(np.uint8)
         if not mask[y, x]:
             return  # a seed on the boundary: nothing
         _core.seed_fill(_core.make_target(mask, lib.RAST_FORMAT_GRAY8), (x, y), b"\x02", None, connectivity)
-        _blend_mask(target, np.where(mask == 2, np.uint8(255), np.uint8(0)), blend)
+        # blended over the region's box only (it holds the seed: never empty)
+        region = mask == 2
+        rows = np.flatnonzero(region.any(axis=1))
+        y0, y1 = int(rows[0]), int(rows[-1]) + 1
+        cols = np.flatnonzero(region[y0:y1].any(axis=0))
+        x0, x1 = int(cols[0]), int(cols[-1]) + 1
+        cov = np.where(region[y0:y1, x0:x1], np.uint8(255), np.uint8(0))
+        _blend_mask(target, cov, blend, (x0, y0, x1, y1))
 
     def to_image(self) -> "PIL.Image.Image":
         """A Pillow image (a copy): mode L, RGB or RGBA; rgb565 as RGB (each
@@ -1869,24 +1871,60 @@ def _blend_box(target, geometry, tris, blend, shape, aa, rule, subpixel_bits, sa
             st = lib.rastpy_blend_triangles(target, xy, geometry.shape[0], opts, blend[0], blend[1], gamma)
         return st == 0
     got = _coverage._quick_points(geometry)
-    if got is None:
-        return False
+    if got is None:  # any other form (int32 arrays, tuples, ...): checked and packed as polygon_mask packs it
+        try:
+            pts, sizes, nrings = _core._points(geometry)
+        except Exception:  # whatever it is, the whole-canvas path raises it, with its message
+            return False
+        got = (ffi.from_buffer("double[]", pts) if len(pts) else ffi.NULL, len(pts), sizes, nrings)
+    # The 64-bit path exactly where polygon_mask and polygon_coverage take
+    # it (_core.use_wide, _coverage._use_wide: S above 16, or a point the
+    # 32-bit snap refuses), never where they do not (python/glue/wide.c).
+    # (subpixel_bits: an int, as opts took it)
     if aa is not None:
         st = _coverage._lent(lib.rastpy_blend_polygon_coverage, target, *got, opts, blend[0], blend[1], gamma)
-    else:
+    elif subpixel_bits <= _MAX_S32:
         st = lib.rastpy_blend_polygon(target, *got, opts, blend[0], blend[1], gamma)
+    else:
+        return lib.rastpy_blend_polygon64(target, *got, opts, blend[0], blend[1], gamma) == 0
+    if not st:
+        return True
+    if st > 0 and got[1] and lib.rastpy_needs_wide(got[0], got[1], opts.subpixel_bits):  # past the 32-bit range
+        if aa is None and _core.can_wide(opts):
+            st = lib.rastpy_blend_polygon64(target, *got, opts, blend[0], blend[1], gamma)
+        elif aa is not None and opts.method == lib.RAST_AA_AREA:
+            st = lib.rastpy_blend_polygon_coverage64(target, *got, opts, blend[0], blend[1], gamma)
     return st == 0
+
+
+_MAX_S32 = lib.RAST_MAX_SUBPIXEL_BITS
 
 
 _MAX_DIM = lib.RAST_MAX_DIM
 
 
-def _blend_mask(target, cov, blend):
+def _blend_polyline(target, points, n, closed, opts, blend):
+    """Blend `blend` (from _blend_args) through the pixels of
+    rast_draw_polyline(points[0 .. n), closed, opts) as a mask (255),
+    computed and blended over their box only (python/glue/blend.c)."""
+    gamma = ffi.NULL if blend[2] is None else blend[2]
+    st = lib.rastpy_blend_polyline(target, points, n, closed, opts, blend[0], blend[1], gamma)
+    if st == lib.RASTPY_E_NOMEM:
+        raise MemoryError("rastrum: no memory for a line's mask")
+    _core._check(st)
+
+
+def _blend_mask(target, cov, blend, box=None):
     """Blend `blend` (from _blend_args) into `target` through the contiguous
-    uint8 coverage `cov` of the target's shape: rast_blend_coverage, or
-    rast_blend_coverage_linear with gamma= (docs/opacity.md)."""
+    uint8 coverage `cov` of the target's shape (or, with `box` (x0, y0, x1,
+    y1) inside the target, of that box: only its pixels are blended):
+    rast_blend_coverage, or rast_blend_coverage_linear with gamma=
+    (docs/opacity.md)."""
     if not cov.size:
         return
+    if box is not None:  # the target's pixels in the box only (a copy of the target, its clip the box)
+        target = ffi.new("rast_target *", target[0])
+        target.clip.x0, target.clip.y0, target.clip.x1, target.clip.y1 = box
     if blend[2] is not None:
         _core._check(lib.rast_blend_coverage_linear(target, ffi.from_buffer(cov), lib.RAST_COVERAGE_U8,
                                                     cov.shape[1], blend[0], blend[1], blend[2]))

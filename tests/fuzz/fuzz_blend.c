@@ -8,13 +8,21 @@
  * Input: a target (every format, the four the blend takes most often; up
  * to 64 x 64; a clip around it; a stride with 0..7 bytes of padding; the
  * pixels from a generator seeded by the input), a polygon (1..3 rings,
- * their sizes sometimes summing to fewer than the points) or triangles,
+ * their sizes sometimes any values: not summing to the points, or summing
+ * to them only modulo 2^32, which the glue refuses) or triangles,
  * with float64 coordinates near
  * the target, anywhere in range, out of it, NaN or infinite; the options
  * (binary: algorithm, rule, S, sample, rounding, boundary; coverage:
  * method, rule, S, sample; some invalid), an RGBA colour, the blend
  * (opacity, premultiplied, or NULL; some invalid) and sometimes gamma
  * tables (a power law or linear; sometimes not increasing).
+ *
+ * The input's last byte 1 takes the polygon to the 64-bit path
+ * (rastpy_blend_polygon64 / rastpy_blend_polygon_coverage64, S up to 32;
+ * oracle rast_fill_polygon64_spans / rast_polygon_coverage64), 2 takes its
+ * points, snapped, as a polyline (rastpy_blend_polyline, any line
+ * algorithm and sample; oracle rast_draw_polyline_spans), both over the
+ * whole cut clip as below.
  *
  * Oracle, the whole-canvas way with public core calls: the snapped points
  * (the glue's own snap, tested elsewhere) filled over the whole cut clip
@@ -46,6 +54,7 @@ static unsigned char bz_orig[BZ_MEM], bz_glue[BZ_MEM], bz_want[BZ_MEM];
 static uint8_t bz_mask[BZ_MAXDIM * BZ_MAXDIM];
 static double bz_xy[2 * BZ_MAXPTS];
 static int32_t bz_pts[2 * BZ_MAXPTS];
+static int64_t bz_pts64[2 * BZ_MAXPTS];
 static rast_gamma bz_gamma;
 
 /* Mask spans over the whole target: 255 where a span is. */
@@ -93,7 +102,10 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     int32_t w, h, bpp = 1, x, y, s;
     ptrdiff_t stride;
     uint32_t kind, npoints, nrings = 1, rings[3], i, seed, ntris = 0;
-    int triangles, coverage, has_rings;
+    int triangles, coverage, has_rings, sizes_ok, closed = 0;
+    uint32_t mode;
+    int32_t s64 = 0;
+    rast_line_opts lo;
     rast_fill_opts fo;
     rast_tri_opts to;
     rast_coverage_opts co;
@@ -201,14 +213,53 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         rings[nrings - 1] += BZ_MAXPTS - npoints;
         npoints = BZ_MAXPTS;
     }
-    /* ring sizes summing to fewer than npoints (the glue's callers, as
-     * Python, pass sizes summing to npoints: the core reads their sum) */
-    if (has_rings && fz_u8(&in) == 255 && rings[0] > 0) rings[0]--;
+    /* ring sizes fuzzed freely: the core reads their sum, and the glue
+     * refuses (RAST_E_ARG, before anything is read past the points or
+     * written) any sum but npoints (rastpy_check_rings): one short, one
+     * ring set to any value, or sizes whose 32-bit sum wraps to npoints */
+    sizes_ok = 1;
+    if (has_rings) {
+        uint32_t mode = fz_u8(&in);
+        uint64_t sum = 0;
+        if (mode == 255 && rings[0] > 0) rings[0]--;
+        if (mode >= 240 && mode < 255) rings[fz_below(&in, (int32_t)nrings)] = fz_u32(&in);
+        if (mode == 239 && nrings >= 2) {
+            rings[0] = 0xFFFFFFFFu;
+            rings[1] = npoints + 1u - (nrings == 3 ? rings[2] : 0u);
+        }
+        for (i = 0; i < nrings; i++) sum += rings[i];
+        sizes_ok = sum == npoints;
+    }
+
+    /* the last byte read: 1, the polygon on the 64-bit path (S up to 32);
+     * 2, the points as a polyline (rastpy_blend_polyline) */
+    mode = triangles ? 0 : fz_u8(&in);
+    if (mode == 1) {
+        s64 = s + fz_below(&in, RAST_MAX_SUBPIXEL_BITS64 - RAST_MAX_SUBPIXEL_BITS + 1);
+        fo.subpixel_bits = s64;
+        co.subpixel_bits = (kind & 4) ? RAST_MAX_SUBPIXEL_BITS64 + 1 : s64;
+    } else if (mode == 2) {
+        memset(&lo, 0, sizeof lo);
+        lo.algorithm = (rast_line_algorithm)fz_below(&in, RAST_LINE_COUNT_ + 1);
+        lo.subpixel_bits = (kind & 4) ? RAST_MAX_SUBPIXEL_BITS + 1 : s;
+        lo.sample = (rast_sample)fz_below(&in, 3);
+        closed = fz_u8(&in) & 1;
+        /* the glue takes the points snapped (Python snaps them) */
+        if (rastpy_snap_points(bz_xy, npoints, s, bz_pts) >= 0) return 0;
+    }
 
     /* the glue */
     memcpy(bz_glue, bz_orig, BZ_MEM);
     t.pixels = bz_glue + BZ_GUARD;
-    if (coverage)
+    if (mode == 1)
+        got = coverage ? rastpy_blend_polygon_coverage64(&t, bz_xy, npoints, has_rings ? rings : NULL, nrings,
+                                                         &co, rgba, blend, gamma)
+                       : rastpy_blend_polygon64(&t, bz_xy, npoints, has_rings ? rings : NULL, nrings, &fo,
+                                                rgba, blend, gamma);
+    else if (mode == 2)
+        got = rastpy_blend_polyline(&t, (const rast_point *)(void *)bz_pts, npoints, closed, &lo, rgba, blend,
+                                    gamma);
+    else if (coverage)
         got = triangles ? rastpy_blend_triangles_coverage(&t, bz_xy, ntris, &co, rgba, blend, gamma, NULL)
                         : rastpy_blend_polygon_coverage(&t, bz_xy, npoints, has_rings ? rings : NULL,
                                                         nrings, &co, rgba, blend, gamma, NULL);
@@ -220,15 +271,51 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     /* the oracle: the whole cut clip's mask or coverage, then its blend */
     memcpy(bz_want, bz_orig, BZ_MEM);
     cut.pixels = bz_want + BZ_GUARD;
-    want = RAST_OK;
-    if (coverage) { /* the options' errors first, as every coverage call of the binding */
+    want = sizes_ok || mode == 2 ? RAST_OK : RAST_E_ARG; /* the sizes first, as the glue checks them */
+    if (mode == 1 && want == RAST_OK) { /* the 64-bit path over the whole cut clip */
+        int32_t cw = c.x1 - c.x0, ch = c.y1 - c.y0;
+        rast_polygon64 p64;
+        long bad = rastpy_snap64(bz_xy, npoints, coverage ? co.subpixel_bits : s64, bz_pts64);
+        memset(bz_mask, 0, sizeof bz_mask);
+        p64.points = (const rast_point64 *)(void *)bz_pts64;
+        p64.ring_sizes = has_rings ? rings : &npoints;
+        p64.nrings = nrings;
+        if (bad >= 0)
+            want = bad + 1;
+        else {
+            st = coverage ? rast_coverage64_scratch_size(&co, npoints, cw, ch, &need)
+                          : rast_scratch_size64(&fo, npoints, cw, ch, &need);
+            if (st == RAST_OK) {
+                scratch = malloc(need + 1);
+                FZ_ASSERT(scratch);
+                st = coverage ? rast_polygon_coverage64(&p64, &co, &c, RAST_COVERAGE_U8, bz_mask + c.y0 * w + c.x0,
+                                                        w, scratch, need)
+                              : rast_fill_polygon64_spans(&p64, &fo, &c, bz_span, &w, scratch, need);
+                free(scratch);
+            }
+            if (st == RAST_OK)
+                st = gamma ? rast_blend_coverage_linear(&cut, bz_mask + c.y0 * w + c.x0, RAST_COVERAGE_U8, w,
+                                                        rgba, blend, gamma)
+                           : rast_blend_coverage(&cut, bz_mask + c.y0 * w + c.x0, RAST_COVERAGE_U8, w, rgba,
+                                                 blend);
+            want = st;
+        }
+    } else if (mode == 2) { /* the polyline's spans over the whole cut clip */
+        memset(bz_mask, 0, sizeof bz_mask);
+        st = rast_draw_polyline_spans((const rast_point *)(void *)bz_pts, npoints, closed, &lo, &c, bz_span, &w);
+        if (st == RAST_OK)
+            st = gamma ? rast_blend_coverage_linear(&cut, bz_mask + c.y0 * w + c.x0, RAST_COVERAGE_U8, w, rgba,
+                                                    blend, gamma)
+                       : rast_blend_coverage(&cut, bz_mask + c.y0 * w + c.x0, RAST_COVERAGE_U8, w, rgba, blend);
+        want = st;
+    } else if (want == RAST_OK && coverage) { /* the options' errors first, as every coverage call of the binding */
         want = rast_coverage_scratch_size(&co, npoints, t.clip.x1 - t.clip.x0, t.clip.y1 - t.clip.y0, &need);
     }
-    if (want == RAST_OK) {
+    if (want == RAST_OK && mode != 1 && mode != 2) {
         long bad = rastpy_snap_points(bz_xy, npoints, coverage ? co.subpixel_bits : s, bz_pts);
         if (bad >= 0) want = bad + 1;
     }
-    if (want == RAST_OK) {
+    if (want == RAST_OK && mode != 1 && mode != 2) {
         int32_t cw = c.x1 - c.x0, ch = c.y1 - c.y0;
         poly.points = (const rast_point *)(void *)bz_pts;
         poly.ring_sizes = has_rings ? rings : &npoints;

@@ -78,6 +78,8 @@ def cases(draw):
     gamma = draw(st.sampled_from([None, None, None, "srgb", 2.2]))
     if opacity is None and gamma is None and (fmt == "rgba8888" or alpha == 255):
         opacity = 0.5  # else a stored value, not a blend
+    if opacity == 1.0 and gamma is None and fmt != "rgba8888" and alpha == 255:
+        opacity = 0.5  # the same: an opaque colour at full opacity is the value's fill
     return fmt, (h, w), tris, geom, aa, kw, color, opacity, gamma, draw(st.integers(0, 2 ** 16))
 
 

@@ -4,7 +4,9 @@
 Writes OUTDIR/rastrum.h (the public header, as is) and OUTDIR/rastrum.c:
 the internal headers of csrc/src/*/ in the order they include each other,
 then every csrc/src/*/*.c, with the project's own #include lines dropped (the
-text they named is already above).  Generated, never edited by hand: drop
+text they named is already above), but a template's (a header named
+*.tmpl.h, included where its includer has defined its parameters, maybe
+more than once): its text in their place.  Generated, never edited by hand: drop
 the two files into a firmware build, as lz4.c and ftgrays.c are dropped in.
 
     python3 tools/single.py build/single
@@ -44,12 +46,17 @@ def resolve(name, included):
     return os.path.normpath(os.path.join(os.path.dirname(name), included)).replace(os.sep, "/")
 
 
+def template(name):
+    """Is the header `name` a template (its text where it is included)?"""
+    return name.endswith(".tmpl.h")
+
+
 def headers_in_order():
     """Internal headers, each after the ones it includes."""
     done, order = set(), []
 
     def visit(name, stack=()):
-        if name in done or name == "rastrum.h":
+        if name in done or name == "rastrum.h" or template(name):
             return
         if name in stack:
             raise SystemExit("single.py: include cycle through %s" % name)
@@ -72,6 +79,11 @@ def strip_local(text, name):
         if m:
             if not (m.group(1) == "rastrum.h" or os.path.exists(os.path.join(SRC, resolve(name, m.group(1))))):
                 raise SystemExit("single.py: %s includes unknown %s" % (name, m.group(1)))
+            if template(m.group(1)):
+                inc = resolve(name, m.group(1))
+                out.append("/* (#include \"%s\": its text) */" % m.group(1))
+                out.append(strip_local(read(os.path.join(SRC, inc)), inc).rstrip("\n"))
+                continue
             out.append("/* (#include \"%s\": above) */" % m.group(1))
         else:
             out.append(line)

@@ -58,6 +58,34 @@
 #endif
 #endif
 
+/* The walk's edge records.  An edge's part in a row reads its row
+ * stepper, its column stepper and its ends: in a rast__cedge (rows.h,
+ * 336 bytes, made for every engine) those fields are two cache lines of
+ * a record chosen through the row's list of indices, and a line of text
+ * of 31,000 edges (10 MB) waited on memory for them (16% of the walk's
+ * time on one load, issue 33).  So the walk has its own record of just
+ * those fields, 80 bytes, built once (rast__acc_compact) into the edges'
+ * room in the order the rows take the edges (by first row): the walk
+ * reads them in order, a stream.  The exact rows, rare, rebuild the
+ * rast__cedge records of their edges (rast__acc_exact).  Size-optimised
+ * builds keep the edges' records: rast__aedge is rast__cedge there (the
+ * same field names: the same code reads either). */
+#if !defined(__OPTIMIZE_SIZE__)
+#define RAST__ACC_COMPACT 1
+typedef struct rast__aedge {
+    int64_t qx, qxs;              /* the quick row stepper (rast__cedge's) */
+    int64_t qt, qts;              /* the quick column stepper */
+    uint32_t qxr, qxsr, qtr, qtsr;
+    int32_t xt, yt, dx, dy;       /* the edge, top end first */
+    int32_t qrow, qX, dir, spare; /* qrow, qX: INT32_MIN, not set */
+} rast__aedge;
+typedef int32_t rast__acc_col_t; /* (the type of qX) */
+#else
+#define RAST__ACC_COMPACT 0
+typedef rast__cedge rast__aedge;
+typedef int64_t rast__acc_col_t;
+#endif
+
 #define QF 30
 #define QT ((uint64_t)1 << QF)
 #define QONE ((int64_t)1 << 51)
@@ -181,17 +209,6 @@ typedef struct rast__acc_kept {
     uint64_t win;
 } rast__acc_kept;
 
-/* rast__cov_qtop, rast__cov_qt_first with this engine's P and HQ */
-static inline int64_t rast__acc_top(rast__cedge *e, int32_t j, const rast__acc *a)
-{
-    return rast__cov_qtop(e, j, a->p, a->hq);
-}
-
-static void rast__acc_t_first(rast__cedge *e, int64_t X, const rast__acc *a)
-{
-    rast__cov_qt_first(e, X, a->p, a->hq);
-}
-
 /* a's fields for the clip of o, S = s, cells acc[] and bits[] (cleared),
  * sums z[], nothing touched; dense rows as nrow says (RAST__ACC_DENSE). */
 static void rast__acc_init(rast__acc *a, uint64_t *acc, uint64_t *bits, uint32_t *z, const rast__cov_out *o,
@@ -212,75 +229,6 @@ static void rast__acc_init(rast__acc *a, uint64_t *acc, uint64_t *bits, uint32_t
 #if !defined(__OPTIMIZE_SIZE__)
     a->spread = 0;
 #endif
-}
-
-#if !defined(__OPTIMIZE_SIZE__)
-/* rast__cov_qtop_set at the top of row j1 = e's first row + 1 (0 < d =
- * j1 P - yt <= P): floor(dx d 2^HQ / dy) by one unsigned division of
- * |dx| d 2^HQ <= 2^58, the floor of the negative quotient from it, inline
- * (a call and a signed division's tests an edge: 0.7 M instructions of
- * the text family's 20 M) */
-static inline int64_t rast__acc_top1(rast__cedge *e, int32_t j1, const rast__acc *a)
-{
-    const uint64_t d = (uint64_t)((int64_t)j1 * a->p - e->yt), dy = (uint64_t)e->dy;
-    const uint64_t n = (uint64_t)(e->dx < 0 ? -(int64_t)e->dx : e->dx) * d << a->hq, q = n / dy, r = n % dy;
-    const int64_t x = (int64_t)e->xt * ((int64_t)1 << a->hq);
-    if (e->dx >= 0) {
-        e->qx = x + (int64_t)q;
-        e->qxr = (uint32_t)r;
-    } else {
-        e->qx = x - (int64_t)q - (r != 0);
-        e->qxr = (uint32_t)(r ? dy - r : 0);
-    }
-    e->qrow = j1;
-    return e->qx;
-}
-#endif
-
-/* e's part in row j (top Yj): from (*xa, *ta) to (*xb, *tb), Q units, t
- * from the row's top; its top rel0 = yt - Yj below the row's. */
-RAST__HOT void rast__acc_ends(rast__cedge *e, int32_t j, int64_t rel0, const rast__acc *a, int64_t *xa,
-                              uint64_t *ta, int64_t *xb, uint64_t *tb)
-{
-    const int64_t rel1 = rel0 + e->dy;
-    if (rel0 > 0) {
-        *ta = (uint64_t)rel0 << a->hq;
-        *xa = (int64_t)e->xt * ((int64_t)1 << a->hq);
-    } else {
-        *ta = 0;
-        *xa = rast__acc_top(e, j, a);
-    }
-    if (rel1 < a->p) {
-        *tb = (uint64_t)rel1 << a->hq;
-        *xb = ((int64_t)e->xt + e->dx) * ((int64_t)1 << a->hq);
-    } else {
-        *tb = QT;
-#if !defined(__OPTIMIZE_SIZE__)
-        if (rel0 > 0 && e->qrow != j + 1) /* (e starts in row j) */
-            *xb = rast__acc_top1(e, j + 1, a);
-        else
-#endif
-            *xb = rast__acc_top(e, j + 1, a);
-    }
-}
-
-/* The tie passes' end of e's part in row j (its bottom rel1 = yt + dy -
- * Yj below the row's top): (x, *tb) in Q units, t from the row's top, as
- * rast__acc_ends finds it (P = p, HQ = hq: the pass's copies of a's);
- * *exact cleared when the abscissa at the row's
- * bottom was floored (the stepper's remainder, read after the step). */
-static inline int64_t rast__acc_bottom(rast__cedge *e, int32_t j, int64_t rel1, int32_t p, int32_t hq,
-                                       const rast__acc *a, uint64_t *tb, int *exact)
-{
-    int64_t x;
-    if (rel1 < p) {
-        *tb = (uint64_t)rel1 << hq;
-        return ((int64_t)e->xt + e->dx) * ((int64_t)1 << hq);
-    }
-    *tb = QT;
-    x = rast__acc_top(e, j + 1, a);
-    *exact &= e->qxr == 0;
-    return x;
 }
 
 /* A part touches cells [lo, hi]: one more part for each 16 columns of
@@ -342,106 +290,50 @@ RAST__HOT void rast__acc_touch(rast__acc *a, int32_t lo, int32_t hi, int count)
 #endif
 }
 
-/* The part of e from (xa, ta) to (xb, tb) (Q units; t from the row's top,
- * whose top is off below e's top), sign s; cells sx apart; the parts
- * counted (a->cnt) when count. */
-RAST__HOT void rast__acc_part(rast__acc *a, rast__cedge *e, int64_t off, int64_t xa, uint64_t ta,
-                           int64_t xb, uint64_t tb, int32_t s, int32_t sx, int count)
+/* The walk's functions of an edge's part (coverage_acc_edge.tmpl.h), on its
+ * records; in builds with compact ones, a copy on the edges' own records
+ * too, named ..._fat, for "area"'s rows. */
+#define RAST__ACC_E rast__aedge
+#define RAST__ACC_N(f) f
+#define RAST__ACC_COL rast__acc_col_t
+#define RAST__ACC_FAT (!RAST__ACC_COMPACT)
+#include "coverage_acc_edge.tmpl.h"
+#undef RAST__ACC_E
+#undef RAST__ACC_N
+#undef RAST__ACC_COL
+#undef RAST__ACC_FAT
+#if RAST__ACC_COMPACT
+#define RAST__ACC_E rast__cedge
+#define RAST__ACC_N(f) f##_fat
+#define RAST__ACC_COL int64_t
+#define RAST__ACC_FAT 1
+#include "coverage_acc_edge.tmpl.h"
+#undef RAST__ACC_E
+#undef RAST__ACC_N
+#undef RAST__ACC_COL
+#undef RAST__ACC_FAT
+#define RAST__ACC_FATN(f) f##_fat
+#else
+#define RAST__ACC_FATN(f) f
+#endif
+
+/* The tie passes' end of e's part in row j (its bottom rel1 = yt + dy -
+ * Yj below the row's top): (x, *tb) in Q units, t from the row's top, as
+ * rast__acc_ends finds it (P = p, HQ = hq: the pass's copies of a's);
+ * *exact cleared when the abscissa at the row's
+ * bottom was floored (the stepper's remainder, read after the step). */
+static inline int64_t rast__acc_bottom(rast__aedge *e, int32_t j, int64_t rel1, int32_t p, int32_t hq,
+                                       const rast__acc *a, uint64_t *tb, int *exact)
 {
-    const uint64_t fm = QT - 1, neg = s < 0 ? ~(uint64_t)0 : 0;
-    uint64_t *acc = a->acc;
-    int64_t ca = rast__acc_col(xa), cb = rast__acc_col(xb), col, cend, step, lo, hi, qt;
-    uint64_t f = (uint64_t)xa & fm, fb = (uint64_t)xb & fm, t = ta, fin, fout;
-    uint32_t qtr, adx;
-    if (ta >= tb) return;
-    if (ca < a->x0 && cb < a->x0) { /* all left of the clip */
-        acc[0] += (((tb - ta) << 21) ^ neg) - neg;
-        rast__acc_touch(a, 0, 0, count);
-        return;
+    int64_t x;
+    if (rel1 < p) {
+        *tb = (uint64_t)rel1 << hq;
+        return ((int64_t)e->xt + e->dx) * ((int64_t)1 << hq);
     }
-    if (ca == cb) {
-        if (ca >= a->x1) return;
-        lo = hi = ca - a->x0;
-        rast__acc_put(acc, lo, f, fb, tb - ta, neg, sx);
-        rast__acc_touch(a, (int32_t)lo, (int32_t)hi + 1, count);
-        return;
-    }
-    adx = (uint32_t)(e->dx < 0 ? -e->dx : e->dx);
-    if (ca < cb) { /* right: the verticals ca + 1 .. cb */
-        if (ca >= a->x1) return;
-        step = 1;
-        fin = 0;
-        fout = QT;
-        if (ca < a->x0) { /* to vertical x0 as cover left of the clip */
-            if (e->qX != a->x0) rast__acc_t_first(e, a->x0, a);
-            qt = e->qt - off;
-            t = qt < (int64_t)t ? t : qt > (int64_t)tb ? tb : (uint64_t)qt;
-            acc[0] += (((t - ta) << 21) ^ neg) - neg;
-            ca = a->x0;
-            f = 0;
-            e->qt += e->qts;
-            e->qtr += e->qtsr;
-            if (e->qtr >= adx) {
-                e->qtr -= adx;
-                e->qt++;
-            }
-            e->qX++;
-        } else if (e->qX != ca + 1) {
-            rast__acc_t_first(e, ca + 1, a);
-        }
-        cend = cb < a->x1 ? cb : a->x1;
-        lo = ca;
-        hi = cend;
-    } else { /* left: the verticals ca .. cb + 1 */
-        if (cb >= a->x1) return;
-        step = -1;
-        fin = QT;
-        fout = 0;
-        if (ca >= a->x1) { /* from vertical x1 */
-            if (e->qX != a->x1) rast__acc_t_first(e, a->x1, a);
-            qt = e->qt - off;
-            t = qt < (int64_t)t ? t : qt > (int64_t)tb ? tb : (uint64_t)qt;
-            ca = a->x1 - 1;
-            f = QT;
-            e->qt += e->qts;
-            e->qtr += e->qtsr;
-            if (e->qtr >= adx) {
-                e->qtr -= adx;
-                e->qt++;
-            }
-            e->qX--;
-        } else if (e->qX != ca) {
-            rast__acc_t_first(e, ca, a);
-        }
-        cend = cb >= a->x0 ? cb : a->x0 - 1;
-        lo = cend;
-        hi = ca;
-    }
-    qt = e->qt - off;
-    qtr = e->qtr;
-    for (col = ca; col != cend; col += step) {
-        uint64_t tx = qt < (int64_t)t ? t : qt > (int64_t)tb ? tb : (uint64_t)qt;
-        rast__acc_put(acc, col - a->x0, f, fout, tx - t, neg, sx);
-        t = tx;
-        f = fin;
-        qt += e->qts;
-        qtr += e->qtsr;
-        if (qtr >= adx) {
-            qtr -= adx;
-            qt++;
-        }
-    }
-    e->qt = qt + off;
-    e->qtr = qtr;
-    e->qX += col - ca;
-    if (col == cb && col >= a->x0 && col < a->x1) { /* the last column, inside the clip */
-        rast__acc_put(acc, col - a->x0, f, fb, tb - t, neg, sx);
-    } else if (col < a->x0) { /* the rest is left of the clip */
-        acc[0] += (((tb - t) << 21) ^ neg) - neg;
-    } /* else the rest is right of the clip */
-    lo = lo < a->x0 ? 0 : lo - a->x0;
-    hi = (hi >= a->x1 ? a->x1 - 1 : hi) - a->x0 + 1;
-    rast__acc_touch(a, (int32_t)lo, (int32_t)hi, count);
+    *tb = QT;
+    x = rast__acc_top(e, j + 1, a);
+    *exact &= e->qxr == 0;
+    return x;
 }
 
 /* floor(x / P) for |x| < 2^62, by a shift (a division takes tens of
@@ -454,7 +346,7 @@ static int64_t rast__acc_floorp(int64_t x, const rast__acc *a)
 
 /* The last row that e runs through, whole, if e lies in the columns of
  * the clip; INT32_MIN if not (rast__acc_edge's thru). */
-static int32_t rast__acc_thru(const rast__cedge *e, const rast__acc *a)
+static int32_t rast__acc_thru(const rast__aedge *e, const rast__acc *a)
 {
     const int64_t xlo = (int64_t)e->xt + (e->dx < 0 ? e->dx : 0), xhi = (int64_t)e->xt + (e->dx < 0 ? 0 : e->dx);
     if (rast__acc_floorp(xlo, a) < a->x0 || rast__acc_floorp(xhi, a) >= a->x1) return INT32_MIN;
@@ -464,7 +356,7 @@ static int32_t rast__acc_thru(const rast__cedge *e, const rast__acc *a)
 /* e's part in row j (rel0 = e's top - the row's): rast__acc_ends, then
  * rast__acc_part; inline in the rows' walk, out of line in the bands'
  * (rast__acc_row_part), where it is the rare way */
-RAST__HOT void rast__acc_row_part_in(rast__acc *a, rast__cedge *e, int32_t j, int64_t rel0, int32_t sx, int count)
+RAST__HOT void rast__acc_row_part_in(rast__acc *a, rast__aedge *e, int32_t j, int64_t rel0, int32_t sx, int count)
 {
     int64_t xa, xb;
     uint64_t ta, tb;
@@ -472,7 +364,7 @@ RAST__HOT void rast__acc_row_part_in(rast__acc *a, rast__cedge *e, int32_t j, in
     rast__acc_part(a, e, -rel0 * ((int64_t)1 << a->hq), xa, ta, xb, tb, e->dir, sx, count);
 }
 
-RAST__APART void rast__acc_row_part(rast__acc *a, rast__cedge *e, int32_t j, int64_t rel0)
+RAST__APART void rast__acc_row_part(rast__acc *a, rast__aedge *e, int32_t j, int64_t rel0)
 {
     rast__acc_row_part_in(a, e, j, rel0, RAST__ACC_SX, 0);
 }
@@ -504,7 +396,7 @@ static inline void rast__acc_col_step(uint64_t *cell, uint32_t *r, uint32_t qtsr
  * touched, from the lesser of ca and cb to the greater + 1, are the
  * caller's to mark (rast__acc_run_row: not in a dense band, whose span
  * covers them). */
-RAST__HOT void rast__acc_cols_in(rast__acc *a, rast__cedge *e, int64_t off, int64_t xa, int64_t xb,
+RAST__HOT void rast__acc_cols_in(rast__acc *a, rast__aedge *e, int64_t off, int64_t xa, int64_t xb,
                                  int64_t ca, int64_t cb, int right)
 {
     const uint64_t fm = QT - 1, neg = e->dir < 0 ? ~(uint64_t)0 : 0;
@@ -544,20 +436,20 @@ RAST__HOT void rast__acc_cols_in(rast__acc *a, rast__cedge *e, int64_t off, int6
     rast__acc_put(acc, cb, f, (uint64_t)xb & fm, QT - t, neg, RAST__ACC_SX);
     e->qt = qt + off;
     e->qtr = qtr;
-    e->qX += cb - ca;
+    e->qX = (rast__acc_col_t)(e->qX + (cb - ca));
 }
 
 /* Out of line, one for each direction, so that the rows' loop keeps its
  * registers and each direction's branches their own history (the edges of
  * a shape alternate: under cachegrind's branch simulation, one function's
  * branch on the direction made a fifth of the star's mispredictions). */
-RAST__APART void rast__acc_cols_r(rast__acc *a, rast__cedge *e, int64_t off, int64_t xa, int64_t xb,
+RAST__APART void rast__acc_cols_r(rast__acc *a, rast__aedge *e, int64_t off, int64_t xa, int64_t xb,
                                   int64_t ca, int64_t cb)
 {
     rast__acc_cols_in(a, e, off, xa, xb, ca, cb, 1);
 }
 
-RAST__APART void rast__acc_cols_l(rast__acc *a, rast__cedge *e, int64_t off, int64_t xa, int64_t xb,
+RAST__APART void rast__acc_cols_l(rast__acc *a, rast__aedge *e, int64_t off, int64_t xa, int64_t xb,
                                   int64_t ca, int64_t cb)
 {
     rast__acc_cols_in(a, e, off, xa, xb, ca, cb, 0);
@@ -574,7 +466,7 @@ typedef struct rast__acc_run {
  * stepper u (at the row's top; moved to its bottom), off as
  * rast__acc_part's; right as rast__acc_cols_in's; marks: the cells
  * touched marked (0: the caller marks them, the row being dense). */
-RAST__HOT void rast__acc_run_row(rast__acc *a, rast__cedge *e, rast__acc_run *u, int64_t off, int right,
+RAST__HOT void rast__acc_run_row(rast__acc *a, rast__aedge *e, rast__acc_run *u, int64_t off, int right,
                                  int marks)
 {
     const uint64_t fm = QT - 1;
@@ -620,7 +512,7 @@ RAST__HOT void rast__acc_run_row(rast__acc *a, rast__cedge *e, rast__acc_run *u,
 #endif
 
 /* u: e's row stepper, from the cells' clip v */
-RAST__HOT void rast__acc_run_init(rast__acc_run *u, const rast__acc *v, const rast__cedge *e)
+RAST__HOT void rast__acc_run_init(rast__acc_run *u, const rast__acc *v, const rast__aedge *e)
 {
     u->qx = e->qx;
     u->qxr = e->qxr;
@@ -639,7 +531,7 @@ RAST__HOT void rast__acc_run_init(rast__acc_run *u, const rast__acc *v, const ra
 /* Rows r .. rend of the band (cells v[r]; ok[r] each), which e runs
  * through, from the row stepper's row r (off from e's top to row r's);
  * returns the first row not walked (past rend, or one whose ok is 0). */
-RAST__HOT int32_t rast__acc_run_rows(rast__acc *v, const unsigned char *ok, rast__cedge *e, int32_t r,
+RAST__HOT int32_t rast__acc_run_rows(rast__acc *v, const unsigned char *ok, rast__aedge *e, int32_t r,
                                      int32_t rend, int64_t off, int right)
 {
     rast__acc_run u;
@@ -654,7 +546,7 @@ RAST__HOT int32_t rast__acc_run_rows(rast__acc *v, const unsigned char *ok, rast
  * rows at a time with no test between them (a loop's exit mispredicted
  * about once an edge and band): the band's loop sends its common case
  * here, past rast__acc_edge's tests; one function for each direction. */
-RAST__HOT void rast__acc_run_band(rast__acc *v, rast__cedge *e, int64_t off, int right, int64_t *span)
+RAST__HOT void rast__acc_run_band(rast__acc *v, rast__aedge *e, int64_t off, int right, int64_t *span)
 {
     const int marks = !span;
     rast__acc_run u;
@@ -678,12 +570,12 @@ RAST__HOT void rast__acc_run_band(rast__acc *v, rast__cedge *e, int64_t off, int
         span[0] = u.ca < span[0] ? u.ca : span[0];
 }
 
-RAST__APART void rast__acc_band_r(rast__acc *v, rast__cedge *e, int64_t off)
+RAST__APART void rast__acc_band_r(rast__acc *v, rast__aedge *e, int64_t off)
 {
     rast__acc_run_band(v, e, off, 1, NULL);
 }
 
-RAST__APART void rast__acc_band_l(rast__acc *v, rast__cedge *e, int64_t off)
+RAST__APART void rast__acc_band_l(rast__acc *v, rast__aedge *e, int64_t off)
 {
     rast__acc_run_band(v, e, off, 0, NULL);
 }
@@ -691,12 +583,12 @@ RAST__APART void rast__acc_band_l(rast__acc *v, rast__cedge *e, int64_t off)
 /* The same for a band whose rows are all dense: the cells touched not
  * marked, but the columns that e's abscissae span (from its top's to its
  * bottom's, of the clip) added to span[0] .. span[1] */
-RAST__APART void rast__acc_dband_r(rast__acc *v, rast__cedge *e, int64_t off, int64_t *span)
+RAST__APART void rast__acc_dband_r(rast__acc *v, rast__aedge *e, int64_t off, int64_t *span)
 {
     rast__acc_run_band(v, e, off, 1, span);
 }
 
-RAST__APART void rast__acc_dband_l(rast__acc *v, rast__cedge *e, int64_t off, int64_t *span)
+RAST__APART void rast__acc_dband_l(rast__acc *v, rast__aedge *e, int64_t off, int64_t *span)
 {
     rast__acc_run_band(v, e, off, 0, span);
 }
@@ -708,7 +600,7 @@ RAST__APART void rast__acc_dband_l(rast__acc *v, rast__cedge *e, int64_t off, in
  * with its row stepper at the row's top (qrow; as the part in the row
  * above leaves it) go the quick way (rast__acc_run_rows); every other
  * row's part goes to rast__acc_row_part. */
-RAST__APART void rast__acc_edge(rast__acc *v, const unsigned char *ok, rast__cedge *e, int32_t j0,
+RAST__APART void rast__acc_edge(rast__acc *v, const unsigned char *ok, rast__aedge *e, int32_t j0,
                                 int32_t r0, int32_t r1, int32_t thru)
 {
     const int32_t p = v->p, hq = v->hq;
@@ -1252,22 +1144,29 @@ static uint64_t rast__acc_brow_u8eo(uint64_t *acc, uint64_t *blk, uint32_t *z, u
 /* Are the edges ix[0..n) all vertical?  Then the sums of a row of their
  * parts are exact: no crossing, no abscissa stepped, and each ar = 2 f dy
  * / 2^10 with f and dy multiples of 2^HQ (HQ >= 14); so the levels are,
- * ties too (an axis-aligned box on half pixels: a tie along each side). */
-static int rast__acc_vertical(const rast__cedge *e, const int32_t *ix, int32_t n)
+ * ties too (an axis-aligned box on half pixels: a tie along each side).
+ * The edges are the walk's records e[] or, where e is NULL, the edges'
+ * records fe[] ("area"'s rows). */
+static int rast__acc_vertical(const rast__aedge *e, const rast__cedge *fe, const int32_t *ix, int32_t n)
 {
     int32_t k;
-    for (k = 0; k < n; k++)
-        if (e[ix[k]].dx) return 0;
+    if (e) {
+        for (k = 0; k < n; k++)
+            if (e[ix[k]].dx) return 0;
+    } else {
+        for (k = 0; k < n; k++)
+            if (fe[ix[k]].dx) return 0;
+    }
     return 1;
 }
 
 /* Row y, written, its tie flag bad: 1 when done (handed on), 0 when a
  * level is not certain (nothing handed on) unless the row's edges
  * ix[0..n) are all vertical (rast__acc_vertical; it is asked only then). */
-static int rast__acc_done(const rast__cov_out *o, int32_t y, uint64_t bad, const rast__cedge *e,
-                          const int32_t *ix, int32_t n)
+static int rast__acc_done(const rast__cov_out *o, int32_t y, uint64_t bad, const rast__aedge *e,
+                          const rast__cedge *fe, const int32_t *ix, int32_t n)
 {
-    if (bad && !rast__acc_vertical(e, ix, n)) return 0;
+    if (bad && !rast__acc_vertical(e, fe, ix, n)) return 0;
     rast__cov_row_done(o, y);
     return 1;
 }
@@ -1310,7 +1209,8 @@ RAST__APART uint32_t rast__acc_spread(rast__acc *a, int32_t w, int32_t *lo, int3
  * win: the window of the row's n parts, or, where a counts the parts per
  * 16 columns, that of the most of them (the counts cleared). */
 RAST__HOT int rast__acc_emit(rast__acc *a, int32_t sx, const rast__cov_out *o, int32_t y, rast_fill_rule rule,
-                          uint32_t m, uint64_t win, const rast__cedge *e, const int32_t *ix, int32_t n, rast__acc_kept *keep)
+                          uint32_t m, uint64_t win, const rast__aedge *e, const rast__cedge *fe, const int32_t *ix, int32_t n,
+                             rast__acc_kept *keep)
 {
     unsigned char *row = rast__cov_row(o, y);
     const int32_t w = a->x1 - a->x0;
@@ -1354,7 +1254,7 @@ RAST__HOT int rast__acc_emit(rast__acc *a, int32_t sx, const rast__cov_out *o, i
     /* z[lo, hi) kept (rast__acc_row): where, and the window */
     if (keep) keep->hi = -1;
     if (bad && keep && rast__acc_zpath(a->dense, m, lo, hi, rule, win)) {
-        if (rast__acc_done(o, y, bad, e, ix, n)) { /* (all vertical: done, z cleared) */
+        if (rast__acc_done(o, y, bad, e, fe, ix, n)) { /* (all vertical: done, z cleared) */
             memset(a->z + lo, 0, (size_t)(hi - lo) * sizeof(uint32_t));
             a->dense = dense;
             return 1;
@@ -1367,7 +1267,7 @@ RAST__HOT int rast__acc_emit(rast__acc *a, int32_t sx, const rast__cov_out *o, i
     }
 #endif
     a->dense = dense;
-    return rast__acc_done(o, y, bad, e, ix, n);
+    return rast__acc_done(o, y, bad, e, fe, ix, n);
 }
 
 #ifdef RAST__ACC_AVX2
@@ -1491,6 +1391,31 @@ RAST__HOT int rast__acc_meet(uint64_t *own, int32_t c, uint64_t tag, uint32_t pa
     return 1;
 }
 
+#if RAST__ACC_COMPACT
+/* The walk's record of the edge f (rast__aedge: its fields; its qX
+ * INT32_MIN where f's is INT64_MIN, not set). */
+static void rast__acc_load(rast__aedge *c, const rast__cedge *f)
+{
+    c->qx = f->qx;
+    c->qxs = f->qxs;
+    c->qt = f->qt;
+    c->qts = f->qts;
+    c->qxr = f->qxr;
+    c->qxsr = f->qxsr;
+    c->qtr = f->qtr;
+    c->qtsr = f->qtsr;
+    c->xt = f->xt;
+    c->yt = f->yt;
+    c->dx = f->dx;
+    c->dy = f->dy;
+    c->qrow = f->qrow;
+    c->qX = f->qX < INT32_MIN || f->qX > INT32_MAX ? INT32_MIN : (int32_t)f->qX; /* (INT64_MIN: not set) */
+    c->dir = f->dir;
+    c->spare = 0;
+}
+
+#endif
+
 /* Does row j of nrow parts fit "area" by the accumulation (its window)? */
 static int rast__acc_area_fits(const rast__cov_out *o, int32_t nrow)
 {
@@ -1510,10 +1435,10 @@ static int rast__acc_area_add(rast__acc *a, rast__cedge *e, const int32_t *row, 
     int32_t k;
     for (k = 0; k < nrow; k++) {
         rast__cedge *ed = &e[row[k]];
-        rast__acc_part(a, ed, -((int64_t)ed->yt - Yj) * ((int64_t)1 << a->hq), ed->qa, ed->qta,
-                       ed->qb, ed->qtb, ed->dir, 1, 0);
+        RAST__ACC_FATN(rast__acc_part)(a, ed, -((int64_t)ed->yt - Yj) * ((int64_t)1 << a->hq), ed->qa, ed->qta,
+                                       ed->qb, ed->qtb, ed->dir, 1, 0);
     }
-    return rast__acc_emit(a, 1, o, j, rule, m, rast__acc_win((uint64_t)most, m), e, row, nrow, NULL);
+    return rast__acc_emit(a, 1, o, j, rule, m, rast__acc_win((uint64_t)most, m), NULL, e, row, nrow, NULL);
 }
 
 int rast__cov_acc_area_row(rast__cedge *e, const int32_t *row, int32_t nrow, const int32_t *runs,
@@ -1532,7 +1457,7 @@ int rast__cov_acc_area_row(rast__cedge *e, const int32_t *row, int32_t nrow, con
     for (k = 0; k < nrow; k++) { /* the parts, and the test */
         rast__cedge *ed = &e[row[k]];
         int64_t lo, hi;
-        rast__acc_ends(ed, j, (int64_t)ed->yt - Yj, &a, &ed->qa, &ed->qta, &ed->qb, &ed->qtb);
+        RAST__ACC_FATN(rast__acc_ends)(ed, j, (int64_t)ed->yt - Yj, &a, &ed->qa, &ed->qta, &ed->qb, &ed->qtb);
         lo = rast__acc_col(ed->qa < ed->qb ? ed->qa : ed->qb) - a.x0;
         hi = rast__acc_col(ed->qa < ed->qb ? ed->qb : ed->qa) - a.x0;
         if (lo < 0) lo = 0;
@@ -1573,7 +1498,7 @@ int rast__cov_acc_may(const rast__cov_out *o, int32_t s)
  * n), each edge's first row key[] + ja, last row last[] and last row run
  * through (rast__acc_thru) thru[]; the exact rows' cells. */
 typedef struct rast__acc_walk {
-    rast__cedge *e;
+    rast__aedge *e;
     uint32_t n, m;
     int32_t s, ja, jb, width, nw;
     rast_fill_rule rule;
@@ -1582,7 +1507,81 @@ typedef struct rast__acc_walk {
     rast__i128 *cover, *area;
     uint64_t *bits;
     unsigned char *exact; /* each edge's: its exact steps set (cleared at the first exact row) */
+#if RAST__ACC_COMPACT
+    /* the edges' room (n rast__cedge), whose first cap records' room is
+     * free (e[] lies past it): for an exact row's (rast__acc_exact) */
+    rast__cedge *fat;
+    uint32_t cap;
+#endif
 } rast__acc_walk;
+
+#if RAST__ACC_COMPACT
+/* The edge record f of the walk's record c (for the exact rows: its
+ * exact steps not set; no runs, "area"'s). */
+static void rast__acc_unpack(rast__cedge *f, const rast__aedge *c)
+{
+    f->xt = c->xt;
+    f->yt = c->yt;
+    f->dx = c->dx;
+    f->dy = c->dy;
+    f->dir = c->dir;
+    f->hz = 0;
+    f->hx0 = f->hx1 = 0;
+    f->qx = c->qx;
+    f->qxs = c->qxs;
+    f->qxr = c->qxr;
+    f->qxsr = c->qxsr;
+    f->qrow = c->qrow;
+    f->qt = c->qt;
+    f->qts = c->qts;
+    f->qtr = c->qtr;
+    f->qtsr = c->qtsr;
+    f->qX = c->qX == INT32_MIN ? INT64_MIN : c->qX;
+}
+
+/* Row j the exact way (rast__cov_acc_exact_row), its edges the walk's
+ * records ix[0..n): their rast__cedge records rebuilt in the free room
+ * (w->fat[0..n), indices 0..n-1 in w->exact's room), their exact steps
+ * set.  A row of more edges than the room takes (more than three in four
+ * of the call's) has every record rebuilt in place (w->fat[i] from
+ * w->e[i], in order: a record i's room meets only walk records <= i),
+ * then the walk's records again from them, from the last (a walk record
+ * i's room meets only edge records >= i): the steppers as they were. */
+static void rast__acc_exact(const rast__acc_walk *w, const int32_t *ix, int32_t n, int32_t j)
+{
+    rast__cedge *const f = w->fat;
+    rast__aedge c;
+    uint32_t i;
+    int32_t k;
+    if ((uint32_t)n <= w->cap) {
+        int32_t *const idx = (int32_t *)(void *)w->exact;
+        for (k = 0; k < n; k++) {
+            rast__acc_unpack(&f[k], &w->e[ix[k]]);
+            idx[k] = k;
+        }
+        rast__cov_exact_steps(f, (uint32_t)n);
+        rast__cov_acc_exact_row(f, idx, n, j, w->s, w->rule, w->o, w->cover, w->area, w->bits);
+        return;
+    }
+    for (i = 0; i < w->n; i++) { /* (memcpy: the rooms overlap, whatever the types) */
+        memcpy(&c, &w->e[i], sizeof c);
+        rast__acc_unpack(&f[i], &c);
+    }
+    memset(w->exact, 0, w->n);
+    rast__cov_exact_steps_of(f, ix, n, w->exact);
+    rast__cov_acc_exact_row(f, ix, n, j, w->s, w->rule, w->o, w->cover, w->area, w->bits);
+    for (i = w->n; i-- > 0;) {
+        rast__acc_load(&c, &f[i]);
+        memcpy(&w->e[i], &c, sizeof c);
+    }
+}
+#else
+static void rast__acc_exact(const rast__acc_walk *w, const int32_t *ix, int32_t n, int32_t j)
+{
+    rast__cov_exact_steps_of(w->e, ix, n, w->exact);
+    rast__cov_acc_exact_row(w->e, ix, n, j, w->s, w->rule, w->o, w->cover, w->area, w->bits);
+}
+#endif
 
 /* The edges of rows j0 .. j1 - 1 in row[]: of its nrow (returns the new
  * count), those that end above j0 dropped (when one does: *drop, the least
@@ -1616,7 +1615,7 @@ static int32_t rast__acc_edges_of(const rast__acc_walk *w, int32_t nrow, uint32_
  * the cells of a (the short edges' walk). */
 static void rast__acc_by_rows(const rast__acc_walk *w, rast__acc *a)
 {
-    rast__cedge *const e = w->e;
+    rast__aedge *const e = w->e;
     const rast__cov_out *const o = w->o;
     const uint32_t m = w->m;
     int32_t *const row = w->row;
@@ -1637,14 +1636,13 @@ static void rast__acc_by_rows(const rast__acc_walk *w, rast__acc *a)
                 for (k = 0; k < nrow; k++) rast__acc_row_part_in(a, &e[row[k]], j, (int64_t)e[row[k]].yt - Yj, 1, 1);
             else
                 for (k = 0; k < nrow; k++) rast__acc_row_part_in(a, &e[row[k]], j, (int64_t)e[row[k]].yt - Yj, 1, 0);
-            if (rast__acc_emit(a, 1, o, j, w->rule, m, rast__acc_win((uint64_t)nrow, m), e, row, nrow, NULL)) continue;
+            if (rast__acc_emit(a, 1, o, j, w->rule, m, rast__acc_win((uint64_t)nrow, m), e, NULL, row, nrow, NULL)) continue;
         }
         if (!exact) { /* the first exact row (rare) */
             memset(w->exact, 0, w->n);
             exact = 1;
         }
-        rast__cov_exact_steps_of(e, row, nrow, w->exact);
-        rast__cov_acc_exact_row(e, row, nrow, j, w->s, w->rule, o, w->cover, w->area, w->bits);
+        rast__acc_exact(w, row, nrow, j);
     }
 }
 #else
@@ -1659,7 +1657,7 @@ static void rast__acc_by_rows(const rast__acc_walk *w, rast__acc *a)
  * any other goes to rast__acc_part.  count as rast__acc_part's, dense
  * a->dense (constants at each call: no test of either a part). */
 RAST__HOT void rast__acc_deposit(rast__acc *a, uint64_t *acc, uint64_t *blk, uint32_t *cnt, int32_t last, int64_t x0,
-                                 uint64_t w, rast__cedge *ed, int64_t rel0, int64_t xa, uint64_t ta, int64_t xb,
+                                 uint64_t w, rast__aedge *ed, int64_t rel0, int64_t xa, uint64_t ta, int64_t xb,
                                  uint64_t tb, int32_t *lo, int32_t *hi, int count, int dense)
 {
     const uint64_t fm = QT - 1;
@@ -1724,7 +1722,7 @@ RAST__HOT void rast__acc_deposit(rast__acc *a, uint64_t *acc, uint64_t *blk, uin
  * a->dense (constants at each call).  (From 79 instructions a part to ~50
  * on the text family: the struct's fields reloaded after each store,
  * which may alias them, the clip tests of the general way, the calls.) */
-RAST__HOT int32_t rast__acc_parts(rast__acc *a, rast__cedge *e, const int32_t *ix, int32_t n, int32_t *nx,
+RAST__HOT int32_t rast__acc_parts(rast__acc *a, rast__aedge *e, const int32_t *ix, int32_t n, int32_t *nx,
                                   int32_t j, int count, int dense)
 {
     const int32_t p = a->p, last = a->last;
@@ -1734,7 +1732,7 @@ RAST__HOT int32_t rast__acc_parts(rast__acc *a, rast__cedge *e, const int32_t *i
     uint32_t *const cnt = a->cnt;
     int32_t lo = a->lo, hi = a->hi, k, q = 0;
     for (k = 0; k < n; k++) {
-        rast__cedge *const ed = &e[ix[k]];
+        rast__aedge *const ed = &e[ix[k]];
         const int64_t rel0 = (int64_t)ed->yt - Yj;
         int64_t xa, xb;
         uint64_t ta, tb;
@@ -1770,7 +1768,7 @@ static void rast__acc_cols_mark(uint64_t *b, int64_t c0, int64_t c1, int32_t las
  * cleared, and left so).  Returns rast__acc_done's: 1 when written and
  * handed on, else 0 (the exact sweep's).  The steppers are left as the
  * first pass left them (the row's bottom). */
-static int rast__acc_ties(rast__acc *a, const rast__acc_walk *w, rast__cedge *e, const int32_t *ix, int32_t n,
+static int rast__acc_ties(rast__acc *a, const rast__acc_walk *w, rast__aedge *e, const int32_t *ix, int32_t n,
                           int32_t j)
 {
     const int32_t p = a->p, hq = a->hq, last = a->last, wd = w->width;
@@ -1785,7 +1783,7 @@ static int rast__acc_ties(rast__acc *a, const rast__acc_walk *w, rast__cedge *e,
     a->dense = 1; /* (rast__acc_part marks no bit: ib[] is this pass's) */
     a->cnt = cnt;
     for (k = 0; k < n; k++) {
-        rast__cedge *const ed = &e[ix[k]];
+        rast__aedge *const ed = &e[ix[k]];
         const int64_t rel0 = (int64_t)ed->yt - Yj, rel1 = rel0 + ed->dy;
         int64_t xa, xb, ca, cb;
         uint64_t ta, tb;
@@ -1847,7 +1845,7 @@ static int rast__acc_ties(rast__acc *a, const rast__acc_walk *w, rast__cedge *e,
  * rast__acc_parts leaves its row stepper (at row j, or at row j + 1 if e
  * goes on below): there one step back (the remainder's borrow), no
  * division; *rem its remainder (0: exact). */
-static inline int64_t rast__acc_top_back(rast__cedge *e, int32_t j, const rast__acc *a, uint32_t *rem)
+static inline int64_t rast__acc_top_back(rast__aedge *e, int32_t j, const rast__acc *a, uint32_t *rem)
 {
     int64_t x;
     if (e->qrow == j + 1) {
@@ -1876,7 +1874,7 @@ static inline int rast__acc_flagged(const uint32_t *flag, int32_t b0, int32_t b1
  * (those of the clip) marked in ib when not exact (ex: its ends are), and
  * counted in a->cnt for each 16 of them.
  * (Out of line: the loop keeps its registers for the other parts.) */
-RAST__APART void rast__acc_tie_part(rast__acc *a, rast__cedge *e, int64_t off, int64_t xa, uint64_t ta, int64_t xb,
+RAST__APART void rast__acc_tie_part(rast__acc *a, rast__aedge *e, int64_t off, int64_t xa, uint64_t ta, int64_t xb,
                                     uint64_t tb, int64_t c0, int64_t c1, int ex)
 {
     const uint64_t fm = QT - 1;
@@ -1909,7 +1907,7 @@ RAST__APART void rast__acc_tie_part(rast__acc *a, rast__cedge *e, int64_t off, i
  * rast__acc_top_back).  (A paragraph of text: 27 rows of 120 with a pixel
  * at an exact tie, a stem's side on a half pixel; every part of them
  * walked again cost a fifth of its instructions.) */
-static int rast__acc_ties_z(rast__acc *a, const rast__acc_walk *w, rast__cedge *e, const int32_t *ix, int32_t n,
+static int rast__acc_ties_z(rast__acc *a, const rast__acc_walk *w, rast__aedge *e, const int32_t *ix, int32_t n,
                             int32_t j, rast__acc_kept *kept)
 {
     const int32_t p = a->p, hq = a->hq, last = a->last, wd = w->width, lo = kept->lo, hi = kept->hi;
@@ -1930,7 +1928,7 @@ static int rast__acc_ties_z(rast__acc *a, const rast__acc_walk *w, rast__cedge *
     a->dense = 1; /* (rast__acc_part marks no bit: ib[] is this pass's) */
     a->cnt = a->z + wd; /* (rast__acc_tie_part counts: cleared, as the first pass left them) */
     for (kk = 0; kk < n; kk++) {
-        rast__cedge *const ed = &e[ix[kk]];
+        rast__aedge *const ed = &e[ix[kk]];
         const int64_t rel0 = (int64_t)ed->yt - Yj, rel1 = rel0 + ed->dy;
         const uint64_t neg = ed->dir < 0 ? ~(uint64_t)0 : 0;
         int64_t xa, xb, c0, c1;
@@ -1987,7 +1985,7 @@ static int rast__acc_ties_z(rast__acc *a, const rast__acc_walk *w, rast__cedge *
  * order[] by key[]. */
 static void rast__acc_by_rows(const rast__acc_walk *w, rast__acc *a)
 {
-    rast__cedge *const e = w->e;
+    rast__aedge *const e = w->e;
     const rast__cov_out *const o = w->o;
     const uint32_t m = w->m;
     const int32_t *const order = w->order, *const key = w->key, *const last = w->last;
@@ -2016,7 +2014,7 @@ static void rast__acc_by_rows(const rast__acc_walk *w, rast__acc *a)
                 q = a->dense ? rast__acc_parts(a, e, cur, nrow, nxt, j, 0, 1)
                              : rast__acc_parts(a, e, cur, nrow, nxt, j, 0, 0);
             a->spread = a->cnt != NULL;
-            done = rast__acc_emit(a, 1, o, j, w->rule, m, rast__acc_win((uint64_t)nrow, m), e, cur, nrow,
+            done = rast__acc_emit(a, 1, o, j, w->rule, m, rast__acc_win((uint64_t)nrow, m), e, NULL, cur, nrow,
                                   a->cnt ? &kept : NULL) ||
                    (a->cnt && kept.hi >= 0 ? rast__acc_ties_z(a, w, e, cur, nrow, j, &kept)
                                            : rast__acc_ties(a, w, e, cur, nrow, j));
@@ -2029,8 +2027,7 @@ static void rast__acc_by_rows(const rast__acc_walk *w, rast__acc *a)
                 memset(w->exact, 0, w->n);
                 exact = 1;
             }
-            rast__cov_exact_steps_of(e, cur, nrow, w->exact);
-            rast__cov_acc_exact_row(e, cur, nrow, j, w->s, w->rule, o, w->cover, w->area, w->bits);
+            rast__acc_exact(w, cur, nrow, j);
         }
         t = cur;
         cur = nxt;
@@ -2055,14 +2052,14 @@ static void rast__acc_by_rows(const rast__acc_walk *w, rast__acc *a)
  * as the walk's (the caller clears area[] before the first time). */
 static int rast__acc_again(rast__acc *a, const rast__acc_walk *w, int32_t j, int32_t q)
 {
-    rast__cedge *const e = w->e;
+    rast__aedge *const e = w->e;
     const int64_t Yj = (int64_t)j * a->p;
     int32_t k, done;
     a->dense = (int64_t)q * RAST__ACC_DENSE >= w->width;
     a->cnt = a->z + w->width;
     for (k = 0; k < q; k++)
         rast__acc_row_part_in(a, &e[w->tmp[k]], j, (int64_t)e[w->tmp[k]].yt - Yj, RAST__ACC_SX, 1);
-    done = rast__acc_emit(a, RAST__ACC_SX, w->o, j, w->rule, w->m, 0, e, w->tmp, q, NULL);
+    done = rast__acc_emit(a, RAST__ACC_SX, w->o, j, w->rule, w->m, 0, e, NULL, w->tmp, q, NULL);
     a->cnt = NULL;
     return done;
 }
@@ -2080,7 +2077,7 @@ static void rast__acc_by_bands(const rast__acc_walk *w, rast__acc *v)
 RAST__APART void rast__acc_by_bands(const rast__acc_walk *w, rast__acc *v)
 #endif
 {
-    rast__cedge *const e = w->e;
+    rast__aedge *const e = w->e;
     const rast__cov_out *const o = w->o;
     const uint32_t m = w->m;
     const int32_t ja = w->ja;
@@ -2118,7 +2115,7 @@ RAST__APART void rast__acc_by_bands(const rast__acc_walk *w, rast__acc *v)
         span[1] = -1;
         for (k = 0; k < nrow; k++) {
             const int32_t ek = row[k], f = key[ek] + ja;
-            rast__cedge *const ed = &e[ek];
+            rast__aedge *const ed = &e[ek];
             /* through the whole band, from its top, the row stepper there */
             if (ok[RAST__ACC_BAND] && w->thru[ek] >= j1 - 1 && ed->qrow == j0 && (int64_t)ed->yt <= top) {
                 const int64_t off = (top - ed->yt) * ((int64_t)1 << v->hq);
@@ -2152,9 +2149,9 @@ RAST__APART void rast__acc_by_bands(const rast__acc_walk *w, rast__acc *v)
         for (r = 0; r < j1 - j0; r++) {
             const int32_t j = j0 + r;
             /* (on a tie, the band's edges all vertical will do) */
-            if (ok[r] && (quad ? rast__acc_done(o, j, (qbad >> r) & 1, e, row, nrow)
+            if (ok[r] && (quad ? rast__acc_done(o, j, (qbad >> r) & 1, e, NULL, row, nrow)
                                : rast__acc_emit(&v[r], RAST__ACC_SX, o, j, w->rule, m,
-                                                rast__acc_win((uint64_t)cnt[r], m), e, row, nrow, NULL)))
+                                                rast__acc_win((uint64_t)cnt[r], m), e, NULL, row, nrow, NULL)))
                 continue;
             for (k = 0, q = 0; k < nrow; k++) /* the row's edges */
                 if (key[row[k]] + ja <= j && last[row[k]] >= j) w->tmp[q++] = row[k];
@@ -2170,8 +2167,7 @@ RAST__APART void rast__acc_by_bands(const rast__acc_walk *w, rast__acc *v)
              * enough of them for it to narrow the window) */
             if (ok[r] && q >= RAST__ACC_FEW && rast__acc_again(&v[r], w, j, q)) continue;
 #endif
-            rast__cov_exact_steps_of(e, w->tmp, q, w->exact);
-            rast__cov_acc_exact_row(e, w->tmp, q, j, w->s, w->rule, o, w->cover, w->area, w->bits);
+            rast__acc_exact(w, w->tmp, q, j);
         }
     }
 }
@@ -2316,6 +2312,94 @@ static rast_status rast__acc_narrow(rast__cedge *e, uint32_t n, int32_t s, rast_
     return RAST_OK;
 }
 
+#if RAST__ACC_COMPACT
+typedef char rast__acc_rooms[sizeof(rast__cedge) >= 2 * sizeof(rast__aedge) ? 1 : -1];
+
+/* One pass over the edges e[0..n) (w->n), the only one that reads their
+ * records (rast__cov_rows' and the rows' keys' passes, made one: each
+ * pass over 336-byte records read their lines from memory again): each
+ * edge's walk record (rast__aedge) with its quick steps (rast__cov_qsteps,
+ * its steppers not set) made in place, in the edges' order (record i's
+ * room meets only the edges <= i, read before it); order[i] = i; the rows
+ * [ja, jb) the edges reach (rast__cov_rows_reached); each edge's first row
+ * from ja, key[] (0 above ja), its last row last[]; *nkeys the greatest
+ * key + 1, *rows the edges' rows in all.  floor(y / P) by
+ * rast__acc_floorp's shift, S = s. */
+static void rast__acc_prep(rast__acc_walk *w, const rast__cedge *e, uint32_t *nkeys, uint64_t *rows)
+{
+    const uint32_t n = w->n;
+    const int32_t s = w->s;
+    const int64_t bias = (int64_t)1 << (62 - s);
+    unsigned char *const room = (unsigned char *)(void *)w->fat;
+    int32_t *const order = w->order, *const key = w->key, *const last = w->last;
+    int64_t ymin = e[0].yt, ymax = (int64_t)e[0].yt + e[0].dy, ja;
+    uint32_t i, nk = 0;
+    uint64_t rs = 0;
+    rast__aedge c;
+    c.qx = c.qt = 0;
+    c.qxr = c.qtr = 0;
+    c.qrow = c.qX = INT32_MIN;
+    c.spare = 0;
+    for (i = 0; i < n; i++) {
+        int64_t yb;
+        c.xt = e[i].xt;
+        c.yt = e[i].yt;
+        c.dx = e[i].dx;
+        c.dy = e[i].dy;
+        c.dir = e[i].dir;
+        rast__cov_qsteps(c.dx, c.dy, &c.qts, &c.qtsr, &c.qxs, &c.qxsr);
+        memcpy(room + (size_t)i * sizeof c, &c, sizeof c); /* (memcpy: the rooms overlap, whatever the types) */
+        order[i] = (int32_t)i;
+        yb = (int64_t)c.yt + c.dy;
+        ymin = c.yt < ymin ? c.yt : ymin;
+        ymax = yb > ymax ? yb : ymax;
+        key[i] = (int32_t)((int64_t)(((uint64_t)(int64_t)c.yt + ((uint64_t)1 << 62)) >> s) - bias);
+        last[i] = (int32_t)(-((int64_t)(((uint64_t)-yb + ((uint64_t)1 << 62)) >> s) - bias) - 1);
+    }
+    rast__cov_rows_reached(ymin, ymax, (int32_t)1 << s, w->o, &w->ja, &w->jb);
+    ja = w->ja;
+    for (i = 0; i < n; i++) { /* (the keys from ja) */
+        const int64_t r0 = (int64_t)key[i] - ja;
+        const int32_t kk = r0 < 0 ? 0 : (int32_t)r0;
+        key[i] = kk;
+        nk = (uint32_t)kk >= nk ? (uint32_t)kk + 1 : nk;
+        rs += (uint64_t)(last[i] - (kk + ja) + 1);
+    }
+    *nkeys = nk;
+    *rows = rs;
+}
+
+/* The walk's records (rast__acc_prep's, at the start of the edges' room)
+ * in the rows' order w->order (by first row, stably), copied to the end
+ * of the room (past the first n records: no overlap), key[] and last[]
+ * put in that order too, and order[] becomes 0 .. n - 1 (the walk's
+ * arrays swapped: no copy).  Returns the records; w->cap: how many
+ * rast__cedge the room before them takes (rast__acc_exact's). */
+static rast__aedge *rast__acc_sorted(rast__acc_walk *w, rast__cedge *e)
+{
+    const uint32_t n = w->n;
+    const unsigned char *const room = (const unsigned char *)(void *)e;
+    const size_t off = (size_t)n * (sizeof(rast__cedge) - sizeof(rast__aedge));
+    rast__aedge *const ce = (rast__aedge *)(void *)((unsigned char *)(void *)e + off);
+    int32_t *const order = w->order, *const key = w->key, *const last = w->last, *const ks = w->tmp;
+    uint32_t i;
+    (void)sizeof(rast__acc_rooms);
+    for (i = 0; i < n; i++) {
+        const int32_t k = order[i];
+        memcpy(&ce[i], room + (size_t)k * sizeof(rast__aedge), sizeof(rast__aedge));
+        ks[i] = key[k];
+        order[i] = last[k];
+    }
+    w->tmp = key;
+    w->key = ks;
+    w->order = last;
+    w->last = order;
+    for (i = 0; i < n; i++) w->order[i] = (int32_t)i;
+    w->cap = (uint32_t)(off / sizeof(rast__cedge));
+    return ce;
+}
+#endif
+
 static rast_status rast__acc_walk_all(rast__cedge *e, uint32_t n, int32_t s, rast_fill_rule rule,
                                       const rast__cov_out *o, rast__arena *arena)
 {
@@ -2324,9 +2408,11 @@ static rast_status rast__acc_walk_all(rast__cedge *e, uint32_t n, int32_t s, ras
     uint64_t *cells, *bandbits, rows = 0; /* (the edges' rows, in all) */
     uint32_t i, nkeys = 0; /* (the greatest key + 1) */
     int32_t r, k, band;
-    w.e = e;
     w.n = n;
     w.s = s;
+#if RAST__ACC_COMPACT
+    w.fat = e;
+#endif
     w.rule = rule;
     w.o = o;
     w.width = o->clip.x1 - o->clip.x0;
@@ -2358,6 +2444,9 @@ static rast_status rast__acc_walk_all(rast__cedge *e, uint32_t n, int32_t s, ras
         rast__cov_zero_rows(o, o->clip.y0, o->clip.y1);
         return RAST_OK;
     }
+#if RAST__ACC_COMPACT
+    rast__acc_prep(&w, e, &nkeys, &rows);
+#else
     rast__cov_rows(e, n, v[0].p, w.order, o, &w.ja, &w.jb, 1); /* (the exact steps when needed) */
     {
         /* the row where each starts, from ja; its last row.  (In locals:
@@ -2377,6 +2466,7 @@ static rast_status rast__acc_walk_all(rast__cedge *e, uint32_t n, int32_t s, ras
             rows += (uint64_t)(l - (kk + ja) + 1);
         }
     }
+#endif
     /* By counts of the rows when the rows are few for the edges (a radix
      * sort takes two passes over the edges past 256 rows, and clears and
      * sums 256 counts a pass): the counts in cover[], free until the walk
@@ -2385,6 +2475,11 @@ static rast_status rast__acc_walk_all(rast__cedge *e, uint32_t n, int32_t s, ras
         rast__cov_count_sort(w.order, (uint32_t *)(void *)w.cover, w.key, n, nkeys);
     else
         rast__cov_radix_sort(w.order, w.tmp, w.key, n);
+#if RAST__ACC_COMPACT
+    w.e = rast__acc_sorted(&w, e);
+#else
+    w.e = e;
+#endif
     rast__cov_zero_rows(o, o->clip.y0, w.ja);
     /* Long edges (RAST__ACC_LONG rows each or more, on the mean) are walked
      * a band at a time, each edge's steppers in registers from row to row;
@@ -2397,7 +2492,7 @@ static rast_status rast__acc_walk_all(rast__cedge *e, uint32_t n, int32_t s, ras
         for (k = 0; k < w.nw; k++) w.bits[k] = 0;
         rast__acc_by_rows(&w, &v[0]);
     } else {
-        for (i = 0; i < n; i++) w.thru[i] = rast__acc_thru(&e[i], &v[0]);
+        for (i = 0; i < n; i++) w.thru[i] = rast__acc_thru(&w.e[i], &v[0]);
         for (k = 0; k < RAST__ACC_BAND * (w.width + 1); k++) cells[k] = 0;
         for (r = 0; r < RAST__ACC_BAND; r++) {
             uint64_t *b = bandbits + (size_t)r * (size_t)w.nw;

@@ -210,12 +210,9 @@ static void rast__cov_steps_exact(rast__cedge *e, uint64_t *q30, uint64_t *r30)
  * given: per row, dx 2^30 / dy (|dx| <= 2^28); its steppers unset. */
 static void rast__cov_steps_quick(rast__cedge *e, uint64_t q30, uint64_t r30)
 {
-    int64_t qq, rr;
     e->qts = (int64_t)q30;
     e->qtsr = (uint32_t)r30;
-    rast__floordivmod((int64_t)e->dx * ((int64_t)1 << 30), e->dy, &qq, &rr);
-    e->qxs = qq;
-    e->qxsr = (uint32_t)rr;
+    rast__cov_qxstep(e->dx, e->dy, &e->qxs, &e->qxsr);
     e->qrow = INT32_MIN;
     e->qX = INT64_MIN;
 }
@@ -247,17 +244,7 @@ void rast__cov_exact_steps(rast__cedge *e, uint32_t n)
 
 void rast__cov_qtop_set(rast__cedge *e, int32_t j, int32_t p, int32_t hq)
 {
-    const int64_t d = (int64_t)j * p - e->yt;
-    int64_t q, r, q2, r2;
-    if (d >= 0 && d <= p) { /* (an edge's first row top: |dx d 2^HQ| <= 2^58, one division) */
-        rast__floordivmod((int64_t)e->dx * d * ((int64_t)1 << hq), e->dy, &q2, &r2);
-        e->qx = (int64_t)e->xt * ((int64_t)1 << hq) + q2;
-    } else {
-        rast__floordivmod((int64_t)e->dx * d, e->dy, &q, &r);
-        rast__floordivmod(r * ((int64_t)1 << hq), e->dy, &q2, &r2);
-        e->qx = ((int64_t)e->xt + q) * ((int64_t)1 << hq) + q2;
-    }
-    e->qxr = (uint32_t)r2;
+    rast__cov_qx_at(e->xt, e->yt, e->dx, e->dy, j, p, hq, &e->qx, &e->qxr);
     e->qrow = j;
 }
 
@@ -269,15 +256,21 @@ void rast__cov_rows(rast__cedge *e, uint32_t n, int32_t p, int32_t *order, const
     for (i = 0; i < n; i++) {
         order[i] = (int32_t)i;
         if (quick) { /* the column step by one division, not with the exact ones */
-            const uint64_t adx = (uint64_t)(e[i].dx < 0 ? -(int64_t)e[i].dx : e[i].dx);
-            const uint64_t a = (uint64_t)e[i].dy << 30;
-            rast__cov_steps_quick(&e[i], adx ? a / adx : 0, adx ? a % adx : 0);
+            rast__cov_qsteps(e[i].dx, e[i].dy, &e[i].qts, &e[i].qtsr, &e[i].qxs, &e[i].qxsr);
+            e[i].qrow = INT32_MIN;
+            e[i].qX = INT64_MIN;
         } else {
             rast__cov_steps(&e[i]);
         }
         if (e[i].yt < ymin) ymin = e[i].yt;
         if ((int64_t)e[i].yt + e[i].dy > ymax) ymax = (int64_t)e[i].yt + e[i].dy;
     }
+    rast__cov_rows_reached(ymin, ymax, p, o, ja, jb);
+}
+
+void rast__cov_rows_reached(int64_t ymin, int64_t ymax, int32_t p, const rast__cov_out *o, int32_t *ja,
+                            int32_t *jb)
+{
     /* Rows whose strip the edges reach: floor(ymin / P) .. ceil(ymax / P). */
     ymin = rast__floordiv(ymin, p);
     ymax = rast__ceildiv(ymax, p);

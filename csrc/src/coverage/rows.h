@@ -136,21 +136,51 @@ uint32_t rast__cov_edges_polygon(const rast_polygon *poly, rast__cedge *e);
 uint32_t rast__cov_edges_triangles(const rast_point *tris, uint32_t ntris, rast__cedge *e);
 
 void rast__cov_qtop_set(rast__cedge *e, int32_t j, int32_t p, int32_t hq);
+/* The quick row step of the edge by (dx, dy > 0): dx 2^30 / dy (|dx| <=
+ * 2^28), floored, *qxs + *qxsr/dy. */
+static inline void rast__cov_qxstep(int32_t dx, int32_t dy, int64_t *qxs, uint32_t *qxsr)
+{
+    int64_t qq, rr;
+    rast__floordivmod((int64_t)dx * ((int64_t)1 << 30), dy, &qq, &rr);
+    *qxs = qq;
+    *qxsr = (uint32_t)rr;
+}
+
+/* Both quick steps of the edge by (dx, dy > 0): per column dy 2^30 /
+ * |dx| (by one division; 0 for a vertical edge), *qts + *qtsr/|dx|; per
+ * row rast__cov_qxstep's (rast__cov_rows' quick way). */
+static inline void rast__cov_qsteps(int32_t dx, int32_t dy, int64_t *qts, uint32_t *qtsr, int64_t *qxs,
+                                    uint32_t *qxsr)
+{
+    const uint64_t adx = (uint64_t)(dx < 0 ? -(int64_t)dx : dx);
+    const uint64_t a = (uint64_t)dy << 30;
+    *qts = (int64_t)(adx ? a / adx : 0);
+    *qtsr = (uint32_t)(adx ? a % adx : 0);
+    rast__cov_qxstep(dx, dy, qxs, qxsr);
+}
+/* The quick row stepper's step from a row's top to the next: qx + qxr/dy
+ * grows by qxs + qxsr/dy (the fields of any record that has them: the
+ * edges here, "accumulate"'s compact ones, coverage_acc.c). */
+static inline void rast__cov_qstep(int64_t *qx, uint32_t *qxr, int64_t qxs, uint32_t qxsr, int32_t dy)
+{
+    *qx += qxs;
+    *qxr += qxsr;
+    if (*qxr >= (uint32_t)dy) {
+        *qxr -= (uint32_t)dy;
+        ++*qx;
+    }
+}
+
 /* The quick steppers (units Q = 2^-30 pixel; HQ = 30 - S, P = 2^S).  e's
  * exact abscissa at the top of row j (which e spans: yt <= j P < yt + dy)
  * is qx + qxr/dy: stepped from the row above by qxs + qxsr/dy, else set
  * by rast__cov_qtop_set (out of line: once an edge), in one division at
  * the edge's first row top (dx (jP - yt) 2^HQ <= 2^58), two elsewhere
- * (dx (jP - yt) < 2^56; the remainder times 2^HQ < 2^58). */
+ * (dx (jP - yt) < 2^56; the remainder times 2^HQ < 2^58): rast__cov_qx_at. */
 static inline int64_t rast__cov_qtop(rast__cedge *e, int32_t j, int32_t p, int32_t hq)
 {
     if (e->qrow == j - 1) {
-        e->qx += e->qxs;
-        e->qxr += e->qxsr;
-        if (e->qxr >= (uint32_t)e->dy) {
-            e->qxr -= (uint32_t)e->dy;
-            e->qx++;
-        }
+        rast__cov_qstep(&e->qx, &e->qxr, e->qxs, e->qxsr, e->dy);
         e->qrow = j;
     } else if (e->qrow != j) {
         rast__cov_qtop_set(e, j, p, hq); /* (once an edge, out of line) */
@@ -158,23 +188,50 @@ static inline int64_t rast__cov_qtop(rast__cedge *e, int32_t j, int32_t p, int32
     return e->qx;
 }
 
-/* e's column stepper at vertical X (which e's x range reaches: |X P - xt|
- * <= |dx|): t = floor(|X P - xt| dy 2^HQ / |dx|) from e's top, qt + qtr/|dx|,
- * in two 64-bit divisions (|X P - xt| dy < 2^56, the remainder times 2^HQ <
- * 2^58), or one when |X P - xt| <= P (the product times 2^HQ <= 2^58). */
-static inline void rast__cov_qt_first(rast__cedge *e, int64_t X, int32_t p, int32_t hq)
+/* The edge from (xt, yt) by (dx, dy > 0): its abscissa at the top of row
+ * j, floor(xt 2^HQ + dx (j P - yt) 2^HQ / dy) into *qx, the remainder
+ * (over dy) into *qxr (rast__cov_qtop_set's). */
+static inline void rast__cov_qx_at(int32_t xt, int32_t yt, int32_t dx, int32_t dy, int32_t j, int32_t p,
+                                   int32_t hq, int64_t *qx, uint32_t *qxr)
 {
-    uint64_t adx = (uint64_t)(e->dx < 0 ? -(int64_t)e->dx : e->dx);
-    int64_t w = X * p - e->xt;
-    uint64_t m = (uint64_t)(w < 0 ? -w : w) * (uint64_t)e->dy, r;
+    const int64_t d = (int64_t)j * p - yt;
+    int64_t q, r, q2, r2;
+    if (d >= 0 && d <= p) { /* (an edge's first row top: |dx d 2^HQ| <= 2^58, one division) */
+        rast__floordivmod((int64_t)dx * d * ((int64_t)1 << hq), dy, &q2, &r2);
+        *qx = (int64_t)xt * ((int64_t)1 << hq) + q2;
+    } else {
+        rast__floordivmod((int64_t)dx * d, dy, &q, &r);
+        rast__floordivmod(r * ((int64_t)1 << hq), dy, &q2, &r2);
+        *qx = ((int64_t)xt + q) * ((int64_t)1 << hq) + q2;
+    }
+    *qxr = (uint32_t)r2;
+}
+
+/* The column stepper of the edge from (xt, .) by (dx, dy) at vertical X
+ * (which its x range reaches: |X P - xt| <= |dx|): t = floor(|X P - xt|
+ * dy 2^HQ / |dx|) from its top, *qt + *qtr/|dx|, in two 64-bit divisions
+ * (|X P - xt| dy < 2^56, the remainder times 2^HQ < 2^58), or one when
+ * |X P - xt| <= P (the product times 2^HQ <= 2^58). */
+static inline void rast__cov_qt_at(int32_t xt, int32_t dx, int32_t dy, int64_t X, int32_t p, int32_t hq,
+                                   int64_t *qt, uint32_t *qtr)
+{
+    uint64_t adx = (uint64_t)(dx < 0 ? -(int64_t)dx : dx);
+    int64_t w = X * p - xt;
+    uint64_t m = (uint64_t)(w < 0 ? -w : w) * (uint64_t)dy, r;
     if (w >= -p && w <= p) { /* (the first vertical: m 2^HQ <= 2^58, one division) */
-        e->qt = (int64_t)((m << hq) / adx);
-        e->qtr = (uint32_t)((m << hq) % adx);
+        *qt = (int64_t)((m << hq) / adx);
+        *qtr = (uint32_t)((m << hq) % adx);
     } else {
         r = (m % adx) << hq;
-        e->qt = (int64_t)(((m / adx) << hq) + r / adx);
-        e->qtr = (uint32_t)(r % adx);
+        *qt = (int64_t)(((m / adx) << hq) + r / adx);
+        *qtr = (uint32_t)(r % adx);
     }
+}
+
+/* e's column stepper at vertical X: rast__cov_qt_at, qX = X. */
+static inline void rast__cov_qt_first(rast__cedge *e, int64_t X, int32_t p, int32_t hq)
+{
+    rast__cov_qt_at(e->xt, e->dx, e->dy, X, p, hq, &e->qt, &e->qtr);
     e->qX = X;
 }
 
@@ -260,6 +317,10 @@ void rast__cov_count_sort(int32_t *ix, uint32_t *cnt, const int32_t *key, uint32
  * [*ja, *jb) of the clip the edges' strips reach (n > 0). */
 void rast__cov_rows(rast__cedge *e, uint32_t n, int32_t p, int32_t *order, const rast__cov_out *o,
                     int32_t *ja, int32_t *jb, int quick);
+/* The rows [*ja, *jb) of the clip of o that the strips of ordinates
+ * [ymin, ymax] reach (rast__cov_rows'). */
+void rast__cov_rows_reached(int64_t ymin, int64_t ymax, int32_t p, const rast__cov_out *o, int32_t *ja,
+                            int32_t *jb);
 void rast__cov_exact_steps(rast__cedge *e, uint32_t n);
 /* The exact steps of the edges e[ix[k]], k < n, whose done[] is 0 (then
  * 1): an exact row's edges, not every edge of the call. */

@@ -98,8 +98,8 @@ def test_c_bad_input_and_capacity():
     def call(win, cap):
         win = np.asarray(win, np.int64)
         return lib.rastpy_window_fractions64(len(win), ffi.from_buffer("int64_t[]", win),
-                                             ffi.from_buffer("double[]", xy), ffi.from_buffer("uint32_t[]", sizes),
-                                             opts, 10, ffi.from_buffer("int64_t[]", out_f),
+                                             ffi.from_buffer("double[]", xy), len(xy) // 2,
+                                             ffi.from_buffer("uint32_t[]", sizes), len(sizes), opts, 10, ffi.from_buffer("int64_t[]", out_f),
                                              ffi.from_buffer("int64_t[]", out_c), ffi.from_buffer("double[]", out_v),
                                              cap, failed)
 
@@ -112,5 +112,16 @@ def test_c_bad_input_and_capacity():
     assert call([[1, 2, 3, 32, 0, 0, 1, 0], [2, 0, 3, 32, 0, 0, 1, 0]], 8) == lib.RAST_E_ARG  # height 0
     assert failed[0] == 1
     assert call([[1, 2, 3, 32, 0, 0, 0, 0]], 8) == lib.RAST_E_ARG  # no ring
+    # a window table running past the points or the rings given: refused before reading there
+    out_f[:] = -7
+    for bad in ([1, 2, 3, 32, 1, 0, 1, 0],  # its 4 points start at point 1 of 4
+                [1, 2, 3, 32, 0, 1, 1, 0],  # its ring is ring 1 of 1
+                [1, 2, 3, 32, 0, 0, 2, 0],  # two rings of 1
+                [1, 2, 3, 32, -1, 0, 1, 0], [1, 2, 3, 32, 0, -1, 1, 0],
+                [1, 2, 3, 32, 0, 2 ** 62, 1, 0], [1, 2, 3, 32, 2 ** 62, 0, 1, 0],
+                [1, 2, 3, 32, 0, 0, 2 ** 33, 0]):
+        assert call([[5, 2, 3, 32, 0, 0, 1, 21], bad], 8) == lib.RAST_E_ARG, bad
+        assert failed[0] == 1
+        assert out_f[:6].tolist() == [5] * 6 and (out_f[6:] == -7).all()  # the first window's cells only
     xy[0] = np.nan
     assert call([[1, 2, 3, 32, 0, 0, 1, 0]], 8) == lib.RAST_E_ARG and failed[1] == 1  # point 0 bad

@@ -14,7 +14,10 @@
 /* win holds 8 int64 per window: feature id, height, width, subpixel bits
  * S, first point, first ring, number of rings, the raster cell of the
  * window's top-left corner.  A window's rings are ring_sizes[first ring
- * ..] and its points xy[2 * first point ..] (window-local pixels).
+ * ..] and its points xy[2 * first point ..] (window-local pixels); xy
+ * holds npoints points and ring_sizes nrings sizes, and a window whose
+ * rings or points run past them is refused (RAST_E_ARG) before anything
+ * is read there.
  * opts: the method, the rule (its subpixel_bits is replaced by each
  * window's S).  Writes the nonzero cells of window after window, each
  * window's in row-major order, cell = corner + row * raster_width +
@@ -23,8 +26,8 @@
  * failed[1] rastpy_polygon_coverage64's code k + 1 when its point k was
  * bad (then RAST_E_ARG), else 0.  One window buffer (malloc), grown to
  * the largest window so far. */
-long rastpy_window_fractions64(uint32_t nwin, const int64_t *win, const double *xy,
-                               const uint32_t *ring_sizes, const rast_coverage_opts *opts,
+long rastpy_window_fractions64(uint32_t nwin, const int64_t *win, const double *xy, size_t npoints,
+                               const uint32_t *ring_sizes, size_t nrings, const rast_coverage_opts *opts,
                                int64_t raster_width, int64_t *out_feature, int64_t *out_cell,
                                double *out_fraction, size_t capacity, int64_t *failed)
 {
@@ -38,16 +41,25 @@ long rastpy_window_fractions64(uint32_t nwin, const int64_t *win, const double *
     for (k = 0; k < nwin; k++) {
         const int64_t *v = win + (size_t)8 * k;
         int64_t h = v[1], w = v[2], r, c;
-        size_t cells, i, npts = 0;
+        size_t cells, i;
+        uint64_t npts = 0;
         long st;
         uint32_t j;
         failed[0] = k;
         failed[1] = 0;
-        if (h <= 0 || w <= 0 || h > RAST_MAX_DIM || w > RAST_MAX_DIM || v[3] < 0 || v[6] <= 0) {
+        /* the window's rings inside ring_sizes[0 .. nrings), then its
+         * points inside xy[0 .. npoints) (each sum < 2^32 * 2^32: no wrap) */
+        if (h <= 0 || w <= 0 || h > RAST_MAX_DIM || w > RAST_MAX_DIM || v[3] < 0 || v[6] <= 0 ||
+            v[6] > (int64_t)UINT32_MAX || v[5] < 0 || (uint64_t)v[5] > (uint64_t)nrings ||
+            (uint64_t)v[6] > (uint64_t)nrings - (uint64_t)v[5] || v[4] < 0) {
             free(buf);
             return RAST_E_ARG;
         }
         for (j = 0; j < (uint32_t)v[6]; j++) npts += ring_sizes[v[5] + j];
+        if ((uint64_t)v[4] > (uint64_t)npoints || npts > (uint64_t)npoints - (uint64_t)v[4] || npts > UINT32_MAX) {
+            free(buf);
+            return RAST_E_ARG;
+        }
         cells = (size_t)h * (size_t)w;
         if (cells > have) {
             free(buf);

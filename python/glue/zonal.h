@@ -8,8 +8,8 @@
 #include "rastpy.h"
 
 /* cdef-begin */
-long rastpy_window_fractions64(uint32_t nwin, const int64_t *win, const double *xy,
-                               const uint32_t *ring_sizes, const rast_coverage_opts *opts,
+long rastpy_window_fractions64(uint32_t nwin, const int64_t *win, const double *xy, size_t npoints,
+                               const uint32_t *ring_sizes, size_t nrings, const rast_coverage_opts *opts,
                                int64_t raster_width, int64_t *out_feature, int64_t *out_cell,
                                double *out_fraction, size_t capacity, int64_t *failed);
 /* cdef-end */

@@ -208,7 +208,8 @@ def _fast_fractions(ids, local, ring_sizes, ring_ok, ok_start, fring, hw, ww, r0
     done = 0
     for a in range(0, len(ids), _WINDOWS_PER_CALL):
         b = min(a + _WINDOWS_PER_CALL, len(ids))
-        n = lib.rastpy_window_fractions64(b - a, ffi.from_buffer("int64_t[]", win[a:b]), xy, rs, opts, W,
+        n = lib.rastpy_window_fractions64(b - a, ffi.from_buffer("int64_t[]", win[a:b]), xy, len(pts), rs,
+                                          len(sizes), opts, W,
                                           ffi.from_buffer("int64_t[]", out_f[done:]),
                                           ffi.from_buffer("int64_t[]", out_c[done:]),
                                           ffi.from_buffer("double[]", out_v[done:]), cap - done, failed)

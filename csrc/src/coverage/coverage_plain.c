@@ -657,9 +657,9 @@ int rast__cov_plain_parts(const rast_polygon *poly, uint32_t npoints, rast__aren
         eb += ne[r];
     }
     if (eb != nedges) return 0; /* (rast__cov_edges_polygon's edges, ring by ring) */
-    for (r = 0, eb = 0; r < nr; eb += ne[r], r++)
+    for (r = 0, eb = 0, b = 0; r < nr; eb += ne[r], r++)
         if (nv[r])
-            for (a = eb; a < eb + ne[r]; a++) e[a].hz |= RAST__HZ_PLAIN;
-    return 0;
+            for (a = eb, b = 1; a < eb + ne[r]; a++) e[a].hz |= RAST__HZ_PLAIN;
+    return b ? -1 : 0;
 }
 #endif

@@ -102,6 +102,13 @@ static int rast__pl_within(rast_point a, rast_point b, rast_point c)
            (a.y < b.y ? a.y <= c.y && c.y <= b.y : b.y <= c.y && c.y <= a.y);
 }
 
+/* Are segments pq and rt's boxes apart in y (then they do not meet, nor
+ * share an end)? */
+static inline int rast__pl_yapart(rast_point p, rast_point q, rast_point r, rast_point t)
+{
+    return (p.y < r.y && p.y < t.y && q.y < r.y && q.y < t.y) || (p.y > r.y && p.y > t.y && q.y > r.y && q.y > t.y);
+}
+
 /* 1 when edges j and k may be where they are (condition 2), 0 if not */
 static int rast__pl_apart(const rast__pl *s, uint32_t j, uint32_t k)
 {
@@ -114,9 +121,7 @@ static int rast__pl_apart(const rast__pl *s, uint32_t j, uint32_t k)
     }
     /* (in y first: two neighbours in the sweep share abscissae, and the
      * lower one, j, lies most often below k's box) */
-    if ((p.y < r.y && p.y < t.y && q.y < r.y && q.y < t.y) ||
-        (p.y > r.y && p.y > t.y && q.y > r.y && q.y > t.y) ||
-        (p.x < r.x && p.x < t.x && q.x < r.x && q.x < t.x) ||
+    if (rast__pl_yapart(p, q, r, t) || (p.x < r.x && p.x < t.x && q.x < r.x && q.x < t.x) ||
         (p.x > r.x && p.x > t.x && q.x > r.x && q.x > t.x))
         return 1; /* boxes apart */
     d1 = rast__cross3(r, t, p);
@@ -195,9 +200,19 @@ static int rast__pl_pass(rast__pl *s, uint32_t in, uint32_t out)
 {
     const uint32_t i = s->pos[in];
     if ((s->budget -= i + 1) > ((uint64_t)1 << 62) || i >= s->nst || s->st[i] != in) return 0;
+    const rast_point l = s->pt[out], r = s->pt[s->next[out]];
     s->st[i] = out;
     s->pos[out] = i;
-    return (i == 0 || rast__pl_apart(s, s->st[i - 1], out)) && (i + 1 == s->nst || rast__pl_apart(s, out, s->st[i + 1]));
+    /* (most neighbours lie apart in y: that test here, the rest by the call) */
+    if (i > 0) {
+        const uint32_t m = s->st[i - 1];
+        if (!rast__pl_yapart(s->pt[m], s->pt[s->next[m]], l, r) && !rast__pl_apart(s, m, out)) return 0;
+    }
+    if (i + 1 < s->nst) {
+        const uint32_t m = s->st[i + 1];
+        if (!rast__pl_yapart(l, r, s->pt[m], s->pt[s->next[m]]) && !rast__pl_apart(s, out, m)) return 0;
+    }
+    return 1;
 }
 
 #else

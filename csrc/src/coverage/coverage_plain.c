@@ -81,7 +81,21 @@ static void rast__pl_sort(const uint64_t *key, uint32_t *v, uint32_t *tmp, uint3
         uint32_t r, m = 0;
         for (r = 0; r < nr; r += 2) {
             uint32_t a = run[r], mid = run[r + 1], b = mid, end = r + 2 <= nr ? run[r + 2] : n, k = a;
-            while (a < mid && b < end) dst[k++] = key[src[b]] < key[src[a]] ? src[b++] : src[a++];
+            if (a < mid && b < end) { /* (the two heads' keys kept: one key read a step) */
+                uint32_t x = src[a], y = src[b];
+                uint64_t kx = key[x], ky = key[y];
+                for (;;) {
+                    if (ky < kx) {
+                        dst[k++] = y;
+                        if (++b == end) break;
+                        ky = key[y = src[b]];
+                    } else {
+                        dst[k++] = x;
+                        if (++a == mid) break;
+                        kx = key[x = src[a]];
+                    }
+                }
+            }
             while (a < mid) dst[k++] = src[a++];
             while (b < end) dst[k++] = src[b++];
             run[m++] = run[r];
@@ -423,14 +437,14 @@ static int rast__pl_apart_all(rast__pl *s, uint32_t *ord, uint32_t *tmp, uint32_
 {
     uint32_t i;
     rast__pl_sort(s->key, ord, tmp, run, n);
-    for (i = 0; i + 1 < n; i++) /* condition 1 */
-        if (s->key[ord[i]] == s->key[ord[i + 1]]) return 0;
     s->st = tmp; /* the sweep's array takes tmp's room once the vertices are sorted, */
     s->pos = run; /* its places run's (each edge's, set as it enters) */
     s->nst = 0;
     for (i = 0; i < n; i++) { /* condition 2: at each vertex, its edges that end, then those that start */
         const uint32_t v = ord[i], in = s->prev[v];
-        const int in_ends = s->key[in] < s->key[v], out_ends = s->key[s->next[v]] < s->key[v];
+        const uint64_t kv = s->key[v];
+        const int in_ends = s->key[in] < kv, out_ends = s->key[s->next[v]] < kv;
+        if (i > 0 && s->key[ord[i - 1]] == kv) return 0; /* condition 1 */
         if (RAST__PL_PASS && in_ends != out_ends) {
             if (!rast__pl_pass(s, in_ends ? in : v, in_ends ? v : in)) return 0;
             continue;

@@ -25,15 +25,18 @@ int rast__cov_plain(const rast_polygon *poly, uint32_t npoints, rast__arena aren
 /* The same test part by part (coverage_plain.c: rings whose pixel boxes
  * share no pixel are apart), S = sb, on a polygon of two rings or more
  * whose nedges edges rast__cov_edges_polygon put in e[]: 1 when every
- * part is plain (the accumulation gives the exact coverage); else the
- * edges of the plain parts marked RAST__HZ_PLAIN (rast__cedge.hz: a row
- * of marked edges only may go by the accumulation) and -1 when one is,
- * 0 when none is.  Scratch from a
+ * part is plain (the accumulation gives the exact coverage); else 0, and
+ * the edges of the plain parts marked RAST__HZ_PLAIN (rast__cedge.hz: a
+ * row of marked edges only may go by the accumulation).  Scratch from a
  * copy of the arena: about nrings * 64 bytes and 36 a point of the
  * largest part tested.  Not in size-optimised builds. */
 #define RAST__HZ_PLAIN 0x40000000
 int rast__cov_plain_parts(const rast_polygon *poly, uint32_t npoints, rast__arena arena, int32_t sb,
                           rast__cedge *e, uint32_t nedges);
+/* The same, but -1 (not 0) when some edges are marked (for
+ * rast__cov_area_marked). */
+int rast__cov_parts_marked(const rast_polygon *poly, uint32_t npoints, rast__arena arena, int32_t sb,
+                           rast__cedge *e, uint32_t nedges);
 
 rast_status rast__cov_area(rast__cedge *e, uint32_t n, int32_t s, rast_fill_rule rule,
                            int accumulate, const rast__cov_out *o, rast__arena *arena);

@@ -35,6 +35,14 @@
  */
 #include "coverage.h"
 
+/* (size-optimised builds: the sweep as it was, smaller: every vertex by
+ * rast__pl_remove and rast__pl_insert, each edge found by a search) */
+#if !defined(__OPTIMIZE_SIZE__)
+#define RAST__PL_FAST 1
+#else
+#define RAST__PL_FAST 0
+#endif
+
 typedef struct rast__pl {
     const rast_point *pt; /* vertex v starts edge v, which ends at vertex next[v] */
     const uint64_t *key;  /* v's place in the order (x, then y): one integer */
@@ -81,7 +89,9 @@ static void rast__pl_sort(const uint64_t *key, uint32_t *v, uint32_t *tmp, uint3
         uint32_t r, m = 0;
         for (r = 0; r < nr; r += 2) {
             uint32_t a = run[r], mid = run[r + 1], b = mid, end = r + 2 <= nr ? run[r + 2] : n, k = a;
-            if (a < mid && b < end) { /* (the two heads' keys kept: one key read a step) */
+            if (!RAST__PL_FAST) {
+                while (a < mid && b < end) dst[k++] = key[src[b]] < key[src[a]] ? src[b++] : src[a++];
+            } else if (a < mid && b < end) { /* (the two heads' keys kept: one key read a step) */
                 uint32_t x = src[a], y = src[b];
                 uint64_t kx = key[x], ky = key[y];
                 for (;;) {
@@ -174,7 +184,7 @@ static int rast__pl_insert(rast__pl *s, uint32_t k)
     memmove(s->st + lo + 1, s->st + lo, (size_t)(s->nst - lo) * sizeof(uint32_t));
     s->st[lo] = k;
     s->nst++;
-    for (i = lo; i < s->nst; i++) s->pos[s->st[i]] = i;
+    for (i = lo; RAST__PL_FAST && i < s->nst; i++) s->pos[s->st[i]] = i;
     if (lo > 0 && !rast__pl_apart(s, s->st[lo - 1], k)) return 0;
     if (lo + 1 < s->nst && !rast__pl_apart(s, k, s->st[lo + 1])) return 0;
     return 1;
@@ -183,12 +193,16 @@ static int rast__pl_insert(rast__pl *s, uint32_t k)
 /* Edge k out of the sweep at its right end: 0 if its neighbours meet */
 static int rast__pl_remove(rast__pl *s, uint32_t k)
 {
-    uint32_t i = s->pos[k];
-    if ((s->budget -= s->nst + 1) > ((uint64_t)1 << 62) || i >= s->nst || s->st[i] != k) return 0;
+    uint32_t i = 0;
+    if (RAST__PL_FAST)
+        i = s->pos[k] < s->nst && s->st[s->pos[k]] == k ? s->pos[k] : s->nst;
+    else
+        while (i < s->nst && s->st[i] != k) i++;
+    if ((s->budget -= s->nst + 1) > ((uint64_t)1 << 62) || i == s->nst) return 0;
     if (i > 0 && i + 1 < s->nst && !rast__pl_apart(s, s->st[i - 1], s->st[i + 1])) return 0;
     memmove(s->st + i, s->st + i + 1, (size_t)(s->nst - i - 1) * sizeof(uint32_t));
     s->nst--;
-    for (; i < s->nst; i++) s->pos[s->st[i]] = i;
+    for (; RAST__PL_FAST && i < s->nst; i++) s->pos[s->st[i]] = i;
     return 1;
 }
 
@@ -405,7 +419,7 @@ static uint32_t rast__pl_ring(const rast_point *p, uint32_t size, rast_point *pt
     for (i = 0; i < size; i++) {
         rast_point a = p[i], b = p[i + 1 < size ? i + 1 : 0];
         if (a.x == b.x && a.y == b.y) continue;
-        if (!box) {
+        if (RAST__PL_FAST && !box) {
             /* (box and range known) */
         } else if (a.x < -lim || a.x > lim || a.y < -lim || a.y > lim) {
             return f;
@@ -437,6 +451,8 @@ static int rast__pl_apart_all(rast__pl *s, uint32_t *ord, uint32_t *tmp, uint32_
 {
     uint32_t i;
     rast__pl_sort(s->key, ord, tmp, run, n);
+    for (i = 0; !RAST__PL_FAST && i + 1 < n; i++) /* condition 1 (else in the sweep's loop) */
+        if (s->key[ord[i]] == s->key[ord[i + 1]]) return 0;
     s->st = tmp; /* the sweep's array takes tmp's room once the vertices are sorted, */
     s->pos = run; /* its places run's (each edge's, set as it enters) */
     s->nst = 0;
@@ -444,7 +460,7 @@ static int rast__pl_apart_all(rast__pl *s, uint32_t *ord, uint32_t *tmp, uint32_
         const uint32_t v = ord[i], in = s->prev[v];
         const uint64_t kv = s->key[v];
         const int in_ends = s->key[in] < kv, out_ends = s->key[s->next[v]] < kv;
-        if (i > 0 && s->key[ord[i - 1]] == kv) return 0; /* condition 1 */
+        if (RAST__PL_FAST && i > 0 && s->key[ord[i - 1]] == kv) return 0; /* condition 1 */
         if (RAST__PL_PASS && in_ends != out_ends) {
             if (!rast__pl_pass(s, in_ends ? in : v, in_ends ? v : in)) return 0;
             continue;
@@ -565,6 +581,12 @@ static uint32_t rast__pl_root(uint32_t *par, uint32_t r)
 
 int rast__cov_plain_parts(const rast_polygon *poly, uint32_t npoints, rast__arena arena, int32_t sb,
                           rast__cedge *e, uint32_t nedges)
+{
+    return rast__cov_parts_marked(poly, npoints, arena, sb, e, nedges) > 0;
+}
+
+int rast__cov_parts_marked(const rast_polygon *poly, uint32_t npoints, rast__arena arena, int32_t sb,
+                           rast__cedge *e, uint32_t nedges)
 {
     const int64_t lim = RAST_COORD_MAX, P = (int64_t)1 << sb;
     const uint32_t nr = poly->nrings;

@@ -217,7 +217,7 @@ static int rast__cov_convex(const rast_polygon *poly)
  * plain parts' edges are marked, for rast__cov_area_marked's bands (a
  * polygon of several rings); 0 none. */
 #define RAST__COV_PARTS(poly, npoints, arena, s, e, n) \
-    ((poly)->nrings >= 2 ? rast__cov_plain_parts(poly, npoints, arena, s, e, n) : 0)
+    ((poly)->nrings >= 2 ? rast__cov_parts_marked(poly, npoints, arena, s, e, n) : 0)
 #define RAST__COV_AREA_MARKED(e, n, s, rule, o, arena) rast__cov_area_marked(e, n, s, rule, o, arena)
 #else
 #define RAST__COV_CONVEX(poly) 0 /* (size-optimised: the plain test's way only) */

@@ -33,9 +33,19 @@ int rast__cov_plain(const rast_polygon *poly, uint32_t npoints, rast__arena aren
 #define RAST__HZ_PLAIN 0x40000000
 int rast__cov_plain_parts(const rast_polygon *poly, uint32_t npoints, rast__arena arena, int32_t sb,
                           rast__cedge *e, uint32_t nedges);
+/* The same, but -1 (not 0) when some edges are marked (for
+ * rast__cov_area_marked). */
+int rast__cov_parts_marked(const rast_polygon *poly, uint32_t npoints, rast__arena arena, int32_t sb,
+                           rast__cedge *e, uint32_t nedges);
 
 rast_status rast__cov_area(rast__cedge *e, uint32_t n, int32_t s, rast_fill_rule rule,
                            int accumulate, const rast__cov_out *o, rast__arena *arena);
+/* "area" (accumulate = 0) of edges some of which rast__cov_plain_parts
+ * marked: the rows whose edges are all marked in bands by rast__cov_acc
+ * (when rast__cov_acc_may), the others by rast__cov_area; the same
+ * levels.  e[] is reordered.  Not in size-optimised builds. */
+rast_status rast__cov_area_marked(rast__cedge *e, uint32_t n, int32_t s, rast_fill_rule rule,
+                                  const rast__cov_out *o, rast__arena *arena);
 
 /* Accumulation into uint8 or uint16 levels (coverage_acc.c), when
  * rast__cov_acc_may: as rast__cov_area(..., accumulate = 1, ...), in the

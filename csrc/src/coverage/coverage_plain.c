@@ -35,11 +35,20 @@
  */
 #include "coverage.h"
 
+/* (size-optimised builds: the sweep as it was, smaller: every vertex by
+ * rast__pl_remove and rast__pl_insert, each edge found by a search) */
+#if !defined(__OPTIMIZE_SIZE__)
+#define RAST__PL_FAST 1
+#else
+#define RAST__PL_FAST 0
+#endif
+
 typedef struct rast__pl {
     const rast_point *pt; /* vertex v starts edge v, which ends at vertex next[v] */
     const uint64_t *key;  /* v's place in the order (x, then y): one integer */
     const uint32_t *next, *prev;
     uint32_t *st; /* the sweep's edges, lowest first */
+    uint32_t *pos; /* pos[k]: edge k's place in st[] while it is there */
     uint32_t nst;
     uint64_t budget;
 } rast__pl;
@@ -80,7 +89,23 @@ static void rast__pl_sort(const uint64_t *key, uint32_t *v, uint32_t *tmp, uint3
         uint32_t r, m = 0;
         for (r = 0; r < nr; r += 2) {
             uint32_t a = run[r], mid = run[r + 1], b = mid, end = r + 2 <= nr ? run[r + 2] : n, k = a;
-            while (a < mid && b < end) dst[k++] = key[src[b]] < key[src[a]] ? src[b++] : src[a++];
+            if (!RAST__PL_FAST) {
+                while (a < mid && b < end) dst[k++] = key[src[b]] < key[src[a]] ? src[b++] : src[a++];
+            } else if (a < mid && b < end) { /* (the two heads' keys kept: one key read a step) */
+                uint32_t x = src[a], y = src[b];
+                uint64_t kx = key[x], ky = key[y];
+                for (;;) {
+                    if (ky < kx) {
+                        dst[k++] = y;
+                        if (++b == end) break;
+                        ky = key[y = src[b]];
+                    } else {
+                        dst[k++] = x;
+                        if (++a == mid) break;
+                        kx = key[x = src[a]];
+                    }
+                }
+            }
             while (a < mid) dst[k++] = src[a++];
             while (b < end) dst[k++] = src[b++];
             run[m++] = run[r];
@@ -101,6 +126,13 @@ static int rast__pl_within(rast_point a, rast_point b, rast_point c)
            (a.y < b.y ? a.y <= c.y && c.y <= b.y : b.y <= c.y && c.y <= a.y);
 }
 
+/* Are segments pq and rt's boxes apart in y (then they do not meet, nor
+ * share an end)? */
+static inline int rast__pl_yapart(rast_point p, rast_point q, rast_point r, rast_point t)
+{
+    return (p.y < r.y && p.y < t.y && q.y < r.y && q.y < t.y) || (p.y > r.y && p.y > t.y && q.y > r.y && q.y > t.y);
+}
+
 /* 1 when edges j and k may be where they are (condition 2), 0 if not */
 static int rast__pl_apart(const rast__pl *s, uint32_t j, uint32_t k)
 {
@@ -111,10 +143,10 @@ static int rast__pl_apart(const rast__pl *s, uint32_t j, uint32_t k)
         return rast__cross3(v, a, b) != 0 ||
                ((int64_t)a.x - v.x) * ((int64_t)b.x - v.x) + ((int64_t)a.y - v.y) * ((int64_t)b.y - v.y) < 0;
     }
-    if ((p.x < r.x && p.x < t.x && q.x < r.x && q.x < t.x) ||
-        (p.x > r.x && p.x > t.x && q.x > r.x && q.x > t.x) ||
-        (p.y < r.y && p.y < t.y && q.y < r.y && q.y < t.y) ||
-        (p.y > r.y && p.y > t.y && q.y > r.y && q.y > t.y))
+    /* (in y first: two neighbours in the sweep share abscissae, and the
+     * lower one, j, lies most often below k's box) */
+    if (rast__pl_yapart(p, q, r, t) || (p.x < r.x && p.x < t.x && q.x < r.x && q.x < t.x) ||
+        (p.x > r.x && p.x > t.x && q.x > r.x && q.x > t.x))
         return 1; /* boxes apart */
     d1 = rast__cross3(r, t, p);
     d2 = rast__cross3(r, t, q);
@@ -131,7 +163,7 @@ static int rast__pl_apart(const rast__pl *s, uint32_t j, uint32_t k)
 static int rast__pl_insert(rast__pl *s, uint32_t k)
 {
     rast_point l, r, ml, mr;
-    uint32_t lo = 0, hi = s->nst;
+    uint32_t lo = 0, hi = s->nst, i;
     rast__pl_ends(s, k, &l, &r);
     while (lo < hi) { /* the first edge above k */
         uint32_t mid = lo + (hi - lo) / 2;
@@ -152,6 +184,7 @@ static int rast__pl_insert(rast__pl *s, uint32_t k)
     memmove(s->st + lo + 1, s->st + lo, (size_t)(s->nst - lo) * sizeof(uint32_t));
     s->st[lo] = k;
     s->nst++;
+    for (i = lo; RAST__PL_FAST && i < s->nst; i++) s->pos[s->st[i]] = i;
     if (lo > 0 && !rast__pl_apart(s, s->st[lo - 1], k)) return 0;
     if (lo + 1 < s->nst && !rast__pl_apart(s, k, s->st[lo + 1])) return 0;
     return 1;
@@ -161,50 +194,53 @@ static int rast__pl_insert(rast__pl *s, uint32_t k)
 static int rast__pl_remove(rast__pl *s, uint32_t k)
 {
     uint32_t i = 0;
-    while (i < s->nst && s->st[i] != k) i++;
+    if (RAST__PL_FAST)
+        i = s->pos[k] < s->nst && s->st[s->pos[k]] == k ? s->pos[k] : s->nst;
+    else
+        while (i < s->nst && s->st[i] != k) i++;
     if ((s->budget -= s->nst + 1) > ((uint64_t)1 << 62) || i == s->nst) return 0;
     if (i > 0 && i + 1 < s->nst && !rast__pl_apart(s, s->st[i - 1], s->st[i + 1])) return 0;
     memmove(s->st + i, s->st + i + 1, (size_t)(s->nst - i - 1) * sizeof(uint32_t));
     s->nst--;
+    for (; RAST__PL_FAST && i < s->nst; i++) s->pos[s->st[i]] = i;
     return 1;
 }
 
 #if !defined(__OPTIMIZE_SIZE__) /* (size-optimised builds: every vertex by rast__pl_remove and rast__pl_insert) */
 #define RAST__PL_PASS 1
-/* Is an edge whose left end is l and right end r after edge m in the
- * sweep's order where it enters (rast__pl_insert's search: it goes after
- * every such m)? */
-static int rast__pl_after(const rast__pl *s, uint32_t m, rast_point l, rast_point r)
-{
-    rast_point ml, mr;
-    int64_t o;
-    rast__pl_ends(s, m, &ml, &mr);
-    o = rast__cross3(ml, mr, l);
-    if (o == 0 && ml.x == l.x && ml.y == l.y) o = rast__cross3(ml, mr, r);
-    return o > 0;
-}
-
 /* At a vertex where edge `in` ends and edge `out` starts (a chain: most
- * vertices of a curve's flattening), out takes in's place when the search
- * of rast__pl_insert would put it there (after the edge below, not after
- * the edge above: the order is sorted, so the search's answer is that
- * place), then meets its two neighbours' tests, the tests that the
- * neighbours it would have after in left and it entered: in's two
- * neighbours do not become neighbours (the sweep tests every pair that
- * does, as before; Shamos and Hoey test no more).  Else in leaves and out
- * enters.  0 if an edge meets one where it must not.  (A paragraph of
- * text: 10 M instructions of 43 M less than a search and two moves.) */
+ * vertices of a curve's flattening), out takes in's place, then meets the
+ * tests of its two neighbours (in's), which are the tests that
+ * rast__pl_remove and rast__pl_insert would make: in's two neighbours do
+ * not become neighbours.  That is out's place in the order: until the
+ * first point where two edges meet wrongly (if any), the array is the
+ * edges' order along the sweep line, every pair that has been neighbours
+ * tested; no edge but in and out has an end at the vertex (condition 1)
+ * or passes through it (it would meet in there, and the one of them next
+ * to in was tested); so the edges below in are below the vertex, those
+ * above above, and out, which starts there, lies between them.  The
+ * first wrong meeting is found at or before its point (Shamos and Hoey),
+ * the same as with the search.  0 if an edge meets one where it must
+ * not.  (A paragraph of text: the search and two moves cost 10 M
+ * instructions of 43 M more; checking the place by the search's test,
+ * 5.6 M of 61 M.) */
 static int rast__pl_pass(rast__pl *s, uint32_t in, uint32_t out)
 {
-    uint32_t i = 0;
-    rast_point l, r;
-    while (i < s->nst && s->st[i] != in) i++;
-    if ((s->budget -= i + 1) > ((uint64_t)1 << 62) || i == s->nst) return 0;
-    rast__pl_ends(s, out, &l, &r);
-    if ((i > 0 && !rast__pl_after(s, s->st[i - 1], l, r)) || (i + 1 < s->nst && rast__pl_after(s, s->st[i + 1], l, r)))
-        return rast__pl_remove(s, in) && rast__pl_insert(s, out);
+    const uint32_t i = s->pos[in];
+    if ((s->budget -= i + 1) > ((uint64_t)1 << 62) || i >= s->nst || s->st[i] != in) return 0;
+    const rast_point l = s->pt[out], r = s->pt[s->next[out]];
     s->st[i] = out;
-    return (i == 0 || rast__pl_apart(s, s->st[i - 1], out)) && (i + 1 == s->nst || rast__pl_apart(s, out, s->st[i + 1]));
+    s->pos[out] = i;
+    /* (most neighbours lie apart in y: that test here, the rest by the call) */
+    if (i > 0) {
+        const uint32_t m = s->st[i - 1];
+        if (!rast__pl_yapart(s->pt[m], s->pt[s->next[m]], l, r) && !rast__pl_apart(s, m, out)) return 0;
+    }
+    if (i + 1 < s->nst) {
+        const uint32_t m = s->st[i + 1];
+        if (!rast__pl_yapart(l, r, s->pt[m], s->pt[s->next[m]]) && !rast__pl_apart(s, out, m)) return 0;
+    }
+    return 1;
 }
 
 #else
@@ -372,7 +408,8 @@ static int rast__pl_star(const rast_point *pt, const uint32_t *first, const int3
  * into pt[] from n on, with their keys, next[] and prev[] (round the
  * ring); its box into box[0..4) (x0, y0, x1, y1).  Returns the new count;
  * n when the ring has fewer than 3 vertices, or a coordinate is out of
- * range. */
+ * range.  box NULL: the ring's box is known and in range (the parts'
+ * test: a third of this function's instructions fewer). */
 static uint32_t rast__pl_ring(const rast_point *p, uint32_t size, rast_point *pt, uint64_t *key, uint32_t *next,
                               uint32_t *prev, uint32_t n, int32_t *box)
 {
@@ -382,15 +419,19 @@ static uint32_t rast__pl_ring(const rast_point *p, uint32_t size, rast_point *pt
     for (i = 0; i < size; i++) {
         rast_point a = p[i], b = p[i + 1 < size ? i + 1 : 0];
         if (a.x == b.x && a.y == b.y) continue;
-        if (a.x < -lim || a.x > lim || a.y < -lim || a.y > lim) return f;
-        if (n == f) {
+        if (RAST__PL_FAST && !box) {
+            /* (box and range known) */
+        } else if (a.x < -lim || a.x > lim || a.y < -lim || a.y > lim) {
+            return f;
+        } else if (n == f) {
             box[0] = box[2] = a.x;
             box[1] = box[3] = a.y;
+        } else {
+            if (a.x < box[0]) box[0] = a.x;
+            if (a.y < box[1]) box[1] = a.y;
+            if (a.x > box[2]) box[2] = a.x;
+            if (a.y > box[3]) box[3] = a.y;
         }
-        if (a.x < box[0]) box[0] = a.x;
-        if (a.y < box[1]) box[1] = a.y;
-        if (a.x > box[2]) box[2] = a.x;
-        if (a.y > box[3]) box[3] = a.y;
         pt[n] = a;
         key[n] = (uint64_t)(a.x + lim + 1) << 32 | (uint64_t)(a.y + lim + 1);
         next[n] = n + 1;
@@ -410,13 +451,16 @@ static int rast__pl_apart_all(rast__pl *s, uint32_t *ord, uint32_t *tmp, uint32_
 {
     uint32_t i;
     rast__pl_sort(s->key, ord, tmp, run, n);
-    for (i = 0; i + 1 < n; i++) /* condition 1 */
+    for (i = 0; !RAST__PL_FAST && i + 1 < n; i++) /* condition 1 (else in the sweep's loop) */
         if (s->key[ord[i]] == s->key[ord[i + 1]]) return 0;
-    s->st = tmp; /* the sweep's array takes tmp's room once the vertices are sorted */
+    s->st = tmp; /* the sweep's array takes tmp's room once the vertices are sorted, */
+    s->pos = run; /* its places run's (each edge's, set as it enters) */
     s->nst = 0;
     for (i = 0; i < n; i++) { /* condition 2: at each vertex, its edges that end, then those that start */
         const uint32_t v = ord[i], in = s->prev[v];
-        const int in_ends = s->key[in] < s->key[v], out_ends = s->key[s->next[v]] < s->key[v];
+        const uint64_t kv = s->key[v];
+        const int in_ends = s->key[in] < kv, out_ends = s->key[s->next[v]] < kv;
+        if (RAST__PL_FAST && i > 0 && s->key[ord[i - 1]] == kv) return 0; /* condition 1 */
         if (RAST__PL_PASS && in_ends != out_ends) {
             if (!rast__pl_pass(s, in_ends ? in : v, in_ends ? v : in)) return 0;
             continue;
@@ -514,11 +558,13 @@ int rast__cov_plain(const rast_polygon *poly, uint32_t npoints, rast__arena aren
  * is plain, so is every pixel: the polygon goes to the accumulation (text
  * set in lines whose glyphs' boxes meet nowhere: a paragraph); else the
  * edges of the plain parts are marked (RAST__HZ_PLAIN), and "area" takes
- * a row by the accumulation when all its edges are (coverage_area.c).
+ * the rows all of whose edges are by the accumulation, in bands
+ * (rast__cov_area_marked, coverage_area.c).
  * Parts of a few rings each sort and sweep a few vertices at a time: the
  * test's cost is about linear in the vertices (a paragraph of glyphs,
- * 75,051 vertices: its 477 parts 31 M instructions, about what "area"'s
- * rows then save; the whole polygon's sort and sweep took 62 M).  The
+ * 75,051 vertices: its 477 parts 15.5 M instructions, 31 M before
+ * rast__pl_pass lost its search; the whole polygon's sort and sweep took
+ * 62 M).  The
  * rings' boxes come first, from their points; a part's vertices are read
  * only when it is tested. */
 #define RAST__PL_PAIRS 4 /* box pairs tried per vertex (and 4,096): more, no parts */
@@ -537,6 +583,12 @@ static uint32_t rast__pl_root(uint32_t *par, uint32_t r)
 
 int rast__cov_plain_parts(const rast_polygon *poly, uint32_t npoints, rast__arena arena, int32_t sb,
                           rast__cedge *e, uint32_t nedges)
+{
+    return rast__cov_parts_marked(poly, npoints, arena, sb, e, nedges) > 0;
+}
+
+int rast__cov_parts_marked(const rast_polygon *poly, uint32_t npoints, rast__arena arena, int32_t sb,
+                           rast__cedge *e, uint32_t nedges)
 {
     const int64_t lim = RAST_COORD_MAX, P = (int64_t)1 << sb;
     const uint32_t nr = poly->nrings;
@@ -632,9 +684,8 @@ int rast__cov_plain_parts(const rast_polygon *poly, uint32_t npoints, rast__aren
         ok = ok && b - a <= RAST__PL_PART_RINGS;
         for (i = a; i < b && ok; i++) {
             const uint32_t q = (uint32_t)rid[i];
-            int32_t bx[4];
             const uint32_t f = n;
-            n = rast__pl_ring(poly->points + first[q], poly->ring_sizes[q], pt, key, next, prev, n, bx);
+            n = rast__pl_ring(poly->points + first[q], poly->ring_sizes[q], pt, key, next, prev, n, NULL);
             first[q] = f; /* (the ring's points read: now its vertices') */
             end[q] = n;
             ok = n > f; /* (3 or more) */
@@ -657,9 +708,9 @@ int rast__cov_plain_parts(const rast_polygon *poly, uint32_t npoints, rast__aren
         eb += ne[r];
     }
     if (eb != nedges) return 0; /* (rast__cov_edges_polygon's edges, ring by ring) */
-    for (r = 0, eb = 0; r < nr; eb += ne[r], r++)
+    for (r = 0, eb = 0, b = 0; r < nr; eb += ne[r], r++)
         if (nv[r])
-            for (a = eb; a < eb + ne[r]; a++) e[a].hz |= RAST__HZ_PLAIN;
-    return 0;
+            for (a = eb, b = 1; a < eb + ne[r]; a++) e[a].hz |= RAST__HZ_PLAIN;
+    return b ? -1 : 0;
 }
 #endif

@@ -216,14 +216,16 @@ static int rast__cov_convex(const rast_polygon *poly)
 #define RAST__COV_CONVEX(poly) rast__cov_convex(poly)
 /* Where the whole polygon's test does not pay (short edges: text, a row
  * or two each), the test part by part (coverage_plain.c), whose cost is
- * about linear in the vertices: 1 when every part is plain; else the
- * plain parts' edges marked for rast__cov_area's rows (a polygon of
- * several rings). */
+ * about linear in the vertices: 1 when every part is plain; -1 when the
+ * plain parts' edges are marked, for rast__cov_area_marked's bands (a
+ * polygon of several rings); 0 none. */
 #define RAST__COV_PARTS(poly, npoints, arena, s, e, n) \
-    ((poly)->nrings >= 2 && rast__cov_plain_parts(poly, npoints, arena, s, e, n))
+    ((poly)->nrings >= 2 ? rast__cov_parts_marked(poly, npoints, arena, s, e, n) : 0)
+#define RAST__COV_AREA_MARKED(e, n, s, rule, o, arena) rast__cov_area_marked(e, n, s, rule, o, arena)
 #else
 #define RAST__COV_CONVEX(poly) 0 /* (size-optimised: the plain test's way only) */
 #define RAST__COV_PARTS(poly, npoints, arena, s, e, n) 0
+#define RAST__COV_AREA_MARKED(e, n, s, rule, o, arena) RAST_OK
 #endif
 
 static rast_status rast__cov_run(const rast_polygon *poly, const rast_point *tris, uint32_t ntris,
@@ -240,6 +242,7 @@ static rast_status rast__cov_run(const rast_polygon *poly, const rast_point *tri
     if (!kb) {
         rast__cedge *e = (rast__cedge *)rast__take(&arena, (size_t)npoints * sizeof(rast__cedge));
         uint32_t n;
+        int parts = 0; /* rast__cov_plain_parts' answer, when asked */
         if (npoints && !e) return RAST_E_SCRATCH;
         n = tris ? rast__cov_edges_triangles(tris, ntris, e) : rast__cov_edges_polygon(poly, e);
         /* a triangle batch's shared edges cancel in rast__cov_area's sweep
@@ -250,7 +253,7 @@ static rast_status rast__cov_run(const rast_polygon *poly, const rast_point *tri
             (RAST__IS_ACC(opts->method) ||
              RAST__COV_CONVEX(poly) ||
              (rast__cov_plain_pays(e, n, s, npoints) ? rast__cov_plain(poly, npoints, arena)
-                                                     : RAST__COV_PARTS(poly, npoints, arena, s, e, n))))
+                                                     : (parts = RAST__COV_PARTS(poly, npoints, arena, s, e, n)) > 0)))
             /* (16 rings or more of 8 vertices or fewer on the mean: a
              * mesh's, whose shared sides cancel first) */
             return RAST__IS_ACC(opts->method) && poly->nrings >= 16 &&
@@ -260,6 +263,8 @@ static rast_status rast__cov_run(const rast_polygon *poly, const rast_point *tri
         /* a triangle batch's accumulation: its shared sides cancel first */
         if (tris && RAST__IS_ACC(opts->method) && rast__cov_acc_may(o, s))
             return rast__cov_acc_shared(e, n, s, rule, o, &arena);
+        /* (some parts plain, their edges marked: "area" only) */
+        if (parts < 0) return RAST__COV_AREA_MARKED(e, n, s, rule, o, &arena);
         return rast__cov_area(e, n, s, rule, RAST__IS_ACC(opts->method), o, &arena);
     } else {
         int32_t scale = s < kb ? kb - s : 0;

@@ -2964,9 +2964,12 @@ static int rast__cov_bands(rast__cedge *e, uint32_t n, int32_t s, rast_fill_rule
     int32_t *ix = (int32_t *)rast__take(&room, (size_t)n * sizeof(int32_t));
     int32_t *tmp = (int32_t *)rast__take(&room, (size_t)n * sizeof(int32_t));
     int32_t *key = (int32_t *)rast__take(&room, (size_t)n * sizeof(int32_t));
-    uint32_t i, k, nb = 0, m, t, carry = 0;
+    uint32_t i, k, nb, m, t, carry = 0, pass;
     int64_t plainrows = 0;
     if (!ix || !tmp || !key || n == 0) return 0;
+    for (pass = 0;; pass++) {
+    uint32_t unmarked = 0;
+    nb = 0;
     for (i = 0; i < n; i++) /* the unmarked edges' rows in the clip, by their first */
         if (!(e[i].hz & RAST__HZ_PLAIN)) {
             int64_t r0, r1;
@@ -2992,6 +2995,28 @@ static int rast__cov_bands(rast__cedge *e, uint32_t n, int32_t s, rast_fill_rule
         y[m++] = (int32_t)r1;
     }
     y[m] = (int32_t)y1;
+    /* "accumulate"'s band call takes its edges' records for its own
+     * compact ones (coverage_acc.c), so no edge may go on from a plain
+     * band to a later one: a marked edge that leaves a plain band is
+     * unmarked (its rows then go the "area" way, as every row may) and
+     * the bands are made again, until none does (a few passes: else
+     * not banded) */
+    for (i = 0, t = 0; i < n; i++)
+        if (e[i].hz & RAST__HZ_PLAIN) {
+            int64_t r0, r1;
+            uint32_t t1;
+            rast__band_rows(&e[i], s, &r0, &r1);
+            if (r1 < y0 || r0 >= y1) continue;
+            t = rast__band_of(y, m, r0 < y0 ? y0 : r0, t);
+            t1 = rast__band_of(y, m, r1 >= y1 ? y1 - 1 : r1, t);
+            if (t1 > t + (t & 1)) { /* (from a bad band to the plain one after it: carried by "area", kept) */
+                e[i].hz &= ~(int32_t)RAST__HZ_PLAIN;
+                unmarked++;
+            }
+        }
+    if (!unmarked) break;
+    if (pass == 3) return 0;
+    }
     for (t = 0; t < m; t += 2) plainrows += (int64_t)y[t + 1] - y[t];
     /* (plain rows a quarter of the clip's or more: else as one band) */
     if (plainrows * 4 < y1 - y0) return 0;
@@ -3038,6 +3063,10 @@ static int rast__cov_bands(rast__cedge *e, uint32_t n, int32_t s, rast_fill_rule
             if (*st != RAST_OK) return 1;
         }
         if (t + 1 == m) break;
+        carry = 0;
+        /* (none leaves a plain band that ran, above; and its records are
+         * "accumulate"'s now) */
+        if (!(t & 1) && y[t] < y[t + 1]) continue;
         for (i = hi; i-- > lo;) { /* those that reach the next band: to the end */
             int64_t r0, r1;
             rast__band_rows(&e[i], s, &r0, &r1);

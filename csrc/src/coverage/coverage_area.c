@@ -133,8 +133,8 @@ static uint64_t rast__cov_cross(const rast__cedge *a, const rast__cedge *b, int6
      * [-2^20, 2^20) (coordinates within 4,096 px at S = 8, as on most
      * canvases; v + 2^20 < 2^21 for each, so for the OR of them), each
      * product is at most 2^60 in magnitude, |N| <= 3 2^60 < 2^62 and
-     * D <= 2^41: N in 64 bits, and the time by 64-bit divisions
-     * (rast__shl_div64); the same value as the 128-bit way below, which
+     * D <= 2^41: N in 64 bits, and the time by one division
+     * (rast__shl_div_ceil); the same value as the 128-bit way below, which
      * the other pairs take.  Size-optimised builds (firmware, -Os) take
      * the 128-bit way for every pair: less .text on Cortex-M0, where a
      * 64-bit division is a library call too. */
@@ -144,12 +144,9 @@ static uint64_t rast__cov_cross(const rast__cedge *a, const rast__cedge *b, int6
         if ((rast__cov_off(ex) | rast__cov_off(ea) | rast__cov_off(eb) | rast__cov_off(a->dx) |
              rast__cov_off(a->dy) | rast__cov_off(b->dx) | rast__cov_off(b->dy)) < ((uint64_t)1 << 21)) {
             const int64_t n = ex * a->dy * b->dy + ea * a->dx * b->dy - eb * b->dx * a->dy;
-            uint64_t rem;
             /* inside the row: 0 <= n < D P, i.e. floor(n / P) < D (P = 2^S) */
             if (n < 0 || ((uint64_t)n >> (G - c->h)) >= (uint64_t)D) return T;
-            tc = ((uint64_t)(n / D) << c->h) +
-                 rast__shl_div64((uint64_t)(n % D), (uint64_t)D, c->h, &rem);
-            tc += rem > 0;
+            tc = rast__shl_div_ceil((uint64_t)n, (uint64_t)D, c->h); /* < T: n 2^H < D 2^G */
             if (tc <= t) tc = t + 1;
             return tc > T ? T : tc;
         }

@@ -2423,12 +2423,15 @@ RAST__APART int rast__grp_few(rast__cells *c, rast__cedge *e, const int32_t *g, 
     for (i = 0; i < nl; i++) {
         const int32_t id = few[i];
         rast__cedge *ed = &e[id];
+        /* its line across the strip, quick units: [elo, ehi] */
+        const int64_t elo = ed->qa < ed->qb ? ed->qa : ed->qb, ehi = (ed->qa < ed->qb ? ed->qb : ed->qa) + 1;
         uint64_t t0, t1;
         int32_t wl = w, nk = 0;
         rast__cov_span(ed, Yj, c, &t0, &t1);
         for (k = 0; k < m; k++) {
             const int32_t fid = g[k];
             const rast__cedge *f = &e[fid];
+            const int64_t flo = f->qa < f->qb ? f->qa : f->qb, fhi = (f->qa < f->qb ? f->qb : f->qa) + 1;
             uint64_t f0, f1, ts, te, tc, up;
             int before;
             if (fid == id) continue;
@@ -2436,13 +2439,16 @@ RAST__APART int rast__grp_few(rast__cells *c, rast__cedge *e, const int32_t *g, 
             if (f1 <= t0 || f0 >= t1) continue; /* never beside it */
             ts = f0 > t0 ? f0 : t0;
             te = f1 < t1 ? f1 : t1;
-            before = rast__few_before(ed, f, Yj + (int64_t)(ts >> c->h), fid < id);
+            /* lines apart across the strip (most of a block's, each a
+             * floor with its remainder in [0, 1)): that side all the way,
+             * no crossing; else the exact test */
+            before = fhi < elo ? 1 : flo > ehi ? 0 : rast__few_before(ed, f, Yj + (int64_t)(ts >> c->h), fid < id);
             up = f->dir > 0; /* key: the moment, and whether w goes up there */
             if (before && ts > t0)
                 key[nk++] = ts << 1 | up;
             else if (before)
                 wl += f->dir;
-            tc = before ? rast__cov_cross(f, ed, Yj, 0, c) : rast__cov_cross(ed, f, Yj, 0, c);
+            tc = fhi < elo || flo > ehi ? T : before ? rast__cov_cross(f, ed, Yj, 0, c) : rast__cov_cross(ed, f, Yj, 0, c);
             if (tc < te) { /* (after ts: they are apart just below it) */
                 before = !before;
                 key[nk++] = tc << 1 | (before ? up : !up);

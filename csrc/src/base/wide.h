@@ -199,6 +199,23 @@ static inline uint64_t rast__shl_div64(uint64_t r, uint64_t d, int32_t n, uint64
     return q;
 }
 
+/* ceil(n 2^h / d) for 0 < d <= 2^41, 0 <= h <= 60 and n < d 2^(64 - h)
+ * (the quotient fits 64 bits): one division of the 128-bit n 2^h + d - 1
+ * where the compiler has a 128-bit type (a single machine division of a
+ * double word where the quotient fits one, as here), else n / d and
+ * rast__shl_div64 of the remainder (up to four divisions: on "span", a
+ * third of a crossing time's cycles were its divisions). */
+static inline uint64_t rast__shl_div_ceil(uint64_t n, uint64_t d, int32_t h)
+{
+#if defined(__SIZEOF_INT128__) && !defined(RAST_NO_INT128)
+    __extension__ typedef unsigned __int128 rast__u128;
+    return (uint64_t)((((rast__u128)n << h) + (d - 1)) / d);
+#else
+    uint64_t rem, q = ((n / d) << h) + rast__shl_div64(n % d, d, h, &rem);
+    return q + (rem > 0);
+#endif
+}
+
 /* The high 64 bits of the 128-bit product a * b: one instruction where
  * the compiler has a 128-bit type (GCC and clang on 64-bit targets; the
  * __extension__ keeps -pedantic quiet), else four 32-bit products. */

@@ -120,8 +120,15 @@ static inline uint64_t rast__cov_off(int64_t v)
 }
 
 /* The first ordinate after t (U; up to T) where a, left of b just below
- * t, crosses it; T when they do not cross inside the row. */
-static uint64_t rast__cov_cross(const rast__cedge *a, const rast__cedge *b, int64_t Yj,
+ * t, crosses it; T when they do not cross inside the row.  Inlined in its
+ * two callers where speed counts (a call of it cost tri10k 0.6 M
+ * instructions once rast__grp_few called it too). */
+#if RAST__SHORTCUTS
+#define RAST__CROSS RAST__HOT
+#else
+#define RAST__CROSS static
+#endif
+RAST__CROSS uint64_t rast__cov_cross(const rast__cedge *a, const rast__cedge *b, int64_t Yj,
                                 uint64_t t, const rast__cells *c)
 {
     int64_t D = (int64_t)a->dx * b->dy - (int64_t)b->dx * a->dy, q0, r0, qq, rr;
@@ -133,8 +140,8 @@ static uint64_t rast__cov_cross(const rast__cedge *a, const rast__cedge *b, int6
      * [-2^20, 2^20) (coordinates within 4,096 px at S = 8, as on most
      * canvases; v + 2^20 < 2^21 for each, so for the OR of them), each
      * product is at most 2^60 in magnitude, |N| <= 3 2^60 < 2^62 and
-     * D <= 2^41: N in 64 bits, and the time by 64-bit divisions
-     * (rast__shl_div64); the same value as the 128-bit way below, which
+     * D <= 2^41: N in 64 bits, and the time by one division
+     * (rast__shl_div_ceil); the same value as the 128-bit way below, which
      * the other pairs take.  Size-optimised builds (firmware, -Os) take
      * the 128-bit way for every pair: less .text on Cortex-M0, where a
      * 64-bit division is a library call too. */
@@ -144,12 +151,9 @@ static uint64_t rast__cov_cross(const rast__cedge *a, const rast__cedge *b, int6
         if ((rast__cov_off(ex) | rast__cov_off(ea) | rast__cov_off(eb) | rast__cov_off(a->dx) |
              rast__cov_off(a->dy) | rast__cov_off(b->dx) | rast__cov_off(b->dy)) < ((uint64_t)1 << 21)) {
             const int64_t n = ex * a->dy * b->dy + ea * a->dx * b->dy - eb * b->dx * a->dy;
-            uint64_t rem;
             /* inside the row: 0 <= n < D P, i.e. floor(n / P) < D (P = 2^S) */
             if (n < 0 || ((uint64_t)n >> (G - c->h)) >= (uint64_t)D) return T;
-            tc = ((uint64_t)(n / D) << c->h) +
-                 rast__shl_div64((uint64_t)(n % D), (uint64_t)D, c->h, &rem);
-            tc += rem > 0;
+            tc = rast__shl_div_ceil((uint64_t)n, (uint64_t)D, c->h); /* < T: n 2^H < D 2^G */
             if (tc <= t) tc = t + 1;
             return tc > T ? T : tc;
         }
@@ -337,6 +341,7 @@ typedef struct rast__sweep {
     uint64_t *ct;
     int32_t m;
     int32_t swept; /* rast__cov_row_groups swept a group in the last row */
+    int32_t room;  /* the arrays' length (the polygon's edges) */
 } rast__sweep;
 
 #define NONE (T + 1)
@@ -2249,10 +2254,15 @@ static void rast__grp_lines(rast__cedge *e, const int32_t *g, int32_t m, int32_t
  * block's edges by lo and by hi (radix, the sweep's room, which is free
  * here), then two walks; the edges' qlo and qhi (not read again in the
  * row: the groups after this one read their own) hold each one's sums of
- * the first kind.  Size-optimised builds (firmware, -Os) leave it out:
- * the sweep adds the same nothing. */
+ * the first kind.  Returns 0 when no edge may add anything; else how many
+ * may (the test failed for them), their ids in few[] (more than
+ * RAST__FEW_MAX: RAST__FEW_MAX + 1, the scan stopped), or -1 when the test
+ * is not made (a small block, w = 0, even-odd).  Size-optimised builds
+ * (firmware, -Os) leave it out: the sweep adds the same nothing. */
 #if !defined(__OPTIMIZE_SIZE__)
 #define RAST__DEAD_MIN 16 /* smaller blocks are swept: as cheap */
+#define RAST__FEW_MAX 32  /* live edges of a block added alone (rast__grp_few) at most */
+#define RAST__FEW_PER 8   /* ... and when the block has this many edges per live one */
 #define RAST__DEAD_SH (QF - 8) /* quick units to 1/256 pixel */
 
 /* floor(v / 2^RAST__DEAD_SH), |v| < 2^62 */
@@ -2262,16 +2272,17 @@ static inline int64_t rast__dead_floor(int64_t v)
            ((int64_t)1 << (62 - RAST__DEAD_SH));
 }
 
-RAST__APART int rast__grp_dead(const rast__cells *c, rast__cedge *e, const int32_t *g, int32_t m,
-                            rast__sweep *sw, int32_t j, rast_fill_rule rule, int32_t w)
+RAST__APART int32_t rast__grp_dead(const rast__cells *c, rast__cedge *e, const int32_t *g, int32_t m,
+                                   rast__sweep *sw, int32_t j, rast_fill_rule rule, int32_t w,
+                                   int32_t *few)
 {
     const int64_t Yj = (int64_t)j * c->p;
     int32_t *const klo = sw->wb, *const khi = sw->hidx, *const bl = sw->live, *const bh = sw->h;
     int64_t mn = INT64_MAX, mx = INT64_MIN;
-    int32_t k, q, pa = 0, na = 0, ps = 0, ns = 0;
+    int32_t k, q, pa = 0, na = 0, ps = 0, ns = 0, nl = 0;
     /* (w = 0: the edge of least lo has no edge of the first kind, its
      * bound holds w) */
-    if (rule != RAST_RULE_NONZERO || m < RAST__DEAD_MIN || w == 0) return 0;
+    if (rule != RAST_RULE_NONZERO || m < RAST__DEAD_MIN || w == 0) return -1;
     for (k = 0; k < m; k++) {
         rast__cedge *ed = &e[g[k]];
         const int64_t a = ed->qa < ed->qb ? ed->qa : ed->qb, b = ed->qa < ed->qb ? ed->qb : ed->qa;
@@ -2284,7 +2295,7 @@ RAST__APART int rast__grp_dead(const rast__cells *c, rast__cedge *e, const int32
         else
             na += ed->dir;
     }
-    if (mx - mn >= ((int64_t)1 << 31)) return 0;
+    if (mx - mn >= ((int64_t)1 << 31)) return -1;
     for (k = 0; k < m; k++) {
         const rast__cedge *ed = &e[g[k]];
         klo[g[k]] = (int32_t)(ed->qlo - mn);
@@ -2324,7 +2335,141 @@ RAST__APART int rast__grp_dead(const rast__cells *c, rast__cedge *e, const int32
         /* w + the first kind's sum + the others' negative (positive) ones */
         lo = w + (int32_t)ed->qlo + na - ns - dn;
         hi = w + (int32_t)ed->qhi + pa - ps - dp;
-        if (!((lo > 0 || hi < 0) && (lo + d > 0 || hi + d < 0))) return 0;
+        if (!((lo > 0 || hi < 0) && (lo + d > 0 || hi + d < 0))) { /* it may add something */
+            if (nl == RAST__FEW_MAX) return nl + 1;
+            few[nl++] = bh[k];
+        }
+    }
+    return nl;
+}
+
+/* Is f before e (see rast__cov_before) just below ordinate Y (fixed
+ * units), both reaching below it?  By the sign of their lines' gap there,
+ * times e->dy f->dy (cov_cross's N with Y for Yj: 64-bit where its seven
+ * factors are small, as there); level there, by their slopes; the same
+ * line: tie.  Exact, no division. */
+static int rast__few_before(const rast__cedge *e, const rast__cedge *f, int64_t Y, int tie)
+{
+    const int64_t ex = (int64_t)f->xt - e->xt, ea = (int64_t)e->yt - Y, eb = (int64_t)f->yt - Y;
+    const int64_t D = (int64_t)e->dx * f->dy - (int64_t)f->dx * e->dy;
+    int sg;
+    if ((rast__cov_off(ex) | rast__cov_off(ea) | rast__cov_off(eb) | rast__cov_off(e->dx) |
+         rast__cov_off(e->dy) | rast__cov_off(f->dx) | rast__cov_off(f->dy)) < ((uint64_t)1 << 21)) {
+        const int64_t n = ex * e->dy * f->dy + ea * e->dx * f->dy - eb * f->dx * e->dy;
+        sg = n < 0 ? -1 : n > 0;
+    } else {
+        rast__i128 N = rast__i128_mul(ex * e->dy, f->dy);
+        N = rast__i128_add(N, rast__i128_mul(ea * e->dx, f->dy));
+        N = rast__i128_sub(N, rast__i128_mul(eb * f->dx, e->dy));
+        sg = rast__i128_neg_p(N) ? -1 : (N.hi | N.lo) != 0;
+    }
+    if (sg) return sg < 0;
+    return D ? D > 0 : tie;
+}
+
+/* keys[0..n) ascending (a heap sort: no room needed). */
+static void rast__few_sort(uint64_t *a, int32_t n)
+{
+    int32_t k = n / 2, i, l;
+    uint64_t v;
+    for (;;) {
+        if (k > 0) {
+            v = a[--k];
+        } else {
+            if (--n <= 0) return;
+            v = a[n];
+            a[n] = a[0];
+        }
+        for (i = k; (l = 2 * i + 1) < n; i = l) {
+            if (l + 1 < n && a[l + 1] > a[l]) l++;
+            if (a[l] <= v) break;
+            a[i] = a[l];
+        }
+        a[i] = v;
+    }
+}
+
+/* The block g[0..m) of rast__grp_blocks (the winding number w on its left
+ * all the way down the strip, every edge's line across it) where only the
+ * nl edges few[] may add anything (rast__grp_dead: the others' sign is 0
+ * all the way down, whatever the order).  What the sweep gives one of
+ * them depends only on the winding number on its left, w plus the
+ * directions of the edges before it, and that changes only where another
+ * edge starts or ends before it, or crosses it: each live edge alone
+ * takes those moments from a pass over the block (an exact side test and
+ * rast__cov_cross, the sweep's crossing time, per edge; no abscissa),
+ * sorted, and its sign changes there (rast__cov_resign), as in the sweep.
+ * Its pieces are the sweep's (moments that fall together, which the
+ * sweep takes one after another or at a re-sort, give pieces that differ
+ * by less than the grid: the bound holds).  The crossings of the dead
+ * edges among themselves, which the sweep must take one by one to keep
+ * its order (on 4,000 canvas-spanning triangles, blocks of thousands of
+ * edges and one live edge: half of all the crossings), are not looked at.
+ * Returns 0, nothing done, when the keys may not fit the room. */
+RAST__APART int rast__grp_few(rast__cells *c, rast__cedge *e, const int32_t *g, int32_t m,
+                              rast__sweep *sw, int32_t j, rast_fill_rule rule, int32_t w,
+                              const int32_t *few, int32_t nl)
+{
+    const int64_t Yj = (int64_t)j * c->p;
+    uint64_t *const key = sw->ct;
+    int32_t i, k, ninner = 0;
+    for (k = 0; k < m; k++) { /* each edge: a key for a start, a crossing, an end; at most two */
+        const rast__cedge *f = &e[g[k]];
+        if (f->dir != 1 && f->dir != -1) return 0;
+        ninner += (int64_t)f->yt > Yj || (int64_t)f->yt + f->dy < Yj + c->p;
+    }
+    if ((int64_t)m + ninner > sw->room) return 0;
+    rast__area_steps(e, few, nl);
+    for (i = 0; i < nl; i++) {
+        const int32_t id = few[i];
+        rast__cedge *ed = &e[id];
+        /* its line across the strip, quick units: [elo, ehi] */
+        const int64_t elo = ed->qa < ed->qb ? ed->qa : ed->qb, ehi = (ed->qa < ed->qb ? ed->qb : ed->qa) + 1;
+        uint64_t t0, t1;
+        int32_t wl = w, nk = 0;
+        rast__cov_span(ed, Yj, c, &t0, &t1);
+        for (k = 0; k < m; k++) {
+            const int32_t fid = g[k];
+            const rast__cedge *f = &e[fid];
+            const int64_t flo = f->qa < f->qb ? f->qa : f->qb, fhi = (f->qa < f->qb ? f->qb : f->qa) + 1;
+            uint64_t f0, f1, ts, te, tc, up;
+            int before;
+            if (fid == id) continue;
+            rast__cov_span(f, Yj, c, &f0, &f1);
+            if (f1 <= t0 || f0 >= t1) continue; /* never beside it */
+            ts = f0 > t0 ? f0 : t0;
+            te = f1 < t1 ? f1 : t1;
+            /* lines apart across the strip (most of a block's, each a
+             * floor with its remainder in [0, 1)): that side all the way,
+             * no crossing; else the exact test */
+            before = fhi < elo ? 1 : flo > ehi ? 0 : rast__few_before(ed, f, Yj + (int64_t)(ts >> c->h), fid < id);
+            up = f->dir > 0; /* key: the moment, and whether w goes up there */
+            if (before && ts > t0)
+                key[nk++] = ts << 1 | up;
+            else if (before)
+                wl += f->dir;
+            tc = fhi < elo || flo > ehi ? T : before ? rast__cov_cross(f, ed, Yj, 0, c) : rast__cov_cross(ed, f, Yj, 0, c);
+            if (tc < te) { /* (after ts: they are apart just below it) */
+                before = !before;
+                key[nk++] = tc << 1 | (before ? up : !up);
+            }
+            if (before && te < t1) key[nk++] = te << 1 | !up; /* f ends */
+        }
+        rast__few_sort(key, nk);
+        if (ed->rowx != j || ed->tx != t0) {
+            rast__cov_x_at(ed, Yj, t0, c->h, &ed->x, &ed->r);
+            ed->rowx = j;
+            ed->tx = t0;
+        }
+        ed->sg = rast__cov_sign(rule, wl, ed->dir);
+        for (k = 0; k < nk;) { /* its moments: the sign after each */
+            const uint64_t tk = key[k] >> 1;
+            for (; k < nk && key[k] >> 1 == tk; k++) wl += (key[k] & 1) ? 1 : -1;
+            rast__cov_resign(c, ed, Yj, j, tk, rast__cov_sign(rule, wl, ed->dir));
+        }
+        rast__cov_x_end(ed, Yj, ed->tx, t1, c->h);
+        if (ed->sg) rast__cells_piece(c, ed, Yj, ed->x, ed->tx, ed->xn, t1, ed->sg);
+        rast__cov_x_keep(ed, j, t1);
     }
     return 1;
 }
@@ -2407,12 +2552,15 @@ static void rast__grp_blocks(rast__cells *c, rast__cedge *e, int32_t *g, int32_t
         } else {
             int32_t z, w1 = w;
             for (z = b0; z <= k; z++) w1 += rast__grp_dir_top(&e[g[z]], Yj);
-            if (!rast__grp_none(e, g + b0, k + 1 - b0, rule, w)
+            if (!rast__grp_none(e, g + b0, k + 1 - b0, rule, w)) {
 #if !defined(__OPTIMIZE_SIZE__)
-                && !rast__grp_dead(c, e, g + b0, k + 1 - b0, sw, j, rule, w)
+                int32_t few[RAST__FEW_MAX];
+                const int32_t mb = k + 1 - b0, nl = rast__grp_dead(c, e, g + b0, mb, sw, j, rule, w, few);
+                if (nl != 0 && !(nl > 0 && nl <= RAST__FEW_MAX && nl * RAST__FEW_PER <= mb &&
+                                 rast__grp_few(c, e, g + b0, mb, sw, j, rule, w, few, nl)))
 #endif
-            )
-                rast__area_sweep(c, e, g + b0, k + 1 - b0, sw, j, rule, w);
+                    rast__area_sweep(c, e, g + b0, k + 1 - b0, sw, j, rule, w);
+            }
             w = w1;
         }
         b0 = k + 1;
@@ -2802,6 +2950,9 @@ rast_status rast__cov_area(rast__cedge *e, uint32_t n, int32_t s, rast_fill_rule
     sw.hidx = (int32_t *)rast__take(arena, (size_t)n * sizeof(int32_t));
     sw.ct = (uint64_t *)rast__take(arena, (size_t)n * sizeof(uint64_t));
     sw.swept = 0;
+#if RAST__SHORTCUTS
+    sw.room = (int32_t)n; /* (rast__grp_few's only) */
+#endif
     c.cover = (rast__i128 *)rast__take(arena, (size_t)width * sizeof(rast__i128));
     c.area = (rast__i128 *)rast__take(arena, (size_t)width * sizeof(rast__i128));
     c.bits = (uint64_t *)rast__take(arena, ((size_t)width + 63) / 64 * sizeof(uint64_t));

@@ -21,7 +21,8 @@
  * opts: the method, the rule (its subpixel_bits is replaced by each
  * window's S).  Writes the nonzero cells of window after window, each
  * window's in row-major order, cell = corner + row * raster_width +
- * column (capacity: at most that many).  Returns the number of cells
+ * column, mod 2^64 (capacity: at most that many).  S above 32 is
+ * RAST_E_SUBPIXEL, whatever its low 32 bits.  Returns the number of cells
  * written, or a negative status with failed[0] the window's index and
  * failed[1] rastpy_polygon_coverage64's code k + 1 when its point k was
  * bad (then RAST_E_ARG), else 0.  One window buffer (malloc), grown to
@@ -67,7 +68,8 @@ long rastpy_window_fractions64(uint32_t nwin, const int64_t *win, const double *
             if (!buf) return RASTPY_E_NOMEM;
             have = cells;
         }
-        o.subpixel_bits = (int)v[3];
+        /* S past 32 is RAST_E_SUBPIXEL; (int) alone would take 2^32 + 5 as 5 */
+        o.subpixel_bits = v[3] > RAST_MAX_SUBPIXEL_BITS64 ? RAST_MAX_SUBPIXEL_BITS64 + 1 : (int)v[3];
         st = rastpy_polygon_coverage64(buf, (int32_t)h, (int32_t)w, 2, xy + 2 * (size_t)v[4], (uint32_t)npts,
                                        ring_sizes + v[5], (uint32_t)v[6], &o);
         if (st != 0) {
@@ -80,7 +82,8 @@ long rastpy_window_fractions64(uint32_t nwin, const int64_t *win, const double *
         }
         rastpy_fix62_to_double(buf, cells);
         for (r = 0, i = 0; r < h; r++) {
-            int64_t row = v[7] + r * raster_width;
+            /* mod 2^64 (two's complement): any corner and raster_width are defined */
+            uint64_t row = (uint64_t)v[7] + (uint64_t)r * (uint64_t)raster_width;
             for (c = 0; c < w; c++, i++) {
                 if (buf[i] != 0.0) {
                     if (written == capacity) {
@@ -88,7 +91,7 @@ long rastpy_window_fractions64(uint32_t nwin, const int64_t *win, const double *
                         return RAST_E_ARG;
                     }
                     out_feature[written] = v[0];
-                    out_cell[written] = row + c;
+                    out_cell[written] = (int64_t)(row + (uint64_t)c);
                     out_fraction[written] = buf[i];
                     written++;
                 }

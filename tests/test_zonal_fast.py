@@ -123,5 +123,9 @@ def test_c_bad_input_and_capacity():
         assert call([[5, 2, 3, 32, 0, 0, 1, 21], bad], 8) == lib.RAST_E_ARG, bad
         assert failed[0] == 1
         assert out_f[:6].tolist() == [5] * 6 and (out_f[6:] == -7).all()  # the first window's cells only
+    for bad_s in (33, 2 ** 32 + 5, -1):  # S past 32 (once read as S mod 2^32) or negative: refused
+        got = call([[1, 2, 3, bad_s, 0, 0, 1, 0]], 8)
+        assert got in (lib.RAST_E_SUBPIXEL, lib.RAST_E_ARG) and got != lib.RAST_OK and got < 0, (bad_s, got)
+    assert call([[1, 2, 3, 2 ** 32 + 5, 0, 0, 1, 0]], 8) == call([[1, 2, 3, 33, 0, 0, 1, 0]], 8)
     xy[0] = np.nan
     assert call([[1, 2, 3, 32, 0, 0, 1, 0]], 8) == lib.RAST_E_ARG and failed[1] == 1  # point 0 bad

@@ -3146,33 +3146,17 @@ static int rast__cov_bands(rast__cedge *e, uint32_t n, int32_t s, rast_fill_rule
         y[m++] = (int32_t)r1;
     }
     y[m] = (int32_t)y1;
-    /* "accumulate"'s band call takes its edges' records for its own
-     * compact ones (coverage_acc.c), so no edge may go on from a plain
-     * band to a later one: a marked edge that leaves a plain band is
-     * unmarked (its rows then go the "area" way, as every row may) and
-     * the bands are made again, until none does (a few passes: else
-     * not banded) */
-    for (i = 0, t = 0; i < n; i++)
-        if (e[i].hz & RAST__HZ_PLAIN) {
-            int64_t r0, r1;
-            uint32_t t1;
-            rast__band_rows(&e[i], s, &r0, &r1);
-            if (r1 < y0 || r0 >= y1) continue;
-            t = rast__band_of(y, m, r0 < y0 ? y0 : r0, t);
-            t1 = rast__band_of(y, m, r1 >= y1 ? y1 - 1 : r1, t);
-            if (t1 > t + (t & 1)) { /* (from a bad band to the plain one after it: carried by "area", kept) */
-                e[i].hz &= ~(int32_t)RAST__HZ_PLAIN;
-                unmarked++;
-            }
-        }
-    if (!unmarked) break;
-    if (pass == 3) return 0;
-    }
+    plainrows = 0;
     for (t = 0; t < m; t += 2) plainrows += (int64_t)y[t + 1] - y[t];
     /* (plain rows a quarter of the clip's or more: else as one band) */
     if (plainrows * 4 < y1 - y0) return 0;
     /* the edges by the band of their first row, stably (a polygon's
-     * edges come ring by ring, often in rows: most stay where they are) */
+     * edges come ring by ring, often in rows: most stay where they are).
+     * "accumulate"'s band call takes its edges' records for its own
+     * compact ones (coverage_acc.c), so no edge may go on from a plain
+     * band to a later one: a marked edge that would is unmarked (its rows
+     * then go the "area" way, as every row may) and the bands are made
+     * again, until none would (a few passes: else not banded) */
     for (t = 0; t <= m; t++) at[t] = 0;
     for (i = 0, t = 0; i < n; i++) {
         int64_t r0, r1;
@@ -3180,6 +3164,17 @@ static int rast__cov_bands(rast__cedge *e, uint32_t n, int32_t s, rast_fill_rule
         t = rast__band_of(y, m, r0, t);
         key[i] = (int32_t)t;
         at[t + 1]++;
+        if ((e[i].hz & RAST__HZ_PLAIN) && r1 >= y0 && r0 < y1) {
+            const uint32_t ta = r0 < y0 ? rast__band_of(y, m, y0, t) : t;
+            const uint32_t tb = rast__band_of(y, m, r1 >= y1 ? y1 - 1 : r1, ta);
+            if (tb > ta + (ta & 1)) { /* (from a bad band to the plain one after it: carried by "area", kept) */
+                e[i].hz &= ~(int32_t)RAST__HZ_PLAIN;
+                unmarked++;
+            }
+        }
+    }
+    if (!unmarked) break;
+    if (pass == 3) return 0;
     }
     for (t = 0; t < m; t++) at[t + 1] += at[t];
     for (i = 0; i < n; i++) tmp[at[key[i]]++] = (int32_t)i; /* tmp[new place] = old place */

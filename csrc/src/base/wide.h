@@ -173,6 +173,7 @@ static inline void rast__wide_floordiv(rast__i128 a, int64_t d, int64_t *q, int6
 #endif
 }
 
+#if !defined(__SIZEOF_INT128__) || defined(RAST_NO_INT128) /* (rast__shl_div_ceil's only, there) */
 /* floor(r 2^n / d), its remainder into *rem, for 0 <= r < d <= 2^41 and
  * 0 <= n <= 62, in 64-bit divisions only: base-2^k long division, k bits
  * of the quotient a step, r 2^k < 2^64 (k = 64 - d's bit length, at
@@ -198,6 +199,7 @@ static inline uint64_t rast__shl_div64(uint64_t r, uint64_t d, int32_t n, uint64
     *rem = r;
     return q;
 }
+#endif
 
 /* ceil(n 2^h / d) for 0 < d <= 2^41, 0 <= h <= 60 and n < d 2^(64 - h)
  * (the quotient fits 64 bits): one division of the 128-bit n 2^h + d - 1

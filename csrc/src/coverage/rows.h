@@ -25,6 +25,7 @@
 
 /* ---- 128-bit helpers (on wide.h's two's-complement rast__i128) --------- */
 
+#if !defined(__SIZEOF_INT128__) || defined(RAST_NO_INT128) /* (rast__cov_x_at's, cells.c, there) */
 /* a * b for a >= 0 (the caller keeps it below 2^127) and b < 2^32. */
 static inline rast__i128 rast__u128_mul32(rast__i128 a, uint32_t b)
 {
@@ -35,6 +36,7 @@ static inline rast__i128 rast__u128_mul32(rast__i128 a, uint32_t b)
     r.hi = a.hi * b + (p1 >> 32);
     return r;
 }
+#endif
 
 /* floor(a / d) for a >= 0 and 0 < d < 2^32; *rem = a mod d.  Four 64-bit
  * divisions of 32-bit limbs (no 128-bit divide: firmware has none). */

@@ -43,6 +43,21 @@ def coords(draw, lo, hi, n):
     return [(draw(v), draw(v)) for _ in range(n)]
 
 
+def colour(draw, fmt):
+    """(an RGBA colour for fmt, opacity, gamma) that make a blend, not the
+    value's own fill (docs/opacity.md)."""
+    n = 1 if fmt == "gray8" else 3
+    alpha = draw(st.integers(0, 255))
+    color = tuple(draw(st.integers(0, 255)) for _ in range(n)) + (alpha,)
+    opacity = draw(st.sampled_from([None, 0.0, 0.3, 0.5, 1.0]))
+    gamma = draw(st.sampled_from([None, None, None, "srgb", 2.2]))
+    if opacity is None and gamma is None and (fmt == "rgba8888" or alpha == 255):
+        opacity = 0.5  # else a stored value, not a blend
+    if opacity == 1.0 and gamma is None and fmt != "rgba8888" and alpha == 255:
+        opacity = 0.5  # the same: an opaque colour at full opacity is the value's fill
+    return color, opacity, gamma
+
+
 @st.composite
 def cases(draw):
     fmt = draw(st.sampled_from(FORMATS))
@@ -71,15 +86,7 @@ def cases(draw):
         kw["algorithm"] = draw(st.sampled_from(TRI_ALGOS if tris else POLY_ALGOS))
         kw["rounding"] = draw(st.sampled_from(["exact", "exact", "textbook"]))
         kw["boundary"] = draw(st.sampled_from(["exact", "exact", "closed", "conservative"]))
-    n = 1 if fmt == "gray8" else 3
-    alpha = draw(st.integers(0, 255))
-    color = tuple(draw(st.integers(0, 255)) for _ in range(n)) + (alpha,)
-    opacity = draw(st.sampled_from([None, 0.0, 0.3, 0.5, 1.0]))
-    gamma = draw(st.sampled_from([None, None, None, "srgb", 2.2]))
-    if opacity is None and gamma is None and (fmt == "rgba8888" or alpha == 255):
-        opacity = 0.5  # else a stored value, not a blend
-    if opacity == 1.0 and gamma is None and fmt != "rgba8888" and alpha == 255:
-        opacity = 0.5  # the same: an opaque colour at full opacity is the value's fill
+    color, opacity, gamma = colour(draw, fmt)
     return fmt, (h, w), tris, geom, aa, kw, color, opacity, gamma, draw(st.integers(0, 2 ** 16))
 
 

@@ -22,22 +22,9 @@ import strategies as S_
 from rastrum import _canvas
 from rastrum._core import InputError
 from test_opacity import canvas_expected
-from test_opacity_box import FORMATS, coords, fresh
+from test_opacity_box import FORMATS, colour, coords, fresh
 
 POLY_ALGOS = sorted(rastrum.ALGORITHMS["polygon_mask"])
-
-
-def colour(draw, fmt):
-    n = 1 if fmt == "gray8" else 3
-    alpha = draw(st.integers(0, 255))
-    color = tuple(draw(st.integers(0, 255)) for _ in range(n)) + (alpha,)
-    opacity = draw(st.sampled_from([None, 0.0, 0.3, 0.5, 1.0]))
-    gamma = draw(st.sampled_from([None, None, None, "srgb", 2.2]))
-    if opacity is None and gamma is None and (fmt == "rgba8888" or alpha == 255):
-        opacity = 0.5  # else a stored value, not a blend
-    if opacity == 1.0 and alpha == 255 and gamma is None and fmt != "rgba8888":
-        opacity = 0.3  # else opaque: the value's own fill
-    return color, opacity, gamma
 
 
 def span(draw, h, w):

@@ -65,6 +65,15 @@ static void bz_span(void *user, int32_t y, int32_t x0, int32_t x1)
     memset(bz_mask + (size_t)y * (size_t)w + (size_t)x0, 255, (size_t)(x1 - x0));
 }
 
+/* The oracle's blend of bz_mask's cut clip c (w columns) into cut. */
+static rast_status bz_blend(const rast_target *cut, const rast_rect *c, int32_t w, const uint8_t *rgba,
+                            const rast_blend_opts *blend, const rast_gamma *gamma)
+{
+    const uint8_t *cov = bz_mask + c->y0 * w + c->x0;
+    return gamma ? rast_blend_coverage_linear(cut, cov, RAST_COVERAGE_U8, w, rgba, blend, gamma)
+                 : rast_blend_coverage(cut, cov, RAST_COVERAGE_U8, w, rgba, blend);
+}
+
 /* A coordinate in pixels: fz_coord's (units of 1/2^s) as a double, or that
  * plus a fraction of a unit (the snap's rounding), or a value no snap takes. */
 static double bz_coord(fz_in *in, int s, int32_t extent)
@@ -294,19 +303,14 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
                 free(scratch);
             }
             if (st == RAST_OK)
-                st = gamma ? rast_blend_coverage_linear(&cut, bz_mask + c.y0 * w + c.x0, RAST_COVERAGE_U8, w,
-                                                        rgba, blend, gamma)
-                           : rast_blend_coverage(&cut, bz_mask + c.y0 * w + c.x0, RAST_COVERAGE_U8, w, rgba,
-                                                 blend);
+                st = bz_blend(&cut, &c, w, rgba, blend, gamma);
             want = st;
         }
     } else if (mode == 2) { /* the polyline's spans over the whole cut clip */
         memset(bz_mask, 0, sizeof bz_mask);
         st = rast_draw_polyline_spans((const rast_point *)(void *)bz_pts, npoints, closed, &lo, &c, bz_span, &w);
         if (st == RAST_OK)
-            st = gamma ? rast_blend_coverage_linear(&cut, bz_mask + c.y0 * w + c.x0, RAST_COVERAGE_U8, w, rgba,
-                                                    blend, gamma)
-                       : rast_blend_coverage(&cut, bz_mask + c.y0 * w + c.x0, RAST_COVERAGE_U8, w, rgba, blend);
+            st = bz_blend(&cut, &c, w, rgba, blend, gamma);
         want = st;
     } else if (want == RAST_OK && coverage) { /* the options' errors first, as every coverage call of the binding */
         want = rast_coverage_scratch_size(&co, npoints, t.clip.x1 - t.clip.x0, t.clip.y1 - t.clip.y0, &need);
@@ -343,10 +347,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
             free(scratch);
         }
         if (st == RAST_OK)
-            st = gamma ? rast_blend_coverage_linear(&cut, bz_mask + c.y0 * w + c.x0, RAST_COVERAGE_U8, w,
-                                                    rgba, blend, gamma)
-                       : rast_blend_coverage(&cut, bz_mask + c.y0 * w + c.x0, RAST_COVERAGE_U8, w, rgba,
-                                             blend);
+            st = bz_blend(&cut, &c, w, rgba, blend, gamma);
         want = st;
     }
     if (got != want) {

@@ -26,7 +26,8 @@
  * written, or a negative status with failed[0] the window's index and
  * failed[1] rastpy_polygon_coverage64's code k + 1 when its point k was
  * bad (then RAST_E_ARG), else 0.  One window buffer (malloc), grown to
- * the largest window so far. */
+ * the largest window so far, and only once the window's table, S and
+ * options are checked (rast_coverage64_scratch_size). */
 long rastpy_window_fractions64(uint32_t nwin, const int64_t *win, const double *xy, size_t npoints,
                                const uint32_t *ring_sizes, size_t nrings, const rast_coverage_opts *opts,
                                int64_t raster_width, int64_t *out_feature, int64_t *out_cell,
@@ -34,7 +35,7 @@ long rastpy_window_fractions64(uint32_t nwin, const int64_t *win, const double *
 {
     rast_coverage_opts o;
     double *buf = NULL;
-    size_t have = 0, written = 0;
+    size_t have = 0, written = 0, need;
     uint32_t k;
     if (!win || !xy || !ring_sizes || !opts || !out_feature || !out_cell || !out_fraction || !failed)
         return RAST_E_NULL;
@@ -61,6 +62,17 @@ long rastpy_window_fractions64(uint32_t nwin, const int64_t *win, const double *
             free(buf);
             return RAST_E_ARG;
         }
+        /* S past 32 is RAST_E_SUBPIXEL; (int) alone would take 2^32 + 5 as 5 */
+        o.subpixel_bits = v[3] > RAST_MAX_SUBPIXEL_BITS64 ? RAST_MAX_SUBPIXEL_BITS64 + 1 : (int)v[3];
+        /* the options, S and the window's size checked as
+         * rastpy_polygon_coverage64 checks them first, before the window
+         * buffer is allocated: a bad window is its status, never
+         * RASTPY_E_NOMEM for a buffer it would not have used */
+        st = rast_coverage64_scratch_size(&o, (uint32_t)npts, (int32_t)w, (int32_t)h, &need);
+        if (st != RAST_OK) {
+            free(buf);
+            return st;
+        }
         cells = (size_t)h * (size_t)w;
         if (cells > have) {
             free(buf);
@@ -68,8 +80,6 @@ long rastpy_window_fractions64(uint32_t nwin, const int64_t *win, const double *
             if (!buf) return RASTPY_E_NOMEM;
             have = cells;
         }
-        /* S past 32 is RAST_E_SUBPIXEL; (int) alone would take 2^32 + 5 as 5 */
-        o.subpixel_bits = v[3] > RAST_MAX_SUBPIXEL_BITS64 ? RAST_MAX_SUBPIXEL_BITS64 + 1 : (int)v[3];
         st = rastpy_polygon_coverage64(buf, (int32_t)h, (int32_t)w, 2, xy + 2 * (size_t)v[4], (uint32_t)npts,
                                        ring_sizes + v[5], (uint32_t)v[6], &o);
         if (st != 0) {

@@ -931,7 +931,9 @@ class Canvas:
         :meth:`fill_triangles` applies a vertex colour's: each pixel's
         interpolated colour at its interpolated alpha times the opacity
         (rgba8888 without `opacity` stores the alpha; docs/opacity.md
-        "Shaded fills").
+        "Shaded fills").  No `gamma`: shaded fills blend stored levels
+        (the core's shaded blends have no linear-light tables), as
+        :meth:`fill_triangles` refuses ``gamma=`` with `vertex_colors`.
 
         `aa` (one of ``AA_METHODS["Canvas.fill_polygon"]``) anti-aliases a
         rectangle with fractional sides: each pixel's colour weighted by
@@ -1127,7 +1129,11 @@ class Canvas:
         """flood_fill (boundary None) or boundary_fill (`boundary` the
         boundary's pixel bytes) with a blend: the region found by the core's
         flood fill on a gray8 mask (1 where the pixel is the seed's value,
-        or is not the boundary), then blended through it (255 inside)."""
+        or is not the boundary) of a window around the seed, grown on each
+        side the region reaches until it reaches none (a path out of the
+        window crosses its outermost pixels: the region in the window is
+        then the canvas's), then blended over the region's box.  The work
+        is the final window's, about the region's box, not the canvas's."""
         target = self._writable()
         x, y = _core.seed_point(seed, target)
         arr = self._array
@@ -1136,22 +1142,35 @@ class Canvas:
         else:
             pixel = np.frombuffer(boundary, arr.dtype)
             pixel = pixel if arr.ndim == 3 else pixel[0]
-        same = arr == pixel
-        if same.ndim == 3:
-            same = same.all(axis=2)
-        # (a fresh C-contiguous bool array: its bytes, 0 or 1, are the mask)
-        mask = np.ascontiguousarray(same if boundary is None else ~same).view(np.uint8)
-        if not mask[y, x]:
-            return  # a seed on the boundary: nothing
-        _core.seed_fill(_core.make_target(mask, lib.RAST_FORMAT_GRAY8), (x, y), b"\x02", None, connectivity)
+        h, w = arr.shape[:2]
+        r = _SEED_WINDOW
+        x0, y0, x1, y1 = max(x - r, 0), max(y - r, 0), min(x + r + 1, w), min(y + r + 1, h)
+        while True:
+            same = arr[y0:y1, x0:x1] == pixel
+            if same.ndim == 3:
+                same = same.all(axis=2)
+            # (a fresh C-contiguous bool array: its bytes, 0 or 1, are the mask)
+            mask = np.ascontiguousarray(same if boundary is None else ~same).view(np.uint8)
+            if not mask[y - y0, x - x0]:
+                return  # a seed on the boundary: nothing
+            _core.seed_fill(_core.make_target(mask, lib.RAST_FORMAT_GRAY8), (x - x0, y - y0), b"\x02", None,
+                            connectivity)
+            region = mask == 2
+            # each side the region reaches (not the canvas's edge): twice as far
+            grow = (x0 > 0 and region[:, 0].any(), y0 > 0 and region[0].any(),
+                    x1 < w and region[:, -1].any(), y1 < h and region[-1].any())
+            if not any(grow):
+                break
+            dx, dy = x1 - x0, y1 - y0
+            x0, y0 = (max(x0 - dx, 0) if grow[0] else x0), (max(y0 - dy, 0) if grow[1] else y0)
+            x1, y1 = (min(x1 + dx, w) if grow[2] else x1), (min(y1 + dy, h) if grow[3] else y1)
         # blended over the region's box only (it holds the seed: never empty)
-        region = mask == 2
         rows = np.flatnonzero(region.any(axis=1))
-        y0, y1 = int(rows[0]), int(rows[-1]) + 1
-        cols = np.flatnonzero(region[y0:y1].any(axis=0))
-        x0, x1 = int(cols[0]), int(cols[-1]) + 1
-        cov = np.where(region[y0:y1, x0:x1], np.uint8(255), np.uint8(0))
-        _blend_mask(target, cov, blend, (x0, y0, x1, y1))
+        ry0, ry1 = int(rows[0]), int(rows[-1]) + 1
+        cols = np.flatnonzero(region[ry0:ry1].any(axis=0))
+        rx0, rx1 = int(cols[0]), int(cols[-1]) + 1
+        cov = np.where(region[ry0:ry1, rx0:rx1], np.uint8(255), np.uint8(0))
+        _blend_mask(target, cov, blend, (x0 + rx0, y0 + ry0, x0 + rx1, y0 + ry1))
 
     def to_image(self) -> "PIL.Image.Image":
         """A Pillow image (a copy): mode L, RGB or RGBA; rgb565 as RGB (each
@@ -1186,7 +1205,8 @@ class Canvas:
                cap: str = "butt", miter_limit: float = 4.0, dash: Optional[Sequence[float]] = None,
                dash_offset: float = 0.0, tolerance: Optional[float] = None,
                aa: Optional[CoverageMethod] = None, subpixel_bits: int = 8, sample_offset: float = 0.5,
-               outline: str = "exact") -> None:
+               outline: str = "exact", opacity: Optional[float] = None,
+               gamma: Union[None, str, float] = None) -> None:
         """Paint `color` on the stroke of `geometry`, `width` pixels wide.
 
         The outline is :func:`rastrum.stroke` (`join`, `cap`,
@@ -1199,7 +1219,11 @@ class Canvas:
         or a list of them, or a shapely / ``__geo_interface__`` LineString,
         MultiLineString, Polygon (its rings, closed) or MultiPolygon.
         Coordinates are rastrum's (the pixel (i, j) is the square
-        [i, i+1) x [j, j+1)).
+        [i, i+1) x [j, j+1)).  `opacity`, `gamma` and a colour's alpha as
+        :meth:`fill_polygon`: the outline is one non-zero fill, so each
+        pixel is blended once, where pieces, joins, a dash's ends or a
+        path crossing itself overlap too (docs/opacity.md).  Nothing is
+        written when an argument is bad (an InputError says which).
 
         Examples
         --------
@@ -1211,34 +1235,57 @@ class Canvas:
         """
         from ._strokes import stroke as _stroke
 
+        paint = self._paint_kw(color, opacity, gamma, "Canvas.stroke")  # checked before the outline is made
         kw: Dict[str, Any] = {"join": join, "cap": cap, "miter_limit": miter_limit, "tolerance": tolerance,
                               "outline": outline}
         if dash is not None or dash_offset != 0.0:  # dashes as rastrum.stroke has them (docs/paths.md)
             kw.update(dash=dash, dash_offset=dash_offset)
         outline = _stroke(_stroke_geometry(geometry), width, **kw)
         self.fill_polygon(outline, color, rule="nonzero", aa=aa, subpixel_bits=subpixel_bits,
-                          sample_offset=sample_offset, tolerance=tolerance)
+                          sample_offset=sample_offset, tolerance=tolerance, **paint)
+
+    def _paint_kw(self, color, opacity, gamma, entry):
+        """`color` with `opacity` and `gamma` checked as fill_polygon checks
+        them (InputError, before anything is drawn; a label canvas takes
+        neither), and the keywords that pass the two on to it: none
+        without them, so that fill_polygon takes its opaque call."""
+        if opacity is None and gamma is None:
+            if self._format == "label" or type(color) is int:
+                self._value_bytes(color)
+                return {}
+            blend, color = _blend_args(color, None, self._format, entry)
+            if blend is None:
+                self._value_bytes(color)
+            return {}
+        if self._format == "label":
+            raise InputError("a label canvas holds labels, which do not blend: no opacity or gamma")
+        _blend_args(color, opacity, self._format, entry, gamma)
+        return {"opacity": opacity, "gamma": gamma}
 
     def _shape(self, shape: Any, fill: Optional[Color], outline_path: Any, outline: Optional[Color],
-               aa: Optional[CoverageMethod], tolerance: Optional[float], entry: str) -> None:
-        """Fill `shape` with `fill`, then `outline_path` (nonzero) with `outline`."""
+               aa: Optional[CoverageMethod], tolerance: Optional[float], entry: str,
+               opacity: Optional[float] = None, gamma: Union[None, str, float] = None) -> None:
+        """Fill `shape` with `fill`, then `outline_path` (nonzero) with
+        `outline`, each blended once with `opacity` and `gamma` (or a
+        colour's alpha) when given."""
         if fill is None and outline is None:
             raise InputError("%s needs fill or outline (a colour)" % entry)
-        for colour in (fill, outline):  # both checked before anything is drawn
-            if colour is not None:
-                self._value_bytes(colour)
+        # both colours checked before anything is drawn
+        paint = [None if c is None else self._paint_kw(c, opacity, gamma, "Canvas." + entry)
+                 for c in (fill, outline)]
         # Both flattened (and their points range-checked) before either is
         # drawn: an outline too wide for the grid must not leave the fill.
         shape = path_rings(shape, 8, tolerance)
         if outline_path is not None:
             outline_path = (path_rings(outline_path[0], 8, tolerance), outline_path[1])
         if fill is not None:
-            self.fill_polygon(shape, fill, rule="nonzero", aa=aa)
+            self.fill_polygon(shape, fill, rule="nonzero", aa=aa, **paint[0])
         if outline is not None and outline_path is not None:
-            self.fill_polygon(outline_path[0], outline, rule=outline_path[1], aa=aa)
+            self.fill_polygon(outline_path[0], outline, rule=outline_path[1], aa=aa, **paint[1])
 
     def ellipse(self, xy: Any, fill: Optional[Color] = None, outline: Optional[Color] = None,
-                width: int = 1, *, aa: Optional[CoverageMethod] = None, tolerance: Optional[float] = None) -> None:
+                width: int = 1, *, aa: Optional[CoverageMethod] = None, tolerance: Optional[float] = None,
+                opacity: Optional[float] = None, gamma: Union[None, str, float] = None) -> None:
         """Pillow's ``ImageDraw.ellipse``: the ellipse in the bounding box
         `xy` ((x0, y0, x1, y1) or ((x0, y0), (x1, y1)), inclusive: pixels
         x0..x1), filled with `fill`; `outline` paints the ring between it
@@ -1247,6 +1294,15 @@ class Canvas:
         the true ellipse flattened within `tolerance` (or its exact coverage
         with ``aa="area"``); Pillow's own rasteriser differs by a pixel
         here and there on the boundary, never in the box.
+
+        `opacity`, `gamma` and a colour's alpha as :meth:`fill_polygon`
+        (docs/opacity.md): the fill, then the outline, each one fill
+        blended once per pixel (where the outline lies on the fill, the
+        outline is blended over the blended fill, as Pillow and SVG paint
+        the fill and then the outline); the same for :meth:`circle`,
+        :meth:`rounded_rectangle`, :meth:`pieslice`, :meth:`chord` and
+        :meth:`regular_polygon`.  Nothing is written when an argument is
+        bad (an InputError says which).
 
         Examples
         --------
@@ -1264,26 +1320,31 @@ class Canvas:
             inner = _shapes.ellipse((x0 + x1) / 2, (y0 + y1) / 2, max((x1 - x0) / 2 - w, 0),
                                     max((y1 - y0) / 2 - w, 0))
             ring = _both(shape, inner)
-        self._shape(shape, fill, ring, outline, aa, tolerance, "ellipse")
+        self._shape(shape, fill, ring, outline, aa, tolerance, "ellipse", opacity, gamma)
 
     def circle(self, xy: Point, radius: float, fill: Optional[Color] = None, outline: Optional[Color] = None,
-               width: int = 1, *, aa: Optional[CoverageMethod] = None, tolerance: Optional[float] = None) -> None:
+               width: int = 1, *, aa: Optional[CoverageMethod] = None, tolerance: Optional[float] = None,
+                opacity: Optional[float] = None, gamma: Union[None, str, float] = None) -> None:
         """Pillow's ``ImageDraw.circle``: :meth:`ellipse` of the box
-        (x - radius, y - radius, x + radius, y + radius)."""
+        (x - radius, y - radius, x + radius, y + radius); `opacity` and
+        `gamma` as there."""
         c = _pil_point(xy, "circle: xy")
         r = _shapes._radius(radius, "radius")
-        self.ellipse((c[0] - r, c[1] - r, c[0] + r, c[1] + r), fill, outline, width, aa=aa, tolerance=tolerance)
+        self.ellipse((c[0] - r, c[1] - r, c[0] + r, c[1] + r), fill, outline, width, aa=aa, tolerance=tolerance,
+                     opacity=opacity, gamma=gamma)
 
     def rounded_rectangle(self, xy: Any, radius: float = 0, fill: Optional[Color] = None,
                           outline: Optional[Color] = None, width: int = 1, *,
                           corners: Optional[Sequence[bool]] = None, aa: Optional[CoverageMethod] = None,
-                          tolerance: Optional[float] = None) -> None:
+                          tolerance: Optional[float] = None,
+                opacity: Optional[float] = None, gamma: Union[None, str, float] = None) -> None:
         """Pillow's ``ImageDraw.rounded_rectangle``: the box `xy` (inclusive)
         with its corners rounded by quarter circles of `radius` (clamped to
         half the shorter side; `corners` (top left, top right, bottom
         right, bottom left) says which), `outline` the ring between it and
         the box inset by `width` with radius - width.  radius 0 is the
-        rectangle, pixels x0..x1 and y0..y1 as Pillow.
+        rectangle, pixels x0..x1 and y0..y1 as Pillow.  `opacity` and
+        `gamma` as :meth:`ellipse`.
 
         Examples
         --------
@@ -1303,61 +1364,69 @@ class Canvas:
                                               max(x1 - w, (x0 + x1) / 2), max(y1 - w, (y0 + y1) / 2),
                                               max(r - w, 0), corners=corners)
             ring = _both(shape, inner)
-        self._shape(shape, fill, ring, outline, aa, tolerance, "rounded_rectangle")
+        self._shape(shape, fill, ring, outline, aa, tolerance, "rounded_rectangle", opacity, gamma)
 
     def arc(self, xy: Any, start: float, end: float, fill: Optional[Color] = None, width: int = 1, *,
-            aa: Optional[CoverageMethod] = None, tolerance: Optional[float] = None) -> None:
+            aa: Optional[CoverageMethod] = None, tolerance: Optional[float] = None,
+                opacity: Optional[float] = None, gamma: Union[None, str, float] = None) -> None:
         """Pillow's ``ImageDraw.arc``: the arc of the ellipse in the box `xy`
         (inclusive) from `start` to `end` degrees, clockwise from 3 o'clock
         (the ellipse's parametric angle, as Pillow), `width` pixels wide
         inside the box: rastrum strokes the ellipse inset by width/2 with
         butt ends (on a circle, exactly the annular sector; on an ellipse
-        the true offset curve, where Pillow insets the radii)."""
+        the true offset curve, where Pillow insets the radii).  `opacity`
+        and `gamma` as :meth:`stroke`: each pixel blended once."""
         x0, y0, x1, y1 = _pil_box(xy, "arc")
         w = _pil_width(width)
         if fill is None:
             raise InputError("arc needs fill (a colour)")
         if w == 0:
-            self._value_bytes(fill)
+            self._paint_kw(fill, opacity, gamma, "Canvas.arc")
             return
         h = w / 2
         path = _shapes.arc((x0 + x1) / 2, (y0 + y1) / 2, max((x1 - x0) / 2 - h, 0), max((y1 - y0) / 2 - h, 0),
                            start, end)
         if len(path):
-            self.stroke(path, fill, w, cap="butt", join="round", aa=aa, tolerance=tolerance)
+            self.stroke(path, fill, w, cap="butt", join="round", aa=aa, tolerance=tolerance, opacity=opacity,
+                        gamma=gamma)
         else:
-            self._value_bytes(fill)
+            self._paint_kw(fill, opacity, gamma, "Canvas.arc")
 
     def pieslice(self, xy: Any, start: float, end: float, fill: Optional[Color] = None,
                  outline: Optional[Color] = None, width: int = 1, *, aa: Optional[CoverageMethod] = None,
-                 tolerance: Optional[float] = None) -> None:
+                 tolerance: Optional[float] = None,
+                opacity: Optional[float] = None, gamma: Union[None, str, float] = None) -> None:
         """Pillow's ``ImageDraw.pieslice``: the slice of the ellipse in the
         box `xy` (inclusive) from `start` to `end` (as :meth:`arc`).
         `outline`: rastrum strokes the slice's boundary `width` wide,
-        mitred, centred on it (Pillow draws it inside)."""
+        mitred, centred on it (Pillow draws it inside).  `opacity` and
+        `gamma` as :meth:`ellipse`."""
         x0, y0, x1, y1 = _pil_box(xy, "pieslice")
         shape = _shapes.pieslice((x0 + x1) / 2, (y0 + y1) / 2, (x1 - x0) / 2, (y1 - y0) / 2, start, end)
-        self._shape(shape, fill, _outline(shape, outline, width), outline, aa, tolerance, "pieslice")
+        self._shape(shape, fill, _outline(shape, outline, width), outline, aa, tolerance, "pieslice", opacity, gamma)
 
     def chord(self, xy: Any, start: float, end: float, fill: Optional[Color] = None,
               outline: Optional[Color] = None, width: int = 1, *, aa: Optional[CoverageMethod] = None,
-              tolerance: Optional[float] = None) -> None:
+              tolerance: Optional[float] = None,
+                opacity: Optional[float] = None, gamma: Union[None, str, float] = None) -> None:
         """Pillow's ``ImageDraw.chord``: the arc from `start` to `end` (as
-        :meth:`arc`) closed by a straight line; `outline` as
-        :meth:`pieslice`."""
+        :meth:`arc`) closed by a straight line; `outline`, `opacity` and
+        `gamma` as :meth:`pieslice`."""
         x0, y0, x1, y1 = _pil_box(xy, "chord")
         shape = _shapes.chord((x0 + x1) / 2, (y0 + y1) / 2, (x1 - x0) / 2, (y1 - y0) / 2, start, end)
-        self._shape(shape, fill, _outline(shape, outline, width), outline, aa, tolerance, "chord")
+        self._shape(shape, fill, _outline(shape, outline, width), outline, aa, tolerance, "chord", opacity, gamma)
 
     def regular_polygon(self, bounding_circle: Any, n_sides: int, rotation: float = 0,
                         fill: Optional[Color] = None, outline: Optional[Color] = None, width: int = 1, *,
-                        aa: Optional[CoverageMethod] = None, tolerance: Optional[float] = None) -> None:
+                        aa: Optional[CoverageMethod] = None, tolerance: Optional[float] = None,
+                opacity: Optional[float] = None, gamma: Union[None, str, float] = None) -> None:
         """Pillow's ``ImageDraw.regular_polygon``: `n_sides` vertices on the
         circle `bounding_circle` ((x, y, r) or ((x, y), r); the centre a
         pixel centre), rotated `rotation` degrees counter-clockwise, the
         first side at the bottom (Pillow's vertices, not rounded to 2
         decimals).  Filled by rastrum's rule (Pillow also paints the
-        boundary's pixels); `outline` as :meth:`pieslice`."""
+        boundary's pixels); `outline`, `opacity` and `gamma` as
+        :meth:`pieslice`."""
         try:
             bc = list(bounding_circle)
         except TypeError:
@@ -1370,7 +1439,7 @@ class Canvas:
             raise InputError("bounding_circle: (x, y, r) or ((x, y), r), not %r" % (bounding_circle,))
         cx, cy = _pil_point(centre, "bounding_circle")
         shape = _shapes.regular_polygon(cx, cy, r, n_sides, rotation=rotation)
-        self._shape(shape, fill, _outline(shape, outline, width), outline, aa, tolerance, "regular_polygon")
+        self._shape(shape, fill, _outline(shape, outline, width), outline, aa, tolerance, "regular_polygon", opacity, gamma)
 
     def line(self, p0: Any, p1: Any = None, color: Optional[Color] = None, *, fill: Optional[Color] = None,
              width: float = 1, joint: Optional[str] = None, aa: Optional[CoverageMethod] = None,
@@ -1446,23 +1515,12 @@ class Canvas:
                 self.polyline(pts, color, algorithm=algorithm, subpixel_bits=subpixel_bits,
                               sample_offset=sample_offset, opacity=opacity, gamma=gamma)
                 return
-        if opacity is not None or gamma is not None:
-            if self._format == "label":
-                raise InputError("a label canvas holds labels, which do not blend: no opacity or gamma")
-            _blend_args(color, opacity, self._format, "Canvas.line", gamma)  # checked before anything is drawn
-            if w != 0 and len(pts):  # the stroke's outline (Canvas.stroke's), filled with the blend
-                from ._strokes import stroke as _stroke
-
-                outline = _stroke(_stroke_geometry(pts), w, join="round" if joint == "curve" else "bevel",
-                                  cap="butt", tolerance=tolerance)
-                self.fill_polygon(outline, color, rule="nonzero", aa=aa, subpixel_bits=subpixel_bits,
-                                  sample_offset=sample_offset, tolerance=tolerance, opacity=opacity, gamma=gamma)
-            return
+        paint = self._paint_kw(color, opacity, gamma, "Canvas.line")  # checked before anything is drawn
         if w == 0 or len(pts) == 0:
-            self._value_bytes(color)
             return
+        # the stroke's outline, one non-zero fill: blended once per pixel
         self.stroke(pts, color, w, join="round" if joint == "curve" else "bevel", cap="butt", aa=aa,
-                    tolerance=tolerance, subpixel_bits=subpixel_bits, sample_offset=sample_offset)
+                    tolerance=tolerance, subpixel_bits=subpixel_bits, sample_offset=sample_offset, **paint)
 
     def __repr__(self) -> str:
         return "Canvas((%d, %d), format=%r)" % (self.height, self.width, self._format)
@@ -1898,6 +1956,10 @@ def _blend_box(target, geometry, tris, blend, shape, aa, rule, subpixel_bits, sa
 
 
 _MAX_S32 = lib.RAST_MAX_SUBPIXEL_BITS
+
+# A blended seed fill's first window: this many pixels each side of the
+# seed (Canvas._seed_blend), grown while the region reaches its edge.
+_SEED_WINDOW = 32
 
 
 _MAX_DIM = lib.RAST_MAX_DIM

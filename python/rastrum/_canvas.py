@@ -1133,7 +1133,8 @@ class Canvas:
         side the region reaches until it reaches none (a path out of the
         window crosses its outermost pixels: the region in the window is
         then the canvas's), then blended over the region's box.  The work
-        is the final window's, about the region's box, not the canvas's."""
+        is about the final window's (a small region's box, not the
+        canvas)."""
         target = self._writable()
         x, y = _core.seed_point(seed, target)
         arr = self._array
@@ -1156,14 +1157,19 @@ class Canvas:
             _core.seed_fill(_core.make_target(mask, lib.RAST_FORMAT_GRAY8), (x - x0, y - y0), b"\x02", None,
                             connectivity)
             region = mask == 2
-            # each side the region reaches (not the canvas's edge): twice as far
+            # each side the region reaches (not the canvas's edge): 4 times
+            # the window's extent further (the windows' areas then add up to
+            # little more than the last's), or the whole canvas once the
+            # window would hold a quarter of it
             grow = (x0 > 0 and region[:, 0].any(), y0 > 0 and region[0].any(),
                     x1 < w and region[:, -1].any(), y1 < h and region[-1].any())
             if not any(grow):
                 break
-            dx, dy = x1 - x0, y1 - y0
+            dx, dy = 4 * (x1 - x0), 4 * (y1 - y0)
             x0, y0 = (max(x0 - dx, 0) if grow[0] else x0), (max(y0 - dy, 0) if grow[1] else y0)
             x1, y1 = (min(x1 + dx, w) if grow[2] else x1), (min(y1 + dy, h) if grow[3] else y1)
+            if 4 * (x1 - x0) * (y1 - y0) > w * h:
+                x0, y0, x1, y1 = 0, 0, w, h
         # blended over the region's box only (it holds the seed: never empty)
         rows = np.flatnonzero(region.any(axis=1))
         ry0, ry1 = int(rows[0]), int(rows[-1]) + 1

@@ -7,7 +7,8 @@
   test_opacity.py applied to the opaque calls' coverage;
 * the blended seed fills find their region in a window grown around the
   seed (Canvas._seed_blend): the breadth-first region of test_opacity_more,
-  with windows far smaller than the region.
+  with windows far smaller than the region;
+* Canvas.composite takes `gamma=` as the fills do (linear light).
 """
 
 from fractions import Fraction as Q
@@ -209,3 +210,44 @@ def test_seed_blend_serpentine_past_the_first_window():
     cov = region(before, seed, before == 0, 4).astype(np.uint8) * 255
     assert (cov[~wall] == 255).all()
     np.testing.assert_array_equal(c.array, canvas_expected("gray8", before, cov, (100, 100, 100, 128), 255))
+
+
+# ---- Canvas.composite's gamma= ----------------------------------------------------------
+
+@pytest.mark.parametrize("kind", KINDS)
+@pytest.mark.parametrize("wide", [False, True])
+def test_composite_linear_light(kind, wide):
+    """composite(..., gamma=) is the fills' linear-light blend (the exact
+    nearest level of the linear mix, test_opacity_more's oracle), uint8 or
+    uint16 coverage."""
+    rng = np.random.default_rng(8)
+    c = canvas(kind, rng)
+    before = c.array.copy()
+    cov = rng.integers(0, 65536 if wide else 256, SHAPE).astype(np.uint16 if wide else np.uint8)
+    cov[0, :3] = 0
+    color, rgba = colour_for(kind)
+    c.composite(cov, color, opacity=0.7, gamma=2.2)
+    lv = nearest(Q(0.7) * 255)
+    flat = before.reshape(SHAPE[0] * SHAPE[1], -1)
+    for i, (y, x) in enumerate(np.ndindex(*SHAPE)):
+        if kind == "rgb565":
+            p = int(before[y, x])
+            d = (p >> 11, (p >> 5) & 63, p & 31)
+            r, g, b = linear_pixel(kind, 2.2, rgba, d, level(rgba[3], lv, int(cov[y, x]), 65535 if wide else 255))
+            assert int(c.array[y, x]) == (r << 11) | (g << 5) | b
+        else:
+            d = tuple(int(v) for v in flat[i])
+            want = linear_pixel(kind, 2.2, rgba, d, level(rgba[3], lv, int(cov[y, x]), 65535 if wide else 255))
+            assert tuple(int(v) for v in np.atleast_1d(c.array[y, x])) == want
+
+
+def test_composite_gamma_bad_input():
+    c = rastrum.Canvas(SHAPE, format="rgba8888", background=(1, 2, 3, 4))
+    before = c.array.copy()
+    cov = np.full(SHAPE, 200, np.uint8)
+    for kw in (dict(gamma="lab"), dict(gamma=0.1), dict(gamma="srgb", premultiplied=True)):
+        with pytest.raises(rastrum.InputError, match="gamma"):
+            c.composite(cov, (1, 2, 3, 4), **kw)
+    np.testing.assert_array_equal(c.array, before)
+    with pytest.raises(rastrum.InputError, match="not mono1"):
+        rastrum.Canvas(SHAPE, format="mono1").composite(cov, 1, gamma="srgb")

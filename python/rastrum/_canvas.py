@@ -503,7 +503,7 @@ class Canvas:
         _blend_mask(target, cov, blend)
 
     def composite(self, coverage: npt.ArrayLike, color: Color, *, opacity: Optional[float] = None,
-                  premultiplied: bool = False) -> None:
+                  premultiplied: bool = False, gamma: Union[None, str, float] = None) -> None:
         """Blend `color` into the canvas through a coverage image, source-over.
 
         `coverage` is an (H, W) uint8 (levels out of 255) or uint16 (out of
@@ -513,7 +513,10 @@ class Canvas:
         floor(opacity*255 + 1/2)) times each pixel's coverage is rounded
         once to an alpha level, then each channel is mixed as
         docs/opacity.md states; an rgba8888 canvas is straight alpha, or
-        premultiplied with ``premultiplied=True``.  gray8, rgb888, rgb565
+        premultiplied with ``premultiplied=True``.  ``gamma="srgb"`` (or a
+        power in 0.3..3) mixes in linear light as :meth:`fill_polygon`
+        does (not with ``premultiplied=True``: a stored product of alpha
+        and an encoded level has no linear value).  gray8, rgb888, rgb565
         and rgba8888 canvases; nothing is written when an argument is bad.
         """
         entry = "Canvas.composite"
@@ -532,14 +535,21 @@ class Canvas:
             raise InputError("%s: coverage must be a uint8 or uint16 array of the canvas's shape %s, not %s %s"
                              % (entry, (self.height, self.width), cov.dtype, cov.shape))
         level = 255 if opacity is None else _opacity_level(opacity, entry)
+        tables = None
+        if gamma is not None:
+            if premultiplied:
+                raise InputError("%s: gamma= mixes straight alpha in linear light; premultiplied=True has "
+                                 "no linear value" % entry)
+            tables = _gamma_tables(gamma, entry)
         rgba = _blend_rgba(color, self._format)
         target = self._writable()
         cov = np.ascontiguousarray(cov)
         opts = ffi.new("rast_blend_opts *", {"opacity": level, "premultiplied": int(bool(premultiplied))})
         if cov.size:
-            _core._check(lib.rast_blend_coverage(
-                target, ffi.from_buffer(cov), lib.RAST_COVERAGE_U16 if cov.dtype == np.uint16 else lib.RAST_COVERAGE_U8,
-                cov.shape[1] * cov.itemsize, rgba, opts))
+            args = (target, ffi.from_buffer(cov), lib.RAST_COVERAGE_U16 if cov.dtype == np.uint16
+                    else lib.RAST_COVERAGE_U8, cov.shape[1] * cov.itemsize, rgba, opts)
+            _core._check(lib.rast_blend_coverage(*args) if tables is None
+                         else lib.rast_blend_coverage_linear(*args, tables))
 
     # (target, color, their addresses, the array, the pixel) of the last
     # common fill_polygon call: see _seq.fill_method at the end

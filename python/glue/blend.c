@@ -8,6 +8,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include "blend.h"
+#include "painters/paint.h"
 
 rast_rect rastpy_target_clip(const rast_target *target)
 {
@@ -76,6 +77,29 @@ rast_status rastpy_blend_window(const rast_target *target, const rast_rect *r, c
     cut.clip = *r;
     return gamma ? rast_blend_coverage_linear(&cut, cov, RAST_COVERAGE_U8, w, rgba, blend, gamma)
                  : rast_blend_coverage(&cut, cov, RAST_COVERAGE_U8, w, rgba, blend);
+}
+
+rast_status rastpy_paint_window(const rast_target *target, const rast_rect *r, const uint8_t *cov,
+                                const void *pixel)
+{
+    const size_t w = (size_t)(r->x1 - r->x0);
+    rast__solid solid;
+    rast__painter p;
+    rast_rect c;
+    rast_status st = rast__target_check(target, &c);
+    size_t k, e;
+    int32_t y;
+    if (st == RAST_OK) st = rast__solid_init(&solid, target, r, pixel, NULL, &p);
+    if (st != RAST_OK) return st;
+    for (y = r->y0; y < r->y1; y++) {
+        const uint8_t *row = cov + (size_t)(y - r->y0) * w; /* row[k]: column r->x0 + k */
+        for (k = 0; k < w; k = e) { /* each run of levels not 0, as the core hands them on */
+            for (; k < w && !row[k]; k++) {}
+            for (e = k; e < w && row[e]; e++) {}
+            if (k < e) p.levels(p.user, y, r->x0 + (int32_t)k, r->x0 + (int32_t)e, row + k);
+        }
+    }
+    return RAST_OK;
 }
 
 void rastpy_window_span(void *user, int32_t y, int32_t x0, int32_t x1)

@@ -47,6 +47,17 @@ rast_status rastpy_blend_window(const rast_target *target, const rast_rect *r, c
                                 const uint8_t *rgba, const rast_blend_opts *blend,
                                 const rast_gamma *gamma);
 
+/* `pixel` (a value of the target's format) painted through the uint8
+ * levels cov (laid out as rastpy_blend_window's) onto the pixels of r, a
+ * rectangle inside the target's clip, as rast_fill_polygon_aa paints its
+ * coverage (the core's solid painter, painters/paint.h: each channel
+ * rast__blend8, MONO1 thresholded, COUNT16 counted); levels 0 untouched.
+ * The opaque twin of rastpy_blend_window (the 64-bit "area" fill,
+ * python/glue/wide.c).  Errors: the target's (rast__target_check),
+ * RAST_E_NULL (pixel). */
+rast_status rastpy_paint_window(const rast_target *target, const rast_rect *r, const uint8_t *cov,
+                                const void *pixel);
+
 /* cdef-begin */
 long rastpy_blend_polygon(const rast_target *target, const double *xy, uint32_t npoints,
                           const uint32_t *ring_sizes, uint32_t nrings, const rast_fill_opts *opts,

@@ -247,12 +247,13 @@ long rastpy_coverage64_cells(const double *xy, uint32_t npoints, const uint32_t 
  * (rastpy_snap64), the mask (opts: rast_fill_bounds64, then the spans) or
  * the uint8 "area" coverage (cov_opts: rast_polygon_coverage64 over the
  * points' box, rastpy_box_cut) computed over a window of the target's
- * clip only, then blended there (rastpy_blend_window).  Results as
- * rastpy_fill_polygon64's. */
+ * clip only, then blended there (rastpy_blend_window), or with `pixel`
+ * (rgba NULL) painted there as rast_fill_polygon_aa paints its coverage
+ * (rastpy_paint_window).  Results as rastpy_fill_polygon64's. */
 static long rastpy_blend64(const rast_target *target, const double *xy, uint32_t npoints,
                            const uint32_t *ring_sizes, uint32_t nrings, const rast_fill_opts *opts,
                            const rast_coverage_opts *cov_opts, const uint8_t *rgba,
-                           const rast_blend_opts *blend, const rast_gamma *gamma)
+                           const rast_blend_opts *blend, const rast_gamma *gamma, const void *pixel)
 {
     wide_call c;
     rast_rect clip;
@@ -261,7 +262,7 @@ static long rastpy_blend64(const rast_target *target, const double *xy, uint32_t
     size_t need = 0;
     unsigned char *mem = NULL;
     long r;
-    if (!target || !rgba || !(opts || cov_opts)) return RAST_E_NULL;
+    if (!target || !(rgba || pixel) || !(opts || cov_opts)) return RAST_E_NULL;
     if (npoints > RAST_MAX_POINTS) return RAST_E_TOO_MANY;
     r = wide_begin(&c, xy, npoints, ring_sizes, nrings, opts ? opts->subpixel_bits : cov_opts->subpixel_bits, 0);
     if (r) return r;
@@ -289,7 +290,9 @@ static long rastpy_blend64(const rast_target *target, const double *xy, uint32_t
         st = opts ? rast_fill_polygon64_spans(&c.poly, opts, &win.r, rastpy_window_span, &win, mem, need)
                   : rast_polygon_coverage64(&c.poly, cov_opts, &win.r, RAST_COVERAGE_U8, win.cov,
                                             win.r.x1 - win.r.x0, mem, need);
-        if (st == RAST_OK) st = rastpy_blend_window(target, &win.r, win.cov, rgba, blend, gamma);
+        if (st == RAST_OK)
+            st = pixel ? rastpy_paint_window(target, &win.r, win.cov, pixel)
+                       : rastpy_blend_window(target, &win.r, win.cov, rgba, blend, gamma);
     }
     free(mem);
     wide_end(&c);
@@ -301,7 +304,7 @@ long rastpy_blend_polygon64(const rast_target *target, const double *xy, uint32_
                             const uint8_t *rgba, const rast_blend_opts *blend, const rast_gamma *gamma)
 {
     if (!opts) return RAST_E_NULL;
-    return rastpy_blend64(target, xy, npoints, ring_sizes, nrings, opts, NULL, rgba, blend, gamma);
+    return rastpy_blend64(target, xy, npoints, ring_sizes, nrings, opts, NULL, rgba, blend, gamma, NULL);
 }
 
 long rastpy_blend_polygon_coverage64(const rast_target *target, const double *xy, uint32_t npoints,
@@ -310,5 +313,13 @@ long rastpy_blend_polygon_coverage64(const rast_target *target, const double *xy
                                      const rast_blend_opts *blend, const rast_gamma *gamma)
 {
     if (!opts) return RAST_E_NULL;
-    return rastpy_blend64(target, xy, npoints, ring_sizes, nrings, NULL, opts, rgba, blend, gamma);
+    return rastpy_blend64(target, xy, npoints, ring_sizes, nrings, NULL, opts, rgba, blend, gamma, NULL);
+}
+
+long rastpy_fill_polygon_aa64(const rast_target *target, const double *xy, uint32_t npoints,
+                              const uint32_t *ring_sizes, uint32_t nrings, const rast_coverage_opts *opts,
+                              const void *pixel)
+{
+    if (!opts || !pixel) return RAST_E_NULL;
+    return rastpy_blend64(target, xy, npoints, ring_sizes, nrings, NULL, opts, NULL, NULL, NULL, pixel);
 }

@@ -33,6 +33,16 @@ long rastpy_blend_polygon_coverage64(const rast_target *target, const double *xy
                                      const uint32_t *ring_sizes, uint32_t nrings,
                                      const rast_coverage_opts *opts, const uint8_t *rgba,
                                      const rast_blend_opts *blend, const rast_gamma *gamma);
+/* The opaque anti-aliased fill (Canvas.fill_polygon(aa="area") of a
+ * colour painted as a value) on the 64-bit path: the "area" coverage
+ * over the polygon's box, as rastpy_blend_polygon_coverage64 computes it,
+ * painted with `pixel` as rast_fill_polygon_aa paints its levels
+ * (rastpy_paint_window): the pixels of polygon_coverage's levels painted,
+ * where the 32-bit fill refuses a vertex.  Results as
+ * rastpy_fill_polygon64's. */
+long rastpy_fill_polygon_aa64(const rast_target *target, const double *xy, uint32_t npoints,
+                              const uint32_t *ring_sizes, uint32_t nrings, const rast_coverage_opts *opts,
+                              const void *pixel);
 /* cdef-end */
 
 #endif

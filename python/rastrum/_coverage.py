@@ -497,12 +497,21 @@ def aa_opts_quick(aa, rule, subpixel_bits, sample_offset, entry):
 
 
 def fill_polygon_aa(target, rings, pixel, opts):
-    """rast_fill_polygon_aa of `rings` (as polygon_mask takes them)."""
+    """rast_fill_polygon_aa of `rings` (as polygon_mask takes them); with
+    "area", a vertex past the 32-bit range takes the 64-bit path exactly
+    where polygon_coverage takes it (_use_wide): its levels over the
+    polygon's box, painted as the 32-bit fill paints them
+    (rastpy_fill_polygon_aa64), as the translucent fills blend them."""
     pts, sizes, nrings = _points(rings)
     if not nrings:
         return
-    result = _lent(lib.rastpy_fill_polygon_aa, target, ffi.from_buffer("double[]", pts), len(pts), sizes,
-                   nrings, opts, pixel)
+    xy = ffi.from_buffer("double[]", pts)
+    result = _lent(lib.rastpy_fill_polygon_aa, target, xy, len(pts), sizes, nrings, opts, pixel)
+    if result > 0 and opts.method == lib.RAST_AA_AREA and lib.rastpy_needs_wide(xy, len(pts), opts.subpixel_bits):
+        result = lib.rastpy_fill_polygon_aa64(target, xy, len(pts), sizes, nrings, opts, pixel)
+        if result:
+            _core._check_glue(result, pts, opts.subpixel_bits, "rings", [len(pts)] if nrings == 1 else sizes, True)
+        return
     if result:
         _check(result, pts, opts, "rings", [len(pts)] if nrings == 1 else sizes)
 

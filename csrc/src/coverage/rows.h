@@ -130,6 +130,22 @@ static inline int32_t rast__run_y(const rast__cedge *e)
     return e->dir > 0 ? e->yt + e->dy : e->yt;
 }
 
+/* The edge from vertex a to vertex b (a.y != b.y), top end first: from
+ * (*xt, *yt) by (*dx, *dy > 0); returns its direction, +1 when a is its
+ * top (rast__cov_edges_polygon's, and "accumulate"'s own records,
+ * coverage_acc.c). */
+static inline int32_t rast__cov_edge_of(rast_point a, rast_point b, int32_t *xt, int32_t *yt, int32_t *dx,
+                                        int32_t *dy)
+{
+    const int down = a.y < b.y;
+    const rast_point ta = down ? a : b, tb = down ? b : a;
+    *xt = ta.x;
+    *yt = ta.y;
+    *dx = tb.x - ta.x;
+    *dy = tb.y - ta.y;
+    return down ? 1 : -1;
+}
+
 /* The edges of a polygon's rings (rule: the caller's) or of a triangle
  * batch (each triangle turned to one orientation, so that the non-zero
  * rule gives the union) into e[] (room for every vertex); returns how many

@@ -2441,38 +2441,66 @@ static void rast__acc_prep(rast__acc_walk *w, const rast__acc_thin *t, uint32_t 
     *rows = rs;
 }
 
-/* The walk's records (rast__aedge) of the edges t[] (rast__acc_prep's, at
- * the start of the edges' room e) in the rows' order w->order (by first
- * row, stably), each made as it is written (its quick steps,
- * rast__cov_qsteps; its steppers not set) at the end of the room (past
- * the first n rast__aedge: no overlap with t[]), in a stream; key[] and
- * last[] put in that order too, and order[] becomes 0 .. n - 1 (the
- * walk's arrays swapped: no copy).  Returns the records; w->cap: how many
- * rast__cedge the room before them takes (rast__acc_exact's). */
-static rast__aedge *rast__acc_sorted(rast__acc_walk *w, rast__cedge *e, const rast__acc_thin *t)
+/* The walk's record of the edge t: its quick steps (rast__cov_qsteps),
+ * its steppers not set. */
+static inline void rast__acc_make(rast__aedge *c, const rast__acc_thin *t)
+{
+    const int32_t xt = t->xt, yt = t->yt, dx = t->dx, dy = t->dy, dir = t->dir;
+    rast__cov_qsteps(dx, dy, &c->qts, &c->qtsr, &c->qxs, &c->qxsr);
+    c->qx = c->qt = 0;
+    c->qxr = c->qtr = 0;
+    c->xt = xt;
+    c->yt = yt;
+    c->dx = dx;
+    c->dy = dy;
+    c->qrow = c->qX = INT32_MIN;
+    c->dir = dir;
+    c->spare = 0;
+}
+
+/* The walk's records (rast__aedge, rast__acc_make's) of the edges t[]
+ * (rast__acc_prep's, at the start of the edges' room e) in the rows'
+ * order (by first row, stably), at the end of the room (past the first n
+ * rast__aedge: no overlap with t[]); key[] and last[] put in that order
+ * too, and order[] becomes 0 .. n - 1 (the walk's arrays swapped: no
+ * copy).  With counts (cnt[0..nkeys), room, when the rows are few for the
+ * edges: see rast__acc_walk_all), t[] is read in a stream and each record
+ * written to its row's next slot, a counting sort's placing pass (the
+ * records read through order[] at random, then written in order, took a
+ * fifth of the paragraph's time, issue 34); else by w->order (a radix
+ * sort's).  Returns the records; w->cap: how many rast__cedge the room
+ * before them takes (rast__acc_exact's). */
+static rast__aedge *rast__acc_sorted(rast__acc_walk *w, rast__cedge *e, const rast__acc_thin *t, uint32_t *cnt,
+                                     uint32_t nkeys)
 {
     const uint32_t n = w->n;
     const size_t off = (size_t)n * (sizeof(rast__cedge) - sizeof(rast__aedge));
     rast__aedge *const ce = (rast__aedge *)(void *)((unsigned char *)(void *)e + off);
     int32_t *const order = w->order, *const key = w->key, *const last = w->last, *const ks = w->tmp;
-    uint32_t i;
-    rast__aedge c;
+    uint32_t i, sum = 0;
     (void)sizeof(rast__acc_rooms);
-    c.qx = c.qt = 0;
-    c.qxr = c.qtr = 0;
-    c.qrow = c.qX = INT32_MIN;
-    c.spare = 0;
-    for (i = 0; i < n; i++) {
-        const int32_t k = order[i];
-        c.xt = t[k].xt;
-        c.yt = t[k].yt;
-        c.dx = t[k].dx;
-        c.dy = t[k].dy;
-        c.dir = t[k].dir;
-        rast__cov_qsteps(c.dx, c.dy, &c.qts, &c.qtsr, &c.qxs, &c.qxsr);
-        ce[i] = c;
-        ks[i] = key[k];
-        order[i] = last[k];
+    if (cnt) {
+        for (i = 0; i < nkeys; i++) cnt[i] = 0;
+        for (i = 0; i < n; i++) cnt[key[i]]++;
+        for (i = 0; i < nkeys; i++) {
+            const uint32_t c = cnt[i];
+            cnt[i] = sum;
+            sum += c;
+        }
+        for (i = 0; i < n; i++) { /* (order[] is free: the last rows go there) */
+            const int32_t k = key[i];
+            const uint32_t at = cnt[k]++;
+            rast__acc_make(&ce[at], &t[i]);
+            ks[at] = k;
+            order[at] = last[i];
+        }
+    } else {
+        for (i = 0; i < n; i++) {
+            const int32_t k = order[i];
+            rast__acc_make(&ce[i], &t[k]);
+            ks[i] = key[k];
+            order[i] = last[k];
+        }
     }
     w->tmp = key;
     w->key = ks;
@@ -2497,6 +2525,7 @@ static rast_status rast__acc_walk_all(rast__acc_in *in, uint32_t n, int32_t s, r
     uint64_t *cells, *bandbits, rows = 0; /* (the edges' rows, in all) */
     uint32_t i, nkeys = 0; /* (the greatest key + 1) */
     int32_t r, k, band;
+    int counted; /* (the order by counts of the rows, not a radix sort) */
     w.n = n;
     w.s = s;
 #if RAST__ACC_COMPACT
@@ -2560,13 +2589,15 @@ static rast_status rast__acc_walk_all(rast__acc_in *in, uint32_t n, int32_t s, r
      * sort takes two passes over the edges past 256 rows, and clears and
      * sums 256 counts a pass): the counts in cover[], free until the walk
      * (4 width of them), the same order either way (both stable). */
-    if (n >= 24 && nkeys < n + 512 && nkeys <= 4 * (uint32_t)w.width)
+    counted = n >= 24 && nkeys < n + 512 && nkeys <= 4 * (uint32_t)w.width;
+#if RAST__ACC_COMPACT
+    if (!counted) rast__cov_radix_sort(w.order, w.tmp, w.key, n);
+    w.e = rast__acc_sorted(&w, e, in, counted ? (uint32_t *)(void *)w.cover : NULL, nkeys);
+#else
+    if (counted)
         rast__cov_count_sort(w.order, (uint32_t *)(void *)w.cover, w.key, n, nkeys);
     else
         rast__cov_radix_sort(w.order, w.tmp, w.key, n);
-#if RAST__ACC_COMPACT
-    w.e = rast__acc_sorted(&w, e, in);
-#else
     w.e = e;
 #endif
     rast__cov_zero_rows(o, o->clip.y0, w.ja);

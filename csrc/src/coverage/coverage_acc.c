@@ -411,14 +411,16 @@ RAST__HOT void rast__acc_cols_in(rast__acc *a, rast__aedge *e, int64_t off, int6
                                  int64_t ca, int64_t cb, int right)
 {
     const uint64_t fm = QT - 1, neg = e->dir < 0 ? ~(uint64_t)0 : 0;
-    const uint32_t adx = (uint32_t)(e->dx < 0 ? -e->dx : e->dx), qtsr = e->qtsr;
-    const int64_t qts = e->qts, x0 = a->x0;
-    const uint64_t d0 = (((uint64_t)qts << 20) ^ neg) - neg, d1 = d0 + ((((uint64_t)1 << 20) ^ neg) - neg);
-    uint64_t *acc = a->acc, f = (uint64_t)xa & fm, t, prev = 0, sum = 0;
-    int64_t qt, col;
-    uint32_t qtr;
-    const int64_t X = ca + (int64_t)right + x0; /* the first vertical crossed */
-    if (e->qX != X) rast__acc_t_first(e, X, a);
+    const uint32_t adx = (uint32_t)(e->dx < 0 ? -e->dx : e->dx);
+    const int64_t x0 = a->x0, X = ca + (int64_t)right + x0; /* the first vertical crossed */
+    uint64_t *acc = a->acc, f = (uint64_t)xa & fm, t, prev = 0, sum = 0, d0, d1;
+    int64_t qt, col, qts;
+    uint32_t qtr, qtsr;
+    if (e->qX != X) rast__acc_t_first(e, X, a); /* (the column step with it, the first time) */
+    qtsr = e->qtsr;
+    qts = e->qts;
+    d0 = (((uint64_t)qts << 20) ^ neg) - neg;
+    d1 = d0 + ((((uint64_t)1 << 20) ^ neg) - neg);
     qt = e->qt - off;
     qtr = e->qtr;
     /* the first column's piece, to the first vertical; then each whole
@@ -2441,14 +2443,14 @@ static void rast__acc_prep(rast__acc_walk *w, const rast__acc_thin *t, uint32_t 
     *rows = rs;
 }
 
-/* The walk's record of the edge t: its quick steps (rast__cov_qsteps),
- * its steppers not set. */
+/* The walk's record of the edge t, its steppers not set, nor their steps
+ * (made when the steppers are first set: rast__acc_top_set, rast__acc_top1,
+ * rast__acc_t_first). */
 static inline void rast__acc_make(rast__aedge *c, const rast__acc_thin *t)
 {
     const int32_t xt = t->xt, yt = t->yt, dx = t->dx, dy = t->dy, dir = t->dir;
-    rast__cov_qsteps(dx, dy, &c->qts, &c->qtsr, &c->qxs, &c->qxsr);
-    c->qx = c->qt = 0;
-    c->qxr = c->qtr = 0;
+    c->qx = c->qt = c->qxs = c->qts = 0;
+    c->qxr = c->qtr = c->qxsr = c->qtsr = 0;
     c->xt = xt;
     c->yt = yt;
     c->dx = dx;

@@ -64,9 +64,11 @@
  * a record chosen through the row's list of indices, and a line of text
  * of 31,000 edges (10 MB) waited on memory for them (16% of the walk's
  * time on one load, issue 33).  So the walk has its own record of just
- * those fields, 80 bytes, built once (rast__acc_compact) into the edges'
- * room in the order the rows take the edges (by first row): the walk
- * reads them in order, a stream.  The exact rows, rare, rebuild the
+ * those fields, 80 bytes, made once (rast__acc_sorted, from the 20-byte
+ * rast__acc_thin records that "accumulate" reads straight from the
+ * vertices, rast__cov_acc_points) into the edges' room in the order the
+ * rows take the edges (by first row): the walk reads them in order, a
+ * stream.  The exact rows, rare, rebuild the
  * rast__cedge records of their edges (rast__acc_exact).  Size-optimised
  * builds keep the edges' records: rast__aedge is rast__cedge there (the
  * same field names: the same code reads either). */

@@ -64,9 +64,11 @@
  * a record chosen through the row's list of indices, and a line of text
  * of 31,000 edges (10 MB) waited on memory for them (16% of the walk's
  * time on one load, issue 33).  So the walk has its own record of just
- * those fields, 80 bytes, built once (rast__acc_compact) into the edges'
- * room in the order the rows take the edges (by first row): the walk
- * reads them in order, a stream.  The exact rows, rare, rebuild the
+ * those fields, 80 bytes, made once (rast__acc_sorted, from the 20-byte
+ * rast__acc_thin records that "accumulate" reads straight from the
+ * vertices, rast__cov_acc_points) into the edges' room in the order the
+ * rows take the edges (by first row): the walk reads them in order, a
+ * stream.  The exact rows, rare, rebuild the
  * rast__cedge records of their edges (rast__acc_exact).  Size-optimised
  * builds keep the edges' records: rast__aedge is rast__cedge there (the
  * same field names: the same code reads either). */
@@ -80,9 +82,20 @@ typedef struct rast__aedge {
     int32_t qrow, qX, dir, spare; /* qrow, qX: INT32_MIN, not set */
 } rast__aedge;
 typedef int32_t rast__acc_col_t; /* (the type of qX) */
+/* An edge as the walk's records are made from it: 20 bytes (a
+ * rast__cedge's first lines were written for every edge, 336 bytes
+ * apart, then read again: a tenth of the paragraph's time, issue 34).
+ * "accumulate" writes these straight from the vertices
+ * (rast__cov_acc_points); the edges' records other engines hand over
+ * become these in place (rast__acc_thin_of). */
+typedef struct rast__acc_thin {
+    int32_t xt, yt, dx, dy, dir;
+} rast__acc_thin;
+typedef rast__acc_thin rast__acc_in; /* (the records the call's first passes read) */
 #else
 #define RAST__ACC_COMPACT 0
 typedef rast__cedge rast__aedge;
+typedef rast__cedge rast__acc_in;
 typedef int64_t rast__acc_col_t;
 #endif
 
@@ -400,14 +413,16 @@ RAST__HOT void rast__acc_cols_in(rast__acc *a, rast__aedge *e, int64_t off, int6
                                  int64_t ca, int64_t cb, int right)
 {
     const uint64_t fm = QT - 1, neg = e->dir < 0 ? ~(uint64_t)0 : 0;
-    const uint32_t adx = (uint32_t)(e->dx < 0 ? -e->dx : e->dx), qtsr = e->qtsr;
-    const int64_t qts = e->qts, x0 = a->x0;
-    const uint64_t d0 = (((uint64_t)qts << 20) ^ neg) - neg, d1 = d0 + ((((uint64_t)1 << 20) ^ neg) - neg);
-    uint64_t *acc = a->acc, f = (uint64_t)xa & fm, t, prev = 0, sum = 0;
-    int64_t qt, col;
-    uint32_t qtr;
-    const int64_t X = ca + (int64_t)right + x0; /* the first vertical crossed */
-    if (e->qX != X) rast__acc_t_first(e, X, a);
+    const uint32_t adx = (uint32_t)(e->dx < 0 ? -e->dx : e->dx);
+    const int64_t x0 = a->x0, X = ca + (int64_t)right + x0; /* the first vertical crossed */
+    uint64_t *acc = a->acc, f = (uint64_t)xa & fm, t, prev = 0, sum = 0, d0, d1;
+    int64_t qt, col, qts;
+    uint32_t qtr, qtsr;
+    if (e->qX != X) rast__acc_t_first(e, X, a); /* (the column step with it, the first time) */
+    qtsr = e->qtsr;
+    qts = e->qts;
+    d0 = (((uint64_t)qts << 20) ^ neg) - neg;
+    d1 = d0 + ((((uint64_t)1 << 20) ^ neg) - neg);
     qt = e->qt - off;
     qtr = e->qtr;
     /* the first column's piece, to the first vertical; then each whole
@@ -1011,6 +1026,16 @@ RAST__HOT uint32_t rast__acc_levels24(uint32_t *restrict z, unsigned char *restr
                 _mm_storeu_si128((__m128i *)(void *)(z + 12), _mm_setzero_si128());
             }
             _mm_storeu_si128((__m128i *)(void *)row, _mm_packus_epi16(_mm_packs_epi32(y0, y1), _mm_packs_epi32(y2, y3)));
+        }
+        /* (then 4 at a time: the rows of a small shape, 7 pixels on the
+         * mean in the loop family, had all theirs one at a time, ~20
+         * instructions each) */
+        for (; n >= 4; n -= 4, z += 4, row += 4) {
+            const int32_t b4 = _mm_cvtsi128_si32(_mm_packus_epi16(
+                _mm_packs_epi32(rast__acc_lanes(z, vw, vlim, &below, &above, rule), _mm_setzero_si128()),
+                _mm_setzero_si128()));
+            if (clear) _mm_storeu_si128((__m128i *)(void *)z, _mm_setzero_si128());
+            memcpy(row, &b4, 4);
         }
         bad |= (uint32_t)_mm_movemask_epi8(_mm_or_si128(_mm_srai_epi32(below, 31), above));
     }
@@ -2177,7 +2202,7 @@ RAST__APART void rast__acc_by_bands(const rast__acc_walk *w, rast__acc *v)
  * number is 0, and right of them too: each ring is closed, so the
  * directions of the edges that a line from there to the right crosses
  * sum to 0. */
-static void rast__acc_cols_reached(const rast__cedge *e, uint32_t n, int32_t p, int64_t *c0, int64_t *c1)
+static void rast__acc_cols_reached(const rast__acc_in *e, uint32_t n, int32_t p, int64_t *c0, int64_t *c1)
 {
     int64_t lo = e[0].xt, hi = e[0].xt;
     uint32_t i;
@@ -2200,11 +2225,17 @@ static void rast__acc_cols_reached(const rast__cedge *e, uint32_t n, int32_t p, 
  * columns get 0 in the rows [ja, jb) the edges reach, here; a painter is
  * handed the same runs (the columns left out hold 0: no run crosses
  * them). */
-static rast_status rast__acc_narrow(rast__cedge *e, uint32_t n, int32_t s, rast_fill_rule rule,
+static rast_status rast__acc_narrow(rast__acc_in *e, uint32_t n, int32_t s, rast_fill_rule rule,
                                     const rast__cov_out *o, rast__arena *arena, int32_t x0, int32_t x1);
-/* The accumulation of the n > 0 edges into o, every column of its clip. */
-static rast_status rast__acc_walk_all(rast__cedge *e, uint32_t n, int32_t s, rast_fill_rule rule,
+/* The accumulation of the n > 0 edges into o, every column of its clip;
+ * e[] at the start of the edges' room (n rast__cedge). */
+static rast_status rast__acc_walk_all(rast__acc_in *e, uint32_t n, int32_t s, rast_fill_rule rule,
                                       const rast__cov_out *o, rast__arena *arena);
+
+/* rast__cov_acc of the edges e[] (rast__acc_in: at the start of the
+ * edges' room, n rast__cedge). */
+static rast_status rast__acc_go(rast__acc_in *e, uint32_t n, int32_t s, rast_fill_rule rule,
+                                const rast__cov_out *o, rast__arena *arena);
 
 /* The probes a hash lookup takes at most (rast__acc_cancel): past them
  * an edge is neither cancelled nor kept for another to cancel, so that no
@@ -2223,7 +2254,7 @@ static rast_status rast__acc_walk_all(rast__cedge *e, uint32_t n, int32_t s, ras
  * edges that go are replaced by the last ones (the order does not
  * matter: the sums are the same in any order); returns how many are
  * left.  With no room for the table nothing goes. */
-static uint32_t rast__acc_cancel(rast__cedge *e, uint32_t n, rast__arena room)
+static uint32_t rast__acc_cancel(rast__acc_in *e, uint32_t n, rast__arena room)
 {
     uint32_t size = 16, i, h, probe, gone = 0;
     int32_t *slot, k;
@@ -2232,7 +2263,7 @@ static uint32_t rast__acc_cancel(rast__cedge *e, uint32_t n, rast__arena room)
     if (n < 2 || !slot) return n;
     for (i = 0; i < size; i++) slot[i] = -1; /* (-1 empty, -2 cancelled) */
     for (i = 0; i < n; i++) {
-        rast__cedge *x = &e[i];
+        rast__acc_in *x = &e[i];
         h = (uint32_t)x->xt * 0x9E3779B1u + (uint32_t)x->yt * 0x85EBCA77u + (uint32_t)x->dx * 0xC2B2AE3Du +
             (uint32_t)x->dy * 0x27D4EB2Fu;
         h ^= h >> 15;
@@ -2262,14 +2293,81 @@ static uint32_t rast__acc_cancel(rast__cedge *e, uint32_t n, rast__arena room)
     return n;
 }
 
+#if RAST__ACC_COMPACT
+/* The edges e[0..n) as the call's first passes read them: rast__acc_thin
+ * records, made in place at the start of their room (record i's 20 bytes
+ * meet only the rast__cedge records <= i, read before it). */
+static rast__acc_in *rast__acc_thin_of(rast__cedge *e, uint32_t n)
+{
+    unsigned char *const room = (unsigned char *)(void *)e;
+    uint32_t i;
+    for (i = 0; i < n; i++) {
+        rast__acc_thin t;
+        t.xt = e[i].xt;
+        t.yt = e[i].yt;
+        t.dx = e[i].dx;
+        t.dy = e[i].dy;
+        t.dir = e[i].dir;
+        memcpy(room + (size_t)i * sizeof t, &t, sizeof t); /* (memcpy: the rooms overlap) */
+    }
+    return (rast__acc_in *)(void *)e;
+}
+
+/* The edges of the ring pt[0..size) that are not horizontal, in
+ * rast__cov_edges_polygon's order, into t[]; returns how many. */
+static uint32_t rast__acc_thin_ring(const rast_point *pt, uint32_t size, rast__acc_thin *t)
+{
+    uint32_t i, n = 0;
+    rast_point a, b;
+    if (!size) return 0;
+    a = pt[0];
+    for (i = 0; i < size; i++) {
+        b = pt[i + 1 < size ? i + 1 : 0];
+        if (a.y != b.y) {
+            t[n].dir = rast__cov_edge_of(a, b, &t[n].xt, &t[n].yt, &t[n].dx, &t[n].dy);
+            n++;
+        }
+        a = b;
+    }
+    return n;
+}
+
+rast_status rast__cov_acc_points(const rast_polygon *poly, const rast_point *tris, uint32_t ntris, int shared,
+                                 int32_t s, rast_fill_rule rule, const rast__cov_out *o, rast__cedge *room,
+                                 rast__arena *arena)
+{
+    rast__acc_thin *const t = (rast__acc_thin *)(void *)room;
+    uint32_t n = 0, k, base;
+    if (tris) { /* (rast__cov_edges_triangles' edges) */
+        for (k = 0; k < ntris; k++) {
+            rast_point v[3];
+            if (rast__cov_tri(&tris[3 * k], v)) n += rast__acc_thin_ring(v, 3, t + n);
+        }
+    } else {
+        for (k = 0, base = 0; k < poly->nrings; base += poly->ring_sizes[k], k++)
+            n += rast__acc_thin_ring(poly->points + base, poly->ring_sizes[k], t + n);
+    }
+    return rast__acc_go(t, shared ? rast__acc_cancel(t, n, *arena) : n, s, rule, o, arena);
+}
+#else
+#define rast__acc_thin_of(e, n) (e)
+#endif
+
 rast_status rast__cov_acc_shared(rast__cedge *e, uint32_t n, int32_t s, rast_fill_rule rule,
                                  const rast__cov_out *o, rast__arena *arena)
 {
-    return rast__cov_acc(e, rast__acc_cancel(e, n, *arena), s, rule, o, arena);
+    rast__acc_in *const in = rast__acc_thin_of(e, n);
+    return rast__acc_go(in, rast__acc_cancel(in, n, *arena), s, rule, o, arena);
 }
 
 rast_status rast__cov_acc(rast__cedge *e, uint32_t n, int32_t s, rast_fill_rule rule,
                           const rast__cov_out *o, rast__arena *arena)
+{
+    return rast__acc_go(rast__acc_thin_of(e, n), n, s, rule, o, arena);
+}
+
+static rast_status rast__acc_go(rast__acc_in *e, uint32_t n, int32_t s, rast_fill_rule rule,
+                                const rast__cov_out *o, rast__arena *arena)
 {
     int64_t c0, c1;
     if (n == 0) {
@@ -2291,7 +2389,7 @@ rast_status rast__cov_acc(rast__cedge *e, uint32_t n, int32_t s, rast_fill_rule 
     return rast__acc_narrow(e, n, s, rule, o, arena, (int32_t)c0, (int32_t)c1);
 }
 
-static rast_status rast__acc_narrow(rast__cedge *e, uint32_t n, int32_t s, rast_fill_rule rule,
+static rast_status rast__acc_narrow(rast__acc_in *e, uint32_t n, int32_t s, rast_fill_rule rule,
                                     const rast__cov_out *o, rast__arena *arena, int32_t x0, int32_t x1)
 {
     static const int32_t size[3] = {1, 2, 8};
@@ -2313,47 +2411,35 @@ static rast_status rast__acc_narrow(rast__cedge *e, uint32_t n, int32_t s, rast_
 }
 
 #if RAST__ACC_COMPACT
-typedef char rast__acc_rooms[sizeof(rast__cedge) >= 2 * sizeof(rast__aedge) ? 1 : -1];
+/* (the walk's records go at the end of the edges' room, past its first
+ * n rast__acc_thin, and leave room for as many rast__cedge before them
+ * as they are: rast__acc_exact's) */
+typedef char rast__acc_rooms[sizeof(rast__cedge) >= 2 * sizeof(rast__aedge) &&
+                                     sizeof(rast__cedge) - sizeof(rast__aedge) >= sizeof(rast__acc_thin)
+                                 ? 1
+                                 : -1];
 
-/* One pass over the edges e[0..n) (w->n), the only one that reads their
- * records (rast__cov_rows' and the rows' keys' passes, made one: each
- * pass over 336-byte records read their lines from memory again): each
- * edge's walk record (rast__aedge) with its quick steps (rast__cov_qsteps,
- * its steppers not set) made in place, in the edges' order (record i's
- * room meets only the edges <= i, read before it); order[i] = i; the rows
- * [ja, jb) the edges reach (rast__cov_rows_reached); each edge's first row
- * from ja, key[] (0 above ja), its last row last[]; *nkeys the greatest
- * key + 1, *rows the edges' rows in all.  floor(y / P) by
- * rast__acc_floorp's shift, S = s. */
-static void rast__acc_prep(rast__acc_walk *w, const rast__cedge *e, uint32_t *nkeys, uint64_t *rows)
+/* One pass over the edges t[0..n) (w->n, rast__acc_thin, 20 bytes each,
+ * in a stream): order[i] = i; the rows [ja, jb) the edges reach
+ * (rast__cov_rows_reached); each edge's first row from ja, key[] (0 above
+ * ja), its last row last[]; *nkeys the greatest key + 1, *rows the edges'
+ * rows in all.  floor(y / P) by rast__acc_floorp's shift, S = s.  (The
+ * records, and their divisions, are rast__acc_sorted's.) */
+static void rast__acc_prep(rast__acc_walk *w, const rast__acc_thin *t, uint32_t *nkeys, uint64_t *rows)
 {
     const uint32_t n = w->n;
     const int32_t s = w->s;
     const int64_t bias = (int64_t)1 << (62 - s);
-    unsigned char *const room = (unsigned char *)(void *)w->fat;
     int32_t *const order = w->order, *const key = w->key, *const last = w->last;
-    int64_t ymin = e[0].yt, ymax = (int64_t)e[0].yt + e[0].dy, ja;
+    int64_t ymin = t[0].yt, ymax = (int64_t)t[0].yt + t[0].dy, ja;
     uint32_t i, nk = 0;
     uint64_t rs = 0;
-    rast__aedge c;
-    c.qx = c.qt = 0;
-    c.qxr = c.qtr = 0;
-    c.qrow = c.qX = INT32_MIN;
-    c.spare = 0;
     for (i = 0; i < n; i++) {
-        int64_t yb;
-        c.xt = e[i].xt;
-        c.yt = e[i].yt;
-        c.dx = e[i].dx;
-        c.dy = e[i].dy;
-        c.dir = e[i].dir;
-        rast__cov_qsteps(c.dx, c.dy, &c.qts, &c.qtsr, &c.qxs, &c.qxsr);
-        memcpy(room + (size_t)i * sizeof c, &c, sizeof c); /* (memcpy: the rooms overlap, whatever the types) */
+        const int64_t yt = t[i].yt, yb = yt + t[i].dy;
         order[i] = (int32_t)i;
-        yb = (int64_t)c.yt + c.dy;
-        ymin = c.yt < ymin ? c.yt : ymin;
+        ymin = yt < ymin ? yt : ymin;
         ymax = yb > ymax ? yb : ymax;
-        key[i] = (int32_t)((int64_t)(((uint64_t)(int64_t)c.yt + ((uint64_t)1 << 62)) >> s) - bias);
+        key[i] = (int32_t)((int64_t)(((uint64_t)yt + ((uint64_t)1 << 62)) >> s) - bias);
         last[i] = (int32_t)(-((int64_t)(((uint64_t)-yb + ((uint64_t)1 << 62)) >> s) - bias) - 1);
     }
     rast__cov_rows_reached(ymin, ymax, (int32_t)1 << s, w->o, &w->ja, &w->jb);
@@ -2369,26 +2455,66 @@ static void rast__acc_prep(rast__acc_walk *w, const rast__cedge *e, uint32_t *nk
     *rows = rs;
 }
 
-/* The walk's records (rast__acc_prep's, at the start of the edges' room)
- * in the rows' order w->order (by first row, stably), copied to the end
- * of the room (past the first n records: no overlap), key[] and last[]
- * put in that order too, and order[] becomes 0 .. n - 1 (the walk's
- * arrays swapped: no copy).  Returns the records; w->cap: how many
- * rast__cedge the room before them takes (rast__acc_exact's). */
-static rast__aedge *rast__acc_sorted(rast__acc_walk *w, rast__cedge *e)
+/* The walk's record of the edge t, its steppers not set, nor their steps
+ * (made when the steppers are first set: rast__acc_top_set, rast__acc_top1,
+ * rast__acc_t_first). */
+static inline void rast__acc_make(rast__aedge *c, const rast__acc_thin *t)
+{
+    const int32_t xt = t->xt, yt = t->yt, dx = t->dx, dy = t->dy, dir = t->dir;
+    c->qx = c->qt = c->qxs = c->qts = 0;
+    c->qxr = c->qtr = c->qxsr = c->qtsr = 0;
+    c->xt = xt;
+    c->yt = yt;
+    c->dx = dx;
+    c->dy = dy;
+    c->qrow = c->qX = INT32_MIN;
+    c->dir = dir;
+    c->spare = 0;
+}
+
+/* The walk's records (rast__aedge, rast__acc_make's) of the edges t[]
+ * (rast__acc_prep's, at the start of the edges' room e) in the rows'
+ * order (by first row, stably), at the end of the room (past the first n
+ * rast__aedge: no overlap with t[]); key[] and last[] put in that order
+ * too, and order[] becomes 0 .. n - 1 (the walk's arrays swapped: no
+ * copy).  With counts (cnt[0..nkeys), room, when the rows are few for the
+ * edges: see rast__acc_walk_all), t[] is read in a stream and each record
+ * written to its row's next slot, a counting sort's placing pass (the
+ * records read through order[] at random, then written in order, took a
+ * fifth of the paragraph's time, issue 34); else by w->order (a radix
+ * sort's).  Returns the records; w->cap: how many rast__cedge the room
+ * before them takes (rast__acc_exact's). */
+static rast__aedge *rast__acc_sorted(rast__acc_walk *w, rast__cedge *e, const rast__acc_thin *t, uint32_t *cnt,
+                                     uint32_t nkeys)
 {
     const uint32_t n = w->n;
-    const unsigned char *const room = (const unsigned char *)(void *)e;
     const size_t off = (size_t)n * (sizeof(rast__cedge) - sizeof(rast__aedge));
     rast__aedge *const ce = (rast__aedge *)(void *)((unsigned char *)(void *)e + off);
     int32_t *const order = w->order, *const key = w->key, *const last = w->last, *const ks = w->tmp;
-    uint32_t i;
+    uint32_t i, sum = 0;
     (void)sizeof(rast__acc_rooms);
-    for (i = 0; i < n; i++) {
-        const int32_t k = order[i];
-        memcpy(&ce[i], room + (size_t)k * sizeof(rast__aedge), sizeof(rast__aedge));
-        ks[i] = key[k];
-        order[i] = last[k];
+    if (cnt) {
+        for (i = 0; i < nkeys; i++) cnt[i] = 0;
+        for (i = 0; i < n; i++) cnt[key[i]]++;
+        for (i = 0; i < nkeys; i++) {
+            const uint32_t c = cnt[i];
+            cnt[i] = sum;
+            sum += c;
+        }
+        for (i = 0; i < n; i++) { /* (order[] is free: the last rows go there) */
+            const int32_t k = key[i];
+            const uint32_t at = cnt[k]++;
+            rast__acc_make(&ce[at], &t[i]);
+            ks[at] = k;
+            order[at] = last[i];
+        }
+    } else {
+        for (i = 0; i < n; i++) {
+            const int32_t k = order[i];
+            rast__acc_make(&ce[i], &t[k]);
+            ks[i] = key[k];
+            order[i] = last[k];
+        }
     }
     w->tmp = key;
     w->key = ks;
@@ -2400,14 +2526,20 @@ static rast__aedge *rast__acc_sorted(rast__acc_walk *w, rast__cedge *e)
 }
 #endif
 
-static rast_status rast__acc_walk_all(rast__cedge *e, uint32_t n, int32_t s, rast_fill_rule rule,
+static rast_status rast__acc_walk_all(rast__acc_in *in, uint32_t n, int32_t s, rast_fill_rule rule,
                                       const rast__cov_out *o, rast__arena *arena)
 {
+#if RAST__ACC_COMPACT
+    rast__cedge *const e = (rast__cedge *)(void *)in; /* (the edges' room) */
+#else
+    rast__cedge *const e = in;
+#endif
     rast__acc_walk w;
     rast__acc v[RAST__ACC_BAND];
     uint64_t *cells, *bandbits, rows = 0; /* (the edges' rows, in all) */
     uint32_t i, nkeys = 0; /* (the greatest key + 1) */
     int32_t r, k, band;
+    int counted; /* (the order by counts of the rows, not a radix sort) */
     w.n = n;
     w.s = s;
 #if RAST__ACC_COMPACT
@@ -2445,7 +2577,7 @@ static rast_status rast__acc_walk_all(rast__cedge *e, uint32_t n, int32_t s, ras
         return RAST_OK;
     }
 #if RAST__ACC_COMPACT
-    rast__acc_prep(&w, e, &nkeys, &rows);
+    rast__acc_prep(&w, in, &nkeys, &rows);
 #else
     rast__cov_rows(e, n, v[0].p, w.order, o, &w.ja, &w.jb, 1); /* (the exact steps when needed) */
     {
@@ -2471,13 +2603,15 @@ static rast_status rast__acc_walk_all(rast__cedge *e, uint32_t n, int32_t s, ras
      * sort takes two passes over the edges past 256 rows, and clears and
      * sums 256 counts a pass): the counts in cover[], free until the walk
      * (4 width of them), the same order either way (both stable). */
-    if (n >= 24 && nkeys < n + 512 && nkeys <= 4 * (uint32_t)w.width)
+    counted = n >= 24 && nkeys < n + 512 && nkeys <= 4 * (uint32_t)w.width;
+#if RAST__ACC_COMPACT
+    if (!counted) rast__cov_radix_sort(w.order, w.tmp, w.key, n);
+    w.e = rast__acc_sorted(&w, e, in, counted ? (uint32_t *)(void *)w.cover : NULL, nkeys);
+#else
+    if (counted)
         rast__cov_count_sort(w.order, (uint32_t *)(void *)w.cover, w.key, n, nkeys);
     else
         rast__cov_radix_sort(w.order, w.tmp, w.key, n);
-#if RAST__ACC_COMPACT
-    w.e = rast__acc_sorted(&w, e);
-#else
     w.e = e;
 #endif
     rast__cov_zero_rows(o, o->clip.y0, w.ja);

@@ -23,8 +23,14 @@ static void RAST__ACC_N(rast__acc_t_first)(RAST__ACC_E *e, int64_t X, const rast
     rast__cov_qt_first(e, X, a->p, a->hq);
 }
 #else
+/* (The walk's records get their quick steps when their steppers are first
+ * set, not when they are made: an edge in one row, most of a line of
+ * text's, steps neither from row to row nor, in one column, from column
+ * to column, and its two divisions were a tenth of the paragraph's time.
+ * qrow, qX INT32_MIN: the stepper never set, its step not made.) */
 RAST__APART void RAST__ACC_N(rast__acc_top_set)(RAST__ACC_E *e, int32_t j, const rast__acc *a)
 {
+    if (e->qrow == INT32_MIN) rast__cov_qxstep(e->dx, e->dy, &e->qxs, &e->qxsr);
     rast__cov_qx_at(e->xt, e->yt, e->dx, e->dy, j, a->p, a->hq, &e->qx, &e->qxr);
     e->qrow = j;
 }
@@ -42,6 +48,7 @@ static inline int64_t RAST__ACC_N(rast__acc_top)(RAST__ACC_E *e, int32_t j, cons
 
 static void RAST__ACC_N(rast__acc_t_first)(RAST__ACC_E *e, int64_t X, const rast__acc *a)
 {
+    if (e->qX == INT32_MIN) rast__cov_qtstep(e->dx, e->dy, &e->qts, &e->qtsr);
     rast__cov_qt_at(e->xt, e->dx, e->dy, X, a->p, a->hq, &e->qt, &e->qtr);
     e->qX = (RAST__ACC_COL)X;
 }
@@ -58,6 +65,9 @@ static inline int64_t RAST__ACC_N(rast__acc_top1)(RAST__ACC_E *e, int32_t j1, co
     const uint64_t d = (uint64_t)((int64_t)j1 * a->p - e->yt), dy = (uint64_t)e->dy;
     const uint64_t n = (uint64_t)(e->dx < 0 ? -(int64_t)e->dx : e->dx) * d << a->hq, q = n / dy, r = n % dy;
     const int64_t x = (int64_t)e->xt * ((int64_t)1 << a->hq);
+#if !RAST__ACC_FAT
+    if (e->qrow == INT32_MIN) rast__cov_qxstep(e->dx, e->dy, &e->qxs, &e->qxsr); /* (rast__acc_top_set's) */
+#endif
     if (e->dx >= 0) {
         e->qx = x + (int64_t)q;
         e->qxr = (uint32_t)r;

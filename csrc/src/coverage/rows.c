@@ -95,8 +95,7 @@ uint32_t rast__cov_edges_polygon(const rast_polygon *poly, rast__cedge *e)
                 rast__cedge *ed = &e[n];
                 /* the ring's edges before a and after b horizontal (or empty)? */
                 const int32_t ha = yp == a.y, hb = c.y == b.y;
-                rast_point ta = a, tb = b;
-                ed->dir = 1;
+                ed->dir = rast__cov_edge_of(a, b, &ed->xt, &ed->yt, &ed->dx, &ed->dy);
                 ed->hz = (ha ? RAST__HZ_TOP : 0) | (hb ? RAST__HZ_BOTTOM : 0);
                 if (hb) { /* the horizontal run after b: its abscissae */
                     uint32_t q = i2;
@@ -110,16 +109,8 @@ uint32_t rast__cov_edges_polygon(const rast_polygon *poly, rast__cedge *e)
                         if (pt[q].y != b.y) break;
                     }
                 }
-                if (a.y > b.y) {
-                    ta = b;
-                    tb = a;
-                    ed->dir = -1;
+                if (ed->dir < 0)
                     ed->hz = (ed->hz & RAST__HZ_RUN) | (hb ? RAST__HZ_TOP : 0) | (ha ? RAST__HZ_BOTTOM : 0);
-                }
-                ed->xt = ta.x;
-                ed->yt = ta.y;
-                ed->dx = tb.x - ta.x;
-                ed->dy = tb.y - ta.y;
                 n++;
             }
             yp = a.y;

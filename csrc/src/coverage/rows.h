@@ -130,6 +130,22 @@ static inline int32_t rast__run_y(const rast__cedge *e)
     return e->dir > 0 ? e->yt + e->dy : e->yt;
 }
 
+/* The edge from vertex a to vertex b (a.y != b.y), top end first: from
+ * (*xt, *yt) by (*dx, *dy > 0); returns its direction, +1 when a is its
+ * top (rast__cov_edges_polygon's, and "accumulate"'s own records,
+ * coverage_acc.c). */
+static inline int32_t rast__cov_edge_of(rast_point a, rast_point b, int32_t *xt, int32_t *yt, int32_t *dx,
+                                        int32_t *dy)
+{
+    const int down = a.y < b.y;
+    const rast_point ta = down ? a : b, tb = down ? b : a;
+    *xt = ta.x;
+    *yt = ta.y;
+    *dx = tb.x - ta.x;
+    *dy = tb.y - ta.y;
+    return down ? 1 : -1;
+}
+
 /* The edges of a polygon's rings (rule: the caller's) or of a triangle
  * batch (each triangle turned to one orientation, so that the non-zero
  * rule gives the union) into e[] (room for every vertex); returns how many
@@ -148,16 +164,22 @@ static inline void rast__cov_qxstep(int32_t dx, int32_t dy, int64_t *qxs, uint32
     *qxsr = (uint32_t)rr;
 }
 
-/* Both quick steps of the edge by (dx, dy > 0): per column dy 2^30 /
- * |dx| (by one division; 0 for a vertical edge), *qts + *qtsr/|dx|; per
- * row rast__cov_qxstep's (rast__cov_rows' quick way). */
-static inline void rast__cov_qsteps(int32_t dx, int32_t dy, int64_t *qts, uint32_t *qtsr, int64_t *qxs,
-                                    uint32_t *qxsr)
+/* The quick column step of the edge by (dx, dy > 0): dy 2^30 / |dx| (by
+ * one division; 0 for a vertical edge), *qts + *qtsr/|dx|. */
+static inline void rast__cov_qtstep(int32_t dx, int32_t dy, int64_t *qts, uint32_t *qtsr)
 {
     const uint64_t adx = (uint64_t)(dx < 0 ? -(int64_t)dx : dx);
     const uint64_t a = (uint64_t)dy << 30;
     *qts = (int64_t)(adx ? a / adx : 0);
     *qtsr = (uint32_t)(adx ? a % adx : 0);
+}
+
+/* Both quick steps of the edge by (dx, dy > 0): rast__cov_qtstep's per
+ * column, rast__cov_qxstep's per row (rast__cov_rows' quick way). */
+static inline void rast__cov_qsteps(int32_t dx, int32_t dy, int64_t *qts, uint32_t *qtsr, int64_t *qxs,
+                                    uint32_t *qxsr)
+{
+    rast__cov_qtstep(dx, dy, qts, qtsr);
     rast__cov_qxstep(dx, dy, qxs, qxsr);
 }
 /* The quick row stepper's step from a row's top to the next: qx + qxr/dy

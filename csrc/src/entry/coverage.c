@@ -228,6 +228,12 @@ static int rast__cov_convex(const rast_polygon *poly)
 #define RAST__COV_AREA_MARKED(e, n, s, rule, o, arena) RAST_OK
 #endif
 
+/* Does "accumulate" drop the shared sides first (rast__cov_acc_shared)?
+ * For a triangle batch, and a polygon of 16 rings or more of 8 vertices
+ * or fewer on the mean (a mesh's). */
+#define RAST__COV_SHARED(poly, tris, npoints) \
+    ((tris) || ((poly)->nrings >= 16 && (uint64_t)(poly)->nrings * 8 >= (npoints)))
+
 static rast_status rast__cov_run(const rast_polygon *poly, const rast_point *tris, uint32_t ntris,
                                  uint32_t npoints, const rast_coverage_opts *opts,
                                  const rast__cov_out *o, void *scratch, size_t scratch_bytes)
@@ -244,6 +250,13 @@ static rast_status rast__cov_run(const rast_polygon *poly, const rast_point *tri
         uint32_t n;
         int parts = 0; /* rast__cov_plain_parts' answer, when asked */
         if (npoints && !e) return RAST_E_SCRATCH;
+#if !defined(__OPTIMIZE_SIZE__)
+        /* "accumulate": its walk's records straight from the vertices
+         * (coverage_acc.c), the same edges and levels as below */
+        if (RAST__IS_ACC(opts->method) && rast__cov_acc_may(o, s))
+            return rast__cov_acc_points(poly, tris, ntris, RAST__COV_SHARED(poly, tris, npoints), s, rule, o, e,
+                                        &arena);
+#endif
         n = tris ? rast__cov_edges_triangles(tris, ntris, e) : rast__cov_edges_polygon(poly, e);
         /* a triangle batch's shared edges cancel in rast__cov_area's sweep
          * before any row; a polygon's accumulation goes to rast__cov_acc,
@@ -256,8 +269,7 @@ static rast_status rast__cov_run(const rast_polygon *poly, const rast_point *tri
                                                      : (parts = RAST__COV_PARTS(poly, npoints, arena, s, e, n)) > 0)))
             /* (16 rings or more of 8 vertices or fewer on the mean: a
              * mesh's, whose shared sides cancel first) */
-            return RAST__IS_ACC(opts->method) && poly->nrings >= 16 &&
-                           (uint64_t)poly->nrings * 8 >= npoints
+            return RAST__IS_ACC(opts->method) && RAST__COV_SHARED(poly, tris, npoints)
                        ? rast__cov_acc_shared(e, n, s, rule, o, &arena)
                        : rast__cov_acc(e, n, s, rule, o, &arena);
         /* a triangle batch's accumulation: its shared sides cancel first */

@@ -2525,17 +2525,15 @@ RAST__APART int rast__grp_few(rast__cells *c, rast__cedge *e, const int32_t *g, 
             else
                 hi = mid;
         }
-        for (k = lo; k < nr && klo[bl[k]] <= khi[id]; k++) { /* the narrow ones near it */
-            const int32_t fid = bl[k];
-            if (fid == id) continue;
-            if (khi[fid] <= klo[id]) wl -= e[fid].dir; /* in the sums: out */
-            rast__few_one(c, ed, id, &e[fid], fid, elo, ehi, t0, t1, Yj, &wl, key, &nk);
-        }
-        for (k = nr; k < m; k++) { /* the others */
+        for (k = lo; k < m; k++) { /* the narrow ones near it, then the others */
             const int32_t fid = bl[k];
             const rast__cedge *f = &e[fid];
+            if (k < nr && klo[fid] > khi[id]) {
+                k = nr - 1;
+                continue;
+            }
             if (fid == id) continue;
-            if ((int64_t)f->yt <= Yj && (int64_t)f->yt + f->dy >= Yj + c->p && khi[fid] <= klo[id])
+            if ((k < nr || ((int64_t)f->yt <= Yj && (int64_t)f->yt + f->dy >= Yj + c->p)) && khi[fid] <= klo[id])
                 wl -= f->dir; /* in the sums: out */
             rast__few_one(c, ed, id, f, fid, elo, ehi, t0, t1, Yj, &wl, key, &nk);
         }

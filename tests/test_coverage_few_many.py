@@ -16,9 +16,9 @@ build that prints rast__grp_few's calls, the seeds of test_w0_seeds took
 it with w = 0 in row 0 (7 live edges of 59), the wide line looked at
 alone, the others by the window.  Against the exact oracle of tests/oracle_coverage.py within the
 bound of rastrum.h.  (Blocks of more than 32 live edges, which the cap
-sent to the sweep, need some 300 edges: the oracle takes minutes there;
-bench/bench_crossings.py --counts 10000 has them, its image hashes
-unchanged.)"""
+sent to the sweep, need some 300 edges: the oracle takes minutes there.
+The 10,000 triangles of bench/bench_crossings.py have hundreds, and
+build/cbench_scale's image hash of that scene did not change.)"""
 
 import numpy as np
 from hypothesis import given, settings, strategies as st

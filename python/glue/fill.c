@@ -114,8 +114,9 @@ long rastpy_snap_points(const double *xy, size_t npoints, int s, int32_t *out)
 }
 
 /* 64-bit words of stack for a small polygon's points and scratch (half
- * each). */
-#define RASTPY_LOCAL_WORDS 512
+ * each): 4 KB of scratch holds the AET's for a few vertices and a clip of
+ * ~1,000 rows (the rows' counts), uncut (rastpy_poly). */
+#define RASTPY_LOCAL_WORDS 1024
 
 /* Pixels of a clip that rastpy_poly fills whole instead of cutting it to
  * the polygon's bounds first. */
@@ -205,13 +206,17 @@ static long rastpy_poly(const rast_target *target, const double *xy,
         b = c;
         st = RAST_OK;
     } else if (!shade && opts->algorithm == RAST_ALGO_AET && opts->boundary == RAST_BOUNDARY_EXACT &&
-               (uint64_t)npoints * 2 * RAST_AET_EDGE_BYTES >= ((uint64_t)(c.y1 - c.y0) + 1) * 4) {
+               ((uint64_t)npoints * 2 * RAST_AET_EDGE_BYTES >= ((uint64_t)(c.y1 - c.y0) + 1) * 4 ||
+                ((size_t)(c.y1 - c.y0) < half / RAST_AET_ROW_BYTES && /* (no overflow below) */
+                 RAST_AET_SCRATCH_BOUND(npoints, c.y1 - c.y0) <= half))) {
         /* The AET's scratch grows with the vertices (two edge records
          * each) and the clip's height (a count a row), never its width:
-         * when the rows' counts are no more than the records, nothing to
-         * cut, and the fill's own painter writes the background
-         * (rast_fill_bounds was a pass over every vertex, a twentieth of
-         * a paragraph of text's call). */
+         * when the rows' counts are no more than the records, or all of
+         * it fits the stack, nothing to cut, and the fill's own painter
+         * writes the background (rast_fill_bounds was a pass over every
+         * vertex, a twentieth of a paragraph of text's call, and with its
+         * checks a tenth of the C work of a tiny polygon's
+         * Canvas.fill_polygon). */
         b = c;
         st = RAST_OK;
     } else {

@@ -13,6 +13,9 @@
 #include "../base/aet.h"
 #include "../base/bits.h"
 #include "../painters/paint.h"
+#if !defined(__OPTIMIZE_SIZE__)
+#include "small.h"
+#endif
 #if defined(__SSE2__) && !defined(RAST_NO_SIMD) && !defined(__OPTIMIZE_SIZE__)
 #include <emmintrin.h> /* (integer vectors only: every x86-64 has them) */
 #define RAST__DELTA_SSE2 1
@@ -740,6 +743,50 @@ RAST__APART int rast__aet_sweep_bytes(rast__aet_tab *t, rast_fill_rule rule, ras
     return 1;
 }
 
+/* ---- a few vertices: edge by edge ------------------------------------------
+ * A polygon of a handful of vertices (a loop over small shapes, one call
+ * each: 4 to 8 vertices over a few rows) spent most of its fill on the
+ * AET's upkeep, not its pixels: grouping the table by row, joining,
+ * compacting, the sweep's set-up (~2,900 instructions a polygon of the
+ * "loop" family, bench/families.py).  The batch's small filler (small.h)
+ * walks each edge down its rows into per-row slots instead and forms the
+ * same runs (the AET's crossings to the bit, maximal runs in order); they
+ * go to the sink, or, when its painter has the fast kind (a gray8 fill,
+ * nothing but the run written), straight into the row.  When: at most
+ * RAST__AET_FEW vertices (a count known before filling; a bigger outline
+ * keeps the AET, whose steady rows cost less than a row's slots). */
+#ifndef RAST__AET_FEW
+#define RAST__AET_FEW 16
+#endif
+
+/* The walk's runs: [x0, x1) non-empty and within the clip's columns
+ * already (the walk clamps its crossings to them), so the fast kind
+ * writes it as it is. */
+static inline void rast__aet_few_span(void *user, uint32_t index, int32_t y, int32_t x0, int32_t x1)
+{
+    rast__sink *s = (rast__sink *)user;
+    (void)index;
+    if (s->direct)
+        rast__run8(s->direct + (ptrdiff_t)y * s->stride + x0, (size_t)(x1 - x0), (unsigned char)s->value,
+                   RAST__LANES_LO * (unsigned char)s->value);
+    else
+        rast__sink_span(s, y, x0, x1);
+}
+
+/* The walk's runs to the sink: 1, or 0 (nothing done) when the scratch
+ * is too small for it.  (Apart from rast__aet_fill_by: inlined there, it
+ * cost the winding deltas' setup loop a register, ~24,000 instructions of
+ * a paragraph of text's fill.) */
+RAST__APART int rast__aet_few(const rast_polygon *poly, uint32_t npoints, const rast__grid *g,
+                              rast_fill_rule rule, const rast_rect *clip, rast__sink *sink,
+                              rast__arena *arena)
+{
+    if (!rast__small_walk(poly, npoints, g, rule, clip, rast__aet_few_span, sink, 0, arena->p, arena->left))
+        return 0;
+    rast__sink_flush(sink);
+    return 1;
+}
+
 rast_status rast__aet_fill_by(const rast_polygon *poly, uint32_t npoints, const rast__grid *g,
                               rast_fill_rule rule, const rast_rect *clip, rast__sink *sink,
                               rast__arena *arena, int how)
@@ -747,6 +794,9 @@ rast_status rast__aet_fill_by(const rast_polygon *poly, uint32_t npoints, const 
     rast__aet_tab t;
     rast_status st = RAST_OK;
     size_t room = (size_t)npoints * sizeof(rast__edge);
+    if (how == RAST__AET_BY_RULE && npoints <= RAST__AET_FEW && clip->x1 - clip->x0 <= RAST_MAX_DIM &&
+        rast__aet_few(poly, npoints, g, rule, clip, sink, arena))
+        return RAST_OK;
     if (!(how == RAST__AET_BY_RULE && poly->nrings >= 2 &&
           npoints <= 8 * (uint64_t)poly->nrings &&
           rast__aet_cancel(poly, npoints, g, rule, clip, arena, &t, &room))) {

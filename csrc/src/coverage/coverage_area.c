@@ -3066,10 +3066,10 @@ rast_status rast__cov_area(rast__cedge *e, uint32_t n, int32_t s, rast_fill_rule
 #if RAST__SHORTCUTS
 /* ---- bands of plain rows ------------------------------------------------
  *
- * A polygon whose plain parts are marked (rast__cov_plain_parts: all but a
- * few plain, text with a glyph or two whose rings touch) has rows whose
- * edges are all marked: there the accumulation is the coverage (see
- * rast__cov_row_plain), and rast__cov_acc's walk of those rows costs less
+ * A polygon the edges of whose parts that are not plain are marked
+ * (rast__cov_parts_marked, RAST__HZ_BAD: all but a few plain, text with a
+ * glyph or two whose rings touch) has rows that no marked edge reaches:
+ * there the accumulation is the coverage (see rast__cov_row_plain), and rast__cov_acc's walk of those rows costs less
  * than "area"'s rows one at a time (text, 512 x 512: 17 M instructions
  * for the whole accumulation, 30 M for "area"'s rows).  So the rows go in
  * bands, each band with the edges that reach it: the bad bands (an
@@ -3089,6 +3089,15 @@ rast_status rast__cov_area(rast__cedge *e, uint32_t n, int32_t s, rast_fill_rule
 static int64_t rast__band_floor(int64_t y, int32_t s)
 {
     return (int64_t)(((uint64_t)y + ((uint64_t)1 << 62)) >> s) - ((int64_t)1 << (62 - s));
+}
+
+/* e[0..n)'s edges not marked RAST__HZ_BAD marked RAST__HZ_PLAIN, for
+ * rast__cov_area's rows */
+static void rast__band_mark(rast__cedge *e, uint32_t n)
+{
+    uint32_t i;
+    for (i = 0; i < n; i++)
+        if (!(e[i].hz & RAST__HZ_BAD)) e[i].hz |= RAST__HZ_PLAIN;
 }
 
 /* Rows of o in bands (see above): 1 when done (*st the status), 0 when
@@ -3125,7 +3134,7 @@ static int rast__cov_bands(rast__cedge *e, uint32_t n, int32_t s, rast_fill_rule
         key[i] = (int32_t)r0;
         span[r0]++;
         span[r1]--;
-        if (!(e[i].hz & RAST__HZ_PLAIN)) {
+        if (e[i].hz & RAST__HZ_BAD) {
             bad[r0]++;
             bad[r1 + 1]--;
         }
@@ -3189,6 +3198,7 @@ static int rast__cov_bands(rast__cedge *e, uint32_t n, int32_t s, rast_fill_rule
         ob.base = o->base + (ptrdiff_t)y[t] * o->stride;
         if (y[t] < y[t + 1]) {
             rast__arena a = arena;
+            if (t & 1) rast__band_mark(e + at[t], at[t + 1] - at[t]);
             *st = t & 1 ? rast__cov_area(e + at[t], at[t + 1] - at[t], s, rule, 0, &ob, &a)
                         : rast__cov_acc(e + at[t], at[t + 1] - at[t], s, rule, &ob, &a);
             if (*st != RAST_OK) return 1;
@@ -3205,6 +3215,7 @@ rast_status rast__cov_area_marked(rast__cedge *e, uint32_t n, int32_t s, rast_fi
 {
     rast_status st = RAST_OK;
     if (rast__cov_acc_may(o, s) && rast__cov_bands(e, n, s, rule, o, *arena, &st)) return st;
+    rast__band_mark(e, n);
     return rast__cov_area(e, n, s, rule, 0, o, arena);
 }
 #endif

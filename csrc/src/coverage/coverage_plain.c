@@ -557,16 +557,16 @@ int rast__cov_plain(const rast_polygon *poly, uint32_t npoints, rast__arena aren
  * accumulation of its edges there is the pixel's coverage.  When every part
  * is plain, so is every pixel: the polygon goes to the accumulation (text
  * set in lines whose glyphs' boxes meet nowhere: a paragraph); else the
- * edges of the plain parts are marked (RAST__HZ_PLAIN), and "area" takes
- * the rows all of whose edges are by the accumulation, in bands
+ * edges of the other parts are marked (RAST__HZ_BAD), and "area" takes
+ * the rows that none of them reaches by the accumulation, in bands
  * (rast__cov_area_marked, coverage_area.c).
- * Parts of a few rings each sort and sweep a few vertices at a time: the
+ * Parts of a few rings each are tested a few vertices at a time, by their
+ * chains (rast__pl_chains, below; else sorted and swept by edges): the
  * test's cost is about linear in the vertices (a paragraph of glyphs,
- * 75,051 vertices: its 477 parts 15.5 M instructions, 31 M before
- * rast__pl_pass lost its search; the whole polygon's sort and sweep took
- * 62 M).  The
- * rings' boxes come first, from their points; a part's vertices are read
- * only when it is tested. */
+ * 75,051 vertices: its 477 parts 8.5 M instructions, 15.5 M by edges and
+ * 31 M before rast__pl_pass lost its search; the whole polygon's sort and
+ * sweep took 62 M).  The rings' boxes come first, from their points; a
+ * part's vertices are read only when it is tested. */
 #define RAST__PL_PAIRS 4 /* box pairs tried per vertex (and 4,096): more, no parts */
 /* A part of more rings is taken as not plain, untested (a map's countries
  * share their borders: sorted for nothing) */
@@ -818,14 +818,26 @@ static uint32_t rast__pl_root(uint32_t *par, uint32_t r)
     return r;
 }
 
+/* The parts' test (above): 1 every part plain; -1 some, and the edges of
+ * the plain parts marked `mark` = RAST__HZ_PLAIN, or those of the others
+ * when `mark` is RAST__HZ_BAD; 0 none (nothing marked). */
+static int rast__pl_parts(const rast_polygon *poly, uint32_t npoints, rast__arena arena, int32_t sb,
+                          rast__cedge *e, uint32_t nedges, int32_t mark);
+
 int rast__cov_plain_parts(const rast_polygon *poly, uint32_t npoints, rast__arena arena, int32_t sb,
                           rast__cedge *e, uint32_t nedges)
 {
-    return rast__cov_parts_marked(poly, npoints, arena, sb, e, nedges) > 0;
+    return rast__pl_parts(poly, npoints, arena, sb, e, nedges, RAST__HZ_PLAIN) > 0;
 }
 
 int rast__cov_parts_marked(const rast_polygon *poly, uint32_t npoints, rast__arena arena, int32_t sb,
                            rast__cedge *e, uint32_t nedges)
+{
+    return rast__pl_parts(poly, npoints, arena, sb, e, nedges, RAST__HZ_BAD);
+}
+
+static int rast__pl_parts(const rast_polygon *poly, uint32_t npoints, rast__arena arena, int32_t sb,
+                          rast__cedge *e, uint32_t nedges, int32_t mark)
 {
     const int64_t lim = RAST_COORD_MAX, P = (int64_t)1 << sb;
     const uint32_t nr = poly->nrings;
@@ -957,6 +969,8 @@ int rast__cov_parts_marked(const rast_polygon *poly, uint32_t npoints, rast__are
         all &= ok;
     }
     if (all) return 1;
+    for (r = 0, b = 0; r < nr; r++) b |= nv[r]; /* (a plain part: else nothing marked) */
+    if (!b) return 0;
     for (r = 0, base = 0; r < nr; base += poly->ring_sizes[r], r++) { /* each ring's edges in e[] */
         const rast_point *p = poly->points + base;
         const uint32_t size = poly->ring_sizes[r];
@@ -964,9 +978,9 @@ int rast__cov_parts_marked(const rast_polygon *poly, uint32_t npoints, rast__are
         eb += ne[r];
     }
     if (eb != nedges) return 0; /* (rast__cov_edges_polygon's edges, ring by ring) */
-    for (r = 0, eb = 0, b = 0; r < nr; eb += ne[r], r++)
-        if (nv[r])
-            for (a = eb, b = 1; a < eb + ne[r]; a++) e[a].hz |= RAST__HZ_PLAIN;
-    return b ? -1 : 0;
+    for (r = 0, eb = 0; r < nr; eb += ne[r], r++)
+        if ((nv[r] != 0) == (mark == RAST__HZ_PLAIN))
+            for (a = eb; a < eb + ne[r]; a++) e[a].hz |= mark;
+    return -1;
 }
 #endif

@@ -695,13 +695,16 @@ static int rast__pl_chains(const rast_polygon *poly, const uint32_t *pfirst, con
         const rast_point *p = poly->points + pfirst[rg[g]];
         const uint32_t size = poly->ring_sizes[rg[g]], cb = nc;
         uint32_t n = 0, s = 0, v;
-        for (i = 0; i < size; i++) { /* its keys, an edge of length 0 dropped */
+        uint64_t last = size ? (uint64_t)(p[size - 1].x + lim + 1) << 32 | (uint64_t)(p[size - 1].y + lim + 1) : 0,
+                 least = UINT64_MAX;
+        for (i = 0; i < size; i++) { /* its keys, an edge of length 0 dropped (the vertex before it: last) */
             const uint64_t k = (uint64_t)(p[i].x + lim + 1) << 32 | (uint64_t)(p[i].y + lim + 1);
-            if (n == 0 || tk[n - 1] != k) tk[n++] = k;
+            if (k == last) continue;
+            s = k < least ? n : s;
+            least = k < least ? k : least;
+            tk[n++] = last = k;
         }
-        while (n > 1 && tk[n - 1] == tk[0]) n--;
         if (n < 3) return 0;
-        for (i = 1; i < n; i++) s = tk[i] < tk[s] ? i : s;
         v = s;
         seen[g] = 0;
         do { /* a chain up from v (the ring's way), then one down (stored up) */
@@ -740,7 +743,16 @@ static int rast__pl_chains(const rast_polygon *poly, const uint32_t *pfirst, con
         } while (v != s);
     }
     for (i = 0; i < ne; i++) eix[i] = i;
-    rast__pl_sort(ek, eix, etmp, erun, ne);
+    if (ne > 16) {
+        rast__pl_sort(ek, eix, etmp, erun, ne);
+    } else { /* (a few: in place) */
+        for (i = 1; i < ne; i++) {
+            const uint32_t x = eix[i];
+            uint32_t j = i;
+            for (; j > 0 && ek[eix[j - 1]] > ek[x]; j--) eix[j] = eix[j - 1];
+            eix[j] = x;
+        }
+    }
     w.na = 0;
     for (i = 0; i < ne; i++) {
         const uint32_t e = eix[i], a = ea[e], b = eb[e];

@@ -159,9 +159,11 @@ static int rast__cov_plain_pays(const rast_polygon *poly, int32_t s, uint32_t np
     for (k = 0, base = 0; k < poly->nrings; base += poly->ring_sizes[k], k++) {
         const rast_point *pt = poly->points + base;
         const uint32_t size = poly->ring_sizes[k];
-        for (i = 0; i < size; i++) { /* (an edge: two vertices of different ordinates) */
-            const int64_t a = pt[i].y, b = pt[i + 1 < size ? i + 1 : 0].y, lo = a < b ? a : b, hi = a < b ? b : a;
+        int64_t a = size ? pt[size - 1].y : 0;
+        for (i = 0; i < size; i++) { /* the edge from the vertex before (an edge: two ordinates) */
+            const int64_t b = pt[i].y, lo = a < b ? a : b, hi = a < b ? b : a;
             if (a != b) rows += (uint64_t)(((hi + off - 1) >> s) - ((lo + off) >> s) + 1);
+            a = b;
         }
     }
     return rows >= 6 * (uint64_t)npoints;

@@ -220,7 +220,10 @@ static int rast__cov_key_before(const rast__cedge *a, const rast__cedge *b)
 /* Coincident edges of opposite directions (a mesh's inner edges, two rings
  * sharing a side) change no winding number on either side, and their cells
  * would cancel exactly (the same pieces, signs opposite): both go, and the
- * rows they were in may be fast rows.  order[0..n) is sorted by top; each
+ * rows they were in may be fast rows.  order[0..n) is sorted by top (key[],
+ * rast__cov_sort_tops': one top, one key; a map's runs of one top found
+ * by the edges' records were half rast__cov_cancel's time, a cache miss an
+ * edge); each
  * run of one top is sorted by (xt, dx, dy) (Shell sort, in place), so that
  * coincident edges are neighbours; in each block of them as many pairs go
  * as there are edges of the rarer direction.  The rest, in order, are
@@ -254,7 +257,8 @@ static int rast__cov_tops_insert(int32_t *order, int32_t *tmp, const rast__cedge
 }
 #endif
 
-static uint32_t rast__cov_cancel(int32_t *order, const rast__cedge *e, uint32_t n, int32_t *tmp)
+static uint32_t rast__cov_cancel(int32_t *order, const rast__cedge *e, const int32_t *key, uint32_t n,
+                                 int32_t *tmp)
 {
     uint32_t a = 0, b, p, q, gap, out = 0;
 #if RAST__SHORTCUTS
@@ -263,7 +267,7 @@ static uint32_t rast__cov_cancel(int32_t *order, const rast__cedge *e, uint32_t 
     (void)tmp;
 #endif
     while (a < n) {
-        for (b = a + 1; b < n && e[order[b]].yt == e[order[a]].yt; b++) {
+        for (b = a + 1; b < n && key[order[b]] == key[order[a]]; b++) { /* (the keys: not a record's cache line an edge) */
         }
         if (b == a + 1) { /* one edge of its top: nothing to cancel with */
             order[out++] = order[a++];
@@ -2977,7 +2981,7 @@ rast_status rast__cov_area(rast__cedge *e, uint32_t n, int32_t s, rast_fill_rule
     }
     plain = RAST__SHORTCUTS && simple && (plain & RAST__HZ_PLAIN);
     rast__cov_sort_tops(order, row, sw.live, e, n); /* (row and live: room until the rows) */
-    nlive = rast__cov_cancel(order, e, n, row); /* (row: room until the rows) */
+    nlive = rast__cov_cancel(order, e, sw.live, n, row); /* (row: room until the rows; live: the tops' keys still) */
     if (grouped) { /* the runs, by ordinate (wb and h: room until the rows) */
         int32_t ymin = INT32_MAX;
         for (k = 0; k < (int32_t)n; k++)

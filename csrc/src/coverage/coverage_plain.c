@@ -854,6 +854,7 @@ static int rast__pl_parts(const rast_polygon *poly, uint32_t npoints, rast__aren
     const int64_t lim = RAST_COORD_MAX, P = (int64_t)1 << sb;
     const uint32_t nr = poly->nrings;
     rast__pl s;
+    int32_t *rows = (int32_t *)rast__take(&arena, RAST__COV_RING_ROWS(nr)); /* (first: rast__cov_parts_marked's table) */
     uint32_t *first = (uint32_t *)rast__take(&arena, (size_t)nr * sizeof(uint32_t));
     uint32_t *end = (uint32_t *)rast__take(&arena, (size_t)nr * sizeof(uint32_t));
     int32_t *box = (int32_t *)rast__take(&arena, (size_t)nr * 4 * sizeof(int32_t));
@@ -871,7 +872,7 @@ static int rast__pl_parts(const rast_polygon *poly, uint32_t npoints, rast__aren
     uint32_t r, i, a, b, base, nc = 0, most = 0, all = 1, eb = 0;
     uint64_t pairs = (uint64_t)npoints * RAST__PL_PAIRS + 4096, tested = 0;
     int32_t xmin = INT32_MAX;
-    if (!first || !end || !box || !pbox || !ne || !par || !nv || !rid || !rtmp || !rkey || nr < 2) return 0;
+    if (!rows || !first || !end || !box || !pbox || !ne || !par || !nv || !rid || !rtmp || !rkey || nr < 2) return 0;
     for (r = 0, base = 0; r < nr; base += poly->ring_sizes[r], r++) { /* each ring's box */
         const rast_point *p = poly->points + base;
         const uint32_t size = poly->ring_sizes[r];
@@ -990,9 +991,15 @@ static int rast__pl_parts(const rast_polygon *poly, uint32_t npoints, rast__aren
         eb += ne[r];
     }
     if (eb != nedges) return 0; /* (rast__cov_edges_polygon's edges, ring by ring) */
-    for (r = 0, eb = 0; r < nr; eb += ne[r], r++)
+    for (r = 0, eb = 0; r < nr; eb += ne[r], r++) {
         if ((nv[r] != 0) == (mark == RAST__HZ_PLAIN))
             for (a = eb; a < eb + ne[r]; a++) e[a].hz |= mark;
+        /* the table: the ring's rows (its edges' rows: floor(y0 / P) to
+         * ceil(y1 / P) - 1), its edges, not plain as ~ */
+        rows[3 * r] = (int32_t)rast__floordiv(box[4 * r + 1], P);
+        rows[3 * r + 1] = (int32_t)-rast__floordiv(-(int64_t)box[4 * r + 3], P) - 1;
+        rows[3 * r + 2] = nv[r] ? (int32_t)ne[r] : ~(int32_t)ne[r];
+    }
     return -1;
 }
 #endif

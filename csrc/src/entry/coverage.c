@@ -232,11 +232,11 @@ static int rast__cov_convex(const rast_polygon *poly)
  * polygon of several rings); 0 none. */
 #define RAST__COV_PARTS(poly, npoints, arena, s, e, n) \
     ((poly)->nrings >= 2 ? rast__cov_parts_marked(poly, npoints, arena, s, e, n) : 0)
-#define RAST__COV_AREA_MARKED(e, n, s, rule, o, arena) rast__cov_area_marked(e, n, s, rule, o, arena)
+#define RAST__COV_AREA_MARKED(e, n, poly, s, rule, o, arena) rast__cov_area_marked(e, n, (poly)->nrings, s, rule, o, arena)
 #else
 #define RAST__COV_CONVEX(poly) 0 /* (size-optimised: the plain test's way only) */
 #define RAST__COV_PARTS(poly, npoints, arena, s, e, n) 0
-#define RAST__COV_AREA_MARKED(e, n, s, rule, o, arena) RAST_OK
+#define RAST__COV_AREA_MARKED(e, n, poly, s, rule, o, arena) RAST_OK
 #endif
 
 static rast_status rast__cov_run(const rast_polygon *poly, const rast_point *tris, uint32_t ntris,
@@ -275,7 +275,7 @@ static rast_status rast__cov_run(const rast_polygon *poly, const rast_point *tri
         if (tris && RAST__IS_ACC(opts->method) && rast__cov_acc_may(o, s))
             return rast__cov_acc_shared(e, n, s, rule, o, &arena);
         /* (some parts plain, their edges marked: "area" only) */
-        if (parts < 0) return RAST__COV_AREA_MARKED(e, n, s, rule, o, &arena);
+        if (parts < 0) return RAST__COV_AREA_MARKED(e, n, poly, s, rule, o, &arena);
         return rast__cov_area(e, n, s, rule, RAST__IS_ACC(opts->method), o, &arena);
     } else {
         int32_t scale = s < kb ? kb - s : 0;

@@ -33,18 +33,32 @@ int rast__cov_plain(const rast_polygon *poly, uint32_t npoints, rast__arena aren
 #define RAST__HZ_PLAIN 0x40000000
 int rast__cov_plain_parts(const rast_polygon *poly, uint32_t npoints, rast__arena arena, int32_t sb,
                           rast__cedge *e, uint32_t nedges);
-/* The same, but -1 (not 0) when some edges are marked (for
- * rast__cov_area_marked). */
+/* The same, but -1 (not 0) when some parts are plain, and then the edges
+ * of the other parts are marked RAST__HZ_BAD, not the plain ones
+ * RAST__HZ_PLAIN (most often the fewer: text with a glyph or two whose
+ * rings touch; the records are large, and marking every plain one cost a
+ * pass over them all), for rast__cov_area_marked; and at the start of
+ * arena's room (its first RAST__COV_RING_ROWS(nrings) bytes) a table of
+ * three int32 a ring: its edges' first and last row (S = sb) and how many
+ * edges it has in e[], as ~ that count when it is not plain, which
+ * rast__cov_area_marked reads there (the same arena, nothing taken from
+ * it between): its bands by the rings, not by reading every edge's
+ * record. */
+#define RAST__HZ_BAD 0x20000000
+#define RAST__COV_RING_ROWS(nrings) ((size_t)(nrings) * 3 * sizeof(int32_t))
 int rast__cov_parts_marked(const rast_polygon *poly, uint32_t npoints, rast__arena arena, int32_t sb,
                            rast__cedge *e, uint32_t nedges);
 
 rast_status rast__cov_area(rast__cedge *e, uint32_t n, int32_t s, rast_fill_rule rule,
                            int accumulate, const rast__cov_out *o, rast__arena *arena);
-/* "area" (accumulate = 0) of edges some of which rast__cov_plain_parts
- * marked: the rows whose edges are all marked in bands by rast__cov_acc
- * (when rast__cov_acc_may), the others by rast__cov_area; the same
- * levels.  e[] is reordered.  Not in size-optimised builds. */
-rast_status rast__cov_area_marked(rast__cedge *e, uint32_t n, int32_t s, rast_fill_rule rule,
+/* "area" (accumulate = 0) of edges some of which rast__cov_parts_marked
+ * marked RAST__HZ_BAD (the others of plain parts; its table of the
+ * polygon's nrings rings at the start of arena's room): the rows that no
+ * marked edge reaches in bands by rast__cov_acc (when rast__cov_acc_may),
+ * the others by rast__cov_area (their unmarked edges marked
+ * RAST__HZ_PLAIN for it); the same levels.  e[] is reordered.  Not in
+ * size-optimised builds. */
+rast_status rast__cov_area_marked(rast__cedge *e, uint32_t n, uint32_t nrings, int32_t s, rast_fill_rule rule,
                                   const rast__cov_out *o, rast__arena *arena);
 
 /* Accumulation into uint8 or uint16 levels (coverage_acc.c), when

@@ -220,7 +220,10 @@ static int rast__cov_key_before(const rast__cedge *a, const rast__cedge *b)
 /* Coincident edges of opposite directions (a mesh's inner edges, two rings
  * sharing a side) change no winding number on either side, and their cells
  * would cancel exactly (the same pieces, signs opposite): both go, and the
- * rows they were in may be fast rows.  order[0..n) is sorted by top; each
+ * rows they were in may be fast rows.  order[0..n) is sorted by top (key[],
+ * rast__cov_sort_tops': one top, one key; a map's runs of one top found
+ * by the edges' records were half rast__cov_cancel's time, a cache miss an
+ * edge); each
  * run of one top is sorted by (xt, dx, dy) (Shell sort, in place), so that
  * coincident edges are neighbours; in each block of them as many pairs go
  * as there are edges of the rarer direction.  The rest, in order, are
@@ -254,7 +257,8 @@ static int rast__cov_tops_insert(int32_t *order, int32_t *tmp, const rast__cedge
 }
 #endif
 
-static uint32_t rast__cov_cancel(int32_t *order, const rast__cedge *e, uint32_t n, int32_t *tmp)
+static uint32_t rast__cov_cancel(int32_t *order, const rast__cedge *e, const int32_t *key, uint32_t n,
+                                 int32_t *tmp)
 {
     uint32_t a = 0, b, p, q, gap, out = 0;
 #if RAST__SHORTCUTS
@@ -263,7 +267,7 @@ static uint32_t rast__cov_cancel(int32_t *order, const rast__cedge *e, uint32_t 
     (void)tmp;
 #endif
     while (a < n) {
-        for (b = a + 1; b < n && e[order[b]].yt == e[order[a]].yt; b++) {
+        for (b = a + 1; b < n && key[order[b]] == key[order[a]]; b++) { /* (the keys: not a record's cache line an edge) */
         }
         if (b == a + 1) { /* one edge of its top: nothing to cancel with */
             order[out++] = order[a++];
@@ -3073,7 +3077,7 @@ rast_status rast__cov_area(rast__cedge *e, uint32_t n, int32_t s, rast_fill_rule
     }
     plain = RAST__SHORTCUTS && simple && (plain & RAST__HZ_PLAIN);
     rast__cov_sort_tops(order, row, sw.live, e, n); /* (row and live: room until the rows) */
-    nlive = rast__cov_cancel(order, e, n, row); /* (row: room until the rows) */
+    nlive = rast__cov_cancel(order, e, sw.live, n, row); /* (row: room until the rows; live: the tops' keys still) */
     if (grouped) { /* the runs, by ordinate (wb and h: room until the rows) */
         int32_t ymin = INT32_MAX;
         for (k = 0; k < (int32_t)n; k++)
@@ -3162,163 +3166,153 @@ rast_status rast__cov_area(rast__cedge *e, uint32_t n, int32_t s, rast_fill_rule
 #if RAST__SHORTCUTS
 /* ---- bands of plain rows ------------------------------------------------
  *
- * A polygon whose plain parts are marked (rast__cov_plain_parts: all but a
- * few plain, text with a glyph or two whose rings touch) has rows whose
- * edges are all marked: there the accumulation is the coverage (see
- * rast__cov_row_plain), and rast__cov_acc's walk of those rows costs less
+ * A polygon the edges of whose parts that are not plain are marked
+ * (rast__cov_parts_marked, RAST__HZ_BAD: all but a few plain, text with a
+ * glyph or two whose rings touch) has rows that no marked edge reaches:
+ * there the accumulation is the coverage (see rast__cov_row_plain), and rast__cov_acc's walk of those rows costs less
  * than "area"'s rows one at a time (text, 512 x 512: 17 M instructions
  * for the whole accumulation, 30 M for "area"'s rows).  So the rows go in
- * bands: the rows an unmarked edge reaches (with the plain rows between
- * two of them fewer than RAST__BAND_GAP) by "area"'s rows, the others by
- * rast__cov_acc, each band with the edges that reach it.  The levels are
- * the same either way (exact); which way a row goes depends only on the
- * input. */
+ * bands, each band with the edges that reach it: the bad bands (an
+ * unmarked edge reaches them) by "area"'s rows, the plain ones by
+ * rast__cov_acc.  A band ends only between two rows that no edge reaches
+ * both of, so every edge lies in one band: none is handed from one band's
+ * call to the next ("accumulate"'s call takes its edges' records for its
+ * own compact ones, coverage_acc.c), and the bands are made once, in one
+ * pass over the edges and one over the rows (the clip's).  Plain rows
+ * fewer than RAST__BAND_GAP between two bad bands go with them.  The
+ * levels are the same either way (exact); which way a row goes depends
+ * only on the input. */
 #define RAST__BANDS 64    /* bands at most (room on the stack), else one */
 #define RAST__BAND_GAP 8  /* plain rows fewer than this between two bad: bad */
 
-/* floor(y / 2^s), |y| < 2^62, 0 <= s < 62 */
-static int64_t rast__band_floor(int64_t y, int32_t s)
+/* e[0..n)'s edges not marked RAST__HZ_BAD marked RAST__HZ_PLAIN, for
+ * rast__cov_area's rows */
+static void rast__band_mark(rast__cedge *e, uint32_t n)
 {
-    return (int64_t)(((uint64_t)y + ((uint64_t)1 << 62)) >> s) - ((int64_t)1 << (62 - s));
-}
-
-/* The first and last row edge ed reaches (its strip's rows) */
-static void rast__band_rows(const rast__cedge *ed, int32_t s, int64_t *r0, int64_t *r1)
-{
-    *r0 = rast__band_floor(ed->yt, s);
-    *r1 = -rast__band_floor(-((int64_t)ed->yt + ed->dy), s) - 1;
-}
-
-/* Which band holds row r: the last t < m with y[t] <= r (or 0), from
- * band t (the last edge's: a ring's edges are near each other) */
-static uint32_t rast__band_of(const int32_t *y, uint32_t m, int64_t r, uint32_t t)
-{
-    while (t + 1 < m && y[t + 1] <= r) t++;
-    while (t > 0 && y[t] > r) t--;
-    return t;
+    uint32_t i;
+    for (i = 0; i < n; i++)
+        if (!(e[i].hz & RAST__HZ_BAD)) e[i].hz |= RAST__HZ_PLAIN;
 }
 
 /* Rows of o in bands (see above): 1 when done (*st the status), 0 when
  * the rows are not worth banding (nothing written, e[] as it was or
- * reordered).  arena: a copy, for this and each band's call. */
-static int rast__cov_bands(rast__cedge *e, uint32_t n, int32_t s, rast_fill_rule rule, const rast__cov_out *o,
-                           rast__arena arena, rast_status *st)
+ * reordered).  arena: a copy, for this and each band's call, whose room
+ * starts with rast__cov_parts_marked's table of the nr rings (their rows,
+ * their edges in e[] ring by ring, which are not plain): the bands are
+ * made from the rings', and the edges put in band order ring by ring,
+ * no edge's record read (text: that pass over 31,000 records was 9% of
+ * "area"'s time, a cache miss an edge); the records are moved only when
+ * the rings do not come band by band. */
+static int rast__cov_bands(rast__cedge *e, uint32_t n, uint32_t nr, int32_t s, rast_fill_rule rule,
+                           const rast__cov_out *o, rast__arena arena, rast_status *st)
 {
-    int32_t y[RAST__BANDS + 1]; /* band t: rows [y[t], y[t + 1]); bad when t is odd (band 0 may be empty) */
-    uint32_t at[RAST__BANDS + 1]; /* band t's edges (first row in it): e[at[t] .. at[t + 1]) */
-    const int64_t y0 = o->clip.y0, y1 = o->clip.y1;
+    int32_t y[RAST__BANDS + 1]; /* band t: rows [y[t], y[t + 1]) of the clip; bad when t is odd (band 0 may be empty) */
+    uint32_t at[RAST__BANDS + 1]; /* band t's edges: e[at[t] .. at[t + 1]) */
+    const int64_t y0 = o->clip.y0, h = (int64_t)o->clip.y1 - o->clip.y0;
     rast__arena room = arena;
-    int32_t *ix = (int32_t *)rast__take(&room, (size_t)n * sizeof(int32_t));
-    int32_t *tmp = (int32_t *)rast__take(&room, (size_t)n * sizeof(int32_t));
-    int32_t *key = (int32_t *)rast__take(&room, (size_t)n * sizeof(int32_t));
-    uint32_t i, k, nb, m, t, carry = 0, pass;
+    const int32_t *rows = (const int32_t *)rast__take(&room, RAST__COV_RING_ROWS(nr));
+    int32_t *rkey = (int32_t *)rast__take(&room, (size_t)nr * sizeof(int32_t));
+    /* per row r of the clip: span[r], the rings that reach rows r and r +
+     * 1 (a difference, summed in the pass over the rows), then the band
+     * of row r; bad[r], the rings not plain that reach row r (likewise) */
+    int32_t *span = (int32_t *)rast__take(&room, (size_t)(h + 1) * sizeof(int32_t));
+    int32_t *bad = (int32_t *)rast__take(&room, (size_t)(h + 1) * sizeof(int32_t));
+    uint32_t i, m = 1, t, q, sum = 0;
+    int32_t r, from = 0, sp = 0, bb = 0, segbad = 0, unsorted = 0, last = 0;
     int64_t plainrows = 0;
-    if (!ix || !tmp || !key || n == 0) return 0;
-    for (pass = 0;; pass++) {
-    uint32_t unmarked = 0;
-    nb = 0;
-    for (i = 0; i < n; i++) /* the unmarked edges' rows in the clip, by their first */
-        if (!(e[i].hz & RAST__HZ_PLAIN)) {
-            int64_t r0, r1;
-            rast__band_rows(&e[i], s, &r0, &r1);
-            if (r1 < y0 || r0 >= y1) continue;
-            key[i] = (int32_t)((r0 < y0 ? y0 : r0) - y0);
-            ix[nb++] = (int32_t)i;
-        }
-    rast__cov_radix_sort(ix, tmp, key, nb);
-    y[0] = (int32_t)y0;
-    m = 1;
-    for (k = 0; k < nb; k++) { /* the bad bands, merged */
-        int64_t r0, r1;
-        rast__band_rows(&e[ix[k]], s, &r0, &r1);
-        r0 = r0 < y0 ? y0 : r0;
-        r1 = r1 + 1 > y1 ? y1 : r1 + 1; /* (end: the row after) */
-        if (m > 1 && r0 < (int64_t)y[m - 1] + RAST__BAND_GAP) { /* joins the last bad band */
-            if (r1 > y[m - 1]) y[m - 1] = (int32_t)r1;
+    if (!rows || !rkey || !span || !bad || n == 0 || h <= 0 || h >= INT32_MAX) return 0;
+    for (r = 0; r <= (int32_t)h; r++) span[r] = bad[r] = 0;
+    for (q = 0; q < nr; q++) { /* each ring's rows in the clip (by its first: rkey) */
+        const int32_t c = rows[3 * q + 2], ne = c < 0 ? ~c : c;
+        int64_t r0 = (int64_t)rows[3 * q] - y0, r1 = (int64_t)rows[3 * q + 1] - y0;
+        sum += (uint32_t)ne;
+        if (!ne || r1 < 0 || r0 >= h) { /* (none of its rows in the clip: with the first band or the last) */
+            rkey[q] = ne && r0 >= h ? (int32_t)h - 1 : 0;
             continue;
         }
-        if (m + 2 > RAST__BANDS) return 0;
-        y[m++] = (int32_t)r0; /* a bad band, then a plain one */
-        y[m++] = (int32_t)r1;
+        r0 = r0 < 0 ? 0 : r0;
+        r1 = r1 >= h ? h - 1 : r1;
+        rkey[q] = (int32_t)r0;
+        span[r0]++;
+        span[r1]--;
+        if (c < 0) {
+            bad[r0]++;
+            bad[r1 + 1]--;
+        }
     }
-    y[m] = (int32_t)y1;
-    plainrows = 0;
+    if (sum != n) return 0; /* (not rast__cov_parts_marked's edges) */
+    y[0] = 0; /* the bands: rows [from, r + 1) a piece (no edge reaches across its ends), bad or plain */
+    for (r = 0; r < (int32_t)h; r++) {
+        bb += bad[r];
+        sp += span[r];
+        segbad |= bb > 0;
+        if (sp != 0 && r + 1 < (int32_t)h) continue;
+        if ((int32_t)((m - 1) & 1) != segbad) { /* a band of the other kind begins at from */
+            if (segbad && m >= 3 && from - y[m - 1] < RAST__BAND_GAP) {
+                m--; /* (a short plain band between two bad: bad) */
+            } else {
+                if (m + 1 > RAST__BANDS) return 0;
+                y[m++] = from;
+            }
+        }
+        from = r + 1;
+        segbad = 0;
+    }
+    y[m] = (int32_t)h;
     for (t = 0; t < m; t += 2) plainrows += (int64_t)y[t + 1] - y[t];
     /* (plain rows a quarter of the clip's or more: else as one band) */
-    if (plainrows * 4 < y1 - y0) return 0;
-    /* the edges by the band of their first row, stably (a polygon's
-     * edges come ring by ring, often in rows: most stay where they are).
-     * "accumulate"'s band call takes its edges' records for its own
-     * compact ones (coverage_acc.c), so no edge may go on from a plain
-     * band to a later one: a marked edge that would is unmarked (its rows
-     * then go the "area" way, as every row may) and the bands are made
-     * again, until none would (a few passes: else not banded) */
+    if (plainrows * 4 < h) return 0;
+    for (t = 0; t < m; t++) /* each row's band (span's room) */
+        for (r = y[t]; r < y[t + 1]; r++) span[r] = (int32_t)t;
     for (t = 0; t <= m; t++) at[t] = 0;
-    for (i = 0, t = 0; i < n; i++) {
-        int64_t r0, r1;
-        rast__band_rows(&e[i], s, &r0, &r1);
-        t = rast__band_of(y, m, r0, t);
-        key[i] = (int32_t)t;
-        at[t + 1]++;
-        if ((e[i].hz & RAST__HZ_PLAIN) && r1 >= y0 && r0 < y1) {
-            const uint32_t ta = r0 < y0 ? rast__band_of(y, m, y0, t) : t;
-            const uint32_t tb = rast__band_of(y, m, r1 >= y1 ? y1 - 1 : r1, ta);
-            if (tb > ta + (ta & 1)) { /* (from a bad band to the plain one after it: carried by "area", kept) */
-                e[i].hz &= ~(int32_t)RAST__HZ_PLAIN;
-                unmarked++;
-            }
-        }
-    }
-    if (!unmarked) break;
-    if (pass == 3) return 0;
+    for (q = 0; q < nr; q++) { /* the rings' edges by band (a polygon's rings come in rows: often in order) */
+        const int32_t c = rows[3 * q + 2], ne = c < 0 ? ~c : c, b = span[rkey[q]];
+        unsorted |= ne && b < last;
+        last = ne ? b : last;
+        rkey[q] = b;
+        at[b + 1] += (uint32_t)ne;
     }
     for (t = 0; t < m; t++) at[t + 1] += at[t];
-    for (i = 0; i < n; i++) tmp[at[key[i]]++] = (int32_t)i; /* tmp[new place] = old place */
-    for (t = m; t > 0; t--) at[t] = at[t - 1];
-    at[0] = 0;
-    for (i = 0; i < n; i++) { /* each cycle of the permutation, one copy an edge */
-        if (tmp[i] < 0 || tmp[i] == (int32_t)i) continue;
-        {
-            const rast__cedge first = e[i];
-            uint32_t q = i;
-            while ((uint32_t)tmp[q] != i) {
-                const uint32_t from = (uint32_t)tmp[q];
-                e[q] = e[from];
-                tmp[q] = -1;
-                q = from;
+    if (unsorted) { /* each edge's band (its ring's), then the records moved, stably */
+        int32_t *tmp = (int32_t *)rast__take(&room, (size_t)n * sizeof(int32_t));
+        int32_t *key = (int32_t *)rast__take(&room, (size_t)n * sizeof(int32_t));
+        if (!tmp || !key) return 0;
+        for (q = 0, i = 0; q < nr; q++) {
+            const int32_t c = rows[3 * q + 2];
+            uint32_t k;
+            for (k = 0; k < (uint32_t)(c < 0 ? ~c : c); k++) key[i++] = rkey[q];
+        }
+        for (i = 0; i < n; i++) tmp[at[key[i]]++] = (int32_t)i; /* tmp[new place] = old place */
+        for (t = m; t > 0; t--) at[t] = at[t - 1];
+        at[0] = 0;
+        for (i = 0; i < n; i++) { /* each cycle of the permutation, one copy an edge */
+            if (tmp[i] < 0 || tmp[i] == (int32_t)i) continue;
+            {
+                const rast__cedge first = e[i];
+                uint32_t p = i;
+                while ((uint32_t)tmp[p] != i) {
+                    const uint32_t src = (uint32_t)tmp[p];
+                    e[p] = e[src];
+                    tmp[p] = -1;
+                    p = src;
+                }
+                e[p] = first;
+                tmp[p] = -1;
             }
-            e[q] = first;
-            tmp[q] = -1;
         }
     }
-    for (t = 0; t < m; t++) { /* each band with its edges: those carried from above, then its own */
+    for (t = 0; t < m; t++) { /* each band with its edges */
         rast__cov_out ob = *o;
-        const uint32_t lo = at[t] - carry, hi = at[t + 1];
-        uint32_t w = hi;
-        ob.clip.y0 = y[t];
-        ob.clip.y1 = y[t + 1];
-        ob.base = o->base + (ptrdiff_t)(y[t] - y0) * o->stride;
+        ob.clip.y0 = (int32_t)(y0 + y[t]);
+        ob.clip.y1 = (int32_t)(y0 + y[t + 1]);
+        ob.base = o->base + (ptrdiff_t)y[t] * o->stride;
         if (y[t] < y[t + 1]) {
             rast__arena a = arena;
-            *st = t & 1 ? rast__cov_area(e + lo, hi - lo, s, rule, 0, &ob, &a)
-                        : rast__cov_acc(e + lo, hi - lo, s, rule, &ob, &a);
+            if (t & 1) rast__band_mark(e + at[t], at[t + 1] - at[t]);
+            *st = t & 1 ? rast__cov_area(e + at[t], at[t + 1] - at[t], s, rule, 0, &ob, &a)
+                        : rast__cov_acc(e + at[t], at[t + 1] - at[t], s, rule, &ob, &a);
             if (*st != RAST_OK) return 1;
         }
-        if (t + 1 == m) break;
-        carry = 0;
-        /* (none leaves a plain band that ran, above; and its records are
-         * "accumulate"'s now) */
-        if (!(t & 1) && y[t] < y[t + 1]) continue;
-        for (i = hi; i-- > lo;) { /* those that reach the next band: to the end */
-            int64_t r0, r1;
-            rast__band_rows(&e[i], s, &r0, &r1);
-            if (r1 >= y[t + 1] && i != --w) {
-                const rast__cedge x = e[i];
-                e[i] = e[w];
-                e[w] = x;
-            }
-        }
-        carry = hi - w;
     }
     *st = RAST_OK;
     return 1;
@@ -3326,11 +3320,12 @@ static int rast__cov_bands(rast__cedge *e, uint32_t n, int32_t s, rast_fill_rule
 #endif
 
 #if RAST__SHORTCUTS
-rast_status rast__cov_area_marked(rast__cedge *e, uint32_t n, int32_t s, rast_fill_rule rule,
+rast_status rast__cov_area_marked(rast__cedge *e, uint32_t n, uint32_t nrings, int32_t s, rast_fill_rule rule,
                                   const rast__cov_out *o, rast__arena *arena)
 {
     rast_status st = RAST_OK;
-    if (rast__cov_acc_may(o, s) && rast__cov_bands(e, n, s, rule, o, *arena, &st)) return st;
+    if (rast__cov_acc_may(o, s) && rast__cov_bands(e, n, nrings, s, rule, o, *arena, &st)) return st;
+    rast__band_mark(e, n);
     return rast__cov_area(e, n, s, rule, 0, o, arena);
 }
 #endif

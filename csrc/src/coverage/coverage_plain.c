@@ -557,20 +557,269 @@ int rast__cov_plain(const rast_polygon *poly, uint32_t npoints, rast__arena aren
  * accumulation of its edges there is the pixel's coverage.  When every part
  * is plain, so is every pixel: the polygon goes to the accumulation (text
  * set in lines whose glyphs' boxes meet nowhere: a paragraph); else the
- * edges of the plain parts are marked (RAST__HZ_PLAIN), and "area" takes
- * the rows all of whose edges are by the accumulation, in bands
+ * edges of the other parts are marked (RAST__HZ_BAD), and "area" takes
+ * the rows that none of them reaches by the accumulation, in bands
  * (rast__cov_area_marked, coverage_area.c).
- * Parts of a few rings each sort and sweep a few vertices at a time: the
+ * Parts of a few rings each are tested a few vertices at a time, by their
+ * chains (rast__pl_chains, below; else sorted and swept by edges): the
  * test's cost is about linear in the vertices (a paragraph of glyphs,
- * 75,051 vertices: its 477 parts 15.5 M instructions, 31 M before
- * rast__pl_pass lost its search; the whole polygon's sort and sweep took
- * 62 M).  The
- * rings' boxes come first, from their points; a part's vertices are read
- * only when it is tested. */
+ * 75,051 vertices: its 477 parts 8.5 M instructions, 15.5 M by edges and
+ * 31 M before rast__pl_pass lost its search; the whole polygon's sort and
+ * sweep took 62 M).  The rings' boxes come first, from their points; a
+ * part's vertices are read only when it is tested. */
 #define RAST__PL_PAIRS 4 /* box pairs tried per vertex (and 4,096): more, no parts */
 /* A part of more rings is taken as not plain, untested (a map's countries
  * share their borders: sorted for nothing) */
 #define RAST__PL_PART_RINGS 16
+
+/* ---- a part by x-monotone chains -----------------------------------------
+ *
+ * Conditions 1 to 3 for a part's rings without sorting its vertices: each
+ * ring cut at its extremes in the order (x, then y) into chains along which
+ * that order rises (each chain's vertices in that order, as one integer
+ * each: rast__pl_ring's key, the point read back from it); the sweep's
+ * events are the extremes only (at a least vertex two chains of a ring
+ * start, at a greatest two end), and the sweep keeps the chains, not the
+ * edges, in their order along the sweep line.  Two chains next to each
+ * other are walked together in that order from where they became
+ * neighbours: each vertex of either strictly on its side of the other's
+ * edge there (the lower's below, the upper's above; orientations of
+ * integers below 2^28, exact in 64 bits); between two such vertices the
+ * chains are segments, so they do not meet.  As in the sweep by edges
+ * (Shamos and Hoey, coverage_plain.c's top), two chains that meet where
+ * they must not are neighbours just before the first such point, and
+ * their walk reaches it or the vertex after it: a chain that starts
+ * between them there would be above the upper and below the lower.  The
+ * exceptions are the two chains of a ring at the extreme they share:
+ * there they must leave (or arrive) in two directions (else they overlap:
+ * folded back).  No two extremes at one point, and no chain's vertex at
+ * one where a chain starts (condition 1 as it bears on the sweep; the
+ * rest is the walks').  Condition 3 at each ring's least vertex as it
+ * enters: the chains below it, each +1 or -1 by the way its ring goes
+ * along it, are w0 up to a sign common to the part; w0 and w1 = w0 plus
+ * the lower new chain's are the two sides (the windings along a ray down
+ * the sweep line, which passes through no other vertex).  The work: a few
+ * operations a vertex for the chains, two orientations a vertex for the
+ * walks, and the chains that the sweep holds for each extreme (a budget;
+ * beyond it, or beyond the room, the sweep by edges decides). */
+
+/* rast__pl_chains' room for m vertices and m / 4 + 8 chains (84 bytes a
+ * chain, with room for the arrays' alignment) */
+#define RAST__PC_FIXED(m) ((size_t)(m) * 16 + 16 * 2 * RAST_SCRATCH_ALIGN + 8)
+#define RAST__PC_ROOM(m) (RAST__PC_FIXED(m) + ((size_t)(m) / 4 + 8) * 84)
+
+/* (b - a) x (c - a) for vertices as keys (rast__pl_ring's: x and y, each
+ * plus a constant, in the high and low 32 bits) */
+static inline int64_t rast__pk_cross(uint64_t a, uint64_t b, uint64_t c)
+{
+    const int64_t ax = (int64_t)(a >> 32), ay = (int64_t)(uint32_t)a;
+    return ((int64_t)(b >> 32) - ax) * ((int64_t)(uint32_t)c - ay) -
+           ((int64_t)(uint32_t)b - ay) * ((int64_t)(c >> 32) - ax);
+}
+
+typedef struct rast__pc {
+    uint64_t *ck;         /* the chains' vertices, chain by chain, each chain's followed by UINT64_MAX */
+    uint32_t *cs, *ce;    /* chain c: ck[cs[c] .. ce[c]] */
+    uint32_t *ep;         /* the chain that ends where c ends */
+    int32_t *sg;          /* +1 when its ring goes along it the way the order rises, else -1 */
+    uint32_t *act, *wa, *wb, *cur; /* the sweep's chains, lowest first; pair i's walk (act[i], act[i + 1]): next vertices */
+    uint32_t na;
+} rast__pc;
+
+/* Neighbours i and i + 1 walked up to key k (their vertices at or before
+ * it): 0 if they meet where they must not */
+static int rast__pc_walk(rast__pc *w, uint32_t i, uint64_t k)
+{
+    const uint64_t *ck = w->ck;
+    const uint32_t a = w->act[i], b = w->act[i + 1];
+    uint32_t ia = w->wa[i], ib = w->wb[i];
+    for (;;) {
+        const uint64_t ka = ck[ia], kb = ck[ib];
+        if (ka < kb) {
+            if (ka > k) break;
+            if (rast__pk_cross(ck[ib - 1], kb, ka) >= 0) return 0; /* a's vertex not below b */
+            ia++;
+        } else if (kb < ka) {
+            if (kb > k) break;
+            if (rast__pk_cross(ck[ia - 1], ka, kb) <= 0) return 0; /* b's vertex not above a */
+            ib++;
+        } else { /* one point: only the end that a and b share */
+            if (ka > k) break;
+            if (ia != w->ce[a] || ib != w->ce[b] || w->ep[a] != b) return 0;
+            ia++;
+            ib++;
+        }
+    }
+    w->wa[i] = w->cur[a] = ia;
+    w->wb[i] = w->cur[b] = ib;
+    return 1;
+}
+
+/* Conditions 1 to 3 for the rings rg[0..nr) of poly (ring q's points from
+ * poly->points + pfirst[q]; m of them in all, their coordinates in range):
+ * 1 when they hold, 0 when not, -1 undecided (room or budget: the sweep
+ * by edges then).  blk: the room. */
+static int rast__pl_chains(const rast_polygon *poly, const uint32_t *pfirst, const int32_t *rg, uint32_t nr,
+                           uint32_t m, rast__arena blk)
+{
+    const int64_t lim = RAST_COORD_MAX;
+    const size_t cmax = blk.left > RAST__PC_FIXED(m) ? (blk.left - RAST__PC_FIXED(m)) / 84 : 0;
+    rast__pc w;
+    uint64_t *tk = (uint64_t *)rast__take(&blk, (size_t)m * sizeof(uint64_t));
+    uint64_t *ek;
+    uint32_t *ea, *eb, *er, *eix, *etmp, *erun;
+    uint32_t seen[RAST__PL_PART_RINGS];
+    uint32_t g, i, nc = 0, ne = 0, nv = 0, pos = 0, neg = 0;
+    uint64_t budget = (uint64_t)m * 4 + 256;
+    if (cmax < 2 || nr > RAST__PL_PART_RINGS) return -1;
+    w.ck = (uint64_t *)rast__take(&blk, ((size_t)m + 2 * cmax) * sizeof(uint64_t));
+    ek = (uint64_t *)rast__take(&blk, cmax * sizeof(uint64_t));
+    w.cs = (uint32_t *)rast__take(&blk, cmax * sizeof(uint32_t));
+    w.ce = (uint32_t *)rast__take(&blk, cmax * sizeof(uint32_t));
+    w.ep = (uint32_t *)rast__take(&blk, cmax * sizeof(uint32_t));
+    w.sg = (int32_t *)rast__take(&blk, cmax * sizeof(int32_t));
+    w.act = (uint32_t *)rast__take(&blk, cmax * sizeof(uint32_t));
+    w.wa = (uint32_t *)rast__take(&blk, cmax * sizeof(uint32_t));
+    w.wb = (uint32_t *)rast__take(&blk, cmax * sizeof(uint32_t));
+    w.cur = (uint32_t *)rast__take(&blk, cmax * sizeof(uint32_t));
+    ea = (uint32_t *)rast__take(&blk, cmax * sizeof(uint32_t));
+    eb = (uint32_t *)rast__take(&blk, cmax * sizeof(uint32_t));
+    er = (uint32_t *)rast__take(&blk, cmax * sizeof(uint32_t));
+    eix = (uint32_t *)rast__take(&blk, cmax * sizeof(uint32_t));
+    etmp = (uint32_t *)rast__take(&blk, cmax * sizeof(uint32_t));
+    erun = (uint32_t *)rast__take(&blk, (cmax + 1) * sizeof(uint32_t));
+    if (!tk || !w.ck || !ek || !w.cs || !w.ce || !w.ep || !w.sg || !w.act || !w.wa || !w.wb || !w.cur || !ea ||
+        !eb || !er || !eix || !etmp || !erun)
+        return -1;
+    for (g = 0; g < nr; g++) { /* each ring's chains, from its least vertex, and its extremes */
+        const rast_point *p = poly->points + pfirst[rg[g]];
+        const uint32_t size = poly->ring_sizes[rg[g]], cb = nc;
+        uint32_t n = 0, s = 0, v;
+        uint64_t last = size ? (uint64_t)(p[size - 1].x + lim + 1) << 32 | (uint64_t)(p[size - 1].y + lim + 1) : 0,
+                 least = UINT64_MAX;
+        for (i = 0; i < size; i++) { /* its keys, an edge of length 0 dropped (the vertex before it: last) */
+            const uint64_t k = (uint64_t)(p[i].x + lim + 1) << 32 | (uint64_t)(p[i].y + lim + 1);
+            if (k == last) continue;
+            s = k < least ? n : s;
+            least = k < least ? k : least;
+            tk[n++] = last = k;
+        }
+        if (n < 3) return 0;
+        v = s;
+        seen[g] = 0;
+        do { /* a chain up from v (the ring's way), then one down (stored up) */
+            uint32_t len = 0, t;
+            if (nc + 2 > cmax) return -1;
+            w.cs[nc] = nv;
+            w.sg[nc] = 1;
+            w.ck[nv++] = tk[v];
+            while (tk[v + 1 < n ? v + 1 : 0] > tk[v]) {
+                v = v + 1 < n ? v + 1 : 0;
+                w.ck[nv++] = tk[v];
+            }
+            w.ce[nc] = nv - 1;
+            w.ep[nc] = nc + 1;
+            w.ck[nv++] = UINT64_MAX;
+            for (t = v; tk[t + 1 < n ? t + 1 : 0] < tk[t]; t = t + 1 < n ? t + 1 : 0) len++;
+            w.cs[nc + 1] = nv;
+            w.ce[nc + 1] = nv + len;
+            w.ep[nc + 1] = nc;
+            w.sg[nc + 1] = -1;
+            for (t = 0; t <= len; t++) {
+                w.ck[nv + len - t] = tk[v];
+                v = t < len ? (v + 1 < n ? v + 1 : 0) : v;
+            }
+            nv += len + 1;
+            w.ck[nv++] = UINT64_MAX;
+            ek[ne] = w.ck[w.ce[nc]]; /* its greatest vertex: nc and nc + 1 end */
+            ea[ne] = nc;
+            eb[ne] = nc + 1;
+            er[ne++] = UINT32_MAX;
+            ek[ne] = w.ck[w.cs[nc + 1]]; /* its least after: nc + 1 and the next up start */
+            ea[ne] = nc + 1;
+            eb[ne] = v == s ? cb : nc + 2;
+            er[ne++] = g;
+            nc += 2;
+        } while (v != s);
+    }
+    for (i = 0; i < ne; i++) eix[i] = i;
+    if (ne > 16) {
+        rast__pl_sort(ek, eix, etmp, erun, ne);
+    } else { /* (a few: in place) */
+        for (i = 1; i < ne; i++) {
+            const uint32_t x = eix[i];
+            uint32_t j = i;
+            for (; j > 0 && ek[eix[j - 1]] > ek[x]; j--) eix[j] = eix[j - 1];
+            eix[j] = x;
+        }
+    }
+    w.na = 0;
+    for (i = 0; i < ne; i++) {
+        const uint32_t e = eix[i], a = ea[e], b = eb[e];
+        const uint64_t k = ek[e];
+        uint32_t j, at;
+        if (i + 1 < ne && ek[eix[i + 1]] == k) return 0; /* two extremes at one point */
+        if ((budget -= w.na + 1) > ((uint64_t)1 << 62)) return -1;
+        for (j = 0; j + 1 < w.na; j++)
+            if (!rast__pc_walk(&w, j, k)) return 0;
+        if (er[e] == UINT32_MAX) { /* a and b end here: neighbours (their walk met at the end), out */
+            for (at = 0; at < w.na && w.act[at] != a && w.act[at] != b; at++) {
+            }
+            if (at + 1 >= w.na || (w.act[at + 1] != a && w.act[at + 1] != b)) return 0;
+            for (j = at; j + 2 < w.na; j++) {
+                w.act[j] = w.act[j + 2];
+                w.wa[j] = w.wa[j + 2];
+                w.wb[j] = w.wb[j + 2];
+            }
+            w.na -= 2;
+            if (at > 0 && at < w.na) { /* new neighbours at = k */
+                w.wa[at - 1] = w.cur[w.act[at - 1]];
+                w.wb[at - 1] = w.cur[w.act[at]];
+            }
+        } else { /* a and b start here: in at their place, the lower first */
+            const int64_t o = rast__pk_cross(k, w.ck[w.cs[a] + 1], w.ck[w.cs[b] + 1]);
+            const uint32_t lo = o > 0 ? a : b, hi = o > 0 ? b : a;
+            int64_t w0 = 0, w1;
+            if (o == 0) return 0; /* folded back */
+            for (at = 0; at < w.na; at++) {
+                const uint32_t x = w.act[at], c = w.cur[x];
+                int64_t d;
+                if (w.ck[c - 1] == k || (d = rast__pk_cross(w.ck[c - 1], w.ck[c], k)) == 0) return 0; /* on it */
+                if (d < 0) break;
+                w0 += w.sg[x];
+            }
+            for (j = w.na; j-- > at;) {
+                w.act[j + 2] = w.act[j];
+                if (j + 1 < w.na) { /* (pair j's walk: pair j + 2's now) */
+                    w.wa[j + 2] = w.wa[j];
+                    w.wb[j + 2] = w.wb[j];
+                }
+            }
+            w.na += 2;
+            w.act[at] = lo;
+            w.act[at + 1] = hi;
+            w.cur[lo] = w.wa[at] = w.cs[lo] + 1;
+            w.cur[hi] = w.wb[at] = w.cs[hi] + 1;
+            if (at > 0) {
+                w.wa[at - 1] = w.cur[w.act[at - 1]];
+                w.wb[at - 1] = w.cur[lo];
+            }
+            if (at + 2 < w.na) {
+                w.wa[at + 1] = w.cur[hi];
+                w.wb[at + 1] = w.cur[w.act[at + 2]];
+            }
+            if (!seen[er[e]]) { /* the ring's least vertex: condition 3 */
+                seen[er[e]] = 1;
+                w1 = w0 + w.sg[lo];
+                if (w0 < -1 || w0 > 1 || w1 < -1 || w1 > 1) return 0;
+                pos |= w0 == 1 || w1 == 1;
+                neg |= w0 == -1 || w1 == -1;
+            }
+        }
+    }
+    return w.na == 0 && !(pos && neg);
+}
+
 
 static uint32_t rast__pl_root(uint32_t *par, uint32_t r)
 {
@@ -581,18 +830,31 @@ static uint32_t rast__pl_root(uint32_t *par, uint32_t r)
     return r;
 }
 
+/* The parts' test (above): 1 every part plain; -1 some, and the edges of
+ * the plain parts marked `mark` = RAST__HZ_PLAIN, or those of the others
+ * when `mark` is RAST__HZ_BAD; 0 none (nothing marked). */
+static int rast__pl_parts(const rast_polygon *poly, uint32_t npoints, rast__arena arena, int32_t sb,
+                          rast__cedge *e, uint32_t nedges, int32_t mark);
+
 int rast__cov_plain_parts(const rast_polygon *poly, uint32_t npoints, rast__arena arena, int32_t sb,
                           rast__cedge *e, uint32_t nedges)
 {
-    return rast__cov_parts_marked(poly, npoints, arena, sb, e, nedges) > 0;
+    return rast__pl_parts(poly, npoints, arena, sb, e, nedges, RAST__HZ_PLAIN) > 0;
 }
 
 int rast__cov_parts_marked(const rast_polygon *poly, uint32_t npoints, rast__arena arena, int32_t sb,
                            rast__cedge *e, uint32_t nedges)
 {
+    return rast__pl_parts(poly, npoints, arena, sb, e, nedges, RAST__HZ_BAD);
+}
+
+static int rast__pl_parts(const rast_polygon *poly, uint32_t npoints, rast__arena arena, int32_t sb,
+                          rast__cedge *e, uint32_t nedges, int32_t mark)
+{
     const int64_t lim = RAST_COORD_MAX, P = (int64_t)1 << sb;
     const uint32_t nr = poly->nrings;
     rast__pl s;
+    int32_t *rows = (int32_t *)rast__take(&arena, RAST__COV_RING_ROWS(nr)); /* (first: rast__cov_parts_marked's table) */
     uint32_t *first = (uint32_t *)rast__take(&arena, (size_t)nr * sizeof(uint32_t));
     uint32_t *end = (uint32_t *)rast__take(&arena, (size_t)nr * sizeof(uint32_t));
     int32_t *box = (int32_t *)rast__take(&arena, (size_t)nr * 4 * sizeof(int32_t));
@@ -606,10 +868,11 @@ int rast__cov_parts_marked(const rast_polygon *poly, uint32_t npoints, rast__are
     rast_point *pt;
     uint64_t *key;
     uint32_t *next, *prev, *ord, *tmp, *run;
+    rast__arena blk, room;
     uint32_t r, i, a, b, base, nc = 0, most = 0, all = 1, eb = 0;
     uint64_t pairs = (uint64_t)npoints * RAST__PL_PAIRS + 4096, tested = 0;
     int32_t xmin = INT32_MAX;
-    if (!first || !end || !box || !pbox || !ne || !par || !nv || !rid || !rtmp || !rkey || nr < 2) return 0;
+    if (!rows || !first || !end || !box || !pbox || !ne || !par || !nv || !rid || !rtmp || !rkey || nr < 2) return 0;
     for (r = 0, base = 0; r < nr; base += poly->ring_sizes[r], r++) { /* each ring's box */
         const rast_point *p = poly->points + base;
         const uint32_t size = poly->ring_sizes[r];
@@ -663,13 +926,25 @@ int rast__cov_parts_marked(const rast_polygon *poly, uint32_t npoints, rast__are
         }
     }
     if (tested * 2 < npoints) return 0; /* (most vertices in parts not tested: not worth it) */
-    pt = (rast_point *)rast__take(&arena, (size_t)most * sizeof(rast_point));
-    key = (uint64_t *)rast__take(&arena, (size_t)most * sizeof(uint64_t));
-    next = (uint32_t *)rast__take(&arena, (size_t)most * sizeof(uint32_t));
-    prev = (uint32_t *)rast__take(&arena, (size_t)most * sizeof(uint32_t));
-    ord = (uint32_t *)rast__take(&arena, (size_t)most * sizeof(uint32_t));
-    tmp = (uint32_t *)rast__take(&arena, (size_t)most * sizeof(uint32_t));
-    run = (uint32_t *)rast__take(&arena, ((size_t)most + 1) * sizeof(uint32_t));
+    /* one room for either test of a part: the sweep by edges' arrays, or
+     * the chains' (rast__pl_chains) */
+    blk.left = 2 * rast__align((size_t)most * sizeof(uint64_t)) + 5 * rast__align((size_t)most * sizeof(uint32_t)) +
+               rast__align(((size_t)most + 1) * sizeof(uint32_t));
+    room = arena; /* (the chains' room for most / 4 chains when there is room: else as it comes) */
+    blk.p = (unsigned char *)rast__take(&room, blk.left + RAST__PC_ROOM(most));
+    if (blk.p)
+        blk.left += RAST__PC_ROOM(most);
+    else
+        blk.p = (unsigned char *)rast__take(&arena, blk.left);
+    if (!blk.p) return 0;
+    room = blk;
+    pt = (rast_point *)rast__take(&room, (size_t)most * sizeof(rast_point));
+    key = (uint64_t *)rast__take(&room, (size_t)most * sizeof(uint64_t));
+    next = (uint32_t *)rast__take(&room, (size_t)most * sizeof(uint32_t));
+    prev = (uint32_t *)rast__take(&room, (size_t)most * sizeof(uint32_t));
+    ord = (uint32_t *)rast__take(&room, (size_t)most * sizeof(uint32_t));
+    tmp = (uint32_t *)rast__take(&room, (size_t)most * sizeof(uint32_t));
+    run = (uint32_t *)rast__take(&room, ((size_t)most + 1) * sizeof(uint32_t));
     if (!pt || !key || !next || !prev || !ord || !tmp || !run) return 0;
     s.pt = pt;
     s.key = key;
@@ -678,10 +953,16 @@ int rast__cov_parts_marked(const rast_polygon *poly, uint32_t npoints, rast__are
     s.nst = 0;
     s.budget = (uint64_t)npoints * 64 + ((uint64_t)1 << 20);
     for (a = 0; a < nr; a = b) { /* each part: conditions 1 to 3 among its rings, its vertices loaded */
-        uint32_t n = 0, ok = nv[rid[a]] != 0;
-        for (b = a; b < nr && rkey[rid[b]] == rkey[rid[a]]; b++) {
-        }
+        uint32_t n = 0, ok = nv[rid[a]] != 0, m = 0;
+        int by;
+        for (b = a; b < nr && rkey[rid[b]] == rkey[rid[a]]; b++) m += nv[rid[b]];
         ok = ok && b - a <= RAST__PL_PART_RINGS;
+        by = ok ? rast__pl_chains(poly, first, rid + a, b - a, m, blk) : 0; /* (-1: by the sweep of edges) */
+        if (by >= 0) {
+            for (i = a; i < b; i++) nv[rid[i]] = (uint32_t)by;
+            all &= (uint32_t)by;
+            continue;
+        }
         for (i = a; i < b && ok; i++) {
             const uint32_t q = (uint32_t)rid[i];
             const uint32_t f = n;
@@ -701,6 +982,8 @@ int rast__cov_parts_marked(const rast_polygon *poly, uint32_t npoints, rast__are
         all &= ok;
     }
     if (all) return 1;
+    for (r = 0, b = 0; r < nr; r++) b |= nv[r]; /* (a plain part: else nothing marked) */
+    if (!b) return 0;
     for (r = 0, base = 0; r < nr; base += poly->ring_sizes[r], r++) { /* each ring's edges in e[] */
         const rast_point *p = poly->points + base;
         const uint32_t size = poly->ring_sizes[r];
@@ -708,9 +991,15 @@ int rast__cov_parts_marked(const rast_polygon *poly, uint32_t npoints, rast__are
         eb += ne[r];
     }
     if (eb != nedges) return 0; /* (rast__cov_edges_polygon's edges, ring by ring) */
-    for (r = 0, eb = 0, b = 0; r < nr; eb += ne[r], r++)
-        if (nv[r])
-            for (a = eb, b = 1; a < eb + ne[r]; a++) e[a].hz |= RAST__HZ_PLAIN;
-    return b ? -1 : 0;
+    for (r = 0, eb = 0; r < nr; eb += ne[r], r++) {
+        if ((nv[r] != 0) == (mark == RAST__HZ_PLAIN))
+            for (a = eb; a < eb + ne[r]; a++) e[a].hz |= mark;
+        /* the table: the ring's rows (its edges' rows: floor(y0 / P) to
+         * ceil(y1 / P) - 1), its edges, not plain as ~ */
+        rows[3 * r] = (int32_t)rast__floordiv(box[4 * r + 1], P);
+        rows[3 * r + 1] = (int32_t)-rast__floordiv(-(int64_t)box[4 * r + 3], P) - 1;
+        rows[3 * r + 2] = nv[r] ? (int32_t)ne[r] : ~(int32_t)ne[r];
+    }
+    return -1;
 }
 #endif

@@ -849,7 +849,8 @@ RAST__HOT void rast__ss_delta_row(unsigned char *row, int32_t stride, int32_t w,
 
 /* The walk by deltas of the edge table t (npoints records of room in
  * t->edges, free once the records are set up in t->aet) when it pays:
- * the fine rows' words of 64 counters at most 4 a crossing, and it can:
+ * many short edges (at least 2 a fine row), the fine rows' words of 64
+ * counters at most 4 a crossing, and it can:
  * the counters of a band of output rows, the rows of bits of one and an
  * index an edge twice fit, and (non-zero) no row has more than 510
  * crossings.  The rows go in bands of at most 32 output rows (their
@@ -870,7 +871,9 @@ static int rast__ss_delta(rast__ss *ss, const rast__aet_tab *t, uint32_t npoints
     int64_t crossings = 0;
     size_t wpr, idx;
     uint64_t *bits;
-    if (w <= 0 || w >= INT32_MAX - 128) return 0;
+    /* (many short edges, as the keys' walk takes them: long ones, a
+     * star's or a circle's, cost their rows less in the AET) */
+    if (w <= 0 || w >= INT32_MAX - 128 || nedges < 2 * (int64_t)rows) return 0;
     stride = (w + 1 + 63) & ~63;
     /* the room: the edges' indices grouped by band, the list of those
      * going on, a band's starts (or the rows' ends), then the counters

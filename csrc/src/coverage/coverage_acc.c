@@ -697,15 +697,17 @@ __attribute__((target("avx2"), always_inline)) static inline __m256i rast__acc_n
  * returns the running sum after them.  (The same sums modulo 2^64 in
  * another order of additions: the same z.) */
 __attribute__((target("avx2"))) static uint64_t rast__acc_sum24_avx2(uint64_t *restrict c, uint32_t *restrict z,
-                                                                    size_t n, uint64_t v, int big)
+                                                                    size_t n, uint64_t v, int big, int keep)
 {
     const __m256i zero = _mm256_setzero_si256();
     __m256i s = _mm256_set1_epi64x((int64_t)v), a, b, x;
     for (; n >= 8; n -= 8, c += 8, z += 8) {
         a = _mm256_loadu_si256((const __m256i *)(const void *)c);
         b = _mm256_loadu_si256((const __m256i *)(const void *)(c + 4));
-        _mm256_storeu_si256((__m256i *)(void *)c, zero);
-        _mm256_storeu_si256((__m256i *)(void *)(c + 4), zero);
+        if (!keep) {
+            _mm256_storeu_si256((__m256i *)(void *)c, zero);
+            _mm256_storeu_si256((__m256i *)(void *)(c + 4), zero);
+        }
         /* [a0 a1 a2 a3] + [0 a0 a1 a2], then + [0 0 s0 s1] */
         a = _mm256_add_epi64(a, _mm256_blend_epi32(_mm256_permute4x64_epi64(a, 0x90), zero, 0x03));
         b = _mm256_add_epi64(b, _mm256_blend_epi32(_mm256_permute4x64_epi64(b, 0x90), zero, 0x03));
@@ -742,9 +744,11 @@ __attribute__((target("avx2"))) static uint64_t rast__acc_sum24_avx2(uint64_t *r
  * (rast__acc_apply): 0 <= z <= 2^24, which the second pass's non-zero
  * rule leaves as it is, within one unit of 2^24 a' as before (a paragraph
  * of text or a thousand triangles on a row: their rows were summed a cell
- * at a time, twice the instructions). */
+ * at a time, twice the instructions).  The cells are cleared, but where
+ * keep (a constant at each call): the ties' pass reads them again
+ * (rast__acc_ties_z), or rast__acc_unkeep clears them. */
 RAST__HOT void rast__acc_sum24(uint64_t *restrict acc, uint32_t *restrict z, int32_t lo, int32_t hi, int32_t step,
-                               int big)
+                               int big, int keep)
 {
     /* from 2^62: no >> of a negative value; it adds 2^35 to the floor,
      * which leaves the low 32 bits as they were; the cells step words
@@ -755,7 +759,10 @@ RAST__HOT void rast__acc_sum24(uint64_t *restrict acc, uint32_t *restrict z, int
     z += lo;
 #ifdef RAST__ACC_AVX2
     if (sx == 1 && n >= 32 && __builtin_cpu_supports("avx2")) { /* (a lone row's cells: 8 at a time) */
-        v = big ? rast__acc_sum24_avx2(c, z, n, v, 1) : rast__acc_sum24_avx2(c, z, n, v, 0);
+        if (keep)
+            v = big ? rast__acc_sum24_avx2(c, z, n, v, 1, 1) : rast__acc_sum24_avx2(c, z, n, v, 0, 1);
+        else
+            v = big ? rast__acc_sum24_avx2(c, z, n, v, 1, 0) : rast__acc_sum24_avx2(c, z, n, v, 0, 0);
         c += n & ~(size_t)7;
         z += n & ~(size_t)7;
         n &= 7;
@@ -768,11 +775,11 @@ RAST__HOT void rast__acc_sum24(uint64_t *restrict acc, uint32_t *restrict z, int
         z[1] = rast__acc_z(v1, big);
         z[2] = rast__acc_z(v2, big);
         z[3] = rast__acc_z(v, big);
-        c[0] = c[sx] = c[2 * sx] = c[3 * sx] = 0;
+        if (!keep) c[0] = c[sx] = c[2 * sx] = c[3 * sx] = 0;
     }
     for (i = 0; i < n; i++) {
         v += c[i * sx];
-        c[i * sx] = 0;
+        if (!keep) c[i * sx] = 0;
         z[i] = rast__acc_z(v, big);
     }
 }
@@ -1068,6 +1075,39 @@ static inline int rast__acc_zpath(int dense, uint32_t m, int32_t lo, int32_t hi,
 #endif
 }
 
+#ifdef RAST__ACC_AVX2
+/* cells c[lo, hi) cleared 8 at a time: returns where the rest starts */
+__attribute__((target("avx2"))) static int32_t rast__acc_zero_avx2(uint64_t *c, int32_t lo, int32_t hi)
+{
+    for (; lo + 8 <= hi; lo += 8) {
+        _mm256_storeu_si256((__m256i *)(void *)(c + lo), _mm256_setzero_si256());
+        _mm256_storeu_si256((__m256i *)(void *)(c + lo + 4), _mm256_setzero_si256());
+    }
+    return lo;
+}
+#endif
+
+/* A kept row's sums z[lo, hi) and cells (sx words apart) cleared: no
+ * tie, or none the ties' pass takes (rast__acc_sum24's keep) */
+static void rast__acc_unkeep(uint64_t *acc, int32_t sx, uint32_t *z, int32_t lo, int32_t hi)
+{
+    int32_t k = lo;
+    memset(z + lo, 0, (size_t)(hi - lo) * sizeof(uint32_t));
+#ifdef RAST__ACC_AVX2
+    if (sx == 1 && __builtin_cpu_supports("avx2")) k = rast__acc_zero_avx2(acc, lo, hi);
+#endif
+#ifdef RAST__ACC_SSE2
+    /* (a lone row's cells, 4 a turn: a ~4 KB memset, rep stosb, counted a
+     * byte an instruction by callgrind, was 6% of the text family's) */
+    if (sx == 1)
+        for (; k + 4 <= hi; k += 4) {
+            _mm_storeu_si128((__m128i *)(void *)(acc + k), _mm_setzero_si128());
+            _mm_storeu_si128((__m128i *)(void *)(acc + k + 2), _mm_setzero_si128());
+        }
+#endif
+    for (; k < hi; k++) acc[k * sx] = 0;
+}
+
 /* Row y's levels from the cells in [lo, hi) (dense: all read; else those
  * whose bits are set in blk, the others holding 0), which are cleared with
  * their bits; the pixels left of lo get 0, those from hi on the last sum's
@@ -1090,18 +1130,18 @@ RAST__HOT uint64_t rast__acc_row(uint64_t *acc, int32_t sx, uint64_t *blk, uint3
         /* (non-zero: big past n = 256, dense 2, or a window that wide;
          * w < 2^23 for n < RAST__ACC_MAXN) */
         if (rule == RAST_RULE_NONZERO && (dense == 2 || win > rast__acc_win(255, 255)))
-            rast__acc_sum24(acc, z, lo, hi, sx, 1);
+            rast__acc_sum24(acc, z, lo, hi, sx, 1, keep);
         else
-            rast__acc_sum24(acc, z, lo, hi, sx, 0);
+            rast__acc_sum24(acc, z, lo, hi, sx, 0, keep);
 #else
-        rast__acc_sum24(acc, z, lo, hi, sx, 0);
+        rast__acc_sum24(acc, z, lo, hi, sx, 0, 0);
 #endif
         /* (z cleared as read, but kept on a tie when asked: rast__acc_ties_z) */
         if (!keep) {
             bad = rast__acc_levels24(z, row, lo, hi, (uint32_t)(win >> 27) + 256, rule, 1);
         } else {
             bad = rast__acc_levels24(z, row, lo, hi, (uint32_t)(win >> 27) + 256, rule, 0);
-            if (!bad) memset(z + lo, 0, (size_t)(hi - lo) * sizeof(uint32_t));
+            if (!bad) rast__acc_unkeep(acc, sx, z, lo, hi);
         }
         lev = row[hi - 1];
         k = hi;
@@ -1279,8 +1319,8 @@ RAST__HOT int rast__acc_emit(rast__acc *a, int32_t sx, const rast__cov_out *o, i
     /* z[lo, hi) kept (rast__acc_row): where, and the window */
     if (keep) keep->hi = -1;
     if (bad && keep && rast__acc_zpath(a->dense, m, lo, hi, rule, win)) {
-        if (rast__acc_done(o, y, bad, e, fe, ix, n)) { /* (all vertical: done, z cleared) */
-            memset(a->z + lo, 0, (size_t)(hi - lo) * sizeof(uint32_t));
+        if (rast__acc_done(o, y, bad, e, fe, ix, n)) { /* (all vertical: done, z and the cells cleared) */
+            rast__acc_unkeep(a->acc, sx, a->z, lo, hi);
             a->dense = dense;
             return 1;
         }
@@ -1894,24 +1934,22 @@ static inline int rast__acc_flagged(const uint32_t *flag, int32_t b0, int32_t b1
     return 0;
 }
 
-/* rast__acc_ties_z's part of e from (xa, ta) to (xb, tb), in a flagged
- * block: into the cells as rast__acc_ties puts it, its columns c0 .. c1
- * (those of the clip) marked in ib when not exact (ex: its ends are), and
- * counted in a->cnt for each 16 of them.
+/* rast__acc_ties_z's part from (xa, ta) to (xb, tb) (Q units), in a
+ * flagged block: counted in a->cnt for each 16 of its columns c0 .. c1
+ * (those of the clip), which are marked in a->blk when not exact (ex: its
+ * ends are; a part of one column, its ar's floor drops nothing), as
+ * rast__acc_ties has them.  Its cells are the first pass's, kept.
  * (Out of line: the loop keeps its registers for the other parts.) */
-RAST__APART void rast__acc_tie_part(rast__acc *a, rast__aedge *e, int64_t off, int64_t xa, uint64_t ta, int64_t xb,
-                                    uint64_t tb, int64_t c0, int64_t c1, int ex)
+RAST__APART void rast__acc_tie_part(rast__acc *a, int64_t xa, uint64_t ta, int64_t xb, uint64_t tb, int64_t c0,
+                                    int64_t c1, int ex)
 {
     const uint64_t fm = QT - 1;
-    const int64_t ca = rast__acc_col(xa) - a->x0, cb = rast__acc_col(xb) - a->x0;
     int64_t b;
     for (b = c0 >> 4; b <= c1 >> 4; b++) a->cnt[b]++; /* (rast__acc_count's) */
-    if (ca == cb) {
+    if (rast__acc_col(xa) == rast__acc_col(xb)) { /* (then c0 = c1 is its column, inside the clip) */
         const uint64_t fs = ((uint64_t)xa & fm) + ((uint64_t)xb & fm);
-        rast__acc_put(a->acc, ca, (uint64_t)xa & fm, (uint64_t)xb & fm, tb - ta, e->dir < 0 ? ~(uint64_t)0 : 0, 1);
-        if (!ex || ((fs * (tb - ta)) & 1023)) a->blk[ca >> 6] |= (uint64_t)1 << (ca & 63);
+        if (!ex || ((fs * (tb - ta)) & 1023)) a->blk[c0 >> 6] |= (uint64_t)1 << (c0 & 63);
     } else {
-        rast__acc_part(a, e, off, xa, ta, xb, tb, e->dir, 1, 0);
         rast__acc_cols_mark(a->blk, c0, c1, a->last);
     }
 }
@@ -1921,17 +1959,20 @@ RAST__APART void rast__acc_tie_part(rast__acc *a, rast__aedge *e, int64_t off, i
  * pixels of the blocks of 16 columns where a level was not certain are
  * decided again.  Their blocks come from z (the same test); z is cleared
  * on the way and the blocks' flags put in z[b] (b <= the column read).
- * Each part that touches no such block is put whole (its height's cover)
- * at its first column (the sums from its last column + 1 on are the same:
- * the cover is what its cells add up to; those of its columns are not
- * read), any other as rast__acc_ties puts it, its columns marked when not
- * exact; then the running sums, from the row's first cell, give the
- * flagged blocks' pixels again (and the fill right of the last, if its
- * block is flagged), the others left as the first pass wrote them.  The
- * steppers: the ends from where the first pass left them (no division,
- * rast__acc_top_back).  (A paragraph of text: 27 rows of 120 with a pixel
- * at an exact tie, a stem's side on a half pixel; every part of them
- * walked again cost a fifth of its instructions.) */
+ * The cells are the first pass's, kept (rast__acc_sum24's keep): their
+ * running sums, from the row's first cell, give the flagged blocks'
+ * pixels again (and the fill right of the last, if its block is flagged),
+ * the others left as the first pass wrote them; so no part is put again.
+ * Only the windows need the parts: each that touches a flagged block is
+ * counted there, its columns marked when not exact (rast__acc_tie_part).
+ * A part lies in its edge's columns, so an edge whose columns lie left
+ * of the first flagged block or right of the last is passed by its two
+ * ends, without its part's (a glyph's edges span a few columns; a row's
+ * flagged blocks are one or two of its 32); the others' ends from where the first pass left the
+ * steppers (no division, rast__acc_top_back).  (A paragraph of text: 27
+ * rows of 120 with a pixel at an exact tie, a stem's side on a half
+ * pixel; every part of them put again, ends and cells, cost 16% of its
+ * instructions, ~55,000 a row.) */
 static int rast__acc_ties_z(rast__acc *a, const rast__acc_walk *w, rast__aedge *e, const int32_t *ix, int32_t n,
                             int32_t j, rast__acc_kept *kept)
 {
@@ -1941,25 +1982,36 @@ static int rast__acc_ties_z(rast__acc *a, const rast__acc_walk *w, rast__aedge *
     uint32_t *const flag = a->z;
     uint64_t *const acc = a->acc, *const ib = a->blk, bad = 0, lev = 0, v = 0;
     unsigned char *const row = rast__cov_row(w->o, j);
-    int32_t k, kk;
+    int32_t k, kk, b0 = INT32_MAX, b1 = -1;
+    int64_t xlo, xhi;
     unsigned char out;
     for (k = lo; k < hi; k++) { /* (flag[k >> 4], k >> 4 <= k: read already) */
         uint32_t zk = flag[k];
         const uint32_t t = rast__acc_level24(&zk, &out, w24, lim, w->rule);
         flag[k] = 0;
         flag[k >> 4] |= t;
+        if (t) { /* (the first and last flagged blocks) */
+            b0 = b0 < (k >> 4) ? b0 : k >> 4;
+            b1 = k >> 4;
+        }
     }
+    /* their columns' span, in the vertices' units: [xlo, xhi) (none
+     * flagged: block 0's, whose parts find no flag) */
+    if (b1 < 0) b0 = b1 = 0;
+    xlo = (x0 + 16 * (int64_t)b0) * p;
+    xhi = (x0 + 16 * (int64_t)b1 + 16) * p;
     kept->hi = -1;
-    a->dense = 1; /* (rast__acc_part marks no bit: ib[] is this pass's) */
     a->cnt = a->z + wd; /* (rast__acc_tie_part counts: cleared, as the first pass left them) */
     for (kk = 0; kk < n; kk++) {
         rast__aedge *const ed = &e[ix[kk]];
         const int64_t rel0 = (int64_t)ed->yt - Yj, rel1 = rel0 + ed->dy;
-        const uint64_t neg = ed->dir < 0 ? ~(uint64_t)0 : 0;
         int64_t xa, xb, c0, c1;
         uint64_t ta, tb;
         uint32_t rem = 0;
         int exact = 1;
+        /* the edge's columns, and so its part's: past the flagged span? */
+        if ((int64_t)ed->xt + (ed->dx < 0 ? 0 : ed->dx) < xlo || (int64_t)ed->xt + (ed->dx < 0 ? ed->dx : 0) >= xhi)
+            continue;
         if (rel0 > 0) {
             ta = (uint64_t)rel0 << hq;
             xa = (int64_t)ed->xt * ((int64_t)1 << hq);
@@ -1974,10 +2026,8 @@ static int rast__acc_ties_z(rast__acc *a, const rast__acc_walk *w, rast__aedge *
         if (c0 >= wd) continue; /* (right of the clip: nothing) */
         c0 = c0 < 0 ? 0 : c0;
         c1 = c1 > last ? last : c1;
-        if (c1 < 0 || !rast__acc_flagged(flag, (int32_t)c0 >> 4, (int32_t)c1 >> 4))
-            acc[c0] += (((tb - ta) << 21) ^ neg) - neg;
-        else /* (a flagged block: a single column's ca is c0, inside the clip) */
-            rast__acc_tie_part(a, ed, -rel0 * ((int64_t)1 << hq), xa, ta, xb, tb, c0, c1, exact);
+        if (c1 >= 0 && rast__acc_flagged(flag, (int32_t)c0 >> 4, (int32_t)c1 >> 4))
+            rast__acc_tie_part(a, xa, ta, xb, tb, c0, c1, exact);
     }
     for (k = lo; k < hi; k++) {
         v += acc[k];
@@ -2007,8 +2057,10 @@ static int rast__acc_ties_z(rast__acc *a, const rast__acc_walk *w, rast__aedge *
  * parts are put, and the two swap: no pass over the list to drop the
  * edges that end (rast__acc_edges_of's, a tenth of the text family's
  * instructions with it); the edges that start in the row come from
- * order[] by key[]. */
-static void rast__acc_by_rows(const rast__acc_walk *w, rast__acc *a)
+ * order[] by key[].  (Inline in its one caller: GCC 12 left it out of
+ * line once the rows kept their cells, 0.1 M more instructions on text
+ * and the stroke.) */
+RAST__HOT void rast__acc_by_rows(const rast__acc_walk *w, rast__acc *a)
 {
     rast__aedge *const e = w->e;
     const rast__cov_out *const o = w->o;

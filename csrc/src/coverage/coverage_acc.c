@@ -2543,16 +2543,10 @@ static rast__aedge *rast__acc_sorted(rast__acc_walk *w, rast__cedge *e, const ra
     const size_t off = (size_t)n * (sizeof(rast__cedge) - sizeof(rast__aedge));
     rast__aedge *const ce = (rast__aedge *)(void *)((unsigned char *)(void *)e + off);
     int32_t *const order = w->order, *const key = w->key, *const last = w->last, *const ks = w->tmp;
-    uint32_t i, sum = 0;
+    uint32_t i;
     (void)sizeof(rast__acc_rooms);
     if (cnt) {
-        for (i = 0; i < nkeys; i++) cnt[i] = 0;
-        for (i = 0; i < n; i++) cnt[key[i]]++;
-        for (i = 0; i < nkeys; i++) {
-            const uint32_t c = cnt[i];
-            cnt[i] = sum;
-            sum += c;
-        }
+        rast__cov_count_starts(cnt, key, n, nkeys);
         for (i = 0; i < n; i++) { /* (order[] is free: the last rows go there) */
             const int32_t k = key[i];
             const uint32_t at = cnt[k]++;

@@ -793,13 +793,7 @@ RAST__HOT void rast__ss_delta_walk(rast__edge *e, unsigned char *buf, int32_t j0
 static inline uint32_t rast__ss_delta16(unsigned char *c, __m128i *sum, int evenodd)
 {
     const __m128i zero = _mm_setzero_si128();
-    __m128i v = _mm_loadu_si128((const __m128i *)(void *)c), t;
-    _mm_storeu_si128((__m128i *)(void *)c, zero);
-    v = _mm_add_epi8(v, _mm_slli_si128(v, 1));
-    v = _mm_add_epi8(v, _mm_slli_si128(v, 2));
-    v = _mm_add_epi8(v, _mm_slli_si128(v, 4));
-    v = _mm_add_epi8(v, _mm_slli_si128(v, 8));
-    v = _mm_add_epi8(v, *sum);
+    __m128i v = _mm_add_epi8(rast__delta_take16(c), *sum), t;
     /* the last lane's sum in every lane */
     t = _mm_unpackhi_epi8(v, v);
     t = _mm_shufflehi_epi16(t, 0xFF);

@@ -309,13 +309,7 @@ void rast__cov_radix_sort(int32_t *ix, int32_t *tmp, const int32_t *key, uint32_
 
 void rast__cov_count_sort(int32_t *ix, uint32_t *cnt, const int32_t *key, uint32_t n, uint32_t nkeys)
 {
-    uint32_t i, sum = 0;
-    for (i = 0; i < nkeys; i++) cnt[i] = 0;
-    for (i = 0; i < n; i++) cnt[key[i]]++;
-    for (i = 0; i < nkeys; i++) {
-        const uint32_t c = cnt[i];
-        cnt[i] = sum;
-        sum += c;
-    }
+    uint32_t i;
+    rast__cov_count_starts(cnt, key, n, nkeys);
     for (i = 0; i < n; i++) ix[cnt[key[i]]++] = (int32_t)i;
 }

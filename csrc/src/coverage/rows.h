@@ -331,6 +331,20 @@ int rast__cov_tri(const rast_point *t, rast_point *v);
  * key[ix[i]], each key's bits read as unsigned; tmp[0..n) is room.  The
  * result is in ix. */
 void rast__cov_radix_sort(int32_t *ix, int32_t *tmp, const int32_t *key, uint32_t n);
+/* cnt[k] = how many of key[0..n) are below k, for k in [0, nkeys): where
+ * a counting sort's placing pass puts the first key k (cnt: nkeys counts
+ * of room, not cleared). */
+static inline void rast__cov_count_starts(uint32_t *cnt, const int32_t *key, uint32_t n, uint32_t nkeys)
+{
+    uint32_t i, sum = 0;
+    for (i = 0; i < nkeys; i++) cnt[i] = 0;
+    for (i = 0; i < n; i++) cnt[key[i]]++;
+    for (i = 0; i < nkeys; i++) {
+        const uint32_t c = cnt[i];
+        cnt[i] = sum;
+        sum += c;
+    }
+}
 /* ix[0..n) = 0 .. n - 1 ordered by key[i] in [0, nkeys), stably (what
  * rast__cov_radix_sort makes of ix[i] = i): one counting pass, one pass
  * over the nkeys counts cnt[0..nkeys) (room, not cleared), one placing

@@ -198,13 +198,7 @@ static inline int rast__delta_lanes16(unsigned char *c, unsigned char *o, uint32
                                       uint32_t mask, __m128i vv, __m128i bv, int opaque)
 {
     const __m128i zero = _mm_setzero_si128();
-    __m128i v = _mm_loadu_si128((const __m128i *)(void *)c), out;
-    _mm_storeu_si128((__m128i *)(void *)c, zero);
-    v = _mm_add_epi8(v, _mm_slli_si128(v, 1));
-    v = _mm_add_epi8(v, _mm_slli_si128(v, 2));
-    v = _mm_add_epi8(v, _mm_slli_si128(v, 4));
-    v = _mm_add_epi8(v, _mm_slli_si128(v, 8));
-    v = _mm_add_epi8(v, _mm_set1_epi8((char)*sum));
+    __m128i v = _mm_add_epi8(rast__delta_take16(c), _mm_set1_epi8((char)*sum)), out;
     *sum = (uint32_t)_mm_extract_epi16(v, 7) >> 8;
     /* out: 0xFF where outside */
     out = mask == 1 ? _mm_cmpeq_epi8(_mm_and_si128(v, _mm_set1_epi8(1)), zero) : _mm_cmpeq_epi8(v, zero);

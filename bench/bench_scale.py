@@ -12,6 +12,9 @@ triangles_coverage; Canvas.fill_polygon(aa=...) in the loop) -- and the
 peers that fit (Blend2D's anti-aliased fill with its path built before
 the clock starts, skia, cv2.fillPoly for binary), medians of --reps calls
 in one process, each as a ratio to Blend2D's time on the same scene.  The
+drawers of a scene are timed in turns (each round calls each once, a call
+under a millisecond timed as a batch of about a millisecond: see
+bench/timing.py), so load from elsewhere falls on all of them alike.  The
 table gives, per family and size, the WORST seed's ratio per method.
 
 Every output is checked in the same run against rastrum's exact result
@@ -42,7 +45,7 @@ import numpy as np
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 
 import families  # noqa: E402
-from timing import median_s  # noqa: E402
+from timing import medians_interleaved  # noqa: E402
 import rastrum  # noqa: E402
 
 METHODS = ("binary", "accumulate", "ss4", "area")
@@ -247,6 +250,7 @@ def run_scene(sc, draw_set, reps, limit, slow_first=True):
     """{drawer: {"s": median seconds or None (past the limit), "off", "max", "wrong"}}"""
     mask, cov, refname = reference(sc, limit)
     res = {"_ref": refname}
+    timed = {}
     for name, (prep, binary) in draw_set.items():
         try:
             f = prep(sc)
@@ -258,7 +262,11 @@ def run_scene(sc, draw_set, reps, limit, slow_first=True):
             continue
         out = f()
         off, mx, wrong = check(out, mask if binary else cov, binary)
-        res[name] = {"s": median_s(f, reps), "off": off, "max": mx, "wrong": wrong}
+        res[name] = {"s": None, "off": off, "max": mx, "wrong": wrong}
+        timed[name] = f
+    # every drawer that passed is timed in turns, round by round (timing.py)
+    for name, s in medians_interleaved(timed, reps).items():
+        res[name]["s"] = s
     return res
 
 

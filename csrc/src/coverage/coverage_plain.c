@@ -916,7 +916,6 @@ int rast__cov_parts_test(const rast_polygon *poly, uint32_t npoints, rast__arena
     int32_t *pbox = (int32_t *)rast__take(&arena, (size_t)nr * 4 * sizeof(int32_t));
     uint32_t *nv = (uint32_t *)rast__take(&arena, (size_t)nr * sizeof(uint32_t));
     uint32_t *lv = (uint32_t *)rast__take(&arena, (size_t)nr * sizeof(uint32_t));
-    uint32_t *ne = (uint32_t *)rast__take(&arena, (size_t)nr * sizeof(uint32_t));
     uint32_t *par = (uint32_t *)rast__take(&arena, (size_t)nr * sizeof(uint32_t));
     int32_t *rid = (int32_t *)rast__take(&arena, (size_t)nr * sizeof(int32_t));
     int32_t *rtmp = (int32_t *)rast__take(&arena, (size_t)nr * sizeof(int32_t));
@@ -928,13 +927,13 @@ int rast__cov_parts_test(const rast_polygon *poly, uint32_t npoints, rast__arena
     uint32_t r, i, a, b, base, nc = 0, most = 0, all = 1;
     uint64_t pairs = (uint64_t)npoints * RAST__PL_PAIRS + 4096, tested = 0;
     int32_t xmin = INT32_MAX;
-    if (!rows || !first || !end || !box || !pbox || !lv || !ne || !par || !nv || !rid || !rtmp || !rkey || nr < 2) return 0;
+    if (!rows || !first || !end || !box || !pbox || !lv || !par || !nv || !rid || !rtmp || !rkey || nr < 2) return 0;
     for (r = 0, base = 0; r < nr; base += poly->ring_sizes[r], r++) { /* each ring's box */
         const rast_point *p = poly->points + base;
         const uint32_t size = poly->ring_sizes[r];
         int32_t *bx = box + 4 * r, x0 = size ? p[0].x : 0, y0 = size ? p[0].y : 0, x1 = x0, y1 = y0;
         int32_t ly = y0; /* the least vertex's ordinate (in the order x, then y) */
-        uint32_t lvr = 0, nh = size && p[size - 1].y == y0; /* (edges in e[]: those not horizontal) */
+        uint32_t lvr = 0;
         first[r] = base;
         nv[r] = size; /* (its vertices, at most; none: a part alone, not plain) */
         for (i = 1; i < size; i++) {
@@ -943,14 +942,12 @@ int rast__cov_parts_test(const rast_polygon *poly, uint32_t npoints, rast__arena
                 lvr = i;
                 ly = y;
             }
-            nh += y == p[i - 1].y;
             x0 = x < x0 ? x : x0;
             y0 = y < y0 ? y : y0;
             x1 = x > x1 ? x : x1;
             y1 = y > y1 ? y : y1;
         }
         lv[r] = lvr;
-        ne[r] = size - nh;
         if (x0 < -lim || x1 > lim || y0 < -lim || y1 > lim) return 0;
         bx[0] = x0;
         bx[1] = y0;
@@ -1050,12 +1047,17 @@ int rast__cov_parts_test(const rast_polygon *poly, uint32_t npoints, rast__arena
     if (all) return 1;
     for (r = 0, b = 0; r < nr; r++) b |= nv[r]; /* (a plain part: else nothing marked) */
     if (!b) return 0;
-    for (r = 0; r < nr; r++) { /* the table */
+    for (r = 0, base = 0; r < nr; base += poly->ring_sizes[r], r++) { /* the table */
+        const rast_point *p = poly->points + base;
+        const uint32_t size = poly->ring_sizes[r];
+        int32_t y = size ? p[size - 1].y : 0;
+        uint32_t ne = 0; /* its edges in e[]: those not horizontal */
+        for (i = 0; i < size; y = p[i++].y) ne += p[i].y != y;
         /* the ring's rows (its edges' rows: floor(y0 / P) to ceil(y1 / P)
          * - 1), its edges, not plain as ~ */
         rows[3 * r] = (int32_t)rast__floordiv(box[4 * r + 1], P);
         rows[3 * r + 1] = (int32_t)-rast__floordiv(-(int64_t)box[4 * r + 3], P) - 1;
-        rows[3 * r + 2] = nv[r] ? (int32_t)ne[r] : ~(int32_t)ne[r];
+        rows[3 * r + 2] = nv[r] ? (int32_t)ne : ~(int32_t)ne;
     }
     return -1;
 }

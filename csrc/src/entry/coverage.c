@@ -187,6 +187,7 @@ static int rast__cov_plain_pays(const rast_polygon *poly, const rast__cedge *e, 
             if (a != b) rows += (uint64_t)(((hi + off - 1) >> s) - ((lo + off) >> s) + 1);
             a = b;
         }
+        if (rows >= 6 * (uint64_t)npoints) return 1; /* (enough: the rest need not be counted) */
     }
 #else
     (void)poly;

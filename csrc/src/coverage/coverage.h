@@ -48,6 +48,13 @@ int rast__cov_plain_parts(const rast_polygon *poly, uint32_t npoints, rast__aren
 #define RAST__COV_RING_ROWS(nrings) ((size_t)(nrings) * 3 * sizeof(int32_t))
 int rast__cov_parts_marked(const rast_polygon *poly, uint32_t npoints, rast__arena arena, int32_t sb,
                            rast__cedge *e, uint32_t nedges);
+/* rast__cov_parts_marked in two steps: the test, from the points alone
+ * (1, 0, or -1 and the table written, as above), and the marks, from the
+ * table, of the edges rast__cov_edges_polygon made since (-1 marked; 0
+ * when they are not the table's, nothing marked): so that a polygon whose
+ * parts are all plain needs no edge records (rast__cov_acc_points). */
+int rast__cov_parts_test(const rast_polygon *poly, uint32_t npoints, rast__arena arena, int32_t sb);
+int rast__cov_parts_mark(rast__arena arena, uint32_t nr, rast__cedge *e, uint32_t nedges, int32_t mark);
 
 rast_status rast__cov_area(rast__cedge *e, uint32_t n, int32_t s, rast_fill_rule rule,
                            int accumulate, const rast__cov_out *o, rast__arena *arena);

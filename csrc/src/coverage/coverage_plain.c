@@ -626,6 +626,25 @@ typedef struct rast__pc {
     uint32_t na;
 } rast__pc;
 
+/* Point q's key (x and y, each plus lim + 1, in the high and low 32 bits) */
+static inline uint64_t rast__pk_key(rast_point q, int64_t lim)
+{
+    return (uint64_t)(q.x + lim + 1) << 32 | (uint64_t)(q.y + lim + 1);
+}
+
+/* The chain down c, its keys ck[cs[c] .. end) in the ring's order,
+ * reversed (stored up), and ended there */
+static void rast__pc_down(rast__pc *w, uint32_t c, uint32_t end)
+{
+    uint64_t *lo = w->ck + w->cs[c], *hi = w->ck + end - 1;
+    w->ce[c] = end - 1;
+    for (; lo < hi; lo++, hi--) {
+        const uint64_t x = *lo;
+        *lo = *hi;
+        *hi = x;
+    }
+}
+
 /* Neighbours i and i + 1 walked up to key k (their vertices at or before
  * it): 0 if they meet where they must not */
 static int rast__pc_walk(rast__pc *w, uint32_t i, uint64_t k)
@@ -656,16 +675,17 @@ static int rast__pc_walk(rast__pc *w, uint32_t i, uint64_t k)
 }
 
 /* Conditions 1 to 3 for the rings rg[0..nr) of poly (ring q's points from
- * poly->points + pfirst[q]; m of them in all, their coordinates in range):
+ * poly->points + pfirst[q], its least in the order (x, then y) the
+ * lv[q]-th, the first when it repeats; m of them in all, their coordinates
+ * in range):
  * 1 when they hold, 0 when not, -1 undecided (room or budget: the sweep
  * by edges then).  blk: the room. */
-static int rast__pl_chains(const rast_polygon *poly, const uint32_t *pfirst, const int32_t *rg, uint32_t nr,
-                           uint32_t m, rast__arena blk)
+static int rast__pl_chains(const rast_polygon *poly, const uint32_t *pfirst, const uint32_t *lv, const int32_t *rg,
+                           uint32_t nr, uint32_t m, rast__arena blk)
 {
     const int64_t lim = RAST_COORD_MAX;
     const size_t cmax = blk.left > RAST__PC_FIXED(m) ? (blk.left - RAST__PC_FIXED(m)) / 84 : 0;
     rast__pc w;
-    uint64_t *tk = (uint64_t *)rast__take(&blk, (size_t)m * sizeof(uint64_t));
     uint64_t *ek;
     uint32_t *ea, *eb, *er, *eix, *etmp, *erun;
     uint32_t seen[RAST__PL_PART_RINGS];
@@ -688,59 +708,76 @@ static int rast__pl_chains(const rast_polygon *poly, const uint32_t *pfirst, con
     eix = (uint32_t *)rast__take(&blk, cmax * sizeof(uint32_t));
     etmp = (uint32_t *)rast__take(&blk, cmax * sizeof(uint32_t));
     erun = (uint32_t *)rast__take(&blk, (cmax + 1) * sizeof(uint32_t));
-    if (!tk || !w.ck || !ek || !w.cs || !w.ce || !w.ep || !w.sg || !w.act || !w.wa || !w.wb || !w.cur || !ea ||
+    if (!w.ck || !ek || !w.cs || !w.ce || !w.ep || !w.sg || !w.act || !w.wa || !w.wb || !w.cur || !ea ||
         !eb || !er || !eix || !etmp || !erun)
         return -1;
     for (g = 0; g < nr; g++) { /* each ring's chains, from its least vertex, and its extremes */
         const rast_point *p = poly->points + pfirst[rg[g]];
         const uint32_t size = poly->ring_sizes[rg[g]], cb = nc;
-        uint32_t n = 0, s = 0, v;
-        uint64_t last = size ? (uint64_t)(p[size - 1].x + lim + 1) << 32 | (uint64_t)(p[size - 1].y + lim + 1) : 0,
-                 least = UINT64_MAX;
-        for (i = 0; i < size; i++) { /* its keys, an edge of length 0 dropped (the vertex before it: last) */
-            const uint64_t k = (uint64_t)(p[i].x + lim + 1) << 32 | (uint64_t)(p[i].y + lim + 1);
+        const rast_point *q = p + lv[rg[g]] + 1, *qe = p + size;
+        const uint64_t least = size ? rast__pk_key(p[lv[rg[g]]], lim) : 0;
+        uint32_t n = 0, up = 1, round = 0;
+        uint64_t last;
+        if (nc + 2 > cmax) return -1;
+        w.cs[nc] = nv;
+        w.sg[nc] = 1;
+        w.ck[nv++] = last = least;
+        seen[g] = 0;
+        /* the keys round the ring from it, back to it, an edge of length 0
+         * dropped: a chain up (the ring's way) while they rise, then one
+         * down (stored up: reversed when it ends) while they fall */
+        for (;;) {
+            uint64_t k;
+            if (q == qe) { /* (from the least to the ring's end, then from its start back to the least) */
+                if (round++) break;
+                q = p;
+                qe = p + lv[rg[g]] + 1;
+                continue;
+            }
+            k = rast__pk_key(*q++, lim);
             if (k == last) continue;
-            s = k < least ? n : s;
-            least = k < least ? k : least;
-            tk[n++] = last = k;
+            n++;
+            if (up ? k > last : k < last) {
+                w.ck[nv++] = k;
+            } else if (up) { /* last the greatest: nc and nc + 1 end there */
+                w.ce[nc] = nv - 1;
+                w.ep[nc] = nc + 1;
+                w.ck[nv++] = UINT64_MAX;
+                w.cs[nc + 1] = nv;
+                w.ep[nc + 1] = nc;
+                w.sg[nc + 1] = -1;
+                w.ck[nv++] = last;
+                w.ck[nv++] = k;
+                up = 0;
+                ek[ne] = last;
+                ea[ne] = nc;
+                eb[ne] = nc + 1;
+                er[ne++] = UINT32_MAX;
+            } else { /* last the least after: nc + 1 and the next up start there */
+                rast__pc_down(&w, nc + 1, nv);
+                w.ck[nv++] = UINT64_MAX;
+                ek[ne] = last;
+                ea[ne] = nc + 1;
+                eb[ne] = nc + 2;
+                er[ne++] = g;
+                nc += 2;
+                if (nc + 2 > cmax) return -1;
+                w.cs[nc] = nv;
+                w.sg[nc] = 1;
+                w.ck[nv++] = last;
+                w.ck[nv++] = k;
+                up = 1;
+            }
+            last = k;
         }
         if (n < 3) return 0;
-        v = s;
-        seen[g] = 0;
-        do { /* a chain up from v (the ring's way), then one down (stored up) */
-            uint32_t len = 0, t;
-            if (nc + 2 > cmax) return -1;
-            w.cs[nc] = nv;
-            w.sg[nc] = 1;
-            w.ck[nv++] = tk[v];
-            while (tk[v + 1 < n ? v + 1 : 0] > tk[v]) {
-                v = v + 1 < n ? v + 1 : 0;
-                w.ck[nv++] = tk[v];
-            }
-            w.ce[nc] = nv - 1;
-            w.ep[nc] = nc + 1;
-            w.ck[nv++] = UINT64_MAX;
-            for (t = v; tk[t + 1 < n ? t + 1 : 0] < tk[t]; t = t + 1 < n ? t + 1 : 0) len++;
-            w.cs[nc + 1] = nv;
-            w.ce[nc + 1] = nv + len;
-            w.ep[nc + 1] = nc;
-            w.sg[nc + 1] = -1;
-            for (t = 0; t <= len; t++) {
-                w.ck[nv + len - t] = tk[v];
-                v = t < len ? (v + 1 < n ? v + 1 : 0) : v;
-            }
-            nv += len + 1;
-            w.ck[nv++] = UINT64_MAX;
-            ek[ne] = w.ck[w.ce[nc]]; /* its greatest vertex: nc and nc + 1 end */
-            ea[ne] = nc;
-            eb[ne] = nc + 1;
-            er[ne++] = UINT32_MAX;
-            ek[ne] = w.ck[w.cs[nc + 1]]; /* its least after: nc + 1 and the next up start */
-            ea[ne] = nc + 1;
-            eb[ne] = v == s ? cb : nc + 2;
-            er[ne++] = g;
-            nc += 2;
-        } while (v != s);
+        rast__pc_down(&w, nc + 1, nv); /* (n >= 3: the last chain goes down to the least) */
+        w.ck[nv++] = UINT64_MAX;
+        ek[ne] = least;
+        ea[ne] = nc + 1;
+        eb[ne] = cb;
+        er[ne++] = g;
+        nc += 2;
     }
     for (i = 0; i < ne; i++) eix[i] = i;
     if (ne > 16) {
@@ -830,26 +867,44 @@ static uint32_t rast__pl_root(uint32_t *par, uint32_t r)
     return r;
 }
 
-/* The parts' test (above): 1 every part plain; -1 some, and the edges of
- * the plain parts marked `mark` = RAST__HZ_PLAIN, or those of the others
- * when `mark` is RAST__HZ_BAD; 0 none (nothing marked). */
-static int rast__pl_parts(const rast_polygon *poly, uint32_t npoints, rast__arena arena, int32_t sb,
-                          rast__cedge *e, uint32_t nedges, int32_t mark);
+/* The edges of e[0..nedges) (rast__cov_edges_polygon's, ring by ring)
+ * marked from rast__cov_parts_test's table at the start of arena's room:
+ * those of the plain rings `mark` = RAST__HZ_PLAIN, or those of the others
+ * when `mark` is RAST__HZ_BAD.  -1 when marked; 0 when the table's edges
+ * are not e[]'s (nothing marked). */
+int rast__cov_parts_mark(rast__arena arena, uint32_t nr, rast__cedge *e, uint32_t nedges, int32_t mark)
+{
+    const int32_t *rows = (const int32_t *)rast__take(&arena, RAST__COV_RING_ROWS(nr));
+    uint32_t r, a, eb = 0;
+    if (!rows) return 0;
+    for (r = 0; r < nr; r++) eb += (uint32_t)(rows[3 * r + 2] < 0 ? ~rows[3 * r + 2] : rows[3 * r + 2]);
+    if (eb != nedges) return 0;
+    for (r = 0, eb = 0; r < nr; r++) {
+        const int32_t c = rows[3 * r + 2];
+        const uint32_t ne = (uint32_t)(c < 0 ? ~c : c);
+        if ((c >= 0) == (mark == RAST__HZ_PLAIN))
+            for (a = eb; a < eb + ne; a++) e[a].hz |= mark;
+        eb += ne;
+    }
+    return -1;
+}
 
 int rast__cov_plain_parts(const rast_polygon *poly, uint32_t npoints, rast__arena arena, int32_t sb,
                           rast__cedge *e, uint32_t nedges)
 {
-    return rast__pl_parts(poly, npoints, arena, sb, e, nedges, RAST__HZ_PLAIN) > 0;
+    const int t = rast__cov_parts_test(poly, npoints, arena, sb);
+    if (t < 0) rast__cov_parts_mark(arena, poly->nrings, e, nedges, RAST__HZ_PLAIN);
+    return t > 0;
 }
 
 int rast__cov_parts_marked(const rast_polygon *poly, uint32_t npoints, rast__arena arena, int32_t sb,
                            rast__cedge *e, uint32_t nedges)
 {
-    return rast__pl_parts(poly, npoints, arena, sb, e, nedges, RAST__HZ_BAD);
+    const int t = rast__cov_parts_test(poly, npoints, arena, sb);
+    return t < 0 ? rast__cov_parts_mark(arena, poly->nrings, e, nedges, RAST__HZ_BAD) : t;
 }
 
-static int rast__pl_parts(const rast_polygon *poly, uint32_t npoints, rast__arena arena, int32_t sb,
-                          rast__cedge *e, uint32_t nedges, int32_t mark)
+int rast__cov_parts_test(const rast_polygon *poly, uint32_t npoints, rast__arena arena, int32_t sb)
 {
     const int64_t lim = RAST_COORD_MAX, P = (int64_t)1 << sb;
     const uint32_t nr = poly->nrings;
@@ -859,8 +914,8 @@ static int rast__pl_parts(const rast_polygon *poly, uint32_t npoints, rast__aren
     uint32_t *end = (uint32_t *)rast__take(&arena, (size_t)nr * sizeof(uint32_t));
     int32_t *box = (int32_t *)rast__take(&arena, (size_t)nr * 4 * sizeof(int32_t));
     int32_t *pbox = (int32_t *)rast__take(&arena, (size_t)nr * 4 * sizeof(int32_t));
-    uint32_t *ne = (uint32_t *)rast__take(&arena, (size_t)nr * sizeof(uint32_t));
     uint32_t *nv = (uint32_t *)rast__take(&arena, (size_t)nr * sizeof(uint32_t));
+    uint32_t *lv = (uint32_t *)rast__take(&arena, (size_t)nr * sizeof(uint32_t));
     uint32_t *par = (uint32_t *)rast__take(&arena, (size_t)nr * sizeof(uint32_t));
     int32_t *rid = (int32_t *)rast__take(&arena, (size_t)nr * sizeof(int32_t));
     int32_t *rtmp = (int32_t *)rast__take(&arena, (size_t)nr * sizeof(int32_t));
@@ -869,22 +924,30 @@ static int rast__pl_parts(const rast_polygon *poly, uint32_t npoints, rast__aren
     uint64_t *key;
     uint32_t *next, *prev, *ord, *tmp, *run;
     rast__arena blk, room;
-    uint32_t r, i, a, b, base, nc = 0, most = 0, all = 1, eb = 0;
+    uint32_t r, i, a, b, base, nc = 0, most = 0, all = 1;
     uint64_t pairs = (uint64_t)npoints * RAST__PL_PAIRS + 4096, tested = 0;
     int32_t xmin = INT32_MAX;
-    if (!rows || !first || !end || !box || !pbox || !ne || !par || !nv || !rid || !rtmp || !rkey || nr < 2) return 0;
+    if (!rows || !first || !end || !box || !pbox || !lv || !par || !nv || !rid || !rtmp || !rkey || nr < 2) return 0;
     for (r = 0, base = 0; r < nr; base += poly->ring_sizes[r], r++) { /* each ring's box */
         const rast_point *p = poly->points + base;
         const uint32_t size = poly->ring_sizes[r];
         int32_t *bx = box + 4 * r, x0 = size ? p[0].x : 0, y0 = size ? p[0].y : 0, x1 = x0, y1 = y0;
+        int32_t ly = y0; /* the least vertex's ordinate (in the order x, then y) */
+        uint32_t lvr = 0;
         first[r] = base;
         nv[r] = size; /* (its vertices, at most; none: a part alone, not plain) */
         for (i = 1; i < size; i++) {
-            x0 = p[i].x < x0 ? p[i].x : x0;
-            y0 = p[i].y < y0 ? p[i].y : y0;
-            x1 = p[i].x > x1 ? p[i].x : x1;
-            y1 = p[i].y > y1 ? p[i].y : y1;
+            const int32_t x = p[i].x, y = p[i].y;
+            if (x <= x0 && (x < x0 || y < ly)) { /* (its least vertex, the first when it repeats: rast__pl_chains) */
+                lvr = i;
+                ly = y;
+            }
+            x0 = x < x0 ? x : x0;
+            y0 = y < y0 ? y : y0;
+            x1 = x > x1 ? x : x1;
+            y1 = y > y1 ? y : y1;
         }
+        lv[r] = lvr;
         if (x0 < -lim || x1 > lim || y0 < -lim || y1 > lim) return 0;
         bx[0] = x0;
         bx[1] = y0;
@@ -957,7 +1020,7 @@ static int rast__pl_parts(const rast_polygon *poly, uint32_t npoints, rast__aren
         int by;
         for (b = a; b < nr && rkey[rid[b]] == rkey[rid[a]]; b++) m += nv[rid[b]];
         ok = ok && b - a <= RAST__PL_PART_RINGS;
-        by = ok ? rast__pl_chains(poly, first, rid + a, b - a, m, blk) : 0; /* (-1: by the sweep of edges) */
+        by = ok ? rast__pl_chains(poly, first, lv, rid + a, b - a, m, blk) : 0; /* (-1: by the sweep of edges) */
         if (by >= 0) {
             for (i = a; i < b; i++) nv[rid[i]] = (uint32_t)by;
             all &= (uint32_t)by;
@@ -984,21 +1047,17 @@ static int rast__pl_parts(const rast_polygon *poly, uint32_t npoints, rast__aren
     if (all) return 1;
     for (r = 0, b = 0; r < nr; r++) b |= nv[r]; /* (a plain part: else nothing marked) */
     if (!b) return 0;
-    for (r = 0, base = 0; r < nr; base += poly->ring_sizes[r], r++) { /* each ring's edges in e[] */
+    for (r = 0, base = 0; r < nr; base += poly->ring_sizes[r], r++) { /* the table */
         const rast_point *p = poly->points + base;
         const uint32_t size = poly->ring_sizes[r];
-        for (i = 0, ne[r] = 0; i < size; i++) ne[r] += p[i].y != p[i + 1 < size ? i + 1 : 0].y;
-        eb += ne[r];
-    }
-    if (eb != nedges) return 0; /* (rast__cov_edges_polygon's edges, ring by ring) */
-    for (r = 0, eb = 0; r < nr; eb += ne[r], r++) {
-        if ((nv[r] != 0) == (mark == RAST__HZ_PLAIN))
-            for (a = eb; a < eb + ne[r]; a++) e[a].hz |= mark;
-        /* the table: the ring's rows (its edges' rows: floor(y0 / P) to
-         * ceil(y1 / P) - 1), its edges, not plain as ~ */
+        int32_t y = size ? p[size - 1].y : 0;
+        uint32_t ne = 0; /* its edges in e[]: those not horizontal */
+        for (i = 0; i < size; y = p[i++].y) ne += p[i].y != y;
+        /* the ring's rows (its edges' rows: floor(y0 / P) to ceil(y1 / P)
+         * - 1), its edges, not plain as ~ */
         rows[3 * r] = (int32_t)rast__floordiv(box[4 * r + 1], P);
         rows[3 * r + 1] = (int32_t)-rast__floordiv(-(int64_t)box[4 * r + 3], P) - 1;
-        rows[3 * r + 2] = nv[r] ? (int32_t)ne[r] : ~(int32_t)ne[r];
+        rows[3 * r + 2] = nv[r] ? (int32_t)ne : ~(int32_t)ne;
     }
     return -1;
 }

@@ -160,8 +160,24 @@ static int rast__cov_plain_pays(const rast_polygon *poly, const rast__cedge *e, 
     uint32_t k;
 #if !defined(__OPTIMIZE_SIZE__)
     uint32_t i, base;
+    uint64_t ady = 0; /* the sum of |dy| over the edges */
     (void)e;
     (void)n;
+    /* An edge's rows are at most |dy| / P + 2 (P = 2^s), so fewer than 6
+     * a vertex in all when the sum of |dy| / P is below 4 a vertex (short
+     * edges: text), found in a pass with no branch, the vertices in one
+     * run (each ring's first edge mended after) */
+    for (i = 1; i < npoints; i++) {
+        const int64_t d = (int64_t)poly->points[i].y - poly->points[i - 1].y;
+        ady += (uint64_t)(d < 0 ? -d : d);
+    }
+    for (k = 0, base = 0; k < poly->nrings; base += poly->ring_sizes[k], k++) {
+        const uint32_t size = poly->ring_sizes[k];
+        const int64_t y = size ? poly->points[base].y : 0, d = size ? poly->points[base + size - 1].y - y : 0,
+                      c = base ? poly->points[base - 1].y - y : 0;
+        ady += (uint64_t)(d < 0 ? -d : d) - (uint64_t)(size ? (c < 0 ? -c : c) : 0);
+    }
+    if ((ady >> s) + 2 * (uint64_t)npoints < 6 * (uint64_t)npoints) return 0;
     for (k = 0, base = 0; k < poly->nrings; base += poly->ring_sizes[k], k++) {
         const rast_point *pt = poly->points + base;
         const uint32_t size = poly->ring_sizes[k];
@@ -171,6 +187,7 @@ static int rast__cov_plain_pays(const rast_polygon *poly, const rast__cedge *e, 
             if (a != b) rows += (uint64_t)(((hi + off - 1) >> s) - ((lo + off) >> s) + 1);
             a = b;
         }
+        if (rows >= 6 * (uint64_t)npoints) return 1; /* (enough: the rest need not be counted) */
     }
 #else
     (void)poly;
@@ -235,19 +252,6 @@ static int rast__cov_convex(const rast_polygon *poly)
     }
     return turn != 0 && flips == 2;
 }
-#define RAST__COV_CONVEX(poly) rast__cov_convex(poly)
-/* Where the whole polygon's test does not pay (short edges: text, a row
- * or two each), the test part by part (coverage_plain.c), whose cost is
- * about linear in the vertices: 1 when every part is plain; -1 when the
- * plain parts' edges are marked, for rast__cov_area_marked's bands (a
- * polygon of several rings); 0 none. */
-#define RAST__COV_PARTS(poly, npoints, arena, s, e, n) \
-    ((poly)->nrings >= 2 ? rast__cov_parts_marked(poly, npoints, arena, s, e, n) : 0)
-#define RAST__COV_AREA_MARKED(e, n, poly, s, rule, o, arena) rast__cov_area_marked(e, n, (poly)->nrings, s, rule, o, arena)
-#else
-#define RAST__COV_CONVEX(poly) 0 /* (size-optimised: the plain test's way only) */
-#define RAST__COV_PARTS(poly, npoints, arena, s, e, n) 0
-#define RAST__COV_AREA_MARKED(e, n, poly, s, rule, o, arena) RAST_OK
 #endif
 
 /* Does "accumulate" drop the shared sides first (rast__cov_acc_shared)?
@@ -270,7 +274,9 @@ static rast_status rast__cov_run(const rast_polygon *poly, const rast_point *tri
     if (!kb) {
         rast__cedge *e = (rast__cedge *)rast__take(&arena, (size_t)npoints * sizeof(rast__cedge));
         uint32_t n;
-        int parts = 0; /* rast__cov_plain_parts' answer, when asked */
+#if !defined(__OPTIMIZE_SIZE__)
+        int parts = 0; /* rast__cov_parts_test's answer, when asked */
+#endif
         if (npoints && !e) return RAST_E_SCRATCH;
 #if !defined(__OPTIMIZE_SIZE__)
         /* "accumulate": its walk's records straight from the vertices
@@ -278,17 +284,33 @@ static rast_status rast__cov_run(const rast_polygon *poly, const rast_point *tri
         if (RAST__IS_ACC(opts->method) && rast__cov_acc_may(o, s))
             return rast__cov_acc_points(poly, tris, ntris, RAST__COV_SHARED(poly, tris, npoints), s, rule, o, e,
                                         &arena);
+        /* "area" of a polygon that is plain (coverage_plain.c: there the
+         * accumulation is the coverage), found from its points alone: its
+         * accumulation, from them too; the test where the whole polygon's
+         * does not pay (short edges: text, a row or two each), part by part
+         * (coverage_plain.c), whose cost is about linear in the vertices:
+         * -1 when only some parts are plain, whose edges are marked below
+         * for rast__cov_area_marked's bands (a polygon of several rings) */
+        if (!tris && rast__cov_acc_may(o, s) &&
+            (rast__cov_convex(poly) ||
+             (rast__cov_plain_pays(poly, e, 0, s, npoints) ? rast__cov_plain(poly, npoints, arena)
+                                                    : poly->nrings >= 2 &&
+                                                          (parts = rast__cov_parts_test(poly, npoints, arena, s)) > 0)))
+            return rast__cov_acc_points(poly, NULL, 0, 0, s, rule, o, e, &arena);
 #endif
         n = tris ? rast__cov_edges_triangles(tris, ntris, e) : rast__cov_edges_polygon(poly, e);
+#if !defined(__OPTIMIZE_SIZE__)
+        /* (some parts plain, their edges marked: "area" only) */
+        if (parts < 0 && rast__cov_parts_mark(arena, poly->nrings, e, n, RAST__HZ_BAD) < 0)
+            return rast__cov_area_marked(e, n, poly->nrings, s, rule, o, &arena);
+#else
         /* a triangle batch's shared edges cancel in rast__cov_area's sweep
          * before any row; a polygon's accumulation goes to rast__cov_acc,
          * and so does "area" of a plain polygon (coverage_plain.c: there
          * the accumulation is the coverage) */
         if (!tris && rast__cov_acc_may(o, s) &&
             (RAST__IS_ACC(opts->method) ||
-             RAST__COV_CONVEX(poly) ||
-             (rast__cov_plain_pays(poly, e, n, s, npoints) ? rast__cov_plain(poly, npoints, arena)
-                                                     : (parts = RAST__COV_PARTS(poly, npoints, arena, s, e, n)) > 0)))
+             (rast__cov_plain_pays(poly, e, n, s, npoints) && rast__cov_plain(poly, npoints, arena))))
             /* (16 rings or more of 8 vertices or fewer on the mean: a
              * mesh's, whose shared sides cancel first) */
             return RAST__IS_ACC(opts->method) && RAST__COV_SHARED(poly, tris, npoints)
@@ -297,8 +319,7 @@ static rast_status rast__cov_run(const rast_polygon *poly, const rast_point *tri
         /* a triangle batch's accumulation: its shared sides cancel first */
         if (tris && RAST__IS_ACC(opts->method) && rast__cov_acc_may(o, s))
             return rast__cov_acc_shared(e, n, s, rule, o, &arena);
-        /* (some parts plain, their edges marked: "area" only) */
-        if (parts < 0) return RAST__COV_AREA_MARKED(e, n, poly, s, rule, o, &arena);
+#endif
         return rast__cov_area(e, n, s, rule, RAST__IS_ACC(opts->method), o, &arena);
     } else {
         int32_t scale = s < kb ? kb - s : 0;

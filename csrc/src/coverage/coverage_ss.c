@@ -841,6 +841,107 @@ RAST__HOT void rast__ss_delta_row(unsigned char *row, int32_t stride, int32_t w,
     }
 }
 
+/* k = 4, uint8_t levels: the inside lanes of 16 summed counters (their
+ * running sum *sum moved on past them as rast__ss_delta16's) added to
+ * *acc's bytes, 1 each (even-odd: bit 0; non-zero: *acc counts down
+ * from 4 at the lanes outside, those equal to 0). */
+static inline void rast__ss_count16(unsigned char *c, __m128i *sum, __m128i *acc, int evenodd)
+{
+    __m128i v = _mm_add_epi8(rast__delta_take16(c), *sum), t;
+    t = _mm_unpackhi_epi8(v, v);
+    t = _mm_shufflehi_epi16(t, 0xFF);
+    *sum = _mm_unpackhi_epi64(t, t);
+    *acc = _mm_add_epi8(*acc, evenodd ? _mm_and_si128(v, _mm_set1_epi8(1))
+                                      : _mm_cmpeq_epi8(v, _mm_setzero_si128()));
+}
+
+/* Four vectors of inside counts, a byte a sample column (0 .. 4, the
+ * four fine rows'), to 16 pixels' uint8_t levels: each pixel's 4 columns
+ * summed (c, 0 .. 16) and its level rast__cov_level's floor((255 c + 8)
+ * / 16) = 16 c - (c > 8) (rast__ss_u8x16's; 16 x 16 is 0 modulo 2^8). */
+static inline __m128i rast__ss_levels16(__m128i a, __m128i b, __m128i c, __m128i d)
+{
+    const __m128i low = _mm_set1_epi32(0xFF);
+    __m128i n;
+    a = _mm_add_epi8(a, _mm_srli_epi32(a, 16));
+    b = _mm_add_epi8(b, _mm_srli_epi32(b, 16));
+    c = _mm_add_epi8(c, _mm_srli_epi32(c, 16));
+    d = _mm_add_epi8(d, _mm_srli_epi32(d, 16));
+    a = _mm_and_si128(_mm_add_epi8(a, _mm_srli_epi32(a, 8)), low);
+    b = _mm_and_si128(_mm_add_epi8(b, _mm_srli_epi32(b, 8)), low);
+    c = _mm_and_si128(_mm_add_epi8(c, _mm_srli_epi32(c, 8)), low);
+    d = _mm_and_si128(_mm_add_epi8(d, _mm_srli_epi32(d, 8)), low);
+    n = _mm_packus_epi16(_mm_packs_epi32(a, b), _mm_packs_epi32(c, d));
+    return _mm_add_epi8(_mm_and_si128(_mm_slli_epi16(n, 4), _mm_set1_epi8((char)0xF0)),
+                        _mm_cmpgt_epi8(n, _mm_set1_epi8(8)));
+}
+
+/* k = 4, uint8_t levels: output row R (clip-relative) straight from its
+ * four fine rows of counters at fr (stride bytes apart, the clip's
+ * columns first), 64 columns (16 pixels) at a time, the counters cleared:
+ * the prefix sums and the count of the 4 x 4 samples of each pixel in
+ * one pass, no rows of bits.  64 columns with no counter set are the
+ * running sums' constant.  A row none of whose counters is set is left
+ * to be zeroed (as rast__ss_bits_row's with no bit set). */
+static void rast__ss_delta_row4(rast__ss *ss, int32_t R, unsigned char *fr, int32_t stride)
+{
+    const rast__cov_out *o = ss->o;
+    const int evenodd = ss->evenodd;
+    const int32_t W = o->clip.x1 - o->clip.x0, y = o->clip.y0 + R;
+    const __m128i zero = _mm_setzero_si128(), four = _mm_set1_epi8(evenodd ? 0 : 4);
+    __m128i sum[4];
+    unsigned char *row = NULL;
+    int32_t k, u;
+    for (u = 0; u < 4; u++) sum[u] = zero;
+    for (k = 0; k < stride; k += 64) {
+        const int32_t base = k >> 2, n = W - base < 16 ? W - base : 16;
+        __m128i any = zero, lv;
+        for (u = 0; u < 4; u++) {
+            const unsigned char *c = fr + (size_t)u * (size_t)stride + (size_t)k;
+            any = _mm_or_si128(any, _mm_or_si128(_mm_or_si128(_mm_loadu_si128((const __m128i *)(const void *)c),
+                                                              _mm_loadu_si128((const __m128i *)(const void *)(c + 16))),
+                                                 _mm_or_si128(_mm_loadu_si128((const __m128i *)(const void *)(c + 32)),
+                                                              _mm_loadu_si128((const __m128i *)(const void *)(c + 48)))));
+        }
+        if (_mm_movemask_epi8(_mm_cmpeq_epi8(any, zero)) == 0xFFFF) {
+            /* every column as the one before: 4 samples a fine row inside */
+            __m128i a = four;
+            if (!row) continue; /* (0, as every pixel before) */
+            for (u = 0; u < 4; u++)
+                a = _mm_add_epi8(a, evenodd ? _mm_and_si128(sum[u], _mm_set1_epi8(1))
+                                            : _mm_cmpeq_epi8(sum[u], zero));
+            a = _mm_slli_epi16(a, 2); /* (at most 16 in a byte) */
+            lv = _mm_add_epi8(_mm_and_si128(_mm_slli_epi16(a, 4), _mm_set1_epi8((char)0xF0)),
+                              _mm_cmpgt_epi8(a, _mm_set1_epi8(8)));
+        } else {
+            __m128i a0 = four, a1 = four, a2 = four, a3 = four;
+            for (u = 0; u < 4; u++) {
+                unsigned char *c = fr + (size_t)u * (size_t)stride + (size_t)k;
+                rast__ss_count16(c, &sum[u], &a0, evenodd);
+                rast__ss_count16(c + 16, &sum[u], &a1, evenodd);
+                rast__ss_count16(c + 32, &sum[u], &a2, evenodd);
+                rast__ss_count16(c + 48, &sum[u], &a3, evenodd);
+            }
+            if (n <= 0) continue; /* (column w: a crossing right of the clip) */
+            lv = rast__ss_levels16(a0, a1, a2, a3);
+            if (!row) {
+                rast__cov_zero_rows(o, o->clip.y0 + ss->next, y);
+                ss->next = R + 1;
+                row = rast__cov_row(o, y);
+                memset(row, 0, (size_t)base);
+            }
+        }
+        if (n >= 16) {
+            _mm_storeu_si128((__m128i *)(void *)(row + base), lv);
+        } else if (n > 0) {
+            unsigned char tmp[16];
+            _mm_storeu_si128((__m128i *)(void *)tmp, lv);
+            memcpy(row + base, tmp, (size_t)n);
+        }
+    }
+    if (row) rast__cov_row_done(o, y);
+}
+
 /* The walk by deltas of the edge table t (npoints records of room in
  * t->edges, free once the records are set up in t->aet) when it pays:
  * many short edges (at least 2 a fine row), the fine rows' words of 64
@@ -938,6 +1039,10 @@ static int rast__ss_delta(rast__ss *ss, const rast__aet_tab *t, uint32_t npoints
         nact = m;
         for (R = Rb; R < Re; R++) {
             int32_t lo = INT32_MAX, hi = -1, u;
+            if (kb == 2 && ss->o->format == RAST_COVERAGE_U8) {
+                rast__ss_delta_row4(ss, R, buf + (size_t)((R - Rb) * K) * (size_t)stride, stride);
+                continue;
+            }
             for (u = 0; u < K; u++)
                 rast__ss_delta_row(buf + (size_t)((R - Rb) * K + u) * (size_t)stride, stride, w,
                                    ss->evenodd, bits + (size_t)u * wpr, &lo, &hi);

@@ -67,6 +67,52 @@ static inline void rast__ss_run(rast_coverage_format f, unsigned char *row, int3
     }
 }
 
+#if RAST__SS_DELTA
+/* k = 4: 16 counts c (0 .. 16) in bytes to their uint8_t levels,
+ * rast__cov_level's floor((255 c + 8) / 16) = 16 c - (c > 8)
+ * (rast__ss_u8x16's; 16 x 16 is 0 modulo 2^8). */
+static inline __m128i rast__ss_level16(__m128i n)
+{
+    return _mm_add_epi8(_mm_and_si128(_mm_slli_epi16(n, 4), _mm_set1_epi8((char)0xF0)),
+                        _mm_cmpgt_epi8(n, _mm_set1_epi8(8)));
+}
+
+/* rast__ss_flush_dense's sums in SSE2, 16 columns a step from column a
+ * while they are before b: the counts (running on from *count) summed
+ * along 4 int32_t at a time, their uint8_t levels worked out, not looked
+ * up: rast__cov_level's floor((255 c + 2^(2 kb - 1)) / 2^(2 kb)) for a
+ * count c of 0 .. 2^(2 kb) samples (at most 255 x 256: no lane spills).
+ * Returns the first column not done, *count the count before it. */
+static int32_t rast__ss_dense16(const int32_t *d, unsigned char *row, int32_t a, int32_t b,
+                                int32_t kb, int32_t *count)
+{
+    const __m128i half = _mm_set1_epi32(1 << (2 * kb - 1)), sh = _mm_cvtsi32_si128(2 * kb);
+    __m128i run = _mm_set1_epi32(*count), l[4];
+    int32_t i, j;
+    for (i = a; i + 16 <= b; i += 16) {
+        __m128i n;
+        for (j = 0; j < 4; j++) {
+            __m128i v = _mm_loadu_si128((const __m128i *)(const void *)(d + i + 4 * j));
+            v = _mm_add_epi32(v, _mm_slli_si128(v, 4));
+            v = _mm_add_epi32(v, _mm_slli_si128(v, 8));
+            l[j] = v = _mm_add_epi32(v, run);
+            run = _mm_shuffle_epi32(v, 0xFF);
+        }
+        if (kb == 2) { /* (the counts, 0 .. 16, as bytes) */
+            n = _mm_packus_epi16(_mm_packs_epi32(l[0], l[1]), _mm_packs_epi32(l[2], l[3]));
+            n = rast__ss_level16(n);
+        } else {
+            for (j = 0; j < 4; j++)
+                l[j] = _mm_srl_epi32(_mm_add_epi32(_mm_sub_epi32(_mm_slli_epi32(l[j], 8), l[j]), half), sh);
+            n = _mm_packus_epi16(_mm_packs_epi32(l[0], l[1]), _mm_packs_epi32(l[2], l[3]));
+        }
+        _mm_storeu_si128((__m128i *)(void *)(row + i), n);
+    }
+    *count = _mm_cvtsi128_si32(run);
+    return i;
+}
+#endif
+
 /* Write the output row: a marked column i is where a run's end changed
  * d[i] and d[i + 1] (rast__ss_end), so the count is constant from one
  * marked column's successor to the next marked column. */
@@ -85,7 +131,11 @@ static void rast__ss_flush_dense(rast__ss *ss, unsigned char *row, int32_t w, in
         } else if (ss->dense || ss->mark[k]) {
             /* four columns a step (the counts one after the other in
              * registers), then the differences cleared at once */
-            for (i = a; i + 4 <= b; i += 4) {
+            i = a;
+#if RAST__SS_DELTA
+            i = rast__ss_dense16(d, row, a, b, ss->kbits, &count);
+#endif
+            for (; i + 4 <= b; i += 4) {
                 const int32_t c0 = count + d[i], c1 = c0 + d[i + 1], c2 = c1 + d[i + 2];
                 count = c2 + d[i + 3];
                 row[i] = (unsigned char)level[c0];
@@ -857,8 +907,7 @@ static inline void rast__ss_count16(unsigned char *c, __m128i *sum, __m128i *acc
 
 /* Four vectors of inside counts, a byte a sample column (0 .. 4, the
  * four fine rows'), to 16 pixels' uint8_t levels: each pixel's 4 columns
- * summed (c, 0 .. 16) and its level rast__cov_level's floor((255 c + 8)
- * / 16) = 16 c - (c > 8) (rast__ss_u8x16's; 16 x 16 is 0 modulo 2^8). */
+ * summed (c, 0 .. 16) and its level (rast__ss_level16). */
 static inline __m128i rast__ss_levels16(__m128i a, __m128i b, __m128i c, __m128i d)
 {
     const __m128i low = _mm_set1_epi32(0xFF);
@@ -872,8 +921,7 @@ static inline __m128i rast__ss_levels16(__m128i a, __m128i b, __m128i c, __m128i
     c = _mm_and_si128(_mm_add_epi8(c, _mm_srli_epi32(c, 8)), low);
     d = _mm_and_si128(_mm_add_epi8(d, _mm_srli_epi32(d, 8)), low);
     n = _mm_packus_epi16(_mm_packs_epi32(a, b), _mm_packs_epi32(c, d));
-    return _mm_add_epi8(_mm_and_si128(_mm_slli_epi16(n, 4), _mm_set1_epi8((char)0xF0)),
-                        _mm_cmpgt_epi8(n, _mm_set1_epi8(8)));
+    return rast__ss_level16(n);
 }
 
 /* k = 4, uint8_t levels: output row R (clip-relative) straight from its
@@ -910,9 +958,7 @@ static void rast__ss_delta_row4(rast__ss *ss, int32_t R, unsigned char *fr, int3
             for (u = 0; u < 4; u++)
                 a = _mm_add_epi8(a, evenodd ? _mm_and_si128(sum[u], _mm_set1_epi8(1))
                                             : _mm_cmpeq_epi8(sum[u], zero));
-            a = _mm_slli_epi16(a, 2); /* (at most 16 in a byte) */
-            lv = _mm_add_epi8(_mm_and_si128(_mm_slli_epi16(a, 4), _mm_set1_epi8((char)0xF0)),
-                              _mm_cmpgt_epi8(a, _mm_set1_epi8(8)));
+            lv = rast__ss_level16(_mm_slli_epi16(a, 2)); /* (at most 16 in a byte) */
         } else {
             __m128i a0 = four, a1 = four, a2 = four, a3 = four;
             for (u = 0; u < 4; u++) {

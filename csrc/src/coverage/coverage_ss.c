@@ -799,42 +799,21 @@ static int rast__ss_narrow(const rast_point *pts, uint32_t npoints, int32_t s, i
  * bits are counted as a triangle batch's (rast__ss_bits_row).  No sort,
  * no key, no merge: a crossing costs an addition, a fine row a pass over
  * its counters (text: 137,000 crossings on 2,048 rows of 129 vectors, the
- * keys' walk 60 instructions a crossing).  Its own walk, not
- * fillers/aet.c's (static there, and its counters rows of pixels: here
- * of samples, the rows in bands of whole output rows). */
+ * keys' walk 60 instructions a crossing).  The walk is fillers/aet.c's
+ * (rast__delta_walk, base/aet.h), its counters rows of samples here, the
+ * rows in bands of whole output rows. */
 
 static void rast__ss_bits_row(rast__ss *ss, int32_t R, uint64_t *bits, size_t wpr, int32_t k0,
                               int32_t k1);
 
-/* Edge *e's direction `dir` at each of its crossings of the fine rows
- * [j0, j1) (counters from buf, stride bytes a row, columns relative to
- * fx0, with `clamp` cut to [0, w]); its DDA left on row j1 when it goes
- * on past it. */
-RAST__HOT void rast__ss_delta_walk(rast__edge *e, unsigned char *buf, int32_t j0, int32_t j1,
-                                   int32_t stride, int32_t fx0, int32_t w, unsigned char dir,
-                                   int clamp)
+/* The 64 counters at c or-ed together, 16 lanes: all 0 when none is set. */
+static inline __m128i rast__ss_or64(const unsigned char *c)
 {
-    const int32_t end = e->end, a = e->row < j0 ? j0 : e->row, b = end > j1 ? j1 : end;
-    /* (the DDA in locals: a byte store may alias the record) */
-    const int64_t dr = e->dr, q = e->q;
-    const int32_t step = e->step;
-    int64_t ee = e->e;
-    int32_t x = e->x - fx0, j;
-    unsigned char *p = buf + (ptrdiff_t)(a - j0) * stride;
-    for (j = a;;) {
-        const int32_t c = clamp ? (x < 0 ? 0 : x > w ? w : x) : x;
-        int64_t v, cy;
-        p[c] = (unsigned char)(p[c] + dir);
-        if (++j == b && b == end) break; /* (not stepped past its last row) */
-        v = ee - dr; /* (rast__edge_step) */
-        cy = v < 0;
-        x += step + (int32_t)cy;
-        ee = v + (q & -cy);
-        if (j == b) break;
-        p += stride;
-    }
-    e->e = ee;
-    e->x = x + fx0;
+    const __m128i a = _mm_loadu_si128((const __m128i *)(const void *)c),
+                  b = _mm_loadu_si128((const __m128i *)(const void *)(c + 16)),
+                  d = _mm_loadu_si128((const __m128i *)(const void *)(c + 32)),
+                  e = _mm_loadu_si128((const __m128i *)(const void *)(c + 48));
+    return _mm_or_si128(_mm_or_si128(a, b), _mm_or_si128(d, e));
 }
 
 /* 16 counters at c summed along (modulo 2^8) after the running sum
@@ -864,13 +843,9 @@ RAST__HOT void rast__ss_delta_row(unsigned char *row, int32_t stride, int32_t w,
     __m128i sum = _mm_setzero_si128(); /* the running sum, modulo 2^8, in every lane */
     int32_t k;
     for (k = 0; k < stride; k += 64) {
-        const __m128i a = _mm_loadu_si128((const __m128i *)(void *)(row + k)),
-                      b = _mm_loadu_si128((const __m128i *)(void *)(row + k + 16)),
-                      c = _mm_loadu_si128((const __m128i *)(void *)(row + k + 32)),
-                      d = _mm_loadu_si128((const __m128i *)(void *)(row + k + 48));
         uint64_t m;
-        if (_mm_movemask_epi8(_mm_cmpeq_epi8(_mm_or_si128(_mm_or_si128(a, b), _mm_or_si128(c, d)),
-                                             _mm_setzero_si128())) == 0xFFFF) {
+        if (_mm_movemask_epi8(_mm_cmpeq_epi8(rast__ss_or64(row + k), _mm_setzero_si128())) ==
+            0xFFFF) {
             /* no crossing: every column as the one before */
             const int in = evenodd ? _mm_movemask_epi8(_mm_slli_epi16(sum, 7)) != 0
                                    : _mm_movemask_epi8(_mm_cmpeq_epi8(sum, _mm_setzero_si128())) == 0;
@@ -944,13 +919,8 @@ static void rast__ss_delta_row4(rast__ss *ss, int32_t R, unsigned char *fr, int3
     for (k = 0; k < stride; k += 64) {
         const int32_t base = k >> 2, n = W - base < 16 ? W - base : 16;
         __m128i any = zero, lv;
-        for (u = 0; u < 4; u++) {
-            const unsigned char *c = fr + (size_t)u * (size_t)stride + (size_t)k;
-            any = _mm_or_si128(any, _mm_or_si128(_mm_or_si128(_mm_loadu_si128((const __m128i *)(const void *)c),
-                                                              _mm_loadu_si128((const __m128i *)(const void *)(c + 16))),
-                                                 _mm_or_si128(_mm_loadu_si128((const __m128i *)(const void *)(c + 32)),
-                                                              _mm_loadu_si128((const __m128i *)(const void *)(c + 48)))));
-        }
+        for (u = 0; u < 4; u++)
+            any = _mm_or_si128(any, rast__ss_or64(fr + (size_t)u * (size_t)stride + (size_t)k));
         if (_mm_movemask_epi8(_mm_cmpeq_epi8(any, zero)) == 0xFFFF) {
             /* every column as the one before: 4 samples a fine row inside */
             __m128i a = four;
@@ -986,6 +956,24 @@ static void rast__ss_delta_row4(rast__ss *ss, int32_t R, unsigned char *fr, int3
         }
     }
     if (row) rast__cov_row_done(o, y);
+}
+
+/* Edge *d through the fine rows [j0, j1) of a band (rast__delta_walk,
+ * base/aet.h: the clip's columns from fx0, w of them, cut when `clamp`),
+ * on a copy in locals (a byte store may alias the record: its DDA would
+ * be stored and loaded again at every row); 1 when it goes on past the
+ * band, its DDA then left on row j1. */
+RAST__HOT int rast__ss_delta_edge(rast__edge *d, unsigned char *buf, int32_t j0, int32_t j1,
+                            int32_t stride, int32_t fx0, int32_t w, int evenodd, int clamp)
+{
+    rast__edge l = *d;
+    const unsigned char dir = (unsigned char)(evenodd ? 1 : l.dir);
+    if (clamp) rast__delta_walk(&l, buf, j0, j1, stride, fx0, w, dir, 1, 1);
+    else rast__delta_walk(&l, buf, j0, j1, stride, fx0, w, dir, 1, 0);
+    if (l.end <= j1) return 0;
+    d->x = l.x;
+    d->e = l.e;
+    return 1;
 }
 
 /* The walk by deltas of the edge table t (npoints records of room in
@@ -1068,20 +1056,13 @@ static int rast__ss_delta(rast__ss *ss, const rast__aet_tab *t, uint32_t npoints
         int32_t i, m = 0;
         /* those going on, kept when they go on past this band; then the
          * band's new ones */
-        for (i = 0; i < nact; i++) {
-            rast__edge *d = &ed[act[i]];
-            const unsigned char dir = (unsigned char)(ss->evenodd ? 1 : d->dir);
-            if (clamp) rast__ss_delta_walk(d, buf, j0, j1, stride, ss->fx0, w, dir, 1);
-            else rast__ss_delta_walk(d, buf, j0, j1, stride, ss->fx0, w, dir, 0);
-            if (d->end > j1) act[m++] = act[i];
-        }
-        for (i = start[band]; i >= 0; i = link[i]) {
-            rast__edge *d = &ed[i];
-            const unsigned char dir = (unsigned char)(ss->evenodd ? 1 : d->dir);
-            if (clamp) rast__ss_delta_walk(d, buf, j0, j1, stride, ss->fx0, w, dir, 1);
-            else rast__ss_delta_walk(d, buf, j0, j1, stride, ss->fx0, w, dir, 0);
-            if (d->end > j1) act[m++] = i;
-        }
+        for (i = 0; i < nact; i++)
+            if (rast__ss_delta_edge(&ed[act[i]], buf, j0, j1, stride, ss->fx0, w, ss->evenodd,
+                                    clamp))
+                act[m++] = act[i];
+        for (i = start[band]; i >= 0; i = link[i])
+            if (rast__ss_delta_edge(&ed[i], buf, j0, j1, stride, ss->fx0, w, ss->evenodd, clamp))
+                act[m++] = i;
         nact = m;
         for (R = Rb; R < Re; R++) {
             int32_t lo = INT32_MAX, hi = -1, u;

@@ -573,6 +573,44 @@ static inline rast_status rast__aet_walk(const rast_polygon *poly, uint32_t npoi
     return RAST_OK;
 }
 
+#if !defined(__OPTIMIZE_SIZE__)
+/* ---- winding deltas in byte counters ----------------------------------------
+ * Edge *d's direction `dir` (1 under even-odd) added at each of its
+ * crossings of the band of rows [j0, j1), counters from buf (stride bytes
+ * a row, columns relative to col0); `rows`: its rows cut to the band (else
+ * they are inside it); `cut`: its columns cut to [0, bits] (a crossing left
+ * of them counts for every column of the row, one right of them for none;
+ * else they are inside them).  Its DDA is left on row j1 when it goes on
+ * past it (not stepped past its last row: nothing reads it).  The binary
+ * fill's deltas (fillers/aet.c, rows of pixels) and supersampling's
+ * (coverage/coverage_ss.c, rows of samples, the record a copy in locals
+ * there) both walk their edges here.  (Not in a build for size: neither
+ * takes the deltas there.) */
+static inline void rast__delta_walk(rast__edge *d, unsigned char *buf, int32_t j0, int32_t j1,
+                                    int32_t stride, int32_t col0, int32_t bits, unsigned char dir,
+                                    int rows, int cut)
+{
+    const int32_t a = rows && d->row < j0 ? j0 : d->row, b = rows && d->end > j1 ? j1 : d->end;
+    unsigned char *p = buf + (ptrdiff_t)(a - j0) * stride;
+    int32_t j;
+    if (a >= b) return;
+    d->x -= col0; /* (the counters' columns while it walks) */
+    for (j = a;;) {
+        int32_t c = d->x;
+        if (cut) {
+            c = c < 0 ? 0 : c;
+            c = c > bits ? bits : c;
+        }
+        p[c] = (unsigned char)(p[c] + dir);
+        if (++j == b) break;
+        p += stride;
+        rast__edge_step(d);
+    }
+    if (b < d->end) rast__edge_step(d);
+    d->x += col0;
+}
+#endif
+
 #if defined(__SSE2__) && !defined(RAST_NO_SIMD) && !defined(__OPTIMIZE_SIZE__)
 #include <emmintrin.h> /* (integer vectors only: every x86-64 has them) */
 /* The 16 byte counters of winding deltas at c, cleared, as their running

@@ -67,6 +67,52 @@ static inline void rast__ss_run(rast_coverage_format f, unsigned char *row, int3
     }
 }
 
+#if RAST__SS_DELTA
+/* k = 4: 16 counts c (0 .. 16) in bytes to their uint8_t levels,
+ * rast__cov_level's floor((255 c + 8) / 16) = 16 c - (c > 8)
+ * (rast__ss_u8x16's; 16 x 16 is 0 modulo 2^8). */
+static inline __m128i rast__ss_level16(__m128i n)
+{
+    return _mm_add_epi8(_mm_and_si128(_mm_slli_epi16(n, 4), _mm_set1_epi8((char)0xF0)),
+                        _mm_cmpgt_epi8(n, _mm_set1_epi8(8)));
+}
+
+/* rast__ss_flush_dense's sums in SSE2, 16 columns a step from column a
+ * while they are before b: the counts (running on from *count) summed
+ * along 4 int32_t at a time, their uint8_t levels worked out, not looked
+ * up: rast__cov_level's floor((255 c + 2^(2 kb - 1)) / 2^(2 kb)) for a
+ * count c of 0 .. 2^(2 kb) samples (at most 255 x 256: no lane spills).
+ * Returns the first column not done, *count the count before it. */
+static int32_t rast__ss_dense16(const int32_t *d, unsigned char *row, int32_t a, int32_t b,
+                                int32_t kb, int32_t *count)
+{
+    const __m128i half = _mm_set1_epi32(1 << (2 * kb - 1)), sh = _mm_cvtsi32_si128(2 * kb);
+    __m128i run = _mm_set1_epi32(*count), l[4];
+    int32_t i, j;
+    for (i = a; i + 16 <= b; i += 16) {
+        __m128i n;
+        for (j = 0; j < 4; j++) {
+            __m128i v = _mm_loadu_si128((const __m128i *)(const void *)(d + i + 4 * j));
+            v = _mm_add_epi32(v, _mm_slli_si128(v, 4));
+            v = _mm_add_epi32(v, _mm_slli_si128(v, 8));
+            l[j] = v = _mm_add_epi32(v, run);
+            run = _mm_shuffle_epi32(v, 0xFF);
+        }
+        if (kb == 2) { /* (the counts, 0 .. 16, as bytes) */
+            n = _mm_packus_epi16(_mm_packs_epi32(l[0], l[1]), _mm_packs_epi32(l[2], l[3]));
+            n = rast__ss_level16(n);
+        } else {
+            for (j = 0; j < 4; j++)
+                l[j] = _mm_srl_epi32(_mm_add_epi32(_mm_sub_epi32(_mm_slli_epi32(l[j], 8), l[j]), half), sh);
+            n = _mm_packus_epi16(_mm_packs_epi32(l[0], l[1]), _mm_packs_epi32(l[2], l[3]));
+        }
+        _mm_storeu_si128((__m128i *)(void *)(row + i), n);
+    }
+    *count = _mm_cvtsi128_si32(run);
+    return i;
+}
+#endif
+
 /* Write the output row: a marked column i is where a run's end changed
  * d[i] and d[i + 1] (rast__ss_end), so the count is constant from one
  * marked column's successor to the next marked column. */
@@ -85,7 +131,11 @@ static void rast__ss_flush_dense(rast__ss *ss, unsigned char *row, int32_t w, in
         } else if (ss->dense || ss->mark[k]) {
             /* four columns a step (the counts one after the other in
              * registers), then the differences cleared at once */
-            for (i = a; i + 4 <= b; i += 4) {
+            i = a;
+#if RAST__SS_DELTA
+            i = rast__ss_dense16(d, row, a, b, ss->kbits, &count);
+#endif
+            for (; i + 4 <= b; i += 4) {
                 const int32_t c0 = count + d[i], c1 = c0 + d[i + 1], c2 = c1 + d[i + 2];
                 count = c2 + d[i + 3];
                 row[i] = (unsigned char)level[c0];
@@ -749,42 +799,21 @@ static int rast__ss_narrow(const rast_point *pts, uint32_t npoints, int32_t s, i
  * bits are counted as a triangle batch's (rast__ss_bits_row).  No sort,
  * no key, no merge: a crossing costs an addition, a fine row a pass over
  * its counters (text: 137,000 crossings on 2,048 rows of 129 vectors, the
- * keys' walk 60 instructions a crossing).  Its own walk, not
- * fillers/aet.c's (static there, and its counters rows of pixels: here
- * of samples, the rows in bands of whole output rows). */
+ * keys' walk 60 instructions a crossing).  The walk is fillers/aet.c's
+ * (rast__delta_walk, base/aet.h), its counters rows of samples here, the
+ * rows in bands of whole output rows. */
 
 static void rast__ss_bits_row(rast__ss *ss, int32_t R, uint64_t *bits, size_t wpr, int32_t k0,
                               int32_t k1);
 
-/* Edge *e's direction `dir` at each of its crossings of the fine rows
- * [j0, j1) (counters from buf, stride bytes a row, columns relative to
- * fx0, with `clamp` cut to [0, w]); its DDA left on row j1 when it goes
- * on past it. */
-RAST__HOT void rast__ss_delta_walk(rast__edge *e, unsigned char *buf, int32_t j0, int32_t j1,
-                                   int32_t stride, int32_t fx0, int32_t w, unsigned char dir,
-                                   int clamp)
+/* The 64 counters at c or-ed together, 16 lanes: all 0 when none is set. */
+static inline __m128i rast__ss_or64(const unsigned char *c)
 {
-    const int32_t end = e->end, a = e->row < j0 ? j0 : e->row, b = end > j1 ? j1 : end;
-    /* (the DDA in locals: a byte store may alias the record) */
-    const int64_t dr = e->dr, q = e->q;
-    const int32_t step = e->step;
-    int64_t ee = e->e;
-    int32_t x = e->x - fx0, j;
-    unsigned char *p = buf + (ptrdiff_t)(a - j0) * stride;
-    for (j = a;;) {
-        const int32_t c = clamp ? (x < 0 ? 0 : x > w ? w : x) : x;
-        int64_t v, cy;
-        p[c] = (unsigned char)(p[c] + dir);
-        if (++j == b && b == end) break; /* (not stepped past its last row) */
-        v = ee - dr; /* (rast__edge_step) */
-        cy = v < 0;
-        x += step + (int32_t)cy;
-        ee = v + (q & -cy);
-        if (j == b) break;
-        p += stride;
-    }
-    e->e = ee;
-    e->x = x + fx0;
+    const __m128i a = _mm_loadu_si128((const __m128i *)(const void *)c),
+                  b = _mm_loadu_si128((const __m128i *)(const void *)(c + 16)),
+                  d = _mm_loadu_si128((const __m128i *)(const void *)(c + 32)),
+                  e = _mm_loadu_si128((const __m128i *)(const void *)(c + 48));
+    return _mm_or_si128(_mm_or_si128(a, b), _mm_or_si128(d, e));
 }
 
 /* 16 counters at c summed along (modulo 2^8) after the running sum
@@ -814,13 +843,9 @@ RAST__HOT void rast__ss_delta_row(unsigned char *row, int32_t stride, int32_t w,
     __m128i sum = _mm_setzero_si128(); /* the running sum, modulo 2^8, in every lane */
     int32_t k;
     for (k = 0; k < stride; k += 64) {
-        const __m128i a = _mm_loadu_si128((const __m128i *)(void *)(row + k)),
-                      b = _mm_loadu_si128((const __m128i *)(void *)(row + k + 16)),
-                      c = _mm_loadu_si128((const __m128i *)(void *)(row + k + 32)),
-                      d = _mm_loadu_si128((const __m128i *)(void *)(row + k + 48));
         uint64_t m;
-        if (_mm_movemask_epi8(_mm_cmpeq_epi8(_mm_or_si128(_mm_or_si128(a, b), _mm_or_si128(c, d)),
-                                             _mm_setzero_si128())) == 0xFFFF) {
+        if (_mm_movemask_epi8(_mm_cmpeq_epi8(rast__ss_or64(row + k), _mm_setzero_si128())) ==
+            0xFFFF) {
             /* no crossing: every column as the one before */
             const int in = evenodd ? _mm_movemask_epi8(_mm_slli_epi16(sum, 7)) != 0
                                    : _mm_movemask_epi8(_mm_cmpeq_epi8(sum, _mm_setzero_si128())) == 0;
@@ -839,6 +864,116 @@ RAST__HOT void rast__ss_delta_row(unsigned char *row, int32_t stride, int32_t w,
             *hi = (k >> 6) > *hi ? k >> 6 : *hi;
         }
     }
+}
+
+/* k = 4, uint8_t levels: the inside lanes of 16 summed counters (their
+ * running sum *sum moved on past them as rast__ss_delta16's) added to
+ * *acc's bytes, 1 each (even-odd: bit 0; non-zero: *acc counts down
+ * from 4 at the lanes outside, those equal to 0). */
+static inline void rast__ss_count16(unsigned char *c, __m128i *sum, __m128i *acc, int evenodd)
+{
+    __m128i v = _mm_add_epi8(rast__delta_take16(c), *sum), t;
+    t = _mm_unpackhi_epi8(v, v);
+    t = _mm_shufflehi_epi16(t, 0xFF);
+    *sum = _mm_unpackhi_epi64(t, t);
+    *acc = _mm_add_epi8(*acc, evenodd ? _mm_and_si128(v, _mm_set1_epi8(1))
+                                      : _mm_cmpeq_epi8(v, _mm_setzero_si128()));
+}
+
+/* Four vectors of inside counts, a byte a sample column (0 .. 4, the
+ * four fine rows'), to 16 pixels' uint8_t levels: each pixel's 4 columns
+ * summed (c, 0 .. 16) and its level (rast__ss_level16). */
+static inline __m128i rast__ss_levels16(__m128i a, __m128i b, __m128i c, __m128i d)
+{
+    const __m128i low = _mm_set1_epi32(0xFF);
+    __m128i n;
+    a = _mm_add_epi8(a, _mm_srli_epi32(a, 16));
+    b = _mm_add_epi8(b, _mm_srli_epi32(b, 16));
+    c = _mm_add_epi8(c, _mm_srli_epi32(c, 16));
+    d = _mm_add_epi8(d, _mm_srli_epi32(d, 16));
+    a = _mm_and_si128(_mm_add_epi8(a, _mm_srli_epi32(a, 8)), low);
+    b = _mm_and_si128(_mm_add_epi8(b, _mm_srli_epi32(b, 8)), low);
+    c = _mm_and_si128(_mm_add_epi8(c, _mm_srli_epi32(c, 8)), low);
+    d = _mm_and_si128(_mm_add_epi8(d, _mm_srli_epi32(d, 8)), low);
+    n = _mm_packus_epi16(_mm_packs_epi32(a, b), _mm_packs_epi32(c, d));
+    return rast__ss_level16(n);
+}
+
+/* k = 4, uint8_t levels: output row R (clip-relative) straight from its
+ * four fine rows of counters at fr (stride bytes apart, the clip's
+ * columns first), 64 columns (16 pixels) at a time, the counters cleared:
+ * the prefix sums and the count of the 4 x 4 samples of each pixel in
+ * one pass, no rows of bits.  64 columns with no counter set are the
+ * running sums' constant.  A row none of whose counters is set is left
+ * to be zeroed (as rast__ss_bits_row's with no bit set). */
+static void rast__ss_delta_row4(rast__ss *ss, int32_t R, unsigned char *fr, int32_t stride)
+{
+    const rast__cov_out *o = ss->o;
+    const int evenodd = ss->evenodd;
+    const int32_t W = o->clip.x1 - o->clip.x0, y = o->clip.y0 + R;
+    const __m128i zero = _mm_setzero_si128(), four = _mm_set1_epi8(evenodd ? 0 : 4);
+    __m128i sum[4];
+    unsigned char *row = NULL;
+    int32_t k, u;
+    for (u = 0; u < 4; u++) sum[u] = zero;
+    for (k = 0; k < stride; k += 64) {
+        const int32_t base = k >> 2, n = W - base < 16 ? W - base : 16;
+        __m128i any = zero, lv;
+        for (u = 0; u < 4; u++)
+            any = _mm_or_si128(any, rast__ss_or64(fr + (size_t)u * (size_t)stride + (size_t)k));
+        if (_mm_movemask_epi8(_mm_cmpeq_epi8(any, zero)) == 0xFFFF) {
+            /* every column as the one before: 4 samples a fine row inside */
+            __m128i a = four;
+            if (!row) continue; /* (0, as every pixel before) */
+            for (u = 0; u < 4; u++)
+                a = _mm_add_epi8(a, evenodd ? _mm_and_si128(sum[u], _mm_set1_epi8(1))
+                                            : _mm_cmpeq_epi8(sum[u], zero));
+            lv = rast__ss_level16(_mm_slli_epi16(a, 2)); /* (at most 16 in a byte) */
+        } else {
+            __m128i a0 = four, a1 = four, a2 = four, a3 = four;
+            for (u = 0; u < 4; u++) {
+                unsigned char *c = fr + (size_t)u * (size_t)stride + (size_t)k;
+                rast__ss_count16(c, &sum[u], &a0, evenodd);
+                rast__ss_count16(c + 16, &sum[u], &a1, evenodd);
+                rast__ss_count16(c + 32, &sum[u], &a2, evenodd);
+                rast__ss_count16(c + 48, &sum[u], &a3, evenodd);
+            }
+            if (n <= 0) continue; /* (column w: a crossing right of the clip) */
+            lv = rast__ss_levels16(a0, a1, a2, a3);
+            if (!row) {
+                rast__cov_zero_rows(o, o->clip.y0 + ss->next, y);
+                ss->next = R + 1;
+                row = rast__cov_row(o, y);
+                memset(row, 0, (size_t)base);
+            }
+        }
+        if (n >= 16) {
+            _mm_storeu_si128((__m128i *)(void *)(row + base), lv);
+        } else if (n > 0) {
+            unsigned char tmp[16];
+            _mm_storeu_si128((__m128i *)(void *)tmp, lv);
+            memcpy(row + base, tmp, (size_t)n);
+        }
+    }
+    if (row) rast__cov_row_done(o, y);
+}
+
+/* Edge *d through the fine rows [j0, j1) of a band (rast__delta_walk,
+ * base/aet.h: the clip's columns from fx0, w of them, cut when `clamp`),
+ * on a copy in locals (a byte store may alias the record: its DDA would
+ * be stored and loaded again at every row); 1 when it goes on past the
+ * band, its DDA then left on row j1. */
+RAST__HOT int rast__ss_delta_edge(rast__edge *d, unsigned char *buf, int32_t j0, int32_t j1,
+                            int32_t stride, int32_t fx0, int32_t w, int evenodd, int clamp)
+{
+    rast__edge l = *d;
+    const unsigned char dir = (unsigned char)(evenodd ? 1 : l.dir);
+    if (clamp) rast__delta_walk(&l, buf, j0, j1, stride, fx0, w, dir, 1, 1);
+    else rast__delta_walk(&l, buf, j0, j1, stride, fx0, w, dir, 1, 0);
+    if (l.end <= j1) return 0;
+    d->x = l.x;
+    d->e = l.e;
+    return 1;
 }
 
 /* The walk by deltas of the edge table t (npoints records of room in
@@ -921,23 +1056,20 @@ static int rast__ss_delta(rast__ss *ss, const rast__aet_tab *t, uint32_t npoints
         int32_t i, m = 0;
         /* those going on, kept when they go on past this band; then the
          * band's new ones */
-        for (i = 0; i < nact; i++) {
-            rast__edge *d = &ed[act[i]];
-            const unsigned char dir = (unsigned char)(ss->evenodd ? 1 : d->dir);
-            if (clamp) rast__ss_delta_walk(d, buf, j0, j1, stride, ss->fx0, w, dir, 1);
-            else rast__ss_delta_walk(d, buf, j0, j1, stride, ss->fx0, w, dir, 0);
-            if (d->end > j1) act[m++] = act[i];
-        }
-        for (i = start[band]; i >= 0; i = link[i]) {
-            rast__edge *d = &ed[i];
-            const unsigned char dir = (unsigned char)(ss->evenodd ? 1 : d->dir);
-            if (clamp) rast__ss_delta_walk(d, buf, j0, j1, stride, ss->fx0, w, dir, 1);
-            else rast__ss_delta_walk(d, buf, j0, j1, stride, ss->fx0, w, dir, 0);
-            if (d->end > j1) act[m++] = i;
-        }
+        for (i = 0; i < nact; i++)
+            if (rast__ss_delta_edge(&ed[act[i]], buf, j0, j1, stride, ss->fx0, w, ss->evenodd,
+                                    clamp))
+                act[m++] = act[i];
+        for (i = start[band]; i >= 0; i = link[i])
+            if (rast__ss_delta_edge(&ed[i], buf, j0, j1, stride, ss->fx0, w, ss->evenodd, clamp))
+                act[m++] = i;
         nact = m;
         for (R = Rb; R < Re; R++) {
             int32_t lo = INT32_MAX, hi = -1, u;
+            if (kb == 2 && ss->o->format == RAST_COVERAGE_U8) {
+                rast__ss_delta_row4(ss, R, buf + (size_t)((R - Rb) * K) * (size_t)stride, stride);
+                continue;
+            }
             for (u = 0; u < K; u++)
                 rast__ss_delta_row(buf + (size_t)((R - Rb) * K + u) * (size_t)stride, stride, w,
                                    ss->evenodd, bits + (size_t)u * wpr, &lo, &hi);

@@ -281,34 +281,6 @@ static void rast__delta_bytes(unsigned char *row, int32_t stride, int32_t bits, 
     }
 }
 
-/* Edge d's direction (1 under even-odd) added at each of its crossings of
- * the band of rows [j0, j1) (counters from buf, stride bytes a row);
- * `cut`: its rows and columns cut to the band and to [0, bits] (else they
- * are inside them).  The edge's DDA is left on the band's end when it
- * goes on past it (not stepped past its last row: nothing reads it). */
-static inline void rast__delta_walk(rast__edge *d, unsigned char *buf, int32_t j0, int32_t j1,
-                                    int32_t stride, int32_t col0, int32_t bits, uint32_t mask,
-                                    int cut)
-{
-    const int32_t a = cut && d->row < j0 ? j0 : d->row, b = cut && d->end > j1 ? j1 : d->end;
-    const unsigned char dir = (unsigned char)(mask == 1 ? 1 : d->dir);
-    unsigned char *p = buf + (ptrdiff_t)(a - j0) * stride;
-    int32_t j;
-    if (a >= b) return;
-    for (j = a;;) {
-        int32_t c = d->x - col0;
-        if (cut) {
-            c = c < 0 ? 0 : c;
-            c = c > bits ? bits : c;
-        }
-        p[c] = (unsigned char)(p[c] + dir);
-        if (++j == b) break;
-        p += stride;
-        rast__edge_step(d);
-    }
-    if (b < d->end) rast__edge_step(d);
-}
-
 /* The counters' columns: the polygon's box within the clip's (as
  * rast__box_of: the first columns counting the least and the greatest
  * abscissa bound every crossing's), col0 and bits = col1 - col0, a row's
@@ -421,10 +393,12 @@ static int rast__aet_delta(size_t room, const rast__grid *g, rast_fill_rule rule
          * band's and its crossings the box's: nothing to cut). */
         if (whole) {
             for (e = 0; e < t->nedges; e++)
-                rast__delta_walk(&ed[e], buf, j0, j1, d.stride, d.col0, d.bits, d.mask, 0);
+                rast__delta_walk(&ed[e], buf, j0, j1, d.stride, d.col0, d.bits,
+                                 (unsigned char)(d.mask == 1 ? 1 : ed[e].dir), 0, 0);
         } else {
             for (e = 0; e < t->nedges; e++)
-                rast__delta_walk(&ed[e], buf, j0, j1, d.stride, d.col0, d.bits, d.mask, 1);
+                rast__delta_walk(&ed[e], buf, j0, j1, d.stride, d.col0, d.bits,
+                                 (unsigned char)(d.mask == 1 ? 1 : ed[e].dir), 1, 1);
         }
         /* Row by row: the runs. */
         rast__delta_out(buf, j0, j1, &d, direct, &out, sink);
@@ -514,7 +488,8 @@ static int rast__aet_delta_now(const rast_polygon *poly, uint32_t npoints, const
                 starts[ed.row - row0]++;
                 starts[ed.end - row0]--;
             }
-            rast__delta_walk(&ed, buf, row0, row1, d.stride, d.col0, d.bits, d.mask, 1);
+            rast__delta_walk(&ed, buf, row0, row1, d.stride, d.col0, d.bits,
+                             (unsigned char)(d.mask == 1 ? 1 : ed.dir), 1, 1);
         }
     }
     *arena = keep; /* (nothing taken is read after the fill) */

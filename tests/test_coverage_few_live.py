@@ -49,21 +49,16 @@ def _fan(rnd, w, nlive, up, ndead, lean, q=1 / 256, h=1):
     the other in turn; directions: nlive at winding 0 and 1 in turn, a climb
     of `up`, ndead deep inside, the way down; the right sides on one line
     outside the canvas; vertices on the grid q."""
-    def snap(v):
-        return float(np.round(v / q) * q)
-
-    dirs = [1 if k % 2 == 0 else -1 for k in range(nlive)]
-    dirs += [1] * up + [-1 if k % 2 else 1 for k in range(ndead)] + [-1] * up
-    if sum(dirs):
-        dirs.append(-sum(dirs))
+    turns = [(-1) ** k for k in range(max(nlive, ndead))]
+    dirs = turns[:nlive] + [1] * up + turns[:ndead] + [-1] * up
+    dirs += [-sum(dirs)] if sum(dirs) else []
+    k = np.arange(len(dirs))
     step = (w - 1.0) / len(dirs)
-    rl = []
-    for k, d in enumerate(dirs):
-        s = (1 if k % 2 else -1) * float(rnd.uniform(*lean)) * step
-        lt, lb = snap(0.5 + step * k + s), snap(0.5 + step * k - s)
-        r = [(lt, -1.0), (lb, h + 1.0), (w + 5.0, h + 1.0), (w + 5.0, -1.0)]
-        rl.append(r if d > 0 else r[::-1])
-    return rl
+    s = np.where(k % 2, 1, -1) * rnd.uniform(lean[0], lean[1], len(dirs)) * step
+    top, bot = (np.round((0.5 + step * k + sg * s) / q) * q for sg in (1, -1))
+    return [r if d > 0 else r[::-1] for d, r in
+            zip(dirs, ([(float(a), -1.0), (float(b), h + 1.0), (w + 5.0, h + 1.0), (w + 5.0, -1.0)]
+                       for a, b in zip(top, bot)))]
 
 
 def _check(rl, shape, what):

@@ -271,8 +271,18 @@ static rast_status rast__cov_run(const rast_polygon *poly, const rast_point *tri
         rast__cedge *e = (rast__cedge *)rast__take(&arena, (size_t)npoints * sizeof(rast__cedge));
         uint32_t n;
         int parts = 0; /* rast__cov_plain_parts' answer, when asked */
+        int convex = -1; /* rast__cov_convex's answer, when asked */
         if (npoints && !e) return RAST_E_SCRATCH;
 #if !defined(__OPTIMIZE_SIZE__)
+        /* one small convex ring painted (a tiny polygon a call): its
+         * levels without the engines' setup (coverage_small.c), unless
+         * one is too near a tie for its 64 bits */
+        if (poly && o->paint) {
+            rast_rect box;
+            if (rast__cov_small_fits(poly, s, &box) && (convex = rast__cov_convex(poly)) != 0 &&
+                rast__cov_small(poly, s, o, &box))
+                return RAST_OK;
+        }
         /* "accumulate": its walk's records straight from the vertices
          * (coverage_acc.c), the same edges and levels as below */
         if (RAST__IS_ACC(opts->method) && rast__cov_acc_may(o, s))
@@ -286,7 +296,7 @@ static rast_status rast__cov_run(const rast_polygon *poly, const rast_point *tri
          * the accumulation is the coverage) */
         if (!tris && rast__cov_acc_may(o, s) &&
             (RAST__IS_ACC(opts->method) ||
-             RAST__COV_CONVEX(poly) ||
+             (convex >= 0 ? convex : RAST__COV_CONVEX(poly)) ||
              (rast__cov_plain_pays(poly, e, n, s, npoints) ? rast__cov_plain(poly, npoints, arena)
                                                      : (parts = RAST__COV_PARTS(poly, npoints, arena, s, e, n)) > 0)))
             /* (16 rings or more of 8 vertices or fewer on the mean: a

@@ -312,6 +312,15 @@ static rast_status rast__cov_run(const rast_polygon *poly, const rast_point *tri
         return rast__cov_area(e, n, s, rule, RAST__IS_ACC(opts->method), o, &arena);
     } else {
         int32_t scale = s < kb ? kb - s : 0;
+#if !defined(__OPTIMIZE_SIZE__)
+        /* "ss2", "ss4" of one small convex ring painted: its samples'
+         * spans straight from the vertices (coverage_small.c) */
+        rast_rect box;
+        if (poly && o->paint && kb <= 2 && s > kb && rast__cov_small_fits(poly, s, &box) && rast__cov_convex(poly)) {
+            rast__cov_small_ss(poly, s, kb, opts->sample, o, &box);
+            return RAST_OK;
+        }
+#endif
         rast_point *q = (rast_point *)rast__take(&arena, (size_t)npoints * sizeof(rast_point));
         uint32_t *sizes = (uint32_t *)rast__take(&arena, (size_t)npoints * sizeof(uint32_t));
         rast_polygon fine;

@@ -276,9 +276,19 @@ static rast_status rast__cov_run(const rast_polygon *poly, const rast_point *tri
         uint32_t n;
 #if !defined(__OPTIMIZE_SIZE__)
         int parts = 0; /* rast__cov_parts_test's answer, when asked */
+        int convex = -1; /* rast__cov_convex's answer, when asked */
 #endif
         if (npoints && !e) return RAST_E_SCRATCH;
 #if !defined(__OPTIMIZE_SIZE__)
+        /* one small convex ring painted (a tiny polygon a call): its
+         * levels without the engines' setup (coverage_small.c), unless
+         * one is too near a tie for its 64 bits */
+        if (poly && o->paint) {
+            rast_rect box;
+            if (rast__cov_small_fits(poly, s, &box) && (convex = rast__cov_convex(poly)) != 0 &&
+                rast__cov_small(poly, s, o, &box))
+                return RAST_OK;
+        }
         /* "accumulate": its walk's records straight from the vertices
          * (coverage_acc.c), the same edges and levels as below */
         if (RAST__IS_ACC(opts->method) && rast__cov_acc_may(o, s))
@@ -292,7 +302,7 @@ static rast_status rast__cov_run(const rast_polygon *poly, const rast_point *tri
          * -1 when only some parts are plain, whose edges are marked below
          * for rast__cov_area_marked's bands (a polygon of several rings) */
         if (!tris && rast__cov_acc_may(o, s) &&
-            (rast__cov_convex(poly) ||
+            ((convex >= 0 ? convex : rast__cov_convex(poly)) ||
              (rast__cov_plain_pays(poly, e, 0, s, npoints) ? rast__cov_plain(poly, npoints, arena)
                                                     : poly->nrings >= 2 &&
                                                           (parts = rast__cov_parts_test(poly, npoints, arena, s)) > 0)))
@@ -323,6 +333,15 @@ static rast_status rast__cov_run(const rast_polygon *poly, const rast_point *tri
         return rast__cov_area(e, n, s, rule, RAST__IS_ACC(opts->method), o, &arena);
     } else {
         int32_t scale = s < kb ? kb - s : 0;
+#if !defined(__OPTIMIZE_SIZE__)
+        /* "ss2", "ss4" of one small convex ring painted: its samples'
+         * spans straight from the vertices (coverage_small.c) */
+        rast_rect box;
+        if (poly && o->paint && kb <= 2 && s > kb && rast__cov_small_fits(poly, s, &box) && rast__cov_convex(poly)) {
+            rast__cov_small_ss(poly, s, kb, opts->sample, o, &box);
+            return RAST_OK;
+        }
+#endif
         rast_point *q = (rast_point *)rast__take(&arena, (size_t)npoints * sizeof(rast_point));
         uint32_t *sizes = (uint32_t *)rast__take(&arena, (size_t)npoints * sizeof(uint32_t));
         rast_polygon fine;

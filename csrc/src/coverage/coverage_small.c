@@ -1,0 +1,325 @@
+/*
+ * coverage_small.c - "area" and "accumulate" of one small convex ring
+ * painted through a painter (the anti-aliased fills: a tiny polygon a
+ * call, Canvas.fill_polygon in a loop, issue 33), without the engines'
+ * setup: no edge records, no sort, no bands, one row of cells.
+ *
+ * A convex ring (entry/coverage.c's test) is plain (coverage_plain.c):
+ * its winding number is 0 outside and +1 or -1 inside, so the
+ * accumulation of its edges is its exact coverage, for "area" and
+ * "accumulate" alike, under either rule (docs/coverage.md).  Each pixel
+ * gets the level floor(a M + 1/2), M = 255, of its exact area a, as the
+ * 128-bit sums of the engines give it away from a tie; here a is summed
+ * in 64 bits, the signed area right of each edge's piece in each cell
+ * (FreeType's cover and area in one word a column, run along the row),
+ * on a grid of 2^-K pixel (K = 26) relative to the ring's pixel box.
+ * Only the crossings of an edge with the row lines (abscissae) and with
+ * the column lines (ordinates) are rounded, down, by less than one unit;
+ * a pixel's value is then off by less than 2^(K + 4) units of 2^-(2K + 1)
+ * pixel per edge in its row (the columns left of it: the two ends of the
+ * edge's run there; its own cell: the piece's height and its abscissae).
+ * Where some level lies within that bound of a tie (times M, and the
+ * engines' own 2^-50) the call declines before it has painted a pixel,
+ * and the engines take the ring: the levels are theirs, bit for bit.
+ *
+ * Bounds: a pixel box of at most RAST__CS_DIM pixels a side, S <= 16
+ * (so that K - S >= 10), at most RAST__CS_EDGES vertices.  Ordinates
+ * and abscissae from the box's corner are below 2^(K + 5) = 2^31, so a
+ * product of two differences (a crossing's numerator) is below 2^62; a
+ * piece's part dt (f0 + f1) is below 2^53, a row's running sum below
+ * 2^54 (a convex ring's pieces of one sign cover a column's height
+ * once), a level's numerator below 2^62.  Not in size-optimised builds.
+ */
+#include "coverage.h"
+
+#if !defined(__OPTIMIZE_SIZE__)
+
+#define RAST__CS_K 26
+#define RAST__CS_ONE ((int64_t)1 << RAST__CS_K)
+#define RAST__CS_FULL ((int64_t)1 << (2 * RAST__CS_K + 1)) /* a pixel's area, in the cells' units */
+
+/* An edge, top end first, in units of 2^-K pixel from the box's corner;
+ * s its direction (+1 down). */
+typedef struct rast__cs_edge {
+    int64_t x0, y0, x1, y1, dx, dy;
+    int32_t s;
+} rast__cs_edge;
+
+int rast__cov_small_fits(const rast_polygon *poly, int32_t s, rast_rect *box)
+{
+    const rast_point *p = poly->points;
+    uint32_t n, i;
+    int32_t x0, y0, x1, y1;
+    if (poly->nrings != 1 || s > 16 || (n = poly->ring_sizes[0]) < 3 || n > RAST__CS_EDGES) return 0;
+    x0 = x1 = p[0].x;
+    y0 = y1 = p[0].y;
+    for (i = 1; i < n; i++) {
+        if (p[i].x < x0) x0 = p[i].x;
+        if (p[i].x > x1) x1 = p[i].x;
+        if (p[i].y < y0) y0 = p[i].y;
+        if (p[i].y > y1) y1 = p[i].y;
+    }
+    /* the pixels the ring reaches (|coordinates| < 2^27: no overflow) */
+    box->x0 = x0 >> s;
+    box->y0 = y0 >> s;
+    box->x1 = (int32_t)(((int64_t)x1 + ((int64_t)1 << s) - 1) >> s);
+    box->y1 = (int32_t)(((int64_t)y1 + ((int64_t)1 << s) - 1) >> s);
+    return box->x1 - box->x0 <= RAST__CS_DIM && box->y1 - box->y0 <= RAST__CS_DIM;
+}
+
+/* The piece from (f0, t0) to (f1, t1) (abscissae from column c's left,
+ * ordinates from the row's top), sign s: its area right of it in cell c,
+ * the whole height in every cell right of c (acc[c + 1] holds the rest,
+ * for the running sum). */
+static void rast__cs_add(int64_t *acc, int64_t c, int64_t f0, int64_t f1, int64_t t0, int64_t t1, int32_t s)
+{
+    const int64_t dt = t1 - t0, a = dt * (f0 + f1), whole = dt * (2 * RAST__CS_ONE);
+    acc[c] += s > 0 ? whole - a : a - whole;
+    acc[c + 1] += s > 0 ? a : -a;
+}
+
+/* floor(a / b), b > 0. */
+static int64_t rast__cs_floor(int64_t a, int64_t b)
+{
+    int64_t q, r;
+    rast__floordivmod(a, b, &q, &r);
+    return q;
+}
+
+/* A stepper of floor(a + k q / d) for k = 0, 1, ... (d > 0): v, the
+ * remainder rem over d (0 <= rem < d), the step's whole part and rest. */
+typedef struct rast__cs_step {
+    int64_t v, rem, q, qr, d;
+} rast__cs_step;
+
+/* v = a + floor(num / d), stepping by step / d. */
+static void rast__cs_step_init(rast__cs_step *st, int64_t a, int64_t num, int64_t step, int64_t d)
+{
+    rast__floordivmod(num, d, &st->v, &st->rem);
+    st->v += a;
+    rast__floordivmod(step, d, &st->q, &st->qr);
+    st->d = d;
+}
+
+static void rast__cs_step_next(rast__cs_step *st)
+{
+    st->v += st->q;
+    st->rem += st->qr;
+    if (st->rem >= st->d) {
+        st->rem -= st->d;
+        st->v++;
+    }
+}
+
+/* Edge e into the rows of cells acc (a row every `stride` words, the
+ * first the box's top): each row's piece split at the column lines it
+ * crosses.  The abscissae at the row lines and the ordinates at the
+ * column lines, floor(.) of their exact values, by two steppers (a
+ * division or two an edge, not one a crossing). */
+static void rast__cs_walk(int64_t *acc, int32_t stride, const rast__cs_edge *e)
+{
+    const int64_t adx = e->dx < 0 ? -e->dx : e->dx;
+    int64_t r = e->y0 >> RAST__CS_K, xa = e->x0, ya = e->y0;
+    /* the next column line the edge crosses, and its ordinate there */
+    int64_t cx = (xa >> RAST__CS_K) + (e->dx > 0);
+    rast__cs_step xr, ty = {0, 0, 0, 0, 1};
+    int have_t = 0;
+    rast__cs_step_init(&xr, e->x0, e->dx * (((r + 1) << RAST__CS_K) - e->y0), e->dx * RAST__CS_ONE, e->dy);
+    for (;; r++) {
+        const int64_t rt = r << RAST__CS_K, yb = e->y1 < rt + RAST__CS_ONE ? e->y1 : rt + RAST__CS_ONE;
+        const int64_t xb = yb == e->y1 ? e->x1 : xr.v, cb = xb >> RAST__CS_K, tb = yb - rt;
+        int64_t *row = acc + r * stride;
+        int64_t c = xa >> RAST__CS_K, f = xa - (c << RAST__CS_K), t = ya - rt, tx;
+        if (c != cb && !have_t) { /* the first column line crossed */
+            rast__cs_step_init(&ty, e->y0, ((cx << RAST__CS_K) - e->x0) * (e->dx > 0 ? e->dy : -e->dy),
+                                  RAST__CS_ONE * e->dy, adx);
+            have_t = 1;
+        }
+        for (; c < cb; c++) { /* going right: the lines c + 1 .. cb */
+            tx = ty.v - rt;
+            if (tx > tb) tx = tb;
+            if (tx < t) tx = t;
+            rast__cs_add(row, c, f, RAST__CS_ONE, t, tx, e->s);
+            t = tx;
+            f = 0;
+            rast__cs_step_next(&ty);
+        }
+        for (; c > cb; c--) { /* going left: the lines c .. cb + 1 */
+            tx = ty.v - rt;
+            if (tx > tb) tx = tb;
+            if (tx < t) tx = t;
+            rast__cs_add(row, c, f, 0, t, tx, e->s);
+            t = tx;
+            f = RAST__CS_ONE;
+            rast__cs_step_next(&ty);
+        }
+        rast__cs_add(row, cb, f, xb - (cb << RAST__CS_K), t, tb, e->s);
+        if (yb == e->y1) return;
+        xa = xb;
+        ya = yb;
+        rast__cs_step_next(&xr);
+    }
+}
+
+/* The box's levels lv[] (a row of its width after another), every one
+ * decided: its rows inside o's clip handed on. */
+static void rast__cs_hand_on(const unsigned char *lv, const rast_rect *box, const rast__cov_out *o)
+{
+    const int32_t w = box->x1 - box->x0;
+    const int32_t x0 = box->x0 > o->clip.x0 ? box->x0 : o->clip.x0;
+    const int32_t x1 = box->x1 < o->clip.x1 ? box->x1 : o->clip.x1;
+    const int32_t y0 = box->y0 > o->clip.y0 ? box->y0 : o->clip.y0;
+    const int32_t y1 = box->y1 < o->clip.y1 ? box->y1 : o->clip.y1;
+    rast__cov_out row = *o;
+    int32_t y;
+    row.clip.x0 = x0;
+    row.clip.x1 = x1;
+    for (y = y0; x0 < x1 && y < y1; y++) {
+        row.base = (unsigned char *)lv + (y - box->y0) * w + (x0 - box->x0);
+        rast__cov_row_done(&row, y);
+    }
+}
+
+int rast__cov_small(const rast_polygon *poly, int32_t s, const rast__cov_out *o, const rast_rect *box)
+{
+    rast__cs_edge e[RAST__CS_EDGES];
+    unsigned char lv[RAST__CS_DIM * RAST__CS_DIM];
+    int64_t acc[RAST__CS_DIM * (RAST__CS_DIM + 2)];
+    uint32_t m[RAST__CS_DIM];
+    const rast_point *p = poly->points;
+    const uint32_t n = poly->ring_sizes[0];
+    const int32_t w = box->x1 - box->x0, h = box->y1 - box->y0, sh = RAST__CS_K - s;
+    const int64_t bx = (int64_t)box->x0 << s, by = (int64_t)box->y0 << s;
+    uint32_t i, ne = 0;
+    int32_t r, c;
+    if (w <= 0 || h <= 0) return 1; /* no area: nothing to paint */
+    for (i = 0; i < n; i++) { /* the edges not horizontal, top end first */
+        const rast_point a = p[i], b = p[i + 1 < n ? i + 1 : 0];
+        const int down = a.y < b.y;
+        const rast_point t = down ? a : b, u = down ? b : a;
+        if (a.y == b.y) continue;
+        e[ne].x0 = (int64_t)((uint64_t)(t.x - bx) << sh);
+        e[ne].y0 = (int64_t)((uint64_t)(t.y - by) << sh);
+        e[ne].x1 = (int64_t)((uint64_t)(u.x - bx) << sh);
+        e[ne].y1 = (int64_t)((uint64_t)(u.y - by) << sh);
+        e[ne].dx = e[ne].x1 - e[ne].x0;
+        e[ne].dy = e[ne].y1 - e[ne].y0;
+        e[ne].s = down ? 1 : -1;
+        ne++;
+    }
+    memset(acc, 0, (size_t)h * (size_t)(w + 2) * sizeof(acc[0]));
+    memset(m, 0, (size_t)h * sizeof(m[0]));
+    for (i = 0; i < ne; i++) {
+        rast__cs_walk(acc, w + 2, &e[i]);
+        for (r = (int32_t)(e[i].y0 >> RAST__CS_K); r < h && (int64_t)r << RAST__CS_K < e[i].y1; r++) m[r]++;
+    }
+    for (r = 0; r < h; r++) {
+        const int64_t *cells = acc + r * (w + 2);
+        /* the window round a tie: M times the row's edges' bound, and the
+         * engines' own error (below 2^-50 pixel: 2^3 units) */
+        const uint64_t win = 255 * (uint64_t)m[r] * ((uint64_t)1 << (RAST__CS_K + 4)) + 4096;
+        int64_t v = 0;
+        for (c = 0; c < w; c++) {
+            int64_t a;
+            uint64_t num;
+            v += cells[c];
+            a = v < 0 ? -v : v;
+            if (!a || a >= RAST__CS_FULL) { /* none, or whole (within the bound of 1: 255) */
+                lv[r * w + c] = a ? 255 : 0;
+                continue;
+            }
+            num = (uint64_t)a * 255 + RAST__CS_FULL / 2;
+            /* the fraction within win of 0 or of 1: near a tie, the engines' */
+            if (((num - win - 1) & (RAST__CS_FULL - 1)) >= (uint64_t)RAST__CS_FULL - 2 * win - 1) return 0;
+            lv[r * w + c] = (unsigned char)(num >> (2 * RAST__CS_K + 1));
+        }
+    }
+    rast__cs_hand_on(lv, box, o);
+    return 1;
+}
+
+/* A pixel row's levels from its row of differences d[] over the fine
+ * columns (k = 2 or 4 a pixel): the level of the magnitude of each
+ * pixel's k running sums. */
+static inline void rast__cs_counts(const signed char *d, int32_t w, int32_t k, const uint64_t *level,
+                                      unsigned char *lv)
+{
+    int32_t v = 0, c, sum;
+    for (c = 0; c < w; c++, d += k) {
+        /* the k running sums: k v plus each difference times the sums it reaches */
+        if (k == 4) {
+            sum = 4 * v + 4 * d[0] + 3 * d[1] + 2 * d[2] + d[3];
+            v += d[0] + d[1] + d[2] + d[3];
+        } else {
+            sum = 2 * v + 2 * d[0] + d[1];
+            v += d[0] + d[1];
+        }
+        lv[c] = (unsigned char)level[sum < 0 ? -sum : sum];
+    }
+}
+
+/* "ss2" and "ss4" (k = 2^kb) of the same rings: the binary rule on the
+ * grid k times finer (coverage_ss.c; docs/semantics.md: a sample row y is
+ * crossed by the edges with y0 <= y < y1, a sample is inside when a
+ * crossing lies at or left of it and the other right of it), counted per
+ * pixel.  A convex ring's sample row has no crossing or two, the left one
+ * of one direction all down the ring and the right one of the other; so
+ * one row of differences per pixel row, each crossing's direction added
+ * at the first sample column at or right of it, summed along gives that
+ * direction times the samples inside each fine column, and the pixel's
+ * count is the magnitude of its k columns' sum.  The samples sit on the
+ * fixed grid when S > kb: fine column I's at I 2^(S - kb) (+ 2^(S - kb - 1)
+ * for centres).  Each edge's first sample column on its sample rows,
+ * ceil((x - offset) / step) of its exact abscissa x there, by a stepper. */
+void rast__cov_small_ss(const rast_polygon *poly, int32_t s, int32_t kb, rast_sample sample,
+                        const rast__cov_out *o, const rast_rect *box)
+{
+    signed char d[RAST__CS_DIM * (RAST__CS_DIM * 4 + 2)];
+    unsigned char lv[RAST__CS_DIM * RAST__CS_DIM];
+    const rast_point *p = poly->points;
+    const uint32_t n = poly->ring_sizes[0];
+    const int32_t w = box->x1 - box->x0, h = box->y1 - box->y0, k = 1 << kb, fw = w * k + 2;
+    const int64_t st = (int64_t)1 << (s - kb), off = sample == RAST_SAMPLE_CENTER ? st / 2 : 0;
+    const int64_t bx = (int64_t)box->x0 << s, by = (int64_t)box->y0 << s;
+    uint64_t level[17];
+    uint32_t i;
+    int32_t r, j;
+    if (w <= 0 || h <= 0) return;
+    for (j = 0; j <= k * k; j++) level[j] = rast__cov_level(RAST_COVERAGE_U8, (uint64_t)j << (62 - 2 * kb));
+    memset(d, 0, (size_t)h * (size_t)fw);
+    for (i = 0; i < n; i++) {
+        const rast_point a = p[i], b = p[i + 1 < n ? i + 1 : 0];
+        const int down = a.y < b.y;
+        const int64_t x0 = (down ? a.x : b.x) - bx, y0 = (down ? a.y : b.y) - by;
+        const int64_t dx = (down ? b.x : a.x) - bx - x0, dy = (down ? b.y : a.y) - by - y0;
+        const signed char sg = down ? 1 : -1;
+        int64_t jr, j1;
+        rast__cs_step ix;
+        if (a.y == b.y) continue;
+        /* its sample rows: J st + off in [y0, y0 + dy) */
+        jr = -rast__cs_floor(-(y0 - off), st);
+        j1 = -rast__cs_floor(-(y0 + dy - off), st);
+        if (jr >= j1) continue;
+        /* the first sample column at or right of x = x0 + dx (y - y0) / dy:
+         * ceil((x0 dy + dx (y - y0) - off dy) / (st dy)) */
+        rast__cs_step_init(&ix, 0, x0 * dy + dx * (jr * st + off - y0) - off * dy + st * dy - 1, dx * st, st * dy);
+        for (; jr < j1; jr++) {
+            int64_t col = ix.v;
+            if (col < 0) col = 0;
+            if (col > w * k) col = w * k;
+            d[(jr >> kb) * fw + col] = (signed char)(d[(jr >> kb) * fw + col] + sg);
+            rast__cs_step_next(&ix);
+        }
+    }
+    for (r = 0; r < h; r++) {
+        if (kb == 2)
+            rast__cs_counts(d + r * fw, w, 4, level, lv + r * w);
+        else
+            rast__cs_counts(d + r * fw, w, 2, level, lv + r * w);
+    }
+    rast__cs_hand_on(lv, box, o);
+}
+
+#else
+typedef int rast__cov_small_unused; /* (ISO C: a translation unit declares something) */
+#endif

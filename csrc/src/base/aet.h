@@ -613,18 +613,23 @@ static inline void rast__delta_walk(rast__edge *d, unsigned char *buf, int32_t j
 
 #if defined(__SSE2__) && !defined(RAST_NO_SIMD) && !defined(__OPTIMIZE_SIZE__)
 #include <emmintrin.h> /* (integer vectors only: every x86-64 has them) */
-/* The 16 byte counters of winding deltas at c, cleared, as their running
- * sums along the row (lane i: c[0] + ... + c[i], modulo 2^8, by four
- * shifted adds): the binary fill's rows (fillers/aet.c) and
- * supersampling's fine rows (coverage/coverage_ss.c) both start here. */
-static inline __m128i rast__delta_take16(unsigned char *c)
+/* 16 byte counters of winding deltas v as their running sums along the
+ * row (lane i: v[0] + ... + v[i], modulo 2^8, by four shifted adds); and
+ * those at c, cleared, so summed: the binary fill's rows (fillers/aet.c)
+ * and supersampling's fine rows (coverage/coverage_ss.c) both start here. */
+static inline __m128i rast__delta_sum16(__m128i v)
 {
-    __m128i v = _mm_loadu_si128((const __m128i *)(void *)c);
-    _mm_storeu_si128((__m128i *)(void *)c, _mm_setzero_si128());
     v = _mm_add_epi8(v, _mm_slli_si128(v, 1));
     v = _mm_add_epi8(v, _mm_slli_si128(v, 2));
     v = _mm_add_epi8(v, _mm_slli_si128(v, 4));
     return _mm_add_epi8(v, _mm_slli_si128(v, 8));
+}
+
+static inline __m128i rast__delta_take16(unsigned char *c)
+{
+    const __m128i v = _mm_loadu_si128((const __m128i *)(void *)c);
+    _mm_storeu_si128((__m128i *)(void *)c, _mm_setzero_si128());
+    return rast__delta_sum16(v);
 }
 #endif
 

@@ -198,3 +198,21 @@ def assert_same(a, b, msg):
         d = np.argwhere(a != b)
         raise AssertionError(f"{msg}\n{len(d)} cell(s) differ, first "
                              f"(row, col[, channel]): {d[:10].tolist()}")
+
+
+def zigzag_ring(rnd, xlo: float, xhi: float, ys) -> np.ndarray:
+    """A ring down the rows ys (sorted) and back up them, its x drawn in
+    [xlo, xhi) by the numpy Generator rnd: an edge on every stretch of
+    rows, crossing the others at random (the supersampling delta tests)."""
+    n = len(ys)
+    return np.concatenate([np.stack([rnd.uniform(xlo, xhi, n), ys], -1),
+                           np.stack([rnd.uniform(xlo, xhi, n), ys[::-1]], -1)])
+
+
+def tiny_triangle(rnd, cx: float, cy: float, rmax: float) -> list:
+    """A triangle around (cx, cy), its corners a random turn and a radius
+    in [0.2, rmax) away, either way round (drawn by rnd, in that order)."""
+    t = rnd.uniform(0, 2 * np.pi) + np.array([0, 2.1, 4.2])
+    r = rnd.uniform(0.2, rmax)
+    tri = [[float(cx + r * np.cos(a)), float(cy + r * np.sin(a))] for a in t]
+    return tri[::-1] if rnd.random() < 0.5 else tri

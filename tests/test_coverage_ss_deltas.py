@@ -34,8 +34,7 @@ def _zigzags(rnd, h, w, k, past, snap):
         y0, y1 = np.sort(rnd.uniform(-past, h + past, 2))
         n = max(3, int((y1 - y0) * k * 1.5 / max(1, len(rings) + 1)) + 3)
         ys = np.sort(rnd.uniform(y0, y1, n))
-        pts = np.concatenate([np.stack([rnd.uniform(-past, w + past, n), ys], -1),
-                              np.stack([rnd.uniform(-past, w + past, n), ys[::-1]], -1)])
+        pts = S_.zigzag_ring(rnd, -past, w + past, ys)
         if snap:  # some vertices on sample rows and columns of the fine grid
             on = rnd.random(pts.shape) < 0.5
             pts = np.where(on, np.round(pts * snap) / snap, pts)
@@ -46,10 +45,7 @@ def _zigzags(rnd, h, w, k, past, snap):
     # (and small rings down the canvas: edges enough for every row)
     for i in range(int(h * k * 1.5) + 1):
         cx, cy = rnd.uniform(-past, w + past), (i * 2.0 / (3 * k)) % (h + 2 * past) - past
-        t = rnd.uniform(0, 2 * np.pi) + np.array([0, 2.1, 4.2])
-        r = rnd.uniform(0.2, 1.5)
-        tri = [[float(cx + r * np.cos(a)), float(cy + r * np.sin(a))] for a in t]
-        rings.append(tri[::-1] if rnd.random() < 0.5 else tri)
+        rings.append(S_.tiny_triangle(rnd, cx, cy, 1.5))
     return rings
 
 

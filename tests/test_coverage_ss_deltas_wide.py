@@ -32,8 +32,7 @@ def _scene(rnd, h, w, x0, x1, past, box):
         y0, y1 = np.sort(rnd.uniform(-past, h + past, 2))
         n = max(3, int((y1 - y0) * 3) + 3)
         ys = np.sort(rnd.uniform(y0, y1, n))
-        pts = np.concatenate([np.stack([rnd.uniform(x0 - past, x1 + past, n), ys], -1),
-                              np.stack([rnd.uniform(x0 - past, x1 + past, n), ys[::-1]], -1)])
+        pts = S_.zigzag_ring(rnd, x0 - past, x1 + past, ys)
         on = rnd.random(pts.shape) < 0.3  # some vertices on sample rows and columns
         pts = np.where(on, np.round(pts * 8) / 8, pts)
         rings.append([[float(x), float(y)] for x, y in pts])
@@ -44,10 +43,7 @@ def _scene(rnd, h, w, x0, x1, past, box):
         cx, cy = rnd.uniform(x0, x1), (i / 6.0) % h
         if ya - 1.5 < cy < yb + 1.5:
             continue
-        t = rnd.uniform(0, 2 * np.pi) + np.array([0, 2.1, 4.2])
-        r = rnd.uniform(0.2, 1.2)
-        tri = [[float(cx + r * np.cos(a)), float(cy + r * np.sin(a))] for a in t]
-        rings.append(tri[::-1] if rnd.random() < 0.5 else tri)
+        rings.append(S_.tiny_triangle(rnd, cx, cy, 1.2))
     return rings
 
 

@@ -57,6 +57,21 @@ typedef struct rast__grid {
 rast_status rast__grid_init(rast__grid *g, int32_t subpixel_bits, rast_sample sample,
                             rast_rounding rounding, rast_boundary boundary);
 
+/* The least and greatest x and y of pts[0 .. n), n >= 1: b[0] = min x,
+ * b[1] = max x, b[2] = min y, b[3] = max y. */
+static inline void rast__pts_extent(const rast_point *pts, uint32_t n, int32_t b[4])
+{
+    uint32_t i;
+    b[0] = b[1] = pts[0].x;
+    b[2] = b[3] = pts[0].y;
+    for (i = 1; i < n; i++) {
+        if (pts[i].x < b[0]) b[0] = pts[i].x;
+        if (pts[i].x > b[1]) b[1] = pts[i].x;
+        if (pts[i].y < b[2]) b[2] = pts[i].y;
+        if (pts[i].y > b[3]) b[3] = pts[i].y;
+    }
+}
+
 /* (b - a) x (c - a): twice the signed area of abc, exact for vertices
  * (|coordinates| < 2^28: |.| < 2^58).  Positive when a, b, c turn
  * clockwise on screen (y down), counter-clockwise with y up. */

@@ -47,23 +47,15 @@ typedef struct rast__cs_edge {
 
 int rast__cov_small_fits(const rast_polygon *poly, int32_t s, rast_rect *box)
 {
-    const rast_point *p = poly->points;
-    uint32_t n, i;
-    int32_t x0, y0, x1, y1;
+    uint32_t n;
+    int32_t b[4]; /* x0, x1, y0, y1 */
     if (poly->nrings != 1 || s > 16 || (n = poly->ring_sizes[0]) < 3 || n > RAST__CS_EDGES) return 0;
-    x0 = x1 = p[0].x;
-    y0 = y1 = p[0].y;
-    for (i = 1; i < n; i++) {
-        if (p[i].x < x0) x0 = p[i].x;
-        if (p[i].x > x1) x1 = p[i].x;
-        if (p[i].y < y0) y0 = p[i].y;
-        if (p[i].y > y1) y1 = p[i].y;
-    }
+    rast__pts_extent(poly->points, n, b);
     /* the pixels the ring reaches (|coordinates| < 2^27: no overflow) */
-    box->x0 = x0 >> s;
-    box->y0 = y0 >> s;
-    box->x1 = (int32_t)(((int64_t)x1 + ((int64_t)1 << s) - 1) >> s);
-    box->y1 = (int32_t)(((int64_t)y1 + ((int64_t)1 << s) - 1) >> s);
+    box->x0 = b[0] >> s;
+    box->y0 = b[2] >> s;
+    box->x1 = (int32_t)(((int64_t)b[1] + ((int64_t)1 << s) - 1) >> s);
+    box->y1 = (int32_t)(((int64_t)b[3] + ((int64_t)1 << s) - 1) >> s);
     return box->x1 - box->x0 <= RAST__CS_DIM && box->y1 - box->y0 <= RAST__CS_DIM;
 }
 

@@ -13,20 +13,11 @@ typedef char rast__line_size_check[sizeof(rast__line) == 32 ? 1 : -1];
 int rast__poly_box(const rast_polygon *poly, uint32_t npoints, const rast__grid *g,
                    const rast_rect *clip, rast__box *box)
 {
-    const rast_point *pts = poly->points;
-    int32_t minx, maxx, miny, maxy;
-    uint32_t i;
+    int32_t b[4];
 
     if (npoints == 0) return 0;
-    minx = maxx = pts[0].x;
-    miny = maxy = pts[0].y;
-    for (i = 1; i < npoints; i++) {
-        if (pts[i].x < minx) minx = pts[i].x;
-        if (pts[i].x > maxx) maxx = pts[i].x;
-        if (pts[i].y < miny) miny = pts[i].y;
-        if (pts[i].y > maxy) maxy = pts[i].y;
-    }
-    return rast__box_of(minx, maxx, miny, maxy, g, clip, box);
+    rast__pts_extent(poly->points, npoints, b);
+    return rast__box_of(b[0], b[1], b[2], b[3], g, clip, box);
 }
 
 int rast__box_of(int32_t minx, int32_t maxx, int32_t miny, int32_t maxy, const rast__grid *g,

@@ -181,7 +181,7 @@ int rast__cov_small(const rast_polygon *poly, int32_t s, const rast__cov_out *o,
     const rast_point *p = poly->points;
     const uint32_t n = poly->ring_sizes[0];
     const int32_t w = box->x1 - box->x0, h = box->y1 - box->y0, sh = RAST__CS_K - s;
-    const int64_t bx = (int64_t)box->x0 << s, by = (int64_t)box->y0 << s;
+    const int64_t bx = (int64_t)box->x0 * ((int64_t)1 << s), by = (int64_t)box->y0 * ((int64_t)1 << s);
     uint32_t i, ne = 0;
     int32_t r, c;
     if (w <= 0 || h <= 0) return 1; /* no area: nothing to paint */
@@ -272,7 +272,7 @@ void rast__cov_small_ss(const rast_polygon *poly, int32_t s, int32_t kb, rast_sa
     const uint32_t n = poly->ring_sizes[0];
     const int32_t w = box->x1 - box->x0, h = box->y1 - box->y0, k = 1 << kb, fw = w * k + 2;
     const int64_t st = (int64_t)1 << (s - kb), off = sample == RAST_SAMPLE_CENTER ? st / 2 : 0;
-    const int64_t bx = (int64_t)box->x0 << s, by = (int64_t)box->y0 << s;
+    const int64_t bx = (int64_t)box->x0 * ((int64_t)1 << s), by = (int64_t)box->y0 * ((int64_t)1 << s);
     uint64_t level[17];
     uint32_t i;
     int32_t r, j;

@@ -1475,6 +1475,36 @@ RAST__HOT void rast__ss_word(uint64_t *bits, size_t wpr, int32_t k, int32_t kb, 
     *all = l;
 }
 
+#if RAST__SS_DELTA
+/* k = 4, uint8_t levels: the 16 pixels of word k of the 4 rows of bits
+ * (wpr words apart) to their levels at p, the words cleared, in SSE2:
+ * rast__ss_word's popcount to 4-bit lanes on two rows a vector (a byte
+ * holds an even pixel's row count in its low 4 bits, the odd one's in
+ * its high 4), the two vectors added (at most 8 a lane), the lanes
+ * split into bytes, the halves' rows added (c, 0 .. 16) and the even
+ * and odd pixels' bytes interleaved, then rast__ss_level16. */
+static inline void rast__ss_count4(uint64_t *bits, size_t wpr, int32_t k, unsigned char *p)
+{
+    const __m128i m1 = _mm_set1_epi8(0x55), m2 = _mm_set1_epi8(0x33), m4 = _mm_set1_epi8(0x0F);
+    uint64_t *w = bits + k;
+    __m128i a = _mm_unpacklo_epi64(_mm_loadl_epi64((const __m128i *)(const void *)w),
+                                   _mm_loadl_epi64((const __m128i *)(const void *)(w + wpr))),
+            b = _mm_unpacklo_epi64(_mm_loadl_epi64((const __m128i *)(const void *)(w + 2 * wpr)),
+                                   _mm_loadl_epi64((const __m128i *)(const void *)(w + 3 * wpr))),
+            lo, hi;
+    w[0] = w[wpr] = w[2 * wpr] = w[3 * wpr] = 0;
+    a = _mm_sub_epi8(a, _mm_and_si128(_mm_srli_epi16(a, 1), m1));
+    b = _mm_sub_epi8(b, _mm_and_si128(_mm_srli_epi16(b, 1), m1));
+    a = _mm_add_epi8(_mm_and_si128(a, m2), _mm_and_si128(_mm_srli_epi16(a, 2), m2));
+    b = _mm_add_epi8(_mm_and_si128(b, m2), _mm_and_si128(_mm_srli_epi16(b, 2), m2));
+    a = _mm_add_epi8(a, b);
+    lo = _mm_and_si128(a, m4);
+    hi = _mm_and_si128(_mm_srli_epi16(a, 4), m4);
+    lo = _mm_add_epi8(lo, _mm_srli_si128(lo, 8));
+    hi = _mm_add_epi8(hi, _mm_srli_si128(hi, 8));
+    _mm_storeu_si128((__m128i *)(void *)p, rast__ss_level16(_mm_unpacklo_epi8(lo, hi)));
+}
+#else
 /* The 8 bytes of x's low half (32 bits) spread to every other byte. */
 static inline uint64_t rast__ss_spread(uint64_t x)
 {
@@ -1519,6 +1549,7 @@ static inline void rast__ss_u8x16(unsigned char *p, uint64_t ev, uint64_t od)
     rast__ss_put8(p, a);
     rast__ss_put8(p + 8, b);
 }
+#endif
 
 /* Output row R (clip-relative) from the K = 2^kb fine rows of bits (wpr
  * words each; only words [k0, k1] may hold set bits): each pixel's value
@@ -1565,24 +1596,33 @@ RAST__HOT void rast__ss_bits_row_k(rast__ss *ss, int32_t kb, int32_t R, uint64_t
             }
             continue;
         }
-#if RAST__SS_QUICK
-        rast__ss_word(bits, wpr, k, kb, &ev, &od, &any, &all);
-#endif
         rast__cov_fill(f, row, at, base, v);
         if (kb == 2 && f == RAST_COVERAGE_U8 && n == ppw) {
+#if RAST__SS_DELTA
+            rast__ss_count4(bits, wpr, k, row + base);
+#else
+#if RAST__SS_QUICK
+            rast__ss_word(bits, wpr, k, kb, &ev, &od, &any, &all);
+#endif
             rast__ss_u8x16(row + base, ev, od);
-        } else if (f == RAST_COVERAGE_U8 && n == ppw) { /* (no test a pixel) */
-            unsigned char *p = row + base;
-            for (j = 0; j < ppw; j += 2) {
-                p[j] = (unsigned char)level[(ev >> (j * K)) & lm];
-                p[j + 1] = (unsigned char)level[(od >> (j * K)) & lm];
-            }
+#endif
         } else {
-            for (j = 0; j + 1 < n; j += 2) {
-                rast__cov_store(f, row, base + j, level[(ev >> (j * K)) & lm]);
-                rast__cov_store(f, row, base + j + 1, level[(od >> (j * K)) & lm]);
+#if RAST__SS_QUICK
+            rast__ss_word(bits, wpr, k, kb, &ev, &od, &any, &all);
+#endif
+            if (f == RAST_COVERAGE_U8 && n == ppw) { /* (no test a pixel) */
+                unsigned char *p = row + base;
+                for (j = 0; j < ppw; j += 2) {
+                    p[j] = (unsigned char)level[(ev >> (j * K)) & lm];
+                    p[j + 1] = (unsigned char)level[(od >> (j * K)) & lm];
+                }
+            } else {
+                for (j = 0; j + 1 < n; j += 2) {
+                    rast__cov_store(f, row, base + j, level[(ev >> (j * K)) & lm]);
+                    rast__cov_store(f, row, base + j + 1, level[(od >> (j * K)) & lm]);
+                }
+                if (j < n) rast__cov_store(f, row, base + j, level[(ev >> (j * K)) & lm]);
             }
-            if (j < n) rast__cov_store(f, row, base + j, level[(ev >> (j * K)) & lm]);
         }
         at = base + n;
         v = level[0];

@@ -216,3 +216,13 @@ def tiny_triangle(rnd, cx: float, cy: float, rmax: float) -> list:
     r = rnd.uniform(0.2, rmax)
     tri = [[float(cx + r * np.cos(a)), float(cy + r * np.sin(a))] for a in t]
     return tri[::-1] if rnd.random() < 0.5 else tri
+
+
+def assert_ss_oracle(rings, shape, k, rule, dtype):
+    """polygon_coverage(method="ssK") of rings equals the binary rule on
+    the K-times grid (oracle_coverage.coverage_ss), levels of dtype."""
+    import oracle_coverage as oc
+    import rastrum
+    out = rastrum.polygon_coverage(rings, shape, rule=rule, method="ss%d" % k, dtype=dtype)
+    want = oc.coverage_ss(rings, shape, k, rule=rule, M=int(np.iinfo(dtype).max))
+    assert_same(out.astype(np.int64), want, "%s ss%d %s %r" % (rule, k, dtype.__name__, rings))

@@ -303,6 +303,17 @@ RAST__HOT void rast__acc_touch(rast__acc *a, int32_t lo, int32_t hi, int count)
 #endif
 }
 
+/* A row step not made (the walk's records' qxsr: a remainder is < dy <
+ * 2^28); rast__acc_qxs makes it (its records only: the edges' own have
+ * theirs, rows.c) */
+#if RAST__ACC_COMPACT
+#define RAST__ACC_UNMADE UINT32_MAX
+static inline void rast__acc_qxs(rast__aedge *e)
+{
+    if (e->qxsr == RAST__ACC_UNMADE) rast__cov_qxstep(e->dx, e->dy, &e->qxs, &e->qxsr);
+}
+#endif
+
 /* The walk's functions of an edge's part (coverage_acc_edge.tmpl.h), on its
  * records; in builds with compact ones, a copy on the edges' own records
  * too, named ..._fat, for "area"'s rows. */
@@ -310,6 +321,11 @@ RAST__HOT void rast__acc_touch(rast__acc *a, int32_t lo, int32_t hi, int count)
 #define RAST__ACC_N(f) f
 #define RAST__ACC_COL rast__acc_col_t
 #define RAST__ACC_FAT (!RAST__ACC_COMPACT)
+#if RAST__ACC_COMPACT
+#define RAST__ACC_QXS(e) rast__acc_qxs(e)
+#else
+#define RAST__ACC_QXS(e) ((void)0)
+#endif
 #include "coverage_acc_edge.tmpl.h"
 #undef RAST__ACC_E
 #undef RAST__ACC_N
@@ -320,6 +336,8 @@ RAST__HOT void rast__acc_touch(rast__acc *a, int32_t lo, int32_t hi, int count)
 #define RAST__ACC_N(f) f##_fat
 #define RAST__ACC_COL int64_t
 #define RAST__ACC_FAT 1
+#undef RAST__ACC_QXS
+#define RAST__ACC_QXS(e) ((void)0)
 #include "coverage_acc_edge.tmpl.h"
 #undef RAST__ACC_E
 #undef RAST__ACC_N
@@ -531,8 +549,15 @@ RAST__HOT void rast__acc_run_init(rast__acc_run *u, const rast__acc *v, const ra
 {
     u->qx = e->qx;
     u->qxr = e->qxr;
-    u->qxs = e->qxs;
-    u->qxsr = e->qxsr;
+#if RAST__ACC_COMPACT
+    if (e->qxsr == RAST__ACC_UNMADE) {
+        rast__cov_qxstep(e->dx, e->dy, &u->qxs, &u->qxsr);
+    } else
+#endif
+    {
+        u->qxs = e->qxs;
+        u->qxsr = e->qxsr;
+    }
     u->dy = (uint32_t)e->dy;
 #if !defined(__OPTIMIZE_SIZE__)
     u->adx = (uint32_t)(e->dx < 0 ? -e->dx : e->dx);
@@ -1750,15 +1775,22 @@ RAST__HOT void rast__acc_deposit(rast__acc *a, uint64_t *acc, uint64_t *blk, uin
         uint32_t qtr;
         int64_t qt;
         uint64_t tx;
-        if (ed->qX != c1 + x0) rast__acc_t_first(ed, c1 + x0, a);
+        /* (the first vertical an edge crosses: its stepper there, not
+         * the step, nor stepped on: rast__acc_t_at) */
+        if (ed->qX == INT32_MIN)
+            rast__acc_t_at(ed, c1 + x0, a);
+        else if (ed->qX != c1 + x0)
+            rast__acc_t_first(ed, c1 + x0, a);
         qt = ed->qt + rel0 * ((int64_t)1 << hq);
         tx = qt < (int64_t)ta ? ta : qt > (int64_t)tb ? tb : (uint64_t)qt;
         rast__acc_put(acc, ca, (uint64_t)xa & fm, right ? QT : 0, tx - ta, neg, 1);
         rast__acc_put(acc, cb, right ? 0 : QT, (uint64_t)xb & fm, tb - tx, neg, 1);
-        qtr = ed->qtr + ed->qtsr;
-        ed->qt += ed->qts + rast__acc_carry(&qtr, adx);
-        ed->qtr = qtr;
-        ed->qX += right ? 1 : -1;
+        if (ed->qts) {
+            qtr = ed->qtr + ed->qtsr;
+            ed->qt += ed->qts + rast__acc_carry(&qtr, adx);
+            ed->qtr = qtr;
+            ed->qX += right ? 1 : -1;
+        }
         if (!count) {
             *lo = c0 < *lo ? c0 : *lo;
             *hi = c1 + 1 > *hi ? c1 + 1 : *hi;
@@ -1914,7 +1946,9 @@ static inline int64_t rast__acc_top_back(rast__aedge *e, int32_t j, const rast__
 {
     int64_t x;
     if (e->qrow == j + 1) {
-        const uint32_t borrow = e->qxr < e->qxsr;
+        uint32_t borrow;
+        rast__acc_qxs(e);
+        borrow = e->qxr < e->qxsr;
         x = e->qx - e->qxs - (int64_t)borrow;
         *rem = e->qxr - e->qxsr + ((uint32_t)e->dy & (0u - borrow));
         return x;
@@ -2514,7 +2548,8 @@ static inline void rast__acc_make(rast__aedge *c, const rast__acc_thin *t)
 {
     const int32_t xt = t->xt, yt = t->yt, dx = t->dx, dy = t->dy, dir = t->dir;
     c->qx = c->qt = c->qxs = c->qts = 0;
-    c->qxr = c->qtr = c->qxsr = c->qtsr = 0;
+    c->qxr = c->qtr = c->qtsr = 0;
+    c->qxsr = RAST__ACC_UNMADE;
     c->xt = xt;
     c->yt = yt;
     c->dx = dx;

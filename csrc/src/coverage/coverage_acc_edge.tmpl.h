@@ -24,13 +24,15 @@ static void RAST__ACC_N(rast__acc_t_first)(RAST__ACC_E *e, int64_t X, const rast
 }
 #else
 /* (The walk's records get their quick steps when their steppers are first
- * set, not when they are made: an edge in one row, most of a line of
+ * stepped, not when they are made: an edge in one row, most of a line of
  * text's, steps neither from row to row nor, in one column, from column
- * to column, and its two divisions were a tenth of the paragraph's time.
- * qrow, qX INT32_MIN: the stepper never set, its step not made.) */
+ * to column, and its two divisions were a tenth of the paragraph's time;
+ * one in two rows, set at the second row's top by rast__acc_top1, is not
+ * stepped either.  qrow, qX INT32_MIN: the stepper never set; qxsr
+ * RAST__ACC_UNMADE: the row step not made, rast__acc_qxs.) */
 RAST__APART void RAST__ACC_N(rast__acc_top_set)(RAST__ACC_E *e, int32_t j, const rast__acc *a)
 {
-    if (e->qrow == INT32_MIN) rast__cov_qxstep(e->dx, e->dy, &e->qxs, &e->qxsr);
+    RAST__ACC_QXS(e);
     rast__cov_qx_at(e->xt, e->yt, e->dx, e->dy, j, a->p, a->hq, &e->qx, &e->qxr);
     e->qrow = j;
 }
@@ -38,6 +40,7 @@ RAST__APART void RAST__ACC_N(rast__acc_top_set)(RAST__ACC_E *e, int32_t j, const
 static inline int64_t RAST__ACC_N(rast__acc_top)(RAST__ACC_E *e, int32_t j, const rast__acc *a)
 {
     if (e->qrow == j - 1) {
+        RAST__ACC_QXS(e);
         rast__cov_qstep(&e->qx, &e->qxr, e->qxs, e->qxsr, e->dy);
         e->qrow = j;
     } else if (e->qrow != j) {
@@ -46,12 +49,44 @@ static inline int64_t RAST__ACC_N(rast__acc_top)(RAST__ACC_E *e, int32_t j, cons
     return e->qx;
 }
 
+/* The column stepper at vertical X, its step made.  (The rows' walk sets
+ * an edge's stepper at the first vertical it crosses without the step,
+ * rast__acc_t_at: most of a line of text's edges cross one, and the
+ * step's division was theirs; qts 0, the step not made, as no edge that
+ * crosses a vertical has: dy 2^30 / |dx| >= 4.  Such a stepper at the
+ * vertical before X is stepped to X here, one division as before.) */
 static void RAST__ACC_N(rast__acc_t_first)(RAST__ACC_E *e, int64_t X, const rast__acc *a)
 {
-    if (e->qX == INT32_MIN) rast__cov_qtstep(e->dx, e->dy, &e->qts, &e->qtsr);
+    if (!e->qts) {
+        rast__cov_qtstep(e->dx, e->dy, &e->qts, &e->qtsr);
+        if (e->qX != INT32_MIN && X == (int64_t)e->qX + (e->dx > 0 ? 1 : -1)) {
+            uint32_t qtr = e->qtr + e->qtsr;
+            e->qt += e->qts + rast__acc_carry(&qtr, (uint32_t)(e->dx < 0 ? -e->dx : e->dx));
+            e->qtr = qtr;
+            e->qX = (RAST__ACC_COL)X;
+            return;
+        }
+    }
     rast__cov_qt_at(e->xt, e->dx, e->dy, X, a->p, a->hq, &e->qt, &e->qtr);
     e->qX = (RAST__ACC_COL)X;
 }
+
+/* The column stepper at vertical X, its step not made when not yet
+ * (rast__acc_t_first's, in one division where it takes two) */
+static inline void RAST__ACC_N(rast__acc_t_at)(RAST__ACC_E *e, int64_t X, const rast__acc *a)
+{
+    rast__cov_qt_at(e->xt, e->dx, e->dy, X, a->p, a->hq, &e->qt, &e->qtr);
+    e->qX = (RAST__ACC_COL)X;
+}
+#endif
+
+/* e's column step made (rast__acc_t_first's), before it is stepped by
+ * (rast__acc_part: a stepper rast__acc_t_at set, found at its vertical) */
+#undef RAST__ACC_QTS
+#if RAST__ACC_FAT
+#define RAST__ACC_QTS(e) ((void)0)
+#else
+#define RAST__ACC_QTS(e) ((e)->qts ? (void)0 : rast__cov_qtstep((e)->dx, (e)->dy, &(e)->qts, &(e)->qtsr))
 #endif
 
 #if !defined(__OPTIMIZE_SIZE__)
@@ -65,9 +100,6 @@ static inline int64_t RAST__ACC_N(rast__acc_top1)(RAST__ACC_E *e, int32_t j1, co
     const uint64_t d = (uint64_t)((int64_t)j1 * a->p - e->yt), dy = (uint64_t)e->dy;
     const uint64_t n = (uint64_t)(e->dx < 0 ? -(int64_t)e->dx : e->dx) * d << a->hq, q = n / dy, r = n % dy;
     const int64_t x = (int64_t)e->xt * ((int64_t)1 << a->hq);
-#if !RAST__ACC_FAT
-    if (e->qrow == INT32_MIN) rast__cov_qxstep(e->dx, e->dy, &e->qxs, &e->qxsr); /* (rast__acc_top_set's) */
-#endif
     if (e->dx >= 0) {
         e->qx = x + (int64_t)q;
         e->qxr = (uint32_t)r;
@@ -139,6 +171,7 @@ RAST__HOT void RAST__ACC_N(rast__acc_part)(rast__acc *a, RAST__ACC_E *e, int64_t
         fout = QT;
         if (ca < a->x0) { /* to vertical x0 as cover left of the clip */
             if (e->qX != a->x0) RAST__ACC_N(rast__acc_t_first)(e, a->x0, a);
+            RAST__ACC_QTS(e);
             qt = e->qt - off;
             t = qt < (int64_t)t ? t : qt > (int64_t)tb ? tb : (uint64_t)qt;
             acc[0] += (((t - ta) << 21) ^ neg) - neg;
@@ -164,6 +197,7 @@ RAST__HOT void RAST__ACC_N(rast__acc_part)(rast__acc *a, RAST__ACC_E *e, int64_t
         fout = 0;
         if (ca >= a->x1) { /* from vertical x1 */
             if (e->qX != a->x1) RAST__ACC_N(rast__acc_t_first)(e, a->x1, a);
+            RAST__ACC_QTS(e);
             qt = e->qt - off;
             t = qt < (int64_t)t ? t : qt > (int64_t)tb ? tb : (uint64_t)qt;
             ca = a->x1 - 1;
@@ -182,6 +216,7 @@ RAST__HOT void RAST__ACC_N(rast__acc_part)(rast__acc *a, RAST__ACC_E *e, int64_t
         lo = cend;
         hi = ca;
     }
+    RAST__ACC_QTS(e);
     qt = e->qt - off;
     qtr = e->qtr;
     for (col = ca; col != cend; col += step) {

@@ -79,7 +79,9 @@ typedef struct rast__aedge {
     int64_t qt, qts;              /* the quick column stepper */
     uint32_t qxr, qxsr, qtr, qtsr;
     int32_t xt, yt, dx, dy;       /* the edge, top end first */
-    int32_t qrow, qX, dir, spare; /* qrow, qX: INT32_MIN, not set */
+    int32_t qrow, qX, dir, lazyX; /* qrow, qX: INT32_MIN, not set; qX
+                                   * RAST__ACC_LAZYX: set at vertical lazyX,
+                                   * its step not made (rast__acc_t_at) */
 } rast__aedge;
 typedef int32_t rast__acc_col_t; /* (the type of qX) */
 /* An edge as the walk's records are made from it: 20 bytes (a
@@ -308,6 +310,9 @@ RAST__HOT void rast__acc_touch(rast__acc *a, int32_t lo, int32_t hi, int count)
  * theirs, rows.c) */
 #if RAST__ACC_COMPACT
 #define RAST__ACC_UNMADE UINT32_MAX
+/* a column stepper set without its step (rast__acc_t_at): no vertical's
+ * qX (|X| <= 2^28) */
+#define RAST__ACC_LAZYX (INT32_MIN + 1)
 static inline void rast__acc_qxs(rast__aedge *e)
 {
     if (e->qxsr == RAST__ACC_UNMADE) rast__cov_qxstep(e->dx, e->dy, &e->qxs, &e->qxsr);
@@ -391,7 +396,7 @@ RAST__HOT void rast__acc_row_part_in(rast__acc *a, rast__aedge *e, int32_t j, in
 {
     int64_t xa, xb;
     uint64_t ta, tb;
-    rast__acc_ends(e, j, rel0, a, &xa, &ta, &xb, &tb);
+    rast__acc_ends(e, j, rel0, a, &xa, &ta, &xb, &tb, 0);
     rast__acc_part(a, e, -rel0 * ((int64_t)1 << a->hq), xa, ta, xb, tb, e->dir, sx, count);
 }
 
@@ -549,15 +554,8 @@ RAST__HOT void rast__acc_run_init(rast__acc_run *u, const rast__acc *v, const ra
 {
     u->qx = e->qx;
     u->qxr = e->qxr;
-#if RAST__ACC_COMPACT
-    if (e->qxsr == RAST__ACC_UNMADE) {
-        rast__cov_qxstep(e->dx, e->dy, &u->qxs, &u->qxsr);
-    } else
-#endif
-    {
-        u->qxs = e->qxs;
-        u->qxsr = e->qxsr;
-    }
+    u->qxs = e->qxs;
+    u->qxsr = e->qxsr;
     u->dy = (uint32_t)e->dy;
 #if !defined(__OPTIMIZE_SIZE__)
     u->adx = (uint32_t)(e->dx < 0 ? -e->dx : e->dx);
@@ -1499,9 +1497,10 @@ static void rast__acc_load(rast__aedge *c, const rast__cedge *f)
     c->dx = f->dx;
     c->dy = f->dy;
     c->qrow = f->qrow;
-    c->qX = f->qX < INT32_MIN || f->qX > INT32_MAX ? INT32_MIN : (int32_t)f->qX; /* (INT64_MIN: not set) */
+    /* (INT64_MIN: not set; a stepper set without its step, set again) */
+    c->qX = f->qX < INT32_MIN || f->qX > INT32_MAX || f->qX == RAST__ACC_LAZYX ? INT32_MIN : (int32_t)f->qX;
     c->dir = f->dir;
-    c->spare = 0;
+    c->lazyX = 0;
 }
 
 #endif
@@ -1547,7 +1546,7 @@ int rast__cov_acc_area_row(rast__cedge *e, const int32_t *row, int32_t nrow, con
     for (k = 0; k < nrow; k++) { /* the parts, and the test */
         rast__cedge *ed = &e[row[k]];
         int64_t lo, hi;
-        RAST__ACC_FATN(rast__acc_ends)(ed, j, (int64_t)ed->yt - Yj, &a, &ed->qa, &ed->qta, &ed->qb, &ed->qtb);
+        RAST__ACC_FATN(rast__acc_ends)(ed, j, (int64_t)ed->yt - Yj, &a, &ed->qa, &ed->qta, &ed->qb, &ed->qtb, 0);
         lo = rast__acc_col(ed->qa < ed->qb ? ed->qa : ed->qb) - a.x0;
         hi = rast__acc_col(ed->qa < ed->qb ? ed->qb : ed->qa) - a.x0;
         if (lo < 0) lo = 0;
@@ -1777,7 +1776,8 @@ RAST__HOT void rast__acc_deposit(rast__acc *a, uint64_t *acc, uint64_t *blk, uin
         uint64_t tx;
         /* (the first vertical an edge crosses: its stepper there, not
          * the step, nor stepped on: rast__acc_t_at) */
-        if (ed->qX == INT32_MIN)
+        const int first = ed->qX == INT32_MIN;
+        if (first)
             rast__acc_t_at(ed, c1 + x0, a);
         else if (ed->qX != c1 + x0)
             rast__acc_t_first(ed, c1 + x0, a);
@@ -1785,7 +1785,7 @@ RAST__HOT void rast__acc_deposit(rast__acc *a, uint64_t *acc, uint64_t *blk, uin
         tx = qt < (int64_t)ta ? ta : qt > (int64_t)tb ? tb : (uint64_t)qt;
         rast__acc_put(acc, ca, (uint64_t)xa & fm, right ? QT : 0, tx - ta, neg, 1);
         rast__acc_put(acc, cb, right ? 0 : QT, (uint64_t)xb & fm, tb - tx, neg, 1);
-        if (ed->qts) {
+        if (!first) {
             qtr = ed->qtr + ed->qtsr;
             ed->qt += ed->qts + rast__acc_carry(&qtr, adx);
             ed->qtr = qtr;
@@ -1835,7 +1835,7 @@ RAST__HOT int32_t rast__acc_parts(rast__acc *a, rast__aedge *e, const int32_t *i
         uint64_t ta, tb;
         nx[q] = ix[k];
         q += rel0 + ed->dy > p; /* (it ends below row j) */
-        rast__acc_ends(ed, j, rel0, a, &xa, &ta, &xb, &tb);
+        rast__acc_ends(ed, j, rel0, a, &xa, &ta, &xb, &tb, 1);
         rast__acc_deposit(a, acc, blk, cnt, last, x0, w, ed, rel0, xa, ta, xb, tb, &lo, &hi, count, dense);
     }
     a->lo = lo;
@@ -2556,7 +2556,7 @@ static inline void rast__acc_make(rast__aedge *c, const rast__acc_thin *t)
     c->dy = dy;
     c->qrow = c->qX = INT32_MIN;
     c->dir = dir;
-    c->spare = 0;
+    c->lazyX = 0;
 }
 
 /* The walk's records (rast__aedge, rast__acc_make's) of the edges t[]

@@ -52,41 +52,40 @@ static inline int64_t RAST__ACC_N(rast__acc_top)(RAST__ACC_E *e, int32_t j, cons
 /* The column stepper at vertical X, its step made.  (The rows' walk sets
  * an edge's stepper at the first vertical it crosses without the step,
  * rast__acc_t_at: most of a line of text's edges cross one, and the
- * step's division was theirs; qts 0, the step not made, as no edge that
- * crosses a vertical has: dy 2^30 / |dx| >= 4.  Such a stepper at the
- * vertical before X is stepped to X here, one division as before.) */
+ * step's division was theirs.  Such a stepper, qX RAST__ACC_LAZYX, at
+ * vertical lazyX, is stepped on to the next one here, in the one division
+ * the step takes.) */
+RAST__APART int RAST__ACC_N(rast__acc_t_next)(RAST__ACC_E *e, int64_t X)
+{
+    uint32_t qtr;
+    rast__cov_qtstep(e->dx, e->dy, &e->qts, &e->qtsr);
+    if (X != (int64_t)e->lazyX + (e->dx > 0 ? 1 : -1)) return 0;
+    qtr = e->qtr + e->qtsr;
+    e->qt += e->qts + rast__acc_carry(&qtr, (uint32_t)(e->dx < 0 ? -e->dx : e->dx));
+    e->qtr = qtr;
+    e->qX = (RAST__ACC_COL)X;
+    return 1;
+}
+
 static void RAST__ACC_N(rast__acc_t_first)(RAST__ACC_E *e, int64_t X, const rast__acc *a)
 {
-    if (!e->qts) {
+    if (e->qX == INT32_MIN)
         rast__cov_qtstep(e->dx, e->dy, &e->qts, &e->qtsr);
-        if (e->qX != INT32_MIN && X == (int64_t)e->qX + (e->dx > 0 ? 1 : -1)) {
-            uint32_t qtr = e->qtr + e->qtsr;
-            e->qt += e->qts + rast__acc_carry(&qtr, (uint32_t)(e->dx < 0 ? -e->dx : e->dx));
-            e->qtr = qtr;
-            e->qX = (RAST__ACC_COL)X;
-            return;
-        }
-    }
+    else if (e->qX == RAST__ACC_LAZYX && RAST__ACC_N(rast__acc_t_next)(e, X))
+        return;
     rast__cov_qt_at(e->xt, e->dx, e->dy, X, a->p, a->hq, &e->qt, &e->qtr);
     e->qX = (RAST__ACC_COL)X;
 }
 
-/* The column stepper at vertical X, its step not made when not yet
- * (rast__acc_t_first's, in one division where it takes two) */
+/* The column stepper of an edge not set before at vertical X, without its
+ * step (rast__acc_t_first's, in one division where it takes two): qX
+ * RAST__ACC_LAZYX, which no vertical is, lazyX X */
 static inline void RAST__ACC_N(rast__acc_t_at)(RAST__ACC_E *e, int64_t X, const rast__acc *a)
 {
     rast__cov_qt_at(e->xt, e->dx, e->dy, X, a->p, a->hq, &e->qt, &e->qtr);
-    e->qX = (RAST__ACC_COL)X;
+    e->qX = RAST__ACC_LAZYX;
+    e->lazyX = (int32_t)X;
 }
-#endif
-
-/* e's column step made (rast__acc_t_first's), before it is stepped by
- * (rast__acc_part: a stepper rast__acc_t_at set, found at its vertical) */
-#undef RAST__ACC_QTS
-#if RAST__ACC_FAT
-#define RAST__ACC_QTS(e) ((void)0)
-#else
-#define RAST__ACC_QTS(e) ((e)->qts ? (void)0 : rast__cov_qtstep((e)->dx, (e)->dy, &(e)->qts, &(e)->qtsr))
 #endif
 
 #if !defined(__OPTIMIZE_SIZE__)
@@ -95,11 +94,18 @@ static inline void RAST__ACC_N(rast__acc_t_at)(RAST__ACC_E *e, int64_t X, const 
  * |dx| d 2^HQ <= 2^58, the floor of the negative quotient from it, inline
  * (a call and a signed division's tests an edge: 0.7 M instructions of
  * the text family's 20 M) */
-static inline int64_t RAST__ACC_N(rast__acc_top1)(RAST__ACC_E *e, int32_t j1, const rast__acc *a)
+static inline int64_t RAST__ACC_N(rast__acc_top1)(RAST__ACC_E *e, int32_t j1, const rast__acc *a, int lazy)
 {
     const uint64_t d = (uint64_t)((int64_t)j1 * a->p - e->yt), dy = (uint64_t)e->dy;
     const uint64_t n = (uint64_t)(e->dx < 0 ? -(int64_t)e->dx : e->dx) * d << a->hq, q = n / dy, r = n % dy;
     const int64_t x = (int64_t)e->xt * ((int64_t)1 << a->hq);
+#if !RAST__ACC_FAT
+    /* (rast__acc_top_set's; a stepper not set has no step: qrow, a
+     * register here, tells) */
+    if (!lazy && e->qrow == INT32_MIN) rast__cov_qxstep(e->dx, e->dy, &e->qxs, &e->qxsr);
+#else
+    (void)lazy;
+#endif
     if (e->dx >= 0) {
         e->qx = x + (int64_t)q;
         e->qxr = (uint32_t)r;
@@ -113,9 +119,12 @@ static inline int64_t RAST__ACC_N(rast__acc_top1)(RAST__ACC_E *e, int32_t j1, co
 #endif
 
 /* e's part in row j (top Yj): from (*xa, *ta) to (*xb, *tb), Q units, t
- * from the row's top; its top rel0 = yt - Yj below the row's. */
+ * from the row's top; its top rel0 = yt - Yj below the row's.  lazy (a
+ * constant at each call): the row step is made when first stepped, not
+ * when the stepper is set at e's second row (the rows' walk, whose edges
+ * mostly end there; the bands' find theirs made, rast__acc_run_init). */
 RAST__HOT void RAST__ACC_N(rast__acc_ends)(RAST__ACC_E *e, int32_t j, int64_t rel0, const rast__acc *a, int64_t *xa,
-                              uint64_t *ta, int64_t *xb, uint64_t *tb)
+                              uint64_t *ta, int64_t *xb, uint64_t *tb, int lazy)
 {
     const int64_t rel1 = rel0 + e->dy;
     if (rel0 > 0) {
@@ -132,11 +141,12 @@ RAST__HOT void RAST__ACC_N(rast__acc_ends)(RAST__ACC_E *e, int32_t j, int64_t re
         *tb = QT;
 #if !defined(__OPTIMIZE_SIZE__)
         if (rel0 > 0 && e->qrow != j + 1) /* (e starts in row j) */
-            *xb = RAST__ACC_N(rast__acc_top1)(e, j + 1, a);
+            *xb = RAST__ACC_N(rast__acc_top1)(e, j + 1, a, lazy);
         else
 #endif
             *xb = RAST__ACC_N(rast__acc_top)(e, j + 1, a);
     }
+    (void)lazy;
 }
 
 /* The part of e from (xa, ta) to (xb, tb) (Q units; t from the row's top,
@@ -171,7 +181,6 @@ RAST__HOT void RAST__ACC_N(rast__acc_part)(rast__acc *a, RAST__ACC_E *e, int64_t
         fout = QT;
         if (ca < a->x0) { /* to vertical x0 as cover left of the clip */
             if (e->qX != a->x0) RAST__ACC_N(rast__acc_t_first)(e, a->x0, a);
-            RAST__ACC_QTS(e);
             qt = e->qt - off;
             t = qt < (int64_t)t ? t : qt > (int64_t)tb ? tb : (uint64_t)qt;
             acc[0] += (((t - ta) << 21) ^ neg) - neg;
@@ -197,7 +206,6 @@ RAST__HOT void RAST__ACC_N(rast__acc_part)(rast__acc *a, RAST__ACC_E *e, int64_t
         fout = 0;
         if (ca >= a->x1) { /* from vertical x1 */
             if (e->qX != a->x1) RAST__ACC_N(rast__acc_t_first)(e, a->x1, a);
-            RAST__ACC_QTS(e);
             qt = e->qt - off;
             t = qt < (int64_t)t ? t : qt > (int64_t)tb ? tb : (uint64_t)qt;
             ca = a->x1 - 1;
@@ -216,7 +224,6 @@ RAST__HOT void RAST__ACC_N(rast__acc_part)(rast__acc *a, RAST__ACC_E *e, int64_t
         lo = cend;
         hi = ca;
     }
-    RAST__ACC_QTS(e);
     qt = e->qt - off;
     qtr = e->qtr;
     for (col = ca; col != cend; col += step) {

@@ -1677,7 +1677,7 @@ static void rast__acc_exact(const rast__acc_walk *w, const int32_t *ix, int32_t 
  * last row among them, is above j0), those that start above row j1 taken
  * from order[*next] on. */
 static int32_t rast__acc_edges_of(const rast__acc_walk *w, int32_t nrow, uint32_t *next, int32_t *drop,
-                                  int32_t j0, int32_t j1, int32_t p)
+                                  int32_t j0, int32_t j1)
 {
     int32_t *const row = w->row, *const last = w->last, *const order = w->order, k, q;
     if (j0 > *drop) {
@@ -1689,7 +1689,8 @@ static int32_t rast__acc_edges_of(const rast__acc_walk *w, int32_t nrow, uint32_
             }
         nrow = q;
     }
-    while (*next < w->n && w->e[order[*next]].yt < (int64_t)j1 * p) {
+    /* (an edge's first row: key[] + ja, not its record's yt, read later) */
+    while (*next < w->n && w->key[order[*next]] + w->ja < j1) {
         if (last[order[*next]] >= j0) {
             row[nrow++] = order[*next];
             if (last[order[*next]] < *drop) *drop = last[order[*next]];
@@ -1713,7 +1714,7 @@ static void rast__acc_by_rows(const rast__acc_walk *w, rast__acc *a)
     int exact = 0; /* w->exact[] cleared */
     for (j = w->ja; j < w->jb; j++) {
         const int64_t Yj = (int64_t)j * a->p;
-        nrow = rast__acc_edges_of(w, nrow, &next, &drop, j, j + 1, a->p);
+        nrow = rast__acc_edges_of(w, nrow, &next, &drop, j, j + 1);
         if (nrow < RAST__ACC_MAXN && ((uint64_t)nrow + 1) * m < ((uint64_t)1 << 25)) {
             /* Bits for the cells touched, so that the scan skips the
              * others, unless the row's parts are many for its width
@@ -2202,7 +2203,7 @@ RAST__APART void rast__acc_by_bands(const rast__acc_walk *w, rast__acc *v)
     int clean = 0; /* cover[], area[], bits[] and w->exact[] cleared */
     for (j0 = ja; j0 < w->jb; j0 = j1) {
         j1 = w->jb - j0 > RAST__ACC_BAND ? j0 + RAST__ACC_BAND : w->jb;
-        nrow = rast__acc_edges_of(w, nrow, &next, &drop, j0, j1, v->p);
+        nrow = rast__acc_edges_of(w, nrow, &next, &drop, j0, j1);
         /* each row's parts: how many, and whether they are few enough to
          * accumulate (their bound) and many enough to read every cell
          * (a part or more for every RAST__ACC_DENSE_BAND columns: no bits) */

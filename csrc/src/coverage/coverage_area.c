@@ -2718,6 +2718,15 @@ static inline int32_t rast__grp_col(const rast__cells *c, int64_t v)
     return col < c->x0 ? 0 : col > c->x1 ? c->x1 - c->x0 + 1 : (int32_t)(col - c->x0) + 1;
 }
 
+/* The greatest quick abscissa whose rast__grp_col is at most col (a
+ * column key): a part whose qlo is at most it joins a group reaching col
+ * (rast__grp_col(qlo) <= col, tested without the key: col - x0 + 1 and
+ * the clamps, undone).  The last key (x1 and beyond): every one. */
+static inline int64_t rast__grp_lim(const rast__cells *c, int32_t col)
+{
+    return col > c->x1 - c->x0 ? INT64_MAX : ((int64_t)c->x0 + col) * ((int64_t)1 << QF) - 1;
+}
+
 /* The groups kept by rast__cov_row_groups (sw->h: where each starts in
  * row[]; sw->live: its edge count times 2, plus 1 for sign +1), added the
  * exact way. */
@@ -2773,10 +2782,9 @@ static void rast__cov_row_groups(rast__cells *c, rast__cedge *e, int32_t *row, i
                                  int32_t *rs, int32_t nrun, int acc)
 {
     const int64_t Yj = (int64_t)j * c->p;
-    int32_t *const key = sw->wb; /* (the sweep's room: after a sweep, the groups read qlo) */
-    /* swept: the exact cells for every group from then on (and key[] not
-     * read: a sweep reorders row[]); from the start when the last row swept
-     * a group, which this one then likely does too */
+    int32_t *const key = sw->wb; /* (the sweep's room: the sort's keys, not read after it) */
+    /* swept: the exact cells for every group from then on; from the start
+     * when the last row swept a group, which this one then likely does too */
     int32_t k, g, pz, r = 0, wl = 0, swept = sw->swept;
     /* the groups kept for the quick way, and the most parts one of them
      * has: every column is met by one group's parts at most (their columns
@@ -2815,10 +2823,15 @@ static void rast__cov_row_groups(rast__cells *c, rast__cedge *e, int32_t *row, i
     }
     for (k = 0; k < nrow; k = g) {
         int32_t hi = -1, wr = wl, m, full = 1, s = wl, z, r0 = r;
+        int64_t lim = 0; /* rast__grp_lim(hi): an edge joins by its qlo, not its key (a sweep
+                          * uses the keys' room: tri3k recomputed them, 3 M instructions) */
         for (g = k;; g++) { /* the group: row[k..g), the columns up to hi; its windings */
-            if (g < nrow && (g == k || (swept ? rast__grp_col(c, e[row[g]].qlo) : key[row[g]]) <= hi)) {
+            if (g < nrow && (g == k || e[row[g]].qlo <= lim)) {
                 const int32_t h = rast__grp_col(c, e[row[g]].qhi - 1);
-                if (h > hi) hi = h;
+                if (h > hi) {
+                    hi = h;
+                    lim = rast__grp_lim(c, hi);
+                }
 #if RAST__SHORTCUTS /* its windings as it joins (once: after a run joins, g is tried again) */
                 {
                     const rast__cedge *ed = &e[row[g]];
@@ -2831,7 +2844,10 @@ static void rast__cov_row_groups(rast__cells *c, rast__cedge *e, int32_t *row, i
             }
             if (r < nrun && rast__grp_col(c, (int64_t)e[rs[r]].hx0 * ((int64_t)1 << (QF - (G - c->h)))) <= hi) {
                 const int32_t h = rast__grp_col(c, (int64_t)e[rs[r]].hx1 * ((int64_t)1 << (QF - (G - c->h))));
-                if (h > hi) hi = h; /* a run joins the group */
+                if (h > hi) { /* a run joins the group */
+                    hi = h;
+                    lim = rast__grp_lim(c, hi);
+                }
                 r++;
                 g--;
                 continue;

@@ -606,20 +606,42 @@ static int32_t rast__cov_place(const rast__cells *c, const rast__cedge *e, rast_
     return lo;
 }
 
+/* Is b, starting at a's bottom vertex (at tv), strictly beside f (a's
+ * neighbour, f spanning tv) the way a is, as far as the lines alone say:
+ * when a's line and f's are not parallel.  The sweep's order just below
+ * tv is their true order there (a crossing of theirs before tv is done,
+ * one at tv, or within the grid before it, rounds up to tv, and the
+ * caller's heap has none at or before tv), so the difference of their
+ * lines' abscissae, linear and not constant, is strictly of one sign at tv:
+ * if it were 0 there, it would change sign at tv (a crossing at tv) or
+ * have been 0 just below it.  Then a's vertex is strictly on a's side of
+ * f at tv, and b, from it, just below tv: the exact test's answer without
+ * its abscissa.  Parallel lines (coincident, or apart) take the test. */
+static int rast__cov_apart_at_vertex(const rast__cedge *a, const rast__cedge *b, const rast__cedge *f)
+{
+    return RAST__SHORTCUTS && b->xt == a->xt + a->dx && b->yt == a->yt + a->dy &&
+           (int64_t)a->dx * f->dy != (int64_t)f->dx * a->dy;
+}
+
 /* One edge ending at tv, in slot pa of live[0..n), and one of its
  * direction, ib, starting there, with no neighbours' crossing at or before
  * tv: when ib lies strictly between the old edge's neighbours just below
  * tv, it takes the old edge's place (whose piece ends at tv), its winding
  * and sign, and only the two pairs it is in change: returns 1.  Else 0,
- * nothing changed but ib's top. */
+ * nothing changed but ib's top.  Where ib continues the old edge from its
+ * bottom vertex (a ring's vertex: on a stroke, most events), the
+ * neighbours not parallel to it need no exact test
+ * (rast__cov_apart_at_vertex). */
 static int rast__cov_replace(rast__cells *c, rast__cedge *e, rast__sweep *sw, int32_t n, int32_t pa,
                              int32_t ib, int64_t Yj, int32_t j, rast_fill_rule rule, uint64_t tv)
 {
     int32_t *live = sw->live;
     rast__cedge *a = &e[live[pa]], *b = &e[ib];
     rast__cov_at_top(b, Yj, j, tv, c->h);
-    if (!((pa == 0 || rast__cov_behind_at(b, &e[live[pa - 1]], Yj, j, tv, c->h)) &&
-          (pa + 1 == n || rast__cov_before_at(b, &e[live[pa + 1]], Yj, j, tv, c->h))))
+    if (!((pa == 0 || rast__cov_apart_at_vertex(a, b, &e[live[pa - 1]]) ||
+           rast__cov_behind_at(b, &e[live[pa - 1]], Yj, j, tv, c->h)) &&
+          (pa + 1 == n || rast__cov_apart_at_vertex(a, b, &e[live[pa + 1]]) ||
+           rast__cov_before_at(b, &e[live[pa + 1]], Yj, j, tv, c->h))))
         return 0;
     rast__cov_end_at(c, a, Yj, j, tv);
     b->sg = rast__cov_sign(rule, sw->wb[pa], b->dir);

@@ -2768,15 +2768,6 @@ static inline int32_t rast__grp_col(const rast__cells *c, int64_t v)
     return col < c->x0 ? 0 : col > c->x1 ? c->x1 - c->x0 + 1 : (int32_t)(col - c->x0) + 1;
 }
 
-/* The greatest quick abscissa whose rast__grp_col is at most col (a
- * column key): a part whose qlo is at most it joins a group reaching col
- * (rast__grp_col(qlo) <= col, tested without the key: col - x0 + 1 and
- * the clamps, undone).  The last key (x1 and beyond): every one. */
-static inline int64_t rast__grp_lim(const rast__cells *c, int32_t col)
-{
-    return col > c->x1 - c->x0 ? INT64_MAX : ((int64_t)c->x0 + col) * ((int64_t)1 << QF) - 1;
-}
-
 /* The groups kept by rast__cov_row_groups (sw->h: where each starts in
  * row[]; sw->live: its edge count times 2, plus 1 for sign +1), added the
  * exact way. */
@@ -2872,16 +2863,20 @@ static void rast__cov_row_groups(rast__cells *c, rast__cedge *e, int32_t *row, i
         rs[q] = id;
     }
     for (k = 0; k < nrow; k = g) {
-        int32_t hi = -1, wr = wl, m, full = 1, s = wl, z, r0 = r;
-        int64_t lim = 0; /* rast__grp_lim(hi): an edge joins by its qlo, not its key (a sweep
-                          * uses the keys' room: tri3k recomputed them, 3 M instructions) */
-        for (g = k;; g++) { /* the group: row[k..g), the columns up to hi; its windings */
-            if (g < nrow && (g == k || e[row[g]].qlo <= lim)) {
-                const int32_t h = rast__grp_col(c, e[row[g]].qhi - 1);
-                if (h > hi) {
-                    hi = h;
-                    lim = rast__grp_lim(c, hi);
-                }
+        int32_t wr = wl, m, full = 1, s = wl, z, r0 = r;
+        /* hq: the greatest qhi - 1 of the group's parts (and its runs' right
+         * ends, quick units): its columns reach rast__grp_col(hq), the keys'
+         * way; a part joins when its qlo's column is not past that one,
+         * surely so when qlo <= hq (the columns, monotone), and only else
+         * by the columns (no key, nor column, per joining part: a row of a
+         * thousand triangles spanning the canvas, one group, took 15 M
+         * instructions in them; and a sweep uses the keys' room) */
+        int64_t hq = 0;
+        for (g = k;; g++) { /* the group: row[k..g), the columns up to hq's; its windings */
+            if (g < nrow && (g == k || e[row[g]].qlo <= hq ||
+                             rast__grp_col(c, e[row[g]].qlo) <= rast__grp_col(c, hq))) {
+                const int64_t q = e[row[g]].qhi - 1;
+                if (g == k || q > hq) hq = q;
 #if RAST__SHORTCUTS /* its windings as it joins (once: after a run joins, g is tried again) */
                 {
                     const rast__cedge *ed = &e[row[g]];
@@ -2892,12 +2887,10 @@ static void rast__cov_row_groups(rast__cells *c, rast__cedge *e, int32_t *row, i
 #endif
                 continue;
             }
-            if (r < nrun && rast__grp_col(c, (int64_t)e[rs[r]].hx0 * ((int64_t)1 << (QF - (G - c->h)))) <= hi) {
-                const int32_t h = rast__grp_col(c, (int64_t)e[rs[r]].hx1 * ((int64_t)1 << (QF - (G - c->h))));
-                if (h > hi) { /* a run joins the group */
-                    hi = h;
-                    lim = rast__grp_lim(c, hi);
-                }
+            if (r < nrun && rast__grp_col(c, (int64_t)e[rs[r]].hx0 * ((int64_t)1 << (QF - (G - c->h)))) <=
+                                rast__grp_col(c, hq)) {
+                const int64_t q = (int64_t)e[rs[r]].hx1 * ((int64_t)1 << (QF - (G - c->h)));
+                if (q > hq) hq = q; /* a run joins the group */
                 r++;
                 g--;
                 continue;

@@ -345,6 +345,7 @@ typedef struct rast__sweep {
     uint64_t *ct;
     int32_t m;
     int32_t swept; /* rast__cov_row_groups swept a group in the last row */
+    int32_t unsorted; /* rast__grp_sort's insertion ran past its budget in the last row sorted */
     int32_t room;  /* the arrays' length (the polygon's edges) */
 } rast__sweep;
 
@@ -606,24 +607,47 @@ static int32_t rast__cov_place(const rast__cells *c, const rast__cedge *e, rast_
     return lo;
 }
 
+/* Is b, starting at a's bottom vertex (at tv), strictly beside f (a's
+ * neighbour, f spanning tv) the way a is, as far as the lines alone say:
+ * when a's line and f's are not parallel.  The sweep's order just below
+ * tv is their true order there (a crossing of theirs before tv is done,
+ * one at tv, or within the grid before it, rounds up to tv, and the
+ * caller's heap has none at or before tv), so the difference of their
+ * lines' abscissae, linear and not constant, is strictly of one sign at tv:
+ * if it were 0 there, it would change sign at tv (a crossing at tv) or
+ * have been 0 just below it.  Then a's vertex is strictly on a's side of
+ * f at tv, and b, from it, just below tv: the exact test's answer without
+ * its abscissa.  Parallel lines (coincident, or apart) take the test. */
+static int rast__cov_apart_at_vertex(const rast__cedge *a, const rast__cedge *b, const rast__cedge *f)
+{
+    return RAST__SHORTCUTS && b->xt == a->xt + a->dx && b->yt == a->yt + a->dy &&
+           (int64_t)a->dx * f->dy != (int64_t)f->dx * a->dy;
+}
+
 /* One edge ending at tv, in slot pa of live[0..n), and one of its
  * direction, ib, starting there, with no neighbours' crossing at or before
  * tv: when ib lies strictly between the old edge's neighbours just below
  * tv, it takes the old edge's place (whose piece ends at tv), its winding
  * and sign, and only the two pairs it is in change: returns 1.  Else 0,
- * nothing changed but ib's top. */
+ * nothing changed but ib's top.  Where ib continues the old edge from its
+ * bottom vertex (a ring's vertex: on a stroke, most events), the
+ * neighbours not parallel to it need no exact test
+ * (rast__cov_apart_at_vertex). */
 static int rast__cov_replace(rast__cells *c, rast__cedge *e, rast__sweep *sw, int32_t n, int32_t pa,
                              int32_t ib, int64_t Yj, int32_t j, rast_fill_rule rule, uint64_t tv)
 {
     int32_t *live = sw->live;
     rast__cedge *a = &e[live[pa]], *b = &e[ib];
     rast__cov_at_top(b, Yj, j, tv, c->h);
-    if (!((pa == 0 || rast__cov_behind_at(b, &e[live[pa - 1]], Yj, j, tv, c->h)) &&
-          (pa + 1 == n || rast__cov_before_at(b, &e[live[pa + 1]], Yj, j, tv, c->h))))
+    if (!((pa == 0 || rast__cov_apart_at_vertex(a, b, &e[live[pa - 1]]) ||
+           rast__cov_behind_at(b, &e[live[pa - 1]], Yj, j, tv, c->h)) &&
+          (pa + 1 == n || rast__cov_apart_at_vertex(a, b, &e[live[pa + 1]]) ||
+           rast__cov_before_at(b, &e[live[pa + 1]], Yj, j, tv, c->h))))
         return 0;
     rast__cov_end_at(c, a, Yj, j, tv);
     b->sg = rast__cov_sign(rule, sw->wb[pa], b->dir);
     live[pa] = ib;
+    if (RAST__SHORTCUTS) b->pos = pa; /* (rast__cov_find) */
     if (pa > 0) rast__heap_set(sw, pa - 1, rast__cov_pair(&e[live[pa - 1]], ib, b, Yj, j, tv, c));
     if (pa + 1 < n) rast__heap_set(sw, pa, rast__cov_pair(b, live[pa + 1], &e[live[pa + 1]], Yj, j, tv, c));
     return 1;
@@ -772,6 +796,29 @@ static void rast__heap_mark(rast__sweep *w, int32_t p)
     rast__heap_set(w, p, 0);
 }
 
+/* Edge id's slot in live[0..n) (n when it is not there): with hints (a
+ * row of many events, listed: rast__cov_ev_lists), its hint first
+ * (rast__cedge's pos, set where the sweep puts an edge), then outwards
+ * from it (an event's edits move a slot by a few); else a scan from the
+ * left (a short row: the outward walk cost tri3k more than it saved).  The
+ * scan found the ending edges of a stroke's events: 2.4 M instructions of
+ * 93 M. */
+RAST__HOT int32_t rast__cov_find(const rast__cedge *e, const int32_t *live, int32_t n, int32_t id, int hints)
+{
+    int32_t h, d;
+    if (!hints) {
+        for (d = 0; d < n && live[d] != id; d++) {
+        }
+        return d;
+    }
+    h = e[id].pos < 0 ? 0 : e[id].pos >= n ? n - 1 : e[id].pos;
+    for (d = 0; h - d >= 0 || h + d < n; d++) {
+        if (h + d < n && live[h + d] == id) return h + d;
+        if (h - d >= 0 && live[h - d] == id) return h - d;
+    }
+    return n;
+}
+
 #define RAST__EV_LISTS_MIN 24 /* rows of more events list them (below); fewer are scanned */
 
 /* The link of edge id's list (0: by start, 1: by end) while a row is
@@ -880,8 +927,7 @@ static int rast__cov_event_local(rast__cells *c, rast__cedge *e, const int32_t *
      * takes the old one's place, its winding and sign, and only the two
      * pairs it is in change. */
     if (nend == 1 && nbeg == 1 && e[ends[0]].dir == e[begs[0]].dir && (sw->m == 0 || sw->ct[0] > tv)) {
-        int32_t pa = 0;
-        while (pa < n && live[pa] != ends[0]) pa++;
+        const int32_t pa = rast__cov_find(e, live, n, ends[0], evq[0] != -2);
         if (pa == n) return -1; /* (not expected) */
         if (rast__cov_replace(c, e, sw, n, pa, begs[0], Yj, j, rule, tv)) {
             *ptvn = tvn;
@@ -910,13 +956,12 @@ static int rast__cov_event_local(rast__cells *c, rast__cedge *e, const int32_t *
     }
     /* Where the ending edges are (ascending), and whether the neighbours
      * they leave may meet at or before tv (then the passes decide). */
-    for (k = 0, i = 0; k < n && i < nend; k++) {
-        int32_t q;
-        for (q = 0; q < nend && ends[q] != live[k]; q++) {
-        }
-        if (q < nend) pos[i++] = k;
+    for (i = 0; i < nend; i++) {
+        const int32_t p = rast__cov_find(e, live, n, ends[i], evq[0] != -2);
+        if (p == n) return -1; /* (not expected: an ending edge not in the order) */
+        for (k = i; k > 0 && pos[k - 1] > p; k--) pos[k] = pos[k - 1];
+        pos[k] = p;
     }
-    if (i < nend) return -1; /* (not expected: an ending edge not in the order) */
     for (i = 0; i < nend;) {
         int32_t a = pos[i], b = a;
         while (i + 1 < nend && pos[i + 1] == b + 1) {
@@ -947,6 +992,7 @@ static int rast__cov_event_local(rast__cells *c, rast__cedge *e, const int32_t *
         memmove(live + lo + 1, live + lo, (size_t)(n - lo) * sizeof *live);
         memmove(sw->wb + lo + 1, sw->wb + lo, (size_t)(n - lo) * sizeof *sw->wb);
         live[lo] = begs[i];
+        ed->pos = lo;
         if (n >= 1) {
             rast__heap_make(sw, lo < n ? lo : lo - 1, n - 1);
             if (lo > 0 && lo < n) rast__heap_mark(sw, lo - 1);
@@ -1088,6 +1134,7 @@ static void rast__cov_row_area(rast__cells *c, rast__cedge *e, int32_t *row, int
             for (k = 0; k < n; k++) {
                 rast__cedge *ed = &e[live[k]];
                 sw->wb[k] = wsum;
+                if (RAST__LOCAL_EVENTS) ed->pos = k; /* (rast__cov_find) */
                 ed->sg = rast__cov_sign(rule, wsum, ed->dir);
                 wsum += ed->dir;
             }
@@ -1102,6 +1149,10 @@ static void rast__cov_row_area(rast__cells *c, rast__cedge *e, int32_t *row, int
             rast__cedge *a = &e[ia], *b = &e[ib];
             live[p] = ib;
             live[p + 1] = ia;
+            if (RAST__LOCAL_EVENTS) {
+                b->pos = p;
+                a->pos = p + 1;
+            }
             sw->wb[p + 1] = sw->wb[p] + b->dir;
             rast__cov_resign(c, b, Yj, j, tc, rast__cov_sign(rule, sw->wb[p], b->dir));
             rast__cov_resign(c, a, Yj, j, tc, rast__cov_sign(rule, sw->wb[p + 1], a->dir));
@@ -2739,8 +2790,8 @@ static void rast__grp_flush(rast__cells *c, rast__cedge *e, int32_t *row, const 
  * or not (a stable sort of one sequence by one key gives one order, and a
  * stable sort by a part of the key, or of a prefix, keeps the order of
  * equal keys).  Text: the radix sort's two passes of 256 counts a row
- * took 6% of "area" (issue 33). */
-static void rast__grp_sort(int32_t *row, int32_t n, int32_t *tmp, const int32_t *key, int32_t kmax)
+ * took 6% of "area" (issue 33).  Returns 1 when the radix sort finished. */
+static int rast__grp_sort(int32_t *row, int32_t n, int32_t *tmp, const int32_t *key, int32_t kmax)
 {
     uint32_t cnt[128], sum = 0, sh = 0;
     int32_t k, budget = 2 * n + 16;
@@ -2762,9 +2813,10 @@ static void rast__grp_sort(int32_t *row, int32_t n, int32_t *tmp, const int32_t 
         if (budget < 0) {
             for (q = k + 1; q < n; q++) row[q] = tmp[q];
             rast__cov_radix_sort(row, tmp, key, (uint32_t)n);
-            return;
+            return 1;
         }
     }
+    return 0;
 }
 #endif
 
@@ -2773,10 +2825,9 @@ static void rast__cov_row_groups(rast__cells *c, rast__cedge *e, int32_t *row, i
                                  int32_t *rs, int32_t nrun, int acc)
 {
     const int64_t Yj = (int64_t)j * c->p;
-    int32_t *const key = sw->wb; /* (the sweep's room: after a sweep, the groups read qlo) */
-    /* swept: the exact cells for every group from then on (and key[] not
-     * read: a sweep reorders row[]); from the start when the last row swept
-     * a group, which this one then likely does too */
+    int32_t *const key = sw->wb; /* (the sweep's room: the sort's keys, not read after it) */
+    /* swept: the exact cells for every group from then on; from the start
+     * when the last row swept a group, which this one then likely does too */
     int32_t k, g, pz, r = 0, wl = 0, swept = sw->swept;
     /* the groups kept for the quick way, and the most parts one of them
      * has: every column is met by one group's parts at most (their columns
@@ -2791,7 +2842,14 @@ static void rast__cov_row_groups(rast__cells *c, rast__cedge *e, int32_t *row, i
     }
     if (nrow > 48) {
 #if RAST__SHORTCUTS
-        rast__grp_sort(row, nrow, sw->hidx, key, c->x1 - c->x0 + 1);
+        /* after a row whose insertion ran past its budget (1 returned), the
+         * radix sort alone (the same order) but every eighth row: on a
+         * stroke's dense rows the insertion's moves, then the radix sort,
+         * took 2.3 M instructions of 90 M */
+        if (sw->unsorted && (j & 7))
+            rast__cov_radix_sort(row, sw->hidx, key, (uint32_t)nrow);
+        else
+            sw->unsorted = rast__grp_sort(row, nrow, sw->hidx, key, c->x1 - c->x0 + 1);
 #else
         rast__cov_radix_sort(row, sw->hidx, key, (uint32_t)nrow);
 #endif
@@ -2814,11 +2872,20 @@ static void rast__cov_row_groups(rast__cells *c, rast__cedge *e, int32_t *row, i
         rs[q] = id;
     }
     for (k = 0; k < nrow; k = g) {
-        int32_t hi = -1, wr = wl, m, full = 1, s = wl, z, r0 = r;
-        for (g = k;; g++) { /* the group: row[k..g), the columns up to hi; its windings */
-            if (g < nrow && (g == k || (swept ? rast__grp_col(c, e[row[g]].qlo) : key[row[g]]) <= hi)) {
-                const int32_t h = rast__grp_col(c, e[row[g]].qhi - 1);
-                if (h > hi) hi = h;
+        int32_t wr = wl, m, full = 1, s = wl, z, r0 = r;
+        /* hq: the greatest qhi - 1 of the group's parts (and its runs' right
+         * ends, quick units): its columns reach rast__grp_col(hq), the keys'
+         * way; a part joins when its qlo's column is not past that one,
+         * surely so when qlo <= hq (the columns, monotone), and only else
+         * by the columns (no key, nor column, per joining part: a row of a
+         * thousand triangles spanning the canvas, one group, took 15 M
+         * instructions in them; and a sweep uses the keys' room) */
+        int64_t hq = 0;
+        for (g = k;; g++) { /* the group: row[k..g), the columns up to hq's; its windings */
+            if (g < nrow && (g == k || e[row[g]].qlo <= hq ||
+                             rast__grp_col(c, e[row[g]].qlo) <= rast__grp_col(c, hq))) {
+                const int64_t q = e[row[g]].qhi - 1;
+                if (g == k || q > hq) hq = q;
 #if RAST__SHORTCUTS /* its windings as it joins (once: after a run joins, g is tried again) */
                 {
                     const rast__cedge *ed = &e[row[g]];
@@ -2829,9 +2896,10 @@ static void rast__cov_row_groups(rast__cells *c, rast__cedge *e, int32_t *row, i
 #endif
                 continue;
             }
-            if (r < nrun && rast__grp_col(c, (int64_t)e[rs[r]].hx0 * ((int64_t)1 << (QF - (G - c->h)))) <= hi) {
-                const int32_t h = rast__grp_col(c, (int64_t)e[rs[r]].hx1 * ((int64_t)1 << (QF - (G - c->h))));
-                if (h > hi) hi = h; /* a run joins the group */
+            if (r < nrun && rast__grp_col(c, (int64_t)e[rs[r]].hx0 * ((int64_t)1 << (QF - (G - c->h)))) <=
+                                rast__grp_col(c, hq)) {
+                const int64_t q = (int64_t)e[rs[r]].hx1 * ((int64_t)1 << (QF - (G - c->h)));
+                if (q > hq) hq = q; /* a run joins the group */
                 r++;
                 g--;
                 continue;
@@ -3080,7 +3148,7 @@ rast_status rast__cov_area(rast__cedge *e, uint32_t n, int32_t s, rast_fill_rule
     sw.h = (int32_t *)rast__take(arena, (size_t)n * sizeof(int32_t));
     sw.hidx = (int32_t *)rast__take(arena, (size_t)n * sizeof(int32_t));
     sw.ct = (uint64_t *)rast__take(arena, (size_t)n * sizeof(uint64_t));
-    sw.swept = 0;
+    sw.swept = sw.unsorted = 0;
 #if RAST__SHORTCUTS
     sw.room = (int32_t)n; /* (rast__grp_few's only) */
 #endif

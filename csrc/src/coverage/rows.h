@@ -117,6 +117,8 @@ typedef struct rast__cedge {
     int64_t rT;
     int32_t sg;    /* the sign of its current piece (+1 enters, -1 leaves the inside, 0 neither) */
     int32_t cn, crow;
+    int32_t pos;    /* its slot in the sweep's order when last put there (a hint,
+                     * coverage_area.c's rast__cov_find; in the padding before ctime) */
     uint64_t ctime; /* its crossing time with edge cn in row crow (a cache) */
 } rast__cedge;
 

@@ -51,10 +51,12 @@ typedef struct rast__pl {
     uint32_t *pos; /* pos[k]: edge k's place in st[] while it is there */
     uint32_t nst;
     uint64_t budget;
+#if !defined(__OPTIMIZE_SIZE__) /* (size-optimised builds: condition 3 by rast__pl_faces only) */
     /* faces: condition 3 in the sweep (rast__pl_apart_all), its answer in
      * pn (bit 0: a side +1, bit 1: a side -1, bit 2: a side beyond) */
     int faces;
     uint32_t pn;
+#endif
 } rast__pl;
 
 /* edge k's left and right end (in the order of the keys) */
@@ -448,6 +450,7 @@ static uint32_t rast__pl_ring(const rast_point *p, uint32_t size, rast_point *pt
     return n;
 }
 
+#if !defined(__OPTIMIZE_SIZE__)
 /* Condition 3 in the sweep, at a vertex where two edges start, the lower
  * at st[lo]: the edges below it, each +1 or -1 by the way its ring goes
  * along it (the way the order rises or not), sum to the winding number
@@ -473,6 +476,7 @@ static void rast__pl_sides(rast__pl *s, uint32_t lo)
     s->pn |= (w0 == 1 || w1 == 1) | (uint32_t)(w0 == -1 || w1 == -1) << 1 |
              (uint32_t)(w0 < -1 || w0 > 1 || w1 < -1 || w1 > 1) << 2;
 }
+#endif
 
 /* Conditions 1 and 2 (above) for the vertices ord[0..n) (whole rings),
  * sorted here (tmp, run: room for n, n + 1): 1 when they hold.  The sweep
@@ -499,8 +503,9 @@ static int rast__pl_apart_all(rast__pl *s, uint32_t *ord, uint32_t *tmp, uint32_
         if (out_ends && !rast__pl_remove(s, v)) return 0;
         if (!in_ends && !rast__pl_insert(s, in)) return 0;
         if (!out_ends && !rast__pl_insert(s, v)) return 0;
-        if (RAST__PL_FAST && s->faces && !in_ends && !out_ends)
-            rast__pl_sides(s, s->pos[in] < s->pos[v] ? s->pos[in] : s->pos[v]);
+#if !defined(__OPTIMIZE_SIZE__)
+        if (s->faces && !in_ends && !out_ends) rast__pl_sides(s, s->pos[in] < s->pos[v] ? s->pos[in] : s->pos[v]);
+#endif
     }
     return 1;
 }
@@ -535,8 +540,12 @@ static int rast__pl_faces(const rast__pl *s, const uint32_t *first, const uint32
     return !(pos && neg);
 }
 
+#if !defined(__OPTIMIZE_SIZE__)
 /* rast__cov_plain; faces: condition 3 in the sweep (rast__pl_sides) */
 static int rast__pl_plain(const rast_polygon *poly, uint32_t npoints, rast__arena arena, int faces)
+#else
+int rast__cov_plain(const rast_polygon *poly, uint32_t npoints, rast__arena arena)
+#endif
 {
     rast__pl s;
     rast_point *pt = (rast_point *)rast__take(&arena, (size_t)npoints * sizeof(rast_point));
@@ -565,23 +574,29 @@ static int rast__pl_plain(const rast_polygon *poly, uint32_t npoints, rast__aren
     s.prev = prev;
     s.nst = 0;
     s.budget = (uint64_t)npoints * 64 + ((uint64_t)1 << 20);
-    s.faces = RAST__PL_FAST && faces && poly->nrings > 1;
+#if !defined(__OPTIMIZE_SIZE__)
+    s.faces = faces && poly->nrings > 1;
     s.pn = 0;
+#endif
     fast = rast__pl_convex(pt, first, box, poly->nrings, dir);
     if (!fast) fast = rast__pl_star(pt, first, box, poly->nrings);
     if (fast) return fast > 0; /* (conditions 1 to 3 decided) */
     for (i = 0; i < n; i++) ord[i] = i;
     if (!rast__pl_apart_all(&s, ord, tmp, run, n)) return 0;
+#if !defined(__OPTIMIZE_SIZE__)
     if (s.faces) return s.budget < ((uint64_t)1 << 62) && (s.pn == 1 || s.pn == 2);
+#endif
     if (poly->nrings > 1 && (uint64_t)poly->nrings * n > s.budget) return 0;
     for (r = 0; r < poly->nrings; r++) ord[r] = r; /* condition 3: every ring against every other */
     return rast__pl_faces(&s, first, first + 1, box, ord, poly->nrings);
 }
 
+#if !defined(__OPTIMIZE_SIZE__)
 int rast__cov_plain(const rast_polygon *poly, uint32_t npoints, rast__arena arena)
 {
     return rast__pl_plain(poly, npoints, arena, 0);
 }
+#endif
 
 #if !defined(__OPTIMIZE_SIZE__)
 /* ---- plain parts -----------------------------------------------------------

@@ -55,6 +55,17 @@ int rast__cov_parts_marked(const rast_polygon *poly, uint32_t npoints, rast__are
  * parts are all plain needs no edge records (rast__cov_acc_points). */
 int rast__cov_parts_test(const rast_polygon *poly, uint32_t npoints, rast__arena arena, int32_t sb);
 int rast__cov_parts_mark(rast__arena arena, uint32_t nr, rast__cedge *e, uint32_t nedges, int32_t mark);
+/* The polygon with every two equal and opposite edges dropped (a map's
+ * shared borders: the same winding number off the edges), its remaining
+ * edges joined into rings, into *out (its arrays taken from *arena): 1
+ * when that polygon is plain (rast__cov_plain), so that its accumulation
+ * is the coverage of the original; 0 when not, or when fewer than a
+ * quarter of the edges cancel, or fewer than 64 points (*arena then
+ * partly taken: pass a copy).  Its room: about npoints * 7 bytes kept
+ * from *arena, 29 more while it runs; the accumulation after it fits in
+ * what "area" counts (rast__cov_area_scratch).  Not in size-optimised
+ * builds. */
+int rast__cov_borders(const rast_polygon *poly, uint32_t npoints, rast__arena *arena, rast_polygon *out);
 
 rast_status rast__cov_area(rast__cedge *e, uint32_t n, int32_t s, rast_fill_rule rule,
                            int accumulate, const rast__cov_out *o, rast__arena *arena);

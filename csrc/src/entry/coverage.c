@@ -307,6 +307,15 @@ static rast_status rast__cov_run(const rast_polygon *poly, const rast_point *tri
                                                     : poly->nrings >= 2 &&
                                                           (parts = rast__cov_parts_test(poly, npoints, arena, s)) > 0)))
             return rast__cov_acc_points(poly, NULL, 0, 0, s, rule, o, e, &arena);
+        /* rings that share their borders (a map): the polygon without its
+         * equal and opposite edges (the same winding number), when plain,
+         * by its accumulation (coverage_plain.c, rast__cov_borders) */
+        if (!tris && !parts && poly->nrings >= 2 && rast__cov_acc_may(o, s)) {
+            rast__arena room = arena;
+            rast_polygon kept;
+            if (rast__cov_borders(poly, npoints, &room, &kept))
+                return rast__cov_acc_points(&kept, NULL, 0, 0, s, rule, o, e, &room);
+        }
 #endif
         n = tris ? rast__cov_edges_triangles(tris, ntris, e) : rast__cov_edges_polygon(poly, e);
 #if !defined(__OPTIMIZE_SIZE__)

@@ -251,23 +251,27 @@ int rast__cov_small(const rast_polygon *poly, int32_t s, const rast__cov_out *o,
          * engines' own error (below 2^-50 pixel: 2^3 units) */
         const uint64_t win = 255 * (uint64_t)(mr += m[r]) * ((uint64_t)1 << (RAST__CS_K + 4)) + 4096;
         int64_t v = 0;
-        int32_t nz = 0;
+        int32_t nz = 0, near = 0;
+        /* No branch a pixel (the test of none, part or whole mispredicted
+         * along every side; the pass's time 0.30 -> 0.26 ms on the loop
+         * family): every pixel's level and tie test made the same way.  A
+         * pixel outside (a = 0) or whole (FULL <= a < FULL + 16 2^(K + 4))
+         * has the fraction 1/2 (2^(2K)) plus less than 2^(K + 16), never
+         * within win (< 2^(K + 17)) of 0 or 1: no tie; its level is 0, or
+         * 255 once min(., 255) has cut it. */
         for (c = 0; c < w; c++) {
-            uint64_t a, num;
-            unsigned l;
+            uint64_t a, num, l;
             v += cells[c];
             a = (uint64_t)(v < 0 ? -v : v);
-            if (a - 1 >= (uint64_t)RAST__CS_FULL - 1) { /* none, or whole (within the bound of 1: 255) */
-                l = a ? 255 : 0;
-            } else {
-                num = a * 255 + RAST__CS_FULL / 2;
-                /* the fraction within win of 0 or of 1: near a tie, the engines' */
-                if (((num - win - 1) & (RAST__CS_FULL - 1)) >= (uint64_t)RAST__CS_FULL - 2 * win - 1) return 0;
-                l = (unsigned)(num >> (2 * RAST__CS_K + 1));
-            }
+            num = a * 255 + RAST__CS_FULL / 2;
+            /* the fraction within win of 0 or of 1: near a tie, the engines' */
+            near |= ((num - win - 1) & (RAST__CS_FULL - 1)) >= (uint64_t)RAST__CS_FULL - 2 * win - 1;
+            l = num >> (2 * RAST__CS_K + 1);
+            l = l < 255 ? l : 255;
             lv[r * w + c] = (unsigned char)l;
             nz += l != 0;
         }
+        if (near) return 0;
         runs[r] = rast__cs_run_of(lv + r * w, w, nz);
     }
     rast__cs_hand_on(lv, runs, box, o);

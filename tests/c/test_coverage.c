@@ -968,6 +968,79 @@ static void test_spans(void)
     }
 }
 
+/* One small convex ring a call, as Canvas.fill_polygon(aa=...) draws the
+ * loop family's (coverage_small.c, which hands a row that is one run
+ * straight to the levels entry and any other through
+ * rast__cov_row_done): its spans, every method and sample, a clip cutting
+ * it or not, against rast_polygon_coverage's array (the engines' levels),
+ * no level 0 in a span.  Slivers (points at S = 8) whose supersampled
+ * rows have a 0 between levels not 0, and random triangles up to 24
+ * pixels across. */
+#define WS 30
+#define HS 24
+typedef struct small_img {
+    uint8_t img[HS][WS];
+    rast_rect clip;
+    int32_t y, x1, ok;
+} small_img;
+
+static void take_small(void *user, int32_t y, int32_t x0, int32_t x1, const uint8_t *v)
+{
+    small_img *s = (small_img *)user;
+    take_run(&s->img[0][0], WS, &s->clip, &s->y, &s->x1, &s->ok, y, x0, x1, v);
+}
+
+static void test_spans_small(void)
+{
+    static const rast_point slivers[2][4] = {{{333, 1285}, {5811, 2639}, {5811, 2647}, {333, 1293}},
+                                             {{333, 1306}, {5811, 2022}, {5811, 2030}, {333, 1313}}};
+    int iter, n = check_count(400);
+    for (iter = 0; iter < n; iter++) {
+        rast_point pts[4];
+        uint32_t size = iter < 2 * 2 * RAST_AA_COUNT_ ? 4 : 3;
+        rast_polygon p = {pts, &size, 1};
+        rast_coverage_opts o;
+        rast_rect clip;
+        uint8_t want[HS][WS];
+        small_img s;
+        size_t need;
+        unsigned char *sc;
+        int32_t i, y;
+        memset(&o, 0, sizeof o);
+        o.subpixel_bits = 8;
+        o.rule = (rast_fill_rule)(rng() % 2);
+        if (size == 4) { /* each sliver, each method, both samples */
+            memcpy(pts, slivers[iter % 2], sizeof pts);
+            o.method = (rast_aa_method)(iter / 2 % RAST_AA_COUNT_);
+            o.sample = (rast_sample)(iter / (2 * RAST_AA_COUNT_) % 2);
+        } else {
+            const int32_t x = (int32_t)(rng() % (WS * 256)) - 512, y0 = (int32_t)(rng() % (HS * 256)) - 512;
+            for (i = 0; i < 3; i++) {
+                pts[i].x = x + (int32_t)(rng() % (24 * 256));
+                pts[i].y = y0 + (int32_t)(rng() % (24 * 256));
+            }
+            o.method = (rast_aa_method)(rng() % RAST_AA_COUNT_);
+            o.sample = (rast_sample)(rng() % 2);
+        }
+        clip.x0 = (int32_t)(rng() % 4);
+        clip.y0 = (int32_t)(rng() % 4);
+        clip.x1 = WS - (int32_t)(rng() % 4);
+        clip.y1 = HS - (int32_t)(rng() % 4);
+        memset(want, 0, sizeof want);
+        CHECK(rast_coverage_scratch_size(&o, size, WS, HS, &need) == RAST_OK);
+        sc = scratch_for(need);
+        CHECK(rast_polygon_coverage(&p, &o, &clip, RAST_COVERAGE_U8, &want[0][0], WS, sc, need) ==
+              RAST_OK);
+        memset(&s, 0, sizeof s);
+        s.clip = clip;
+        s.y = INT32_MIN;
+        s.ok = 1;
+        CHECK(rast_polygon_coverage_spans(&p, &o, &clip, take_small, &s, sc, need) == RAST_OK);
+        CHECK(s.ok);
+        for (y = 0; y < HS; y++) CHECK(memcmp(s.img[y], want[y], WS) == 0);
+    }
+}
+
 /* ---- what the scratch held before: nothing may depend on it ----------------- */
 
 /* A staircase (horizontal runs at 12 heights over 36 rows, keys past one
@@ -1127,6 +1200,7 @@ int main(void)
     test_translation();
     test_errors();
     test_spans();
+    test_spans_small();
     test_scratch_content();
     test_long_edges();
     return check_report("test_coverage");

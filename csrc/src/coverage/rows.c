@@ -9,13 +9,6 @@
  */
 #include "rows.h"
 
-/* A stretch of level 255 at least this long goes to a painter's full
- * entry (a fill: a memset for one-byte pixels) instead of its levels
- * entry (a blend per pixel); shorter ones stay in their levels run, where
- * a blend of a few pixels costs less than another call.  The pixels are
- * the same either way: a blend at 255 writes what a fill writes. */
-#define RAST__COV_FULL_MIN 16
-
 void rast__cov_row_done(const rast__cov_out *o, int32_t y)
 {
     const unsigned char *row = o->base;

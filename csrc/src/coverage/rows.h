@@ -274,6 +274,14 @@ typedef struct rast__cov_out {
     const rast__painter *paint;
 } rast__cov_out;
 
+/* A stretch of level 255 at least this long goes to a painter's full
+ * entry (a fill: a memset for one-byte pixels) instead of its levels
+ * entry (a blend per pixel); shorter ones stay in their levels run, where
+ * a blend of a few pixels costs less than another call.  The pixels are
+ * the same either way: a blend at 255 writes what a fill writes.  (Here
+ * for coverage_small.c too, which hands a row of fewer straight on.) */
+#define RAST__COV_FULL_MIN 16
+
 /* Row y is complete: hand its runs of values not 0 to the painter, if
  * there is one: to its levels entry, except that a stretch of 255 at
  * least RAST__COV_FULL_MIN long goes to its full entry when it has one

@@ -32,7 +32,8 @@ from hypothesis import given, settings, strategies as st
 import oracle_coverage as oc
 import rastrum
 import strategies as S_
-from test_coverage import exact_area, rule_applied
+from test_coverage import rule_applied
+from test_coverage_acc_window import _signed
 
 W, H, J = 8, 16, 9
 T = 1 << 24
@@ -56,11 +57,6 @@ def _ring(e, rev, dx=0, dy=0):
     a, b = (X0 / 256 + dx, Y0 / 256 + dy), (X1 / 256 + dx, Y1 / 256 + dy)
     r = [a, b, (W + 2.0, b[1]), (W + 2.0, a[1])]
     return r[::-1] if rev else r
-
-
-def _signed(r, shape):
-    a2 = sum(x0 * y1 - x1 * y0 for (x0, y0), (x1, y1) in zip(r, r[1:] + r[:1]))
-    return exact_area([r], shape, "nonzero", 8) * (1 if a2 > 0 else -1)
 
 
 def _claims(e, c, rev):

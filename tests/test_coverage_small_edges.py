@@ -198,14 +198,15 @@ def test_many_vertices(n):
         _paint(ring, "nonzero", method, FORMATS[n & 1], n, _levels(ring, "nonzero", method, True))
 
 
-# boxes round the bound both ways at once (24 x 24 px: the small path's;
-# 25 x 25: the engines'), and rings partly off each side of the canvas
+# boxes round the bound both ways at once (pixel boxes of 24 x 24 px: the
+# small path's; 25 x 25: the engines'), and rings partly off each side of
+# the canvas
 BOXES = {
     "24 x 24 octagon": [(3.5, 1.0), (20.5, 1.0), (25.0, 5.5), (25.0, 20.5), (20.5, 25.0), (3.5, 25.0),
                         (1.0, 20.5), (1.0, 5.5)],
-    "25 x 25 octagon": [(3.5, 1.0), (20.5, 1.0), (25.6, 5.5), (25.6, 20.5), (20.5, 25.4), (3.5, 25.4),
+    "25 x 25 octagon": [(3.5, 0.6), (20.5, 0.6), (24.6, 5.5), (24.6, 20.5), (20.5, 24.4), (3.5, 24.4),
                         (0.9, 20.5), (0.9, 5.5)],
-    "25 x 25 diamond": [(13.3, 0.7), (25.5, 13.1), (13.3, 25.5), (0.7, 13.1)],
+    "25 x 25 diamond": [(12.7, 0.3), (24.5, 12.6), (12.7, 24.8), (0.3, 12.6)],
     "off the left": [(-5.3, 4.2), (6.6, 2.9), (9.1, 12.7), (-3.2, 15.4)],
     "off the top": [(4.2, -5.3), (16.1, -2.2), (13.3, 9.7), (2.9, 6.6)],
     "off the right": [(38.7, 4.2), (50.6, 2.9), (53.1, 12.7), (40.8, 15.4)],

@@ -20,7 +20,14 @@ right window sends the row to the exact sweep; a window without the
 floor's part keeps the floor's level, one off.  Against the exact
 oracle (tests/oracle_coverage.py): floor(a' M + 1/2), a' the rule
 applied to the ring's signed area, no tie among them (the exact values
-are that far from one)."""
+are that far from one).
+
+The same rings painted (Canvas.fill_polygon, aa="accumulate", 255 on a
+gray8 canvas of 0: the pixel is the level) take no quad: their rows are
+read one at a time into the painter's row (rast__acc_row's 24-bit way,
+rast__acc_levels24), whose window has the same `+ 256`; dropped there,
+each ring's pixel is one level off the same way.  (The return side 40
+columns right of the canvas: a pixel box past the small path's 24.)"""
 
 import math
 from fractions import Fraction as F
@@ -51,11 +58,12 @@ CASES = [
 ]
 
 
-def _ring(e, rev, dx=0, dy=0):
-    """E shifted by (dx, dy) px and back along the right of the canvas."""
+def _ring(e, rev, dx=0, dy=0, back=W + 2.0):
+    """E shifted by (dx, dy) px and back along the right of the canvas (at
+    x = back)."""
     X0, Y0, X1, Y1 = e
     a, b = (X0 / 256 + dx, Y0 / 256 + dy), (X1 / 256 + dx, Y1 / 256 + dy)
-    r = [a, b, (W + 2.0, b[1]), (W + 2.0, a[1])]
+    r = [a, b, (back, b[1]), (back, a[1])]
     return r[::-1] if rev else r
 
 
@@ -77,13 +85,18 @@ def _claims(e, c, rev):
     return a
 
 
+def _off(out, want, what):
+    """out's pixels against the exact levels of want: none off."""
+    bad = [(p, int(out[p]), oc.level(a, 255)) for p, a in np.ndenumerate(want) if int(out[p]) != oc.level(a, 255)]
+    assert not bad, "%s: %d pixel(s) off (pixel, level, exact): %s" % (what, len(bad), bad[:4])
+
+
 def _check(e, c, rev, rule, dx=0, dy=0, h=H):
     shape = (h, W)
     r = _ring(e, rev, dx, dy)
     want = rule_applied(_signed(r, shape), rule)
     out = rastrum.polygon_coverage([r], shape, rule=rule, method="accumulate", dtype=np.uint8)
-    bad = [(p, int(out[p]), oc.level(a, 255)) for p, a in np.ndenumerate(want) if int(out[p]) != oc.level(a, 255)]
-    assert not bad, "%s %s: %d pixel(s) off (pixel, level, exact): %s" % (S_.lit([r]), rule, len(bad), bad[:4])
+    _off(out, want, "%s %s" % (S_.lit([r]), rule))
     return want
 
 
@@ -105,3 +118,15 @@ def test_shifted_by_whole_pixels(case, rule, dx, dy):
     row of one, the edges cut at the canvas's top."""
     e, c, rev = case
     _check(e, c, rev, rule, dx, dy, h=24)
+
+
+@pytest.mark.parametrize("rule", ["nonzero", "evenodd"])
+@pytest.mark.parametrize("case", CASES, ids=lambda k: "%s-col%d%s" % ("_".join(map(str, k[0])), k[1],
+                                                                       "-rev" if k[2] else ""))
+def test_painted_rows(case, rule):
+    e, c, rev = case
+    r = _ring(e, rev, back=W + 40.0)
+    want = rule_applied(_signed(r, (H, W)), rule)
+    canvas = rastrum.Canvas.wrap(np.zeros((H, W), np.uint8))
+    canvas.fill_polygon(np.asarray(r), 255, rule=rule, aa="accumulate")
+    _off(canvas.array, want, "%s %s painted" % (S_.lit([r]), rule))

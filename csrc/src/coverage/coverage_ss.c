@@ -77,38 +77,78 @@ static inline __m128i rast__ss_level16(__m128i n)
                         _mm_cmpgt_epi8(n, _mm_set1_epi8(8)));
 }
 
+/* 4 differences at d summed along after the running count *run (in
+ * every lane), which moves on past them, and cleared: the levels of
+ * their counts, rast__cov_level's floor((255 c + half) >> sh). */
+static inline __m128i rast__ss_sum4(int32_t *d, __m128i *run, __m128i half, __m128i sh)
+{
+    __m128i v = _mm_loadu_si128((const __m128i *)(const void *)d);
+    _mm_storeu_si128((__m128i *)(void *)d, _mm_setzero_si128());
+    v = _mm_add_epi32(v, _mm_slli_si128(v, 4));
+    v = _mm_add_epi32(v, _mm_slli_si128(v, 8));
+    v = _mm_add_epi32(v, *run);
+    *run = _mm_shuffle_epi32(v, 0xFF);
+    return _mm_srl_epi32(_mm_add_epi32(_mm_sub_epi32(_mm_slli_epi32(v, 8), v), half), sh);
+}
+
+/* The last lane of 16 bytes in every lane. */
+static inline __m128i rast__ss_last8(__m128i v)
+{
+    v = _mm_unpackhi_epi8(v, v);
+    v = _mm_shufflehi_epi16(v, 0xFF);
+    return _mm_unpackhi_epi64(v, v);
+}
+
+/* 4 int32_t at d, cleared, and-ed with m (their bytes written out in
+ * the caller, not a loop over an array, which the compiler kept in
+ * memory). */
+static inline __m128i rast__ss_take4(int32_t *d, __m128i m)
+{
+    const __m128i v = _mm_loadu_si128((const __m128i *)(const void *)d);
+    _mm_storeu_si128((__m128i *)(void *)d, _mm_setzero_si128());
+    return _mm_and_si128(v, m);
+}
+
 /* rast__ss_flush_dense's sums in SSE2, 16 columns a step from column a
  * while they are before b: the counts (running on from *count) summed
- * along 4 int32_t at a time, their uint8_t levels worked out, not looked
- * up: rast__cov_level's floor((255 c + 2^(2 kb - 1)) / 2^(2 kb)) for a
- * count c of 0 .. 2^(2 kb) samples (at most 255 x 256: no lane spills).
- * Returns the first column not done, *count the count before it. */
-static int32_t rast__ss_dense16(const int32_t *d, unsigned char *row, int32_t a, int32_t b,
+ * along, the differences cleared as they are read, their uint8_t levels
+ * worked out, not looked up: rast__cov_level's floor((255 c +
+ * 2^(2 kb - 1)) / 2^(2 kb)) for a count c of 0 .. 2^(2 kb) samples.
+ * k = 4: the differences modulo 2^8, 16 in a vector, summed along in
+ * bytes (rast__delta_sum16): every sum along the row is a pixel's count,
+ * 0 .. 16, so the sums modulo 2^8 are the counts (34 instructions a step
+ * where the int32_t sums below took 94 and a memset).  Else 4 int32_t at
+ * a time (at most 255 x 256: no lane spills).  Returns the first column
+ * not done, *count the count before it. */
+static int32_t rast__ss_dense16(int32_t *d, unsigned char *row, int32_t a, int32_t b,
                                 int32_t kb, int32_t *count)
 {
-    const __m128i half = _mm_set1_epi32(1 << (2 * kb - 1)), sh = _mm_cvtsi32_si128(2 * kb);
-    __m128i run = _mm_set1_epi32(*count), l[4];
-    int32_t i, j;
-    for (i = a; i + 16 <= b; i += 16) {
-        __m128i n;
-        for (j = 0; j < 4; j++) {
-            __m128i v = _mm_loadu_si128((const __m128i *)(const void *)(d + i + 4 * j));
-            v = _mm_add_epi32(v, _mm_slli_si128(v, 4));
-            v = _mm_add_epi32(v, _mm_slli_si128(v, 8));
-            l[j] = v = _mm_add_epi32(v, run);
-            run = _mm_shuffle_epi32(v, 0xFF);
+    int32_t i = a;
+    if (kb == 2) {
+        const __m128i low = _mm_set1_epi32(0xFF);
+        __m128i run = _mm_set1_epi8((char)*count), n;
+        for (; i + 16 <= b; i += 16) {
+            n = _mm_packus_epi16(
+                _mm_packs_epi32(rast__ss_take4(d + i, low), rast__ss_take4(d + i + 4, low)),
+                _mm_packs_epi32(rast__ss_take4(d + i + 8, low), rast__ss_take4(d + i + 12, low)));
+            n = _mm_add_epi8(rast__delta_sum16(n), run);
+            run = rast__ss_last8(n);
+            _mm_storeu_si128((__m128i *)(void *)(row + i), rast__ss_level16(n));
         }
-        if (kb == 2) { /* (the counts, 0 .. 16, as bytes) */
-            n = _mm_packus_epi16(_mm_packs_epi32(l[0], l[1]), _mm_packs_epi32(l[2], l[3]));
-            n = rast__ss_level16(n);
-        } else {
-            for (j = 0; j < 4; j++)
-                l[j] = _mm_srl_epi32(_mm_add_epi32(_mm_sub_epi32(_mm_slli_epi32(l[j], 8), l[j]), half), sh);
-            n = _mm_packus_epi16(_mm_packs_epi32(l[0], l[1]), _mm_packs_epi32(l[2], l[3]));
+        *count = _mm_cvtsi128_si32(run) & 0xFF;
+    } else {
+        const __m128i half = _mm_set1_epi32(1 << (2 * kb - 1)), sh = _mm_cvtsi32_si128(2 * kb);
+        __m128i run = _mm_set1_epi32(*count);
+        for (; i + 16 <= b; i += 16) {
+            const __m128i l0 = rast__ss_sum4(d + i, &run, half, sh),
+                          l1 = rast__ss_sum4(d + i + 4, &run, half, sh),
+                          l2 = rast__ss_sum4(d + i + 8, &run, half, sh),
+                          l3 = rast__ss_sum4(d + i + 12, &run, half, sh);
+            _mm_storeu_si128((__m128i *)(void *)(row + i),
+                             _mm_packus_epi16(_mm_packs_epi32(l0, l1), _mm_packs_epi32(l2, l3)));
         }
-        _mm_storeu_si128((__m128i *)(void *)(row + i), n);
+        *count = _mm_cvtsi128_si32(run);
     }
-    *count = _mm_cvtsi128_si32(run);
     return i;
 }
 #endif
@@ -129,11 +169,13 @@ static void rast__ss_flush_dense(rast__ss *ss, unsigned char *row, int32_t w, in
         if (a >= w) {
             /* the marks of column w (a run's end at the clip's edge) */
         } else if (ss->dense || ss->mark[k]) {
-            /* four columns a step (the counts one after the other in
-             * registers), then the differences cleared at once */
+            /* 16 columns a step (rast__ss_dense16, clearing them), then
+             * four (the counts one after the other in registers), the
+             * differences of those cleared at once */
+            int32_t z = a; /* (the differences before z cleared already) */
             i = a;
 #if RAST__SS_DELTA
-            i = rast__ss_dense16(d, row, a, b, ss->kbits, &count);
+            z = i = rast__ss_dense16(d, row, a, b, ss->kbits, &count);
 #endif
             for (; i + 4 <= b; i += 4) {
                 const int32_t c0 = count + d[i], c1 = c0 + d[i + 1], c2 = c1 + d[i + 2];
@@ -147,7 +189,7 @@ static void rast__ss_flush_dense(rast__ss *ss, unsigned char *row, int32_t w, in
                 count += d[i];
                 row[i] = (unsigned char)level[count];
             }
-            memset(d + a, 0, (size_t)(b - a) * sizeof *d);
+            if (z < b) memset(d + z, 0, (size_t)(b - z) * sizeof *d);
         } else { /* constant, but for a mark at a - 1 */
             count += d[a];
             d[a] = 0;

@@ -1853,10 +1853,12 @@ rast_status rast__cov_ss_tris(const rast_point *tris, uint32_t ntris, int32_t s,
      * more when there are many triangles) */
     band = (int32_t)(arena->left / (rast__align((size_t)K * wpr * 8) + RAST_SCRATCH_ALIGN));
     band = band < 1 ? 1 : band > RAST__SS_BAND ? RAST__SS_BAND : band;
+#if RAST__SS_BAND > 8
     {
         const size_t most = RAST__SS_BAND_BYTES / ((size_t)K * wpr * 8);
         band = most >= (size_t)band || band <= 8 ? band : most < 8 ? 8 : (int32_t)most;
     }
+#endif
     bits = (uint64_t *)rast__take(arena, (size_t)band * K * wpr * 8);
     if ((ntris && (!table || !low || !act)) || !bucket || !bits) return RAST_E_SCRATCH;
     memset(bucket, 0, ((size_t)rows + 1) * sizeof(int32_t));
@@ -1865,11 +1867,15 @@ rast_status rast__cov_ss_tris(const rast_point *tris, uint32_t ntris, int32_t s,
      * set up where their row's run goes) */
     for (k = 0; k < ntris; k++) {
         int32_t row0;
+#if RAST__SS_PREFETCH
         act[k] = -1; /* (each one's first row, relative to the clip's, kept
                         for the prefetch below; -1: it crosses no row) */
+#endif
         if (rast__ss_tri_first(&tris[3 * k], &g, fine.y0, fine.y1, &row0)) {
             bucket[row0 - fine.y0 + 1]++;
+#if RAST__SS_PREFETCH
             act[k] = row0 - fine.y0;
+#endif
             n++;
         }
     }

@@ -77,38 +77,78 @@ static inline __m128i rast__ss_level16(__m128i n)
                         _mm_cmpgt_epi8(n, _mm_set1_epi8(8)));
 }
 
+/* 4 differences at d summed along after the running count *run (in
+ * every lane), which moves on past them, and cleared: the levels of
+ * their counts, rast__cov_level's floor((255 c + half) >> sh). */
+static inline __m128i rast__ss_sum4(int32_t *d, __m128i *run, __m128i half, __m128i sh)
+{
+    __m128i v = _mm_loadu_si128((const __m128i *)(const void *)d);
+    _mm_storeu_si128((__m128i *)(void *)d, _mm_setzero_si128());
+    v = _mm_add_epi32(v, _mm_slli_si128(v, 4));
+    v = _mm_add_epi32(v, _mm_slli_si128(v, 8));
+    v = _mm_add_epi32(v, *run);
+    *run = _mm_shuffle_epi32(v, 0xFF);
+    return _mm_srl_epi32(_mm_add_epi32(_mm_sub_epi32(_mm_slli_epi32(v, 8), v), half), sh);
+}
+
+/* The last lane of 16 bytes in every lane. */
+static inline __m128i rast__ss_last8(__m128i v)
+{
+    v = _mm_unpackhi_epi8(v, v);
+    v = _mm_shufflehi_epi16(v, 0xFF);
+    return _mm_unpackhi_epi64(v, v);
+}
+
+/* 4 int32_t at d, cleared, and-ed with m (their bytes written out in
+ * the caller, not a loop over an array, which the compiler kept in
+ * memory). */
+static inline __m128i rast__ss_take4(int32_t *d, __m128i m)
+{
+    const __m128i v = _mm_loadu_si128((const __m128i *)(const void *)d);
+    _mm_storeu_si128((__m128i *)(void *)d, _mm_setzero_si128());
+    return _mm_and_si128(v, m);
+}
+
 /* rast__ss_flush_dense's sums in SSE2, 16 columns a step from column a
  * while they are before b: the counts (running on from *count) summed
- * along 4 int32_t at a time, their uint8_t levels worked out, not looked
- * up: rast__cov_level's floor((255 c + 2^(2 kb - 1)) / 2^(2 kb)) for a
- * count c of 0 .. 2^(2 kb) samples (at most 255 x 256: no lane spills).
- * Returns the first column not done, *count the count before it. */
-static int32_t rast__ss_dense16(const int32_t *d, unsigned char *row, int32_t a, int32_t b,
+ * along, the differences cleared as they are read, their uint8_t levels
+ * worked out, not looked up: rast__cov_level's floor((255 c +
+ * 2^(2 kb - 1)) / 2^(2 kb)) for a count c of 0 .. 2^(2 kb) samples.
+ * k = 4: the differences modulo 2^8, 16 in a vector, summed along in
+ * bytes (rast__delta_sum16): every sum along the row is a pixel's count,
+ * 0 .. 16, so the sums modulo 2^8 are the counts (34 instructions a step
+ * where the int32_t sums below took 94 and a memset).  Else 4 int32_t at
+ * a time (at most 255 x 256: no lane spills).  Returns the first column
+ * not done, *count the count before it. */
+static int32_t rast__ss_dense16(int32_t *d, unsigned char *row, int32_t a, int32_t b,
                                 int32_t kb, int32_t *count)
 {
-    const __m128i half = _mm_set1_epi32(1 << (2 * kb - 1)), sh = _mm_cvtsi32_si128(2 * kb);
-    __m128i run = _mm_set1_epi32(*count), l[4];
-    int32_t i, j;
-    for (i = a; i + 16 <= b; i += 16) {
-        __m128i n;
-        for (j = 0; j < 4; j++) {
-            __m128i v = _mm_loadu_si128((const __m128i *)(const void *)(d + i + 4 * j));
-            v = _mm_add_epi32(v, _mm_slli_si128(v, 4));
-            v = _mm_add_epi32(v, _mm_slli_si128(v, 8));
-            l[j] = v = _mm_add_epi32(v, run);
-            run = _mm_shuffle_epi32(v, 0xFF);
+    int32_t i = a;
+    if (kb == 2) {
+        const __m128i low = _mm_set1_epi32(0xFF);
+        __m128i run = _mm_set1_epi8((char)*count), n;
+        for (; i + 16 <= b; i += 16) {
+            n = _mm_packus_epi16(
+                _mm_packs_epi32(rast__ss_take4(d + i, low), rast__ss_take4(d + i + 4, low)),
+                _mm_packs_epi32(rast__ss_take4(d + i + 8, low), rast__ss_take4(d + i + 12, low)));
+            n = _mm_add_epi8(rast__delta_sum16(n), run);
+            run = rast__ss_last8(n);
+            _mm_storeu_si128((__m128i *)(void *)(row + i), rast__ss_level16(n));
         }
-        if (kb == 2) { /* (the counts, 0 .. 16, as bytes) */
-            n = _mm_packus_epi16(_mm_packs_epi32(l[0], l[1]), _mm_packs_epi32(l[2], l[3]));
-            n = rast__ss_level16(n);
-        } else {
-            for (j = 0; j < 4; j++)
-                l[j] = _mm_srl_epi32(_mm_add_epi32(_mm_sub_epi32(_mm_slli_epi32(l[j], 8), l[j]), half), sh);
-            n = _mm_packus_epi16(_mm_packs_epi32(l[0], l[1]), _mm_packs_epi32(l[2], l[3]));
+        *count = _mm_cvtsi128_si32(run) & 0xFF;
+    } else {
+        const __m128i half = _mm_set1_epi32(1 << (2 * kb - 1)), sh = _mm_cvtsi32_si128(2 * kb);
+        __m128i run = _mm_set1_epi32(*count);
+        for (; i + 16 <= b; i += 16) {
+            const __m128i l0 = rast__ss_sum4(d + i, &run, half, sh),
+                          l1 = rast__ss_sum4(d + i + 4, &run, half, sh),
+                          l2 = rast__ss_sum4(d + i + 8, &run, half, sh),
+                          l3 = rast__ss_sum4(d + i + 12, &run, half, sh);
+            _mm_storeu_si128((__m128i *)(void *)(row + i),
+                             _mm_packus_epi16(_mm_packs_epi32(l0, l1), _mm_packs_epi32(l2, l3)));
         }
-        _mm_storeu_si128((__m128i *)(void *)(row + i), n);
+        *count = _mm_cvtsi128_si32(run);
     }
-    *count = _mm_cvtsi128_si32(run);
     return i;
 }
 #endif
@@ -129,11 +169,13 @@ static void rast__ss_flush_dense(rast__ss *ss, unsigned char *row, int32_t w, in
         if (a >= w) {
             /* the marks of column w (a run's end at the clip's edge) */
         } else if (ss->dense || ss->mark[k]) {
-            /* four columns a step (the counts one after the other in
-             * registers), then the differences cleared at once */
+            /* 16 columns a step (rast__ss_dense16, clearing them), then
+             * four (the counts one after the other in registers), the
+             * differences of those cleared at once */
+            int32_t z = a; /* (the differences before z cleared already) */
             i = a;
 #if RAST__SS_DELTA
-            i = rast__ss_dense16(d, row, a, b, ss->kbits, &count);
+            z = i = rast__ss_dense16(d, row, a, b, ss->kbits, &count);
 #endif
             for (; i + 4 <= b; i += 4) {
                 const int32_t c0 = count + d[i], c1 = c0 + d[i + 1], c2 = c1 + d[i + 2];
@@ -147,7 +189,7 @@ static void rast__ss_flush_dense(rast__ss *ss, unsigned char *row, int32_t w, in
                 count += d[i];
                 row[i] = (unsigned char)level[count];
             }
-            memset(d + a, 0, (size_t)(b - a) * sizeof *d);
+            if (z < b) memset(d + z, 0, (size_t)(b - z) * sizeof *d);
         } else { /* constant, but for a mark at a - 1 */
             count += d[a];
             d[a] = 0;
@@ -1217,14 +1259,29 @@ static int rast__ss_cancel(rast__ss *ss, const rast_point *pts, const uint32_t *
 #define RAST__SS_BAND 1
 #define RAST__SS_DIRECT 0
 #else
-#define RAST__SS_BAND 8
+#define RAST__SS_BAND 32
 #define RAST__SS_DIRECT 1
 #endif
+/* Bands of more than 8 output rows only while their rows of bits stay
+ * within 32 KiB (a first-level cache): 32 rows of a 512-pixel canvas at
+ * k = 4 (33 KiB, 1,056 bytes a row).  A triangle's record is read and
+ * written, and its walk set up, once a band: bands of 32 rows took 4%
+ * (tri3k) and 5% (tri10k) fewer instructions than bands of 8, 11% less
+ * time on tri3k (CHANGELOG, session 16). */
+#define RAST__SS_BAND_BYTES 32768
 /* A pile's skips in a loop of their own (rast__ss_skips) and words of
  * bits told empty or full before they are counted: not in a build for
  * size (the walk's own test skips the same triangles, the count gives
  * the same values). */
 #define RAST__SS_QUICK RAST__SS_DIRECT
+/* Triangles ahead of the setup whose records' cache lines are fetched
+ * (rast__cov_ss_tris): compilers that have __builtin_prefetch, not in a
+ * build for size. */
+#if defined(__GNUC__) && !defined(__OPTIMIZE_SIZE__)
+#define RAST__SS_PREFETCH 8
+#else
+#define RAST__SS_PREFETCH 0
+#endif
 
 /* A triangle on the fine grid, what its walk reads on every output row
  * (the table of them is walked once per output row: the smaller, the
@@ -1796,6 +1853,12 @@ rast_status rast__cov_ss_tris(const rast_point *tris, uint32_t ntris, int32_t s,
      * more when there are many triangles) */
     band = (int32_t)(arena->left / (rast__align((size_t)K * wpr * 8) + RAST_SCRATCH_ALIGN));
     band = band < 1 ? 1 : band > RAST__SS_BAND ? RAST__SS_BAND : band;
+#if RAST__SS_BAND > 8
+    {
+        const size_t most = RAST__SS_BAND_BYTES / ((size_t)K * wpr * 8);
+        band = most >= (size_t)band || band <= 8 ? band : most < 8 ? 8 : (int32_t)most;
+    }
+#endif
     bits = (uint64_t *)rast__take(arena, (size_t)band * K * wpr * 8);
     if ((ntris && (!table || !low || !act)) || !bucket || !bits) return RAST_E_SCRATCH;
     memset(bucket, 0, ((size_t)rows + 1) * sizeof(int32_t));
@@ -1804,8 +1867,15 @@ rast_status rast__cov_ss_tris(const rast_point *tris, uint32_t ntris, int32_t s,
      * set up where their row's run goes) */
     for (k = 0; k < ntris; k++) {
         int32_t row0;
+#if RAST__SS_PREFETCH
+        act[k] = -1; /* (each one's first row, relative to the clip's, kept
+                        for the prefetch below; -1: it crosses no row) */
+#endif
         if (rast__ss_tri_first(&tris[3 * k], &g, fine.y0, fine.y1, &row0)) {
             bucket[row0 - fine.y0 + 1]++;
+#if RAST__SS_PREFETCH
+            act[k] = row0 - fine.y0;
+#endif
             n++;
         }
     }
@@ -1813,6 +1883,18 @@ rast_status rast__cov_ss_tris(const rast_point *tris, uint32_t ntris, int32_t s,
     for (k = 0; k < ntris; k++) {
         rast_point v[3];
         int32_t row[3];
+#if RAST__SS_PREFETCH
+        /* the records of the triangle RAST__SS_PREFETCH on, where its
+         * row's run is now (the records go by first row, all over the
+         * table: each write missed the caches, a quarter of the time of
+         * tri10k) */
+        if (k + RAST__SS_PREFETCH < ntris && act[k + RAST__SS_PREFETCH] >= 0) {
+            const int32_t at = bucket[act[k + RAST__SS_PREFETCH]];
+            __builtin_prefetch(&table[at], 1);
+            __builtin_prefetch((const unsigned char *)&table[at] + 64, 1);
+            __builtin_prefetch(&low[at], 1);
+        }
+#endif
         if (rast__ss_tri_rows(&tris[3 * k], &g, fine.y0, fine.y1, v, row)) {
             int32_t at = bucket[row[0] - fine.y0]++;
             rast__ss_tri_setup(&table[at], &low[at], v, row, &g, ss.fx0, ss.fx1);

@@ -246,10 +246,12 @@ static inline void rast__edge_start_inline(rast__edge *ed, rast_point top, rast_
                                            int32_t dir, int32_t first, int32_t end,
                                            const rast__grid *g)
 {
-    rast__dpos dx = 2 * (bottom.x - top.x), dy = 2 * (bottom.y - top.y);
+    rast__dpos dx = 2 * bottom.x - 2 * top.x, dy = 2 * bottom.y - 2 * top.y;
     int32_t step;
+    int64_t e;
 
-    ed->x = rast__edge_first_col(top, bottom, first, g, &ed->e);
+    ed->x = rast__edge_first_col(top, bottom, first, g, &e);
+    ed->e = e;
     ed->q = (int64_t)dy * g->unit;
 
     /* Whole columns per row, floor(dx / dy), and the remainder's growth. */

@@ -489,6 +489,62 @@ fail:
     return NULL;
 }
 
+/* ring_ptrs(rings, ndarray, float64): polygon_mask's list of rings as
+ * their own memory, for the glue to snap each ring straight from it
+ * (rastpy_mask_rings) instead of copying every point into one buffer
+ * first (a paragraph of text: 541 KB written and read again, ~8% of its
+ * call, issue 33).  Each item exactly of type `ndarray`, C-contiguous
+ * (m >= 1, 2) native float64 (`float64` by identity), aligned, read
+ * through its head (seq_head_ok; else None, and the caller packs):
+ * (addresses, sizes, points, rings as a tuple) -- the rings' data
+ * addresses and their sizes as bytes objects (a cffi call takes each as
+ * a char *), the total of the sizes, and a tuple holding every array
+ * for as long as the caller holds it (so that no array is freed while
+ * the call, which runs without the GIL, reads it); None otherwise. */
+static PyObject *seq_ring_ptrs(PyObject *self, PyObject *args)
+{
+    PyObject *rings, *ndarray, *f64, *ptrs = NULL, *sizes = NULL, *keep = NULL;
+    Py_ssize_t n, k, npts = 0;
+    const char **pp;
+    uint32_t *sz;
+    (void)self;
+    if (!PyArg_ParseTuple(args, "OOO", &rings, &ndarray, &f64)) return NULL;
+    if (!PyList_CheckExact(rings) || (n = PyList_Size(rings)) == 0 ||
+        (PyObject *)Py_TYPE(PyList_GetItem(rings, 0)) != ndarray)
+        Py_RETURN_NONE;
+    if (seq_head_ok < 0) seq_head_ok = seq_head_check(PyList_GetItem(rings, 0));
+    if (seq_head_ok <= 0) Py_RETURN_NONE;
+    keep = PyList_AsTuple(rings); /* (the arrays, as this call sees them) */
+    ptrs = PyBytes_FromStringAndSize(NULL, n * (Py_ssize_t)sizeof(char *));
+    sizes = PyBytes_FromStringAndSize(NULL, n * (Py_ssize_t)sizeof(uint32_t));
+    if (!keep || !ptrs || !sizes) goto fail;
+    pp = (const char **)(void *)PyBytes_AsString(ptrs);
+    sz = (uint32_t *)(void *)PyBytes_AsString(sizes);
+    for (k = 0; k < n; k++) {
+        PyObject *a = PyTuple_GetItem(keep, k);
+        const seq_array_head *h = (const seq_array_head *)(const void *)a;
+        if ((PyObject *)Py_TYPE(a) != ndarray || h->descr != f64 || h->nd != 2 || h->dimensions[1] != 2 ||
+            h->dimensions[0] < 1 || h->dimensions[0] > (Py_ssize_t)UINT32_MAX || h->strides[0] != 16 ||
+            h->strides[1] != 8 || !(h->flags & SEQ_ARRAY_ALIGNED))
+            goto none;
+        pp[k] = h->data;
+        sz[k] = (uint32_t)h->dimensions[0];
+        npts += h->dimensions[0];
+        if (npts > (Py_ssize_t)UINT32_MAX) goto none;
+    }
+    return Py_BuildValue("(NNnN)", ptrs, sizes, npts, keep);
+none:
+    Py_DECREF(keep);
+    Py_DECREF(ptrs);
+    Py_DECREF(sizes);
+    Py_RETURN_NONE;
+fail:
+    Py_XDECREF(keep);
+    Py_XDECREF(ptrs);
+    Py_XDECREF(sizes);
+    return NULL;
+}
+
 /* The calls of every small fill (fill, coverage) take their arguments as
  * a C array (METH_FASTCALL) where the running Python's stable ABI has it:
  * no tuple made, filled, unpacked and freed (~240 instructions of a
@@ -1141,6 +1197,8 @@ static PyMethodDef seq_methods[] = {
     {"rings", seq_rings, METH_VARARGS,
      "rings(rings, ndarray, (float64, int32)[, as_bytes]) -> (points, ring_sizes or None) as bytearrays "
      "(as_bytes: bytes), or None"},
+    {"ring_ptrs", seq_ring_ptrs, METH_VARARGS,
+     "ring_ptrs(rings, ndarray, float64) -> (addresses, ring_sizes as bytes, points, tuple of the rings), or None"},
     {"use_head", seq_use_head, METH_O,
      "use_head(flag) -> bool: whether arrays are read through their head (once checked) or __array_struct__"},
     {"fill_setup", seq_fill_setup, METH_VARARGS,

@@ -150,6 +150,21 @@ rast_status rastpy_check_rings(uint32_t npoints, const uint32_t *ring_sizes, uin
     return sum == npoints ? RAST_OK : RAST_E_ARG;
 }
 
+/* rastpy_snap of each ring from its own memory (ring_xy[k], ring_sizes[k]
+ * points) into out, one after the other: -1, or the index of the first
+ * bad point counted over all the rings. */
+static long rastpy_snap_rings(const double *const *ring_xy, const uint32_t *ring_sizes, uint32_t nrings,
+                              int s, int32_t *out)
+{
+    size_t at = 0;
+    uint32_t k;
+    for (k = 0; k < nrings; at += ring_sizes[k], k++) {
+        const long bad = rastpy_snap(ring_xy[k], ring_sizes[k], s, out + 2 * at);
+        if (bad >= 0) return (long)at + bad;
+    }
+    return -1;
+}
+
 /* Snap, then rast_fill_polygon (or rast_fill_polygon_opaque when
  * background is not NULL, or rast_fill_polygon_gouraud when shade is not
  * NULL) with scratch from malloc.  The fill's clip is cut to
@@ -159,11 +174,12 @@ rast_status rastpy_check_rings(uint32_t npoints, const uint32_t *ring_sizes, uin
  * its count a clip row is no more than them); an opaque fill's background outside the cut is painted
  * here (rastpy_paint_rect: byte formats, which is what the opaque path,
  * rastpy_mask_polygon's gray8, uses), after the core has accepted every
- * argument.  ring_sizes NULL means one ring of all the points.  Returns 0,
+ * argument.  ring_sizes NULL means one ring of all the points; ring_xy
+ * not NULL: ring k's points are at ring_xy[k] (xy unused).  Returns 0,
  * a negative rast_status (or RASTPY_E_NOMEM), or k + 1 when point k is bad
  * (see rastpy_snap). */
 static long rastpy_poly(const rast_target *target, const double *xy,
-                        uint32_t npoints, const uint32_t *ring_sizes,
+                        const double *const *ring_xy, uint32_t npoints, const uint32_t *ring_sizes,
                         uint32_t nrings, const rast_fill_opts *opts,
                         const void *pixel, const void *background,
                         const uint8_t *colors, const rast_shade_opts *shade,
@@ -186,7 +202,8 @@ static long rastpy_poly(const rast_target *target, const double *xy,
     pts = (size_t)npoints * sizeof(rast_point) <= half ? (int32_t *)(void *)local
                                                        : (int32_t *)malloc((size_t)npoints * sizeof(rast_point) + 1);
     if (!pts) return RASTPY_E_NOMEM;
-    bad = rastpy_snap(xy, npoints, opts->subpixel_bits, pts);
+    bad = ring_xy ? rastpy_snap_rings(ring_xy, ring_sizes, nrings, opts->subpixel_bits, pts)
+                  : rastpy_snap(xy, npoints, opts->subpixel_bits, pts);
     if (bad >= 0) {
         if (pts != (int32_t *)(void *)local) free(pts);
         return bad + 1;
@@ -263,21 +280,29 @@ long rastpy_fill_polygon(const rast_target *target, const double *xy,
                          uint32_t nrings, const rast_fill_opts *opts,
                          const void *pixel, const void *background)
 {
-    return rastpy_poly(target, xy, npoints, ring_sizes, nrings, opts, pixel, background, NULL, NULL, NULL);
+    return rastpy_poly(target, xy, NULL, npoints, ring_sizes, nrings, opts, pixel, background, NULL, NULL, NULL);
 }
 
 /* A complete gray8 (height, width) mask, 1 inside and 0 outside, written
- * in one pass over uninitialised memory. */
-long rastpy_mask_polygon(void *mask, int32_t height, int32_t width,
-                         const double *xy, uint32_t npoints,
-                         const uint32_t *ring_sizes, uint32_t nrings,
-                         const rast_fill_opts *opts)
+ * in one pass over uninitialised memory; the points at xy, or (ring_xy
+ * not NULL) ring k's at ring_xy[k]. */
+static long rastpy_mask_any(void *mask, int32_t height, int32_t width, const double *xy,
+                            const double *const *ring_xy, uint32_t npoints, const uint32_t *ring_sizes,
+                            uint32_t nrings, const rast_fill_opts *opts)
 {
     static const unsigned char one = 1, zero = 0;
     rast_target t;
     rast_status st = rast_target_init(&t, mask, width, height, width, RAST_FORMAT_GRAY8);
     if (st != RAST_OK) return st;
-    return rastpy_fill_polygon(&t, xy, npoints, ring_sizes, nrings, opts, &one, &zero);
+    return rastpy_poly(&t, xy, ring_xy, npoints, ring_sizes, nrings, opts, &one, &zero, NULL, NULL, NULL);
+}
+
+long rastpy_mask_polygon(void *mask, int32_t height, int32_t width,
+                         const double *xy, uint32_t npoints,
+                         const uint32_t *ring_sizes, uint32_t nrings,
+                         const rast_fill_opts *opts)
+{
+    return rastpy_mask_any(mask, height, width, xy, NULL, npoints, ring_sizes, nrings, opts);
 }
 
 /* rastpy_mask_polygon for one ring: the small-call path of polygon_mask
@@ -303,12 +328,25 @@ long rastpy_mask_packed(void *mask, int32_t height, int32_t width, const char *x
                                (const uint32_t *)(const void *)ring_sizes, nrings, opts);
 }
 
+/* rastpy_mask_polygon with each ring's points in its own memory, as
+ * _seq.ring_ptrs gives them: ring_xy their addresses, ring_sizes their
+ * sizes (bytes objects, as rastpy_mask_packed takes them), npoints the
+ * sizes' total; each ring snapped straight from the caller's array, with
+ * no copy of them all made first (polygon_mask's list of float64 rings). */
+long rastpy_mask_rings(void *mask, int32_t height, int32_t width, const char *ring_xy, uint32_t npoints,
+                       const char *ring_sizes, uint32_t nrings, const rast_fill_opts *opts)
+{
+    if ((uintptr_t)ring_xy % sizeof(double *) || (uintptr_t)ring_sizes % sizeof(uint32_t)) return RASTPY_E_ALIGN;
+    return rastpy_mask_any(mask, height, width, NULL, (const double *const *)(const void *)ring_xy, npoints,
+                           (const uint32_t *)(const void *)ring_sizes, nrings, opts);
+}
+
 /* rastpy_fill_polygon for one ring, no background: the small-call path of
  * Canvas.fill_polygon (fewer arguments for cffi to convert). */
 long rastpy_fill_ring(const rast_target *target, const double *xy, uint32_t npoints,
                       const rast_fill_opts *opts, const void *pixel)
 {
-    return rastpy_poly(target, xy, npoints, NULL, 1, opts, pixel, NULL, NULL, NULL, NULL);
+    return rastpy_poly(target, xy, NULL, npoints, NULL, 1, opts, pixel, NULL, NULL, NULL, NULL);
 }
 
 /* Snap the 3 * ntris vertices xy (x, y float pairs), then
@@ -382,7 +420,7 @@ long rastpy_fill_polygon_gouraud(const rast_target *target, const double *xy,
                                  const rast_blend_opts *blend)
 {
     if (!shade) return RAST_E_NULL;
-    return rastpy_poly(target, xy, npoints, ring_sizes, nrings, opts, NULL, NULL, colors, shade, blend);
+    return rastpy_poly(target, xy, NULL, npoints, ring_sizes, nrings, opts, NULL, NULL, colors, shade, blend);
 }
 
 /* For the tests: does the thread running a C call hold the GIL?  cffi

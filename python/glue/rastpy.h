@@ -17,7 +17,7 @@
 #define RASTPY_E_NOMEM (-1000)
 
 /* Packed points or ring sizes not aligned for their items
- * (rastpy_mask_packed); never a core status. */
+ * (rastpy_mask_packed, rastpy_mask_rings); never a core status. */
 #define RASTPY_E_ALIGN (-1001)
 
 /* Snap 2 * npoints float64 coordinates to the 1/2^s grid:
@@ -51,6 +51,8 @@ long rastpy_mask_ring(void *mask, int32_t height, int32_t width, const double *x
 long rastpy_mask_packed(void *mask, int32_t height, int32_t width, const char *xy,
                         uint32_t npoints, const char *ring_sizes, uint32_t nrings,
                         const rast_fill_opts *opts);
+long rastpy_mask_rings(void *mask, int32_t height, int32_t width, const char *ring_xy, uint32_t npoints,
+                       const char *ring_sizes, uint32_t nrings, const rast_fill_opts *opts);
 long rastpy_fill_ring(const rast_target *target, const double *xy, uint32_t npoints,
                       const rast_fill_opts *opts, const void *pixel);
 long rastpy_snap_points(const double *xy, size_t npoints, int s, int32_t *out);

@@ -193,16 +193,29 @@ def polygon_mask(rings: PathRings, shape: Shape, *, rule: Rule = "evenodd", algo
     # (The points and ring sizes packed as bytes, which the call takes as
     # they are: ffi.from_buffer of each, and a function to make them, were
     # ~1.5 us of a glyph's 16 us call.)
+    # C-contiguous float64 rings (a paragraph's glyphs, a map's countries)
+    # are snapped by the call straight from their arrays (_seq.ring_ptrs:
+    # their addresses, and a tuple that keeps them alive), not packed first.
     if type(rings) is list and len(rings) > 1:
         if _plain_shape(shape) is not None:
-            got = _seq_rings(rings, _ndarray, _RING_DTYPES, 1)
-            if got is not None and len(got[0]) <= _MAX_POINTS_BYTES:
-                raw, sizes = got
-                h, w = shape
-                mask = _empty(shape, _BOOL)
-                if not _mask_packed(_from_buffer(mask), h, w, raw, len(raw) >> 4, _NULL if sizes is None else sizes,
-                                    1 if sizes is None else len(sizes) >> 2, opts):
-                    return mask
+            got = _seq_ptrs(rings, _ndarray, _F64)
+            if got is not None:
+                ptrs, sizes, npts, keep = got
+                if npts <= _MAX_POINTS:
+                    h, w = shape
+                    mask = _empty(shape, _BOOL)
+                    if not _mask_rings(_from_buffer(mask), h, w, ptrs, npts, sizes, len(sizes) >> 2, opts):
+                        return mask
+            else:
+                got = _seq_rings(rings, _ndarray, _RING_DTYPES, 1)
+                if got is not None and len(got[0]) <= _MAX_POINTS_BYTES:
+                    raw, sizes = got
+                    h, w = shape
+                    mask = _empty(shape, _BOOL)
+                    if not _mask_packed(_from_buffer(mask), h, w, raw, len(raw) >> 4,
+                                        _NULL if sizes is None else sizes, 1 if sizes is None else len(sizes) >> 2,
+                                        opts):
+                        return mask
     return _core.mask_polygon(_core.shape2(shape), rings, opts, opts.subpixel_bits)
 
 
@@ -219,6 +232,7 @@ _DOUBLES = _core.ffi.typeof("double[]")
 _mask_call, _from_buffer = _lib.rastpy_mask_ring, _core.ffi.from_buffer
 _mask_packed, _NULL = _lib.rastpy_mask_packed, _core.ffi.NULL
 _seq_rings, _RING_DTYPES, _MAX_POINTS_BYTES = _core._seq.rings, _core._RING_DTYPES, _core._MAX_POINTS_BYTES
+_seq_ptrs, _mask_rings, _MAX_POINTS = _core._seq.ring_ptrs, _lib.rastpy_mask_rings, _lib.RAST_MAX_POINTS
 
 
 def __getattr__(name: str) -> Any:

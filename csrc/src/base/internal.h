@@ -207,14 +207,17 @@ static inline int32_t rast__floorshift32(int32_t a, int32_t shift)
     return (int32_t)(((uint32_t)a + bias) >> shift) - (int32_t)(bias >> shift);
 }
 
-static inline void rast__edge_start_inline(rast__edge *ed, rast_point top, rast_point bottom,
-                                           int32_t dir, int32_t first, int32_t end,
-                                           const rast__grid *g)
+/* The first column of edge top -> bottom (top.y < bottom.y) at row
+ * `first`, x = ceil(n / q) with q = dy * unit (below), and its remainder
+ * e = x q - n, 0 <= e < q, into *e: the start of rast__edge_start_inline,
+ * and all that an edge crossing one row needs (fillers/aet.c). */
+static inline int32_t rast__edge_first_col(rast_point top, rast_point bottom, int32_t first,
+                                           const rast__grid *g, int64_t *e)
 {
     /* Internal units: |coordinate| < 2^28, differences < 2^29. */
     rast__dpos xa = 2 * top.x, ya = 2 * top.y;
     rast__dpos dx = 2 * bottom.x - xa, dy = 2 * bottom.y - ya;
-    int32_t base, xr, step;
+    int32_t base, xr;
     int64_t q = (int64_t)dy * g->unit; /* < 2^46 */
     int64_t n, t, r;
 
@@ -235,9 +238,21 @@ static inline void rast__edge_start_inline(rast__edge *ed, rast_point top, rast_
      * from one floor division n = t*q + r (0 <= r < q): the ceiling is
      * t + 1 when r > 0, else t. */
     rast__floordivmod(n, q, &t, &r);
-    ed->x = (int32_t)(base + t + (r > 0));
-    ed->e = r > 0 ? q - r : 0;
-    ed->q = q;
+    *e = r > 0 ? q - r : 0;
+    return (int32_t)(base + t + (r > 0));
+}
+
+static inline void rast__edge_start_inline(rast__edge *ed, rast_point top, rast_point bottom,
+                                           int32_t dir, int32_t first, int32_t end,
+                                           const rast__grid *g)
+{
+    rast__dpos dx = 2 * bottom.x - 2 * top.x, dy = 2 * bottom.y - 2 * top.y;
+    int32_t step;
+    int64_t e;
+
+    ed->x = rast__edge_first_col(top, bottom, first, g, &e);
+    ed->e = e;
+    ed->q = (int64_t)dy * g->unit;
 
     /* Whole columns per row, floor(dx / dy), and the remainder's growth. */
     step = dx / dy;

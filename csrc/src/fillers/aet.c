@@ -476,11 +476,44 @@ static int rast__aet_delta(size_t room, const rast__grid *g, rast_fill_rule rule
     return 1;
 }
 
+/* The column that counts a crossing at a vertex's abscissa, internal
+ * X = 2 x (rast__cross_col(X, 1, g), by shifts: |X - off| < 2^29 and the
+ * unit at most 2^17). */
+static inline int32_t rast__vertex_col(int32_t x, const rast__grid *g)
+{
+    const int32_t a = 2 * x - g->off;
+    return g->textbook ? rast__floorshift32(a + g->unit / 2, g->shift) : -rast__floorshift32(-a, g->shift);
+}
+
+/* An edge's crossings of rows [a, b), all at counter column c (cut to
+ * [0, bits]), added in: rows below mid in the mask (in, rows of bits),
+ * the rest in buf (rows of stride from mid); `inplace` as
+ * rast__delta_now_walk's. */
+static inline void rast__delta_col(unsigned char *in, unsigned char *buf, int32_t row0, int32_t mid,
+                                   int32_t a, int32_t b, int32_t bits, int32_t stride, int32_t c,
+                                   unsigned char dir, const int inplace)
+{
+    unsigned char *p;
+    c = c < 0 ? 0 : c;
+    c = c > bits ? bits : c;
+    if (inplace) {
+        const int32_t m = b < mid ? b : mid;
+        for (p = in + (ptrdiff_t)(a - row0) * bits + c; a < m; a++, p += bits) *p = (unsigned char)(*p + dir);
+    }
+    for (p = buf + (ptrdiff_t)(a - mid) * stride + c; a < b; a++, p += stride) *p = (unsigned char)(*p + dir);
+}
+
 /* rast__aet_delta_now's walk of every edge as it is set up, into the
  * counters: rows [row0, mid) in the mask itself (in, rows of d->bits),
  * [mid, row1) in buf (rows of d->stride); `inplace` a constant (0: in
  * NULL, mid = row0), so that each caller gets its own loop (one with both
- * cost the other ~8% more instructions on a paragraph of text). */
+ * cost the other ~8% more instructions on a paragraph of text).
+ * An edge whose two ends count at one column crosses every row there
+ * (the column is monotone in the abscissa, and every crossing lies
+ * between the ends'): no DDA and no division (10,166 of a paragraph's
+ * 18,060 edges that cross a row, 2,332 of a map's 8,343); one that
+ * crosses a single row needs only its first column (one division, not
+ * the DDA's two: 6,636 more of the paragraph's). */
 RAST__HOT void rast__delta_now_walk(const rast_polygon *poly, const rast__grid *g, const rast__delta_cols *dc,
                                     int32_t row0, int32_t row1, int32_t mid, unsigned char *buf,
                                     unsigned char *in, int32_t *starts, const int inplace)
@@ -498,28 +531,46 @@ RAST__HOT void rast__delta_now_walk(const rast_polygon *poly, const rast__grid *
         if (stop == base) continue;
         ra = r0 = (int32_t)rast__row_at_or_after(2 * (int64_t)pts[base].y, &gl);
         for (ia = base, ib = base + 1; ia < stop; ia++, ib++, ra = rb) {
-            rast__edge ed;
+            int32_t first, end, c;
+            unsigned char dir;
             if (ib == stop) {
                 ib = base;
                 rb = r0;
             } else {
                 rb = (int32_t)rast__row_at_or_after(2 * (int64_t)pts[ib].y, &gl);
             }
-            if (ra == rb ||
-                !rast__aet_edge_rows(&ed, &pts[ia], &pts[ib], ra, rb, &gl, row0, row1))
-                continue;
+            if (ra == rb) continue;
+            first = ra < rb ? ra : rb;
+            end = ra ^ rb ^ first;
+            first = first < row0 ? row0 : first;
+            end = end > row1 ? row1 : end;
+            if (first >= end) continue;
             if (starts) {
-                starts[ed.row - row0]++;
-                starts[ed.end - row0]--;
+                starts[first - row0]++;
+                starts[end - row0]--;
             }
-            if (!inplace) {
-                rast__delta_walk(&ed, buf, row0, row1, d.stride, d.col0, d.bits,
-                                 (unsigned char)(d.mask == 1 ? 1 : ed.dir), 1, 1);
-            } else {
-                rast__delta_walk(&ed, in, row0, mid, d.bits, d.col0, d.bits,
-                                 (unsigned char)(d.mask == 1 ? 1 : ed.dir), 1, 1);
-                if (ed.end > mid) rast__delta_walk_last(&ed, buf, &d);
+            dir = (unsigned char)(d.mask == 1 || ra < rb ? 1 : 0xFF);
+            c = rast__vertex_col(pts[ia].x, &gl);
+            if (c != rast__vertex_col(pts[ib].x, &gl)) {
+                /* (the ends ordered as rast__aet_edge_rows orders them) */
+                const ptrdiff_t swap = ((ptrdiff_t)ib - (ptrdiff_t)ia) & -(ptrdiff_t)(ra > rb);
+                const rast_point *top = &pts[ia] + swap, *bottom = &pts[ib] - swap;
+                if (end - first == 1) {
+                    int64_t e;
+                    c = rast__edge_first_col(*top, *bottom, first, &gl, &e);
+                } else {
+                    rast__edge ed;
+                    rast__edge_start_inline(&ed, *top, *bottom, ra < rb ? 1 : -1, first, end, &gl);
+                    if (!inplace) {
+                        rast__delta_walk(&ed, buf, row0, row1, d.stride, d.col0, d.bits, dir, 1, 1);
+                    } else {
+                        rast__delta_walk(&ed, in, row0, mid, d.bits, d.col0, d.bits, dir, 1, 1);
+                        if (ed.end > mid) rast__delta_walk_last(&ed, buf, &d);
+                    }
+                    continue;
+                }
             }
+            rast__delta_col(in, buf, row0, mid, first, end, d.bits, d.stride, c - d.col0, dir, inplace);
         }
     }
 }

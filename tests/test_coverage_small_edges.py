@@ -164,6 +164,15 @@ def _star(n, k, cx, cy, r, turn):
     return [(round((cx + r * math.cos(v)) * 256) / 256, round((cy + r * math.sin(v)) * 256) / 256) for v in t]
 
 
+def _paint_all(ring, seed, plain):
+    """_paint of ring with both rules, every method and format, against the
+    oracle's levels (plain: as _levels takes it)."""
+    for rule in ("nonzero", "evenodd"):
+        for method in METHODS:
+            for fmt in FORMATS:
+                _paint(ring, rule, method, fmt, seed, _levels(ring, rule, method, plain))
+
+
 # rings every vertex of which turns the same way but which wind twice, or
 # whose dx flips sign only twice but which cross themselves
 NOT_CONVEX = {
@@ -176,11 +185,7 @@ NOT_CONVEX = {
 
 @pytest.mark.parametrize("name", sorted(NOT_CONVEX))
 def test_not_convex_goes_to_the_engines(name):
-    ring = NOT_CONVEX[name]
-    for rule in ("nonzero", "evenodd"):
-        for method in METHODS:
-            for fmt in FORMATS:
-                _paint(ring, rule, method, fmt, 2, _levels(ring, rule, method, False))
+    _paint_all(NOT_CONVEX[name], 2, False)
 
 
 @pytest.mark.parametrize("n", [15, 16, 17, 18, 20, 24])
@@ -217,8 +222,4 @@ BOXES = {
 
 @pytest.mark.parametrize("name", sorted(BOXES))
 def test_box_bounds_and_clip(name):
-    ring = BOXES[name]
-    for rule in ("nonzero", "evenodd"):
-        for method in METHODS:
-            for fmt in FORMATS:
-                _paint(ring, rule, method, fmt, 3, _levels(ring, rule, method, True))
+    _paint_all(BOXES[name], 3, True)

@@ -978,17 +978,21 @@ static void test_spans(void)
  * pixels across. */
 #define WS 30
 #define HS 24
-typedef struct small_img {
-    uint8_t img[HS][WS];
-    rast_rect clip;
-    int32_t y, x1, ok;
-} small_img;
+/* An image of ROWS x COLS levels with its clip and run state, and the
+ * spans callback TAKE that fills it through take_run. */
+#define RUN_IMG(T, ROWS, COLS, TAKE)                                                         \
+    typedef struct T {                                                                     \
+        uint8_t img[ROWS][COLS];                                                           \
+        rast_rect clip;                                                                    \
+        int32_t y, x1, ok;                                                                 \
+    } T;                                                                                   \
+    static void TAKE(void *user, int32_t y, int32_t x0, int32_t x1, const uint8_t *v)      \
+    {                                                                                      \
+        T *s = (T *)user;                                                                  \
+        take_run(&s->img[0][0], COLS, &s->clip, &s->y, &s->x1, &s->ok, y, x0, x1, v);      \
+    }
 
-static void take_small(void *user, int32_t y, int32_t x0, int32_t x1, const uint8_t *v)
-{
-    small_img *s = (small_img *)user;
-    take_run(&s->img[0][0], WS, &s->clip, &s->y, &s->x1, &s->ok, y, x0, x1, v);
-}
+RUN_IMG(small_img, HS, WS, take_small)
 
 static void test_spans_small(void)
 {
@@ -1109,18 +1113,8 @@ static void test_scratch_content(void)
  * scratch held before (filled four ways). */
 #define WL 16
 #define HL 120
-typedef struct long_img {
-    uint8_t img[HL][WL];
-    rast_rect clip;
-    int32_t y, x1, ok;
-} long_img;
-
 /* take_span's, for the long edges' clip (WL x HL) */
-static void take_long_span(void *user, int32_t y, int32_t x0, int32_t x1, const uint8_t *v)
-{
-    long_img *s = (long_img *)user;
-    take_run(&s->img[0][0], WL, &s->clip, &s->y, &s->x1, &s->ok, y, x0, x1, v);
-}
+RUN_IMG(long_img, HL, WL, take_long_span)
 
 static void test_long_edges(void)
 {

@@ -45,6 +45,7 @@ typedef struct rast__ss {
     int32_t clip;          /* 0: every crossing within the clip's columns */
     int32_t dense;         /* 1: uint8_t rows, all summed, no marks (rast__ss_dense);
                               -1: to be told by rast__ss_sweep from the records */
+    int32_t bytes;         /* 1: d[] holds a byte a fine column (rast__ss_flush_bytes) */
 } rast__ss;
 
 /* Pixels [k0, k1) of a clip row get value v. */
@@ -202,6 +203,94 @@ static void rast__ss_flush_dense(rast__ss *ss, unsigned char *row, int32_t w, in
     d[w] = 0;
 }
 
+#if RAST__SS_DELTA
+/* Four pixels' bytes D0 .. D3 (a 32-bit lane each, rast__ss_flush_bytes):
+ * their sum T (the change of S over the pixel: the lane's top byte once
+ * summed along it) returned in the lane, and U = 4 D0 + 3 D1 + 2 D2 + D3
+ * (the pixel's count less 4 S before it: the sum of the sums along the
+ * lane) into *u, each modulo 2^8 in the lane's low byte. */
+static inline __m128i rast__ss_tu(__m128i v, __m128i *u)
+{
+    __m128i t;
+    v = _mm_add_epi8(v, _mm_slli_epi32(v, 8));
+    v = _mm_add_epi8(v, _mm_slli_epi32(v, 16));
+    t = _mm_add_epi8(v, _mm_srli_epi32(v, 16));
+    *u = _mm_and_si128(_mm_add_epi8(t, _mm_srli_epi32(t, 8)), _mm_set1_epi32(0xFF));
+    return _mm_srli_epi32(v, 24);
+}
+
+/* k = 4, uint8_t rows, many runs' ends (rast__ss_sweep_rows): the output
+ * row from d[] read as bytes D, one a fine column (4 w + 1 of them: the
+ * clip's columns and its right edge), each counting the runs that start
+ * there less those that end there, on all 4 fine rows (modulo 2^8: a
+ * run's end is one byte's addition, where d[]'s two differences and a
+ * mark were 8 instructions).  Their running sum S (0 .. 4: the fine rows
+ * on which the column is inside), summed over a pixel's 4 columns, is
+ * its count of samples (0 .. 16): 4 S before the pixel plus its U
+ * (rast__ss_tu), 16 pixels a step, the S after each the running sum of
+ * their T; the level rast__ss_level16's.  16 pixels with no end take the
+ * running sum's count, 4 S; the bytes are cleared as they are read; the
+ * last pixels of a row (fewer than 16) a column at a time.  (Summing
+ * every column along the row took 40% more; bytes A and F a pixel, its
+ * ends' count and their columns' sum, summed in half the instructions
+ * but cost two more bytes' additions and a column's split an end: more
+ * in all on the star.) */
+static void rast__ss_flush_bytes(rast__ss *ss)
+{
+    const rast__cov_out *o = ss->o;
+    const int32_t y = o->clip.y0 + ss->row, w = o->clip.x1 - o->clip.x0, n = 4 * w;
+    const __m128i zero = _mm_setzero_si128();
+    unsigned char *row = rast__cov_row(o, y), *c = (unsigned char *)(void *)ss->d;
+    __m128i run = zero; /* S before the pixel, in every byte */
+    unsigned char sum;
+    int32_t i, p;
+    for (i = 0; i + 64 <= n; i += 64) {
+        __m128i *q = (__m128i *)(void *)(c + i);
+        __m128i v0 = _mm_loadu_si128(q), v1 = _mm_loadu_si128(q + 1), v2 = _mm_loadu_si128(q + 2),
+                v3 = _mm_loadu_si128(q + 3), u0, u1, u2, u3, t, s;
+        t = _mm_or_si128(_mm_or_si128(v0, v1), _mm_or_si128(v2, v3));
+        if (_mm_movemask_epi8(_mm_cmpeq_epi8(t, zero)) == 0xFFFF) {
+            /* (S <= 4: 4 S fits its byte, no bit shifted into the next) */
+            _mm_storeu_si128((__m128i *)(void *)(row + i / 4),
+                             rast__ss_level16(_mm_slli_epi16(run, 2)));
+            continue;
+        }
+        _mm_storeu_si128(q, zero);
+        _mm_storeu_si128(q + 1, zero);
+        _mm_storeu_si128(q + 2, zero);
+        _mm_storeu_si128(q + 3, zero);
+        v0 = rast__ss_tu(v0, &u0);
+        v1 = rast__ss_tu(v1, &u1);
+        v2 = rast__ss_tu(v2, &u2);
+        v3 = rast__ss_tu(v3, &u3);
+        /* (T and U 0 .. 255 in 32-bit lanes: packed as they are) */
+        t = _mm_packus_epi16(_mm_packs_epi32(v0, v1), _mm_packs_epi32(v2, v3));
+        s = _mm_add_epi8(rast__delta_sum16(t), run); /* S after each pixel */
+        run = rast__ss_last8(s);
+        /* the count 4 (S after - T) + U, each byte's true value 0 .. 16 */
+        t = _mm_sub_epi8(s, t);
+        t = _mm_add_epi8(t, t);
+        t = _mm_add_epi8(_mm_add_epi8(t, t),
+                         _mm_packus_epi16(_mm_packs_epi32(u0, u1), _mm_packs_epi32(u2, u3)));
+        _mm_storeu_si128((__m128i *)(void *)(row + i / 4), rast__ss_level16(t));
+    }
+    /* the last pixels (fewer than 16), a column at a time */
+    sum = (unsigned char)_mm_cvtsi128_si32(run);
+    for (p = i / 4; p < w; p++) {
+        int32_t count = 0, u;
+        for (u = 0; u < 4; u++) {
+            sum = (unsigned char)(sum + c[4 * p + u]);
+            c[4 * p + u] = 0;
+            count += sum;
+        }
+        row[p] = (unsigned char)ss->level[count];
+    }
+    c[n] = 0; /* (the clip's right edge: no pixel's) */
+    ss->next = ss->row + 1;
+    rast__cov_row_done(o, y);
+}
+#endif
+
 static void rast__ss_flush(rast__ss *ss)
 {
     const rast__cov_out *o = ss->o;
@@ -211,6 +300,12 @@ static void rast__ss_flush(rast__ss *ss)
     unsigned char *row = rast__cov_row(o, y);
     int32_t *d = ss->d;
     int32_t w = o->clip.x1 - o->clip.x0, words = w / 64 + 1, k, at = 0, count = 0;
+#if RAST__SS_DELTA
+    if (ss->bytes) {
+        rast__ss_flush_bytes(ss);
+        return;
+    }
+#endif
     if (f == RAST_COVERAGE_U8 && (ss->dense || (int64_t)ss->ends * 8 >= w)) {
         rast__ss_flush_dense(ss, row, w, words);
         ss->ends = 0;
@@ -333,6 +428,7 @@ RAST__HOT int rast__ss_eo(rast__edge *aet, int32_t n, int32_t *d, uint64_t *mark
     return swapped;
 }
 
+#if defined(__OPTIMIZE_SIZE__)
 /* Fine row y's runs, from its active edges in order, and the edges
  * stepped to the next row, in one pass (the walk's order hook, given no
  * run function): even-odd, runs between edges 2k and 2k + 1; non-zero,
@@ -340,8 +436,8 @@ RAST__HOT int rast__ss_eo(rast__edge *aet, int32_t n, int32_t *d, uint64_t *mark
  * row's numbers are held in locals.  Clamping each end to the clip clamps
  * the run; it is skipped when every crossing of the polygon is known to
  * lie within the clip's columns (rast__ss_inside), as it mostly does.
- * (Each case its own loop, its tests taken out of it, but in a build for
- * size.) */
+ * (A build for size; one for speed walks an output row's fine rows in
+ * one pass, rast__ss_sweep_rows.) */
 static void rast__ss_row_ends(void *user, int32_t y, rast__edge *aet, int32_t n)
 {
     rast__ss *ss = (rast__ss *)user;
@@ -351,27 +447,15 @@ static void rast__ss_row_ends(void *user, int32_t y, rast__edge *aet, int32_t n)
     int swapped;
     rast__ss_row(ss, y - ss->fy0);
     ss->ends += n;
-#if defined(__OPTIMIZE_SIZE__)
     swapped = ss->evenodd ? rast__ss_eo(aet, n, d, mark, kb, fx0, fx1, clip)
                           : rast__ss_nz(aet, n, d, mark, kb, fx0, fx1, clip);
-#else
-    if (ss->evenodd)
-        swapped = clip ? rast__ss_eo(aet, n, d, mark, kb, fx0, fx1, 1)
-                       : rast__ss_eo(aet, n, d, mark, kb, fx0, fx1, 0);
-    else if (!clip) /* (the commonest case) */
-        swapped = mark ? rast__ss_nz(aet, n, d, mark, kb, fx0, fx1, 0)
-                       : rast__ss_nz(aet, n, d, NULL, kb, fx0, fx1, 0);
-    else
-        swapped = mark ? rast__ss_nz(aet, n, d, mark, kb, fx0, fx1, 1)
-                       : rast__ss_nz(aet, n, d, NULL, kb, fx0, fx1, 1);
-#endif
     if (swapped) rast__aet_sort(aet, n);
 }
 
 /* The walk of the edge table aet[0 .. nedges) (rast__aet_prepare's, or
  * rast__ss_cancel's; bucket[] its rows' counts, edges[] the room for
  * the table grouped by row): aet.h's rast__aet_sweep, the order hook
- * rast__ss_row_ends. */
+ * rast__ss_row_ends (a build for speed: rast__ss_sweep_rows, below). */
 static void rast__ss_sweep_records(rast__ss *ss, rast__edge *edges, rast__edge *aet,
                                    int32_t *bucket, int32_t nedges, int32_t row0, int32_t row1)
 {
@@ -379,6 +463,403 @@ static void rast__ss_sweep_records(rast__ss *ss, rast__edge *edges, rast__edge *
                     ss->evenodd ? RAST_RULE_EVENODD : RAST_RULE_NONZERO, NULL, rast__ss_row_ends,
                     ss);
 }
+#else
+/* ---- an output row's fine rows in one pass over the AET -------------------
+ * Long edges (a star's, a circle's): where no edge joins or ends within
+ * some fine rows of an output row (a segment: all K of them, at most 4,
+ * on most rows), one pass over the AET takes each edge through them all,
+ * its DDA in registers, and counts its runs' ends on each of them into
+ * the output row's counters (the same whichever fine row an end is on),
+ * where a pass a fine row loaded and stored every edge's DDA K times and
+ * paid a call and a row's set-up each time.  The runs are the rule's on a
+ * fine row (docs/semantics.md, docs/coverage.md) when the AET is in order
+ * of column on it: the pass checks that on each fine row; where it is not
+ * (two edges crossed, or met where a tie put them the other way), the
+ * pass is undone (the edges stepped back, the same ends counted with the
+ * opposite sign) and the segment's fine rows are walked one at a time,
+ * the AET sorted before each (then in order).  A build for size keeps the
+ * walk a fine row at a time (aet.h's rast__aet_sweep, rast__ss_row_ends). */
+#define RAST__SS_SEG 4 /* fine rows at most in a segment */
+/* Rows looked ahead to order two edges of one column joining the AET */
+#define RAST__SS_AHEAD 16
+
+/* Edge *ed stepped back one row: rast__edge_step undone (its remainder
+ * wrapped iff e + dr >= q). */
+static inline void rast__ss_unstep(rast__edge *ed)
+{
+    const int64_t e = ed->e + ed->dr, carry = e >= ed->q;
+    ed->x -= ed->step + (int32_t)carry;
+    ed->e = e - (ed->q & -carry);
+}
+
+/* A run's end at clip-relative fine column x (0 .. w) counted with sign
+ * sg (+1 a run's start, -1 its end): into byte x of `bytes` when `into`
+ * (rast__ss_flush_bytes), else as rast__ss_pair counts each, marked
+ * unless `mark` is NULL. */
+static inline void rast__ss_end(int32_t *d, uint64_t *mark, unsigned char *bytes, int into,
+                                int32_t kb, int32_t x, int32_t sg)
+{
+    const uint32_t K = (uint32_t)1 << kb, c = (uint32_t)x >> kb, f = (uint32_t)x & (K - 1);
+    if (into) {
+        bytes[(uint32_t)x] = (unsigned char)(bytes[(uint32_t)x] + sg);
+        return;
+    }
+    d[c] += sg * (int32_t)(K - f);
+    d[c + 1] += sg * (int32_t)f;
+    if (mark) mark[c >> 6] |= (uint64_t)1 << (c & 63);
+}
+
+/* Fine row t of an edge's DDA in locals (x, e; dr, q, step): its
+ * crossing into xs[t], then stepped (rast__edge_step). */
+#define RAST__SS_STEP(t)                                                                          \
+    do {                                                                                          \
+        const int64_t v_ = e - dr, c_ = v_ < 0;                                                  \
+        xs[t] = x;                                                                                \
+        x += step + (int32_t)c_;                                                                  \
+        e = v_ + (q & -c_);                                                                       \
+    } while (0)
+
+/* Edge *ed's crossings of nr fine rows (nr <= RAST__SS_SEG) into xs[],
+ * relative to fx0, the edge stepped past them (its DDA in locals; four
+ * rows written out, which a compiler at -O2 does not unroll). */
+RAST__HOT void rast__ss_rows(rast__edge *ed, int32_t nr, int32_t *xs, int32_t fx0)
+{
+    const int64_t dr = ed->dr, q = ed->q;
+    const int32_t step = ed->step;
+    int64_t e = ed->e;
+    int32_t x = ed->x - fx0, t;
+    if (nr == 4) {
+        RAST__SS_STEP(0);
+        RAST__SS_STEP(1);
+        RAST__SS_STEP(2);
+        RAST__SS_STEP(3);
+    } else if (nr == 3) {
+        RAST__SS_STEP(0);
+        RAST__SS_STEP(1);
+        RAST__SS_STEP(2);
+    } else if (nr == 2) {
+        RAST__SS_STEP(0);
+        RAST__SS_STEP(1);
+    } else if (nr == 1) {
+        RAST__SS_STEP(0);
+    } else {
+        for (t = 0; t < nr; t++) RAST__SS_STEP(t);
+    }
+    ed->x = x + fx0;
+    ed->e = e;
+}
+
+/* Clip-relative fine column x clamped to the clip's columns [0, w] with
+ * `clamp` (rast__ss_at). */
+static inline int32_t rast__ss_in(int32_t x, int32_t w, int clamp)
+{
+    return clamp ? (x < 0 ? 0 : x > w ? w : x) : x;
+}
+
+/* Row t of a pair of edges of opposite directions (or an even-odd pair),
+ * crossings a[t] and b[t]: the run between them, [min, max) whichever
+ * edge is left (their order within the pair changes no sample), counted
+ * with sign sg; `bad` set (or, within the clip, every crossing in [0, w],
+ * `neg` made negative) when it starts left of last[t], the end of the run
+ * before it on its row, which its end then becomes. */
+#define RAST__SS_PAIR(t)                                                                          \
+    do {                                                                                          \
+        const int32_t lo_ = a[t] < b[t] ? a[t] : b[t], hi_ = a[t] < b[t] ? b[t] : a[t];          \
+        if (clamp)                                                                                \
+            bad |= lo_ < last[t];                                                                 \
+        else                                                                                      \
+            neg |= lo_ - last[t];                                                                 \
+        last[t] = hi_;                                                                            \
+        rast__ss_end(d, mark, bytes, into, kb, rast__ss_in(lo_, w, clamp), sg);                         \
+        rast__ss_end(d, mark, bytes, into, kb, rast__ss_in(hi_, w, clamp), -sg);                        \
+    } while (0)
+
+/* The edges aet[0 .. n) after a segment's pairs (rast__ss_multi): edge
+ * by edge, the winding number counted from 0 (the same edges bound the
+ * runs on every row, in the same order), each crossing checked against
+ * last[t], the one before it on its row (even-odd: an odd edge out, no
+ * run); 1 when one is out of order.  Apart: rare (rings that overlap,
+ * a run over more than two edges), and its loops over the rows would
+ * keep the pairs' numbers in memory. */
+RAST__APART int rast__ss_rest(rast__edge *aet, int32_t n, int32_t nr, int32_t *d, uint64_t *mark,
+                              unsigned char *bytes, int into, int32_t kb, int32_t fx0, int32_t fx1,
+                              int clamp, int evenodd, int32_t sg, int32_t *last)
+{
+    int32_t b[RAST__SS_SEG], x0[RAST__SS_SEG] = {0, 0, 0, 0};
+    const int32_t w = fx1 - fx0;
+    int32_t i, wind = 0, t;
+    int bad = 0;
+    for (i = 0; i < n; i++) {
+        rast__ss_rows(&aet[i], nr, b, fx0);
+        for (t = 0; t < nr; t++) {
+            bad |= b[t] < last[t];
+            last[t] = b[t];
+        }
+        if (evenodd) continue;
+        if (wind == 0)
+            for (t = 0; t < nr; t++) x0[t] = b[t];
+        wind += aet[i].dir;
+        if (wind == 0)
+            for (t = 0; t < nr; t++) {
+                rast__ss_end(d, mark, bytes, into, kb, rast__ss_in(x0[t], w, clamp), sg);
+                rast__ss_end(d, mark, bytes, into, kb, rast__ss_in(b[t], w, clamp), -sg);
+            }
+    }
+    return bad;
+}
+
+/* The runs of nr fine rows (a segment) of the n edges aet[] counted with
+ * sign sg, every edge stepped past them: on each row the rule's runs
+ * (rast__ss_nz's, rast__ss_eo's) as if the AET were in order of column
+ * there, but for the order within a pair; 1 when it was not on one of
+ * the rows (the counts then wrong).  Pairs of opposite directions (all
+ * pairs, even-odd) while they come, then rast__ss_rest. */
+RAST__HOT int rast__ss_multi(rast__edge *aet, int32_t n, int32_t nr, int32_t *d, uint64_t *mark,
+                             unsigned char *bytes, int into, int32_t kb, int32_t fx0, int32_t fx1, int clamp,
+                             int evenodd, int32_t sg)
+{
+    int32_t last[RAST__SS_SEG], a[RAST__SS_SEG], b[RAST__SS_SEG];
+    const int32_t w = fx1 - fx0;
+    int32_t i = 0, t, neg = 0;
+    int bad = 0;
+    last[0] = last[1] = last[2] = last[3] = clamp ? INT32_MIN : 0;
+    for (; i + 1 < n && (evenodd || aet[i].dir + aet[i + 1].dir == 0); i += 2) {
+        rast__ss_rows(&aet[i], nr, a, fx0);
+        rast__ss_rows(&aet[i + 1], nr, b, fx0);
+        if (nr == 4) {
+            RAST__SS_PAIR(0);
+            RAST__SS_PAIR(1);
+            RAST__SS_PAIR(2);
+            RAST__SS_PAIR(3);
+        } else if (nr == 3) {
+            RAST__SS_PAIR(0);
+            RAST__SS_PAIR(1);
+            RAST__SS_PAIR(2);
+        } else if (nr == 2) {
+            RAST__SS_PAIR(0);
+            RAST__SS_PAIR(1);
+        } else if (nr == 1) {
+            RAST__SS_PAIR(0);
+        } else {
+            for (t = 0; t < nr; t++) RAST__SS_PAIR(t);
+        }
+    }
+    if (i < n) { /* (a copy of last[]: its own stays in registers) */
+        int32_t l[RAST__SS_SEG];
+        l[0] = last[0];
+        l[1] = last[1];
+        l[2] = last[2];
+        l[3] = last[3];
+        bad |= rast__ss_rest(aet + i, n - i, nr, d, mark, bytes, into, kb, fx0, fx1, clamp, evenodd,
+                             sg, l);
+    }
+    return bad | (neg < 0);
+}
+
+/* The copies of the pass (apart: each compiled with its constants, its
+ * numbers in registers), k = 4, non-zero, within the clip: its ends
+ * into bytes, four rows or any; into d[] with marks, four rows. */
+RAST__APART int rast__ss_multi_b4(rast__edge *aet, int32_t n, unsigned char *bytes, int32_t fx0,
+                                  int32_t fx1)
+{
+    return rast__ss_multi(aet, n, RAST__SS_SEG, NULL, NULL, bytes, 1, 2, fx0, fx1, 0, 0, 1);
+}
+
+RAST__APART int rast__ss_multi_b3(rast__edge *aet, int32_t n, unsigned char *bytes, int32_t fx0,
+                                  int32_t fx1)
+{
+    return rast__ss_multi(aet, n, 3, NULL, NULL, bytes, 1, 2, fx0, fx1, 0, 0, 1);
+}
+
+RAST__APART int rast__ss_multi_b2(rast__edge *aet, int32_t n, unsigned char *bytes, int32_t fx0,
+                                  int32_t fx1)
+{
+    return rast__ss_multi(aet, n, 2, NULL, NULL, bytes, 1, 2, fx0, fx1, 0, 0, 1);
+}
+
+RAST__APART int rast__ss_multi_b1(rast__edge *aet, int32_t n, unsigned char *bytes, int32_t fx0,
+                                  int32_t fx1)
+{
+    return rast__ss_multi(aet, n, 1, NULL, NULL, bytes, 1, 2, fx0, fx1, 0, 0, 1);
+}
+
+RAST__APART int rast__ss_multi_m4(rast__edge *aet, int32_t n, int32_t *d, uint64_t *mark,
+                                  int32_t fx0, int32_t fx1)
+{
+    return rast__ss_multi(aet, n, 4, d, mark, NULL, 0, 2, fx0, fx1, 0, 0, 1);
+}
+
+RAST__APART int rast__ss_multi_m3(rast__edge *aet, int32_t n, int32_t *d, uint64_t *mark,
+                                  int32_t fx0, int32_t fx1)
+{
+    return rast__ss_multi(aet, n, 3, d, mark, NULL, 0, 2, fx0, fx1, 0, 0, 1);
+}
+
+RAST__APART int rast__ss_multi_m2(rast__edge *aet, int32_t n, int32_t *d, uint64_t *mark,
+                                  int32_t fx0, int32_t fx1)
+{
+    return rast__ss_multi(aet, n, 2, d, mark, NULL, 0, 2, fx0, fx1, 0, 0, 1);
+}
+
+RAST__APART int rast__ss_multi_m1(rast__edge *aet, int32_t n, int32_t *d, uint64_t *mark,
+                                  int32_t fx0, int32_t fx1)
+{
+    return rast__ss_multi(aet, n, 1, d, mark, NULL, 0, 2, fx0, fx1, 0, 0, 1);
+}
+
+/* A segment's pass (its ends into bytes when ss->bytes, else into d[]
+ * with `mark`), with the rule, the clamp, the marks and the rows as
+ * constants in the commonest cases' copies. */
+static int rast__ss_segment(const rast__ss *ss, rast__edge *aet, int32_t n, int32_t nr,
+                            uint64_t *mark)
+{
+    const int32_t kb = ss->kbits, fx0 = ss->fx0, fx1 = ss->fx1;
+    int32_t *d = ss->d;
+    unsigned char *bytes = ss->bytes ? (unsigned char *)(void *)d : NULL;
+    if (kb == 2 && !ss->clip && !ss->evenodd) {
+        if (bytes)
+            return nr == 4   ? rast__ss_multi_b4(aet, n, bytes, fx0, fx1)
+                   : nr == 3 ? rast__ss_multi_b3(aet, n, bytes, fx0, fx1)
+                   : nr == 2 ? rast__ss_multi_b2(aet, n, bytes, fx0, fx1)
+                             : rast__ss_multi_b1(aet, n, bytes, fx0, fx1);
+        if (mark)
+            return nr == 4   ? rast__ss_multi_m4(aet, n, d, mark, fx0, fx1)
+                   : nr == 3 ? rast__ss_multi_m3(aet, n, d, mark, fx0, fx1)
+                   : nr == 2 ? rast__ss_multi_m2(aet, n, d, mark, fx0, fx1)
+                             : rast__ss_multi_m1(aet, n, d, mark, fx0, fx1);
+    }
+    return rast__ss_multi(aet, n, nr, d, mark, bytes, bytes != NULL, kb, fx0, fx1, ss->clip,
+                          ss->evenodd, 1);
+}
+
+/* A segment's pass undone (rare): the edges stepped back to its first
+ * row, the same ends counted again with the opposite sign (a mark more
+ * changes no count), the edges stepped back again. */
+RAST__APART void rast__ss_undo(const rast__ss *ss, rast__edge *aet, int32_t n, int32_t nr)
+{
+    int32_t i, t;
+    for (i = 0; i < n; i++)
+        for (t = 0; t < nr; t++) rast__ss_unstep(&aet[i]);
+    (void)rast__ss_multi(aet, n, nr, ss->d, NULL, (unsigned char *)(void *)ss->d, ss->bytes,
+                         ss->kbits, ss->fx0, ss->fx1, ss->clip, ss->evenodd, -1);
+    for (i = 0; i < n; i++)
+        for (t = 0; t < nr; t++) rast__ss_unstep(&aet[i]);
+}
+
+/* 1 when edge *u goes before edge *v in the AET of row j (both cross
+ * it): left of it, or in the same column and left of it on the first
+ * row after where their columns differ (looked at up to RAST__SS_AHEAD
+ * rows on, while both cross them).  Two edges that do not cross are so
+ * in the order of their columns on every row (rast__ss_multi's test);
+ * two edges from one vertex (a star's spikes) are often in one column on
+ * their first row, where the columns alone left the one right of the
+ * other, and the segment's pass was undone on 46 rows of the star. */
+static int rast__ss_before(const rast__edge *u, const rast__edge *v, int32_t j)
+{
+    rast__edge p, r;
+    int32_t k;
+    if (u->x != v->x) return u->x < v->x;
+    p = *u;
+    r = *v;
+    k = (u->end < v->end ? u->end : v->end) - j - 1;
+    for (k = k < RAST__SS_AHEAD ? k : RAST__SS_AHEAD; k > 0 && p.x == r.x; k--) {
+        rast__edge_step(&p);
+        rast__edge_step(&r);
+    }
+    return p.x < r.x;
+}
+
+/* The k edges add[] that start on row j joined to the n of aet[] (room
+ * for n + k), in the order rast__ss_before tells (insertion, then a merge
+ * from the back); more than 16 as aet.h joins them (in the order of
+ * their columns alone).  Returns n + k. */
+static int32_t rast__ss_join(rast__edge *aet, int32_t n, rast__edge *add, int32_t k, int32_t j)
+{
+    const int32_t total = n + k;
+    int32_t i, m = total;
+    if (k > 16) {
+        return k <= RAST__AET_KEYS ? rast__aet_join_keys(aet, n, add, k)
+                                   : rast__aet_join(aet, n, add, k);
+    }
+    for (i = 1; i < k; i++) {
+        const rast__edge v = add[i];
+        int32_t s = i;
+        for (; s > 0 && rast__ss_before(&v, &add[s - 1], j); s--) add[s] = add[s - 1];
+        add[s] = v;
+    }
+    for (n--, k--; k >= 0;) {
+        if (n >= 0 && rast__ss_before(&add[k], &aet[n], j))
+            aet[--m] = aet[n--];
+        else
+            aet[--m] = add[k--];
+    }
+    return total;
+}
+
+/* The walk of the edge table aet[0 .. nedges) as rast__ss_sweep_records
+ * (aet.h's rast__aet_sweep: the table grouped by first row into edges[],
+ * a row's new edges joined to the AET, those that end dropped), a
+ * segment at a time (above). */
+static void rast__ss_sweep_rows(rast__ss *ss, rast__edge *edges, rast__edge *aet,
+                                int32_t *bucket, int32_t nedges, int32_t row0, int32_t row1)
+{
+    const int32_t kb = ss->kbits;
+    uint64_t *mark = ss->dense ? NULL : ss->mark;
+    int32_t j = row0, first = 0, n = 0, soonest = row1, k;
+#if RAST__SS_DELTA
+    /* (d[] holds 4 w + 8 bytes: 4 w + 1 fine columns' counts fit) */
+    ss->bytes = ss->dense && kb == 2 && ss->o->format == RAST_COVERAGE_U8;
+#endif
+    rast__aet_group(edges, aet, bucket, nedges, row0, row1);
+    while (j < row1) {
+        const int32_t last = bucket[j - row0];
+        int32_t b, nr;
+        if (last != first) { /* the row's new edges join */
+            for (k = first; k < last; k++) soonest = edges[k].end < soonest ? edges[k].end : soonest;
+            n = rast__ss_join(aet, n, &edges[first], last - first, j);
+            first = last;
+        }
+        if (n == 0) {
+            j++;
+            continue;
+        }
+        /* the segment [j, b): to the output row's end, the first row an
+         * edge does not cross, the next row an edge joins on */
+        b = ss->fy0 + ((((j - ss->fy0) >> kb) + 1) << kb);
+        b = b < soonest ? b : soonest;
+        b = b < j + RAST__SS_SEG ? b : j + RAST__SS_SEG;
+        for (k = j + 1; k < b && bucket[k - row0] == first; k++) {
+        }
+        b = k;
+        nr = b - j;
+        rast__ss_row(ss, j - ss->fy0);
+        ss->ends += n * nr;
+        if (rast__ss_segment(ss, aet, n, nr, mark)) {
+            /* out of order on one of its rows: a row at a time, each
+             * sorted first (then in order) */
+            rast__ss_undo(ss, aet, n, nr);
+            for (k = j; k < b; k++) {
+                rast__aet_sort(aet, n);
+                (void)rast__ss_segment(ss, aet, n, 1, mark);
+            }
+        }
+        j = b;
+        if (soonest == b) { /* those that end here dropped (those before the
+                               first that does stay where they are) */
+            int32_t m;
+            soonest = row1;
+            for (k = 0; k < n && aet[k].end != b; k++)
+                soonest = aet[k].end < soonest ? aet[k].end : soonest;
+            for (m = k; k < n; k++) {
+                if (aet[k].end == b) continue;
+                soonest = aet[k].end < soonest ? aet[k].end : soonest;
+                aet[m++] = aet[k];
+            }
+            n = m;
+        }
+    }
+}
+#endif
 
 static int rast__ss_dense_of(uint64_t sum, int32_t lo, int32_t hi, const rast__ss *ss);
 
@@ -571,7 +1052,7 @@ static void rast__ss_sweep(rast__ss *ss, rast__edge *edges, rast__edge *aet, int
             for (e = 0; e < nedges; e++) sum += (uint32_t)(aet[e].end - aet[e].row);
             ss->dense = rast__ss_dense_of(sum, row0, row1, ss);
         }
-        rast__ss_sweep_records(ss, edges, aet, bucket, nedges, row0, row1);
+        rast__ss_sweep_rows(ss, edges, aet, bucket, nedges, row0, row1);
         return;
     }
     /* the keys grouped by first row (rast__aet_group's counting sort):
@@ -772,6 +1253,7 @@ static rast_status rast__ss_begin(rast__ss *ss, int32_t kbits, const rast__cov_o
     ss->evenodd = 0; /* (triangle batches: non-zero, clamped, marked) */
     ss->clip = 1;
     ss->dense = 0;
+    ss->bytes = 0;
     ss->row = -1;
     ss->next = 0;
     ss->ends = 0;

@@ -371,6 +371,8 @@ static inline int32_t rast__ss_at(int32_t x, int32_t fx0, int32_t fx1, int clamp
     return (clamp ? (x < fx0 ? fx0 : x > fx1 ? fx1 : x) : x) - fx0;
 }
 
+#if defined(__OPTIMIZE_SIZE__)
+/* (A build for size: a fine row at a time, rast__ss_row_ends.) */
 /* Edges e[0] and e[1] bound one run of a row (a pair of opposite
  * directions, or of an even-odd row): the run added, both edges stepped;
  * 1 when they are out of order after it (with the last abscissa *last
@@ -428,7 +430,6 @@ RAST__HOT int rast__ss_eo(rast__edge *aet, int32_t n, int32_t *d, uint64_t *mark
     return swapped;
 }
 
-#if defined(__OPTIMIZE_SIZE__)
 /* Fine row y's runs, from its active edges in order, and the edges
  * stepped to the next row, in one pass (the walk's order hook, given no
  * run function): even-odd, runs between edges 2k and 2k + 1; non-zero,

@@ -2769,6 +2769,16 @@ static inline int32_t rast__grp_col(const rast__cells *c, int64_t v)
     return col < c->x0 ? 0 : col > c->x1 ? c->x1 - c->x0 + 1 : (int32_t)(col - c->x0) + 1;
 }
 
+/* rast__grp_col(c, a) <= rast__grp_col(c, b), without the keys: the
+ * clamp to [x0 - 1, x1] is monotone, so it holds when a's column is not
+ * past b's, or when the clamp makes them one (both left of x0, or both at
+ * or past x1). */
+static inline int rast__grp_col_le(const rast__cells *c, int64_t a, int64_t b)
+{
+    const int64_t ca = rast__q_col(a), cb = rast__q_col(b);
+    return ca <= cb || ca < c->x0 || cb >= c->x1;
+}
+
 /* The groups kept by rast__cov_row_groups (sw->h: where each starts in
  * row[]; sw->live: its edge count times 2, plus 1 for sign +1), added the
  * exact way. */
@@ -2912,22 +2922,24 @@ static void rast__cov_row_groups(rast__cells *c, rast__cedge *e, int32_t *row, i
          * instructions in them; and a sweep uses the keys' room) */
         int64_t hq = 0;
         for (g = k;; g++) { /* the group: row[k..g), the columns up to hq's; its windings */
-            if (g < nrow && (g == k || e[row[g]].qlo <= hq ||
-                             rast__grp_col(c, e[row[g]].qlo) <= rast__grp_col(c, hq))) {
+            if (g < nrow && (g == k || e[row[g]].qlo <= hq || rast__grp_col_le(c, e[row[g]].qlo, hq))) {
                 const int64_t q = e[row[g]].qhi - 1;
                 if (g == k || q > hq) hq = q;
-#if RAST__SHORTCUTS /* its windings as it joins (once: after a run joins, g is tried again) */
+#if RAST__SHORTCUTS
+                /* its windings as it joins (once: after a run joins, g is
+                 * tried again), from its part's ends (rast__fast_range,
+                 * above): the part starts at the row's top (qta 0) when the
+                 * edge reaches it, and ends at the bottom (qtb QT) when it
+                 * reaches that; every edge of the row ends below its top */
                 {
                     const rast__cedge *ed = &e[row[g]];
-                    const int64_t yb = (int64_t)ed->yt + ed->dy;
-                    if (ed->yt <= Yj && yb > Yj) wr += ed->dir;
-                    if (ed->yt > Yj || yb < Yj + c->p) full = 0;
+                    if (ed->qta == 0) wr += ed->dir;
+                    if (ed->qta != 0 || ed->qtb != QT) full = 0;
                 }
 #endif
                 continue;
             }
-            if (r < nrun && rast__grp_col(c, (int64_t)e[rs[r]].hx0 * ((int64_t)1 << (QF - (G - c->h)))) <=
-                                rast__grp_col(c, hq)) {
+            if (r < nrun && rast__grp_col_le(c, (int64_t)e[rs[r]].hx0 * ((int64_t)1 << (QF - (G - c->h))), hq)) {
                 const int64_t q = (int64_t)e[rs[r]].hx1 * ((int64_t)1 << (QF - (G - c->h)));
                 if (q > hq) hq = q; /* a run joins the group */
                 r++;

@@ -2240,6 +2240,18 @@ static int rast__grp_none(const rast__cedge *e, const int32_t *g, int32_t m, ras
 {
     int32_t lo = w, hi = w, k;
     if (rule != RAST_RULE_NONZERO || w == 0) return 0;
+#if RAST__SHORTCUTS
+    /* w > 0: hi >= w > 0, so lo > 0 decides, and lo only falls: the
+     * first prefix that takes it to 0 decides too (w < 0 likewise) */
+    if (w > 0) {
+        for (k = 0; k < m; k++)
+            if (e[g[k]].dir < 0 && (lo += e[g[k]].dir) <= 0) return 0;
+        return 1;
+    }
+    for (k = 0; k < m; k++)
+        if (e[g[k]].dir > 0 && (hi += e[g[k]].dir) >= 0) return 0;
+    return 1;
+#endif
     for (k = 0; k < m; k++) {
         const int32_t d = e[g[k]].dir;
         if (d > 0)

@@ -2787,8 +2787,12 @@ static inline int32_t rast__grp_col(const rast__cells *c, int64_t v)
  * or past x1). */
 static inline int rast__grp_col_le(const rast__cells *c, int64_t a, int64_t b)
 {
+#if RAST__SHORTCUTS
     const int64_t ca = rast__q_col(a), cb = rast__q_col(b);
     return ca <= cb || ca < c->x0 || cb >= c->x1;
+#else /* (size-optimised builds: the two columns, as before; 200 B less on Cortex-M0) */
+    return rast__grp_col(c, a) <= rast__grp_col(c, b);
+#endif
 }
 
 /* The groups kept by rast__cov_row_groups (sw->h: where each starts in

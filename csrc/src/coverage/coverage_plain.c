@@ -1238,11 +1238,11 @@ int rast__cov_parts_test(const rast_polygon *poly, uint32_t npoints, rast__arena
  * original off its edges, and the same coverage under either rule.  The
  * edges that remain still end at each point as many as start there; where
  * each point starts one of them, they join into rings one way only.  When
- * that polygon is plain (rast__cov_plain), its accumulation is the
+ * that polygon is plain (rast__pb_plain), its accumulation is the
  * coverage of the original (docs/coverage.md): a map of 289 countries,
- * 10,365 vertices, keeps the 5,010 edges of its coasts (1.5 M
- * instructions here, 2.3 M the test of what is left, 4.0 M its
- * accumulation: 9.4 M for "area", 9.8 M before).  Else "area"
+ * 10,365 vertices, keeps the 5,010 edges of its coasts, 128 rings (1.5 M
+ * instructions here, 1.6 M the test of what is left, 2.3 M swept, 4.0 M
+ * its accumulation: 8.7 M for "area", 9.4 M swept, 9.8 M before).  Else "area"
  * goes on as before.  The room: the points kept and their rings' sizes
  * (8 and 4/3 bytes an edge for 3/4 of the edges) stay taken for the
  * accumulation, whose own room is then 32 bytes an edge kept; the
@@ -1273,8 +1273,8 @@ static int32_t *rast__pb_table(rast__arena *a, uint32_t n, uint32_t *size)
  * vertices distinct from the next's) plain?  By its chains
  * (rast__pl_chains) as one part of all its rings, else (room or budget)
  * by the sweep of edges (rast__pl_plain, condition 3 in it): the map of
- * rast__cov_borders' comment, 5,010 points, 0.5 M instructions, 2.3 M
- * swept. */
+ * rast__cov_borders' comment, 5,010 points in 128 rings, 1.6 M
+ * instructions (the extremes' sort 0.2 M), 2.3 M swept. */
 static int rast__pb_plain(const rast_polygon *kept, uint32_t np, rast__arena arena)
 {
     rast__arena room = arena;

@@ -735,9 +735,11 @@ static int rast__pc_walk(rast__pc *w, uint32_t i, uint64_t k)
  * lv[q]-th, the first when it repeats; m of them in all, their coordinates
  * in range):
  * 1 when they hold, 0 when not, -1 undecided (room or budget: the sweep
- * by edges then).  blk: the room. */
+ * by edges then).  blk: the room.  per: the budget, per vertex, of the
+ * chains the sweep holds at its events (each costs a step, ~12
+ * instructions; the sweep by edges ~460 a vertex on a map's coasts). */
 static int rast__pl_chains(const rast_polygon *poly, const uint32_t *pfirst, const uint32_t *lv, const int32_t *rg,
-                           uint32_t nr, uint32_t m, rast__arena blk)
+                           uint32_t nr, uint32_t m, uint32_t per, rast__arena blk)
 {
     const int64_t lim = RAST_COORD_MAX;
     const size_t cmax = blk.left > RAST__PC_FIXED(m) ? (blk.left - RAST__PC_FIXED(m)) / 84 : 0;
@@ -748,7 +750,7 @@ static int rast__pl_chains(const rast_polygon *poly, const uint32_t *pfirst, con
      * order: condition 3 there, any number of rings), 0 at its other starts */
     uint32_t *ea, *eb, *er, *eix, *etmp, *erun;
     uint32_t g, i, nc = 0, ne = 0, nv = 0, pos = 0, neg = 0;
-    uint64_t budget = (uint64_t)m * 4 + 256;
+    uint64_t budget = (uint64_t)m * per + 256;
     if (cmax < 2) return -1;
     w.ck = (uint64_t *)rast__take(&blk, ((size_t)m + 2 * cmax) * sizeof(uint64_t));
     ek = (uint64_t *)rast__take(&blk, cmax * sizeof(uint64_t));
@@ -1188,7 +1190,7 @@ int rast__cov_parts_test(const rast_polygon *poly, uint32_t npoints, rast__arena
         if (again >= 0) /* (a moved copy of a part tested: its answer) */
             by = (int)nv[rid[again]];
         else /* (-1: by the sweep of edges) */
-            by = ok ? rast__pl_chains(poly, first, lv, rid + a, b - a, m, blk) : 0;
+            by = ok ? rast__pl_chains(poly, first, lv, rid + a, b - a, m, 4, blk) : 0;
         if (by >= 0) {
             for (i = a; i < b; i++) nv[rid[i]] = (uint32_t)by;
             all &= (uint32_t)by;
@@ -1274,7 +1276,10 @@ static int32_t *rast__pb_table(rast__arena *a, uint32_t n, uint32_t *size)
  * (rast__pl_chains) as one part of all its rings, else (room or budget)
  * by the sweep of edges (rast__pl_plain, condition 3 in it): the map of
  * rast__cov_borders' comment, 5,010 points in 128 rings, 1.6 M
- * instructions (the extremes' sort 0.2 M), 2.3 M swept. */
+ * instructions (the extremes' sort 0.2 M), 2.3 M swept.  Its budget is 16
+ * chains' steps a vertex, not the parts' 4: the map's coasts take 4.0 a
+ * vertex (at 4, cbench_scale's map seeds 0-3 left 52 to 64 of about
+ * 20,300 steps), and at 16 the chains given up cost less than the sweep. */
 static int rast__pb_plain(const rast_polygon *kept, uint32_t np, rast__arena arena)
 {
     rast__arena room = arena;
@@ -1294,7 +1299,7 @@ static int rast__pb_plain(const rast_polygon *kept, uint32_t np, rast__arena are
             lv[r] = l;
             rg[r] = (int32_t)r;
         }
-        t = rast__pl_chains(kept, pf, lv, rg, nr, np, room);
+        t = rast__pl_chains(kept, pf, lv, rg, nr, np, 16, room);
         if (t >= 0) return t;
     }
     return rast__pl_plain(kept, np, arena, 1);

@@ -735,19 +735,23 @@ static int rast__pc_walk(rast__pc *w, uint32_t i, uint64_t k)
  * lv[q]-th, the first when it repeats; m of them in all, their coordinates
  * in range):
  * 1 when they hold, 0 when not, -1 undecided (room or budget: the sweep
- * by edges then).  blk: the room. */
+ * by edges then).  blk: the room.  per: the budget, per vertex, of the
+ * chains the sweep holds at its events (each costs a step, ~12
+ * instructions; the sweep by edges ~460 a vertex on a map's coasts). */
 static int rast__pl_chains(const rast_polygon *poly, const uint32_t *pfirst, const uint32_t *lv, const int32_t *rg,
-                           uint32_t nr, uint32_t m, rast__arena blk)
+                           uint32_t nr, uint32_t m, uint32_t per, rast__arena blk)
 {
     const int64_t lim = RAST_COORD_MAX;
     const size_t cmax = blk.left > RAST__PC_FIXED(m) ? (blk.left - RAST__PC_FIXED(m)) / 84 : 0;
     rast__pc w;
     uint64_t *ek;
+    /* extreme t at key ek[t], of chains ea[t] and eb[t]; er[t]: UINT32_MAX
+     * where they end, 1 at a ring's least vertex (its first extreme in the
+     * order: condition 3 there, any number of rings), 0 at its other starts */
     uint32_t *ea, *eb, *er, *eix, *etmp, *erun;
-    uint32_t seen[RAST__PL_PART_RINGS];
     uint32_t g, i, nc = 0, ne = 0, nv = 0, pos = 0, neg = 0;
-    uint64_t budget = (uint64_t)m * 4 + 256;
-    if (cmax < 2 || nr > RAST__PL_PART_RINGS) return -1;
+    uint64_t budget = (uint64_t)m * per + 256;
+    if (cmax < 2) return -1;
     w.ck = (uint64_t *)rast__take(&blk, ((size_t)m + 2 * cmax) * sizeof(uint64_t));
     ek = (uint64_t *)rast__take(&blk, cmax * sizeof(uint64_t));
     w.cs = (uint32_t *)rast__take(&blk, cmax * sizeof(uint32_t));
@@ -778,7 +782,6 @@ static int rast__pl_chains(const rast_polygon *poly, const uint32_t *pfirst, con
         w.cs[nc] = nv;
         w.sg[nc] = 1;
         w.ck[nv++] = last = least;
-        seen[g] = 0;
         /* the keys round the ring from it, back to it, an edge of length 0
          * dropped: a chain up (the ring's way) while they rise, then one
          * down (stored up: reversed when it ends) while they fall */
@@ -815,7 +818,7 @@ static int rast__pl_chains(const rast_polygon *poly, const uint32_t *pfirst, con
                 ek[ne] = last;
                 ea[ne] = nc + 1;
                 eb[ne] = nc + 2;
-                er[ne++] = g;
+                er[ne++] = 0;
                 nc += 2;
                 if (nc + 2 > cmax) return -1;
                 w.cs[nc] = nv;
@@ -832,7 +835,7 @@ static int rast__pl_chains(const rast_polygon *poly, const uint32_t *pfirst, con
         ek[ne] = least;
         ea[ne] = nc + 1;
         eb[ne] = cb;
-        er[ne++] = g;
+        er[ne++] = 1;
         nc += 2;
     }
     for (i = 0; i < ne; i++) eix[i] = i;
@@ -853,8 +856,8 @@ static int rast__pl_chains(const rast_polygon *poly, const uint32_t *pfirst, con
         uint32_t j, at;
         if (i + 1 < ne && ek[eix[i + 1]] == k) return 0; /* two extremes at one point */
         if ((budget -= w.na + 1) > ((uint64_t)1 << 62)) return -1;
-        for (j = 0; j + 1 < w.na; j++)
-            if (!rast__pc_walk(&w, j, k)) return 0;
+        for (j = 0; j + 1 < w.na; j++) /* (a pair with no vertex up to k: as it was) */
+            if ((w.ck[w.wa[j]] <= k || w.ck[w.wb[j]] <= k) && !rast__pc_walk(&w, j, k)) return 0;
         if (er[e] == UINT32_MAX) { /* a and b end here: neighbours (their walk met at the end), out */
             for (at = 0; at < w.na && w.act[at] != a && w.act[at] != b; at++) {
             }
@@ -901,8 +904,7 @@ static int rast__pl_chains(const rast_polygon *poly, const uint32_t *pfirst, con
                 w.wa[at + 1] = w.cur[hi];
                 w.wb[at + 1] = w.cur[w.act[at + 2]];
             }
-            if (!seen[er[e]]) { /* the ring's least vertex: condition 3 */
-                seen[er[e]] = 1;
+            if (er[e]) { /* the ring's least vertex: condition 3 */
                 w1 = w0 + w.sg[lo];
                 if (w0 < -1 || w0 > 1 || w1 < -1 || w1 > 1) return 0;
                 pos |= w0 == 1 || w1 == 1;
@@ -1035,7 +1037,7 @@ int rast__cov_parts_test(const rast_polygon *poly, uint32_t npoints, rast__arena
     rast__arena blk, room;
     uint32_t r, i, a, b, base, nc = 0, most = 0, all = 1, tmask;
     uint64_t pairs = (uint64_t)npoints * RAST__PL_PAIRS + 4096, tested = 0;
-    int32_t xmin = INT32_MAX;
+    int32_t xmin = INT32_MAX, xmax = INT32_MIN, ymin = INT32_MAX, ymax = INT32_MIN;
     if (!rows || !first || !end || !box || !pbox || !lv || !par || !nv || !rid || !rtmp || !rkey || !pf || nr < 2)
         return 0;
     for (r = 0, base = 0; r < nr; base += poly->ring_sizes[r], r++) { /* each ring's box */
@@ -1065,21 +1067,67 @@ int rast__cov_parts_test(const rast_polygon *poly, uint32_t npoints, rast__arena
         bx[3] = y1;
         for (i = 0; i < 4; i++) pbox[4 * r + i] = (int32_t)rast__floordiv(bx[i], P);
         xmin = pbox[4 * r] < xmin ? pbox[4 * r] : xmin;
+        xmax = pbox[4 * r + 2] > xmax ? pbox[4 * r + 2] : xmax;
+        ymin = pbox[4 * r + 1] < ymin ? pbox[4 * r + 1] : ymin;
+        ymax = pbox[4 * r + 3] > ymax ? pbox[4 * r + 3] : ymax;
     }
-    for (r = 0; r < nr; r++) {
-        rid[r] = (int32_t)r;
-        par[r] = r;
-        rkey[r] = pbox[4 * r] - xmin;
-    }
-    rast__cov_radix_sort(rid, rtmp, rkey, nr);
-    for (a = 0; a < nr; a++) { /* the parts: every two boxes that share a pixel, by left column */
-        const int32_t *p = pbox + 4 * rid[a];
-        if (!nv[rid[a]]) continue;
-        for (b = a + 1; b < nr && pbox[4 * rid[b]] <= p[2]; b++) {
-            const int32_t *q = pbox + 4 * rid[b];
-            if (--pairs == 0) return 0;
-            if (q[1] <= p[3] && p[1] <= q[3] && nv[rid[b]])
-                par[rast__pl_root(par, (uint32_t)rid[a])] = rast__pl_root(par, (uint32_t)rid[b]);
+    { /* the parts: every two boxes that share a pixel.  The boxes in bands
+       * of rows (between two bands no box reaches both rows: a line of
+       * text each), then by left column: a box is tried against those
+       * after it in its band up to its right column (a line's, not every
+       * line's: text, 1,449 rings, 31,900 pairs tried by column alone, 639
+       * so).  The key: band c, column x, c W + x (W the columns' span),
+       * when below 2^31 and the rows' span is at most 4 a ring (and
+       * 1,024), else the column (one band).  The pixel boxes copied in
+       * the key's order, sx[4 a ..] ring rid[a]'s (its key, its top row,
+       * its key's right end, its bottom row; one with no vertices rows
+       * INT32_MAX to INT32_MIN, which meets none), in room past the
+       * arena's, used here only, with the rows' bands. */
+        rast__arena past = arena;
+        int32_t *sx = (int32_t *)rast__take(&past, (size_t)nr * 4 * sizeof(int32_t));
+        const uint64_t wx = (uint64_t)((int64_t)xmax - xmin) + 1, hy = (uint64_t)((int64_t)ymax - ymin) + 1;
+        int32_t *bd = hy <= (uint64_t)nr * 4 + 1024 ? (int32_t *)rast__take(&past, (size_t)hy * sizeof(int32_t)) : NULL;
+        uint64_t cw = 0;
+        if (!sx) return 0;
+        if (bd) { /* each row's band: bd[y - ymin], from the boxes that reach rows y and y + 1 */
+            uint32_t y, c = 0;
+            int32_t reach = 0;
+            memset(bd, 0, (size_t)hy * sizeof(int32_t));
+            for (r = 0; r < nr; r++)
+                if (pbox[4 * r + 3] > pbox[4 * r + 1]) {
+                    bd[pbox[4 * r + 1] - ymin]++;
+                    bd[pbox[4 * r + 3] - ymin]--;
+                }
+            for (y = 0; y < (uint32_t)hy; y++) {
+                reach += bd[y];
+                bd[y] = (int32_t)c;
+                c += reach == 0;
+            }
+            cw = (uint64_t)c * wx <= (uint64_t)INT32_MAX ? wx : 0;
+        }
+        for (r = 0; r < nr; r++) {
+            const uint64_t band = cw ? (uint64_t)bd[pbox[4 * r + 1] - ymin] : 0;
+            rid[r] = (int32_t)r;
+            par[r] = r;
+            rkey[r] = (int32_t)(band * cw + (uint64_t)((int64_t)pbox[4 * r] - xmin));
+        }
+        rast__cov_radix_sort(rid, rtmp, rkey, nr);
+        for (a = 0; a < nr; a++) {
+            const int32_t *p = pbox + 4 * rid[a];
+            const int e = nv[rid[a]] != 0;
+            sx[4 * a] = rkey[rid[a]];
+            sx[4 * a + 1] = e ? p[1] : INT32_MAX;
+            sx[4 * a + 2] = rkey[rid[a]] + (p[2] - p[0]);
+            sx[4 * a + 3] = e ? p[3] : INT32_MIN;
+        }
+        for (a = 0; a < nr; a++) {
+            const int32_t x1 = sx[4 * a + 2], y0 = sx[4 * a + 1], y1 = sx[4 * a + 3];
+            if (y0 > y1) continue;
+            for (b = a + 1; b < nr && sx[4 * b] <= x1; b++)
+                if (sx[4 * b + 1] <= y1 && y0 <= sx[4 * b + 3])
+                    par[rast__pl_root(par, (uint32_t)rid[a])] = rast__pl_root(par, (uint32_t)rid[b]);
+            if (b - a - 1 >= pairs) return 0; /* (the pairs tried: a budget) */
+            pairs -= b - a - 1;
         }
     }
     for (r = 0; r < nr; r++) rtmp[r] = -1; /* each part's number, by its root */
@@ -1142,7 +1190,7 @@ int rast__cov_parts_test(const rast_polygon *poly, uint32_t npoints, rast__arena
         if (again >= 0) /* (a moved copy of a part tested: its answer) */
             by = (int)nv[rid[again]];
         else /* (-1: by the sweep of edges) */
-            by = ok ? rast__pl_chains(poly, first, lv, rid + a, b - a, m, blk) : 0;
+            by = ok ? rast__pl_chains(poly, first, lv, rid + a, b - a, m, 4, blk) : 0;
         if (by >= 0) {
             for (i = a; i < b; i++) nv[rid[i]] = (uint32_t)by;
             all &= (uint32_t)by;
@@ -1192,11 +1240,11 @@ int rast__cov_parts_test(const rast_polygon *poly, uint32_t npoints, rast__arena
  * original off its edges, and the same coverage under either rule.  The
  * edges that remain still end at each point as many as start there; where
  * each point starts one of them, they join into rings one way only.  When
- * that polygon is plain (rast__cov_plain), its accumulation is the
+ * that polygon is plain (rast__pb_plain), its accumulation is the
  * coverage of the original (docs/coverage.md): a map of 289 countries,
- * 10,365 vertices, keeps the 5,010 edges of its coasts (1.5 M
- * instructions here, 2.3 M the test of what is left, 4.0 M its
- * accumulation: 9.4 M for "area", 9.8 M before).  Else "area"
+ * 10,365 vertices, keeps the 5,010 edges of its coasts, 128 rings (1.5 M
+ * instructions here, 1.6 M the test of what is left, 2.3 M swept, 4.0 M
+ * its accumulation: 8.7 M for "area", 9.4 M swept, 9.8 M before).  Else "area"
  * goes on as before.  The room: the points kept and their rings' sizes
  * (8 and 4/3 bytes an edge for 3/4 of the edges) stay taken for the
  * accumulation, whose own room is then 32 bytes an edge kept; the
@@ -1221,6 +1269,40 @@ static int32_t *rast__pb_table(rast__arena *a, uint32_t n, uint32_t *size)
     t = (int32_t *)rast__take(a, (size_t)*size * sizeof(int32_t));
     if (t) memset(t, 0xFF, (size_t)*size * sizeof(int32_t));
     return t;
+}
+
+/* Is the polygon that rast__cov_borders keeps (np points, each ring's
+ * vertices distinct from the next's) plain?  By its chains
+ * (rast__pl_chains) as one part of all its rings, else (room or budget)
+ * by the sweep of edges (rast__pl_plain, condition 3 in it): the map of
+ * rast__cov_borders' comment, 5,010 points in 128 rings, 1.6 M
+ * instructions (the extremes' sort 0.2 M), 2.3 M swept.  Its budget is 16
+ * chains' steps a vertex, not the parts' 4: the map's coasts take 4.0 a
+ * vertex (at 4, cbench_scale's map seeds 0-3 left 52 to 64 of about
+ * 20,300 steps), and at 16 the chains given up cost less than the sweep. */
+static int rast__pb_plain(const rast_polygon *kept, uint32_t np, rast__arena arena)
+{
+    rast__arena room = arena;
+    const uint32_t nr = kept->nrings;
+    uint32_t *pf = (uint32_t *)rast__take(&room, (size_t)nr * sizeof(uint32_t));
+    uint32_t *lv = (uint32_t *)rast__take(&room, (size_t)nr * sizeof(uint32_t));
+    int32_t *rg = (int32_t *)rast__take(&room, (size_t)nr * sizeof(int32_t));
+    uint32_t r, i, base;
+    if (pf && lv && rg) {
+        int t;
+        for (r = 0, base = 0; r < nr; base += kept->ring_sizes[r], r++) {
+            const rast_point *p = kept->points + base;
+            uint32_t l = 0;
+            for (i = 1; i < kept->ring_sizes[r]; i++) /* (its least vertex in the order (x, then y), the first) */
+                if (p[i].x < p[l].x || (p[i].x == p[l].x && p[i].y < p[l].y)) l = i;
+            pf[r] = base;
+            lv[r] = l;
+            rg[r] = (int32_t)r;
+        }
+        t = rast__pl_chains(kept, pf, lv, rg, nr, np, 16, room);
+        if (t >= 0) return t;
+    }
+    return rast__pl_plain(kept, np, arena, 1);
 }
 
 int rast__cov_borders(const rast_polygon *poly, uint32_t npoints, rast__arena *arena, rast_polygon *out)
@@ -1319,6 +1401,6 @@ int rast__cov_borders(const rast_polygon *poly, uint32_t npoints, rast__arena *a
     out->points = pts;
     out->ring_sizes = sizes;
     out->nrings = nr;
-    return np < npoints && rast__pl_plain(out, np, *arena, 1);
+    return np < npoints && rast__pb_plain(out, np, *arena);
 }
 #endif

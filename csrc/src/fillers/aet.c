@@ -476,13 +476,34 @@ static int rast__aet_delta(size_t room, const rast__grid *g, rast_fill_rule rule
     return 1;
 }
 
-/* The column that counts a crossing at a vertex's abscissa, internal
- * X = 2 x (rast__cross_col(X, 1, g), by shifts: |X - off| < 2^29 and the
- * unit at most 2^17). */
-static inline int32_t rast__vertex_col(int32_t x, const rast__grid *g)
+/* A vertex's row (rast__row_at_or_after of its doubled y) and the column
+ * that counts a crossing at its abscissa (rast__cross_col(2x, 1, g)),
+ * each as one shift of a biased 32-bit value, both plus kb = 2^30 >>
+ * shift (the bias's part, taken off only where a row or column is used:
+ * the walk compares them as they are).  Exact: |2v| < 2^28 and the unit
+ * at most 2^17 (S <= 16), so the biased value lies in (0, 2^31) and the
+ * shift floors it; rows: ceil((2y - off) / unit); columns: the same
+ * (exact rounding), or floor((2x - off + unit / 2) / unit) (textbook,
+ * RAST_ROUND_TEXTBOOK). */
+typedef struct rast__vshift {
+    uint32_t ky, kx; /* 2^30 - off + unit - 1; kx: ky, or textbook 2^30 - off + unit / 2 */
+    uint32_t shift;
+    int32_t kb; /* 2^30 >> shift */
+} rast__vshift;
+
+static inline rast__vshift rast__vshift_of(const rast__grid *g)
 {
-    const int32_t a = 2 * x - g->off;
-    return g->textbook ? rast__floorshift32(a + g->unit / 2, g->shift) : -rast__floorshift32(-a, g->shift);
+    rast__vshift v;
+    v.ky = ((uint32_t)1 << 30) - (uint32_t)g->off + (uint32_t)g->unit - 1;
+    v.kx = g->textbook ? ((uint32_t)1 << 30) - (uint32_t)g->off + (uint32_t)g->unit / 2 : v.ky;
+    v.shift = (uint32_t)g->shift;
+    v.kb = (int32_t)(((uint32_t)1 << 30) >> v.shift);
+    return v;
+}
+
+static inline int32_t rast__vshift_row(int32_t y, uint32_t ky, uint32_t shift)
+{
+    return (int32_t)(((uint32_t)y * 2u + ky) >> shift);
 }
 
 /* An edge's crossings of rows [a, b), all at counter column c (cut to
@@ -521,56 +542,93 @@ RAST__HOT void rast__delta_now_walk(const rast_polygon *poly, const rast__grid *
     const rast_point *pts = poly->points;
     const rast__grid gl = *g; /* (not reloaded every edge: aet.h) */
     const rast__delta_cols d = *dc;
+    const rast__vshift v = rast__vshift_of(&gl);
+    /* the clip's rows, biased as the vertices' rows are (rast__vshift) */
+    const int32_t brow0 = row0 + v.kb, brow1 = row1 + v.kb;
     uint32_t k, base;
     for (k = 0, base = 0; k < poly->nrings; base += poly->ring_sizes[k], k++) {
-        /* edge ia -> ib (as rast__aet_prepare_edges walks them), the row
-         * of ib found once and carried to the next edge */
+        /* edge ib - 1 -> ib (as rast__aet_prepare_edges walks them; the
+         * ring's last edge to its first vertex), each vertex's row found
+         * once: the vertices of the row of the one before are passed by a
+         * loop of their own (an edge between two vertices of one row
+         * crosses none: most of a paragraph's) */
         const uint32_t stop = base + poly->ring_sizes[k];
-        uint32_t ia, ib;
-        int32_t ra, rb, r0;
+        uint32_t ib;
+        int32_t ra, rb = 0, r0;
+        /* the rows of the crossing edges of one direction that follow each
+         * other (from row cs, going down when cdown): each row between
+         * their ends is crossed by one of them, exactly once, so the
+         * crossings a row are counted a piece at a time, not an edge at a
+         * time (starts: rast__aet_delta_now) */
+        int32_t cs, cdown = -1;
         if (stop == base) continue;
-        ra = r0 = (int32_t)rast__row_at_or_after(2 * (int64_t)pts[base].y, &gl);
-        for (ia = base, ib = base + 1; ia < stop; ia++, ib++, ra = rb) {
+        ra = r0 = cs = rast__vshift_row(pts[base].y, v.ky, v.shift);
+        for (ib = base + 1;; ib++) {
+            const rast_point *pa, *pb;
             int32_t first, end, c;
             unsigned char dir;
+            while (ib < stop && (rb = rast__vshift_row(pts[ib].y, v.ky, v.shift)) == ra) ib++;
             if (ib == stop) {
-                ib = base;
+                if (ra == r0) break;
                 rb = r0;
+                pb = &pts[base];
             } else {
-                rb = (int32_t)rast__row_at_or_after(2 * (int64_t)pts[ib].y, &gl);
+                pb = &pts[ib];
             }
-            if (ra == rb) continue;
+            pa = &pts[ib - 1];
+            if (starts && (ra < rb) != cdown) {
+                first = (cs < ra ? cs : ra);
+                end = cs ^ ra ^ first;
+                first = first < brow0 ? brow0 : first;
+                end = end > brow1 ? brow1 : end;
+                if (first < end) {
+                    starts[first - brow0]++;
+                    starts[end - brow0]--;
+                }
+                cs = ra;
+                cdown = ra < rb;
+            }
             first = ra < rb ? ra : rb;
             end = ra ^ rb ^ first;
-            first = first < row0 ? row0 : first;
-            end = end > row1 ? row1 : end;
-            if (first >= end) continue;
-            if (starts) {
-                starts[first - row0]++;
-                starts[end - row0]--;
-            }
-            dir = (unsigned char)(d.mask == 1 || ra < rb ? 1 : 0xFF);
-            c = rast__vertex_col(pts[ia].x, &gl);
-            if (c != rast__vertex_col(pts[ib].x, &gl)) {
-                /* (the ends ordered as rast__aet_edge_rows orders them) */
-                const ptrdiff_t swap = ((ptrdiff_t)ib - (ptrdiff_t)ia) & -(ptrdiff_t)(ra > rb);
-                const rast_point *top = &pts[ia] + swap, *bottom = &pts[ib] - swap;
-                if (end - first == 1) {
-                    int64_t e;
-                    c = rast__edge_first_col(*top, *bottom, first, &gl, &e);
-                } else {
-                    rast__edge ed;
-                    rast__edge_start_inline(&ed, *top, *bottom, ra < rb ? 1 : -1, first, end, &gl);
-                    if (!inplace) {
-                        rast__delta_walk(&ed, buf, row0, row1, d.stride, d.col0, d.bits, dir, 1, 1);
+            first = (first < brow0 ? brow0 : first) - v.kb;
+            end = (end > brow1 ? brow1 : end) - v.kb;
+            if (first < end) {
+                dir = (unsigned char)(d.mask == 1 || ra < rb ? 1 : 0xFF);
+                c = rast__vshift_row(pa->x, v.kx, v.shift);
+                if (c != rast__vshift_row(pb->x, v.kx, v.shift)) {
+                    /* (the ends ordered as rast__aet_edge_rows orders them) */
+                    const ptrdiff_t swap = (pb - pa) & -(ptrdiff_t)(ra > rb);
+                    const rast_point *top = pa + swap, *bottom = pb - swap;
+                    if (end - first == 1) {
+                        int64_t e;
+                        c = rast__edge_first_col(*top, *bottom, first, &gl, &e) + v.kb;
                     } else {
-                        rast__delta_walk(&ed, in, row0, mid, d.bits, d.col0, d.bits, dir, 1, 1);
-                        if (ed.end > mid) rast__delta_walk_last(&ed, buf, &d);
+                        rast__edge ed;
+                        rast__edge_start_inline(&ed, *top, *bottom, ra < rb ? 1 : -1, first, end, &gl);
+                        if (!inplace) {
+                            rast__delta_walk(&ed, buf, row0, row1, d.stride, d.col0, d.bits, dir, 1, 1);
+                        } else {
+                            rast__delta_walk(&ed, in, row0, mid, d.bits, d.col0, d.bits, dir, 1, 1);
+                            if (ed.end > mid) rast__delta_walk_last(&ed, buf, &d);
+                        }
+                        goto next;
                     }
-                    continue;
                 }
+                rast__delta_col(in, buf, row0, mid, first, end, d.bits, d.stride, c - v.kb - d.col0, dir,
+                                inplace);
             }
-            rast__delta_col(in, buf, row0, mid, first, end, d.bits, d.stride, c - d.col0, dir, inplace);
+        next:
+            if (ib == stop) break;
+            ra = rb;
+        }
+        if (starts) { /* the ring's last piece, to its first vertex's row */
+            int32_t first = cs < r0 ? cs : r0, end = cs ^ r0 ^ first;
+            first = first < brow0 ? brow0 : first;
+            end = end > brow1 ? brow1 : end;
+            if (first < end) {
+                starts[first - brow0]++;
+                starts[end - brow0]--;
+            }
         }
     }
 }

@@ -320,6 +320,24 @@ static int seq_array_read(PyObject *a, Py_ssize_t m, double *out)
     return ok != 0;
 }
 
+/* Is an array's dtype `descr` the dtype `want` (numpy's native float64
+ * or int32)?  By identity first (the usual case: one pointer compare);
+ * else by numpy's own equality, which an equal dtype made apart passes:
+ * an array unpickled carries a dtype object of its own (equal to
+ * numpy.dtype(numpy.float64), not it), which the identity alone sent
+ * polygon_mask's rings the slow way. */
+static int seq_dtype_is(PyObject *descr, PyObject *want)
+{
+    int eq;
+    if (descr == want) return 1;
+    eq = PyObject_RichCompareBool(descr, want, Py_EQ);
+    if (eq < 0) {
+        PyErr_Clear();
+        return 0;
+    }
+    return eq;
+}
+
 /* Does seq_array_head read `a` as __array_struct__ and .dtype describe
  * it?  The pointers are compared first (data, dtype), the dimensions
  * read only once they agree. */
@@ -346,10 +364,14 @@ static int seq_head_check(PyObject *a)
 static int seq_head_read(PyObject *a, Py_ssize_t m, PyObject *f64, PyObject *i32, double *out)
 {
     const seq_array_head *h = (const seq_array_head *)(const void *)a;
-    int f = h->descr == f64;
-    if (h->nd != 2 || h->dimensions[0] != m || h->dimensions[1] != 2 || !(h->flags & SEQ_ARRAY_ALIGNED) ||
-        (!f && h->descr != i32))
+    int f;
+    if (h->nd != 2 || h->dimensions[0] != m || h->dimensions[1] != 2 || !(h->flags & SEQ_ARRAY_ALIGNED))
         return 0;
+    f = h->descr == f64;
+    if (!f && h->descr != i32) { /* (the identities first: the usual case) */
+        f = seq_dtype_is(h->descr, f64);
+        if (!f && !seq_dtype_is(h->descr, i32)) return 0;
+    }
     seq_copy(h->data, h->strides[0], h->strides[1], f, m, out);
     return 1;
 }
@@ -494,7 +516,7 @@ fail:
  * (rastpy_mask_rings) instead of copying every point into one buffer
  * first (a paragraph of text: 541 KB written and read again, ~8% of its
  * call, issue 33).  Each item exactly of type `ndarray`, C-contiguous
- * (m >= 1, 2) native float64 (`float64` by identity), aligned, read
+ * (m >= 1, 2) native float64 (`float64`, seq_dtype_is), aligned, read
  * through its head (seq_head_ok; else None, and the caller packs):
  * (addresses, sizes, points, rings as a tuple) -- the rings' data
  * addresses and their sizes as bytes objects (a cffi call takes each as
@@ -523,9 +545,9 @@ static PyObject *seq_ring_ptrs(PyObject *self, PyObject *args)
     for (k = 0; k < n; k++) {
         PyObject *a = PyTuple_GetItem(keep, k);
         const seq_array_head *h = (const seq_array_head *)(const void *)a;
-        if ((PyObject *)Py_TYPE(a) != ndarray || h->descr != f64 || h->nd != 2 || h->dimensions[1] != 2 ||
+        if ((PyObject *)Py_TYPE(a) != ndarray || h->nd != 2 || h->dimensions[1] != 2 ||
             h->dimensions[0] < 1 || h->dimensions[0] > (Py_ssize_t)UINT32_MAX || h->strides[0] != 16 ||
-            h->strides[1] != 8 || !(h->flags & SEQ_ARRAY_ALIGNED))
+            h->strides[1] != 8 || !(h->flags & SEQ_ARRAY_ALIGNED) || !seq_dtype_is(h->descr, f64))
             goto none;
         pp[k] = h->data;
         sz[k] = (uint32_t)h->dimensions[0];

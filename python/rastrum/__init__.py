@@ -173,9 +173,13 @@ def polygon_mask(rings: PathRings, shape: Shape, *, rule: Rule = "evenodd", algo
     # that ring: the general path's packing and checks were two thirds of
     # a 64-gon's call on a 512 x 512 mask.
     ring = rings[0] if type(rings) is list and len(rings) == 1 else rings
-    if type(ring) is _ndarray and ring.dtype is _I32 and ring.strides == _PACKED32:
+    # (the dtypes by identity, else by equality: an unpickled array's dtype
+    # is an equal object of its own, which the identity alone sent the
+    # general way)
+    if type(ring) is _ndarray and (ring.dtype is _I32 or ring.dtype == _I32) and ring.strides == _PACKED32:
         ring = ring.astype(_F64)  # an OpenCV-style int32 (N, 2) ring: exact as float64
-    if type(ring) is _ndarray and ring.dtype is _F64 and ring.strides == _PACKED and type(shape) is tuple \
+    if type(ring) is _ndarray and (ring.dtype is _F64 or ring.dtype == _F64) and ring.strides == _PACKED \
+            and type(shape) is tuple \
             and len(shape) == 2 and ring.shape[1] == 2 and ring.flags.aligned:
         h, w = shape
         n = len(ring)

@@ -7,6 +7,10 @@
 #include "../painters/paint.h"
 #include "../fillers/poly.h"
 #include "../fillers/registry.h"
+#if defined(__SSE2__) && !defined(RAST_NO_SIMD) && !defined(__OPTIMIZE_SIZE__)
+#include <emmintrin.h> /* (integer vectors only: every x86-64 has them) */
+#define RAST__RANGE_SSE2 1
+#endif
 
 static rast_status rast__check_opts(const rast_fill_opts *o, rast__grid *g,
                                     const rast__algo **algo)
@@ -34,7 +38,26 @@ static rast_status rast__check_polygon(const rast_polygon *p, uint32_t *npoints,
         if (n > RAST_MAX_POINTS) return RAST_E_TOO_MANY;
     }
     if (n > 0 && !p->points) return RAST_E_NULL;
-    for (i = 0; range && i < (uint32_t)n; i++) {
+    i = 0;
+#if defined(RAST__RANGE_SSE2)
+    /* Four points (eight coordinates) a step, the comparisons' results
+     * gathered and tested once at the end: 11 instructions a vertex were
+     * ~380 K of a paragraph of text's rast_fill_polygon (a third of what
+     * the fill's own walk of its vertices costs). */
+    if (range) {
+        const __m128i hi = _mm_set1_epi32(RAST_COORD_MAX), lo = _mm_set1_epi32(-RAST_COORD_MAX);
+        __m128i bad = _mm_setzero_si128();
+        const rast_point *q = p->points;
+        for (; i + 4 <= (uint32_t)n; i += 4) {
+            const __m128i a = _mm_loadu_si128((const __m128i *)(const void *)(q + i));
+            const __m128i b = _mm_loadu_si128((const __m128i *)(const void *)(q + i + 2));
+            bad = _mm_or_si128(bad, _mm_or_si128(_mm_cmpgt_epi32(a, hi), _mm_cmplt_epi32(a, lo)));
+            bad = _mm_or_si128(bad, _mm_or_si128(_mm_cmpgt_epi32(b, hi), _mm_cmplt_epi32(b, lo)));
+        }
+        if (_mm_movemask_epi8(bad)) return RAST_E_RANGE;
+    }
+#endif
+    for (; range && i < (uint32_t)n; i++) {
         int32_t x = p->points[i].x, y = p->points[i].y;
         if (x < -RAST_COORD_MAX || x > RAST_COORD_MAX ||
             y < -RAST_COORD_MAX || y > RAST_COORD_MAX)

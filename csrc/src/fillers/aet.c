@@ -476,13 +476,34 @@ static int rast__aet_delta(size_t room, const rast__grid *g, rast_fill_rule rule
     return 1;
 }
 
-/* The column that counts a crossing at a vertex's abscissa, internal
- * X = 2 x (rast__cross_col(X, 1, g), by shifts: |X - off| < 2^29 and the
- * unit at most 2^17). */
-static inline int32_t rast__vertex_col(int32_t x, const rast__grid *g)
+/* A vertex's row (rast__row_at_or_after of its doubled y) and the column
+ * that counts a crossing at its abscissa (rast__cross_col(2x, 1, g)),
+ * each as one shift of a biased 32-bit value, both plus kb = 2^30 >>
+ * shift (the bias's part, taken off only where a row or column is used:
+ * the walk compares them as they are).  Exact: |2v| < 2^28 and the unit
+ * at most 2^17 (S <= 16), so the biased value lies in (0, 2^31) and the
+ * shift floors it; rows: ceil((2y - off) / unit); columns: the same
+ * (exact rounding), or floor((2x - off + unit / 2) / unit) (textbook,
+ * RAST_ROUND_TEXTBOOK). */
+typedef struct rast__vshift {
+    uint32_t ky, kx; /* 2^30 - off + unit - 1; kx: ky, or textbook 2^30 - off + unit / 2 */
+    uint32_t shift;
+    int32_t kb; /* 2^30 >> shift */
+} rast__vshift;
+
+static inline rast__vshift rast__vshift_of(const rast__grid *g)
 {
-    const int32_t a = 2 * x - g->off;
-    return g->textbook ? rast__floorshift32(a + g->unit / 2, g->shift) : -rast__floorshift32(-a, g->shift);
+    rast__vshift v;
+    v.ky = ((uint32_t)1 << 30) - (uint32_t)g->off + (uint32_t)g->unit - 1;
+    v.kx = g->textbook ? ((uint32_t)1 << 30) - (uint32_t)g->off + (uint32_t)g->unit / 2 : v.ky;
+    v.shift = (uint32_t)g->shift;
+    v.kb = (int32_t)(((uint32_t)1 << 30) >> v.shift);
+    return v;
+}
+
+static inline int32_t rast__vshift_row(int32_t y, uint32_t ky, uint32_t shift)
+{
+    return (int32_t)(((uint32_t)y * 2u + ky) >> shift);
 }
 
 /* An edge's crossings of rows [a, b), all at counter column c (cut to
@@ -521,56 +542,93 @@ RAST__HOT void rast__delta_now_walk(const rast_polygon *poly, const rast__grid *
     const rast_point *pts = poly->points;
     const rast__grid gl = *g; /* (not reloaded every edge: aet.h) */
     const rast__delta_cols d = *dc;
+    const rast__vshift v = rast__vshift_of(&gl);
+    /* the clip's rows, biased as the vertices' rows are (rast__vshift) */
+    const int32_t brow0 = row0 + v.kb, brow1 = row1 + v.kb;
     uint32_t k, base;
     for (k = 0, base = 0; k < poly->nrings; base += poly->ring_sizes[k], k++) {
-        /* edge ia -> ib (as rast__aet_prepare_edges walks them), the row
-         * of ib found once and carried to the next edge */
+        /* edge ib - 1 -> ib (as rast__aet_prepare_edges walks them; the
+         * ring's last edge to its first vertex), each vertex's row found
+         * once: the vertices of the row of the one before are passed by a
+         * loop of their own (an edge between two vertices of one row
+         * crosses none: most of a paragraph's) */
         const uint32_t stop = base + poly->ring_sizes[k];
-        uint32_t ia, ib;
-        int32_t ra, rb, r0;
+        uint32_t ib;
+        int32_t ra, rb = 0, r0;
+        /* the rows of the crossing edges of one direction that follow each
+         * other (from row cs, going down when cdown): each row between
+         * their ends is crossed by one of them, exactly once, so the
+         * crossings a row are counted a piece at a time, not an edge at a
+         * time (starts: rast__aet_delta_now) */
+        int32_t cs, cdown = -1;
         if (stop == base) continue;
-        ra = r0 = (int32_t)rast__row_at_or_after(2 * (int64_t)pts[base].y, &gl);
-        for (ia = base, ib = base + 1; ia < stop; ia++, ib++, ra = rb) {
+        ra = r0 = cs = rast__vshift_row(pts[base].y, v.ky, v.shift);
+        for (ib = base + 1;; ib++) {
+            const rast_point *pa, *pb;
             int32_t first, end, c;
             unsigned char dir;
+            while (ib < stop && (rb = rast__vshift_row(pts[ib].y, v.ky, v.shift)) == ra) ib++;
             if (ib == stop) {
-                ib = base;
+                if (ra == r0) break;
                 rb = r0;
+                pb = &pts[base];
             } else {
-                rb = (int32_t)rast__row_at_or_after(2 * (int64_t)pts[ib].y, &gl);
+                pb = &pts[ib];
             }
-            if (ra == rb) continue;
+            pa = &pts[ib - 1];
+            if (starts && (ra < rb) != cdown) {
+                first = (cs < ra ? cs : ra);
+                end = cs ^ ra ^ first;
+                first = first < brow0 ? brow0 : first;
+                end = end > brow1 ? brow1 : end;
+                if (first < end) {
+                    starts[first - brow0]++;
+                    starts[end - brow0]--;
+                }
+                cs = ra;
+                cdown = ra < rb;
+            }
             first = ra < rb ? ra : rb;
             end = ra ^ rb ^ first;
-            first = first < row0 ? row0 : first;
-            end = end > row1 ? row1 : end;
-            if (first >= end) continue;
-            if (starts) {
-                starts[first - row0]++;
-                starts[end - row0]--;
-            }
-            dir = (unsigned char)(d.mask == 1 || ra < rb ? 1 : 0xFF);
-            c = rast__vertex_col(pts[ia].x, &gl);
-            if (c != rast__vertex_col(pts[ib].x, &gl)) {
-                /* (the ends ordered as rast__aet_edge_rows orders them) */
-                const ptrdiff_t swap = ((ptrdiff_t)ib - (ptrdiff_t)ia) & -(ptrdiff_t)(ra > rb);
-                const rast_point *top = &pts[ia] + swap, *bottom = &pts[ib] - swap;
-                if (end - first == 1) {
-                    int64_t e;
-                    c = rast__edge_first_col(*top, *bottom, first, &gl, &e);
-                } else {
-                    rast__edge ed;
-                    rast__edge_start_inline(&ed, *top, *bottom, ra < rb ? 1 : -1, first, end, &gl);
-                    if (!inplace) {
-                        rast__delta_walk(&ed, buf, row0, row1, d.stride, d.col0, d.bits, dir, 1, 1);
+            first = (first < brow0 ? brow0 : first) - v.kb;
+            end = (end > brow1 ? brow1 : end) - v.kb;
+            if (first < end) {
+                dir = (unsigned char)(d.mask == 1 || ra < rb ? 1 : 0xFF);
+                c = rast__vshift_row(pa->x, v.kx, v.shift);
+                if (c != rast__vshift_row(pb->x, v.kx, v.shift)) {
+                    /* (the ends ordered as rast__aet_edge_rows orders them) */
+                    const ptrdiff_t swap = (pb - pa) & -(ptrdiff_t)(ra > rb);
+                    const rast_point *top = pa + swap, *bottom = pb - swap;
+                    if (end - first == 1) {
+                        int64_t e;
+                        c = rast__edge_first_col(*top, *bottom, first, &gl, &e) + v.kb;
                     } else {
-                        rast__delta_walk(&ed, in, row0, mid, d.bits, d.col0, d.bits, dir, 1, 1);
-                        if (ed.end > mid) rast__delta_walk_last(&ed, buf, &d);
+                        rast__edge ed;
+                        rast__edge_start_inline(&ed, *top, *bottom, ra < rb ? 1 : -1, first, end, &gl);
+                        if (!inplace) {
+                            rast__delta_walk(&ed, buf, row0, row1, d.stride, d.col0, d.bits, dir, 1, 1);
+                        } else {
+                            rast__delta_walk(&ed, in, row0, mid, d.bits, d.col0, d.bits, dir, 1, 1);
+                            if (ed.end > mid) rast__delta_walk_last(&ed, buf, &d);
+                        }
+                        goto next;
                     }
-                    continue;
                 }
+                rast__delta_col(in, buf, row0, mid, first, end, d.bits, d.stride, c - v.kb - d.col0, dir,
+                                inplace);
             }
-            rast__delta_col(in, buf, row0, mid, first, end, d.bits, d.stride, c - d.col0, dir, inplace);
+        next:
+            if (ib == stop) break;
+            ra = rb;
+        }
+        if (starts) { /* the ring's last piece, to its first vertex's row */
+            int32_t first = cs < r0 ? cs : r0, end = cs ^ r0 ^ first;
+            first = first < brow0 ? brow0 : first;
+            end = end > brow1 ? brow1 : end;
+            if (first < end) {
+                starts[first - brow0]++;
+                starts[end - brow0]--;
+            }
         }
     }
 }
@@ -898,6 +956,128 @@ static inline void rast__aet_few_span(void *user, uint32_t index, int32_t y, int
         rast__sink_span(s, y, x0, x1);
 }
 
+/* ---- one ring that every row crosses twice: its two sides ------------------
+ * A ring whose vertices' rows (rast__row_at_or_after of their y), taken
+ * round it, go down once and up once (plateaus aside: a y-monotone ring,
+ * every convex one among them) has two sides from its top row to its
+ * bottom one, each crossing every row between them exactly once (an
+ * edge crosses the rows [its upper end's, its lower end's), so the edges
+ * of a side, one after the other, cross each row once, and an edge
+ * between two vertices of one row none).  Each row then has those two
+ * crossings and no other: the AET's runs (aet.h) are the columns from the
+ * lesser to the greater (empty when equal), under either rule.  So the
+ * walk needs no table, no slots and no sort: the two sides' edges are
+ * set up in turn as the rows reach them (the same DDA, from the same
+ * first row, as the AET's: the same columns), stepped a row at a time,
+ * and each row's run written; the "loop" family's small rings
+ * (bench/families.py, one call each) spent three quarters of their fill
+ * on the slots' upkeep.  When: one ring of at most RAST__AET_FEW
+ * vertices whose rows change direction exactly twice round it (counted
+ * before anything is written).  Returns 1 when it filled, 0 when the ring
+ * is not such a ring (nothing done). */
+typedef struct rast__side {
+    rast__edge ed; /* the current edge: its column ed.x, its rows up to ed.end */
+    uint32_t at;   /* its upper vertex */
+} rast__side;
+
+/* Side s (vertices in the order at, at + step, ... modulo n) at row j, a
+ * row it crosses: its edge there set up from row j (only its column when
+ * that is its last row). */
+RAST__HOT void rast__side_at(rast__side *s, const rast_point *pts, const int32_t *vrow, uint32_t n,
+                                 uint32_t step, int32_t j, const rast__grid *g)
+{
+    uint32_t a = s->at, b = a + step >= n ? a + step - n : a + step;
+    while (vrow[b] <= j) {
+        a = b;
+        b = a + step >= n ? a + step - n : a + step;
+    }
+    s->at = a;
+    if (vrow[b] - j == 1) {
+        int64_t e;
+        s->ed.x = rast__edge_first_col(pts[a], pts[b], j, g, &e);
+        s->ed.end = j + 1;
+    } else {
+        rast__edge_start_inline(&s->ed, pts[a], pts[b], 1, j, vrow[b], g);
+    }
+}
+
+RAST__APART int rast__aet_sides(const rast_point *pts, uint32_t n, const rast__grid *g, const rast_rect *clip,
+                                rast__sink *sink)
+{
+    const rast__vshift v = rast__vshift_of(g);
+    const int32_t c0 = clip->x0, c1 = clip->x1;
+    /* the sink's fast kind in locals (the pixels' stores may alias the
+     * sink, which made every row reload it: rast__rows_of) */
+    unsigned char *const direct = sink->direct;
+    const ptrdiff_t stride = sink->stride;
+    const int value = sink->value;
+    int32_t vrow[RAST__AET_FEW], j, j1, rp;
+    uint32_t i, top = 0, bottom = 0, turns = 0, at = 0;
+    /* the direction (1 down) of the last edge that crosses a row so far,
+     * and of the first one (edge at - 1 -> at), -1 before there is one */
+    int last = -1, first = -1;
+    rast__side l, r;
+    if (n < 3 || n > RAST__AET_FEW) return 0;
+    /* each vertex's row; the turns at edge i - 1 -> i (the last edge,
+     * n - 1 -> 0, first), its upper or lower end a top or a bottom */
+    rp = rast__vshift_row(pts[n - 1].y, v.ky, v.shift) - v.kb;
+    for (i = 0; i < n; i++) {
+        const int32_t row = rast__vshift_row(pts[i].y, v.ky, v.shift) - v.kb;
+        vrow[i] = row;
+        if (row != rp) {
+            const int down = row > rp;
+            if (last < 0) {
+                first = down;
+                at = i;
+            } else if (down != last) {
+                turns++;
+                if (down) top = i ? i - 1 : n - 1;
+                else bottom = i ? i - 1 : n - 1;
+            }
+            last = down;
+        }
+        rp = row;
+    }
+    if (first < 0) return 1; /* (every vertex on one row: no row crossed) */
+    if (first != last) { /* the turn at the first crossing edge */
+        turns++;
+        if (first) top = at ? at - 1 : n - 1;
+        else bottom = at ? at - 1 : n - 1;
+    }
+    if (turns != 2) return 0;
+    j = vrow[top] > clip->y0 ? vrow[top] : clip->y0;
+    j1 = vrow[bottom] < clip->y1 ? vrow[bottom] : clip->y1;
+    if (j >= j1) return 1;
+    l.at = r.at = top;
+    /* (a side's edge of one row is its column alone, never stepped:
+     * the rest set for the compiler, which cannot tell) */
+    l.ed.e = l.ed.dr = l.ed.q = r.ed.e = r.ed.dr = r.ed.q = 0;
+    l.ed.step = r.ed.step = 0;
+    rast__side_at(&l, pts, vrow, n, 1, j, g);
+    rast__side_at(&r, pts, vrow, n, n - 1, j, g);
+    for (;;) {
+        int32_t x0, x1;
+        x0 = l.ed.x < r.ed.x ? l.ed.x : r.ed.x;
+        x1 = l.ed.x ^ r.ed.x ^ x0;
+        x0 = x0 < c0 ? c0 : x0;
+        x1 = x1 > c1 ? c1 : x1;
+        if (x0 < x1) {
+            if (direct)
+                rast__run8(direct + (ptrdiff_t)j * stride + x0, (size_t)(x1 - x0), (unsigned char)value,
+                           RAST__LANES_LO * (unsigned char)value);
+            else
+                rast__sink_span(sink, j, x0, x1);
+        }
+        if (++j == j1) break;
+        if (j == l.ed.end) rast__side_at(&l, pts, vrow, n, 1, j, g);
+        else rast__edge_step(&l.ed);
+        if (j == r.ed.end) rast__side_at(&r, pts, vrow, n, n - 1, j, g);
+        else rast__edge_step(&r.ed);
+    }
+    rast__sink_flush(sink);
+    return 1;
+}
+
 /* The walk's runs to the sink: 1, or 0 (nothing done) when the scratch
  * is too small for it.  (Apart from rast__aet_fill_by: inlined there, it
  * cost the winding deltas' setup loop a register, ~24,000 instructions of
@@ -920,7 +1100,8 @@ rast_status rast__aet_fill_by(const rast_polygon *poly, uint32_t npoints, const 
     rast_status st = RAST_OK;
     size_t room = (size_t)npoints * sizeof(rast__edge);
     if (how == RAST__AET_BY_RULE && npoints <= RAST__AET_FEW && clip->x1 - clip->x0 <= RAST_MAX_DIM &&
-        rast__aet_few(poly, npoints, g, rule, clip, sink, arena))
+        ((poly->nrings == 1 && rast__aet_sides(poly->points, npoints, g, clip, sink)) ||
+         rast__aet_few(poly, npoints, g, rule, clip, sink, arena)))
         return RAST_OK;
     if (!(how == RAST__AET_BY_RULE && poly->nrings >= 2 &&
           npoints <= 8 * (uint64_t)poly->nrings &&

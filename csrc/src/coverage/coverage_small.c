@@ -31,11 +31,15 @@
  * once), a level's numerator below 2^62.  Not in size-optimised builds.
  */
 #include "coverage.h"
+#include "../base/bits.h" /* rast__ctz64 */
 
 #if !defined(__OPTIMIZE_SIZE__)
 
 #define RAST__CS_K 26
 #define RAST__CS_ONE ((int64_t)1 << RAST__CS_K)
+/* A box at most this wide has its rows' levels made column by column
+ * (rast__cov_small) */
+#define RAST__CS_NARROW 12
 #define RAST__CS_FULL ((int64_t)1 << (2 * RAST__CS_K + 1)) /* a pixel's area, in the cells' units */
 
 /* An edge, top end first, in units of 2^-K pixel from the box's corner;
@@ -103,12 +107,19 @@ static void rast__cs_step_next(rast__cs_step *st)
     }
 }
 
+/* The cells of one row that the pieces of one direction's edges have
+ * written: lo .. hi, and hi + 1 (the rest of a piece's height; lo > hi:
+ * none). */
+typedef struct rast__cs_cols {
+    int32_t lo, hi;
+} rast__cs_cols;
+
 /* Edge e into the rows of cells acc (a row every `stride` words, the
  * first the box's top): each row's piece split at the column lines it
  * crosses.  The abscissae at the row lines and the ordinates at the
  * column lines, floor(.) of their exact values, by two steppers (a
  * division or two an edge, not one a crossing). */
-static void rast__cs_walk(int64_t *acc, int32_t stride, const rast__cs_edge *e)
+static void rast__cs_walk(int64_t *acc, int32_t stride, const rast__cs_edge *e, rast__cs_cols *cols)
 {
     const int64_t adx = e->dx < 0 ? -e->dx : e->dx;
     int64_t r = e->y0 >> RAST__CS_K, xa = e->x0, ya = e->y0;
@@ -121,7 +132,8 @@ static void rast__cs_walk(int64_t *acc, int32_t stride, const rast__cs_edge *e)
         const int64_t rt = r << RAST__CS_K, yb = e->y1 < rt + RAST__CS_ONE ? e->y1 : rt + RAST__CS_ONE;
         const int64_t xb = yb == e->y1 ? e->x1 : xr.v, cb = xb >> RAST__CS_K, tb = yb - rt;
         int64_t *row = acc + r * stride;
-        int64_t c = xa >> RAST__CS_K, f = xa - (c << RAST__CS_K), t = ya - rt, tx;
+        const int64_t c0 = xa >> RAST__CS_K;
+        int64_t c = c0, f = xa - (c << RAST__CS_K), t = ya - rt, tx;
         if (c != cb && !have_t) { /* the first column line crossed */
             rast__cs_step_init(&ty, e->y0, ((cx << RAST__CS_K) - e->x0) * (e->dx > 0 ? e->dy : -e->dy),
                                   RAST__CS_ONE * e->dy, adx);
@@ -146,6 +158,12 @@ static void rast__cs_walk(int64_t *acc, int32_t stride, const rast__cs_edge *e)
             rast__cs_step_next(&ty);
         }
         rast__cs_add(row, cb, f, xb - (cb << RAST__CS_K), t, tb, e->s);
+        if (cols) {
+            rast__cs_cols *k = &cols[2 * r + (e->s < 0)];
+            const int32_t lo = (int32_t)(c0 < cb ? c0 : cb), hi = (int32_t)(c0 < cb ? cb : c0);
+            k->lo = lo < k->lo ? lo : k->lo;
+            k->hi = hi > k->hi ? hi : k->hi;
+        }
         if (yb == e->y1) return;
         xa = xb;
         ya = yb;
@@ -153,20 +171,43 @@ static void rast__cs_walk(int64_t *acc, int32_t stride, const rast__cs_edge *e)
     }
 }
 
-/* Where a row's levels not 0 lie: columns lo .. hi - 1 of the box (the
- * first and the last), n of them (0: none, lo and hi not read). */
-typedef struct rast__cs_run {
-    int32_t lo, hi, n;
-} rast__cs_run;
-
-/* Level l of column c (the columns left of it noted) into *u, without a
- * branch (a scan for the ends after the row mispredicted: 7% of the
- * call's time): lo counts the columns before the first level not 0. */
-static inline void rast__cs_note(rast__cs_run *u, int32_t c, unsigned l)
+/* Where a row's levels not 0 lie: bit c for column c of the box
+ * (RAST__CS_DIM <= 64), set without a branch (a scan for the ends after
+ * the row mispredicted: 7% of the call's time; a count and the ends kept
+ * a column cost ~9 instructions, a bit 4); the hand-on finds the first,
+ * the end of its run and whether it is the only one from them. */
+static inline uint64_t rast__cs_bit(int32_t c, unsigned l)
 {
-    u->n += l != 0;
-    u->lo += u->n == 0;
-    u->hi = l ? c + 1 : u->hi;
+    return (uint64_t)(l != 0) << c;
+}
+
+/* The bits of columns c0 .. c1 - 1, all of level l. */
+static inline uint64_t rast__cs_bits(int32_t c0, int32_t c1, unsigned l)
+{
+    return l ? ((uint64_t)1 << c1) - ((uint64_t)1 << c0) : 0;
+}
+
+/* The level of running sum v, min(floor(255 a + 1/2), 255) of its
+ * magnitude a, and *near set when its fraction lies within win of a tie
+ * (0 or 1), without a branch.  A pixel outside (a = 0) or whole
+ * (FULL <= a < FULL + 16 2^(K + 4)) has the fraction 1/2 (2^(2K)) plus
+ * less than 2^(K + 16), never within win (< 2^(K + 17)) of 0 or 1: no
+ * tie; its level is 0, or 255 once min(., 255) has cut it. */
+static inline unsigned rast__cs_level(int64_t v, uint64_t win, int32_t *near)
+{
+    const uint64_t a = (uint64_t)(v < 0 ? -v : v), num = a * 255 + RAST__CS_FULL / 2;
+    const uint64_t l = num >> (2 * RAST__CS_K + 1);
+    *near |= ((num - win - 1) & (RAST__CS_FULL - 1)) >= (uint64_t)RAST__CS_FULL - 2 * win - 1;
+    return (unsigned)(l < 255 ? l : 255);
+}
+
+/* p[0 .. n) = l, n > 0, by words of 8 bytes: up to 7 more bytes written
+ * (lv's columns further right, written after, or its 8 spare bytes). */
+static inline void rast__cs_fill(unsigned char *p, int32_t n, unsigned l)
+{
+    const uint64_t word = (uint64_t)l * 0x0101010101010101u;
+    int32_t i;
+    for (i = 0; i < n; i += 8) memcpy(p + i, &word, 8);
 }
 
 /* The box's levels lv[] (a row of its width after another), every one
@@ -176,7 +217,7 @@ static inline void rast__cs_note(rast__cs_run *u, int32_t c, unsigned l)
  * straight to the painter's levels entry, the one call rast__cov_row_done
  * makes of it, without its scan (~150 instructions a row of the loop
  * family's, a third of the hand-on, issue 33); any other, through it. */
-static void rast__cs_hand_on(const unsigned char *lv, const rast__cs_run *u, const rast_rect *box,
+static void rast__cs_hand_on(const unsigned char *lv, const uint64_t *u, const rast_rect *box,
                              const rast__cov_out *o)
 {
     const int32_t w = box->x1 - box->x0;
@@ -190,13 +231,17 @@ static void rast__cs_hand_on(const unsigned char *lv, const rast__cs_run *u, con
     row.clip.x0 = x0;
     row.clip.x1 = x1;
     for (y = y0; x0 < x1 && y < y1; y++) {
-        const rast__cs_run *r = &u[y - box->y0];
+        const uint64_t bits = u[y - box->y0];
         const unsigned char *l = lv + (y - box->y0) * w;
-        int32_t a, b;
-        if (!r->n) continue;
-        a = box->x0 + r->lo > x0 ? box->x0 + r->lo : x0;
-        b = box->x0 + r->hi < x1 ? box->x0 + r->hi : x1;
-        if (r->n == r->hi - r->lo && (!p->full || b - a < RAST__COV_FULL_MIN)) {
+        uint64_t run;
+        int32_t a, b, lo, n;
+        if (!bits) continue;
+        lo = (int32_t)rast__ctz64(bits);
+        run = bits >> lo;
+        n = (int32_t)rast__ctz64(~run); /* (the run's length: under 64) */
+        a = box->x0 + lo > x0 ? box->x0 + lo : x0;
+        b = box->x0 + lo + n < x1 ? box->x0 + lo + n : x1;
+        if (!(run >> n) && (!p->full || b - a < RAST__COV_FULL_MIN)) {
             if (a < b) p->levels(p->user, y, a, b, l + (a - box->x0));
         } else {
             row.base = (unsigned char *)l + (x0 - box->x0);
@@ -208,14 +253,16 @@ static void rast__cs_hand_on(const unsigned char *lv, const rast__cs_run *u, con
 int rast__cov_small(const rast_polygon *poly, int32_t s, const rast__cov_out *o, const rast_rect *box)
 {
     rast__cs_edge e[RAST__CS_EDGES];
-    unsigned char lv[RAST__CS_DIM * RAST__CS_DIM];
+    unsigned char lv[RAST__CS_DIM * RAST__CS_DIM + 8]; /* (+ 8: rast__cs_fill's last word) */
     int64_t acc[RAST__CS_DIM * (RAST__CS_DIM + 2)];
+    rast__cs_cols cols[2 * RAST__CS_DIM];
     int32_t m[RAST__CS_DIM + 1]; /* the edges a row meets, as differences from the row above */
-    rast__cs_run runs[RAST__CS_DIM];
+    uint64_t runs[RAST__CS_DIM];
     const rast_point *p = poly->points;
     const uint32_t n = poly->ring_sizes[0];
     const int32_t w = box->x1 - box->x0, h = box->y1 - box->y0, sh = RAST__CS_K - s;
     const int64_t bx = (int64_t)box->x0 * ((int64_t)1 << s), by = (int64_t)box->y0 * ((int64_t)1 << s);
+    const int stretches = w > RAST__CS_NARROW;
     uint32_t i, ne = 0;
     int32_t r, c, mr;
     if (w <= 0 || h <= 0) return 1; /* no area: nothing to paint */
@@ -235,38 +282,68 @@ int rast__cov_small(const rast_polygon *poly, int32_t s, const rast__cov_out *o,
     }
     memset(acc, 0, (size_t)h * (size_t)(w + 2) * sizeof(acc[0]));
     memset(m, 0, (size_t)(h + 1) * sizeof(m[0]));
+    for (r = 0; stretches && r < 2 * h; r++) {
+        cols[r].lo = RAST__CS_DIM + 2;
+        cols[r].hi = -1;
+    }
     for (i = 0; i < ne; i++) {
         /* its rows: y0 >> K to the last r with r 2^K < y1 (0 <= y0 < y1 <= h 2^K) */
-        rast__cs_walk(acc, w + 2, &e[i]);
+        rast__cs_walk(acc, w + 2, &e[i], stretches ? cols : NULL);
         m[e[i].y0 >> RAST__CS_K]++;
         m[((e[i].y1 - 1) >> RAST__CS_K) + 1]--;
     }
     for (r = 0, mr = 0; r < h; r++) {
         const int64_t *cells = acc + r * (w + 2);
+        unsigned char *lr = lv + r * w;
         /* the window round a tie: M times the row's edges' bound, and the
          * engines' own error (below 2^-50 pixel: 2^3 units) */
         const uint64_t win = 255 * (uint64_t)(mr += m[r]) * ((uint64_t)1 << (RAST__CS_K + 4)) + 4096;
-        rast__cs_run run = {0, 0, 0};
+        uint64_t run = 0;
         int64_t v = 0;
         int32_t near = 0;
-        /* No branch a pixel (the test of none, part or whole mispredicted
-         * along every side; the pass's time 0.30 -> 0.26 ms on the loop
-         * family): every pixel's level and tie test made the same way.  A
-         * pixel outside (a = 0) or whole (FULL <= a < FULL + 16 2^(K + 4))
-         * has the fraction 1/2 (2^(2K)) plus less than 2^(K + 16), never
-         * within win (< 2^(K + 17)) of 0 or 1: no tie; its level is 0, or
-         * 255 once min(., 255) has cut it. */
-        for (c = 0; c < w; c++) {
-            uint64_t a, num, l;
-            v += cells[c];
-            a = (uint64_t)(v < 0 ? -v : v);
-            num = a * 255 + RAST__CS_FULL / 2;
-            /* the fraction within win of 0 or of 1: near a tie, the engines' */
-            near |= ((num - win - 1) & (RAST__CS_FULL - 1)) >= (uint64_t)RAST__CS_FULL - 2 * win - 1;
-            l = num >> (2 * RAST__CS_K + 1);
-            l = l < 255 ? l : 255;
-            lv[r * w + c] = (unsigned char)l;
-            rast__cs_note(&run, c, (unsigned)l);
+        if (!stretches) { /* a narrow box: column by column */
+            for (c = 0; c < w; c++) {
+                unsigned l;
+                v += cells[c];
+                l = rast__cs_level(v, win, &near);
+                lr[c] = (unsigned char)l;
+                run |= rast__cs_bit(c, l);
+            }
+        } else {
+            /* The cells each direction's pieces wrote, first the one
+             * further left, as one stretch when they meet: every other
+             * cell of the row is 0, so the running sum, the level and the
+             * tie test are the same on each column between stretches,
+             * made once. */
+            const rast__cs_cols *k = &cols[2 * r];
+            int32_t seg[4], ns, j;
+            c = k[1].lo < k[0].lo;
+            seg[0] = k[c].lo;
+            seg[1] = k[c].hi + 2;
+            seg[2] = k[1 - c].lo;
+            seg[3] = k[1 - c].hi + 2;
+            if (seg[2] <= seg[1]) {
+                seg[1] = seg[3] > seg[1] ? seg[3] : seg[1];
+                ns = 2;
+            } else {
+                ns = 4;
+            }
+            for (c = 0, j = 0; j <= ns; j += 2) {
+                const int32_t s0 = j < ns && seg[j] < w ? seg[j] : w, s1 = j < ns && seg[j + 1] < w ? seg[j + 1] : w;
+                if (c < s0) { /* columns c .. s0 - 1: v */
+                    const unsigned l = rast__cs_level(v, win, &near);
+                    rast__cs_fill(lr + c, s0 - c, l);
+                    run |= rast__cs_bits(c, s0, l);
+                    c = s0;
+                }
+                for (; c < s1; c++) {
+                    unsigned l;
+                    v += cells[c];
+                    l = rast__cs_level(v, win, &near);
+                    lr[c] = (unsigned char)l;
+                    run |= rast__cs_bit(c, l);
+                }
+            }
         }
         if (near) return 0;
         runs[r] = run;
@@ -279,9 +356,9 @@ int rast__cov_small(const rast_polygon *poly, int32_t s, const rast__cov_out *o,
  * columns (k = 2 or 4 a pixel): the level of the magnitude of each
  * pixel's k running sums. */
 static inline void rast__cs_counts(const signed char *d, int32_t w, int32_t k, const uint64_t *level,
-                                      unsigned char *lv, rast__cs_run *u)
+                                      unsigned char *lv, uint64_t *u)
 {
-    rast__cs_run run = {0, 0, 0};
+    uint64_t run = 0;
     int32_t v = 0, c, sum;
     for (c = 0; c < w; c++, d += k) {
         /* the k running sums: k v plus each difference times the sums it reaches */
@@ -293,7 +370,7 @@ static inline void rast__cs_counts(const signed char *d, int32_t w, int32_t k, c
             v += d[0] + d[1];
         }
         lv[c] = (unsigned char)level[sum < 0 ? -sum : sum];
-        rast__cs_note(&run, c, lv[c]);
+        run |= rast__cs_bit(c, lv[c]);
     }
     *u = run;
 }
@@ -316,7 +393,7 @@ void rast__cov_small_ss(const rast_polygon *poly, int32_t s, int32_t kb, rast_sa
 {
     signed char d[RAST__CS_DIM * (RAST__CS_DIM * 4 + 2)];
     unsigned char lv[RAST__CS_DIM * RAST__CS_DIM];
-    rast__cs_run u[RAST__CS_DIM];
+    uint64_t u[RAST__CS_DIM];
     const rast_point *p = poly->points;
     const uint32_t n = poly->ring_sizes[0];
     const int32_t w = box->x1 - box->x0, h = box->y1 - box->y0, k = 1 << kb, fw = w * k + 2;

@@ -99,11 +99,14 @@ rast_status rast__cov_acc_shared(rast__cedge *e, uint32_t n, int32_t s, rast_fil
                                  const rast__cov_out *o, rast__arena *arena);
 /* "accumulate" of a polygon (tris NULL) or of the ntris triangles tris[]
  * (as rast__cov_edges_triangles takes them), its edges' shared sides
- * dropped first when `shared` (rast__cov_acc_shared's): rast__cov_acc of
+ * dropped first when `shared` (rast__cov_acc_shared's; a polygon's, when
+ * `shared` is RAST__ACC_LOOK, if a sample of its edges finds many of
+ * them shared: a map's borders): rast__cov_acc of
  * the edges rast__cov_edges_polygon or rast__cov_edges_triangles would
  * make, read straight from the vertices (no rast__cedge written: the
  * walk's own records), in room, the edges' room (a rast__cedge a vertex),
  * the same levels.  Not in size-optimised builds (coverage_acc.c). */
+#define RAST__ACC_LOOK 2
 rast_status rast__cov_acc_points(const rast_polygon *poly, const rast_point *tris, uint32_t ntris, int shared,
                                  int32_t s, rast_fill_rule rule, const rast__cov_out *o, rast__cedge *room,
                                  rast__arena *arena);

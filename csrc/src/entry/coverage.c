@@ -292,8 +292,11 @@ static rast_status rast__cov_run(const rast_polygon *poly, const rast_point *tri
         /* "accumulate": its walk's records straight from the vertices
          * (coverage_acc.c), the same edges and levels as below */
         if (RAST__IS_ACC(opts->method) && rast__cov_acc_may(o, s))
-            return rast__cov_acc_points(poly, tris, ntris, RAST__COV_SHARED(poly, tris, npoints), s, rule, o, e,
-                                        &arena);
+            return rast__cov_acc_points(poly, tris, ntris,
+                                        RAST__COV_SHARED(poly, tris, npoints) ? 1
+                                        : poly->nrings >= 2 ? RAST__ACC_LOOK /* (a map's borders?) */
+                                                            : 0,
+                                        s, rule, o, e, &arena);
         /* "area" of a polygon that is plain (coverage_plain.c: there the
          * accumulation is the coverage), found from its points alone: its
          * accumulation, from them too; the test where the whole polygon's

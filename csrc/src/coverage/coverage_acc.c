@@ -390,8 +390,10 @@ static int32_t rast__acc_thru(const rast__aedge *e, const rast__acc *a)
 }
 
 /* e's part in row j (rel0 = e's top - the row's): rast__acc_ends, then
- * rast__acc_part; inline in the rows' walk, out of line in the bands'
- * (rast__acc_row_part), where it is the rare way */
+ * rast__acc_part; inline in both walks but in size-optimised builds
+ * (out of line in the bands', as the rare way, it was a quarter of the
+ * instructions of 10,000 small triangles, two parts an edge: a call and
+ * its registers ~35 of the ~220 of a part) */
 RAST__HOT void rast__acc_row_part_in(rast__acc *a, rast__aedge *e, int32_t j, int64_t rel0, int32_t sx, int count)
 {
     int64_t xa, xb;
@@ -400,10 +402,15 @@ RAST__HOT void rast__acc_row_part_in(rast__acc *a, rast__aedge *e, int32_t j, in
     rast__acc_part(a, e, -rel0 * ((int64_t)1 << a->hq), xa, ta, xb, tb, e->dir, sx, count);
 }
 
+#if defined(__OPTIMIZE_SIZE__) /* (there one copy, out of line) */
 RAST__APART void rast__acc_row_part(rast__acc *a, rast__aedge *e, int32_t j, int64_t rel0)
 {
     rast__acc_row_part_in(a, e, j, rel0, RAST__ACC_SX, 0);
 }
+#define RAST__ACC_ROW_PART(a, e, j, rel0) rast__acc_row_part(a, e, j, rel0)
+#else
+#define RAST__ACC_ROW_PART(a, e, j, rel0) rast__acc_row_part_in(a, e, j, rel0, RAST__ACC_SX, 0)
+#endif
 
 /* A whole column's piece in rast__acc_cols_in: the column stepper's
  * remainder r moved a column (qtsr), the column's height qts or qts + 1
@@ -637,7 +644,8 @@ RAST__APART void rast__acc_dband_l(rast__acc *v, rast__aedge *e, int64_t off, in
  * clip (rast__acc_thru), else below any.  The rows that it runs through,
  * with its row stepper at the row's top (qrow; as the part in the row
  * above leaves it) go the quick way (rast__acc_run_rows); every other
- * row's part goes to rast__acc_row_part. */
+ * row's part goes to rast__acc_row_part_in (a small triangle's edges:
+ * their first and last rows; RAST__ACC_ROW_PART). */
 RAST__APART void rast__acc_edge(rast__acc *v, const unsigned char *ok, rast__aedge *e, int32_t j0,
                                 int32_t r0, int32_t r1, int32_t thru)
 {
@@ -656,7 +664,7 @@ RAST__APART void rast__acc_edge(rast__acc *v, const unsigned char *ok, rast__aed
                           : rast__acc_run_rows(v, ok, e, r, rend, off, 0);
             e->qrow = j0 + r;
         } else {
-            rast__acc_row_part(&v[r], e, j, rel0);
+            RAST__ACC_ROW_PART(&v[r], e, j, rel0);
             r++;
         }
     }
@@ -1672,6 +1680,7 @@ static void rast__acc_exact(const rast__acc_walk *w, const int32_t *ix, int32_t 
 }
 #endif
 
+#if defined(__OPTIMIZE_SIZE__) /* (speed builds: rast__acc_band_edges) */
 /* The edges of rows j0 .. j1 - 1 in row[]: of its nrow (returns the new
  * count), those that end above j0 dropped (when one does: *drop, the least
  * last row among them, is above j0), those that start above row j1 taken
@@ -1699,6 +1708,54 @@ static int32_t rast__acc_edges_of(const rast__acc_walk *w, int32_t nrow, uint32_
     }
     return nrow;
 }
+#endif
+
+#if !defined(__OPTIMIZE_SIZE__)
+/* rast__acc_edges_of for the band of rows j0 .. j1 - 1 (j1 - j0 <=
+ * RAST__ACC_BAND), its rows' parts counted in the same pass: cnt[r]
+ * (cleared here) + cnt[0 .. r - 1] is row j0 + r's (an edge from its
+ * first row in the band on, less from the row after its last).  An edge
+ * kept from the bands above starts above j0.  (Two passes over the band's
+ * edges, each reading last[], were a fifth of the band walk's own
+ * instructions on 10,000 small triangles.) */
+static int32_t rast__acc_band_edges(const rast__acc_walk *w, int32_t nrow, uint32_t *next, int32_t *drop, int32_t j0,
+                                    int32_t j1, int32_t *cnt)
+{
+    int32_t *const row = w->row, *const last = w->last, *const order = w->order, *const key = w->key;
+    int32_t k, q, r, l, low = *drop;
+    for (r = 0; r <= j1 - j0; r++) cnt[r] = 0;
+    if (j0 > low) {
+        low = INT32_MAX;
+        for (k = 0, q = 0; k < nrow; k++) {
+            l = last[row[k]];
+            if (l >= j0) {
+                row[q++] = row[k];
+                low = l < low ? l : low;
+                if (l < j1 - 1) cnt[l - j0 + 1]--;
+            }
+        }
+        nrow = q;
+    } else {
+        for (k = 0; k < nrow; k++) {
+            l = last[row[k]];
+            if (l < j1 - 1) cnt[l - j0 + 1]--;
+        }
+    }
+    cnt[0] += nrow;
+    for (; *next < w->n && key[order[*next]] + w->ja < j1; ++*next) {
+        const int32_t ek = order[*next], f = key[ek] + w->ja;
+        l = last[ek];
+        if (l >= j0) {
+            row[nrow++] = ek;
+            low = l < low ? l : low;
+            cnt[f > j0 ? f - j0 : 0]++;
+            if (l < j1 - 1) cnt[l - j0 + 1]--;
+        }
+    }
+    *drop = low;
+    return nrow;
+}
+#endif
 
 #if defined(__OPTIMIZE_SIZE__)
 /* Row ja to jb one at a time, each edge's part deposited as it comes, into
@@ -2203,16 +2260,20 @@ RAST__APART void rast__acc_by_bands(const rast__acc_walk *w, rast__acc *v)
     int clean = 0; /* cover[], area[], bits[] and w->exact[] cleared */
     for (j0 = ja; j0 < w->jb; j0 = j1) {
         j1 = w->jb - j0 > RAST__ACC_BAND ? j0 + RAST__ACC_BAND : w->jb;
-        nrow = rast__acc_edges_of(w, nrow, &next, &drop, j0, j1);
         /* each row's parts: how many, and whether they are few enough to
          * accumulate (their bound) and many enough to read every cell
          * (a part or more for every RAST__ACC_DENSE_BAND columns: no bits) */
+#if !defined(__OPTIMIZE_SIZE__)
+        nrow = rast__acc_band_edges(w, nrow, &next, &drop, j0, j1, cnt);
+#else
+        nrow = rast__acc_edges_of(w, nrow, &next, &drop, j0, j1);
         for (r = 0; r <= j1 - j0; r++) cnt[r] = 0;
         for (k = 0; k < nrow; k++) {
             const int32_t f = key[row[k]] + ja;
             cnt[f > j0 ? f - j0 : 0]++;
             if (last[row[k]] < j1 - 1) cnt[last[row[k]] - j0 + 1]--;
         }
+#endif
         for (r = 0; r < j1 - j0; r++) {
             if (r) cnt[r] += cnt[r - 1];
             ok[r] = (unsigned char)(cnt[r] < RAST__ACC_MAXN && ((uint64_t)cnt[r] + 1) * m < ((uint64_t)1 << 25));

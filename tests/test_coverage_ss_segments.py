@@ -124,3 +124,37 @@ def test_fans_equal_oracle(seed, h, w, n, rule):
     out = rastrum.polygon_coverage(poly, (h, w), rule=rule, method="ss4")
     want = oc.coverage_ss(poly, (h, w), 4, rule=rule)
     S_.assert_same(out.astype(np.int64), want, "%s %r" % (rule, poly))
+
+
+def _inside(rnd, h, w, n, k):
+    """Bow-ties and twisted quadrilaterals whose every vertex lies within
+    the canvas's columns (the pass's check without clamping: a crossing
+    left of the run before it on its row), some of them over each other,
+    their crossings on a fine row's sample line half of the time."""
+    rings = []
+    for _ in range(n):
+        x0, x1 = np.sort(rnd.uniform(0.05 * w, 0.95 * w, 2))
+        y0, y1 = np.sort(rnd.uniform(-0.1 * h, 1.1 * h, 2))
+        if rnd.random() < 0.5:
+            ym, half = (np.floor((y0 + y1) / 2 * k) + 0.5) / k, (y1 - y0) / 2
+            y0, y1 = ym - half, ym + half
+        if rnd.random() < 0.5:
+            rings.append([[float(x0), float(y0)], [float(x1), float(y0)],
+                          [float(x0), float(y1)], [float(x1), float(y1)]])
+        else:  # a long thin quadrilateral whose sides cross one another
+            xm = float(rnd.uniform(x0, x1))
+            rings.append([[float(x0), float(y0)], [xm, float(y0)],
+                          [float(x1), float(y1)], [float(x0) + 0.25, float(y1)]])
+    return rings
+
+
+@settings(max_examples=S_.examples(40), deadline=None)
+@given(st.integers(0, 2 ** 32 - 1), st.integers(4, 30), st.integers(6, 40), st.integers(1, 4),
+       st.sampled_from(["nonzero", "evenodd"]), st.sampled_from([4, 4, 2, 8]))
+def test_crossings_within_the_columns_equal_oracle(seed, h, w, n, rule, k):
+    # every vertex within the canvas's columns: the order checked on the
+    # crossings as they are (no clamp), where edges change places
+    poly = _inside(np.random.default_rng(seed), h, w, n, k)
+    out = rastrum.polygon_coverage(poly, (h, w), rule=rule, method="ss%d" % k)
+    want = oc.coverage_ss(poly, (h, w), k, rule=rule)
+    S_.assert_same(out.astype(np.int64), want, "%s ss%d %r" % (rule, k, poly))

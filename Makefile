@@ -267,6 +267,7 @@ strict:
 	for cc in gcc clang; do \
 	  if command -v $$cc >/dev/null; then \
 	    for f in $(SRC) $(GLUE_SRC); do $$cc $(WARN) -O2 -Icsrc/include -Icsrc/src -Ipython/glue -c $$f -o /dev/null || exit 1; done; \
+	    for f in $(SRC); do $$cc $(WARN) -Os -Icsrc/include -Icsrc/src -c $$f -o /dev/null || exit 1; done; \
 	    for f in $(EXT_SRC); do $$cc $(WARN) -O2 -DPy_LIMITED_API=0x03090000 -I"$$pyinc" -c $$f -o /dev/null || exit 1; done; \
 	    echo "strict: $$cc ok"; \
 	  else echo "strict: $$cc not installed"; exit 1; fi; \

@@ -353,6 +353,7 @@ static inline void rast__acc_qxs(rast__aedge *e)
 #define RAST__ACC_FATN(f) f
 #endif
 
+#if !defined(__OPTIMIZE_SIZE__) /* (only the speed builds' tie passes read it) */
 /* The tie passes' end of e's part in row j (its bottom rel1 = yt + dy -
  * Yj below the row's top): (x, *tb) in Q units, t from the row's top, as
  * rast__acc_ends finds it (P = p, HQ = hq: the pass's copies of a's);
@@ -371,6 +372,7 @@ static inline int64_t rast__acc_bottom(rast__aedge *e, int32_t j, int64_t rel1, 
     *exact &= e->qxr == 0;
     return x;
 }
+#endif
 
 /* floor(x / P) for |x| < 2^62, by a shift (a division takes tens of
  * cycles, and this runs a few times an edge) */

@@ -113,11 +113,13 @@ static int rast__cov_behind_at(const rast__cedge *a, const rast__cedge *b, int64
     return rast__cov_before(&bt, a);
 }
 
+#if !defined(__OPTIMIZE_SIZE__) /* (the speed builds' quick tests only) */
 /* v + 2^20 as an unsigned word: below 2^21 for v in [-2^20, 2^20). */
 static inline uint64_t rast__cov_off(int64_t v)
 {
     return (uint64_t)v + ((uint64_t)1 << 20);
 }
+#endif
 
 /* The first ordinate after t (U; up to T) where a, left of b just below
  * t, crosses it; T when they do not cross inside the row.  Inlined in its
@@ -3288,6 +3290,8 @@ rast_status rast__cov_area(rast__cedge *e, uint32_t n, int32_t s, rast_fill_rule
                 fast = 0;
                 unsimple = 0;
                 c.emitted = 1;
+#else
+                (void)unplain; /* (counted, read by the speed builds only) */
 #endif
             } else if (fast && same && rast__cov_row_cont(&c, e, row, nrow, j, fast)) {
                 /* done: the fast row's continuation, the cheapest test */

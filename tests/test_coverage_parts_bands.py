@@ -15,15 +15,9 @@ import pytest
 
 import rastrum
 from test_coverage_fast import _check
+from test_coverage_plain_parts import _ring
 
 SHAPE = (16, 14)
-
-
-def _ring(cx, cy, rx, ry, n, phase, cw):
-    t = phase + 2 * np.pi * np.arange(n) / n
-    ring = np.stack([cx + rx * np.cos(t), cy + ry * np.sin(t)], 1)
-    ring = np.round(ring * 64) / 64
-    return (ring[::-1] if cw else ring).tolist()
 
 
 # the first line: rows 0 to 2, then row 3 empty

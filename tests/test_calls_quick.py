@@ -290,3 +290,19 @@ def test_canvas_fill_polygon_reads_as_its_signature():
         c.fill_polygon(_EMPTY, 1, rul="nonzero")
     with pytest.raises(TypeError):
         c.fill_polygon(_EMPTY, 1, "nonzero")
+
+
+@pytest.mark.parametrize("kw", [dict(algorithm=["aet"]), dict(rule={"evenodd"}), dict(rounding=[1]),
+                                dict(boundary={}), dict(algorithm=["aet"], subpixel_bits=4),
+                                dict(rule=[], sample_offset=0.25)])
+def test_polygon_mask_options_of_unhashable_types_are_input_errors(kw):
+    # The options cache looks a key up by value: a list or a dict given as a
+    # name must still be refused by the checks, with an InputError (a
+    # ValueError), not a TypeError out of the cache's dict.
+    ring = np.array([[1.0, 1.0], [6.0, 1.5], [3.0, 5.0]])
+    with pytest.raises(InputError):
+        rastrum.polygon_mask(ring, (8, 8), **kw)
+    canvas = rastrum.Canvas(np.zeros((8, 8), np.uint8))
+    with pytest.raises(InputError):
+        canvas.fill_polygon(ring, 255, **kw)
+    assert not canvas.target.any()

@@ -7,7 +7,7 @@ Coordinates are (x, y) as in Pillow; arrays are (row, column) = (y, x) as in
 numpy.
 """
 
-from typing import Any, Dict, Optional
+from typing import Any, Optional
 
 import numpy as np
 import numpy.typing as npt
@@ -16,7 +16,7 @@ from . import _core
 from ._core import InputError, RastrumError
 from ._typing import Boundary, PolygonAlgorithm, PathRings, Rounding, Rule, Shape
 from ._native import lib as _lib
-from ._canvas import Canvas
+from ._canvas import Canvas, _fill_opts
 from ._lines import line_pixels, point_in_triangle
 from ._triangles import TRIANGLE_ALGORITHMS as _TRIANGLE_ALGORITHMS, triangles_count, triangles_mask
 from . import scene
@@ -149,21 +149,14 @@ def polygon_mask(rings: PathRings, shape: Shape, *, rule: Rule = "evenodd", algo
     """
     if tolerance is not None or not isinstance(rings, _PLAIN_RINGS):  # curves flattened (docs/paths.md)
         rings = _path_rings(rings, subpixel_bits, tolerance)
-    # The options struct of these exact argument types, checked once: a
-    # dict lookup instead of the general cache's (which also keys on the
-    # types, so that True or 8.0 are still refused: here only an int S and
-    # a float offset take the quick way).
-    # The defaults themselves (the very objects): no key to build and hash.
+    # The defaults themselves (the very objects): no key to build and hash;
+    # other options through Canvas's cache of checked options (str names, an
+    # int S and a float offset looked up by value; anything else checked).
     if algorithm is _AET and rule is _EVENODD and subpixel_bits is _S8 and sample_offset is _HALF \
             and rounding is _EXACT and boundary is _EXACT:
         opts = _DEFAULT_OPTS
     else:
-        key = (algorithm, rule, subpixel_bits, sample_offset, rounding, boundary)
-        opts = _MASK_OPTS.get(key) if type(subpixel_bits) is int and type(sample_offset) is float else None
-    if opts is None:
-        opts = _core.fill_opts(algorithm, rule, subpixel_bits, sample_offset, rounding, boundary)
-        if type(subpixel_bits) is int and type(sample_offset) is float and len(_MASK_OPTS) < 256:
-            _MASK_OPTS[key] = opts
+        opts = _fill_opts(algorithm, rule, subpixel_bits, sample_offset, rounding, boundary)
     # One C-contiguous float64 ring and a plain (h, w): straight to C, every
     # check of the general path made here in a few comparisons (shape: two
     # ints in 1..RAST_MAX_DIM; ring: (N >= 3, 2) float64).  Anything else,
@@ -223,7 +216,6 @@ def polygon_mask(rings: PathRings, shape: Shape, *, rule: Rule = "evenodd", algo
     return _core.mask_polygon(_core.shape2(shape), rings, opts, opts.subpixel_bits)
 
 
-_MASK_OPTS: Dict[Any, Any] = {}
 _AET, _EVENODD, _S8, _HALF, _EXACT = (polygon_mask.__kwdefaults__[k] for k in (
     "algorithm", "rule", "subpixel_bits", "sample_offset", "rounding"))
 assert polygon_mask.__kwdefaults__["boundary"] is _EXACT

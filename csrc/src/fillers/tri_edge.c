@@ -141,9 +141,12 @@ RAST__HOT void rast__fe_rows(const rast__rows *o, int32_t row0, int32_t row1, ra
  * ends stored, and the runs then written in another loop: a memset call
  * in the walk's loop (as in rast__fe_rows) clobbers the caller-saved
  * registers, so that the bounds went to the stack and back every row.
+ * The bounds are read from *l and *r before a batch and written back
+ * after it (where a memset may write, as far as the compiler knows: so
+ * it does not keep them in registers across the memsets, saving and
+ * restoring them around every call).
  * With SSE2 the two bounds step side by side, one in each 64-bit lane of
- * a vector: the same additions, the carry a lane's sign spread over it
- * (the vectors go to memory between batches, not around every call).
+ * a vector: the same additions, the carry a lane's sign spread over it.
  *
  * No run is empty, so none needs the clamp of rast__rows_emit: on a row
  * of the half both bounds are of edges whose crossings X_l <= X_r bound
@@ -156,22 +159,15 @@ RAST__APART void rast__fe_half(unsigned char *p, ptrdiff_t stride, int value, in
 {
     int32_t xs[2 * RAST__FE_BATCH], k, m;
 #if RAST__FE_SSE2
-    int64_t cg[4]; /* the columns, then the edge functions, l's then r's */
     const __m128i da = _mm_set_epi64x(r->da, l->da), r0 = _mm_set_epi64x(r->r0, l->r0);
     const __m128i s0 = _mm_set_epi64x(r->s0, l->s0);
-    cg[0] = l->c;
-    cg[1] = r->c;
-    cg[2] = l->g;
-    cg[3] = r->g;
-#else
-    rast__fe a = *l, c = *r;
 #endif
     for (; n > 0; n -= m) {
         m = n < RAST__FE_BATCH ? n : RAST__FE_BATCH;
         {
 #if RAST__FE_SSE2
-            __m128i c = _mm_loadu_si128((const __m128i *)(const void *)cg);
-            __m128i g = _mm_loadu_si128((const __m128i *)(const void *)(cg + 2));
+            __m128i c = _mm_set_epi64x(r->c, l->c), g = _mm_set_epi64x(r->g, l->g);
+            int64_t out[4]; /* the columns, then the edge functions, l's then r's */
             for (k = 0; k < m; k++) {
                 __m128i carry;
                 /* the low halves of both columns (within the clip's, so
@@ -182,15 +178,22 @@ RAST__APART void rast__fe_half(unsigned char *p, ptrdiff_t stride, int value, in
                 c = _mm_sub_epi64(_mm_add_epi64(c, s0), carry);
                 g = _mm_add_epi64(g, _mm_and_si128(da, carry));
             }
-            _mm_storeu_si128((__m128i *)(void *)cg, c);
-            _mm_storeu_si128((__m128i *)(void *)(cg + 2), g);
+            _mm_storeu_si128((__m128i *)(void *)out, c);
+            _mm_storeu_si128((__m128i *)(void *)(out + 2), g);
+            l->c = out[0];
+            r->c = out[1];
+            l->g = out[2];
+            r->g = out[3];
 #else
+            rast__fe a = *l, c = *r;
             for (k = 0; k < m; k++) {
                 xs[2 * k] = (int32_t)a.c;
                 xs[2 * k + 1] = (int32_t)c.c;
                 rast__fe_step(&a);
                 rast__fe_step(&c);
             }
+            *l = a;
+            *r = c;
 #endif
         }
         for (k = 0; k < m; k++) {
@@ -198,15 +201,6 @@ RAST__APART void rast__fe_half(unsigned char *p, ptrdiff_t stride, int value, in
             p += stride;
         }
     }
-#if RAST__FE_SSE2
-    l->c = cg[0];
-    r->c = cg[1];
-    l->g = cg[2];
-    r->g = cg[3];
-#else
-    *l = a;
-    *r = c;
-#endif
 }
 #endif
 

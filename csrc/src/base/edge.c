@@ -23,18 +23,34 @@ int rast__edge_setup(rast__edge *ed, rast_point a, rast_point b,
 
 #include "aet.h"
 
-static inline int rast__seg_eq(const rast__seg *p, const rast__seg *q)
+typedef char rast__pt_word_check[sizeof(rast_point) == 8 ? 1 : -1];
+
+/* A point's 8 bytes as one word (equal words: equal points). */
+static inline uint64_t rast__pt_word(const rast_point *p)
 {
-    return p->a.x == q->a.x && p->a.y == q->a.y && p->b.x == q->b.x && p->b.y == q->b.y;
+    uint64_t w;
+    memcpy(&w, p, sizeof w);
+    return w;
 }
 
-/* A segment's slot in a table of 2^bits (its ends' coordinates mixed). */
-static inline uint32_t rast__seg_hash(const rast__seg *p, int32_t bits)
+/* A point's word (rast__pt_word) as a key whose order as an unsigned
+ * number is the points' by y, then x: each coordinate's sign bit flipped,
+ * y in the high half. */
+static inline uint64_t rast__pt_key(uint64_t w)
 {
-    uint64_t h = (uint64_t)(uint32_t)p->a.x * UINT64_C(0x9E3779B97F4A7C15);
-    h = (h ^ (uint32_t)p->a.y) * UINT64_C(0xC2B2AE3D27D4EB4F);
-    h = (h ^ (uint32_t)p->b.x) * UINT64_C(0x165667B19E3779F9);
-    h = (h ^ (uint32_t)p->b.y) * UINT64_C(0x9E3779B97F4A7C15);
+    const uint32_t one = 1;
+    unsigned char little;
+    memcpy(&little, &one, 1);
+    w ^= UINT64_C(0x8000000080000000);
+    return little ? w : (w >> 32) | (w << 32); /* (big-endian: x the high half) */
+}
+
+/* A segment's slot in a table of 2^bits: the words of its ends mixed by
+ * two odd multipliers, the top bits of the product taken (every bit of
+ * both words reaches them). */
+static inline uint32_t rast__seg_hash(uint64_t a, uint64_t b, int32_t bits)
+{
+    const uint64_t h = ((a * UINT64_C(0x9E3779B97F4A7C15)) ^ b) * UINT64_C(0xC2B2AE3D27D4EB4F);
     return (uint32_t)(h >> (64 - bits));
 }
 
@@ -60,11 +76,13 @@ int32_t rast__segs_cancel(const rast_point *pts, const uint32_t *ring_sizes, uin
      * and `left`, the crossing edges that stay (the first's |n| summed),
      * kept as it goes: each edge still to come takes at most one off it,
      * so a polygon whose edges do not cancel is given up as soon as even
-     * that would leave more than half */
+     * that would leave more than half.  A segment's ends are hashed and
+     * compared as words (rast__pt_word), not coordinate by coordinate. */
     for (i = 0; i < N; i++) {
-        rast_point p, q;
-        int fwd;
+        uint64_t wp, wq, kp, kq, wa, wb;
+        int fwd, cross;
         uint32_t h;
+        int32_t s;
         /* a quarter of the way, fewer than one edge in 64 met again (i -
          * fresh of them): taken for edges that are not a mesh's, and given
          * up (the bound below waits for three quarters of the edges, and
@@ -80,27 +98,33 @@ int32_t rast__segs_cancel(const rast_point *pts, const uint32_t *ring_sizes, uin
             rs = re;
             re += ring_sizes ? (int32_t)ring_sizes[ring++] : 3;
         }
-        p = pts[i];
-        q = pts[i + 1 == re ? rs : i + 1];
-        fwd = p.y < q.y || (p.y == q.y && p.x < q.x);
-        seg[i].a = fwd ? p : q;
-        seg[i].b = fwd ? q : p;
-        seg[i].n = fwd ? 1 : -1;
-        h = rast__seg_hash(&seg[i], tbits);
-        while (slot[h] >= 0 && !rast__seg_eq(&seg[slot[h]], &seg[i])) h = (h + 1) & mask;
-        if (slot[h] < 0) {
+        wp = rast__pt_word(&pts[i]);
+        wq = rast__pt_word(&pts[i + 1 == re ? rs : i + 1]);
+        kp = rast__pt_key(wp);
+        kq = rast__pt_key(wq);
+        fwd = kp < kq;
+        cross = (kp ^ kq) >> 32 != 0;
+        wa = fwd ? wp : wq;
+        wb = fwd ? wq : wp;
+        memcpy(&seg[i].a, &wa, sizeof wa);
+        memcpy(&seg[i].b, &wb, sizeof wb);
+        h = rast__seg_hash(wa, wb, tbits);
+        while ((s = slot[h]) >= 0 && (rast__pt_word(&seg[s].a) != wa || rast__pt_word(&seg[s].b) != wb))
+            h = (h + 1) & mask;
+        if (s < 0) {
             slot[h] = i;
+            seg[i].n = fwd ? 1 : -1;
             fresh++;
-            left += p.y != q.y;
+            left += cross;
             if (((int64_t)left - ((int64_t)N - 1 - i)) * 2 > (int64_t)N) {
                 *arena = keep;
                 return -1;
             }
         } else {
-            const int32_t was = seg[slot[h]].n, now = was + seg[i].n;
-            seg[slot[h]].n = now;
+            const int32_t was = seg[s].n, now = was + (fwd ? 1 : -1);
+            seg[s].n = now;
             seg[i].n = 0;
-            if (p.y != q.y) left += (now < 0 ? -now : now) - (was < 0 ? -was : was);
+            if (cross) left += (now < 0 ? -now : now) - (was < 0 ? -was : was);
         }
     }
     if ((int64_t)left * 2 > (int64_t)N) {

@@ -36,6 +36,12 @@
  * Scratch: none.
  */
 #include "../base/internal.h"
+#if defined(__SSE2__) && !defined(RAST_NO_SIMD) && !defined(__OPTIMIZE_SIZE__)
+#include <emmintrin.h> /* (integer vectors only: every x86-64 has them) */
+#define RAST__FE_SSE2 1
+#else
+#define RAST__FE_SSE2 0
+#endif
 
 size_t rast__tri_edge_scratch(int32_t width, int32_t height)
 {
@@ -124,6 +130,80 @@ RAST__HOT void rast__fe_rows(const rast__rows *o, int32_t row0, int32_t row1, ra
     }
 }
 
+#if !defined(__OPTIMIZE_SIZE__)
+/* Rows a batch of rast__fe_half takes (its runs' ends on the stack, 512
+ * bytes). */
+#define RAST__FE_BATCH 64
+
+/* Rows [0, n) from row pointer p between left bound l and right bound r,
+ * each row one memset, uncut (rast__rows_direct_uncut held).  The bounds
+ * are walked a batch of rows at a time in a loop of their own, the runs'
+ * ends stored, and the runs then written in another loop: a memset call
+ * in the walk's loop (as in rast__fe_rows) clobbers the caller-saved
+ * registers, so that the bounds went to the stack and back every row.
+ * The bounds are read from *l and *r before a batch and written back
+ * after it (where a memset may write, as far as the compiler knows: so
+ * it does not keep them in registers across the memsets, saving and
+ * restoring them around every call).
+ * With SSE2 the two bounds step side by side, one in each 64-bit lane of
+ * a vector: the same additions, the carry a lane's sign spread over it.
+ *
+ * No run is empty, so none needs the clamp of rast__rows_emit: on a row
+ * of the half both bounds are of edges whose crossings X_l <= X_r bound
+ * the triangle's row, and both bounds are the same monotone function of
+ * the crossing (the first column whose sample is at or right of X, exact
+ * rounding; strictly right of X moved half a pixel, textbook), so that
+ * l <= r. */
+RAST__APART void rast__fe_half(unsigned char *p, ptrdiff_t stride, int value, int32_t n,
+                               rast__fe *l, rast__fe *r)
+{
+    int32_t xs[2 * RAST__FE_BATCH], k, m;
+#if RAST__FE_SSE2
+    const __m128i da = _mm_set_epi64x(r->da, l->da), r0 = _mm_set_epi64x(r->r0, l->r0);
+    const __m128i s0 = _mm_set_epi64x(r->s0, l->s0);
+#endif
+    for (; n > 0; n -= m) {
+        m = n < RAST__FE_BATCH ? n : RAST__FE_BATCH;
+        {
+#if RAST__FE_SSE2
+            __m128i c = _mm_set_epi64x(r->c, l->c), g = _mm_set_epi64x(r->g, l->g);
+            int64_t out[4]; /* the columns, then the edge functions, l's then r's */
+            for (k = 0; k < m; k++) {
+                __m128i carry;
+                /* the low halves of both columns (within the clip's, so
+                 * int32_t), x0 then x1 */
+                _mm_storel_epi64((__m128i *)(void *)(xs + 2 * k), _mm_shuffle_epi32(c, 0x08));
+                g = _mm_sub_epi64(g, r0);
+                carry = _mm_shuffle_epi32(_mm_srai_epi32(g, 31), 0xF5); /* -1 where g < 0 */
+                c = _mm_sub_epi64(_mm_add_epi64(c, s0), carry);
+                g = _mm_add_epi64(g, _mm_and_si128(da, carry));
+            }
+            _mm_storeu_si128((__m128i *)(void *)out, c);
+            _mm_storeu_si128((__m128i *)(void *)(out + 2), g);
+            l->c = out[0];
+            r->c = out[1];
+            l->g = out[2];
+            r->g = out[3];
+#else
+            rast__fe a = *l, c = *r;
+            for (k = 0; k < m; k++) {
+                xs[2 * k] = (int32_t)a.c;
+                xs[2 * k + 1] = (int32_t)c.c;
+                rast__fe_step(&a);
+                rast__fe_step(&c);
+            }
+            *l = a;
+            *r = c;
+#endif
+        }
+        for (k = 0; k < m; k++) {
+            memset(p + xs[2 * k], value, (size_t)(xs[2 * k + 1] - xs[2 * k]));
+            p += stride;
+        }
+    }
+}
+#endif
+
 rast_status rast__tri_edge_fill(const rast_point *t, const rast__grid *g,
                                 const rast_rect *clip, rast__sink *sink,
                                 rast__arena *arena)
@@ -190,9 +270,6 @@ rast_status rast__tri_edge_fill(const rast_point *t, const rast__grid *g,
     other = lone == 2 ? 1 : 2;
     px = (int64_t)lo * u + shift;
     py = (int64_t)row0 * u + g->off;
-    rast__fe_start(&a, x, y, pair_left ? other : lone, lo, px, py, g);
-    rast__fe_start(&b, x, y, lone == 0 ? 1 : 0, lo, px, py, g);
-    rast__fe_start(&c, x, y, pair_left ? lone : other, lo, px, py, g);
 
     /* Each row, the last of the left bounds to the first of the right
      * ones.  On the rows of the triangle these are its own crossings, so
@@ -200,6 +277,44 @@ rast_status rast__tri_edge_fill(const rast_point *t, const rast__grid *g,
      * followed past its edge's end is far outside; the sink cuts them to
      * the clip, unless those columns are inside it. */
     o = rast__rows_of(sink);
+#if !defined(__OPTIMIZE_SIZE__)
+    if (rast__rows_direct_uncut(&o, xmin, xmax, g)) {
+        /* The pair's two edges meet at vertex m, the middle one in y (the
+         * lone edge, never horizontal, runs from the top vertex to the
+         * bottom one).  Above m's ordinate the pair's edge from the top
+         * vertex bounds the rows, from it down the other one: the third
+         * bound never binds there (the triangle is the intersection of
+         * the half-planes, and at m's ordinate both pair edges cross at
+         * m, with the same test).  So each half walks two bounds, the
+         * other edge of the pair set up at the first row at or below m. */
+        int32_t m = lone == 0 ? 2 : lone - 1, pm = m == 0 ? 2 : m - 1, nm = m == 2 ? 0 : m + 1;
+        int32_t top = y[pm] < y[nm] ? pm : m; /* edge pm runs pm -> m, edge m m -> nm */
+        int32_t rowm;
+        unsigned char *p = rast__rows_at(&o, row0, 1);
+        r = rast__row_at_or_after(y[m], g);
+        rowm = r < row0 ? row0 : (r > row1 ? row1 : (int32_t)r);
+        rast__fe_start(&b, x, y, lone, lo, px, py, g);
+        if (rowm > row0) {
+            rast__fe_start(&a, x, y, top, lo, px, py, g);
+            if (pair_left)
+                rast__fe_half(p, o.stride, o.value, rowm - row0, &a, &b);
+            else
+                rast__fe_half(p, o.stride, o.value, rowm - row0, &b, &a);
+        }
+        if (row1 > rowm) {
+            rast__fe_start(&a, x, y, top == m ? pm : m, lo, px, (int64_t)rowm * u + g->off, g);
+            p = rast__rows_at(&o, rowm, 1);
+            if (pair_left)
+                rast__fe_half(p, o.stride, o.value, row1 - rowm, &a, &b);
+            else
+                rast__fe_half(p, o.stride, o.value, row1 - rowm, &b, &a);
+        }
+        return RAST_OK;
+    }
+#endif
+    rast__fe_start(&a, x, y, pair_left ? other : lone, lo, px, py, g);
+    rast__fe_start(&b, x, y, lone == 0 ? 1 : 0, lo, px, py, g);
+    rast__fe_start(&c, x, y, pair_left ? lone : other, lo, px, py, g);
     if (rast__rows_direct_uncut(&o, xmin, xmax, g))
         rast__fe_rows(&o, row0, row1, &a, &b, &c, pair_left, 1);
     else

@@ -2159,15 +2159,18 @@ RAST__HOT void rast__acc_by_rows(const rast__acc_walk *w, rast__acc *a)
     rast__aedge *const e = w->e;
     const rast__cov_out *const o = w->o;
     const uint32_t m = w->m;
-    const int32_t *const order = w->order, *const key = w->key, *const last = w->last;
+    const int32_t *const key = w->key, *const last = w->last, ja = w->ja;
     int32_t *cur = w->row, *nxt = w->tmp, *t;
     int32_t nrow = 0, j, k, q;
     uint32_t next = 0, *const cnt = a->z + w->width; /* (in area[], after z[]: cleared) */
+    const uint32_t ne = w->n; /* (locals: the stores to cur[] may alias w's fields) */
     int exact = 0, done; /* w->exact[] cleared */
     rast__acc_kept kept; /* (a tie's row of many parts: rast__acc_ties_z) */
     for (j = w->ja; j < w->jb; j++) {
-        for (; next < w->n && key[order[next]] + w->ja <= j; next++)
-            if (last[order[next]] >= j) cur[nrow++] = order[next];
+        /* (the records are in the rows' order, rast__acc_sorted: edge
+         * next is the next to start) */
+        for (; next < ne && key[next] + ja <= j; next++)
+            if (last[next] >= j) cur[nrow++] = (int32_t)next;
         done = 0;
         if (nrow < RAST__ACC_MAXN && ((uint64_t)nrow + 1) * m < ((uint64_t)1 << 25)) {
             /* Bits for the cells touched, so that the scan skips the
@@ -2683,8 +2686,9 @@ static inline void rast__acc_make(rast__aedge *c, const rast__acc_thin *t)
  * (rast__acc_prep's, at the start of the edges' room e) in the rows'
  * order (by first row, stably), at the end of the room (past the first n
  * rast__aedge: no overlap with t[]); key[] and last[] put in that order
- * too, and order[] becomes 0 .. n - 1 (the walk's arrays swapped: no
- * copy).  With counts (cnt[0..nkeys), room, when the rows are few for the
+ * too (the walk's arrays swapped: no copy); order[] is left free (the
+ * rows' walk reads the records in order, the bands' walk has 0 .. n - 1
+ * put there: rast__acc_walk_all).  With counts (cnt[0..nkeys), room, when the rows are few for the
  * edges: see rast__acc_walk_all), t[] is read in a stream and each record
  * written to its row's next slot, a counting sort's placing pass (the
  * records read through order[] at random, then written in order, took a
@@ -2721,7 +2725,6 @@ static rast__aedge *rast__acc_sorted(rast__acc_walk *w, rast__cedge *e, const ra
     w->key = ks;
     w->order = last;
     w->last = order;
-    for (i = 0; i < n; i++) w->order[i] = (int32_t)i;
     w->cap = (uint32_t)(off / sizeof(rast__cedge));
     return ce;
 }
@@ -2827,7 +2830,12 @@ static rast_status rast__acc_walk_all(rast__acc_in *in, uint32_t n, int32_t s, r
         for (k = 0; k < w.nw; k++) w.bits[k] = 0;
         rast__acc_by_rows(&w, &v[0]);
     } else {
-        for (i = 0; i < n; i++) w.thru[i] = rast__acc_thru(&w.e[i], &v[0]);
+        for (i = 0; i < n; i++) {
+            w.thru[i] = rast__acc_thru(&w.e[i], &v[0]);
+#if RAST__ACC_COMPACT
+            w.order[i] = (int32_t)i; /* (the records' order: the rows' walk does without) */
+#endif
+        }
         for (k = 0; k < RAST__ACC_BAND * (w.width + 1); k++) cells[k] = 0;
         for (r = 0; r < RAST__ACC_BAND; r++) {
             uint64_t *b = bandbits + (size_t)r * (size_t)w.nw;

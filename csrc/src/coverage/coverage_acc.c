@@ -2444,26 +2444,21 @@ RAST__HOT uint32_t rast__acc_pairs(rast__acc_in *e, uint32_t n, uint32_t step, i
  * direction not yet cancelled, in a hash table of edge indices
  * (rast__acc_pairs, at least 2 n slots, in room taken from a copy of the
  * arena: the walk's after); if it finds one, both go (their dir set to
- * 0), else it is added.  The edges that go are replaced by the last ones
- * (the order does not matter: the sums are the same in any order);
+ * 0), else it is added.  The edges left are moved down in their order
+ * (one pass: any order would do, the sums are the same in any order);
  * returns how many are left.  With no room for the table nothing goes. */
 static uint32_t rast__acc_cancel(rast__acc_in *e, uint32_t n, rast__arena room)
 {
-    uint32_t size = 16, i;
+    uint32_t size = 16, i, q;
     int32_t *slot;
     while (size < 2 * n) size <<= 1;
     slot = (int32_t *)rast__take(&room, (size_t)size * sizeof(int32_t));
     if (n < 2 || !slot) return n;
     for (i = 0; i < size; i++) slot[i] = -1; /* (-1 empty, -2 cancelled) */
     if (!rast__acc_pairs(e, n, 1, 1, slot, size)) return n;
-    for (i = 0; i < n;) {
-        if (e[i].dir) {
-            i++;
-        } else if (i < --n) {
-            e[i] = e[n]; /* (checked again: it may have gone too) */
-        }
-    }
-    return n;
+    for (i = 0, q = 0; i < n; i++) /* (the rest moved down, in order) */
+        if (e[i].dir) e[q++] = e[i];
+    return q;
 }
 
 #if RAST__ACC_COMPACT

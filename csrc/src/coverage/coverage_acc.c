@@ -2629,13 +2629,13 @@ typedef char rast__acc_rooms[sizeof(rast__cedge) >= 2 * sizeof(rast__aedge) &&
  * ja), its last row last[]; *nkeys the greatest key + 1, *rows the edges'
  * rows in all.  floor(y / P) by rast__acc_floorp's shift, S = s.  (The
  * records, and their divisions, are rast__acc_sorted's.) */
-static void rast__acc_prep(rast__acc_walk *w, const rast__acc_thin *t, uint32_t *nkeys, uint64_t *rows)
+RAST__APART void rast__acc_prep(rast__acc_walk *w, const rast__acc_thin *t, uint32_t *nkeys, uint64_t *rows)
 {
     const uint32_t n = w->n;
     const int32_t s = w->s;
     const int64_t bias = (int64_t)1 << (62 - s);
     int32_t *const order = w->order, *const key = w->key, *const last = w->last;
-    int64_t ymin = t[0].yt, ymax = (int64_t)t[0].yt + t[0].dy, ja;
+    int64_t ymin = t[0].yt, ymax = (int64_t)t[0].yt + t[0].dy, ytop = ymin, ja, kmin;
     uint32_t i, nk = 0;
     uint64_t rs = 0;
     for (i = 0; i < n; i++) {
@@ -2643,11 +2643,27 @@ static void rast__acc_prep(rast__acc_walk *w, const rast__acc_thin *t, uint32_t 
         order[i] = (int32_t)i;
         ymin = yt < ymin ? yt : ymin;
         ymax = yb > ymax ? yb : ymax;
+        ytop = yt > ytop ? yt : ytop;
         key[i] = (int32_t)((int64_t)(((uint64_t)yt + ((uint64_t)1 << 62)) >> s) - bias);
         last[i] = (int32_t)(-((int64_t)(((uint64_t)-yb + ((uint64_t)1 << 62)) >> s) - bias) - 1);
     }
     rast__cov_rows_reached(ymin, ymax, (int32_t)1 << s, w->o, &w->ja, &w->jb);
     ja = w->ja;
+    kmin = (int64_t)(((uint64_t)ymin + ((uint64_t)1 << 62)) >> s) - bias; /* (the least key) */
+    if (kmin >= ja) {
+        /* No edge starts above row ja (the clip's top cuts none): no key
+         * to clamp, the greatest the greatest top's (the loop below was 15
+         * instructions an edge, ~0.47 M of a line of text's) */
+        const int32_t d = (int32_t)ja;
+        for (i = 0; i < n; i++) {
+            const int32_t kk = key[i] - d;
+            key[i] = kk;
+            rs += (uint64_t)((int64_t)last[i] - kk - ja + 1);
+        }
+        *nkeys = (uint32_t)((int64_t)(((uint64_t)ytop + ((uint64_t)1 << 62)) >> s) - bias - ja) + 1;
+        *rows = rs;
+        return;
+    }
     for (i = 0; i < n; i++) { /* (the keys from ja) */
         const int64_t r0 = (int64_t)key[i] - ja;
         const int32_t kk = r0 < 0 ? 0 : (int32_t)r0;

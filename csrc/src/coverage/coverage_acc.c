@@ -2404,7 +2404,9 @@ static rast_status rast__acc_go(rast__acc_in *e, uint32_t n, int32_t s, rast_fil
  * slot[0..size) (a power of 2, at least twice the edges looked at, open
  * addressing, all -1 on the way in): each edge looks for one not yet
  * matched, and either matches it (both have their dir set to 0 when
- * `mark`) or is added.  Returns how many edges matched (twice the
+ * `mark`) or is added.  (xt, yt) and (dx, dy) are read as two 64-bit
+ * words: the hash in two products, the match in two compares, where four
+ * of each were ~13 and ~8 instructions an edge on the map.  Returns how many edges matched (twice the
  * pairs). */
 RAST__HOT uint32_t rast__acc_pairs(rast__acc_in *e, uint32_t n, uint32_t step, int mark, int32_t *slot,
                                 uint32_t size)
@@ -2414,17 +2416,21 @@ RAST__HOT uint32_t rast__acc_pairs(rast__acc_in *e, uint32_t n, uint32_t step, i
     for (i = 0; i < n;
          i += step == 1 ? 1 : 1 + (uint32_t)(((uint64_t)((i + 1) * 0x9E3779B1u) * (2 * step - 1)) >> 32)) {
         rast__acc_in *x = &e[i];
-        h = (uint32_t)x->xt * 0x9E3779B1u + (uint32_t)x->yt * 0x85EBCA77u + (uint32_t)x->dx * 0xC2B2AE3Du +
-            (uint32_t)x->dy * 0x27D4EB2Fu;
-        h ^= h >> 15;
+        uint64_t top, d; /* (xt, yt) and (dx, dy), 64 bits each (adjacent fields) */
+        memcpy(&top, &x->xt, sizeof top);
+        memcpy(&d, &x->dx, sizeof d);
+        h = (uint32_t)(((top * UINT64_C(0x9E3779B97F4A7C15)) ^ d) * UINT64_C(0xC2B2AE3D27D4EB4F) >> 32);
         for (probe = 0; probe < RAST__ACC_PROBES; probe++, h++) {
+            uint64_t ktop, kd;
             k = slot[h & (size - 1)];
             if (k == -1) {
                 slot[h & (size - 1)] = (int32_t)i;
                 break;
             }
-            if (k >= 0 && e[k].xt == x->xt && e[k].yt == x->yt && e[k].dx == x->dx && e[k].dy == x->dy &&
-                e[k].dir == -x->dir) {
+            if (k < 0) continue;
+            memcpy(&ktop, &e[k].xt, sizeof ktop);
+            memcpy(&kd, &e[k].dx, sizeof kd);
+            if (ktop == top && kd == d && e[k].dir == -x->dir) {
                 slot[h & (size - 1)] = -2; /* (matched: not again) */
                 if (mark) e[k].dir = x->dir = 0;
                 gone += 2;

@@ -2159,15 +2159,18 @@ RAST__HOT void rast__acc_by_rows(const rast__acc_walk *w, rast__acc *a)
     rast__aedge *const e = w->e;
     const rast__cov_out *const o = w->o;
     const uint32_t m = w->m;
-    const int32_t *const order = w->order, *const key = w->key, *const last = w->last;
+    const int32_t *const key = w->key, *const last = w->last, ja = w->ja;
     int32_t *cur = w->row, *nxt = w->tmp, *t;
     int32_t nrow = 0, j, k, q;
     uint32_t next = 0, *const cnt = a->z + w->width; /* (in area[], after z[]: cleared) */
+    const uint32_t ne = w->n; /* (locals: the stores to cur[] may alias w's fields) */
     int exact = 0, done; /* w->exact[] cleared */
     rast__acc_kept kept; /* (a tie's row of many parts: rast__acc_ties_z) */
     for (j = w->ja; j < w->jb; j++) {
-        for (; next < w->n && key[order[next]] + w->ja <= j; next++)
-            if (last[order[next]] >= j) cur[nrow++] = order[next];
+        /* (the records are in the rows' order, rast__acc_sorted: edge
+         * next is the next to start) */
+        for (; next < ne && key[next] + ja <= j; next++)
+            if (last[next] >= j) cur[nrow++] = (int32_t)next;
         done = 0;
         if (nrow < RAST__ACC_MAXN && ((uint64_t)nrow + 1) * m < ((uint64_t)1 << 25)) {
             /* Bits for the cells touched, so that the scan skips the
@@ -2401,7 +2404,9 @@ static rast_status rast__acc_go(rast__acc_in *e, uint32_t n, int32_t s, rast_fil
  * slot[0..size) (a power of 2, at least twice the edges looked at, open
  * addressing, all -1 on the way in): each edge looks for one not yet
  * matched, and either matches it (both have their dir set to 0 when
- * `mark`) or is added.  Returns how many edges matched (twice the
+ * `mark`) or is added.  (xt, yt) and (dx, dy) are read as two 64-bit
+ * words: the hash in two products, the match in two compares, where four
+ * of each were ~13 and ~8 instructions an edge on the map.  Returns how many edges matched (twice the
  * pairs). */
 RAST__HOT uint32_t rast__acc_pairs(rast__acc_in *e, uint32_t n, uint32_t step, int mark, int32_t *slot,
                                 uint32_t size)
@@ -2411,17 +2416,21 @@ RAST__HOT uint32_t rast__acc_pairs(rast__acc_in *e, uint32_t n, uint32_t step, i
     for (i = 0; i < n;
          i += step == 1 ? 1 : 1 + (uint32_t)(((uint64_t)((i + 1) * 0x9E3779B1u) * (2 * step - 1)) >> 32)) {
         rast__acc_in *x = &e[i];
-        h = (uint32_t)x->xt * 0x9E3779B1u + (uint32_t)x->yt * 0x85EBCA77u + (uint32_t)x->dx * 0xC2B2AE3Du +
-            (uint32_t)x->dy * 0x27D4EB2Fu;
-        h ^= h >> 15;
+        uint64_t top, d; /* (xt, yt) and (dx, dy), 64 bits each (adjacent fields) */
+        memcpy(&top, &x->xt, sizeof top);
+        memcpy(&d, &x->dx, sizeof d);
+        h = (uint32_t)(((top * UINT64_C(0x9E3779B97F4A7C15)) ^ d) * UINT64_C(0xC2B2AE3D27D4EB4F) >> 32);
         for (probe = 0; probe < RAST__ACC_PROBES; probe++, h++) {
+            uint64_t ktop, kd;
             k = slot[h & (size - 1)];
             if (k == -1) {
                 slot[h & (size - 1)] = (int32_t)i;
                 break;
             }
-            if (k >= 0 && e[k].xt == x->xt && e[k].yt == x->yt && e[k].dx == x->dx && e[k].dy == x->dy &&
-                e[k].dir == -x->dir) {
+            if (k < 0) continue;
+            memcpy(&ktop, &e[k].xt, sizeof ktop);
+            memcpy(&kd, &e[k].dx, sizeof kd);
+            if (ktop == top && kd == d && e[k].dir == -x->dir) {
                 slot[h & (size - 1)] = -2; /* (matched: not again) */
                 if (mark) e[k].dir = x->dir = 0;
                 gone += 2;
@@ -2441,26 +2450,21 @@ RAST__HOT uint32_t rast__acc_pairs(rast__acc_in *e, uint32_t n, uint32_t step, i
  * direction not yet cancelled, in a hash table of edge indices
  * (rast__acc_pairs, at least 2 n slots, in room taken from a copy of the
  * arena: the walk's after); if it finds one, both go (their dir set to
- * 0), else it is added.  The edges that go are replaced by the last ones
- * (the order does not matter: the sums are the same in any order);
+ * 0), else it is added.  The edges left are moved down in their order
+ * (one pass: any order would do, the sums are the same in any order);
  * returns how many are left.  With no room for the table nothing goes. */
 static uint32_t rast__acc_cancel(rast__acc_in *e, uint32_t n, rast__arena room)
 {
-    uint32_t size = 16, i;
+    uint32_t size = 16, i, q;
     int32_t *slot;
     while (size < 2 * n) size <<= 1;
     slot = (int32_t *)rast__take(&room, (size_t)size * sizeof(int32_t));
     if (n < 2 || !slot) return n;
     for (i = 0; i < size; i++) slot[i] = -1; /* (-1 empty, -2 cancelled) */
     if (!rast__acc_pairs(e, n, 1, 1, slot, size)) return n;
-    for (i = 0; i < n;) {
-        if (e[i].dir) {
-            i++;
-        } else if (i < --n) {
-            e[i] = e[n]; /* (checked again: it may have gone too) */
-        }
-    }
-    return n;
+    for (i = 0, q = 0; i < n; i++) /* (the rest moved down, in order) */
+        if (e[i].dir) e[q++] = e[i];
+    return q;
 }
 
 #if RAST__ACC_COMPACT
@@ -2631,13 +2635,13 @@ typedef char rast__acc_rooms[sizeof(rast__cedge) >= 2 * sizeof(rast__aedge) &&
  * ja), its last row last[]; *nkeys the greatest key + 1, *rows the edges'
  * rows in all.  floor(y / P) by rast__acc_floorp's shift, S = s.  (The
  * records, and their divisions, are rast__acc_sorted's.) */
-static void rast__acc_prep(rast__acc_walk *w, const rast__acc_thin *t, uint32_t *nkeys, uint64_t *rows)
+RAST__APART void rast__acc_prep(rast__acc_walk *w, const rast__acc_thin *t, uint32_t *nkeys, uint64_t *rows)
 {
     const uint32_t n = w->n;
     const int32_t s = w->s;
     const int64_t bias = (int64_t)1 << (62 - s);
     int32_t *const order = w->order, *const key = w->key, *const last = w->last;
-    int64_t ymin = t[0].yt, ymax = (int64_t)t[0].yt + t[0].dy, ja;
+    int64_t ymin = t[0].yt, ymax = (int64_t)t[0].yt + t[0].dy, ytop = ymin, ja, kmin;
     uint32_t i, nk = 0;
     uint64_t rs = 0;
     for (i = 0; i < n; i++) {
@@ -2645,11 +2649,27 @@ static void rast__acc_prep(rast__acc_walk *w, const rast__acc_thin *t, uint32_t 
         order[i] = (int32_t)i;
         ymin = yt < ymin ? yt : ymin;
         ymax = yb > ymax ? yb : ymax;
+        ytop = yt > ytop ? yt : ytop;
         key[i] = (int32_t)((int64_t)(((uint64_t)yt + ((uint64_t)1 << 62)) >> s) - bias);
         last[i] = (int32_t)(-((int64_t)(((uint64_t)-yb + ((uint64_t)1 << 62)) >> s) - bias) - 1);
     }
     rast__cov_rows_reached(ymin, ymax, (int32_t)1 << s, w->o, &w->ja, &w->jb);
     ja = w->ja;
+    kmin = (int64_t)(((uint64_t)ymin + ((uint64_t)1 << 62)) >> s) - bias; /* (the least key) */
+    if (kmin >= ja) {
+        /* No edge starts above row ja (the clip's top cuts none): no key
+         * to clamp, the greatest the greatest top's (the loop below was 15
+         * instructions an edge, ~0.47 M of a line of text's) */
+        const int32_t d = (int32_t)ja;
+        for (i = 0; i < n; i++) {
+            const int32_t kk = key[i] - d;
+            key[i] = kk;
+            rs += (uint64_t)((int64_t)last[i] - kk - ja + 1);
+        }
+        *nkeys = (uint32_t)((int64_t)(((uint64_t)ytop + ((uint64_t)1 << 62)) >> s) - bias - ja) + 1;
+        *rows = rs;
+        return;
+    }
     for (i = 0; i < n; i++) { /* (the keys from ja) */
         const int64_t r0 = (int64_t)key[i] - ja;
         const int32_t kk = r0 < 0 ? 0 : (int32_t)r0;
@@ -2683,8 +2703,9 @@ static inline void rast__acc_make(rast__aedge *c, const rast__acc_thin *t)
  * (rast__acc_prep's, at the start of the edges' room e) in the rows'
  * order (by first row, stably), at the end of the room (past the first n
  * rast__aedge: no overlap with t[]); key[] and last[] put in that order
- * too, and order[] becomes 0 .. n - 1 (the walk's arrays swapped: no
- * copy).  With counts (cnt[0..nkeys), room, when the rows are few for the
+ * too (the walk's arrays swapped: no copy); order[] is left free (the
+ * rows' walk reads the records in order, the bands' walk has 0 .. n - 1
+ * put there: rast__acc_walk_all).  With counts (cnt[0..nkeys), room, when the rows are few for the
  * edges: see rast__acc_walk_all), t[] is read in a stream and each record
  * written to its row's next slot, a counting sort's placing pass (the
  * records read through order[] at random, then written in order, took a
@@ -2721,7 +2742,6 @@ static rast__aedge *rast__acc_sorted(rast__acc_walk *w, rast__cedge *e, const ra
     w->key = ks;
     w->order = last;
     w->last = order;
-    for (i = 0; i < n; i++) w->order[i] = (int32_t)i;
     w->cap = (uint32_t)(off / sizeof(rast__cedge));
     return ce;
 }
@@ -2827,7 +2847,12 @@ static rast_status rast__acc_walk_all(rast__acc_in *in, uint32_t n, int32_t s, r
         for (k = 0; k < w.nw; k++) w.bits[k] = 0;
         rast__acc_by_rows(&w, &v[0]);
     } else {
-        for (i = 0; i < n; i++) w.thru[i] = rast__acc_thru(&w.e[i], &v[0]);
+        for (i = 0; i < n; i++) {
+            w.thru[i] = rast__acc_thru(&w.e[i], &v[0]);
+#if RAST__ACC_COMPACT
+            w.order[i] = (int32_t)i; /* (the records' order: the rows' walk does without) */
+#endif
+        }
         for (k = 0; k < RAST__ACC_BAND * (w.width + 1); k++) cells[k] = 0;
         for (r = 0; r < RAST__ACC_BAND; r++) {
             uint64_t *b = bandbits + (size_t)r * (size_t)w.nw;

@@ -43,9 +43,10 @@ int rast__cov_plain_parts(const rast_polygon *poly, uint32_t npoints, rast__aren
  * edges it has in e[], as ~ that count when it is not plain, which
  * rast__cov_area_marked reads there (the same arena, nothing taken from
  * it between): its bands by the rings, not by reading every edge's
- * record. */
+ * record; then two int32 a ring, its first and last column where its
+ * winding number may not be 0 (rast__cov_parts_boxes). */
 #define RAST__HZ_BAD 0x20000000
-#define RAST__COV_RING_ROWS(nrings) ((size_t)(nrings) * 3 * sizeof(int32_t))
+#define RAST__COV_RING_ROWS(nrings) ((size_t)(nrings) * 5 * sizeof(int32_t))
 int rast__cov_parts_marked(const rast_polygon *poly, uint32_t npoints, rast__arena arena, int32_t sb,
                            rast__cedge *e, uint32_t nedges);
 /* rast__cov_parts_marked in two steps: the test, from the points alone
@@ -54,6 +55,20 @@ int rast__cov_parts_marked(const rast_polygon *poly, uint32_t npoints, rast__are
  * when they are not the table's, nothing marked): so that a polygon whose
  * parts are all plain needs no edge records (rast__cov_acc_points). */
 int rast__cov_parts_test(const rast_polygon *poly, uint32_t npoints, rast__arena arena, int32_t sb);
+/* From rast__cov_parts_test's table (-1; its rings' pixel boxes: rows and
+ * columns where each ring's winding number may not be 0), pixel boxes
+ * bx[4 k ..] (first column, first row, last column, last row), at most
+ * `most`, apart (no two share a pixel), that hold every ring that is not
+ * plain and no pixel of a ring outside them: each ring's place in in[0 ..
+ * nr): 0 outside every box, k + 1 in box k, RAST__PARTS_NONE a ring not
+ * plain whose winding number is 0 off its edges (nothing to draw).
+ * Returns how many boxes, or -1 (too many, the rings in them more than
+ * half the edges, or no table).  So the coverage of the rings outside
+ * the boxes is their accumulation (every pixel of theirs sees plain
+ * parts only: docs/coverage.md), and in box k that of its rings alone. */
+#define RAST__PARTS_NONE 255
+#define RAST__PARTS_ROUNDS 8
+int rast__cov_parts_boxes(rast__arena arena, uint32_t nr, unsigned char *in, int32_t *bx, int32_t most);
 int rast__cov_parts_mark(rast__arena arena, uint32_t nr, rast__cedge *e, uint32_t nedges, int32_t mark);
 /* The polygon with every two equal and opposite edges dropped (a map's
  * shared borders: the same winding number off the edges), its remaining
@@ -97,7 +112,8 @@ rast_status rast__cov_acc(rast__cedge *e, uint32_t n, int32_t s, rast_fill_rule 
  * batch, or a polygon of many small rings (a mesh's inner edges). */
 rast_status rast__cov_acc_shared(rast__cedge *e, uint32_t n, int32_t s, rast_fill_rule rule,
                                  const rast__cov_out *o, rast__arena *arena);
-/* "accumulate" of a polygon (tris NULL) or of the ntris triangles tris[]
+/* "accumulate" of a polygon (tris NULL; its rings skip[0 .. nskip) left
+ * out, in increasing order) or of the ntris triangles tris[]
  * (as rast__cov_edges_triangles takes them), its edges' shared sides
  * dropped first when `shared` (rast__cov_acc_shared's; a polygon's, when
  * `shared` is RAST__ACC_LOOK, if a sample of its edges finds many of
@@ -107,9 +123,9 @@ rast_status rast__cov_acc_shared(rast__cedge *e, uint32_t n, int32_t s, rast_fil
  * walk's own records), in room, the edges' room (a rast__cedge a vertex),
  * the same levels.  Not in size-optimised builds (coverage_acc.c). */
 #define RAST__ACC_LOOK 2
-rast_status rast__cov_acc_points(const rast_polygon *poly, const rast_point *tris, uint32_t ntris, int shared,
-                                 int32_t s, rast_fill_rule rule, const rast__cov_out *o, rast__cedge *room,
-                                 rast__arena *arena);
+rast_status rast__cov_acc_points(const rast_polygon *poly, const uint32_t *skip, uint32_t nskip,
+                                 const rast_point *tris, uint32_t ntris, int shared, int32_t s, rast_fill_rule rule,
+                                 const rast__cov_out *o, rast__cedge *room, rast__arena *arena);
 /* Row j of "area" by the accumulation, when the row is simple (see
  * coverage_acc.c) and its levels are certain: 1, written and handed on;
  * else 0, nothing handed on (the row may be written), the cells clean.

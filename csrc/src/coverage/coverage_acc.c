@@ -2542,12 +2542,12 @@ RAST__APART uint32_t rast__acc_cancel_some(rast__acc_in *t, uint32_t n, int shar
     return shared != RAST__ACC_LOOK || rast__acc_many_pairs(t, n, room) ? rast__acc_cancel(t, n, room) : n;
 }
 
-rast_status rast__cov_acc_points(const rast_polygon *poly, const rast_point *tris, uint32_t ntris, int shared,
-                                 int32_t s, rast_fill_rule rule, const rast__cov_out *o, rast__cedge *room,
-                                 rast__arena *arena)
+rast_status rast__cov_acc_points(const rast_polygon *poly, const uint32_t *skip, uint32_t nskip,
+                                 const rast_point *tris, uint32_t ntris, int shared, int32_t s, rast_fill_rule rule,
+                                 const rast__cov_out *o, rast__cedge *room, rast__arena *arena)
 {
     rast__acc_thin *const t = (rast__acc_thin *)(void *)room;
-    uint32_t n = 0, k, base;
+    uint32_t n = 0, k, base, q = 0;
     if (tris) { /* (rast__cov_edges_triangles' edges) */
         for (k = 0; k < ntris; k++) {
             rast_point v[3];
@@ -2555,7 +2555,10 @@ rast_status rast__cov_acc_points(const rast_polygon *poly, const rast_point *tri
         }
     } else {
         for (k = 0, base = 0; k < poly->nrings; base += poly->ring_sizes[k], k++)
-            n += rast__acc_thin_ring(poly->points + base, poly->ring_sizes[k], t + n);
+            if (q < nskip && skip[q] == k)
+                q++;
+            else
+                n += rast__acc_thin_ring(poly->points + base, poly->ring_sizes[k], t + n);
     }
     return rast__acc_go(t, shared ? rast__acc_cancel_some(t, n, shared, *arena) : n, s, rule, o, arena);
 }

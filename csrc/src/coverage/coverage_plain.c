@@ -1228,8 +1228,99 @@ int rast__cov_parts_test(const rast_polygon *poly, uint32_t npoints, rast__arena
         rows[3 * r] = (int32_t)rast__floordiv(box[4 * r + 1], P);
         rows[3 * r + 1] = (int32_t)-rast__floordiv(-(int64_t)box[4 * r + 3], P) - 1;
         rows[3 * r + 2] = nv[r] ? (int32_t)ne : ~(int32_t)ne;
+        /* and its columns, after the three a ring: floor(x0 / P) to
+         * ceil(x1 / P) - 1, those where its winding number may not be 0
+         * (rast__cov_parts_boxes) */
+        rows[3 * nr + 2 * r] = (int32_t)rast__floordiv(box[4 * r], P);
+        rows[3 * nr + 2 * r + 1] = (int32_t)-rast__floordiv(-(int64_t)box[4 * r + 2], P) - 1;
     }
     return -1;
+}
+
+/* Do pixel boxes [b[0], b[2]] x [b[1], b[3]] (columns, rows) and c's
+ * meet? */
+static int rast__pl_meet(const int32_t *b, const int32_t *c)
+{
+    return b[0] <= c[2] && c[0] <= b[2] && b[1] <= c[3] && c[1] <= b[3];
+}
+
+int rast__cov_parts_boxes(rast__arena arena, uint32_t nr, unsigned char *in, int32_t *bx, int32_t most)
+{
+    const int32_t *rows = (const int32_t *)rast__take(&arena, RAST__COV_RING_ROWS(nr));
+    const int32_t *cols = rows ? rows + 3 * (size_t)nr : NULL;
+    uint64_t all = 0, bad = 0;
+    int32_t nb = 0, k, q, rb[4];
+    uint32_t r, rounds = 0;
+    int grew = 1;
+    if (!rows) return -1;
+    for (r = 0; r < nr; r++) { /* each ring not plain a box (in[r] 1), or left out (RAST__PARTS_NONE) */
+        const int32_t c = rows[3 * r + 2], ne = c < 0 ? ~c : c;
+        all += (uint32_t)ne;
+        in[r] = 0;
+        if (c >= 0 || !ne) continue;
+        bad += (uint32_t)ne;
+        in[r] = RAST__PARTS_NONE; /* (its winding number 0 off its edges, all on one vertical) */
+        if (cols[2 * r] > cols[2 * r + 1]) continue;
+        if (nb >= most) return -1;
+        bx[4 * nb] = cols[2 * r];
+        bx[4 * nb + 1] = rows[3 * r];
+        bx[4 * nb + 2] = cols[2 * r + 1];
+        bx[4 * nb + 3] = rows[3 * r + 1];
+        in[r] = (unsigned char)(++nb); /* (box nb - 1 for now: numbered at the end) */
+    }
+    while (grew) {
+        /* two boxes that meet made one, until none do */
+        for (k = 0; k < nb; k++)
+            for (q = k + 1; q < nb; q++)
+                if (rast__pl_meet(bx + 4 * k, bx + 4 * q)) {
+                    int32_t i;
+                    for (i = 0; i < 2; i++) {
+                        bx[4 * k + i] = bx[4 * q + i] < bx[4 * k + i] ? bx[4 * q + i] : bx[4 * k + i];
+                        bx[4 * k + 2 + i] = bx[4 * q + 2 + i] > bx[4 * k + 2 + i] ? bx[4 * q + 2 + i] : bx[4 * k + 2 + i];
+                    }
+                    for (i = 0; i < 4; i++) bx[4 * q + i] = bx[4 * (nb - 1) + i];
+                    nb--;
+                    k = -1; /* (box k grew: every pair again) */
+                    break;
+                }
+        /* each ring left that meets a box: in it, the box grown to hold it */
+        grew = 0;
+        for (r = 0; r < nr; r++) {
+            const int32_t c = rows[3 * r + 2];
+            if (in[r] || !c || c == -1 || cols[2 * r] > cols[2 * r + 1]) continue; /* (-1: ~0, no edges) */
+            rb[0] = cols[2 * r];
+            rb[1] = rows[3 * r];
+            rb[2] = cols[2 * r + 1];
+            rb[3] = rows[3 * r + 1];
+            for (k = 0; k < nb; k++)
+                if (rast__pl_meet(rb, bx + 4 * k)) {
+                    int32_t i;
+                    for (i = 0; i < 2; i++) {
+                        bx[4 * k + i] = rb[i] < bx[4 * k + i] ? rb[i] : bx[4 * k + i];
+                        bx[4 * k + 2 + i] = rb[2 + i] > bx[4 * k + 2 + i] ? rb[2 + i] : bx[4 * k + 2 + i];
+                    }
+                    in[r] = 1;
+                    grew = 1;
+                    break;
+                }
+        }
+        if (grew && ++rounds > RAST__PARTS_ROUNDS) return -1;
+    }
+    /* each ring in a box: the box's number + 1; the edges in boxes */
+    for (r = 0; r < nr; r++) {
+        const int32_t c = rows[3 * r + 2];
+        if (!in[r] || in[r] == RAST__PARTS_NONE) continue;
+        bad += (uint32_t)(c < 0 ? 0 : c); /* (those not plain counted above) */
+        rb[0] = cols[2 * r];
+        rb[1] = rows[3 * r];
+        rb[2] = cols[2 * r + 1];
+        rb[3] = rows[3 * r + 1];
+        for (k = 0; k < nb && !rast__pl_meet(rb, bx + 4 * k); k++) {
+        }
+        if (k == nb) return -1; /* (cannot be: its box is in one) */
+        in[r] = (unsigned char)(k + 1);
+    }
+    return bad * 2 <= all ? nb : -1;
 }
 /* ---- shared borders --------------------------------------------------------
  *

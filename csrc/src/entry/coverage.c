@@ -277,6 +277,78 @@ static int rast__cov_convex(const rast_polygon *poly)
 }
 #endif
 
+#if !defined(__OPTIMIZE_SIZE__)
+/* "area" of a polygon some of whose parts are not plain (text with a
+ * glyph or two whose rings touch; rast__cov_parts_test's table at the
+ * start of arena's room) into an array, by its parts' boxes
+ * (rast__cov_parts_boxes): the rings outside every box by their
+ * accumulation, read from the points (coverage_acc.c), every row of the
+ * clip written; then each box's pixels again, by rast__cov_area of its
+ * rings' edges alone, the box its clip.  A ring's winding number is 0
+ * outside the pixel box of its edges, so each pixel sees the rings of
+ * one side only, and each side gives it its exact coverage
+ * (docs/coverage.md: plain parts by the accumulation): the same levels
+ * as rast__cov_area_marked's bands, without an edge record for the
+ * rings outside the boxes, nor the exact rows for their edges.  1 when
+ * done (*st the status), 0 when declined (nothing written; the table
+ * kept).  Not for a painter, whose rows go from the top, each once. */
+#define RAST__COV_BOXES 32
+static int rast__cov_by_boxes(const rast_polygon *poly, uint32_t npoints, int32_t s, rast_fill_rule rule,
+                              const rast__cov_out *o, rast__cedge *e, rast__arena arena, rast_status *st)
+{
+    static const int32_t size[3] = {1, 2, 8};
+    const uint32_t nr = poly->nrings;
+    int32_t bx[4 * RAST__COV_BOXES], nb, k;
+    rast__arena room = arena;
+    unsigned char *in;
+    uint32_t *ring, *first, r, base, m = 0, i;
+    unsigned char *box;
+    if (o->paint || !rast__take(&room, RAST__COV_RING_ROWS(nr))) return 0; /* (the table kept) */
+    in = (unsigned char *)rast__take(&room, nr);
+    if (!in || (nb = rast__cov_parts_boxes(arena, nr, in, bx, RAST__COV_BOXES)) < 0) return 0;
+    /* the rings in boxes (and those with nothing to draw), in order: their
+     * numbers, first points and boxes, at the end of the edges' room (a
+     * rast__cedge a point), past what the accumulation of the others
+     * takes (a rast__cedge an edge, and the rings in boxes hold as many
+     * edges as it at most: rast__cov_parts_boxes) and the boxes' edges */
+    for (r = 0; r < nr; r++) m += in[r] != 0;
+    ring = (uint32_t *)(void *)((unsigned char *)(void *)(e + npoints) - (size_t)m * 2 * sizeof(uint32_t) -
+                                (((size_t)m + 7) & ~(size_t)7));
+    first = ring + m;
+    box = (unsigned char *)(void *)(first + m);
+    for (r = 0, base = 0, i = 0; r < nr; base += poly->ring_sizes[r], r++)
+        if (in[r]) {
+            ring[i] = r;
+            first[i] = base;
+            box[i++] = in[r];
+        }
+    room = arena; /* (the table and in[] read: all the room the accumulation's) */
+    *st = rast__cov_acc_points(poly, ring, m, NULL, 0, 0, s, rule, o, e, &room);
+    for (k = 0; k < nb && *st == RAST_OK; k++) { /* each box: its rings' exact area, its pixels only */
+        rast__cov_out ob = *o;
+        rast__arena a = arena;
+        uint32_t n = 0;
+        ob.clip.x0 = bx[4 * k] > o->clip.x0 ? bx[4 * k] : o->clip.x0;
+        ob.clip.y0 = bx[4 * k + 1] > o->clip.y0 ? bx[4 * k + 1] : o->clip.y0;
+        ob.clip.x1 = bx[4 * k + 2] < o->clip.x1 - 1 ? bx[4 * k + 2] + 1 : o->clip.x1;
+        ob.clip.y1 = bx[4 * k + 3] < o->clip.y1 - 1 ? bx[4 * k + 3] + 1 : o->clip.y1;
+        if (ob.clip.x0 >= ob.clip.x1 || ob.clip.y0 >= ob.clip.y1) continue;
+        ob.base = o->base + (ptrdiff_t)(ob.clip.y0 - o->clip.y0) * o->stride +
+                  (ptrdiff_t)(ob.clip.x0 - o->clip.x0) * size[o->format];
+        for (i = 0; i < m; i++)
+            if (box[i] == (unsigned char)(k + 1)) {
+                rast_polygon one;
+                one.points = poly->points + first[i];
+                one.ring_sizes = poly->ring_sizes + ring[i];
+                one.nrings = 1;
+                n += rast__cov_edges_polygon(&one, e + n);
+            }
+        *st = rast__cov_area(e, n, s, rule, 0, &ob, &a);
+    }
+    return 1;
+}
+#endif
+
 /* Does "accumulate" drop the shared sides first (rast__cov_acc_shared)?
  * For a triangle batch, and a polygon of 16 rings or more of 8 vertices
  * or fewer on the mean (a mesh's). */
@@ -315,7 +387,7 @@ static rast_status rast__cov_run(const rast_polygon *poly, const rast_point *tri
         /* "accumulate": its walk's records straight from the vertices
          * (coverage_acc.c), the same edges and levels as below */
         if (RAST__IS_ACC(opts->method) && rast__cov_acc_may(o, s))
-            return rast__cov_acc_points(poly, tris, ntris,
+            return rast__cov_acc_points(poly, NULL, 0, tris, ntris,
                                         RAST__COV_SHARED(poly, tris, npoints) ? 1
                                         : poly->nrings >= 2 ? RAST__ACC_LOOK /* (a map's borders?) */
                                                             : 0,
@@ -332,7 +404,12 @@ static rast_status rast__cov_run(const rast_polygon *poly, const rast_point *tri
              (rast__cov_plain_pays(poly, e, 0, s, npoints) ? rast__cov_plain(poly, npoints, arena)
                                                     : poly->nrings >= 2 &&
                                                           (parts = rast__cov_parts_test(poly, npoints, arena, s)) > 0)))
-            return rast__cov_acc_points(poly, NULL, 0, 0, s, rule, o, e, &arena);
+            return rast__cov_acc_points(poly, NULL, 0, NULL, 0, 0, s, rule, o, e, &arena);
+        /* some parts not plain: those parts' boxes apart (an array) */
+        if (parts < 0) {
+            rast_status st;
+            if (rast__cov_by_boxes(poly, npoints, s, rule, o, e, arena, &st)) return st;
+        }
         /* rings that share their borders (a map): the polygon without its
          * equal and opposite edges (the same winding number), when plain,
          * by its accumulation (coverage_plain.c, rast__cov_borders) */
@@ -340,7 +417,7 @@ static rast_status rast__cov_run(const rast_polygon *poly, const rast_point *tri
             rast__arena room = arena;
             rast_polygon kept;
             if (rast__cov_borders(poly, npoints, &room, &kept))
-                return rast__cov_acc_points(&kept, NULL, 0, 0, s, rule, o, e, &room);
+                return rast__cov_acc_points(&kept, NULL, 0, NULL, 0, 0, s, rule, o, e, &room);
         }
 #endif
         n = tris ? rast__cov_edges_triangles(tris, ntris, e) : rast__cov_edges_polygon(poly, e);

@@ -103,3 +103,31 @@ def test_swept_right_of_fast(seed):
 def test_swept_and_quick_random(seed, nholes, nout, w, left):
     rnd = np.random.default_rng(seed)
     _check(_scene(rnd, w, 5, nholes, nout, left), (5, w), "random %d %d %d %d %d" % (seed, nholes, nout, w, left))
+
+
+def _wide(rnd, ntri, w, h):
+    """ntri triangles 1.5 to 5 px across in a strip h rows high and w px
+    wide, each starting in some row (new edges for that row's sort), a share
+    of them long and slanted (edges whose columns pass their neighbours'
+    from row to row), a few past the clip."""
+    rings = []
+    for _ in range(ntri):
+        x, y = rnd.uniform(-3, w + 2), rnd.uniform(-1, h - 1)
+        if rnd.random() < 0.3:
+            d = rnd.uniform(-6, 6)
+            pts = [(x, y), (x + d, y + h), (x + d + rnd.uniform(0.5, 2), y + h)]
+        else:
+            s = rnd.uniform(1.5, 5)
+            pts = [(x + rnd.uniform(0, s), y + rnd.uniform(0, s)) for _ in range(3)]
+        rings.append(_ccw(_snap(pts)))
+    return rings
+
+
+@pytest.mark.parametrize("seed", range(4))
+def test_wide_rows_sorted_from_the_last(seed):
+    """Rows of 49 to 170 parts on a canvas three times as wide as that
+    (rast__grp_merge: the last row's order kept, the new edges merged in),
+    the triangles overlapping (swept groups beside quick ones)."""
+    rnd = np.random.default_rng(200 + seed)
+    w = (300, 420)[seed % 2]
+    _check(_wide(rnd, (70, 110)[seed % 2], w, 10), (10, w), "wide seed %d" % seed)

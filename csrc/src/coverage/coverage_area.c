@@ -2970,6 +2970,37 @@ static int rast__grp_sort(int32_t *row, int32_t n, int32_t *tmp, const int32_t *
     return 0;
 }
 
+/* row[0..n) by key, stably, when row[0..nold) are the last row's edges
+ * still in it, in the order it left them (by their keys then, which move
+ * little from row to row), and row[nold..n) the new ones: an insertion of
+ * each part, then one merge (tmp: room for n - nold).  Returns 0 when the
+ * insertion of the old part runs past its budget or the new part is long
+ * (nothing gained): then row[] is the same sequence but for some moves of
+ * an edge past greater keys, so that any stable sort of it gives the order
+ * a stable sort of the original gives (the same relative order of equal
+ * keys), which the caller's sorts then give.  tri3k: the counting pass and
+ * the insertion of rast__grp_sort were 5,000 instructions a row. */
+static int rast__grp_merge(int32_t *row, int32_t n, int32_t nold, int32_t *tmp, const int32_t *key)
+{
+    int32_t k, q, budget = nold + 16, nn = n - nold, out;
+    if (nn > 64) return 0;
+    for (k = 1; k < nold; k++) {
+        const int32_t id = row[k], kx = key[id];
+        for (q = k; q > 0 && key[row[q - 1]] > kx; q--) row[q] = row[q - 1];
+        row[q] = id;
+        budget -= k - q;
+        if (budget < 0) return 0;
+    }
+    for (k = 0; k < nn; k++) { /* the new part, by insertion into tmp */
+        const int32_t id = row[nold + k], kx = key[id];
+        for (q = k; q > 0 && key[tmp[q - 1]] > kx; q--) tmp[q] = tmp[q - 1];
+        tmp[q] = id;
+    }
+    for (out = n - 1, k = nold - 1, q = nn - 1; q >= 0; out--) /* from the end: a new edge after an old one of its key */
+        row[out] = k >= 0 && key[row[k]] > key[tmp[q]] ? row[k--] : tmp[q--];
+    return 1;
+}
+
 /* row[0..n) by key (in [0, kmax]) in one stable counting pass (cnt: room
  * for kmax + 1 counts, tmp for n): again the order rast__cov_radix_sort
  * gives (one stable order by one key).  Where a row's parts are many for
@@ -2997,7 +3028,7 @@ static void rast__grp_count(int32_t *row, int32_t n, int32_t *tmp, uint32_t *cnt
 #endif
 
 static void rast__cov_row_groups(rast__cells *c, rast__cedge *e, int32_t *row, int32_t nrow,
-                                 rast__sweep *sw, int32_t j, rast_fill_rule rule,
+                                 int32_t nold, rast__sweep *sw, int32_t j, rast_fill_rule rule,
                                  int32_t *rs, int32_t nrun, int acc)
 {
     const int64_t Yj = (int64_t)j * c->p;
@@ -3031,11 +3062,14 @@ static void rast__cov_row_groups(rast__cells *c, rast__cedge *e, int32_t *row, i
         const int32_t kmax = c->x1 - c->x0 + 1;
         if ((int64_t)nrow * RAST__GRP_COUNT >= kmax && kmax < 2 * (int64_t)sw->room)
             rast__grp_count(row, nrow, sw->hidx, (uint32_t *)(void *)sw->ct, key, kmax);
+        else if (!(sw->unsorted && (j & 7)) && rast__grp_merge(row, nrow, nold, sw->hidx, key))
+            sw->unsorted = 0; /* (the last row's order, the new edges merged in) */
         else if (sw->unsorted && (j & 7))
             rast__cov_radix_sort(row, sw->hidx, key, (uint32_t)nrow);
         else
             sw->unsorted = rast__grp_sort(row, nrow, sw->hidx, key, c->x1 - c->x0 + 1);
 #else
+        (void)nold;
         rast__cov_radix_sort(row, sw->hidx, key, (uint32_t)nrow);
 #endif
     } else {
@@ -3388,7 +3422,7 @@ rast_status rast__cov_area(rast__cedge *e, uint32_t n, int32_t s, rast_fill_rule
     rast__cov_zero_rows(o, o->clip.y0, ja);
     for (j = ja; j < jb; j++) {
         const int64_t Yj = (int64_t)j * c.p;
-        int32_t m;
+        int32_t m, nold;
         /* Drop the edges that end above the row (when one does, bottom is
          * at or above the row's top); take those that start above its
          * bottom. */
@@ -3407,6 +3441,7 @@ rast_status rast__cov_area(rast__cedge *e, uint32_t n, int32_t s, rast_fill_rule
             same = m == nrow;
             nrow = m;
         }
+        nold = nrow; /* (the last row's edges, in its order: rast__grp_merge) */
         while (next < nlive && e[order[next]].yt < Yj + c.p) {
             const int64_t yb = (int64_t)e[order[next]].yt + e[order[next]].dy;
             if (yb > Yj) {
@@ -3447,7 +3482,7 @@ rast_status rast__cov_area(rast__cedge *e, uint32_t n, int32_t s, rast_fill_rule
                 /* (a row of more edges than a fast row may have ends inside: by groups) */
                 fast = grouped && nrow > RAST__FAST_CUTS ? 0 : rast__cov_row_fast(&c, e, row, nrow, j);
                 if (!fast && grouped)
-                    rast__cov_row_groups(&c, e, row, nrow, &sw, j, rule, runs + rnext, rend - rnext,
+                    rast__cov_row_groups(&c, e, row, nrow, nold, &sw, j, rule, runs + rnext, rend - rnext,
                                          simple);
                 else if (!fast)
                     rast__area_sweep(&c, e, row, nrow, &sw, j, rule, 0);

@@ -2821,19 +2821,20 @@ static void rast__grp_flush(rast__cells *c, rast__cedge *e, int32_t *row, const 
  * quick or exact, lie in its parts' columns, from its least qlo's column to
  * its greatest qhi - 1's (the exact abscissa's column is its quick floor's;
  * a piece's abscissae lie between its part's ends).  rast__grp_emit walks
- * the row's cells once, each column the way its group was added:
+ * the row's cells once, with one cover so far (U): the exact cells' plus
+ * the quick cells' times 2^30 (QT to T); each column the way its group was
+ * added:
  *   - an exact column (and a run between cells): the exact way
- *     (rast__cells_a62), from the exact cover so far plus the quick cover
- *     so far times 2^30 (QT to T).  That quick cover is exact there: every
+ *     (rast__cells_a62).  The quick part of the cover is exact there: every
  *     quick part lies wholly left or right of such a column (a quick
  *     group's columns are all marked, rast__q_add), and a whole part's
  *     quick cover is its exact height (see the quick accumulation).
- *   - a quick column: the quick way (rast__q_run), from the quick cover so
- *     far plus the exact cover so far over 2^30, which is exact there: the
- *     exact groups lie wholly left or right of the column, and each adds
- *     its whole height, a multiple of T (the winding number between groups
- *     is one number down the strip, so the cover there is T or 0 past the
- *     clip's carry, which the group of the clip's left end holds).  The
+ *   - a quick column: the quick way (rast__q_run), from the cover over
+ *     2^30, which is exact: the exact groups lie wholly left or right of
+ *     the column, and each adds its whole height, a multiple of T (the
+ *     winding number between groups is one number down the strip, so the
+ *     cover there is T or 0 past the clip's carry, which the group of the
+ *     clip's left end holds), the quick cells their own 2^-30 units.  The
  *     value then differs from the exact one by the quick group's error
  *     alone (under n 2^-28, n its parts: the bound of the quick
  *     accumulation, with the window of the most parts of a quick group).
@@ -2841,7 +2842,7 @@ static void rast__grp_flush(rast__cells *c, rast__cedge *e, int32_t *row, const 
  * way (their quick cells are cleared by then; the exact ones are kept
  * until the row is done) and rast__cells_emit writes the row: the levels
  * are the exact way's either way. */
-#define RAST__GRP_QUICK 64 /* quick groups a row at most (room on the stack); the others exact */
+#define RAST__GRP_QUICK 128 /* quick groups a row at most (room on the stack); the others exact */
 typedef struct rast__qgrp {
     int32_t k, ms;  /* its parts row[k .. k + ms / 2), sign +1 when ms is odd */
     int32_t lo, hi; /* its clip columns (indices from x0): [lo, hi] */
@@ -2880,40 +2881,30 @@ static int rast__grp_emit(rast__cells *c, int32_t y, const rast__qgrp *q, int32_
     const uint64_t win = ((uint64_t)most + 1) * c->quick << 24;
     const rast__i128 zero = rast__i128_u64(0);
     unsigned char *row = rast__cov_row(o, y);
-    rast__i128 ax = c->carry;                  /* the exact cover so far (U) */
-    uint64_t aq = c->qcarry, xq = 0, bad = 0; /* the quick cover so far (2^-30); ax's */
+    /* the cover so far (U): the exact cells' plus the quick ones' times 2^30 */
+    rast__i128 acc = rast__i128_add(c->carry, rast__i128_shl(rast__i128_from((int64_t)c->qcarry), 30));
+    uint64_t bad = 0;
     int32_t k = 0, wi, gi = 0;
-    xq = rast__i128_sar(ax, 30).lo;
     for (wi = c->wmin; wi <= c->wmax; wi++) {
         uint64_t b;
         for (b = c->bits[wi]; b; b &= b - 1) {
             const int32_t col = (wi << 6) + (int32_t)rast__ctz64(b);
-            if (k < col)
-                rast__cov_fill(f, row, k, col,
-                               rast__cov_level(f, rast__cells_a62(c, rast__i128_add(ax, rast__i128_shl(
-                                                                      rast__i128_from((int64_t)aq), 30)),
-                                                                  zero, c->rule)));
+            if (k < col) rast__cov_fill(f, row, k, col, rast__cov_level(f, rast__cells_a62(c, acc, zero, c->rule)));
             while (gi < nq && q[gi].hi < col) gi++;
-            if (gi < nq && q[gi].lo <= col) { /* quick */
-                aq += c->cover[col].lo;
-                rast__q_run(c, row, col, col + 1, ((xq + aq) << 21) - c->cover[col].hi, win, u8, &bad);
+            if (gi < nq && q[gi].lo <= col) { /* quick: acc a multiple of 2^30 (above) */
+                acc = rast__i128_add(acc, rast__i128_shl(rast__i128_from((int64_t)c->cover[col].lo), 30));
+                rast__q_run(c, row, col, col + 1, (rast__i128_sar(acc, 30).lo << 21) - c->cover[col].hi, win, u8,
+                            &bad);
                 c->cover[col].lo = c->cover[col].hi = 0;
             } else {
-                ax = rast__i128_add(ax, c->cover[col]);
-                xq = rast__i128_sar(ax, 30).lo;
-                rast__cov_store(f, row, col,
-                                rast__cov_level(f, rast__cells_a62(c, rast__i128_add(ax, rast__i128_shl(
-                                                                          rast__i128_from((int64_t)aq), 30)),
-                                                                   c->area[col], c->rule)));
+                acc = rast__i128_add(acc, c->cover[col]);
+                rast__cov_store(f, row, col, rast__cov_level(f, rast__cells_a62(c, acc, c->area[col], c->rule)));
             }
             k = col + 1;
         }
     }
     if (k < c->x1 - c->x0)
-        rast__cov_fill(f, row, k, c->x1 - c->x0,
-                       rast__cov_level(f, rast__cells_a62(c, rast__i128_add(ax, rast__i128_shl(
-                                                              rast__i128_from((int64_t)aq), 30)),
-                                                          zero, c->rule)));
+        rast__cov_fill(f, row, k, c->x1 - c->x0, rast__cov_level(f, rast__cells_a62(c, acc, zero, c->rule)));
     c->qcarry = 0;
     if (bad) return 0;
     for (wi = c->wmin; wi <= c->wmax; wi++) {

@@ -34,6 +34,35 @@ typedef struct rast__cells {
 
 #define RAST__CELLS_T ((uint64_t)1 << RAST__COV_G)
 
+/* a 2^62 from the running cover and a cell's area (see rast__cells),
+ * the rule applied when accumulating, clamped to [0, 2^62]: for
+ * rast__cells_emit and the swept rows' quick groups (coverage_area.c). */
+static inline uint64_t rast__cells_a62(const rast__cells *c, rast__i128 acc, rast__i128 area,
+                                       rast_fill_rule rule)
+{
+    const rast__i128 one = rast__i128_u64((uint64_t)1 << 62);
+    rast__i128 v;
+    if (!c->accumulate) { /* a 2^121 = 2^61 cover - area, then down to 2^62 */
+        v = rast__i128_sar(rast__i128_sub(rast__i128_shl(acc, 61), area), 59);
+        if (rast__i128_neg_p(v)) return 0;
+        if (v.hi || v.lo > ((uint64_t)1 << 62)) return (uint64_t)1 << 62;
+        return v.lo;
+    } else { /* a 2^62 = 4 cover - area / 2^59 */
+        v = rast__i128_sub(rast__i128_shl(acc, 2), area);
+        /* |w| integrated, then the rule */
+        if (rast__i128_neg_p(v)) v = rast__i128_neg(v);
+        if (rule == RAST_RULE_NONZERO) {
+            if (rast__i128_cmp(v, one) > 0) v = one;
+        } else {
+            uint64_t m = v.lo & (((uint64_t)1 << 63) - 1); /* mod 2 */
+            v = rast__i128_u64(m > ((uint64_t)1 << 62) ? ((uint64_t)1 << 63) - m : m);
+        }
+    }
+    if (rast__i128_neg_p(v)) return 0;
+    if (rast__i128_cmp(v, one) > 0) return (uint64_t)1 << 62;
+    return v.lo;
+}
+
 /* e's abscissa at ordinate t of the row whose top is Yj (rast__cov_x_at);
  * advanced by a whole row (rast__cov_x_row); at the end tn of a piece
  * that starts at t, into xn, rn (rast__cov_x_end), then kept as the

@@ -2809,6 +2809,120 @@ static void rast__grp_flush(rast__cells *c, rast__cedge *e, int32_t *row, const 
 }
 
 #if RAST__SHORTCUTS
+/* ---- quick groups in a swept row
+ *
+ * Once a row sweeps a group, its cells are the exact ones (rast__cells):
+ * the fast groups after it were added the exact way too (tri3k: a swept
+ * group in nearly every row, 21,573 fast groups through rast__row_exact,
+ * 11 M instructions of 67 M).  They go to the quick cells instead
+ * (rast__q_piece, the same arrays: a quick cell's cover and area in
+ * cover[].lo and cover[].hi), since no column holds both kinds: the
+ * groups' columns lie apart (rast__cov_row_groups), and a group's cells,
+ * quick or exact, lie in its parts' columns, from its least qlo's column to
+ * its greatest qhi - 1's (the exact abscissa's column is its quick floor's;
+ * a piece's abscissae lie between its part's ends).  rast__grp_emit walks
+ * the row's cells once, with one cover so far (U): the exact cells' plus
+ * the quick cells' times 2^30 (QT to T); each column the way its group was
+ * added:
+ *   - an exact column (and a run between cells): the exact way
+ *     (rast__cells_a62).  The quick part of the cover is exact there: every
+ *     quick part lies wholly left or right of such a column (a quick
+ *     group's columns are all marked, rast__q_add), and a whole part's
+ *     quick cover is its exact height (see the quick accumulation).
+ *   - a quick column: the quick way (rast__q_run), from the cover over
+ *     2^30, which is exact: the exact groups lie wholly left or right of
+ *     the column, and each adds its whole height, a multiple of T (the
+ *     winding number between groups is one number down the strip, so the
+ *     cover there is T or 0 past the clip's carry, which the group of the
+ *     clip's left end holds), the quick cells their own 2^-30 units.  The
+ *     value then differs from the exact one by the quick group's error
+ *     alone (under n 2^-28, n its parts: the bound of the quick
+ *     accumulation, with the window of the most parts of a quick group).
+ * Where a level is not certain, the quick groups are added again the exact
+ * way (their quick cells are cleared by then; the exact ones are kept
+ * until the row is done) and rast__cells_emit writes the row: the levels
+ * are the exact way's either way. */
+#define RAST__GRP_QUICK 128 /* quick groups a row at most (room on the stack); the others exact */
+typedef struct rast__qgrp {
+    int32_t k, ms;  /* its parts row[k .. k + ms / 2), sign +1 when ms is odd */
+    int32_t lo, hi; /* its clip columns (indices from x0): [lo, hi] */
+} rast__qgrp;
+
+/* Group row[k .. k + m), sign s, into the quick cells; its record into *q. */
+static void rast__grp_quick(rast__cells *c, rast__cedge *e, const int32_t *row, int32_t k, int32_t m,
+                            int32_t s, int32_t j, rast__qgrp *q)
+{
+    const int64_t Yj = (int64_t)j * c->p;
+    int64_t lo = 0, hi = 0;
+    int32_t z;
+    for (z = k; z < k + m; z++) {
+        rast__cedge *ed = &e[row[z]];
+        rast__q_piece(c, ed, Yj, ed->qa, ed->qta, ed->qb, ed->qtb, ed->dir * s);
+        if (z == k || ed->qlo < lo) lo = ed->qlo;
+        if (z == k || ed->qhi > hi) hi = ed->qhi;
+    }
+    lo = rast__q_col(lo) - c->x0;
+    hi = rast__q_col(hi - 1) - c->x0;
+    q->k = k;
+    q->ms = m * 2 + (s > 0);
+    q->lo = lo < 0 ? 0 : lo > c->x1 - c->x0 ? c->x1 - c->x0 : (int32_t)lo;
+    q->hi = hi < -1 ? -1 : hi > c->x1 - c->x0 ? c->x1 - c->x0 : (int32_t)hi;
+}
+
+/* Row y from the exact cells and the quick groups' cells q[0..nq) (by
+ * column; most: the most parts one has), above: 1 when written (handed
+ * on, every cell cleared), 0 when a level is not certain (the quick cells
+ * and qcarry cleared, the exact ones kept). */
+static int rast__grp_emit(rast__cells *c, int32_t y, const rast__qgrp *q, int32_t nq, int32_t most)
+{
+    const rast__cov_out *o = c->o;
+    const rast_coverage_format f = o->format;
+    const int u8 = f == RAST_COVERAGE_U8;
+    const uint64_t win = ((uint64_t)most + 1) * c->quick << 24;
+    const rast__i128 zero = rast__i128_u64(0);
+    unsigned char *row = rast__cov_row(o, y);
+    /* the cover so far (U): the exact cells' plus the quick ones' times 2^30 */
+    rast__i128 acc = rast__i128_add(c->carry, rast__i128_shl(rast__i128_from((int64_t)c->qcarry), 30));
+    uint64_t bad = 0;
+    int32_t k = 0, wi, gi = 0;
+    for (wi = c->wmin; wi <= c->wmax; wi++) {
+        uint64_t b;
+        for (b = c->bits[wi]; b; b &= b - 1) {
+            const int32_t col = (wi << 6) + (int32_t)rast__ctz64(b);
+            if (k < col) rast__cov_fill(f, row, k, col, rast__cov_level(f, rast__cells_a62(c, acc, zero, c->rule)));
+            while (gi < nq && q[gi].hi < col) gi++;
+            if (gi < nq && q[gi].lo <= col) { /* quick: acc a multiple of 2^30 (above) */
+                acc = rast__i128_add(acc, rast__i128_shl(rast__i128_from((int64_t)c->cover[col].lo), 30));
+                rast__q_run(c, row, col, col + 1, (rast__i128_sar(acc, 30).lo << 21) - c->cover[col].hi, win, u8,
+                            &bad);
+                c->cover[col].lo = c->cover[col].hi = 0;
+            } else {
+                acc = rast__i128_add(acc, c->cover[col]);
+                rast__cov_store(f, row, col, rast__cov_level(f, rast__cells_a62(c, acc, c->area[col], c->rule)));
+            }
+            k = col + 1;
+        }
+    }
+    if (k < c->x1 - c->x0)
+        rast__cov_fill(f, row, k, c->x1 - c->x0, rast__cov_level(f, rast__cells_a62(c, acc, zero, c->rule)));
+    c->qcarry = 0;
+    if (bad) return 0;
+    for (wi = c->wmin; wi <= c->wmax; wi++) {
+        uint64_t b;
+        for (b = c->bits[wi]; b; b &= b - 1) {
+            const int32_t col = (wi << 6) + (int32_t)rast__ctz64(b);
+            c->cover[col] = c->area[col] = zero;
+        }
+        c->bits[wi] = 0;
+    }
+    rast__cov_row_done(o, y);
+    c->carry = zero;
+    c->wmin = INT32_MAX;
+    c->wmax = -1;
+    c->emitted = 1;
+    return 1;
+}
+
 /* row[0..n) by key (in [0, kmax]), stably: the order rast__cov_radix_sort
  * gives.  One counting pass by the key's top 7 bits into tmp (room for
  * n), then an insertion sort back into row, a few moves an edge (a row's
@@ -2847,6 +2961,37 @@ static int rast__grp_sort(int32_t *row, int32_t n, int32_t *tmp, const int32_t *
     return 0;
 }
 
+/* row[0..n) by key, stably, when row[0..nold) are the last row's edges
+ * still in it, in the order it left them (by their keys then, which move
+ * little from row to row), and row[nold..n) the new ones: an insertion of
+ * each part, then one merge (tmp: room for n - nold).  Returns 0 when the
+ * insertion of the old part runs past its budget or the new part is long
+ * (nothing gained): then row[] is the same sequence but for some moves of
+ * an edge past greater keys, so that any stable sort of it gives the order
+ * a stable sort of the original gives (the same relative order of equal
+ * keys), which the caller's sorts then give.  tri3k: the counting pass and
+ * the insertion of rast__grp_sort were 5,000 instructions a row. */
+static int rast__grp_merge(int32_t *row, int32_t n, int32_t nold, int32_t *tmp, const int32_t *key)
+{
+    int32_t k, q, budget = nold + 16, nn = n - nold, out;
+    if (nn > 64) return 0;
+    for (k = 1; k < nold; k++) {
+        const int32_t id = row[k], kx = key[id];
+        for (q = k; q > 0 && key[row[q - 1]] > kx; q--) row[q] = row[q - 1];
+        row[q] = id;
+        budget -= k - q;
+        if (budget < 0) return 0;
+    }
+    for (k = 0; k < nn; k++) { /* the new part, by insertion into tmp */
+        const int32_t id = row[nold + k], kx = key[id];
+        for (q = k; q > 0 && key[tmp[q - 1]] > kx; q--) tmp[q] = tmp[q - 1];
+        tmp[q] = id;
+    }
+    for (out = n - 1, k = nold - 1, q = nn - 1; q >= 0; out--) /* from the end: a new edge after an old one of its key */
+        row[out] = k >= 0 && key[row[k]] > key[tmp[q]] ? row[k--] : tmp[q--];
+    return 1;
+}
+
 /* row[0..n) by key (in [0, kmax]) in one stable counting pass (cnt: room
  * for kmax + 1 counts, tmp for n): again the order rast__cov_radix_sort
  * gives (one stable order by one key).  Where a row's parts are many for
@@ -2874,7 +3019,7 @@ static void rast__grp_count(int32_t *row, int32_t n, int32_t *tmp, uint32_t *cnt
 #endif
 
 static void rast__cov_row_groups(rast__cells *c, rast__cedge *e, int32_t *row, int32_t nrow,
-                                 rast__sweep *sw, int32_t j, rast_fill_rule rule,
+                                 int32_t nold, rast__sweep *sw, int32_t j, rast_fill_rule rule,
                                  int32_t *rs, int32_t nrun, int acc)
 {
     const int64_t Yj = (int64_t)j * c->p;
@@ -2887,6 +3032,10 @@ static void rast__cov_row_groups(rast__cells *c, rast__cedge *e, int32_t *row, i
      * lie apart), so the quick values' error at a pixel is that group's,
      * not the row's (see the quick accumulation) */
     int32_t nk = 0, most = 0, ngrp = 0;
+#if RAST__SHORTCUTS
+    rast__qgrp qg[RAST__GRP_QUICK]; /* the quick groups once swept (above), and their most parts */
+    int32_t nq = 0, qmost = 0;
+#endif
     sw->swept = 0;
     for (k = 0; k < nrow; k++) { /* the parts' ranges, their first columns as keys */
         rast__cedge *ed = &e[row[k]];
@@ -2904,11 +3053,14 @@ static void rast__cov_row_groups(rast__cells *c, rast__cedge *e, int32_t *row, i
         const int32_t kmax = c->x1 - c->x0 + 1;
         if ((int64_t)nrow * RAST__GRP_COUNT >= kmax && kmax < 2 * (int64_t)sw->room)
             rast__grp_count(row, nrow, sw->hidx, (uint32_t *)(void *)sw->ct, key, kmax);
+        else if (!(sw->unsorted && (j & 7)) && rast__grp_merge(row, nrow, nold, sw->hidx, key))
+            sw->unsorted = 0; /* (the last row's order, the new edges merged in) */
         else if (sw->unsorted && (j & 7))
             rast__cov_radix_sort(row, sw->hidx, key, (uint32_t)nrow);
         else
             sw->unsorted = rast__grp_sort(row, nrow, sw->hidx, key, c->x1 - c->x0 + 1);
 #else
+        (void)nold;
         rast__cov_radix_sort(row, sw->hidx, key, (uint32_t)nrow);
 #endif
     } else {
@@ -3019,7 +3171,13 @@ static void rast__cov_row_groups(rast__cells *c, rast__cedge *e, int32_t *row, i
             rast__area_sweep(c, e, row + k, m, sw, j, rule, wl);
             sw->swept = 1;
         } else if (s != 0 && swept) {
-            rast__area_exact(c, e, row + k, m, j, s);
+#if RAST__SHORTCUTS
+            if (nq < RAST__GRP_QUICK && rast__q_may(c, m > qmost ? m : qmost)) {
+                rast__grp_quick(c, e, row, k, m, s, j, &qg[nq++]);
+                if (m > qmost) qmost = m;
+            } else
+#endif
+                rast__area_exact(c, e, row + k, m, j, s);
         } else if (s != 0) { /* kept: group nk starts at k, m edges, sign s */
             sw->h[nk] = k;
             sw->live[nk++] = m * 2 + (s > 0);
@@ -3032,6 +3190,11 @@ static void rast__cov_row_groups(rast__cells *c, rast__cedge *e, int32_t *row, i
     (void)ngrp;
 #endif
     if (swept || !nk) {
+#if RAST__SHORTCUTS
+        if (nq && !rast__grp_emit(c, j, qg, nq, qmost)) /* not certain: the quick groups the exact way */
+            for (g = 0; g < nq; g++)
+                rast__area_exact(c, e, row + qg[g].k, qg[g].ms >> 1, j, (qg[g].ms & 1) ? 1 : -1);
+#endif
         return;
 #if RAST__SHORTCUTS
     } else if (acc && nk == ngrp) {
@@ -3250,7 +3413,7 @@ rast_status rast__cov_area(rast__cedge *e, uint32_t n, int32_t s, rast_fill_rule
     rast__cov_zero_rows(o, o->clip.y0, ja);
     for (j = ja; j < jb; j++) {
         const int64_t Yj = (int64_t)j * c.p;
-        int32_t m;
+        int32_t m, nold;
         /* Drop the edges that end above the row (when one does, bottom is
          * at or above the row's top); take those that start above its
          * bottom. */
@@ -3269,6 +3432,7 @@ rast_status rast__cov_area(rast__cedge *e, uint32_t n, int32_t s, rast_fill_rule
             same = m == nrow;
             nrow = m;
         }
+        nold = nrow; /* (the last row's edges, in its order: rast__grp_merge) */
         while (next < nlive && e[order[next]].yt < Yj + c.p) {
             const int64_t yb = (int64_t)e[order[next]].yt + e[order[next]].dy;
             if (yb > Yj) {
@@ -3309,7 +3473,7 @@ rast_status rast__cov_area(rast__cedge *e, uint32_t n, int32_t s, rast_fill_rule
                 /* (a row of more edges than a fast row may have ends inside: by groups) */
                 fast = grouped && nrow > RAST__FAST_CUTS ? 0 : rast__cov_row_fast(&c, e, row, nrow, j);
                 if (!fast && grouped)
-                    rast__cov_row_groups(&c, e, row, nrow, &sw, j, rule, runs + rnext, rend - rnext,
+                    rast__cov_row_groups(&c, e, row, nrow, nold, &sw, j, rule, runs + rnext, rend - rnext,
                                          simple);
                 else if (!fast)
                     rast__area_sweep(&c, e, row, nrow, &sw, j, rule, 0);

@@ -640,6 +640,147 @@ RAST__APART void rast__acc_dband_l(rast__acc *v, rast__aedge *e, int64_t off, in
     rast__acc_run_band(v, e, off, 0, span);
 }
 
+#if !defined(__OPTIMIZE_SIZE__)
+/* e's parts in rows j0 + r .. j0 + r1 (two or more) of a band whose rows
+ * are all ok, e in the columns of the clip (rast__acc_thru not
+ * INT32_MIN), in one loop, both steppers in registers from row to row and
+ * column to column (a small triangle's edge meets a band in one to four
+ * rows, its first or last among them: rast__acc_edge's rows, each partial
+ * one by rast__acc_row_part_in with its tests of the clip and the
+ * steppers in the record, took ~500 instructions a band of 10,000 small
+ * triangles, ~210 a row).  A part's pieces are rast__acc_part's: its
+ * first column's to the first vertical, each whole column's between two
+ * (rast__acc_cols_in's way: its height d / 2^20 added to its cell and the
+ * next, carried as prev), its last column's from the last vertical; the
+ * verticals' ordinates, floors of values within [ta, tb], need no clamp
+ * (rast__acc_cols_in's argument for [0, QT]), so the cells get the same
+ * sums (docs/coverage.md, the accumulation's bound per part).  span:
+ * NULL, or (the band's rows all dense) the columns that e's abscissae
+ * span added to span[0] .. span[1], as rast__acc_dband_r's, no cell
+ * marked.  right: e goes right, a constant at each call. */
+RAST__HOT void rast__acc_short_in(rast__acc *v, rast__aedge *e, int32_t j0, int32_t r, int32_t r1, int64_t *span,
+                                  int right)
+{
+    const int32_t p = v->p, hq = v->hq;
+    const int64_t bias = (int64_t)v->x0 * (int64_t)QT, rel0 = (int64_t)e->yt - (int64_t)(j0 + r) * p;
+    const int64_t rel1 = rel0 + e->dy - (int64_t)(r1 - r) * p; /* (row r1's bottom end) */
+    const int32_t rl = rel1 < p ? r1 : r1 + 1; /* the row whose part ends at e's end (if in the band) */
+    const uint64_t fm = QT - 1, neg = e->dir < 0 ? ~(uint64_t)0 : 0;
+    const uint32_t dy = (uint32_t)e->dy, adx = (uint32_t)(e->dx < 0 ? -e->dx : e->dx);
+    const int32_t r0 = r;
+    int64_t xa, xb = 0, qxs = 0, qt = 0, qts = 0, c0;
+    uint64_t ta, tb, d0 = 0, d1 = 0;
+    uint32_t qxr = 0, qxsr = 0, qtr = 0, qtsr = 0;
+    int cols = 0; /* the column stepper in registers: qt from the row's top */
+    if (rel0 > 0) { /* (e starts in row j0 + r) */
+        ta = (uint64_t)rel0 << hq;
+        xa = (int64_t)e->xt * ((int64_t)1 << hq) - bias;
+    } else {
+        ta = 0;
+        xa = rast__acc_top(e, j0 + r, &v[r]) - bias;
+    }
+    if (r < rl) { /* the row stepper at the next row's top (rast__acc_ends' way), then in registers */
+        const int32_t j1 = j0 + r + 1;
+        xb = (rel0 > 0 && e->qrow != j1 ? rast__acc_top1(e, j1, &v[r], 0) : rast__acc_top(e, j1, &v[r])) - bias;
+        rast__acc_qxs(e);
+        qxr = e->qxr;
+        qxs = e->qxs;
+        qxsr = e->qxsr;
+    }
+    c0 = (int64_t)((uint64_t)xa >> QF);
+    for (;;) {
+        uint64_t *const acc = v[r].acc;
+        int64_t ca, cb;
+        if (r == rl) {
+            tb = (uint64_t)rel1 << hq;
+            xb = ((int64_t)e->xt + e->dx) * ((int64_t)1 << hq) - bias;
+        } else {
+            tb = QT;
+        }
+        ca = (int64_t)((uint64_t)xa >> QF);
+        cb = (int64_t)((uint64_t)xb >> QF);
+        if (ca == cb) {
+            rast__acc_put(acc, ca, (uint64_t)xa & fm, (uint64_t)xb & fm, tb - ta, neg, RAST__ACC_SX);
+            if (!span) rast__acc_mark(&v[r], (int32_t)ca, (int32_t)ca + 1);
+        } else {
+            uint64_t t, prev = 0, sum = 0;
+            int64_t col;
+            if (!cols) { /* the column stepper, once a call */
+                const int64_t X = ca + right + v->x0;
+                if (e->qX != X) rast__acc_t_first(e, X, &v[r]);
+                qt = e->qt - (int64_t)(r - r0) * (int64_t)QT + rel0 * ((int64_t)1 << hq);
+                qtr = e->qtr;
+                qtsr = e->qtsr;
+                qts = e->qts;
+                d0 = (((uint64_t)qts << 20) ^ neg) - neg;
+                d1 = d0 + ((((uint64_t)1 << 20) ^ neg) - neg);
+                cols = 1;
+            }
+            t = (uint64_t)qt;
+            rast__acc_put(acc, ca, (uint64_t)xa & fm, right ? QT : 0, t - ta, neg, RAST__ACC_SX);
+            if (right) {
+                for (col = ca + 1; col != cb; col++)
+                    rast__acc_col_step(&acc[col * RAST__ACC_SX], &qtr, qtsr, adx, d0, d1, &prev, &sum);
+                acc[cb * RAST__ACC_SX] += prev;
+            } else {
+                for (col = ca - 1; col != cb; col--)
+                    rast__acc_col_step(&acc[(col + 1) * RAST__ACC_SX], &qtr, qtsr, adx, d0, d1, &prev, &sum);
+                acc[(cb + 1) * RAST__ACC_SX] += prev;
+            }
+            t += (((sum ^ neg) - neg)) >> 20; /* (the last vertical's ordinate) */
+            rast__acc_put(acc, cb, right ? 0 : QT, (uint64_t)xb & fm, tb - t, neg, RAST__ACC_SX);
+            qtr += qtsr; /* the stepper to the vertical after the last */
+            qt = (int64_t)t + qts + rast__acc_carry(&qtr, adx);
+            if (!span && right)
+                rast__acc_mark(&v[r], (int32_t)ca, (int32_t)cb + 1);
+            else if (!span)
+                rast__acc_mark(&v[r], (int32_t)cb, (int32_t)ca + 1);
+        }
+        if (r == r1) break;
+        r++; /* the next row, from this one's bottom */
+        xa = xb;
+        ta = 0;
+        qt -= (int64_t)QT;
+        if (r != rl) {
+            xb += qxs;
+            qxr += qxsr;
+            xb += rast__acc_carry(&qxr, dy);
+        }
+    }
+    /* e's steppers, where e goes on below the band, as the other ways
+     * leave them: the row stepper at the next row's top, the column
+     * stepper at the vertical after the last crossed (where e ends here,
+     * its records keep the steppers as rast__acc_ends and
+     * rast__acc_t_first set them: at a row and a vertical of e, as the
+     * tie passes take them) */
+    if (r < rl) {
+        e->qx = xb + bias;
+        e->qxr = qxr;
+        e->qrow = j0 + r + 1;
+    }
+    if (cols && r < rl) {
+        e->qt = qt + (int64_t)(r - r0) * (int64_t)QT - rel0 * ((int64_t)1 << hq);
+        e->qtr = qtr;
+        e->qX = (rast__acc_col_t)((int64_t)((uint64_t)xb >> QF) + right + v->x0);
+    }
+    if (span) {
+        const int64_t c1 = (int64_t)((uint64_t)xb >> QF), lo = right ? c0 : c1, hi = right ? c1 : c0;
+        span[0] = lo < span[0] ? lo : span[0];
+        span[1] = hi > span[1] ? hi : span[1];
+    }
+}
+
+RAST__APART void rast__acc_short_r(rast__acc *v, rast__aedge *e, int32_t j0, int32_t r0, int32_t r1, int64_t *span)
+{
+    rast__acc_short_in(v, e, j0, r0, r1, span, 1);
+}
+
+RAST__APART void rast__acc_short_l(rast__acc *v, rast__aedge *e, int32_t j0, int32_t r0, int32_t r1, int64_t *span)
+{
+    rast__acc_short_in(v, e, j0, r0, r1, span, 0);
+}
+#endif
+
 /* e's parts in rows j0 + r, r = r0 .. r1, of a band whose row r has the
  * cells v[r] (v[r].p, .hq, .x0, .x1 alike), skipping the rows whose ok[r]
  * is 0; thru the last row that e runs through, whole, if e lies in the
@@ -2307,8 +2448,19 @@ RAST__APART void rast__acc_by_bands(const rast__acc_walk *w, rast__acc *v)
                     rast__acc_band_l(v, ed, off);
                 ed->qrow = j1;
             } else {
-                rast__acc_edge(v, ok, ed, j0, f > j0 ? f - j0 : 0, (last[ek] < j1 - 1 ? last[ek] : j1 - 1) - j0,
-                               w->thru[ek]);
+                const int32_t r0 = f > j0 ? f - j0 : 0, r1 = (last[ek] < j1 - 1 ? last[ek] : j1 - 1) - j0;
+#if !defined(__OPTIMIZE_SIZE__)
+                /* (two rows or more, in the clip: one loop; a row alone
+                 * costs less by rast__acc_edge, its set-up being less) */
+                if (ok[RAST__ACC_BAND] && w->thru[ek] != INT32_MIN && r0 < r1) {
+                    if (ed->dx > 0)
+                        rast__acc_short_r(v, ed, j0, r0, r1, dense ? span : NULL);
+                    else
+                        rast__acc_short_l(v, ed, j0, r0, r1, dense ? span : NULL);
+                    continue;
+                }
+#endif
+                rast__acc_edge(v, ok, ed, j0, r0, r1, w->thru[ek]);
             }
         }
         if (span[1] >= 0) /* (dense: the cells of the walks above) */

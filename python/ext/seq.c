@@ -148,7 +148,7 @@ fail:
  * None answers anything else (the Python path then checks and names what
  * is wrong):
  *   - a list of exactly ndarray objects, each of shape (N >= 1, 2) and of
- *     numpy's float64 or int32 dtype (`dtypes`, by identity; any strides):
+ *     numpy's float64 or int32 dtype (`dtypes`, seq_dtype_is; any strides):
  *     (points, sizes);
  *   - one ring, a list of (x, y) pairs (tuples or lists of two exact
  *     floats or ints): (points, None);
@@ -820,7 +820,7 @@ static PyObject *seq_fill_do(PyObject *const *a, Py_ssize_t nargs)
     }
     if ((PyObject *)Py_TYPE(rings) == seq_ndarray) {
         h = (const seq_array_head *)(const void *)rings;
-        if (h->descr != seq_f64 || h->nd != 2 || h->dimensions[1] != 2 || h->strides[0] != 16 ||
+        if (!seq_dtype_is(h->descr, seq_f64) || h->nd != 2 || h->dimensions[1] != 2 || h->strides[0] != 16 ||
             h->strides[1] != 8 || !(h->flags & SEQ_ARRAY_ALIGNED))
             Py_RETURN_FALSE;
         n = h->dimensions[0];
@@ -1114,7 +1114,7 @@ static Py_ssize_t seq_cov_ring(PyObject *rings, const double **xy)
     if (seq_head_ok < 0) seq_head_ok = seq_head_check(rings);
     if (seq_head_ok <= 0) return 0;
     h = (const seq_array_head *)(const void *)rings;
-    if (h->descr != seq_f64 || h->nd != 2 || h->dimensions[1] != 2 || h->strides[0] != 16 ||
+    if (!seq_dtype_is(h->descr, seq_f64) || h->nd != 2 || h->dimensions[1] != 2 || h->strides[0] != 16 ||
         h->strides[1] != 8 || !(h->flags & SEQ_ARRAY_ALIGNED) || h->dimensions[0] < 3 ||
         h->dimensions[0] > SEQ_COV_POINTS)
         return 0;

@@ -658,7 +658,8 @@ class Canvas:
                 return  # the remembered target and colour, these options (_seq.fill_method)
             xy = None
             if type(rings) is _ndarray:
-                if rings.dtype is _F64 and rings.strides == _PACKED and rings.shape[1] == 2 \
+                if (rings.dtype is _F64 or rings.dtype == _F64) and rings.strides == _PACKED \
+                        and rings.shape[1] == 2 \
                         and rings.flags.aligned:  # C reads doubles: not a view at an odd address
                     xy, n = rings, len(rings)
             elif type(rings) is list:
@@ -689,7 +690,8 @@ class Canvas:
                 pixel = last[1] if color is last[0] else self._pixel(color)
                 # one C-contiguous float64 ring of 3 points or more: straight to
                 # C (an error status: fill_polygon_aa's call below says which)
-                if type(rings) is _ndarray and rings.dtype is _F64 and rings.strides == _PACKED \
+                if type(rings) is _ndarray and (rings.dtype is _F64 or rings.dtype == _F64) \
+                        and rings.strides == _PACKED \
                         and rings.shape[1] == 2 and len(rings) >= 3 and len(rings) <= _MAX_POINTS \
                         and rings.flags.aligned:
                     if not _lent(_fill_ring_aa, target, _from_buffer(_DOUBLES, rings), len(rings), _NULL, 1,

@@ -193,8 +193,10 @@ def _one_ring(rings):
     """The ring itself of one float64 (N, 2) array with N >= 3 (C-contiguous,
     at most RAST_MAX_POINTS), or of a list of one such array; else None."""
     r = rings[0] if type(rings) is list and len(rings) == 1 else rings
-    if type(r) is _ndarray and r.dtype is _F64 and r.ndim == 2 and r.shape[1] == 2 and r.strides == _PACKED \
-            and 3 <= len(r) <= _MAX_POINTS:
+    # (the dtype equal, not only the same object: an unpickled array's is
+    # a dtype of its own)
+    if type(r) is _ndarray and (r.dtype is _F64 or r.dtype == _F64) and r.ndim == 2 and r.shape[1] == 2 \
+            and r.strides == _PACKED and 3 <= len(r) <= _MAX_POINTS:
         return r
     return None
 
@@ -425,7 +427,8 @@ def triangles_coverage(tris: npt.ArrayLike, shape: Shape, *, method: CoverageMet
     """
     key, quick = _quick(method, "nonzero", subpixel_bits, sample_offset, dtype)
     if quick is not None and _plain_shape(shape) is not None and type(tris) is _ndarray \
-            and tris.dtype is _F64 and tris.strides == _PACKED_TRIS and tris.shape[1:] == (3, 2) \
+            and (tris.dtype is _F64 or tris.dtype == _F64) and tris.strides == _PACKED_TRIS \
+            and tris.shape[1:] == (3, 2) \
             and 0 < 3 * len(tris) <= _MAX_POINTS:
         opts, fmt, c_dtype, d = quick
         h, w = shape

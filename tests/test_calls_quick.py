@@ -302,7 +302,7 @@ def test_polygon_mask_options_of_unhashable_types_are_input_errors(kw):
     ring = np.array([[1.0, 1.0], [6.0, 1.5], [3.0, 5.0]])
     with pytest.raises(InputError):
         rastrum.polygon_mask(ring, (8, 8), **kw)
-    canvas = rastrum.Canvas(np.zeros((8, 8), np.uint8))
+    canvas = rastrum.Canvas((8, 8), format="gray8", background=0)
     with pytest.raises(InputError):
         canvas.fill_polygon(ring, 255, **kw)
-    assert not canvas.target.any()
+    assert not canvas.array.any()

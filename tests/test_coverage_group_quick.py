@@ -22,9 +22,7 @@ import numpy as np
 import pytest
 from hypothesis import given, settings, strategies as st
 
-import rastrum
-from oracle_nonzero import nonzero_area
-from test_coverage import check_area
+from test_coverage_group_keys import _check
 
 Q = 256  # the vertices on the 1/256 px grid (S = 8): exact as given
 
@@ -41,15 +39,6 @@ def _ccw(pts):
 
 def _tri(rnd, x, y, size):
     return _snap([(x + rnd.uniform(0, size), y + rnd.uniform(0, size)) for _ in range(3)])
-
-
-def _check(rings, shape, what):
-    a = nonzero_area(rings, shape)
-    n = sum(len(r) for r in rings)
-    m = n * (n - 1) // 2
-    for dtype, M in ((np.uint8, 255), (np.uint16, 65535)):
-        out = rastrum.polygon_coverage(rings, shape, rule="nonzero", dtype=dtype, method="area")
-        check_area(out, a, M, n, m, "%s %s" % (what, np.dtype(dtype).name))
 
 
 def _scene(rnd, w, h, nholes, nout, swept_left=True):

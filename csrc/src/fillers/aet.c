@@ -520,6 +520,7 @@ static inline void rast__delta_col(unsigned char *in, unsigned char *buf, int32_
     if (inplace) {
         const int32_t m = b < mid ? b : mid;
         for (p = in + (ptrdiff_t)(a - row0) * bits + c; a < m; a++, p += bits) *p = (unsigned char)(*p + dir);
+        if (a == b) return;
     }
     for (p = buf + (ptrdiff_t)(a - mid) * stride + c; a < b; a++, p += stride) *p = (unsigned char)(*p + dir);
 }
@@ -633,6 +634,182 @@ RAST__HOT void rast__delta_now_walk(const rast_polygon *poly, const rast__grid *
     }
 }
 
+/* ---- the vertices' rows and columns found first ----------------------------
+ * rast__delta_now_walk finds a vertex's row (and, for an edge that crosses
+ * one, both ends' columns) in its loop, and cuts each edge's rows and
+ * column to the clip there: with the counters, the rings and the pieces,
+ * more values than the registers hold, and the loop spilled and reloaded
+ * them every edge (~145 instructions an edge that crosses a row on a
+ * paragraph of text).  Here a pass of its own finds every vertex's row
+ * and column (rast__vshift_row, the same values), relative to the clip's
+ * first and cut to [0, rows] and [0, bits], as two 16-bit numbers; the
+ * walk then reads them.  Cutting the vertices' rows and columns is
+ * cutting the edges': min, max and the cut to an interval are monotone
+ * and commute, so an edge's rows [min(ra, rb), max(ra, rb)) cut are the
+ * cut ends' min and max, and its crossings' columns, which lie between
+ * its ends' (rast__delta_now_walk), cut, lie between the cut ends': one
+ * column when those are equal (an edge wholly left of the clip counts at
+ * its first column on every row).  An edge of rows all outside the clip
+ * has its two ends cut to the same row: no crossing, as before.  The
+ * pieces' count (starts) is over the cut rows: a piece's cut rows are
+ * monotone still, each crossed once.  When: rows and bits below 2^15
+ * (the pair's halves), and room for 4 bytes a vertex. */
+#define RAST__RC_MAX 32767
+
+/* rc[2 i], rc[2 i + 1]: vertex i's column and row, relative to col0 and
+ * row0, cut to [0, bits] and [0, rows]. */
+static void rast__delta_rc(const rast_point *pts, uint32_t n, const rast__vshift *v, int32_t col0,
+                           int32_t row0, int32_t bits, int32_t rows, uint16_t *rc)
+{
+    const int32_t bc = v->kb + col0, br = v->kb + row0;
+    uint32_t i = 0;
+#if defined(RAST__DELTA_SSE2)
+    {
+        /* four vertices a step: doubled, biased, shifted (as
+         * rast__vshift_row), the bias and the clip's first taken off, cut
+         * to int16 (saturating) and then to [0, bits] x [0, rows] */
+        const __m128i k = _mm_set_epi32((int)v->ky, (int)v->kx, (int)v->ky, (int)v->kx);
+        const __m128i b = _mm_set_epi32(br, bc, br, bc);
+        const __m128i hi = _mm_set_epi16((short)rows, (short)bits, (short)rows, (short)bits,
+                                         (short)rows, (short)bits, (short)rows, (short)bits);
+        const __m128i sh = _mm_cvtsi32_si128((int)v->shift), zero = _mm_setzero_si128();
+        for (; i + 4 <= n; i += 4) {
+            __m128i a = _mm_loadu_si128((const __m128i *)(const void *)(pts + i));
+            __m128i c = _mm_loadu_si128((const __m128i *)(const void *)(pts + i + 2));
+            a = _mm_sub_epi32(_mm_srl_epi32(_mm_add_epi32(_mm_add_epi32(a, a), k), sh), b);
+            c = _mm_sub_epi32(_mm_srl_epi32(_mm_add_epi32(_mm_add_epi32(c, c), k), sh), b);
+            a = _mm_min_epi16(_mm_max_epi16(_mm_packs_epi32(a, c), zero), hi);
+            _mm_storeu_si128((__m128i *)(void *)(rc + 2 * i), a);
+        }
+    }
+#endif
+    for (; i < n; i++) {
+        int32_t c = rast__vshift_row(pts[i].x, v->kx, v->shift) - bc;
+        int32_t r = rast__vshift_row(pts[i].y, v->ky, v->shift) - br;
+        c = c < 0 ? 0 : c > bits ? bits : c;
+        r = r < 0 ? 0 : r > rows ? rows : r;
+        rc[2 * i] = (uint16_t)c;
+        rc[2 * i + 1] = (uint16_t)r;
+    }
+}
+
+/* The column of edge top -> bottom (top.y < bottom.y) at row `first`, as
+ * rast__edge_first_col finds it, for an edge walked on that row alone:
+ * base + ceil(n / q) (internal.h), by one 32-bit division with C's
+ * truncation (the ceiling of n / q is the quotient, plus one when the
+ * remainder is positive) when q and n fit 32 bits, and no remainder e for
+ * a DDA.  (An edge of one row at S = 8: q < 2^20, |n| < 2^19 + 2^9 |dx|.)
+ * Else rast__edge_first_col. */
+static inline int32_t rast__one_row_col(rast_point top, rast_point bottom, int32_t first, const rast__grid *g)
+{
+    const rast__dpos xa = 2 * top.x, ya = 2 * top.y, dx = 2 * bottom.x - xa, dy = 2 * bottom.y - ya;
+    const int32_t xo = xa - g->off;
+    const int64_t q = (int64_t)dy * g->unit;
+    int64_t n = (int64_t)(xo & (g->unit - 1)) * dy + ((int64_t)first * g->unit + g->off - ya) * dx, e;
+    if (g->textbook) n += (int64_t)(g->unit / 2) * dy - q + 1;
+    if (q <= INT32_MAX && (uint64_t)(n + INT32_MAX) <= (uint64_t)2 * INT32_MAX) {
+        const int32_t t = (int32_t)n / (int32_t)q, r = (int32_t)n % (int32_t)q;
+        return rast__floorshift32(xo, g->shift) + t + (r > 0);
+    }
+    return rast__edge_first_col(top, bottom, first, g, &e);
+}
+
+/* An edge of rast__delta_rc_walk that crosses rows [first, end) (relative
+ * to row0) with ends in different columns and more than one row: its DDA,
+ * as rast__delta_now_walk walks it.  (Apart: it is rare, and inlined it
+ * cost the walk's loop registers.) */
+RAST__APART void rast__delta_rc_dda(rast_point top, rast_point bottom, int down, int32_t first,
+                                    int32_t end, const rast__grid *g, const rast__delta_cols *d,
+                                    int32_t row0, int32_t mid, unsigned char *buf, unsigned char *in,
+                                    unsigned char dir, const int inplace)
+{
+    rast__edge ed;
+    rast__edge_start_inline(&ed, top, bottom, down ? 1 : -1, first + row0, end + row0, g);
+    if (!inplace) {
+        rast__delta_walk(&ed, buf, row0, end + row0, d->stride, d->col0, d->bits, dir, 1, 1);
+    } else {
+        rast__delta_walk(&ed, in, row0, mid + row0, d->bits, d->col0, d->bits, dir, 1, 1);
+        if (ed.end > mid + row0) rast__delta_walk_last(&ed, buf, d);
+    }
+}
+
+/* rast__delta_now_walk's work from rc (rast__delta_rc): rows relative to
+ * the clip's first, [0, mid) in the mask itself (in, rows of bits), the
+ * rest in buf (rows of stride from mid); `inplace` a constant (0: in
+ * NULL, mid = 0).  The same edges, directions, columns and pieces. */
+RAST__HOT void rast__delta_rc_walk(const rast_polygon *poly, const uint16_t *rc, const rast__grid *g,
+                                   const rast__delta_cols *d, int32_t row0, int32_t mid,
+                                   unsigned char *buf, unsigned char *in, int32_t *starts,
+                                   const int inplace)
+{
+    const rast_point *pts = poly->points;
+    const int32_t bits = d->bits, stride = d->stride;
+    const unsigned char up = d->mask == 1 ? 1 : 0xFF;
+    uint32_t k, base;
+    for (k = 0, base = 0; k < poly->nrings; base += poly->ring_sizes[k], k++) {
+        const uint32_t stop = base + poly->ring_sizes[k];
+        uint32_t ib, jb;
+        int32_t ra, rb = 0, r0, cs, cdown = -1;
+        if (stop == base) continue;
+        ra = r0 = cs = rc[2 * base + 1];
+        for (ib = base + 1;; ib++) {
+            int32_t first, end, c;
+            int down;
+            unsigned char dir;
+            while (ib < stop && (rb = rc[2 * ib + 1]) == ra) ib++;
+            if (ib == stop) {
+                if (ra == r0) break;
+                rb = r0;
+                jb = base;
+            } else {
+                jb = ib;
+            }
+            down = ra < rb;
+            if (starts && down != cdown) {
+                first = cs < ra ? cs : ra;
+                end = cs ^ ra ^ first;
+                starts[first]++;
+                starts[end]--;
+                cs = ra;
+                cdown = down;
+            }
+            first = down ? ra : rb;
+            end = ra ^ rb ^ first;
+            dir = down ? 1 : up;
+            c = rc[2 * (ib - 1)];
+            if (c != rc[2 * jb]) {
+                const rast_point pa = pts[ib - 1], pb = pts[jb];
+                if (end - first == 1) {
+                    c = rast__one_row_col(down ? pa : pb, down ? pb : pa, first + row0, g) - d->col0;
+                    c = c < 0 ? 0 : c;
+                    c = c > bits ? bits : c;
+                } else {
+                    rast__delta_rc_dda(down ? pa : pb, down ? pb : pa, down, first, end, g, d, row0, mid,
+                                       buf, in, dir, inplace);
+                    goto next;
+                }
+            }
+            if (inplace) {
+                unsigned char *p = in + (ptrdiff_t)first * bits + c;
+                const int32_t m = end < mid ? end : mid;
+                for (; first < m; first++, p += bits) *p = (unsigned char)(*p + dir);
+                if (end > mid) buf[c] = (unsigned char)(buf[c] + dir); /* (row mid, the last) */
+            } else {
+                unsigned char *p = buf + (ptrdiff_t)first * stride + c;
+                for (; first < end; first++, p += stride) *p = (unsigned char)(*p + dir);
+            }
+        next:
+            if (ib == stop) break;
+            ra = rb;
+        }
+        if (starts) { /* the ring's last piece, to its first vertex's row */
+            const int32_t first = cs < r0 ? cs : r0, end = cs ^ r0 ^ first;
+            starts[first]++;
+            starts[end]--;
+        }
+    }
+}
+
 /* ---- the deltas added as the edges are set up ------------------------------
  * Finding each vertex's row in a pass of its own, setting every edge up
  * as a record of the edge table and walking the records afterwards was
@@ -665,6 +842,7 @@ static int rast__aet_delta_now(const rast_polygon *poly, uint32_t npoints, const
     rast__byte_rows out;
     unsigned char *buf, *in = NULL;
     int32_t *starts = NULL;
+    uint16_t *rc;
     int32_t mid = row0; /* rows [row0, mid) counted in the mask itself, [mid, row1) in buf */
     int direct;
 
@@ -696,8 +874,17 @@ static int rast__aet_delta_now(const rast_polygon *poly, uint32_t npoints, const
     }
     memset(buf, 0, (size_t)(row1 - mid) * (size_t)d.stride);
     if (in) memset(in, 0, (size_t)(mid - row0) * (size_t)d.bits);
-    if (in) rast__delta_now_walk(poly, g, &d, row0, row1, mid, buf, in, starts, 1);
-    else rast__delta_now_walk(poly, g, &d, row0, row1, row0, buf, NULL, starts, 0);
+    if (rows <= RAST__RC_MAX && d.bits <= RAST__RC_MAX &&
+        (rc = (uint16_t *)rast__take(arena, (size_t)npoints * 2 * sizeof(uint16_t))) != NULL) {
+        const rast__vshift v = rast__vshift_of(g);
+        rast__delta_rc(poly->points, npoints, &v, d.col0, row0, d.bits, rows, rc);
+        if (in) rast__delta_rc_walk(poly, rc, g, &d, row0, mid - row0, buf, in, starts, 1);
+        else rast__delta_rc_walk(poly, rc, g, &d, row0, 0, buf, NULL, starts, 0);
+    } else if (in) {
+        rast__delta_now_walk(poly, g, &d, row0, row1, mid, buf, in, starts, 1);
+    } else {
+        rast__delta_now_walk(poly, g, &d, row0, row1, row0, buf, NULL, starts, 0);
+    }
     *arena = keep; /* (nothing taken is read after the fill) */
     if (starts) {
         int32_t y, run = 0;

@@ -653,11 +653,12 @@ RAST__HOT void rast__delta_now_walk(const rast_polygon *poly, const rast__grid *
  * has its two ends cut to the same row: no crossing, as before.  The
  * pieces' count (starts) is over the cut rows: a piece's cut rows are
  * monotone still, each crossed once.  When: rows and bits below 2^15
- * (the pair's halves), and room for 4 bytes a vertex. */
+ * (the pair's halves), and room for 4 bytes a vertex and one more. */
 #define RAST__RC_MAX 32767
 
 /* rc[2 i], rc[2 i + 1]: vertex i's column and row, relative to col0 and
- * row0, cut to [0, bits] and [0, rows]. */
+ * row0, cut to [0, bits] and [0, rows]; rc[2 n], rc[2 n + 1] set to 0 (the
+ * walk's mark past the last ring). */
 static void rast__delta_rc(const rast_point *pts, uint32_t n, const rast__vshift *v, int32_t col0,
                            int32_t row0, int32_t bits, int32_t rows, uint16_t *rc)
 {
@@ -691,6 +692,7 @@ static void rast__delta_rc(const rast_point *pts, uint32_t n, const rast__vshift
         rc[2 * i] = (uint16_t)c;
         rc[2 * i + 1] = (uint16_t)r;
     }
+    rc[2 * n] = rc[2 * n + 1] = 0;
 }
 
 /* The column of edge top -> bottom (top.y < bottom.y) at row `first`, as
@@ -737,7 +739,7 @@ RAST__APART void rast__delta_rc_dda(rast_point top, rast_point bottom, int down,
  * the clip's first, [0, mid) in the mask itself (in, rows of bits), the
  * rest in buf (rows of stride from mid); `inplace` a constant (0: in
  * NULL, mid = 0).  The same edges, directions, columns and pieces. */
-RAST__HOT void rast__delta_rc_walk(const rast_polygon *poly, const uint16_t *rc, const rast__grid *g,
+RAST__HOT void rast__delta_rc_walk(const rast_polygon *poly, uint16_t *rc, const rast__grid *g,
                                    const rast__delta_cols *d, int32_t row0, int32_t mid,
                                    unsigned char *buf, unsigned char *in, int32_t *starts,
                                    const int inplace)
@@ -748,15 +750,20 @@ RAST__HOT void rast__delta_rc_walk(const rast_polygon *poly, const uint16_t *rc,
     uint32_t k, base;
     for (k = 0, base = 0; k < poly->nrings; base += poly->ring_sizes[k], k++) {
         const uint32_t stop = base + poly->ring_sizes[k];
+        const uint16_t after = rc[2 * stop + 1];
         uint32_t ib, jb;
         int32_t ra, rb = 0, r0, cs, cdown = -1;
         if (stop == base) continue;
         ra = r0 = cs = rc[2 * base + 1];
+        /* (the next vertex's row, past the ring, set to one no vertex has
+         * while the ring is walked: the loop over the vertices of one row
+         * stops there without testing the ring's end) */
+        rc[2 * stop + 1] = 0xFFFF;
         for (ib = base + 1;; ib++) {
             int32_t first, end, c;
             int down;
             unsigned char dir;
-            while (ib < stop && (rb = rc[2 * ib + 1]) == ra) ib++;
+            while ((rb = rc[2 * ib + 1]) == ra) ib++;
             if (ib == stop) {
                 if (ra == r0) break;
                 rb = r0;
@@ -802,6 +809,7 @@ RAST__HOT void rast__delta_rc_walk(const rast_polygon *poly, const uint16_t *rc,
             if (ib == stop) break;
             ra = rb;
         }
+        rc[2 * stop + 1] = after;
         if (starts) { /* the ring's last piece, to its first vertex's row */
             const int32_t first = cs < r0 ? cs : r0, end = cs ^ r0 ^ first;
             starts[first]++;
@@ -875,7 +883,7 @@ static int rast__aet_delta_now(const rast_polygon *poly, uint32_t npoints, const
     memset(buf, 0, (size_t)(row1 - mid) * (size_t)d.stride);
     if (in) memset(in, 0, (size_t)(mid - row0) * (size_t)d.bits);
     if (rows <= RAST__RC_MAX && d.bits <= RAST__RC_MAX &&
-        (rc = (uint16_t *)rast__take(arena, (size_t)npoints * 2 * sizeof(uint16_t))) != NULL) {
+        (rc = (uint16_t *)rast__take(arena, ((size_t)npoints + 1) * 2 * sizeof(uint16_t))) != NULL) {
         const rast__vshift v = rast__vshift_of(g);
         rast__delta_rc(poly->points, npoints, &v, d.col0, row0, d.bits, rows, rc);
         if (in) rast__delta_rc_walk(poly, rc, g, &d, row0, mid - row0, buf, in, starts, 1);

@@ -2612,7 +2612,38 @@ static rast_status rast__acc_go(rast__acc_in *e, uint32_t n, int32_t s, rast_fil
  * `mark`) or is added.  (xt, yt) and (dx, dy) are read as two 64-bit
  * words: the hash in two products, the match in two compares, where four
  * of each were ~13 and ~8 instructions an edge on the map.  Returns how many edges matched (twice the
- * pairs). */
+ * pairs).  Size-optimised builds read the four fields as they are, and
+ * hash them with 32-bit products (RAST__ACC_WORDS, RAST__ACC_HASH,
+ * RAST__ACC_SAME): there a 64-bit product is a library call, and so is a
+ * memcpy (-ffreestanding; the Cortex-M0 has no unaligned loads).  Any
+ * hash will do for the sums: a match compares the four fields, and an
+ * edge past the probes is only not cancelled (the same levels,
+ * rast__acc_cancel). */
+#if defined(__OPTIMIZE_SIZE__)
+/* (uint32_t products wrap, mod 2^32, whatever int's width) */
+#define RAST__ACC_WORDS(x, top, d) ((void)(top), (void)(d))
+#define RAST__ACC_HASH(x, top, d)                                                                                \
+    rast__acc_mix((uint32_t)(x)->xt * 0x9E3779B1u + (uint32_t)(x)->yt * 0x85EBCA77u +                              \
+                  (uint32_t)(x)->dx * 0xC2B2AE3Du + (uint32_t)(x)->dy * 0x27D4EB2Fu)
+#define RAST__ACC_SAME(k, x, top, d) ((k)->xt == (x)->xt && (k)->yt == (x)->yt && (k)->dx == (x)->dx && (k)->dy == (x)->dy)
+static uint32_t rast__acc_mix(uint32_t h)
+{
+    return h ^ (h >> 15);
+}
+#else
+/* (xt, yt) and (dx, dy) as two 64-bit words (adjacent fields) */
+#define RAST__ACC_WORDS(x, top, d) (memcpy(&(top), &(x)->xt, sizeof(top)), memcpy(&(d), &(x)->dx, sizeof(d)))
+#define RAST__ACC_HASH(x, top, d) \
+    ((uint32_t)((((top) * UINT64_C(0x9E3779B97F4A7C15)) ^ (d)) * UINT64_C(0xC2B2AE3D27D4EB4F) >> 32))
+#define RAST__ACC_SAME(k, x, top, d) rast__acc_same(k, top, d)
+static inline int rast__acc_same(const rast__acc_in *k, uint64_t top, uint64_t d)
+{
+    uint64_t ktop, kd;
+    memcpy(&ktop, &k->xt, sizeof ktop);
+    memcpy(&kd, &k->dx, sizeof kd);
+    return ktop == top && kd == d;
+}
+#endif
 RAST__HOT uint32_t rast__acc_pairs(rast__acc_in *e, uint32_t n, uint32_t step, int mark, int32_t *slot,
                                 uint32_t size)
 {
@@ -2621,21 +2652,17 @@ RAST__HOT uint32_t rast__acc_pairs(rast__acc_in *e, uint32_t n, uint32_t step, i
     for (i = 0; i < n;
          i += step == 1 ? 1 : 1 + (uint32_t)(((uint64_t)((i + 1) * 0x9E3779B1u) * (2 * step - 1)) >> 32)) {
         rast__acc_in *x = &e[i];
-        uint64_t top, d; /* (xt, yt) and (dx, dy), 64 bits each (adjacent fields) */
-        memcpy(&top, &x->xt, sizeof top);
-        memcpy(&d, &x->dx, sizeof d);
-        h = (uint32_t)(((top * UINT64_C(0x9E3779B97F4A7C15)) ^ d) * UINT64_C(0xC2B2AE3D27D4EB4F) >> 32);
+        uint64_t top = 0, d = 0; /* (speed builds: (xt, yt) and (dx, dy)) */
+        RAST__ACC_WORDS(x, top, d);
+        h = RAST__ACC_HASH(x, top, d);
         for (probe = 0; probe < RAST__ACC_PROBES; probe++, h++) {
-            uint64_t ktop, kd;
             k = slot[h & (size - 1)];
             if (k == -1) {
                 slot[h & (size - 1)] = (int32_t)i;
                 break;
             }
             if (k < 0) continue;
-            memcpy(&ktop, &e[k].xt, sizeof ktop);
-            memcpy(&kd, &e[k].dx, sizeof kd);
-            if (ktop == top && kd == d && e[k].dir == -x->dir) {
+            if (RAST__ACC_SAME(&e[k], x, top, d) && e[k].dir == -x->dir) {
                 slot[h & (size - 1)] = -2; /* (matched: not again) */
                 if (mark) e[k].dir = x->dir = 0;
                 gone += 2;

@@ -98,7 +98,7 @@ C_TESTS := $(patsubst tests/c/%.c,build/tests/%,$(wildcard tests/c/test_*.c))
 comma   := ,
 SAN     := -fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer -g
 
-.PHONY: test-wheel test-core figures figures-check test-config race-check fuzz-long bench docs bench-precision cbench-coverage cbench-scale bench-precision-callgrind single test-single display-qemu fuzz-check fuzz-regress display-example valgrind valgrind-c valgrind-py firmware-check cross-check all lib test test-c test-install test-py demo asan asan-c asan-py strict install uninstall example clean
+.PHONY: test-c-size test-wheel test-core figures figures-check test-config race-check fuzz-long bench docs bench-precision cbench-coverage cbench-scale bench-precision-callgrind single test-single display-qemu fuzz-check fuzz-regress display-example valgrind valgrind-c valgrind-py firmware-check cross-check all lib test test-c test-install test-py demo asan asan-c asan-py strict install uninstall example clean
 
 all: lib
 lib: build/librastrum.a build/librastrum.so
@@ -132,7 +132,7 @@ test: test-c test-install test-py
 
 test-c: $(C_TESTS)
 	@for t in $(C_TESTS); do echo "== $$t"; ./$$t || exit 1; done
-test-c: display-example
+test-c: display-example test-c-size
 
 # The firmware example: scene, spans, band by band, one static arena.
 display-example: build/librastrum.a
@@ -246,6 +246,17 @@ asan-c:
 	  n=build/asan/$$(basename $$t .c); \
 	  $(CC) $(WARN) -Wno-conversion -O1 $(SAN) -Icsrc/include -Icsrc/src -Itests/c $$t build/asan/core/librastrum.a -o $$n || exit 1; \
 	  echo "== $$n (asan+ubsan)"; ./$$n || exit 1; \
+	done
+
+# The C tests that reach the size-optimised builds' own code (what the
+# firmware builds compile, #if __OPTIMIZE_SIZE__: "accumulate"'s matching
+# of shared edges by their four fields and a 32-bit hash, among others)
+# against the core at -Os.
+test-c-size:
+	@$(call core_lib,build/size/core,$(CC) $(WARN) -Os)
+	@for t in test_coverage test_batch; do \
+	  $(CC) $(WARN) -Wno-conversion -Os -Icsrc/include -Icsrc/src -Itests/c tests/c/$$t.c build/size/core/librastrum.a -o build/size/$$t || exit 1; \
+	  echo "== build/size/$$t (-Os)"; ./build/size/$$t || exit 1; \
 	done
 
 # The Python tests against an extension built with the sanitizers, loaded

@@ -2044,6 +2044,40 @@ RAST__HOT int32_t rast__acc_parts(rast__acc *a, rast__aedge *e, const int32_t *i
     return q;
 }
 
+/* Row j's parts of the edges ix[0..n) whose first and last row is j
+ * (rast__acc_by_rows' one[]), as rast__acc_parts puts them: none goes on
+ * below the row, so no list of those that do; and an edge whose ends lie
+ * strictly inside the row (rel0 > 0, rel1 < P) has them from its vertices,
+ * as rast__acc_ends makes them there, without its tests.  count, dense as
+ * rast__acc_parts' (constants at each call). */
+RAST__HOT void rast__acc_ones(rast__acc *a, rast__aedge *e, const int32_t *ix, int32_t n, int32_t j, int count,
+                              int dense)
+{
+    const int32_t p = a->p, last = a->last, hq = a->hq;
+    const int64_t Yj = (int64_t)j * p, x0 = a->x0;
+    const uint64_t w = (uint64_t)(a->x1 - a->x0);
+    uint64_t *const acc = a->acc, *const blk = a->blk;
+    uint32_t *const cnt = a->cnt;
+    int32_t lo = a->lo, hi = a->hi, k;
+    for (k = 0; k < n; k++) {
+        rast__aedge *const ed = &e[ix[k]];
+        const int64_t rel0 = (int64_t)ed->yt - Yj, rel1 = rel0 + ed->dy;
+        int64_t xa, xb;
+        uint64_t ta, tb;
+        if (rel0 > 0 && rel1 < p) {
+            ta = (uint64_t)rel0 << hq;
+            tb = (uint64_t)rel1 << hq;
+            xa = (int64_t)ed->xt * ((int64_t)1 << hq);
+            xb = ((int64_t)ed->xt + ed->dx) * ((int64_t)1 << hq);
+        } else {
+            rast__acc_ends(ed, j, rel0, a, &xa, &ta, &xb, &tb, 1);
+        }
+        rast__acc_deposit(a, acc, blk, cnt, last, x0, w, ed, rel0, xa, ta, xb, tb, &lo, &hi, count, dense);
+    }
+    a->lo = lo;
+    a->hi = hi;
+}
+
 /* Columns [c0, c1] of the clip (clamped to it) in the bits b. */
 static void rast__acc_cols_mark(uint64_t *b, int64_t c0, int64_t c1, int32_t last)
 {
@@ -2301,8 +2335,8 @@ RAST__HOT void rast__acc_by_rows(const rast__acc_walk *w, rast__acc *a)
     const rast__cov_out *const o = w->o;
     const uint32_t m = w->m;
     const int32_t *const key = w->key, *const last = w->last, ja = w->ja;
-    int32_t *cur = w->row, *nxt = w->tmp, *t;
-    int32_t nrow = 0, j, k, q;
+    int32_t *cur = w->row, *nxt = w->tmp, *t, *const one = w->thru; /* (thru[]: the bands' walk's) */
+    int32_t nrow = 0, none, j, k, q;
     uint32_t next = 0, *const cnt = a->z + w->width; /* (in area[], after z[]: cleared) */
     const uint32_t ne = w->n; /* (locals: the stores to cur[] may alias w's fields) */
     int exact = 0, done; /* w->exact[] cleared */
@@ -2310,24 +2344,41 @@ RAST__HOT void rast__acc_by_rows(const rast__acc_walk *w, rast__acc *a)
     for (j = w->ja; j < w->jb; j++) {
         /* (the records are in the rows' order, rast__acc_sorted: edge
          * next is the next to start) */
-        for (; next < ne && key[next] + ja <= j; next++)
-            if (last[next] >= j) cur[nrow++] = (int32_t)next;
+        /* (those that end in the row too, one[], apart: rast__acc_ones) */
+        for (none = 0; next < ne && key[next] + ja <= j; next++)
+            if (last[next] == j)
+                one[none++] = (int32_t)next;
+            else if (last[next] > j)
+                cur[nrow++] = (int32_t)next;
         done = 0;
-        if (nrow < RAST__ACC_MAXN && ((uint64_t)nrow + 1) * m < ((uint64_t)1 << 25)) {
+        if (nrow + none < RAST__ACC_MAXN && ((uint64_t)nrow + none + 1) * m < ((uint64_t)1 << 25)) {
             /* Bits for the cells touched, so that the scan skips the
              * others, unless the row's parts are many for its width
              * (a part or more for every RAST__ACC_DENSE columns): then every
              * cell from the first touched to the last is read. */
-            a->dense = (int64_t)nrow * RAST__ACC_DENSE >= w->width;
-            a->cnt = nrow >= RAST__ACC_FEW ? cnt : NULL;
+            a->dense = (int64_t)(nrow + none) * RAST__ACC_DENSE >= w->width;
+            a->cnt = nrow + none >= RAST__ACC_FEW ? cnt : NULL;
             /* (two calls: the count costs nothing where not asked) */
             /* (and two for dense rows: no test a part) */
-            if (a->cnt)
-                q = a->dense ? rast__acc_parts(a, e, cur, nrow, nxt, j, 1, 1)
-                             : rast__acc_parts(a, e, cur, nrow, nxt, j, 1, 0);
-            else
-                q = a->dense ? rast__acc_parts(a, e, cur, nrow, nxt, j, 0, 1)
-                             : rast__acc_parts(a, e, cur, nrow, nxt, j, 0, 0);
+            if (a->cnt) {
+                if (a->dense) {
+                    q = rast__acc_parts(a, e, cur, nrow, nxt, j, 1, 1);
+                    rast__acc_ones(a, e, one, none, j, 1, 1);
+                } else {
+                    q = rast__acc_parts(a, e, cur, nrow, nxt, j, 1, 0);
+                    rast__acc_ones(a, e, one, none, j, 1, 0);
+                }
+            } else if (a->dense) {
+                q = rast__acc_parts(a, e, cur, nrow, nxt, j, 0, 1);
+                rast__acc_ones(a, e, one, none, j, 0, 1);
+            } else {
+                q = rast__acc_parts(a, e, cur, nrow, nxt, j, 0, 0);
+                rast__acc_ones(a, e, one, none, j, 0, 0);
+            }
+            /* (the row's edges all in cur[] again: the readout's and the
+             * tie passes' list) */
+            for (k = 0; k < none; k++) cur[nrow + k] = one[k];
+            nrow += none;
             a->spread = a->cnt != NULL;
             done = rast__acc_emit(a, 1, o, j, w->rule, m, rast__acc_win((uint64_t)nrow, m), e, NULL, cur, nrow,
                                   a->cnt ? &kept : NULL) ||
@@ -2336,6 +2387,8 @@ RAST__HOT void rast__acc_by_rows(const rast__acc_walk *w, rast__acc *a)
         } else {
             for (k = 0, q = 0; k < nrow; k++)
                 if (last[cur[k]] > j) nxt[q++] = cur[k];
+            for (k = 0; k < none; k++) cur[nrow + k] = one[k];
+            nrow += none;
         }
         if (!done) {
             if (!exact) { /* the first exact row (rare) */
@@ -2559,7 +2612,38 @@ static rast_status rast__acc_go(rast__acc_in *e, uint32_t n, int32_t s, rast_fil
  * `mark`) or is added.  (xt, yt) and (dx, dy) are read as two 64-bit
  * words: the hash in two products, the match in two compares, where four
  * of each were ~13 and ~8 instructions an edge on the map.  Returns how many edges matched (twice the
- * pairs). */
+ * pairs).  Size-optimised builds read the four fields as they are, and
+ * hash them with 32-bit products (RAST__ACC_WORDS, RAST__ACC_HASH,
+ * RAST__ACC_SAME): there a 64-bit product is a library call, and so is a
+ * memcpy (-ffreestanding; the Cortex-M0 has no unaligned loads).  Any
+ * hash will do for the sums: a match compares the four fields, and an
+ * edge past the probes is only not cancelled (the same levels,
+ * rast__acc_cancel). */
+#if defined(__OPTIMIZE_SIZE__)
+/* (uint32_t products wrap, mod 2^32, whatever int's width) */
+#define RAST__ACC_WORDS(x, top, d) ((void)(top), (void)(d))
+#define RAST__ACC_HASH(x, top, d)                                                                                \
+    rast__acc_mix((uint32_t)(x)->xt * 0x9E3779B1u + (uint32_t)(x)->yt * 0x85EBCA77u +                              \
+                  (uint32_t)(x)->dx * 0xC2B2AE3Du + (uint32_t)(x)->dy * 0x27D4EB2Fu)
+#define RAST__ACC_SAME(k, x, top, d) ((k)->xt == (x)->xt && (k)->yt == (x)->yt && (k)->dx == (x)->dx && (k)->dy == (x)->dy)
+static uint32_t rast__acc_mix(uint32_t h)
+{
+    return h ^ (h >> 15);
+}
+#else
+/* (xt, yt) and (dx, dy) as two 64-bit words (adjacent fields) */
+#define RAST__ACC_WORDS(x, top, d) (memcpy(&(top), &(x)->xt, sizeof(top)), memcpy(&(d), &(x)->dx, sizeof(d)))
+#define RAST__ACC_HASH(x, top, d) \
+    ((uint32_t)((((top) * UINT64_C(0x9E3779B97F4A7C15)) ^ (d)) * UINT64_C(0xC2B2AE3D27D4EB4F) >> 32))
+#define RAST__ACC_SAME(k, x, top, d) rast__acc_same(k, top, d)
+static inline int rast__acc_same(const rast__acc_in *k, uint64_t top, uint64_t d)
+{
+    uint64_t ktop, kd;
+    memcpy(&ktop, &k->xt, sizeof ktop);
+    memcpy(&kd, &k->dx, sizeof kd);
+    return ktop == top && kd == d;
+}
+#endif
 RAST__HOT uint32_t rast__acc_pairs(rast__acc_in *e, uint32_t n, uint32_t step, int mark, int32_t *slot,
                                 uint32_t size)
 {
@@ -2568,21 +2652,17 @@ RAST__HOT uint32_t rast__acc_pairs(rast__acc_in *e, uint32_t n, uint32_t step, i
     for (i = 0; i < n;
          i += step == 1 ? 1 : 1 + (uint32_t)(((uint64_t)((i + 1) * 0x9E3779B1u) * (2 * step - 1)) >> 32)) {
         rast__acc_in *x = &e[i];
-        uint64_t top, d; /* (xt, yt) and (dx, dy), 64 bits each (adjacent fields) */
-        memcpy(&top, &x->xt, sizeof top);
-        memcpy(&d, &x->dx, sizeof d);
-        h = (uint32_t)(((top * UINT64_C(0x9E3779B97F4A7C15)) ^ d) * UINT64_C(0xC2B2AE3D27D4EB4F) >> 32);
+        uint64_t top = 0, d = 0; /* (speed builds: (xt, yt) and (dx, dy)) */
+        RAST__ACC_WORDS(x, top, d);
+        h = RAST__ACC_HASH(x, top, d);
         for (probe = 0; probe < RAST__ACC_PROBES; probe++, h++) {
-            uint64_t ktop, kd;
             k = slot[h & (size - 1)];
             if (k == -1) {
                 slot[h & (size - 1)] = (int32_t)i;
                 break;
             }
             if (k < 0) continue;
-            memcpy(&ktop, &e[k].xt, sizeof ktop);
-            memcpy(&kd, &e[k].dx, sizeof kd);
-            if (ktop == top && kd == d && e[k].dir == -x->dir) {
+            if (RAST__ACC_SAME(&e[k], x, top, d) && e[k].dir == -x->dir) {
                 slot[h & (size - 1)] = -2; /* (matched: not again) */
                 if (mark) e[k].dir = x->dir = 0;
                 gone += 2;
@@ -2785,55 +2865,52 @@ typedef char rast__acc_rooms[sizeof(rast__cedge) >= 2 * sizeof(rast__aedge) &&
                                  : -1];
 
 /* One pass over the edges t[0..n) (w->n, rast__acc_thin, 20 bytes each,
- * in a stream): order[i] = i; the rows [ja, jb) the edges reach
+ * in a stream): the rows [ja, jb) the edges reach
  * (rast__cov_rows_reached); each edge's first row from ja, key[] (0 above
- * ja), its last row last[]; *nkeys the greatest key + 1, *rows the edges'
- * rows in all.  floor(y / P) by rast__acc_floorp's shift, S = s.  (The
- * records, and their divisions, are rast__acc_sorted's.) */
-RAST__APART void rast__acc_prep(rast__acc_walk *w, const rast__acc_thin *t, uint32_t *nkeys, uint64_t *rows)
+ * ja), plus the value returned (0, or ja when no key needs the clamp: its
+ * readers take it off), its last row last[]; *nkeys the greatest key + 1
+ * (from ja).  floor(y / P) by rast__acc_floorp's shift, S = s.  (The
+ * records, their divisions, and the sum of the rows are
+ * rast__acc_sorted's; order[] rast__acc_walk_all's, for a radix sort.) */
+RAST__APART int32_t rast__acc_prep(rast__acc_walk *w, const rast__acc_thin *t, uint32_t *nkeys)
 {
     const uint32_t n = w->n;
     const int32_t s = w->s;
     const int64_t bias = (int64_t)1 << (62 - s);
-    int32_t *const order = w->order, *const key = w->key, *const last = w->last;
+    int32_t *const key = w->key, *const last = w->last;
     int64_t ymin = t[0].yt, ymax = (int64_t)t[0].yt + t[0].dy, ytop = ymin, ja, kmin;
     uint32_t i, nk = 0;
-    uint64_t rs = 0;
     for (i = 0; i < n; i++) {
         const int64_t yt = t[i].yt, yb = yt + t[i].dy;
-        order[i] = (int32_t)i;
+        const int32_t k = (int32_t)((int64_t)(((uint64_t)yt + ((uint64_t)1 << 62)) >> s) - bias);
+        const int32_t l = (int32_t)(-((int64_t)(((uint64_t)-yb + ((uint64_t)1 << 62)) >> s) - bias) - 1);
         ymin = yt < ymin ? yt : ymin;
         ymax = yb > ymax ? yb : ymax;
         ytop = yt > ytop ? yt : ytop;
-        key[i] = (int32_t)((int64_t)(((uint64_t)yt + ((uint64_t)1 << 62)) >> s) - bias);
-        last[i] = (int32_t)(-((int64_t)(((uint64_t)-yb + ((uint64_t)1 << 62)) >> s) - bias) - 1);
+        key[i] = k;
+        last[i] = l;
     }
     rast__cov_rows_reached(ymin, ymax, (int32_t)1 << s, w->o, &w->ja, &w->jb);
     ja = w->ja;
     kmin = (int64_t)(((uint64_t)ymin + ((uint64_t)1 << 62)) >> s) - bias; /* (the least key) */
     if (kmin >= ja) {
-        /* No edge starts above row ja (the clip's top cuts none): no key
-         * to clamp, the greatest the greatest top's (the loop below was 15
-         * instructions an edge, ~0.47 M of a line of text's) */
-        const int32_t d = (int32_t)ja;
-        for (i = 0; i < n; i++) {
-            const int32_t kk = key[i] - d;
-            key[i] = kk;
-            rs += (uint64_t)((int64_t)last[i] - kk - ja + 1);
-        }
+        /* No edge starts above row ja (the clip's top cuts no edge): no key
+         * to clamp, the greatest the greatest top's; the keys are left
+         * from row 0, and their reader takes ja off (returned:
+         * rast__acc_sorted, which sums the rows too).  (A pass to take it
+         * off here and sum the rows was 11 instructions an edge, ~0.35 M
+         * of a line of text's.) */
         *nkeys = (uint32_t)((int64_t)(((uint64_t)ytop + ((uint64_t)1 << 62)) >> s) - bias - ja) + 1;
-        *rows = rs;
-        return;
+        return (int32_t)ja;
     }
     for (i = 0; i < n; i++) { /* (the keys from ja) */
         const int64_t r0 = (int64_t)key[i] - ja;
         const int32_t kk = r0 < 0 ? 0 : (int32_t)r0;
         key[i] = kk;
         nk = (uint32_t)kk >= nk ? (uint32_t)kk + 1 : nk;
-        rs += (uint64_t)(last[i] - (kk + ja) + 1);
     }
     *nkeys = nk;
-    *rows = rs;
+    return 0;
 }
 
 /* The walk's record of the edge t, its steppers not set, nor their steps
@@ -2860,16 +2937,19 @@ static inline void rast__acc_make(rast__aedge *c, const rast__acc_thin *t)
  * rast__aedge: no overlap with t[]); key[] and last[] put in that order
  * too (the walk's arrays swapped: no copy); order[] is left free (the
  * rows' walk reads the records in order, the bands' walk has 0 .. n - 1
- * put there: rast__acc_walk_all).  With counts (cnt[0..nkeys), room, when the rows are few for the
- * edges: see rast__acc_walk_all), t[] is read in a stream and each record
+ * put there: rast__acc_walk_all).  With counts (cnt[0..nkeys + d), room,
+ * when the rows are few for the edges: see rast__acc_walk_all; the keys
+ * key[] d more than the walk's, which it takes off as it puts them in
+ * order), t[] is read in a stream and each record
  * written to its row's next slot, a counting sort's placing pass (the
  * records read through order[] at random, then written in order, took a
  * fifth of the paragraph's time, issue 34); else by w->order (a radix
- * sort's).  Returns the records; w->cap: how many rast__cedge the room
+ * sort's).  *rows: the edges' rows in all.  Returns the records; w->cap: how many rast__cedge the room
  * before them takes (rast__acc_exact's). */
 static rast__aedge *rast__acc_sorted(rast__acc_walk *w, rast__cedge *e, const rast__acc_thin *t, uint32_t *cnt,
-                                     uint32_t nkeys)
+                                     uint32_t nkeys, int32_t d, uint64_t *rows)
 {
+    int64_t rs = 0; /* (the sum of last - key from ja, each edge's rows less one) */
     const uint32_t n = w->n;
     const size_t off = (size_t)n * (sizeof(rast__cedge) - sizeof(rast__aedge));
     rast__aedge *const ce = (rast__aedge *)(void *)((unsigned char *)(void *)e + off);
@@ -2877,13 +2957,18 @@ static rast__aedge *rast__acc_sorted(rast__acc_walk *w, rast__cedge *e, const ra
     uint32_t i;
     (void)sizeof(rast__acc_rooms);
     if (cnt) {
-        rast__cov_count_starts(cnt, key, n, nkeys);
+        /* (the keys as rast__acc_prep left them, d more than the walk's:
+         * d counts more, none of them used, where a pass over the edges
+         * would take d off) */
+        rast__cov_count_starts(cnt, key, n, nkeys + (uint32_t)d);
         for (i = 0; i < n; i++) { /* (order[] is free: the last rows go there) */
             const int32_t k = key[i];
             const uint32_t at = cnt[k]++;
+            const int32_t l = last[i];
             rast__acc_make(&ce[at], &t[i]);
-            ks[at] = k;
-            order[at] = last[i];
+            ks[at] = k - d;
+            order[at] = l;
+            rs += (int64_t)l - k;
         }
     } else {
         for (i = 0; i < n; i++) {
@@ -2891,8 +2976,11 @@ static rast__aedge *rast__acc_sorted(rast__acc_walk *w, rast__cedge *e, const ra
             rast__acc_make(&ce[i], &t[k]);
             ks[i] = key[k];
             order[i] = last[k];
+            rs += (int64_t)last[k] - key[k];
         }
     }
+    /* (the rows: last - (key - d + ja) + 1 an edge; d 0 without counts) */
+    *rows = (uint64_t)(rs + (int64_t)n * ((int64_t)d - w->ja + 1));
     w->tmp = key;
     w->key = ks;
     w->order = last;
@@ -2915,6 +3003,9 @@ static rast_status rast__acc_walk_all(rast__acc_in *in, uint32_t n, int32_t s, r
     uint64_t *cells, *bandbits, rows = 0; /* (the edges' rows, in all) */
     uint32_t i, nkeys = 0; /* (the greatest key + 1) */
     int32_t r, k, band;
+#if RAST__ACC_COMPACT
+    int32_t d; /* (rast__acc_prep's: what its keys lack of ja) */
+#endif
     int counted; /* (the order by counts of the rows, not a radix sort) */
     w.n = n;
     w.s = s;
@@ -2953,7 +3044,7 @@ static rast_status rast__acc_walk_all(rast__acc_in *in, uint32_t n, int32_t s, r
         return RAST_OK;
     }
 #if RAST__ACC_COMPACT
-    rast__acc_prep(&w, in, &nkeys, &rows);
+    d = rast__acc_prep(&w, in, &nkeys);
 #else
     rast__cov_rows(e, n, v[0].p, w.order, o, &w.ja, &w.jb, 1); /* (the exact steps when needed) */
     {
@@ -2981,8 +3072,15 @@ static rast_status rast__acc_walk_all(rast__acc_in *in, uint32_t n, int32_t s, r
      * (4 width of them), the same order either way (both stable). */
     counted = n >= 24 && nkeys < n + 512 && nkeys <= 4 * (uint32_t)w.width;
 #if RAST__ACC_COMPACT
-    if (!counted) rast__cov_radix_sort(w.order, w.tmp, w.key, n);
-    w.e = rast__acc_sorted(&w, e, in, counted ? (uint32_t *)(void *)w.cover : NULL, nkeys);
+    if (!counted || nkeys + (uint32_t)d > 4 * (uint32_t)w.width) { /* (the keys from ja) */
+        for (i = 0; i < n; i++) w.key[i] -= d;
+        d = 0;
+    }
+    if (!counted) {
+        for (i = 0; i < n; i++) w.order[i] = (int32_t)i;
+        rast__cov_radix_sort(w.order, w.tmp, w.key, n);
+    }
+    w.e = rast__acc_sorted(&w, e, in, counted ? (uint32_t *)(void *)w.cover : NULL, nkeys, d, &rows);
 #else
     if (counted)
         rast__cov_count_sort(w.order, (uint32_t *)(void *)w.cover, w.key, n, nkeys);

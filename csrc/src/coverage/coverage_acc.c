@@ -2555,6 +2555,240 @@ RAST__APART void rast__acc_by_bands(const rast__acc_walk *w, rast__acc *v)
     }
 }
 
+#if RAST__ACC_COMPACT
+/* The piles' walk (speed builds): a batch of small triangles (every edge
+ * within RAST__ACC_PILE rows, the rows dense on the mean) is walked an
+ * edge at a time, each edge whole, into a ring of RAST__ACC_RING rows of
+ * cells, instead of a band of four rows at a time (where a small
+ * triangle's edge, 8 rows on the mean among 10,000, met 2.75 bands, at a
+ * set-up of ~150 instructions a visit and the band's lists besides:
+ * docs/coverage.md).  Rows are read out RAST__ACC_RING - RAST__ACC_PILE at
+ * a time, once every edge that starts above them has been walked. */
+#define RAST__ACC_RING 64
+#define RAST__ACC_PILE 32
+
+/* floor(a / b) and its remainder, b > 0 */
+static inline int64_t rast__acc_fdiv(int64_t a, int64_t b, uint32_t *r)
+{
+    int64_t q = a / b, m = a % b;
+    if (m < 0) {
+        m += b;
+        q--;
+    }
+    *r = (uint32_t)m;
+    return q;
+}
+
+/* Edge e (within the clip's columns and rows, |dx| < 2^24, dy at most
+ * RAST__ACC_PILE rows) whole into the ring's rows (ring: row j's cells at
+ * ring + (j mod RAST__ACC_RING) stride; bias: the clip's left side in
+ * 2^-30 px).  Each row's part is put as rast__acc_part puts it (a piece
+ * in its one column; or its first column's to the first vertical, the
+ * whole columns' between, as rast__acc_cols_in adds them, the last
+ * column's from the last vertical), the abscissae at the rows' tops and
+ * the ordinates at the verticals the floors of the exact values on the
+ * grid of 2^-30 px, by steppers set here (one division each, as
+ * rast__acc_top and rast__acc_t_first set them): the same pieces, so the
+ * same cells (docs/coverage.md, the accumulation's bound per part).
+ * right: e goes right, a constant at each call. */
+RAST__HOT void rast__acc_whole_in(uint64_t *ring, size_t stride, const rast__aedge *e, int32_t s, int64_t bias,
+                                  int right)
+{
+    const int32_t p = (int32_t)1 << s, hq = QF - s;
+    const uint64_t fm = QT - 1, neg = e->dir < 0 ? ~(uint64_t)0 : 0;
+    const int64_t xt = e->xt, yt = e->yt, dx = e->dx, dy = e->dy, adx = dx < 0 ? -dx : dx;
+    const int32_t jl = (int32_t)((yt + dy - 1) >> s); /* (yt >= 0 here: the clip's rows) */
+    int32_t j = (int32_t)(yt >> s);
+    int64_t qx, qxs, xa = xt * ((int64_t)1 << hq) - bias, xb, ta, tb, qt = 0, qts = 0;
+    uint64_t d0 = 0, d1 = 0;
+    uint32_t qxr, qxsr, qtr = 0, qtsr = 0;
+    int cols = 0;
+    uint64_t *acc = ring + (size_t)(j & (RAST__ACC_RING - 1)) * stride, *const end = ring + RAST__ACC_RING * stride;
+    qx = xt * ((int64_t)1 << hq) - bias + rast__acc_fdiv(dx * (((int64_t)j + 1) * p - yt) * ((int64_t)1 << hq), dy, &qxr);
+    qxs = rast__acc_fdiv(dx * ((int64_t)1 << QF), dy, &qxsr);
+    ta = (yt - (int64_t)j * p) * ((int64_t)1 << hq);
+    tb = (int64_t)QT;
+    xb = qx;
+    for (;;) {
+        const int64_t ca = (int64_t)((uint64_t)xa >> QF), cb = (int64_t)((uint64_t)xb >> QF);
+        if (j == jl) {
+            xb = (xt + dx) * ((int64_t)1 << hq) - bias;
+            tb = (yt + dy - (int64_t)j * p) * ((int64_t)1 << hq);
+            if (ca == (int64_t)((uint64_t)xb >> QF)) {
+                rast__acc_put(acc, ca, (uint64_t)xa & fm, (uint64_t)xb & fm, (uint64_t)(tb - ta), neg, 1);
+                return;
+            }
+        } else if (ca == cb) {
+            rast__acc_put(acc, ca, (uint64_t)xa & fm, (uint64_t)xb & fm, (uint64_t)(tb - ta), neg, 1);
+            goto next;
+        }
+        {
+            const int64_t cc = (int64_t)((uint64_t)xb >> QF);
+            uint64_t t, prev = 0, sum = 0;
+            int64_t col;
+            if (!cols) { /* the first vertical crossed: its ordinate from row j's top */
+                const int64_t X = (ca + right) * p + bias / ((int64_t)1 << hq), u = right ? X - xt : xt - X;
+                qt = rast__acc_fdiv(u * dy * ((int64_t)1 << hq), adx, &qtr) + (yt - (int64_t)j * p) * ((int64_t)1 << hq);
+                qts = rast__acc_fdiv(dy * ((int64_t)1 << QF), adx, &qtsr);
+                d0 = (((uint64_t)qts << 20) ^ neg) - neg;
+                d1 = d0 + ((((uint64_t)1 << 20) ^ neg) - neg);
+                cols = 1;
+            }
+            t = (uint64_t)qt;
+            rast__acc_put(acc, ca, (uint64_t)xa & fm, right ? QT : 0, t - (uint64_t)ta, neg, 1);
+            if (right) {
+                for (col = ca + 1; col != cc; col++)
+                    rast__acc_col_step(&acc[col], &qtr, qtsr, (uint32_t)adx, d0, d1, &prev, &sum);
+                acc[cc] += prev;
+            } else {
+                for (col = ca - 1; col != cc; col--)
+                    rast__acc_col_step(&acc[col + 1], &qtr, qtsr, (uint32_t)adx, d0, d1, &prev, &sum);
+                acc[cc + 1] += prev;
+            }
+            t += (((sum ^ neg) - neg)) >> 20; /* (the last vertical's ordinate) */
+            rast__acc_put(acc, cc, right ? 0 : QT, (uint64_t)xb & fm, (uint64_t)tb - t, neg, 1);
+            if (j == jl) return;
+            qtr += qtsr; /* the stepper to the vertical after the last */
+            qt = (int64_t)t + qts + rast__acc_carry(&qtr, (uint32_t)adx);
+        }
+    next: /* the next row, from this one's bottom */
+        j++;
+        xa = xb;
+        ta = 0;
+        qt -= (int64_t)QT;
+        acc += stride;
+        acc = acc == end ? ring : acc;
+        qx += qxs;
+        qxr += qxsr;
+        qx += rast__acc_carry(&qxr, (uint32_t)dy);
+        xb = qx;
+    }
+}
+
+RAST__APART void rast__acc_whole_r(uint64_t *ring, size_t stride, const rast__aedge *e, int32_t s, int64_t bias)
+{
+    rast__acc_whole_in(ring, stride, e, s, bias, 1);
+}
+
+RAST__APART void rast__acc_whole_l(uint64_t *ring, size_t stride, const rast__aedge *e, int32_t s, int64_t bias)
+{
+    rast__acc_whole_in(ring, stride, e, s, bias, 0);
+}
+
+/* Rows ja to jb by the piles' walk, if it fits: returns 0 (nothing done)
+ * where an edge is taller than RAST__ACC_PILE rows or wider than 2^24
+ * subpixels, the rows are not dense on the mean, or the edges' free room
+ * (w->fat, below the records) cannot hold the ring and the exact rows'
+ * records too.  Edges that leave the clip go row by row the general way
+ * (rast__acc_row_part_in).  Every row is read whole (dense); a row with a
+ * level near a tie, or too many parts, goes to the exact sweep
+ * (rast__acc_exact), as in the bands' walk. */
+static int rast__acc_by_piles(const rast__acc_walk *w, rast__acc *v)
+{
+    rast__aedge *const e = w->e;
+    const int32_t ja = w->ja, jb = w->jb, s = w->s, p = (int32_t)1 << s, wd = w->width;
+    const int32_t *const key = w->key, *const last = w->last;
+    const size_t stride = (size_t)wd + 1, ringsz = RAST__ACC_RING * stride * sizeof(uint64_t);
+    const size_t room = (size_t)((unsigned char *)(void *)e - (unsigned char *)(void *)w->fat);
+    const int64_t bias = (int64_t)v->x0 * (int64_t)QT;
+    rast__acc_walk ww = *w;
+    rast__acc ra = v[0];
+    uint64_t *ring, rows = 0;
+    int32_t *dif, hmax = 0, most = 0, cur, j, jw, jh, hgt, k, q;
+    int32_t nv = -1; /* an edge not vertical (the exact rows' test: rast__acc_emit's) */
+    uint32_t i, i0, inext;
+    int clean = 0;
+    if (ja < 0 || ringsz + RAST__ACC_RING * sizeof(int32_t) > room || (size_t)(jb - ja + 1) * sizeof(int32_t) > ringsz)
+        return 0;
+    ring = (uint64_t *)(void *)((unsigned char *)(void *)e - ringsz - RAST__ACC_RING * sizeof(int32_t));
+    dif = (int32_t *)(void *)ring; /* (first the rows' counts, to decide) */
+    for (j = 0; j <= jb - ja; j++) dif[j] = 0;
+    for (i = 0; i < w->n; i++) {
+        const int32_t f = key[i] + ja, l = last[i] < jb - 1 ? last[i] : jb - 1;
+        if (l - f + 1 > RAST__ACC_PILE || (i && key[i] < key[i - 1]) || e[i].dx >= (1 << 24) || e[i].dx <= -(1 << 24))
+            return 0;
+        if (l < f) continue;
+        hmax = l - f + 1 > hmax ? l - f + 1 : hmax;
+        rows += (uint64_t)(l - f + 1);
+        dif[f - ja]++;
+        dif[l + 1 - ja]--;
+        if (e[i].dx && nv < 0) nv = (int32_t)i;
+    }
+    if (nv < 0 || rows * RAST__ACC_DENSE_BAND < (uint64_t)(jb - ja) * (uint64_t)wd) return 0;
+    for (j = 0, cur = 0; j < jb - ja; j++) {
+        cur += dif[j];
+        most = cur > most ? cur : most;
+    }
+    ww.cap = (uint32_t)((room - ringsz - RAST__ACC_RING * sizeof(int32_t)) / sizeof(rast__cedge));
+    if ((uint32_t)most > ww.cap) return 0;
+    /* the walk: the ring and its rows' count changes cleared */
+    dif = (int32_t *)(void *)(ring + RAST__ACC_RING * stride);
+    for (k = 0; k < RAST__ACC_RING; k++) dif[k] = 0;
+    for (i = 0; i < RAST__ACC_RING * stride; i++) ring[i] = 0;
+    ra.dense = 1;
+    ra.cnt = NULL;
+    ra.lo = 0;
+    ra.hi = wd - 1;
+    hgt = RAST__ACC_RING - hmax; /* (rows a window: an edge that starts in it ends RAST__ACC_RING - 1 rows below its top at most) */
+    for (jw = ja, inext = 0, i0 = 0, cur = 0; jw < jb; jw = jh) {
+        jh = jb - jw > hgt ? jw + hgt : jb;
+        for (; inext < w->n && key[inext] + ja < jh; inext++) { /* every edge that starts above row jh */
+            rast__aedge *const ed = &e[inext];
+            const int32_t f = key[inext] + ja, l = last[inext] < jb - 1 ? last[inext] : jb - 1;
+            if (l < f) continue;
+            dif[f & (RAST__ACC_RING - 1)]++;
+            dif[(l + 1) & (RAST__ACC_RING - 1)]--;
+            if (w->thru[inext] != INT32_MIN && (int64_t)ed->yt >= (int64_t)ja * p && last[inext] <= jb - 1) {
+                if (ed->dx > 0)
+                    rast__acc_whole_r(ring, stride, ed, s, bias);
+                else
+                    rast__acc_whole_l(ring, stride, ed, s, bias);
+            } else {
+                for (j = f; j <= l; j++) { /* (the general way, a row at a time) */
+                    ra.acc = ring + (size_t)(j & (RAST__ACC_RING - 1)) * stride;
+                    rast__acc_row_part_in(&ra, ed, j, (int64_t)ed->yt - (int64_t)j * p, 1, 0);
+                }
+            }
+        }
+        for (j = jw; j < jh; j++) {
+            const int32_t at = j & (RAST__ACC_RING - 1);
+            ra.acc = ring + (size_t)at * stride;
+            cur += dif[at];
+            dif[at] = 0;
+            ra.lo = 0;
+            ra.hi = wd - 1;
+            /* (on a tie, the exact row: one edge not vertical given as
+             * the row's, so that rast__acc_emit does not take the sums) */
+            if (cur < RAST__ACC_MAXN && ((uint64_t)cur + 1) * w->m < ((uint64_t)1 << 25)) {
+                if (rast__acc_emit(&ra, 1, w->o, j, w->rule, w->m, rast__acc_win((uint64_t)cur, w->m), e, NULL, &nv,
+                                   1, NULL))
+                    continue;
+            } else {
+                for (k = 0; k <= wd; k++) ra.acc[k] = 0;
+            }
+            for (; i0 < inext && key[i0] + ja + hmax <= j; i0++) {
+            }
+            for (i = i0, q = 0; i < inext; i++) /* the row's edges */
+                if (key[i] + ja <= j && last[i] >= j) ww.tmp[q++] = (int32_t)i;
+            if (!clean) { /* the first exact row (rare): the cells cleared */
+                memset(w->exact, 0, w->n);
+                for (k = 0; k < wd; k++) w->cover[k] = w->area[k] = rast__i128_u64(0);
+                for (k = 0; k < w->nw; k++) w->bits[k] = 0;
+                clean = 1;
+            }
+            /* (the parts counted per 16 columns first, when there are
+             * enough of them for it to narrow the window: the band's cells
+             * v[0], unused here and cleared) */
+            if (cur < RAST__ACC_MAXN && ((uint64_t)cur + 1) * w->m < ((uint64_t)1 << 25) && q >= RAST__ACC_FEW &&
+                rast__acc_again(&v[0], &ww, j, q))
+                continue;
+            rast__acc_exact(&ww, ww.tmp, q, j);
+        }
+    }
+    return 1;
+}
+#endif
+
 /* The columns that can hold a value not 0: those the edges' abscissae
  * reach, [*c0, *c1) (of any clip).  Left of every edge the winding
  * number is 0, and right of them too: each ring is closed, so the
@@ -3114,7 +3348,10 @@ static rast_status rast__acc_walk_all(rast__acc_in *in, uint32_t n, int32_t s, r
             rast__acc_init(&v[r], cells + (RAST__ACC_SX == 1 ? (size_t)r * ((size_t)w.width + 1) : (size_t)r), b,
                            (uint32_t *)(void *)w.area, o, s, 0);
         }
-        rast__acc_by_bands(&w, v);
+#if RAST__ACC_COMPACT
+        if (!rast__acc_by_piles(&w, v))
+#endif
+            rast__acc_by_bands(&w, v);
     }
     rast__cov_zero_rows(o, w.jb, o->clip.y1);
     return RAST_OK;

@@ -35,6 +35,11 @@
  */
 #include "coverage.h"
 
+/* (x86: the parts' boxes and copies compared four coordinates a step) */
+#if defined(__SSE2__) && !defined(RAST_NO_SIMD) && !defined(__OPTIMIZE_SIZE__)
+#include <emmintrin.h> /* (integer vectors only: every x86-64 has them) */
+#define RAST__PL_SSE2 1
+#endif
 /* (size-optimised builds: the sweep as it was, smaller: every vertex by
  * rast__pl_remove and rast__pl_insert, each edge found by a search) */
 #if !defined(__OPTIMIZE_SIZE__)
@@ -979,7 +984,20 @@ static int rast__pl_same(const rast_polygon *poly, const uint32_t *pf, const int
         const uint32_t qa = (uint32_t)rid[a + i], qr = (uint32_t)rid[ra + i], size = poly->ring_sizes[qa];
         const rast_point *p = poly->points + pf[qa], *q = poly->points + pf[qr];
         if (poly->ring_sizes[qr] != size) return 0;
-        for (j = 0; j < size; j++) /* (differences below 2^29: modulo 2^32, the same test) */
+        j = 0;
+#if defined(RAST__PL_SSE2)
+        { /* four points a step: q's plus (dx, dy) against p's, modulo 2^32 too */
+            const __m128i d = _mm_set_epi32((int32_t)dy, (int32_t)dx, (int32_t)dy, (int32_t)dx);
+            for (; j + 4 <= size; j += 4) {
+                const __m128i ua = _mm_loadu_si128((const __m128i *)(const void *)(p + j));
+                const __m128i ub = _mm_loadu_si128((const __m128i *)(const void *)(p + j + 2));
+                const __m128i va = _mm_add_epi32(_mm_loadu_si128((const __m128i *)(const void *)(q + j)), d);
+                const __m128i vb = _mm_add_epi32(_mm_loadu_si128((const __m128i *)(const void *)(q + j + 2)), d);
+                if (_mm_movemask_epi8(_mm_and_si128(_mm_cmpeq_epi32(ua, va), _mm_cmpeq_epi32(ub, vb))) != 0xFFFF) return 0;
+            }
+        }
+#endif
+        for (; j < size; j++) /* (differences below 2^29: modulo 2^32, the same test) */
             if ((uint32_t)p[j].x - (uint32_t)q[j].x != dx || (uint32_t)p[j].y - (uint32_t)q[j].y != dy) return 0;
     }
     return 1;
@@ -1048,17 +1066,50 @@ int rast__cov_parts_test(const rast_polygon *poly, uint32_t npoints, rast__arena
         uint32_t lvr = 0;
         first[r] = pf[r] = base;
         nv[r] = size; /* (its vertices, at most; none: a part alone, not plain) */
-        for (i = 1; i < size; i++) {
-            const int32_t x = p[i].x, y = p[i].y;
-            if (x <= x0 && (x < x0 || y < ly)) { /* (its least vertex, the first when it repeats: rast__pl_chains) */
-                lvr = i;
-                ly = y;
+#if defined(RAST__PL_SSE2)
+        if (size >= 4) { /* the box two points a step, then its least vertex: on x0's vertical, the least y first */
+            __m128i lo = _mm_loadu_si128((const __m128i *)(const void *)p), hi = lo;
+            int32_t t[4];
+            for (i = 2; i + 2 <= size; i += 2) {
+                const __m128i v = _mm_loadu_si128((const __m128i *)(const void *)(p + i));
+                const __m128i ml = _mm_cmpgt_epi32(lo, v), mh = _mm_cmpgt_epi32(v, hi);
+                lo = _mm_xor_si128(lo, _mm_and_si128(_mm_xor_si128(lo, v), ml));
+                hi = _mm_xor_si128(hi, _mm_and_si128(_mm_xor_si128(hi, v), mh));
             }
-            x0 = x < x0 ? x : x0;
-            y0 = y < y0 ? y : y0;
-            x1 = x > x1 ? x : x1;
-            y1 = y > y1 ? y : y1;
-        }
+            for (; i < size; i++) { /* (the last point: no pair) */
+                x0 = p[i].x < x0 ? p[i].x : x0;
+                y0 = p[i].y < y0 ? p[i].y : y0;
+                x1 = p[i].x > x1 ? p[i].x : x1;
+                y1 = p[i].y > y1 ? p[i].y : y1;
+            }
+            _mm_storeu_si128((__m128i *)(void *)t, lo);
+            x0 = t[0] < x0 ? t[0] : x0;
+            x0 = t[2] < x0 ? t[2] : x0;
+            y0 = t[1] < y0 ? t[1] : y0;
+            y0 = t[3] < y0 ? t[3] : y0;
+            _mm_storeu_si128((__m128i *)(void *)t, hi);
+            x1 = t[0] > x1 ? t[0] : x1;
+            x1 = t[2] > x1 ? t[2] : x1;
+            y1 = t[1] > y1 ? t[1] : y1;
+            y1 = t[3] > y1 ? t[3] : y1;
+            for (i = 0, ly = INT32_MAX; i < size; i++)
+                if (p[i].x == x0 && p[i].y < ly) {
+                    lvr = i;
+                    ly = p[i].y;
+                }
+        } else
+#endif
+            for (i = 1; i < size; i++) {
+                const int32_t x = p[i].x, y = p[i].y;
+                if (x <= x0 && (x < x0 || y < ly)) { /* (its least vertex, the first when it repeats: rast__pl_chains) */
+                    lvr = i;
+                    ly = y;
+                }
+                x0 = x < x0 ? x : x0;
+                y0 = y < y0 ? y : y0;
+                x1 = x > x1 ? x : x1;
+                y1 = y > y1 ? y : y1;
+            }
         lv[r] = lvr;
         if (x0 < -lim || x1 > lim || y0 < -lim || y1 > lim) return 0;
         bx[0] = x0;
@@ -1222,7 +1273,21 @@ int rast__cov_parts_test(const rast_polygon *poly, uint32_t npoints, rast__arena
         const uint32_t size = poly->ring_sizes[r];
         int32_t y = size ? p[size - 1].y : 0;
         uint32_t ne = 0; /* its edges in e[]: those not horizontal */
-        for (i = 0; i < size; y = p[i++].y) ne += p[i].y != y;
+        i = 0;
+#if defined(RAST__PL_SSE2)
+        if (size >= 3) { /* the edges into points 1 to size - 1 two a step: -1 in a lane where y is the same */
+            __m128i eq = _mm_setzero_si128();
+            int32_t t[4];
+            for (i = 1; i + 2 <= size; i += 2)
+                eq = _mm_add_epi32(eq, _mm_cmpeq_epi32(_mm_loadu_si128((const __m128i *)(const void *)(p + i)),
+                                                       _mm_loadu_si128((const __m128i *)(const void *)(p + i - 1))));
+            _mm_storeu_si128((__m128i *)(void *)t, eq);
+            /* (t[1], t[3]: the y lanes, minus the equal ones; and the edge into point 0) */
+            ne = (i - 1) + (uint32_t)(t[1] + t[3]) + (p[0].y != y);
+            y = p[i - 1].y;
+        }
+#endif
+        for (; i < size; y = p[i++].y) ne += p[i].y != y;
         /* the ring's rows (its edges' rows: floor(y0 / P) to ceil(y1 / P)
          * - 1), its edges, not plain as ~ */
         rows[3 * r] = (int32_t)rast__floordiv(box[4 * r + 1], P);

@@ -42,6 +42,8 @@ static rast_status fill(canvas *c, const rast_polygon *poly, uint32_t npoints, c
     return st;
 }
 
+#include "wound_check.h"
+
 /* Non-zero past the byte counters' reach: a triangle walked round `turns`
  * times (3 x turns edges, 2 x turns crossings on a row through it, the
  * winding number `turns` inside).  Up to 510 crossings a row the deltas
@@ -49,36 +51,9 @@ static rast_status fill(canvas *c, const rast_polygon *poly, uint32_t npoints, c
  * deltas' count of crossings borrows, given back as they were). */
 static void test_wound(void)
 {
-    static rast_point pts[3 * 400];
-    static unsigned char scratch[1 << 20];
-    static canvas a, b;
     static const uint32_t turns[] = {85, 127, 128, 200, 255, 256, 300, 400};
-    rast__grid g;
-    size_t t;
-    CHECK(rast__grid_init(&g, 4, RAST_SAMPLE_CENTER, RAST_ROUND_EXACT, RAST_BOUNDARY_EXACT) == RAST_OK);
-    for (t = 0; t < sizeof turns / sizeof turns[0]; t++) {
-        uint32_t n = 3 * turns[t];
-        rast_polygon poly;
-        rast_rect clip = {0, 0, W, H};
-        int32_t i, j, ok = 1, inside = 0;
-        wound_triangle(pts, n);
-        poly.points = pts;
-        poly.ring_sizes = &n;
-        poly.nrings = 1;
-        CHECK(fill(&a, &poly, n, &g, RAST_RULE_NONZERO, &clip, scratch, rast__aet_scratch(n, W, H),
-                   RAST__AET_BY_SWEEP) == RAST_OK);
-        CHECK(fill(&b, &poly, n, &g, RAST_RULE_NONZERO, &clip, scratch, rast__aet_scratch(n, W, H),
-                   RAST__AET_BY_DELTA) == RAST_OK);
-        CHECK(!a.bad && !b.bad);
-        CHECK(memcmp(a.px, b.px, sizeof a.px) == 0);
-        for (j = 0; j < H; j++)
-            for (i = 0; i < W; i++) {
-                int in = ref_winding(pts, &n, 1, 4, 1, 0, i, j, NULL) != 0;
-                if (b.px[j][i] != in) ok = 0;
-                inside += in;
-            }
-        CHECK(ok && inside > 0);
-    }
+    const rast_rect clip = {0, 0, W, H};
+    wound_check(turns, sizeof turns / sizeof turns[0], &clip, RAST__AET_BY_DELTA);
 }
 
 int main(void)

@@ -30,24 +30,7 @@ enum { W = 40, H = 28, MAXP = 1200 };
 
 #include "rings.h"
 #include "row_canvas.h"
-
-static rast_status fill(canvas *c, const rast_polygon *poly, uint32_t npoints, const rast__grid *g,
-                        rast_fill_rule rule, const rast_rect *clip, unsigned char *scratch,
-                        size_t bytes, int how)
-{
-    rast__arena arena = rast__arena_of(scratch, bytes);
-    rast__painter p;
-    rast__sink sink;
-    rast_status st;
-    memset(c, 0, sizeof *c);
-    c->last_y = -1;
-    memset(&p, 0, sizeof p);
-    p.full = put_row;
-    p.user = c;
-    rast__sink_init(&sink, &p, clip);
-    st = rast__aet_fill_by(poly, npoints, g, rule, clip, &sink, &arena, how);
-    return st;
-}
+#include "wound_check.h"
 
 /* A random mesh of nx x ny cells into pts[] and sizes[]: returns the rings. */
 static uint32_t mesh(rast_point *pts, uint32_t *sizes, int s, int center, uint32_t *np)
@@ -107,8 +90,6 @@ static uint32_t mesh(rast_point *pts, uint32_t *sizes, int s, int center, uint32
     *np = n;
     return k;
 }
-
-#include "wound_check.h"
 
 /* Non-zero past the byte counters' reach: a triangle walked round `turns`
  * times (rings.h), 3 x turns vertices on a clip of 4 rows: the deltas are
@@ -193,8 +174,8 @@ int main(void)
 #else
         (void)seg, (void)copies, (void)ar;
 #endif
-        CHECK(fill(&a, &poly, np, &g, rule, &clip, scratch, need, RAST__AET_BY_SWEEP) == RAST_OK);
-        CHECK(fill(&b, &poly, np, &g, rule, &clip, scratch, need, RAST__AET_BY_RULE) == RAST_OK);
+        CHECK(canvas_fill(&a, &poly, np, &g, rule, &clip, scratch, need, RAST__AET_BY_SWEEP) == RAST_OK);
+        CHECK(canvas_fill(&b, &poly, np, &g, rule, &clip, scratch, need, RAST__AET_BY_RULE) == RAST_OK);
         CHECK(!a.bad && !b.bad);
         CHECK(memcmp(a.px, b.px, sizeof a.px) == 0);
         CHECK(canvas_matches_ref(&b, pts, sizes, nrings, s, center, textbook, rule, &clip, iter));

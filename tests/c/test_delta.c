@@ -22,26 +22,6 @@ enum { W = 48, H = 24, MAXP = 400 };
 
 #include "rings.h"
 #include "row_canvas.h"
-
-/* Fill by `how` into c (cleared first); the status. */
-static rast_status fill(canvas *c, const rast_polygon *poly, uint32_t npoints, const rast__grid *g,
-                        rast_fill_rule rule, const rast_rect *clip, void *scratch, size_t bytes,
-                        int how)
-{
-    rast__painter p;
-    rast__sink sink;
-    rast__arena arena = rast__arena_of(scratch, bytes);
-    rast_status st;
-    memset(c, 0, sizeof *c);
-    c->last_y = -1;
-    memset(&p, 0, sizeof p);
-    p.full = put_row;
-    p.user = c;
-    rast__sink_init(&sink, &p, clip);
-    st = rast__aet_fill_by(poly, npoints, g, rule, clip, &sink, &arena, how);
-    return st;
-}
-
 #include "wound_check.h"
 
 /* Non-zero past the byte counters' reach: a triangle walked round `turns`
@@ -90,8 +70,8 @@ int main(void)
          * so RAST__AET_BY_DELTA always takes the deltas */
         need = rast__aet_scratch(np, W, H);
         CHECK(need <= sizeof scratch);
-        CHECK(fill(&a, &poly, np, &g, rule, &clip, scratch, need, RAST__AET_BY_SWEEP) == RAST_OK);
-        CHECK(fill(&b, &poly, np, &g, rule, &clip, scratch, need, RAST__AET_BY_DELTA) == RAST_OK);
+        CHECK(canvas_fill(&a, &poly, np, &g, rule, &clip, scratch, need, RAST__AET_BY_SWEEP) == RAST_OK);
+        CHECK(canvas_fill(&b, &poly, np, &g, rule, &clip, scratch, need, RAST__AET_BY_DELTA) == RAST_OK);
         CHECK(!a.bad && !b.bad);
         CHECK(memcmp(a.px, b.px, sizeof a.px) == 0);
         CHECK(canvas_matches_ref(&b, pts, sizes, nrings, s, center, textbook, rule, &clip, iter));

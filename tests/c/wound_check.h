@@ -6,8 +6,7 @@
  * filled by the AET's sweep of every edge (RAST__AET_BY_SWEEP) and by the
  * way `how` under test, on `clip`: the two the same bit for bit, and the
  * pixels of the reference winding number (ref.h) inside the clip, none
- * outside.  Include after rings.h, row_canvas.h and the test's own
- * fill(canvas *, poly, npoints, grid, rule, clip, scratch, bytes, how).
+ * outside.  Include after rings.h and row_canvas.h (canvas_fill).
  */
 #ifndef RAST_TEST_WOUND_CHECK_H
 #define RAST_TEST_WOUND_CHECK_H
@@ -28,9 +27,9 @@ static void wound_check(const uint32_t *turns, size_t nturns, const rast_rect *c
         poly.points = pts;
         poly.ring_sizes = &n;
         poly.nrings = 1;
-        CHECK(fill(&a, &poly, n, &g, RAST_RULE_NONZERO, clip, scratch, rast__aet_scratch(n, W, H),
+        CHECK(canvas_fill(&a, &poly, n, &g, RAST_RULE_NONZERO, clip, scratch, rast__aet_scratch(n, W, H),
                    RAST__AET_BY_SWEEP) == RAST_OK);
-        CHECK(fill(&b, &poly, n, &g, RAST_RULE_NONZERO, clip, scratch, rast__aet_scratch(n, W, H), how) ==
+        CHECK(canvas_fill(&b, &poly, n, &g, RAST_RULE_NONZERO, clip, scratch, rast__aet_scratch(n, W, H), how) ==
               RAST_OK);
         CHECK(!a.bad && !b.bad);
         CHECK(memcmp(a.px, b.px, sizeof a.px) == 0);

@@ -120,7 +120,7 @@ build/librastrum.so: $(PIC_OBJ)
 	ln -sf librastrum.so.$(VERSION) build/$(SONAME)
 	ln -sf $(SONAME) $@
 
-build/tests/%: tests/c/%.c build/librastrum.a tests/c/check.h tests/c/ref.h tests/c/scratch.h tests/c/rings.h tests/c/row_canvas.h tests/c/byte_canvas.h
+build/tests/%: tests/c/%.c build/librastrum.a tests/c/check.h tests/c/ref.h tests/c/scratch.h tests/c/rings.h tests/c/row_canvas.h tests/c/byte_canvas.h tests/c/range_rings.h tests/c/wound_check.h
 	@mkdir -p $(@D)
 	@$(CC) $(ALL_CFLAGS) -Wno-conversion -Itests/c $< build/librastrum.a -o $@
 
@@ -331,7 +331,7 @@ build/single/rastrum.c: $(SRC) $(HDR) tools/single.py
 build/single/rastrum.o: build/single/rastrum.c
 	@for cc in gcc clang; do $$cc $(WARN) -O2 -DRAST_NO_AVX2 -c $< -o $@ || exit 1; done
 
-build/single/tests/%: tests/c/%.c build/single/rastrum.o tests/c/check.h tests/c/ref.h tests/c/scratch.h tests/c/rings.h tests/c/row_canvas.h tests/c/byte_canvas.h
+build/single/tests/%: tests/c/%.c build/single/rastrum.o tests/c/check.h tests/c/ref.h tests/c/scratch.h tests/c/rings.h tests/c/row_canvas.h tests/c/byte_canvas.h tests/c/range_rings.h tests/c/wound_check.h
 	@mkdir -p $(@D)
 	@$(CC) $(WARN) -Wno-conversion -O2 -Ibuild/single -Icsrc/src -Itests/c $< build/single/rastrum.o -o $@
 

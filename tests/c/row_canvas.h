@@ -11,8 +11,10 @@
 
 #include <stdint.h>
 #include <stdio.h>
+#include <string.h>
 
 #include "ref.h"
+#include "base/internal.h"
 #include "rastrum.h"
 
 typedef struct canvas {
@@ -37,6 +39,23 @@ static void put_row(void *user, int32_t y, const int32_t *xs, int32_t n)
         }
         for (x = xs[2 * k]; x < xs[2 * k + 1]; x++) c->px[y][x]++;
     }
+}
+
+/* The AET filler's runs of poly by `how` (RAST__AET_BY_RULE, _SWEEP or
+ * _DELTA: rast__aet_fill_by) into c, cleared first; the status. */
+static rast_status canvas_fill(canvas *c, const rast_polygon *poly, uint32_t npoints, const rast__grid *g,
+                               rast_fill_rule rule, const rast_rect *clip, void *scratch, size_t bytes, int how)
+{
+    rast__arena arena = rast__arena_of(scratch, bytes);
+    rast__painter p;
+    rast__sink sink;
+    memset(c, 0, sizeof *c);
+    c->last_y = -1;
+    memset(&p, 0, sizeof p);
+    p.full = put_row;
+    p.user = c;
+    rast__sink_init(&sink, &p, clip);
+    return rast__aet_fill_by(poly, npoints, g, rule, clip, &sink, &arena, how);
 }
 
 /* Each pixel of c once against the reference: inside the clip and inside

@@ -14,6 +14,7 @@
 
 #include "check.h"
 #include "rastrum.h"
+#include "range_rings.h"
 
 #define W 16
 #define H 12
@@ -28,16 +29,6 @@ static int32_t bound(rast_aa_method m, int32_t s)
     int32_t kb = (m >= RAST_AA_SS2 && m <= RAST_AA_SS16) ? (int32_t)(m - RAST_AA_SS2) + 1 : 0;
     int32_t sh = kb > s ? kb - s : 0;
     return (int32_t)(RAST_COORD_MAX / ((int64_t)1 << sh));
-}
-
-/* A small zigzag of n points inside the canvas at S = s. */
-static void points(rast_point *p, uint32_t n, int32_t s)
-{
-    uint32_t i;
-    for (i = 0; i < n; i++) {
-        p[i].x = (int32_t)(((1 + (i * 5) % 13) << s) + (int32_t)(rng() % (1u << s)));
-        p[i].y = (int32_t)(((1 + (i * 7) % 9) << s) + (int32_t)(rng() % (1u << s)));
-    }
 }
 
 /* tris: a batch of n / 3 triangles, else a polygon (rings 1 or 3) */
@@ -55,17 +46,7 @@ static rast_status cover(const rast_point *p, uint32_t n, int rings, int tris, r
     CHECK(rast_coverage_scratch_size(&o, n, W, H, &need) == RAST_OK && need <= sizeof scratch);
     if (tris)
         return rast_triangles_coverage(p, n / 3, &o, &clip, RAST_COVERAGE_U8, out, W, scratch, sizeof scratch);
-    poly.points = p;
-    if (rings == 1) {
-        sizes[0] = n;
-        poly.nrings = 1;
-    } else { /* three rings: 1, n - 2 and 1 points */
-        sizes[0] = 1;
-        sizes[1] = n - 2;
-        sizes[2] = 1;
-        poly.nrings = 3;
-    }
-    poly.ring_sizes = sizes;
+    range_polygon(&poly, p, n, rings, sizes);
     return rast_polygon_coverage(&poly, &o, &clip, RAST_COVERAGE_U8, out, W, scratch, sizeof scratch);
 }
 
@@ -97,7 +78,7 @@ static void test_each_place(void)
                         for (sg = 0; sg < 2; sg++)  /* past the top or the bottom of the range */
                             for (rings = 1; rings <= (tris ? 1 : 3); rings += 2) {
                                 int32_t *v;
-                                points(p, n, s);
+                                range_zigzag(p, n, s);
                                 v = c ? &p[k].y : &p[k].x;
                                 /* just past the bound: refused, nothing written */
                                 *v = sg ? -lim - 1 : lim + 1;

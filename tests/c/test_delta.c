@@ -22,25 +22,7 @@ enum { W = 48, H = 24, MAXP = 400 };
 
 #include "rings.h"
 #include "row_canvas.h"
-
-/* Fill by `how` into c (cleared first); the status. */
-static rast_status fill(canvas *c, const rast_polygon *poly, uint32_t npoints, const rast__grid *g,
-                        rast_fill_rule rule, const rast_rect *clip, void *scratch, size_t bytes,
-                        int how)
-{
-    rast__painter p;
-    rast__sink sink;
-    rast__arena arena = rast__arena_of(scratch, bytes);
-    rast_status st;
-    memset(c, 0, sizeof *c);
-    c->last_y = -1;
-    memset(&p, 0, sizeof p);
-    p.full = put_row;
-    p.user = c;
-    rast__sink_init(&sink, &p, clip);
-    st = rast__aet_fill_by(poly, npoints, g, rule, clip, &sink, &arena, how);
-    return st;
-}
+#include "wound_check.h"
 
 /* Non-zero past the byte counters' reach: a triangle walked round `turns`
  * times (3 x turns edges, 2 x turns crossings on a row through it, the
@@ -49,36 +31,9 @@ static rast_status fill(canvas *c, const rast_polygon *poly, uint32_t npoints, c
  * deltas' count of crossings borrows, given back as they were). */
 static void test_wound(void)
 {
-    static rast_point pts[3 * 400];
-    static unsigned char scratch[1 << 20];
-    static canvas a, b;
     static const uint32_t turns[] = {85, 127, 128, 200, 255, 256, 300, 400};
-    rast__grid g;
-    size_t t;
-    CHECK(rast__grid_init(&g, 4, RAST_SAMPLE_CENTER, RAST_ROUND_EXACT, RAST_BOUNDARY_EXACT) == RAST_OK);
-    for (t = 0; t < sizeof turns / sizeof turns[0]; t++) {
-        uint32_t n = 3 * turns[t];
-        rast_polygon poly;
-        rast_rect clip = {0, 0, W, H};
-        int32_t i, j, ok = 1, inside = 0;
-        wound_triangle(pts, n);
-        poly.points = pts;
-        poly.ring_sizes = &n;
-        poly.nrings = 1;
-        CHECK(fill(&a, &poly, n, &g, RAST_RULE_NONZERO, &clip, scratch, rast__aet_scratch(n, W, H),
-                   RAST__AET_BY_SWEEP) == RAST_OK);
-        CHECK(fill(&b, &poly, n, &g, RAST_RULE_NONZERO, &clip, scratch, rast__aet_scratch(n, W, H),
-                   RAST__AET_BY_DELTA) == RAST_OK);
-        CHECK(!a.bad && !b.bad);
-        CHECK(memcmp(a.px, b.px, sizeof a.px) == 0);
-        for (j = 0; j < H; j++)
-            for (i = 0; i < W; i++) {
-                int in = ref_winding(pts, &n, 1, 4, 1, 0, i, j, NULL) != 0;
-                if (b.px[j][i] != in) ok = 0;
-                inside += in;
-            }
-        CHECK(ok && inside > 0);
-    }
+    const rast_rect clip = {0, 0, W, H};
+    wound_check(turns, sizeof turns / sizeof turns[0], &clip, RAST__AET_BY_DELTA);
 }
 
 int main(void)
@@ -115,8 +70,8 @@ int main(void)
          * so RAST__AET_BY_DELTA always takes the deltas */
         need = rast__aet_scratch(np, W, H);
         CHECK(need <= sizeof scratch);
-        CHECK(fill(&a, &poly, np, &g, rule, &clip, scratch, need, RAST__AET_BY_SWEEP) == RAST_OK);
-        CHECK(fill(&b, &poly, np, &g, rule, &clip, scratch, need, RAST__AET_BY_DELTA) == RAST_OK);
+        CHECK(canvas_fill(&a, &poly, np, &g, rule, &clip, scratch, need, RAST__AET_BY_SWEEP) == RAST_OK);
+        CHECK(canvas_fill(&b, &poly, np, &g, rule, &clip, scratch, need, RAST__AET_BY_DELTA) == RAST_OK);
         CHECK(!a.bad && !b.bad);
         CHECK(memcmp(a.px, b.px, sizeof a.px) == 0);
         CHECK(canvas_matches_ref(&b, pts, sizes, nrings, s, center, textbook, rule, &clip, iter));

@@ -12,22 +12,13 @@
 
 #include "check.h"
 #include "rastrum.h"
+#include "range_rings.h"
 
 #define W 16
 #define H 12
 
 static unsigned char px[H][W], ref[H][W];
 static unsigned char scratch[1 << 16] __attribute__((aligned(64)));
-
-/* A small zigzag of n points inside the canvas (S = 4). */
-static void polygon(rast_point *p, uint32_t n)
-{
-    uint32_t i;
-    for (i = 0; i < n; i++) {
-        p[i].x = (int32_t)(16 * (1 + (i * 5) % 13) + (int32_t)(rng() % 16));
-        p[i].y = (int32_t)(16 * (1 + (i * 7) % 9) + (int32_t)(rng() % 16));
-    }
-}
 
 static rast_status fill(const rast_point *p, uint32_t n, int rings, int opaque)
 {
@@ -37,17 +28,7 @@ static rast_status fill(const rast_point *p, uint32_t n, int rings, int opaque)
     rast_target t;
     rast_fill_opts o = {RAST_ALGO_AET, RAST_RULE_NONZERO, 4, RAST_SAMPLE_CENTER, 0, 0};
     rast_target_init(&t, px, W, H, W, RAST_FORMAT_GRAY8);
-    poly.points = p;
-    if (rings == 1) {
-        sizes[0] = n;
-        poly.nrings = 1;
-    } else { /* three rings: 1, n - 2 and 1 points */
-        sizes[0] = 1;
-        sizes[1] = n - 2;
-        sizes[2] = 1;
-        poly.nrings = 3;
-    }
-    poly.ring_sizes = sizes;
+    range_polygon(&poly, p, n, rings, sizes);
     return opaque ? rast_fill_polygon_opaque(&t, &poly, &o, &one, &zero, scratch, sizeof scratch)
                   : rast_fill_polygon(&t, &poly, &o, &one, scratch, sizeof scratch);
 }
@@ -65,7 +46,7 @@ static void test_each_place(void)
                         for (opaque = 0; opaque < 2; opaque++) {
                             int32_t *v;
                             const int32_t edge = s ? -RAST_COORD_MAX : RAST_COORD_MAX;
-                            polygon(p, n);
+                            range_zigzag(p, n, 4);
                             memcpy(q, p, sizeof p);
                             v = c ? &p[k].y : &p[k].x;
                             /* just past the range: refused, nothing written */

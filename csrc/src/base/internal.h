@@ -72,6 +72,24 @@ static inline void rast__pts_extent(const rast_point *pts, uint32_t n, int32_t b
     }
 }
 
+/* The bounds calls' last step (entry/fill.c rast_fill_bounds, poly64.c
+ * rast__fill64_measure): the pixels [x0, x1) x [y0, y1) cut to clip c,
+ * into *out when that leaves any (else *out as it was: empty). */
+static inline void rast__rect_cut64(rast_rect *out, const rast_rect *c, int64_t x0, int64_t x1, int64_t y0,
+                                    int64_t y1)
+{
+    if (x0 < c->x0) x0 = c->x0;
+    if (x1 > c->x1) x1 = c->x1;
+    if (y0 < c->y0) y0 = c->y0;
+    if (y1 > c->y1) y1 = c->y1;
+    if (x0 < x1 && y0 < y1) {
+        out->x0 = (int32_t)x0;
+        out->x1 = (int32_t)x1;
+        out->y0 = (int32_t)y0;
+        out->y1 = (int32_t)y1;
+    }
+}
+
 /* (b - a) x (c - a): twice the signed area of abc, exact for vertices
  * (|coordinates| < 2^28: |.| < 2^58).  Positive when a, b, c turn
  * clockwise on screen (y down), counter-clockwise with y up. */

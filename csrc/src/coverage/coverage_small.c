@@ -32,6 +32,7 @@
  */
 #include "coverage.h"
 #include "../base/bits.h" /* rast__ctz64 */
+#include "../painters/paint.h" /* rast__gray8_blend_rows */
 
 #if !defined(__OPTIMIZE_SIZE__)
 
@@ -294,6 +295,28 @@ static void rast__cs_hand_on(const unsigned char *lv, const uint64_t *u, const r
     }
 }
 
+/* The solid gray8 painter's fast kind (rast__painter::bytes: the
+ * target's bytes, stride and value) takes the box's levels lv whole, its
+ * rows inside o's clip blended at once (rast__gray8_blend_rows: a level 0
+ * leaves a pixel as it is, 255 sets the value, as the runs' levels and
+ * full entries do), no run looked for and no painter's call a row: the
+ * hand-on and the rows' calls were ~1,000 instructions of the loop
+ * family's ~6,800 a call (issue 33).  0 for any other painter. */
+static int rast__cs_direct(const unsigned char *lv, const rast_rect *box, const rast__cov_out *o)
+{
+    const rast__painter *p = o->paint;
+    const int32_t w = box->x1 - box->x0;
+    const int32_t x0 = box->x0 > o->clip.x0 ? box->x0 : o->clip.x0;
+    const int32_t x1 = box->x1 < o->clip.x1 ? box->x1 : o->clip.x1;
+    const int32_t y0 = box->y0 > o->clip.y0 ? box->y0 : o->clip.y0;
+    const int32_t y1 = box->y1 < o->clip.y1 ? box->y1 : o->clip.y1;
+    if (!p->bytes) return 0;
+    if (x0 < x1 && y0 < y1)
+        rast__gray8_blend_rows(p->bytes, p->stride, p->value, x0, x1, y0, y1,
+                               lv + (ptrdiff_t)(y0 - box->y0) * w + (x0 - box->x0), w);
+    return 1;
+}
+
 int rast__cov_small(const rast_polygon *poly, int32_t s, const rast__cov_out *o, const rast_rect *box)
 {
     rast__cs_edge e[RAST__CS_EDGES];
@@ -383,16 +406,28 @@ int rast__cov_small(const rast_polygon *poly, int32_t s, const rast__cov_out *o,
         }
         if (near >> (2 * RAST__CS_K + 1)) return 0;
     }
+    if (rast__cs_direct(lv, box, o)) return 1;
     memset(lv + h * w, 0, 16);
     rast__cs_runs(lv, w, h, runs);
     rast__cs_hand_on(lv, runs, box, o);
     return 1;
 }
 
+/* The uint8 level of c samples inside of k x k, floor(255 c / k^2 + 1/2)
+ * (docs/coverage.md; what rast__cov_level gives for c 2^(62 - 2 kb)):
+ * floor((255 c + 8) / 16) for "ss4", floor((255 c + 2) / 4) for "ss2".
+ * Constant tables: made by rast__cov_level at each call they were ~270
+ * instructions of the loop family's ~6,000 a call. */
+static const unsigned char rast__cs_level4[17] = {0,   16,  32,  48,  64,  80,  96,  112, 128,
+                                                  143, 159, 175, 191, 207, 223, 239, 255};
+static const unsigned char rast__cs_level2[5] = {0, 64, 128, 191, 255};
+
 /* A pixel row's levels from its row of differences d[] over the fine
  * columns (k = 2 or 4 a pixel): the level of the magnitude of each
- * pixel's k running sums. */
-static inline void rast__cs_counts(const signed char *d, int32_t w, int32_t k, const uint64_t *level,
+ * pixel's k running sums; in *u the bits of the levels not 0, unless u
+ * is NULL (rast__cs_direct's painter needs none: a constant where this
+ * is inlined, so the bits' 4 instructions a column are gone there). */
+static inline void rast__cs_counts(const signed char *d, int32_t w, int32_t k, const unsigned char *level,
                                       unsigned char *lv, uint64_t *u)
 {
     uint64_t run = 0;
@@ -406,10 +441,10 @@ static inline void rast__cs_counts(const signed char *d, int32_t w, int32_t k, c
             sum = 2 * v + 2 * d[0] + d[1];
             v += d[0] + d[1];
         }
-        lv[c] = (unsigned char)level[sum < 0 ? -sum : sum];
-        run |= rast__cs_bit(c, lv[c]);
+        lv[c] = level[sum < 0 ? -sum : sum];
+        if (u) run |= rast__cs_bit(c, lv[c]);
     }
-    *u = run;
+    if (u) *u = run;
 }
 
 /* "ss2" and "ss4" (k = 2^kb) of the same rings: the binary rule on the
@@ -436,11 +471,10 @@ void rast__cov_small_ss(const rast_polygon *poly, int32_t s, int32_t kb, rast_sa
     const int32_t w = box->x1 - box->x0, h = box->y1 - box->y0, k = 1 << kb, fw = w * k + 2;
     const int64_t st = (int64_t)1 << (s - kb), off = sample == RAST_SAMPLE_CENTER ? st / 2 : 0;
     const int64_t bx = (int64_t)box->x0 * ((int64_t)1 << s), by = (int64_t)box->y0 * ((int64_t)1 << s);
-    uint64_t level[17];
+    const unsigned char *level = kb == 2 ? rast__cs_level4 : rast__cs_level2;
     uint32_t i;
-    int32_t r, j;
+    int32_t r;
     if (w <= 0 || h <= 0) return;
-    for (j = 0; j <= k * k; j++) level[j] = rast__cov_level(RAST_COVERAGE_U8, (uint64_t)j << (62 - 2 * kb));
     memset(d, 0, (size_t)h * (size_t)fw);
     for (i = 0; i < n; i++) {
         const rast_point a = p[i], b = p[i + 1 < n ? i + 1 : 0];
@@ -465,6 +499,16 @@ void rast__cov_small_ss(const rast_polygon *poly, int32_t s, int32_t kb, rast_sa
             d[(jr >> kb) * fw + col] = (signed char)(d[(jr >> kb) * fw + col] + sg);
             rast__cs_step_next(&ix);
         }
+    }
+    if (o->paint->bytes) { /* (rast__cs_direct's painter) */
+        for (r = 0; r < h; r++) {
+            if (kb == 2)
+                rast__cs_counts(d + r * fw, w, 4, level, lv + r * w, NULL);
+            else
+                rast__cs_counts(d + r * fw, w, 2, level, lv + r * w, NULL);
+        }
+        (void)rast__cs_direct(lv, box, o);
+        return;
     }
     for (r = 0; r < h; r++) {
         if (kb == 2)

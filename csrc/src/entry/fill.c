@@ -312,16 +312,7 @@ rast_status rast__fill_measure(const rast__fill_setup *f, const rast_polygon *po
         int32_t s = f->opts->subpixel_bits;
         int64_t x0 = rast__pixel_floor(minx, s) - 1, x1 = rast__pixel_floor(maxx, s) + 2;
         int64_t y0 = rast__pixel_floor(miny, s) - 1, y1 = rast__pixel_floor(maxy, s) + 2;
-        if (x0 < c.x0) x0 = c.x0;
-        if (x1 > c.x1) x1 = c.x1;
-        if (y0 < c.y0) y0 = c.y0;
-        if (y1 > c.y1) y1 = c.y1;
-        if (x0 < x1 && y0 < y1) {
-            out.x0 = (int32_t)x0;
-            out.x1 = (int32_t)x1;
-            out.y0 = (int32_t)y0;
-            out.y1 = (int32_t)y1;
-        }
+        rast__rect_cut64(&out, &c, x0, x1, y0, y1);
     }
     *bounds = out;
     return RAST_OK;

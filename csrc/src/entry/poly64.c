@@ -377,16 +377,7 @@ rast_status rast__fill64_measure(const rast_fill_opts *opts, const rast__grid64 
             y0 = (int64_t)((uint64_t)(lo[1] + bias) >> s) - (bias >> s) - 1;
             y1 = (int64_t)((uint64_t)(hi[1] + bias) >> s) - (bias >> s) + 2;
         }
-        if (x0 < c.x0) x0 = c.x0;
-        if (x1 > c.x1) x1 = c.x1;
-        if (y0 < c.y0) y0 = c.y0;
-        if (y1 > c.y1) y1 = c.y1;
-        if (x0 < x1 && y0 < y1) {
-            out.x0 = (int32_t)x0;
-            out.x1 = (int32_t)x1;
-            out.y0 = (int32_t)y0;
-            out.y1 = (int32_t)y1;
-        }
+        rast__rect_cut64(&out, &c, x0, x1, y0, y1);
     }
     *bounds = out;
     return RAST_OK;

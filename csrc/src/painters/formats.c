@@ -119,8 +119,8 @@ static inline void rast__gray8_store4(unsigned char *p, __m128i q)
  * both gets the same value from both (a tiny polygon's rows are 3 to 12
  * pixels: their last few, one at a time, were ~10 instructions each, a
  * quarter of the loop family's painting). */
-static void rast__gray8_blend(unsigned char *row, int32_t x0, int32_t x1, const uint8_t *cov,
-                              const unsigned char *v)
+RAST__HOT void rast__gray8_blend_in(unsigned char *row, int32_t x0, int32_t x1, const uint8_t *cov,
+                                    const unsigned char *v)
 {
     unsigned s = v[0];
     int32_t i = x0;
@@ -149,6 +149,29 @@ static void rast__gray8_blend(unsigned char *row, int32_t x0, int32_t x1, const 
 #endif
     for (; i < x1; i++) row[i] = (unsigned char)rast__blend8(s, row[i], cov[i - x0]);
 }
+
+/* (the format's entry; rast__gray8_blend_rows inlines the body) */
+static void rast__gray8_blend(unsigned char *row, int32_t x0, int32_t x1, const uint8_t *cov,
+                              const unsigned char *v)
+{
+    rast__gray8_blend_in(row, x0, x1, cov, v);
+}
+
+#if !defined(__OPTIMIZE_SIZE__)
+/* Rows [y0, y1) of the solid gray8 painter's pixels (the fast kind:
+ * rast__painter::bytes, stride and value), columns [x0, x1), blended by
+ * rows of levels lv (a row every lstride bytes, the first for row y0 and
+ * column x0) as rast__gray8_blend blends each: a level 0 leaves its pixel
+ * as it is and 255 sets the value (rast__blend8), so a tiny polygon's
+ * box (coverage_small.c) goes here whole, its rows' runs not looked for
+ * and no painter's call a row. */
+void rast__gray8_blend_rows(unsigned char *base, ptrdiff_t stride, unsigned char value, int32_t x0,
+                            int32_t x1, int32_t y0, int32_t y1, const uint8_t *lv, ptrdiff_t lstride)
+{
+    unsigned char *row = base + (ptrdiff_t)y0 * stride;
+    for (; y0 < y1; y0++, row += stride, lv += lstride) rast__gray8_blend_in(row, x0, x1, lv, &value);
+}
+#endif
 
 /* ---- rgb888: R, G, B bytes ------------------------------------------------- */
 

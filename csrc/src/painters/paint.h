@@ -125,6 +125,13 @@ int rast__sink_byte_rows(const rast__sink *sink, rast__byte_rows *b);
  * whole, the painter going on after them. */
 void rast__byte_rows_claim(const rast__byte_rows *b, int32_t y0, int32_t y1);
 
+/* The solid gray8 painter's fast kind, levels a box at a time
+ * (formats.c): rows [y0, y1), columns [x0, x1) of base (a row every
+ * stride bytes) blended toward value by the levels at lv (a row every
+ * lstride bytes, the first row y0's from column x0). */
+void rast__gray8_blend_rows(unsigned char *base, ptrdiff_t stride, unsigned char value, int32_t x0,
+                            int32_t x1, int32_t y0, int32_t y1, const uint8_t *lv, ptrdiff_t lstride);
+
 /* Bytes p[0 .. len) set to v, w its byte in all eight: a run of up to 32
  * by word stores that stay inside it (overlapping), a longer one by
  * memset.  A spiky outline's rows are many short runs, a memset call each

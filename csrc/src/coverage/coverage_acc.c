@@ -2572,16 +2572,51 @@ RAST__APART void rast__acc_by_bands(const rast__acc_walk *w, rast__acc *v)
  * edge-row per ~20 columns) paid 14% more for than the bands' walk */
 #define RAST__ACC_PILE_DENSE 4
 
-/* floor(a / b) and its remainder, b > 0 */
-static inline int64_t rast__acc_fdiv(int64_t a, int64_t b, uint32_t *r)
+/* floor(a / b) (pos) or floor(-a / b) (not pos) and its remainder, a >= 0,
+ * b > 0: one unsigned division (pos a constant at each call) */
+static inline int64_t rast__acc_sdiv(int64_t a, int64_t b, uint32_t *r, int pos)
 {
-    int64_t q = a / b, m = a % b;
-    if (m < 0) {
-        m += b;
-        q--;
+    const uint64_t q = (uint64_t)a / (uint64_t)b, m = (uint64_t)a % (uint64_t)b;
+    if (pos) {
+        *r = (uint32_t)m;
+        return (int64_t)q;
     }
-    *r = (uint32_t)m;
-    return q;
+    *r = (uint32_t)(m ? (uint64_t)b - m : 0);
+    return -(int64_t)q - (m != 0);
+}
+
+/* A part of rast__acc_whole_in's edge: from (xa, ta) to (xb, tb) in row
+ * cells acc (Q units, t from the row's top), the column stepper at the
+ * next vertical after xa's column (*qt from the row's top, *qtr; its step
+ * qts, qtsr; d0: qts 2^20 signed), moved past the part's last vertical */
+RAST__HOT void rast__acc_whole_part(uint64_t *acc, int64_t xa, int64_t xb, uint64_t ta, uint64_t tb, int64_t *qt,
+                                    uint32_t *qtr, int64_t qts, uint32_t qtsr, uint32_t adx, uint64_t d0, int right,
+                                    uint64_t neg)
+{
+    const uint64_t fm = QT - 1;
+    const int64_t ca = (int64_t)((uint64_t)xa >> QF), cb = (int64_t)((uint64_t)xb >> QF);
+    if (ca == cb) {
+        rast__acc_put(acc, ca, (uint64_t)xa & fm, (uint64_t)xb & fm, tb - ta, neg, 1);
+    } else {
+        const uint64_t d1 = d0 + ((((uint64_t)1 << 20) ^ neg) - neg);
+        uint64_t t = (uint64_t)*qt, prev = 0, sum = 0;
+        uint32_t r = *qtr;
+        int64_t col;
+        rast__acc_put(acc, ca, (uint64_t)xa & fm, right ? QT : 0, t - ta, neg, 1);
+        if (right) {
+            for (col = ca + 1; col != cb; col++) rast__acc_col_step(&acc[col], &r, qtsr, adx, d0, d1, &prev, &sum);
+            acc[cb] += prev;
+        } else {
+            for (col = ca - 1; col != cb; col--)
+                rast__acc_col_step(&acc[col + 1], &r, qtsr, adx, d0, d1, &prev, &sum);
+            acc[cb + 1] += prev;
+        }
+        t += (((sum ^ neg) - neg)) >> 20; /* (the last vertical's ordinate) */
+        rast__acc_put(acc, cb, right ? 0 : QT, (uint64_t)xb & fm, tb - t, neg, 1);
+        r += qtsr; /* the stepper to the vertical after the last */
+        *qt = (int64_t)t + qts + rast__acc_carry_sel(&r, adx);
+        *qtr = r;
+    }
 }
 
 /* Edge e (within the clip's columns and rows, |dx| < 2^24, dy at most
@@ -2595,89 +2630,92 @@ static inline int64_t rast__acc_fdiv(int64_t a, int64_t b, uint32_t *r)
  * grid of 2^-30 px, by steppers set here (one division each, as
  * rast__acc_top and rast__acc_t_first set them): the same pieces, so the
  * same cells (docs/coverage.md, the accumulation's bound per part).
- * right: e goes right, a constant at each call. */
+ * right: e goes right; neg: its sign (0, or all ones: e->dir < 0); both
+ * constants at each call, so that a put is two adds or two subtractions.
+ * An edge whose ends lie in one column crosses no vertical: a piece a
+ * row, and no column stepper; the others have theirs set at the first
+ * vertical they cross, from the first row's top (the same ordinates as
+ * when set at the row that crosses it: QT a row apart).  The first row
+ * (from the edge's top) and the last (to its bottom end) apart from the
+ * rows between, whole rows (from 0 to QT: constants there). */
 RAST__HOT void rast__acc_whole_in(uint64_t *ring, size_t stride, const rast__aedge *e, int32_t s, int64_t bias,
-                                  int right)
+                                  int right, uint64_t neg)
 {
     const int32_t p = (int32_t)1 << s, hq = QF - s;
-    const uint64_t fm = QT - 1, neg = e->dir < 0 ? ~(uint64_t)0 : 0;
+    const uint64_t fm = QT - 1;
     const int64_t xt = e->xt, yt = e->yt, dx = e->dx, dy = e->dy, adx = dx < 0 ? -dx : dx;
-    const int32_t jl = (int32_t)((yt + dy - 1) >> s); /* (yt >= 0 here: the clip's rows) */
-    int32_t j = (int32_t)(yt >> s);
-    int64_t qx, qxs, xa = xt * ((int64_t)1 << hq) - bias, xb, ta, tb, qt = 0, qts = 0;
-    uint64_t d0 = 0, d1 = 0;
-    uint32_t qxr, qxsr, qtr = 0, qtsr = 0;
-    int cols = 0;
-    uint64_t *acc = ring + (size_t)(j & (RAST__ACC_RING - 1)) * stride, *const end = ring + RAST__ACC_RING * stride;
-    qx = xt * ((int64_t)1 << hq) - bias + rast__acc_fdiv(dx * (((int64_t)j + 1) * p - yt) * ((int64_t)1 << hq), dy, &qxr);
-    qxs = rast__acc_fdiv(dx * ((int64_t)1 << QF), dy, &qxsr);
-    ta = (yt - (int64_t)j * p) * ((int64_t)1 << hq);
-    tb = (int64_t)QT;
-    xb = qx;
-    for (;;) {
-        const int64_t ca = (int64_t)((uint64_t)xa >> QF), cb = (int64_t)((uint64_t)xb >> QF);
-        if (j == jl) {
-            xb = (xt + dx) * ((int64_t)1 << hq) - bias;
-            tb = (yt + dy - (int64_t)j * p) * ((int64_t)1 << hq);
-            if (ca == (int64_t)((uint64_t)xb >> QF)) {
-                rast__acc_put(acc, ca, (uint64_t)xa & fm, (uint64_t)xb & fm, (uint64_t)(tb - ta), neg, 1);
-                return;
-            }
-        } else if (ca == cb) {
-            rast__acc_put(acc, ca, (uint64_t)xa & fm, (uint64_t)xb & fm, (uint64_t)(tb - ta), neg, 1);
-            goto next;
-        }
-        {
-            const int64_t cc = (int64_t)((uint64_t)xb >> QF);
-            uint64_t t, prev = 0, sum = 0;
-            int64_t col;
-            if (!cols) { /* the first vertical crossed: its ordinate from row j's top */
-                const int64_t X = (ca + right) * p + bias / ((int64_t)1 << hq), u = right ? X - xt : xt - X;
-                qt = rast__acc_fdiv(u * dy * ((int64_t)1 << hq), adx, &qtr) + (yt - (int64_t)j * p) * ((int64_t)1 << hq);
-                qts = rast__acc_fdiv(dy * ((int64_t)1 << QF), adx, &qtsr);
-                d0 = (((uint64_t)qts << 20) ^ neg) - neg;
-                d1 = d0 + ((((uint64_t)1 << 20) ^ neg) - neg);
-                cols = 1;
-            }
-            t = (uint64_t)qt;
-            rast__acc_put(acc, ca, (uint64_t)xa & fm, right ? QT : 0, t - (uint64_t)ta, neg, 1);
-            if (right) {
-                for (col = ca + 1; col != cc; col++)
-                    rast__acc_col_step(&acc[col], &qtr, qtsr, (uint32_t)adx, d0, d1, &prev, &sum);
-                acc[cc] += prev;
-            } else {
-                for (col = ca - 1; col != cc; col--)
-                    rast__acc_col_step(&acc[col + 1], &qtr, qtsr, (uint32_t)adx, d0, d1, &prev, &sum);
-                acc[cc + 1] += prev;
-            }
-            t += (((sum ^ neg) - neg)) >> 20; /* (the last vertical's ordinate) */
-            rast__acc_put(acc, cc, right ? 0 : QT, (uint64_t)xb & fm, (uint64_t)tb - t, neg, 1);
-            if (j == jl) return;
-            qtr += qtsr; /* the stepper to the vertical after the last */
-            qt = (int64_t)t + qts + rast__acc_carry(&qtr, (uint32_t)adx);
-        }
-    next: /* the next row, from this one's bottom */
-        j++;
-        xa = xb;
-        ta = 0;
-        qt -= (int64_t)QT;
-        acc += stride;
-        acc = acc == end ? ring : acc;
-        qx += qxs;
-        qxr += qxsr;
-        qx += rast__acc_carry(&qxr, (uint32_t)dy);
-        xb = qx;
+    const int32_t j0 = (int32_t)(yt >> s), jl = (int32_t)((yt + dy - 1) >> s); /* (yt >= 0 here: the clip's rows) */
+    const int64_t xe = (xt + dx) * ((int64_t)1 << hq) - bias; /* the bottom end */
+    const uint64_t te = (uint64_t)((yt + dy - (int64_t)jl * p) * ((int64_t)1 << hq));
+    int64_t xa = xt * ((int64_t)1 << hq) - bias, qx = 0, qxs = 0, qt, qts;
+    const int64_t ca = (int64_t)((uint64_t)xa >> QF);
+    uint64_t ta = (uint64_t)((yt - (int64_t)j0 * p) * ((int64_t)1 << hq)), d0;
+    uint32_t qxr = 0, qxsr = 0, qtr, qtsr;
+    int32_t n = jl - j0; /* the rows before the last */
+    uint64_t *acc = ring + (size_t)(j0 & (RAST__ACC_RING - 1)) * stride, *const end = ring + RAST__ACC_RING * stride;
+    if (n) { /* (dx's sign is right's: the floors of quotients of one sign) */
+        qx = xa + rast__acc_sdiv(adx * (((int64_t)j0 + 1) * p - yt) * ((int64_t)1 << hq), dy, &qxr, right);
+        qxs = rast__acc_sdiv(adx * ((int64_t)1 << QF), dy, &qxsr, right);
     }
+    if (ca == (int64_t)((uint64_t)xe >> QF)) { /* one column: a piece a row */
+        for (; n; n--) {
+            rast__acc_put(acc, ca, (uint64_t)xa & fm, (uint64_t)qx & fm, QT - ta, neg, 1);
+            xa = qx;
+            ta = 0;
+            acc += stride;
+            acc = acc == end ? ring : acc;
+            qx += qxs;
+            qxr += qxsr;
+            qx += rast__acc_carry_sel(&qxr, (uint32_t)dy);
+        }
+        rast__acc_put(acc, ca, (uint64_t)xa & fm, (uint64_t)xe & fm, te - ta, neg, 1);
+        return;
+    }
+    { /* the column stepper at the first vertical crossed, from row j0's top */
+        const int64_t X = (ca + right) * p + bias / ((int64_t)1 << hq), u = right ? X - xt : xt - X;
+        qt = rast__acc_sdiv(u * dy * ((int64_t)1 << hq), adx, &qtr, 1) + (int64_t)ta;
+        qts = rast__acc_sdiv(dy * ((int64_t)1 << QF), adx, &qtsr, 1);
+        d0 = (((uint64_t)qts << 20) ^ neg) - neg;
+    }
+    if (n) {
+        /* the first row, from the edge's top; then the whole rows */
+        rast__acc_whole_part(acc, xa, qx, ta, QT, &qt, &qtr, qts, qtsr, (uint32_t)adx, d0, right, neg);
+        for (;;) {
+            xa = qx;
+            qt -= (int64_t)QT;
+            acc += stride;
+            acc = acc == end ? ring : acc;
+            if (!--n) break;
+            qx += qxs;
+            qxr += qxsr;
+            qx += rast__acc_carry_sel(&qxr, (uint32_t)dy);
+            rast__acc_whole_part(acc, xa, qx, 0, QT, &qt, &qtr, qts, qtsr, (uint32_t)adx, d0, right, neg);
+        }
+        ta = 0;
+    }
+    rast__acc_whole_part(acc, xa, xe, ta, te, &qt, &qtr, qts, qtsr, (uint32_t)adx, d0, right, neg);
 }
 
-RAST__APART void rast__acc_whole_r(uint64_t *ring, size_t stride, const rast__aedge *e, int32_t s, int64_t bias)
+/* Out of line, one for each direction and sign (rast__acc_cols_r's
+ * reasons) */
+RAST__APART void rast__acc_whole_rp(uint64_t *ring, size_t stride, const rast__aedge *e, int32_t s, int64_t bias)
 {
-    rast__acc_whole_in(ring, stride, e, s, bias, 1);
+    rast__acc_whole_in(ring, stride, e, s, bias, 1, 0);
 }
 
-RAST__APART void rast__acc_whole_l(uint64_t *ring, size_t stride, const rast__aedge *e, int32_t s, int64_t bias)
+RAST__APART void rast__acc_whole_rn(uint64_t *ring, size_t stride, const rast__aedge *e, int32_t s, int64_t bias)
 {
-    rast__acc_whole_in(ring, stride, e, s, bias, 0);
+    rast__acc_whole_in(ring, stride, e, s, bias, 1, ~(uint64_t)0);
+}
+
+RAST__APART void rast__acc_whole_lp(uint64_t *ring, size_t stride, const rast__aedge *e, int32_t s, int64_t bias)
+{
+    rast__acc_whole_in(ring, stride, e, s, bias, 0, 0);
+}
+
+RAST__APART void rast__acc_whole_ln(uint64_t *ring, size_t stride, const rast__aedge *e, int32_t s, int64_t bias)
+{
+    rast__acc_whole_in(ring, stride, e, s, bias, 0, ~(uint64_t)0);
 }
 
 /* Rows ja to jb by the piles' walk, if it fits: returns 0 (nothing done)
@@ -2744,10 +2782,16 @@ static int rast__acc_by_piles(const rast__acc_walk *w, rast__acc *v)
             dif[f & (RAST__ACC_RING - 1)]++;
             dif[(l + 1) & (RAST__ACC_RING - 1)]--;
             if (w->thru[inext] != INT32_MIN && (int64_t)ed->yt >= (int64_t)ja * p && last[inext] <= jb - 1) {
-                if (ed->dx > 0)
-                    rast__acc_whole_r(ring, stride, ed, s, bias);
-                else
-                    rast__acc_whole_l(ring, stride, ed, s, bias);
+                if (ed->dx > 0) {
+                    if (ed->dir < 0)
+                        rast__acc_whole_rn(ring, stride, ed, s, bias);
+                    else
+                        rast__acc_whole_rp(ring, stride, ed, s, bias);
+                } else if (ed->dir < 0) {
+                    rast__acc_whole_ln(ring, stride, ed, s, bias);
+                } else {
+                    rast__acc_whole_lp(ring, stride, ed, s, bias);
+                }
             } else {
                 for (j = f; j <= l; j++) { /* (the general way, a row at a time) */
                     ra.acc = ring + (size_t)(j & (RAST__ACC_RING - 1)) * stride;

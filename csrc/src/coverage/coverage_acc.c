@@ -2725,8 +2725,13 @@ RAST__APART void rast__acc_whole_ln(uint64_t *ring, size_t stride, const rast__a
  * records too.  Edges that leave the clip go row by row the general way
  * (rast__acc_row_part_in).  Every row is read whole (dense); a row with a
  * level near a tie, or too many parts, goes to the exact sweep
- * (rast__acc_exact), as in the bands' walk. */
-static int rast__acc_by_piles(const rast__acc_walk *w, rast__acc *v)
+ * (rast__acc_exact), as in the bands' walk.  all: the edges' rows as
+ * rast__acc_sorted sums them (each edge's, not cut to the clip's rows):
+ * rows not dense even by that sum are turned away before the pass over
+ * the edges (a map's rings: 0.2 M instructions).  (An edge wholly above
+ * the clip adds less than nothing to it: such a scene may be turned away
+ * where the pass would take it, the same levels by the bands' walk.) */
+static int rast__acc_by_piles(const rast__acc_walk *w, rast__acc *v, uint64_t all)
 {
     rast__aedge *const e = w->e;
     const int32_t ja = w->ja, jb = w->jb, s = w->s, p = (int32_t)1 << s, wd = w->width;
@@ -2741,7 +2746,8 @@ static int rast__acc_by_piles(const rast__acc_walk *w, rast__acc *v)
     int32_t nv = -1; /* an edge not vertical (the exact rows' test: rast__acc_emit's) */
     uint32_t i, i0, inext;
     int clean = 0;
-    if (ja < 0 || ringsz + RAST__ACC_RING * sizeof(int32_t) > room || (size_t)(jb - ja + 1) * sizeof(int32_t) > ringsz)
+    if (ja < 0 || ringsz + RAST__ACC_RING * sizeof(int32_t) > room || (size_t)(jb - ja + 1) * sizeof(int32_t) > ringsz ||
+        (int64_t)all < 0 || all * RAST__ACC_PILE_DENSE < (uint64_t)(jb - ja) * (uint64_t)wd)
         return 0;
     ring = (uint64_t *)(void *)((unsigned char *)(void *)e - ringsz - RAST__ACC_RING * sizeof(int32_t));
     dif = (int32_t *)(void *)ring; /* (first the rows' counts, to decide) */
@@ -3398,7 +3404,7 @@ static rast_status rast__acc_walk_all(rast__acc_in *in, uint32_t n, int32_t s, r
                            (uint32_t *)(void *)w.area, o, s, 0);
         }
 #if RAST__ACC_COMPACT
-        if (!rast__acc_by_piles(&w, v))
+        if (!rast__acc_by_piles(&w, v, rows))
 #endif
             rast__acc_by_bands(&w, v);
     }

@@ -716,6 +716,26 @@ static inline int32_t rast__one_row_col(rast_point top, rast_point bottom, int32
     return rast__edge_first_col(top, bottom, first, g, &e);
 }
 
+/* Whether the sample of column `col` on row `first` is not left of edge
+ * top -> bottom's crossing there (top.y < bottom.y, exact rounding):
+ * col unit + off >= the crossing's x, i.e. rast__one_row_col's ceiling is
+ * col or less.  Both sides times dy > 0.  The products stay under 2^60:
+ * |dx|, dy <= 2^29 (|x|, |y| <= 2^28 internal units; dy is that large
+ * where the clip cut the edge's other rows); the sample tested lies
+ * within a pixel of the ends' span (its column is one of the ends'
+ * columns or the clip's side between them), so |col unit + off - xa| <=
+ * |dx| + 2 unit; ys - ya is in [0, dy].  Where both ends' columns
+ * (rast__delta_rc's) are col and col + 1, the crossing's column is one of
+ * them (it moves monotonically along the edge, and the columns round it as
+ * the ends' do): col when this holds, else col + 1. */
+static inline int rast__one_row_side(rast_point top, rast_point bottom, int32_t first, int32_t col,
+                                     const rast__grid *g)
+{
+    const int64_t xa = 2 * (int64_t)top.x, ya = 2 * (int64_t)top.y;
+    const int64_t dx = 2 * (int64_t)bottom.x - xa, dy = 2 * (int64_t)bottom.y - ya;
+    return ((int64_t)col * g->unit + g->off - xa) * dy >= ((int64_t)first * g->unit + g->off - ya) * dx;
+}
+
 /* An edge of rast__delta_rc_walk that crosses rows [first, end) (relative
  * to row0) with ends in different columns and more than one row: its DDA,
  * as rast__delta_now_walk walks it.  (Apart: it is rare, and inlined it
@@ -787,9 +807,20 @@ RAST__HOT void rast__delta_rc_walk(const rast_polygon *poly, uint16_t *rc, const
             if (c != rc[2 * jb]) {
                 const rast_point pa = pts[ib - 1], pb = pts[jb];
                 if (end - first == 1) {
-                    c = rast__one_row_col(down ? pa : pb, down ? pb : pa, first + row0, g) - d->col0;
-                    c = c < 0 ? 0 : c;
-                    c = c > bits ? bits : c;
+                    const int32_t cb = rc[2 * jb], lo = c < cb ? c : cb;
+                    if ((c ^ cb ^ lo) - lo == 1 && !g->textbook) {
+                        /* Two columns apart (rc's, cut to [0, bits]): the
+                         * crossing's is the first of them whose sample is
+                         * not left of it (rast__one_row_col's ceiling), or
+                         * the second: one comparison of products, no
+                         * division (rast__one_row_side). */
+                        c = lo + !rast__one_row_side(down ? pa : pb, down ? pb : pa, first + row0,
+                                                     lo + d->col0, g);
+                    } else {
+                        c = rast__one_row_col(down ? pa : pb, down ? pb : pa, first + row0, g) - d->col0;
+                        c = c < 0 ? 0 : c;
+                        c = c > bits ? bits : c;
+                    }
                 } else {
                     rast__delta_rc_dda(down ? pa : pb, down ? pb : pa, down, first, end, g, d, row0, mid,
                                        buf, in, dir, inplace);

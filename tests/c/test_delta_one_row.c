@@ -1,0 +1,147 @@
+/* test_delta_one_row.c - the winding deltas' edges of one sample row whose
+ * ends' columns are one apart (fillers/aet.c, rast__delta_rc_walk and
+ * rast__one_row_side: the crossing's column is the first of the two whose
+ * sample is not left of the crossing, found by one comparison of products,
+ * not by rast__one_row_col's division), against the reference winding
+ * number (ref.h, straight from DESIGN) and the AET's sweep, bit for bit.
+ * Rings of short edges, half of them through a sample point exactly (the
+ * crossing on the sample: it counts for that column, exact rounding),
+ * either way round, with steps of less than a pixel across and down, so
+ * that the two columns are one apart; the rest random steps of up to a
+ * pixel and a half; rings round points near and past the canvas's sides
+ * (the columns cut to the clip: the first of the two is 0 or the last is
+ * the clip's width); S = 0 to 16, both samples, both roundings (textbook
+ * takes the division), both rules, non-zero past 511 vertices (the
+ * pieces' count); the clip the whole width and opaque (the counters in
+ * the mask itself, the last row in a row of its own) or anywhere on the
+ * canvas (a buffer of rows). */
+#include <stdint.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "check.h"
+#include "ref.h"
+#include "base/internal.h"
+#include "painters/paint.h"
+#include "rastrum.h"
+
+enum { W = 61, H = 19, STRIDE = W, MAXP = 1400 };
+static const unsigned char VALUE = 1, BACKGROUND = 0;
+#include "byte_canvas.h"
+
+/* A ring of `n` vertices (n even, >= 4) from pixel (cx, cy): pairs of
+ * vertices a short edge apart, through a sample point (qx, qy) near the
+ * last vertex when `tie` (top = Q - a u, bottom = Q + b u, |a u|, |b u|
+ * under a pixel each way), else two random steps of up to 1.5 pixels
+ * across and 1.25 down or up.  Returns the vertices written. */
+static uint32_t short_ring(rast_point *pts, uint32_t n, int32_t cx, int32_t cy, int s, int center)
+{
+    const int64_t one = (int64_t)1 << s;
+    /* the sample's offset in fixed units; at S = 0 a centre sample is not
+     * on the grid: no vertex can pass through it */
+    const int ties = !(center && s == 0);
+    const int64_t half = center ? one / 2 : 0;
+    int64_t x = cx * one, y = cy * one;
+    uint32_t v;
+    for (v = 0; v + 2 <= n; v += 2) {
+        if (ties && rng() % 2) {
+            const int64_t qx = (x >> s) + (int64_t)(rng() % 5) - 2, qy = (y >> s) + (int64_t)(rng() % 5) - 2;
+            const int64_t lim = one > 1 ? one - 1 : 1;
+            int64_t ux = 1 + (int64_t)(rng() % (uint32_t)lim), uy = 1 + (int64_t)(rng() % (uint32_t)lim);
+            int64_t a = 1, b = 1, X = qx * one + half, Y = qy * one + half;
+            if (rng() & 1) ux = -ux;
+            if (rng() % 4 == 0) ux = 0; /* (one column: the walk's other branch) */
+            if (one >= 4 && (rng() & 1)) { /* unequal parts, still under a pixel */
+                ux /= 2;
+                uy = uy / 2 + 1;
+                a = 1 + (int64_t)(rng() & 1);
+            }
+            if (rng() & 1) { /* top first, or bottom first: both directions */
+                pts[v].x = (int32_t)(X - a * ux);
+                pts[v].y = (int32_t)(Y - a * uy);
+                pts[v + 1].x = (int32_t)(X + b * ux);
+                pts[v + 1].y = (int32_t)(Y + b * uy);
+            } else {
+                pts[v].x = (int32_t)(X + b * ux);
+                pts[v].y = (int32_t)(Y + b * uy);
+                pts[v + 1].x = (int32_t)(X - a * ux);
+                pts[v + 1].y = (int32_t)(Y - a * uy);
+            }
+        } else {
+            int k;
+            for (k = 0; k < 2; k++) {
+                x += (int64_t)(rng() % (uint32_t)(3 * one + 1)) - 3 * one / 2;
+                y += (int64_t)(rng() % (uint32_t)(5 * one / 2 + 1)) - 5 * one / 4;
+                pts[v + k].x = (int32_t)x;
+                pts[v + k].y = (int32_t)y;
+            }
+        }
+        x = pts[v + 1].x;
+        y = pts[v + 1].y;
+    }
+    return v;
+}
+
+static void check_scene(int iter, const rast_point *pts, const uint32_t *sizes, uint32_t nrings, uint32_t np,
+                        int s, int center, int textbook, rast_fill_rule rule, const rast_rect *clip, int opaque)
+{
+    static unsigned char pre[STRIDE * H], a[STRIDE * H], b[STRIDE * H];
+    static unsigned char scratch[1 << 20];
+    const size_t need = rast__aet_scratch(np, W, H);
+    const rast_polygon poly = {pts, sizes, nrings};
+    const rast_sample at = center ? RAST_SAMPLE_CENTER : RAST_SAMPLE_CORNER;
+    rast__grid g;
+    int32_t k;
+    CHECK(need <= sizeof scratch);
+    CHECK(rast__grid_init(&g, s, at, textbook ? RAST_ROUND_TEXTBOOK : RAST_ROUND_EXACT, RAST_BOUNDARY_EXACT) ==
+          RAST_OK);
+    for (k = 0; k < STRIDE * H; k++) pre[k] = (unsigned char)rng(); /* garbage: the clip's part written */
+    CHECK(bytes_fill(a, pre, &poly, np, &g, rule, clip, scratch, need, opaque, RAST__AET_BY_SWEEP) == RAST_OK);
+    CHECK(bytes_fill(b, pre, &poly, np, &g, rule, clip, scratch, need, opaque, RAST__AET_BY_RULE) == RAST_OK);
+    CHECK(memcmp(a, b, sizeof a) == 0);
+    CHECK(bytes_match_ref(b, pre, pts, sizes, nrings, s, center, textbook, rule, clip, opaque, iter));
+}
+
+int main(void)
+{
+    static rast_point pts[MAXP];
+    static uint32_t sizes[MAXP];
+    int iter, n = check_count(1500), taken = 0;
+    for (iter = 0; iter < n; iter++) {
+        const int s = (int)(rng() % 17), center = (int)(rng() & 1);
+        const int textbook = (int)(rng() % 8 == 0), opaque = (int)(rng() & 1);
+        const rast_fill_rule rule = (rng() & 1) ? RAST_RULE_EVENODD : RAST_RULE_NONZERO;
+        /* one scene in 8 past 511 vertices (non-zero: the pieces counted) */
+        const uint32_t want = iter % 8 == 5 ? 600 + rng() % 700 : 16 + rng() % 300;
+        uint32_t np = 0, nrings = 0;
+        rast_rect clip;
+        int32_t rows;
+        while (np + 4 <= want) {
+            uint32_t m = 4 + 2 * (rng() % 12);
+            /* round a point near the canvas, one ring in 6 near a side or past it */
+            const int32_t cx = rng() % 6 ? (int32_t)(rng() % W) : (rng() & 1) ? -2 : W + 1;
+            const int32_t cy = (int32_t)(rng() % (H + 4)) - 2;
+            if (np + m > want) m = (want - np) & ~1u;
+            sizes[nrings++] = short_ring(pts + np, m, cx, cy, s, center);
+            np += m;
+        }
+        /* rows for at least 8 vertices each (the rule's count), from 1 up */
+        rows = (int32_t)(np / 8) < H ? (int32_t)(np / 8) : H;
+        rows = 1 + (int32_t)(rng() % (uint32_t)rows);
+        clip.y0 = (int32_t)(rng() % (uint32_t)(H - rows + 1));
+        clip.y1 = clip.y0 + rows;
+        if (opaque && (rng() & 3)) { /* the whole width: the counters in the mask itself */
+            clip.x0 = 0;
+            clip.x1 = W;
+        } else {
+            clip.x0 = (int32_t)(rng() % 20);
+            clip.x1 = W - (int32_t)(rng() % 20);
+        }
+        if (np >= 8 * (uint32_t)rows && rows * ((clip.x1 - clip.x0 + 8) & ~7) <= (int32_t)np * 48 &&
+            rows * ((clip.x1 - clip.x0 + 8) / 8) <= 8 * (int32_t)np)
+            taken++;
+        check_scene(iter, pts, sizes, nrings, np, s, center, textbook, rule, &clip, opaque);
+    }
+    CHECK(taken > n / 2);
+    return check_report("test_delta_one_row");
+}

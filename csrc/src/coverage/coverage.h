@@ -154,14 +154,16 @@ int rast__cov_acc_area_parts(rast__cedge *e, const int32_t *row, int32_t nrow, i
  * (coverage_small.c), without the engines' setup.  rast__cov_small_fits:
  * 1 when poly is one ring of 3..RAST__CS_EDGES vertices whose pixel box
  * (into *box) is at most RAST__CS_DIM pixels a side, S = s <= 16.
- * rast__cov_small, for such a ring that is convex (o->paint set): 1 when
+ * rast__cov_small, for such a ring that is convex (o->paint set; turn
+ * the way it turns, entry/coverage.c's rast__cov_convex's +1 or -1): 1 when
  * its rows inside o's clip are handed on, the levels the engines give;
  * 0 when a level lies too near a tie to be sure of it in 64 bits
  * (nothing handed on: the engines' turn).  Not in size-optimised builds. */
 #define RAST__CS_DIM 24
 #define RAST__CS_EDGES 16
 int rast__cov_small_fits(const rast_polygon *poly, int32_t s, rast_rect *box);
-int rast__cov_small(const rast_polygon *poly, int32_t s, const rast__cov_out *o, const rast_rect *box);
+int rast__cov_small(const rast_polygon *poly, int32_t s, int32_t turn, const rast__cov_out *o,
+                    const rast_rect *box);
 /* "ss2" and "ss4" (kb = 1, 2) of such a ring, S = s > kb, its samples
  * where `sample` puts them: handed on, the levels rast__cov_ss gives. */
 void rast__cov_small_ss(const rast_polygon *poly, int32_t s, int32_t kb, rast_sample sample,

@@ -200,8 +200,8 @@ static inline uint64_t rast__cs_bit(int32_t c, unsigned l)
     return (uint64_t)(l != 0) << c;
 }
 
-/* The level of running sum v, floor(255 a + 1/2) of its magnitude a,
- * and in *near bit 2K + 1 set when its fraction lies within win of a tie
+/* The level of running sum v, floor(255 v + 1/2), and in *near bit
+ * 2K + 1 set when its fraction lies within win of a tie
  * (0 or 1), without a branch: the fraction x of num - win - 1 is at least
  * FULL - 2 win - 1 exactly when x + 2 win + 1 (< 2 FULL) reaches FULL,
  * so the bit of the sum is OR'ed in (2 instructions, not a compare and
@@ -210,10 +210,17 @@ static inline uint64_t rast__cs_bit(int32_t c, unsigned l)
  * row, each off by less than 2^(K + 4)) has the fraction 1/2 (2^(2K))
  * plus less than 2^(K + 16), never within win (< 2^(K + 17)) of 0 or 1:
  * no tie; its level is 0, or 255: 255 a + 1/2 < 255 FULL + 2^(K + 28)
- * + FULL / 2 < 256 FULL, so the level is never 256 (no min(., 255)). */
+ * + FULL / 2 < 256 FULL, so the level is never 256 (no min(., 255)).
+ * v is the pixel's area a, not -a: the edges' signs are minus the ring's
+ * turn times their direction (rast__cov_small; entry/coverage.c,
+ * rast__cov_convex), so the running sums are a inside, with no |v| taken
+ * (3 instructions a column, ~210 a call of the loop family); a sum whose
+ * exact value is 0 may come out negative, by less than 16 2^(K + 4):
+ * 255 v + FULL / 2 (modulo 2^64) is then still in (0, FULL / 2), level 0,
+ * its fraction 1/2 less than 2^(K + 16), not within win of a tie. */
 static inline unsigned rast__cs_level(int64_t v, uint64_t win, uint64_t *near)
 {
-    const uint64_t a = (uint64_t)(v < 0 ? -v : v), num = a * 255 + RAST__CS_FULL / 2;
+    const uint64_t num = (uint64_t)v * 255 + RAST__CS_FULL / 2;
     *near |= ((num - win - 1) & (RAST__CS_FULL - 1)) + 2 * win + 1;
     return (unsigned)(num >> (2 * RAST__CS_K + 1));
 }
@@ -317,7 +324,8 @@ static int rast__cs_direct(const unsigned char *lv, const rast_rect *box, const 
     return 1;
 }
 
-int rast__cov_small(const rast_polygon *poly, int32_t s, const rast__cov_out *o, const rast_rect *box)
+int rast__cov_small(const rast_polygon *poly, int32_t s, int32_t turn, const rast__cov_out *o,
+                    const rast_rect *box)
 {
     rast__cs_edge e[RAST__CS_EDGES];
     /* (+ 16: rast__cs_fill's last word, rast__cs_runs's last read) */
@@ -345,7 +353,7 @@ int rast__cov_small(const rast_polygon *poly, int32_t s, const rast__cov_out *o,
         e[ne].y1 = (int64_t)((uint64_t)(u.y - by) << sh);
         e[ne].dx = e[ne].x1 - e[ne].x0;
         e[ne].dy = e[ne].y1 - e[ne].y0;
-        e[ne].s = down ? 1 : -1;
+        e[ne].s = down ? -turn : turn; /* (the running sums inside: + the area) */
         ne++;
     }
     memset(acc, 0, (size_t)h * (size_t)(w + 2) * sizeof(acc[0]));

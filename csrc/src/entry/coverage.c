@@ -240,7 +240,7 @@ static int rast__cov_plain_pays(const rast_polygon *poly, const rast__cedge *e, 
 }
 
 #if !defined(__OPTIMIZE_SIZE__)
-/* 1 when the polygon is one ring that is convex: its edges of length 0
+/* Not 0 when the polygon is one ring that is convex: its edges of length 0
  * skipped, every two consecutive ones turn the same way or go straight on
  * (none turns back), and their direction goes round once (dx changes sign
  * exactly twice round the ring).  Each turn is then below a half turn, so
@@ -251,7 +251,11 @@ static int rast__cov_plain_pays(const rast_polygon *poly, const rast__cedge *e, 
  * (coverage_plain.c), found in a few operations a vertex, and "area" may
  * take it by the accumulation at any size (the tiny polygons of a
  * call each, where rast__cov_plain_pays says no).  |coordinates| <=
- * RAST_COORD_MAX (checked): differences < 2^28, products < 2^57. */
+ * RAST_COORD_MAX (checked): differences < 2^28, products < 2^57.  The
+ * answer is the way it turns, the sign of px dy - py dx (+1 or -1), y
+ * down: its accumulation's running sums inside, each edge's sign +1 down
+ * and -1 up, are minus that times the area (coverage_small.c takes its
+ * levels without |v| by it). */
 static int rast__cov_convex(const rast_polygon *poly)
 {
     const rast_point *p = poly->points;
@@ -292,7 +296,7 @@ static int rast__cov_convex(const rast_polygon *poly)
         px = dx;
         py = dy;
     }
-    return turn != 0 && flips == 2;
+    return flips == 2 ? turn : 0;
 }
 #endif
 
@@ -399,9 +403,11 @@ static rast_status rast__cov_run(const rast_polygon *poly, const rast_point *tri
          * one is too near a tie for its 64 bits */
         if (poly && o->paint) {
             rast_rect box;
-            if (rast__cov_small_fits(poly, s, &box) && (convex = rast__cov_convex(poly)) != 0 &&
-                rast__cov_small(poly, s, o, &box))
-                return RAST_OK;
+            if (rast__cov_small_fits(poly, s, &box)) {
+                const int turn = rast__cov_convex(poly);
+                if (turn && rast__cov_small(poly, s, turn, o, &box)) return RAST_OK;
+                convex = turn != 0;
+            }
         }
         /* "accumulate": its walk's records straight from the vertices
          * (coverage_acc.c), the same edges and levels as below */

@@ -184,7 +184,7 @@ void rast__cells_init(rast__cells *c, int32_t s, rast_fill_rule rule, int accumu
 
 void rast__cov_acc_exact_row(rast__cedge *e, const int32_t *row, int32_t nrow, int32_t j,
                              int32_t s, rast_fill_rule rule, const rast__cov_out *o,
-                             rast__i128 *cover, rast__i128 *area, uint64_t *bits)
+                             rast__i128 *cover, rast__i128 *area, uint64_t *bits, rast__i128 carry)
 {
     rast__cells c;
     c.cover = cover;
@@ -192,6 +192,7 @@ void rast__cov_acc_exact_row(rast__cedge *e, const int32_t *row, int32_t nrow, i
     c.bits = bits;
     rast__cells_init(&c, s, rule, 1, o);
     c.quick = 0;
+    c.carry = carry;
     rast__row_exact(&c, e, row, nrow, j, 0);
     rast__cells_emit(&c, o, j, rule);
 }

@@ -255,9 +255,12 @@ static inline void rast__cells_piece(rast__cells *c, rast__cedge *e, int64_t Yj,
 
 /* Row j of "accumulate" the exact way: the edges row[0..nrow), whole,
  * into row j of o (handed on), with cleared cells cover[], area[] (clip
- * width each) and bits[] (a bit a column), left cleared. */
+ * width each) and bits[] (a bit a column), left cleared; carry: the cover
+ * of the parts left of o's clip that are not in row[] (the sum of their
+ * dir (t1 - t0), t in units of 2^-G of the row's height; 0 when row[]
+ * holds every part of the row). */
 void rast__cov_acc_exact_row(rast__cedge *e, const int32_t *row, int32_t nrow, int32_t j,
                              int32_t s, rast_fill_rule rule, const rast__cov_out *o,
-                             rast__i128 *cover, rast__i128 *area, uint64_t *bits);
+                             rast__i128 *cover, rast__i128 *area, uint64_t *bits, rast__i128 carry);
 
 #endif /* RAST_COV_CELLS_H */

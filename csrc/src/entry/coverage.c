@@ -314,8 +314,222 @@ static int rast__cov_convex(const rast_polygon *poly)
  * as rast__cov_area_marked's bands, without an edge record for the
  * rings outside the boxes, nor the exact rows for their edges.  1 when
  * done (*st the status), 0 when declined (nothing written; the table
- * kept).  Not for a painter, whose rows go from the top, each once. */
+ * kept).  A painter's rows go from the top, each once: there the boxes'
+ * levels come first, into room of their own, and the accumulation's rows
+ * go through rast__cov_merge_* (below), which hands the painter a row
+ * that meets no box as it comes and a row that meets one with that box's
+ * row put in (its pixels are 0 in the accumulation's), each row once, in
+ * order.  The painter is handed what rast__cov_row_done makes of each
+ * row of the array this function writes. */
 #define RAST__COV_BOXES 32
+
+/* A painter between the accumulation of the rings outside the boxes and
+ * the real painter (rast__cov_by_boxes): rows that meet no box go straight
+ * on; a row that meets one is gathered in rb (the clip's width, 0 outside
+ * [lo, hi)), its boxes' levels put in, and handed on whole by
+ * rast__cov_row_done; the boxes' rows the accumulation leaves empty are
+ * handed on too, in their place. */
+typedef struct rast__cov_merge {
+    const rast__painter *real;
+    rast__cov_out out; /* the real output (its clip, its painter) */
+    unsigned char *rb; /* the gathered row, pixel out.clip.x0 first */
+    const unsigned char *lv; /* the boxes' levels, box after box, row after row */
+    const int32_t *bc; /* box k: x0, y0, x1, y1 (clipped), the offset of its levels in lv */
+    int32_t nb, y0, y1; /* the boxes, the rows any meets: [y0, y1) */
+    int32_t next, cur, pend, lo, hi; /* next row not handed on; last row seen; the row gathered (or INT32_MIN) */
+} rast__cov_merge;
+
+static int rast__cov_merge_meets(const rast__cov_merge *g, int32_t y)
+{
+    int32_t k;
+    if (y < g->y0 || y >= g->y1) return 0;
+    for (k = 0; k < g->nb; k++)
+        if (y >= g->bc[5 * k + 1] && y < g->bc[5 * k + 3]) return 1;
+    return 0;
+}
+
+/* Row y (gathered, or the boxes' alone) with its boxes' levels, on */
+static void rast__cov_merge_row(rast__cov_merge *g, int32_t y)
+{
+    const int32_t cx = g->out.clip.x0;
+    int32_t k;
+    rast__cov_out t = g->out;
+    for (k = 0; k < g->nb; k++) {
+        const int32_t *b = g->bc + 5 * k, w = b[2] - b[0];
+        if (y < b[1] || y >= b[3]) continue;
+        memcpy(g->rb + (b[0] - cx), g->lv + b[4] + (ptrdiff_t)(y - b[1]) * w, (size_t)w);
+        g->lo = b[0] < g->lo ? b[0] : g->lo;
+        g->hi = b[2] > g->hi ? b[2] : g->hi;
+    }
+    if (g->lo >= g->hi) return;
+    /* (0 outside [lo, hi): the same runs as the whole row's) */
+    t.base = g->rb + (g->lo - cx);
+    t.clip.x0 = g->lo;
+    t.clip.x1 = g->hi;
+    rast__cov_row_done(&t, y);
+    memset(g->rb + (g->lo - cx), 0, (size_t)(g->hi - g->lo));
+    g->lo = INT32_MAX;
+    g->hi = INT32_MIN;
+}
+
+/* The rows before row y handed on (y: the next row the accumulation
+ * hands, or the clip's end) */
+static void rast__cov_merge_to(rast__cov_merge *g, int32_t y)
+{
+    int32_t r;
+    if (g->pend != INT32_MIN) rast__cov_merge_row(g, g->pend);
+    g->pend = INT32_MIN;
+    for (r = g->next > g->y0 ? g->next : g->y0; r < y && r < g->y1; r++)
+        if (rast__cov_merge_meets(g, r)) rast__cov_merge_row(g, r);
+    g->next = y + 1;
+}
+
+/* Row y's first run from the accumulation */
+static void rast__cov_merge_new(rast__cov_merge *g, int32_t y)
+{
+    g->cur = y;
+    rast__cov_merge_to(g, y);
+    g->pend = rast__cov_merge_meets(g, y) ? y : INT32_MIN;
+}
+
+/* A run of row y: 1 when the row is gathered */
+static inline int rast__cov_merge_at(rast__cov_merge *g, int32_t y)
+{
+    if (y != g->cur) rast__cov_merge_new(g, y);
+    return g->pend != INT32_MIN;
+}
+
+static void rast__cov_merge_levels(void *user, int32_t y, int32_t x0, int32_t x1, const uint8_t *cov)
+{
+    rast__cov_merge *g = (rast__cov_merge *)user;
+    if (!rast__cov_merge_at(g, y)) {
+        g->real->levels(g->real->user, y, x0, x1, cov);
+        return;
+    }
+    memcpy(g->rb + (x0 - g->out.clip.x0), cov, (size_t)(x1 - x0));
+    g->lo = x0 < g->lo ? x0 : g->lo;
+    g->hi = x1 > g->hi ? x1 : g->hi;
+}
+
+static void rast__cov_merge_full(void *user, int32_t y, const int32_t *xs, int32_t n)
+{
+    rast__cov_merge *g = (rast__cov_merge *)user;
+    int32_t i;
+    if (!rast__cov_merge_at(g, y)) {
+        g->real->full(g->real->user, y, xs, n);
+        return;
+    }
+    for (i = 0; i < n; i++) {
+        memset(g->rb + (xs[2 * i] - g->out.clip.x0), 255, (size_t)(xs[2 * i + 1] - xs[2 * i]));
+        g->lo = xs[2 * i] < g->lo ? xs[2 * i] : g->lo;
+        g->hi = xs[2 * i + 1] > g->hi ? xs[2 * i + 1] : g->hi;
+    }
+}
+/* rast__cov_by_boxes into a painter: the rings in boxes (ring[0 .. m),
+ * their first points first[], their boxes box[], 1 + k in box k) listed
+ * at the end of the edges' room, the boxes bx[0 .. nb).  The boxes'
+ * levels (U8, box after box) and a row of the clip's width go in the
+ * edges' room below those lists, above both what the accumulation of the
+ * other rings takes there (a rast__cedge a point of theirs) and what each
+ * box's edges take while its levels are found (a rast__cedge a point of
+ * its rings): 0 (declined, nothing handed on) when they do not fit. */
+static int rast__cov_boxes_paint(const rast_polygon *poly, uint32_t npoints, int32_t s, rast_fill_rule rule,
+                                 const rast__cov_out *o, rast__cedge *e, rast__arena arena, const uint32_t *ring,
+                                 const uint32_t *first, const unsigned char *box, uint32_t m, const int32_t *bx,
+                                 int32_t nb, rast_status *st)
+{
+    int32_t bc[5 * RAST__COV_BOXES], k;
+    uint32_t i, pin = 0, pk[RAST__COV_BOXES], most;
+    size_t lvn = 0, need;
+    unsigned char *lv, *low;
+    rast__cov_merge g;
+    rast__painter wrap;
+    rast__cov_out ow;
+    rast__arena room;
+    g.y0 = INT32_MAX;
+    g.y1 = INT32_MIN;
+    for (k = 0; k < nb; k++) { /* each box clipped, and its levels' place */
+        int32_t *b = bc + 5 * k;
+        b[0] = bx[4 * k] > o->clip.x0 ? bx[4 * k] : o->clip.x0;
+        b[1] = bx[4 * k + 1] > o->clip.y0 ? bx[4 * k + 1] : o->clip.y0;
+        b[2] = bx[4 * k + 2] < o->clip.x1 - 1 ? bx[4 * k + 2] + 1 : o->clip.x1;
+        b[3] = bx[4 * k + 3] < o->clip.y1 - 1 ? bx[4 * k + 3] + 1 : o->clip.y1;
+        if (b[0] >= b[2] || b[1] >= b[3]) { /* (empty: no row meets it) */
+            b[2] = b[0];
+            b[3] = b[1];
+        }
+        b[4] = (int32_t)lvn;
+        lvn += (size_t)(b[2] - b[0]) * (size_t)(b[3] - b[1]);
+        if (lvn > (size_t)INT32_MAX) return 0;
+        if (b[1] < b[3]) {
+            g.y0 = b[1] < g.y0 ? b[1] : g.y0;
+            g.y1 = b[3] > g.y1 ? b[3] : g.y1;
+        }
+        pk[k] = 0;
+    }
+    for (i = 0; i < m; i++) { /* the points in boxes, and in each */
+        const uint32_t size = poly->ring_sizes[ring[i]];
+        pin += size;
+        if (box[i] != RAST__PARTS_NONE) pk[box[i] - 1] += size;
+    }
+    most = npoints - pin;
+    for (k = 0; k < nb; k++) most = pk[k] > most ? pk[k] : most;
+    need = rast__align((size_t)(o->clip.x1 - o->clip.x0)) + rast__align(lvn);
+    low = (unsigned char *)(void *)(e + most);
+    if ((size_t)((const unsigned char *)(const void *)ring - low) < need) return 0;
+    g.rb = (unsigned char *)(void *)ring - need; /* (ring: 8-byte aligned, need a multiple of it) */
+    lv = g.rb + rast__align((size_t)(o->clip.x1 - o->clip.x0));
+    memset(g.rb, 0, need);
+    *st = RAST_OK;
+    for (k = 0; k < nb && *st == RAST_OK; k++) { /* each box's levels: its rings' exact area */
+        rast__cov_out ob = *o;
+        rast__arena a = arena;
+        uint32_t n = 0;
+        const int32_t *b = bc + 5 * k;
+        if (b[0] >= b[2]) continue;
+        ob.clip.x0 = b[0];
+        ob.clip.y0 = b[1];
+        ob.clip.x1 = b[2];
+        ob.clip.y1 = b[3];
+        ob.base = lv + b[4];
+        ob.stride = b[2] - b[0];
+        ob.format = RAST_COVERAGE_U8;
+        ob.paint = NULL;
+        for (i = 0; i < m; i++)
+            if (box[i] == (unsigned char)(k + 1)) {
+                rast_polygon one;
+                one.points = poly->points + first[i];
+                one.ring_sizes = poly->ring_sizes + ring[i];
+                one.nrings = 1;
+                n += rast__cov_edges_polygon(&one, e + n);
+            }
+        *st = rast__cov_area(e, n, s, rule, 0, &ob, &a);
+    }
+    if (*st != RAST_OK) return 1;
+    g.real = o->paint;
+    g.out = *o;
+    g.lv = lv;
+    g.bc = bc;
+    g.nb = nb;
+    g.next = o->clip.y0;
+    g.cur = INT32_MIN;
+    g.pend = INT32_MIN;
+    g.lo = INT32_MAX;
+    g.hi = INT32_MIN;
+    wrap.full = o->paint->full ? rast__cov_merge_full : NULL; /* (the same runs as the real painter's) */
+    wrap.levels = rast__cov_merge_levels;
+    wrap.user = &g;
+    wrap.bytes = NULL;
+    wrap.stride = 0;
+    wrap.value = 0;
+    ow = *o;
+    ow.paint = &wrap;
+    room = arena;
+    *st = rast__cov_acc_points(poly, ring, m, NULL, 0, 0, s, rule, &ow, e, &room);
+    if (*st == RAST_OK) rast__cov_merge_to(&g, o->clip.y1);
+    return 1;
+}
+
 static int rast__cov_by_boxes(const rast_polygon *poly, uint32_t npoints, int32_t s, rast_fill_rule rule,
                               const rast__cov_out *o, rast__cedge *e, rast__arena arena, rast_status *st)
 {
@@ -326,7 +540,7 @@ static int rast__cov_by_boxes(const rast_polygon *poly, uint32_t npoints, int32_
     unsigned char *in;
     uint32_t *ring, *first, r, base, m = 0, i;
     unsigned char *box;
-    if (o->paint || !rast__take(&room, RAST__COV_RING_ROWS(nr))) return 0; /* (the table kept) */
+    if (!rast__take(&room, RAST__COV_RING_ROWS(nr))) return 0; /* (the table kept) */
     in = (unsigned char *)rast__take(&room, nr);
     if (!in || (nb = rast__cov_parts_boxes(arena, nr, in, bx, RAST__COV_BOXES)) < 0) return 0;
     /* the rings in boxes (and those with nothing to draw), in order: their
@@ -345,6 +559,7 @@ static int rast__cov_by_boxes(const rast_polygon *poly, uint32_t npoints, int32_
             first[i] = base;
             box[i++] = in[r];
         }
+    if (o->paint) return rast__cov_boxes_paint(poly, npoints, s, rule, o, e, arena, ring, first, box, m, bx, nb, st);
     room = arena; /* (the table and in[] read: all the room the accumulation's) */
     *st = rast__cov_acc_points(poly, ring, m, NULL, 0, 0, s, rule, o, e, &room);
     for (k = 0; k < nb && *st == RAST_OK; k++) { /* each box: its rings' exact area, its pixels only */

@@ -755,96 +755,227 @@ RAST__APART void rast__delta_rc_dda(rast_point top, rast_point bottom, int down,
     }
 }
 
+/* How many columns more than two a row an edge of rast__delta_rc_walk
+ * may cross and still be walked column by column (rast__rc_edge): each
+ * column is an add and a test, where the DDA's set-up is two divisions
+ * and ~130 instructions. */
+#ifndef RAST__RC_COLS
+#define RAST__RC_COLS 8
+#endif
+
+/* An edge of rast__delta_rc_walk that rast__rc_edge does not walk (a
+ * column cut to the clip, or many columns a row): as before, one row by
+ * rast__one_row_side or rast__one_row_col, more by the DDA
+ * (rast__delta_rc_dda).  top -> bottom, rows [first, end) relative to
+ * row0, ct and cb the ends' columns (rc's). */
+RAST__APART void rast__delta_rc_other(rast_point top, rast_point bottom, int32_t ct, int32_t cb, int32_t first,
+                                      int32_t end, const rast__grid *g, const rast__delta_cols *d,
+                                      int32_t row0, int32_t mid, unsigned char *buf, unsigned char *in,
+                                      unsigned char dir, const int inplace)
+{
+    int32_t c;
+    if (end - first == 1) {
+        const int32_t lo = ct < cb ? ct : cb;
+        if ((ct ^ cb ^ lo) - lo == 1 && !g->textbook) {
+            /* Two columns apart (rc's, cut to [0, bits]): the crossing's
+             * is the first of them whose sample is not left of it
+             * (rast__one_row_col's ceiling), or the second: one
+             * comparison of products, no division (rast__one_row_side). */
+            c = lo + !rast__one_row_side(top, bottom, first + row0, lo + d->col0, g);
+        } else {
+            c = rast__one_row_col(top, bottom, first + row0, g) - d->col0;
+            c = c < 0 ? 0 : c;
+            c = c > d->bits ? d->bits : c;
+        }
+        if (!inplace) buf[(ptrdiff_t)first * d->stride + c] = (unsigned char)(buf[(ptrdiff_t)first * d->stride + c] + dir);
+        else if (first < mid) in[(ptrdiff_t)first * d->bits + c] = (unsigned char)(in[(ptrdiff_t)first * d->bits + c] + dir);
+        else buf[c] = (unsigned char)(buf[c] + dir); /* (row mid, the last) */
+    } else {
+        /* (its down: the direction the last row's walk takes, rast__delta_walk_last) */
+        rast__delta_rc_dda(top, bottom, dir == 1, first, end, g, d, row0, mid, buf, in, dir, inplace);
+    }
+}
+
+/* What rast__delta_rc_walk's edges read, in locals (the counters are
+ * bytes: through them the compiler would reload anything it reads
+ * through a pointer after every add). */
+typedef struct rast__rc_k {
+    const rast_point *pts;
+    const rast__grid *g;
+    const rast__delta_cols *d;
+    unsigned char *p0;   /* row 0's counters: the mask's (inplace) or buf's */
+    unsigned char *buf;  /* the rows from mid (inplace: row mid alone) */
+    unsigned char *in;
+    int64_t cx0, ry0;    /* column 0's and row 0's sample, internal units */
+    int64_t unit;
+    int32_t pitch;       /* bits (inplace) or stride */
+    int32_t mid, row0;
+    int32_t bits;        /* bits, or 0 under textbook rounding (no edge walked) */
+} rast__rc_k;
+
+/* One edge of rast__delta_rc_walk, top -> bottom (it and ibm: their
+ * indices), crossing rows [first, end) (relative to row0, first < end),
+ * ct and cb the columns rc gives its ends: its direction dir added at its
+ * crossing on each of those rows.  Ends in one column: every crossing is
+ * there (rast__delta_now_walk).  Ends in different columns, neither cut to
+ * the clip, exact rounding: the crossing's column on a row is the least c
+ * whose sample is not left of the crossing, F(c) >= 0 with
+ *     F(c) = (c unit + off - xa) dy - (y unit + off - ya) dx = c q - n
+ * (q = dy unit, n as rast__edge_first_col's: F(x) = e, the DDA's
+ * remainder, so F(c) >= 0 iff c >= n / q, and the least such c is the
+ * DDA's x = ceil(n / q)).  F grows by q = U a column and falls by
+ * dx unit = V a row, so the walk keeps F at its column and moves the
+ * column while F says so: right (cb > ct, dx > 0) while F < 0, left while
+ * F(c - 1) = F - U >= 0.  It starts from the top's column ct on row
+ * first: the crossings' columns lie between the ends' (monotone along the
+ * edge; the rows cut to the clip do not change that), so going right
+ * F(ct - 1) < 0 there, going left F(ct) >= 0, and it never passes cb: no
+ * test of the clip's columns (neither end is cut: 0 < the columns <
+ * bits).  The same columns as the DDA's, with no division: two products
+ * an edge and an add a column.  The rest (a cut column, textbook
+ * rounding, or more than RAST__RC_COLS + 2 columns a row on average):
+ * rast__delta_rc_other, as before.  `inplace` as rast__delta_rc_walk's
+ * (the last row, mid, in buf). */
+RAST__HOT void rast__rc_edge(const rast__rc_k *k, ptrdiff_t it, ptrdiff_t ibm, int32_t ct, int32_t cb,
+                             int32_t first, int32_t end, unsigned char dir, const int inplace)
+{
+    unsigned char *p = k->p0 + (ptrdiff_t)first * k->pitch;
+    const int32_t m = inplace && end > k->mid ? k->mid : end;
+    int32_t c = ct;
+    if (ct != cb) {
+        const int32_t lo = ct < cb ? ct : cb, hi = ct ^ cb ^ lo;
+        if (lo > 0 && hi < k->bits && hi - lo <= RAST__RC_COLS + 2 * (end - first)) {
+            const rast_point a = k->pts[it], b = k->pts[ibm];
+            const int64_t xa = 2 * (int64_t)a.x, ya = 2 * (int64_t)a.y;
+            const int64_t dx = 2 * (int64_t)b.x - xa, dy = 2 * (int64_t)b.y - ya;
+            const int64_t U = dy * k->unit, V = dx * k->unit;
+            int64_t F = (ct * k->unit + k->cx0 - xa) * dy - (first * k->unit + k->ry0 - ya) * dx;
+            if (cb > ct) {
+                for (; first < m; first++, p += k->pitch, F -= V) {
+                    while (F < 0) {
+                        c++;
+                        F += U;
+                    }
+                    p[c] = (unsigned char)(p[c] + dir);
+                }
+                if (inplace && end > m) { /* (row mid, the last) */
+                    while (F < 0) {
+                        c++;
+                        F += U;
+                    }
+                    k->buf[c] = (unsigned char)(k->buf[c] + dir);
+                }
+            } else {
+                for (; first < m; first++, p += k->pitch, F -= V) {
+                    while (F >= U) {
+                        c--;
+                        F -= U;
+                    }
+                    p[c] = (unsigned char)(p[c] + dir);
+                }
+                if (inplace && end > m) {
+                    while (F >= U) {
+                        c--;
+                        F -= U;
+                    }
+                    k->buf[c] = (unsigned char)(k->buf[c] + dir);
+                }
+            }
+            return;
+        }
+        rast__delta_rc_other(k->pts[it], k->pts[ibm], ct, cb, first, end, k->g, k->d, k->row0, k->mid,
+                             k->buf, k->in, dir, inplace);
+        return;
+    }
+    for (p += c; first < m; first++, p += k->pitch) *p = (unsigned char)(*p + dir);
+    if (inplace && end > m) k->buf[c] = (unsigned char)(k->buf[c] + dir); /* (row mid, the last) */
+}
+
 /* rast__delta_now_walk's work from rc (rast__delta_rc): rows relative to
  * the clip's first, [0, mid) in the mask itself (in, rows of bits), the
  * rest in buf (rows of stride from mid); `inplace` a constant (0: in
- * NULL, mid = 0).  The same edges, directions, columns and pieces. */
+ * NULL, mid = 0).  The same edges, directions, columns and pieces.
+ * A ring is walked a monotone chain at a time: a loop for the edges going
+ * down and one for those going up, each with its direction and its ends'
+ * order fixed, and the pieces' count (starts) paid once a chain, not once
+ * an edge.  The vertices of one row are passed by a loop of their own
+ * that stops at the next row's; past the ring's last vertex stands a row
+ * that ends either chain's loop (0 going down: below every row an edge
+ * going down reaches; 0xFFFF going up: above any row), set as each chain
+ * starts, and the ring's last edge, to its first vertex, comes after. */
 RAST__HOT void rast__delta_rc_walk(const rast_polygon *poly, uint16_t *rc, const rast__grid *g,
                                    const rast__delta_cols *d, int32_t row0, int32_t mid,
                                    unsigned char *buf, unsigned char *in, int32_t *starts,
                                    const int inplace)
 {
-    const rast_point *pts = poly->points;
-    const int32_t bits = d->bits, stride = d->stride;
     const unsigned char up = d->mask == 1 ? 1 : 0xFF;
-    uint32_t k, base;
-    for (k = 0, base = 0; k < poly->nrings; base += poly->ring_sizes[k], k++) {
-        const uint32_t stop = base + poly->ring_sizes[k];
-        const uint16_t after = rc[2 * stop + 1];
-        uint32_t ib, jb;
-        int32_t ra, rb = 0, r0, cs, cdown = -1;
+    const uint32_t *const sizes = poly->ring_sizes;
+    const uint32_t nrings = poly->nrings;
+    rast__rc_k k;
+    uint32_t r, base;
+    k.pts = poly->points;
+    k.g = g;
+    k.d = d;
+    k.p0 = inplace ? in : buf;
+    k.buf = buf;
+    k.in = in;
+    k.unit = g->unit;
+    k.cx0 = (int64_t)d->col0 * g->unit + g->off;
+    k.ry0 = (int64_t)row0 * g->unit + g->off;
+    k.pitch = inplace ? d->bits : d->stride;
+    k.mid = mid;
+    k.row0 = row0;
+    k.bits = g->textbook ? 0 : d->bits;
+    for (r = 0, base = 0; r < nrings; base += sizes[r], r++) {
+        const uint32_t stop = base + sizes[r];
+        uint16_t *const first = rc + 2 * base, *const mark = rc + 2 * stop;
+        const uint16_t after = mark[1];
+        const uint16_t *v = first; /* the vertex reached: column v[0], row v[1] */
+        int32_t ra, rb, r0, cs;
         if (stop == base) continue;
-        ra = r0 = cs = rc[2 * base + 1];
-        /* (the next vertex's row, past the ring, set to one no vertex has
-         * while the ring is walked: the loop over the vertices of one row
-         * stops there without testing the ring's end) */
-        rc[2 * stop + 1] = 0xFFFF;
-        for (ib = base + 1;; ib++) {
-            int32_t first, end, c;
-            int down;
-            unsigned char dir;
-            while ((rb = rc[2 * ib + 1]) == ra) ib++;
-            if (ib == stop) {
-                if (ra == r0) break;
-                rb = r0;
-                jb = base;
-            } else {
-                jb = ib;
-            }
-            down = ra < rb;
-            if (starts && down != cdown) {
-                first = cs < ra ? cs : ra;
-                end = cs ^ ra ^ first;
-                starts[first]++;
-                starts[end]--;
-                cs = ra;
-                cdown = down;
-            }
-            first = down ? ra : rb;
-            end = ra ^ rb ^ first;
-            dir = down ? 1 : up;
-            c = rc[2 * (ib - 1)];
-            if (c != rc[2 * jb]) {
-                const rast_point pa = pts[ib - 1], pb = pts[jb];
-                if (end - first == 1) {
-                    const int32_t cb = rc[2 * jb], lo = c < cb ? c : cb;
-                    if ((c ^ cb ^ lo) - lo == 1 && !g->textbook) {
-                        /* Two columns apart (rc's, cut to [0, bits]): the
-                         * crossing's is the first of them whose sample is
-                         * not left of it (rast__one_row_col's ceiling), or
-                         * the second: one comparison of products, no
-                         * division (rast__one_row_side). */
-                        c = lo + !rast__one_row_side(down ? pa : pb, down ? pb : pa, first + row0,
-                                                     lo + d->col0, g);
-                    } else {
-                        c = rast__one_row_col(down ? pa : pb, down ? pb : pa, first + row0, g) - d->col0;
-                        c = c < 0 ? 0 : c;
-                        c = c > bits ? bits : c;
-                    }
-                } else {
-                    rast__delta_rc_dda(down ? pa : pb, down ? pb : pa, down, first, end, g, d, row0, mid,
-                                       buf, in, dir, inplace);
-                    goto next;
-                }
-            }
-            if (inplace) {
-                unsigned char *p = in + (ptrdiff_t)first * bits + c;
-                const int32_t m = end < mid ? end : mid;
-                for (; first < m; first++, p += bits) *p = (unsigned char)(*p + dir);
-                if (end > mid) buf[c] = (unsigned char)(buf[c] + dir); /* (row mid, the last) */
-            } else {
-                unsigned char *p = buf + (ptrdiff_t)first * stride + c;
-                for (; first < end; first++, p += stride) *p = (unsigned char)(*p + dir);
-            }
-        next:
-            if (ib == stop) break;
+        ra = r0 = cs = first[1];
+        mark[1] = 0xFFFF;
+        while ((rb = (v += 2)[1]) == ra) {}
+        if (v == mark) goto close;
+        if (rb < ra) goto up_chain;
+    down_chain:
+        mark[1] = 0;
+        do {
+            rast__rc_edge(&k, (v - rc) / 2 - 1, (v - rc) / 2, v[-2], v[0], ra, rb, 1, inplace);
             ra = rb;
+            while ((rb = (v += 2)[1]) == ra) {}
+        } while (rb > ra);
+        if (starts) {
+            starts[cs]++;
+            starts[ra]--;
         }
-        rc[2 * stop + 1] = after;
-        if (starts) { /* the ring's last piece, to its first vertex's row */
-            const int32_t first = cs < r0 ? cs : r0, end = cs ^ r0 ^ first;
-            starts[first]++;
-            starts[end]--;
+        cs = ra;
+        if (v == mark) goto close;
+    up_chain:
+        mark[1] = 0xFFFF;
+        do {
+            rast__rc_edge(&k, (v - rc) / 2, (v - rc) / 2 - 1, v[0], v[-2], rb, ra, up, inplace);
+            ra = rb;
+            while ((rb = (v += 2)[1]) == ra) {}
+        } while (rb < ra);
+        if (starts) {
+            starts[ra]++;
+            starts[cs]--;
+        }
+        cs = ra;
+        if (v != mark) goto down_chain;
+    close:
+        mark[1] = after;
+        if (ra != r0) { /* the ring's last edge, to its first vertex */
+            const int down = ra < r0;
+            const ptrdiff_t it = down ? (ptrdiff_t)stop - 1 : (ptrdiff_t)base;
+            const ptrdiff_t ibm = down ? (ptrdiff_t)base : (ptrdiff_t)stop - 1;
+            const int32_t top = down ? ra : r0, end = ra ^ r0 ^ top;
+            rast__rc_edge(&k, it, ibm, rc[2 * it], rc[2 * ibm], top, end, down ? 1 : up, inplace);
+            if (starts) {
+                starts[top]++;
+                starts[end]--;
+            }
         }
     }
 }

@@ -760,7 +760,7 @@ RAST__APART void rast__delta_rc_dda(rast_point top, rast_point bottom, int down,
  * column is an add and a test, where the DDA's set-up is two divisions
  * and ~130 instructions. */
 #ifndef RAST__RC_COLS
-#define RAST__RC_COLS 8
+#define RAST__RC_COLS 16
 #endif
 
 /* An edge of rast__delta_rc_walk that rast__rc_edge does not walk (a

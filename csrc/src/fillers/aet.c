@@ -941,7 +941,7 @@ RAST__HOT void rast__delta_rc_walk(const rast_polygon *poly, uint16_t *rc, const
     down_chain:
         mark[1] = 0;
         do {
-            rast__rc_edge(&k, (v - rc) / 2 - 1, (v - rc) / 2, v[-2], v[0], ra, rb, 1, inplace);
+            rast__rc_edge(&k, (ptrdiff_t)((size_t)(v - rc) >> 1) - 1, (ptrdiff_t)((size_t)(v - rc) >> 1), v[-2], v[0], ra, rb, 1, inplace);
             ra = rb;
             while ((rb = (v += 2)[1]) == ra) {}
         } while (rb > ra);
@@ -954,7 +954,7 @@ RAST__HOT void rast__delta_rc_walk(const rast_polygon *poly, uint16_t *rc, const
     up_chain:
         mark[1] = 0xFFFF;
         do {
-            rast__rc_edge(&k, (v - rc) / 2, (v - rc) / 2 - 1, v[0], v[-2], rb, ra, up, inplace);
+            rast__rc_edge(&k, (ptrdiff_t)((size_t)(v - rc) >> 1), (ptrdiff_t)((size_t)(v - rc) >> 1) - 1, v[0], v[-2], rb, ra, up, inplace);
             ra = rb;
             while ((rb = (v += 2)[1]) == ra) {}
         } while (rb < ra);

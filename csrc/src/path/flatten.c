@@ -353,14 +353,19 @@ rast_status rast__path_flatten(const rast_path *path, int32_t tolerance, rast__f
     const rast_point *p;
     rast_point cur = {0, 0}, start = {0, 0};
     int open = 0;
-    uint64_t total = 0;
-    uint32_t k;
+    uint64_t total = 0, room = UINT64_MAX; /* total: f->npoints; room: the vertices f can take */
+    uint32_t k, rings = UINT32_MAX;        /* rings: the subpaths f can take */
     if (st != RAST_OK) return st;
+    if (f->points && f->max_points && f->max_rings) { /* (path.h: a room given, not a count) */
+        room = f->max_points;
+        rings = f->max_rings;
+    }
     p = path->points;
     for (k = 0; k < path->nverbs; k++) {
         int v = path->verbs[k];
         if (v == RAST_PATH_MOVE) {
             cur = start = *p++;
+            if (f->nrings >= rings || total >= room) return RAST_E_SCRATCH;
             open_ring(f, cur);
             open = 1;
             total++;
@@ -370,12 +375,14 @@ rast_status rast__path_flatten(const rast_path *path, int32_t tolerance, rast__f
             cur = start;
         } else {
             if (!open) { /* SVG: a new subpath at the closed one's start */
+                if (f->nrings >= rings || total >= room) return RAST_E_SCRATCH;
                 open_ring(f, start);
                 open = 1;
                 total++;
             }
             if (v == RAST_PATH_LINE) {
                 cur = *p++;
+                if (total >= room) return RAST_E_SCRATCH;
                 put(f, cur);
                 total++;
             } else {
@@ -388,6 +395,7 @@ rast_status rast__path_flatten(const rast_path *path, int32_t tolerance, rast__f
                 n = rast__curve_edges(q, d, tolerance);
                 total += n;
                 if (total > RAST_MAX_POINTS) return RAST_E_TOO_MANY;
+                if (total > room) return RAST_E_SCRATCH;
 #if !defined(__OPTIMIZE_SIZE__)
                 if (f->points) {
                     if (n > 1) curve_points(f->points + f->npoints, q, d, n);

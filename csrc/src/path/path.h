@@ -18,12 +18,19 @@ typedef struct rast__flat {
     uint32_t *ring_sizes; /* one per subpath */
     uint8_t *closed;      /* NULL, or one per subpath: 1 iff it ended in CLOSE */
     uint32_t npoints, nrings;
+    /* with points: the room of points[] and ring_sizes[] (and closed[]),
+     * or 0 for both: sized by a counting call (no check) */
+    uint32_t max_points, max_rings;
 } rast__flat;
 
 /* Check `path` and `tolerance` as rast_path_flatten does (RAST_E_NULL,
  * RAST_E_ARG, RAST_E_RANGE, RAST_E_TOO_MANY), then flatten it into *f
  * (counts from 0; f->points NULL: count only).  The caller sized f's
- * arrays by a counting call. */
+ * arrays by a counting call, or gave their room in f->max_points and
+ * f->max_rings (both > 0): a vertex or a subpath past it is not stored
+ * and the call returns RAST_E_SCRATCH, some of the room written (a
+ * counting call then gives the sizes, or the error that comes first:
+ * RAST_E_TOO_MANY). */
 /* A curve of degree d (2 or 3) from p[0] with controls p[1 .. d]: its edge
  * count at tolerance tol, and its point i of n, rounded (as flattened). */
 uint32_t rast__curve_edges(const rast_point *p, int d, int32_t tol);

@@ -280,6 +280,16 @@ def _accumulated(rings, shape, rule, s):
     return rule_applied(total, rule)
 
 
+def check_accumulate(rings, shape, rule):
+    """"accumulate" of rings, as uint8 and uint16, against the exact
+    accumulation (_accumulated at 1/256 px) within check_area's bound."""
+    want = _accumulated(rings, shape, rule, 8)
+    n, m = _n_m(rings, 8)
+    for dtype in (np.uint8, np.uint16):
+        out = rastrum.polygon_coverage(rings, shape, rule=rule, method="accumulate", dtype=dtype)
+        check_area(out, want, M_OF[dtype], n, m, S_.lit(rings))
+
+
 def rule_applied(total, rule):
     """The rule applied to each pixel's integral of the winding number
     (exact): non-zero takes min(|.|, 1), even-odd folds |.| mod 2."""

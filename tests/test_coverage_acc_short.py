@@ -17,7 +17,7 @@ from hypothesis import given, settings, strategies as st
 
 import rastrum
 import strategies as S_
-from test_coverage import M_OF, _accumulated, _n_m, check_area
+from test_coverage import M_OF, _accumulated, _n_m, check_area, check_accumulate as _check
 
 
 def _triangles(rnd, k, shape, snap, slope):
@@ -39,14 +39,6 @@ def _triangles(rnd, k, shape, snap, slope):
             continue
         rings.append(tri if rnd.integers(2) else tri[::-1])
     return rings
-
-
-def _check(rings, shape, rule):
-    want = _accumulated(rings, shape, rule, 8)
-    n, m = _n_m(rings, 8)
-    for dtype in (np.uint8, np.uint16):
-        out = rastrum.polygon_coverage(rings, shape, rule=rule, method="accumulate", dtype=dtype)
-        check_area(out, want, M_OF[dtype], n, m, S_.lit(rings))
 
 
 @settings(max_examples=S_.examples(12), deadline=None)

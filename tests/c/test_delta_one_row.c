@@ -82,26 +82,6 @@ static uint32_t short_ring(rast_point *pts, uint32_t n, int32_t cx, int32_t cy, 
     return v;
 }
 
-static void check_scene(int iter, const rast_point *pts, const uint32_t *sizes, uint32_t nrings, uint32_t np,
-                        int s, int center, int textbook, rast_fill_rule rule, const rast_rect *clip, int opaque)
-{
-    static unsigned char pre[STRIDE * H], a[STRIDE * H], b[STRIDE * H];
-    static unsigned char scratch[1 << 20];
-    const size_t need = rast__aet_scratch(np, W, H);
-    const rast_polygon poly = {pts, sizes, nrings};
-    const rast_sample at = center ? RAST_SAMPLE_CENTER : RAST_SAMPLE_CORNER;
-    rast__grid g;
-    int32_t k;
-    CHECK(need <= sizeof scratch);
-    CHECK(rast__grid_init(&g, s, at, textbook ? RAST_ROUND_TEXTBOOK : RAST_ROUND_EXACT, RAST_BOUNDARY_EXACT) ==
-          RAST_OK);
-    for (k = 0; k < STRIDE * H; k++) pre[k] = (unsigned char)rng(); /* garbage: the clip's part written */
-    CHECK(bytes_fill(a, pre, &poly, np, &g, rule, clip, scratch, need, opaque, RAST__AET_BY_SWEEP) == RAST_OK);
-    CHECK(bytes_fill(b, pre, &poly, np, &g, rule, clip, scratch, need, opaque, RAST__AET_BY_RULE) == RAST_OK);
-    CHECK(memcmp(a, b, sizeof a) == 0);
-    CHECK(bytes_match_ref(b, pre, pts, sizes, nrings, s, center, textbook, rule, clip, opaque, iter));
-}
-
 int main(void)
 {
     static rast_point pts[MAXP];
@@ -140,7 +120,7 @@ int main(void)
         if (np >= 8 * (uint32_t)rows && rows * ((clip.x1 - clip.x0 + 8) & ~7) <= (int32_t)np * 48 &&
             rows * ((clip.x1 - clip.x0 + 8) / 8) <= 8 * (int32_t)np)
             taken++;
-        check_scene(iter, pts, sizes, nrings, np, s, center, textbook, rule, &clip, opaque);
+        bytes_check_scene(iter, pts, sizes, nrings, np, s, center, textbook, rule, &clip, opaque);
     }
     CHECK(taken > n / 2);
     return check_report("test_delta_one_row");

@@ -3,8 +3,9 @@
  * through the AET by a chosen way (RAST__AET_BY_*) into the solid or
  * opaque painter, and the check of its bytes against the brute-force
  * reference (ref.h), for the C tests that write one-byte pixels
- * (test_delta_bytes.c, test_aet_bytes.c).  The includer defines W, H,
- * STRIDE and the bytes VALUE and BACKGROUND first.
+ * (test_delta_bytes.c, test_aet_bytes.c, test_delta_*.c); and a clip
+ * drawn at random for a scene (bytes_pick_clip).  The includer defines
+ * W, H, STRIDE and the bytes VALUE and BACKGROUND first.
  */
 #ifndef RAST_TEST_BYTE_CANVAS_H
 #define RAST_TEST_BYTE_CANVAS_H
@@ -93,6 +94,30 @@ static inline void bytes_check_scene(int iter, const rast_point *pts, const uint
     CHECK(bytes_fill(b, pre, &poly, np, &g, rule, clip, scratch, need, opaque, RAST__AET_BY_RULE) == RAST_OK);
     CHECK(memcmp(a, b, sizeof a) == 0);
     CHECK(bytes_match_ref(b, pre, pts, sizes, nrings, s, center, textbook, rule, clip, opaque, iter));
+}
+
+/* A clip for a scene of np vertices on the canvas: 1 to np / 8 rows
+ * (at least 8 vertices a row: the rule's count), anywhere down; when
+ * opaque, 3 times in 4 the whole width (the counters in the mask itself),
+ * else up to 19 columns off each side.  1 when the rule's counts
+ * (fillers/aet.c, as test_aet_rule.c: 8 vertices a clip row, the
+ * counters' rows in the edge records' room, at most 8 words of them a
+ * vertex) take the scene. */
+static inline int bytes_pick_clip(uint32_t np, int opaque, rast_rect *clip)
+{
+    int32_t rows = (int32_t)(np / 8) < H ? (int32_t)(np / 8) : H;
+    rows = 1 + (int32_t)(rng() % (uint32_t)rows);
+    clip->y0 = (int32_t)(rng() % (uint32_t)(H - rows + 1));
+    clip->y1 = clip->y0 + rows;
+    if (opaque && (rng() & 3)) {
+        clip->x0 = 0;
+        clip->x1 = W;
+    } else {
+        clip->x0 = (int32_t)(rng() % 20);
+        clip->x1 = W - (int32_t)(rng() % 20);
+    }
+    return np >= 8 * (uint32_t)rows && rows * ((clip->x1 - clip->x0 + 8) & ~7) <= (int32_t)np * 48 &&
+           rows * ((clip->x1 - clip->x0 + 8) / 8) <= 8 * (int32_t)np;
 }
 
 #endif

@@ -144,26 +144,8 @@ int main(void)
         uint32_t np = 0;
         const uint32_t nrings = far_rings(pts, sizes, many ? 200 : 8 + rng() % 50, 11, s, W, H, &np);
         rast_rect clip;
-        int32_t rows;
         if (np < 16) continue;
-        /* rows for at least 8 vertices each (the rule's count), from 1 up */
-        rows = (int32_t)(np / 8) < H ? (int32_t)(np / 8) : H;
-        rows = 1 + (int32_t)(rng() % (uint32_t)rows);
-        clip.y0 = (int32_t)(rng() % (uint32_t)(H - rows + 1));
-        clip.y1 = clip.y0 + rows;
-        if (opaque && (rng() & 3)) { /* the whole width: the counters in the mask itself (2 rows up) */
-            clip.x0 = 0;
-            clip.x1 = W;
-        } else {
-            clip.x0 = (int32_t)(rng() % 20);
-            clip.x1 = W - (int32_t)(rng() % 20);
-        }
-        /* the rule's counts (fillers/aet.c), as test_aet_rule.c: 8
-         * vertices a clip row, the counters' rows in the edge records' room,
-         * at most 8 words of them a vertex */
-        if (np >= 8 * (uint32_t)rows && rows * ((clip.x1 - clip.x0 + 8) & ~7) <= (int32_t)np * 48 &&
-            rows * ((clip.x1 - clip.x0 + 8) / 8) <= 8 * (int32_t)np)
-            taken++;
+        taken += bytes_pick_clip(np, opaque, &clip);
         bytes_check_scene(iter, pts, sizes, nrings, np, s, center, textbook, rule, &clip, opaque);
     }
     CHECK(taken > n / 2);

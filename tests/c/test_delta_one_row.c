@@ -95,7 +95,6 @@ int main(void)
         const uint32_t want = iter % 8 == 5 ? 600 + rng() % 700 : 16 + rng() % 300;
         uint32_t np = 0, nrings = 0;
         rast_rect clip;
-        int32_t rows;
         while (np + 4 <= want) {
             uint32_t m = 4 + 2 * (rng() % 12);
             /* round a point near the canvas, one ring in 6 near a side or past it */
@@ -105,21 +104,7 @@ int main(void)
             sizes[nrings++] = short_ring(pts + np, m, cx, cy, s, center);
             np += m;
         }
-        /* rows for at least 8 vertices each (the rule's count), from 1 up */
-        rows = (int32_t)(np / 8) < H ? (int32_t)(np / 8) : H;
-        rows = 1 + (int32_t)(rng() % (uint32_t)rows);
-        clip.y0 = (int32_t)(rng() % (uint32_t)(H - rows + 1));
-        clip.y1 = clip.y0 + rows;
-        if (opaque && (rng() & 3)) { /* the whole width: the counters in the mask itself */
-            clip.x0 = 0;
-            clip.x1 = W;
-        } else {
-            clip.x0 = (int32_t)(rng() % 20);
-            clip.x1 = W - (int32_t)(rng() % 20);
-        }
-        if (np >= 8 * (uint32_t)rows && rows * ((clip.x1 - clip.x0 + 8) & ~7) <= (int32_t)np * 48 &&
-            rows * ((clip.x1 - clip.x0 + 8) / 8) <= 8 * (int32_t)np)
-            taken++;
+        taken += bytes_pick_clip(np, opaque, &clip);
         bytes_check_scene(iter, pts, sizes, nrings, np, s, center, textbook, rule, &clip, opaque);
     }
     CHECK(taken > n / 2);

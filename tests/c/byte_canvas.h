@@ -3,8 +3,8 @@
  * through the AET by a chosen way (RAST__AET_BY_*) into the solid or
  * opaque painter, and the check of its bytes against the brute-force
  * reference (ref.h), for the C tests that write one-byte pixels
- * (test_delta_bytes.c, test_aet_bytes.c, test_delta_*.c); and a clip
- * drawn at random for a scene (bytes_pick_clip).  The includer defines
+ * (test_delta_bytes.c, test_aet_bytes.c, test_delta_*.c); and the
+ * delta tests' random scenes, their clips drawn too (bytes_scenes).  The includer defines
  * W, H, STRIDE and the bytes VALUE and BACKGROUND first.
  */
 #ifndef RAST_TEST_BYTE_CANVAS_H
@@ -118,6 +118,34 @@ static inline int bytes_pick_clip(uint32_t np, int opaque, rast_rect *clip)
     }
     return np >= 8 * (uint32_t)rows && rows * ((clip->x1 - clip->x0 + 8) & ~7) <= (int32_t)np * 48 &&
            rows * ((clip->x1 - clip->x0 + 8) / 8) <= 8 * (int32_t)np;
+}
+
+/* A scene's rings for bytes_scenes: into pts and sizes, S s, the sample
+ * at the pixel's centre or not, scene `iter`; the rings' count, the
+ * points' into *np. */
+typedef uint32_t (*bytes_rings_fn)(int iter, int s, int center, rast_point *pts, uint32_t *sizes, uint32_t *np);
+
+/* The delta tests' scenes (check_count(1500) of them): for each, S 0 to
+ * 16, the sample, textbook rounding one time in `tb`, opaque or not and
+ * the rule drawn (rng(), in that order), then its rings (rings()), a
+ * scene of fewer than `least` points passed over, then its clip
+ * (bytes_pick_clip) and its check (bytes_check_scene); more than half of
+ * them must be taken by the rule's counts. */
+static inline void bytes_scenes(uint32_t tb, uint32_t least, bytes_rings_fn rings, rast_point *pts, uint32_t *sizes)
+{
+    int iter, n = check_count(1500), taken = 0;
+    for (iter = 0; iter < n; iter++) {
+        const int s = (int)(rng() % 17), center = (int)(rng() & 1);
+        const int textbook = (int)(rng() % tb == 0), opaque = (int)(rng() & 1);
+        const rast_fill_rule rule = (rng() & 1) ? RAST_RULE_EVENODD : RAST_RULE_NONZERO;
+        uint32_t np = 0;
+        const uint32_t nrings = rings(iter, s, center, pts, sizes, &np);
+        rast_rect clip;
+        if (np < least) continue;
+        taken += bytes_pick_clip(np, opaque, &clip);
+        bytes_check_scene(iter, pts, sizes, nrings, np, s, center, textbook, rule, &clip, opaque);
+    }
+    CHECK(taken > n / 2);
 }
 
 #endif

@@ -130,25 +130,19 @@ static void check_wide(int32_t w, int s, rast_fill_rule rule)
     CHECK(!bad);
 }
 
+/* A scene: 8 to 57 far rings, one scene in 8 200 (past 511 vertices:
+ * non-zero's pieces counted). */
+static uint32_t scene_rings(int iter, int s, int center, rast_point *pts, uint32_t *sizes, uint32_t *np)
+{
+    (void)center;
+    return far_rings(pts, sizes, iter % 8 == 5 ? 200 : 8 + rng() % 50, 11, s, W, H, np);
+}
+
 int main(void)
 {
     static rast_point pts[MAXP];
     static uint32_t sizes[MAXP];
-    int iter, n = check_count(1500), taken = 0;
-    for (iter = 0; iter < n; iter++) {
-        const int s = (int)(rng() % 17), center = (int)(rng() & 1);
-        const int textbook = (int)(rng() % 4 == 0), opaque = (int)(rng() & 1);
-        const rast_fill_rule rule = (rng() & 1) ? RAST_RULE_EVENODD : RAST_RULE_NONZERO;
-        /* one scene in 8 past 511 vertices (non-zero: the pieces counted) */
-        const int many = iter % 8 == 5;
-        uint32_t np = 0;
-        const uint32_t nrings = far_rings(pts, sizes, many ? 200 : 8 + rng() % 50, 11, s, W, H, &np);
-        rast_rect clip;
-        if (np < 16) continue;
-        taken += bytes_pick_clip(np, opaque, &clip);
-        bytes_check_scene(iter, pts, sizes, nrings, np, s, center, textbook, rule, &clip, opaque);
-    }
-    CHECK(taken > n / 2);
+    bytes_scenes(4, 16, scene_rings, pts, sizes);
     check_wide(32766, 8, RAST_RULE_NONZERO);
     check_wide(32767, 4, RAST_RULE_EVENODD);
     check_wide(32767, 16, RAST_RULE_NONZERO);

@@ -82,31 +82,28 @@ static uint32_t short_ring(rast_point *pts, uint32_t n, int32_t cx, int32_t cy, 
     return v;
 }
 
+/* A scene: rings of short edges, 16 to 315 vertices in all, one scene
+ * in 8 600 to 1,299 (past 511: non-zero's pieces counted). */
+static uint32_t short_rings(int iter, int s, int center, rast_point *pts, uint32_t *sizes, uint32_t *np)
+{
+    const uint32_t want = iter % 8 == 5 ? 600 + rng() % 700 : 16 + rng() % 300;
+    uint32_t nrings = 0;
+    while (*np + 4 <= want) {
+        uint32_t m = 4 + 2 * (rng() % 12);
+        /* round a point near the canvas, one ring in 6 near a side or past it */
+        const int32_t cx = rng() % 6 ? (int32_t)(rng() % W) : (rng() & 1) ? -2 : W + 1;
+        const int32_t cy = (int32_t)(rng() % (H + 4)) - 2;
+        if (*np + m > want) m = (want - *np) & ~1u;
+        sizes[nrings++] = short_ring(pts + *np, m, cx, cy, s, center);
+        *np += m;
+    }
+    return nrings;
+}
+
 int main(void)
 {
     static rast_point pts[MAXP];
     static uint32_t sizes[MAXP];
-    int iter, n = check_count(1500), taken = 0;
-    for (iter = 0; iter < n; iter++) {
-        const int s = (int)(rng() % 17), center = (int)(rng() & 1);
-        const int textbook = (int)(rng() % 8 == 0), opaque = (int)(rng() & 1);
-        const rast_fill_rule rule = (rng() & 1) ? RAST_RULE_EVENODD : RAST_RULE_NONZERO;
-        /* one scene in 8 past 511 vertices (non-zero: the pieces counted) */
-        const uint32_t want = iter % 8 == 5 ? 600 + rng() % 700 : 16 + rng() % 300;
-        uint32_t np = 0, nrings = 0;
-        rast_rect clip;
-        while (np + 4 <= want) {
-            uint32_t m = 4 + 2 * (rng() % 12);
-            /* round a point near the canvas, one ring in 6 near a side or past it */
-            const int32_t cx = rng() % 6 ? (int32_t)(rng() % W) : (rng() & 1) ? -2 : W + 1;
-            const int32_t cy = (int32_t)(rng() % (H + 4)) - 2;
-            if (np + m > want) m = (want - np) & ~1u;
-            sizes[nrings++] = short_ring(pts + np, m, cx, cy, s, center);
-            np += m;
-        }
-        taken += bytes_pick_clip(np, opaque, &clip);
-        bytes_check_scene(iter, pts, sizes, nrings, np, s, center, textbook, rule, &clip, opaque);
-    }
-    CHECK(taken > n / 2);
+    bytes_scenes(8, 0, short_rings, pts, sizes);
     return check_report("test_delta_one_row");
 }

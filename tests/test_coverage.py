@@ -290,6 +290,21 @@ def check_accumulate(rings, shape, rule):
         check_area(out, want, M_OF[dtype], n, m, S_.lit(rings))
 
 
+def check_accumulate_batch(tris, shape):
+    """triangles_coverage(method="accumulate") of triangles against the
+    exact accumulation (_accumulated at 1/256 px, non-zero) of the same
+    triangles, each turned counter-clockwise (the batch's own turning), as
+    rings, within check_area's bound."""
+    ccw = []
+    for t in tris:
+        a = (t[1][0] - t[0][0]) * (t[2][1] - t[0][1]) - (t[2][0] - t[0][0]) * (t[1][1] - t[0][1])
+        ccw.append(t if a > 0 else t[::-1])
+    want = _accumulated(ccw, shape, "nonzero", 8)
+    n, m = _n_m(ccw, 8)
+    out = rastrum.triangles_coverage(np.asarray(tris, dtype=np.float64), shape, method="accumulate")
+    check_area(out, want, M_OF[np.uint8], n, m, S_.lit(tris))
+
+
 def rule_applied(total, rule):
     """The rule applied to each pixel's integral of the winding number
     (exact): non-zero takes min(|.|, 1), even-odd folds |.| mod 2."""

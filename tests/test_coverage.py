@@ -50,6 +50,37 @@ def check_area(out, exact, M, n, m, what):
     assert not bad, "%s: %d pixel(s) off, first: %s" % (what, len(bad), bad[:5])
 
 
+def levels_near_ties(exact, M, count):
+    """The levels floor(a M + 1/2) of exact areas a, and where each is
+    within check_area's bound (count: its n + m) of a tie, where the level
+    may be one less or more."""
+    bound = F(count + 1, 2 ** 58) * M
+    want = np.zeros(exact.shape, np.int64)
+    near = np.zeros(exact.shape, bool)
+    for (j, i), a in np.ndenumerate(exact):
+        want[j, i] = oc.level(a, M)
+        x = a * M + F(1, 2)
+        near[j, i] = abs(x - round(x)) <= bound
+    return want, near
+
+
+def blend(s, d, c):
+    """gray8's blend of colour s over background d at level c (0 to 255):
+    (s c + d (255 - c) + 127) // 255 (docs/coverage.md)."""
+    s, d, c = (np.asarray(v, np.int64) for v in (s, d, c))
+    return (s * c + d * (255 - c) + 127) // 255
+
+
+def blended(got, color, bg, want, near):
+    """Where got is the blend of colour over bg at the level want, or
+    (where near, if not None) at one level less or more."""
+    ok = got == blend(color, bg, want)
+    if near is not None:
+        ok |= near & ((got == blend(color, bg, np.clip(want - 1, 0, 255))) |
+                      (got == blend(color, bg, np.clip(want + 1, 0, 255))))
+    return ok
+
+
 def exact_area(rings, shape, rule, s, triangles=False):
     return oc.coverage_exact(rings, shape, rule=rule, subpixel_bits=s, triangles=triangles)
 

@@ -50,6 +50,37 @@ def check_area(out, exact, M, n, m, what):
     assert not bad, "%s: %d pixel(s) off, first: %s" % (what, len(bad), bad[:5])
 
 
+def levels_near_ties(exact, M, count):
+    """The levels floor(a M + 1/2) of exact areas a, and where each is
+    within check_area's bound (count: its n + m) of a tie, where the level
+    may be one less or more."""
+    bound = F(count + 1, 2 ** 58) * M
+    want = np.zeros(exact.shape, np.int64)
+    near = np.zeros(exact.shape, bool)
+    for (j, i), a in np.ndenumerate(exact):
+        want[j, i] = oc.level(a, M)
+        x = a * M + F(1, 2)
+        near[j, i] = abs(x - round(x)) <= bound
+    return want, near
+
+
+def blend(s, d, c):
+    """gray8's blend of colour s over background d at level c (0 to 255):
+    (s c + d (255 - c) + 127) // 255 (docs/coverage.md)."""
+    s, d, c = (np.asarray(v, np.int64) for v in (s, d, c))
+    return (s * c + d * (255 - c) + 127) // 255
+
+
+def blended(got, color, bg, want, near):
+    """Where got is the blend of colour over bg at the level want, or
+    (where near, if not None) at one level less or more."""
+    ok = got == blend(color, bg, want)
+    if near is not None:
+        ok |= near & ((got == blend(color, bg, np.clip(want - 1, 0, 255))) |
+                      (got == blend(color, bg, np.clip(want + 1, 0, 255))))
+    return ok
+
+
 def exact_area(rings, shape, rule, s, triangles=False):
     return oc.coverage_exact(rings, shape, rule=rule, subpixel_bits=s, triangles=triangles)
 
@@ -278,6 +309,31 @@ def _accumulated(rings, shape, rule, s):
         a = exact_area([ring], shape, "nonzero", s) * (1 if area2 > 0 else -1)
         total = a if total is None else total + a
     return rule_applied(total, rule)
+
+
+def check_accumulate(rings, shape, rule):
+    """"accumulate" of rings, as uint8 and uint16, against the exact
+    accumulation (_accumulated at 1/256 px) within check_area's bound."""
+    want = _accumulated(rings, shape, rule, 8)
+    n, m = _n_m(rings, 8)
+    for dtype in (np.uint8, np.uint16):
+        out = rastrum.polygon_coverage(rings, shape, rule=rule, method="accumulate", dtype=dtype)
+        check_area(out, want, M_OF[dtype], n, m, S_.lit(rings))
+
+
+def check_accumulate_batch(tris, shape):
+    """triangles_coverage(method="accumulate") of triangles against the
+    exact accumulation (_accumulated at 1/256 px, non-zero) of the same
+    triangles, each turned counter-clockwise (the batch's own turning), as
+    rings, within check_area's bound."""
+    ccw = []
+    for t in tris:
+        a = (t[1][0] - t[0][0]) * (t[2][1] - t[0][1]) - (t[2][0] - t[0][0]) * (t[1][1] - t[0][1])
+        ccw.append(t if a > 0 else t[::-1])
+    want = _accumulated(ccw, shape, "nonzero", 8)
+    n, m = _n_m(ccw, 8)
+    out = rastrum.triangles_coverage(np.asarray(tris, dtype=np.float64), shape, method="accumulate")
+    check_area(out, want, M_OF[np.uint8], n, m, S_.lit(tris))
 
 
 def rule_applied(total, rule):

@@ -21,9 +21,8 @@ import math
 import numpy as np
 from hypothesis import given, settings, strategies as st
 
-import rastrum
 import strategies as S_
-from test_coverage import M_OF, _accumulated, _n_m, check_area
+from test_coverage import check_accumulate as _check
 
 
 def _blobs(rnd, k, shape, snap, margin):
@@ -49,14 +48,6 @@ def _blobs(rnd, k, shape, snap, margin):
             continue
         rings.append(ring if rnd.integers(2) else ring[::-1])
     return rings
-
-
-def _check(rings, shape, rule):
-    want = _accumulated(rings, shape, rule, 8)
-    n, m = _n_m(rings, 8)
-    for dtype in (np.uint8, np.uint16):
-        out = rastrum.polygon_coverage(rings, shape, rule=rule, method="accumulate", dtype=dtype)
-        check_area(out, want, M_OF[dtype], n, m, S_.lit(rings))
 
 
 @settings(max_examples=S_.examples(10), deadline=None)

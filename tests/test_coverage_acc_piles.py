@@ -17,9 +17,8 @@ each pixel, summed, the rule applied."""
 import numpy as np
 from hypothesis import given, settings, strategies as st
 
-import rastrum
 import strategies as S_
-from test_coverage import M_OF, _accumulated, _n_m, check_area
+from test_coverage import check_accumulate as _check, check_accumulate_batch
 
 
 def _pile(rnd, k, shape, snap, slope, hmin, hmax, out):
@@ -52,14 +51,6 @@ def _pile(rnd, k, shape, snap, slope, hmin, hmax, out):
             continue
         rings.append(tri if rnd.integers(2) else tri[::-1])
     return rings
-
-
-def _check(rings, shape, rule):
-    want = _accumulated(rings, shape, rule, 8)
-    n, m = _n_m(rings, 8)
-    for dtype in (np.uint8, np.uint16):
-        out = rastrum.polygon_coverage(rings, shape, rule=rule, method="accumulate", dtype=dtype)
-        check_area(out, want, M_OF[dtype], n, m, S_.lit(rings))
 
 
 @settings(max_examples=S_.examples(6), deadline=None)
@@ -102,11 +93,4 @@ def test_triangle_batch_equals_rings():
     shape = (40, 44)
     for snap in (1, 4, 256):
         rings = _pile(rnd, 60, shape, snap, 1.0, 9.0, 16.0, True)
-        ccw = []
-        for t in rings:
-            a = (t[1][0] - t[0][0]) * (t[2][1] - t[0][1]) - (t[2][0] - t[0][0]) * (t[1][1] - t[0][1])
-            ccw.append(t if a > 0 else t[::-1])
-        want = _accumulated(ccw, shape, "nonzero", 8)
-        n, m = _n_m(ccw, 8)
-        out = rastrum.triangles_coverage(np.asarray(rings, dtype=np.float64), shape, method="accumulate")
-        check_area(out, want, M_OF[np.uint8], n, m, S_.lit(rings))
+        check_accumulate_batch(rings, shape)

@@ -15,9 +15,8 @@ each ring's exact signed area over each pixel, summed, the rule applied."""
 import numpy as np
 from hypothesis import given, settings, strategies as st
 
-import rastrum
 import strategies as S_
-from test_coverage import M_OF, _accumulated, _n_m, check_area
+from test_coverage import check_accumulate as _check, check_accumulate_batch
 
 
 def _triangles(rnd, k, shape, snap, slope):
@@ -39,14 +38,6 @@ def _triangles(rnd, k, shape, snap, slope):
             continue
         rings.append(tri if rnd.integers(2) else tri[::-1])
     return rings
-
-
-def _check(rings, shape, rule):
-    want = _accumulated(rings, shape, rule, 8)
-    n, m = _n_m(rings, 8)
-    for dtype in (np.uint8, np.uint16):
-        out = rastrum.polygon_coverage(rings, shape, rule=rule, method="accumulate", dtype=dtype)
-        check_area(out, want, M_OF[dtype], n, m, S_.lit(rings))
 
 
 @settings(max_examples=S_.examples(12), deadline=None)
@@ -84,11 +75,4 @@ def test_triangle_batch_equals_rings():
     shape = (30, 36)
     for snap in (1, 4, 256):
         rings = _triangles(rnd, 10, shape, snap, 1.0)
-        ccw = []
-        for t in rings:
-            a = (t[1][0] - t[0][0]) * (t[2][1] - t[0][1]) - (t[2][0] - t[0][0]) * (t[1][1] - t[0][1])
-            ccw.append(t if a > 0 else t[::-1])
-        want = _accumulated(ccw, shape, "nonzero", 8)
-        n, m = _n_m(ccw, 8)
-        out = rastrum.triangles_coverage(np.asarray(rings, dtype=np.float64), shape, method="accumulate")
-        check_area(out, want, M_OF[np.uint8], n, m, S_.lit(rings))
+        check_accumulate_batch(rings, shape)

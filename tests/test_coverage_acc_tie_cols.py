@@ -18,9 +18,8 @@ and uint16 (which takes the whole row the exact way), both rules."""
 import numpy as np
 from hypothesis import given, settings, strategies as st
 
-import rastrum
 import strategies as S_
-from test_coverage import M_OF, _accumulated, _n_m, check_area
+from test_coverage import check_accumulate as _check
 
 
 def _diamond(cx, cy, rx, ry):
@@ -69,14 +68,6 @@ def _scene(rnd, width, nties, rule):
 
 def _area2(r):
     return sum(x0 * y1 - x1 * y0 for (x0, y0), (x1, y1) in zip(r, r[1:] + r[:1]))
-
-
-def _check(rings, shape, rule):
-    want = _accumulated(rings, shape, rule, 8)
-    n, m = _n_m(rings, 8)
-    for dtype in (np.uint8, np.uint16):
-        out = rastrum.polygon_coverage(rings, shape, rule=rule, method="accumulate", dtype=dtype)
-        check_area(out, want, M_OF[dtype], n, m, S_.lit(rings))
 
 
 @settings(max_examples=S_.examples(12), deadline=None)

@@ -15,14 +15,12 @@ beside it), moved past each side of the canvas, and a wide one where a
 row meets a box, a long plain bar (stretches of level 255, the painter's
 full entry) and glyphs, rows that meet the box alone, and rows that
 meet no box."""
-from fractions import Fraction as F
-
 import numpy as np
 import pytest
 
 import oracle_coverage as oc
 import rastrum
-from test_coverage import _n_m
+from test_coverage import _n_m, blend, blended, levels_near_ties
 from test_coverage_parts_boxes import SCENES, SHAPE, L, _moved
 from test_coverage_plain_parts import _ring
 
@@ -46,21 +44,7 @@ WIDE = L + [_bar(14.3, 49.6, 3.25, 6.5, 40)] + [
 
 
 def _exact_levels(rings, shape, rule):
-    exact = oc.coverage_exact(rings, shape, rule=rule, subpixel_bits=S)
-    n, m = _n_m(rings, S)
-    bound = F(n + m + 1, 2 ** 58) * 255
-    want = np.zeros(shape, np.int64)
-    near = np.zeros(shape, bool)
-    for (j, i), a in np.ndenumerate(exact):
-        want[j, i] = oc.level(a, 255)
-        x = a * 255 + F(1, 2)
-        near[j, i] = abs(x - round(x)) <= bound
-    return want, near
-
-
-def _mix(s, d, c):
-    s, d, c = (np.asarray(v, np.int64) for v in (s, d, c))
-    return (s * c + d * (255 - c) + 127) // 255
+    return levels_near_ties(oc.coverage_exact(rings, shape, rule=rule, subpixel_bits=S), 255, sum(_n_m(rings, S)))
 
 
 def _paint_check(rings, shape, rule, color, seed):
@@ -70,14 +54,11 @@ def _paint_check(rings, shape, rule, color, seed):
                                           aa="area", subpixel_bits=S)
     got = img.astype(np.int64)
     arr = rastrum.polygon_coverage(rings, shape, rule=rule, subpixel_bits=S, dtype=np.uint8)
-    diff = np.argwhere(got != _mix(color, bg, arr))
+    diff = np.argwhere(got != blend(color, bg, arr))
     assert not len(diff), "%d pixel(s) unlike the array's levels blended, first %s: got %d, the array's level %d" % (
         len(diff), tuple(diff[0]), got[tuple(diff[0])], arr[tuple(diff[0])])
     want, near = _exact_levels(rings, shape, rule)
-    ok = got == _mix(color, bg, want)
-    ok |= near & ((got == _mix(color, bg, np.clip(want - 1, 0, 255))) |
-                  (got == _mix(color, bg, np.clip(want + 1, 0, 255))))
-    bad = np.argwhere(~ok)
+    bad = np.argwhere(~blended(got, color, bg, want, near))
     assert not len(bad), "%d pixel(s) off the blend of the exact levels, first %s: got %d want level %d" % (
         len(bad), tuple(bad[0]), got[tuple(bad[0])], want[tuple(bad[0])])
     return want

@@ -13,13 +13,12 @@ row every stride bytes, not its width): the bytes round the view must not
 change.  Rings cross each side and corner of the canvas (the box cut to
 the clip: its first row and column are not the box's) and lie inside."""
 
-from fractions import Fraction as F
-
 import numpy as np
 import pytest
 
 import oracle_coverage as oc
 import rastrum
+from test_coverage import blend, blended, levels_near_ties
 
 SHAPE = (14, 17)      # the view's (H, W)
 PAD = (3, 5, 2, 7)    # rows above, columns left, rows below, columns right in the larger array
@@ -40,20 +39,7 @@ def _levels(ring, method, rule):
     if method in ("ss2", "ss4"):
         k = 2 if method == "ss2" else 4
         return oc.coverage_ss([ring], SHAPE, k, rule=rule, subpixel_bits=S, sample_offset=0.5), None
-    exact = oc.coverage_exact([ring], SHAPE, rule=rule, subpixel_bits=S)
-    want = np.zeros(SHAPE, np.int64)
-    near = np.zeros(SHAPE, bool)
-    bound = F(len(ring) + 1, 2 ** 58) * 255
-    for (j, i), a in np.ndenumerate(exact):
-        want[j, i] = oc.level(a, 255)
-        x = a * 255 + F(1, 2)
-        near[j, i] = abs(x - round(x)) <= bound
-    return want, near
-
-
-def _mix(s, d, c):
-    s, d, c = (np.asarray(v, np.int64) for v in (s, d, c))
-    return (s * c + d * (255 - c) + 127) // 255
+    return levels_near_ties(oc.coverage_exact([ring], SHAPE, rule=rule, subpixel_bits=S), 255, len(ring))
 
 
 def _check(ring, method, color, seed, rule="nonzero"):
@@ -67,13 +53,9 @@ def _check(ring, method, color, seed, rule="nonzero"):
     want, near = _levels(ring, method, rule)
     bg = before[top:top + h, left:left + w]
     got = view.astype(np.int64)
-    ok = got == _mix(color, bg, want)
-    if near is not None:
-        ok |= near & ((got == _mix(color, bg, np.clip(want - 1, 0, 255))) |
-                      (got == _mix(color, bg, np.clip(want + 1, 0, 255))))
-    bad = np.argwhere(~ok)
+    bad = np.argwhere(~blended(got, color, bg, want, near))
     assert not len(bad), "%s colour %d: %d pixel(s) off the blend of the exact levels, first %s: got %d want %d (bg %d); ring %r" % (
-        method, color, len(bad), tuple(bad[0]), got[tuple(bad[0])], _mix(color, bg, want)[tuple(bad[0])],
+        method, color, len(bad), tuple(bad[0]), got[tuple(bad[0])], blend(color, bg, want)[tuple(bad[0])],
         bg[tuple(bad[0])], ring)
     around = before.copy()
     around[top:top + h, left:left + w] = big[top:top + h, left:left + w]

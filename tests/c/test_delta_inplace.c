@@ -29,27 +29,6 @@ enum { W = 53, H = 21, STRIDE = W, MAXP = 600 };
 static const unsigned char VALUE = 1, BACKGROUND = 0;
 #include "byte_canvas.h"
 
-static void check_scene(int iter, const rast_point *pts, const uint32_t *sizes, uint32_t nrings,
-                        uint32_t np, int s, int center, int textbook, rast_fill_rule rule,
-                        const rast_rect *clip)
-{
-    static unsigned char pre[STRIDE * H], a[STRIDE * H], b[STRIDE * H];
-    static unsigned char scratch[1 << 20];
-    const size_t need = rast__aet_scratch(np, W, H);
-    const rast_polygon poly = {pts, sizes, nrings};
-    const rast_sample at = center ? RAST_SAMPLE_CENTER : RAST_SAMPLE_CORNER;
-    rast__grid g;
-    int32_t k;
-    CHECK(need <= sizeof scratch);
-    CHECK(rast__grid_init(&g, s, at, textbook ? RAST_ROUND_TEXTBOOK : RAST_ROUND_EXACT, RAST_BOUNDARY_EXACT) ==
-          RAST_OK);
-    for (k = 0; k < STRIDE * H; k++) pre[k] = (unsigned char)rng(); /* garbage: all of it is written */
-    CHECK(bytes_fill(a, pre, &poly, np, &g, rule, clip, scratch, need, 1, RAST__AET_BY_SWEEP) == RAST_OK);
-    CHECK(bytes_fill(b, pre, &poly, np, &g, rule, clip, scratch, need, 1, RAST__AET_BY_RULE) == RAST_OK);
-    CHECK(memcmp(a, b, sizeof a) == 0);
-    CHECK(bytes_match_ref(b, pre, pts, sizes, nrings, s, center, textbook, rule, clip, 1, iter));
-}
-
 /* Non-zero with windings up to 400 over every row (the deltas exact up
  * to 510 crossings a row, given up past it). */
 static void test_wound(void)
@@ -61,7 +40,7 @@ static void test_wound(void)
         uint32_t n = 3 * turns[t];
         rast_rect clip = {0, 0, W, H};
         wound_triangle(pts, n);
-        check_scene(-1, pts, &n, 1, n, 4, 1, 0, RAST_RULE_NONZERO, &clip);
+        bytes_check_scene(-1, pts, &n, 1, n, 4, 1, 0, RAST_RULE_NONZERO, &clip, 1);
     }
 }
 
@@ -87,7 +66,7 @@ int main(void)
         clip.x1 = W;
         clip.y0 = (int32_t)(rng() % (uint32_t)(H - rows + 1));
         clip.y1 = clip.y0 + rows;
-        check_scene(iter, pts, sizes, nrings, np, s, center, textbook, rule, &clip);
+        bytes_check_scene(iter, pts, sizes, nrings, np, s, center, textbook, rule, &clip, 1);
     }
     test_wound();
     return check_report("test_delta_inplace");

@@ -425,6 +425,30 @@ static void rast__cov_merge_full(void *user, int32_t y, const int32_t *xs, int32
         g->hi = xs[2 * i + 1] > g->hi ? xs[2 * i + 1] : g->hi;
     }
 }
+
+/* Box k's levels into ob (the box its clip), for both ways of
+ * rast__cov_by_boxes: rast__cov_area of the edges of its rings alone
+ * (box[i] == 1 + k of the m rings listed, ring[i] and first[i] their
+ * numbers and first points), in the edges' room e.  A ring's winding
+ * number is 0 outside its box, so the box's pixels see its rings only
+ * (docs/coverage.md, the parts by boxes). */
+static inline rast_status rast__cov_box_area(const rast_polygon *poly, const uint32_t *ring, const uint32_t *first,
+                                             const unsigned char *box, uint32_t m, int32_t k, int32_t s,
+                                             rast_fill_rule rule, const rast__cov_out *ob, rast__cedge *e,
+                                             rast__arena a)
+{
+    uint32_t i, n = 0;
+    for (i = 0; i < m; i++)
+        if (box[i] == (unsigned char)(k + 1)) {
+            rast_polygon one;
+            one.points = poly->points + first[i];
+            one.ring_sizes = poly->ring_sizes + ring[i];
+            one.nrings = 1;
+            n += rast__cov_edges_polygon(&one, e + n);
+        }
+    return rast__cov_area(e, n, s, rule, 0, ob, &a);
+}
+
 /* rast__cov_by_boxes into a painter: the rings in boxes (ring[0 .. m),
  * their first points first[], their boxes box[], 1 + k in box k) listed
  * at the end of the edges' room, the boxes bx[0 .. nb).  The boxes'
@@ -483,8 +507,6 @@ static int rast__cov_boxes_paint(const rast_polygon *poly, uint32_t npoints, int
     *st = RAST_OK;
     for (k = 0; k < nb && *st == RAST_OK; k++) { /* each box's levels: its rings' exact area */
         rast__cov_out ob = *o;
-        rast__arena a = arena;
-        uint32_t n = 0;
         const int32_t *b = bc + 5 * k;
         if (b[0] >= b[2]) continue;
         ob.clip.x0 = b[0];
@@ -495,15 +517,7 @@ static int rast__cov_boxes_paint(const rast_polygon *poly, uint32_t npoints, int
         ob.stride = b[2] - b[0];
         ob.format = RAST_COVERAGE_U8;
         ob.paint = NULL;
-        for (i = 0; i < m; i++)
-            if (box[i] == (unsigned char)(k + 1)) {
-                rast_polygon one;
-                one.points = poly->points + first[i];
-                one.ring_sizes = poly->ring_sizes + ring[i];
-                one.nrings = 1;
-                n += rast__cov_edges_polygon(&one, e + n);
-            }
-        *st = rast__cov_area(e, n, s, rule, 0, &ob, &a);
+        *st = rast__cov_box_area(poly, ring, first, box, m, k, s, rule, &ob, e, arena);
     }
     if (*st != RAST_OK) return 1;
     g.real = o->paint;
@@ -564,8 +578,6 @@ static int rast__cov_by_boxes(const rast_polygon *poly, uint32_t npoints, int32_
     *st = rast__cov_acc_points(poly, ring, m, NULL, 0, 0, s, rule, o, e, &room);
     for (k = 0; k < nb && *st == RAST_OK; k++) { /* each box: its rings' exact area, its pixels only */
         rast__cov_out ob = *o;
-        rast__arena a = arena;
-        uint32_t n = 0;
         ob.clip.x0 = bx[4 * k] > o->clip.x0 ? bx[4 * k] : o->clip.x0;
         ob.clip.y0 = bx[4 * k + 1] > o->clip.y0 ? bx[4 * k + 1] : o->clip.y0;
         ob.clip.x1 = bx[4 * k + 2] < o->clip.x1 - 1 ? bx[4 * k + 2] + 1 : o->clip.x1;
@@ -573,15 +585,7 @@ static int rast__cov_by_boxes(const rast_polygon *poly, uint32_t npoints, int32_
         if (ob.clip.x0 >= ob.clip.x1 || ob.clip.y0 >= ob.clip.y1) continue;
         ob.base = o->base + (ptrdiff_t)(ob.clip.y0 - o->clip.y0) * o->stride +
                   (ptrdiff_t)(ob.clip.x0 - o->clip.x0) * size[o->format];
-        for (i = 0; i < m; i++)
-            if (box[i] == (unsigned char)(k + 1)) {
-                rast_polygon one;
-                one.points = poly->points + first[i];
-                one.ring_sizes = poly->ring_sizes + ring[i];
-                one.nrings = 1;
-                n += rast__cov_edges_polygon(&one, e + n);
-            }
-        *st = rast__cov_area(e, n, s, rule, 0, &ob, &a);
+        *st = rast__cov_box_area(poly, ring, first, box, m, k, s, rule, &ob, e, arena);
     }
     return 1;
 }

@@ -1083,6 +1083,57 @@ static int32_t rast__cov_split(const rast__cedge *e, int32_t *row, int32_t nrow,
 #define RAST__LOCAL_EVENTS 0
 #endif
 
+/* Edge e's line at the bottom of row j (Yj = j P), as rast__cov_x_at
+ * gives it at t = T (floor in V into *x, the rest r/dy into *r), for the
+ * sweep's xT.  The ordinate is a whole number of fixed units there, rel =
+ * Yj + P - yt > 0 below the edge's top, so the abscissa's offset is
+ * floor(|dx| rel 2^H / dy): with |dx|, rel and dy below 2^31, n = |dx| rel
+ * fits 64 bits, and n / dy then the rest's bits, at most 31 a step (the
+ * rest below dy < 2^31), by 64-bit divisions, while the quotient stays
+ * below 2^62 (n / dy < 2^(62 - H)); otherwise rast__cov_x_at's 128-bit
+ * way, whose value it is (docs/coverage.md: the abscissae exact).  On a
+ * stroke, most of the sweep's edges start and end inside the row and get
+ * their line's bottom this way.  Size-optimised builds take
+ * rast__cov_x_at (RAST__SHORTCUTS). */
+static void rast__sweep_x_bottom(const rast__cedge *e, int64_t Yj, const rast__cells *c, rast__i128 *x,
+                                 int64_t *r)
+{
+    const int64_t rel = Yj + c->p - e->yt;
+    const uint64_t adx = (uint64_t)(e->dx < 0 ? -(int64_t)e->dx : (int64_t)e->dx), dy = (uint64_t)e->dy;
+    const uint64_t lim = (uint64_t)1 << 31;
+    uint64_t n, q, rm, s;
+    int32_t h = c->h;
+    rast__i128 base;
+    if (!RAST__SHORTCUTS || e->dx == 0 || rel <= 0 || (uint64_t)rel >= lim || adx >= lim || dy >= lim) {
+        rast__cov_x_at(e, Yj, T, c->h, x, r);
+        return;
+    }
+    n = adx * (uint64_t)rel;
+    q = n / dy;
+    if (q >> (62 - h)) {
+        rast__cov_x_at(e, Yj, T, c->h, x, r);
+        return;
+    }
+    rm = n % dy;
+    while (h > 0) {
+        s = h > 31 ? 31 : (uint64_t)h;
+        q = (q << s) | ((rm << s) / dy); /* (rm < dy: the new bits below 2^s) */
+        rm = (rm << s) % dy;
+        h -= (int32_t)s;
+    }
+    base = rast__i128_shl(rast__i128_from(e->xt), c->h);
+    if (e->dx > 0) {
+        *x = rast__i128_add(base, rast__i128_u64(q));
+        *r = (int64_t)rm;
+    } else if (rm) {
+        *x = rast__i128_sub(rast__i128_sub(base, rast__i128_u64(q)), rast__i128_from(1));
+        *r = e->dy - (int64_t)rm;
+    } else {
+        *x = rast__i128_sub(base, rast__i128_u64(q));
+        *r = 0;
+    }
+}
+
 /* The row's sweep (area): edges row[0..nrow) of row j.  Between vertex
  * events (an edge starting or ending inside the row) the order changes
  * only where neighbours cross: the earliest crossing comes off the heap,
@@ -1122,7 +1173,7 @@ static void rast__cov_row_area(rast__cells *c, rast__cedge *e, int32_t *row, int
             ed->rT = ed->r;
             rast__cov_x_row(ed, &ed->xT, &ed->rT);
         } else {
-            rast__cov_x_at(ed, Yj, T, c->h, &ed->xT, &ed->rT);
+            rast__sweep_x_bottom(ed, Yj, c, &ed->xT, &ed->rT);
         }
     }
     while (t < T) {

@@ -38,6 +38,7 @@
 
 #define G RAST__COV_G
 #define T ((uint64_t)1 << G)
+#define QF 30 /* the quick accumulation's grid, 2^-QF pixel (below) */
 
 /* Shortcuts that only save instructions (the same results as the general
  * way next to each) are left out of size-optimised builds (firmware, -Os):
@@ -1083,6 +1084,57 @@ static int32_t rast__cov_split(const rast__cedge *e, int32_t *row, int32_t nrow,
 #define RAST__LOCAL_EVENTS 0
 #endif
 
+/* Edge e's line at the bottom of row j (Yj = j P), as rast__cov_x_at
+ * gives it at t = T (floor in V into *x, the rest r/dy into *r), for the
+ * sweep's xT.  The ordinate is a whole number of fixed units there, rel =
+ * Yj + P - yt > 0 below the edge's top, so the abscissa's offset is
+ * floor(|dx| rel 2^H / dy): with |dx|, rel and dy below 2^31, n = |dx| rel
+ * fits 64 bits, and n / dy then the rest's bits, at most 31 a step (the
+ * rest below dy < 2^31), by 64-bit divisions, while the quotient stays
+ * below 2^62 (n / dy < 2^(62 - H)); otherwise rast__cov_x_at's 128-bit
+ * way, whose value it is (docs/coverage.md: the abscissae exact).  On a
+ * stroke, most of the sweep's edges start and end inside the row and get
+ * their line's bottom this way.  Size-optimised builds take
+ * rast__cov_x_at (RAST__SHORTCUTS). */
+static void rast__sweep_x_bottom(const rast__cedge *e, int64_t Yj, const rast__cells *c, rast__i128 *x,
+                                 int64_t *r)
+{
+    const int64_t rel = Yj + c->p - e->yt;
+    const uint64_t adx = (uint64_t)(e->dx < 0 ? -(int64_t)e->dx : (int64_t)e->dx), dy = (uint64_t)e->dy;
+    const uint64_t lim = (uint64_t)1 << 31;
+    uint64_t n, q, rm, s;
+    int32_t h = c->h;
+    rast__i128 base;
+    if (!RAST__SHORTCUTS || e->dx == 0 || rel <= 0 || (uint64_t)rel >= lim || adx >= lim || dy >= lim) {
+        rast__cov_x_at(e, Yj, T, c->h, x, r);
+        return;
+    }
+    n = adx * (uint64_t)rel;
+    q = n / dy;
+    if (q >> (62 - h)) {
+        rast__cov_x_at(e, Yj, T, c->h, x, r);
+        return;
+    }
+    rm = n % dy;
+    while (h > 0) {
+        s = h > 31 ? 31 : (uint64_t)h;
+        q = (q << s) | ((rm << s) / dy); /* (rm < dy: the new bits below 2^s) */
+        rm = (rm << s) % dy;
+        h -= (int32_t)s;
+    }
+    base = rast__i128_shl(rast__i128_from(e->xt), c->h);
+    if (e->dx > 0) {
+        *x = rast__i128_add(base, rast__i128_u64(q));
+        *r = (int64_t)rm;
+    } else if (rm) {
+        *x = rast__i128_sub(rast__i128_sub(base, rast__i128_u64(q)), rast__i128_from(1));
+        *r = e->dy - (int64_t)rm;
+    } else {
+        *x = rast__i128_sub(base, rast__i128_u64(q));
+        *r = 0;
+    }
+}
+
 /* The row's sweep (area): edges row[0..nrow) of row j.  Between vertex
  * events (an edge starting or ending inside the row) the order changes
  * only where neighbours cross: the earliest crossing comes off the heap,
@@ -1091,9 +1143,14 @@ static int32_t rast__cov_split(const rast__cedge *e, int32_t *row, int32_t nrow,
  * one change of its sign to the next.  At a vertex event the order is
  * mended (rast__cov_event), or, where neighbours meet there, every piece
  * ends and the edges are sorted again.  w0: the winding number left of
- * them all (rast__cov_row_groups sweeps a group of a row alone). */
+ * them all (rast__cov_row_groups sweeps a group of a row alone).  qtops:
+ * every edge's part in row j has its quick start set (rast__fast_range,
+ * for every part of the row before its groups; rast__grp_lines moves
+ * only the starts inside the strip), qa + qar/dy, the exact abscissa at
+ * the row's top in units of 2^-30 pixel (the quick accumulation, below).
+ * Speed builds only. */
 static void rast__cov_row_area(rast__cells *c, rast__cedge *e, int32_t *row, int32_t nrow,
-                               rast__sweep *sw, int32_t j, rast_fill_rule rule, int32_t w0)
+                               rast__sweep *sw, int32_t j, rast_fill_rule rule, int32_t w0, int qtops)
 {
     const int64_t Yj = (int64_t)j * c->p;
     int32_t *live = sw->live;
@@ -1113,7 +1170,19 @@ static void rast__cov_row_area(rast__cells *c, rast__cedge *e, int32_t *row, int
              * its abscissa: that one now, the bottom a row's step below it
              * (one exact abscissa, not two: a tenth of the sweep's
              * instructions on 10,000 small triangles) */
-            rast__cov_x_at(ed, Yj, 0, c->h, &ed->x, &ed->r);
+            if (qtops) {
+                /* from its part's quick start: the same rational, G - 30
+                 * bits more of fraction, x = qa 2^(G - 30) + floor(qar
+                 * 2^(G - 30) / dy), r the rest (qar < dy < 2^31: below
+                 * 2^61), one 64-bit division for rast__cov_x_at's 128-bit
+                 * product and division (tri10k's groups: 40,000 tops) */
+                const uint64_t qn = (uint64_t)ed->qar << (G - QF);
+                ed->x = rast__i128_add(rast__i128_shl(rast__i128_from(ed->qa), G - QF),
+                                       rast__i128_u64(qn / (uint64_t)ed->dy));
+                ed->r = (int64_t)(qn % (uint64_t)ed->dy);
+            } else {
+                rast__cov_x_at(ed, Yj, 0, c->h, &ed->x, &ed->r);
+            }
             ed->rowx = j;
             ed->tx = 0;
         }
@@ -1122,7 +1191,7 @@ static void rast__cov_row_area(rast__cells *c, rast__cedge *e, int32_t *row, int
             ed->rT = ed->r;
             rast__cov_x_row(ed, &ed->xT, &ed->rT);
         } else {
-            rast__cov_x_at(ed, Yj, T, c->h, &ed->xT, &ed->rT);
+            rast__sweep_x_bottom(ed, Yj, c, &ed->xT, &ed->rT);
         }
     }
     while (t < T) {
@@ -1459,11 +1528,13 @@ RAST__APART int rast__area_small(rast__cells *c, rast__cedge *e, int32_t *row, i
 }
 #endif
 
+/* rast__cov_row_area on edges whose exact steps may not be set yet;
+ * qtops as there. */
 static void rast__area_sweep(rast__cells *c, rast__cedge *e, int32_t *row, int32_t nrow, rast__sweep *sw,
-                             int32_t j, rast_fill_rule rule, int32_t w0)
+                             int32_t j, rast_fill_rule rule, int32_t w0, int qtops)
 {
     rast__area_steps(e, row, nrow);
-    rast__cov_row_area(c, e, row, nrow, sw, j, rule, w0);
+    rast__cov_row_area(c, e, row, nrow, sw, j, rule, w0, qtops);
 }
 
 /* ---- the quick accumulation ----------------------------------------------
@@ -1498,7 +1569,6 @@ static void rast__area_sweep(rast__cells *c, rast__cedge *e, int32_t *row, int32
  * decide them, the exact sweep's elsewhere: the bound holds unchanged.
  * (FIX62 output, 512 parts or more in a row, or (n + 1) M >= 2^25: the
  * exact way only.) */
-#define QF 30
 #define QT ((uint64_t)1 << QF)
 #define QONE ((int64_t)1 << 51)
 
@@ -2966,7 +3036,7 @@ static void rast__grp_blocks(rast__cells *c, rast__cedge *e, int32_t *g, int32_t
                 if (nl != 0 && !(nl > 0 && nl * RAST__FEW_PER <= mb &&
                                  rast__grp_few(c, e, g + b0, mb, sw, j, rule, w, nl)))
 #endif
-                    rast__area_sweep(c, e, g + b0, k + 1 - b0, sw, j, rule, w);
+                    rast__area_sweep(c, e, g + b0, k + 1 - b0, sw, j, rule, w, RAST__SHORTCUTS);
             }
             w = w1;
         }
@@ -3379,7 +3449,7 @@ static void rast__cov_row_groups(rast__cells *c, rast__cedge *e, int32_t *row, i
             s = 0; /* done */
         }
         if (s == 2) {
-            rast__area_sweep(c, e, row + k, m, sw, j, rule, wl);
+            rast__area_sweep(c, e, row + k, m, sw, j, rule, wl, RAST__SHORTCUTS);
             sw->swept = 1;
         } else if (s != 0 && swept) {
 #if RAST__SHORTCUTS
@@ -3687,7 +3757,7 @@ rast_status rast__cov_area(rast__cedge *e, uint32_t n, int32_t s, rast_fill_rule
                     rast__cov_row_groups(&c, e, row, nrow, nold, &sw, j, rule, runs + rnext, rend - rnext,
                                          simple);
                 else if (!fast)
-                    rast__area_sweep(&c, e, row, nrow, &sw, j, rule, 0);
+                    rast__area_sweep(&c, e, row, nrow, &sw, j, rule, 0, 0);
             }
         } else {
             fast = 0;

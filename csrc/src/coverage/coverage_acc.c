@@ -37,7 +37,8 @@
  * 2^11 (n < RAST__ACC_MAXN = 4096), so v fits, and so does v + 2^62 in
  * the dense rows' first pass (rast__acc_sum24).  (The bound was n < 512
  * until a paragraph of text, 700 parts a row, sent nearly every row to
- * the exact sweep.)
+ * the exact sweep.)  The bands' walk takes rows of more parts too, by a
+ * bound on |a| from the band's edges (speed builds: "Deep rows", below).
  *
  * The cells are cleared by the pass that reads them, which runs over the
  * columns touched only; the pixels left of them are 0, those right of
@@ -106,7 +107,8 @@ typedef int64_t rast__acc_col_t;
 #define QONE ((int64_t)1 << 51)
 #define RAST__ACC_DENSE 16
 /* The parts of a row the accumulation takes (the bound above: |a| <
- * 2^11); a row with more goes to the exact sweep. */
+ * 2^11); a row with more goes to the exact sweep, but in the bands' walk
+ * of speed builds (rast__acc_deep_fits). */
 #define RAST__ACC_MAXN 4096
 /* A row of this many parts or more counts them per 16 columns for its
  * window (rast__acc_count); fewer make a window narrow enough.  (256
@@ -2499,7 +2501,173 @@ static int rast__acc_again(rast__acc *a, const rast__acc_walk *w, int32_t j, int
     a->cnt = NULL;
     return done;
 }
+
+/* ---- Deep rows in the bands' walk (speed builds) -------------------------
+ *
+ * A band's row of n >= RAST__ACC_MAXN parts whose window still holds,
+ * (n + 1) M < 2^25 (uint8: n < 131,586), is accumulated all the same:
+ * its sums' bound per part (the top of this file) does not depend on n,
+ * and modulo 2^64 each cell is right whatever n; what needs n < 2^12 is
+ * only that the running sum v = 2^51 a + err (|err| < (n + 1) 2^22 <
+ * 2^39) be read as a signed 64-bit value, which the non-zero rule does
+ * (|v|, rast__acc_apply, rast__acc_nz4).  Even-odd reads v mod 2^52 only
+ * (2^64 is a multiple of 2^52): any n.  Non-zero needs |a| <= 4095 at
+ * each pixel of the row (then |v| <= 4095 2^51 + 2^39 < 2^63), which the
+ * bound below gives from the band's edges, or the row goes to the exact
+ * sweep as before (its cells cleared, rast__acc_drop).
+ *
+ * The bound.  A part of edge i (direction d = +-1: rast__cov_edge_of's,
+ * the cancelled gone) in a row adds to pixel k's integral a_k its
+ * c = d times the share of the pixel right of it within the part's
+ * height h <= 1: with its abscissae in [xl, xr] and l = floor(xl), r =
+ * floor(xr) (columns of the clip, as the cells take a part: left of the
+ * clip whole, right of it nothing), c = 0 for k < l (the pixel lies left
+ * of the part: k + 1 <= xl), c = d h for k > r (right of it: k >= r + 1
+ * > xr), and d c in [0, h] between.  So for each row of the band
+ *   a_k <= U_k = #{i : d = +1, l_i <= k} - #{i : d = -1, full, r_i < k},
+ *   a_k >= L_k = #{i : d = +1, full, r_i < k} - #{i : d = -1, l_i <= k},
+ * over the band's edges i, "full" those through every row of the band (h
+ * = 1 in each; any other edge adds c in [0, 1] or [-1, 0] by its sign,
+ * and none in a row it does not reach), with any [l_i, r_i] that holds
+ * the edge's abscissae in the band: an edge walked through the whole band
+ * (rast__acc_run_band) from its row stepper's abscissae at the band's top
+ * and bottom (floors of the exact ones in 2^-30 px: the same columns), any
+ * other from its ends.  U and L are two difference arrays over columns 0
+ * .. w, h[0 .. w] and h[w + 1 .. 2 w + 1] (rast__acc_deep_add, a few
+ * instructions an edge and band), summed once a band (rast__acc_deep_fits:
+ * w columns).  10,000 canvas-spanning triangles all one way round
+ * (bench/bench_crossings.py, 512 x 512: rows of ~15,000 parts, the
+ * winding up to about a quarter of the count at the middle) have the
+ * bound at 2,750 at most: every band passes. */
+#define RAST__ACC_MAXA 4095
+
+/* An edge of direction dir in columns l <= r1 - 1 (of the clip, 0 <= l <
+ * r1 <= w) into U and L (h, above): +-1 at l in one, and at r1 in the
+ * other when full (1 when the edge runs through every row of the band,
+ * else 0).  (No branch on dir: the sides of a shape alternate.) */
+static inline void rast__acc_deep_add(int32_t *h, int32_t w, int32_t l, int32_t r1, int32_t dir, int32_t full)
+{
+    const int32_t up = dir > 0, o = up ? 0 : w + 1, g = up ? 1 : -1;
+    h[l + o] += g;
+    h[r1 + (w + 1 - o)] += full ? g : 0;
+}
+
+/* The same for an edge not walked through the whole band (top and bot:
+ * its rows' bounds in subpixels): its columns from its abscissae where it
+ * enters and leaves the band (floors of the exact ones, whose columns they
+ * are: two divisions, for these few), clamped to the clip */
+static void rast__acc_deep_edge(int32_t *h, const rast__acc *a, const rast__aedge *e, int64_t top, int64_t bot)
+{
+    const int64_t yb = (int64_t)e->yt + e->dy, y0 = e->yt > top ? e->yt : top, y1 = yb < bot ? yb : bot;
+    const int64_t w = a->x1 - a->x0;
+    int64_t c[2], n, q;
+    int i;
+    if (e->dy <= 0 || y0 >= y1) return; /* (no part in the band) */
+    for (i = 0; i < 2; i++) {
+        n = (int64_t)e->dx * ((i ? y1 : y0) - e->yt); /* |n| < 2^62 */
+        q = n / e->dy;
+        q -= n < 0 && q * e->dy != n; /* floor */
+        c[i] = rast__acc_floorp((int64_t)e->xt + q, a) - a->x0;
+    }
+    if (c[0] > c[1]) {
+        q = c[0];
+        c[0] = c[1];
+        c[1] = q;
+    }
+    c[0] = c[0] < 0 ? 0 : c[0] > w ? w : c[0];
+    c[1] = c[1] < 0 ? 0 : c[1] >= w ? w : c[1] + 1;
+    rast__acc_deep_add(h, (int32_t)w, (int32_t)c[0], (int32_t)c[1], e->dir, y0 == top && y1 == bot);
+}
+
+/* U and L summed over columns 0 .. w - 1 (h cleared, all 2 w + 2):
+ * 1 when -RAST__ACC_MAXA <= L_k and U_k <= RAST__ACC_MAXA at each */
+static int rast__acc_deep_fits(int32_t *h, int32_t w)
+{
+    int64_t u = 0, l = 0, most = 0, least = 0;
+    int32_t k;
+    for (k = 0; k < w; k++) {
+        u += h[k];
+        l += h[w + 1 + k];
+        h[k] = h[w + 1 + k] = 0;
+        most = u > most ? u : most;
+        least = l < least ? l : least;
+    }
+    h[w] = h[2 * w + 1] = 0;
+    return most <= RAST__ACC_MAXA && least >= -RAST__ACC_MAXA;
+}
+
+/* A band row's cells and bits cleared, nothing read (its bound failed:
+ * the row goes to the exact sweep); cells [lo, hi] of w as
+ * rast__acc_emit reads them, and the one after the last */
+static void rast__acc_drop(rast__acc *a, int32_t w)
+{
+    const int32_t hi = a->hi < w ? a->hi : w - 1;
+    int32_t k;
+    for (k = a->lo; k <= hi; k++) a->acc[k * RAST__ACC_SX] = 0;
+    a->acc[w * RAST__ACC_SX] = 0;
+    if (!a->dense && a->lo <= hi)
+        for (k = a->lo >> 6; k <= hi >> 6; k++) a->blk[k] = 0;
+    a->lo = INT32_MAX;
+    a->hi = -1;
+}
 #endif
+
+/* The band j0 .. j1 - 1's edges row[0..nrow) walked into the cells v[r]
+ * (rast__acc_by_bands' loop: ok[], dense and span its); deep: NULL, or
+ * the deep rows' U and L, each edge added (a constant at each call: the
+ * copy without it is the walk as it was). */
+RAST__HOT void rast__acc_band_walk(const rast__acc_walk *w, rast__acc *v, const unsigned char *ok, int32_t nrow,
+                                   int32_t j0, int32_t j1, int dense, int64_t *span, int32_t *deep)
+{
+    rast__aedge *const e = w->e;
+    const int32_t ja = w->ja, *const row = w->row, *const last = w->last, *const key = w->key;
+    const int64_t top = (int64_t)j0 * v->p;
+    int32_t k;
+#if defined(__OPTIMIZE_SIZE__)
+    (void)deep;
+#endif
+    for (k = 0; k < nrow; k++) {
+        const int32_t ek = row[k], f = key[ek] + ja;
+        rast__aedge *const ed = &e[ek];
+        /* through the whole band, from its top, the row stepper there */
+        if (ok[RAST__ACC_BAND] && w->thru[ek] >= j1 - 1 && ed->qrow == j0 && (int64_t)ed->yt <= top) {
+            const int64_t off = (top - ed->yt) * ((int64_t)1 << v->hq);
+#if !defined(__OPTIMIZE_SIZE__)
+            const int64_t xtop = ed->qx; /* (at the band's top: the deep rows' bound) */
+#endif
+            if (dense && ed->dx > 0)
+                rast__acc_dband_r(v, ed, off, span);
+            else if (dense)
+                rast__acc_dband_l(v, ed, off, span);
+            else if (ed->dx > 0)
+                rast__acc_band_r(v, ed, off);
+            else
+                rast__acc_band_l(v, ed, off);
+            ed->qrow = j1;
+#if !defined(__OPTIMIZE_SIZE__)
+            if (deep) { /* (through the band, in the clip: from its abscissae at the top and the bottom) */
+                const int32_t c0 = (int32_t)(rast__acc_col(xtop) - v->x0), c1 = (int32_t)(rast__acc_col(ed->qx) - v->x0);
+                rast__acc_deep_add(deep, w->width, c0 < c1 ? c0 : c1, (c0 < c1 ? c1 : c0) + 1, ed->dir, 1);
+            }
+#endif
+        } else {
+            const int32_t r0 = f > j0 ? f - j0 : 0, r1 = (last[ek] < j1 - 1 ? last[ek] : j1 - 1) - j0;
+#if !defined(__OPTIMIZE_SIZE__)
+            if (deep) rast__acc_deep_edge(deep, v, ed, top, top + (int64_t)(j1 - j0) * v->p); /* (any other) */
+            /* (two rows or more, in the clip: one loop; a row alone
+             * costs less by rast__acc_edge, its set-up being less) */
+            if (ok[RAST__ACC_BAND] && w->thru[ek] != INT32_MIN && r0 < r1) {
+                if (ed->dx > 0)
+                    rast__acc_short_r(v, ed, j0, r0, r1, dense ? span : NULL);
+                else
+                    rast__acc_short_l(v, ed, j0, r0, r1, dense ? span : NULL);
+                continue;
+            }
+#endif
+            rast__acc_edge(v, ok, ed, j0, r0, r1, w->thru[ek]);
+        }
+    }
+}
 
 /* Rows ja to jb a band of RAST__ACC_BAND at a time, into the cells v[r] of
  * the band's row r, each edge walked over the band's rows at once
@@ -2520,11 +2688,17 @@ RAST__APART void rast__acc_by_bands(const rast__acc_walk *w, rast__acc *v)
     int32_t *const row = w->row, *const last = w->last, *const key = w->key;
     unsigned char ok[RAST__ACC_BAND + 1]; /* each row's, then all rows' */
     int32_t cnt[RAST__ACC_BAND + 1], nrow = 0, j0, j1, k, q, r, drop = INT32_MAX;
-    int64_t top, span[2]; /* the band's top (subpixels); the columns of its dense walks */
+    int64_t span[2]; /* the columns of the band's dense walks */
     int dense, quad; /* every row of the band dense; its rows read out together */
     uint32_t qbad = 0; /* (their tie flags) */
     uint32_t next = 0;
     int clean = 0; /* cover[], area[], bits[] and w->exact[] cleared */
+#if !defined(__OPTIMIZE_SIZE__)
+    /* a band's non-zero deep rows' bound: U and L in cover[] (free in this
+     * walk but for the exact rows, which find it cleared as it is left) */
+    int32_t *const hist = (int32_t *)(void *)w->cover, *deep;
+    int hz = 0; /* hist[] cleared */
+#endif
     for (j0 = ja; j0 < w->jb; j0 = j1) {
         j1 = w->jb - j0 > RAST__ACC_BAND ? j0 + RAST__ACC_BAND : w->jb;
         /* each row's parts: how many, and whether they are few enough to
@@ -2541,55 +2715,54 @@ RAST__APART void rast__acc_by_bands(const rast__acc_walk *w, rast__acc *v)
             if (last[row[k]] < j1 - 1) cnt[last[row[k]] - j0 + 1]--;
         }
 #endif
+#if !defined(__OPTIMIZE_SIZE__)
+        deep = NULL;
+#endif
         for (r = 0; r < j1 - j0; r++) {
             if (r) cnt[r] += cnt[r - 1];
             ok[r] = (unsigned char)(cnt[r] < RAST__ACC_MAXN && ((uint64_t)cnt[r] + 1) * m < ((uint64_t)1 << 25));
+#if !defined(__OPTIMIZE_SIZE__)
+            if (!ok[r] && ((uint64_t)cnt[r] + 1) * m < ((uint64_t)1 << 25)) { /* deep (above): non-zero's bound below */
+                ok[r] = 1;
+                deep = w->rule == RAST_RULE_NONZERO ? hist : NULL;
+            }
+#endif
             v[r].dense = (int64_t)cnt[r] * RAST__ACC_DENSE_BAND >= w->width;
         }
+#if !defined(__OPTIMIZE_SIZE__)
+        if (deep && !hz) {
+            for (k = 0; k < 2 * w->width + 2; k++) hist[k] = 0;
+            hz = 1;
+        }
+#endif
         for (r = 0, ok[RAST__ACC_BAND] = j1 - j0 == RAST__ACC_BAND, dense = 1; r < j1 - j0; r++) {
             ok[RAST__ACC_BAND] &= ok[r];
             dense &= v[r].dense;
         }
-        top = (int64_t)j0 * v->p;
         span[0] = INT64_MAX;
         span[1] = -1;
-        for (k = 0; k < nrow; k++) {
-            const int32_t ek = row[k], f = key[ek] + ja;
-            rast__aedge *const ed = &e[ek];
-            /* through the whole band, from its top, the row stepper there */
-            if (ok[RAST__ACC_BAND] && w->thru[ek] >= j1 - 1 && ed->qrow == j0 && (int64_t)ed->yt <= top) {
-                const int64_t off = (top - ed->yt) * ((int64_t)1 << v->hq);
-                if (dense && ed->dx > 0)
-                    rast__acc_dband_r(v, ed, off, span);
-                else if (dense)
-                    rast__acc_dband_l(v, ed, off, span);
-                else if (ed->dx > 0)
-                    rast__acc_band_r(v, ed, off);
-                else
-                    rast__acc_band_l(v, ed, off);
-                ed->qrow = j1;
-            } else {
-                const int32_t r0 = f > j0 ? f - j0 : 0, r1 = (last[ek] < j1 - 1 ? last[ek] : j1 - 1) - j0;
 #if !defined(__OPTIMIZE_SIZE__)
-                /* (two rows or more, in the clip: one loop; a row alone
-                 * costs less by rast__acc_edge, its set-up being less) */
-                if (ok[RAST__ACC_BAND] && w->thru[ek] != INT32_MIN && r0 < r1) {
-                    if (ed->dx > 0)
-                        rast__acc_short_r(v, ed, j0, r0, r1, dense ? span : NULL);
-                    else
-                        rast__acc_short_l(v, ed, j0, r0, r1, dense ? span : NULL);
-                    continue;
-                }
+        if (deep) /* (a copy with the bound's adds: none in the other) */
+            rast__acc_band_walk(w, v, ok, nrow, j0, j1, dense, span, deep);
+        else
 #endif
-                rast__acc_edge(v, ok, ed, j0, r0, r1, w->thru[ek]);
-            }
-        }
+            rast__acc_band_walk(w, v, ok, nrow, j0, j1, dense, span, NULL);
         if (span[1] >= 0) /* (dense: the cells of the walks above) */
             for (r = 0; r < RAST__ACC_BAND; r++) {
                 const int32_t lo = (int32_t)span[0], hi = (int32_t)span[1] + 1;
                 v[r].lo = lo < v[r].lo ? lo : v[r].lo;
                 v[r].hi = hi > v[r].hi ? hi : v[r].hi;
             }
+#if !defined(__OPTIMIZE_SIZE__)
+        if (deep && !rast__acc_deep_fits(deep, w->width)) { /* (its deep rows to the exact sweep) */
+            for (r = 0; r < j1 - j0; r++)
+                if (cnt[r] >= RAST__ACC_MAXN && ok[r]) {
+                    ok[r] = 0;
+                    rast__acc_drop(&v[r], w->width);
+                }
+            ok[RAST__ACC_BAND] = 0;
+        }
+#endif
         quad = 0;
 #ifdef RAST__ACC_AVX2
         /* the four rows read out together, when each would be read the

@@ -125,6 +125,30 @@ static inline int bytes_pick_clip(uint32_t np, int opaque, rast_rect *clip)
  * points' into *np. */
 typedef uint32_t (*bytes_rings_fn)(int iter, int s, int center, rast_point *pts, uint32_t *sizes, uint32_t *np);
 
+/* One ring of n vertices round the pixel (cx, cy), S s, the sample at
+ * the pixel's centre or not; its count back. */
+typedef uint32_t (*bytes_ring_fn)(rast_point *pts, uint32_t n, int32_t cx, int32_t cy, int s, int center);
+
+/* A scene of ring() rings (for a bytes_rings_fn): 16 to 315 vertices in
+ * all, one scene in 8 600 to 1,299 (past 511: non-zero's pieces
+ * counted), 4 to 26 a ring, each round a point near the canvas, one ring
+ * in 6 near a side or past it. */
+static inline uint32_t bytes_rings_near(int iter, int s, int center, bytes_ring_fn ring, rast_point *pts,
+                                        uint32_t *sizes, uint32_t *np)
+{
+    const uint32_t want = iter % 8 == 5 ? 600 + rng() % 700 : 16 + rng() % 300;
+    uint32_t nrings = 0;
+    while (*np + 4 <= want) {
+        uint32_t m = 4 + 2 * (rng() % 12);
+        const int32_t cx = rng() % 6 ? (int32_t)(rng() % W) : (rng() & 1) ? -2 : W + 1;
+        const int32_t cy = (int32_t)(rng() % (H + 4)) - 2;
+        if (*np + m > want) m = (want - *np) & ~1u;
+        sizes[nrings++] = ring(pts + *np, m, cx, cy, s, center);
+        *np += m;
+    }
+    return nrings;
+}
+
 /* The delta tests' scenes (check_count(1500) of them): for each, S 0 to
  * 16, the sample, textbook rounding one time in `tb`, opaque or not and
  * the rule drawn (rng(), in that order), then its rings (rings()), a

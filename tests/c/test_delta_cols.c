@@ -83,66 +83,16 @@ static uint32_t slant_ring(rast_point *pts, uint32_t n, int32_t cx, int32_t cy, 
     return v;
 }
 
-static void check_scene(int iter, const rast_point *pts, const uint32_t *sizes, uint32_t nrings, uint32_t np,
-                        int s, int center, int textbook, rast_fill_rule rule, const rast_rect *clip, int opaque)
+/* A scene: slanted rings (bytes_rings_near). */
+static uint32_t scene_rings(int iter, int s, int center, rast_point *pts, uint32_t *sizes, uint32_t *np)
 {
-    static unsigned char pre[STRIDE * H], a[STRIDE * H], b[STRIDE * H];
-    static unsigned char scratch[1 << 20];
-    const size_t need = rast__aet_scratch(np, W, H);
-    const rast_polygon poly = {pts, sizes, nrings};
-    const rast_sample at = center ? RAST_SAMPLE_CENTER : RAST_SAMPLE_CORNER;
-    rast__grid g;
-    int32_t k;
-    CHECK(need <= sizeof scratch);
-    CHECK(rast__grid_init(&g, s, at, textbook ? RAST_ROUND_TEXTBOOK : RAST_ROUND_EXACT, RAST_BOUNDARY_EXACT) ==
-          RAST_OK);
-    for (k = 0; k < STRIDE * H; k++) pre[k] = (unsigned char)rng(); /* garbage: the clip's part written */
-    CHECK(bytes_fill(a, pre, &poly, np, &g, rule, clip, scratch, need, opaque, RAST__AET_BY_SWEEP) == RAST_OK);
-    CHECK(bytes_fill(b, pre, &poly, np, &g, rule, clip, scratch, need, opaque, RAST__AET_BY_RULE) == RAST_OK);
-    CHECK(memcmp(a, b, sizeof a) == 0);
-    CHECK(bytes_match_ref(b, pre, pts, sizes, nrings, s, center, textbook, rule, clip, opaque, iter));
+    return bytes_rings_near(iter, s, center, slant_ring, pts, sizes, np);
 }
 
 int main(void)
 {
     static rast_point pts[MAXP];
     static uint32_t sizes[MAXP];
-    int iter, n = check_count(1500), taken = 0;
-    for (iter = 0; iter < n; iter++) {
-        const int s = (int)(rng() % 17), center = (int)(rng() & 1);
-        const int textbook = (int)(rng() % 8 == 0), opaque = (int)(rng() & 1);
-        const rast_fill_rule rule = (rng() & 1) ? RAST_RULE_EVENODD : RAST_RULE_NONZERO;
-        /* one scene in 8 past 511 vertices (non-zero: the pieces counted) */
-        const uint32_t want = iter % 8 == 5 ? 600 + rng() % 700 : 16 + rng() % 300;
-        uint32_t np = 0, nrings = 0;
-        rast_rect clip;
-        int32_t rows;
-        while (np + 4 <= want) {
-            uint32_t m = 4 + 2 * (rng() % 12);
-            /* round a point near the canvas, one ring in 6 near a side or past it */
-            const int32_t cx = rng() % 6 ? (int32_t)(rng() % W) : (rng() & 1) ? -2 : W + 1;
-            const int32_t cy = (int32_t)(rng() % (H + 4)) - 2;
-            if (np + m > want) m = (want - np) & ~1u;
-            sizes[nrings++] = slant_ring(pts + np, m, cx, cy, s, center);
-            np += m;
-        }
-        /* rows for at least 8 vertices each (the rule's count), from 1 up */
-        rows = (int32_t)(np / 8) < H ? (int32_t)(np / 8) : H;
-        rows = 1 + (int32_t)(rng() % (uint32_t)rows);
-        clip.y0 = (int32_t)(rng() % (uint32_t)(H - rows + 1));
-        clip.y1 = clip.y0 + rows;
-        if (opaque && (rng() & 3)) { /* the whole width: the counters in the mask itself */
-            clip.x0 = 0;
-            clip.x1 = W;
-        } else {
-            clip.x0 = (int32_t)(rng() % 20);
-            clip.x1 = W - (int32_t)(rng() % 20);
-        }
-        if (np >= 8 * (uint32_t)rows && rows * ((clip.x1 - clip.x0 + 8) & ~7) <= (int32_t)np * 48 &&
-            rows * ((clip.x1 - clip.x0 + 8) / 8) <= 8 * (int32_t)np)
-            taken++;
-        check_scene(iter, pts, sizes, nrings, np, s, center, textbook, rule, &clip, opaque);
-    }
-    CHECK(taken > n / 2);
+    bytes_scenes(8, 0, scene_rings, pts, sizes);
     return check_report("test_delta_cols");
 }

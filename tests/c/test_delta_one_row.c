@@ -82,22 +82,10 @@ static uint32_t short_ring(rast_point *pts, uint32_t n, int32_t cx, int32_t cy, 
     return v;
 }
 
-/* A scene: rings of short edges, 16 to 315 vertices in all, one scene
- * in 8 600 to 1,299 (past 511: non-zero's pieces counted). */
+/* A scene: rings of short edges (bytes_rings_near). */
 static uint32_t short_rings(int iter, int s, int center, rast_point *pts, uint32_t *sizes, uint32_t *np)
 {
-    const uint32_t want = iter % 8 == 5 ? 600 + rng() % 700 : 16 + rng() % 300;
-    uint32_t nrings = 0;
-    while (*np + 4 <= want) {
-        uint32_t m = 4 + 2 * (rng() % 12);
-        /* round a point near the canvas, one ring in 6 near a side or past it */
-        const int32_t cx = rng() % 6 ? (int32_t)(rng() % W) : (rng() & 1) ? -2 : W + 1;
-        const int32_t cy = (int32_t)(rng() % (H + 4)) - 2;
-        if (*np + m > want) m = (want - *np) & ~1u;
-        sizes[nrings++] = short_ring(pts + *np, m, cx, cy, s, center);
-        *np += m;
-    }
-    return nrings;
+    return bytes_rings_near(iter, s, center, short_ring, pts, sizes, np);
 }
 
 int main(void)
